@@ -1,0 +1,254 @@
+#include "core/model.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+using namespace core;
+
+namespace {
+
+std::vector<std::string> effectiveIds(const Model& model, std::string_view source)
+{
+    std::vector<std::string> ids;
+    for (const Transition* t : model.effectiveOutgoing(source))
+        ids.push_back(t->id);
+    return ids;
+}
+
+Variable boolVariable(std::string name)
+{
+    Variable v;
+    v.name = std::move(name);
+    return v;
+}
+
+} // namespace
+
+TEST_CASE("A new model is the template with its defaults", "[model]")
+{
+    Model model;
+    CHECK(model.steps().size() == 16);
+    CHECK(model.transitions().size() == 34);
+    CHECK(model.initialStep().id == "A6");
+    CHECK(model.step("F1")->type == StepType::Macro);
+    CHECK(model.transition("F1->D1")->negated);
+    CHECK(model.transition("F->D1")->isFamilyTransition());
+    CHECK(model.priority("F1->A2") == 3);
+    CHECK(model.priority("F->D1") == 1);
+    CHECK(model.invariantViolations().empty());
+    CHECK(model.settings().cycleTimeMs == 20);
+    CHECK(effectiveIds(model, "A1") == std::vector<std::string>{"A1->F4", "A1->F2", "A1->F1", "A1->F5"});
+}
+
+TEST_CASE("Setting the initial step clears the previous one", "[model]")
+{
+    Model model;
+    REQUIRE(model.setInitialStep("A1"));
+    CHECK(model.initialStep().id == "A1");
+    CHECK_FALSE(model.step("A6")->initial);
+    CHECK(model.invariantViolations().empty());
+    CHECK_FALSE(model.setInitialStep("Z9"));
+    CHECK(model.initialStep().id == "A1");
+}
+
+TEST_CASE("Step operations refuse unknown ids and leave the model untouched", "[model]")
+{
+    Model model;
+    const auto revision = model.revision();
+    Status status = model.setStepType("X1", StepType::Macro);
+    CHECK_FALSE(status);
+    CHECK(status.code == "unknown-step");
+    CHECK(status.message.find("X1") != std::string::npos);
+    CHECK_FALSE(model.setCondition("A1->A2", "TRUE"));
+    CHECK_FALSE(model.setStepHidden("", true));
+    CHECK(model.revision() == revision);
+    CHECK(model.sameContent(Model()));
+}
+
+TEST_CASE("A transition is effective only when it and both ends are visible", "[model]")
+{
+    Model model;
+    CHECK(model.isEffective("A1->F2"));
+    REQUIRE(model.setStepHidden("F2", true));
+    CHECK_FALSE(model.isEffective("A1->F2"));
+    CHECK_FALSE(model.isEffective("F2->F1"));
+    CHECK(model.priority("A1->F2") == 0);
+    CHECK(model.priority("A1->F1") == 2);
+    CHECK(model.priority("A1->F5") == 3);
+    REQUIRE(model.setStepHidden("F2", false));
+    REQUIRE(model.setTransitionHidden("A1->F4", true));
+    CHECK(model.priority("A1->F2") == 1);
+    REQUIRE(model.setStepHidden("D1", true));
+    CHECK_FALSE(model.isEffective("F->D1"));
+}
+
+TEST_CASE("Setting a priority reorders like a list and hidden transitions keep their place", "[model]")
+{
+    Model model;
+    REQUIRE(model.setPriority("A1->F5", 1));
+    CHECK(effectiveIds(model, "A1") == std::vector<std::string>{"A1->F5", "A1->F4", "A1->F2", "A1->F1"});
+    REQUIRE(model.setPriority("A1->F5", 4));
+    CHECK(effectiveIds(model, "A1") == std::vector<std::string>{"A1->F4", "A1->F2", "A1->F1", "A1->F5"});
+
+    // Hide F2: A1->F2 keeps its slot between F4 and F1.
+    REQUIRE(model.setTransitionHidden("A1->F2", true));
+    CHECK(effectiveIds(model, "A1") == std::vector<std::string>{"A1->F4", "A1->F1", "A1->F5"});
+    REQUIRE(model.setPriority("A1->F5", 2));
+    CHECK(effectiveIds(model, "A1") == std::vector<std::string>{"A1->F4", "A1->F5", "A1->F1"});
+    REQUIRE(model.setTransitionHidden("A1->F2", false));
+    // F5 went before F1, which was right after the hidden F2: F2 stays second in the full order.
+    CHECK(effectiveIds(model, "A1") == std::vector<std::string>{"A1->F4", "A1->F2", "A1->F5", "A1->F1"});
+    CHECK(model.invariantViolations().empty());
+
+    CHECK_FALSE(model.setPriority("A1->F5", 0));
+    CHECK_FALSE(model.setPriority("A1->F5", 5));
+    REQUIRE(model.setTransitionHidden("A1->F2", true));
+    Status status = model.setPriority("A1->F2", 1);
+    CHECK_FALSE(status);
+    CHECK(status.code == "not-effective");
+}
+
+TEST_CASE("Setting the order moves a transition among all outgoing ones", "[model]")
+{
+    Model model;
+    REQUIRE(model.setOrder("F1->D2", 1));
+    CHECK(model.transition("F1->D2")->order == 1);
+    CHECK(model.transition("F1->D1")->order == 2);
+    CHECK(model.priority("F1->D2") == 1);
+    CHECK_FALSE(model.setOrder("F1->D2", 10));
+    CHECK(model.invariantViolations().empty());
+}
+
+TEST_CASE("Conditions, negation and tokens are stored as given", "[model]")
+{
+    Model model;
+    REQUIRE(model.setCondition("F1->A2", "NOT Stop"));
+    REQUIRE(model.setNegated("F1->A2", true));
+    REQUIRE(model.setTokens("F1->A2", {"Stop"}));
+    const Transition* t = model.transition("F1->A2");
+    CHECK(t->condition == "NOT Stop");
+    CHECK(t->negated);
+    CHECK(t->tokens == std::vector<std::string>{"Stop"});
+    Status duplicate = model.setTokens("F1->A2", {"Stop", "STOP"});
+    CHECK_FALSE(duplicate);
+    CHECK(duplicate.code == "duplicate-token");
+    CHECK(model.transition("F1->A2")->tokens == std::vector<std::string>{"Stop"});
+    CHECK_FALSE(model.setTokens("F1->A2", {""}));
+}
+
+TEST_CASE("Variable names are unique ignoring case and never empty", "[model]")
+{
+    Model model;
+    REQUIRE(model.addVariable(boolVariable("Start")));
+    Status duplicate = model.addVariable(boolVariable("START"));
+    CHECK_FALSE(duplicate);
+    CHECK(duplicate.code == "duplicate-name");
+    CHECK_FALSE(model.addVariable(boolVariable("")));
+    REQUIRE(model.addVariable(boolVariable("Stop"), 0));
+    CHECK(model.variables().front().name == "Stop");
+    CHECK(model.variable("start")->name == "Start");
+    CHECK_FALSE(model.renameVariable("Stop", "start"));
+    REQUIRE(model.renameVariable("Stop", "STOP")); // a change of case only
+    CHECK(model.variables().front().name == "STOP");
+    REQUIRE(model.moveVariable("STOP", 1));
+    CHECK(model.variables().back().name == "STOP");
+    REQUIRE(model.removeVariable("stop"));
+    CHECK(model.variables().size() == 1);
+    CHECK_FALSE(model.removeVariable("Stop"));
+    CHECK(model.invariantViolations().empty());
+}
+
+TEST_CASE("Renaming a variable rewrites every condition and token that uses it", "[model]")
+{
+    Model model;
+    REQUIRE(model.addVariable(boolVariable("Stop")));
+    REQUIRE(model.addVariable(boolVariable("StopButton")));
+    REQUIRE(model.setCondition("F1->A2", "NOT stop AND StopButton"));
+    REQUIRE(model.setTokens("F1->A2", {"Stop"}));
+    REQUIRE(model.setCondition("A2->A1", "STOP OR (Stop AND NOT StopButton)"));
+    REQUIRE(model.renameVariable("Stop", "Halt"));
+    CHECK(model.transition("F1->A2")->condition == "NOT Halt AND StopButton");
+    CHECK(model.transition("F1->A2")->tokens == std::vector<std::string>{"Halt"});
+    CHECK(model.transition("A2->A1")->condition == "Halt OR (Halt AND NOT StopButton)");
+    CHECK(model.variable("Halt") != nullptr);
+    CHECK(model.variable("Stop") == nullptr);
+}
+
+TEST_CASE("Variable type, default and comment can be changed by name", "[model]")
+{
+    Model model;
+    REQUIRE(model.addVariable(boolVariable("Speed")));
+    REQUIRE(model.setVariableType("speed", IecType::Int));
+    REQUIRE(model.setVariableDefault("Speed", "42"));
+    REQUIRE(model.setVariableComment("Speed", "rpm"));
+    const Variable* v = model.variable("Speed");
+    CHECK(v->type == IecType::Int);
+    CHECK(v->defaultValue == "42");
+    CHECK(v->comment == "rpm");
+    CHECK_FALSE(model.setVariableType("Nope", IecType::Int));
+}
+
+TEST_CASE("Settings keep the cycle time in range", "[model]")
+{
+    Model model;
+    REQUIRE(model.setCycleTimeMs(10));
+    CHECK(model.settings().cycleTimeMs == 10);
+    Status status = model.setCycleTimeMs(0);
+    CHECK_FALSE(status);
+    CHECK(status.message.find("between") != std::string::npos);
+    CHECK(model.settings().cycleTimeMs == 10);
+    model.setDialect(Dialect::Codesys);
+    CHECK(model.settings().dialect == Dialect::Codesys);
+    REQUIRE(model.setName("Bottling line"));
+    CHECK(model.settings().name == "Bottling line");
+}
+
+TEST_CASE("Observers hear of every change, with what changed", "[model]")
+{
+    Model model;
+    std::vector<ModelChange> changes;
+    const int handle = model.addObserver([&](const ModelChange& change) { changes.push_back(change); });
+    const auto revision = model.revision();
+
+    REQUIRE(model.setStepType("F2", StepType::Enclosing));
+    REQUIRE(changes.size() == 1);
+    CHECK(changes[0].kind == ModelChange::Kind::Step);
+    CHECK(changes[0].id == "F2");
+
+    changes.clear();
+    REQUIRE(model.setStepType("F2", StepType::Enclosing)); // no change, no event
+    CHECK(changes.empty());
+
+    REQUIRE(model.setPriority("A1->F5", 1));
+    CHECK(changes.size() == 4); // all four orders moved
+
+    changes.clear();
+    model.resetToTemplate();
+    REQUIRE(changes.size() == 1);
+    CHECK(changes[0].kind == ModelChange::Kind::Reset);
+    CHECK(model.revision() > revision);
+    CHECK(model.sameContent(Model()));
+
+    model.removeObserver(handle);
+    changes.clear();
+    REQUIRE(model.setStepHidden("A2", true));
+    CHECK(changes.empty());
+}
+
+TEST_CASE("A copy holds the same content and no observers", "[model]")
+{
+    Model model;
+    int calls = 0;
+    model.addObserver([&](const ModelChange&) { ++calls; });
+    REQUIRE(model.setStepHidden("A3", true));
+    Model copy(model);
+    CHECK(copy.sameContent(model));
+    REQUIRE(copy.setStepHidden("A4", true));
+    CHECK(calls == 1);
+    CHECK_FALSE(copy.sameContent(model));
+    model.assign(copy);
+    CHECK(calls == 2);
+    CHECK(model.sameContent(copy));
+}
