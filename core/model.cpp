@@ -200,13 +200,18 @@ Status Model::setInitialStep(std::string_view stepId)
         return unknownStep(stepId);
     if (s->initial)
         return Status::success();
+    // Change both steps before telling anyone, so that observers never see a
+    // model without exactly one initial step.
+    std::vector<std::string> previous;
     for (Step& other : m_steps) {
         if (other.initial) {
             other.initial = false;
-            notify(ModelChange::Kind::Step, other.id);
+            previous.push_back(other.id);
         }
     }
     s->initial = true;
+    for (const std::string& id : previous)
+        notify(ModelChange::Kind::Step, id);
     notify(ModelChange::Kind::Step, s->id);
     return Status::success();
 }

@@ -252,3 +252,15 @@ TEST_CASE("A copy holds the same content and no observers", "[model]")
     CHECK(calls == 2);
     CHECK(model.sameContent(copy));
 }
+
+TEST_CASE("Observers always see exactly one initial step", "[model]")
+{
+    Model model;
+    std::vector<std::string> initialSeen;
+    model.addObserver([&](const ModelChange&) {
+        REQUIRE(model.invariantViolations().empty());
+        initialSeen.push_back(model.initialStep().id);
+    });
+    REQUIRE(model.setInitialStep("F1"));
+    CHECK(initialSeen == std::vector<std::string>{"F1", "F1"});
+}
