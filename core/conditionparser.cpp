@@ -10,7 +10,9 @@ namespace core::cond {
 namespace {
 
 // Parentheses and unary operators recurse in the parser: bounded so that
-// hostile input yields an error instead of a stack overflow.
+// hostile input yields an error instead of a stack overflow. The two are
+// counted apart because the printer writes a unary operator under another
+// one as NOT (NOT x): whatever parses must still parse once printed.
 constexpr int kMaxNesting = 200;
 // Every consumer of the tree (printing, evaluation, checks) may recurse on it:
 // long operator chains are bounded too.
@@ -418,11 +420,11 @@ private:
         if (kind != TokenKind::Not && kind != TokenKind::Minus)
             return parsePrimary();
         const std::size_t operatorToken = m_position;
-        if (!enter())
+        if (!enter(m_unaryNesting, "unary operators"))
             return {};
         advance();
         const Parsed operand = parseUnary();
-        --m_nesting;
+        --m_unaryNesting;
         if (operand.node < 0)
             return {};
         const int height = 1 + operand.height;
@@ -460,11 +462,11 @@ private:
     Parsed parseParenthesised()
     {
         const Token& open = peek();
-        if (!enter())
+        if (!enter(m_parenNesting, "parentheses"))
             return {};
         advance();
         Parsed inner = parseExpression(1);
-        --m_nesting;
+        --m_parenNesting;
         if (inner.node < 0)
             return {};
         const Token& close = peek();
@@ -475,12 +477,11 @@ private:
         return inner;
     }
 
-    bool enter()
+    bool enter(int& nesting, const char* what)
     {
-        if (++m_nesting <= kMaxNesting)
+        if (++nesting <= kMaxNesting)
             return true;
-        fail("condition nested too deeply: more than " + std::to_string(kMaxNesting)
-                 + " levels of parentheses or unary operators",
+        fail("condition nested too deeply: more than " + std::to_string(kMaxNesting) + " levels of " + what,
              peek().span);
         return false;
     }
@@ -535,7 +536,8 @@ private:
     std::string_view m_text;
     std::vector<Token> m_tokens;
     std::size_t m_position = 0;
-    int m_nesting = 0;
+    int m_parenNesting = 0;
+    int m_unaryNesting = 0;
     Expression m_expression;
     std::optional<ParseError> m_error;
 };

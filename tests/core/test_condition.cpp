@@ -293,6 +293,15 @@ TEST_CASE("deep nesting is an error, not a stack overflow", "[condition]")
         nots += "NOT ";
     CHECK(errorOf(nots + "a").message.find("nested too deeply") != std::string::npos);
 
+    // A unary chain at the limit prints with a parenthesis per level
+    // (-(-(... R))) and must parse again.
+    std::string minuses = "t - ";
+    for (int i = 0; i < 199; ++i)
+        minuses += "-";
+    const core::cond::ParseResult atLimit = parse(minuses + "R");
+    REQUIRE(atLimit.ok());
+    CHECK(parse(print(atLimit.expression)).ok());
+
     std::string chain = "a";
     for (int i = 0; i < 5000; ++i)
         chain += " AND a";
