@@ -1,0 +1,311 @@
+#include "core/nativeformat.h"
+
+#include "core/jsonreader.h"
+#include "core/modelloading.h"
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+
+using json = nlohmann::ordered_json;
+using nlohmann::ordered_json;
+
+namespace core {
+
+namespace {
+
+// ---- Writing ---------------------------------------------------------------
+
+ordered_json stepJson(const Step& step)
+{
+    ordered_json object;
+    object["type"] = stepTypeName(step.type);
+    object["initial"] = step.initial;
+    object["hidden"] = step.hidden;
+    object["comment"] = step.comment;
+    return object;
+}
+
+ordered_json transitionJson(const Transition& transition)
+{
+    ordered_json object;
+    object["condition"] = transition.condition;
+    object["order"] = transition.order;
+    object["negated"] = transition.negated;
+    object["hidden"] = transition.hidden;
+    object["tokens"] = transition.tokens;
+    return object;
+}
+
+ordered_json variableJson(const Variable& variable)
+{
+    ordered_json object;
+    object["name"] = variable.name;
+    object["type"] = iecTypeName(variable.type);
+    object["default"] = variable.defaultValue;
+    object["comment"] = variable.comment;
+    return object;
+}
+
+// ---- Reading ---------------------------------------------------------------
+
+std::string versionText()
+{
+    return std::to_string(kNativeFormatMajor) + "." + std::to_string(kNativeFormatMinor);
+}
+
+bool parseNumber(std::string_view text, int& value)
+{
+    if (text.empty() || text.size() > 9)
+        return false;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() && end == text.data() + text.size();
+}
+
+void checkFormatAndVersion(const json& root)
+{
+    const json* format = findMember(root, "format");
+    if (!format)
+        failAt("/format", "missing; a GG Studio model file has \"format\": \"" + std::string(kNativeFormatName) + "\"");
+    if (!format->is_string() || format->get<std::string>() != kNativeFormatName)
+        failAt("/format", "expected \"" + std::string(kNativeFormatName) + "\", found " + describeJsonValue(*format));
+
+    const json* versionValue = findMember(root, "version");
+    if (!versionValue)
+        failAt("/version", "missing; expected a version such as \"" + versionText() + "\"");
+    const std::string version = readString(*versionValue, "/version");
+    const std::size_t dot = version.find('.');
+    int major = 0;
+    int minor = 0;
+    if (dot == std::string::npos || !parseNumber(std::string_view(version).substr(0, dot), major)
+        || !parseNumber(std::string_view(version).substr(dot + 1), minor))
+        failAt("/version", "expected a version MAJOR.MINOR such as \"" + versionText() + "\", found \"" + version + "\"");
+    const std::string supported = "this version reads format " + std::to_string(kNativeFormatMajor) + ".x";
+    if (major > kNativeFormatMajor)
+        failAt("/version", "this file was written by a newer GG Studio (format " + version + "); " + supported);
+    if (major < kNativeFormatMajor)
+        failAt("/version", "unsupported format version " + version + "; " + supported);
+}
+
+void readSettings(Model& model, const json& root)
+{
+    if (const json* name = findMember(root, "name"))
+        require(model.setName(readString(*name, "/name")), "/name");
+    const json* settingsValue = findMember(root, "settings");
+    if (!settingsValue)
+        return;
+    const json& settings = expectObject(*settingsValue, "/settings");
+    if (const json* cycle = findMember(settings, "cycleTimeMs")) {
+        const long long value = readInteger(*cycle, "/settings/cycleTimeMs", kMinCycleTimeMs, kMaxCycleTimeMs);
+        require(model.setCycleTimeMs(static_cast<int>(value)), "/settings/cycleTimeMs");
+    }
+    if (const json* dialectValue = findMember(settings, "dialect")) {
+        const std::string name = readString(*dialectValue, "/settings/dialect");
+        Dialect dialect = Dialect::Iec;
+        if (!parseDialect(name, dialect))
+            failAt("/settings/dialect", "unknown dialect \"" + name + "\"; expected \"iec\" or \"codesys\"");
+        model.setDialect(dialect);
+    }
+}
+
+void readVariables(Model& model, const json& root)
+{
+    const json* listValue = findMember(root, "variables");
+    if (!listValue)
+        return;
+    const json& list = expectArray(*listValue, "/variables");
+    if (list.size() > kMaxFileVariables)
+        failAt("/variables", std::to_string(list.size()) + " variables; a model holds at most "
+            + std::to_string(kMaxFileVariables));
+    std::vector<VariableEntry> entries;
+    entries.reserve(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = childPath("/variables", i);
+        const json& object = expectObject(list[i], path);
+        VariableEntry entry;
+        entry.namePath = path + "/name";
+        const json* name = findMember(object, "name");
+        if (!name)
+            failAt(entry.namePath, "missing; every variable needs a name");
+        entry.variable.name = readString(*name, entry.namePath);
+        const json* type = findMember(object, "type");
+        if (!type)
+            failAt(path + "/type", "missing; expected an IEC type such as \"BOOL\"");
+        const std::string typeName = readString(*type, path + "/type");
+        const auto parsed = parseIecType(typeName);
+        if (!parsed)
+            failAt(path + "/type", "unknown type \"" + typeName
+                + "\"; expected BOOL, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, REAL or LREAL");
+        entry.variable.type = *parsed;
+        if (const json* value = findMember(object, "default"))
+            entry.variable.defaultValue = readString(*value, path + "/default");
+        if (const json* comment = findMember(object, "comment"))
+            entry.variable.comment = readString(*comment, path + "/comment");
+        entries.push_back(std::move(entry));
+    }
+    addVariables(model, entries, "/variables");
+}
+
+void readSteps(Model& model, const json& root)
+{
+    const json* stepsValue = findMember(root, "steps");
+    if (!stepsValue)
+        return;
+    const json& steps = expectObject(*stepsValue, "/steps");
+    std::vector<InitialFlag> initialFlags;
+    for (const auto& [id, value] : steps.items()) {
+        const std::string path = childPath("/steps", id);
+        if (!findTemplateState(id))
+            failAt(path, "unknown step \"" + id + "\"; the template's steps are A1 to A7, F1 to F6 and D1 to D3");
+        if (const json* initial = findMember(expectObject(value, path), "initial"))
+            initialFlags.push_back({id, readBool(*initial, path + "/initial"), path + "/initial"});
+    }
+    applyInitialFlags(model, initialFlags, "/steps");
+
+    for (const auto& [id, value] : steps.items()) {
+        const std::string path = childPath("/steps", id);
+        if (const json* type = findMember(value, "type")) {
+            const std::string name = readString(*type, path + "/type");
+            StepType stepType = StepType::Simple;
+            if (!parseStepType(name, stepType))
+                failAt(path + "/type", "unknown step type \"" + name + "\"; expected \"simple\", \"macro\" or \"enclosing\"");
+            require(model.setStepType(id, stepType), path + "/type");
+        }
+        if (const json* hidden = findMember(value, "hidden"))
+            require(model.setStepHidden(id, readBool(*hidden, path + "/hidden")), path + "/hidden");
+        if (const json* comment = findMember(value, "comment"))
+            require(model.setStepComment(id, readString(*comment, path + "/comment")), path + "/comment");
+    }
+}
+
+std::vector<std::string> readTokens(const json& value, const std::string& path)
+{
+    const json& list = expectArray(value, path);
+    if (list.size() > kMaxFileVariables)
+        failAt(path, std::to_string(list.size()) + " tokens; a transition has at most one per variable, and a model "
+            "holds at most " + std::to_string(kMaxFileVariables) + " variables");
+    std::vector<std::string> tokens;
+    tokens.reserve(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i)
+        tokens.push_back(readString(list[i], childPath(path, i)));
+    return tokens;
+}
+
+void readTransitions(Model& model, const json& root)
+{
+    const json* transitionsValue = findMember(root, "transitions");
+    if (!transitionsValue)
+        return;
+    const json& transitions = expectObject(*transitionsValue, "/transitions");
+    std::vector<OrderValue> orders;
+    for (const auto& [id, value] : transitions.items()) {
+        const std::string path = childPath("/transitions", id);
+        const Transition* transition = model.transition(id);
+        if (!transition)
+            failAt(path, "unknown transition \"" + id
+                + "\"; transitions are named SOURCE->TARGET after the template, such as \"F1->A2\" or \"F->D1\"");
+        if (const json* order = findMember(expectObject(value, path), "order")) {
+            const auto count = static_cast<long long>(model.outgoing(transition->source).size());
+            orders.push_back({id, static_cast<int>(readInteger(*order, path + "/order", 1, count)), path + "/order"});
+        }
+    }
+    applyOrders(model, orders);
+
+    for (const auto& [id, value] : transitions.items()) {
+        const std::string path = childPath("/transitions", id);
+        if (const json* condition = findMember(value, "condition"))
+            require(model.setCondition(id, readString(*condition, path + "/condition")), path + "/condition");
+        if (const json* negated = findMember(value, "negated"))
+            require(model.setNegated(id, readBool(*negated, path + "/negated")), path + "/negated");
+        if (const json* hidden = findMember(value, "hidden"))
+            require(model.setTransitionHidden(id, readBool(*hidden, path + "/hidden")), path + "/hidden");
+        if (const json* tokens = findMember(value, "tokens"))
+            require(model.setTokens(id, readTokens(*tokens, path + "/tokens")), path + "/tokens");
+    }
+}
+
+std::unique_ptr<Model> buildModel(const json& root)
+{
+    expectObject(root, "");
+    checkFormatAndVersion(root);
+    auto model = std::make_unique<Model>();
+    readSettings(*model, root);
+    readVariables(*model, root);
+    readSteps(*model, root);
+    readTransitions(*model, root);
+    return model;
+}
+
+// Does `"format"` map to the native format name somewhere in the text?
+bool hasNativeFormatMember(std::string_view text)
+{
+    const std::string_view key = "\"format\"";
+    const std::string value = "\"" + std::string(kNativeFormatName) + "\"";
+    for (std::size_t at = text.find(key); at != std::string_view::npos; at = text.find(key, at + 1)) {
+        std::size_t i = at + key.size();
+        const auto skipBlanks = [&] {
+            while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\n' || text[i] == '\r'))
+                ++i;
+        };
+        skipBlanks();
+        if (i >= text.size() || text[i] != ':')
+            continue;
+        ++i;
+        skipBlanks();
+        if (text.substr(i, value.size()) == value)
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+std::string saveNativeJson(const Model& model)
+{
+    ordered_json root;
+    root["format"] = kNativeFormatName;
+    root["version"] = versionText();
+    root["name"] = model.settings().name;
+    ordered_json settings;
+    settings["cycleTimeMs"] = model.settings().cycleTimeMs;
+    settings["dialect"] = dialectName(model.settings().dialect);
+    root["settings"] = std::move(settings);
+
+    ordered_json steps = ordered_json::object();
+    for (const Step& step : model.steps())
+        steps[step.id] = stepJson(step);
+    root["steps"] = std::move(steps);
+
+    ordered_json transitions = ordered_json::object();
+    for (const Transition& transition : model.transitions())
+        transitions[transition.id] = transitionJson(transition);
+    root["transitions"] = std::move(transitions);
+
+    ordered_json variables = ordered_json::array();
+    for (const Variable& variable : model.variables())
+        variables.push_back(variableJson(variable));
+    root["variables"] = std::move(variables);
+
+    // Text from elsewhere may hold invalid UTF-8: replace it rather than throw.
+    return root.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
+}
+
+std::variant<std::unique_ptr<Model>, LoadError> loadNativeJson(std::string_view text, const std::string& displayName)
+{
+    JsonReadError error;
+    const std::optional<json> root = parseStrictJson(text, error);
+    if (!root)
+        return LoadError{displayName, error.location, error.message};
+    try {
+        return buildModel(*root);
+    } catch (const JsonReadError& failure) {
+        return LoadError{displayName, failure.location, failure.message};
+    }
+}
+
+bool looksLikeNativeJson(std::string_view text)
+{
+    return firstSignificantCharacter(text) == '{' && hasNativeFormatMember(text);
+}
+
+} // namespace core

@@ -1,0 +1,305 @@
+#include "filetestsupport.h"
+
+#include "core/fileio.h"
+#include "core/modelfiles.h"
+#include "core/nativeformat.h"
+
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#ifndef _WIN32
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
+
+using namespace core;
+using filetests::ScratchFolder;
+namespace fs = std::filesystem;
+
+namespace {
+
+#ifndef _WIN32
+// Makes a folder refuse new files, also for root (who ignores permission
+// bits): chmod for ordinary users, the immutable attribute for root.
+class ReadOnlyFolder {
+public:
+    explicit ReadOnlyFolder(const fs::path& path) : m_path(path)
+    {
+        if (::geteuid() == 0)
+            m_immutable = std::system(("chattr +i '" + path.string() + "' 2>/dev/null").c_str()) == 0;
+        else
+            ::chmod(path.c_str(), 0555);
+    }
+    ~ReadOnlyFolder()
+    {
+        if (m_immutable)
+            std::system(("chattr -i '" + m_path.string() + "'").c_str());
+        ::chmod(m_path.c_str(), 0755);
+    }
+    ReadOnlyFolder(const ReadOnlyFolder&) = delete;
+    ReadOnlyFolder& operator=(const ReadOnlyFolder&) = delete;
+
+    // The precondition of the test: can nothing be created in the folder?
+    bool effective() const
+    {
+        const fs::path probe = m_path / "probe";
+        FILE* file = std::fopen(probe.c_str(), "w");
+        if (!file)
+            return true;
+        std::fclose(file);
+        std::remove(probe.c_str());
+        return false;
+    }
+
+private:
+    fs::path m_path;
+    bool m_immutable = false;
+};
+#endif
+
+} // namespace
+
+TEST_CASE("Valid UTF-8 passes the check", "[files]")
+{
+    CHECK_FALSE(findInvalidUtf8(""));
+    CHECK_FALSE(findInvalidUtf8("plain ASCII\n"));
+    CHECK_FALSE(findInvalidUtf8("déjà vu \xE2\x82\xAC \xF0\x9F\x98\x80 \xF4\x8F\xBF\xBF"));
+}
+
+TEST_CASE("Invalid UTF-8 is found at its first bad byte with line and column", "[files]")
+{
+    struct Case {
+        std::string text;
+        std::size_t offset;
+        std::size_t line;
+        std::size_t column;
+    };
+    const Case cases[] = {
+        {"ab\xFF", 2, 1, 3},
+        {"ab\ncd\x80", 5, 2, 3},                        // lone continuation byte
+        {"x\n\xC3\xA9t\xC3\xA9 \xC0\xAF", 8, 2, 5},     // overlong '/': columns count characters
+        {"\xED\xA0\x80", 0, 1, 1},                      // UTF-16 surrogate
+        {"ok \xF4\x90\x80\x80", 3, 1, 4},               // above U+10FFFF
+        {"end \xE2\x82", 4, 1, 5},                      // cut short by the end of the text
+        {"\xE2\x28\xA1", 0, 1, 1},                      // bad second byte
+    };
+    for (const Case& c : cases) {
+        INFO(c.text);
+        const auto problem = findInvalidUtf8(c.text);
+        REQUIRE(problem);
+        CHECK(problem->offset == c.offset);
+        CHECK(problem->position.line == c.line);
+        CHECK(problem->position.column == c.column);
+    }
+}
+
+TEST_CASE("Byte offsets become lines and character columns", "[files]")
+{
+    const std::string text = "ab\n\xC3\xA9x\n";
+    CHECK(describePosition(textPosition(text, 0)) == "line 1, column 1");
+    CHECK(describePosition(textPosition(text, 3)) == "line 2, column 1");
+    CHECK(describePosition(textPosition(text, 5)) == "line 2, column 2");
+    CHECK(describePosition(textPosition(text, 6)) == "line 2, column 3");
+    CHECK(describePosition(textPosition(text, 99)) == "line 3, column 1");
+    CHECK(describePosition(textPosition("\xEF\xBB\xBF{x", 4)) == "line 1, column 2"); // the BOM takes no column
+}
+
+TEST_CASE("A limited read returns the whole file", "[files]")
+{
+    ScratchFolder folder;
+    const std::string contents = std::string("binary\0data\n", 12) + std::string(200000, 'x');
+    filetests::writeBinaryFile(folder.file("a.json"), contents);
+    std::string read;
+    REQUIRE(readFileLimited(folder.file("a.json").string(), kMaxModelFileBytes, read));
+    CHECK(read == contents);
+}
+
+TEST_CASE("A limited read refuses missing files, folders and files over the limit", "[files]")
+{
+    ScratchFolder folder;
+    std::string read = "untouched";
+
+    Status status = readFileLimited(folder.file("missing.json").string(), 100, read);
+    CHECK(status.code == "file.open");
+    CHECK_THAT(status.message, Catch::Contains("cannot open"));
+
+    status = readFileLimited(folder.path().string(), 100, read);
+    CHECK(status.code == "file.not-regular");
+
+    filetests::writeBinaryFile(folder.file("big.json"), std::string(101, ' '));
+    status = readFileLimited(folder.file("big.json").string(), 100, read);
+    CHECK(status.code == "file.too-large");
+    CHECK(status.message == "the file is 101 bytes; files larger than 100 bytes are not read");
+    CHECK(read == "untouched");
+}
+
+TEST_CASE("A model file over 64 MiB is refused before it is read", "[files]")
+{
+    ScratchFolder folder;
+    const fs::path huge = folder.file("huge.json");
+    filetests::writeBinaryFile(huge, "{");
+    fs::resize_file(huge, 80ull * 1024 * 1024); // sparse: costs no disk space
+    REQUIRE(fs::file_size(huge) > kMaxModelFileBytes);
+
+    const auto started = std::chrono::steady_clock::now();
+    const LoadedModel loaded = loadModelFile(huge.string());
+    const auto elapsed = std::chrono::steady_clock::now() - started;
+
+    REQUIRE_FALSE(loaded.ok());
+    CHECK(loaded.error.file == huge.string());
+    CHECK(loaded.error.message
+        == "the file is 83886080 bytes (80.0 MiB); files larger than 67108864 bytes (64.0 MiB) are not read");
+    // Reading 80 MiB and parsing it would take far longer than this.
+    CHECK(elapsed < std::chrono::milliseconds(200));
+}
+
+TEST_CASE("An atomic write creates and replaces files and leaves no temporary file", "[files]")
+{
+    ScratchFolder folder;
+    const std::string path = folder.file("model.json").string();
+    REQUIRE(writeFileAtomically(path, "first"));
+    CHECK(filetests::readBinaryFile(path) == "first");
+    REQUIRE(writeFileAtomically(path, "second, longer"));
+    CHECK(filetests::readBinaryFile(path) == "second, longer");
+    REQUIRE(writeFileAtomically(path, ""));
+    CHECK(filetests::readBinaryFile(path).empty());
+    CHECK(folder.entries() == std::vector<std::string>{"model.json"});
+}
+
+TEST_CASE("An atomic write onto a folder fails and changes nothing", "[files]")
+{
+    ScratchFolder folder;
+    fs::create_directory(folder.file("model.json"));
+    filetests::writeBinaryFile(folder.file("model.json") / "inside.txt", "keep");
+
+    const Status status = writeFileAtomically(folder.file("model.json").string(), "data");
+    CHECK_FALSE(status);
+    CHECK(status.code == "file.write");
+    CHECK_THAT(status.message, Catch::Contains("model.json"));
+    CHECK(fs::is_directory(folder.file("model.json")));
+    CHECK(filetests::readBinaryFile(folder.file("model.json") / "inside.txt") == "keep");
+    CHECK(folder.entries() == std::vector<std::string>{"model.json"});
+}
+
+TEST_CASE("An atomic write into a missing folder fails", "[files]")
+{
+    ScratchFolder folder;
+    const Status status = writeFileAtomically(folder.file("no/such/folder/model.json").string(), "data");
+    CHECK_FALSE(status);
+    CHECK_THAT(status.message, Catch::Contains("cannot create a temporary file"));
+    CHECK(folder.entries().empty());
+}
+
+#ifndef _WIN32
+TEST_CASE("An atomic write in a read-only folder keeps the old file", "[files]")
+{
+    ScratchFolder folder;
+    const fs::path target = folder.file("model.json");
+    filetests::writeBinaryFile(target, "old contents");
+    {
+        ReadOnlyFolder readOnly(folder.path());
+        if (!readOnly.effective()) {
+            WARN("cannot make a read-only folder here (no chattr for root?)");
+            return;
+        }
+        const Status status = writeFileAtomically(target.string(), "new contents");
+        CHECK_FALSE(status);
+        CHECK(status.code == "file.write");
+        CHECK_THAT(status.message, Catch::Contains("model.json") && Catch::Contains("temporary file"));
+    }
+    CHECK(filetests::readBinaryFile(target) == "old contents");
+    CHECK(folder.entries() == std::vector<std::string>{"model.json"});
+}
+
+TEST_CASE("An atomic write keeps the permissions of the replaced file", "[files]")
+{
+    ScratchFolder folder;
+    const fs::path target = folder.file("model.json");
+    filetests::writeBinaryFile(target, "old");
+    fs::permissions(target, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+    REQUIRE(writeFileAtomically(target.string(), "new"));
+    CHECK(filetests::readBinaryFile(target) == "new");
+    CHECK((fs::status(target).permissions() & fs::perms::all)
+        == (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read));
+}
+
+TEST_CASE("An atomic write through a symbolic link replaces the file it points to", "[files]")
+{
+    ScratchFolder folder;
+    filetests::writeBinaryFile(folder.file("real.json"), "old");
+    fs::create_symlink("real.json", folder.file("link.json"));
+    REQUIRE(writeFileAtomically(folder.file("link.json").string(), "new"));
+    CHECK(fs::is_symlink(fs::symlink_status(folder.file("link.json"))));
+    CHECK(filetests::readBinaryFile(folder.file("real.json")) == "new");
+    CHECK(folder.entries() == std::vector<std::string>{"link.json", "real.json"});
+}
+#endif
+
+TEST_CASE("LoadError reads FILE: LOCATION: MESSAGE", "[files]")
+{
+    CHECK(LoadError{"m.json", "/steps/F1/hidden", "expected true or false, found \"yes\""}.toString()
+        == "m.json: /steps/F1/hidden: expected true or false, found \"yes\"");
+    CHECK(LoadError{"m.json", "", "the file is empty"}.toString() == "m.json: the file is empty");
+    CHECK(LoadError{"", "line 1, column 2", "bad"}.toString() == "<input>: line 1, column 2: bad");
+}
+
+TEST_CASE("Model files are recognised by their content", "[files]")
+{
+    const std::string native = saveNativeJson(filetests::richNativeModel());
+    LoadedModel loaded = loadModelText(native, "a.txt");
+    REQUIRE(loaded.ok());
+    CHECK(loaded.format == ModelFormat::Native);
+    CHECK(loaded.model->sameContent(filetests::richNativeModel()));
+
+    loaded = loadModelText("\xEF\xBB\xBF \n" + native, "bom.json");
+    REQUIRE(loaded.ok());
+    CHECK(loaded.format == ModelFormat::Native);
+
+    const std::string reference = filetests::readBinaryFile(fs::path(GGSTUDIO_SHARED_DIR) / "reference/gg-generator-template.json");
+    loaded = loadModelText(reference, "gg.json");
+    REQUIRE(loaded.ok());
+    CHECK(loaded.format == ModelFormat::GGGenerator);
+
+    loaded = loadModelText("  <?xml version=\"1.0\"?><nothing/>", "p.xml");
+    CHECK_FALSE(loaded.ok());
+    CHECK(loaded.format == ModelFormat::PlcOpen);
+
+    loaded = loadModelText(" \n\t", "empty.json");
+    REQUIRE_FALSE(loaded.ok());
+    CHECK(loaded.error.toString() == "empty.json: the file is empty");
+
+    loaded = loadModelText("{\"name\": \"x\"}", "other.json");
+    REQUIRE_FALSE(loaded.ok());
+    CHECK(loaded.error.location == "/format");
+
+    loaded = loadModelText("hello", "hello.txt");
+    REQUIRE_FALSE(loaded.ok());
+    CHECK_THAT(loaded.error.message, Catch::StartsWith("not a model file"));
+}
+
+TEST_CASE("saveModelFile writes native and GG-Generator files that load back", "[files]")
+{
+    ScratchFolder folder;
+    const Model model = filetests::richGGModel();
+
+    const std::string nativePath = folder.file("model.ggstudio.json").string();
+    REQUIRE(saveModelFile(model, nativePath, ModelFormat::Native));
+    LoadedModel loaded = loadModelFile(nativePath);
+    REQUIRE(loaded.ok());
+    CHECK(loaded.format == ModelFormat::Native);
+    CHECK(loaded.model->sameContent(model));
+
+    const std::string ggPath = folder.file("model.gg.json").string();
+    REQUIRE(saveModelFile(model, ggPath, ModelFormat::GGGenerator));
+    loaded = loadModelFile(ggPath);
+    REQUIRE(loaded.ok());
+    CHECK(loaded.format == ModelFormat::GGGenerator);
+    CHECK(loaded.model->sameContent(model));
+
+    CHECK_FALSE(saveModelFile(model, folder.file("model.xml").string(), ModelFormat::PlcOpen));
+    CHECK(folder.entries() == std::vector<std::string>{"model.gg.json", "model.ggstudio.json"});
+}

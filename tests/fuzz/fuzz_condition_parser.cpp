@@ -1,0 +1,72 @@
+// libFuzzer target: the condition parser, type checker and printer on
+// arbitrary text. Spans must stay inside the text, and printing must be a
+// fixed point: the printed condition parses and prints to itself.
+
+#include "core/conditionanalysis.h"
+#include "core/conditionparser.h"
+#include "core/model.h"
+#include "core/symboltable.h"
+
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+void expect(bool condition)
+{
+    if (!condition)
+        std::abort();
+}
+
+const std::vector<core::Variable>& variables()
+{
+    static const std::vector<core::Variable> list = {
+        {"Start", core::IecType::Bool, "", ""},
+        {"Stop", core::IecType::Bool, "TRUE", ""},
+        {"Count", core::IecType::Int, "", ""},
+        {"Level", core::IecType::Usint, "", ""},
+        {"Speed", core::IecType::Real, "", ""},
+        {"Total", core::IecType::Lreal, "", ""},
+    };
+    return list;
+}
+
+bool spanInside(const core::Span& span, std::size_t size)
+{
+    return span.begin <= span.end && span.end <= size;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    static const core::SymbolTable symbols(variables());
+
+    for (const core::cond::Token& token : core::cond::tokenize(text))
+        expect(spanInside(token.span, size));
+    core::cond::renameIdentifier(text, "Start", "Go");
+
+    const core::cond::ParseResult parsed = core::cond::parse(text);
+    if (!parsed.ok()) {
+        expect(spanInside(parsed.error->span, size));
+        expect(!parsed.error->message.empty());
+        return 0;
+    }
+    const core::cond::Expression& expression = parsed.expression;
+    for (const core::cond::Node& node : expression.nodes)
+        expect(spanInside(node.span, size));
+    for (const core::cond::TypeIssue& issue : core::cond::typeCheck(expression, symbols))
+        expect(spanInside(issue.span, size));
+    core::cond::booleanLiterals(expression);
+    core::cond::needsParenthesesBeforeAnd(expression);
+
+    const std::string printed = core::cond::print(expression);
+    const core::cond::ParseResult reparsed = core::cond::parse(printed);
+    expect(reparsed.ok());
+    expect(core::cond::print(reparsed.expression) == printed);
+    return 0;
+}
