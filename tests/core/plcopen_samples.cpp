@@ -1,0 +1,60 @@
+// Writes PLCopen XML samples (IEC dialect) into the folder given as argument,
+// for the schema-validation test (validate_plcopen.cmake): the template, the
+// realistic model, the paper's case study and 200 seeded random models.
+
+#include "modelfactory.h"
+#include "samplemodels.h"
+
+#include "core/fileio.h"
+#include "core/plcopenwriter.h"
+#include "core/stgenerator.h"
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+namespace {
+
+constexpr int kRandomModels = 200;
+
+bool writeSample(const std::filesystem::path& folder, const std::string& name, const core::Model& model)
+{
+    core::PlcOpenOptions options;
+    options.now = [] { return std::string("2026-11-21T10:00:00"); };
+    const std::string xml = core::writePlcOpenXml(core::buildPlcProject(model, core::Dialect::Iec), model, options);
+    const core::Status status = core::writeFileAtomically((folder / (name + ".xml")).string(), xml);
+    if (!status)
+        std::fprintf(stderr, "plcopen_samples: %s\n", status.message.c_str());
+    return status.ok;
+}
+
+std::string randomName(int seed)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "random-%03d", seed);
+    return buffer;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: plcopen_samples OUTPUT_FOLDER\n");
+        return 2;
+    }
+    try {
+        const std::filesystem::path folder(argv[1]);
+        std::filesystem::create_directories(folder);
+        bool ok = writeSample(folder, "template", core::Model());
+        ok = writeSample(folder, "realistic", factory::realisticModel()) && ok;
+        ok = writeSample(folder, "case-study", samples::caseStudyModel()) && ok;
+        for (int seed = 0; seed < kRandomModels; ++seed)
+            ok = writeSample(folder, randomName(seed), samples::randomModel(static_cast<std::uint32_t>(seed))) && ok;
+        return ok ? 0 : 1;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "plcopen_samples: %s\n", error.what());
+        return 1;
+    }
+}

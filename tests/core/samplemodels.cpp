@@ -1,0 +1,276 @@
+#include "samplemodels.h"
+
+#include "core/checks.h"
+
+#include <array>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace samples {
+
+namespace {
+
+void require(const core::Status& status)
+{
+    if (!status)
+        throw std::logic_error("sample model: " + status.message);
+}
+
+void addVariable(core::Model& model, const std::string& name, core::IecType type, std::string defaultValue = {},
+                 std::string comment = {})
+{
+    require(model.addVariable({name, type, std::move(defaultValue), std::move(comment)}));
+}
+
+struct ConditionRow {
+    const char* transition;
+    const char* condition;
+};
+
+constexpr std::array<ConditionRow, 34> kCaseStudyConditions = {{
+    {"F->D1", "NOT EmergencyInterrupter"},
+    {"A1->F4", "Manual OR StationTest"},
+    {"A1->F2", "Start AND NOT Ready"},
+    {"A1->F1", "Start AND Ready AND Automatic"},
+    {"A1->F5", "Semiautomatic"},
+    {"A2->A1", "CycleEnd"},
+    {"A3->A4", "CycleEnd"},
+    {"A4->F1", "Start"},
+    {"A5->A6", "Reset AND NOT Alarm"},
+    {"A5->A7", "Reset AND Alarm"},
+    {"A6->A1", "Ready"},
+    {"A7->A4", "Ready"},
+    {"F1->D1", "Alarm"},
+    {"F1->D3", "ManualCapping"},
+    {"F1->A2", "NOT Stop"},
+    {"F1->F4", "Manual OR StationTest"},
+    {"F1->F5", "Semiautomatic"},
+    {"F1->F3", "EmptyMachine"},
+    {"F1->A3", "Stop AND PieceCount >= 100"},
+    {"F1->F6", "StationTest AND Manual"},
+    {"F1->D2", "Pressure > 6.5"},
+    {"F2->F1", "Ready"},
+    {"F3->A1", "CycleEnd"},
+    {"F4->A6", "NOT Manual AND NOT StationTest"},
+    {"F5->F4", "Manual"},
+    {"F5->F1", "Automatic"},
+    {"F6->D1", "Alarm"},
+    {"F6->F1", "Automatic"},
+    {"D1->A5", "EmergencyInterrupter"},
+    {"D1->D2", "EmergencyInterrupter AND Alarm"},
+    {"D2->A5", "Reset"},
+    {"D3->A2", "Stop"},
+    {"D3->A3", "NOT ManualCapping"},
+    {"D3->D2", "Alarm"},
+}};
+
+// ---- random models -----------------------------------------------------------
+
+class RandomModelBuilder {
+public:
+    explicit RandomModelBuilder(std::uint32_t seed) : m_rng(seed) {}
+
+    core::Model build(bool allowHiding);
+
+private:
+    int uniform(int low, int high) { return std::uniform_int_distribution<int>(low, high)(m_rng); }
+    bool chance(double p) { return std::bernoulli_distribution(p)(m_rng); }
+    template <typename T> const T& pick(const std::vector<T>& values)
+    {
+        return values[static_cast<std::size_t>(uniform(0, static_cast<int>(values.size()) - 1))];
+    }
+
+    void addVariables(core::Model& model);
+    void randomizeSteps(core::Model& model, bool allowHiding);
+    void randomizeTransitions(core::Model& model, bool allowHiding);
+    std::string condition(std::vector<std::pair<std::string, bool>>& boolLiterals);
+    std::string comparison();
+    void randomizePriorities(core::Model& model);
+
+    std::mt19937 m_rng;
+    std::vector<std::string> m_bools;
+    std::vector<std::string> m_integers; // signed and unsigned: compared with small non-negative literals
+    std::vector<std::string> m_reals;
+};
+
+const std::vector<std::string> kAwkwardTexts = {
+    "",
+    "plain comment",
+    "ends a CDATA ]]> and opens (* an ST comment *)",
+    "<tag attr=\"value\"> & 'quotes'",
+    "multi\nline\ttext",
+    "Caf\xC3\xA9 \xC3\x9Cnic\xC3\xB6" "de \xE2\x82\xAC \xF0\x9F\x98\x80",
+};
+
+void RandomModelBuilder::addVariables(core::Model& model)
+{
+    const std::vector<core::IecType> integerTypes = {core::IecType::Sint, core::IecType::Int, core::IecType::Dint,
+                                                     core::IecType::Lint, core::IecType::Usint, core::IecType::Uint,
+                                                     core::IecType::Udint, core::IecType::Ulint};
+    const int boolCount = uniform(2, 8);
+    for (int i = 1; i <= boolCount; ++i) {
+        const std::string name = "Sig" + std::to_string(i);
+        const std::string value = chance(0.3) ? (chance(0.5) ? "TRUE" : "FALSE") : "";
+        addVariable(model, name, core::IecType::Bool, value, pick(kAwkwardTexts));
+        m_bools.push_back(name);
+    }
+    const int integerCount = uniform(1, 4);
+    for (int i = 1; i <= integerCount; ++i) {
+        const std::string name = "Count" + std::to_string(i);
+        const std::string value = chance(0.5) ? std::to_string(uniform(0, 100)) : "";
+        addVariable(model, name, pick(integerTypes), value, pick(kAwkwardTexts));
+        m_integers.push_back(name);
+    }
+    const int realCount = uniform(0, 2);
+    for (int i = 1; i <= realCount; ++i) {
+        const std::string name = "Level" + std::to_string(i);
+        addVariable(model, name, chance(0.5) ? core::IecType::Real : core::IecType::Lreal,
+                    chance(0.5) ? "2.5" : "", pick(kAwkwardTexts));
+        m_reals.push_back(name);
+    }
+}
+
+void RandomModelBuilder::randomizeSteps(core::Model& model, bool allowHiding)
+{
+    const std::vector<core::StepType> types = {core::StepType::Simple, core::StepType::Macro,
+                                               core::StepType::Enclosing};
+    for (const core::Step& step : std::vector<core::Step>(model.steps())) {
+        require(model.setStepType(step.id, pick(types)));
+        require(model.setStepComment(step.id, pick(kAwkwardTexts)));
+    }
+    const std::string initial = model.steps()[static_cast<std::size_t>(uniform(0, 15))].id;
+    require(model.setInitialStep(initial));
+    if (!allowHiding)
+        return;
+    for (const core::Step& step : std::vector<core::Step>(model.steps())) {
+        if (step.id != initial && chance(0.15))
+            require(model.setStepHidden(step.id, true));
+    }
+}
+
+std::string RandomModelBuilder::comparison()
+{
+    static const std::vector<std::string> operators = {"=", "<>", "<", ">", "<=", ">="};
+    if (!m_reals.empty() && chance(0.3))
+        return pick(m_reals) + " " + pick(operators) + " 1.5";
+    const std::string left = pick(m_integers);
+    if (chance(0.3))
+        return left + " + 1 " + pick(operators) + " " + std::to_string(uniform(0, 50));
+    return left + " " + pick(operators) + " " + std::to_string(uniform(0, 100));
+}
+
+// Each BOOL variable occurs at most once, so any of them can take a token.
+std::string RandomModelBuilder::condition(std::vector<std::pair<std::string, bool>>& boolLiterals)
+{
+    if (chance(0.05))
+        return "TRUE";
+    static const std::vector<std::string> joins = {" AND ", " OR ", " XOR ", " & "};
+    std::vector<std::string> unused = m_bools;
+    std::string text;
+    const int operands = uniform(1, 3);
+    for (int i = 0; i < operands; ++i) {
+        std::string operand;
+        if (!unused.empty() && chance(0.75)) {
+            const std::size_t index = static_cast<std::size_t>(uniform(0, static_cast<int>(unused.size()) - 1));
+            const bool negated = chance(0.35);
+            boolLiterals.emplace_back(unused[index], negated);
+            operand = (negated ? "NOT " : "") + unused[index];
+            unused.erase(unused.begin() + static_cast<std::ptrdiff_t>(index));
+        } else {
+            operand = comparison();
+            if (chance(0.5))
+                operand = "(" + operand + ")";
+        }
+        text += i == 0 ? operand : pick(joins) + operand;
+    }
+    return text;
+}
+
+void RandomModelBuilder::randomizeTransitions(core::Model& model, bool allowHiding)
+{
+    for (const core::Transition& t : std::vector<core::Transition>(model.transitions())) {
+        std::vector<std::pair<std::string, bool>> literals;
+        require(model.setCondition(t.id, condition(literals)));
+        const core::Step* source = model.step(t.source);
+        const bool nested = source && core::hasNestedBehaviour(source->type);
+        require(model.setNegated(t.id, nested && chance(0.3)));
+        std::vector<std::string> tokens;
+        for (const auto& literal : literals) {
+            if (nested && chance(0.3))
+                tokens.push_back(literal.first);
+        }
+        require(model.setTokens(t.id, tokens));
+        if (allowHiding && chance(0.08))
+            require(model.setTransitionHidden(t.id, true));
+    }
+}
+
+void RandomModelBuilder::randomizePriorities(core::Model& model)
+{
+    for (const core::Transition& t : std::vector<core::Transition>(model.transitions())) {
+        const auto effective = model.effectiveOutgoing(t.source);
+        if (model.isEffective(t) && effective.size() > 1 && chance(0.3))
+            require(model.setPriority(t.id, uniform(1, static_cast<int>(effective.size()))));
+    }
+}
+
+core::Model RandomModelBuilder::build(bool allowHiding)
+{
+    static const std::vector<std::string> names = {
+        "Random machine", "Line 3 <pack & seal>", "Presse \"Nord\" ]]> test", "Caf\xC3\xA9 \xC3\xBCnicode"};
+    m_bools.clear();
+    m_integers.clear();
+    m_reals.clear();
+    core::Model model;
+    require(model.setName(pick(names) + " " + std::to_string(uniform(1, 999))));
+    require(model.setCycleTimeMs(pick(std::vector<int>{1, 5, 10, 20, 50, 100, 1500, 60000})));
+    addVariables(model);
+    randomizeSteps(model, allowHiding);
+    randomizeTransitions(model, allowHiding);
+    randomizePriorities(model);
+    return model;
+}
+
+} // namespace
+
+core::Model caseStudyModel()
+{
+    using core::IecType;
+    core::Model model;
+    require(model.setName("Filling and capping machine"));
+    for (const char* name : {"EmergencyInterrupter", "Alarm", "ManualCapping", "Stop", "Manual", "StationTest",
+                             "Semiautomatic", "EmptyMachine", "Start", "Ready", "Automatic", "CycleEnd", "Reset"})
+        addVariable(model, name, IecType::Bool);
+    require(model.setVariableDefault("EmergencyInterrupter", "TRUE"));
+    require(model.setVariableComment("EmergencyInterrupter", "NC contact: FALSE when the mushroom button is pressed"));
+    addVariable(model, "PieceCount", IecType::Int, "0", "pieces since the start of the batch");
+    addVariable(model, "Pressure", IecType::Real, "0.0", "bar");
+
+    require(model.setStepType("A7", core::StepType::Simple));
+    require(model.setStepType("D2", core::StepType::Simple));
+    require(model.setStepHidden("F6", true));
+    require(model.setStepComment("F1", "fill, cap, eject"));
+    require(model.setStepComment("D3", "capping by hand while the filler goes on"));
+    for (const ConditionRow& row : kCaseStudyConditions)
+        require(model.setCondition(row.transition, row.condition));
+    require(model.setTokens("F1->A2", {"Stop"}));
+    require(model.setTokens("F1->F3", {"EmptyMachine"}));
+    return model;
+}
+
+core::Model randomModel(std::uint32_t seed)
+{
+    // Hiding can leave a step unreachable or without a way out; the checks
+    // say so, and another draw from the same seed is taken.
+    RandomModelBuilder builder(seed);
+    for (int attempt = 0; attempt < 50; ++attempt) {
+        core::Model model = builder.build(true);
+        if (!core::hasErrors(core::checkModel(model)))
+            return model;
+    }
+    return builder.build(false);
+}
+
+} // namespace samples
