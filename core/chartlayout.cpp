@@ -60,7 +60,7 @@ namespace {
 // failure procedures (D) bottom left, operation procedures (F) on the right
 // over the full height. docs/chart-layout.md explains the choices.
 
-constexpr Rect kSceneRect{0, 0, 1400, 960};
+constexpr Rect kSceneRect{0, 0, 1500, 960};
 constexpr double kTitleWidth = 240;
 constexpr double kTitleHeight = 20;
 constexpr double kTitleInset = 8;
@@ -71,9 +71,9 @@ struct FrameSpec {
 };
 
 constexpr FrameSpec kFrames[] = {
-    {Family::A, {20, 20, 620, 500}},
-    {Family::F, {660, 20, 730, 920}},
-    {Family::D, {20, 540, 620, 400}},
+    {Family::A, {20, 20, 670, 500}},
+    {Family::F, {710, 20, 780, 920}},
+    {Family::D, {20, 540, 670, 400}},
 };
 
 struct StepSpec {
@@ -91,18 +91,18 @@ constexpr StepSpec kSteps[] = {
     {"A1", 480, 110, kHubStep},
     {"A2", 480, 240, kStep},
     {"A3", 480, 390, kStep},
-    {"A4", 350, 390, kStep},
-    {"A5", 80, 390, kStep},
-    {"A6", 80, 120, kStep},
-    {"A7", 210, 390, kStep},
-    {"F1", 960, 360, kBigStep},
-    {"F2", 720, 260, kStep},
-    {"F3", 1010, 220, kStep},
-    {"F4", 1330, 102, kStep},
-    {"F5", 1180, 102, kStep},
-    {"F6", 1180, 700, kStep},
-    {"D1", 80, 840, kStep},
-    {"D2", 240, 700, kStep},
+    {"A4", 400, 390, kStep},
+    {"A5", 40, 390, kStep},
+    {"A6", 40, 120, kStep},
+    {"A7", 300, 390, kStep},
+    {"F1", 990, 360, kBigStep},
+    {"F2", 750, 260, kStep},
+    {"F3", 1020, 220, kStep},
+    {"F4", 1430, 102, kStep},
+    {"F5", 1230, 102, kStep},
+    {"F6", 1260, 700, kStep},
+    {"D1", 40, 840, kStep},
+    {"D2", 300, 700, kStep},
     {"D3", 480, 700, kStep},
 };
 
@@ -134,6 +134,7 @@ struct RouteSpec {
     int barSegment;
     double barAt; // distance from the segment start; negative: from its end
     LabelPlace label;
+    double labelWidth; // kMinTransitionLabelWidth to kMaxTransitionLabelWidth
 };
 
 std::vector<RouteSpec> routeSpecs()
@@ -141,40 +142,40 @@ std::vector<RouteSpec> routeSpecs()
     using enum Side;
     using enum LabelPlace;
     return {
-        {"F", "D1", {Left, 390}, {}, {Right, 10}, 0, 50, NW},
-        {"A1", "F4", {Top, 15}, {84}, {Top, -10}, 1, 375, SE},
-        {"A1", "F2", {Bottom, 15}, {210}, {Top, 0}, 1, 155, NE},
-        {"A1", "F1", {Right, 18}, {975}, {Top, -35}, 1, 92, W},
-        {"A1", "F5", {Right, -18}, {}, {Left, 0}, 0, 160, NE},
-        {"A2", "A1", {Top, 0}, {}, {Bottom, -10}, 0, 40, W},
-        {"A3", "A4", {Left, 0}, {}, {Right, 0}, 0, 20, NEFar},
-        {"A4", "F1", {Bottom, 0}, {470, 900}, {Left, 18}, 1, 340, SE},
-        {"A5", "A6", {Top, 0}, {}, {Bottom, 0}, 0, 120, E},
-        {"A5", "A7", {Right, 0}, {}, {Left, 0}, 0, 45, N},
-        {"A6", "A1", {Right, 0}, {}, {Left, 0}, 0, 80, NE},
-        {"A7", "A4", {Right, 0}, {}, {Left, 0}, 0, 76, NEFar},
-        {"F1", "D1", {Bottom, -4}, {900, 110}, {Bottom, 10}, 0, 400, E},
-        {"F1", "D3", {Bottom, -40}, {720}, {Right, 0}, 1, 270, NE},
-        {"F1", "A2", {Left, -18}, {600, 248}, {Right, -12}, 1, 72, W},
-        {"F1", "F4", {Right, 0}, {1350}, {Bottom, 0}, 1, 80, W},
-        {"F1", "F5", {Right, -40}, {1190}, {Bottom, -10}, 1, 140, W},
-        {"F1", "F3", {Top, 20}, {}, {Bottom, 0}, 0, 50, E},
-        {"F1", "A3", {Left, 0}, {}, {Right, 0}, 0, 260, SE},
-        {"F1", "F6", {Bottom, 35}, {720}, {Left, 0}, 0, 120, E},
-        {"F1", "D2", {Bottom, -22}, {780}, {Bottom, 10}, 1, 288, NE},
-        {"F2", "F1", {Bottom, 0}, {374}, {Left, -36}, 0, 37, E},
-        {"F3", "A1", {Top, 0}, {140}, {Right, 0}, 0, 50, E},
-        {"F4", "A6", {Top, 10}, {60, 100}, {Top, 0}, 1, 1060, SE},
-        {"F5", "F4", {Right, 0}, {}, {Left, 0}, 0, 55, S},
-        {"F5", "F1", {Bottom, 10}, {390}, {Right, -20}, 0, 158, E},
-        {"F6", "D1", {Bottom, 0}, {920, 90}, {Bottom, -10}, 0, 110, E},
-        {"F6", "F1", {Top, 0}, {445}, {Right, 35}, 0, 120, E},
-        {"D1", "A5", {Top, -10}, {}, {Bottom, -10}, 0, 80, E},
-        {"D1", "D2", {Right, -10}, {250}, {Bottom, -10}, 1, 50, E},
-        {"D2", "A5", {Top, 0}, {580, 110}, {Bottom, 10}, 0, 60, W},
-        {"D3", "A2", {Top, -14}, {620, 295, 260}, {Left, 0}, 2, 120, E},
-        {"D3", "A3", {Top, 0}, {}, {Bottom, 0}, 0, 120, E},
-        {"D3", "D2", {Left, 0}, {}, {Right, 0}, 0, 100, S},
+        {"F", "D1", {Left, 390}, {}, {Right, 10}, 0, 50, NW, 240},
+        {"A1", "F4", {Top, 15}, {84}, {Top, -10}, 1, 435, SE, 240},
+        {"A1", "F2", {Bottom, 15}, {210}, {Top, 0}, 1, 205, NE, 240},
+        {"A1", "F1", {Right, 18}, {1005}, {Top, -35}, 1, 92, W, 216},
+        {"A1", "F5", {Right, -18}, {}, {Left, 0}, 0, 175, NE, 240},
+        {"A2", "A1", {Top, 0}, {}, {Bottom, -10}, 0, 40, W, 240},
+        {"A3", "A4", {Left, 0}, {}, {Right, 0}, 0, 20, NEFar, 180},
+        {"A4", "F1", {Bottom, 0}, {470, 950}, {Left, 18}, 1, 310, SE, 210},
+        {"A5", "A6", {Top, 0}, {}, {Bottom, 0}, 0, 120, E, 240},
+        {"A5", "A7", {Right, 0}, {}, {Left, 0}, 0, 20, NE, 190},
+        {"A6", "A1", {Right, 0}, {}, {Left, 0}, 0, 80, NE, 240},
+        {"A7", "A4", {Right, 0}, {}, {Left, 0}, 0, 20, NWFar, 220},
+        {"F1", "D1", {Bottom, -4}, {900, 70}, {Bottom, 10}, 0, 400, E, 220},
+        {"F1", "D3", {Bottom, -40}, {720}, {Right, 0}, 1, 270, NE, 240},
+        {"F1", "A2", {Left, -18}, {650, 248}, {Right, -12}, 1, 72, W, 240},
+        {"F1", "F4", {Right, 0}, {1460}, {Bottom, 10}, 1, 80, W, 180},
+        {"F1", "F5", {Right, -40}, {1240}, {Bottom, -10}, 1, 100, W, 180},
+        {"F1", "F3", {Top, 0}, {}, {Bottom, 0}, 0, 50, E, 180},
+        {"F1", "A3", {Left, 0}, {}, {Right, 0}, 0, 260, SE, 210},
+        {"F1", "F6", {Bottom, 35}, {720}, {Left, 0}, 0, 120, E, 186},
+        {"F1", "D2", {Bottom, -22}, {780}, {Bottom, 10}, 1, 288, NE, 240},
+        {"F2", "F1", {Bottom, 0}, {374}, {Left, -36}, 0, 37, E, 216},
+        {"F3", "A1", {Top, 0}, {140}, {Right, 0}, 0, 50, E, 180},
+        {"F4", "A6", {Top, 10}, {60, 60}, {Top, 0}, 1, 1060, SE, 240},
+        {"F5", "F4", {Right, 0}, {}, {Left, 0}, 0, 90, S, 196},
+        {"F5", "F1", {Bottom, 10}, {390}, {Right, -20}, 0, 158, E, 180},
+        {"F6", "D1", {Bottom, 0}, {920, 50}, {Bottom, -10}, 0, 110, E, 190},
+        {"F6", "F1", {Top, 0}, {445}, {Right, 35}, 0, 140, E, 190},
+        {"D1", "A5", {Top, -10}, {}, {Bottom, -10}, 0, 80, E, 240},
+        {"D1", "D2", {Right, -10}, {310}, {Bottom, -10}, 1, 50, E, 240},
+        {"D2", "A5", {Top, 0}, {580, 70}, {Bottom, 10}, 0, 60, W, 240},
+        {"D3", "A2", {Top, -14}, {620, 376, 260}, {Left, 0}, 2, 120, W, 240},
+        {"D3", "A3", {Top, 0}, {}, {Bottom, 0}, 0, 120, E, 176},
+        {"D3", "D2", {Left, 0}, {}, {Right, 0}, 0, 60, S, 176},
     };
 }
 
@@ -225,9 +226,8 @@ Point pointAlong(Point from, Point to, double distance)
     return {from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t};
 }
 
-Rect labelRect(Point bar, LabelPlace place)
+Rect labelRect(Point bar, LabelPlace place, double w)
 {
-    constexpr double w = kTransitionLabelWidth;
     constexpr double h = kTransitionLabelHeight;
     constexpr double gap = 4;
     constexpr double beside = kTransitionBarLength / 2 + gap;
@@ -271,7 +271,7 @@ TransitionLayout buildTransition(const ChartLayout& layout, const RouteSpec& spe
     const Point to = transition.route[segment + 1];
     transition.barCenter = pointAlong(from, to, spec.barAt);
     transition.barHorizontal = from.x == to.x; // a vertical segment gets a horizontal bar
-    transition.labelRect = labelRect(transition.barCenter, spec.label);
+    transition.labelRect = labelRect(transition.barCenter, spec.label, spec.labelWidth);
     return transition;
 }
 

@@ -62,7 +62,9 @@ struct TransitionLayout {
     std::vector<Point> route;
     Point barCenter;          // GRAFCET transition bar, on a straight segment of the route
     bool barHorizontal = true; // horizontal bar across a vertical segment
-    Rect labelRect;           // where the GUI writes "p: condition" (elided to fit)
+    // Where the GUI writes "p: condition", elided to fit. Its width is
+    // chosen per transition, as wide as the sheet allows around the bar.
+    Rect labelRect;
 };
 
 struct ChartLayout {
@@ -77,7 +79,8 @@ struct ChartLayout {
 };
 
 inline constexpr double kTransitionBarLength = 20;
-inline constexpr double kTransitionLabelWidth = 120;
+inline constexpr double kMinTransitionLabelWidth = 160;
+inline constexpr double kMaxTransitionLabelWidth = 240;
 inline constexpr double kTransitionLabelHeight = 16;
 
 // The layout of the fixed template, built on first use.

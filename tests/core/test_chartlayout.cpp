@@ -362,7 +362,8 @@ TEST_CASE("Transition labels are beside their bar and overlap nothing", "[layout
     for (const TransitionLayout& t : layout.transitions) {
         INFO("transition " << t.id);
         const Rect& label = t.labelRect;
-        CHECK(label.width == kTransitionLabelWidth);
+        CHECK(label.width >= kMinTransitionLabelWidth);
+        CHECK(label.width <= kMaxTransitionLabelWidth);
         CHECK(label.height == kTransitionLabelHeight);
         CHECK(distance(t.barCenter, label) <= 30);
         CHECK_FALSE(label.intersects(barRect(t)));
@@ -385,6 +386,32 @@ TEST_CASE("Transition labels are beside their bar and overlap nothing", "[layout
                 CHECK_FALSE(segmentEnters(s, label));
         }
     }
+}
+
+TEST_CASE("Every transition label is wide enough for a real condition", "[layout]")
+{
+    // 120 units cut "Stop OR BottleCount_Max" after a dozen characters; 160
+    // holds about 24 characters of the 12-unit label font.
+    STATIC_REQUIRE(kMinTransitionLabelWidth >= 160);
+    const ChartLayout& layout = templateLayout();
+    double total = 0;
+    for (const TransitionLayout& t : layout.transitions) {
+        INFO("transition " << t.id);
+        CHECK(t.labelRect.width >= 160);
+        total += t.labelRect.width;
+    }
+    // On average well above the minimum: labels take the room the sheet has.
+    CHECK(total / static_cast<double>(layout.transitions.size()) >= 190);
+}
+
+TEST_CASE("The A5->A7 label sits next to its bar", "[layout]")
+{
+    // A5->A7 once had its label centred 24 units above the row, closer to
+    // A5->A6 than to its own bar.
+    const TransitionLayout* t = templateLayout().transition("A5->A7");
+    REQUIRE(t != nullptr);
+    CHECK(distance(t->barCenter, t->labelRect) <= 6);
+    CHECK(t->labelRect.left() > t->barCenter.x); // starts at the bar, reads away from A5
 }
 
 TEST_CASE("Everything lies inside the scene rectangle", "[layout]")

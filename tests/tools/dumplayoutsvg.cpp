@@ -91,8 +91,15 @@ void writeTransition(std::ostream& out, const TransitionLayout& t, int priority)
     else
         writeLine(out, {c.x, c.y - half}, {c.x, c.y + half}, "stroke:black;stroke-width:3");
     writeRect(out, t.labelRect, "fill:#fff8d0;fill-opacity:0.8;stroke:#d0b040;stroke-width:0.5");
+    // Text placed like the editor does: towards the bar.
     const Rect& r = t.labelRect;
-    writeText(out, {r.x + 3, r.y + 12}, std::to_string(priority) + ": " + t.id, 11);
+    const std::string text = std::to_string(priority) + ": " + t.id;
+    if (r.right() <= c.x + 0.5)
+        writeText(out, {r.right() - 3, r.y + 12}, text, 11, "text-anchor='end'");
+    else if (r.left() >= c.x - 0.5)
+        writeText(out, {r.x + 3, r.y + 12}, text, 11);
+    else
+        writeText(out, {r.center().x, r.y + 12}, text, 11, "text-anchor='middle'");
 }
 
 // Figures to watch while tuning the table by eye.
@@ -163,6 +170,63 @@ void printFigures(const ChartLayout& layout)
     std::cerr << crossings << " crossings, " << labelsOnRoutes << " labels on other routes\n";
 }
 
+Rect barRect(const TransitionLayout& t)
+{
+    const double half = kTransitionBarLength / 2;
+    if (t.barHorizontal)
+        return {t.barCenter.x - half, t.barCenter.y - 1, kTransitionBarLength, 2};
+    return {t.barCenter.x - 1, t.barCenter.y - half, 2, kTransitionBarLength};
+}
+
+bool labelFits(const ChartLayout& layout, const TransitionLayout& t, const Rect& label)
+{
+    bool inFrame = false;
+    for (const FrameLayout& frame : layout.frames) {
+        if (label.intersects(frame.titleRect))
+            return false;
+        inFrame = inFrame || frame.rect.contains(label);
+    }
+    if (!inFrame)
+        return false;
+    for (const StepLayout& step : layout.steps) {
+        if (label.intersects(step.box))
+            return false;
+    }
+    for (const TransitionLayout& other : layout.transitions) {
+        if (label.intersects(barRect(other)))
+            return false;
+        if (&other != &t && label.intersects(other.labelRect))
+            return false;
+        for (std::size_t p = 0; p + 1 < other.route.size(); ++p) {
+            if (segmentHitsRect({other.route[p], other.route[p + 1]}, label))
+                return false;
+        }
+    }
+    return true;
+}
+
+// How wide each label could grow, its side towards the bar kept in place
+// (both sides when it is centred on the bar): the room left for tuning.
+void printLabelRoom(const ChartLayout& layout)
+{
+    for (const TransitionLayout& t : layout.transitions) {
+        const Rect& r = t.labelRect;
+        double room = r.width;
+        for (double width = r.width + 1; width <= 400; ++width) {
+            Rect grown = r;
+            grown.width = width;
+            if (r.right() <= t.barCenter.x + 0.5)
+                grown.x = r.right() - width;
+            else if (r.left() < t.barCenter.x - 0.5)
+                grown.x = r.center().x - width / 2;
+            if (!labelFits(layout, t, grown))
+                break;
+            room = width;
+        }
+        std::cerr << "label " << t.id << ": " << r.width << " wide, room for " << room << "\n";
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -192,6 +256,7 @@ int main(int argc, char** argv)
     svg << "</svg>\n";
 
     printFigures(layout);
+    printLabelRoom(layout);
     if (argc > 1) {
         std::ofstream file(argv[1]);
         file << svg.str();
