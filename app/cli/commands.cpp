@@ -1,0 +1,319 @@
+#include "commands.h"
+
+#include "arguments.h"
+
+#include "core/checks.h"
+#include "core/fileio.h"
+#include "core/modelfiles.h"
+#include "core/plcopenwriter.h"
+#include "core/stexport.h"
+#include "core/stgenerator.h"
+#include "cycletime.h"
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <ostream>
+
+namespace cli {
+
+namespace {
+
+const char* const kUsage =
+    "Usage: ggstudio-cli COMMAND [ARGUMENTS]\n"
+    "\n"
+    "Commands:\n"
+    "  new OUT [--to native|gg-generator]\n"
+    "      Write the GEMMA template as a new model file.\n"
+    "  validate FILE...\n"
+    "      Check models; print FILE: ELEMENT: severity: CODE: message lines.\n"
+    "      Exit 0 without errors, 1 when a model has errors, 2 when a file cannot be read.\n"
+    "  convert IN OUT [--to native|gg-generator]\n"
+    "      Convert between GG Studio JSON, GG-Generator JSON and (as input) GG Studio PLCopen XML.\n"
+    "  export MODEL -o OUT [--dialect iec|codesys] [--format plcopen|st|st-folder]\n"
+    "         [--cycle-time 20ms] [--force]\n"
+    "      Generate the PLC program: PLCopen XML (default for .xml), one IEC Structured Text\n"
+    "      file (default for .st) or a folder with one .st file per POU. The dialect and\n"
+    "      cycle time default to the model's settings. A model with errors is refused\n"
+    "      unless --force (the code then carries a comment at each problem).\n"
+    "  st MODEL [--dialect iec|codesys]\n"
+    "      Print the GEMMA program's Structured Text.\n"
+    "\n"
+    "Formats: IN is recognised by its content. OUT is GG-Generator JSON when it ends in\n"
+    ".gg.json, GG Studio JSON otherwise; --to overrides the extension.\n"
+    "\n"
+    "Options:\n"
+    "  --help       Show this help.\n"
+    "  --version    Show the version.\n";
+
+bool endsWith(const std::string& text, const std::string& suffix)
+{
+    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Output format from --to, else from the file name.
+bool outputFormat(const Arguments& args, const std::string& path, core::ModelFormat& format, std::ostream& err)
+{
+    if (auto to = args.value("--to")) {
+        if (*to == "native") {
+            format = core::ModelFormat::Native;
+        } else if (*to == "gg-generator") {
+            format = core::ModelFormat::GGGenerator;
+        } else {
+            err << "ggstudio-cli: --to takes native or gg-generator, not '" << *to << "'\n";
+            return false;
+        }
+        return true;
+    }
+    format = endsWith(path, ".gg.json") ? core::ModelFormat::GGGenerator : core::ModelFormat::Native;
+    return true;
+}
+
+int usageError(std::ostream& err, const std::string& message)
+{
+    err << "ggstudio-cli: " << message << "\nTry 'ggstudio-cli --help'.\n";
+    return UsageError;
+}
+
+int save(const core::Model& model, const std::string& path, core::ModelFormat format, std::ostream& err)
+{
+    core::Status status = core::saveModelFile(model, path, format);
+    if (!status) {
+        err << path << ": " << status.message << "\n";
+        return UnreadableInput;
+    }
+    return Success;
+}
+
+std::unique_ptr<core::Model> loadOrReport(const std::string& path, std::ostream& err)
+{
+    core::LoadedModel loaded = core::loadModelFile(path);
+    if (!loaded.ok())
+        err << loaded.error.toString() << "\n";
+    return std::move(loaded.model);
+}
+
+int commandNew(const Arguments& args, Streams streams)
+{
+    if (args.positional().size() != 1)
+        return usageError(streams.err, "new takes one output file");
+    const std::string& path = args.positional()[0];
+    core::ModelFormat format;
+    if (!outputFormat(args, path, format, streams.err))
+        return UsageError;
+    return save(core::Model(), path, format, streams.err);
+}
+
+int validateOne(const std::string& path, Streams streams)
+{
+    core::LoadedModel loaded = core::loadModelFile(path);
+    if (!loaded.ok()) {
+        streams.err << loaded.error.toString() << "\n";
+        return UnreadableInput;
+    }
+    const std::vector<core::Diagnostic> diagnostics = core::checkModel(*loaded.model);
+    for (const core::Diagnostic& d : diagnostics) {
+        streams.out << path << ": " << core::diagnosticElementLabel(d) << ": " << core::severityName(d.severity)
+                    << ": " << d.code << ": " << d.message << "\n";
+    }
+    return core::hasErrors(diagnostics) ? ModelHasErrors : Success;
+}
+
+int commandValidate(const Arguments& args, Streams streams)
+{
+    if (args.positional().empty())
+        return usageError(streams.err, "validate takes at least one model file");
+    int worst = Success;
+    for (const std::string& path : args.positional())
+        worst = std::max(worst, validateOne(path, streams));
+    return worst;
+}
+
+int commandConvert(const Arguments& args, Streams streams)
+{
+    if (args.positional().size() != 2)
+        return usageError(streams.err, "convert takes an input and an output file");
+    const std::string& input = args.positional()[0];
+    const std::string& output = args.positional()[1];
+    core::ModelFormat format;
+    if (!outputFormat(args, output, format, streams.err))
+        return UsageError;
+    std::unique_ptr<core::Model> model = loadOrReport(input, streams.err);
+    if (!model)
+        return UnreadableInput;
+    return save(*model, output, format, streams.err);
+}
+
+// The dialect from --dialect, else the model's setting.
+bool chooseDialect(const Arguments& args, const core::Model& model, core::Dialect& dialect, std::ostream& err)
+{
+    dialect = model.settings().dialect;
+    if (auto given = args.value("--dialect"); given && !core::parseDialect(*given, dialect)) {
+        err << "ggstudio-cli: --dialect takes iec or codesys, not '" << *given << "'\n";
+        return false;
+    }
+    return true;
+}
+
+enum class ExportFormat { PlcOpen, StFile, StFolder };
+
+bool chooseExportFormat(const Arguments& args, const std::string& output, ExportFormat& format, std::ostream& err)
+{
+    std::string name = args.value("--format").value_or("");
+    if (name.empty()) {
+        if (endsWith(output, ".xml")) {
+            name = "plcopen";
+        } else if (endsWith(output, ".st")) {
+            name = "st";
+        } else {
+            err << "ggstudio-cli: cannot tell the export format from '" << output
+                << "': use --format plcopen, st or st-folder\n";
+            return false;
+        }
+    }
+    static const std::map<std::string, ExportFormat> formats{
+        {"plcopen", ExportFormat::PlcOpen}, {"st", ExportFormat::StFile}, {"st-folder", ExportFormat::StFolder}};
+    auto found = formats.find(name);
+    if (found == formats.end()) {
+        err << "ggstudio-cli: --format takes plcopen, st or st-folder, not '" << name << "'\n";
+        return false;
+    }
+    format = found->second;
+    return true;
+}
+
+// Lists the errors of a model about to be exported; true when there are none.
+bool reportExportErrors(const std::string& path, const core::Model& model, bool force, std::ostream& err)
+{
+    const std::vector<core::Diagnostic> diagnostics = core::checkModel(model);
+    if (!core::hasErrors(diagnostics))
+        return true;
+    for (const core::Diagnostic& d : diagnostics) {
+        if (d.severity == core::Severity::Error)
+            err << path << ": " << core::diagnosticElementLabel(d) << ": error: " << d.code << ": " << d.message
+                << "\n";
+    }
+    err << (force ? "ggstudio-cli: exporting anyway (--force): the code marks each problem with a comment\n"
+                  : "ggstudio-cli: the model has errors; fix them or export anyway with --force\n");
+    return force;
+}
+
+core::Status writeExport(const core::Model& model, core::Dialect dialect, ExportFormat format,
+                         const std::string& output)
+{
+    switch (format) {
+    case ExportFormat::PlcOpen:
+        return core::writeFileAtomically(output, core::writePlcOpenXml(core::buildPlcProject(model, dialect), model));
+    case ExportFormat::StFile:
+        return core::exportStSingleFile(model, output);
+    case ExportFormat::StFolder:
+        return core::exportStFolder(core::buildPlcProject(model, dialect), output);
+    }
+    return core::Status::failure("export", "unknown export format");
+}
+
+int commandExport(const Arguments& args, Streams streams)
+{
+    if (args.positional().size() != 1)
+        return usageError(streams.err, "export takes one model file");
+    const std::string& input = args.positional()[0];
+    const std::optional<std::string> output = args.value("--output");
+    if (!output || output->empty())
+        return usageError(streams.err, "export needs an output: -o OUT");
+    ExportFormat format;
+    if (!chooseExportFormat(args, *output, format, streams.err))
+        return UsageError;
+
+    std::unique_ptr<core::Model> model = loadOrReport(input, streams.err);
+    if (!model)
+        return UnreadableInput;
+    core::Dialect dialect;
+    if (!chooseDialect(args, *model, dialect, streams.err))
+        return UsageError;
+    if (format == ExportFormat::StFile && dialect == core::Dialect::Codesys && args.has("--dialect"))
+        return usageError(streams.err, "--format st writes one IEC file: CODESYS has no single-file form; "
+                                       "use --format st-folder or plcopen");
+    if (auto cycle = args.value("--cycle-time")) {
+        const std::optional<int> milliseconds = parseCycleTime(*cycle);
+        if (!milliseconds)
+            return usageError(streams.err, "--cycle-time takes a duration such as 20ms, 1s or T#1s500ms, not '" +
+                                               *cycle + "'");
+        if (core::Status status = model->setCycleTimeMs(*milliseconds); !status)
+            return usageError(streams.err, status.message);
+    }
+    if (!reportExportErrors(input, *model, args.has("--force"), streams.err))
+        return ModelHasErrors;
+    if (core::Status status = writeExport(*model, dialect, format, *output); !status) {
+        streams.err << *output << ": " << status.message << "\n";
+        return UnreadableInput;
+    }
+    return Success;
+}
+
+int commandSt(const Arguments& args, Streams streams)
+{
+    if (args.positional().size() != 1)
+        return usageError(streams.err, "st takes one model file");
+    std::unique_ptr<core::Model> model = loadOrReport(args.positional()[0], streams.err);
+    if (!model)
+        return UnreadableInput;
+    core::Dialect dialect;
+    if (!chooseDialect(args, *model, dialect, streams.err))
+        return UsageError;
+    streams.out << core::previewGemmaProgram(*model, dialect).text;
+    return Success;
+}
+
+struct Command {
+    std::function<int(const Arguments&, Streams)> run;
+    std::vector<std::string> options;
+    std::vector<std::string> flags;
+};
+
+const std::map<std::string, Command>& commands()
+{
+    static const std::map<std::string, Command> table{
+        {"new", {commandNew, {"--to"}, {}}},
+        {"validate", {commandValidate, {}, {}}},
+        {"convert", {commandConvert, {"--to"}, {}}},
+        {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
+        {"st", {commandSt, {"--dialect"}, {}}},
+    };
+    return table;
+}
+
+} // namespace
+
+int run(const std::vector<std::string>& words, Streams streams)
+{
+    if (words.empty())
+        return usageError(streams.err, "no command given");
+    const std::string& name = words.front();
+    if (name == "--help" || name == "-h" || name == "help") {
+        streams.out << kUsage;
+        return Success;
+    }
+    if (name == "--version") {
+        streams.out << "ggstudio-cli " << GGSTUDIO_VERSION << "\n";
+        return Success;
+    }
+    auto command = commands().find(name);
+    if (command == commands().end())
+        return usageError(streams.err, "unknown command '" + name + "'");
+
+    const std::vector<std::string> rest(words.begin() + 1, words.end());
+    if (std::find(rest.begin(), rest.end(), "--help") != rest.end()) {
+        streams.out << kUsage;
+        return Success;
+    }
+    Arguments args(rest, command->second.flags);
+    if (!args.error().empty())
+        return usageError(streams.err, args.error());
+    std::vector<std::string> allowed = command->second.options;
+    allowed.insert(allowed.end(), command->second.flags.begin(), command->second.flags.end());
+    if (std::string unknown = args.unknownOptions(allowed); !unknown.empty())
+        return usageError(streams.err, unknown);
+    return command->second.run(args, streams);
+}
+
+} // namespace cli

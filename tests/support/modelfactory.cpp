@@ -1,0 +1,193 @@
+#include "modelfactory.h"
+
+#include <array>
+#include <stdexcept>
+#include <vector>
+
+namespace factory {
+
+namespace {
+
+void require(const core::Status& status)
+{
+    if (!status)
+        throw std::logic_error("model factory: " + status.message);
+}
+
+core::Variable variable(std::string name, core::IecType type, std::string defaultValue, std::string comment)
+{
+    return core::Variable{std::move(name), type, std::move(defaultValue), std::move(comment)};
+}
+
+template <typename T>
+const T& pick(std::mt19937& random, const std::vector<T>& items)
+{
+    std::uniform_int_distribution<std::size_t> index(0, items.size() - 1);
+    return items[index(random)];
+}
+
+int between(std::mt19937& random, int low, int high)
+{
+    return std::uniform_int_distribution<int>(low, high)(random);
+}
+
+std::string randomCondition(std::mt19937& random, const core::Model& model)
+{
+    static const std::vector<std::string> shapes{"{0}", "NOT {0}", "{0} AND {1}", "{0} OR NOT {1}",
+                                                 "({0} OR {1}) AND {2}", "{0} XOR {1}", "TRUE", "",
+                                                 "{0} AND", "{0} = {1}", "NOT NOT {0}"};
+    std::string text = pick(random, shapes);
+    for (char slot : {'0', '1', '2'}) {
+        const std::string placeholder = std::string("{") + slot + "}";
+        for (auto at = text.find(placeholder); at != std::string::npos; at = text.find(placeholder)) {
+            const std::string name =
+                model.variables().empty() ? "Unknown" : pick(random, model.variables()).name;
+            text.replace(at, placeholder.size(), name);
+        }
+    }
+    return text;
+}
+
+} // namespace
+
+core::Model realisticModel()
+{
+    core::Model model;
+    require(model.setName("Bottle filling line"));
+    require(model.setCycleTimeMs(10));
+    const std::array<core::Variable, 20> variables{{
+        variable("EmergencyStop", core::IecType::Bool, "FALSE", "Emergency stop chain open"),
+        variable("Start", core::IecType::Bool, "", "Start push button"),
+        variable("Stop", core::IecType::Bool, "", "Stop push button"),
+        variable("Reset", core::IecType::Bool, "", "Reset push button"),
+        variable("Acknowledge", core::IecType::Bool, "", "Fault acknowledged by the operator"),
+        variable("AutoMode", core::IecType::Bool, "TRUE", "Mode selector on automatic"),
+        variable("VerifyMode", core::IecType::Bool, "", "Mode selector on verification"),
+        variable("Fault", core::IecType::Bool, "", "Any drive fault"),
+        variable("MotorOverload", core::IecType::Bool, "", "Conveyor motor thermal relay"),
+        variable("DoorClosed", core::IecType::Bool, "", "Guard door closed"),
+        variable("AirPressureOk", core::IecType::Bool, "", "Compressed air above 5 bar"),
+        variable("HomePosition", core::IecType::Bool, "", "Filler head in home position"),
+        variable("CycleEnd", core::IecType::Bool, "", "Current bottle finished"),
+        variable("PreparationDone", core::IecType::Bool, "", "Tank filled and rinsed"),
+        variable("BottlePresent", core::IecType::Bool, "", "Bottle under the filler"),
+        variable("BottleCount", core::IecType::Int, "0", "Bottles filled in this batch"),
+        variable("BatchSize", core::IecType::Int, "500", "Bottles per batch"),
+        variable("Temperature", core::IecType::Real, "20.0", "Product temperature in degrees Celsius"),
+        variable("MaxTemperature", core::IecType::Real, "45.5", "Alarm threshold"),
+        variable("FaultCount", core::IecType::Dint, "0", "Faults since power-on"),
+    }};
+    for (const core::Variable& v : variables)
+        require(model.addVariable(v));
+
+    for (const char* hidden : {"A3", "F3", "F5", "F6", "D3"})
+        require(model.setStepHidden(hidden, true));
+    require(model.setStepType("F2", core::StepType::Simple));
+
+    const std::array<std::pair<const char*, const char*>, 19> conditions{{
+        {"F->D1", "EmergencyStop"},
+        {"A6->A1", "HomePosition AND AirPressureOk"},
+        {"A1->F4", "VerifyMode AND Start"},
+        {"A1->F2", "Start AND NOT PreparationDone"},
+        {"A1->F1", "Start AND AutoMode AND PreparationDone AND DoorClosed"},
+        {"A2->A1", "CycleEnd"},
+        {"A4->F1", "Start AND DoorClosed"},
+        {"A5->A6", "Reset AND Acknowledge"},
+        {"A5->A7", "Reset AND NOT HomePosition"},
+        {"A7->A4", "HomePosition"},
+        {"F1->D1", "MotorOverload OR Temperature > MaxTemperature"},
+        {"F1->A2", "NOT Stop"},
+        {"F1->F4", "VerifyMode AND NOT BottlePresent"},
+        {"F1->D2", "Fault AND FaultCount < 3"},
+        {"F2->F1", "PreparationDone"},
+        {"F4->A6", "Stop OR BottleCount >= BatchSize"},
+        {"D1->A5", "NOT EmergencyStop AND Acknowledge"},
+        {"D1->D2", "Fault"},
+        {"D2->A5", "Acknowledge AND NOT Fault"},
+    }};
+    for (const auto& [id, condition] : conditions)
+        require(model.setCondition(id, condition));
+    require(model.setTokens("F1->A2", {"Stop"}));
+    require(model.setTokens("F1->F4", {"VerifyMode"}));
+    require(model.setTokens("F1->D2", {"Fault"}));
+    require(model.setStepComment("F1", "Fill, cap and label bottles"));
+    return model;
+}
+
+core::Model stressModel()
+{
+    core::Model model;
+    std::vector<std::string> bools;
+    std::vector<std::string> ints;
+    for (int i = 0; i < 500; ++i) {
+        const bool isBool = i % 5 != 4;
+        std::string name = (isBool ? "Sensor" : "Counter") + std::to_string(i);
+        require(model.addVariable(variable(name, isBool ? core::IecType::Bool : core::IecType::Int, "", "")));
+        (isBool ? bools : ints).push_back(std::move(name));
+    }
+    std::mt19937 random(2026);
+    for (const core::Transition& t : model.transitions()) {
+        std::string condition;
+        for (int operand = 0; operand < 30; ++operand) {
+            if (operand > 0)
+                condition += operand % 3 == 0 ? " OR " : " AND ";
+            if (operand % 4 == 3) {
+                condition += pick(random, ints) + " > " + std::to_string(between(random, 0, 100));
+            } else {
+                condition += (operand % 2 ? "NOT " : "") + pick(random, bools);
+            }
+        }
+        require(model.setCondition(t.id, condition));
+    }
+    return model;
+}
+
+int applyRandomEdits(core::Model& model, std::mt19937& random, int count)
+{
+    std::vector<std::string> stepIds;
+    for (const core::Step& s : model.steps())
+        stepIds.push_back(s.id);
+    stepIds.push_back("X9"); // not a step: must be refused
+    std::vector<std::string> transitionIds;
+    for (const core::Transition& t : model.transitions())
+        transitionIds.push_back(t.id);
+    transitionIds.push_back("A1->D3");
+    const std::vector<std::string> names{"Start", "stop", "Stop", "Speed", "Level", "Door_Closed", "", "X"};
+    const std::vector<core::StepType> types{core::StepType::Simple, core::StepType::Macro,
+                                            core::StepType::Enclosing};
+
+    int accepted = 0;
+    for (int i = 0; i < count; ++i) {
+        core::Status status;
+        const std::string& stepId = pick(random, stepIds);
+        const std::string& transitionId = pick(random, transitionIds);
+        const std::string& name = pick(random, names);
+        switch (between(random, 0, 16)) {
+        case 0: status = model.setStepType(stepId, pick(random, types)); break;
+        case 1: status = model.setInitialStep(stepId); break;
+        case 2: status = model.setStepHidden(stepId, between(random, 0, 2) == 0); break;
+        case 3: status = model.setStepComment(stepId, "comment <" + std::to_string(i) + "> *) \"&"); break;
+        case 4: status = model.setTransitionHidden(transitionId, between(random, 0, 3) == 0); break;
+        case 5: status = model.setPriority(transitionId, between(random, 0, 10)); break;
+        case 6: status = model.setOrder(transitionId, between(random, 0, 10)); break;
+        case 7: status = model.setCondition(transitionId, randomCondition(random, model)); break;
+        case 8: status = model.setNegated(transitionId, between(random, 0, 1) == 1); break;
+        case 9: status = model.setTokens(transitionId, {name}); break;
+        case 10: status = model.addVariable(variable(name, pick(random, std::vector<core::IecType>{
+                                                                 core::IecType::Bool, core::IecType::Int,
+                                                                 core::IecType::Real}),
+                                                     "", "")); break;
+        case 11: status = model.removeVariable(name); break;
+        case 12: status = model.renameVariable(name, pick(random, names) + std::to_string(between(random, 0, 3)));
+            break;
+        case 13: status = model.setVariableType(name, core::IecType::Dint); break;
+        case 14: status = model.setVariableDefault(name, std::to_string(between(random, -5, 300))); break;
+        case 15: status = model.setCycleTimeMs(between(random, -1, 100)); break;
+        default: status = model.moveVariable(name, between(random, -1, 5)); break;
+        }
+        accepted += status ? 1 : 0;
+    }
+    return accepted;
+}
+
+} // namespace factory

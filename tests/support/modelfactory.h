@@ -1,0 +1,29 @@
+#pragma once
+
+// Models the tests and benchmarks share: the realistic model and the stress
+// model the issues' performance figures refer to, and random edit sequences
+// for the property tests.
+
+#include "core/model.h"
+
+#include <cstdint>
+#include <random>
+#include <string>
+
+namespace factory {
+
+// A bottle-filling machine on the template: 11 visible states (A1 A2 A4 A5
+// A6 A7 F1 F2 F4 D1 D2), 20 variables of BOOL, INT and REAL, a condition on
+// every effective transition, tokens on three transitions out of F1, and all
+// three step types (F1 macro, F4 enclosing, the rest simple).
+core::Model realisticModel();
+
+// 500 variables (400 BOOL, 100 INT), every step and transition visible,
+// every condition 30 operands long.
+core::Model stressModel();
+
+// Applies `count` random operations (valid and invalid ones: the model must
+// refuse the latter) and returns how many the model accepted.
+int applyRandomEdits(core::Model& model, std::mt19937& random, int count);
+
+} // namespace factory
