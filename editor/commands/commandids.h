@@ -1,0 +1,31 @@
+#pragma once
+
+namespace editor {
+
+// QUndoCommand::id() of every model command. QUndoStack only offers two
+// commands of the same id to mergeWith(); those that merge say so.
+enum CommandId : int {
+    SetStepTypeId = 1,
+    SetInitialStepId,
+    SetStepHiddenId,
+    SetStepCommentId, // merges typing in the same step's comment
+    SetTransitionHiddenId,
+    SetPriorityId,
+    SetConditionId, // merges typing in the same transition's condition
+    SetNegatedId,
+    SetTokensId,
+    AddVariableId,
+    RemoveVariableId,
+    RenameVariableId,
+    SetVariableTypeId,
+    SetVariableDefaultId, // merges typing in the same variable's default
+    SetVariableCommentId, // merges typing in the same variable's comment
+    MoveVariableId,
+    ResetModelId,
+    SetModelNameId, // merges typing in the model name
+    SetCycleTimeId, // merges spin box steps
+    SetDialectId,
+    PasteVariablesId,
+};
+
+} // namespace editor

@@ -1,0 +1,32 @@
+#include "editor/commands/setinitialstepcommand.h"
+
+#include "editor/commands/commandids.h"
+
+#include "core/model.h"
+
+namespace editor {
+
+SetInitialStepCommand::SetInitialStepCommand(Document& document, const QString& stepId)
+    : ModelCommand(document, tr("Make %1 the initial step").arg(stepId))
+    , m_stepId(toStdString(stepId))
+{
+}
+
+int SetInitialStepCommand::id() const
+{
+    return SetInitialStepId;
+}
+
+core::Status SetInitialStepCommand::apply()
+{
+    if (firstRun())
+        m_previous = model().initialStep().id;
+    return model().setInitialStep(m_stepId);
+}
+
+core::Status SetInitialStepCommand::revert()
+{
+    return model().setInitialStep(m_previous);
+}
+
+} // namespace editor

@@ -1,0 +1,34 @@
+#include "editor/commands/setnegatedcommand.h"
+
+#include "editor/commands/commandids.h"
+
+#include "core/model.h"
+
+namespace editor {
+
+SetNegatedCommand::SetNegatedCommand(Document& document, const QString& transitionId, bool negated)
+    : ModelCommand(document, negated ? tr("Negate %1").arg(transitionId)
+                                     : tr("Remove negation of %1").arg(transitionId))
+    , m_transitionId(toStdString(transitionId))
+    , m_negated(negated)
+{
+}
+
+int SetNegatedCommand::id() const
+{
+    return SetNegatedId;
+}
+
+// A first run that finds the flag already set changes nothing and is
+// dropped, so the inverse is always the opposite flag.
+core::Status SetNegatedCommand::apply()
+{
+    return model().setNegated(m_transitionId, m_negated);
+}
+
+core::Status SetNegatedCommand::revert()
+{
+    return model().setNegated(m_transitionId, !m_negated);
+}
+
+} // namespace editor

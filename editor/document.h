@@ -1,0 +1,101 @@
+#pragma once
+
+#include "editor/elementref.h"
+
+#include "core/diagnostic.h"
+#include "core/model.h"
+#include "core/modelfiles.h"
+
+#include <QObject>
+#include <QString>
+
+#include <memory>
+#include <vector>
+
+class QUndoStack;
+class QUndoCommand;
+
+namespace editor {
+
+class ModelCommand;
+
+// The open model: owns the core::Model and its QUndoStack, and is the only
+// way to change them. Every edit is a QUndoCommand pushed with push(); the
+// commands (editor/commands/) call the model's operations through model().
+// The core model's change events come out as typed Qt signals, which the
+// chart, the docks and the window observe.
+class Document : public QObject {
+    Q_OBJECT
+
+public:
+    explicit Document(QObject* parent = nullptr);
+    ~Document() override;
+
+    const core::Model& model() const { return *m_model; }
+    // For undo commands only: everything else edits by pushing commands.
+    core::Model& modelForCommands() { return *m_model; }
+
+    QUndoStack* undoStack() const { return m_undoStack; }
+    // Takes ownership and runs redo(). For a ModelCommand (editor/commands/)
+    // whose model operation fails, returns false and emits editFailed(): the
+    // command never enters the undo stack and the redo history stays. A
+    // ModelCommand that changes nothing is dropped as well (returns true).
+    bool push(QUndoCommand* command);
+
+    // Checks of the current model, recomputed after every edit (a command's
+    // redo or undo, a load); diagnosticsChanged() is emitted when they differ.
+    // The typed signals of an edit come when it is complete, after the checks,
+    // so a slot always sees a whole model and its current diagnostics.
+    const std::vector<core::Diagnostic>& diagnostics() const { return m_diagnostics; }
+    std::vector<core::Diagnostic> diagnosticsFor(const ElementRef& element) const;
+    bool hasProblems(const ElementRef& element) const; // any error or warning
+
+    // Files. A failed load leaves the open model untouched and returns false
+    // with the reason in errorMessage ("FILE: LOCATION: MESSAGE").
+    bool load(const QString& path, QString* errorMessage);
+    bool save(const QString& path, QString* errorMessage); // native JSON, atomic
+    void newFromTemplate();
+    // Replaces the whole model (for recovery and import); clears undo history.
+    void replaceModel(const core::Model& model, const QString& path, core::ModelFormat format);
+
+    QString filePath() const { return m_filePath; }
+    core::ModelFormat fileFormat() const { return m_fileFormat; }
+    // "Untitled" or the file's base name.
+    QString displayName() const;
+    bool isModified() const;
+
+signals:
+    void stepChanged(const QString& id);
+    void transitionChanged(const QString& id);
+    void variableChanged(const QString& name);
+    void variablesChanged(); // added, removed, renamed or moved
+    void settingsChanged();
+    void modelReset();        // everything may have changed
+    void diagnosticsChanged();
+    void filePathChanged(const QString& path);
+    void modifiedChanged(bool modified);
+    // An edit was refused (its model operation failed); the message is for the user.
+    void editFailed(const QString& message);
+
+private:
+    friend class ModelCommand; // brackets its model operations, reports failures
+
+    void beginEdit();
+    void endEdit();
+    void reportEditFailure(const QString& message);
+    void onModelChanged(const core::ModelChange& change);
+    void emitChange(const core::ModelChange& change);
+    bool recheck(); // true when the diagnostics changed
+
+    std::unique_ptr<core::Model> m_model;
+    QUndoStack* m_undoStack;
+    std::vector<core::Diagnostic> m_diagnostics;
+    QString m_filePath;
+    core::ModelFormat m_fileFormat = core::ModelFormat::Native;
+    int m_observer = 0;
+    int m_editDepth = 0;
+    bool m_recheckQueued = false;
+    std::vector<core::ModelChange> m_pendingChanges; // of the edit under way
+};
+
+} // namespace editor

@@ -1,0 +1,311 @@
+// The Document: signals, diagnostics, the modified flag, files; and the Selection.
+
+#include "editor/commands/addvariablecommand.h"
+#include "editor/commands/renamevariablecommand.h"
+#include "editor/commands/setconditioncommand.h"
+#include "editor/commands/setinitialstepcommand.h"
+#include "editor/commands/setstephiddencommand.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+
+#include <algorithm>
+
+using namespace editor;
+
+namespace {
+
+bool hasCode(const std::vector<core::Diagnostic>& diagnostics, const std::string& code)
+{
+    return std::any_of(diagnostics.begin(), diagnostics.end(),
+                       [&](const core::Diagnostic& d) { return d.code == code; });
+}
+
+void writeText(const QString& path, const QByteArray& text)
+{
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(text);
+}
+
+// A document with one saved-worthy edit of each kind.
+void edit(Document& document)
+{
+    core::Variable start;
+    start.name = "Start";
+    QVERIFY(document.push(new AddVariableCommand(document, start)));
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "Start")));
+    QVERIFY(document.push(new SetStepHiddenCommand(document, "F6", true)));
+}
+
+} // namespace
+
+class TestDocument : public QObject {
+    Q_OBJECT
+
+private slots:
+    void startsWithTheTemplate();
+    void diagnosticsFollowChanges();
+    void signalsComeWhenTheEditIsComplete();
+    void editsAroundCommandsAreCheckedLater();
+    void modifiedFollowsUndoAndClean();
+    void saveAndLoadRoundTrip();
+    void failedLoadKeepsModelAndHistory();
+    void failedSaveKeepsModified();
+    void replaceModelClearsHistory();
+    void newFromTemplate();
+    void selection();
+};
+
+void TestDocument::startsWithTheTemplate()
+{
+    Document document;
+    QVERIFY(document.model().sameContent(core::Model()));
+    QVERIFY(!document.isModified());
+    QCOMPARE(document.displayName(), QString("Untitled"));
+    QVERIFY(document.filePath().isEmpty());
+    QCOMPARE(document.fileFormat(), core::ModelFormat::Native);
+    // The template's conditions are all empty: an error each.
+    QVERIFY(!document.diagnostics().empty());
+}
+
+void TestDocument::diagnosticsFollowChanges()
+{
+    Document document;
+    const ElementRef transition = ElementRef::transition("A1->F1");
+    QVERIFY(hasCode(document.diagnosticsFor(transition), "GG202"));
+    QVERIFY(document.hasProblems(transition));
+    for (const core::Diagnostic& d : document.diagnosticsFor(transition))
+        QCOMPARE(d.element, std::string("A1->F1"));
+
+    // The checks must already be current when the typed signal arrives.
+    bool currentOnSignal = false;
+    connect(&document, &Document::transitionChanged, this, [&](const QString& id) {
+        currentOnSignal = id == "A1->F1" && !hasCode(document.diagnosticsFor(transition), "GG202");
+    });
+    QSignalSpy diagnosticsChanged(&document, &Document::diagnosticsChanged);
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "TRUE")));
+    QVERIFY(currentOnSignal);
+    QCOMPARE(diagnosticsChanged.count(), 1);
+    QVERIFY(!hasCode(document.diagnosticsFor(transition), "GG202"));
+
+    document.undoStack()->undo();
+    QCOMPARE(diagnosticsChanged.count(), 2);
+    QVERIFY(hasCode(document.diagnosticsFor(transition), "GG202"));
+
+    // Variables match ignoring case, as IEC names do.
+    core::Variable bad;
+    bad.name = "Speed";
+    bad.type = core::IecType::Sint;
+    bad.defaultValue = "300";
+    QVERIFY(document.push(new AddVariableCommand(document, bad)));
+    QVERIFY(document.hasProblems(ElementRef::variable("SPEED")));
+    QVERIFY(!document.hasProblems(ElementRef()));
+}
+
+void TestDocument::signalsComeWhenTheEditIsComplete()
+{
+    Document document;
+    // The model has no initial step for a moment inside setInitialStep.
+    QStringList seen;
+    connect(&document, &Document::stepChanged, this, [&](const QString& id) {
+        seen << id + "/" + QString::fromStdString(document.model().initialStep().id);
+    });
+    QVERIFY(document.push(new SetInitialStepCommand(document, "A1")));
+    QCOMPARE(seen, (QStringList{"A6/A1", "A1/A1"}));
+    seen.clear();
+    document.undoStack()->undo();
+    QCOMPARE(seen, (QStringList{"A1/A6", "A6/A6"}));
+
+    // A rename changes many elements; each is announced once, after all of them.
+    core::Variable stop;
+    stop.name = "Stop";
+    QVERIFY(document.push(new AddVariableCommand(document, stop)));
+    QVERIFY(document.push(new SetConditionCommand(document, "F1->A2", "Stop")));
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "NOT Stop")));
+    QStringList conditions;
+    connect(&document, &Document::transitionChanged, this, [&](const QString& id) {
+        conditions << id + "=" + QString::fromStdString(document.model().transition("F1->A2")->condition);
+    });
+    QSignalSpy variables(&document, &Document::variablesChanged);
+    QSignalSpy diagnosticsChanged(&document, &Document::diagnosticsChanged);
+    QVERIFY(document.push(new RenameVariableCommand(document, "Stop", "Halt")));
+    QCOMPARE(conditions, (QStringList{"A1->F1=Halt", "F1->A2=Halt"}));
+    QCOMPARE(variables.count(), 1);
+    QVERIFY(diagnosticsChanged.count() <= 1); // once for the whole edit, if at all
+}
+
+void TestDocument::editsAroundCommandsAreCheckedLater()
+{
+    Document document;
+    QSignalSpy transitions(&document, &Document::transitionChanged);
+    QSignalSpy diagnosticsChanged(&document, &Document::diagnosticsChanged);
+    QVERIFY(document.modelForCommands().setCondition("A1->F1", "TRUE"));
+    QVERIFY(document.modelForCommands().setInitialStep("A1")); // no check mid-operation
+    QCOMPARE(transitions.count(), 1);
+    QCOMPARE(diagnosticsChanged.count(), 0);
+    QTRY_COMPARE(diagnosticsChanged.count(), 1);
+    QVERIFY(!hasCode(document.diagnosticsFor(ElementRef::transition("A1->F1")), "GG202"));
+}
+
+void TestDocument::modifiedFollowsUndoAndClean()
+{
+    Document document;
+    QSignalSpy modified(&document, &Document::modifiedChanged);
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "TRUE")));
+    QVERIFY(document.isModified());
+    QCOMPARE(modified.count(), 1);
+    QCOMPARE(modified.last().at(0).toBool(), true);
+
+    document.undoStack()->undo();
+    QVERIFY(!document.isModified());
+    QCOMPARE(modified.last().at(0).toBool(), false);
+
+    document.undoStack()->redo();
+    QVERIFY(document.isModified());
+    document.undoStack()->setClean();
+    QVERIFY(!document.isModified());
+    QCOMPARE(modified.count(), 4);
+    document.undoStack()->undo(); // before the saved state: modified again
+    QVERIFY(document.isModified());
+}
+
+void TestDocument::saveAndLoadRoundTrip()
+{
+    QTemporaryDir directory;
+    QVERIFY(directory.isValid());
+    const QString path = directory.filePath("press.ggs.json");
+
+    Document document;
+    edit(document);
+    QSignalSpy pathChanged(&document, &Document::filePathChanged);
+    QSignalSpy modified(&document, &Document::modifiedChanged);
+    QString error;
+    QVERIFY2(document.save(path, &error), qPrintable(error));
+    QVERIFY(error.isEmpty());
+    QVERIFY(!document.isModified());
+    QCOMPARE(modified.count(), 1);
+    QCOMPARE(document.filePath(), path);
+    QCOMPARE(pathChanged.count(), 1);
+    QCOMPARE(document.displayName(), QString("press.ggs.json"));
+    QVERIFY(document.undoStack()->canUndo()); // saving keeps the history
+
+    Document opened;
+    QSignalSpy reset(&opened, &Document::modelReset);
+    QVERIFY2(opened.load(path, &error), qPrintable(error));
+    QCOMPARE(reset.count(), 1);
+    QVERIFY(opened.model().sameContent(document.model()));
+    QVERIFY(!opened.isModified());
+    QCOMPARE(opened.filePath(), path);
+    QCOMPARE(opened.fileFormat(), core::ModelFormat::Native);
+    QCOMPARE(opened.undoStack()->count(), 0);
+}
+
+void TestDocument::failedLoadKeepsModelAndHistory()
+{
+    QTemporaryDir directory;
+    QVERIFY(directory.isValid());
+    const QString broken = directory.filePath("broken.ggs.json");
+    writeText(broken, "{ \"format\": \"ggstudio-model\", ");
+
+    Document document;
+    edit(document);
+    const core::Model before(document.model());
+    const int commands = document.undoStack()->count();
+    QSignalSpy reset(&document, &Document::modelReset);
+    QSignalSpy pathChanged(&document, &Document::filePathChanged);
+
+    QString error;
+    QVERIFY(!document.load(broken, &error));
+    QVERIFY2(error.startsWith(broken + ": "), qPrintable(error));
+    QVERIFY(!document.load(directory.filePath("missing.ggs.json"), &error));
+    QVERIFY2(error.contains("missing.ggs.json"), qPrintable(error));
+    QVERIFY(!document.load(broken, nullptr));
+
+    QVERIFY(document.model().sameContent(before));
+    QCOMPARE(document.undoStack()->count(), commands);
+    QVERIFY(document.isModified());
+    QVERIFY(document.filePath().isEmpty());
+    QCOMPARE(reset.count(), 0);
+    QCOMPARE(pathChanged.count(), 0);
+    document.undoStack()->undo(); // the history still works
+    QVERIFY(!document.model().step("F6")->hidden);
+}
+
+void TestDocument::failedSaveKeepsModified()
+{
+    QTemporaryDir directory;
+    QVERIFY(directory.isValid());
+    Document document;
+    edit(document);
+    QString error;
+    const QString path = directory.filePath("no/such/folder/press.ggs.json");
+    QVERIFY(!document.save(path, &error));
+    QVERIFY2(error.startsWith(path), qPrintable(error));
+    QVERIFY(document.isModified());
+    QVERIFY(document.filePath().isEmpty());
+}
+
+void TestDocument::replaceModelClearsHistory()
+{
+    Document document;
+    edit(document);
+    core::Model other;
+    QVERIFY(other.setStepHidden("D3", true));
+    QSignalSpy reset(&document, &Document::modelReset);
+    QSignalSpy modified(&document, &Document::modifiedChanged);
+    QSignalSpy pathChanged(&document, &Document::filePathChanged);
+    document.replaceModel(other, "/tmp/imported.json", core::ModelFormat::GGGenerator);
+    QVERIFY(document.model().sameContent(other));
+    QCOMPARE(document.undoStack()->count(), 0);
+    QVERIFY(!document.isModified());
+    QCOMPARE(reset.count(), 1);
+    QCOMPARE(modified.count(), 1);
+    QCOMPARE(pathChanged.count(), 1);
+    QCOMPARE(document.fileFormat(), core::ModelFormat::GGGenerator);
+}
+
+void TestDocument::newFromTemplate()
+{
+    Document document;
+    edit(document);
+    document.newFromTemplate();
+    QVERIFY(document.model().sameContent(core::Model()));
+    QVERIFY(!document.isModified());
+    QCOMPARE(document.displayName(), QString("Untitled"));
+}
+
+void TestDocument::selection()
+{
+    Selection selection;
+    QSignalSpy changed(&selection, &Selection::changed);
+    QSignalSpy focus(&selection, &Selection::focusFieldRequested);
+    selection.select(ElementRef::step("F1"));
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(focus.count(), 0);
+    QCOMPARE(selection.current(), ElementRef::step("F1"));
+
+    selection.select(ElementRef::step("F1"), "comment"); // same element: only the field
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(focus.count(), 1);
+    QCOMPARE(focus.last().at(1).toString(), QString("comment"));
+
+    selection.select(ElementRef::transition("F1->A2"), "condition");
+    QCOMPARE(changed.count(), 2);
+    QCOMPARE(focus.count(), 2);
+    QCOMPARE(changed.last().at(0).value<ElementRef>(), ElementRef::transition("F1->A2"));
+
+    selection.clear();
+    QVERIFY(selection.current().isNull());
+    QCOMPARE(changed.count(), 3);
+    selection.clear();
+    QCOMPARE(changed.count(), 3);
+}
+
+QTEST_MAIN(TestDocument)
+#include "test_document.moc"
