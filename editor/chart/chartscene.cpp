@@ -1,0 +1,243 @@
+#include "editor/chart/chartscene.h"
+
+#include "core/chartlayout.h"
+#include "editor/chart/chartstyle.h"
+#include "editor/chart/frameitem.h"
+#include "editor/chart/layoutconversion.h"
+#include "editor/chart/stepitem.h"
+#include "editor/chart/transitionitem.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+
+#include <QScopedValueRollback>
+#include <QSet>
+
+namespace editor {
+
+ChartScene::ChartScene(Document* document, Selection* selection, QObject* parent)
+    : QGraphicsScene(parent)
+    , m_document(document)
+    , m_selection(selection)
+{
+    Q_ASSERT(document && selection);
+    buildItems();
+
+    connect(m_document, &Document::stepChanged, this, &ChartScene::onStepChanged);
+    connect(m_document, &Document::transitionChanged, this, &ChartScene::onTransitionChanged);
+    connect(m_document, &Document::modelReset, this, &ChartScene::onModelReset);
+    connect(m_document, &Document::diagnosticsChanged, this, &ChartScene::onDiagnosticsChanged);
+    connect(m_selection, &Selection::changed, this, &ChartScene::onSelectionChanged);
+    connect(this, &QGraphicsScene::selectionChanged, this, &ChartScene::onSceneSelectionChanged);
+
+    onModelReset();
+    onDiagnosticsChanged();
+}
+
+ChartScene::~ChartScene()
+{
+    // ~QGraphicsScene deselects the items it deletes, when this is no longer
+    // a ChartScene to hear of it.
+    disconnect(this, &QGraphicsScene::selectionChanged, this, nullptr);
+}
+
+void ChartScene::buildItems()
+{
+    const core::ChartLayout& layout = core::templateLayout();
+    setSceneRect(toQRectF(layout.sceneRect));
+
+    for (const core::FrameLayout& frame : layout.frames) {
+        auto* item = new FrameItem(frame);
+        addItem(item);
+        m_frames << item;
+    }
+    for (const core::StepLayout& step : layout.steps) {
+        auto* item = new StepItem(*m_document, step);
+        addItem(item);
+        m_steps << item;
+        m_stepItems.insert(item->id(), item);
+    }
+    for (const core::TransitionLayout& transition : layout.transitions) {
+        auto* item = new TransitionItem(*m_document, transition);
+        addItem(item);
+        m_transitions << item;
+        m_transitionItems.insert(item->id(), item);
+        m_transitionsBySource[item->sourceId()] << item;
+        m_transitionsByEnd[item->sourceId()] << item;
+        m_transitionsByEnd[item->targetId()] << item;
+    }
+}
+
+FrameItem* ChartScene::frameItem(core::Family family) const
+{
+    for (FrameItem* frame : m_frames) {
+        if (frame->family() == family)
+            return frame;
+    }
+    return nullptr;
+}
+
+void ChartScene::setShowHidden(bool show)
+{
+    if (m_showHidden == show)
+        return;
+    m_showHidden = show;
+    for (StepItem* item : std::as_const(m_steps))
+        applyVisibility(item, item->isHiddenInModel());
+    for (TransitionItem* item : std::as_const(m_transitions))
+        applyVisibility(item, item->isHiddenInModel());
+    selectFromSelection();
+}
+
+void ChartScene::setActiveStep(const QString& id)
+{
+    if (m_activeStep == id)
+        return;
+    if (StepItem* old = stepItem(m_activeStep))
+        old->setActive(false);
+    m_activeStep = id;
+    if (StepItem* item = stepItem(id))
+        item->setActive(true);
+}
+
+QList<QGraphicsItem*> ChartScene::tabOrder() const
+{
+    QList<QGraphicsItem*> order;
+    for (StepItem* item : m_steps) {
+        if (item->isVisible())
+            order << item;
+    }
+    for (TransitionItem* item : m_transitions) {
+        if (item->isVisible())
+            order << item;
+    }
+    return order;
+}
+
+QGraphicsItem* ChartScene::itemFor(const ElementRef& element) const
+{
+    switch (element.kind) {
+    case ElementRef::Kind::Step: return stepItem(element.id);
+    case ElementRef::Kind::Transition: return transitionItem(element.id);
+    default: return nullptr;
+    }
+}
+
+ElementRef ChartScene::elementOf(const QGraphicsItem* item)
+{
+    if (auto* step = qgraphicsitem_cast<const StepItem*>(item))
+        return ElementRef::step(step->id());
+    if (auto* transition = qgraphicsitem_cast<const TransitionItem*>(item))
+        return ElementRef::transition(transition->id());
+    return {};
+}
+
+void ChartScene::onStepChanged(const QString& id)
+{
+    if (StepItem* item = stepItem(id))
+        refreshStep(item);
+    QSet<QString> sources;
+    for (TransitionItem* transition : m_transitionsByEnd.value(id))
+        sources.insert(transition->sourceId());
+    for (const QString& source : std::as_const(sources))
+        refreshTransitionsFrom(source);
+    selectFromSelection();
+}
+
+void ChartScene::onTransitionChanged(const QString& id)
+{
+    if (TransitionItem* item = transitionItem(id)) {
+        refreshTransitionsFrom(item->sourceId());
+        selectFromSelection();
+    }
+}
+
+void ChartScene::onModelReset()
+{
+    for (StepItem* item : std::as_const(m_steps))
+        refreshStep(item);
+    for (TransitionItem* item : std::as_const(m_transitions))
+        refreshTransition(item);
+    selectFromSelection();
+}
+
+void ChartScene::onDiagnosticsChanged()
+{
+    for (StepItem* item : std::as_const(m_steps))
+        item->setProblemMark(m_document->hasProblems(ElementRef::step(item->id())));
+    for (TransitionItem* item : std::as_const(m_transitions))
+        item->setProblemMark(m_document->hasProblems(ElementRef::transition(item->id())));
+}
+
+void ChartScene::refreshStep(StepItem* item)
+{
+    item->refresh();
+    applyVisibility(item, item->isHiddenInModel());
+}
+
+void ChartScene::refreshTransitionsFrom(const QString& source)
+{
+    for (TransitionItem* item : m_transitionsBySource.value(source))
+        refreshTransition(item);
+}
+
+void ChartScene::refreshTransition(TransitionItem* item)
+{
+    item->refresh();
+    applyVisibility(item, item->isHiddenInModel());
+}
+
+void ChartScene::applyVisibility(QGraphicsItem* item, bool hiddenInModel)
+{
+    // Hiding a selected item deselects it; that is not the user choosing
+    // nothing, so the shared Selection keeps the element (the docks may
+    // still be editing it).
+    const QScopedValueRollback<bool> guard(m_syncingSelection, true);
+    item->setVisible(!hiddenInModel || m_showHidden);
+    item->setOpacity(hiddenInModel ? chartstyle::kHiddenOpacity : 1.0);
+}
+
+void ChartScene::onSceneSelectionChanged()
+{
+    if (m_syncingSelection)
+        return;
+    const QList<QGraphicsItem*> selected = selectedItems();
+    if (selected.isEmpty()) {
+        const ElementRef::Kind kind = m_selection->current().kind;
+        if (kind == ElementRef::Kind::Step || kind == ElementRef::Kind::Transition)
+            m_selection->clear();
+        return;
+    }
+    // One element at a time: when a modifier click adds one, it wins.
+    QGraphicsItem* chosen = selected.first();
+    if (selected.size() > 1) {
+        for (QGraphicsItem* item : selected) {
+            if (elementOf(item) != m_selection->current())
+                chosen = item;
+        }
+        const QScopedValueRollback<bool> guard(m_syncingSelection, true);
+        for (QGraphicsItem* item : selected) {
+            if (item != chosen)
+                item->setSelected(false);
+        }
+    }
+    m_selection->select(elementOf(chosen));
+}
+
+void ChartScene::onSelectionChanged(const ElementRef&)
+{
+    selectFromSelection();
+}
+
+void ChartScene::selectFromSelection()
+{
+    QGraphicsItem* wanted = itemFor(m_selection->current());
+    const QList<QGraphicsItem*> selected = selectedItems();
+    if (selected.size() == 1 && selected.first() == wanted)
+        return;
+    const QScopedValueRollback<bool> guard(m_syncingSelection, true);
+    clearSelection();
+    if (wanted && wanted->isVisible())
+        wanted->setSelected(true);
+}
+
+} // namespace editor

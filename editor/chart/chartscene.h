@@ -1,0 +1,86 @@
+#pragma once
+
+#include "core/gemmatemplate.h"
+#include "editor/elementref.h"
+
+#include <QGraphicsScene>
+#include <QHash>
+#include <QList>
+
+namespace editor {
+
+class Document;
+class FrameItem;
+class Selection;
+class StepItem;
+class TransitionItem;
+
+// The GEMMA-GRAFCET chart: a view of the Document's model drawn on the
+// fixed template layout. Items are built once; Document signals update only
+// the items concerned. The scene selection and the shared Selection follow
+// each other.
+class ChartScene : public QGraphicsScene {
+    Q_OBJECT
+
+public:
+    ChartScene(Document* document, Selection* selection, QObject* parent = nullptr);
+    ~ChartScene() override;
+
+    Document* document() const { return m_document; }
+    Selection* selection() const { return m_selection; }
+
+    // Hidden elements are drawn faded and dashed when shown, not at all otherwise.
+    bool showHidden() const { return m_showHidden; }
+    void setShowHidden(bool show);
+
+    // The step drawn filled as the active state (simulation); empty for none.
+    QString activeStep() const { return m_activeStep; }
+    void setActiveStep(const QString& id);
+
+    StepItem* stepItem(const QString& id) const { return m_stepItems.value(id); }
+    TransitionItem* transitionItem(const QString& id) const { return m_transitionItems.value(id); }
+    FrameItem* frameItem(core::Family family) const;
+    const QList<StepItem*>& steps() const { return m_steps; }                   // state-number order
+    const QList<TransitionItem*>& transitions() const { return m_transitions; } // template order
+    const QList<FrameItem*>& frames() const { return m_frames; }
+
+    // The selectable items a keyboard user walks through: the visible steps in
+    // state order, then the visible transitions in template order.
+    QList<QGraphicsItem*> tabOrder() const;
+
+    QGraphicsItem* itemFor(const ElementRef& element) const;
+    static ElementRef elementOf(const QGraphicsItem* item);
+
+private:
+    void buildItems();
+    void onStepChanged(const QString& id);
+    void onTransitionChanged(const QString& id);
+    void onModelReset();
+    void onDiagnosticsChanged();
+    void onSceneSelectionChanged();
+    void onSelectionChanged(const ElementRef& element);
+
+    void refreshStep(StepItem* item);
+    // Priorities and effectiveness are per source: a change to one
+    // transition or end can renumber its siblings.
+    void refreshTransitionsFrom(const QString& source);
+    void refreshTransition(TransitionItem* item);
+    void applyVisibility(QGraphicsItem* item, bool hiddenInModel);
+    void selectFromSelection();
+
+    Document* m_document;
+    Selection* m_selection;
+    bool m_showHidden = false;
+    bool m_syncingSelection = false;
+    QString m_activeStep;
+
+    QList<FrameItem*> m_frames;
+    QList<StepItem*> m_steps;
+    QList<TransitionItem*> m_transitions;
+    QHash<QString, StepItem*> m_stepItems;
+    QHash<QString, TransitionItem*> m_transitionItems;
+    QHash<QString, QList<TransitionItem*>> m_transitionsBySource;
+    QHash<QString, QList<TransitionItem*>> m_transitionsByEnd; // both source and target
+};
+
+} // namespace editor

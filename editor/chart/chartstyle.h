@@ -1,0 +1,45 @@
+#pragma once
+
+#include "core/gemmatemplate.h"
+
+#include <QColor>
+#include <QFont>
+
+// Colours, pen widths and fonts of the chart, in one place so the items
+// agree. Sizes are in scene units: the template sheet is 1500 x 960, so a
+// 12-unit font still reads at about 9 px when the sheet is fitted on a
+// 1366 x 768 screen.
+namespace editor::chartstyle {
+
+inline constexpr double kStrokeWidth = 1.6;
+inline constexpr double kRouteWidth = 1.3;
+inline constexpr double kBarWidth = 4;
+inline constexpr double kHaloWidth = 7;
+inline constexpr double kHiddenOpacity = 0.25;
+inline constexpr double kArrowLength = 9;
+inline constexpr double kArrowHalfWidth = 4;
+inline constexpr double kInitialInset = 4;  // gap between the two squares of an initial step
+inline constexpr double kMacroInset = 5;    // distance of a macro-step's inner lines
+inline constexpr double kEnclosingMark = 8; // leg length of an enclosing step's corner marks
+inline constexpr double kBadgeRadius = 7;
+inline constexpr double kOverlineWidth = 1.4; // the overline on a negated transition's priority
+inline constexpr double kOverlineGap = 1.6;
+
+inline QColor inkColor() { return QColor(0x20, 0x24, 0x2a); }
+inline QColor stepFillColor() { return QColor(0xff, 0xff, 0xff); }
+inline QColor activeFillColor() { return QColor(0xff, 0xd8, 0x4d); }
+inline QColor problemColor() { return QColor(0xd3, 0x1f, 0x1f); }
+inline QColor haloColor() { return QColor(0x25, 0x74, 0xe8, 120); }
+inline QColor labelColor() { return QColor(0x1d, 0x2f, 0x4a); }
+
+// Soft tints after the classic GEMMA sheet: stops blue, operation green,
+// failures red-orange.
+QColor frameFillColor(core::Family family);
+QColor frameBorderColor(core::Family family);
+
+const QFont& stepFont(double boxSize);
+const QFont& labelFont();
+const QFont& titleFont();
+const QFont& badgeFont();
+
+} // namespace editor::chartstyle

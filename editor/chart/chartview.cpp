@@ -1,0 +1,144 @@
+#include "editor/chart/chartview.h"
+
+#include "editor/chart/chartscene.h"
+#include "editor/selection.h"
+
+#include <QGraphicsItem>
+#include <QKeyEvent>
+#include <QScrollBar>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace editor {
+
+namespace {
+
+constexpr double kMinZoom = 0.1;
+constexpr double kMaxZoom = 8.0;
+constexpr double kZoomStep = 1.25;
+constexpr double kFitMargin = 12; // scene units around the sheet
+constexpr int kRevealMargin = 30; // pixels kept around an element scrolled into view
+
+} // namespace
+
+ChartView::ChartView(ChartScene* scene, QWidget* parent)
+    : QGraphicsView(scene, parent)
+    , m_scene(scene)
+{
+    setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing | QPainter::SmoothPixmapTransform);
+    setDragMode(ScrollHandDrag);
+    setFocusPolicy(Qt::StrongFocus);
+    setTransformationAnchor(AnchorViewCenter);
+    setResizeAnchor(AnchorViewCenter);
+    connect(m_scene->selection(), &Selection::changed, this, &ChartView::revealSelection);
+}
+
+double ChartView::zoom() const
+{
+    return transform().m11();
+}
+
+void ChartView::zoomIn()
+{
+    zoomBy(kZoomStep, viewport()->rect().center());
+}
+
+void ChartView::zoomOut()
+{
+    zoomBy(1 / kZoomStep, viewport()->rect().center());
+}
+
+void ChartView::zoomToFit()
+{
+    m_fitted = true;
+    const QRectF sheet = sceneRect().adjusted(-kFitMargin, -kFitMargin, kFitMargin, kFitMargin);
+    fitInView(sheet, Qt::KeepAspectRatio);
+    emit zoomChanged(zoom());
+}
+
+void ChartView::zoomToActualSize()
+{
+    m_fitted = false;
+    resetTransform();
+    emit zoomChanged(zoom());
+}
+
+void ChartView::zoomBy(double factor, QPointF viewPoint)
+{
+    const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
+    if (qFuzzyCompare(target, zoom()))
+        return;
+    m_fitted = false;
+    const QPointF anchor = mapToScene(viewPoint.toPoint());
+    const ViewportAnchor previous = transformationAnchor();
+    setTransformationAnchor(NoAnchor);
+    scale(target / zoom(), target / zoom());
+    setTransformationAnchor(previous);
+    const QPointF drift = mapFromScene(anchor) - viewPoint;
+    horizontalScrollBar()->setValue(horizontalScrollBar()->value() + qRound(drift.x()));
+    verticalScrollBar()->setValue(verticalScrollBar()->value() + qRound(drift.y()));
+    emit zoomChanged(zoom());
+}
+
+void ChartView::wheelEvent(QWheelEvent* event)
+{
+    if (!(event->modifiers() & Qt::ControlModifier)) {
+        QGraphicsView::wheelEvent(event);
+        return;
+    }
+    // 120 units per notch: one notch zooms by about 20 %.
+    const double factor = std::pow(1.0015, event->angleDelta().y());
+    zoomBy(factor, event->position());
+    event->accept();
+}
+
+void ChartView::resizeEvent(QResizeEvent* event)
+{
+    QGraphicsView::resizeEvent(event);
+    if (m_fitted)
+        zoomToFit();
+}
+
+// The sheet as white paper on the window's colour.
+void ChartView::drawBackground(QPainter* painter, const QRectF& rect)
+{
+    painter->fillRect(rect, palette().color(QPalette::Window));
+    const QRectF sheet = sceneRect();
+    painter->fillRect(sheet, Qt::white);
+    QPen border(palette().color(QPalette::Mid), 0); // cosmetic hairline
+    painter->setPen(border);
+    painter->setBrush(Qt::NoBrush);
+    painter->drawRect(sheet);
+}
+
+bool ChartView::focusNextPrevChild(bool next)
+{
+    const QList<QGraphicsItem*> order = m_scene->tabOrder();
+    const QList<QGraphicsItem*> selected = m_scene->selectedItems();
+    const qsizetype current = selected.size() == 1 ? order.indexOf(selected.first()) : -1;
+    const qsizetype wanted = current < 0 ? (next ? 0 : order.size() - 1) : current + (next ? 1 : -1);
+    if (wanted < 0 || wanted >= order.size())
+        return QGraphicsView::focusNextPrevChild(next); // past either end: leave the chart
+    m_scene->selection()->select(ChartScene::elementOf(order[wanted]));
+    return true;
+}
+
+void ChartView::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() == Qt::Key_Escape && !m_scene->selectedItems().isEmpty()) {
+        m_scene->clearSelection();
+        event->accept();
+        return;
+    }
+    QGraphicsView::keyPressEvent(event);
+}
+
+void ChartView::revealSelection()
+{
+    if (QGraphicsItem* item = m_scene->itemFor(m_scene->selection()->current()); item && item->isVisible())
+        ensureVisible(item, kRevealMargin, kRevealMargin);
+}
+
+} // namespace editor

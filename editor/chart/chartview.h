@@ -1,0 +1,48 @@
+#pragma once
+
+#include <QGraphicsView>
+
+namespace editor {
+
+class ChartScene;
+
+// Shows the chart: antialiased, panned by dragging the background, zoomed
+// with Ctrl+wheel (about the point under the mouse) or the zoom slots.
+// Tab / Shift+Tab walk through the visible elements (ChartScene::tabOrder)
+// and leave the view past either end. The sheet stays fitted to the view
+// when it is resized until the user picks another zoom.
+class ChartView : public QGraphicsView {
+    Q_OBJECT
+
+public:
+    explicit ChartView(ChartScene* scene, QWidget* parent = nullptr);
+
+    ChartScene* chartScene() const { return m_scene; }
+    double zoom() const; // 1.0 is 100 %
+
+public slots:
+    void zoomIn();
+    void zoomOut();
+    void zoomToFit();
+    void zoomToActualSize();
+
+signals:
+    void zoomChanged(double zoom);
+
+protected:
+    bool focusNextPrevChild(bool next) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void drawBackground(QPainter* painter, const QRectF& rect) override;
+
+private:
+    // Scales about viewPoint, which keeps showing the same scene point.
+    void zoomBy(double factor, QPointF viewPoint);
+    void revealSelection();
+
+    ChartScene* m_scene;
+    bool m_fitted = true;
+};
+
+} // namespace editor

@@ -1,0 +1,43 @@
+#include "editor/chart/frameitem.h"
+
+#include "editor/chart/chartstyle.h"
+#include "editor/chart/layoutconversion.h"
+#include "editor/statenames.h"
+
+#include <QPainter>
+
+namespace editor {
+
+FrameItem::FrameItem(const core::FrameLayout& layout, QGraphicsItem* parent)
+    : QGraphicsItem(parent)
+    , m_family(layout.family)
+    , m_rect(toQRectF(layout.rect))
+    , m_titleRect(toQRectF(layout.titleRect))
+{
+    setZValue(0);
+}
+
+QString FrameItem::title() const
+{
+    //: Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name
+    return tr("%1 — %2").arg(QString::fromUtf8(core::familyName(m_family)), officialFamilyName(m_family));
+}
+
+QRectF FrameItem::boundingRect() const
+{
+    const double margin = chartstyle::kStrokeWidth;
+    return m_rect.adjusted(-margin, -margin, margin, margin);
+}
+
+void FrameItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
+{
+    painter->setPen(QPen(chartstyle::frameBorderColor(m_family), chartstyle::kStrokeWidth));
+    painter->setBrush(chartstyle::frameFillColor(m_family));
+    painter->drawRect(m_rect);
+
+    painter->setPen(chartstyle::frameBorderColor(m_family).darker(150));
+    painter->setFont(chartstyle::titleFont());
+    painter->drawText(m_titleRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, title());
+}
+
+} // namespace editor

@@ -1,0 +1,162 @@
+#include "editor/chart/stepitem.h"
+
+#include "editor/chart/chartstyle.h"
+#include "editor/document.h"
+#include "editor/statenames.h"
+
+#include <QPainter>
+#include <QStyleOptionGraphicsItem>
+
+#include <algorithm>
+
+namespace editor {
+
+StepItem::StepItem(const Document& document, const core::StepLayout& layout, QGraphicsItem* parent)
+    : QGraphicsItem(parent)
+    , m_document(document)
+    , m_id(QString::fromUtf8(layout.id.data(), static_cast<qsizetype>(layout.id.size())))
+    , m_modelId(layout.id)
+    , m_box(0, 0, layout.box.width, layout.box.height)
+{
+    setPos(layout.box.x, layout.box.y);
+    setFlag(ItemIsSelectable);
+    setZValue(2);
+    setAcceptHoverEvents(false);
+}
+
+const core::Step* StepItem::step() const
+{
+    return m_document.model().step(m_modelId);
+}
+
+bool StepItem::isHiddenInModel() const
+{
+    const core::Step* s = step();
+    return !s || s->hidden;
+}
+
+void StepItem::refresh()
+{
+    if (const core::Step* s = step())
+        setToolTip(toolTipText(*s));
+    update();
+}
+
+void StepItem::setProblemMark(bool problem)
+{
+    if (m_problem == problem)
+        return;
+    m_problem = problem;
+    update();
+}
+
+void StepItem::setActive(bool active)
+{
+    if (m_active == active)
+        return;
+    m_active = active;
+    update();
+}
+
+QString StepItem::toolTipText(const core::Step& step) const
+{
+    QString kind;
+    switch (step.type) {
+    case core::StepType::Simple: kind = tr("Simple step"); break;
+    case core::StepType::Macro: kind = tr("Macro-step"); break;
+    case core::StepType::Enclosing: kind = tr("Enclosing step"); break;
+    }
+    if (step.initial)
+        kind = tr("%1, initial").arg(kind);
+    if (step.hidden)
+        kind = tr("%1, hidden").arg(kind);
+
+    QString text = QStringLiteral("<b>%1</b> %2<br/><i>%3</i>")
+                       .arg(m_id, officialStateName(m_id).toHtmlEscaped(), kind.toHtmlEscaped());
+    const QString comment = QString::fromStdString(step.comment).trimmed();
+    if (!comment.isEmpty())
+        text += QStringLiteral("<br/>") + comment.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br/>"));
+    return text;
+}
+
+QRectF StepItem::boundingRect() const
+{
+    const double margin = std::max(chartstyle::kHaloWidth, chartstyle::kBadgeRadius) + 1;
+    return m_box.adjusted(-margin, -margin, margin, margin);
+}
+
+QPainterPath StepItem::shape() const
+{
+    QPainterPath path;
+    path.addRect(m_box);
+    return path;
+}
+
+void StepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget*)
+{
+    const core::Step* s = step();
+    if (!s)
+        return;
+    painter->setRenderHint(QPainter::Antialiasing);
+    if (option->state & QStyle::State_Selected) {
+        painter->setPen(QPen(chartstyle::haloColor(), chartstyle::kHaloWidth));
+        painter->setBrush(Qt::NoBrush);
+        const double gap = chartstyle::kHaloWidth / 2;
+        painter->drawRoundedRect(m_box.adjusted(-gap, -gap, gap, gap), gap, gap);
+    }
+    paintSymbol(painter, *s);
+    if (m_problem)
+        paintBadge(painter);
+}
+
+void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
+{
+    QPen pen(m_problem ? chartstyle::problemColor() : chartstyle::inkColor(), chartstyle::kStrokeWidth);
+    pen.setJoinStyle(Qt::MiterJoin);
+    if (step.hidden)
+        pen.setStyle(Qt::DashLine);
+    painter->setPen(pen);
+    painter->setBrush(m_active ? chartstyle::activeFillColor() : chartstyle::stepFillColor());
+    painter->drawRect(m_box);
+    painter->setBrush(Qt::NoBrush);
+
+    // The type marks go inside the inner square of an initial step.
+    QRectF symbol = m_box;
+    if (step.initial) {
+        const double inset = chartstyle::kInitialInset;
+        symbol.adjust(inset, inset, -inset, -inset);
+        painter->drawRect(symbol);
+    }
+    if (step.type == core::StepType::Macro) {
+        const double y1 = symbol.top() + chartstyle::kMacroInset;
+        const double y2 = symbol.bottom() - chartstyle::kMacroInset;
+        painter->drawLine(QLineF(symbol.left(), y1, symbol.right(), y1));
+        painter->drawLine(QLineF(symbol.left(), y2, symbol.right(), y2));
+    } else if (step.type == core::StepType::Enclosing) {
+        const double k = chartstyle::kEnclosingMark;
+        const QLineF marks[] = {
+            {symbol.left(), symbol.top() + k, symbol.left() + k, symbol.top()},
+            {symbol.right() - k, symbol.top(), symbol.right(), symbol.top() + k},
+            {symbol.left(), symbol.bottom() - k, symbol.left() + k, symbol.bottom()},
+            {symbol.right() - k, symbol.bottom(), symbol.right(), symbol.bottom() - k},
+        };
+        painter->drawLines(marks, 4);
+    }
+
+    painter->setFont(chartstyle::stepFont(m_box.width()));
+    painter->setPen(m_problem ? chartstyle::problemColor() : chartstyle::inkColor());
+    painter->drawText(m_box, Qt::AlignCenter, m_id);
+}
+
+void StepItem::paintBadge(QPainter* painter) const
+{
+    const double r = chartstyle::kBadgeRadius;
+    const QRectF badge(m_box.right() - r, m_box.top() - r, 2 * r, 2 * r);
+    painter->setPen(QPen(Qt::white, 1));
+    painter->setBrush(chartstyle::problemColor());
+    painter->drawEllipse(badge);
+    painter->setFont(chartstyle::badgeFont());
+    painter->drawText(badge, Qt::AlignCenter, QStringLiteral("!"));
+}
+
+} // namespace editor

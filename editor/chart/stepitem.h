@@ -1,0 +1,64 @@
+#pragma once
+
+#include "core/chartlayout.h"
+
+#include <QCoreApplication>
+#include <QGraphicsItem>
+
+#include <string>
+
+namespace core {
+struct Step;
+}
+
+namespace editor {
+
+class Document;
+
+// A GEMMA state drawn as its GRAFCET symbol: a square with the id (simple
+// step), a double square (initial step), double lines at top and bottom
+// (macro-step) or corner marks (enclosing step). Holds only the id and
+// reads the model when it paints; the box comes from core::templateLayout().
+class StepItem : public QGraphicsItem {
+    Q_DECLARE_TR_FUNCTIONS(editor::StepItem)
+
+public:
+    enum { Type = QGraphicsItem::UserType + 1 };
+
+    StepItem(const Document& document, const core::StepLayout& layout, QGraphicsItem* parent = nullptr);
+
+    int type() const override { return Type; }
+    const QString& id() const { return m_id; }
+
+    // Re-reads what is not read in paint() (the tooltip) and repaints.
+    void refresh();
+    bool isHiddenInModel() const;
+
+    // Set by the scene from Document::hasProblems, so the check runs once per
+    // change of the diagnostics rather than on every paint.
+    bool hasProblemMark() const { return m_problem; }
+    void setProblemMark(bool problem);
+
+    // The active state during simulation: drawn filled.
+    bool isActive() const { return m_active; }
+    void setActive(bool active);
+
+    QRectF boundingRect() const override;
+    QPainterPath shape() const override;
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+
+private:
+    const core::Step* step() const;
+    QString toolTipText(const core::Step& step) const;
+    void paintSymbol(QPainter* painter, const core::Step& step) const;
+    void paintBadge(QPainter* painter) const;
+
+    const Document& m_document;
+    QString m_id;
+    std::string m_modelId;
+    QRectF m_box; // item coordinates: the item sits at the box's top-left corner
+    bool m_problem = false;
+    bool m_active = false;
+};
+
+} // namespace editor

@@ -1,0 +1,260 @@
+#include "editor/chart/transitionitem.h"
+
+#include "editor/chart/chartstyle.h"
+#include "editor/chart/layoutconversion.h"
+#include "editor/document.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+#include <QPainterPathStroker>
+#include <QStyleOptionGraphicsItem>
+
+
+namespace editor {
+
+namespace {
+
+QString fromView(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+// The arrowhead at the end of the last segment, and where the line stops so
+// that its end does not poke through the tip.
+QPolygonF arrowHead(QPointF from, QPointF tip, QPointF* base)
+{
+    const QLineF segment(from, tip);
+    const double length = segment.length();
+    const QPointF direction = length > 0 ? (tip - from) / length : QPointF(1, 0);
+    const QPointF normal(-direction.y(), direction.x());
+    *base = tip - direction * chartstyle::kArrowLength;
+    return QPolygonF({tip, *base + normal * chartstyle::kArrowHalfWidth, *base - normal * chartstyle::kArrowHalfWidth});
+}
+
+// The layout puts a label beside, left of, or centred on its bar; the text
+// keeps to the bar's side so that short conditions stay next to it.
+Qt::Alignment alignmentTowards(const QRectF& label, QPointF bar)
+{
+    if (label.right() <= bar.x() + 0.5)
+        return Qt::AlignRight;
+    if (label.left() >= bar.x() - 0.5)
+        return Qt::AlignLeft;
+    return Qt::AlignHCenter;
+}
+
+} // namespace
+
+TransitionItem::TransitionItem(const Document& document, const core::TransitionLayout& layout,
+                               QGraphicsItem* parent)
+    : QGraphicsItem(parent)
+    , m_document(document)
+    , m_id(QString::fromStdString(layout.id))
+    , m_sourceId(fromView(layout.source))
+    , m_targetId(fromView(layout.target))
+    , m_modelId(layout.id)
+    , m_barCenter(toQPointF(layout.barCenter))
+    , m_barHorizontal(layout.barHorizontal)
+    , m_labelRect(toQRectF(layout.labelRect))
+{
+    setFlag(ItemIsSelectable);
+    setZValue(1);
+
+    for (const core::Point& point : layout.route)
+        m_line << toQPointF(point);
+    if (m_line.size() >= 2) {
+        QPointF base;
+        m_arrow = arrowHead(m_line[m_line.size() - 2], m_line.last(), &base);
+        m_line.last() = base;
+    }
+    m_labelAlignment = alignmentTowards(m_labelRect, m_barCenter);
+
+    const double margin = chartstyle::kHaloWidth + chartstyle::kBarWidth;
+    m_bounds = (m_line.boundingRect() | m_arrow.boundingRect() | m_labelRect)
+                   .adjusted(-margin, -margin, margin, margin);
+    refresh();
+}
+
+bool TransitionItem::isHiddenInModel() const
+{
+    return !m_document.model().isEffective(m_modelId);
+}
+
+void TransitionItem::refresh()
+{
+    updateLabel();
+    updateShape();
+    setToolTip(toolTipText());
+    update();
+}
+
+void TransitionItem::setProblemMark(bool problem)
+{
+    if (m_problem == problem)
+        return;
+    m_problem = problem;
+    update();
+}
+
+void TransitionItem::updateLabel()
+{
+    const core::Model& model = m_document.model();
+    const core::Transition* transition = model.transition(m_modelId);
+    if (!transition)
+        return;
+    const int priority = model.priority(m_modelId);
+    const bool choice = model.effectiveOutgoing(transition->source).size() > 1;
+    // The overline that marks a negated transition lives on the priority, so
+    // a negated transition shows its priority even when it has no siblings.
+    const bool showPriority = priority > 0 && (choice || transition->negated);
+
+    m_priorityText = showPriority ? QString::number(priority) : QString();
+    m_overlined = transition->negated;
+    m_conditionText = QString::fromStdString(transition->condition).simplified();
+    m_separator = showPriority && !m_conditionText.isEmpty() ? QStringLiteral(": ") : QString();
+
+    const QFontMetricsF metrics(chartstyle::labelFont());
+    const double available = m_labelRect.width() - metrics.horizontalAdvance(m_priorityText + m_separator);
+    m_elidedCondition = metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, available));
+}
+
+QString TransitionItem::labelText() const
+{
+    return m_priorityText + m_separator + m_conditionText;
+}
+
+QRectF TransitionItem::labelTextRect() const
+{
+    const QFontMetricsF metrics(chartstyle::labelFont());
+    const double width = std::min(m_labelRect.width(),
+                                  metrics.horizontalAdvance(m_priorityText + m_separator + m_elidedCondition));
+    double x = m_labelRect.left();
+    if (m_labelAlignment == Qt::AlignRight)
+        x = m_labelRect.right() - width;
+    else if (m_labelAlignment == Qt::AlignHCenter)
+        x = m_labelRect.center().x() - width / 2;
+    return {x, m_labelRect.top(), width, m_labelRect.height()};
+}
+
+QLineF TransitionItem::barLine() const
+{
+    const double half = core::kTransitionBarLength / 2;
+    if (m_barHorizontal)
+        return {m_barCenter.x() - half, m_barCenter.y(), m_barCenter.x() + half, m_barCenter.y()};
+    return {m_barCenter.x(), m_barCenter.y() - half, m_barCenter.x(), m_barCenter.y() + half};
+}
+
+void TransitionItem::updateShape()
+{
+    QPainterPath route;
+    route.addPolygon(m_line);
+    QPainterPathStroker stroker;
+    stroker.setWidth(8);
+    m_shape = stroker.createStroke(route);
+    m_shape.addPolygon(m_arrow);
+    const QLineF bar = barLine();
+    m_shape.addRect(QRectF(bar.p1(), bar.p2()).adjusted(-4, -4, 4, 4));
+    if (!labelText().isEmpty())
+        m_shape.addRect(labelTextRect());
+    m_shape.setFillRule(Qt::WindingFill);
+}
+
+QString TransitionItem::toolTipText() const
+{
+    const core::Model& model = m_document.model();
+    const core::Transition* transition = model.transition(m_modelId);
+    if (!transition)
+        return {};
+    QString text = QStringLiteral("<b>%1 → %2</b>").arg(m_sourceId, m_targetId);
+    if (transition->isFamilyTransition())
+        text += QStringLiteral("<br/>") + tr("Family transition: applies to every F state").toHtmlEscaped();
+    const int priority = model.priority(m_modelId);
+    QString status = priority > 0 ? tr("Priority %1").arg(priority) : tr("Not effective (hidden)");
+    if (transition->negated)
+        status = tr("%1, negated").arg(status);
+    text += QStringLiteral("<br/>") + status.toHtmlEscaped();
+    const QString condition = QString::fromStdString(transition->condition).trimmed();
+    text += QStringLiteral("<br/>") + tr("Condition:").toHtmlEscaped() + QLatin1Char(' ')
+          + (condition.isEmpty() ? QStringLiteral("<i>%1</i>").arg(tr("empty").toHtmlEscaped())
+                                 : QStringLiteral("<tt>%1</tt>").arg(condition.toHtmlEscaped()));
+    if (!transition->tokens.empty()) {
+        QStringList tokens;
+        for (const std::string& token : transition->tokens)
+            tokens << QString::fromStdString(token);
+        text += QStringLiteral("<br/>") + tr("Tokens: %1").arg(tokens.join(QStringLiteral(", "))).toHtmlEscaped();
+    }
+    return text;
+}
+
+QRectF TransitionItem::boundingRect() const
+{
+    return m_bounds;
+}
+
+QPainterPath TransitionItem::shape() const
+{
+    return m_shape;
+}
+
+void TransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget*)
+{
+    painter->setRenderHint(QPainter::Antialiasing);
+    const bool hidden = isHiddenInModel();
+    const QLineF bar = barLine();
+
+    if (option->state & QStyle::State_Selected) {
+        QPen halo(chartstyle::haloColor(), chartstyle::kHaloWidth, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+        painter->setPen(halo);
+        painter->setBrush(Qt::NoBrush);
+        painter->drawPolyline(m_line);
+        painter->drawPolygon(m_arrow);
+        painter->drawLine(bar);
+        if (!labelText().isEmpty())
+            painter->drawRoundedRect(labelTextRect().adjusted(-2, -1, 2, 1), 3, 3);
+    }
+
+    QPen pen(chartstyle::inkColor(), chartstyle::kRouteWidth, hidden ? Qt::DashLine : Qt::SolidLine,
+             Qt::FlatCap, Qt::MiterJoin);
+    painter->setPen(pen);
+    painter->setBrush(Qt::NoBrush);
+    painter->drawPolyline(m_line);
+    pen.setStyle(Qt::SolidLine);
+    painter->setPen(pen);
+    painter->setBrush(chartstyle::inkColor());
+    painter->drawPolygon(m_arrow);
+
+    const QColor mark = m_problem ? chartstyle::problemColor() : chartstyle::inkColor();
+    painter->setPen(QPen(mark, chartstyle::kBarWidth, Qt::SolidLine, Qt::FlatCap));
+    painter->drawLine(bar);
+
+    paintLabel(painter);
+}
+
+void TransitionItem::paintLabel(QPainter* painter) const
+{
+    if (m_priorityText.isEmpty() && m_elidedCondition.isEmpty())
+        return;
+    const QFontMetricsF metrics(chartstyle::labelFont());
+    const QRectF textRect = labelTextRect();
+    const double baseline = textRect.center().y() + (metrics.ascent() - metrics.descent()) / 2;
+    QPointF at(textRect.left(), baseline);
+
+    const QColor color = m_problem ? chartstyle::problemColor() : chartstyle::labelColor();
+    painter->setPen(color);
+    painter->setFont(chartstyle::labelFont());
+    if (!m_priorityText.isEmpty()) {
+        painter->drawText(at, m_priorityText);
+        const double width = metrics.horizontalAdvance(m_priorityText);
+        if (m_overlined) {
+            // Drawn rather than QFont::setOverline: the font's overline is
+            // a hairline that vanishes when the sheet is fitted to a screen.
+            const double y = baseline - metrics.capHeight() - chartstyle::kOverlineGap;
+            painter->setPen(QPen(color, chartstyle::kOverlineWidth, Qt::SolidLine, Qt::FlatCap));
+            painter->drawLine(QLineF(at.x(), y, at.x() + width, y));
+            painter->setPen(color);
+        }
+        at.rx() += width;
+    }
+    painter->drawText(at, m_separator + m_elidedCondition);
+}
+
+} // namespace editor

@@ -1,0 +1,87 @@
+#pragma once
+
+#include "core/chartlayout.h"
+
+#include <QCoreApplication>
+#include <QGraphicsItem>
+#include <QPainterPath>
+#include <QPolygonF>
+
+#include <string>
+
+namespace editor {
+
+class Document;
+
+// A GRAFCET transition: the orthogonal route from core::templateLayout()
+// with an arrowhead at the target, the transition bar, and the label
+// "p: condition" (the priority only when the source has a choice to make,
+// overlined when the transition is negated).
+class TransitionItem : public QGraphicsItem {
+    Q_DECLARE_TR_FUNCTIONS(editor::TransitionItem)
+
+public:
+    enum { Type = QGraphicsItem::UserType + 2 };
+
+    TransitionItem(const Document& document, const core::TransitionLayout& layout,
+                   QGraphicsItem* parent = nullptr);
+
+    int type() const override { return Type; }
+    const QString& id() const { return m_id; }
+    const QString& sourceId() const { return m_sourceId; } // a step id, or "F" for the family transition
+    const QString& targetId() const { return m_targetId; }
+
+    // Re-reads the model into the label, tooltip and shape, and repaints.
+    // The label needs the effective priorities, which cost a scan of the
+    // source's transitions: done here on change rather than on every paint.
+    void refresh();
+    // Hidden itself, or not effective because an end is hidden.
+    bool isHiddenInModel() const;
+
+    // What the label says, before eliding: "3: NOT Stop".
+    QString labelText() const;
+    // The condition as drawn: elided to the label width.
+    const QString& displayedCondition() const { return m_elidedCondition; }
+    bool priorityShown() const { return !m_priorityText.isEmpty(); }
+    bool priorityOverlined() const { return m_overlined && priorityShown(); }
+
+    // Set by the scene from Document::hasProblems.
+    bool hasProblemMark() const { return m_problem; }
+    void setProblemMark(bool problem);
+
+    QRectF boundingRect() const override;
+    QPainterPath shape() const override;
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+
+private:
+    void updateLabel();
+    void updateShape();
+    QString toolTipText() const;
+    QLineF barLine() const;
+    QRectF labelTextRect() const; // the part of the label rectangle the text covers
+    void paintLabel(QPainter* painter) const;
+
+    const Document& m_document;
+    QString m_id;
+    QString m_sourceId;
+    QString m_targetId;
+    std::string m_modelId;
+
+    QPolygonF m_line;   // the route, stopping where the arrowhead starts
+    QPolygonF m_arrow;  // filled triangle at the target end
+    QPointF m_barCenter;
+    bool m_barHorizontal = true;
+    QRectF m_labelRect;
+    Qt::Alignment m_labelAlignment = Qt::AlignLeft; // towards the bar
+    QRectF m_bounds;
+    QPainterPath m_shape;
+
+    QString m_priorityText;   // empty when the priority is not shown
+    QString m_separator;      // ": " between priority and condition, or empty
+    QString m_conditionText;  // full, on one line
+    QString m_elidedCondition;
+    bool m_overlined = false;
+    bool m_problem = false;
+};
+
+} // namespace editor

@@ -1,0 +1,411 @@
+// The GEMMA chart: items built from the template layout, kept in step with
+// the Document and the Selection.
+
+#include "editor/chart/chartscene.h"
+#include "editor/chart/chartview.h"
+#include "editor/chart/frameitem.h"
+#include "editor/chart/stepitem.h"
+#include "editor/chart/transitionitem.h"
+#include "editor/commands/addvariablecommand.h"
+#include "editor/commands/setconditioncommand.h"
+#include "editor/commands/setnegatedcommand.h"
+#include "editor/commands/setstephiddencommand.h"
+#include "editor/commands/setsteptypecommand.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+#include "editor/statenames.h"
+
+#include "core/gemmatemplate.h"
+
+#include <QApplication>
+#include <QTest>
+#include <QWheelEvent>
+#include <QUndoStack>
+
+using namespace editor;
+
+namespace {
+
+core::Variable boolVariable(const char* name)
+{
+    core::Variable variable;
+    variable.name = name;
+    variable.type = core::IecType::Bool;
+    return variable;
+}
+
+template <typename Item>
+int countItems(const QGraphicsScene& scene)
+{
+    int count = 0;
+    for (QGraphicsItem* item : scene.items()) {
+        if (item->type() == Item::Type)
+            ++count;
+    }
+    return count;
+}
+
+} // namespace
+
+class TestChart : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+
+    void buildsTheTemplate();
+    void framesAreTitledInFamilyOrder();
+    void officialNamesMatchTheTemplate();
+    void hidingAStepHidesItsTransitions();
+    void hiddenElementsFadeWhenShown();
+    void prioritiesFollowVisibility();
+    void sceneSelectionSetsTheSelection();
+    void selectionSelectsTheItem();
+    void selectionSurvivesHidingTheItem();
+    void clickSelects();
+    void tabWalksStepsThenTransitions();
+    void tabSkipsHiddenElements();
+    void labelShowsPriorityAndCondition();
+    void labelWithoutChoiceHasNoPriority();
+    void negatedPriorityIsOverlined();
+    void longConditionIsElided();
+    void undeclaredVariableMarksTheTransition();
+    void hiddenInitialStepIsMarked();
+    void stepTypeChangeRepaintsOnlyThatStep();
+    void activeStepIsMarked();
+    void zoomSlots();
+    void ctrlWheelZoomsAboutTheMouse();
+    void tabLeavesPastTheLastElement();
+    void replacedModelIsShown();
+
+private:
+    Document* m_document = nullptr;
+    Selection* m_selection = nullptr;
+    ChartScene* m_scene = nullptr;
+};
+
+void TestChart::init()
+{
+    m_document = new Document;
+    m_selection = new Selection;
+    m_scene = new ChartScene(m_document, m_selection);
+}
+
+void TestChart::cleanup()
+{
+    delete m_scene;
+    delete m_selection;
+    delete m_document;
+}
+
+void TestChart::buildsTheTemplate()
+{
+    QCOMPARE(countItems<StepItem>(*m_scene), 16);
+    QCOMPARE(countItems<TransitionItem>(*m_scene), 34);
+    QCOMPARE(countItems<FrameItem>(*m_scene), 3);
+    QCOMPARE(m_scene->steps().size(), 16);
+    QCOMPARE(m_scene->transitions().size(), 34);
+    QVERIFY(m_scene->stepItem("F1"));
+    QVERIFY(m_scene->transitionItem("F->D1"));
+    for (const QGraphicsItem* item : m_scene->items())
+        QVERIFY(!(item->flags() & QGraphicsItem::ItemIsMovable));
+    // Every template element is visible by default.
+    for (const StepItem* item : m_scene->steps())
+        QVERIFY2(item->isVisible(), qPrintable(item->id()));
+    for (const TransitionItem* item : m_scene->transitions())
+        QVERIFY2(item->isVisible(), qPrintable(item->id()));
+}
+
+void TestChart::framesAreTitledInFamilyOrder()
+{
+    QVERIFY(m_scene->frameItem(core::Family::A)->title().contains("Stop procedures"));
+    QVERIFY(m_scene->frameItem(core::Family::F)->title().contains("Operation procedures"));
+    QVERIFY(m_scene->frameItem(core::Family::D)->title().contains("Failure procedures"));
+    QVERIFY(m_scene->frameItem(core::Family::D)->title().startsWith("D"));
+}
+
+void TestChart::officialNamesMatchTheTemplate()
+{
+    for (const core::TemplateState& state : core::templateStates()) {
+        const QString id = QString::fromUtf8(state.id.data(), state.id.size());
+        QCOMPARE(officialStateName(id), QString::fromUtf8(state.englishName.data(), state.englishName.size()));
+    }
+    QVERIFY(officialStateName("Z9").isEmpty());
+    QVERIFY(m_scene->stepItem("F1")->toolTip().contains("Normal production"));
+}
+
+void TestChart::hidingAStepHidesItsTransitions()
+{
+    m_document->push(new SetStepHiddenCommand(*m_document, "F2", true));
+    QVERIFY(!m_scene->stepItem("F2")->isVisible());
+    QVERIFY(!m_scene->transitionItem("A1->F2")->isVisible());
+    QVERIFY(!m_scene->transitionItem("F2->F1")->isVisible());
+    QVERIFY(m_scene->transitionItem("A1->F1")->isVisible());
+
+    m_document->undoStack()->undo();
+    QVERIFY(m_scene->stepItem("F2")->isVisible());
+    QVERIFY(m_scene->transitionItem("A1->F2")->isVisible());
+    QVERIFY(m_scene->transitionItem("F2->F1")->isVisible());
+}
+
+void TestChart::hiddenElementsFadeWhenShown()
+{
+    m_document->push(new SetStepHiddenCommand(*m_document, "F2", true));
+    m_scene->setShowHidden(true);
+    StepItem* step = m_scene->stepItem("F2");
+    TransitionItem* transition = m_scene->transitionItem("F2->F1");
+    QVERIFY(step->isVisible());
+    QVERIFY(transition->isVisible());
+    QVERIFY(step->opacity() < 0.5);
+    QVERIFY(transition->opacity() < 0.5);
+    QCOMPARE(m_scene->stepItem("F1")->opacity(), 1.0);
+
+    m_scene->setShowHidden(false);
+    QVERIFY(!step->isVisible());
+    QVERIFY(!transition->isVisible());
+}
+
+void TestChart::prioritiesFollowVisibility()
+{
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", "Stop"));
+    QCOMPARE(m_scene->transitionItem("F1->A2")->labelText(), QString("3: Stop"));
+    // D3 is the target of F1's second transition: F1->A2 moves up.
+    m_document->push(new SetStepHiddenCommand(*m_document, "D3", true));
+    QCOMPARE(m_scene->transitionItem("F1->A2")->labelText(), QString("2: Stop"));
+    m_document->undoStack()->undo();
+    QCOMPARE(m_scene->transitionItem("F1->A2")->labelText(), QString("3: Stop"));
+}
+
+void TestChart::sceneSelectionSetsTheSelection()
+{
+    m_scene->stepItem("A3")->setSelected(true);
+    QCOMPARE(m_selection->current(), ElementRef::step("A3"));
+    m_scene->transitionItem("F1->A2")->setSelected(true);
+    QCOMPARE(m_selection->current(), ElementRef::transition("F1->A2"));
+    QCOMPARE(m_scene->selectedItems().size(), 1); // one element at a time
+    m_scene->clearSelection();
+    QVERIFY(m_selection->current().isNull());
+}
+
+void TestChart::selectionSelectsTheItem()
+{
+    m_selection->select(ElementRef::step("D2"));
+    QCOMPARE(m_scene->selectedItems(), QList<QGraphicsItem*>{m_scene->stepItem("D2")});
+    m_selection->select(ElementRef::transition("A4->F1"));
+    QCOMPARE(m_scene->selectedItems(), QList<QGraphicsItem*>{m_scene->transitionItem("A4->F1")});
+    // A variable is not on the chart: nothing is selected there, and the
+    // chart does not clear the variable selection.
+    m_selection->select(ElementRef::variable("Start"));
+    QVERIFY(m_scene->selectedItems().isEmpty());
+    QCOMPARE(m_selection->current(), ElementRef::variable("Start"));
+}
+
+void TestChart::selectionSurvivesHidingTheItem()
+{
+    m_selection->select(ElementRef::step("F2"));
+    m_document->push(new SetStepHiddenCommand(*m_document, "F2", true));
+    QVERIFY(m_scene->selectedItems().isEmpty());
+    QCOMPARE(m_selection->current(), ElementRef::step("F2"));
+    m_scene->setShowHidden(true);
+    QCOMPARE(m_scene->selectedItems(), QList<QGraphicsItem*>{m_scene->stepItem("F2")});
+}
+
+void TestChart::clickSelects()
+{
+    ChartView view(m_scene);
+    view.resize(1000, 700);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const QPoint a4 = view.mapFromScene(m_scene->stepItem("A4")->sceneBoundingRect().center());
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, a4);
+    QCOMPARE(m_selection->current(), ElementRef::step("A4"));
+    // A click on the empty sheet (inside the A frame) clears it.
+    const QPoint empty = view.mapFromScene(QPointF(40, 300));
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, empty);
+    QVERIFY(m_selection->current().isNull());
+}
+
+void TestChart::tabWalksStepsThenTransitions()
+{
+    ChartView view(m_scene);
+    QTest::keyClick(&view, Qt::Key_Tab);
+    QCOMPARE(m_selection->current(), ElementRef::step("A1"));
+    QTest::keyClick(&view, Qt::Key_Tab);
+    QCOMPARE(m_selection->current(), ElementRef::step("A2"));
+    QTest::keyClick(&view, Qt::Key_Tab, Qt::ShiftModifier);
+    QCOMPARE(m_selection->current(), ElementRef::step("A1"));
+
+    m_selection->select(ElementRef::step("D3")); // the last state
+    QTest::keyClick(&view, Qt::Key_Tab);
+    QCOMPARE(m_selection->current(), ElementRef::transition("F->D1")); // the first transition
+    QTest::keyClick(&view, Qt::Key_Tab);
+    QCOMPARE(m_selection->current(), ElementRef::transition("A1->F4"));
+    QTest::keyClick(&view, Qt::Key_Backtab);
+    QCOMPARE(m_selection->current(), ElementRef::transition("F->D1"));
+    QTest::keyClick(&view, Qt::Key_Backtab);
+    QCOMPARE(m_selection->current(), ElementRef::step("D3"));
+
+    const QList<QGraphicsItem*> order = m_scene->tabOrder();
+    QCOMPARE(order.size(), 16 + 34);
+    QCOMPARE(order.first(), m_scene->stepItem("A1"));
+    QCOMPARE(order.last(), m_scene->transitionItem("D3->D2"));
+}
+
+void TestChart::tabSkipsHiddenElements()
+{
+    m_document->push(new SetStepHiddenCommand(*m_document, "A2", true));
+    ChartView view(m_scene);
+    m_selection->select(ElementRef::step("A1"));
+    QTest::keyClick(&view, Qt::Key_Tab);
+    QCOMPARE(m_selection->current(), ElementRef::step("A3"));
+    QVERIFY(!m_scene->tabOrder().contains(m_scene->transitionItem("A2->A1")));
+}
+
+void TestChart::labelShowsPriorityAndCondition()
+{
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", "NOT Stop"));
+    const TransitionItem* item = m_scene->transitionItem("F1->A2");
+    QCOMPARE(item->labelText(), QString("3: NOT Stop"));
+    QVERIFY(item->priorityShown());
+    QVERIFY(!item->priorityOverlined());
+    QCOMPARE(item->displayedCondition(), QString("NOT Stop"));
+    QVERIFY(item->toolTip().contains("NOT Stop"));
+}
+
+void TestChart::labelWithoutChoiceHasNoPriority()
+{
+    m_document->push(new SetConditionCommand(*m_document, "A2->A1", "Start"));
+    const TransitionItem* item = m_scene->transitionItem("A2->A1");
+    QCOMPARE(item->labelText(), QString("Start"));
+    QVERIFY(!item->priorityShown());
+    // With one of its two transitions hidden, A5 has no choice left to show.
+    m_document->push(new SetStepHiddenCommand(*m_document, "A7", true));
+    m_document->push(new SetConditionCommand(*m_document, "A5->A6", "Reset"));
+    QCOMPARE(m_scene->transitionItem("A5->A6")->labelText(), QString("Reset"));
+}
+
+void TestChart::negatedPriorityIsOverlined()
+{
+    QVERIFY(m_scene->transitionItem("F1->D1")->priorityOverlined()); // negated in the template
+    TransitionItem* item = m_scene->transitionItem("F1->A2");
+    QVERIFY(!item->priorityOverlined());
+    m_document->push(new SetNegatedCommand(*m_document, "F1->A2", true));
+    QVERIFY(item->priorityOverlined());
+    m_document->undoStack()->undo();
+    QVERIFY(!item->priorityOverlined());
+}
+
+void TestChart::longConditionIsElided()
+{
+    const QString condition = "Start AND NOT Stop AND Door_Closed AND Pressure_OK AND Air_OK AND Guard_Locked";
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", condition));
+    const TransitionItem* item = m_scene->transitionItem("F1->A2");
+    QCOMPARE(item->labelText(), "3: " + condition);
+    QVERIFY(item->displayedCondition().size() < condition.size());
+    QVERIFY(item->displayedCondition().endsWith(QChar(0x2026)));
+    QVERIFY(item->toolTip().contains(condition));
+}
+
+void TestChart::undeclaredVariableMarksTheTransition()
+{
+    m_document->push(new AddVariableCommand(*m_document, boolVariable("Stop")));
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", "NOT Stop"));
+    QVERIFY(!m_scene->transitionItem("F1->A2")->hasProblemMark());
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", "NOT Stop AND Ghost"));
+    QVERIFY(m_scene->transitionItem("F1->A2")->hasProblemMark());
+    QVERIFY(m_scene->transitionItem("A2->A1")->hasProblemMark()); // still empty
+}
+
+void TestChart::hiddenInitialStepIsMarked()
+{
+    QVERIFY(!m_scene->stepItem("A6")->hasProblemMark());
+    m_document->push(new SetStepHiddenCommand(*m_document, "A6", true));
+    QVERIFY(m_scene->stepItem("A6")->hasProblemMark());
+    m_document->undoStack()->undo();
+    QVERIFY(!m_scene->stepItem("A6")->hasProblemMark());
+}
+
+void TestChart::stepTypeChangeRepaintsOnlyThatStep()
+{
+    m_document->push(new SetStepTypeCommand(*m_document, "A4", core::StepType::Enclosing));
+    QVERIFY(m_scene->stepItem("A4")->toolTip().contains("Enclosing step"));
+    QVERIFY(m_scene->stepItem("A3")->toolTip().contains("Simple step"));
+}
+
+void TestChart::activeStepIsMarked()
+{
+    m_scene->setActiveStep("A6");
+    QVERIFY(m_scene->stepItem("A6")->isActive());
+    m_scene->setActiveStep("F1");
+    QVERIFY(!m_scene->stepItem("A6")->isActive());
+    QVERIFY(m_scene->stepItem("F1")->isActive());
+    m_scene->setActiveStep(QString());
+    QVERIFY(!m_scene->stepItem("F1")->isActive());
+}
+
+void TestChart::zoomSlots()
+{
+    ChartView view(m_scene);
+    view.resize(700, 500);
+    view.zoomToActualSize();
+    QCOMPARE(view.zoom(), 1.0);
+    view.zoomIn();
+    QCOMPARE(view.zoom(), 1.25);
+    view.zoomOut();
+    QCOMPARE(view.zoom(), 1.0);
+    view.zoomToFit();
+    // The whole 1500 x 960 sheet fits into 700 x 500 pixels.
+    QVERIFY(view.zoom() < 0.5);
+    QVERIFY(view.zoom() > 0.3);
+}
+
+void TestChart::ctrlWheelZoomsAboutTheMouse()
+{
+    ChartView view(m_scene);
+    view.resize(800, 600);
+    view.zoomToActualSize();
+    const QPoint mouse(300, 200);
+    const QPointF underMouse = view.mapToScene(mouse);
+    QWheelEvent wheel(mouse, view.viewport()->mapToGlobal(mouse), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::ControlModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(view.viewport(), &wheel);
+    QVERIFY(view.zoom() > 1.1);
+    const QPointF after = view.mapToScene(mouse);
+    QVERIFY2(QLineF(after, underMouse).length() < 2, "the scene point under the mouse stays there");
+
+    // Without Ctrl the wheel scrolls.
+    const double zoom = view.zoom();
+    QWheelEvent scroll(mouse, view.viewport()->mapToGlobal(mouse), QPoint(), QPoint(0, -120), Qt::NoButton,
+                       Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(view.viewport(), &scroll);
+    QCOMPARE(view.zoom(), zoom);
+}
+
+void TestChart::tabLeavesPastTheLastElement()
+{
+    ChartView view(m_scene);
+    m_selection->select(ElementRef::transition("D3->D2"));
+    QTest::keyClick(&view, Qt::Key_Tab);
+    QCOMPARE(m_selection->current(), ElementRef::transition("D3->D2"));
+    m_selection->select(ElementRef::step("A1"));
+    QTest::keyClick(&view, Qt::Key_Backtab);
+    QCOMPARE(m_selection->current(), ElementRef::step("A1"));
+}
+
+void TestChart::replacedModelIsShown()
+{
+    core::Model model;
+    QVERIFY(model.setStepHidden("F3", true));
+    QVERIFY(model.setCondition("A2->A1", "TRUE"));
+    m_selection->select(ElementRef::step("F1"));
+    m_document->replaceModel(model, QString(), core::ModelFormat::Native);
+    QVERIFY(!m_scene->stepItem("F3")->isVisible());
+    QVERIFY(!m_scene->transitionItem("F1->F3")->isVisible());
+    QCOMPARE(m_scene->transitionItem("A2->A1")->labelText(), QString("TRUE"));
+    QVERIFY(!m_scene->transitionItem("A2->A1")->hasProblemMark());
+    QCOMPARE(m_scene->selectedItems(), QList<QGraphicsItem*>{m_scene->stepItem("F1")});
+}
+
+QTEST_MAIN(TestChart)
+#include "test_chart.moc"
