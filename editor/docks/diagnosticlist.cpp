@@ -1,0 +1,51 @@
+#include "editor/docks/diagnosticlist.h"
+
+#include "editor/diagnostictext.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QStyle>
+#include <QVBoxLayout>
+
+namespace editor {
+
+DiagnosticList::DiagnosticList(QWidget* parent)
+    : QWidget(parent)
+    , m_layout(new QVBoxLayout(this))
+{
+    m_layout->setContentsMargins(0, 0, 0, 0);
+    m_layout->setSpacing(2);
+    setVisible(false);
+}
+
+void DiagnosticList::setDiagnostics(const std::vector<core::Diagnostic>& diagnostics)
+{
+    if (diagnostics == m_diagnostics)
+        return; // no flicker while typing leaves the problems as they are
+    m_diagnostics = diagnostics;
+    while (QLayoutItem* item = m_layout->takeAt(0)) {
+        delete item->widget(); // a row and its labels
+        delete item;
+    }
+    const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, this);
+    for (const core::Diagnostic& diagnostic : diagnostics) {
+        auto* rowWidget = new QWidget(this);
+        auto* row = new QHBoxLayout(rowWidget);
+        row->setContentsMargins(0, 0, 0, 0);
+        row->setSpacing(4);
+        auto* icon = new QLabel(rowWidget);
+        icon->setPixmap(severityIcon(diagnostic.severity, style()).pixmap(iconSize, iconSize));
+        icon->setAlignment(Qt::AlignTop);
+        icon->setToolTip(severityText(diagnostic.severity));
+        auto* text = new QLabel(diagnosticText(diagnostic), rowWidget);
+        text->setWordWrap(true);
+        text->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        text->setToolTip(QString::fromStdString(diagnostic.code));
+        row->addWidget(icon, 0, Qt::AlignTop);
+        row->addWidget(text, 1);
+        m_layout->addWidget(rowWidget);
+    }
+    setVisible(!diagnostics.empty());
+}
+
+} // namespace editor

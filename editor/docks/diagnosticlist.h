@@ -1,0 +1,30 @@
+#pragma once
+
+#include "core/diagnostic.h"
+
+#include <QWidget>
+
+#include <vector>
+
+class QVBoxLayout;
+
+namespace editor {
+
+// The problems of one element, one row each (severity icon and message), as
+// the Step and Transition docks show them under their fields. Hidden when
+// there are none.
+class DiagnosticList : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit DiagnosticList(QWidget* parent = nullptr);
+
+    void setDiagnostics(const std::vector<core::Diagnostic>& diagnostics);
+    int count() const { return static_cast<int>(m_diagnostics.size()); }
+
+private:
+    QVBoxLayout* m_layout;
+    std::vector<core::Diagnostic> m_diagnostics;
+};
+
+} // namespace editor

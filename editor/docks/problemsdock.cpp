@@ -1,0 +1,230 @@
+#include "editor/docks/problemsdock.h"
+
+#include "editor/diagnostictext.h"
+#include "editor/docks/elementlabels.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+
+#include <QAction>
+#include <QClipboard>
+#include <QGuiApplication>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QScrollBar>
+#include <QStyle>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace editor {
+
+namespace {
+
+enum Role {
+    SeverityRole = Qt::UserRole,
+    KindRole,
+    IdRole,
+    FieldRole,
+    KeyRole, // identifies the problem across refreshes
+};
+
+QString fromStd(const std::string& text)
+{
+    return QString::fromStdString(text);
+}
+
+ElementRef::Kind kindOf(core::Diagnostic::Target target)
+{
+    switch (target) {
+    case core::Diagnostic::Target::Step:
+        return ElementRef::Kind::Step;
+    case core::Diagnostic::Target::Transition:
+        return ElementRef::Kind::Transition;
+    case core::Diagnostic::Target::Variable:
+        return ElementRef::Kind::Variable;
+    case core::Diagnostic::Target::Model:
+        return ElementRef::Kind::Model;
+    }
+    return ElementRef::Kind::None;
+}
+
+QString elementText(const core::Diagnostic& diagnostic)
+{
+    const QString element = fromStd(diagnostic.element);
+    switch (diagnostic.target) {
+    case core::Diagnostic::Target::Transition:
+        return transitionLabel(element);
+    case core::Diagnostic::Target::Model:
+        return ProblemsDock::tr("Model");
+    default:
+        return element;
+    }
+}
+
+QString keyOf(const core::Diagnostic& diagnostic)
+{
+    return QStringLiteral("%1|%2|%3|%4")
+        .arg(fromStd(diagnostic.code), fromStd(diagnostic.element), fromStd(diagnostic.field))
+        .arg(diagnostic.span ? static_cast<qlonglong>(diagnostic.span->begin) : -1);
+}
+
+} // namespace
+
+ProblemsDock::ProblemsDock(Document* document, Selection* selection, QWidget* parent)
+    : QDockWidget(tr("Problems"), parent)
+    , m_document(document)
+    , m_selection(selection)
+    , m_view(new QTreeWidget)
+{
+    setObjectName(QStringLiteral("problemsDock"));
+
+    auto* content = new QWidget(this);
+    auto* layout = new QVBoxLayout(content);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    auto* bar = new QHBoxLayout;
+    bar->setContentsMargins(4, 2, 4, 2);
+    bar->setSpacing(2);
+    m_errorsButton = createFilterButton(core::Severity::Error, QStringLiteral("errorsButton"));
+    m_warningsButton = createFilterButton(core::Severity::Warning, QStringLiteral("warningsButton"));
+    m_infoButton = createFilterButton(core::Severity::Info, QStringLiteral("infoButton"));
+    bar->addWidget(m_errorsButton);
+    bar->addWidget(m_warningsButton);
+    bar->addWidget(m_infoButton);
+    bar->addStretch();
+    layout->addLayout(bar);
+
+    m_view->setParent(content);
+    m_view->setObjectName(QStringLiteral("problemsView"));
+    m_view->setColumnCount(3);
+    m_view->setHeaderLabels({ tr("Code"), tr("Element"), tr("Message") });
+    m_view->setRootIsDecorated(false);
+    m_view->setUniformRowHeights(true);
+    m_view->setAllColumnsShowFocus(true);
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_view->setTextElideMode(Qt::ElideRight);
+    m_view->header()->setStretchLastSection(true);
+    m_view->header()->resizeSection(CodeColumn, 80);
+    m_view->header()->resizeSection(ElementColumn, 110);
+    m_view->setToolTip(QString());
+    m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
+    auto* copyAction = new QAction(tr("&Copy"), m_view);
+    connect(copyAction, &QAction::triggered, this, &ProblemsDock::copySelected);
+    m_view->addAction(copyAction);
+    connect(m_view, &QTreeWidget::itemActivated, this, &ProblemsDock::activate);
+    layout->addWidget(m_view, 1);
+    setWidget(content);
+
+    connect(m_document, &Document::diagnosticsChanged, this, &ProblemsDock::refresh);
+    connect(m_document, &Document::modelReset, this, &ProblemsDock::refresh);
+    refresh();
+}
+
+QToolButton* ProblemsDock::createFilterButton(core::Severity severity, const QString& objectName)
+{
+    auto* button = new QToolButton;
+    button->setObjectName(objectName);
+    button->setCheckable(true);
+    button->setChecked(true);
+    button->setAutoRaise(true);
+    button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    button->setIcon(severityIcon(severity, style()));
+    button->setIconSize(QSize(16, 16));
+    connect(button, &QToolButton::toggled, this, &ProblemsDock::applyFilter);
+    return button;
+}
+
+bool ProblemsDock::isShown(core::Severity severity) const
+{
+    switch (severity) {
+    case core::Severity::Error:
+        return m_errorsButton->isChecked();
+    case core::Severity::Warning:
+        return m_warningsButton->isChecked();
+    case core::Severity::Info:
+        return m_infoButton->isChecked();
+    }
+    return true;
+}
+
+void ProblemsDock::refresh()
+{
+    const QTreeWidgetItem* current = m_view->currentItem();
+    const QString currentKey = current ? current->data(0, KeyRole).toString() : QString();
+    const int scroll = m_view->verticalScrollBar()->value();
+
+    m_view->clear();
+    QList<QTreeWidgetItem*> items;
+    QTreeWidgetItem* newCurrent = nullptr;
+    for (const core::Diagnostic& diagnostic : m_document->diagnostics()) {
+        const QString message = diagnosticText(diagnostic);
+        auto* item = new QTreeWidgetItem({ fromStd(diagnostic.code), elementText(diagnostic), message });
+        item->setIcon(CodeColumn, severityIcon(diagnostic.severity, style()));
+        item->setToolTip(CodeColumn, severityText(diagnostic.severity));
+        item->setToolTip(MessageColumn, message);
+        item->setData(0, SeverityRole, static_cast<int>(diagnostic.severity));
+        item->setData(0, KindRole, static_cast<int>(kindOf(diagnostic.target)));
+        item->setData(0, IdRole, fromStd(diagnostic.element));
+        item->setData(0, FieldRole, fromStd(diagnostic.field));
+        item->setData(0, KeyRole, keyOf(diagnostic));
+        if (!newCurrent && !currentKey.isEmpty() && item->data(0, KeyRole).toString() == currentKey)
+            newCurrent = item;
+        items << item;
+    }
+    m_view->addTopLevelItems(items);
+    if (newCurrent)
+        m_view->setCurrentItem(newCurrent);
+    applyFilter();
+    updateFilterButtons();
+    m_view->verticalScrollBar()->setValue(scroll);
+}
+
+void ProblemsDock::updateFilterButtons()
+{
+    int counts[3] = { 0, 0, 0 };
+    for (const core::Diagnostic& diagnostic : m_document->diagnostics())
+        ++counts[static_cast<int>(diagnostic.severity)];
+    const int errors = counts[static_cast<int>(core::Severity::Error)];
+    const int warnings = counts[static_cast<int>(core::Severity::Warning)];
+    const int infos = counts[static_cast<int>(core::Severity::Info)];
+    // Singular texts of their own: English has no "%n" form for one.
+    m_errorsButton->setText(errors == 1 ? tr("1 error") : tr("%n errors", nullptr, errors));
+    m_warningsButton->setText(warnings == 1 ? tr("1 warning") : tr("%n warnings", nullptr, warnings));
+    m_infoButton->setText(infos == 1 ? tr("1 info") : tr("%n infos", nullptr, infos));
+    m_errorsButton->setToolTip(tr("Show or hide the errors"));
+    m_warningsButton->setToolTip(tr("Show or hide the warnings"));
+    m_infoButton->setToolTip(tr("Show or hide the information messages"));
+}
+
+void ProblemsDock::applyFilter()
+{
+    for (int i = 0; i < m_view->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = m_view->topLevelItem(i);
+        item->setHidden(!isShown(static_cast<core::Severity>(item->data(0, SeverityRole).toInt())));
+    }
+}
+
+void ProblemsDock::activate(QTreeWidgetItem* item)
+{
+    if (!item)
+        return;
+    ElementRef element;
+    element.kind = static_cast<ElementRef::Kind>(item->data(0, KindRole).toInt());
+    element.id = item->data(0, IdRole).toString();
+    m_selection->select(element, item->data(0, FieldRole).toString());
+}
+
+void ProblemsDock::copySelected()
+{
+    QStringList lines;
+    for (int i = 0; i < m_view->topLevelItemCount(); ++i) {
+        const QTreeWidgetItem* item = m_view->topLevelItem(i);
+        if (item->isSelected() && !item->isHidden())
+            lines << QStringLiteral("%1\t%2\t%3")
+                         .arg(item->text(CodeColumn), item->data(0, IdRole).toString(), item->text(MessageColumn));
+    }
+    if (!lines.isEmpty())
+        QGuiApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+}
+
+} // namespace editor

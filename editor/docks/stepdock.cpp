@@ -1,0 +1,374 @@
+#include "editor/docks/stepdock.h"
+
+#include "editor/commands/setinitialstepcommand.h"
+#include "editor/commands/setstepcommentcommand.h"
+#include "editor/commands/setstephiddencommand.h"
+#include "editor/commands/setsteptypecommand.h"
+#include "editor/diagnostictext.h"
+#include "editor/docks/diagnosticlist.h"
+#include "editor/docks/dockreveal.h"
+#include "editor/docks/elementlabels.h"
+#include "editor/docks/undoshortcutfilter.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+#include "editor/statenames.h"
+
+#include "core/model.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QScrollBar>
+#include <QSignalBlocker>
+#include <QStackedWidget>
+#include <QStyle>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace editor {
+
+namespace {
+
+constexpr int kTransitionIdRole = Qt::UserRole;
+
+QString fromStd(const std::string& text)
+{
+    return QString::fromStdString(text);
+}
+
+QLabel* sectionLabel(const QString& text, QWidget* parent)
+{
+    auto* label = new QLabel(text, parent);
+    QFont font = label->font();
+    font.setBold(true);
+    label->setFont(font);
+    return label;
+}
+
+// A text field a few lines high: the dock must fit beside the chart at 1366x768.
+int linesHeight(const QWidget* widget, int lines)
+{
+    return widget->fontMetrics().lineSpacing() * lines + 2 * widget->style()->pixelMetric(QStyle::PM_DefaultFrameWidth)
+        + 8;
+}
+
+} // namespace
+
+StepDock::StepDock(Document* document, Selection* selection, QWidget* parent)
+    : QDockWidget(tr("Step"), parent)
+    , m_document(document)
+    , m_selection(selection)
+{
+    setObjectName(QStringLiteral("stepDock"));
+
+    m_pages = new QStackedWidget(this);
+    auto* placeholder = new QLabel(tr("Select a step in the chart to see and edit its properties."), m_pages);
+    placeholder->setObjectName(QStringLiteral("placeholder"));
+    placeholder->setAlignment(Qt::AlignCenter);
+    placeholder->setWordWrap(true);
+    placeholder->setEnabled(false);
+    placeholder->setMargin(12);
+    m_pages->addWidget(placeholder);
+
+    // No scroll area: the transition lists take the height there is.
+    m_pages->addWidget(createForm());
+    setWidget(m_pages);
+
+    connect(m_document, &Document::stepChanged, this, &StepDock::refresh);
+    connect(m_document, &Document::transitionChanged, this, &StepDock::refresh);
+    connect(m_document, &Document::modelReset, this, &StepDock::refresh);
+    connect(m_document, &Document::diagnosticsChanged, this, &StepDock::refresh);
+    connect(m_selection, &Selection::changed, this, &StepDock::onSelectionChanged);
+    connect(m_selection, &Selection::focusFieldRequested, this, &StepDock::onFocusFieldRequested);
+    onSelectionChanged(m_selection->current());
+}
+
+QWidget* StepDock::createForm()
+{
+    auto* form = new QWidget;
+    auto* layout = new QVBoxLayout(form);
+    layout->setContentsMargins(6, 6, 6, 6);
+    layout->setSpacing(6);
+
+    auto* header = new QHBoxLayout;
+    m_idLabel = new QLabel(form);
+    m_idLabel->setObjectName(QStringLiteral("idLabel"));
+    QFont idFont = m_idLabel->font();
+    idFont.setBold(true);
+    idFont.setPointSizeF(idFont.pointSizeF() * 1.3);
+    m_idLabel->setFont(idFont);
+    m_nameLabel = new QLabel(form);
+    m_nameLabel->setObjectName(QStringLiteral("nameLabel"));
+    m_nameLabel->setWordWrap(true);
+    m_nameLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    header->addWidget(m_idLabel, 0, Qt::AlignTop);
+    header->addWidget(m_nameLabel, 1);
+    layout->addLayout(header);
+    m_familyLabel = new QLabel(form);
+    m_familyLabel->setEnabled(false); // secondary text
+    layout->addWidget(m_familyLabel);
+
+    auto* fields = new QFormLayout;
+    fields->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    m_typeCombo = new QComboBox(form);
+    m_typeCombo->setObjectName(QStringLiteral("typeCombo"));
+    for (core::StepType type : { core::StepType::Simple, core::StepType::Macro, core::StepType::Enclosing })
+        m_typeCombo->addItem(stepTypeText(type), static_cast<int>(type));
+    m_typeCombo->setToolTip(tr("Simple step: no nested behaviour.\n"
+                               "Macro-step: its transitions wait until the nested behaviour is complete.\n"
+                               "Enclosing step: its transitions fire whatever the nested behaviour is doing."));
+    connect(m_typeCombo, &QComboBox::currentIndexChanged, this, &StepDock::onTypeChosen);
+    fields->addRow(tr("&Type:"), m_typeCombo);
+
+    auto* flags = new QHBoxLayout;
+    m_initialCheck = new QCheckBox(tr("&Initial"), form);
+    m_initialCheck->setObjectName(QStringLiteral("initialCheck"));
+    connect(m_initialCheck, &QCheckBox::toggled, this, &StepDock::onInitialToggled);
+    m_hiddenCheck = new QCheckBox(tr("&Hidden"), form);
+    m_hiddenCheck->setObjectName(QStringLiteral("hiddenCheck"));
+    m_hiddenCheck->setToolTip(tr("A hidden step is not part of this machine: it generates no code, and its "
+                                 "transitions are not effective."));
+    connect(m_hiddenCheck, &QCheckBox::toggled, this, &StepDock::onHiddenToggled);
+    flags->addWidget(m_initialCheck);
+    flags->addWidget(m_hiddenCheck);
+    flags->addStretch();
+    fields->addRow(flags);
+
+    m_commentEdit = new QPlainTextEdit(form);
+    m_commentEdit->setObjectName(QStringLiteral("commentEdit"));
+    m_commentEdit->setPlaceholderText(tr("What this state does on this machine"));
+    m_commentEdit->setTabChangesFocus(true);
+    m_commentEdit->setUndoRedoEnabled(false);
+    m_commentEdit->setFixedHeight(linesHeight(m_commentEdit, 3));
+    UndoShortcutFilter::install(m_commentEdit);
+    connect(m_commentEdit, &QPlainTextEdit::textChanged, this, &StepDock::onCommentEdited);
+    fields->addRow(tr("&Comment:"), m_commentEdit);
+    layout->addLayout(fields);
+
+    layout->addWidget(sectionLabel(tr("Incoming transitions"), form));
+    m_incomingList = createTransitionList(QStringLiteral("incomingList"));
+    layout->addWidget(m_incomingList, 1);
+    layout->addWidget(sectionLabel(tr("Outgoing transitions, by priority"), form));
+    m_outgoingList = createTransitionList(QStringLiteral("outgoingList"));
+    layout->addWidget(m_outgoingList, 2);
+
+    m_problemList = new DiagnosticList(form);
+    m_problemList->setObjectName(QStringLiteral("problemList"));
+    layout->addWidget(m_problemList);
+    return form;
+}
+
+QTreeWidget* StepDock::createTransitionList(const QString& objectName)
+{
+    auto* list = new QTreeWidget;
+    list->setObjectName(objectName);
+    list->setColumnCount(2);
+    list->setHeaderLabels({ tr("Transition"), tr("Condition") });
+    list->setRootIsDecorated(false);
+    list->setUniformRowHeights(true);
+    list->setAllColumnsShowFocus(true);
+    list->setMinimumHeight(linesHeight(list, 4));
+    list->header()->setStretchLastSection(true);
+    list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    list->setToolTip(tr("Click a transition to select it"));
+    connect(list, &QTreeWidget::itemClicked, this, &StepDock::onTransitionClicked);
+    connect(list, &QTreeWidget::itemActivated, this, &StepDock::onTransitionClicked);
+    return list;
+}
+
+void StepDock::onSelectionChanged(const ElementRef& element)
+{
+    const QString id = element.kind == ElementRef::Kind::Step ? element.id : QString();
+    if (id == m_stepId && !id.isEmpty())
+        return;
+    m_stepId = m_document->model().step(id.toStdString()) ? id : QString();
+    refresh();
+    if (!m_stepId.isEmpty())
+        raiseOverPropertySibling(this);
+}
+
+void StepDock::onFocusFieldRequested(const ElementRef& element, const QString& field)
+{
+    if (element.kind != ElementRef::Kind::Step || element.id != m_stepId || m_stepId.isEmpty())
+        return;
+    revealDock(this);
+    QWidget* target = m_typeCombo;
+    if (field == QLatin1String("initial") || field == QLatin1String("hidden"))
+        target = m_hiddenCheck; // a hidden initial step: show it, or make another step initial
+    else if (field == QLatin1String("incoming"))
+        target = m_incomingList;
+    else if (field == QLatin1String("outgoing"))
+        target = m_outgoingList;
+    else if (field == QLatin1String("comment"))
+        target = m_commentEdit;
+    target->setFocus(Qt::OtherFocusReason);
+}
+
+void StepDock::refresh()
+{
+    const core::Step* step = m_document->model().step(m_stepId.toStdString());
+    m_pages->setCurrentIndex(step ? 1 : 0);
+    if (!step)
+        return;
+    m_idLabel->setText(m_stepId);
+    m_nameLabel->setText(officialStateName(m_stepId));
+    m_familyLabel->setText(tr("%1 · state number %2").arg(officialFamilyName(step->family)).arg(step->number));
+    {
+        const QSignalBlocker blocker(m_typeCombo);
+        m_typeCombo->setCurrentIndex(m_typeCombo->findData(static_cast<int>(step->type)));
+    }
+    {
+        const QSignalBlocker blocker(m_initialCheck);
+        m_initialCheck->setChecked(step->initial);
+        // Exactly one step is initial: it changes by making another one initial.
+        m_initialCheck->setEnabled(!step->initial);
+        m_initialCheck->setToolTip(step->initial
+                ? tr("%1 is the initial step. There is always exactly one initial step: to change it, "
+                     "make another step initial.")
+                      .arg(m_stepId)
+                : tr("Make %1 the initial step (the PLC starts in it). The current initial step is %2.")
+                      .arg(m_stepId, fromStd(m_document->model().initialStep().id)));
+    }
+    {
+        const QSignalBlocker blocker(m_hiddenCheck);
+        m_hiddenCheck->setChecked(step->hidden);
+    }
+    const QString comment = fromStd(step->comment);
+    if (m_commentEdit->toPlainText() != comment) {
+        // Only when it differs: rewriting the text under the user's cursor
+        // while they type would move the cursor.
+        const QSignalBlocker blocker(m_commentEdit);
+        m_commentEdit->setPlainText(comment);
+        m_commentEdit->moveCursor(QTextCursor::End);
+    }
+    refreshTransitions();
+    refreshProblems();
+}
+
+void StepDock::refreshTransitions()
+{
+    const core::Model& model = m_document->model();
+    const std::string id = m_stepId.toStdString();
+    const core::Step* step = model.step(id);
+    fillList(m_incomingList, model.incoming(id), false);
+
+    std::vector<const core::Transition*> outgoing;
+    // The family transition leaves every F state, before its own transitions.
+    if (step->family == core::Family::F) {
+        for (const core::Transition* family : model.outgoing(core::kFamilySource))
+            outgoing.push_back(family);
+    }
+    for (const core::Transition* transition : model.outgoing(id))
+        outgoing.push_back(transition);
+    fillList(m_outgoingList, outgoing, true);
+}
+
+void StepDock::fillList(QTreeWidget* list, const std::vector<const core::Transition*>& transitions, bool outgoing)
+{
+    // Refilled on every edit (typing a comment too): keep where the user was.
+    const QString current
+        = list->currentItem() ? list->currentItem()->data(0, kTransitionIdRole).toString() : QString();
+    const int scroll = list->verticalScrollBar()->value();
+    list->clear();
+    for (const core::Transition* transition : transitions) {
+        QTreeWidgetItem* item = transitionItem(*transition, outgoing);
+        list->addTopLevelItem(item);
+        if (item->data(0, kTransitionIdRole).toString() == current)
+            list->setCurrentItem(item);
+    }
+    list->verticalScrollBar()->setValue(scroll);
+}
+
+QTreeWidgetItem* StepDock::transitionItem(const core::Transition& transition, bool outgoing) const
+{
+    const core::Model& model = m_document->model();
+    const QString id = fromStd(transition.id);
+    QString text;
+    if (!outgoing) {
+        //: an incoming transition: its source, an arrow
+        text = transition.isFamilyTransition() ? tr("F (family) →") : tr("%1 →").arg(fromStd(transition.source));
+    } else if (transition.isFamilyTransition()) {
+        //: the family transition in the outgoing list of an F state
+        text = tr("F: → %1").arg(fromStd(transition.target));
+    } else {
+        const int priority = model.priority(transition.id);
+        //: an outgoing transition: priority, arrow, target ("1: → F4"); – when it has none
+        text = tr("%1: → %2").arg(priority > 0 ? QString::number(priority) : tr("–"), fromStd(transition.target));
+    }
+    auto* item = new QTreeWidgetItem({ text, fromStd(transition.condition) });
+    item->setData(0, kTransitionIdRole, id);
+
+    QStringList tip { transitionLabel(transition) };
+    if (transition.isFamilyTransition())
+        tip << tr("Family transition: evaluated before the own transitions of every visible F state.");
+    if (transition.negated)
+        tip << tr("Negated");
+    if (!transition.condition.empty())
+        tip << tr("Condition: %1").arg(fromStd(transition.condition));
+    const QString reason = ineffectiveReason(model, transition);
+    if (!reason.isEmpty()) {
+        tip << tr("Not effective (%1): generates no code.").arg(reason);
+        const QColor grey = palette().color(QPalette::Disabled, QPalette::Text);
+        QFont font = item->font(0);
+        font.setItalic(true);
+        for (int column = 0; column < 2; ++column) {
+            item->setForeground(column, grey);
+            item->setFont(column, font);
+        }
+    } else if (m_document->hasProblems(ElementRef::transition(id))) {
+        const bool error = core::hasErrors(m_document->diagnosticsFor(ElementRef::transition(id)));
+        item->setIcon(1, severityIcon(error ? core::Severity::Error : core::Severity::Warning, style()));
+    }
+    item->setToolTip(0, tip.join(QLatin1Char('\n')));
+    item->setToolTip(1, tip.join(QLatin1Char('\n')));
+    return item;
+}
+
+void StepDock::refreshProblems()
+{
+    m_problemList->setDiagnostics(m_document->diagnosticsFor(ElementRef::step(m_stepId)));
+}
+
+void StepDock::onTypeChosen(int index)
+{
+    if (m_stepId.isEmpty() || index < 0)
+        return;
+    const auto type = static_cast<core::StepType>(m_typeCombo->itemData(index).toInt());
+    m_document->push(new SetStepTypeCommand(*m_document, m_stepId, type));
+    refresh(); // a refused edit puts the combo back
+}
+
+void StepDock::onInitialToggled(bool checked)
+{
+    if (m_stepId.isEmpty())
+        return;
+    if (checked)
+        m_document->push(new SetInitialStepCommand(*m_document, m_stepId));
+    refresh();
+}
+
+void StepDock::onHiddenToggled(bool checked)
+{
+    if (m_stepId.isEmpty())
+        return;
+    m_document->push(new SetStepHiddenCommand(*m_document, m_stepId, checked));
+    refresh();
+}
+
+void StepDock::onCommentEdited()
+{
+    if (m_stepId.isEmpty())
+        return;
+    m_document->push(new SetStepCommentCommand(*m_document, m_stepId, m_commentEdit->toPlainText()));
+}
+
+void StepDock::onTransitionClicked(QTreeWidgetItem* item)
+{
+    if (item)
+        m_selection->select(ElementRef::transition(item->data(0, kTransitionIdRole).toString()));
+}
+
+} // namespace editor

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "editor/elementref.h"
+
+#include <QDockWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+class QStackedWidget;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace core {
+struct Transition;
+}
+
+namespace editor {
+
+class DiagnosticList;
+class Document;
+class Selection;
+
+// Properties of the selected step: its official name, type, initial and
+// hidden flags, comment, and the transitions in and out of it as links.
+// Edits are commands pushed on the Document.
+class StepDock : public QDockWidget {
+    Q_OBJECT
+
+public:
+    StepDock(Document* document, Selection* selection, QWidget* parent = nullptr);
+
+    // The step shown; empty when the selection is not a step.
+    QString stepId() const { return m_stepId; }
+
+private:
+    QWidget* createForm();
+    QTreeWidget* createTransitionList(const QString& objectName);
+    void onSelectionChanged(const ElementRef& element);
+    void onFocusFieldRequested(const ElementRef& element, const QString& field);
+    void refresh();
+    void refreshTransitions();
+    void fillList(QTreeWidget* list, const std::vector<const core::Transition*>& transitions, bool outgoing);
+    QTreeWidgetItem* transitionItem(const core::Transition& transition, bool outgoing) const;
+    void refreshProblems();
+
+    void onTypeChosen(int index);
+    void onInitialToggled(bool checked);
+    void onHiddenToggled(bool checked);
+    void onCommentEdited();
+    void onTransitionClicked(QTreeWidgetItem* item);
+
+    Document* m_document;
+    Selection* m_selection;
+    QString m_stepId;
+
+    QStackedWidget* m_pages = nullptr;
+    QLabel* m_idLabel = nullptr;
+    QLabel* m_nameLabel = nullptr;
+    QLabel* m_familyLabel = nullptr;
+    QComboBox* m_typeCombo = nullptr;
+    QCheckBox* m_initialCheck = nullptr;
+    QCheckBox* m_hiddenCheck = nullptr;
+    QPlainTextEdit* m_commentEdit = nullptr;
+    QTreeWidget* m_incomingList = nullptr;
+    QTreeWidget* m_outgoingList = nullptr;
+    DiagnosticList* m_problemList = nullptr;
+};
+
+} // namespace editor

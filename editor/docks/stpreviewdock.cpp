@@ -1,0 +1,234 @@
+#include "editor/docks/stpreviewdock.h"
+
+#include "editor/commands/setdialectcommand.h"
+#include "editor/docks/sthighlighter.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+
+#include "core/model.h"
+
+#include <QComboBox>
+#include <QFontDatabase>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QScrollBar>
+#include <QSignalBlocker>
+#include <QTextBlock>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace editor {
+
+namespace {
+
+// Lines kept above the highlighted code when scrolling to it.
+constexpr int kContextLines = 2;
+
+QString fromStd(const std::string& text)
+{
+    return QString::fromStdString(text);
+}
+
+} // namespace
+
+StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* parent)
+    : QDockWidget(tr("Structured Text"), parent)
+    , m_document(document)
+    , m_selection(selection)
+    , m_dialectCombo(new QComboBox)
+    , m_noteLabel(new QLabel)
+    , m_editor(new QPlainTextEdit)
+    , m_highlighter(new StHighlighter(m_editor->document()))
+    , m_updateTimer(new QTimer(this))
+{
+    setObjectName(QStringLiteral("stPreviewDock"));
+
+    auto* content = new QWidget(this);
+    auto* layout = new QVBoxLayout(content);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    auto* bar = new QHBoxLayout;
+    bar->setContentsMargins(6, 3, 6, 3);
+    auto* dialectLabel = new QLabel(tr("&Dialect:"), content);
+    dialectLabel->setBuddy(m_dialectCombo);
+    m_dialectCombo->setParent(content);
+    m_dialectCombo->setObjectName(QStringLiteral("dialectCombo"));
+    m_dialectCombo->addItem(tr("IEC 61131-3"), static_cast<int>(core::Dialect::Iec));
+    m_dialectCombo->addItem(tr("CODESYS"), static_cast<int>(core::Dialect::Codesys));
+    m_dialectCombo->setItemData(
+        0, tr("Beremiz, OpenPLC, TwinCAT, matiec: globals in the configuration"), Qt::ToolTipRole);
+    m_dialectCombo->setItemData(1, tr("CODESYS V3.5: globals in the list GVL, read as GVL.Name"), Qt::ToolTipRole);
+    m_dialectCombo->setToolTip(tr("The flavour of the generated code; saved with the model"));
+    connect(m_dialectCombo, &QComboBox::currentIndexChanged, this, &StPreviewDock::onDialectChosen);
+    m_noteLabel->setParent(content);
+    m_noteLabel->setObjectName(QStringLiteral("noteLabel"));
+    m_noteLabel->setForegroundRole(QPalette::PlaceholderText);
+    bar->addWidget(dialectLabel);
+    bar->addWidget(m_dialectCombo);
+    bar->addSpacing(8);
+    bar->addWidget(m_noteLabel, 1);
+    layout->addLayout(bar);
+
+    m_editor->setParent(content);
+    m_editor->setObjectName(QStringLiteral("codeView"));
+    m_editor->setReadOnly(true);
+    m_editor->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_editor->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_editor->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
+    m_editor->setFrameShape(QFrame::NoFrame);
+    layout->addWidget(m_editor, 1);
+    setWidget(content);
+
+    // Coalesces the signals of one edit (a rename changes many transitions).
+    m_updateTimer->setSingleShot(true);
+    m_updateTimer->setInterval(0);
+    connect(m_updateTimer, &QTimer::timeout, this, &StPreviewDock::updatePreview);
+
+    connect(m_document, &Document::stepChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::transitionChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::variableChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::variablesChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::settingsChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::modelReset, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::settingsChanged, this, &StPreviewDock::refreshDialect);
+    connect(m_document, &Document::modelReset, this, &StPreviewDock::refreshDialect);
+    connect(m_selection, &Selection::changed, this, &StPreviewDock::onSelectionChanged);
+    refreshDialect();
+}
+
+void StPreviewDock::showEvent(QShowEvent* event)
+{
+    QDockWidget::showEvent(event);
+    if (m_stale)
+        scheduleUpdate();
+}
+
+void StPreviewDock::scheduleUpdate()
+{
+    m_stale = true;
+    // A hidden preview (a closed dock, a tab behind another) waits until shown.
+    if (isVisible())
+        m_updateTimer->start();
+}
+
+void StPreviewDock::updatePreview()
+{
+    m_updateTimer->stop();
+    m_stale = false;
+    const core::Model& model = m_document->model();
+    m_preview = core::previewGemmaProgram(model, model.settings().dialect);
+    const QString text = fromStd(m_preview.text);
+    if (text != m_editor->toPlainText()) {
+        QScrollBar* vertical = m_editor->verticalScrollBar();
+        QScrollBar* horizontal = m_editor->horizontalScrollBar();
+        const int top = vertical->value();
+        const int left = horizontal->value();
+        m_editor->setPlainText(text);
+        vertical->setValue(top);
+        horizontal->setValue(left);
+    }
+    highlightSelection(false);
+}
+
+void StPreviewDock::refreshDialect()
+{
+    const QSignalBlocker blocker(m_dialectCombo);
+    const int dialect = static_cast<int>(m_document->model().settings().dialect);
+    m_dialectCombo->setCurrentIndex(m_dialectCombo->findData(dialect));
+}
+
+void StPreviewDock::onDialectChosen(int index)
+{
+    if (index < 0)
+        return;
+    const auto dialect = static_cast<core::Dialect>(m_dialectCombo->itemData(index).toInt());
+    m_document->push(new SetDialectCommand(*m_document, dialect));
+    refreshDialect();
+}
+
+void StPreviewDock::onSelectionChanged()
+{
+    if (m_stale && isVisible())
+        updatePreview();
+    highlightSelection(true);
+}
+
+std::vector<core::LineRange> StPreviewDock::rangesFor(const ElementRef& element) const
+{
+    std::vector<core::LineRange> ranges;
+    if (element.kind != ElementRef::Kind::Step && element.kind != ElementRef::Kind::Transition)
+        return ranges;
+    const std::string key = element.id.toStdString();
+    // A family transition is evaluated in every F branch: "F->D1", then "F->D1@F2"...
+    const std::string occurrence = key + "@";
+    for (const auto& [name, range] : m_preview.ranges) {
+        if (name == key || (element.kind == ElementRef::Kind::Transition && name.rfind(occurrence, 0) == 0))
+            ranges.push_back(range);
+    }
+    std::sort(ranges.begin(), ranges.end(),
+        [](const core::LineRange& a, const core::LineRange& b) { return a.first < b.first; });
+    return ranges;
+}
+
+void StPreviewDock::highlightSelection(bool scrollToIt)
+{
+    const ElementRef& element = m_selection->current();
+    m_highlighted = rangesFor(element);
+    m_noteLabel->setText(noCodeReason(element));
+
+    QColor background = palette().color(QPalette::Highlight);
+    background.setAlpha(60);
+    QList<QTextEdit::ExtraSelection> selections;
+    QTextDocument* document = m_editor->document();
+    for (const core::LineRange& range : m_highlighted) {
+        for (int line = range.first; line <= range.last; ++line) {
+            const QTextBlock block = document->findBlockByNumber(line - 1);
+            if (!block.isValid())
+                continue;
+            QTextEdit::ExtraSelection selection;
+            selection.cursor = QTextCursor(block);
+            selection.format.setBackground(background);
+            selection.format.setProperty(QTextFormat::FullWidthSelection, true);
+            selections << selection;
+        }
+    }
+    m_editor->setExtraSelections(selections);
+    if (!m_highlighted.empty())
+        scrollToLines(m_highlighted.front(), !scrollToIt);
+}
+
+void StPreviewDock::scrollToLines(const core::LineRange& range, bool onlyIfHidden)
+{
+    // Without line wrapping the vertical scroll value is the first visible line.
+    QScrollBar* vertical = m_editor->verticalScrollBar();
+    const int lineHeight = std::max(1, m_editor->fontMetrics().lineSpacing());
+    const int visibleLines = std::max(1, m_editor->viewport()->height() / lineHeight);
+    const int first = range.first - 1;
+    const int last = range.last - 1;
+    const int top = vertical->value();
+    if (onlyIfHidden && first >= top && last < top + visibleLines)
+        return;
+    // The whole range when it fits, else its start, with a little context above.
+    const int wanted = last - first + 1 + kContextLines <= visibleLines ? first - kContextLines : first;
+    vertical->setValue(std::max(0, wanted));
+    m_editor->horizontalScrollBar()->setValue(0);
+}
+
+QString StPreviewDock::noCodeReason(const ElementRef& element) const
+{
+    const core::Model& model = m_document->model();
+    if (element.kind == ElementRef::Kind::Step) {
+        const core::Step* step = model.step(element.id.toStdString());
+        if (step && step->hidden)
+            return tr("%1 is hidden: it generates no code.").arg(element.id);
+    } else if (element.kind == ElementRef::Kind::Transition) {
+        if (model.transition(element.id.toStdString()) && !model.isEffective(element.id.toStdString()))
+            return tr("This transition is not effective: it generates no code.");
+    }
+    return {};
+}
+
+} // namespace editor

@@ -1,0 +1,63 @@
+#pragma once
+
+#include "editor/elementref.h"
+
+#include "core/stgenerator.h"
+
+#include <QDockWidget>
+
+#include <vector>
+
+class QComboBox;
+class QLabel;
+class QPlainTextEdit;
+class QTimer;
+
+namespace editor {
+
+class Document;
+class Selection;
+class StHighlighter;
+
+// The PROGRAM GEMMA the model generates, live and read-only, in the chosen
+// dialect (a model setting, so choosing it is an undoable edit). The code
+// of the selected step or transition is highlighted and scrolled to; with
+// nothing selected, updates keep the scroll position.
+class StPreviewDock : public QDockWidget {
+    Q_OBJECT
+
+public:
+    StPreviewDock(Document* document, Selection* selection, QWidget* parent = nullptr);
+
+    QPlainTextEdit* editor() const { return m_editor; }
+    // Regenerates now instead of after the current edit completes.
+    void updatePreview();
+    // The 1-based line ranges highlighted for the selection.
+    const std::vector<core::LineRange>& highlightedRanges() const { return m_highlighted; }
+
+protected:
+    void showEvent(QShowEvent* event) override;
+
+private:
+    void scheduleUpdate();
+    void refreshDialect();
+    void onDialectChosen(int index);
+    void onSelectionChanged();
+    void highlightSelection(bool scrollToIt);
+    std::vector<core::LineRange> rangesFor(const ElementRef& element) const;
+    void scrollToLines(const core::LineRange& range, bool onlyIfHidden);
+    QString noCodeReason(const ElementRef& element) const;
+
+    Document* m_document;
+    Selection* m_selection;
+    QComboBox* m_dialectCombo;
+    QLabel* m_noteLabel;
+    QPlainTextEdit* m_editor;
+    StHighlighter* m_highlighter;
+    QTimer* m_updateTimer;
+    core::StPreview m_preview;
+    std::vector<core::LineRange> m_highlighted;
+    bool m_stale = true;
+};
+
+} // namespace editor

@@ -1,0 +1,89 @@
+#pragma once
+
+#include "editor/elementref.h"
+
+#include <QDockWidget>
+#include <QList>
+
+class QCheckBox;
+class QGroupBox;
+class QLabel;
+class QSpinBox;
+class QStackedWidget;
+class QVBoxLayout;
+
+namespace core {
+class Model;
+struct Transition;
+} // namespace core
+
+namespace editor {
+
+class ConditionEdit;
+class DiagnosticList;
+class Document;
+class Selection;
+
+// Properties of the selected transition: its condition (checked as it is
+// typed), priority, negation, visibility and tokens. Edits are commands
+// pushed on the Document; typing a condition merges into one undo step.
+class TransitionDock : public QDockWidget {
+    Q_OBJECT
+
+public:
+    TransitionDock(Document* document, Selection* selection, QWidget* parent = nullptr);
+
+    // The transition shown; empty when the selection is not a transition.
+    QString transitionId() const { return m_transitionId; }
+
+private:
+    // One checkbox of the token area.
+    struct TokenRow {
+        QString variable; // as declared, or as the token names it
+        QString text;
+        QString toolTip;
+        bool checked = false;
+        bool enabled = true;
+    };
+
+    QWidget* createForm();
+    void onSelectionChanged(const ElementRef& element);
+    void onFocusFieldRequested(const ElementRef& element, const QString& field);
+    void refresh();
+    void refreshHeader(const core::Transition& transition);
+    void refreshCondition(const core::Transition& transition);
+    void refreshPriority(const core::Transition& transition);
+    void refreshNegation(const core::Transition& transition);
+    void refreshTokens(const core::Transition& transition);
+    QList<TokenRow> tokenRows(const core::Transition& transition, QString* hint) const;
+    void focusCondition();
+
+    void onConditionEdited(const QString& text);
+    void onPriorityChanged(int priority);
+    void onNegatedToggled(bool checked);
+    void onHiddenToggled(bool checked);
+    void onTokenToggled(const QString& variable, bool checked);
+    void onStepLinkActivated(const QString& stepId);
+
+    Document* m_document;
+    Selection* m_selection;
+    QString m_transitionId;
+
+    QStackedWidget* m_pages = nullptr;
+    QLabel* m_titleLabel = nullptr;
+    QLabel* m_namesLabel = nullptr;
+    QLabel* m_effectLabel = nullptr;
+    ConditionEdit* m_conditionEdit = nullptr;
+    DiagnosticList* m_problemList = nullptr;
+    QSpinBox* m_prioritySpin = nullptr;
+    QCheckBox* m_negatedCheck = nullptr;
+    QLabel* m_negatedHint = nullptr;
+    QCheckBox* m_hiddenCheck = nullptr;
+    QGroupBox* m_tokenGroup = nullptr;
+    QLabel* m_tokenHint = nullptr;
+    QVBoxLayout* m_tokenLayout = nullptr;
+    QList<QCheckBox*> m_tokenChecks;
+    QList<TokenRow> m_tokenRows;
+};
+
+} // namespace editor

@@ -1,0 +1,476 @@
+#include "editor/docks/variablesdock.h"
+
+#include "editor/commands/addvariablecommand.h"
+#include "editor/commands/movevariablecommand.h"
+#include "editor/commands/pastevariablescommand.h"
+#include "editor/commands/removevariablecommand.h"
+#include "editor/docks/dockreveal.h"
+#include "editor/docks/toolicons.h"
+#include "editor/docks/variablestablemodel.h"
+#include "editor/docks/variabletypedelegate.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+
+#include "core/iectypes.h"
+#include "core/model.h"
+
+#include <QAction>
+#include <QClipboard>
+#include <QGuiApplication>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSortFilterProxyModel>
+#include <QStyle>
+#include <QTableView>
+#include <QTimer>
+#include <QToolBar>
+#include <QToolTip>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace editor {
+
+namespace {
+
+QString fromStd(const std::string& text)
+{
+    return QString::fromStdString(text);
+}
+
+bool lessByName(const std::string& a, const std::string& b)
+{
+    return core::toUpperAscii(a) < core::toUpperAscii(b);
+}
+
+bool isClipboardKey(QKeyEvent* event)
+{
+    return event->matches(QKeySequence::Copy) || event->matches(QKeySequence::Paste)
+        || event->matches(QKeySequence::Delete);
+}
+
+} // namespace
+
+VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* parent)
+    : QDockWidget(tr("Variables"), parent)
+    , m_document(document)
+    , m_selection(selection)
+    , m_model(new VariablesTableModel(document, this))
+    , m_proxy(new QSortFilterProxyModel(this))
+    , m_view(new QTableView)
+{
+    setObjectName(QStringLiteral("variablesDock"));
+
+    m_proxy->setSourceModel(m_model);
+    m_proxy->setFilterCaseSensitivity(Qt::CaseInsensitive);
+    m_proxy->setFilterKeyColumn(-1);
+
+    auto* content = new QWidget(this);
+    auto* layout = new QVBoxLayout(content);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    createActions();
+    auto* toolbar = new QToolBar(content);
+    toolbar->setIconSize(QSize(16, 16));
+    toolbar->addActions({ m_addAction, m_removeAction, m_duplicateAction });
+    toolbar->addSeparator();
+    toolbar->addActions({ m_upAction, m_downAction, m_sortAction });
+    m_filterEdit = new QLineEdit(toolbar);
+    m_filterEdit->setObjectName(QStringLiteral("filterEdit"));
+    m_filterEdit->setPlaceholderText(tr("Filter"));
+    m_filterEdit->setClearButtonEnabled(true);
+    m_filterEdit->setMaximumWidth(160);
+    m_filterEdit->setToolTip(tr("Show only the variables whose name, type, default or comment contains this text"));
+    connect(m_filterEdit, &QLineEdit::textChanged, m_proxy, &QSortFilterProxyModel::setFilterFixedString);
+    auto* spacer = new QWidget(toolbar);
+    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    toolbar->addWidget(spacer);
+    toolbar->addWidget(m_filterEdit);
+    layout->addWidget(toolbar);
+
+    m_view->setParent(content);
+    m_view->setObjectName(QStringLiteral("variablesView"));
+    m_view->setModel(m_proxy);
+    m_view->setItemDelegateForColumn(VariablesTableModel::TypeColumn, new VariableTypeDelegate(m_view));
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
+        | QAbstractItemView::AnyKeyPressed | QAbstractItemView::SelectedClicked);
+    m_view->setAlternatingRowColors(true);
+    m_view->setWordWrap(false);
+    m_view->setCornerButtonEnabled(false);
+    m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 8);
+    m_view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    QHeaderView* header = m_view->horizontalHeader();
+    header->setHighlightSections(false);
+    header->setStretchLastSection(true);
+    header->resizeSection(VariablesTableModel::NameColumn, 130);
+    header->resizeSection(VariablesTableModel::TypeColumn, 70);
+    header->resizeSection(VariablesTableModel::DefaultColumn, 70);
+    m_view->installEventFilter(this);
+    m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
+    const auto separator = [this]() {
+        auto* a = new QAction(m_view);
+        a->setSeparator(true);
+        return a;
+    };
+    m_view->addActions({ m_addAction, m_removeAction, m_duplicateAction, separator(), m_copyAction, m_pasteAction,
+        separator(), m_upAction, m_downAction, m_sortAction });
+    layout->addWidget(m_view, 1);
+
+    auto* messageRow = new QWidget(content);
+    messageRow->setObjectName(QStringLiteral("messageRow"));
+    auto* messageLayout = new QHBoxLayout(messageRow);
+    messageLayout->setContentsMargins(6, 4, 6, 4);
+    auto* messageIcon = new QLabel(messageRow);
+    const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize);
+    messageIcon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(iconSize, iconSize));
+    m_messageLabel = new QLabel(messageRow);
+    m_messageLabel->setObjectName(QStringLiteral("messageLabel"));
+    m_messageLabel->setWordWrap(true);
+    m_messageLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    messageLayout->addWidget(messageIcon, 0, Qt::AlignTop);
+    messageLayout->addWidget(m_messageLabel, 1);
+    messageRow->hide();
+    layout->addWidget(messageRow);
+    m_messageTimer = new QTimer(this);
+    m_messageTimer->setSingleShot(true);
+    m_messageTimer->setInterval(10000);
+    connect(m_messageTimer, &QTimer::timeout, messageRow, &QWidget::hide);
+    setWidget(content);
+
+    connect(m_model, &VariablesTableModel::editRefused, this, [this](const QModelIndex& index, const QString& message) {
+        showMessage(message);
+        const QRect cell = m_view->visualRect(m_proxy->mapFromSource(index));
+        QToolTip::showText(m_view->viewport()->mapToGlobal(cell.bottomLeft()), message, m_view);
+    });
+    connect(m_model, &VariablesTableModel::variableRenamed, this, &VariablesDock::onVariableRenamed);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &VariablesDock::onModelReset);
+    connect(m_model, &QAbstractItemModel::dataChanged, this, &VariablesDock::updateActions);
+    connect(
+        m_view->selectionModel(), &QItemSelectionModel::currentRowChanged, this, &VariablesDock::onCurrentRowChanged);
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &VariablesDock::updateActions);
+    connect(m_selection, &Selection::changed, this, &VariablesDock::onSelectionChanged);
+    connect(m_selection, &Selection::focusFieldRequested, this, &VariablesDock::onFocusFieldRequested);
+    onSelectionChanged(m_selection->current());
+    updateActions();
+}
+
+void VariablesDock::createActions()
+{
+    const auto action = [this](const QString& text, const QIcon& icon, const QString& tip) {
+        auto* a = new QAction(icon, text, this);
+        a->setToolTip(tip);
+        return a;
+    };
+    m_addAction = action(tr("Add"), toolIcon(ToolIcon::Add, this), tr("Add a BOOL variable after the current one"));
+    m_removeAction = action(tr("Remove"), toolIcon(ToolIcon::Remove, this), tr("Remove the selected variables"));
+    m_duplicateAction
+        = action(tr("Duplicate"), toolIcon(ToolIcon::Duplicate, this), tr("Duplicate the selected variables"));
+    m_upAction = action(
+        tr("Move Up"), toolIcon(ToolIcon::MoveUp, this), tr("Move the current variable up (declaration order)"));
+    m_downAction = action(
+        tr("Move Down"), toolIcon(ToolIcon::MoveDown, this), tr("Move the current variable down (declaration order)"));
+    m_sortAction = action(
+        tr("Sort by Name"), toolIcon(ToolIcon::SortByName, this), tr("Sort the declarations by name (one undo step)"));
+    m_copyAction = action(tr("Copy"), QIcon(), tr("Copy the selected variables as tab-separated rows"));
+    m_pasteAction = action(tr("Paste"), QIcon(), tr("Paste rows from a spreadsheet: name, type, default and comment"));
+    // Shown in the context menu; the table's event filter handles the keys.
+    m_removeAction->setShortcut(QKeySequence::Delete);
+    m_copyAction->setShortcut(QKeySequence::Copy);
+    m_pasteAction->setShortcut(QKeySequence::Paste);
+    for (QAction* a : { m_removeAction, m_copyAction, m_pasteAction })
+        a->setShortcutContext(Qt::WidgetShortcut);
+
+    connect(m_addAction, &QAction::triggered, this, &VariablesDock::addVariable);
+    connect(m_removeAction, &QAction::triggered, this, &VariablesDock::removeSelected);
+    connect(m_duplicateAction, &QAction::triggered, this, &VariablesDock::duplicateSelected);
+    connect(m_upAction, &QAction::triggered, this, [this]() { moveCurrent(-1); });
+    connect(m_downAction, &QAction::triggered, this, [this]() { moveCurrent(1); });
+    connect(m_sortAction, &QAction::triggered, this, &VariablesDock::sortByName);
+    connect(m_copyAction, &QAction::triggered, this, &VariablesDock::copy);
+    connect(m_pasteAction, &QAction::triggered, this, &VariablesDock::paste);
+}
+
+bool VariablesDock::eventFilter(QObject* watched, QEvent* event)
+{
+    // The table's own keys win over window-wide shortcuts while it has the
+    // focus (a cell editor has the focus to itself while editing).
+    if (watched == m_view) {
+        if (event->type() == QEvent::ShortcutOverride && isClipboardKey(static_cast<QKeyEvent*>(event))) {
+            event->accept();
+            return true;
+        }
+        if (event->type() == QEvent::KeyPress) {
+            auto* key = static_cast<QKeyEvent*>(event);
+            if (key->matches(QKeySequence::Copy)) {
+                copy();
+                return true;
+            }
+            if (key->matches(QKeySequence::Paste)) {
+                paste();
+                return true;
+            }
+            if (key->matches(QKeySequence::Delete)) {
+                removeSelected();
+                return true;
+            }
+        }
+    }
+    return QDockWidget::eventFilter(watched, event);
+}
+
+int VariablesDock::currentRow() const
+{
+    const QModelIndex current = m_proxy->mapToSource(m_view->currentIndex());
+    return current.isValid() ? current.row() : -1;
+}
+
+QList<int> VariablesDock::selectedRows() const
+{
+    QList<int> rows;
+    for (const QModelIndex& index : m_view->selectionModel()->selectedRows())
+        rows << m_proxy->mapToSource(index).row();
+    std::sort(rows.begin(), rows.end());
+    return rows;
+}
+
+void VariablesDock::selectVariable(const QString& name, int column)
+{
+    const int row = m_model->rowOf(name);
+    if (row < 0)
+        return;
+    QModelIndex index = m_proxy->mapFromSource(m_model->index(row, column));
+    if (!index.isValid()) { // filtered out
+        m_filterEdit->clear();
+        index = m_proxy->mapFromSource(m_model->index(row, column));
+    }
+    const bool wasSyncing = m_syncingSelection;
+    m_syncingSelection = true;
+    m_view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    m_view->scrollTo(index);
+    m_syncingSelection = wasSyncing;
+}
+
+void VariablesDock::onSelectionChanged(const ElementRef& element)
+{
+    if (m_syncingSelection)
+        return;
+    if (element.kind == ElementRef::Kind::Variable) {
+        selectVariable(element.id);
+        return;
+    }
+    m_syncingSelection = true;
+    m_view->selectionModel()->clearSelection();
+    m_syncingSelection = false;
+}
+
+void VariablesDock::onFocusFieldRequested(const ElementRef& element, const QString& field)
+{
+    if (element.kind != ElementRef::Kind::Variable || m_model->rowOf(element.id) < 0)
+        return;
+    revealDock(this);
+    const int column = VariablesTableModel::columnOfField(field);
+    selectVariable(element.id, column >= 0 ? column : VariablesTableModel::NameColumn);
+    m_view->setFocus(Qt::OtherFocusReason);
+}
+
+void VariablesDock::onCurrentRowChanged()
+{
+    updateActions();
+    if (m_syncingSelection)
+        return;
+    const int row = currentRow();
+    if (row < 0)
+        return;
+    m_syncingSelection = true;
+    m_selection->select(ElementRef::variable(m_model->variableName(row)));
+    m_syncingSelection = false;
+}
+
+void VariablesDock::onVariableRenamed(const QString& oldName, const QString& newName)
+{
+    const ElementRef& current = m_selection->current();
+    if (current.kind == ElementRef::Kind::Variable && current.id.compare(oldName, Qt::CaseInsensitive) == 0) {
+        m_syncingSelection = true;
+        m_selection->select(ElementRef::variable(newName));
+        m_syncingSelection = false;
+    }
+}
+
+void VariablesDock::onModelReset()
+{
+    const ElementRef& current = m_selection->current();
+    if (current.kind == ElementRef::Kind::Variable)
+        selectVariable(current.id);
+    updateActions();
+}
+
+void VariablesDock::updateActions()
+{
+    const int count = m_model->rowCount();
+    const int row = currentRow();
+    const bool selected = m_view->selectionModel()->hasSelection();
+    m_removeAction->setEnabled(selected);
+    m_duplicateAction->setEnabled(selected);
+    m_copyAction->setEnabled(selected);
+    m_upAction->setEnabled(row > 0);
+    m_downAction->setEnabled(row >= 0 && row < count - 1);
+    const std::vector<core::Variable>& variables = m_document->model().variables();
+    const bool sorted = std::is_sorted(variables.begin(), variables.end(),
+        [](const core::Variable& a, const core::Variable& b) { return lessByName(a.name, b.name); });
+    m_sortAction->setEnabled(!sorted);
+}
+
+void VariablesDock::showMessage(const QString& message)
+{
+    m_messageLabel->setText(message);
+    m_messageLabel->parentWidget()->show();
+    m_messageTimer->start();
+}
+
+QString VariablesDock::freeVariableName() const
+{
+    for (int n = 1;; ++n) {
+        const QString name = tr("Variable%1").arg(n);
+        if (!m_document->model().variable(name.toStdString()))
+            return name;
+    }
+}
+
+void VariablesDock::addVariable()
+{
+    const int row = currentRow();
+    core::Variable variable;
+    variable.name = freeVariableName().toStdString();
+    if (!m_document->push(new AddVariableCommand(*m_document, variable, row >= 0 ? row + 1 : -1)))
+        return;
+    const QString name = fromStd(variable.name);
+    selectVariable(name);
+    m_selection->select(ElementRef::variable(name));
+    m_view->setFocus(Qt::OtherFocusReason);
+    m_view->edit(m_view->currentIndex()); // the default name is only a placeholder
+}
+
+void VariablesDock::removeSelected()
+{
+    const QList<int> rows = selectedRows();
+    if (rows.isEmpty())
+        return;
+    QStringList names;
+    for (int row : rows)
+        names << m_model->variableName(row);
+    QUndoStack* stack = m_document->undoStack();
+    if (names.size() > 1)
+        stack->beginMacro(tr("Remove %n variables", nullptr, static_cast<int>(names.size())));
+    for (const QString& name : std::as_const(names))
+        m_document->push(new RemoveVariableCommand(*m_document, name));
+    if (names.size() > 1)
+        stack->endMacro();
+    // The variable that took the place of the first removed one.
+    const int next = std::min(rows.front(), m_model->rowCount() - 1);
+    if (next >= 0) {
+        const QString name = m_model->variableName(next);
+        selectVariable(name);
+        m_selection->select(ElementRef::variable(name));
+    } else {
+        m_selection->clear();
+    }
+}
+
+void VariablesDock::duplicateSelected()
+{
+    const QList<int> rows = selectedRows();
+    if (rows.isEmpty())
+        return;
+    std::vector<core::Variable> copies;
+    for (int row : rows)
+        copies.push_back(m_document->model().variables()[static_cast<std::size_t>(row)]);
+    const int index = rows.back() + 1;
+    if (!m_document->push(new PasteVariablesCommand(*m_document, std::move(copies), index)))
+        return;
+    const QString name = m_model->variableName(index);
+    selectVariable(name);
+    m_selection->select(ElementRef::variable(name));
+}
+
+void VariablesDock::moveCurrent(int delta)
+{
+    const int row = currentRow();
+    const int target = row + delta;
+    if (row < 0 || target < 0 || target >= m_model->rowCount())
+        return;
+    const QString name = m_model->variableName(row);
+    const int column = m_view->currentIndex().column();
+    if (m_document->push(new MoveVariableCommand(*m_document, name, target)))
+        selectVariable(name, std::max(column, 0));
+}
+
+void VariablesDock::sortByName()
+{
+    std::vector<std::string> names;
+    for (const core::Variable& variable : m_document->model().variables())
+        names.push_back(variable.name);
+    std::stable_sort(names.begin(), names.end(), lessByName);
+    if (std::equal(names.begin(), names.end(), m_document->model().variables().begin(),
+            [](const std::string& name, const core::Variable& variable) { return name == variable.name; }))
+        return;
+    QUndoStack* stack = m_document->undoStack();
+    stack->beginMacro(tr("Sort variables by name"));
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (m_document->model().variableIndex(names[i]) != static_cast<int>(i))
+            m_document->push(new MoveVariableCommand(*m_document, fromStd(names[i]), static_cast<int>(i)));
+    }
+    stack->endMacro();
+    onModelReset(); // the rows stayed; the selected variable moved
+}
+
+QString VariablesDock::copiedText() const
+{
+    std::vector<core::Variable> variables;
+    for (int row : selectedRows())
+        variables.push_back(m_document->model().variables()[static_cast<std::size_t>(row)]);
+    return VariablesTableModel::formatRows(variables);
+}
+
+void VariablesDock::copy()
+{
+    if (m_view->selectionModel()->hasSelection())
+        QGuiApplication::clipboard()->setText(copiedText());
+}
+
+void VariablesDock::paste()
+{
+    pasteVariables(QGuiApplication::clipboard()->text());
+}
+
+bool VariablesDock::pasteVariables(const QString& text)
+{
+    std::vector<core::Variable> variables;
+    QString error;
+    if (!VariablesTableModel::parseRows(text, &variables, &error)) {
+        showMessage(error);
+        return false;
+    }
+    const int row = currentRow();
+    const int index = row >= 0 ? row + 1 : m_model->rowCount();
+    QString failure;
+    const QMetaObject::Connection connection
+        = connect(m_document, &Document::editFailed, this, [&failure](const QString& message) { failure = message; });
+    const bool ok = m_document->push(new PasteVariablesCommand(*m_document, std::move(variables), index));
+    disconnect(connection);
+    if (!ok) {
+        showMessage(failure);
+        return false;
+    }
+    const QString name = m_model->variableName(index);
+    selectVariable(name);
+    m_selection->select(ElementRef::variable(name));
+    return true;
+}
+
+} // namespace editor

@@ -1,0 +1,702 @@
+// The five docks: they show the selection, edit only through undoable
+// commands, follow undo, and talk to each other through the Selection
+// (a problem's double-click focuses the field at fault).
+
+#include "editor/commands/addvariablecommand.h"
+#include "editor/commands/setconditioncommand.h"
+#include "editor/commands/setstephiddencommand.h"
+#include "editor/commands/settokenscommand.h"
+#include "editor/diagnostictext.h"
+#include "editor/docks/conditionedit.h"
+#include "editor/docks/problemsdock.h"
+#include "editor/docks/stepdock.h"
+#include "editor/docks/stpreviewdock.h"
+#include "editor/docks/transitiondock.h"
+#include "editor/docks/variablesdock.h"
+#include "editor/docks/variablestablemodel.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+
+#include <QAbstractItemView>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCompleter>
+#include <QHelpEvent>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTableView>
+#include <QTest>
+#include <QTextBlock>
+#include <QToolButton>
+#include <QToolTip>
+#include <QTreeWidget>
+#include <QUndoStack>
+
+using namespace editor;
+
+namespace {
+
+void declare(Document& document, const std::string& name, core::IecType type = core::IecType::Bool)
+{
+    core::Variable variable;
+    variable.name = name;
+    variable.type = type;
+    QVERIFY(document.push(new AddVariableCommand(document, variable)));
+}
+
+template <typename Widget> Widget* child(QObject* parent, const char* name)
+{
+    auto* widget = parent->findChild<Widget*>(QString::fromLatin1(name));
+    if (!widget)
+        qWarning("no child named %s", name);
+    return widget;
+}
+
+QTreeWidgetItem* problemItem(QTreeWidget* view, const QString& code, const QString& elementText)
+{
+    for (int i = 0; i < view->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = view->topLevelItem(i);
+        if (item->text(ProblemsDock::CodeColumn) == code && item->text(ProblemsDock::ElementColumn) == elementText)
+            return item;
+    }
+    return nullptr;
+}
+
+const QTextEdit::ExtraSelection* underlineAt(const ConditionEdit* edit, int begin, int end)
+{
+    static QList<QTextEdit::ExtraSelection> selections;
+    selections = edit->extraSelections();
+    for (const QTextEdit::ExtraSelection& selection : selections) {
+        if (selection.cursor.selectionStart() == begin && selection.cursor.selectionEnd() == end)
+            return &selection;
+    }
+    return nullptr;
+}
+
+} // namespace
+
+class TestDocks : public QObject {
+    Q_OBJECT
+
+private slots:
+    void stepDockShowsSelectedStep();
+    void stepDockTypeComboPushesUndoableCommand();
+    void stepDockInitialHiddenAndComment();
+    void stepDockListsTransitionsByPriority();
+    void transitionDockUnderlinesUndeclaredVariable();
+    void conditionTypingIsOneUndoStep();
+    void conditionEditCompletesVariableNames();
+    void tokenCheckboxesShowPolarity();
+    void priorityAndNegation();
+    void familyTransitionHeader();
+    void variablesModelRenameRewritesConditions();
+    void variablesModelRefusesDuplicateName();
+    void invalidDefaultIsRedWithTooltip();
+    void pasteAddsVariablesInOneUndoStep();
+    void pasteRejectsBadRows();
+    void sortByNameIsOneUndoStep();
+    void selectingRowSelectsVariable();
+    void doubleClickingProblemSelectsElement();
+    void problemFiltersCountAndHide();
+    void problemFocusesConditionSpan();
+    void stPreviewShowsProgramAndHighlightsStep();
+    void stPreviewDialectIsUndoable();
+    void diagnosticTextTranslatesByCode();
+    void objectNamesForSaveState();
+};
+
+void TestDocks::stepDockShowsSelectedStep()
+{
+    Document document;
+    Selection selection;
+    StepDock dock(&document, &selection);
+    selection.select(ElementRef::step("F1"));
+    QCOMPARE(dock.stepId(), QString("F1"));
+    QCOMPARE(child<QLabel>(&dock, "idLabel")->text(), QString("F1"));
+    QCOMPARE(child<QLabel>(&dock, "nameLabel")->text(), QString("Normal production"));
+    auto* type = child<QComboBox>(&dock, "typeCombo");
+    QCOMPARE(type->currentData().toInt(), static_cast<int>(core::StepType::Macro));
+    QCOMPARE(type->currentText(), QString("Macro-step"));
+
+    selection.select(ElementRef::transition("A1->F4"));
+    QVERIFY(dock.stepId().isEmpty()); // the placeholder page
+    selection.select(ElementRef::step("F4"));
+    QCOMPARE(type->currentData().toInt(), static_cast<int>(core::StepType::Enclosing));
+}
+
+void TestDocks::stepDockTypeComboPushesUndoableCommand()
+{
+    Document document;
+    Selection selection;
+    StepDock dock(&document, &selection);
+    selection.select(ElementRef::step("F1"));
+    auto* type = child<QComboBox>(&dock, "typeCombo");
+    type->setCurrentIndex(type->findData(static_cast<int>(core::StepType::Simple)));
+    QCOMPARE(document.model().step("F1")->type, core::StepType::Simple);
+    QCOMPARE(document.undoStack()->count(), 1);
+
+    document.undoStack()->undo();
+    QCOMPARE(document.model().step("F1")->type, core::StepType::Macro);
+    QCOMPARE(type->currentData().toInt(), static_cast<int>(core::StepType::Macro));
+    document.undoStack()->redo();
+    QCOMPARE(type->currentData().toInt(), static_cast<int>(core::StepType::Simple));
+}
+
+void TestDocks::stepDockInitialHiddenAndComment()
+{
+    Document document;
+    Selection selection;
+    StepDock dock(&document, &selection);
+    auto* initial = child<QCheckBox>(&dock, "initialCheck");
+    selection.select(ElementRef::step("A6"));
+    QVERIFY(initial->isChecked());
+    QVERIFY(!initial->isEnabled()); // there is always one initial step
+    QVERIFY(initial->toolTip().contains("another step"));
+
+    selection.select(ElementRef::step("A1"));
+    QVERIFY(!initial->isChecked());
+    initial->click();
+    QVERIFY(document.model().step("A1")->initial);
+    QVERIFY(!document.model().step("A6")->initial);
+    QVERIFY(!initial->isEnabled());
+    document.undoStack()->undo();
+    QVERIFY(document.model().step("A6")->initial);
+    QVERIFY(!initial->isChecked());
+    QVERIFY(initial->isEnabled());
+
+    auto* hidden = child<QCheckBox>(&dock, "hiddenCheck");
+    hidden->click();
+    QVERIFY(document.model().step("A1")->hidden);
+
+    auto* comment = child<QPlainTextEdit>(&dock, "commentEdit");
+    QTest::keyClicks(comment, "Idle");
+    QCOMPARE(document.model().step("A1")->comment, std::string("Idle"));
+    QCOMPARE(document.undoStack()->count(), 2); // the hiding, then the typing as one step
+    document.undoStack()->undo();
+    QCOMPARE(comment->toPlainText(), QString());
+}
+
+void TestDocks::stepDockListsTransitionsByPriority()
+{
+    Document document;
+    Selection selection;
+    StepDock dock(&document, &selection);
+    selection.select(ElementRef::step("A1"));
+    auto* outgoing = child<QTreeWidget>(&dock, "outgoingList");
+    QCOMPARE(outgoing->topLevelItemCount(), 4);
+    QCOMPARE(outgoing->topLevelItem(0)->text(0), QString("1: → F4"));
+    QCOMPARE(outgoing->topLevelItem(1)->text(0), QString("2: → F2"));
+    QCOMPARE(outgoing->topLevelItem(3)->text(0), QString("4: → F5"));
+
+    // Hiding F2 makes A1->F2 ineffective: no priority, greyed; the rest renumber.
+    QVERIFY(document.push(new SetStepHiddenCommand(document, "F2", true)));
+    QCOMPARE(outgoing->topLevelItem(1)->text(0), QString("–: → F2"));
+    QVERIFY(outgoing->topLevelItem(1)->font(0).italic());
+    QCOMPARE(outgoing->topLevelItem(2)->text(0), QString("2: → F1"));
+
+    // F states list the family transition first.
+    selection.select(ElementRef::step("F1"));
+    QCOMPARE(outgoing->topLevelItem(0)->data(0, Qt::UserRole).toString(), QString("F->D1"));
+    auto* incoming = child<QTreeWidget>(&dock, "incomingList");
+    QCOMPARE(incoming->topLevelItemCount(), static_cast<int>(document.model().incoming("F1").size()));
+
+    // A link selects its transition.
+    outgoing->setCurrentItem(outgoing->topLevelItem(1));
+    emit outgoing->itemClicked(outgoing->topLevelItem(1), 0);
+    QCOMPARE(selection.current(), ElementRef::transition("F1->D1"));
+}
+
+void TestDocks::transitionDockUnderlinesUndeclaredVariable()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Start");
+    TransitionDock transitions(&document, &selection);
+    ProblemsDock problems(&document, &selection);
+    selection.select(ElementRef::transition("A1->F4"));
+    QCOMPARE(transitions.transitionId(), QString("A1->F4"));
+
+    auto* edit = child<ConditionEdit>(&transitions, "conditionEdit");
+    QTest::keyClicks(edit, "Start AND Foo");
+    QCOMPARE(document.model().transition("A1->F4")->condition, std::string("Start AND Foo"));
+
+    QTreeWidgetItem* item = problemItem(problems.view(), "GG203", "A1 → F4");
+    QVERIFY(item);
+    QVERIFY(item->text(ProblemsDock::MessageColumn).contains("'Foo' is not a declared variable"));
+
+    const QTextEdit::ExtraSelection* underline = underlineAt(edit, 10, 13);
+    QVERIFY(underline);
+    QCOMPARE(underline->format.underlineStyle(), QTextCharFormat::SpellCheckUnderline);
+    QCOMPARE(underline->format.underlineColor(), QColor(Qt::red));
+    QCOMPARE(edit->extraSelections().size(), 1);
+    QCOMPARE(edit->problems().front().message, item->text(ProblemsDock::MessageColumn));
+
+    // Hovering the underlined name shows the message.
+    transitions.resize(340, 500);
+    transitions.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&transitions));
+    QTextCursor cursor(edit->document());
+    cursor.setPosition(11);
+    const QPoint inside = edit->cursorRect(cursor).center() + QPoint(2, 0);
+    QHelpEvent hover(QEvent::ToolTip, inside, edit->viewport()->mapToGlobal(inside));
+    QApplication::sendEvent(edit->viewport(), &hover);
+    QCOMPARE(QToolTip::text(), item->text(ProblemsDock::MessageColumn));
+
+    // Declaring the variable removes the problem and the underline.
+    declare(document, "Foo");
+    QVERIFY(!problemItem(problems.view(), "GG203", "A1 → F4"));
+    QVERIFY(edit->extraSelections().isEmpty());
+}
+
+void TestDocks::conditionTypingIsOneUndoStep()
+{
+    Document document;
+    Selection selection;
+    TransitionDock dock(&document, &selection);
+    selection.select(ElementRef::transition("F1->A2"));
+    auto* edit = child<ConditionEdit>(&dock, "conditionEdit");
+    QTest::keyClicks(edit, "TRUE");
+    QTest::keyClick(edit, Qt::Key_Return); // one paragraph: ignored
+    QCOMPARE(edit->text(), QString("TRUE"));
+    QCOMPARE(document.undoStack()->count(), 1);
+    document.undoStack()->undo();
+    QCOMPARE(document.model().transition("F1->A2")->condition, std::string());
+    QCOMPARE(edit->text(), QString());
+
+    // Spans count UTF-8 bytes; the editor counts UTF-16 units.
+    QCOMPARE(ConditionEdit::positionOfByte(QString::fromUtf8("é AND x"), 2), 1);
+    QCOMPARE(ConditionEdit::positionOfByte(QString::fromUtf8("a"), 10), 1);
+}
+
+void TestDocks::conditionEditCompletesVariableNames()
+{
+    Document document;
+    Selection selection;
+    declare(document, "StartButton");
+    declare(document, "Stop");
+    TransitionDock dock(&document, &selection);
+    dock.show();
+    selection.select(ElementRef::transition("A1->F4"));
+    auto* edit = child<ConditionEdit>(&dock, "conditionEdit");
+    QCOMPARE(edit->completer()->caseSensitivity(), Qt::CaseInsensitive);
+    QTest::keyClicks(edit, "NOT sta");
+    QCOMPARE(edit->completer()->completionPrefix(), QString("sta"));
+    QCOMPARE(edit->completer()->currentCompletion(), QString("StartButton"));
+    QVERIFY(edit->completer()->popup()->isVisible());
+    emit edit->completer()->activated(QString("StartButton"));
+    QCOMPARE(edit->text(), QString("NOT StartButton"));
+    QCOMPARE(document.model().transition("A1->F4")->condition, std::string("NOT StartButton"));
+}
+
+void TestDocks::tokenCheckboxesShowPolarity()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Stop");
+    declare(document, "Go");
+    declare(document, "Speed", core::IecType::Int);
+    QVERIFY(document.push(new SetConditionCommand(document, "F1->A2", "NOT Stop AND go AND Speed > 3")));
+    document.undoStack()->clear();
+    TransitionDock dock(&document, &selection);
+    selection.select(ElementRef::transition("F1->A2"));
+
+    auto* stop = child<QCheckBox>(&dock, "tokenCheck_Stop");
+    auto* go = child<QCheckBox>(&dock, "tokenCheck_Go"); // the declared spelling
+    QVERIFY(stop && go);
+    QCOMPARE(stop->text(), QString("Token on Stop (NC)"));
+    QCOMPARE(go->text(), QString("Token on Go (NO)"));
+    QVERIFY(!dock.findChild<QCheckBox*>("tokenCheck_Speed")); // not BOOL
+    QVERIFY(stop->isEnabled());
+    QVERIFY(stop->toolTip().contains("Stop_F1_3_MEM"));
+
+    stop->click();
+    QCOMPARE(document.model().transition("F1->A2")->tokens, std::vector<std::string> { "Stop" });
+    QVERIFY(stop->isChecked());
+    document.undoStack()->undo();
+    QVERIFY(document.model().transition("F1->A2")->tokens.empty());
+    QVERIFY(!stop->isChecked());
+
+    // Out of a simple step tokens do not apply: the boxes are disabled.
+    selection.select(ElementRef::transition("A1->F4"));
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "Go")));
+    auto* simpleGo = child<QCheckBox>(&dock, "tokenCheck_Go");
+    QVERIFY(simpleGo);
+    QVERIFY(!simpleGo->isEnabled());
+    QVERIFY(child<QLabel>(&dock, "tokenHint")->text().contains("simple step"));
+}
+
+void TestDocks::priorityAndNegation()
+{
+    Document document;
+    Selection selection;
+    TransitionDock dock(&document, &selection);
+    selection.select(ElementRef::transition("A1->F5"));
+    auto* priority = child<QSpinBox>(&dock, "prioritySpin");
+    QCOMPARE(priority->value(), 4);
+    QCOMPARE(priority->maximum(), 4);
+    priority->setValue(1);
+    QCOMPARE(document.model().priority("A1->F5"), 1);
+    QCOMPARE(document.model().priority("A1->F4"), 2);
+    document.undoStack()->undo();
+    QCOMPARE(priority->value(), 4);
+
+    auto* negated = child<QCheckBox>(&dock, "negatedCheck");
+    auto* hint = child<QLabel>(&dock, "negatedHint");
+    QVERIFY(hint->text().contains("no effect")); // A1 is a simple step
+    selection.select(ElementRef::transition("F1->A2"));
+    QVERIFY(hint->text().contains("Waits"));
+    negated->click();
+    QVERIFY(document.model().transition("F1->A2")->negated);
+    QVERIFY(hint->text().contains("without waiting"));
+
+    auto* hidden = child<QCheckBox>(&dock, "hiddenCheck");
+    hidden->click();
+    QVERIFY(document.model().transition("F1->A2")->hidden);
+    QVERIFY(!priority->isEnabled()); // no priority when not effective
+    QVERIFY(!priority->toolTip().isEmpty());
+}
+
+void TestDocks::familyTransitionHeader()
+{
+    Document document;
+    Selection selection;
+    TransitionDock dock(&document, &selection);
+    selection.select(ElementRef::transition("F->D1"));
+    auto* title = child<QLabel>(&dock, "titleLabel");
+    QVERIFY(title->text().startsWith("F (family) → "));
+    QVERIFY(title->text().contains(">D1</a>"));
+    emit title->linkActivated("D1");
+    QCOMPARE(selection.current(), ElementRef::step("D1"));
+}
+
+void TestDocks::variablesModelRenameRewritesConditions()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Stop");
+    QVERIFY(document.push(new SetConditionCommand(document, "F1->A2", "NOT Stop")));
+    QVERIFY(document.push(new SetTokensCommand(document, "F1->A2", { "Stop" })));
+    document.undoStack()->clear();
+    VariablesDock dock(&document, &selection);
+    VariablesTableModel* model = dock.tableModel();
+    QCOMPARE(model->rowCount(), 1);
+    const QModelIndex name = model->index(0, VariablesTableModel::NameColumn);
+    QCOMPARE(name.data().toString(), QString("Stop"));
+
+    QVERIFY(model->setData(name, "Halt"));
+    QCOMPARE(document.model().variables().front().name, std::string("Halt"));
+    QCOMPARE(document.model().transition("F1->A2")->condition, std::string("NOT Halt"));
+    QCOMPARE(document.model().transition("F1->A2")->tokens, std::vector<std::string> { "Halt" });
+    QCOMPARE(name.data().toString(), QString("Halt"));
+    QCOMPARE(document.undoStack()->count(), 1);
+    document.undoStack()->undo();
+    QCOMPARE(document.model().transition("F1->A2")->condition, std::string("NOT Stop"));
+    QCOMPARE(name.data().toString(), QString("Stop"));
+
+    // The other columns push their own commands.
+    QVERIFY(model->setData(model->index(0, VariablesTableModel::TypeColumn), "INT"));
+    QCOMPARE(document.model().variables().front().type, core::IecType::Int);
+    QVERIFY(!model->setData(model->index(0, VariablesTableModel::TypeColumn), "STRING"));
+    QVERIFY(model->setData(model->index(0, VariablesTableModel::DefaultColumn), " 5 "));
+    QCOMPARE(document.model().variables().front().defaultValue, std::string("5"));
+    QVERIFY(model->setData(model->index(0, VariablesTableModel::CommentColumn), "Stop button"));
+    QCOMPARE(document.model().variables().front().comment, std::string("Stop button"));
+}
+
+void TestDocks::variablesModelRefusesDuplicateName()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Stop");
+    declare(document, "Go");
+    document.undoStack()->clear();
+    VariablesDock dock(&document, &selection);
+    VariablesTableModel* model = dock.tableModel();
+    QSignalSpy refused(model, &VariablesTableModel::editRefused);
+    QVERIFY(!model->setData(model->index(1, VariablesTableModel::NameColumn), "STOP"));
+    QCOMPARE(refused.count(), 1);
+    const QString message = refused.front().at(1).toString();
+    QVERIFY2(message.contains("already exists"), qPrintable(message));
+    QCOMPARE(child<QLabel>(&dock, "messageLabel")->text(), message);
+    QCOMPARE(document.model().variables()[1].name, std::string("Go"));
+    QCOMPARE(document.undoStack()->count(), 0);
+}
+
+void TestDocks::invalidDefaultIsRedWithTooltip()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Speed", core::IecType::Sint);
+    declare(document, "AND");
+    VariablesDock dock(&document, &selection);
+    VariablesTableModel* model = dock.tableModel();
+    const QModelIndex value = model->index(0, VariablesTableModel::DefaultColumn);
+    QVERIFY(!value.data(Qt::BackgroundRole).isValid());
+    QCOMPARE(value.data().toString(), QString("0")); // the implicit default, greyed
+    QVERIFY(model->setData(value, "300"));
+    QVERIFY(value.data(Qt::BackgroundRole).value<QColor>().isValid());
+    QVERIFY(value.data(Qt::ToolTipRole).toString().contains("out of range"));
+
+    const QModelIndex keyword = model->index(1, VariablesTableModel::NameColumn);
+    QVERIFY(keyword.data(Qt::BackgroundRole).value<QColor>().isValid());
+    QVERIFY(keyword.data(Qt::ToolTipRole).toString().contains("keyword"));
+    QVERIFY(!model->index(0, VariablesTableModel::NameColumn).data(Qt::BackgroundRole).isValid());
+}
+
+void TestDocks::pasteAddsVariablesInOneUndoStep()
+{
+    Document document;
+    Selection selection;
+    VariablesDock dock(&document, &selection);
+    QVERIFY(dock.pasteVariables("A\tBOOL\t\tcomment\nB\tINT\t5\t"));
+    const std::vector<core::Variable>& variables = document.model().variables();
+    QCOMPARE(variables.size(), std::size_t(2));
+    QCOMPARE(variables[0].name, std::string("A"));
+    QCOMPARE(variables[0].type, core::IecType::Bool);
+    QCOMPARE(variables[0].comment, std::string("comment"));
+    QCOMPARE(variables[1].name, std::string("B"));
+    QCOMPARE(variables[1].type, core::IecType::Int);
+    QCOMPARE(variables[1].defaultValue, std::string("5"));
+    QCOMPARE(document.undoStack()->count(), 1);
+    QCOMPARE(dock.tableModel()->rowCount(), 2);
+    QCOMPARE(selection.current(), ElementRef::variable("A"));
+
+    // A header row is skipped; pasting after the current row; a taken name gets a suffix.
+    QVERIFY(dock.pasteVariables("Name\tType\tDefault\tComment\r\nA\tREAL\t1.5\t\r\n"));
+    QCOMPARE(variables.size(), std::size_t(3));
+    QCOMPARE(variables[1].name, std::string("A_2"));
+    QCOMPARE(variables[1].type, core::IecType::Real);
+    QCOMPARE(document.undoStack()->count(), 2);
+
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    QVERIFY(document.model().variables().empty());
+    QCOMPARE(dock.tableModel()->rowCount(), 0);
+
+    // Copy gives the same format back.
+    QVERIFY(dock.pasteVariables("A\tBOOL\t\tcomment\n"));
+    dock.view()->selectAll();
+    QCOMPARE(dock.copiedText(), QString("Name\tType\tDefault\tComment\nA\tBOOL\t\tcomment\n"));
+}
+
+void TestDocks::pasteRejectsBadRows()
+{
+    std::vector<core::Variable> variables;
+    QString error;
+    QVERIFY(!VariablesTableModel::parseRows("A\tBOOL\nB\tSTRING\t\t", &variables, &error));
+    QVERIFY2(error.startsWith("Line 2: 'STRING' is not a supported type"), qPrintable(error));
+    QVERIFY(!VariablesTableModel::parseRows("\tINT\t5", &variables, &error));
+    QVERIFY(error.startsWith("Line 1: the name is empty"));
+    QVERIFY(!VariablesTableModel::parseRows("Name\tType\n\n", &variables, &error));
+    QVERIFY(VariablesTableModel::parseRows("Go\n\nStop\tbool\tTRUE\tthe stop\textra", &variables, &error));
+    QCOMPARE(variables.size(), std::size_t(2));
+    QCOMPARE(variables[0].type, core::IecType::Bool);
+    QCOMPARE(variables[1].comment, std::string("the stop"));
+
+    Document document;
+    Selection selection;
+    VariablesDock dock(&document, &selection);
+    QVERIFY(!dock.pasteVariables("X\tFOO"));
+    QVERIFY(child<QLabel>(&dock, "messageLabel")->text().contains("FOO"));
+    QCOMPARE(document.undoStack()->count(), 0);
+}
+
+void TestDocks::sortByNameIsOneUndoStep()
+{
+    Document document;
+    Selection selection;
+    for (const char* name : { "Stop", "alarm", "Go", "Beta" })
+        declare(document, name);
+    document.undoStack()->clear();
+    VariablesDock dock(&document, &selection);
+    dock.sortByName();
+    QStringList names;
+    for (int row = 0; row < dock.tableModel()->rowCount(); ++row)
+        names << dock.tableModel()->variableName(row);
+    QCOMPARE(names, QStringList({ "alarm", "Beta", "Go", "Stop" }));
+    QCOMPARE(document.undoStack()->count(), 1);
+    document.undoStack()->undo();
+    QCOMPARE(dock.tableModel()->variableName(0), QString("Stop"));
+
+    selection.select(ElementRef::variable("Go"));
+    dock.moveCurrent(-1);
+    QCOMPARE(dock.tableModel()->variableName(1), QString("Go"));
+    dock.removeSelected();
+    QCOMPARE(document.model().variables().size(), std::size_t(3));
+    QVERIFY(!document.model().variable("Go"));
+    dock.addVariable();
+    QVERIFY(document.model().variable("Variable1"));
+    QCOMPARE(selection.current(), ElementRef::variable("Variable1"));
+}
+
+void TestDocks::selectingRowSelectsVariable()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Stop");
+    declare(document, "Go");
+    VariablesDock dock(&document, &selection);
+    QTableView* view = dock.view();
+    view->setCurrentIndex(view->model()->index(1, 0));
+    QCOMPARE(selection.current(), ElementRef::variable("Go"));
+    selection.select(ElementRef::variable("Stop"), "default");
+    QCOMPARE(view->currentIndex().row(), 0);
+    QCOMPARE(view->currentIndex().column(), int(VariablesTableModel::DefaultColumn));
+}
+
+void TestDocks::doubleClickingProblemSelectsElement()
+{
+    Document document;
+    Selection selection;
+    ProblemsDock dock(&document, &selection);
+    dock.resize(800, 400);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    QSignalSpy focus(&selection, &Selection::focusFieldRequested);
+
+    QTreeWidget* view = dock.view();
+    QTreeWidgetItem* item = problemItem(view, "GG202", "A1 → F4");
+    QVERIFY(item);
+    view->scrollToItem(item);
+    const QRect rect = view->visualItemRect(item);
+    // A widget double-click in QTest is the second click only.
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, rect.center());
+    QCOMPARE(selection.current(), ElementRef()); // a single click only selects the row
+    QTest::mouseDClick(view->viewport(), Qt::LeftButton, {}, rect.center());
+    QCOMPARE(selection.current(), ElementRef::transition("A1->F4"));
+    QCOMPARE(focus.count(), 1);
+    QCOMPARE(focus.front().at(1).toString(), QString("condition"));
+}
+
+void TestDocks::problemFiltersCountAndHide()
+{
+    Document document;
+    Selection selection;
+    ProblemsDock dock(&document, &selection);
+    int errors = 0;
+    int warnings = 0;
+    for (const core::Diagnostic& diagnostic : document.diagnostics())
+        (diagnostic.severity == core::Severity::Error ? errors : warnings) += 1;
+    QVERIFY(errors > 1);
+    QCOMPARE(dock.view()->topLevelItemCount(), static_cast<int>(document.diagnostics().size()));
+    auto* errorsButton = child<QToolButton>(&dock, "errorsButton");
+    QCOMPARE(errorsButton->text(), QString("%1 errors").arg(errors));
+    QCOMPARE(child<QToolButton>(&dock, "infoButton")->text(), QString("0 infos"));
+
+    errorsButton->click();
+    int shown = 0;
+    for (int i = 0; i < dock.view()->topLevelItemCount(); ++i)
+        shown += dock.view()->topLevelItem(i)->isHidden() ? 0 : 1;
+    QCOMPARE(shown, warnings);
+
+    // The counts follow the model.
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "TRUE")));
+    QCOMPARE(errorsButton->text(), QString("%1 errors").arg(errors - 1));
+}
+
+void TestDocks::problemFocusesConditionSpan()
+{
+    Document document;
+    Selection selection;
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "TRUE AND Missing")));
+    ProblemsDock problems(&document, &selection);
+    TransitionDock transitions(&document, &selection);
+    QTreeWidgetItem* item = problemItem(problems.view(), "GG203", "A1 → F4");
+    QVERIFY(item);
+    problems.activate(item);
+    QCOMPARE(transitions.transitionId(), QString("A1->F4"));
+    const QTextCursor cursor = child<ConditionEdit>(&transitions, "conditionEdit")->textCursor();
+    QCOMPARE(cursor.selectionStart(), 9);
+    QCOMPARE(cursor.selectionEnd(), 16);
+}
+
+void TestDocks::stPreviewShowsProgramAndHighlightsStep()
+{
+    Document document;
+    Selection selection;
+    StPreviewDock dock(&document, &selection);
+    dock.resize(700, 500);
+    dock.show();
+    QPlainTextEdit* code = dock.editor();
+    QTRY_VERIFY(code->toPlainText().contains("CASE State OF"));
+    QVERIFY(code->isReadOnly());
+
+    selection.select(ElementRef::step("A1"));
+    const core::StPreview preview = core::previewGemmaProgram(document.model(), core::Dialect::Iec);
+    const core::LineRange range = preview.ranges.at("A1");
+    QCOMPARE(dock.highlightedRanges(), std::vector<core::LineRange> { range });
+    const QList<QTextEdit::ExtraSelection> selections = code->extraSelections();
+    QCOMPARE(selections.size(), range.last - range.first + 1);
+    QCOMPARE(selections.front().cursor.block().blockNumber(), range.first - 1);
+    QCOMPARE(selections.back().cursor.block().blockNumber(), range.last - 1);
+    QVERIFY(selections.front().cursor.block().text().contains("A1"));
+
+    // The family transition is highlighted in every F branch.
+    selection.select(ElementRef::transition("F->D1"));
+    QVERIFY(dock.highlightedRanges().size() > 1);
+
+    // Live: a condition edit shows up.
+    declare(document, "Ready_To_Go_42");
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "Ready_To_Go_42")));
+    QTRY_VERIFY(code->toPlainText().contains("Ready_To_Go_42"));
+    selection.clear();
+    QVERIFY(code->extraSelections().isEmpty());
+}
+
+void TestDocks::stPreviewDialectIsUndoable()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Start");
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "Start")));
+    StPreviewDock dock(&document, &selection);
+    dock.show();
+    auto* dialect = child<QComboBox>(&dock, "dialectCombo");
+    QCOMPARE(dialect->currentData().toInt(), static_cast<int>(core::Dialect::Iec));
+    dialect->setCurrentIndex(dialect->findData(static_cast<int>(core::Dialect::Codesys)));
+    QCOMPARE(document.model().settings().dialect, core::Dialect::Codesys);
+    QTRY_VERIFY(dock.editor()->toPlainText().contains("GVL.Start"));
+    document.undoStack()->undo();
+    QCOMPARE(dialect->currentData().toInt(), static_cast<int>(core::Dialect::Iec));
+    QTRY_VERIFY(!dock.editor()->toPlainText().contains("GVL.Start"));
+}
+
+void TestDocks::diagnosticTextTranslatesByCode()
+{
+    core::Diagnostic undeclared;
+    undeclared.code = "GG203";
+    undeclared.message = "in the condition of A1->F4: 'Foo' is not a declared variable";
+    undeclared.arguments = { "A1->F4", "Foo", "'Foo' is not a declared variable" };
+    QCOMPARE(diagnosticText(undeclared), QString("In the condition of A1->F4: 'Foo' is not a declared variable."));
+
+    // Arguments the code does not promise: the English message, capitalised.
+    undeclared.arguments = { "A1->F4" };
+    QCOMPARE(diagnosticText(undeclared), QString("In the condition of A1->F4: 'Foo' is not a declared variable"));
+
+    core::Diagnostic unknown;
+    unknown.code = "GG999";
+    unknown.message = "something new";
+    QCOMPARE(diagnosticText(unknown), QString("Something new"));
+
+    // Every diagnostic the checks produce has a text.
+    Document document;
+    for (const core::Diagnostic& diagnostic : document.diagnostics())
+        QVERIFY(!diagnosticText(diagnostic).isEmpty());
+}
+
+void TestDocks::objectNamesForSaveState()
+{
+    Document document;
+    Selection selection;
+    QCOMPARE(StepDock(&document, &selection).objectName(), QString("stepDock"));
+    QCOMPARE(TransitionDock(&document, &selection).objectName(), QString("transitionDock"));
+    QCOMPARE(VariablesDock(&document, &selection).objectName(), QString("variablesDock"));
+    QCOMPARE(ProblemsDock(&document, &selection).objectName(), QString("problemsDock"));
+    QCOMPARE(StPreviewDock(&document, &selection).objectName(), QString("stPreviewDock"));
+}
+
+QTEST_MAIN(TestDocks)
+#include "test_docks.moc"
