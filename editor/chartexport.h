@@ -1,0 +1,47 @@
+#pragma once
+
+#include <QCoreApplication>
+#include <QString>
+
+class QPrinter;
+
+namespace editor {
+
+class ChartScene;
+
+// Pictures of the chart as the window shows it (hidden elements included
+// when they are shown), on white paper, without the selection highlight.
+// Each writer returns false with a message for the user when the file
+// cannot be written; a failed write leaves no partial file behind.
+class ChartExport {
+    Q_DECLARE_TR_FUNCTIONS(ChartExport)
+
+public:
+    enum class Format { Svg, Png, Pdf };
+
+    explicit ChartExport(ChartScene& scene);
+
+    // From the file name's extension (".svg", ".png", ".pdf"); false when
+    // it is none of those.
+    static bool formatForPath(const QString& path, Format* format);
+
+    bool write(const QString& path, Format format, QString* errorMessage) const;
+    bool writeSvg(const QString& path, QString* errorMessage) const;
+    // Rendered at `scale` device pixels per scene unit (2 gives a sharp A4 print).
+    bool writePng(const QString& path, QString* errorMessage, double scale = 2.0) const;
+    bool writePdf(const QString& path, QString* errorMessage) const;
+
+    // Fitted to the printable area of the printer's page (the caller sets
+    // the orientation: landscape suits the chart). False when the printer
+    // cannot start.
+    bool print(QPrinter& printer) const;
+
+    // The title written into SVG and PDF metadata.
+    void setTitle(const QString& title) { m_title = title; }
+
+private:
+    ChartScene& m_scene;
+    QString m_title;
+};
+
+} // namespace editor

@@ -1,0 +1,288 @@
+#include "editor/exportactions.h"
+
+#include "editor/chart/chartscene.h"
+#include "editor/chartexport.h"
+#include "editor/diagnostictext.h"
+#include "editor/document.h"
+#include "editor/exportoptionsdialog.h"
+#include "editor/settings.h"
+
+#include "core/fileio.h"
+#include "core/modelfiles.h"
+#include "core/plcopenwriter.h"
+#include "core/stexport.h"
+#include "core/stgenerator.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QPrintDialog>
+#include <QPrinter>
+#include <QPushButton>
+#include <QRegularExpression>
+
+#include <algorithm>
+
+namespace editor {
+
+namespace {
+
+// How many errors the confirmation lists before "and N more".
+constexpr int kListedErrors = 5;
+
+std::string localPath(const QString& path)
+{
+    return QFile::encodeName(path).toStdString();
+}
+
+bool report(const core::Status& status, QString* errorMessage)
+{
+    if (!status && errorMessage)
+        *errorMessage = QString::fromStdString(status.message);
+    return status.ok;
+}
+
+// The model name as a file name: characters file systems refuse become '_'.
+QString baseFileName(const core::Model& model)
+{
+    QString name = QString::fromStdString(model.settings().name).trimmed();
+    name.replace(QRegularExpression(QStringLiteral(R"([\\/:*?"<>|\x00-\x1f])")), QStringLiteral("_"));
+    return name.isEmpty() ? QStringLiteral("GEMMA") : name;
+}
+
+QString withSuffix(QString path, const QString& suffix)
+{
+    if (QFileInfo(path).suffix().isEmpty())
+        path += '.' + suffix;
+    return path;
+}
+
+} // namespace
+
+ExportActions::ExportActions(Document& document, ChartScene& scene, Settings& settings, QWidget* window)
+    : QObject(window)
+    , m_document(document)
+    , m_scene(scene)
+    , m_settings(settings)
+    , m_window(window)
+    , m_plcOpen(new QAction(this))
+    , m_structuredText(new QAction(this))
+    , m_ggGenerator(new QAction(this))
+    , m_chart(new QAction(this))
+    , m_print(new QAction(this))
+{
+    m_plcOpen->setObjectName("exportPlcOpenAction");
+    m_structuredText->setObjectName("exportStructuredTextAction");
+    m_ggGenerator->setObjectName("exportGGGeneratorAction");
+    m_chart->setObjectName("exportChartAction");
+    m_print->setObjectName("printAction");
+    m_plcOpen->setShortcut(Qt::CTRL | Qt::Key_E);
+    m_print->setShortcut(QKeySequence::Print);
+    connect(m_plcOpen, &QAction::triggered, this, &ExportActions::exportPlcOpen);
+    connect(m_structuredText, &QAction::triggered, this, &ExportActions::exportStructuredText);
+    connect(m_ggGenerator, &QAction::triggered, this, &ExportActions::exportGGGenerator);
+    connect(m_chart, &QAction::triggered, this, &ExportActions::exportChart);
+    connect(m_print, &QAction::triggered, this, &ExportActions::print);
+    retranslate();
+}
+
+void ExportActions::retranslate()
+{
+    m_plcOpen->setText(tr("Export &PLCopen XML…"));
+    m_plcOpen->setStatusTip(tr("Write the PLC program as PLCopen XML, to import into a PLC programming tool"));
+    m_structuredText->setText(tr("Export &Structured Text…"));
+    m_structuredText->setStatusTip(tr("Write the PLC program as IEC 61131-3 Structured Text files"));
+    m_ggGenerator->setText(tr("Export &GG-Generator JSON…"));
+    m_ggGenerator->setStatusTip(tr("Save the model in the format of the GG-Generator web tool"));
+    m_chart->setText(tr("Export &Chart…"));
+    m_chart->setStatusTip(tr("Save the chart as an SVG, PNG or PDF picture"));
+    m_print->setText(tr("&Print…"));
+    m_print->setStatusTip(tr("Print the chart"));
+}
+
+bool ExportActions::writePlcOpen(const QString& path, core::Dialect dialect, QString* errorMessage) const
+{
+    const core::Model& model = m_document.model();
+    const std::string xml = core::writePlcOpenXml(core::buildPlcProject(model, dialect), model);
+    return report(core::writeFileAtomically(localPath(path), xml), errorMessage);
+}
+
+bool ExportActions::writeStFolder(const QString& folder, core::Dialect dialect, QString* errorMessage) const
+{
+    return report(core::exportStFolder(core::buildPlcProject(m_document.model(), dialect), localPath(folder)),
+                  errorMessage);
+}
+
+bool ExportActions::writeStSingleFile(const QString& path, QString* errorMessage) const
+{
+    return report(core::exportStSingleFile(m_document.model(), localPath(path)), errorMessage);
+}
+
+bool ExportActions::writeGGGenerator(const QString& path, QString* errorMessage) const
+{
+    return report(core::saveModelFile(m_document.model(), localPath(path), core::ModelFormat::GGGenerator),
+                  errorMessage);
+}
+
+bool ExportActions::confirmErrors(QWidget* parent, const std::vector<core::Diagnostic>& diagnostics)
+{
+    std::vector<const core::Diagnostic*> errors;
+    for (const core::Diagnostic& diagnostic : diagnostics) {
+        if (diagnostic.severity == core::Severity::Error)
+            errors.push_back(&diagnostic);
+    }
+    if (errors.empty())
+        return true;
+
+    QStringList lines;
+    const int listed = std::min<int>(kListedErrors, int(errors.size()));
+    for (int i = 0; i < listed; ++i) {
+        lines << QStringLiteral("• ") + diagnosticText(*errors[i]); // the messages name their element
+    }
+    if (int(errors.size()) > listed)
+        lines << tr("… and %n more", nullptr, int(errors.size()) - listed);
+
+    QMessageBox box(QMessageBox::Warning, tr("Export a Model with Errors"),
+                    tr("The model has %n error(s). The generated code marks each one with a comment, "
+                       "but it may not compile or may not behave as intended.",
+                       nullptr, int(errors.size())),
+                    QMessageBox::Cancel, parent);
+    box.setInformativeText(lines.join('\n'));
+    QPushButton* exportButton = box.addButton(tr("&Export Anyway"), QMessageBox::AcceptRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    return box.clickedButton() == exportButton;
+}
+
+void ExportActions::exportPlcOpen()
+{
+    if (!confirmErrors(m_window, m_document.diagnostics()))
+        return;
+    ExportOptionsDialog options(ExportOptionsDialog::Kind::PlcOpen, lastDialect(), false, m_window);
+    if (options.exec() != QDialog::Accepted)
+        return;
+    m_settings.setLastExportDialect(options.dialect());
+    const QString path = askSavePath(tr("Export PLCopen XML"), QStringLiteral("xml"), tr("PLCopen XML (*.xml)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    const bool ok = writePlcOpen(path, options.dialect(), &error);
+    reportResult(ok, path, error);
+}
+
+void ExportActions::exportStructuredText()
+{
+    if (!confirmErrors(m_window, m_document.diagnostics()))
+        return;
+    ExportOptionsDialog options(ExportOptionsDialog::Kind::StructuredText, lastDialect(),
+                                m_settings.lastStExportSingleFile(), m_window);
+    if (options.exec() != QDialog::Accepted)
+        return;
+    m_settings.setLastStExportSingleFile(options.singleFile());
+    if (!options.singleFile())
+        m_settings.setLastExportDialect(options.dialect());
+
+    QString path;
+    QString error;
+    bool ok = false;
+    if (options.singleFile()) {
+        path = askSavePath(tr("Export Structured Text"), QStringLiteral("st"), tr("Structured Text (*.st)"));
+        if (path.isEmpty())
+            return;
+        ok = writeStSingleFile(path, &error);
+    } else {
+        path = QFileDialog::getExistingDirectory(m_window, tr("Export Structured Text to a Folder"),
+                                                 m_settings.lastExportDirectory());
+        if (path.isEmpty())
+            return;
+        m_settings.setLastExportDirectory(path);
+        ok = writeStFolder(path, options.dialect(), &error);
+    }
+    reportResult(ok, path, error);
+}
+
+void ExportActions::exportGGGenerator()
+{
+    const QString path = askSavePath(tr("Export GG-Generator JSON"), QStringLiteral("json"),
+                                     tr("GG-Generator JSON (*.json)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    const bool ok = writeGGGenerator(path, &error);
+    reportResult(ok, path, error);
+}
+
+void ExportActions::exportChart()
+{
+    const QString svg = tr("SVG picture (*.svg)");
+    const QString png = tr("PNG image (*.png)");
+    const QString pdf = tr("PDF document (*.pdf)");
+    QString filter = svg;
+    QString path = askSavePath(tr("Export Chart"), QString(), QStringList{svg, png, pdf}.join(QStringLiteral(";;")),
+                               &filter);
+    if (path.isEmpty())
+        return;
+    ChartExport::Format format = ChartExport::Format::Svg;
+    if (!ChartExport::formatForPath(path, &format)) {
+        // No known extension typed: the chosen filter decides.
+        const QString suffix = filter == png ? QStringLiteral("png") : filter == pdf ? QStringLiteral("pdf")
+                                                                                     : QStringLiteral("svg");
+        path += '.' + suffix;
+        ChartExport::formatForPath(path, &format);
+    }
+    ChartExport chart(m_scene);
+    chart.setTitle(QString::fromStdString(m_document.model().settings().name));
+    QString error;
+    const bool ok = chart.write(path, format, &error);
+    reportResult(ok, path, error);
+}
+
+void ExportActions::print()
+{
+    QPrinter printer(QPrinter::HighResolution);
+    printer.setPageOrientation(QPageLayout::Landscape);
+    QPrintDialog dialog(&printer, m_window);
+    dialog.setWindowTitle(tr("Print Chart"));
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    ChartExport chart(m_scene);
+    chart.setTitle(QString::fromStdString(m_document.model().settings().name));
+    if (!chart.print(printer))
+        QMessageBox::critical(m_window, tr("Print Chart"), tr("The printer could not be started."));
+}
+
+core::Dialect ExportActions::lastDialect() const
+{
+    return m_settings.lastExportDialect(m_document.model().settings().dialect);
+}
+
+QString ExportActions::askSavePath(const QString& title, const QString& suffix, const QString& filters,
+                                   QString* selectedFilter)
+{
+    QString name = baseFileName(m_document.model());
+    if (!suffix.isEmpty())
+        name += '.' + suffix;
+    const QString start = QDir(m_settings.lastExportDirectory()).filePath(name);
+    QString path = QFileDialog::getSaveFileName(m_window, title, start, filters, selectedFilter);
+    if (path.isEmpty())
+        return {};
+    if (!suffix.isEmpty())
+        path = withSuffix(path, suffix);
+    m_settings.setLastExportDirectory(QFileInfo(path).absolutePath());
+    return path;
+}
+
+void ExportActions::reportResult(bool ok, const QString& path, const QString& errorMessage)
+{
+    const QString shown = QDir::toNativeSeparators(path);
+    if (ok) {
+        emit exported(tr("Exported to %1").arg(shown));
+        return;
+    }
+    QMessageBox::critical(m_window, tr("Export Failed"), tr("Could not write %1.").arg(shown) + "\n\n" + errorMessage);
+}
+
+} // namespace editor

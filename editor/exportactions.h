@@ -1,0 +1,79 @@
+#pragma once
+
+#include "core/diagnostic.h"
+#include "core/model.h"
+
+#include <QObject>
+#include <QString>
+
+#include <vector>
+
+class QAction;
+class QWidget;
+
+namespace editor {
+
+class ChartScene;
+class Document;
+class Settings;
+
+// The exports of the File menu: PLCopen XML, Structured Text, GG-Generator
+// JSON, pictures of the chart and printing. Each action asks what it needs
+// (options, file name), asks before exporting a model with errors, writes
+// the file and reports. The write* functions do the writing alone, for the
+// window's own callers and the tests.
+class ExportActions : public QObject {
+    Q_OBJECT
+
+public:
+    ExportActions(Document& document, ChartScene& scene, Settings& settings, QWidget* window);
+
+    QAction* plcOpenAction() const { return m_plcOpen; }
+    QAction* structuredTextAction() const { return m_structuredText; }
+    QAction* ggGeneratorAction() const { return m_ggGenerator; }
+    QAction* chartAction() const { return m_chart; }
+    QAction* printAction() const { return m_print; }
+
+    // False with a message for the user when the file cannot be written.
+    bool writePlcOpen(const QString& path, core::Dialect dialect, QString* errorMessage) const;
+    bool writeStFolder(const QString& folder, core::Dialect dialect, QString* errorMessage) const;
+    bool writeStSingleFile(const QString& path, QString* errorMessage) const;
+    bool writeGGGenerator(const QString& path, QString* errorMessage) const;
+
+    void retranslate();
+
+    // The question asked before exporting code from a model with errors:
+    // their count and the first few. True when there are none or the user
+    // goes on.
+    static bool confirmErrors(QWidget* parent, const std::vector<core::Diagnostic>& diagnostics);
+
+signals:
+    // A short report for the status bar ("Exported to ...").
+    void exported(const QString& message);
+
+private:
+    void exportPlcOpen();
+    void exportStructuredText();
+    void exportGGGenerator();
+    void exportChart();
+    void print();
+
+    // The dialect of the last export, or the model's before the first.
+    core::Dialect lastDialect() const;
+    // The file dialog for a new file, starting in the last export folder
+    // with a name made from the model name; empty when cancelled.
+    QString askSavePath(const QString& title, const QString& suffix, const QString& filters, QString* selectedFilter = nullptr);
+    void reportResult(bool ok, const QString& path, const QString& errorMessage);
+
+    Document& m_document;
+    ChartScene& m_scene;
+    Settings& m_settings;
+    QWidget* m_window;
+    QAction* m_plcOpen;
+    QAction* m_structuredText;
+    QAction* m_ggGenerator;
+    QAction* m_chart;
+    QAction* m_print;
+};
+
+} // namespace editor

@@ -1,0 +1,582 @@
+#include "editor/mainwindow.h"
+
+#include "editor/autosave.h"
+#include "editor/chart/chartscene.h"
+#include "editor/chart/chartview.h"
+#include "editor/commands/resetmodelcommand.h"
+#include "editor/docks/problemsdock.h"
+#include "editor/docks/stepdock.h"
+#include "editor/docks/stpreviewdock.h"
+#include "editor/docks/transitiondock.h"
+#include "editor/docks/variablesdock.h"
+#include "editor/document.h"
+#include "editor/exportactions.h"
+#include "editor/languages.h"
+#include "editor/modelsettingsdialog.h"
+#include "editor/recentfiles.h"
+#include "editor/recoveryprompt.h"
+#include "editor/selection.h"
+#include "editor/settings.h"
+#include "editor/statusindicators.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScreen>
+#include <QStatusBar>
+#include <QUndoStack>
+
+#include <algorithm>
+
+namespace editor {
+
+namespace {
+
+constexpr int kStatusMessageMs = 6000;
+
+// The window's first size: most of the screen, but no wider than a chart
+// and its docks need.
+QSize defaultWindowSize(const QWidget* window)
+{
+    const QScreen* screen = window->screen() ? window->screen() : QGuiApplication::primaryScreen();
+    const QSize available = screen ? screen->availableSize() : QSize(1366, 768);
+    return QSize(std::min(available.width(), 1600), std::min(available.height(), 1000));
+}
+
+} // namespace
+
+MainWindow::MainWindow(Translators& translators, QWidget* parent)
+    : QMainWindow(parent)
+    , m_translators(translators)
+    , m_settings(std::make_unique<Settings>())
+    , m_document(new Document(this))
+    , m_selection(new Selection(this))
+    , m_autosave(new Autosave(*m_document, m_document))
+    , m_scene(new ChartScene(m_document, m_selection, this))
+    , m_view(new ChartView(m_scene, this))
+{
+    setObjectName("mainWindow");
+    setWindowIcon(QIcon(QStringLiteral(":/icons/ggstudio.svg")));
+    m_view->setObjectName("chartView");
+    setCentralWidget(m_view);
+
+    // The right column runs the full height: the property docks are tall forms.
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+    setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
+    createDocks();
+    createActions();
+    createMenus();
+    createStatusBar();
+    retranslate();
+
+    connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &Document::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &Document::editFailed, this, &MainWindow::showEditFailure);
+    connect(m_autosave, &Autosave::writeFailed, this, [this](const QString& message) {
+        statusBar()->showMessage(tr("Autosave failed: %1").arg(message), kStatusMessageMs);
+    });
+
+    newModel();
+    m_showHiddenAction->setChecked(m_settings->showHidden());
+    restoreLayout();
+}
+
+MainWindow::~MainWindow()
+{
+    // Everything that shows the document goes before it, and the window
+    // hears none of the signals the document sends as it goes.
+    m_document->undoStack()->disconnect(this);
+    m_document->disconnect(this);
+    delete m_problemCounter;
+    deleteDocks();
+    delete m_view;
+    delete m_scene;
+}
+
+QList<QDockWidget*> MainWindow::docks() const
+{
+    return {m_stepDock, m_transitionDock, m_variablesDock, m_problemsDock, m_stPreviewDock};
+}
+
+void MainWindow::createDocks()
+{
+    m_stepDock = new StepDock(m_document, m_selection, this);
+    m_transitionDock = new TransitionDock(m_document, m_selection, this);
+    m_variablesDock = new VariablesDock(m_document, m_selection, this);
+    m_problemsDock = new ProblemsDock(m_document, m_selection, this);
+    m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
+
+    addDockWidget(Qt::RightDockWidgetArea, m_stepDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_transitionDock);
+    tabifyDockWidget(m_stepDock, m_transitionDock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_variablesDock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_problemsDock);
+    addDockWidget(Qt::BottomDockWidgetArea, m_stPreviewDock);
+    tabifyDockWidget(m_variablesDock, m_problemsDock);
+    tabifyDockWidget(m_problemsDock, m_stPreviewDock);
+    m_stepDock->raise();
+    m_variablesDock->raise();
+}
+
+void MainWindow::deleteDocks()
+{
+    for (QDockWidget* dock : docks()) {
+        removeDockWidget(dock);
+        delete dock;
+    }
+    m_stepDock = nullptr;
+    m_transitionDock = nullptr;
+    m_variablesDock = nullptr;
+    m_problemsDock = nullptr;
+    m_stPreviewDock = nullptr;
+}
+
+// The docks set their texts when they are built, so a new language builds
+// them again, in the place and size the user gave them. Only what they show
+// of the document and the selection matters, and that comes back.
+void MainWindow::rebuildDocks()
+{
+    m_docksRebuildPending = false;
+    const QByteArray state = saveState();
+    for (QDockWidget* dock : docks())
+        m_viewMenu->removeAction(dock->toggleViewAction());
+    deleteDocks();
+    createDocks();
+    restoreState(state);
+    m_viewMenu->insertActions(m_dockActionsEnd, toggleViewActions());
+    // The chart paints its frame titles in the current language.
+    m_scene->update();
+}
+
+QList<QAction*> MainWindow::toggleViewActions() const
+{
+    QList<QAction*> actions;
+    for (QDockWidget* dock : docks())
+        actions << dock->toggleViewAction();
+    return actions;
+}
+
+void MainWindow::createActions()
+{
+    auto action = [this](const char* name, auto slot, const QKeySequence& shortcut = {}) {
+        auto* a = new QAction(this);
+        a->setObjectName(QLatin1String(name));
+        a->setShortcut(shortcut);
+        connect(a, &QAction::triggered, this, slot);
+        return a;
+    };
+    m_newAction = action("newAction", &MainWindow::newModel, QKeySequence::New);
+    m_openAction = action("openAction", &MainWindow::open, QKeySequence::Open);
+    m_saveAction = action("saveAction", &MainWindow::save, QKeySequence::Save);
+    m_saveAsAction = action("saveAsAction", &MainWindow::saveAs, QKeySequence::SaveAs);
+    m_resetAction = action("resetAction", &MainWindow::resetToTemplate);
+    m_quitAction = action("quitAction", &QWidget::close, QKeySequence::Quit);
+    m_quitAction->setMenuRole(QAction::QuitRole);
+
+    QUndoStack* stack = m_document->undoStack();
+    m_undoAction = action("undoAction", [stack] { stack->undo(); }, QKeySequence::Undo);
+    m_redoAction = action("redoAction", [stack] { stack->redo(); }, QKeySequence::Redo);
+    m_undoAction->setEnabled(stack->canUndo());
+    m_redoAction->setEnabled(stack->canRedo());
+    connect(stack, &QUndoStack::canUndoChanged, m_undoAction, &QAction::setEnabled);
+    connect(stack, &QUndoStack::canRedoChanged, m_redoAction, &QAction::setEnabled);
+    connect(stack, &QUndoStack::undoTextChanged, this, &MainWindow::retranslate);
+    connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::retranslate);
+    m_modelSettingsAction = action("modelSettingsAction", &MainWindow::editModelSettings);
+
+    m_showHiddenAction = new QAction(this);
+    m_showHiddenAction->setObjectName("showHiddenAction");
+    m_showHiddenAction->setShortcut(Qt::CTRL | Qt::Key_H);
+    m_showHiddenAction->setCheckable(true);
+    connect(m_showHiddenAction, &QAction::toggled, this, &MainWindow::setShowHidden);
+    m_fitAction = action("fitAction", [this] { m_view->zoomToFit(); }, Qt::CTRL | Qt::Key_0);
+    m_actualSizeAction = action("actualSizeAction", [this] { m_view->zoomToActualSize(); }, Qt::CTRL | Qt::Key_1);
+    m_zoomInAction = action("zoomInAction", [this] { m_view->zoomIn(); }, QKeySequence::ZoomIn);
+    m_zoomOutAction = action("zoomOutAction", [this] { m_view->zoomOut(); }, QKeySequence::ZoomOut);
+
+    m_aboutAction = action("aboutAction", &MainWindow::about);
+    m_aboutAction->setMenuRole(QAction::AboutRole);
+    m_aboutQtAction = action("aboutQtAction", &QApplication::aboutQt);
+    m_aboutQtAction->setMenuRole(QAction::AboutQtRole);
+
+    m_languageGroup = new QActionGroup(this);
+    m_languageGroup->setExclusive(true);
+    for (const UiLanguage& language : availableLanguages()) {
+        QAction* a = m_languageGroup->addAction(language.nativeName);
+        a->setObjectName(QStringLiteral("language_") + language.code);
+        a->setData(language.code);
+        a->setCheckable(true);
+        a->setChecked(language.code == m_translators.language());
+        connect(a, &QAction::triggered, this, [this, code = language.code] { setLanguage(code); });
+    }
+
+    m_recentFiles = new RecentFiles(*m_settings, this);
+    connect(m_recentFiles, &RecentFiles::openRequested, this, &MainWindow::openFile);
+    m_exportActions = new ExportActions(*m_document, *m_scene, *m_settings, this);
+    connect(m_exportActions, &ExportActions::exported, this,
+            [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
+}
+
+void MainWindow::createMenus()
+{
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->setObjectName("fileMenu");
+    m_fileMenu->addActions({m_newAction, m_openAction});
+    m_fileMenu->addMenu(m_recentFiles->menu());
+    m_fileMenu->addActions({m_saveAction, m_saveAsAction});
+    m_fileMenu->addSeparator();
+    m_fileMenu->addActions({m_exportActions->plcOpenAction(), m_exportActions->structuredTextAction(),
+                            m_exportActions->ggGeneratorAction(), m_exportActions->chartAction()});
+    m_fileMenu->addAction(m_exportActions->printAction());
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_resetAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_quitAction);
+
+    m_editMenu = menuBar()->addMenu(QString());
+    m_editMenu->setObjectName("editMenu");
+    m_editMenu->addActions({m_undoAction, m_redoAction});
+    m_editMenu->addSeparator();
+    m_editMenu->addAction(m_modelSettingsAction);
+
+    m_viewMenu = menuBar()->addMenu(QString());
+    m_viewMenu->setObjectName("viewMenu");
+    m_viewMenu->addAction(m_showHiddenAction);
+    m_viewMenu->addSeparator();
+    m_viewMenu->addActions({m_fitAction, m_actualSizeAction, m_zoomInAction, m_zoomOutAction});
+    m_viewMenu->addSeparator();
+    m_viewMenu->addActions(toggleViewActions());
+    m_dockActionsEnd = m_viewMenu->addSeparator();
+    m_languageMenu = m_viewMenu->addMenu(QString());
+    m_languageMenu->setObjectName("languageMenu");
+    m_languageMenu->addActions(m_languageGroup->actions());
+
+    m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->setObjectName("helpMenu");
+    m_helpMenu->addActions({m_aboutAction, m_aboutQtAction});
+}
+
+void MainWindow::createStatusBar()
+{
+    m_problemCounter = new ProblemCounter(*m_document, this);
+    connect(m_problemCounter, &ProblemCounter::clicked, this, [this] {
+        m_problemsDock->show();
+        m_problemsDock->raise();
+    });
+    m_zoomIndicator = new ZoomIndicator(this);
+    m_zoomIndicator->setZoom(m_view->zoom());
+    connect(m_view, &ChartView::zoomChanged, m_zoomIndicator, &ZoomIndicator::setZoom);
+    statusBar()->addPermanentWidget(m_problemCounter);
+    statusBar()->addPermanentWidget(m_zoomIndicator);
+}
+
+// Docks sized for the screen: at 1366 x 768 the chart keeps about two
+// thirds of the width and of the height.
+void MainWindow::applyDefaultLayout()
+{
+    const QSize window = size();
+    const int rightWidth = std::clamp(window.width() * 26 / 100, 320, 440);
+    const int bottomHeight = std::clamp(window.height() * 28 / 100, 190, 320);
+    resizeDocks({m_stepDock}, {rightWidth}, Qt::Horizontal);
+    resizeDocks({m_variablesDock}, {bottomHeight}, Qt::Vertical);
+}
+
+void MainWindow::restoreLayout()
+{
+    if (!restoreGeometry(m_settings->windowGeometry()))
+        resize(defaultWindowSize(this));
+    if (!restoreState(m_settings->windowState()))
+        applyDefaultLayout();
+}
+
+void MainWindow::saveLayout()
+{
+    m_settings->setWindowGeometry(saveGeometry());
+    m_settings->setWindowState(saveState());
+    m_settings->sync();
+}
+
+void MainWindow::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        // Later: the event is still on its way to the docks, and one switch
+        // of language sends several.
+        if (!m_docksRebuildPending) {
+            m_docksRebuildPending = true;
+            QMetaObject::invokeMethod(this, &MainWindow::rebuildDocks, Qt::QueuedConnection);
+        }
+    }
+    QMainWindow::changeEvent(event);
+}
+
+void MainWindow::retranslate()
+{
+    m_fileMenu->setTitle(tr("&File"));
+    m_editMenu->setTitle(tr("&Edit"));
+    m_viewMenu->setTitle(tr("&View"));
+    m_languageMenu->setTitle(tr("&Language"));
+    m_helpMenu->setTitle(tr("&Help"));
+
+    m_newAction->setText(tr("&New"));
+    m_newAction->setStatusTip(tr("Start a new model from the GEMMA template"));
+    m_openAction->setText(tr("&Open…"));
+    m_openAction->setStatusTip(tr("Open a GG Studio model, a GG-Generator file or an exported PLCopen XML file"));
+    m_saveAction->setText(tr("&Save"));
+    m_saveAsAction->setText(tr("Save &As…"));
+    m_resetAction->setText(tr("&Reset to Template…"));
+    m_resetAction->setStatusTip(tr("Put every state, transition, variable and setting back to the template"));
+    m_quitAction->setText(tr("&Quit"));
+
+    QUndoStack* stack = m_document->undoStack();
+    m_undoAction->setText(stack->undoText().isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(stack->undoText()));
+    m_redoAction->setText(stack->redoText().isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(stack->redoText()));
+    m_modelSettingsAction->setText(tr("&Model Settings…"));
+    m_modelSettingsAction->setStatusTip(tr("Model name, PLC cycle time and code dialect"));
+
+    m_showHiddenAction->setText(tr("Show &Hidden Elements"));
+    m_showHiddenAction->setStatusTip(tr("Draw the hidden states and transitions faded, so they can be selected"));
+    m_fitAction->setText(tr("&Fit Chart"));
+    m_actualSizeAction->setText(tr("&Actual Size (100 %)"));
+    m_zoomInAction->setText(tr("Zoom &In"));
+    m_zoomOutAction->setText(tr("Zoom &Out"));
+
+    m_aboutAction->setText(tr("&About GG Studio"));
+    m_aboutQtAction->setText(tr("About &Qt"));
+
+    for (QAction* a : m_languageGroup->actions())
+        a->setChecked(a->data().toString() == m_translators.language());
+
+    m_recentFiles->retranslate();
+    m_exportActions->retranslate();
+    updateTitle();
+}
+
+void MainWindow::updateTitle()
+{
+    setWindowTitle(tr("%1[*] — GG Studio").arg(m_document->displayName()));
+    setWindowModified(m_document->isModified());
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_document->isModified())
+        return true;
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved Changes"),
+                    tr("The model “%1” has unsaved changes.").arg(m_document->displayName()),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+    box.setInformativeText(tr("Do you want to save them?"));
+    box.setDefaultButton(QMessageBox::Save);
+    switch (box.exec()) {
+    case QMessageBox::Save:
+        return save();
+    case QMessageBox::Discard:
+        m_autosave->discard();
+        return true;
+    default:
+        return false;
+    }
+}
+
+void MainWindow::newModel()
+{
+    if (!maybeSave())
+        return;
+    core::Model model;
+    model.setCycleTimeMs(m_settings->defaultCycleTimeMs());
+    model.setDialect(m_settings->defaultDialect());
+    m_document->replaceModel(model, QString(), core::ModelFormat::Native);
+    m_selection->clear();
+    updateTitle();
+}
+
+void MainWindow::open()
+{
+    if (!maybeSave())
+        return;
+    const QStringList filters{
+        tr("All supported files (*.json *.xml)"),
+        tr("GG Studio models (*.json)"),
+        tr("GG-Generator files (*.json)"),
+        tr("GG Studio PLCopen XML (*.xml)"),
+        tr("All files (*)"),
+    };
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open Model"), m_settings->lastModelDirectory(),
+                                                      filters.join(QStringLiteral(";;")));
+    if (!path.isEmpty())
+        loadFile(path);
+}
+
+bool MainWindow::openFile(const QString& path)
+{
+    return maybeSave() && loadFile(path);
+}
+
+bool MainWindow::loadFile(const QString& path)
+{
+    QString error;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    const bool loaded = m_document->load(path, &error);
+    QApplication::restoreOverrideCursor();
+    if (!loaded) {
+        QMessageBox box(QMessageBox::Critical, tr("Open Model"),
+                        tr("Could not open %1.").arg(QDir::toNativeSeparators(path)), QMessageBox::Ok, this);
+        box.setObjectName("openErrorBox");
+        box.setInformativeText(error);
+        box.exec();
+        if (!QFileInfo::exists(path))
+            m_recentFiles->remove(path);
+        return false;
+    }
+    m_selection->clear();
+    m_recentFiles->add(path);
+    m_settings->setLastModelDirectory(QFileInfo(path).absolutePath());
+    updateTitle();
+    switch (m_document->fileFormat()) {
+    case core::ModelFormat::Native:
+        statusBar()->showMessage(tr("Opened %1").arg(QDir::toNativeSeparators(path)), kStatusMessageMs);
+        break;
+    case core::ModelFormat::GGGenerator:
+    case core::ModelFormat::PlcOpen:
+        statusBar()->showMessage(tr("Imported %1: Save As keeps it as a GG Studio model")
+                                     .arg(QDir::toNativeSeparators(path)),
+                                 kStatusMessageMs);
+        break;
+    }
+    return true;
+}
+
+bool MainWindow::needsSaveAs() const
+{
+    const QString path = m_document->filePath();
+    const QString name = QFileInfo(path).fileName().toLower();
+    // Never write native JSON over an imported file: its own tool reads it.
+    return path.isEmpty() || m_document->fileFormat() != core::ModelFormat::Native || name.endsWith(".xml")
+           || name.endsWith(".gg.json");
+}
+
+bool MainWindow::save()
+{
+    return needsSaveAs() ? saveAs() : saveFile(m_document->filePath());
+}
+
+bool MainWindow::saveAs()
+{
+    QString suggestion = m_document->filePath();
+    if (suggestion.isEmpty()) {
+        suggestion = QDir(m_settings->lastModelDirectory()).filePath(tr("untitled") + QStringLiteral(".json"));
+    } else {
+        // An imported "x.gg.json" or "x.xml" becomes "x.json" beside it.
+        const QFileInfo info(suggestion);
+        suggestion = info.dir().filePath(info.fileName().section('.', 0, 0) + QStringLiteral(".json"));
+    }
+    QString path = QFileDialog::getSaveFileName(this, tr("Save Model As"), suggestion,
+                                                tr("GG Studio models (*.json)"));
+    if (path.isEmpty())
+        return false;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".json");
+    return saveFile(path);
+}
+
+bool MainWindow::saveFile(const QString& path)
+{
+    QString error;
+    if (!m_document->save(path, &error)) {
+        QMessageBox::critical(this, tr("Save Model"),
+                              tr("Could not save %1.").arg(QDir::toNativeSeparators(path)) + QStringLiteral("\n\n") +
+                                  error);
+        return false;
+    }
+    m_recentFiles->add(path);
+    m_settings->setLastModelDirectory(QFileInfo(path).absolutePath());
+    updateTitle();
+    statusBar()->showMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)), kStatusMessageMs);
+    return true;
+}
+
+bool MainWindow::exportPlcOpen(const QString& path, core::Dialect dialect)
+{
+    QString error;
+    if (m_exportActions->writePlcOpen(path, dialect, &error))
+        return true;
+    QMessageBox::critical(this, tr("Export Failed"),
+                          tr("Could not write %1.").arg(QDir::toNativeSeparators(path)) + QStringLiteral("\n\n") +
+                              error);
+    return false;
+}
+
+void MainWindow::offerRecovery()
+{
+    if (RecoveryPrompt::offer(this, *m_document)) {
+        m_selection->clear();
+        updateTitle();
+        statusBar()->showMessage(tr("Recovered unsaved changes: save them to keep them"), kStatusMessageMs);
+    }
+}
+
+void MainWindow::resetToTemplate()
+{
+    const auto answer = QMessageBox::question(
+        this, tr("Reset to Template"),
+        tr("Put every state, transition, variable and setting back to the GEMMA template? "
+           "You can undo this."),
+        QMessageBox::Reset | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer == QMessageBox::Reset)
+        m_document->push(new ResetModelCommand(*m_document));
+}
+
+void MainWindow::editModelSettings()
+{
+    ModelSettingsDialog dialog(*m_document, *m_settings, this);
+    dialog.exec();
+}
+
+void MainWindow::setShowHidden(bool show)
+{
+    m_scene->setShowHidden(show);
+    m_settings->setShowHidden(show);
+}
+
+void MainWindow::setLanguage(const QString& code)
+{
+    // The translators send QEvent::LanguageChange to every widget.
+    m_translators.setLanguage(code);
+    m_settings->setLanguage(code);
+}
+
+void MainWindow::about()
+{
+    QMessageBox::about(
+        this, tr("About GG Studio"),
+        tr("<h3>GG Studio %1</h3>"
+           "<p>An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the "
+           "GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 "
+           "program that runs them (Structured Text, PLCopen XML).</p>")
+            .arg(QStringLiteral(GGSTUDIO_VERSION)));
+}
+
+void MainWindow::showEditFailure(const QString& message)
+{
+    statusBar()->showMessage(message, kStatusMessageMs);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    saveLayout();
+    event->accept();
+}
+
+} // namespace editor

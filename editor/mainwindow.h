@@ -1,0 +1,142 @@
+#pragma once
+
+#include "core/model.h"
+
+#include <QMainWindow>
+
+#include <memory>
+
+class QAction;
+class QActionGroup;
+class QDockWidget;
+class QMenu;
+
+namespace editor {
+
+class Autosave;
+class ChartScene;
+class ChartView;
+class Document;
+class ExportActions;
+class ProblemCounter;
+class ProblemsDock;
+class RecentFiles;
+class Selection;
+class Settings;
+class StPreviewDock;
+class StepDock;
+class TransitionDock;
+class Translators;
+class VariablesDock;
+class ZoomIndicator;
+
+// GG Studio's window: the chart in the middle, the Step and Transition docks
+// on the right, Variables, Problems and the ST preview below. It edits one
+// Document; the file, export and settings work lives in helpers
+// (RecentFiles, ExportActions, ModelSettingsDialog, RecoveryPrompt).
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    // The translators are the application's: the Language menu switches them.
+    explicit MainWindow(Translators& translators, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    Document* document() const { return m_document; }
+    Selection* selection() const { return m_selection; }
+    ChartScene* chartScene() const { return m_scene; }
+    ChartView* chartView() const { return m_view; }
+    ExportActions* exportActions() const { return m_exportActions; }
+
+public slots:
+    // Asks to save unsaved changes first. A file that cannot be read leaves
+    // the open model untouched and says why; false then, or when cancelled.
+    bool openFile(const QString& path);
+    // Native JSON. False, after saying why, when the file cannot be written.
+    bool saveFile(const QString& path);
+    // The writing of File > Export PLCopen XML, without its questions.
+    bool exportPlcOpen(const QString& path, core::Dialect dialect);
+    // The models autosave kept from a session that ended without saving.
+    void offerRecovery();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+private:
+    QList<QDockWidget*> docks() const;
+    QList<QAction*> toggleViewActions() const;
+    void createDocks();
+    void deleteDocks();
+    void rebuildDocks();
+    void createActions();
+    void createMenus();
+    void createStatusBar();
+    void applyDefaultLayout();
+    void restoreLayout();
+    void saveLayout();
+    void retranslate();
+
+    void newModel();
+    void open();
+    bool save();
+    bool saveAs();
+    void resetToTemplate();
+    void editModelSettings();
+    void setShowHidden(bool show);
+    void setLanguage(const QString& code);
+    void about();
+
+    // Save / Discard / Cancel for unsaved changes; true when the caller may go on.
+    bool maybeSave();
+    bool loadFile(const QString& path);
+    // Whether Save must ask for a name: untitled, or read from another format.
+    bool needsSaveAs() const;
+    void updateTitle();
+    void showEditFailure(const QString& message);
+
+    Translators& m_translators;
+    std::unique_ptr<Settings> m_settings;
+    Document* m_document;
+    Selection* m_selection;
+    Autosave* m_autosave;
+    ChartScene* m_scene;
+    ChartView* m_view;
+    StepDock* m_stepDock = nullptr;
+    TransitionDock* m_transitionDock = nullptr;
+    VariablesDock* m_variablesDock = nullptr;
+    ProblemsDock* m_problemsDock = nullptr;
+    StPreviewDock* m_stPreviewDock = nullptr;
+    RecentFiles* m_recentFiles = nullptr;
+    ExportActions* m_exportActions = nullptr;
+    ProblemCounter* m_problemCounter = nullptr;
+    ZoomIndicator* m_zoomIndicator = nullptr;
+
+    QMenu* m_fileMenu = nullptr;
+    QMenu* m_editMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QMenu* m_languageMenu = nullptr;
+    QMenu* m_helpMenu = nullptr;
+
+    QAction* m_newAction = nullptr;
+    QAction* m_openAction = nullptr;
+    QAction* m_saveAction = nullptr;
+    QAction* m_saveAsAction = nullptr;
+    QAction* m_resetAction = nullptr;
+    QAction* m_quitAction = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
+    QAction* m_modelSettingsAction = nullptr;
+    QAction* m_showHiddenAction = nullptr;
+    QAction* m_fitAction = nullptr;
+    QAction* m_actualSizeAction = nullptr;
+    QAction* m_zoomInAction = nullptr;
+    QAction* m_zoomOutAction = nullptr;
+    QAction* m_aboutAction = nullptr;
+    QAction* m_aboutQtAction = nullptr;
+    QActionGroup* m_languageGroup = nullptr;
+    QAction* m_dockActionsEnd = nullptr; // the separator after the docks in the View menu
+    bool m_docksRebuildPending = false;
+};
+
+} // namespace editor

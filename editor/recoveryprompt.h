@@ -1,0 +1,22 @@
+#pragma once
+
+#include <QCoreApplication>
+
+class QWidget;
+
+namespace editor {
+
+class Document;
+
+// At start: offers the models autosave kept when the editor last ended
+// without saving them (editor/autosave.h), newest first. The user recovers
+// one into the document, discards it, or keeps it for the next start.
+class RecoveryPrompt {
+    Q_DECLARE_TR_FUNCTIONS(RecoveryPrompt)
+
+public:
+    // True when a model was recovered into the document.
+    static bool offer(QWidget* parent, Document& document);
+};
+
+} // namespace editor

@@ -1,0 +1,67 @@
+#pragma once
+
+#include "core/model.h"
+
+#include <QByteArray>
+#include <QSettings>
+#include <QString>
+#include <QStringList>
+
+namespace editor {
+
+// The user's preferences and the window's memory, typed. Every value has a
+// default, and a stored value that makes no sense (an unknown dialect, a
+// cycle time out of range) reads as the default, so a hand-edited or old
+// settings file never breaks the editor.
+class Settings {
+public:
+    // Uses the application's QSettings (organisation and application names
+    // set in main()).
+    Settings() = default;
+
+    // "" follows the system locale; otherwise a code of availableLanguages().
+    QString language() const;
+    void setLanguage(const QString& code);
+
+    // What a new model starts with (the template has IEC and 20 ms).
+    core::Dialect defaultDialect() const;
+    void setDefaultDialect(core::Dialect dialect);
+    int defaultCycleTimeMs() const;
+    void setDefaultCycleTimeMs(int milliseconds);
+
+    bool showHidden() const;
+    void setShowHidden(bool show);
+
+    QByteArray windowGeometry() const;
+    void setWindowGeometry(const QByteArray& geometry);
+    QByteArray windowState() const;
+    void setWindowState(const QByteArray& state);
+
+    // Most recent first.
+    QStringList recentFiles() const;
+    void setRecentFiles(const QStringList& files);
+
+    // The fallback (the model's own dialect) until the user has exported once.
+    core::Dialect lastExportDialect(core::Dialect fallback) const;
+    void setLastExportDialect(core::Dialect dialect);
+    // The Structured Text export: one file per POU in a folder, or one file.
+    bool lastStExportSingleFile() const;
+    void setLastStExportSingleFile(bool singleFile);
+
+    // Where the file dialogs start: models, and exported code or pictures.
+    QString lastModelDirectory() const;
+    void setLastModelDirectory(const QString& directory);
+    QString lastExportDirectory() const;
+    void setLastExportDirectory(const QString& directory);
+
+    // Written to disk now (QSettings otherwise writes when idle or on exit).
+    void sync();
+
+private:
+    core::Dialect dialectValue(const char* key, core::Dialect fallback) const;
+    void setDialectValue(const char* key, core::Dialect dialect);
+
+    mutable QSettings m_settings;
+};
+
+} // namespace editor

@@ -1,0 +1,123 @@
+#include "editor/statusindicators.h"
+
+#include "editor/diagnostictext.h"
+#include "editor/document.h"
+
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QStyle>
+#include <QToolButton>
+
+#include <cmath>
+
+namespace editor {
+
+namespace {
+
+QWidget* withoutMargins(QWidget* widget, QWidget* child)
+{
+    auto* layout = new QHBoxLayout(widget);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(child);
+    return widget;
+}
+
+} // namespace
+
+ProblemCounter::ProblemCounter(Document& document, QWidget* parent)
+    : QWidget(parent)
+    , m_document(document)
+    , m_button(new QToolButton(this))
+{
+    setObjectName("problemCounter");
+    m_button->setObjectName("problemCountButton");
+    m_button->setAutoRaise(true);
+    m_button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, this);
+    m_button->setIconSize(QSize(iconSize, iconSize));
+    withoutMargins(this, m_button);
+    connect(m_button, &QToolButton::clicked, this, &ProblemCounter::clicked);
+    connect(&document, &Document::diagnosticsChanged, this, &ProblemCounter::recount);
+    connect(&document, &Document::modelReset, this, &ProblemCounter::recount);
+    recount();
+}
+
+void ProblemCounter::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ProblemCounter::recount()
+{
+    m_errors = 0;
+    m_warnings = 0;
+    for (const core::Diagnostic& diagnostic : m_document.diagnostics()) {
+        if (diagnostic.severity == core::Severity::Error)
+            ++m_errors;
+        else if (diagnostic.severity == core::Severity::Warning)
+            ++m_warnings;
+    }
+    retranslate();
+}
+
+void ProblemCounter::retranslate()
+{
+    // The icon of the worst severity present; no icon when all is well.
+    if (m_errors > 0)
+        m_button->setIcon(severityIcon(core::Severity::Error, style()));
+    else if (m_warnings > 0)
+        m_button->setIcon(severityIcon(core::Severity::Warning, style()));
+    else
+        m_button->setIcon(QIcon());
+
+    if (m_errors == 0 && m_warnings == 0)
+        m_button->setText(tr("No problems"));
+    else
+        m_button->setText(tr("%n error(s)", nullptr, m_errors) + QStringLiteral(", ") +
+                          tr("%n warning(s)", nullptr, m_warnings));
+    m_button->setToolTip(tr("Show the Problems panel"));
+}
+
+ZoomIndicator::ZoomIndicator(QWidget* parent)
+    : QWidget(parent)
+    , m_label(new QLabel(this))
+{
+    setObjectName("zoomIndicator");
+    m_label->setObjectName("zoomLabel");
+    m_label->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    // Wide enough for "Zoom: 800 %", so the status bar does not jump.
+    m_label->setMinimumWidth(m_label->fontMetrics().horizontalAdvance(QStringLiteral("Zoom: 8888 %")));
+    withoutMargins(this, m_label);
+    retranslate();
+}
+
+void ZoomIndicator::setZoom(double zoom)
+{
+    m_zoom = zoom;
+    retranslate();
+}
+
+QString ZoomIndicator::text() const
+{
+    return m_label->text();
+}
+
+void ZoomIndicator::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ZoomIndicator::retranslate()
+{
+    const int percent = int(std::lround(m_zoom * 100));
+    m_label->setText(tr("Zoom: %1 %").arg(locale().toString(percent)));
+    m_label->setToolTip(tr("Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart"));
+}
+
+} // namespace editor

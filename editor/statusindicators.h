@@ -1,0 +1,58 @@
+#pragma once
+
+#include <QWidget>
+
+class QLabel;
+class QToolButton;
+
+namespace editor {
+
+class Document;
+
+// The status bar's permanent fields: how many errors and warnings the model
+// has (a click asks for the Problems dock), and the chart's zoom.
+class ProblemCounter : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit ProblemCounter(Document& document, QWidget* parent = nullptr);
+
+    int errorCount() const { return m_errors; }
+    int warningCount() const { return m_warnings; }
+
+signals:
+    void clicked();
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void recount();
+    void retranslate();
+
+    Document& m_document;
+    QToolButton* m_button;
+    int m_errors = 0;
+    int m_warnings = 0;
+};
+
+class ZoomIndicator : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit ZoomIndicator(QWidget* parent = nullptr);
+
+    void setZoom(double zoom); // 1.0 is 100 %
+    QString text() const;
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void retranslate();
+
+    QLabel* m_label;
+    double m_zoom = 1.0;
+};
+
+} // namespace editor

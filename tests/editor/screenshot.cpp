@@ -1,0 +1,168 @@
+// ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... [--show-hidden] [--language CODE]
+//                     [--export-chart FILE.svg|png|pdf] [--dialog ACTION]
+//
+// Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
+// with a step or transition selected, a dock brought to the front) and
+// saves a picture of it: to look at the layout without a display
+// (QT_QPA_PLATFORM=offscreen). The selection can also come from the
+// GGSTUDIO_SELECT environment variable; --export-chart also writes the
+// chart as File > Export Chart does. --dialog triggers the window's action
+// of that object name ("modelSettingsAction", "exportPlcOpenAction"...) and
+// saves a picture of the first dialog it opens instead of the window. Settings go to a temporary folder,
+// so the picture shows the default layout whatever the user's settings.
+
+#include "editor/chart/chartscene.h"
+#include "editor/chart/chartview.h"
+#include "editor/chartexport.h"
+#include "editor/languages.h"
+#include "editor/mainwindow.h"
+#include "editor/selection.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include <cstdio>
+
+namespace {
+
+int usage()
+{
+    std::fputs("usage: ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... "
+               "[--show-hidden] [--language CODE] [--export-chart FILE] [--dialog ACTION]\n",
+               stderr);
+    return 2;
+}
+
+// Triggers the action and saves the first modal dialog it opens; closes
+// every dialog after it, so the action returns.
+int grabDialog(QWidget& window, const QString& actionName, const QString& out)
+{
+    auto* action = window.findChild<QAction*>(actionName);
+    if (!action) {
+        std::fprintf(stderr, "ggstudio_screenshot: no action named %s\n", qPrintable(actionName));
+        return 2;
+    }
+    bool grabbed = false;
+    bool saved = false;
+    QTimer poll;
+    poll.setInterval(100);
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (!modal)
+            return;
+        if (!grabbed) {
+            grabbed = true;
+            saved = modal->grab().save(out);
+        }
+        modal->close();
+    });
+    poll.start();
+    action->trigger();
+    poll.stop();
+    if (!grabbed)
+        std::fprintf(stderr, "ggstudio_screenshot: %s opened no dialog\n", qPrintable(actionName));
+    else if (!saved)
+        std::fprintf(stderr, "ggstudio_screenshot: cannot write %s\n", qPrintable(out));
+    return grabbed && saved ? 0 : 1;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    QApplication app(argc, argv);
+    QTemporaryDir settingsDir;
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
+    QApplication::setOrganizationName(QStringLiteral("GG Studio Screenshot"));
+    QApplication::setApplicationName(QStringLiteral("ggstudio_screenshot"));
+
+    QStringList positional;
+    QStringList docks;
+    QString selected = qEnvironmentVariable("GGSTUDIO_SELECT");
+    QString language = QStringLiteral("en");
+    QString chartFile;
+    QString dialogAction;
+    bool showHidden = false;
+    const QStringList args = app.arguments().mid(1);
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        if (args[i] == QLatin1String("--select") && i + 1 < args.size())
+            selected = args[++i];
+        else if (args[i] == QLatin1String("--raise") && i + 1 < args.size())
+            docks << args[++i];
+        else if (args[i] == QLatin1String("--language") && i + 1 < args.size())
+            language = args[++i];
+        else if (args[i] == QLatin1String("--dialog") && i + 1 < args.size())
+            dialogAction = args[++i];
+        else if (args[i] == QLatin1String("--export-chart") && i + 1 < args.size())
+            chartFile = args[++i];
+        else if (args[i] == QLatin1String("--show-hidden"))
+            showHidden = true;
+        else if (args[i].startsWith(QLatin1String("--")))
+            return usage();
+        else
+            positional << args[i];
+    }
+    if (positional.size() < 3 || positional.size() > 4)
+        return usage();
+    bool okWidth = false;
+    bool okHeight = false;
+    const int width = positional[1].toInt(&okWidth);
+    const int height = positional[2].toInt(&okHeight);
+    if (!okWidth || !okHeight || width < 200 || height < 200 || width > 8000 || height > 8000) {
+        std::fputs("ggstudio_screenshot: WIDTH and HEIGHT must be whole numbers from 200 to 8000\n", stderr);
+        return 2;
+    }
+
+    editor::Translators translators;
+    translators.setLanguage(language);
+    editor::MainWindow window(translators);
+    window.resize(width, height);
+    window.show();
+    if (!QTest::qWaitForWindowExposed(&window))
+        return 1;
+    if (positional.size() == 4 && !window.openFile(positional[3]))
+        return 1;
+    if (showHidden)
+        window.findChild<QAction*>(QStringLiteral("showHiddenAction"))->setChecked(true);
+    if (!selected.isEmpty())
+        window.selection()->select(selected.contains(QLatin1String("->")) ? editor::ElementRef::transition(selected)
+                                                                          : editor::ElementRef::step(selected));
+    for (const QString& name : docks) {
+        auto* dock = window.findChild<QDockWidget*>(name);
+        if (!dock) {
+            std::fprintf(stderr, "ggstudio_screenshot: no dock named %s\n", qPrintable(name));
+            return 2;
+        }
+        dock->show();
+        dock->raise();
+    }
+    QTest::qWait(50);
+    window.chartView()->zoomToFit();
+    QApplication::processEvents();
+
+    if (!chartFile.isEmpty()) {
+        editor::ChartExport chart(*window.chartScene());
+        editor::ChartExport::Format format;
+        QString error;
+        if (!editor::ChartExport::formatForPath(chartFile, &format) || !chart.write(chartFile, format, &error)) {
+            std::fprintf(stderr, "ggstudio_screenshot: cannot export the chart to %s %s\n", qPrintable(chartFile),
+                         qPrintable(error));
+            return 1;
+        }
+    }
+    if (!dialogAction.isEmpty())
+        return grabDialog(window, dialogAction, positional[0]);
+    if (!window.grab().save(positional[0])) {
+        std::fprintf(stderr, "ggstudio_screenshot: cannot write %s\n", qPrintable(positional[0]));
+        return 1;
+    }
+    return 0;
+}

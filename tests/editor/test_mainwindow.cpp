@@ -1,0 +1,564 @@
+// The main window: what it opens on, opening and refusing files, the
+// PLCopen export of the GUI, the dock layout, undo texts and the runtime
+// language switch.
+
+#include "editor/autosave.h"
+#include "editor/chart/chartscene.h"
+#include "editor/chart/chartview.h"
+#include "editor/chart/stepitem.h"
+#include "editor/chart/transitionitem.h"
+#include "editor/commands/setstephiddencommand.h"
+#include "editor/document.h"
+#include "editor/exportactions.h"
+#include "editor/languages.h"
+#include "editor/mainwindow.h"
+#include "editor/modelsettingsdialog.h"
+#include "editor/chartexport.h"
+#include "editor/selection.h"
+#include "editor/settings.h"
+#include "editor/recentfiles.h"
+#include "editor/statusindicators.h"
+
+#include "core/modelfiles.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QComboBox>
+#include <QDir>
+#include <QFile>
+#include <QLineEdit>
+#include <QSpinBox>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProcess>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QTranslator>
+
+#include <algorithm>
+#include <memory>
+
+using namespace editor;
+
+namespace {
+
+template <typename Item>
+int countItems(const QGraphicsScene& scene)
+{
+    int count = 0;
+    for (QGraphicsItem* item : scene.items()) {
+        if (item->type() == Item::Type)
+            ++count;
+    }
+    return count;
+}
+
+// Wraps every text of the editor's classes in brackets, to see which texts
+// are retranslated without needing a finished translation.
+class BracketTranslator : public QTranslator {
+public:
+    QString translate(const char* context, const char* sourceText, const char* disambiguation = nullptr,
+                      int n = -1) const override
+    {
+        Q_UNUSED(disambiguation)
+        Q_UNUSED(n)
+        if (!QByteArray(context).startsWith("editor::"))
+            return {};
+        return QStringLiteral("[%1]").arg(QString::fromUtf8(sourceText));
+    }
+    bool isEmpty() const override { return false; }
+};
+
+// Closes the next modal message box once it appears (or clicks the button
+// of the given text) and keeps its texts.
+struct MessageBoxCatcher {
+    QString text;
+    QString informativeText;
+    QString button; // to click; empty: close, which is Cancel or the escape button
+    bool seen = false;
+
+    void arm()
+    {
+        QTimer::singleShot(0, [this] { poll(); });
+    }
+
+private:
+    void poll()
+    {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box) {
+            QTimer::singleShot(10, [this] { poll(); });
+            return;
+        }
+        seen = true;
+        text = box->text();
+        informativeText = box->informativeText();
+        for (QAbstractButton* candidate : box->buttons()) {
+            if (!button.isEmpty() && candidate->text() == button) {
+                candidate->click();
+                return;
+            }
+        }
+        box->close();
+    }
+};
+
+core::Model namedModel(const std::string& name)
+{
+    core::Model model;
+    model.setName(name);
+    model.setStepHidden("A3", true);
+    model.addVariable(core::Variable{"Start", core::IecType::Bool, "", "start button"});
+    return model;
+}
+
+QString writeNativeFile(const QTemporaryDir& dir, const QString& fileName, const core::Model& model)
+{
+    const QString path = dir.filePath(fileName);
+    const core::Status status = core::saveModelFile(model, QFile::encodeName(path).toStdString(),
+                                                    core::ModelFormat::Native);
+    return status ? path : QString();
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void opensOnTheTemplate();
+    void docksAreAroundTheChart();
+    void opensANativeFile();
+    void brokenFileLeavesTheModelUntouched();
+    void editsMarkTheTitleModified();
+    void undoActionNamesTheCommand();
+    void statusBarCountsProblems();
+    void plcOpenExportValidates();
+    void otherExportsWriteTheirFiles();
+    void exportWithErrorsAsksFirst();
+    void chartPicturesAreWritten();
+    void unsavedChangesAskBeforeOpening();
+    void modelSettingsAreOneUndoStep();
+    void layoutIsRestored();
+    void recoveryIsOffered();
+    void translatorLoadsFrench();
+    void languageChangeRetranslatesMenus();
+    void frenchMenuTitles();
+
+private:
+    static void discardRecoveries()
+    {
+        for (const RecoveryFile& file : Autosave::pendingRecoveries())
+            Autosave::discard(file);
+    }
+
+    QTemporaryDir m_settingsDir;
+    QTemporaryDir m_files;
+    std::unique_ptr<Translators> m_translators;
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void TestMainWindow::initTestCase()
+{
+    // Keep the user's settings and autosave folder out of the tests.
+    QStandardPaths::setTestModeEnabled(true);
+    QVERIFY(m_settingsDir.isValid());
+    QVERIFY(m_files.isValid());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    QCoreApplication::setOrganizationName(QStringLiteral("GG Studio Tests"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_mainwindow"));
+    discardRecoveries(); // left by an interrupted run
+}
+
+void TestMainWindow::init()
+{
+    m_translators = std::make_unique<Translators>();
+    m_translators->setLanguage(QStringLiteral("en"));
+    m_window = std::make_unique<MainWindow>(*m_translators);
+    m_window->resize(1366, 768);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+}
+
+void TestMainWindow::cleanup()
+{
+    m_window.reset();
+    m_translators.reset();
+}
+
+void TestMainWindow::opensOnTheTemplate()
+{
+    const QGraphicsScene& scene = *m_window->chartScene();
+    QCOMPARE(countItems<StepItem>(scene), 16);
+    QCOMPARE(countItems<TransitionItem>(scene), 34);
+    QVERIFY(m_window->document()->model().sameContent(core::Model()));
+    QCOMPARE(m_window->windowTitle(), QStringLiteral("Untitled[*] — GG Studio"));
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void TestMainWindow::docksAreAroundTheChart()
+{
+    const auto dock = [this](const char* name) { return m_window->findChild<QDockWidget*>(QLatin1String(name)); };
+    for (const char* name : {"stepDock", "transitionDock"}) {
+        QVERIFY2(dock(name), name);
+        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::RightDockWidgetArea);
+    }
+    for (const char* name : {"variablesDock", "problemsDock", "stPreviewDock"}) {
+        QVERIFY2(dock(name), name);
+        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::BottomDockWidgetArea);
+    }
+    // Tabbed, not squeezed side by side.
+    QVERIFY(m_window->tabifiedDockWidgets(dock("stepDock")).contains(dock("transitionDock")));
+    QCOMPARE(m_window->tabifiedDockWidgets(dock("variablesDock")).size(), 2);
+    // The chart keeps most of the window.
+    const QSize chart = m_window->chartView()->size();
+    QVERIFY2(chart.width() > m_window->width() / 2, qPrintable(QString::number(chart.width())));
+    QVERIFY2(chart.height() > m_window->height() / 2, qPrintable(QString::number(chart.height())));
+    // Every dock can be shown again from the View menu.
+    auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
+    QVERIFY(viewMenu);
+    QVERIFY(viewMenu->actions().contains(dock("problemsDock")->toggleViewAction()));
+}
+
+void TestMainWindow::opensANativeFile()
+{
+    const QString path = writeNativeFile(m_files, QStringLiteral("bottling.json"), namedModel("Bottling"));
+    QVERIFY(!path.isEmpty());
+    QVERIFY(m_window->openFile(path));
+    QCOMPARE(m_window->windowTitle(), QStringLiteral("bottling.json[*] — GG Studio"));
+    QVERIFY(!m_window->isWindowModified());
+    QVERIFY(m_window->document()->model().sameContent(namedModel("Bottling")));
+    QCOMPARE(m_window->document()->filePath(), path);
+    auto* recent = m_window->findChild<QMenu*>(QStringLiteral("recentFilesMenu"));
+    QVERIFY(recent);
+    QVERIFY(recent->actions().first()->text().contains(QStringLiteral("bottling.json")));
+}
+
+void TestMainWindow::brokenFileLeavesTheModelUntouched()
+{
+    const QString good = writeNativeFile(m_files, QStringLiteral("good.json"), namedModel("Good"));
+    QVERIFY(m_window->openFile(good));
+    const QString title = m_window->windowTitle();
+
+    const QString broken = m_files.filePath(QStringLiteral("broken.json"));
+    QFile file(broken);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{ \"format\": \"ggstudio-model\", \"version\": ");
+    file.close();
+
+    MessageBoxCatcher catcher;
+    catcher.arm();
+    QVERIFY(!m_window->openFile(broken));
+    QVERIFY(catcher.seen);
+    QVERIFY2(catcher.text.contains(QStringLiteral("broken.json")), qPrintable(catcher.text));
+    // "FILE: LOCATION: MESSAGE" from the loader.
+    QVERIFY2(catcher.informativeText.startsWith(broken + QStringLiteral(": ")), qPrintable(catcher.informativeText));
+    QVERIFY(m_window->document()->model().sameContent(namedModel("Good")));
+    QCOMPARE(m_window->document()->filePath(), good);
+    QCOMPARE(m_window->windowTitle(), title);
+}
+
+void TestMainWindow::editsMarkTheTitleModified()
+{
+    Document& document = *m_window->document();
+    QVERIFY(document.push(new SetStepHiddenCommand(document, QStringLiteral("A2"), true)));
+    QVERIFY(m_window->isWindowModified());
+    document.undoStack()->undo();
+    QVERIFY(!m_window->isWindowModified());
+}
+
+void TestMainWindow::undoActionNamesTheCommand()
+{
+    auto* undo = m_window->findChild<QAction*>(QStringLiteral("undoAction"));
+    auto* redo = m_window->findChild<QAction*>(QStringLiteral("redoAction"));
+    QVERIFY(undo && redo);
+    QVERIFY(!undo->isEnabled());
+    QCOMPARE(undo->shortcut(), QKeySequence(QKeySequence::Undo));
+
+    Document& document = *m_window->document();
+    auto* command = new SetStepHiddenCommand(document, QStringLiteral("A2"), true);
+    const QString text = command->text();
+    QVERIFY(document.push(command));
+    QVERIFY(undo->isEnabled());
+    QCOMPARE(undo->text(), QStringLiteral("&Undo %1").arg(text));
+    undo->trigger();
+    QVERIFY(!document.model().step("A2")->hidden);
+    QCOMPARE(redo->text(), QStringLiteral("&Redo %1").arg(text));
+    redo->trigger();
+    QVERIFY(document.model().step("A2")->hidden);
+}
+
+void TestMainWindow::statusBarCountsProblems()
+{
+    auto* counter = m_window->findChild<ProblemCounter*>();
+    QVERIFY(counter);
+    int errors = 0;
+    for (const core::Diagnostic& diagnostic : m_window->document()->diagnostics())
+        errors += diagnostic.severity == core::Severity::Error ? 1 : 0;
+    QVERIFY(errors > 0); // the template's conditions are empty
+    QCOMPARE(counter->errorCount(), errors);
+
+    Document& document = *m_window->document();
+    QVERIFY(document.push(new SetStepHiddenCommand(document, QStringLiteral("F1"), true)));
+    QVERIFY(counter->errorCount() < errors); // F1's nine transitions no longer count
+}
+
+void TestMainWindow::plcOpenExportValidates()
+{
+    const QString path = m_files.filePath(QStringLiteral("gemma.xml"));
+    QVERIFY(m_window->exportPlcOpen(path, core::Dialect::Iec));
+    QVERIFY(QFile::exists(path));
+
+    QProcess xmllint;
+    xmllint.start(QStringLiteral("xmllint"),
+                  {QStringLiteral("--noout"), QStringLiteral("--schema"),
+                   QStringLiteral(GGSTUDIO_SHARED_DIR "/plcopen/tc6_xml_v201.xsd"), path});
+    if (!xmllint.waitForStarted())
+        QFAIL("xmllint is not installed (package libxml2-utils)");
+    QVERIFY(xmllint.waitForFinished(60000));
+    QVERIFY2(xmllint.exitStatus() == QProcess::NormalExit && xmllint.exitCode() == 0,
+             xmllint.readAllStandardError().constData());
+
+    // The exported file opens again as the same model.
+    QVERIFY(m_window->openFile(path));
+    QVERIFY(m_window->document()->model().sameContent(core::Model()));
+    QCOMPARE(m_window->document()->fileFormat(), core::ModelFormat::PlcOpen);
+}
+
+void TestMainWindow::otherExportsWriteTheirFiles()
+{
+    const ExportActions& exports = *m_window->exportActions();
+    QString error;
+
+    const QString folder = m_files.filePath(QStringLiteral("st"));
+    QVERIFY2(exports.writeStFolder(folder, core::Dialect::Iec, &error), qPrintable(error));
+    QVERIFY(QFile::exists(folder + QStringLiteral("/GEMMA.st")));
+
+    const QString single = m_files.filePath(QStringLiteral("gemma.st"));
+    QVERIFY2(exports.writeStSingleFile(single, &error), qPrintable(error));
+    QFile st(single);
+    QVERIFY(st.open(QIODevice::ReadOnly));
+    QVERIFY(st.readAll().contains("PROGRAM GEMMA"));
+
+    const QString gg = m_files.filePath(QStringLiteral("gemma.gg.json"));
+    QVERIFY2(exports.writeGGGenerator(gg, &error), qPrintable(error));
+    const core::LoadedModel loaded = core::loadModelFile(QFile::encodeName(gg).toStdString());
+    QVERIFY(loaded.ok());
+    QCOMPARE(loaded.format, core::ModelFormat::GGGenerator);
+
+    // A folder that cannot be created: refused with a reason.
+    QVERIFY(!exports.writeStSingleFile(m_files.filePath(QStringLiteral("gemma.st/inside.st")), &error));
+    QVERIFY(!error.isEmpty());
+}
+
+void TestMainWindow::exportWithErrorsAsksFirst()
+{
+    // The template's empty conditions are errors: the user is asked, and
+    // closing the question cancels.
+    const std::vector<core::Diagnostic>& diagnostics = m_window->document()->diagnostics();
+    const auto errors = std::count_if(diagnostics.begin(), diagnostics.end(),
+                                      [](const core::Diagnostic& d) { return d.severity == core::Severity::Error; });
+    QVERIFY(errors > 6);
+    MessageBoxCatcher catcher;
+    catcher.arm();
+    QVERIFY(!ExportActions::confirmErrors(m_window.get(), diagnostics));
+    QVERIFY(catcher.seen);
+    QVERIFY2(catcher.text.contains(QStringLiteral("has %1 errors").arg(errors)), qPrintable(catcher.text));
+    // The first five, then how many more.
+    QCOMPARE(catcher.informativeText.count(QChar(0x2022)), 5);
+    QVERIFY2(catcher.informativeText.contains(QStringLiteral("and %1 more").arg(errors - 5)),
+             qPrintable(catcher.informativeText));
+
+    // No errors, no question.
+    std::vector<core::Diagnostic> warningsOnly(1);
+    warningsOnly[0].severity = core::Severity::Warning;
+    QVERIFY(ExportActions::confirmErrors(m_window.get(), warningsOnly));
+}
+
+void TestMainWindow::chartPicturesAreWritten()
+{
+    m_window->selection()->select(ElementRef::step(QStringLiteral("F1")));
+    ChartExport chart(*m_window->chartScene());
+    const struct {
+        const char* name;
+        QByteArray magic;
+    } files[] = {{"chart.svg", "<?xml"}, {"chart.png", "\x89PNG"}, {"chart.pdf", "%PDF"}};
+    for (const auto& file : files) {
+        const QString path = m_files.filePath(QLatin1String(file.name));
+        ChartExport::Format format;
+        QVERIFY(ChartExport::formatForPath(path, &format));
+        QString error;
+        QVERIFY2(chart.write(path, format, &error), qPrintable(error));
+        QFile written(path);
+        QVERIFY(written.open(QIODevice::ReadOnly));
+        QVERIFY2(written.read(8).startsWith(file.magic), file.name);
+    }
+    QImage png(m_files.filePath(QStringLiteral("chart.png")));
+    QVERIFY(png.width() > 1000 && png.height() > 500);
+    // The selection is left as it was.
+    QCOMPARE(m_window->selection()->current(), ElementRef::step(QStringLiteral("F1")));
+    QVERIFY(m_window->chartScene()->stepItem(QStringLiteral("F1"))->isSelected());
+
+    ChartExport::Format format;
+    QVERIFY(!ChartExport::formatForPath(QStringLiteral("chart.gif"), &format));
+}
+
+void TestMainWindow::unsavedChangesAskBeforeOpening()
+{
+    const QString other = writeNativeFile(m_files, QStringLiteral("other.json"), namedModel("Other"));
+    Document& document = *m_window->document();
+    QVERIFY(document.push(new SetStepHiddenCommand(document, QStringLiteral("A2"), true)));
+
+    MessageBoxCatcher catcher; // closing the question is Cancel
+    catcher.arm();
+    QVERIFY(!m_window->openFile(other));
+    QVERIFY(catcher.seen);
+    QVERIFY(document.isModified());
+    QVERIFY(document.model().step("A2")->hidden);
+    QVERIFY(document.filePath().isEmpty());
+}
+
+void TestMainWindow::modelSettingsAreOneUndoStep()
+{
+    Document& document = *m_window->document();
+    Settings settings;
+    ModelSettingsDialog dialog(document, settings, m_window.get());
+    dialog.findChild<QLineEdit*>(QStringLiteral("nameEdit"))->setText(QStringLiteral("Capper"));
+    dialog.findChild<QSpinBox*>(QStringLiteral("cycleTimeSpin"))->setValue(10);
+    auto* dialect = dialog.findChild<QComboBox*>(QStringLiteral("dialectCombo"));
+    dialect->setCurrentIndex(dialect->findData(static_cast<int>(core::Dialect::Codesys)));
+    dialog.accept();
+
+    QCOMPARE(document.model().settings().name, std::string("Capper"));
+    QCOMPARE(document.model().settings().cycleTimeMs, 10);
+    QCOMPARE(document.model().settings().dialect, core::Dialect::Codesys);
+    QCOMPARE(document.undoStack()->count(), 1);
+    document.undoStack()->undo();
+    QVERIFY(document.model().sameContent(core::Model()));
+    // Defaults for new models change only when asked.
+    QCOMPARE(settings.defaultCycleTimeMs(), core::Model().settings().cycleTimeMs);
+}
+
+void TestMainWindow::layoutIsRestored()
+{
+    auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
+    m_window->addDockWidget(Qt::RightDockWidgetArea, problems);
+    m_window->resize(1000, 700);
+    QVERIFY(m_window->close()); // unmodified: closes without asking, saves the layout
+
+    MainWindow again(*m_translators);
+    problems = again.findChild<QDockWidget*>(QStringLiteral("problemsDock"));
+    QCOMPARE(again.dockWidgetArea(problems), Qt::RightDockWidgetArea);
+    QCOMPARE(again.size(), QSize(1000, 700));
+    QSettings().clear(); // the other tests start from the default layout
+}
+
+void TestMainWindow::recoveryIsOffered()
+{
+    discardRecoveries();
+    const QString original = writeNativeFile(m_files, QStringLiteral("lost.json"), core::Model());
+    {
+        // A session that ends without saving its edit.
+        Document document;
+        QVERIFY(document.load(original, nullptr));
+        Autosave autosave(document);
+        QVERIFY(document.push(new SetStepHiddenCommand(document, QStringLiteral("A3"), true)));
+        QVERIFY(autosave.writeNow());
+    }
+    QCOMPARE(Autosave::pendingRecoveries().size(), std::size_t(1));
+
+    MessageBoxCatcher catcher;
+    catcher.button = QStringLiteral("&Recover");
+    catcher.arm();
+    m_window->offerRecovery();
+    QVERIFY(catcher.seen);
+    QVERIFY2(catcher.text.contains(QStringLiteral("lost.json")), qPrintable(catcher.text));
+    const Document& document = *m_window->document();
+    QVERIFY(document.model().step("A3")->hidden);
+    QCOMPARE(document.filePath(), original);
+    QVERIFY(m_window->isWindowModified()); // the user still has to save
+    QCOMPARE(m_window->windowTitle(), QStringLiteral("lost.json[*] — GG Studio"));
+    discardRecoveries();
+}
+
+void TestMainWindow::translatorLoadsFrench()
+{
+    for (const UiLanguage& language : availableLanguages()) {
+        QTranslator translator;
+        QVERIFY2(translator.load(QLocale(language.code), QStringLiteral("ggstudio"), QStringLiteral("_"),
+                                 QStringLiteral(":/i18n")),
+                 qPrintable(language.code));
+    }
+    QVERIFY(m_translators->setLanguage(QStringLiteral("fr")));
+    QCOMPARE(m_translators->language(), QStringLiteral("fr"));
+    QCoreApplication::processEvents();
+    auto* french = m_window->findChild<QAction*>(QStringLiteral("language_fr"));
+    QVERIFY(french);
+    QVERIFY(french->isChecked());
+    QVERIFY(!m_translators->setLanguage(QStringLiteral("xx")));
+    QCOMPARE(m_translators->language(), QStringLiteral("en"));
+}
+
+void TestMainWindow::languageChangeRetranslatesMenus()
+{
+    auto* fileMenu = m_window->findChild<QMenu*>(QStringLiteral("fileMenu"));
+    auto* openAction = m_window->findChild<QAction*>(QStringLiteral("openAction"));
+    QVERIFY(fileMenu && openAction);
+    QCOMPARE(fileMenu->title(), QStringLiteral("&File"));
+
+    // The user moved the Problems dock to the right.
+    auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
+    QVERIFY(problems);
+    m_window->addDockWidget(Qt::RightDockWidgetArea, problems);
+
+    BracketTranslator translator;
+    QCoreApplication::installTranslator(&translator);
+    QCoreApplication::processEvents(); // LanguageChange is posted
+    QCOMPARE(fileMenu->title(), QStringLiteral("[&File]"));
+    QCOMPARE(openAction->text(), QStringLiteral("[&Open…]"));
+    QCOMPARE(m_window->windowTitle(), QStringLiteral("[[Untitled][*] — GG Studio]"));
+    // The docks follow, in the place the user left them.
+    QTRY_COMPARE(m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"))->windowTitle(),
+                 QStringLiteral("[Problems]"));
+    problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
+    QCOMPARE(m_window->dockWidgetArea(problems), Qt::RightDockWidgetArea);
+    auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
+    QVERIFY(viewMenu->actions().contains(problems->toggleViewAction()));
+    QCOMPARE(m_window->findChildren<QDockWidget*>().size(), 5);
+
+    QCoreApplication::removeTranslator(&translator);
+    QCoreApplication::processEvents();
+    QCOMPARE(fileMenu->title(), QStringLiteral("&File"));
+    QTRY_COMPARE(m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"))->windowTitle(),
+                 QStringLiteral("Problems"));
+}
+
+void TestMainWindow::frenchMenuTitles()
+{
+    QTranslator french;
+    QVERIFY(french.load(QLocale(QStringLiteral("fr")), QStringLiteral("ggstudio"), QStringLiteral("_"),
+                        QStringLiteral(":/i18n")));
+    const QString expected = french.translate("editor::MainWindow", "&File");
+    if (expected.isEmpty())
+        QSKIP("The French translation of the menus is not written yet (translations/ggstudio_fr.ts)");
+
+    QVERIFY(m_translators->setLanguage(QStringLiteral("fr")));
+    QCoreApplication::processEvents();
+    auto* fileMenu = m_window->findChild<QMenu*>(QStringLiteral("fileMenu"));
+    QVERIFY(fileMenu);
+    QCOMPARE(fileMenu->title(), expected);
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "test_mainwindow.moc"
