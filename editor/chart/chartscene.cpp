@@ -160,6 +160,12 @@ void ChartScene::onModelReset()
     selectFromSelection();
 }
 
+void ChartScene::retranslate()
+{
+    onModelReset();
+    update();
+}
+
 void ChartScene::onDiagnosticsChanged()
 {
     for (StepItem* item : std::as_const(m_steps))

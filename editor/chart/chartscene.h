@@ -37,6 +37,9 @@ public:
     QString activeStep() const { return m_activeStep; }
     void setActiveStep(const QString& id);
 
+    // Redraws texts that come from the UI language (tooltips, frame titles).
+    void retranslate();
+
     StepItem* stepItem(const QString& id) const { return m_stepItems.value(id); }
     TransitionItem* transitionItem(const QString& id) const { return m_transitionItems.value(id); }
     FrameItem* frameItem(core::Family family) const;

@@ -141,4 +141,12 @@ void ChartView::revealSelection()
         ensureVisible(item, kRevealMargin, kRevealMargin);
 }
 
+// The scene is no widget: the view passes the language change on to it.
+void ChartView::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        m_scene->retranslate();
+    QGraphicsView::changeEvent(event);
+}
+
 } // namespace editor

@@ -30,6 +30,7 @@ signals:
     void zoomChanged(double zoom);
 
 protected:
+    void changeEvent(QEvent* event) override;
     bool focusNextPrevChild(bool next) override;
     void keyPressEvent(QKeyEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;

@@ -19,6 +19,7 @@
 
 #include <QApplication>
 #include <QTest>
+#include <QTranslator>
 #include <QWheelEvent>
 #include <QUndoStack>
 
@@ -78,6 +79,7 @@ private slots:
     void ctrlWheelZoomsAboutTheMouse();
     void tabLeavesPastTheLastElement();
     void replacedModelIsShown();
+    void languageChangeRetranslatesTooltips();
 
 private:
     Document* m_document = nullptr;
@@ -405,6 +407,37 @@ void TestChart::replacedModelIsShown()
     QCOMPARE(m_scene->transitionItem("A2->A1")->labelText(), QString("TRUE"));
     QVERIFY(!m_scene->transitionItem("A2->A1")->hasProblemMark());
     QCOMPARE(m_scene->selectedItems(), QList<QGraphicsItem*>{m_scene->stepItem("F1")});
+}
+
+namespace {
+
+// Answers every official state name with a marked text, as a real
+// translation would answer with the French one.
+class StateNameTranslator : public QTranslator {
+public:
+    QString translate(const char* context, const char* sourceText, const char*, int) const override
+    {
+        if (QByteArray(context) != "StateNames")
+            return {};
+        return QStringLiteral("[[%1]]").arg(QString::fromUtf8(sourceText));
+    }
+    bool isEmpty() const override { return false; }
+};
+
+} // namespace
+
+void TestChart::languageChangeRetranslatesTooltips()
+{
+    ChartView view(m_scene);
+    view.show();
+    StateNameTranslator translator;
+    QCoreApplication::installTranslator(&translator);
+    QCoreApplication::processEvents();
+    const QString translated = m_scene->stepItem("F1")->toolTip();
+    QCoreApplication::removeTranslator(&translator);
+    QCoreApplication::processEvents();
+    QVERIFY2(translated.contains("[[Normal production]]"), qPrintable(translated));
+    QVERIFY(!m_scene->stepItem("F1")->toolTip().contains("[["));
 }
 
 QTEST_MAIN(TestChart)
