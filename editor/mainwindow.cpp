@@ -278,13 +278,14 @@ void MainWindow::createStatusBar()
     statusBar()->addPermanentWidget(m_zoomIndicator);
 }
 
-// Docks sized for the screen: at 1366 x 768 the chart keeps about two
-// thirds of the width and of the height.
+// Docks sized for the screen: the chart sheet is wider than high, so on a
+// 1366 x 768 laptop the height is what limits it: the bottom docks start
+// low (they are tabbed and can be raised by dragging).
 void MainWindow::applyDefaultLayout()
 {
     const QSize window = size();
     const int rightWidth = std::clamp(window.width() * 26 / 100, 320, 440);
-    const int bottomHeight = std::clamp(window.height() * 28 / 100, 190, 320);
+    const int bottomHeight = std::clamp(window.height() * 21 / 100, 150, 320);
     resizeDocks({m_stepDock}, {rightWidth}, Qt::Horizontal);
     resizeDocks({m_variablesDock}, {bottomHeight}, Qt::Vertical);
 }

@@ -1,0 +1,1631 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de_DE">
+<context>
+    <name>AddVariableCommand</name>
+    <message>
+        <source>Add variable %1</source>
+        <translation>Variable %1 hinzufügen</translation>
+    </message>
+</context>
+<context>
+    <name>ChartExport</name>
+    <message>
+        <source>GEMMA-GRAFCET chart drawn by GG Studio</source>
+        <translation>GEMMA-GRAFCET-Diagramm, gezeichnet mit GG Studio</translation>
+    </message>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>Das SVG-Bild konnte nicht gezeichnet werden.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Nicht genug Speicher für ein Bild mit %1 × %2 Pixeln.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>Das PNG-Bild konnte nicht kodiert werden.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Das PDF-Dokument konnte nicht gezeichnet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>DiagnosticText</name>
+    <message>
+        <source>the name is empty</source>
+        <translation>der Name ist leer</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid IEC 61131-3 identifier: use ASCII letters, digits and &apos;_&apos;, not starting with a digit</source>
+        <translation>&apos;%1&apos; ist kein gültiger Bezeichner nach IEC 61131-3: ASCII-Buchstaben, Ziffern und &apos;_&apos; verwenden, nicht mit einer Ziffer beginnen</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; contains &apos;__&apos;, which IEC 61131-3 identifiers may not</source>
+        <translation>&apos;%1&apos; enthält &apos;__&apos;, was in Bezeichnern nach IEC 61131-3 nicht erlaubt ist</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; ends with &apos;_&apos;, which IEC 61131-3 identifiers may not</source>
+        <translation>&apos;%1&apos; endet mit &apos;_&apos;, was in Bezeichnern nach IEC 61131-3 nicht erlaubt ist</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is an IEC 61131-3 keyword or type name</source>
+        <translation>&apos;%1&apos; ist ein Schlüsselwort oder Typname von IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a name the generated code uses</source>
+        <translation>&apos;%1&apos; ist ein Name, den der generierte Code verwendet</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; does not occur in the condition.</source>
+        <translation>Der Merker auf &apos;%2&apos; in %1 ist ungültig: &apos;%2&apos; kommt in der Bedingung nicht vor.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is ambiguous: the condition uses both %2 and NOT %2, so the token could be neither normally open nor normally closed.</source>
+        <translation>Der Merker auf &apos;%2&apos; in %1 ist mehrdeutig: Die Bedingung verwendet sowohl %2 als auch NOT %2, daher kann der Merker weder Schließer noch Öffner sein.</translation>
+    </message>
+    <message>
+        <source>The token in %1 names &apos;%2&apos;, which is not a declared variable.</source>
+        <translation>Der Merker in %1 nennt &apos;%2&apos;, das keine deklarierte Variable ist.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is compared with &apos;=&apos; or &apos;&lt;&gt;&apos; in the condition, where it has no polarity; a token can only replace a literal %2 or NOT %2.</source>
+        <translation>Der Merker auf &apos;%2&apos; in %1 ist ungültig: &apos;%2&apos; wird in der Bedingung mit &apos;=&apos; oder &apos;&lt;&gt;&apos; verglichen und hat dort keine Polarität; ein Merker kann nur ein Literal %2 oder NOT %2 ersetzen.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: family transitions never wait for Complete.</source>
+        <translation>Der Merker auf &apos;%2&apos; in %1 ist wirkungslos und wird nicht generiert: Familientransitionen warten nie auf Complete.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: its source %3 is a simple step.</source>
+        <translation>Der Merker auf &apos;%2&apos; in %1 ist wirkungslos und wird nicht generiert: Sein Quellschritt %3 ist ein einfacher Schritt.</translation>
+    </message>
+    <message>
+        <source>The initial step %1 is hidden: the PLC would start in a state that has no code.</source>
+        <translation>Der Anfangsschritt %1 ist ausgeblendet: Die SPS würde in einem Zustand ohne Code starten.</translation>
+    </message>
+    <message>
+        <source>Step %1 has no visible outgoing transition: the machine would stay in it forever.</source>
+        <translation>Schritt %1 hat keine sichtbare ausgehende Transition: Die Maschine bliebe für immer darin.</translation>
+    </message>
+    <message>
+        <source>Step %1 has no visible incoming transition: it can never become active.</source>
+        <translation>Schritt %1 hat keine sichtbare eingehende Transition: Er kann nie aktiv werden.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
+        <translation>Die Bedingung von %1 ist leer: Für eine stets schaltbereite Transition TRUE eintragen.</translation>
+    </message>
+    <message>
+        <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
+        <translation>Die Familientransition %1 ist negiert, was wirkungslos ist: Familientransitionen warten nie auf Complete.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is FALSE: the transition can never fire (hide it instead).</source>
+        <translation>Die Bedingung von %1 ist FALSE: Die Transition kann nie schalten (besser ausblenden).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
+        <translation>Die Variable &apos;%1&apos; wird von keiner sichtbaren Transitionsbedingung verwendet.</translation>
+    </message>
+    <message>
+        <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
+        <translation>Schritt %1 ist vom Anfangsschritt %2 aus über sichtbare Transitionen nicht erreichbar: Er kann nie aktiv werden.</translation>
+    </message>
+    <message>
+        <source>Transition %1 is negated, which has no effect: its source %2 is a simple step, and negation only changes transitions out of macro and enclosing steps.</source>
+        <translation>Transition %1 ist negiert, was wirkungslos ist: Ihr Quellschritt %2 ist ein einfacher Schritt, und die Negation ändert nur Transitionen aus Makroschritten und einschließenden Schritten.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is TRUE and does not wait for Complete: the lower-priority transitions %2 can never fire.</source>
+        <translation>Die Bedingung von %1 ist TRUE und wartet nicht auf Complete: Die Transitionen niedrigerer Priorität %2 können nie schalten.</translation>
+    </message>
+    <message>
+        <source>Invalid variable name: %1.</source>
+        <translation>Ungültiger Variablenname: %1.</translation>
+    </message>
+    <message>
+        <source>Syntax error in the condition of %1: %2.</source>
+        <translation>Syntaxfehler in der Bedingung von %1: %2.</translation>
+    </message>
+    <message>
+        <source>In the condition of %1: &apos;%2&apos; is not a declared variable.</source>
+        <translation>In der Bedingung von %1: &apos;%2&apos; ist keine deklarierte Variable.</translation>
+    </message>
+    <message>
+        <source>Type error in the condition of %1: %2.</source>
+        <translation>Typfehler in der Bedingung von %1: %2.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is %3, and only BOOL variables can have a token.</source>
+        <translation>Der Merker auf &apos;%2&apos; in %1 ist ungültig: &apos;%2&apos; hat den Typ %3, und nur BOOL-Variablen können einen Merker haben.</translation>
+    </message>
+    <message>
+        <source>The default value of variable &apos;%1&apos; is invalid: %2.</source>
+        <translation>Der Anfangswert der Variablen &apos;%1&apos; ist ungültig: %2.</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>Information</source>
+        <translation>Information</translation>
+    </message>
+</context>
+<context>
+    <name>ElementLabels</name>
+    <message>
+        <source>F (family)</source>
+        <translation>F (Familie)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <extracomment>a transition: source step, arrow, target step</extracomment>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Simple step</source>
+        <translation>Einfacher Schritt</translation>
+    </message>
+    <message>
+        <source>Macro-step</source>
+        <translation>Makroschritt</translation>
+    </message>
+    <message>
+        <source>Enclosing step</source>
+        <translation>Einschließender Schritt</translation>
+    </message>
+    <message>
+        <source>hidden</source>
+        <translation>ausgeblendet</translation>
+    </message>
+    <message>
+        <source>source %1 hidden</source>
+        <translation>Quellschritt %1 ausgeblendet</translation>
+    </message>
+    <message>
+        <source>target %1 hidden</source>
+        <translation>Zielschritt %1 ausgeblendet</translation>
+    </message>
+</context>
+<context>
+    <name>MoveVariableCommand</name>
+    <message>
+        <source>Move variable %1</source>
+        <translation>Variable %1 verschieben</translation>
+    </message>
+</context>
+<context>
+    <name>PasteVariablesCommand</name>
+    <message>
+        <source>Paste variable %1</source>
+        <translation>Variable %1 einfügen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n variables</source>
+        <translation>
+            <numerusform>%n Variable einfügen</numerusform>
+            <numerusform>%n Variablen einfügen</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RecoveryPrompt</name>
+    <message>
+        <source>an untitled model</source>
+        <translation>ein unbenanntes Modell</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>GG Studio ended without saving %1.</source>
+        <translation>GG Studio wurde beendet, ohne %1 zu speichern.</translation>
+    </message>
+    <message>
+        <source>Autosave kept a copy on %1. Recover it? You can then save it or discard it.</source>
+        <translation>Die automatische Sicherung hat am %1 eine Kopie angelegt. Wiederherstellen? Sie können sie danach speichern oder verwerfen.</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>&amp;Verwerfen</translation>
+    </message>
+    <message>
+        <source>&amp;Not Now</source>
+        <translation>&amp;Nicht jetzt</translation>
+    </message>
+    <message>
+        <source>The autosaved copy could not be read.</source>
+        <translation>Die automatisch gesicherte Kopie konnte nicht gelesen werden.</translation>
+    </message>
+</context>
+<context>
+    <name>RemoveVariableCommand</name>
+    <message>
+        <source>Remove variable %1</source>
+        <translation>Variable %1 entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>RenameVariableCommand</name>
+    <message>
+        <source>Rename variable %1 to %2</source>
+        <translation>Variable %1 in %2 umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>ResetModelCommand</name>
+    <message>
+        <source>Reset to template</source>
+        <translation>Auf Vorlage zurücksetzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetConditionCommand</name>
+    <message>
+        <source>Edit condition of %1</source>
+        <translation>Bedingung von %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetCycleTimeCommand</name>
+    <message>
+        <source>Set cycle time to %1 ms</source>
+        <translation>Zykluszeit auf %1 ms setzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetDialectCommand</name>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+    <message>
+        <source>IEC</source>
+        <translation>IEC</translation>
+    </message>
+    <message>
+        <source>Set dialect to %1</source>
+        <translation>Dialekt auf %1 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetInitialStepCommand</name>
+    <message>
+        <source>Make %1 the initial step</source>
+        <translation>%1 zum Anfangsschritt machen</translation>
+    </message>
+</context>
+<context>
+    <name>SetModelNameCommand</name>
+    <message>
+        <source>Rename model</source>
+        <translation>Modell umbenennen</translation>
+    </message>
+</context>
+<context>
+    <name>SetNegatedCommand</name>
+    <message>
+        <source>Negate %1</source>
+        <translation>%1 negieren</translation>
+    </message>
+    <message>
+        <source>Remove negation of %1</source>
+        <translation>Negation von %1 aufheben</translation>
+    </message>
+</context>
+<context>
+    <name>SetPriorityCommand</name>
+    <message>
+        <source>Set priority of %1 to %2</source>
+        <translation>Priorität von %1 auf %2 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1</source>
+        <translation>Kommentar von %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepHiddenCommand</name>
+    <message>
+        <source>Hide step %1</source>
+        <translation>Schritt %1 ausblenden</translation>
+    </message>
+    <message>
+        <source>Show step %1</source>
+        <translation>Schritt %1 einblenden</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepTypeCommand</name>
+    <message>
+        <source>macro-step</source>
+        <translation>Makroschritt</translation>
+    </message>
+    <message>
+        <source>enclosing step</source>
+        <translation>einschließender Schritt</translation>
+    </message>
+    <message>
+        <source>simple step</source>
+        <translation>einfacher Schritt</translation>
+    </message>
+    <message>
+        <source>Set %1 to %2</source>
+        <translation>Typ von %1 festlegen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetTokensCommand</name>
+    <message>
+        <source>Set tokens of %1</source>
+        <translation>Merker von %1 festlegen</translation>
+    </message>
+</context>
+<context>
+    <name>SetTransitionHiddenCommand</name>
+    <message>
+        <source>Hide transition %1</source>
+        <translation>Transition %1 ausblenden</translation>
+    </message>
+    <message>
+        <source>Show transition %1</source>
+        <translation>Transition %1 einblenden</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableCommentCommand</name>
+    <message>
+        <source>Edit comment of %1</source>
+        <translation>Kommentar von %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableDefaultCommand</name>
+    <message>
+        <source>Set default of %1</source>
+        <translation>Anfangswert von %1 festlegen</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableTypeCommand</name>
+    <message>
+        <source>Set type of %1 to %2</source>
+        <translation>Typ von %1 auf %2 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>StateNames</name>
+    <message>
+        <source>Stop in initial state</source>
+        <translation>Halt im Anfangszustand</translation>
+    </message>
+    <message>
+        <source>Stop requested at end of cycle</source>
+        <translation>Angeforderter Halt am Zyklusende</translation>
+    </message>
+    <message>
+        <source>Stop requested in a given state</source>
+        <translation>Angeforderter Halt in einem bestimmten Zustand</translation>
+    </message>
+    <message>
+        <source>Stop obtained</source>
+        <translation>Erreichter Halt</translation>
+    </message>
+    <message>
+        <source>Preparation for restart after failure</source>
+        <translation>Vorbereitung für den Wiederanlauf nach Störung</translation>
+    </message>
+    <message>
+        <source>Operative part reset to initial state</source>
+        <translation>Rücksetzen des Prozesses in den Anfangszustand</translation>
+    </message>
+    <message>
+        <source>Operative part set to a given state</source>
+        <translation>Setzen des Prozesses in einen bestimmten Zustand</translation>
+    </message>
+    <message>
+        <source>Normal production</source>
+        <translation>Normalbetrieb</translation>
+    </message>
+    <message>
+        <source>Preparation run</source>
+        <translation>Vorbereitungsbetrieb</translation>
+    </message>
+    <message>
+        <source>Closing run</source>
+        <translation>Abschlussbetrieb</translation>
+    </message>
+    <message>
+        <source>Verification run out of order</source>
+        <translation>Prüfbetrieb ohne Reihenfolge</translation>
+    </message>
+    <message>
+        <source>Verification run in order</source>
+        <translation>Prüfbetrieb in Reihenfolge</translation>
+    </message>
+    <message>
+        <source>Test run</source>
+        <translation>Testbetrieb</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Not-Halt</translation>
+    </message>
+    <message>
+        <source>Diagnosis and/or failure handling</source>
+        <translation>Diagnose und/oder Störungsbehandlung</translation>
+    </message>
+    <message>
+        <source>Production despite failure</source>
+        <translation>Produktion trotz Störung</translation>
+    </message>
+    <message>
+        <source>Stop procedures</source>
+        <translation>Stoppverfahren</translation>
+    </message>
+    <message>
+        <source>Operation procedures</source>
+        <translation>Betriebsverfahren</translation>
+    </message>
+    <message>
+        <source>Failure procedures</source>
+        <translation>Störungsverfahren</translation>
+    </message>
+</context>
+<context>
+    <name>editor::Autosave</name>
+    <message>
+        <source>Cannot create the folder %1 for recovery copies</source>
+        <translation>Der Ordner %1 für Wiederherstellungskopien kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>Cannot write the recovery copy: %1</source>
+        <translation>Die Wiederherstellungskopie kann nicht geschrieben werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::Document</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Unbenannt</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportActions</name>
+    <message>
+        <source>Export &amp;PLCopen XML…</source>
+        <translation>&amp;PLCopen XML exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the PLC program as PLCopen XML, to import into a PLC programming tool</source>
+        <translation>Das SPS-Programm als PLCopen XML schreiben, zum Import in ein SPS-Programmierwerkzeug</translation>
+    </message>
+    <message>
+        <source>Export &amp;Structured Text…</source>
+        <translation>Strukturierten &amp;Text (ST) exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the PLC program as IEC 61131-3 Structured Text files</source>
+        <translation>Das SPS-Programm als Dateien in Strukturiertem Text (ST) nach IEC 61131-3 schreiben</translation>
+    </message>
+    <message>
+        <source>Export &amp;GG-Generator JSON…</source>
+        <translation>&amp;GG-Generator-JSON exportieren…</translation>
+    </message>
+    <message>
+        <source>Save the model in the format of the GG-Generator web tool</source>
+        <translation>Das Modell im Format des Webwerkzeugs GG-Generator speichern</translation>
+    </message>
+    <message>
+        <source>Export &amp;Chart…</source>
+        <translation>Diagramm &amp;exportieren…</translation>
+    </message>
+    <message>
+        <source>Save the chart as an SVG, PNG or PDF picture</source>
+        <translation>Das Diagramm als SVG-, PNG- oder PDF-Bild speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>&amp;Drucken…</translation>
+    </message>
+    <message>
+        <source>Print the chart</source>
+        <translation>Das Diagramm drucken</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… und %n weiterer</numerusform>
+            <numerusform>… und %n weitere</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export a Model with Errors</source>
+        <translation>Modell mit Fehlern exportieren</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s). The generated code marks each one with a comment, but it may not compile or may not behave as intended.</source>
+        <translation>
+            <numerusform>Das Modell hat %n Fehler. Der generierte Code markiert ihn mit einem Kommentar, lässt sich aber möglicherweise nicht übersetzen oder verhält sich nicht wie beabsichtigt.</numerusform>
+            <numerusform>Das Modell hat %n Fehler. Der generierte Code markiert jeden mit einem Kommentar, lässt sich aber möglicherweise nicht übersetzen oder verhält sich nicht wie beabsichtigt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Export Anyway</source>
+        <translation>&amp;Trotzdem exportieren</translation>
+    </message>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>PLCopen XML exportieren</translation>
+    </message>
+    <message>
+        <source>PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <source>Export Structured Text</source>
+        <translation>Strukturierten Text exportieren</translation>
+    </message>
+    <message>
+        <source>Structured Text (*.st)</source>
+        <translation>Strukturierter Text (*.st)</translation>
+    </message>
+    <message>
+        <source>Export Structured Text to a Folder</source>
+        <translation>Strukturierten Text in einen Ordner exportieren</translation>
+    </message>
+    <message>
+        <source>Export GG-Generator JSON</source>
+        <translation>GG-Generator-JSON exportieren</translation>
+    </message>
+    <message>
+        <source>GG-Generator JSON (*.json)</source>
+        <translation>GG-Generator-JSON (*.json)</translation>
+    </message>
+    <message>
+        <source>SVG picture (*.svg)</source>
+        <translation>SVG-Bild (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG-Bild (*.png)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>PDF-Dokument (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export Chart</source>
+        <translation>Diagramm exportieren</translation>
+    </message>
+    <message>
+        <source>Print Chart</source>
+        <translation>Diagramm drucken</translation>
+    </message>
+    <message>
+        <source>The printer could not be started.</source>
+        <translation>Der Drucker konnte nicht gestartet werden.</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>Exportiert nach %1</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportOptionsDialog</name>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>PLCopen XML exportieren</translation>
+    </message>
+    <message>
+        <source>Export Structured Text</source>
+        <translation>Strukturierten Text exportieren</translation>
+    </message>
+    <message>
+        <source>One file per POU, in a &amp;folder</source>
+        <translation>Eine Datei je POE, in einem &amp;Ordner</translation>
+    </message>
+    <message>
+        <source>One &amp;IEC 61131-3 file with every POU</source>
+        <translation>Eine &amp;IEC-61131-3-Datei mit allen POEs</translation>
+    </message>
+    <message>
+        <source>Files:</source>
+        <translation>Dateien:</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialekt:</translation>
+    </message>
+    <message>
+        <source>IEC writes PLCopen TC6 XML 2.01 with the globals in the configuration. CODESYS writes what CODESYS V3.5 imports, with a GVL.</source>
+        <translation>IEC schreibt PLCopen TC6 XML 2.01 mit den globalen Variablen in der Konfiguration. CODESYS schreibt, was CODESYS V3.5 importiert, mit einer GVL.</translation>
+    </message>
+    <message>
+        <source>The single file is always IEC 61131-3: CODESYS code names a GVL that IEC compilers do not know.</source>
+        <translation>Die einzelne Datei ist immer IEC 61131-3: CODESYS-Code verweist auf eine GVL, die IEC-Compiler nicht kennen.</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportieren…</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3 (Beremiz, OpenPLC, TwinCAT…)</source>
+        <translation>IEC 61131-3 (Beremiz, OpenPLC, TwinCAT…)</translation>
+    </message>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+</context>
+<context>
+    <name>editor::FrameItem</name>
+    <message>
+        <source>%1 — %2</source>
+        <extracomment>Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name</extracomment>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MainWindow</name>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatische Sicherung fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Bearbeiten</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Neu</translation>
+    </message>
+    <message>
+        <source>Start a new model from the GEMMA template</source>
+        <translation>Ein neues Modell aus der GEMMA-Vorlage beginnen</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Öffnen…</translation>
+    </message>
+    <message>
+        <source>Open a GG Studio model, a GG-Generator file or an exported PLCopen XML file</source>
+        <translation>Ein GG-Studio-Modell, eine GG-Generator-Datei oder eine exportierte PLCopen-XML-Datei öffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to Template…</source>
+        <translation>&amp;Auf Vorlage zurücksetzen…</translation>
+    </message>
+    <message>
+        <source>Put every state, transition, variable and setting back to the template</source>
+        <translation>Alle Zustände, Transitionen, Variablen und Einstellungen auf die Vorlage zurücksetzen</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Rückgängig</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Wiederherstellen: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Model Settings…</source>
+        <translation>&amp;Modelleinstellungen…</translation>
+    </message>
+    <message>
+        <source>Model name, PLC cycle time and code dialect</source>
+        <translation>Modellname, SPS-Zykluszeit und Code-Dialekt</translation>
+    </message>
+    <message>
+        <source>Show &amp;Hidden Elements</source>
+        <translation>&amp;Ausgeblendete Elemente anzeigen</translation>
+    </message>
+    <message>
+        <source>Draw the hidden states and transitions faded, so they can be selected</source>
+        <translation>Die ausgeblendeten Zustände und Transitionen blass zeichnen, damit sie ausgewählt werden können</translation>
+    </message>
+    <message>
+        <source>&amp;Fit Chart</source>
+        <translation>Diagramm ein&amp;passen</translation>
+    </message>
+    <message>
+        <source>&amp;Actual Size (100 %)</source>
+        <translation>&amp;Originalgröße (100 %)</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>Ver&amp;größern</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>Ver&amp;kleinern</translation>
+    </message>
+    <message>
+        <source>&amp;About GG Studio</source>
+        <translation>Über &amp;GG Studio</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Über &amp;Qt</translation>
+    </message>
+    <message>
+        <source>%1[*] — GG Studio</source>
+        <translation>%1[*] — GG Studio</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>The model “%1” has unsaved changes.</source>
+        <translation>Das Modell „%1“ hat ungespeicherte Änderungen.</translation>
+    </message>
+    <message>
+        <source>Do you want to save them?</source>
+        <translation>Möchten Sie sie speichern?</translation>
+    </message>
+    <message>
+        <source>All supported files (*.json *.xml)</source>
+        <translation>Alle unterstützten Dateien (*.json *.xml)</translation>
+    </message>
+    <message>
+        <source>GG Studio models (*.json)</source>
+        <translation>GG-Studio-Modelle (*.json)</translation>
+    </message>
+    <message>
+        <source>GG-Generator files (*.json)</source>
+        <translation>GG-Generator-Dateien (*.json)</translation>
+    </message>
+    <message>
+        <source>GG Studio PLCopen XML (*.xml)</source>
+        <translation>GG Studio PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Open Model</source>
+        <translation>Modell öffnen</translation>
+    </message>
+    <message>
+        <source>Could not open %1.</source>
+        <translation>%1 konnte nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>%1 geöffnet</translation>
+    </message>
+    <message>
+        <source>Imported %1: Save As keeps it as a GG Studio model</source>
+        <translation>%1 importiert: „Speichern unter“ legt es als GG-Studio-Modell ab</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>Save Model As</source>
+        <translation>Modell speichern unter</translation>
+    </message>
+    <message>
+        <source>Save Model</source>
+        <translation>Modell speichern</translation>
+    </message>
+    <message>
+        <source>Could not save %1.</source>
+        <translation>%1 konnte nicht gespeichert werden.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Recovered unsaved changes: save them to keep them</source>
+        <translation>Ungespeicherte Änderungen wiederhergestellt: Speichern Sie sie, um sie zu behalten</translation>
+    </message>
+    <message>
+        <source>Reset to Template</source>
+        <translation>Auf Vorlage zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Put every state, transition, variable and setting back to the GEMMA template? You can undo this.</source>
+        <translation>Alle Zustände, Transitionen, Variablen und Einstellungen auf die GEMMA-Vorlage zurücksetzen? Dies lässt sich rückgängig machen.</translation>
+    </message>
+    <message>
+        <source>About GG Studio</source>
+        <translation>Über GG Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 program that runs them (Structured Text, PLCopen XML).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Ein Editor für die GEMMA-GRAFCET-Methode: Wählen Sie die Betriebsarten einer Maschine auf der GEMMA-Vorlage, schreiben Sie die Bedingungen ihrer Transitionen und erzeugen Sie das Programm nach IEC 61131-3, das sie ausführt (Strukturierter Text, PLCopen XML).&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModelCommand</name>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 is the edit (&quot;Rename variable Stop to Halt&quot;), %2 why the model refused it</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModelSettingsDialog</name>
+    <message>
+        <source>Model Settings</source>
+        <translation>Modelleinstellungen</translation>
+    </message>
+    <message>
+        <source>The project name written into the exported PLCopen XML</source>
+        <translation>Der Projektname, der in das exportierte PLCopen XML geschrieben wird</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>The period of the cyclic PLC task that runs GEMMA</source>
+        <translation>Die Periode der zyklischen SPS-Task, die GEMMA ausführt</translation>
+    </message>
+    <message>
+        <source>The flavour of the generated Structured Text and its preview</source>
+        <translation>Die Variante des generierten Strukturierten Texts und seiner Vorschau</translation>
+    </message>
+    <message>
+        <source>Use the cycle time and dialect for &amp;new models</source>
+        <translation>Zykluszeit und Dialekt für neue &amp;Modelle verwenden</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>PLC &amp;cycle time:</source>
+        <translation>SPS-&amp;Zykluszeit:</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialekt:</translation>
+    </message>
+    <message>
+        <source>Change model settings</source>
+        <translation>Modelleinstellungen ändern</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemCounter</name>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n Fehler</numerusform>
+            <numerusform>%n Fehler</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n Warnung</numerusform>
+            <numerusform>%n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show the Problems panel</source>
+        <translation>Den Bereich „Probleme“ anzeigen</translation>
+    </message>
+    <message>
+        <source>No problems</source>
+        <translation>Keine Probleme</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemsDock</name>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Probleme</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Code</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <source>1 error</source>
+        <translation>1 Fehler</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n errors</source>
+        <translation>
+            <numerusform>%n Fehler</numerusform>
+            <numerusform>%n Fehler</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 Warnung</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warnings</source>
+        <translation>
+            <numerusform>%n Warnung</numerusform>
+            <numerusform>%n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>1 info</source>
+        <translation>1 Info</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n infos</source>
+        <translation>
+            <numerusform>%n Info</numerusform>
+            <numerusform>%n Infos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show or hide the errors</source>
+        <translation>Fehler ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <source>Show or hide the warnings</source>
+        <translation>Warnungen ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <source>Show or hide the information messages</source>
+        <translation>Informationsmeldungen ein- oder ausblenden</translation>
+    </message>
+</context>
+<context>
+    <name>editor::RecentFiles</name>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>Liste &amp;leeren</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StPreviewDock</name>
+    <message>
+        <source>Structured Text</source>
+        <translation>Strukturierter Text (ST)</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialekt:</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3</source>
+        <translation>IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+    <message>
+        <source>Beremiz, OpenPLC, TwinCAT, matiec: globals in the configuration</source>
+        <translation>Beremiz, OpenPLC, TwinCAT, matiec: globale Variablen in der Konfiguration</translation>
+    </message>
+    <message>
+        <source>CODESYS V3.5: globals in the list GVL, read as GVL.Name</source>
+        <translation>CODESYS V3.5: globale Variablen in der Liste GVL, gelesen als GVL.Name</translation>
+    </message>
+    <message>
+        <source>The flavour of the generated code; saved with the model</source>
+        <translation>Die Variante des generierten Codes; wird mit dem Modell gespeichert</translation>
+    </message>
+    <message>
+        <source>%1 is hidden: it generates no code.</source>
+        <translation>%1 ist ausgeblendet: Es wird kein Code generiert.</translation>
+    </message>
+    <message>
+        <source>This transition is not effective: it generates no code.</source>
+        <translation>Diese Transition ist nicht wirksam: Es wird kein Code generiert.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StepDock</name>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Select a step in the chart to see and edit its properties.</source>
+        <translation>Wählen Sie einen Schritt im Diagramm, um seine Eigenschaften zu sehen und zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>Simple step: no nested behaviour.
+Macro-step: its transitions wait until the nested behaviour is complete.
+Enclosing step: its transitions fire whatever the nested behaviour is doing.</source>
+        <translation>Einfacher Schritt: kein untergeordneter Ablauf.
+Makroschritt: Seine Transitionen warten, bis der untergeordnete Ablauf abgeschlossen ist.
+Einschließender Schritt: Seine Transitionen schalten unabhängig davon, was der untergeordnete Ablauf gerade tut.</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Typ:</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Anfangsschritt</translation>
+    </message>
+    <message>
+        <source>&amp;Hidden</source>
+        <translation>Aus&amp;geblendet</translation>
+    </message>
+    <message>
+        <source>A hidden step is not part of this machine: it generates no code, and its transitions are not effective.</source>
+        <translation>Ein ausgeblendeter Schritt gehört nicht zu dieser Maschine: Er erzeugt keinen Code, und seine Transitionen sind nicht wirksam.</translation>
+    </message>
+    <message>
+        <source>What this state does on this machine</source>
+        <translation>Was dieser Zustand bei dieser Maschine bewirkt</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>Incoming transitions</source>
+        <translation>Eingehende Transitionen</translation>
+    </message>
+    <message>
+        <source>Outgoing transitions, by priority</source>
+        <translation>Ausgehende Transitionen, nach Priorität</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Bedingung</translation>
+    </message>
+    <message>
+        <source>Click a transition to select it</source>
+        <translation>Klicken Sie auf eine Transition, um sie auszuwählen</translation>
+    </message>
+    <message>
+        <source>%1 · state number %2</source>
+        <translation>%1 · Zustandsnummer %2</translation>
+    </message>
+    <message>
+        <source>%1 is the initial step. There is always exactly one initial step: to change it, make another step initial.</source>
+        <translation>%1 ist der Anfangsschritt. Es gibt immer genau einen Anfangsschritt: Um ihn zu ändern, machen Sie einen anderen Schritt zum Anfangsschritt.</translation>
+    </message>
+    <message>
+        <source>Make %1 the initial step (the PLC starts in it). The current initial step is %2.</source>
+        <translation>%1 zum Anfangsschritt machen (die SPS startet darin). Der aktuelle Anfangsschritt ist %2.</translation>
+    </message>
+    <message>
+        <source>F (family) →</source>
+        <extracomment>an incoming transition: its source, an arrow</extracomment>
+        <translation>F (Familie) →</translation>
+    </message>
+    <message>
+        <source>%1 →</source>
+        <translation>%1 →</translation>
+    </message>
+    <message>
+        <source>F: → %1</source>
+        <extracomment>the family transition in the outgoing list of an F state</extracomment>
+        <translation>F: → %1</translation>
+    </message>
+    <message>
+        <source>%1: → %2</source>
+        <extracomment>an outgoing transition: priority, arrow, target (&quot;1: → F4&quot;); – when it has none</extracomment>
+        <translation>%1: → %2</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source>Family transition: evaluated before the own transitions of every visible F state.</source>
+        <translation>Familientransition: wird vor den eigenen Transitionen jedes sichtbaren F-Zustands ausgewertet.</translation>
+    </message>
+    <message>
+        <source>Negated</source>
+        <translation>Negiert</translation>
+    </message>
+    <message>
+        <source>Condition: %1</source>
+        <translation>Bedingung: %1</translation>
+    </message>
+    <message>
+        <source>Not effective (%1): generates no code.</source>
+        <translation>Nicht wirksam (%1): erzeugt keinen Code.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StepItem</name>
+    <message>
+        <source>Simple step</source>
+        <translation>Einfacher Schritt</translation>
+    </message>
+    <message>
+        <source>Macro-step</source>
+        <translation>Makroschritt</translation>
+    </message>
+    <message>
+        <source>Enclosing step</source>
+        <translation>Einschließender Schritt</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, Anfangsschritt</translation>
+    </message>
+    <message>
+        <source>%1, hidden</source>
+        <translation>%1, ausgeblendet</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TransitionDock</name>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Select a transition in the chart to see and edit its condition.</source>
+        <translation>Wählen Sie eine Transition im Diagramm, um ihre Bedingung zu sehen und zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Klicken Sie auf einen Schritt, um ihn auszuwählen</translation>
+    </message>
+    <message>
+        <source>C&amp;ondition:</source>
+        <translation>&amp;Bedingung:</translation>
+    </message>
+    <message>
+        <source>e.g. Start AND NOT Stop</source>
+        <translation>z. B. Start AND NOT Stop</translation>
+    </message>
+    <message>
+        <source>Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparisons and arithmetic.
+Ctrl+Space completes a variable name.</source>
+        <translation>Strukturierter Text: deklarierte Variablen, Zahlen, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, Vergleiche und Arithmetik.
+Strg+Leertaste vervollständigt einen Variablennamen.</translation>
+    </message>
+    <message>
+        <source>&amp;Priority:</source>
+        <translation>&amp;Priorität:</translation>
+    </message>
+    <message>
+        <source>&amp;Negated</source>
+        <translation>&amp;Negiert</translation>
+    </message>
+    <message>
+        <source>Negation flips when this transition waits for the nested behaviour of its source:
+a negated transition out of a macro-step ignores Complete;
+a negated transition out of an enclosing step waits for Complete.</source>
+        <translation>Die Negation kehrt um, ob diese Transition auf den untergeordneten Ablauf ihres Quellschritts wartet:
+Eine negierte Transition aus einem Makroschritt ignoriert Complete;
+eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.</translation>
+    </message>
+    <message>
+        <source>&amp;Hidden</source>
+        <translation>&amp;Ausgeblendet</translation>
+    </message>
+    <message>
+        <source>A hidden transition is not part of this machine: it generates no code.</source>
+        <translation>Eine ausgeblendete Transition gehört nicht zu dieser Maschine: Sie erzeugt keinen Code.</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Merker</translation>
+    </message>
+    <message>
+        <source>F (family)</source>
+        <translation>F (Familie)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <extracomment>a transition: source step, arrow, target step</extracomment>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Not effective (%1): generates no code.</source>
+        <translation>Nicht wirksam (%1): erzeugt keinen Code.</translation>
+    </message>
+    <message>
+        <source>First</source>
+        <translation>Erste</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>The family transition is evaluated before the own transitions of every visible F state.</source>
+        <translation>Die Familientransition wird vor den eigenen Transitionen jedes sichtbaren F-Zustands ausgewertet.</translation>
+    </message>
+    <message>
+        <source>Only effective transitions have a priority: show this transition and both its steps first.</source>
+        <translation>Nur wirksame Transitionen haben eine Priorität: Blenden Sie zuerst diese Transition und ihre beiden Schritte ein.</translation>
+    </message>
+    <message>
+        <source> of %1</source>
+        <extracomment>after the priority in its spin box: &quot;2 of 5&quot;</extracomment>
+        <translation> von %1</translation>
+    </message>
+    <message>
+        <source>1 is evaluated first among the effective transitions out of %1; the others move to make room.</source>
+        <translation>1 wird unter den wirksamen Transitionen aus %1 zuerst ausgewertet; die anderen rücken nach, um Platz zu machen.</translation>
+    </message>
+    <message>
+        <source>Negation has no effect here: family transitions never wait for Complete.</source>
+        <translation>Die Negation ist hier wirkungslos: Familientransitionen warten nie auf Complete.</translation>
+    </message>
+    <message>
+        <source>Negation has no effect here: %1 is a simple step, and only transitions out of macro-steps and enclosing steps wait for Complete.</source>
+        <translation>Die Negation ist hier wirkungslos: %1 ist ein einfacher Schritt, und nur Transitionen aus Makroschritten und einschließenden Schritten warten auf Complete.</translation>
+    </message>
+    <message>
+        <source>Fires without waiting for the nested behaviour of macro-step %1 to complete.</source>
+        <translation>Schaltet, ohne auf den Abschluss des untergeordneten Ablaufs von Makroschritt %1 zu warten.</translation>
+    </message>
+    <message>
+        <source>Waits until the nested behaviour of macro-step %1 is complete (%1.Complete). Negate it to fire at once.</source>
+        <translation>Wartet, bis der untergeordnete Ablauf von Makroschritt %1 abgeschlossen ist (%1.Complete). Negieren, um sofort zu schalten.</translation>
+    </message>
+    <message>
+        <source>Waits until the nested behaviour of enclosing step %1 is complete (%1.Complete).</source>
+        <translation>Wartet, bis der untergeordnete Ablauf des einschließenden Schritts %1 abgeschlossen ist (%1.Complete).</translation>
+    </message>
+    <message>
+        <source>Fires whatever the nested behaviour of enclosing step %1 is doing. Negate it to wait for %1.Complete.</source>
+        <translation>Schaltet unabhängig davon, was der untergeordnete Ablauf des einschließenden Schritts %1 gerade tut. Negieren, um auf %1.Complete zu warten.</translation>
+    </message>
+    <message>
+        <source>Token on %1 (compared: no polarity)</source>
+        <translation>Merker auf %1 (verglichen: keine Polarität)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (both NO and NC)</source>
+        <translation>Merker auf %1 (sowohl Schließer als auch Öffner)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (NC)</source>
+        <translation>Merker auf %1 (Öffner)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (NO)</source>
+        <translation>Merker auf %1 (Schließer)</translation>
+    </message>
+    <message>
+        <source>A token replaces a literal %1 or NOT %1: rewrite the condition so that %1 has one polarity.</source>
+        <translation>Ein Merker ersetzt ein Literal %1 oder NOT %1: Schreiben Sie die Bedingung so um, dass %1 nur eine Polarität hat.</translation>
+    </message>
+    <message>
+        <source>Normally closed: remembers that %1 was FALSE while the nested behaviour of %2 was not complete.</source>
+        <translation>Öffner: merkt sich, dass %1 FALSE war, während der untergeordnete Ablauf von %2 nicht abgeschlossen war.</translation>
+    </message>
+    <message>
+        <source>Normally open: remembers that %1 was TRUE while the nested behaviour of %2 was not complete.</source>
+        <translation>Schließer: merkt sich, dass %1 TRUE war, während der untergeordnete Ablauf von %2 nicht abgeschlossen war.</translation>
+    </message>
+    <message>
+        <source>Generated as %1_%2_%3_MEM.</source>
+        <translation>Generiert als %1_%2_%3_MEM.</translation>
+    </message>
+    <message>
+        <source>Token on %1 (not a BOOL variable of the condition)</source>
+        <translation>Merker auf %1 (keine BOOL-Variable der Bedingung)</translation>
+    </message>
+    <message>
+        <source>Uncheck to remove this token.</source>
+        <translation>Abwählen, um diesen Merker zu entfernen.</translation>
+    </message>
+    <message>
+        <source>Family transitions never wait for Complete, so tokens do not apply to them.</source>
+        <translation>Familientransitionen warten nie auf Complete, daher gelten Merker für sie nicht.</translation>
+    </message>
+    <message>
+        <source>Tokens apply to transitions out of macro-steps and enclosing steps; %1 is a simple step.</source>
+        <translation>Merker gelten für Transitionen aus Makroschritten und einschließenden Schritten; %1 ist ein einfacher Schritt.</translation>
+    </message>
+    <message>
+        <source>Correct the condition to choose its tokens.</source>
+        <translation>Korrigieren Sie die Bedingung, um ihre Merker zu wählen.</translation>
+    </message>
+    <message>
+        <source>The condition uses no BOOL variable.</source>
+        <translation>Die Bedingung verwendet keine BOOL-Variable.</translation>
+    </message>
+    <message>
+        <source>A token keeps a short pulse of a BOOL variable that occurs while the nested behaviour of %1 is not yet complete.</source>
+        <translation>Ein Merker hält einen kurzen Impuls einer BOOL-Variablen fest, der auftritt, während der untergeordnete Ablauf von %1 noch nicht abgeschlossen ist.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TransitionItem</name>
+    <message>
+        <source>Family transition: applies to every F state</source>
+        <translation>Familientransition: gilt für jeden F-Zustand</translation>
+    </message>
+    <message>
+        <source>Priority %1</source>
+        <translation>Priorität %1</translation>
+    </message>
+    <message>
+        <source>Not effective (hidden)</source>
+        <translation>Nicht wirksam (ausgeblendet)</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negiert</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Bedingung:</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <source>Tokens: %1</source>
+        <translation>Merker: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesDock</name>
+    <message>
+        <source>Variables</source>
+        <translation>Variablen</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filter</translation>
+    </message>
+    <message>
+        <source>Show only the variables whose name, type, default or comment contains this text</source>
+        <translation>Nur die Variablen anzeigen, deren Name, Typ, Anfangswert oder Kommentar diesen Text enthält</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a BOOL variable after the current one</source>
+        <translation>Eine BOOL-Variable nach der aktuellen hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <source>Duplicate the selected variables</source>
+        <translation>Die ausgewählten Variablen duplizieren</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Nach oben</translation>
+    </message>
+    <message>
+        <source>Move the current variable up (declaration order)</source>
+        <translation>Die aktuelle Variable nach oben verschieben (Deklarationsreihenfolge)</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Nach unten</translation>
+    </message>
+    <message>
+        <source>Move the current variable down (declaration order)</source>
+        <translation>Die aktuelle Variable nach unten verschieben (Deklarationsreihenfolge)</translation>
+    </message>
+    <message>
+        <source>Sort by Name</source>
+        <translation>Nach Name sortieren</translation>
+    </message>
+    <message>
+        <source>Sort the declarations by name (one undo step)</source>
+        <translation>Die Deklarationen nach Name sortieren (ein Rückgängig-Schritt)</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Kopieren</translation>
+    </message>
+    <message>
+        <source>Paste</source>
+        <translation>Einfügen</translation>
+    </message>
+    <message>
+        <source>Variable%1</source>
+        <translation>Variable%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n variables</source>
+        <translation>
+            <numerusform>%n Variable entfernen</numerusform>
+            <numerusform>%n Variablen entfernen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Sort variables by name</source>
+        <translation>Variablen nach Name sortieren</translation>
+    </message>
+    <message>
+        <source>Remove the selected variables</source>
+        <translation>Die ausgewählten Variablen entfernen</translation>
+    </message>
+    <message>
+        <source>Copy the selected variables as tab-separated rows</source>
+        <translation>Die ausgewählten Variablen als tabulatorgetrennte Zeilen kopieren</translation>
+    </message>
+    <message>
+        <source>Paste rows from a spreadsheet: name, type, default and comment</source>
+        <translation>Zeilen aus einer Tabellenkalkulation einfügen: Name, Typ, Anfangswert und Kommentar</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesTableModel</name>
+    <message>
+        <source>No default: the PLC starts with %1.</source>
+        <translation>Kein Anfangswert: Die SPS startet mit %1.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a supported type: use one of %2.</source>
+        <translation>&apos;%1&apos; ist kein unterstützter Typ: Verwenden Sie einen von %2.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Anfangswert</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Kommentar</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3 identifier, unique ignoring case. Renaming updates every condition.</source>
+        <translation>Bezeichner nach IEC 61131-3, eindeutig ohne Beachtung der Groß-/Kleinschreibung. Umbenennen aktualisiert jede Bedingung.</translation>
+    </message>
+    <message>
+        <source>Elementary IEC 61131-3 type</source>
+        <translation>Elementarer Datentyp nach IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>Initial value, a literal of the type; empty for the type&apos;s implicit default</source>
+        <translation>Anfangswert, ein Literal des Typs; leer für den impliziten Standardwert des Typs</translation>
+    </message>
+    <message>
+        <source>Free text, written into the generated declarations</source>
+        <translation>Freier Text, wird in die generierten Deklarationen geschrieben</translation>
+    </message>
+    <message>
+        <source>Line %1: the name is empty.</source>
+        <translation>Zeile %1: Der Name ist leer.</translation>
+    </message>
+    <message>
+        <source>Line %1: &apos;%2&apos; is not a supported type: use one of %3.</source>
+        <translation>Zeile %1: &apos;%2&apos; ist kein unterstützter Typ: Verwenden Sie einen von %3.</translation>
+    </message>
+    <message>
+        <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
+        <translation>Es gibt keine Variablen zum Einfügen: Kopieren Sie Zeilen mit Name, Typ, Anfangswert und Kommentar, getrennt durch Tabulatoren.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ZoomIndicator</name>
+    <message>
+        <source>Zoom: %1 %</source>
+        <translation>Zoom: %1 %</translation>
+    </message>
+    <message>
+        <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
+        <translation>Strg+Mausrad zoomt um den Mauszeiger; Strg+0 passt das Diagramm ein</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Editor for the GEMMA-GRAFCET method of specifying machine operating modes</source>
+        <translation>Editor für die GEMMA-GRAFCET-Methode zur Spezifikation der Betriebsarten von Maschinen</translation>
+    </message>
+    <message>
+        <source>The model file to open (GG Studio JSON, GG-Generator JSON or GG Studio PLCopen XML).</source>
+        <translation>Die zu öffnende Modelldatei (GG-Studio-JSON, GG-Generator-JSON oder GG-Studio-PLCopen-XML).</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,82 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en_US">
+<context>
+    <name>PasteVariablesCommand</name>
+    <message numerus="yes">
+        <source>Paste %n variables</source>
+        <translation>
+            <numerusform>Paste %n variable</numerusform>
+            <numerusform>Paste %n variables</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportActions</name>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… and %n more</numerusform>
+            <numerusform>… and %n more</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s). The generated code marks each one with a comment, but it may not compile or may not behave as intended.</source>
+        <translation>
+            <numerusform>The model has %n error. The generated code marks each one with a comment, but it may not compile or may not behave as intended.</numerusform>
+            <numerusform>The model has %n errors. The generated code marks each one with a comment, but it may not compile or may not behave as intended.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemCounter</name>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errors</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n warning</numerusform>
+            <numerusform>%n warnings</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemsDock</name>
+    <message numerus="yes">
+        <source>%n errors</source>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errors</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warnings</source>
+        <translation>
+            <numerusform>%n warning</numerusform>
+            <numerusform>%n warnings</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n infos</source>
+        <translation>
+            <numerusform>%n info</numerusform>
+            <numerusform>%n infos</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesDock</name>
+    <message numerus="yes">
+        <source>Remove %n variables</source>
+        <translation>
+            <numerusform>Remove %n variable</numerusform>
+            <numerusform>Remove %n variables</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,1631 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es_ES">
+<context>
+    <name>AddVariableCommand</name>
+    <message>
+        <source>Add variable %1</source>
+        <translation>Añadir la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>ChartExport</name>
+    <message>
+        <source>GEMMA-GRAFCET chart drawn by GG Studio</source>
+        <translation>Diagrama GEMMA-GRAFCET dibujado con GG Studio</translation>
+    </message>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>No se ha podido dibujar la imagen SVG.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>No hay memoria suficiente para una imagen de %1 × %2 píxeles.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>No se ha podido codificar la imagen PNG.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>No se ha podido dibujar el documento PDF.</translation>
+    </message>
+</context>
+<context>
+    <name>DiagnosticText</name>
+    <message>
+        <source>the name is empty</source>
+        <translation>el nombre está vacío</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid IEC 61131-3 identifier: use ASCII letters, digits and &apos;_&apos;, not starting with a digit</source>
+        <translation>&apos;%1&apos; no es un identificador IEC 61131-3 válido: use letras ASCII, dígitos y &apos;_&apos;, sin empezar por un dígito</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; contains &apos;__&apos;, which IEC 61131-3 identifiers may not</source>
+        <translation>&apos;%1&apos; contiene &apos;__&apos;, lo que no admiten los identificadores IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; ends with &apos;_&apos;, which IEC 61131-3 identifiers may not</source>
+        <translation>&apos;%1&apos; termina en &apos;_&apos;, lo que no admiten los identificadores IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is an IEC 61131-3 keyword or type name</source>
+        <translation>&apos;%1&apos; es una palabra clave o un nombre de tipo IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a name the generated code uses</source>
+        <translation>&apos;%1&apos; es un nombre que usa el código generado</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; does not occur in the condition.</source>
+        <translation>La memoria de &apos;%2&apos; en %1 no es válida: &apos;%2&apos; no aparece en la condición.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is ambiguous: the condition uses both %2 and NOT %2, so the token could be neither normally open nor normally closed.</source>
+        <translation>La memoria de &apos;%2&apos; en %1 es ambigua: la condición usa a la vez %2 y NOT %2, por lo que la memoria no puede ser ni normalmente abierta ni normalmente cerrada.</translation>
+    </message>
+    <message>
+        <source>The token in %1 names &apos;%2&apos;, which is not a declared variable.</source>
+        <translation>Una memoria de %1 se refiere a &apos;%2&apos;, que no es una variable declarada.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is compared with &apos;=&apos; or &apos;&lt;&gt;&apos; in the condition, where it has no polarity; a token can only replace a literal %2 or NOT %2.</source>
+        <translation>La memoria de &apos;%2&apos; en %1 no es válida: &apos;%2&apos; se compara con &apos;=&apos; o &apos;&lt;&gt;&apos; en la condición, donde no tiene polaridad; una memoria solo puede sustituir a un literal %2 o NOT %2.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: family transitions never wait for Complete.</source>
+        <translation>La memoria de &apos;%2&apos; en %1 no tiene efecto y no se genera: las transiciones de familia nunca esperan a Complete.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: its source %3 is a simple step.</source>
+        <translation>La memoria de &apos;%2&apos; en %1 no tiene efecto y no se genera: su etapa de origen %3 es una etapa simple.</translation>
+    </message>
+    <message>
+        <source>The initial step %1 is hidden: the PLC would start in a state that has no code.</source>
+        <translation>La etapa inicial %1 está oculta: el PLC arrancaría en un estado sin código.</translation>
+    </message>
+    <message>
+        <source>Step %1 has no visible outgoing transition: the machine would stay in it forever.</source>
+        <translation>La etapa %1 no tiene ninguna transición de salida visible: la máquina se quedaría en ella para siempre.</translation>
+    </message>
+    <message>
+        <source>Step %1 has no visible incoming transition: it can never become active.</source>
+        <translation>La etapa %1 no tiene ninguna transición de entrada visible: nunca puede activarse.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
+        <translation>La condición de %1 está vacía: escriba TRUE para una transición siempre franqueable.</translation>
+    </message>
+    <message>
+        <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
+        <translation>La transición de familia %1 está negada, lo que no tiene efecto: las transiciones de familia nunca esperan a Complete.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is FALSE: the transition can never fire (hide it instead).</source>
+        <translation>La condición de %1 es FALSE: la transición nunca puede franquearse (ocúltela en su lugar).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
+        <translation>La variable &apos;%1&apos; no se usa en ninguna condición de transición visible.</translation>
+    </message>
+    <message>
+        <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
+        <translation>La etapa %1 no es alcanzable desde la etapa inicial %2 a través de transiciones visibles: nunca puede activarse.</translation>
+    </message>
+    <message>
+        <source>Transition %1 is negated, which has no effect: its source %2 is a simple step, and negation only changes transitions out of macro and enclosing steps.</source>
+        <translation>La transición %1 está negada, lo que no tiene efecto: su etapa de origen %2 es una etapa simple, y la negación solo cambia las transiciones que salen de macroetapas y etapas encapsulantes.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is TRUE and does not wait for Complete: the lower-priority transitions %2 can never fire.</source>
+        <translation>La condición de %1 es TRUE y no espera a Complete: las transiciones de menor prioridad %2 nunca pueden franquearse.</translation>
+    </message>
+    <message>
+        <source>Invalid variable name: %1.</source>
+        <translation>Nombre de variable no válido: %1.</translation>
+    </message>
+    <message>
+        <source>Syntax error in the condition of %1: %2.</source>
+        <translation>Error de sintaxis en la condición de %1: %2.</translation>
+    </message>
+    <message>
+        <source>In the condition of %1: &apos;%2&apos; is not a declared variable.</source>
+        <translation>En la condición de %1: &apos;%2&apos; no es una variable declarada.</translation>
+    </message>
+    <message>
+        <source>Type error in the condition of %1: %2.</source>
+        <translation>Error de tipo en la condición de %1: %2.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is %3, and only BOOL variables can have a token.</source>
+        <translation>La memoria de &apos;%2&apos; en %1 no es válida: &apos;%2&apos; es de tipo %3, y solo las variables BOOL pueden tener memoria.</translation>
+    </message>
+    <message>
+        <source>The default value of variable &apos;%1&apos; is invalid: %2.</source>
+        <translation>El valor inicial de la variable &apos;%1&apos; no es válido: %2.</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Error</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Advertencia</translation>
+    </message>
+    <message>
+        <source>Information</source>
+        <translation>Información</translation>
+    </message>
+</context>
+<context>
+    <name>ElementLabels</name>
+    <message>
+        <source>F (family)</source>
+        <translation>F (familia)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <extracomment>a transition: source step, arrow, target step</extracomment>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Simple step</source>
+        <translation>Etapa simple</translation>
+    </message>
+    <message>
+        <source>Macro-step</source>
+        <translation>Macroetapa</translation>
+    </message>
+    <message>
+        <source>Enclosing step</source>
+        <translation>Etapa encapsulante</translation>
+    </message>
+    <message>
+        <source>hidden</source>
+        <translation>oculta</translation>
+    </message>
+    <message>
+        <source>source %1 hidden</source>
+        <translation>etapa de origen %1 oculta</translation>
+    </message>
+    <message>
+        <source>target %1 hidden</source>
+        <translation>etapa de destino %1 oculta</translation>
+    </message>
+</context>
+<context>
+    <name>MoveVariableCommand</name>
+    <message>
+        <source>Move variable %1</source>
+        <translation>Mover la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>PasteVariablesCommand</name>
+    <message>
+        <source>Paste variable %1</source>
+        <translation>Pegar la variable %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n variables</source>
+        <translation>
+            <numerusform>Pegar %n variable</numerusform>
+            <numerusform>Pegar %n variables</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RecoveryPrompt</name>
+    <message>
+        <source>an untitled model</source>
+        <translation>un modelo sin título</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Changes</source>
+        <translation>Recuperar los cambios no guardados</translation>
+    </message>
+    <message>
+        <source>GG Studio ended without saving %1.</source>
+        <translation>GG Studio se cerró sin guardar %1.</translation>
+    </message>
+    <message>
+        <source>Autosave kept a copy on %1. Recover it? You can then save it or discard it.</source>
+        <translation>El guardado automático conservó una copia el %1. ¿Recuperarla? Después podrá guardarla o descartarla.</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Recuperar</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>&amp;Descartar</translation>
+    </message>
+    <message>
+        <source>&amp;Not Now</source>
+        <translation>A&amp;hora no</translation>
+    </message>
+    <message>
+        <source>The autosaved copy could not be read.</source>
+        <translation>No se ha podido leer la copia guardada automáticamente.</translation>
+    </message>
+</context>
+<context>
+    <name>RemoveVariableCommand</name>
+    <message>
+        <source>Remove variable %1</source>
+        <translation>Eliminar la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>RenameVariableCommand</name>
+    <message>
+        <source>Rename variable %1 to %2</source>
+        <translation>Renombrar la variable %1 a %2</translation>
+    </message>
+</context>
+<context>
+    <name>ResetModelCommand</name>
+    <message>
+        <source>Reset to template</source>
+        <translation>Restablecer la plantilla</translation>
+    </message>
+</context>
+<context>
+    <name>SetConditionCommand</name>
+    <message>
+        <source>Edit condition of %1</source>
+        <translation>Editar la condición de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetCycleTimeCommand</name>
+    <message>
+        <source>Set cycle time to %1 ms</source>
+        <translation>Fijar el tiempo de ciclo en %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>SetDialectCommand</name>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+    <message>
+        <source>IEC</source>
+        <translation>IEC</translation>
+    </message>
+    <message>
+        <source>Set dialect to %1</source>
+        <translation>Cambiar el dialecto a %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetInitialStepCommand</name>
+    <message>
+        <source>Make %1 the initial step</source>
+        <translation>Hacer de %1 la etapa inicial</translation>
+    </message>
+</context>
+<context>
+    <name>SetModelNameCommand</name>
+    <message>
+        <source>Rename model</source>
+        <translation>Renombrar el modelo</translation>
+    </message>
+</context>
+<context>
+    <name>SetNegatedCommand</name>
+    <message>
+        <source>Negate %1</source>
+        <translation>Negar %1</translation>
+    </message>
+    <message>
+        <source>Remove negation of %1</source>
+        <translation>Quitar la negación de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPriorityCommand</name>
+    <message>
+        <source>Set priority of %1 to %2</source>
+        <translation>Fijar la prioridad de %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1</source>
+        <translation>Editar el comentario de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepHiddenCommand</name>
+    <message>
+        <source>Hide step %1</source>
+        <translation>Ocultar la etapa %1</translation>
+    </message>
+    <message>
+        <source>Show step %1</source>
+        <translation>Mostrar la etapa %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepTypeCommand</name>
+    <message>
+        <source>macro-step</source>
+        <translation>macroetapa</translation>
+    </message>
+    <message>
+        <source>enclosing step</source>
+        <translation>etapa encapsulante</translation>
+    </message>
+    <message>
+        <source>simple step</source>
+        <translation>etapa simple</translation>
+    </message>
+    <message>
+        <source>Set %1 to %2</source>
+        <translation>Convertir %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetTokensCommand</name>
+    <message>
+        <source>Set tokens of %1</source>
+        <translation>Definir las memorias de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetTransitionHiddenCommand</name>
+    <message>
+        <source>Hide transition %1</source>
+        <translation>Ocultar la transición %1</translation>
+    </message>
+    <message>
+        <source>Show transition %1</source>
+        <translation>Mostrar la transición %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableCommentCommand</name>
+    <message>
+        <source>Edit comment of %1</source>
+        <translation>Editar el comentario de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableDefaultCommand</name>
+    <message>
+        <source>Set default of %1</source>
+        <translation>Cambiar el valor inicial de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableTypeCommand</name>
+    <message>
+        <source>Set type of %1 to %2</source>
+        <translation>Cambiar el tipo de %1 a %2</translation>
+    </message>
+</context>
+<context>
+    <name>StateNames</name>
+    <message>
+        <source>Stop in initial state</source>
+        <translation>Parada en el estado inicial</translation>
+    </message>
+    <message>
+        <source>Stop requested at end of cycle</source>
+        <translation>Parada solicitada a fin de ciclo</translation>
+    </message>
+    <message>
+        <source>Stop requested in a given state</source>
+        <translation>Parada solicitada en un estado determinado</translation>
+    </message>
+    <message>
+        <source>Stop obtained</source>
+        <translation>Parada obtenida</translation>
+    </message>
+    <message>
+        <source>Preparation for restart after failure</source>
+        <translation>Preparación para la puesta en marcha tras un fallo</translation>
+    </message>
+    <message>
+        <source>Operative part reset to initial state</source>
+        <translation>Puesta de la parte operativa en el estado inicial</translation>
+    </message>
+    <message>
+        <source>Operative part set to a given state</source>
+        <translation>Puesta de la parte operativa en un estado determinado</translation>
+    </message>
+    <message>
+        <source>Normal production</source>
+        <translation>Producción normal</translation>
+    </message>
+    <message>
+        <source>Preparation run</source>
+        <translation>Marcha de preparación</translation>
+    </message>
+    <message>
+        <source>Closing run</source>
+        <translation>Marcha de cierre</translation>
+    </message>
+    <message>
+        <source>Verification run out of order</source>
+        <translation>Marcha de verificación en desorden</translation>
+    </message>
+    <message>
+        <source>Verification run in order</source>
+        <translation>Marcha de verificación en orden</translation>
+    </message>
+    <message>
+        <source>Test run</source>
+        <translation>Marcha de test</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Parada de emergencia</translation>
+    </message>
+    <message>
+        <source>Diagnosis and/or failure handling</source>
+        <translation>Diagnóstico y/o tratamiento de fallos</translation>
+    </message>
+    <message>
+        <source>Production despite failure</source>
+        <translation>Producción a pesar de los fallos</translation>
+    </message>
+    <message>
+        <source>Stop procedures</source>
+        <translation>Procedimientos de parada</translation>
+    </message>
+    <message>
+        <source>Operation procedures</source>
+        <translation>Procedimientos de funcionamiento</translation>
+    </message>
+    <message>
+        <source>Failure procedures</source>
+        <translation>Procedimientos de fallo</translation>
+    </message>
+</context>
+<context>
+    <name>editor::Autosave</name>
+    <message>
+        <source>Cannot create the folder %1 for recovery copies</source>
+        <translation>No se puede crear la carpeta %1 para las copias de recuperación</translation>
+    </message>
+    <message>
+        <source>Cannot write the recovery copy: %1</source>
+        <translation>No se puede escribir la copia de recuperación: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::Document</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Sin título</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportActions</name>
+    <message>
+        <source>Export &amp;PLCopen XML…</source>
+        <translation>Exportar a &amp;PLCopen XML…</translation>
+    </message>
+    <message>
+        <source>Write the PLC program as PLCopen XML, to import into a PLC programming tool</source>
+        <translation>Escribir el programa del PLC en PLCopen XML, para importarlo en una herramienta de programación de PLC</translation>
+    </message>
+    <message>
+        <source>Export &amp;Structured Text…</source>
+        <translation>Exportar a &amp;texto estructurado (ST)…</translation>
+    </message>
+    <message>
+        <source>Write the PLC program as IEC 61131-3 Structured Text files</source>
+        <translation>Escribir el programa del PLC en archivos de texto estructurado (ST) IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>Export &amp;GG-Generator JSON…</source>
+        <translation>Exportar a &amp;JSON de GG-Generator…</translation>
+    </message>
+    <message>
+        <source>Save the model in the format of the GG-Generator web tool</source>
+        <translation>Guardar el modelo en el formato de la herramienta web GG-Generator</translation>
+    </message>
+    <message>
+        <source>Export &amp;Chart…</source>
+        <translation>Exportar el &amp;diagrama…</translation>
+    </message>
+    <message>
+        <source>Save the chart as an SVG, PNG or PDF picture</source>
+        <translation>Guardar el diagrama como imagen SVG, PNG o PDF</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>&amp;Imprimir…</translation>
+    </message>
+    <message>
+        <source>Print the chart</source>
+        <translation>Imprimir el diagrama</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… y %n más</numerusform>
+            <numerusform>… y %n más</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export a Model with Errors</source>
+        <translation>Exportar un modelo con errores</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s). The generated code marks each one with a comment, but it may not compile or may not behave as intended.</source>
+        <translation>
+            <numerusform>El modelo tiene %n error. El código generado lo señala con un comentario, pero puede que no compile o que no se comporte como se espera.</numerusform>
+            <numerusform>El modelo tiene %n errores. El código generado señala cada uno con un comentario, pero puede que no compile o que no se comporte como se espera.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Export Anyway</source>
+        <translation>&amp;Exportar de todos modos</translation>
+    </message>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Exportar a PLCopen XML</translation>
+    </message>
+    <message>
+        <source>PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <source>Export Structured Text</source>
+        <translation>Exportar a texto estructurado (ST)</translation>
+    </message>
+    <message>
+        <source>Structured Text (*.st)</source>
+        <translation>Texto estructurado (*.st)</translation>
+    </message>
+    <message>
+        <source>Export Structured Text to a Folder</source>
+        <translation>Exportar a texto estructurado (ST) en una carpeta</translation>
+    </message>
+    <message>
+        <source>Export GG-Generator JSON</source>
+        <translation>Exportar a JSON de GG-Generator</translation>
+    </message>
+    <message>
+        <source>GG-Generator JSON (*.json)</source>
+        <translation>JSON de GG-Generator (*.json)</translation>
+    </message>
+    <message>
+        <source>SVG picture (*.svg)</source>
+        <translation>Imagen SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Imagen PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Documento PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export Chart</source>
+        <translation>Exportar el diagrama</translation>
+    </message>
+    <message>
+        <source>Print Chart</source>
+        <translation>Imprimir el diagrama</translation>
+    </message>
+    <message>
+        <source>The printer could not be started.</source>
+        <translation>No se ha podido iniciar la impresora.</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>Se ha exportado a %1</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Error al exportar</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>No se ha podido escribir %1.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportOptionsDialog</name>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Exportar a PLCopen XML</translation>
+    </message>
+    <message>
+        <source>Export Structured Text</source>
+        <translation>Exportar a texto estructurado (ST)</translation>
+    </message>
+    <message>
+        <source>One file per POU, in a &amp;folder</source>
+        <translation>Un archivo por POU, en una &amp;carpeta</translation>
+    </message>
+    <message>
+        <source>One &amp;IEC 61131-3 file with every POU</source>
+        <translation>Un único archivo &amp;IEC 61131-3 con todas las POU</translation>
+    </message>
+    <message>
+        <source>Files:</source>
+        <translation>Archivos:</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialecto:</translation>
+    </message>
+    <message>
+        <source>IEC writes PLCopen TC6 XML 2.01 with the globals in the configuration. CODESYS writes what CODESYS V3.5 imports, with a GVL.</source>
+        <translation>IEC escribe PLCopen TC6 XML 2.01 con las variables globales en la configuración. CODESYS escribe lo que importa CODESYS V3.5, con una GVL.</translation>
+    </message>
+    <message>
+        <source>The single file is always IEC 61131-3: CODESYS code names a GVL that IEC compilers do not know.</source>
+        <translation>El archivo único es siempre IEC 61131-3: el código CODESYS hace referencia a una GVL que los compiladores IEC no conocen.</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exportar…</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3 (Beremiz, OpenPLC, TwinCAT…)</source>
+        <translation>IEC 61131-3 (Beremiz, OpenPLC, TwinCAT…)</translation>
+    </message>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+</context>
+<context>
+    <name>editor::FrameItem</name>
+    <message>
+        <source>%1 — %2</source>
+        <extracomment>Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name</extracomment>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MainWindow</name>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Error en el guardado automático: %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Ay&amp;uda</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nuevo</translation>
+    </message>
+    <message>
+        <source>Start a new model from the GEMMA template</source>
+        <translation>Empezar un modelo nuevo a partir de la plantilla GEMMA</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Abrir…</translation>
+    </message>
+    <message>
+        <source>Open a GG Studio model, a GG-Generator file or an exported PLCopen XML file</source>
+        <translation>Abrir un modelo de GG Studio, un archivo de GG-Generator o un archivo PLCopen XML exportado</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Guardar</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Guardar &amp;como…</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to Template…</source>
+        <translation>Restablecer la p&amp;lantilla…</translation>
+    </message>
+    <message>
+        <source>Put every state, transition, variable and setting back to the template</source>
+        <translation>Devolver cada estado, transición, variable y ajuste a los de la plantilla</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Deshacer</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Deshacer %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rehacer</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Rehacer %1</translation>
+    </message>
+    <message>
+        <source>&amp;Model Settings…</source>
+        <translation>&amp;Ajustes del modelo…</translation>
+    </message>
+    <message>
+        <source>Model name, PLC cycle time and code dialect</source>
+        <translation>Nombre del modelo, tiempo de ciclo del PLC y dialecto del código</translation>
+    </message>
+    <message>
+        <source>Show &amp;Hidden Elements</source>
+        <translation>Mostrar los elementos &amp;ocultos</translation>
+    </message>
+    <message>
+        <source>Draw the hidden states and transitions faded, so they can be selected</source>
+        <translation>Dibujar atenuados los estados y transiciones ocultos, para poder seleccionarlos</translation>
+    </message>
+    <message>
+        <source>&amp;Fit Chart</source>
+        <translation>&amp;Ajustar el diagrama</translation>
+    </message>
+    <message>
+        <source>&amp;Actual Size (100 %)</source>
+        <translation>&amp;Tamaño real (100 %)</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>A&amp;mpliar</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>Re&amp;ducir</translation>
+    </message>
+    <message>
+        <source>&amp;About GG Studio</source>
+        <translation>&amp;Acerca de GG Studio</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Acerca de &amp;Qt</translation>
+    </message>
+    <message>
+        <source>%1[*] — GG Studio</source>
+        <translation>%1[*] — GG Studio</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Cambios no guardados</translation>
+    </message>
+    <message>
+        <source>The model “%1” has unsaved changes.</source>
+        <translation>El modelo «%1» tiene cambios sin guardar.</translation>
+    </message>
+    <message>
+        <source>Do you want to save them?</source>
+        <translation>¿Desea guardarlos?</translation>
+    </message>
+    <message>
+        <source>All supported files (*.json *.xml)</source>
+        <translation>Todos los archivos compatibles (*.json *.xml)</translation>
+    </message>
+    <message>
+        <source>GG Studio models (*.json)</source>
+        <translation>Modelos de GG Studio (*.json)</translation>
+    </message>
+    <message>
+        <source>GG-Generator files (*.json)</source>
+        <translation>Archivos de GG-Generator (*.json)</translation>
+    </message>
+    <message>
+        <source>GG Studio PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML de GG Studio (*.xml)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Open Model</source>
+        <translation>Abrir un modelo</translation>
+    </message>
+    <message>
+        <source>Could not open %1.</source>
+        <translation>No se ha podido abrir %1.</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Se ha abierto %1</translation>
+    </message>
+    <message>
+        <source>Imported %1: Save As keeps it as a GG Studio model</source>
+        <translation>Se ha importado %1: «Guardar como» lo conserva como modelo de GG Studio</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>sin título</translation>
+    </message>
+    <message>
+        <source>Save Model As</source>
+        <translation>Guardar el modelo como</translation>
+    </message>
+    <message>
+        <source>Save Model</source>
+        <translation>Guardar el modelo</translation>
+    </message>
+    <message>
+        <source>Could not save %1.</source>
+        <translation>No se ha podido guardar %1.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Se ha guardado %1</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Error al exportar</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>No se ha podido escribir %1.</translation>
+    </message>
+    <message>
+        <source>Recovered unsaved changes: save them to keep them</source>
+        <translation>Cambios no guardados recuperados: guárdelos para conservarlos</translation>
+    </message>
+    <message>
+        <source>Reset to Template</source>
+        <translation>Restablecer la plantilla</translation>
+    </message>
+    <message>
+        <source>Put every state, transition, variable and setting back to the GEMMA template? You can undo this.</source>
+        <translation>¿Devolver cada estado, transición, variable y ajuste a los de la plantilla GEMMA? Podrá deshacerlo.</translation>
+    </message>
+    <message>
+        <source>About GG Studio</source>
+        <translation>Acerca de GG Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 program that runs them (Structured Text, PLCopen XML).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Un editor para el método GEMMA-GRAFCET: elija los modos de marcha y parada de una máquina sobre la plantilla GEMMA, escriba las condiciones de sus transiciones y genere el programa IEC 61131-3 que los ejecuta (texto estructurado (ST), PLCopen XML).&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModelCommand</name>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 is the edit (&quot;Rename variable Stop to Halt&quot;), %2 why the model refused it</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModelSettingsDialog</name>
+    <message>
+        <source>Model Settings</source>
+        <translation>Ajustes del modelo</translation>
+    </message>
+    <message>
+        <source>The project name written into the exported PLCopen XML</source>
+        <translation>El nombre del proyecto que se escribe en el PLCopen XML exportado</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>The period of the cyclic PLC task that runs GEMMA</source>
+        <translation>El periodo de la tarea cíclica del PLC que ejecuta GEMMA</translation>
+    </message>
+    <message>
+        <source>The flavour of the generated Structured Text and its preview</source>
+        <translation>La variante del texto estructurado (ST) generado y de su vista previa</translation>
+    </message>
+    <message>
+        <source>Use the cycle time and dialect for &amp;new models</source>
+        <translation>Usar este tiempo de ciclo y este dialecto para los &amp;modelos nuevos</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nombre:</translation>
+    </message>
+    <message>
+        <source>PLC &amp;cycle time:</source>
+        <translation>Tiempo de &amp;ciclo del PLC:</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialecto:</translation>
+    </message>
+    <message>
+        <source>Change model settings</source>
+        <translation>Cambiar los ajustes del modelo</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemCounter</name>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errores</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n advertencia</numerusform>
+            <numerusform>%n advertencias</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show the Problems panel</source>
+        <translation>Mostrar el panel Problemas</translation>
+    </message>
+    <message>
+        <source>No problems</source>
+        <translation>Ningún problema</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemsDock</name>
+    <message>
+        <source>Model</source>
+        <translation>Modelo</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Problemas</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Código</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Elemento</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Mensaje</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copiar</translation>
+    </message>
+    <message>
+        <source>1 error</source>
+        <translation>1 error</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n errors</source>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errores</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 advertencia</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warnings</source>
+        <translation>
+            <numerusform>%n advertencia</numerusform>
+            <numerusform>%n advertencias</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>1 info</source>
+        <translation>1 info</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n infos</source>
+        <translation>
+            <numerusform>%n info</numerusform>
+            <numerusform>%n info</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show or hide the errors</source>
+        <translation>Mostrar u ocultar los errores</translation>
+    </message>
+    <message>
+        <source>Show or hide the warnings</source>
+        <translation>Mostrar u ocultar las advertencias</translation>
+    </message>
+    <message>
+        <source>Show or hide the information messages</source>
+        <translation>Mostrar u ocultar los mensajes informativos</translation>
+    </message>
+</context>
+<context>
+    <name>editor::RecentFiles</name>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Abrir &amp;reciente</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>&amp;Vaciar el menú</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StPreviewDock</name>
+    <message>
+        <source>Structured Text</source>
+        <translation>Texto estructurado (ST)</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialecto:</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3</source>
+        <translation>IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+    <message>
+        <source>Beremiz, OpenPLC, TwinCAT, matiec: globals in the configuration</source>
+        <translation>Beremiz, OpenPLC, TwinCAT, matiec: variables globales en la configuración</translation>
+    </message>
+    <message>
+        <source>CODESYS V3.5: globals in the list GVL, read as GVL.Name</source>
+        <translation>CODESYS V3.5: variables globales en la lista GVL, leídas como GVL.Nombre</translation>
+    </message>
+    <message>
+        <source>The flavour of the generated code; saved with the model</source>
+        <translation>La variante del código generado; se guarda con el modelo</translation>
+    </message>
+    <message>
+        <source>%1 is hidden: it generates no code.</source>
+        <translation>%1 está oculta: no genera código.</translation>
+    </message>
+    <message>
+        <source>This transition is not effective: it generates no code.</source>
+        <translation>Esta transición no es efectiva: no genera código.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StepDock</name>
+    <message>
+        <source>Step</source>
+        <translation>Etapa</translation>
+    </message>
+    <message>
+        <source>Select a step in the chart to see and edit its properties.</source>
+        <translation>Seleccione una etapa en el diagrama para ver y editar sus propiedades.</translation>
+    </message>
+    <message>
+        <source>Simple step: no nested behaviour.
+Macro-step: its transitions wait until the nested behaviour is complete.
+Enclosing step: its transitions fire whatever the nested behaviour is doing.</source>
+        <translation>Etapa simple: sin comportamiento anidado.
+Macroetapa: sus transiciones esperan a que el comportamiento anidado haya terminado.
+Etapa encapsulante: sus transiciones se franquean haga lo que haga el comportamiento anidado.</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Tipo:</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Inicial</translation>
+    </message>
+    <message>
+        <source>&amp;Hidden</source>
+        <translation>Ocu&amp;lta</translation>
+    </message>
+    <message>
+        <source>A hidden step is not part of this machine: it generates no code, and its transitions are not effective.</source>
+        <translation>Una etapa oculta no forma parte de esta máquina: no genera código y sus transiciones no son efectivas.</translation>
+    </message>
+    <message>
+        <source>What this state does on this machine</source>
+        <translation>Lo que hace este estado en esta máquina</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Comentario:</translation>
+    </message>
+    <message>
+        <source>Incoming transitions</source>
+        <translation>Transiciones de entrada</translation>
+    </message>
+    <message>
+        <source>Outgoing transitions, by priority</source>
+        <translation>Transiciones de salida, por prioridad</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transición</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Condición</translation>
+    </message>
+    <message>
+        <source>Click a transition to select it</source>
+        <translation>Haga clic en una transición para seleccionarla</translation>
+    </message>
+    <message>
+        <source>%1 · state number %2</source>
+        <translation>%1 · estado número %2</translation>
+    </message>
+    <message>
+        <source>%1 is the initial step. There is always exactly one initial step: to change it, make another step initial.</source>
+        <translation>%1 es la etapa inicial. Siempre hay exactamente una etapa inicial: para cambiarla, haga inicial otra etapa.</translation>
+    </message>
+    <message>
+        <source>Make %1 the initial step (the PLC starts in it). The current initial step is %2.</source>
+        <translation>Hacer de %1 la etapa inicial (el PLC arranca en ella). La etapa inicial actual es %2.</translation>
+    </message>
+    <message>
+        <source>F (family) →</source>
+        <extracomment>an incoming transition: its source, an arrow</extracomment>
+        <translation>F (familia) →</translation>
+    </message>
+    <message>
+        <source>%1 →</source>
+        <translation>%1 →</translation>
+    </message>
+    <message>
+        <source>F: → %1</source>
+        <extracomment>the family transition in the outgoing list of an F state</extracomment>
+        <translation>F: → %1</translation>
+    </message>
+    <message>
+        <source>%1: → %2</source>
+        <extracomment>an outgoing transition: priority, arrow, target (&quot;1: → F4&quot;); – when it has none</extracomment>
+        <translation>%1: → %2</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source>Family transition: evaluated before the own transitions of every visible F state.</source>
+        <translation>Transición de familia: se evalúa antes que las transiciones propias de cada estado F visible.</translation>
+    </message>
+    <message>
+        <source>Negated</source>
+        <translation>Negada</translation>
+    </message>
+    <message>
+        <source>Condition: %1</source>
+        <translation>Condición: %1</translation>
+    </message>
+    <message>
+        <source>Not effective (%1): generates no code.</source>
+        <translation>No efectiva (%1): no genera código.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StepItem</name>
+    <message>
+        <source>Simple step</source>
+        <translation>Etapa simple</translation>
+    </message>
+    <message>
+        <source>Macro-step</source>
+        <translation>Macroetapa</translation>
+    </message>
+    <message>
+        <source>Enclosing step</source>
+        <translation>Etapa encapsulante</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, inicial</translation>
+    </message>
+    <message>
+        <source>%1, hidden</source>
+        <translation>%1, oculta</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TransitionDock</name>
+    <message>
+        <source>Transition</source>
+        <translation>Transición</translation>
+    </message>
+    <message>
+        <source>Select a transition in the chart to see and edit its condition.</source>
+        <translation>Seleccione una transición en el diagrama para ver y editar su condición.</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Haga clic en una etapa para seleccionarla</translation>
+    </message>
+    <message>
+        <source>C&amp;ondition:</source>
+        <translation>C&amp;ondición:</translation>
+    </message>
+    <message>
+        <source>e.g. Start AND NOT Stop</source>
+        <translation>p. ej. Start AND NOT Stop</translation>
+    </message>
+    <message>
+        <source>Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparisons and arithmetic.
+Ctrl+Space completes a variable name.</source>
+        <translation>Texto estructurado (ST): variables declaradas, números, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparaciones y aritmética.
+Ctrl+Espacio completa un nombre de variable.</translation>
+    </message>
+    <message>
+        <source>&amp;Priority:</source>
+        <translation>&amp;Prioridad:</translation>
+    </message>
+    <message>
+        <source>&amp;Negated</source>
+        <translation>&amp;Negada</translation>
+    </message>
+    <message>
+        <source>Negation flips when this transition waits for the nested behaviour of its source:
+a negated transition out of a macro-step ignores Complete;
+a negated transition out of an enclosing step waits for Complete.</source>
+        <translation>La negación invierte la espera de esta transición al comportamiento anidado de su origen:
+una transición negada que sale de una macroetapa ignora Complete;
+una transición negada que sale de una etapa encapsulante espera a Complete.</translation>
+    </message>
+    <message>
+        <source>&amp;Hidden</source>
+        <translation>Ocu&amp;lta</translation>
+    </message>
+    <message>
+        <source>A hidden transition is not part of this machine: it generates no code.</source>
+        <translation>Una transición oculta no forma parte de esta máquina: no genera código.</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Memorias</translation>
+    </message>
+    <message>
+        <source>F (family)</source>
+        <translation>F (familia)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <extracomment>a transition: source step, arrow, target step</extracomment>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Not effective (%1): generates no code.</source>
+        <translation>No efectiva (%1): no genera código.</translation>
+    </message>
+    <message>
+        <source>First</source>
+        <translation>Primera</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Ninguna</translation>
+    </message>
+    <message>
+        <source>The family transition is evaluated before the own transitions of every visible F state.</source>
+        <translation>La transición de familia se evalúa antes que las transiciones propias de cada estado F visible.</translation>
+    </message>
+    <message>
+        <source>Only effective transitions have a priority: show this transition and both its steps first.</source>
+        <translation>Solo las transiciones efectivas tienen prioridad: muestre primero esta transición y sus dos etapas.</translation>
+    </message>
+    <message>
+        <source> of %1</source>
+        <extracomment>after the priority in its spin box: &quot;2 of 5&quot;</extracomment>
+        <translation> de %1</translation>
+    </message>
+    <message>
+        <source>1 is evaluated first among the effective transitions out of %1; the others move to make room.</source>
+        <translation>1 se evalúa primero entre las transiciones efectivas que salen de %1; las demás se desplazan para dejar sitio.</translation>
+    </message>
+    <message>
+        <source>Negation has no effect here: family transitions never wait for Complete.</source>
+        <translation>La negación no tiene efecto aquí: las transiciones de familia nunca esperan a Complete.</translation>
+    </message>
+    <message>
+        <source>Negation has no effect here: %1 is a simple step, and only transitions out of macro-steps and enclosing steps wait for Complete.</source>
+        <translation>La negación no tiene efecto aquí: %1 es una etapa simple, y solo las transiciones que salen de macroetapas y etapas encapsulantes esperan a Complete.</translation>
+    </message>
+    <message>
+        <source>Fires without waiting for the nested behaviour of macro-step %1 to complete.</source>
+        <translation>Se franquea sin esperar a que termine el comportamiento anidado de la macroetapa %1.</translation>
+    </message>
+    <message>
+        <source>Waits until the nested behaviour of macro-step %1 is complete (%1.Complete). Negate it to fire at once.</source>
+        <translation>Espera a que termine el comportamiento anidado de la macroetapa %1 (%1.Complete). Niéguela para franquearla de inmediato.</translation>
+    </message>
+    <message>
+        <source>Waits until the nested behaviour of enclosing step %1 is complete (%1.Complete).</source>
+        <translation>Espera a que termine el comportamiento anidado de la etapa encapsulante %1 (%1.Complete).</translation>
+    </message>
+    <message>
+        <source>Fires whatever the nested behaviour of enclosing step %1 is doing. Negate it to wait for %1.Complete.</source>
+        <translation>Se franquea haga lo que haga el comportamiento anidado de la etapa encapsulante %1. Niéguela para esperar a %1.Complete.</translation>
+    </message>
+    <message>
+        <source>Token on %1 (compared: no polarity)</source>
+        <translation>Memoria de %1 (comparada: sin polaridad)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (both NO and NC)</source>
+        <translation>Memoria de %1 (NA y NC a la vez)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (NC)</source>
+        <translation>Memoria de %1 (NC)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (NO)</source>
+        <translation>Memoria de %1 (NA)</translation>
+    </message>
+    <message>
+        <source>A token replaces a literal %1 or NOT %1: rewrite the condition so that %1 has one polarity.</source>
+        <translation>Una memoria sustituye a un literal %1 o NOT %1: reescriba la condición para que %1 tenga una sola polaridad.</translation>
+    </message>
+    <message>
+        <source>Normally closed: remembers that %1 was FALSE while the nested behaviour of %2 was not complete.</source>
+        <translation>Normalmente cerrada: recuerda que %1 estuvo a FALSE mientras el comportamiento anidado de %2 no había terminado.</translation>
+    </message>
+    <message>
+        <source>Normally open: remembers that %1 was TRUE while the nested behaviour of %2 was not complete.</source>
+        <translation>Normalmente abierta: recuerda que %1 estuvo a TRUE mientras el comportamiento anidado de %2 no había terminado.</translation>
+    </message>
+    <message>
+        <source>Generated as %1_%2_%3_MEM.</source>
+        <translation>Se genera como %1_%2_%3_MEM.</translation>
+    </message>
+    <message>
+        <source>Token on %1 (not a BOOL variable of the condition)</source>
+        <translation>Memoria de %1 (no es una variable BOOL de la condición)</translation>
+    </message>
+    <message>
+        <source>Uncheck to remove this token.</source>
+        <translation>Desmarque para quitar esta memoria.</translation>
+    </message>
+    <message>
+        <source>Family transitions never wait for Complete, so tokens do not apply to them.</source>
+        <translation>Las transiciones de familia nunca esperan a Complete, así que las memorias no se les aplican.</translation>
+    </message>
+    <message>
+        <source>Tokens apply to transitions out of macro-steps and enclosing steps; %1 is a simple step.</source>
+        <translation>Las memorias se aplican a las transiciones que salen de macroetapas y etapas encapsulantes; %1 es una etapa simple.</translation>
+    </message>
+    <message>
+        <source>Correct the condition to choose its tokens.</source>
+        <translation>Corrija la condición para elegir sus memorias.</translation>
+    </message>
+    <message>
+        <source>The condition uses no BOOL variable.</source>
+        <translation>La condición no usa ninguna variable BOOL.</translation>
+    </message>
+    <message>
+        <source>A token keeps a short pulse of a BOOL variable that occurs while the nested behaviour of %1 is not yet complete.</source>
+        <translation>Una memoria retiene un pulso breve de una variable BOOL que se produce mientras el comportamiento anidado de %1 aún no ha terminado.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TransitionItem</name>
+    <message>
+        <source>Family transition: applies to every F state</source>
+        <translation>Transición de familia: se aplica a cada estado F</translation>
+    </message>
+    <message>
+        <source>Priority %1</source>
+        <translation>Prioridad %1</translation>
+    </message>
+    <message>
+        <source>Not effective (hidden)</source>
+        <translation>No efectiva (oculta)</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negada</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Condición:</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>vacía</translation>
+    </message>
+    <message>
+        <source>Tokens: %1</source>
+        <translation>Memorias: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesDock</name>
+    <message>
+        <source>Variables</source>
+        <translation>Variables</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filtrar</translation>
+    </message>
+    <message>
+        <source>Show only the variables whose name, type, default or comment contains this text</source>
+        <translation>Mostrar solo las variables cuyo nombre, tipo, valor inicial o comentario contiene este texto</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
+    </message>
+    <message>
+        <source>Add a BOOL variable after the current one</source>
+        <translation>Añadir una variable BOOL después de la actual</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Eliminar</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplicar</translation>
+    </message>
+    <message>
+        <source>Duplicate the selected variables</source>
+        <translation>Duplicar las variables seleccionadas</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Subir</translation>
+    </message>
+    <message>
+        <source>Move the current variable up (declaration order)</source>
+        <translation>Subir la variable actual (orden de declaración)</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Bajar</translation>
+    </message>
+    <message>
+        <source>Move the current variable down (declaration order)</source>
+        <translation>Bajar la variable actual (orden de declaración)</translation>
+    </message>
+    <message>
+        <source>Sort by Name</source>
+        <translation>Ordenar por nombre</translation>
+    </message>
+    <message>
+        <source>Sort the declarations by name (one undo step)</source>
+        <translation>Ordenar las declaraciones por nombre (un solo paso de deshacer)</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Copiar</translation>
+    </message>
+    <message>
+        <source>Paste</source>
+        <translation>Pegar</translation>
+    </message>
+    <message>
+        <source>Variable%1</source>
+        <translation>Variable%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n variables</source>
+        <translation>
+            <numerusform>Eliminar %n variable</numerusform>
+            <numerusform>Eliminar %n variables</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Sort variables by name</source>
+        <translation>Ordenar las variables por nombre</translation>
+    </message>
+    <message>
+        <source>Remove the selected variables</source>
+        <translation>Eliminar las variables seleccionadas</translation>
+    </message>
+    <message>
+        <source>Copy the selected variables as tab-separated rows</source>
+        <translation>Copiar las variables seleccionadas como filas separadas por tabuladores</translation>
+    </message>
+    <message>
+        <source>Paste rows from a spreadsheet: name, type, default and comment</source>
+        <translation>Pegar filas de una hoja de cálculo: nombre, tipo, valor inicial y comentario</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesTableModel</name>
+    <message>
+        <source>No default: the PLC starts with %1.</source>
+        <translation>Sin valor inicial: el PLC arranca con %1.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a supported type: use one of %2.</source>
+        <translation>&apos;%1&apos; no es un tipo admitido: use uno de estos: %2.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valor inicial</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Comentario</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3 identifier, unique ignoring case. Renaming updates every condition.</source>
+        <translation>Identificador IEC 61131-3, único sin distinguir mayúsculas y minúsculas. Al renombrarlo se actualizan todas las condiciones.</translation>
+    </message>
+    <message>
+        <source>Elementary IEC 61131-3 type</source>
+        <translation>Tipo elemental IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>Initial value, a literal of the type; empty for the type&apos;s implicit default</source>
+        <translation>Valor inicial, un literal del tipo; vacío para el valor por defecto implícito del tipo</translation>
+    </message>
+    <message>
+        <source>Free text, written into the generated declarations</source>
+        <translation>Texto libre, que se escribe en las declaraciones generadas</translation>
+    </message>
+    <message>
+        <source>Line %1: the name is empty.</source>
+        <translation>Línea %1: el nombre está vacío.</translation>
+    </message>
+    <message>
+        <source>Line %1: &apos;%2&apos; is not a supported type: use one of %3.</source>
+        <translation>Línea %1: &apos;%2&apos; no es un tipo admitido: use uno de estos: %3.</translation>
+    </message>
+    <message>
+        <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
+        <translation>No hay variables que pegar: copie filas de nombre, tipo, valor inicial y comentario, separados por tabuladores.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ZoomIndicator</name>
+    <message>
+        <source>Zoom: %1 %</source>
+        <translation>Zoom: %1 %</translation>
+    </message>
+    <message>
+        <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
+        <translation>Ctrl+rueda hace zoom alrededor del ratón; Ctrl+0 ajusta el diagrama a la ventana</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Editor for the GEMMA-GRAFCET method of specifying machine operating modes</source>
+        <translation>Editor para el método GEMMA-GRAFCET de especificación de los modos de marcha y parada de las máquinas</translation>
+    </message>
+    <message>
+        <source>The model file to open (GG Studio JSON, GG-Generator JSON or GG Studio PLCopen XML).</source>
+        <translation>El archivo de modelo que se abrirá (JSON de GG Studio, JSON de GG-Generator o PLCopen XML de GG Studio).</translation>
+    </message>
+</context>
+</TS>

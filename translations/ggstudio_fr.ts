@@ -1,0 +1,1631 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="fr_FR">
+<context>
+    <name>AddVariableCommand</name>
+    <message>
+        <source>Add variable %1</source>
+        <translation>Ajouter la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>ChartExport</name>
+    <message>
+        <source>GEMMA-GRAFCET chart drawn by GG Studio</source>
+        <translation>Diagramme GEMMA-GRAFCET dessiné par GG Studio</translation>
+    </message>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>L&apos;image SVG n&apos;a pas pu être dessinée.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Mémoire insuffisante pour une image de %1 × %2 pixels.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>L&apos;image PNG n&apos;a pas pu être encodée.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Le document PDF n&apos;a pas pu être dessiné.</translation>
+    </message>
+</context>
+<context>
+    <name>DiagnosticText</name>
+    <message>
+        <source>the name is empty</source>
+        <translation>le nom est vide</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid IEC 61131-3 identifier: use ASCII letters, digits and &apos;_&apos;, not starting with a digit</source>
+        <translation>&apos;%1&apos; n&apos;est pas un identificateur IEC 61131-3 valide : utilisez des lettres ASCII, des chiffres et &apos;_&apos;, sans commencer par un chiffre</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; contains &apos;__&apos;, which IEC 61131-3 identifiers may not</source>
+        <translation>&apos;%1&apos; contient &apos;__&apos;, ce que les identificateurs IEC 61131-3 n&apos;autorisent pas</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; ends with &apos;_&apos;, which IEC 61131-3 identifiers may not</source>
+        <translation>&apos;%1&apos; se termine par &apos;_&apos;, ce que les identificateurs IEC 61131-3 n&apos;autorisent pas</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is an IEC 61131-3 keyword or type name</source>
+        <translation>&apos;%1&apos; est un mot-clé ou un nom de type IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a name the generated code uses</source>
+        <translation>&apos;%1&apos; est un nom utilisé par le code généré</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; does not occur in the condition.</source>
+        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide : &apos;%2&apos; n&apos;apparaît pas dans la réceptivité.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is ambiguous: the condition uses both %2 and NOT %2, so the token could be neither normally open nor normally closed.</source>
+        <translation>La mémoire de &apos;%2&apos; dans %1 est ambiguë : la réceptivité utilise à la fois %2 et NOT %2, la mémoire ne peut donc être ni normalement ouverte ni normalement fermée.</translation>
+    </message>
+    <message>
+        <source>The token in %1 names &apos;%2&apos;, which is not a declared variable.</source>
+        <translation>Une mémoire de %1 porte sur &apos;%2&apos;, qui n&apos;est pas une variable déclarée.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is compared with &apos;=&apos; or &apos;&lt;&gt;&apos; in the condition, where it has no polarity; a token can only replace a literal %2 or NOT %2.</source>
+        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide : &apos;%2&apos; est comparée avec &apos;=&apos; ou &apos;&lt;&gt;&apos; dans la réceptivité, où elle n&apos;a pas de polarité ; une mémoire ne peut remplacer qu&apos;un littéral %2 ou NOT %2.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: family transitions never wait for Complete.</source>
+        <translation>La mémoire de &apos;%2&apos; dans %1 n&apos;a aucun effet et n&apos;est pas générée : les transitions de famille n&apos;attendent jamais Complete.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: its source %3 is a simple step.</source>
+        <translation>La mémoire de &apos;%2&apos; dans %1 n&apos;a aucun effet et n&apos;est pas générée : son étape source %3 est une étape simple.</translation>
+    </message>
+    <message>
+        <source>The initial step %1 is hidden: the PLC would start in a state that has no code.</source>
+        <translation>L&apos;étape initiale %1 est masquée : l&apos;automate démarrerait dans un état sans code.</translation>
+    </message>
+    <message>
+        <source>Step %1 has no visible outgoing transition: the machine would stay in it forever.</source>
+        <translation>L&apos;étape %1 n&apos;a aucune transition de sortie visible : la machine y resterait indéfiniment.</translation>
+    </message>
+    <message>
+        <source>Step %1 has no visible incoming transition: it can never become active.</source>
+        <translation>L&apos;étape %1 n&apos;a aucune transition d&apos;entrée visible : elle ne peut jamais devenir active.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
+        <translation>La réceptivité de %1 est vide : écrivez TRUE pour une transition toujours franchissable.</translation>
+    </message>
+    <message>
+        <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
+        <translation>La transition de famille %1 est niée, ce qui n&apos;a aucun effet : les transitions de famille n&apos;attendent jamais Complete.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is FALSE: the transition can never fire (hide it instead).</source>
+        <translation>La réceptivité de %1 est FALSE : la transition ne peut jamais être franchie (masquez-la plutôt).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
+        <translation>La variable &apos;%1&apos; n&apos;est utilisée dans aucune réceptivité de transition visible.</translation>
+    </message>
+    <message>
+        <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
+        <translation>L&apos;étape %1 n&apos;est pas accessible depuis l&apos;étape initiale %2 par des transitions visibles : elle ne peut jamais devenir active.</translation>
+    </message>
+    <message>
+        <source>Transition %1 is negated, which has no effect: its source %2 is a simple step, and negation only changes transitions out of macro and enclosing steps.</source>
+        <translation>La transition %1 est niée, ce qui n&apos;a aucun effet : son étape source %2 est une étape simple, et la négation ne change que les transitions issues de macro-étapes et d&apos;étapes encapsulantes.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is TRUE and does not wait for Complete: the lower-priority transitions %2 can never fire.</source>
+        <translation>La réceptivité de %1 est TRUE et n&apos;attend pas Complete : les transitions moins prioritaires %2 ne peuvent jamais être franchies.</translation>
+    </message>
+    <message>
+        <source>Invalid variable name: %1.</source>
+        <translation>Nom de variable invalide : %1.</translation>
+    </message>
+    <message>
+        <source>Syntax error in the condition of %1: %2.</source>
+        <translation>Erreur de syntaxe dans la réceptivité de %1 : %2.</translation>
+    </message>
+    <message>
+        <source>In the condition of %1: &apos;%2&apos; is not a declared variable.</source>
+        <translation>Dans la réceptivité de %1 : &apos;%2&apos; n&apos;est pas une variable déclarée.</translation>
+    </message>
+    <message>
+        <source>Type error in the condition of %1: %2.</source>
+        <translation>Erreur de type dans la réceptivité de %1 : %2.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is %3, and only BOOL variables can have a token.</source>
+        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide : &apos;%2&apos; est de type %3, et seules les variables BOOL peuvent avoir une mémoire.</translation>
+    </message>
+    <message>
+        <source>The default value of variable &apos;%1&apos; is invalid: %2.</source>
+        <translation>La valeur initiale de la variable &apos;%1&apos; est invalide : %2.</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Erreur</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Avertissement</translation>
+    </message>
+    <message>
+        <source>Information</source>
+        <translation>Information</translation>
+    </message>
+</context>
+<context>
+    <name>ElementLabels</name>
+    <message>
+        <source>F (family)</source>
+        <translation>F (famille)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <extracomment>a transition: source step, arrow, target step</extracomment>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Simple step</source>
+        <translation>Étape simple</translation>
+    </message>
+    <message>
+        <source>Macro-step</source>
+        <translation>Macro-étape</translation>
+    </message>
+    <message>
+        <source>Enclosing step</source>
+        <translation>Étape encapsulante</translation>
+    </message>
+    <message>
+        <source>hidden</source>
+        <translation>masquée</translation>
+    </message>
+    <message>
+        <source>source %1 hidden</source>
+        <translation>étape source %1 masquée</translation>
+    </message>
+    <message>
+        <source>target %1 hidden</source>
+        <translation>étape cible %1 masquée</translation>
+    </message>
+</context>
+<context>
+    <name>MoveVariableCommand</name>
+    <message>
+        <source>Move variable %1</source>
+        <translation>Déplacer la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>PasteVariablesCommand</name>
+    <message>
+        <source>Paste variable %1</source>
+        <translation>Coller la variable %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n variables</source>
+        <translation>
+            <numerusform>Coller %n variable</numerusform>
+            <numerusform>Coller %n variables</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RecoveryPrompt</name>
+    <message>
+        <source>an untitled model</source>
+        <translation>un modèle sans titre</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Changes</source>
+        <translation>Récupérer les modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>GG Studio ended without saving %1.</source>
+        <translation>GG Studio s&apos;est arrêté sans enregistrer %1.</translation>
+    </message>
+    <message>
+        <source>Autosave kept a copy on %1. Recover it? You can then save it or discard it.</source>
+        <translation>L&apos;enregistrement automatique en a conservé une copie le %1. La récupérer ? Vous pourrez ensuite l&apos;enregistrer ou l&apos;abandonner.</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Récupérer</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>&amp;Abandonner</translation>
+    </message>
+    <message>
+        <source>&amp;Not Now</source>
+        <translation>&amp;Plus tard</translation>
+    </message>
+    <message>
+        <source>The autosaved copy could not be read.</source>
+        <translation>La copie enregistrée automatiquement n&apos;a pas pu être lue.</translation>
+    </message>
+</context>
+<context>
+    <name>RemoveVariableCommand</name>
+    <message>
+        <source>Remove variable %1</source>
+        <translation>Supprimer la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>RenameVariableCommand</name>
+    <message>
+        <source>Rename variable %1 to %2</source>
+        <translation>Renommer la variable %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>ResetModelCommand</name>
+    <message>
+        <source>Reset to template</source>
+        <translation>Réinitialiser au gabarit</translation>
+    </message>
+</context>
+<context>
+    <name>SetConditionCommand</name>
+    <message>
+        <source>Edit condition of %1</source>
+        <translation>Modifier la réceptivité de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetCycleTimeCommand</name>
+    <message>
+        <source>Set cycle time to %1 ms</source>
+        <translation>Régler le temps de cycle à %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>SetDialectCommand</name>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+    <message>
+        <source>IEC</source>
+        <translation>IEC</translation>
+    </message>
+    <message>
+        <source>Set dialect to %1</source>
+        <translation>Choisir le dialecte %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetInitialStepCommand</name>
+    <message>
+        <source>Make %1 the initial step</source>
+        <translation>Faire de %1 l&apos;étape initiale</translation>
+    </message>
+</context>
+<context>
+    <name>SetModelNameCommand</name>
+    <message>
+        <source>Rename model</source>
+        <translation>Renommer le modèle</translation>
+    </message>
+</context>
+<context>
+    <name>SetNegatedCommand</name>
+    <message>
+        <source>Negate %1</source>
+        <translation>Nier %1</translation>
+    </message>
+    <message>
+        <source>Remove negation of %1</source>
+        <translation>Retirer la négation de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPriorityCommand</name>
+    <message>
+        <source>Set priority of %1 to %2</source>
+        <translation>Régler la priorité de %1 à %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1</source>
+        <translation>Modifier le commentaire de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepHiddenCommand</name>
+    <message>
+        <source>Hide step %1</source>
+        <translation>Masquer l&apos;étape %1</translation>
+    </message>
+    <message>
+        <source>Show step %1</source>
+        <translation>Afficher l&apos;étape %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepTypeCommand</name>
+    <message>
+        <source>macro-step</source>
+        <translation>macro-étape</translation>
+    </message>
+    <message>
+        <source>enclosing step</source>
+        <translation>étape encapsulante</translation>
+    </message>
+    <message>
+        <source>simple step</source>
+        <translation>étape simple</translation>
+    </message>
+    <message>
+        <source>Set %1 to %2</source>
+        <translation>Changer %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetTokensCommand</name>
+    <message>
+        <source>Set tokens of %1</source>
+        <translation>Définir les mémoires de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetTransitionHiddenCommand</name>
+    <message>
+        <source>Hide transition %1</source>
+        <translation>Masquer la transition %1</translation>
+    </message>
+    <message>
+        <source>Show transition %1</source>
+        <translation>Afficher la transition %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableCommentCommand</name>
+    <message>
+        <source>Edit comment of %1</source>
+        <translation>Modifier le commentaire de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableDefaultCommand</name>
+    <message>
+        <source>Set default of %1</source>
+        <translation>Modifier la valeur initiale de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableTypeCommand</name>
+    <message>
+        <source>Set type of %1 to %2</source>
+        <translation>Changer le type de %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>StateNames</name>
+    <message>
+        <source>Stop in initial state</source>
+        <translation>Arrêt dans l&apos;état initial</translation>
+    </message>
+    <message>
+        <source>Stop requested at end of cycle</source>
+        <translation>Arrêt demandé en fin de cycle</translation>
+    </message>
+    <message>
+        <source>Stop requested in a given state</source>
+        <translation>Arrêt demandé dans un état déterminé</translation>
+    </message>
+    <message>
+        <source>Stop obtained</source>
+        <translation>Arrêt obtenu</translation>
+    </message>
+    <message>
+        <source>Preparation for restart after failure</source>
+        <translation>Préparation pour remise en route après défaillance</translation>
+    </message>
+    <message>
+        <source>Operative part reset to initial state</source>
+        <translation>Mise P.O. dans l&apos;état initial</translation>
+    </message>
+    <message>
+        <source>Operative part set to a given state</source>
+        <translation>Mise P.O. dans un état déterminé</translation>
+    </message>
+    <message>
+        <source>Normal production</source>
+        <translation>Production normale</translation>
+    </message>
+    <message>
+        <source>Preparation run</source>
+        <translation>Marche de préparation</translation>
+    </message>
+    <message>
+        <source>Closing run</source>
+        <translation>Marche de clôture</translation>
+    </message>
+    <message>
+        <source>Verification run out of order</source>
+        <translation>Marche de vérification dans le désordre</translation>
+    </message>
+    <message>
+        <source>Verification run in order</source>
+        <translation>Marche de vérification dans l&apos;ordre</translation>
+    </message>
+    <message>
+        <source>Test run</source>
+        <translation>Marche de test</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Arrêt d&apos;urgence</translation>
+    </message>
+    <message>
+        <source>Diagnosis and/or failure handling</source>
+        <translation>Diagnostic et/ou traitement de défaillance</translation>
+    </message>
+    <message>
+        <source>Production despite failure</source>
+        <translation>Production tout de même</translation>
+    </message>
+    <message>
+        <source>Stop procedures</source>
+        <translation>Procédures d&apos;arrêt</translation>
+    </message>
+    <message>
+        <source>Operation procedures</source>
+        <translation>Procédures de fonctionnement</translation>
+    </message>
+    <message>
+        <source>Failure procedures</source>
+        <translation>Procédures en défaillance</translation>
+    </message>
+</context>
+<context>
+    <name>editor::Autosave</name>
+    <message>
+        <source>Cannot create the folder %1 for recovery copies</source>
+        <translation>Impossible de créer le dossier %1 des copies de récupération</translation>
+    </message>
+    <message>
+        <source>Cannot write the recovery copy: %1</source>
+        <translation>Impossible d&apos;écrire la copie de récupération : %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::Document</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportActions</name>
+    <message>
+        <source>Export &amp;PLCopen XML…</source>
+        <translation>Exporter en &amp;PLCopen XML…</translation>
+    </message>
+    <message>
+        <source>Write the PLC program as PLCopen XML, to import into a PLC programming tool</source>
+        <translation>Écrire le programme automate en PLCopen XML, à importer dans un outil de programmation d&apos;automates</translation>
+    </message>
+    <message>
+        <source>Export &amp;Structured Text…</source>
+        <translation>Exporter en &amp;texte structuré (ST)…</translation>
+    </message>
+    <message>
+        <source>Write the PLC program as IEC 61131-3 Structured Text files</source>
+        <translation>Écrire le programme automate en fichiers de texte structuré (ST) IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>Export &amp;GG-Generator JSON…</source>
+        <translation>Exporter en JSON &amp;GG-Generator…</translation>
+    </message>
+    <message>
+        <source>Save the model in the format of the GG-Generator web tool</source>
+        <translation>Enregistrer le modèle au format de l&apos;outil web GG-Generator</translation>
+    </message>
+    <message>
+        <source>Export &amp;Chart…</source>
+        <translation>Exporter le &amp;diagramme…</translation>
+    </message>
+    <message>
+        <source>Save the chart as an SVG, PNG or PDF picture</source>
+        <translation>Enregistrer le diagramme comme image SVG, PNG ou PDF</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>&amp;Imprimer…</translation>
+    </message>
+    <message>
+        <source>Print the chart</source>
+        <translation>Imprimer le diagramme</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… et %n autre</numerusform>
+            <numerusform>… et %n autres</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export a Model with Errors</source>
+        <translation>Exporter un modèle contenant des erreurs</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s). The generated code marks each one with a comment, but it may not compile or may not behave as intended.</source>
+        <translation>
+            <numerusform>Le modèle contient %n erreur. Le code généré la signale par un commentaire, mais il risque de ne pas compiler ou de ne pas se comporter comme prévu.</numerusform>
+            <numerusform>Le modèle contient %n erreurs. Le code généré signale chacune d&apos;elles par un commentaire, mais il risque de ne pas compiler ou de ne pas se comporter comme prévu.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Export Anyway</source>
+        <translation>&amp;Exporter quand même</translation>
+    </message>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Exporter en PLCopen XML</translation>
+    </message>
+    <message>
+        <source>PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <source>Export Structured Text</source>
+        <translation>Exporter en texte structuré (ST)</translation>
+    </message>
+    <message>
+        <source>Structured Text (*.st)</source>
+        <translation>Texte structuré (*.st)</translation>
+    </message>
+    <message>
+        <source>Export Structured Text to a Folder</source>
+        <translation>Exporter en texte structuré (ST) dans un dossier</translation>
+    </message>
+    <message>
+        <source>Export GG-Generator JSON</source>
+        <translation>Exporter en JSON GG-Generator</translation>
+    </message>
+    <message>
+        <source>GG-Generator JSON (*.json)</source>
+        <translation>JSON GG-Generator (*.json)</translation>
+    </message>
+    <message>
+        <source>SVG picture (*.svg)</source>
+        <translation>Image SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Image PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Document PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export Chart</source>
+        <translation>Exporter le diagramme</translation>
+    </message>
+    <message>
+        <source>Print Chart</source>
+        <translation>Imprimer le diagramme</translation>
+    </message>
+    <message>
+        <source>The printer could not be started.</source>
+        <translation>L&apos;imprimante n&apos;a pas pu être démarrée.</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>Exporté vers %1</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Échec de l&apos;export</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>Impossible d&apos;écrire %1.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportOptionsDialog</name>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Exporter en PLCopen XML</translation>
+    </message>
+    <message>
+        <source>Export Structured Text</source>
+        <translation>Exporter en texte structuré (ST)</translation>
+    </message>
+    <message>
+        <source>One file per POU, in a &amp;folder</source>
+        <translation>Un fichier par POU, dans un d&amp;ossier</translation>
+    </message>
+    <message>
+        <source>One &amp;IEC 61131-3 file with every POU</source>
+        <translation>Un seul fichier &amp;IEC 61131-3 avec toutes les POU</translation>
+    </message>
+    <message>
+        <source>Files:</source>
+        <translation>Fichiers :</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialecte :</translation>
+    </message>
+    <message>
+        <source>IEC writes PLCopen TC6 XML 2.01 with the globals in the configuration. CODESYS writes what CODESYS V3.5 imports, with a GVL.</source>
+        <translation>IEC écrit du PLCopen TC6 XML 2.01 avec les variables globales dans la configuration. CODESYS écrit ce que CODESYS V3.5 importe, avec une GVL.</translation>
+    </message>
+    <message>
+        <source>The single file is always IEC 61131-3: CODESYS code names a GVL that IEC compilers do not know.</source>
+        <translation>Le fichier unique est toujours en IEC 61131-3 : le code CODESYS fait référence à une GVL que les compilateurs IEC ne connaissent pas.</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Exporter…</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3 (Beremiz, OpenPLC, TwinCAT…)</source>
+        <translation>IEC 61131-3 (Beremiz, OpenPLC, TwinCAT…)</translation>
+    </message>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+</context>
+<context>
+    <name>editor::FrameItem</name>
+    <message>
+        <source>%1 — %2</source>
+        <extracomment>Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name</extracomment>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MainWindow</name>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Échec de l&apos;enregistrement automatique : %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>É&amp;dition</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Affichage</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Langue</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;ide</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nouveau</translation>
+    </message>
+    <message>
+        <source>Start a new model from the GEMMA template</source>
+        <translation>Commencer un nouveau modèle à partir du gabarit GEMMA</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Ouvrir…</translation>
+    </message>
+    <message>
+        <source>Open a GG Studio model, a GG-Generator file or an exported PLCopen XML file</source>
+        <translation>Ouvrir un modèle GG Studio, un fichier GG-Generator ou un fichier PLCopen XML exporté</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Enregistrer</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Enregistrer &amp;sous…</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to Template…</source>
+        <translation>Réinitialiser au ga&amp;barit…</translation>
+    </message>
+    <message>
+        <source>Put every state, transition, variable and setting back to the template</source>
+        <translation>Remettre chaque état, transition, variable et paramètre comme dans le gabarit</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annuler</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Annuler %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Rétablir</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Rétablir %1</translation>
+    </message>
+    <message>
+        <source>&amp;Model Settings…</source>
+        <translation>&amp;Paramètres du modèle…</translation>
+    </message>
+    <message>
+        <source>Model name, PLC cycle time and code dialect</source>
+        <translation>Nom du modèle, temps de cycle de l&apos;automate et dialecte du code</translation>
+    </message>
+    <message>
+        <source>Show &amp;Hidden Elements</source>
+        <translation>Afficher les éléments &amp;masqués</translation>
+    </message>
+    <message>
+        <source>Draw the hidden states and transitions faded, so they can be selected</source>
+        <translation>Dessiner en estompé les états et transitions masqués, pour pouvoir les sélectionner</translation>
+    </message>
+    <message>
+        <source>&amp;Fit Chart</source>
+        <translation>Ajuster à la &amp;fenêtre</translation>
+    </message>
+    <message>
+        <source>&amp;Actual Size (100 %)</source>
+        <translation>&amp;Taille réelle (100 %)</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>Zoom &amp;avant</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>Zoom a&amp;rrière</translation>
+    </message>
+    <message>
+        <source>&amp;About GG Studio</source>
+        <translation>À &amp;propos de GG Studio</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>À propos de &amp;Qt</translation>
+    </message>
+    <message>
+        <source>%1[*] — GG Studio</source>
+        <translation>%1[*] — GG Studio</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>The model “%1” has unsaved changes.</source>
+        <translation>Le modèle « %1 » contient des modifications non enregistrées.</translation>
+    </message>
+    <message>
+        <source>Do you want to save them?</source>
+        <translation>Voulez-vous les enregistrer ?</translation>
+    </message>
+    <message>
+        <source>All supported files (*.json *.xml)</source>
+        <translation>Tous les fichiers pris en charge (*.json *.xml)</translation>
+    </message>
+    <message>
+        <source>GG Studio models (*.json)</source>
+        <translation>Modèles GG Studio (*.json)</translation>
+    </message>
+    <message>
+        <source>GG-Generator files (*.json)</source>
+        <translation>Fichiers GG-Generator (*.json)</translation>
+    </message>
+    <message>
+        <source>GG Studio PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML de GG Studio (*.xml)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Open Model</source>
+        <translation>Ouvrir un modèle</translation>
+    </message>
+    <message>
+        <source>Could not open %1.</source>
+        <translation>Impossible d&apos;ouvrir %1.</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Ouvert : %1</translation>
+    </message>
+    <message>
+        <source>Imported %1: Save As keeps it as a GG Studio model</source>
+        <translation>%1 importé : « Enregistrer sous » le conserve comme modèle GG Studio</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>sans titre</translation>
+    </message>
+    <message>
+        <source>Save Model As</source>
+        <translation>Enregistrer le modèle sous</translation>
+    </message>
+    <message>
+        <source>Save Model</source>
+        <translation>Enregistrer le modèle</translation>
+    </message>
+    <message>
+        <source>Could not save %1.</source>
+        <translation>Impossible d&apos;enregistrer %1.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Enregistré : %1</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Échec de l&apos;export</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>Impossible d&apos;écrire %1.</translation>
+    </message>
+    <message>
+        <source>Recovered unsaved changes: save them to keep them</source>
+        <translation>Modifications non enregistrées récupérées : enregistrez-les pour les conserver</translation>
+    </message>
+    <message>
+        <source>Reset to Template</source>
+        <translation>Réinitialiser au gabarit</translation>
+    </message>
+    <message>
+        <source>Put every state, transition, variable and setting back to the GEMMA template? You can undo this.</source>
+        <translation>Remettre chaque état, transition, variable et paramètre comme dans le gabarit GEMMA ? Vous pourrez annuler cette opération.</translation>
+    </message>
+    <message>
+        <source>About GG Studio</source>
+        <translation>À propos de GG Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 program that runs them (Structured Text, PLCopen XML).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Un éditeur pour la méthode GEMMA-GRAFCET : choisissez les modes de marche et d&apos;arrêt d&apos;une machine sur le gabarit GEMMA, écrivez les réceptivités de leurs transitions et générez le programme IEC 61131-3 qui les exécute (texte structuré (ST), PLCopen XML).&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModelCommand</name>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 is the edit (&quot;Rename variable Stop to Halt&quot;), %2 why the model refused it</extracomment>
+        <translation>%1 : %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModelSettingsDialog</name>
+    <message>
+        <source>Model Settings</source>
+        <translation>Paramètres du modèle</translation>
+    </message>
+    <message>
+        <source>The project name written into the exported PLCopen XML</source>
+        <translation>Le nom du projet écrit dans le PLCopen XML exporté</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>The period of the cyclic PLC task that runs GEMMA</source>
+        <translation>La période de la tâche cyclique de l&apos;automate qui exécute GEMMA</translation>
+    </message>
+    <message>
+        <source>The flavour of the generated Structured Text and its preview</source>
+        <translation>La variante du texte structuré (ST) généré et de son aperçu</translation>
+    </message>
+    <message>
+        <source>Use the cycle time and dialect for &amp;new models</source>
+        <translation>Utiliser ce temps de cycle et ce dialecte pour les nou&amp;veaux modèles</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nom :</translation>
+    </message>
+    <message>
+        <source>PLC &amp;cycle time:</source>
+        <translation>Temps de &amp;cycle de l&apos;automate :</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialecte :</translation>
+    </message>
+    <message>
+        <source>Change model settings</source>
+        <translation>Modifier les paramètres du modèle</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemCounter</name>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n erreur</numerusform>
+            <numerusform>%n erreurs</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n avertissement</numerusform>
+            <numerusform>%n avertissements</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show the Problems panel</source>
+        <translation>Afficher le panneau Problèmes</translation>
+    </message>
+    <message>
+        <source>No problems</source>
+        <translation>Aucun problème</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemsDock</name>
+    <message>
+        <source>Model</source>
+        <translation>Modèle</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Problèmes</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Code</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Élément</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copier</translation>
+    </message>
+    <message>
+        <source>1 error</source>
+        <translation>1 erreur</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n errors</source>
+        <translation>
+            <numerusform>%n erreur</numerusform>
+            <numerusform>%n erreurs</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 avertissement</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warnings</source>
+        <translation>
+            <numerusform>%n avertissement</numerusform>
+            <numerusform>%n avertissements</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>1 info</source>
+        <translation>1 info</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n infos</source>
+        <translation>
+            <numerusform>%n info</numerusform>
+            <numerusform>%n infos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show or hide the errors</source>
+        <translation>Afficher ou masquer les erreurs</translation>
+    </message>
+    <message>
+        <source>Show or hide the warnings</source>
+        <translation>Afficher ou masquer les avertissements</translation>
+    </message>
+    <message>
+        <source>Show or hide the information messages</source>
+        <translation>Afficher ou masquer les messages d&apos;information</translation>
+    </message>
+</context>
+<context>
+    <name>editor::RecentFiles</name>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Fichiers &amp;récents</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>&amp;Vider le menu</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StPreviewDock</name>
+    <message>
+        <source>Structured Text</source>
+        <translation>Texte structuré (ST)</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialecte :</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3</source>
+        <translation>IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+    <message>
+        <source>Beremiz, OpenPLC, TwinCAT, matiec: globals in the configuration</source>
+        <translation>Beremiz, OpenPLC, TwinCAT, matiec : variables globales dans la configuration</translation>
+    </message>
+    <message>
+        <source>CODESYS V3.5: globals in the list GVL, read as GVL.Name</source>
+        <translation>CODESYS V3.5 : variables globales dans la liste GVL, lues sous la forme GVL.Nom</translation>
+    </message>
+    <message>
+        <source>The flavour of the generated code; saved with the model</source>
+        <translation>La variante du code généré ; enregistrée avec le modèle</translation>
+    </message>
+    <message>
+        <source>%1 is hidden: it generates no code.</source>
+        <translation>%1 est masquée : elle ne génère aucun code.</translation>
+    </message>
+    <message>
+        <source>This transition is not effective: it generates no code.</source>
+        <translation>Cette transition n&apos;est pas effective : elle ne génère aucun code.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StepDock</name>
+    <message>
+        <source>Step</source>
+        <translation>Étape</translation>
+    </message>
+    <message>
+        <source>Select a step in the chart to see and edit its properties.</source>
+        <translation>Sélectionnez une étape dans le diagramme pour voir et modifier ses propriétés.</translation>
+    </message>
+    <message>
+        <source>Simple step: no nested behaviour.
+Macro-step: its transitions wait until the nested behaviour is complete.
+Enclosing step: its transitions fire whatever the nested behaviour is doing.</source>
+        <translation>Étape simple : aucun comportement imbriqué.
+Macro-étape : ses transitions attendent que le comportement imbriqué soit terminé.
+Étape encapsulante : ses transitions sont franchies quel que soit l&apos;état du comportement imbriqué.</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Type :</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Initiale</translation>
+    </message>
+    <message>
+        <source>&amp;Hidden</source>
+        <translation>&amp;Masquée</translation>
+    </message>
+    <message>
+        <source>A hidden step is not part of this machine: it generates no code, and its transitions are not effective.</source>
+        <translation>Une étape masquée ne fait pas partie de cette machine : elle ne génère aucun code et ses transitions ne sont pas effectives.</translation>
+    </message>
+    <message>
+        <source>What this state does on this machine</source>
+        <translation>Ce que fait cet état sur cette machine</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Commentaire :</translation>
+    </message>
+    <message>
+        <source>Incoming transitions</source>
+        <translation>Transitions d&apos;entrée</translation>
+    </message>
+    <message>
+        <source>Outgoing transitions, by priority</source>
+        <translation>Transitions de sortie, par priorité</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Réceptivité</translation>
+    </message>
+    <message>
+        <source>Click a transition to select it</source>
+        <translation>Cliquez sur une transition pour la sélectionner</translation>
+    </message>
+    <message>
+        <source>%1 · state number %2</source>
+        <translation>%1 · état numéro %2</translation>
+    </message>
+    <message>
+        <source>%1 is the initial step. There is always exactly one initial step: to change it, make another step initial.</source>
+        <translation>%1 est l&apos;étape initiale. Il y a toujours exactement une étape initiale : pour la changer, rendez une autre étape initiale.</translation>
+    </message>
+    <message>
+        <source>Make %1 the initial step (the PLC starts in it). The current initial step is %2.</source>
+        <translation>Faire de %1 l&apos;étape initiale (l&apos;automate démarre dans celle-ci). L&apos;étape initiale actuelle est %2.</translation>
+    </message>
+    <message>
+        <source>F (family) →</source>
+        <extracomment>an incoming transition: its source, an arrow</extracomment>
+        <translation>F (famille) →</translation>
+    </message>
+    <message>
+        <source>%1 →</source>
+        <translation>%1 →</translation>
+    </message>
+    <message>
+        <source>F: → %1</source>
+        <extracomment>the family transition in the outgoing list of an F state</extracomment>
+        <translation>F : → %1</translation>
+    </message>
+    <message>
+        <source>%1: → %2</source>
+        <extracomment>an outgoing transition: priority, arrow, target (&quot;1: → F4&quot;); – when it has none</extracomment>
+        <translation>%1 : → %2</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source>Family transition: evaluated before the own transitions of every visible F state.</source>
+        <translation>Transition de famille : évaluée avant les transitions propres de chaque état F visible.</translation>
+    </message>
+    <message>
+        <source>Negated</source>
+        <translation>Niée</translation>
+    </message>
+    <message>
+        <source>Condition: %1</source>
+        <translation>Réceptivité : %1</translation>
+    </message>
+    <message>
+        <source>Not effective (%1): generates no code.</source>
+        <translation>Non effective (%1) : ne génère aucun code.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StepItem</name>
+    <message>
+        <source>Simple step</source>
+        <translation>Étape simple</translation>
+    </message>
+    <message>
+        <source>Macro-step</source>
+        <translation>Macro-étape</translation>
+    </message>
+    <message>
+        <source>Enclosing step</source>
+        <translation>Étape encapsulante</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, initiale</translation>
+    </message>
+    <message>
+        <source>%1, hidden</source>
+        <translation>%1, masquée</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TransitionDock</name>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Select a transition in the chart to see and edit its condition.</source>
+        <translation>Sélectionnez une transition dans le diagramme pour voir et modifier sa réceptivité.</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Cliquez sur une étape pour la sélectionner</translation>
+    </message>
+    <message>
+        <source>C&amp;ondition:</source>
+        <translation>&amp;Réceptivité :</translation>
+    </message>
+    <message>
+        <source>e.g. Start AND NOT Stop</source>
+        <translation>ex. Start AND NOT Stop</translation>
+    </message>
+    <message>
+        <source>Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparisons and arithmetic.
+Ctrl+Space completes a variable name.</source>
+        <translation>Texte structuré (ST) : variables déclarées, nombres, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparaisons et arithmétique.
+Ctrl+Espace complète un nom de variable.</translation>
+    </message>
+    <message>
+        <source>&amp;Priority:</source>
+        <translation>&amp;Priorité :</translation>
+    </message>
+    <message>
+        <source>&amp;Negated</source>
+        <translation>&amp;Niée</translation>
+    </message>
+    <message>
+        <source>Negation flips when this transition waits for the nested behaviour of its source:
+a negated transition out of a macro-step ignores Complete;
+a negated transition out of an enclosing step waits for Complete.</source>
+        <translation>La négation inverse l&apos;attente de cette transition sur le comportement imbriqué de sa source :
+une transition niée issue d&apos;une macro-étape ignore Complete ;
+une transition niée issue d&apos;une étape encapsulante attend Complete.</translation>
+    </message>
+    <message>
+        <source>&amp;Hidden</source>
+        <translation>&amp;Masquée</translation>
+    </message>
+    <message>
+        <source>A hidden transition is not part of this machine: it generates no code.</source>
+        <translation>Une transition masquée ne fait pas partie de cette machine : elle ne génère aucun code.</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Mémoires</translation>
+    </message>
+    <message>
+        <source>F (family)</source>
+        <translation>F (famille)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <extracomment>a transition: source step, arrow, target step</extracomment>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Not effective (%1): generates no code.</source>
+        <translation>Non effective (%1) : ne génère aucun code.</translation>
+    </message>
+    <message>
+        <source>First</source>
+        <translation>Première</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Aucune</translation>
+    </message>
+    <message>
+        <source>The family transition is evaluated before the own transitions of every visible F state.</source>
+        <translation>La transition de famille est évaluée avant les transitions propres de chaque état F visible.</translation>
+    </message>
+    <message>
+        <source>Only effective transitions have a priority: show this transition and both its steps first.</source>
+        <translation>Seules les transitions effectives ont une priorité : affichez d&apos;abord cette transition et ses deux étapes.</translation>
+    </message>
+    <message>
+        <source> of %1</source>
+        <extracomment>after the priority in its spin box: &quot;2 of 5&quot;</extracomment>
+        <translation> sur %1</translation>
+    </message>
+    <message>
+        <source>1 is evaluated first among the effective transitions out of %1; the others move to make room.</source>
+        <translation>1 est évaluée en premier parmi les transitions effectives issues de %1 ; les autres se décalent pour faire de la place.</translation>
+    </message>
+    <message>
+        <source>Negation has no effect here: family transitions never wait for Complete.</source>
+        <translation>La négation n&apos;a aucun effet ici : les transitions de famille n&apos;attendent jamais Complete.</translation>
+    </message>
+    <message>
+        <source>Negation has no effect here: %1 is a simple step, and only transitions out of macro-steps and enclosing steps wait for Complete.</source>
+        <translation>La négation n&apos;a aucun effet ici : %1 est une étape simple, et seules les transitions issues de macro-étapes et d&apos;étapes encapsulantes attendent Complete.</translation>
+    </message>
+    <message>
+        <source>Fires without waiting for the nested behaviour of macro-step %1 to complete.</source>
+        <translation>Franchie sans attendre que le comportement imbriqué de la macro-étape %1 soit terminé.</translation>
+    </message>
+    <message>
+        <source>Waits until the nested behaviour of macro-step %1 is complete (%1.Complete). Negate it to fire at once.</source>
+        <translation>Attend que le comportement imbriqué de la macro-étape %1 soit terminé (%1.Complete). Niez-la pour la franchir immédiatement.</translation>
+    </message>
+    <message>
+        <source>Waits until the nested behaviour of enclosing step %1 is complete (%1.Complete).</source>
+        <translation>Attend que le comportement imbriqué de l&apos;étape encapsulante %1 soit terminé (%1.Complete).</translation>
+    </message>
+    <message>
+        <source>Fires whatever the nested behaviour of enclosing step %1 is doing. Negate it to wait for %1.Complete.</source>
+        <translation>Franchie quel que soit l&apos;état du comportement imbriqué de l&apos;étape encapsulante %1. Niez-la pour attendre %1.Complete.</translation>
+    </message>
+    <message>
+        <source>Token on %1 (compared: no polarity)</source>
+        <translation>Mémoire de %1 (comparée : sans polarité)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (both NO and NC)</source>
+        <translation>Mémoire de %1 (à la fois NO et NF)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (NC)</source>
+        <translation>Mémoire de %1 (NF)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (NO)</source>
+        <translation>Mémoire de %1 (NO)</translation>
+    </message>
+    <message>
+        <source>A token replaces a literal %1 or NOT %1: rewrite the condition so that %1 has one polarity.</source>
+        <translation>Une mémoire remplace un littéral %1 ou NOT %1 : réécrivez la réceptivité pour que %1 n&apos;ait qu&apos;une polarité.</translation>
+    </message>
+    <message>
+        <source>Normally closed: remembers that %1 was FALSE while the nested behaviour of %2 was not complete.</source>
+        <translation>Normalement fermée : retient que %1 a été FALSE pendant que le comportement imbriqué de %2 n&apos;était pas terminé.</translation>
+    </message>
+    <message>
+        <source>Normally open: remembers that %1 was TRUE while the nested behaviour of %2 was not complete.</source>
+        <translation>Normalement ouverte : retient que %1 a été TRUE pendant que le comportement imbriqué de %2 n&apos;était pas terminé.</translation>
+    </message>
+    <message>
+        <source>Generated as %1_%2_%3_MEM.</source>
+        <translation>Générée sous le nom %1_%2_%3_MEM.</translation>
+    </message>
+    <message>
+        <source>Token on %1 (not a BOOL variable of the condition)</source>
+        <translation>Mémoire de %1 (pas une variable BOOL de la réceptivité)</translation>
+    </message>
+    <message>
+        <source>Uncheck to remove this token.</source>
+        <translation>Décochez pour supprimer cette mémoire.</translation>
+    </message>
+    <message>
+        <source>Family transitions never wait for Complete, so tokens do not apply to them.</source>
+        <translation>Les transitions de famille n&apos;attendent jamais Complete : les mémoires ne s&apos;y appliquent donc pas.</translation>
+    </message>
+    <message>
+        <source>Tokens apply to transitions out of macro-steps and enclosing steps; %1 is a simple step.</source>
+        <translation>Les mémoires s&apos;appliquent aux transitions issues de macro-étapes et d&apos;étapes encapsulantes ; %1 est une étape simple.</translation>
+    </message>
+    <message>
+        <source>Correct the condition to choose its tokens.</source>
+        <translation>Corrigez la réceptivité pour choisir ses mémoires.</translation>
+    </message>
+    <message>
+        <source>The condition uses no BOOL variable.</source>
+        <translation>La réceptivité n&apos;utilise aucune variable BOOL.</translation>
+    </message>
+    <message>
+        <source>A token keeps a short pulse of a BOOL variable that occurs while the nested behaviour of %1 is not yet complete.</source>
+        <translation>Une mémoire retient une impulsion brève d&apos;une variable BOOL survenue pendant que le comportement imbriqué de %1 n&apos;est pas encore terminé.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TransitionItem</name>
+    <message>
+        <source>Family transition: applies to every F state</source>
+        <translation>Transition de famille : s&apos;applique à chaque état F</translation>
+    </message>
+    <message>
+        <source>Priority %1</source>
+        <translation>Priorité %1</translation>
+    </message>
+    <message>
+        <source>Not effective (hidden)</source>
+        <translation>Non effective (masquée)</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, niée</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Réceptivité :</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>vide</translation>
+    </message>
+    <message>
+        <source>Tokens: %1</source>
+        <translation>Mémoires : %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesDock</name>
+    <message>
+        <source>Variables</source>
+        <translation>Variables</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filtrer</translation>
+    </message>
+    <message>
+        <source>Show only the variables whose name, type, default or comment contains this text</source>
+        <translation>N&apos;afficher que les variables dont le nom, le type, la valeur initiale ou le commentaire contient ce texte</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Add a BOOL variable after the current one</source>
+        <translation>Ajouter une variable BOOL après la variable courante</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Dupliquer</translation>
+    </message>
+    <message>
+        <source>Duplicate the selected variables</source>
+        <translation>Dupliquer les variables sélectionnées</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Monter</translation>
+    </message>
+    <message>
+        <source>Move the current variable up (declaration order)</source>
+        <translation>Monter la variable courante (ordre de déclaration)</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Descendre</translation>
+    </message>
+    <message>
+        <source>Move the current variable down (declaration order)</source>
+        <translation>Descendre la variable courante (ordre de déclaration)</translation>
+    </message>
+    <message>
+        <source>Sort by Name</source>
+        <translation>Trier par nom</translation>
+    </message>
+    <message>
+        <source>Sort the declarations by name (one undo step)</source>
+        <translation>Trier les déclarations par nom (une seule étape d&apos;annulation)</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Copier</translation>
+    </message>
+    <message>
+        <source>Paste</source>
+        <translation>Coller</translation>
+    </message>
+    <message>
+        <source>Variable%1</source>
+        <translation>Variable%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n variables</source>
+        <translation>
+            <numerusform>Supprimer %n variable</numerusform>
+            <numerusform>Supprimer %n variables</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Sort variables by name</source>
+        <translation>Trier les variables par nom</translation>
+    </message>
+    <message>
+        <source>Remove the selected variables</source>
+        <translation>Supprimer les variables sélectionnées</translation>
+    </message>
+    <message>
+        <source>Copy the selected variables as tab-separated rows</source>
+        <translation>Copier les variables sélectionnées en lignes séparées par des tabulations</translation>
+    </message>
+    <message>
+        <source>Paste rows from a spreadsheet: name, type, default and comment</source>
+        <translation>Coller des lignes d&apos;un tableur : nom, type, valeur initiale et commentaire</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesTableModel</name>
+    <message>
+        <source>No default: the PLC starts with %1.</source>
+        <translation>Pas de valeur initiale : l&apos;automate démarre avec %1.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a supported type: use one of %2.</source>
+        <translation>&apos;%1&apos; n&apos;est pas un type pris en charge : utilisez l&apos;un de ceux-ci : %2.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valeur initiale</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commentaire</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3 identifier, unique ignoring case. Renaming updates every condition.</source>
+        <translation>Identificateur IEC 61131-3, unique sans tenir compte de la casse. Le renommage met à jour toutes les réceptivités.</translation>
+    </message>
+    <message>
+        <source>Elementary IEC 61131-3 type</source>
+        <translation>Type élémentaire IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>Initial value, a literal of the type; empty for the type&apos;s implicit default</source>
+        <translation>Valeur initiale, un littéral du type ; vide pour la valeur par défaut implicite du type</translation>
+    </message>
+    <message>
+        <source>Free text, written into the generated declarations</source>
+        <translation>Texte libre, écrit dans les déclarations générées</translation>
+    </message>
+    <message>
+        <source>Line %1: the name is empty.</source>
+        <translation>Ligne %1 : le nom est vide.</translation>
+    </message>
+    <message>
+        <source>Line %1: &apos;%2&apos; is not a supported type: use one of %3.</source>
+        <translation>Ligne %1 : &apos;%2&apos; n&apos;est pas un type pris en charge : utilisez l&apos;un de ceux-ci : %3.</translation>
+    </message>
+    <message>
+        <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
+        <translation>Il n&apos;y a aucune variable à coller : copiez des lignes de nom, type, valeur initiale et commentaire, séparés par des tabulations.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ZoomIndicator</name>
+    <message>
+        <source>Zoom: %1 %</source>
+        <translation>Zoom : %1 %</translation>
+    </message>
+    <message>
+        <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
+        <translation>Ctrl+molette zoome autour de la souris ; Ctrl+0 ajuste le diagramme à la fenêtre</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Editor for the GEMMA-GRAFCET method of specifying machine operating modes</source>
+        <translation>Éditeur pour la méthode GEMMA-GRAFCET de spécification des modes de marche et d&apos;arrêt des machines</translation>
+    </message>
+    <message>
+        <source>The model file to open (GG Studio JSON, GG-Generator JSON or GG Studio PLCopen XML).</source>
+        <translation>Le fichier de modèle à ouvrir (JSON GG Studio, JSON GG-Generator ou PLCopen XML GG Studio).</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,1631 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="it_IT">
+<context>
+    <name>AddVariableCommand</name>
+    <message>
+        <source>Add variable %1</source>
+        <translation>Aggiungi la variabile %1</translation>
+    </message>
+</context>
+<context>
+    <name>ChartExport</name>
+    <message>
+        <source>GEMMA-GRAFCET chart drawn by GG Studio</source>
+        <translation>Diagramma GEMMA-GRAFCET disegnato con GG Studio</translation>
+    </message>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>Impossibile disegnare l&apos;immagine SVG.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Memoria insufficiente per un&apos;immagine di %1 × %2 pixel.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>Impossibile codificare l&apos;immagine PNG.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Impossibile disegnare il documento PDF.</translation>
+    </message>
+</context>
+<context>
+    <name>DiagnosticText</name>
+    <message>
+        <source>the name is empty</source>
+        <translation>il nome è vuoto</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid IEC 61131-3 identifier: use ASCII letters, digits and &apos;_&apos;, not starting with a digit</source>
+        <translation>&apos;%1&apos; non è un identificatore IEC 61131-3 valido: usare lettere ASCII, cifre e &apos;_&apos;, senza iniziare con una cifra</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; contains &apos;__&apos;, which IEC 61131-3 identifiers may not</source>
+        <translation>&apos;%1&apos; contiene &apos;__&apos;, non ammesso negli identificatori IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; ends with &apos;_&apos;, which IEC 61131-3 identifiers may not</source>
+        <translation>&apos;%1&apos; termina con &apos;_&apos;, non ammesso negli identificatori IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is an IEC 61131-3 keyword or type name</source>
+        <translation>&apos;%1&apos; è una parola chiave o un nome di tipo IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a name the generated code uses</source>
+        <translation>&apos;%1&apos; è un nome usato dal codice generato</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; does not occur in the condition.</source>
+        <translation>La memoria su &apos;%2&apos; in %1 non è valida: &apos;%2&apos; non compare nella condizione.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is ambiguous: the condition uses both %2 and NOT %2, so the token could be neither normally open nor normally closed.</source>
+        <translation>La memoria su &apos;%2&apos; in %1 è ambigua: la condizione usa sia %2 sia NOT %2, quindi la memoria non può essere né normalmente aperta né normalmente chiusa.</translation>
+    </message>
+    <message>
+        <source>The token in %1 names &apos;%2&apos;, which is not a declared variable.</source>
+        <translation>La memoria in %1 indica &apos;%2&apos;, che non è una variabile dichiarata.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is compared with &apos;=&apos; or &apos;&lt;&gt;&apos; in the condition, where it has no polarity; a token can only replace a literal %2 or NOT %2.</source>
+        <translation>La memoria su &apos;%2&apos; in %1 non è valida: nella condizione &apos;%2&apos; è confrontata con &apos;=&apos; o &apos;&lt;&gt;&apos;, dove non ha polarità; una memoria può sostituire solo un letterale %2 o NOT %2.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: family transitions never wait for Complete.</source>
+        <translation>La memoria su &apos;%2&apos; in %1 non ha effetto e non viene generata: le transizioni di famiglia non attendono mai Complete.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: its source %3 is a simple step.</source>
+        <translation>La memoria su &apos;%2&apos; in %1 non ha effetto e non viene generata: la sua tappa di origine %3 è una tappa semplice.</translation>
+    </message>
+    <message>
+        <source>The initial step %1 is hidden: the PLC would start in a state that has no code.</source>
+        <translation>La tappa iniziale %1 è nascosta: il PLC partirebbe in uno stato privo di codice.</translation>
+    </message>
+    <message>
+        <source>Step %1 has no visible outgoing transition: the machine would stay in it forever.</source>
+        <translation>La tappa %1 non ha transizioni uscenti visibili: la macchina vi resterebbe per sempre.</translation>
+    </message>
+    <message>
+        <source>Step %1 has no visible incoming transition: it can never become active.</source>
+        <translation>La tappa %1 non ha transizioni entranti visibili: non può mai diventare attiva.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
+        <translation>La condizione di %1 è vuota: scrivere TRUE per una transizione sempre pronta.</translation>
+    </message>
+    <message>
+        <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
+        <translation>La transizione di famiglia %1 è negata, il che non ha effetto: le transizioni di famiglia non attendono mai Complete.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is FALSE: the transition can never fire (hide it instead).</source>
+        <translation>La condizione di %1 è FALSE: la transizione non può mai scattare (meglio nasconderla).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
+        <translation>La variabile &apos;%1&apos; non è usata da alcuna condizione di transizione visibile.</translation>
+    </message>
+    <message>
+        <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
+        <translation>La tappa %1 non è raggiungibile dalla tappa iniziale %2 tramite transizioni visibili: non può mai diventare attiva.</translation>
+    </message>
+    <message>
+        <source>Transition %1 is negated, which has no effect: its source %2 is a simple step, and negation only changes transitions out of macro and enclosing steps.</source>
+        <translation>La transizione %1 è negata, il che non ha effetto: la sua tappa di origine %2 è una tappa semplice, e la negazione cambia solo le transizioni uscenti da macro-tappe e tappe incapsulanti.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is TRUE and does not wait for Complete: the lower-priority transitions %2 can never fire.</source>
+        <translation>La condizione di %1 è TRUE e non attende Complete: le transizioni a priorità inferiore %2 non possono mai scattare.</translation>
+    </message>
+    <message>
+        <source>Invalid variable name: %1.</source>
+        <translation>Nome di variabile non valido: %1.</translation>
+    </message>
+    <message>
+        <source>Syntax error in the condition of %1: %2.</source>
+        <translation>Errore di sintassi nella condizione di %1: %2.</translation>
+    </message>
+    <message>
+        <source>In the condition of %1: &apos;%2&apos; is not a declared variable.</source>
+        <translation>Nella condizione di %1: &apos;%2&apos; non è una variabile dichiarata.</translation>
+    </message>
+    <message>
+        <source>Type error in the condition of %1: %2.</source>
+        <translation>Errore di tipo nella condizione di %1: %2.</translation>
+    </message>
+    <message>
+        <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is %3, and only BOOL variables can have a token.</source>
+        <translation>La memoria su &apos;%2&apos; in %1 non è valida: &apos;%2&apos; è di tipo %3, e solo le variabili BOOL possono avere una memoria.</translation>
+    </message>
+    <message>
+        <source>The default value of variable &apos;%1&apos; is invalid: %2.</source>
+        <translation>Il valore iniziale della variabile &apos;%1&apos; non è valido: %2.</translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation>Errore</translation>
+    </message>
+    <message>
+        <source>Warning</source>
+        <translation>Avviso</translation>
+    </message>
+    <message>
+        <source>Information</source>
+        <translation>Informazione</translation>
+    </message>
+</context>
+<context>
+    <name>ElementLabels</name>
+    <message>
+        <source>F (family)</source>
+        <translation>F (famiglia)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <extracomment>a transition: source step, arrow, target step</extracomment>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Simple step</source>
+        <translation>Tappa semplice</translation>
+    </message>
+    <message>
+        <source>Macro-step</source>
+        <translation>Macro-tappa</translation>
+    </message>
+    <message>
+        <source>Enclosing step</source>
+        <translation>Tappa incapsulante</translation>
+    </message>
+    <message>
+        <source>hidden</source>
+        <translation>nascosta</translation>
+    </message>
+    <message>
+        <source>source %1 hidden</source>
+        <translation>tappa di origine %1 nascosta</translation>
+    </message>
+    <message>
+        <source>target %1 hidden</source>
+        <translation>tappa di destinazione %1 nascosta</translation>
+    </message>
+</context>
+<context>
+    <name>MoveVariableCommand</name>
+    <message>
+        <source>Move variable %1</source>
+        <translation>Sposta la variabile %1</translation>
+    </message>
+</context>
+<context>
+    <name>PasteVariablesCommand</name>
+    <message>
+        <source>Paste variable %1</source>
+        <translation>Incolla la variabile %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n variables</source>
+        <translation>
+            <numerusform>Incolla %n variabile</numerusform>
+            <numerusform>Incolla %n variabili</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>RecoveryPrompt</name>
+    <message>
+        <source>an untitled model</source>
+        <translation>un modello senza titolo</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Changes</source>
+        <translation>Recupera le modifiche non salvate</translation>
+    </message>
+    <message>
+        <source>GG Studio ended without saving %1.</source>
+        <translation>GG Studio si è chiuso senza salvare %1.</translation>
+    </message>
+    <message>
+        <source>Autosave kept a copy on %1. Recover it? You can then save it or discard it.</source>
+        <translation>Il salvataggio automatico ha conservato una copia il %1. Recuperarla? Potrai poi salvarla o scartarla.</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Recupera</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>&amp;Scarta</translation>
+    </message>
+    <message>
+        <source>&amp;Not Now</source>
+        <translation>&amp;Non ora</translation>
+    </message>
+    <message>
+        <source>The autosaved copy could not be read.</source>
+        <translation>Impossibile leggere la copia salvata automaticamente.</translation>
+    </message>
+</context>
+<context>
+    <name>RemoveVariableCommand</name>
+    <message>
+        <source>Remove variable %1</source>
+        <translation>Rimuovi la variabile %1</translation>
+    </message>
+</context>
+<context>
+    <name>RenameVariableCommand</name>
+    <message>
+        <source>Rename variable %1 to %2</source>
+        <translation>Rinomina la variabile %1 in %2</translation>
+    </message>
+</context>
+<context>
+    <name>ResetModelCommand</name>
+    <message>
+        <source>Reset to template</source>
+        <translation>Ripristina il template</translation>
+    </message>
+</context>
+<context>
+    <name>SetConditionCommand</name>
+    <message>
+        <source>Edit condition of %1</source>
+        <translation>Modifica la condizione di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetCycleTimeCommand</name>
+    <message>
+        <source>Set cycle time to %1 ms</source>
+        <translation>Imposta il tempo di ciclo a %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>SetDialectCommand</name>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+    <message>
+        <source>IEC</source>
+        <translation>IEC</translation>
+    </message>
+    <message>
+        <source>Set dialect to %1</source>
+        <translation>Imposta il dialetto a %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetInitialStepCommand</name>
+    <message>
+        <source>Make %1 the initial step</source>
+        <translation>Rendi %1 la tappa iniziale</translation>
+    </message>
+</context>
+<context>
+    <name>SetModelNameCommand</name>
+    <message>
+        <source>Rename model</source>
+        <translation>Rinomina il modello</translation>
+    </message>
+</context>
+<context>
+    <name>SetNegatedCommand</name>
+    <message>
+        <source>Negate %1</source>
+        <translation>Nega %1</translation>
+    </message>
+    <message>
+        <source>Remove negation of %1</source>
+        <translation>Rimuovi la negazione di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPriorityCommand</name>
+    <message>
+        <source>Set priority of %1 to %2</source>
+        <translation>Imposta la priorità di %1 a %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1</source>
+        <translation>Modifica il commento di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepHiddenCommand</name>
+    <message>
+        <source>Hide step %1</source>
+        <translation>Nascondi la tappa %1</translation>
+    </message>
+    <message>
+        <source>Show step %1</source>
+        <translation>Mostra la tappa %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetStepTypeCommand</name>
+    <message>
+        <source>macro-step</source>
+        <translation>macro-tappa</translation>
+    </message>
+    <message>
+        <source>enclosing step</source>
+        <translation>tappa incapsulante</translation>
+    </message>
+    <message>
+        <source>simple step</source>
+        <translation>tappa semplice</translation>
+    </message>
+    <message>
+        <source>Set %1 to %2</source>
+        <translation>Imposta %1 come %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetTokensCommand</name>
+    <message>
+        <source>Set tokens of %1</source>
+        <translation>Imposta le memorie di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetTransitionHiddenCommand</name>
+    <message>
+        <source>Hide transition %1</source>
+        <translation>Nascondi la transizione %1</translation>
+    </message>
+    <message>
+        <source>Show transition %1</source>
+        <translation>Mostra la transizione %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableCommentCommand</name>
+    <message>
+        <source>Edit comment of %1</source>
+        <translation>Modifica il commento di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableDefaultCommand</name>
+    <message>
+        <source>Set default of %1</source>
+        <translation>Imposta il valore iniziale di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableTypeCommand</name>
+    <message>
+        <source>Set type of %1 to %2</source>
+        <translation>Imposta il tipo di %1 a %2</translation>
+    </message>
+</context>
+<context>
+    <name>StateNames</name>
+    <message>
+        <source>Stop in initial state</source>
+        <translation>Arresto nello stato iniziale</translation>
+    </message>
+    <message>
+        <source>Stop requested at end of cycle</source>
+        <translation>Arresto richiesto a fine ciclo</translation>
+    </message>
+    <message>
+        <source>Stop requested in a given state</source>
+        <translation>Arresto richiesto in uno stato determinato</translation>
+    </message>
+    <message>
+        <source>Stop obtained</source>
+        <translation>Arresto ottenuto</translation>
+    </message>
+    <message>
+        <source>Preparation for restart after failure</source>
+        <translation>Preparazione per la rimessa in marcia dopo un guasto</translation>
+    </message>
+    <message>
+        <source>Operative part reset to initial state</source>
+        <translation>Messa della parte operativa nello stato iniziale</translation>
+    </message>
+    <message>
+        <source>Operative part set to a given state</source>
+        <translation>Messa della parte operativa in uno stato determinato</translation>
+    </message>
+    <message>
+        <source>Normal production</source>
+        <translation>Produzione normale</translation>
+    </message>
+    <message>
+        <source>Preparation run</source>
+        <translation>Marcia di preparazione</translation>
+    </message>
+    <message>
+        <source>Closing run</source>
+        <translation>Marcia di chiusura</translation>
+    </message>
+    <message>
+        <source>Verification run out of order</source>
+        <translation>Marcia di verifica in disordine</translation>
+    </message>
+    <message>
+        <source>Verification run in order</source>
+        <translation>Marcia di verifica in ordine</translation>
+    </message>
+    <message>
+        <source>Test run</source>
+        <translation>Marcia di prova</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Arresto di emergenza</translation>
+    </message>
+    <message>
+        <source>Diagnosis and/or failure handling</source>
+        <translation>Diagnosi e/o trattamento del guasto</translation>
+    </message>
+    <message>
+        <source>Production despite failure</source>
+        <translation>Produzione nonostante il guasto</translation>
+    </message>
+    <message>
+        <source>Stop procedures</source>
+        <translation>Procedure di arresto</translation>
+    </message>
+    <message>
+        <source>Operation procedures</source>
+        <translation>Procedure di funzionamento</translation>
+    </message>
+    <message>
+        <source>Failure procedures</source>
+        <translation>Procedure di guasto</translation>
+    </message>
+</context>
+<context>
+    <name>editor::Autosave</name>
+    <message>
+        <source>Cannot create the folder %1 for recovery copies</source>
+        <translation>Impossibile creare la cartella %1 per le copie di recupero</translation>
+    </message>
+    <message>
+        <source>Cannot write the recovery copy: %1</source>
+        <translation>Impossibile scrivere la copia di recupero: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::Document</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Untitled</source>
+        <translation>Senza titolo</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportActions</name>
+    <message>
+        <source>Export &amp;PLCopen XML…</source>
+        <translation>Esporta &amp;PLCopen XML…</translation>
+    </message>
+    <message>
+        <source>Write the PLC program as PLCopen XML, to import into a PLC programming tool</source>
+        <translation>Scrivi il programma PLC in PLCopen XML, da importare in un ambiente di programmazione PLC</translation>
+    </message>
+    <message>
+        <source>Export &amp;Structured Text…</source>
+        <translation>Esporta &amp;Testo strutturato (ST)…</translation>
+    </message>
+    <message>
+        <source>Write the PLC program as IEC 61131-3 Structured Text files</source>
+        <translation>Scrivi il programma PLC come file in Testo strutturato (ST) IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>Export &amp;GG-Generator JSON…</source>
+        <translation>Esporta JSON &amp;GG-Generator…</translation>
+    </message>
+    <message>
+        <source>Save the model in the format of the GG-Generator web tool</source>
+        <translation>Salva il modello nel formato dello strumento web GG-Generator</translation>
+    </message>
+    <message>
+        <source>Export &amp;Chart…</source>
+        <translation>Esporta &amp;diagramma…</translation>
+    </message>
+    <message>
+        <source>Save the chart as an SVG, PNG or PDF picture</source>
+        <translation>Salva il diagramma come immagine SVG, PNG o PDF</translation>
+    </message>
+    <message>
+        <source>&amp;Print…</source>
+        <translation>Sta&amp;mpa…</translation>
+    </message>
+    <message>
+        <source>Print the chart</source>
+        <translation>Stampa il diagramma</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… e %n altro</numerusform>
+            <numerusform>… e altri %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export a Model with Errors</source>
+        <translation>Esporta un modello con errori</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s). The generated code marks each one with a comment, but it may not compile or may not behave as intended.</source>
+        <translation>
+            <numerusform>Il modello ha %n errore. Il codice generato lo segnala con un commento, ma potrebbe non compilare o non comportarsi come previsto.</numerusform>
+            <numerusform>Il modello ha %n errori. Il codice generato li segnala ciascuno con un commento, ma potrebbe non compilare o non comportarsi come previsto.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Export Anyway</source>
+        <translation>Esporta &amp;comunque</translation>
+    </message>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Esporta PLCopen XML</translation>
+    </message>
+    <message>
+        <source>PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <source>Export Structured Text</source>
+        <translation>Esporta Testo strutturato</translation>
+    </message>
+    <message>
+        <source>Structured Text (*.st)</source>
+        <translation>Testo strutturato (*.st)</translation>
+    </message>
+    <message>
+        <source>Export Structured Text to a Folder</source>
+        <translation>Esporta Testo strutturato in una cartella</translation>
+    </message>
+    <message>
+        <source>Export GG-Generator JSON</source>
+        <translation>Esporta JSON GG-Generator</translation>
+    </message>
+    <message>
+        <source>GG-Generator JSON (*.json)</source>
+        <translation>JSON GG-Generator (*.json)</translation>
+    </message>
+    <message>
+        <source>SVG picture (*.svg)</source>
+        <translation>Immagine SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Immagine PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Documento PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Export Chart</source>
+        <translation>Esporta diagramma</translation>
+    </message>
+    <message>
+        <source>Print Chart</source>
+        <translation>Stampa diagramma</translation>
+    </message>
+    <message>
+        <source>The printer could not be started.</source>
+        <translation>Impossibile avviare la stampante.</translation>
+    </message>
+    <message>
+        <source>Exported to %1</source>
+        <translation>Esportato in %1</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Esportazione non riuscita</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>Impossibile scrivere %1.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ExportOptionsDialog</name>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Esporta PLCopen XML</translation>
+    </message>
+    <message>
+        <source>Export Structured Text</source>
+        <translation>Esporta Testo strutturato</translation>
+    </message>
+    <message>
+        <source>One file per POU, in a &amp;folder</source>
+        <translation>Un file per POU, in una &amp;cartella</translation>
+    </message>
+    <message>
+        <source>One &amp;IEC 61131-3 file with every POU</source>
+        <translation>Un unico file &amp;IEC 61131-3 con tutte le POU</translation>
+    </message>
+    <message>
+        <source>Files:</source>
+        <translation>File:</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialetto:</translation>
+    </message>
+    <message>
+        <source>IEC writes PLCopen TC6 XML 2.01 with the globals in the configuration. CODESYS writes what CODESYS V3.5 imports, with a GVL.</source>
+        <translation>IEC scrive PLCopen TC6 XML 2.01 con le variabili globali nella configurazione. CODESYS scrive ciò che CODESYS V3.5 importa, con una GVL.</translation>
+    </message>
+    <message>
+        <source>The single file is always IEC 61131-3: CODESYS code names a GVL that IEC compilers do not know.</source>
+        <translation>Il file unico è sempre IEC 61131-3: il codice CODESYS fa riferimento a una GVL che i compilatori IEC non conoscono.</translation>
+    </message>
+    <message>
+        <source>&amp;Export…</source>
+        <translation>&amp;Esporta…</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3 (Beremiz, OpenPLC, TwinCAT…)</source>
+        <translation>IEC 61131-3 (Beremiz, OpenPLC, TwinCAT…)</translation>
+    </message>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+</context>
+<context>
+    <name>editor::FrameItem</name>
+    <message>
+        <source>%1 — %2</source>
+        <extracomment>Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name</extracomment>
+        <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MainWindow</name>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Salvataggio automatico non riuscito: %1</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Modifica</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Visualizza</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Lingua</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aiuto</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Nuovo</translation>
+    </message>
+    <message>
+        <source>Start a new model from the GEMMA template</source>
+        <translation>Crea un nuovo modello dal template GEMMA</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Apri…</translation>
+    </message>
+    <message>
+        <source>Open a GG Studio model, a GG-Generator file or an exported PLCopen XML file</source>
+        <translation>Apri un modello GG Studio, un file GG-Generator o un file PLCopen XML esportato</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Salva</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Salva con n&amp;ome…</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to Template…</source>
+        <translation>&amp;Ripristina il template…</translation>
+    </message>
+    <message>
+        <source>Put every state, transition, variable and setting back to the template</source>
+        <translation>Riporta ogni stato, transizione, variabile e impostazione al template</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Esci</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annulla</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Annulla %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Ripeti</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>&amp;Ripeti %1</translation>
+    </message>
+    <message>
+        <source>&amp;Model Settings…</source>
+        <translation>&amp;Impostazioni del modello…</translation>
+    </message>
+    <message>
+        <source>Model name, PLC cycle time and code dialect</source>
+        <translation>Nome del modello, tempo di ciclo del PLC e dialetto del codice</translation>
+    </message>
+    <message>
+        <source>Show &amp;Hidden Elements</source>
+        <translation>Mostra elementi &amp;nascosti</translation>
+    </message>
+    <message>
+        <source>Draw the hidden states and transitions faded, so they can be selected</source>
+        <translation>Disegna sbiaditi gli stati e le transizioni nascosti, in modo da poterli selezionare</translation>
+    </message>
+    <message>
+        <source>&amp;Fit Chart</source>
+        <translation>&amp;Adatta il diagramma</translation>
+    </message>
+    <message>
+        <source>&amp;Actual Size (100 %)</source>
+        <translation>&amp;Dimensioni reali (100 %)</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;In</source>
+        <translation>&amp;Ingrandisci</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;Out</source>
+        <translation>&amp;Riduci</translation>
+    </message>
+    <message>
+        <source>&amp;About GG Studio</source>
+        <translation>&amp;Informazioni su GG Studio</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>Informazioni su &amp;Qt</translation>
+    </message>
+    <message>
+        <source>%1[*] — GG Studio</source>
+        <translation>%1[*] — GG Studio</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Modifiche non salvate</translation>
+    </message>
+    <message>
+        <source>The model “%1” has unsaved changes.</source>
+        <translation>Il modello «%1» ha modifiche non salvate.</translation>
+    </message>
+    <message>
+        <source>Do you want to save them?</source>
+        <translation>Vuoi salvarle?</translation>
+    </message>
+    <message>
+        <source>All supported files (*.json *.xml)</source>
+        <translation>Tutti i file supportati (*.json *.xml)</translation>
+    </message>
+    <message>
+        <source>GG Studio models (*.json)</source>
+        <translation>Modelli GG Studio (*.json)</translation>
+    </message>
+    <message>
+        <source>GG-Generator files (*.json)</source>
+        <translation>File GG-Generator (*.json)</translation>
+    </message>
+    <message>
+        <source>GG Studio PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML di GG Studio (*.xml)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Tutti i file (*)</translation>
+    </message>
+    <message>
+        <source>Open Model</source>
+        <translation>Apri modello</translation>
+    </message>
+    <message>
+        <source>Could not open %1.</source>
+        <translation>Impossibile aprire %1.</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Aperto %1</translation>
+    </message>
+    <message>
+        <source>Imported %1: Save As keeps it as a GG Studio model</source>
+        <translation>Importato %1: «Salva con nome» lo conserva come modello GG Studio</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>senza titolo</translation>
+    </message>
+    <message>
+        <source>Save Model As</source>
+        <translation>Salva modello con nome</translation>
+    </message>
+    <message>
+        <source>Save Model</source>
+        <translation>Salva modello</translation>
+    </message>
+    <message>
+        <source>Could not save %1.</source>
+        <translation>Impossibile salvare %1.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Salvato %1</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Esportazione non riuscita</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>Impossibile scrivere %1.</translation>
+    </message>
+    <message>
+        <source>Recovered unsaved changes: save them to keep them</source>
+        <translation>Modifiche non salvate recuperate: salvale per conservarle</translation>
+    </message>
+    <message>
+        <source>Reset to Template</source>
+        <translation>Ripristina il template</translation>
+    </message>
+    <message>
+        <source>Put every state, transition, variable and setting back to the GEMMA template? You can undo this.</source>
+        <translation>Riportare ogni stato, transizione, variabile e impostazione al template GEMMA? L&apos;operazione si può annullare.</translation>
+    </message>
+    <message>
+        <source>About GG Studio</source>
+        <translation>Informazioni su GG Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 program that runs them (Structured Text, PLCopen XML).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Un editor per il metodo GEMMA-GRAFCET: scegli i modi di marcia e di arresto di una macchina sul template GEMMA, scrivi le condizioni delle loro transizioni e genera il programma IEC 61131-3 che li esegue (Testo strutturato, PLCopen XML).&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModelCommand</name>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1 is the edit (&quot;Rename variable Stop to Halt&quot;), %2 why the model refused it</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModelSettingsDialog</name>
+    <message>
+        <source>Model Settings</source>
+        <translation>Impostazioni del modello</translation>
+    </message>
+    <message>
+        <source>The project name written into the exported PLCopen XML</source>
+        <translation>Il nome del progetto scritto nel PLCopen XML esportato</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>The period of the cyclic PLC task that runs GEMMA</source>
+        <translation>Il periodo del task ciclico del PLC che esegue GEMMA</translation>
+    </message>
+    <message>
+        <source>The flavour of the generated Structured Text and its preview</source>
+        <translation>La variante del Testo strutturato generato e della sua anteprima</translation>
+    </message>
+    <message>
+        <source>Use the cycle time and dialect for &amp;new models</source>
+        <translation>Usa tempo di ciclo e dialetto per i nuovi &amp;modelli</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nome:</translation>
+    </message>
+    <message>
+        <source>PLC &amp;cycle time:</source>
+        <translation>Tempo di &amp;ciclo PLC:</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialetto:</translation>
+    </message>
+    <message>
+        <source>Change model settings</source>
+        <translation>Modifica le impostazioni del modello</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemCounter</name>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n errore</numerusform>
+            <numerusform>%n errori</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n avviso</numerusform>
+            <numerusform>%n avvisi</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show the Problems panel</source>
+        <translation>Mostra il pannello Problemi</translation>
+    </message>
+    <message>
+        <source>No problems</source>
+        <translation>Nessun problema</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ProblemsDock</name>
+    <message>
+        <source>Model</source>
+        <translation>Modello</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>Problemi</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Codice</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Elemento</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Messaggio</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copia</translation>
+    </message>
+    <message>
+        <source>1 error</source>
+        <translation>1 errore</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n errors</source>
+        <translation>
+            <numerusform>%n errore</numerusform>
+            <numerusform>%n errori</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>1 warning</source>
+        <translation>1 avviso</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warnings</source>
+        <translation>
+            <numerusform>%n avviso</numerusform>
+            <numerusform>%n avvisi</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>1 info</source>
+        <translation>1 info</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n infos</source>
+        <translation>
+            <numerusform>%n info</numerusform>
+            <numerusform>%n info</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Show or hide the errors</source>
+        <translation>Mostra o nascondi gli errori</translation>
+    </message>
+    <message>
+        <source>Show or hide the warnings</source>
+        <translation>Mostra o nascondi gli avvisi</translation>
+    </message>
+    <message>
+        <source>Show or hide the information messages</source>
+        <translation>Mostra o nascondi i messaggi informativi</translation>
+    </message>
+</context>
+<context>
+    <name>editor::RecentFiles</name>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Apri re&amp;centi</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Menu</source>
+        <translation>&amp;Svuota il menu</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StPreviewDock</name>
+    <message>
+        <source>Structured Text</source>
+        <translation>Testo strutturato (ST)</translation>
+    </message>
+    <message>
+        <source>&amp;Dialect:</source>
+        <translation>&amp;Dialetto:</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3</source>
+        <translation>IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>CODESYS</source>
+        <translation>CODESYS</translation>
+    </message>
+    <message>
+        <source>Beremiz, OpenPLC, TwinCAT, matiec: globals in the configuration</source>
+        <translation>Beremiz, OpenPLC, TwinCAT, matiec: variabili globali nella configurazione</translation>
+    </message>
+    <message>
+        <source>CODESYS V3.5: globals in the list GVL, read as GVL.Name</source>
+        <translation>CODESYS V3.5: variabili globali nella lista GVL, lette come GVL.Nome</translation>
+    </message>
+    <message>
+        <source>The flavour of the generated code; saved with the model</source>
+        <translation>La variante del codice generato; salvata con il modello</translation>
+    </message>
+    <message>
+        <source>%1 is hidden: it generates no code.</source>
+        <translation>%1 è nascosta: non genera codice.</translation>
+    </message>
+    <message>
+        <source>This transition is not effective: it generates no code.</source>
+        <translation>Questa transizione non è effettiva: non genera codice.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StepDock</name>
+    <message>
+        <source>Step</source>
+        <translation>Tappa</translation>
+    </message>
+    <message>
+        <source>Select a step in the chart to see and edit its properties.</source>
+        <translation>Seleziona una tappa nel diagramma per vederne e modificarne le proprietà.</translation>
+    </message>
+    <message>
+        <source>Simple step: no nested behaviour.
+Macro-step: its transitions wait until the nested behaviour is complete.
+Enclosing step: its transitions fire whatever the nested behaviour is doing.</source>
+        <translation>Tappa semplice: nessun comportamento interno.
+Macro-tappa: le sue transizioni attendono che il comportamento interno sia completo.
+Tappa incapsulante: le sue transizioni scattano qualunque cosa stia facendo il comportamento interno.</translation>
+    </message>
+    <message>
+        <source>&amp;Type:</source>
+        <translation>&amp;Tipo:</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Iniziale</translation>
+    </message>
+    <message>
+        <source>&amp;Hidden</source>
+        <translation>&amp;Nascosta</translation>
+    </message>
+    <message>
+        <source>A hidden step is not part of this machine: it generates no code, and its transitions are not effective.</source>
+        <translation>Una tappa nascosta non fa parte di questa macchina: non genera codice e le sue transizioni non sono effettive.</translation>
+    </message>
+    <message>
+        <source>What this state does on this machine</source>
+        <translation>Cosa fa questo stato su questa macchina</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Commento:</translation>
+    </message>
+    <message>
+        <source>Incoming transitions</source>
+        <translation>Transizioni entranti</translation>
+    </message>
+    <message>
+        <source>Outgoing transitions, by priority</source>
+        <translation>Transizioni uscenti, per priorità</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transizione</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Condizione</translation>
+    </message>
+    <message>
+        <source>Click a transition to select it</source>
+        <translation>Fai clic su una transizione per selezionarla</translation>
+    </message>
+    <message>
+        <source>%1 · state number %2</source>
+        <translation>%1 · stato numero %2</translation>
+    </message>
+    <message>
+        <source>%1 is the initial step. There is always exactly one initial step: to change it, make another step initial.</source>
+        <translation>%1 è la tappa iniziale. C&apos;è sempre esattamente una tappa iniziale: per cambiarla, rendi iniziale un&apos;altra tappa.</translation>
+    </message>
+    <message>
+        <source>Make %1 the initial step (the PLC starts in it). The current initial step is %2.</source>
+        <translation>Rendi %1 la tappa iniziale (il PLC parte da essa). La tappa iniziale attuale è %2.</translation>
+    </message>
+    <message>
+        <source>F (family) →</source>
+        <extracomment>an incoming transition: its source, an arrow</extracomment>
+        <translation>F (famiglia) →</translation>
+    </message>
+    <message>
+        <source>%1 →</source>
+        <translation>%1 →</translation>
+    </message>
+    <message>
+        <source>F: → %1</source>
+        <extracomment>the family transition in the outgoing list of an F state</extracomment>
+        <translation>F: → %1</translation>
+    </message>
+    <message>
+        <source>%1: → %2</source>
+        <extracomment>an outgoing transition: priority, arrow, target (&quot;1: → F4&quot;); – when it has none</extracomment>
+        <translation>%1: → %2</translation>
+    </message>
+    <message>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <source>Family transition: evaluated before the own transitions of every visible F state.</source>
+        <translation>Transizione di famiglia: valutata prima delle transizioni proprie di ogni stato F visibile.</translation>
+    </message>
+    <message>
+        <source>Negated</source>
+        <translation>Negata</translation>
+    </message>
+    <message>
+        <source>Condition: %1</source>
+        <translation>Condizione: %1</translation>
+    </message>
+    <message>
+        <source>Not effective (%1): generates no code.</source>
+        <translation>Non effettiva (%1): non genera codice.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::StepItem</name>
+    <message>
+        <source>Simple step</source>
+        <translation>Tappa semplice</translation>
+    </message>
+    <message>
+        <source>Macro-step</source>
+        <translation>Macro-tappa</translation>
+    </message>
+    <message>
+        <source>Enclosing step</source>
+        <translation>Tappa incapsulante</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, iniziale</translation>
+    </message>
+    <message>
+        <source>%1, hidden</source>
+        <translation>%1, nascosta</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TransitionDock</name>
+    <message>
+        <source>Transition</source>
+        <translation>Transizione</translation>
+    </message>
+    <message>
+        <source>Select a transition in the chart to see and edit its condition.</source>
+        <translation>Seleziona una transizione nel diagramma per vederne e modificarne la condizione.</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Fai clic su una tappa per selezionarla</translation>
+    </message>
+    <message>
+        <source>C&amp;ondition:</source>
+        <translation>&amp;Condizione:</translation>
+    </message>
+    <message>
+        <source>e.g. Start AND NOT Stop</source>
+        <translation>es. Start AND NOT Stop</translation>
+    </message>
+    <message>
+        <source>Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparisons and arithmetic.
+Ctrl+Space completes a variable name.</source>
+        <translation>Testo strutturato: variabili dichiarate, numeri, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, confronti e aritmetica.
+Ctrl+Spazio completa un nome di variabile.</translation>
+    </message>
+    <message>
+        <source>&amp;Priority:</source>
+        <translation>&amp;Priorità:</translation>
+    </message>
+    <message>
+        <source>&amp;Negated</source>
+        <translation>&amp;Negata</translation>
+    </message>
+    <message>
+        <source>Negation flips when this transition waits for the nested behaviour of its source:
+a negated transition out of a macro-step ignores Complete;
+a negated transition out of an enclosing step waits for Complete.</source>
+        <translation>La negazione inverte l&apos;attesa di questa transizione rispetto al comportamento interno della sua tappa di origine:
+una transizione negata uscente da una macro-tappa ignora Complete;
+una transizione negata uscente da una tappa incapsulante attende Complete.</translation>
+    </message>
+    <message>
+        <source>&amp;Hidden</source>
+        <translation>Na&amp;scosta</translation>
+    </message>
+    <message>
+        <source>A hidden transition is not part of this machine: it generates no code.</source>
+        <translation>Una transizione nascosta non fa parte di questa macchina: non genera codice.</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Memorie</translation>
+    </message>
+    <message>
+        <source>F (family)</source>
+        <translation>F (famiglia)</translation>
+    </message>
+    <message>
+        <source>%1 → %2</source>
+        <extracomment>a transition: source step, arrow, target step</extracomment>
+        <translation>%1 → %2</translation>
+    </message>
+    <message>
+        <source>Not effective (%1): generates no code.</source>
+        <translation>Non effettiva (%1): non genera codice.</translation>
+    </message>
+    <message>
+        <source>First</source>
+        <translation>Prima</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Nessuna</translation>
+    </message>
+    <message>
+        <source>The family transition is evaluated before the own transitions of every visible F state.</source>
+        <translation>La transizione di famiglia è valutata prima delle transizioni proprie di ogni stato F visibile.</translation>
+    </message>
+    <message>
+        <source>Only effective transitions have a priority: show this transition and both its steps first.</source>
+        <translation>Solo le transizioni effettive hanno una priorità: mostra prima questa transizione e le sue due tappe.</translation>
+    </message>
+    <message>
+        <source> of %1</source>
+        <extracomment>after the priority in its spin box: &quot;2 of 5&quot;</extracomment>
+        <translation> di %1</translation>
+    </message>
+    <message>
+        <source>1 is evaluated first among the effective transitions out of %1; the others move to make room.</source>
+        <translation>1 è valutata per prima tra le transizioni effettive uscenti da %1; le altre scalano per fare posto.</translation>
+    </message>
+    <message>
+        <source>Negation has no effect here: family transitions never wait for Complete.</source>
+        <translation>Qui la negazione non ha effetto: le transizioni di famiglia non attendono mai Complete.</translation>
+    </message>
+    <message>
+        <source>Negation has no effect here: %1 is a simple step, and only transitions out of macro-steps and enclosing steps wait for Complete.</source>
+        <translation>Qui la negazione non ha effetto: %1 è una tappa semplice, e solo le transizioni uscenti da macro-tappe e tappe incapsulanti attendono Complete.</translation>
+    </message>
+    <message>
+        <source>Fires without waiting for the nested behaviour of macro-step %1 to complete.</source>
+        <translation>Scatta senza attendere che il comportamento interno della macro-tappa %1 sia completo.</translation>
+    </message>
+    <message>
+        <source>Waits until the nested behaviour of macro-step %1 is complete (%1.Complete). Negate it to fire at once.</source>
+        <translation>Attende che il comportamento interno della macro-tappa %1 sia completo (%1.Complete). Negala per farla scattare subito.</translation>
+    </message>
+    <message>
+        <source>Waits until the nested behaviour of enclosing step %1 is complete (%1.Complete).</source>
+        <translation>Attende che il comportamento interno della tappa incapsulante %1 sia completo (%1.Complete).</translation>
+    </message>
+    <message>
+        <source>Fires whatever the nested behaviour of enclosing step %1 is doing. Negate it to wait for %1.Complete.</source>
+        <translation>Scatta qualunque cosa stia facendo il comportamento interno della tappa incapsulante %1. Negala per attendere %1.Complete.</translation>
+    </message>
+    <message>
+        <source>Token on %1 (compared: no polarity)</source>
+        <translation>Memoria su %1 (confronto: nessuna polarità)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (both NO and NC)</source>
+        <translation>Memoria su %1 (sia NA sia NC)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (NC)</source>
+        <translation>Memoria su %1 (NC)</translation>
+    </message>
+    <message>
+        <source>Token on %1 (NO)</source>
+        <translation>Memoria su %1 (NA)</translation>
+    </message>
+    <message>
+        <source>A token replaces a literal %1 or NOT %1: rewrite the condition so that %1 has one polarity.</source>
+        <translation>Una memoria sostituisce un letterale %1 o NOT %1: riscrivi la condizione in modo che %1 abbia una sola polarità.</translation>
+    </message>
+    <message>
+        <source>Normally closed: remembers that %1 was FALSE while the nested behaviour of %2 was not complete.</source>
+        <translation>Normalmente chiusa: ricorda che %1 era FALSE mentre il comportamento interno di %2 non era completo.</translation>
+    </message>
+    <message>
+        <source>Normally open: remembers that %1 was TRUE while the nested behaviour of %2 was not complete.</source>
+        <translation>Normalmente aperta: ricorda che %1 era TRUE mentre il comportamento interno di %2 non era completo.</translation>
+    </message>
+    <message>
+        <source>Generated as %1_%2_%3_MEM.</source>
+        <translation>Generata come %1_%2_%3_MEM.</translation>
+    </message>
+    <message>
+        <source>Token on %1 (not a BOOL variable of the condition)</source>
+        <translation>Memoria su %1 (non è una variabile BOOL della condizione)</translation>
+    </message>
+    <message>
+        <source>Uncheck to remove this token.</source>
+        <translation>Deseleziona per rimuovere questa memoria.</translation>
+    </message>
+    <message>
+        <source>Family transitions never wait for Complete, so tokens do not apply to them.</source>
+        <translation>Le transizioni di famiglia non attendono mai Complete, quindi le memorie non si applicano a esse.</translation>
+    </message>
+    <message>
+        <source>Tokens apply to transitions out of macro-steps and enclosing steps; %1 is a simple step.</source>
+        <translation>Le memorie si applicano alle transizioni uscenti da macro-tappe e tappe incapsulanti; %1 è una tappa semplice.</translation>
+    </message>
+    <message>
+        <source>Correct the condition to choose its tokens.</source>
+        <translation>Correggi la condizione per sceglierne le memorie.</translation>
+    </message>
+    <message>
+        <source>The condition uses no BOOL variable.</source>
+        <translation>La condizione non usa alcuna variabile BOOL.</translation>
+    </message>
+    <message>
+        <source>A token keeps a short pulse of a BOOL variable that occurs while the nested behaviour of %1 is not yet complete.</source>
+        <translation>Una memoria conserva un breve impulso di una variabile BOOL che si verifica mentre il comportamento interno di %1 non è ancora completo.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TransitionItem</name>
+    <message>
+        <source>Family transition: applies to every F state</source>
+        <translation>Transizione di famiglia: si applica a ogni stato F</translation>
+    </message>
+    <message>
+        <source>Priority %1</source>
+        <translation>Priorità %1</translation>
+    </message>
+    <message>
+        <source>Not effective (hidden)</source>
+        <translation>Non effettiva (nascosta)</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negata</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Condizione:</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>vuota</translation>
+    </message>
+    <message>
+        <source>Tokens: %1</source>
+        <translation>Memorie: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesDock</name>
+    <message>
+        <source>Variables</source>
+        <translation>Variabili</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filtro</translation>
+    </message>
+    <message>
+        <source>Show only the variables whose name, type, default or comment contains this text</source>
+        <translation>Mostra solo le variabili il cui nome, tipo, valore iniziale o commento contiene questo testo</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Aggiungi</translation>
+    </message>
+    <message>
+        <source>Add a BOOL variable after the current one</source>
+        <translation>Aggiungi una variabile BOOL dopo quella corrente</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplica</translation>
+    </message>
+    <message>
+        <source>Duplicate the selected variables</source>
+        <translation>Duplica le variabili selezionate</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Sposta su</translation>
+    </message>
+    <message>
+        <source>Move the current variable up (declaration order)</source>
+        <translation>Sposta in alto la variabile corrente (ordine di dichiarazione)</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Sposta giù</translation>
+    </message>
+    <message>
+        <source>Move the current variable down (declaration order)</source>
+        <translation>Sposta in basso la variabile corrente (ordine di dichiarazione)</translation>
+    </message>
+    <message>
+        <source>Sort by Name</source>
+        <translation>Ordina per nome</translation>
+    </message>
+    <message>
+        <source>Sort the declarations by name (one undo step)</source>
+        <translation>Ordina le dichiarazioni per nome (un solo passo di annullamento)</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Copia</translation>
+    </message>
+    <message>
+        <source>Paste</source>
+        <translation>Incolla</translation>
+    </message>
+    <message>
+        <source>Variable%1</source>
+        <translation>Variabile%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n variables</source>
+        <translation>
+            <numerusform>Rimuovi %n variabile</numerusform>
+            <numerusform>Rimuovi %n variabili</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Sort variables by name</source>
+        <translation>Ordina le variabili per nome</translation>
+    </message>
+    <message>
+        <source>Remove the selected variables</source>
+        <translation>Rimuovi le variabili selezionate</translation>
+    </message>
+    <message>
+        <source>Copy the selected variables as tab-separated rows</source>
+        <translation>Copia le variabili selezionate come righe separate da tabulazioni</translation>
+    </message>
+    <message>
+        <source>Paste rows from a spreadsheet: name, type, default and comment</source>
+        <translation>Incolla righe da un foglio di calcolo: nome, tipo, valore iniziale e commento</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VariablesTableModel</name>
+    <message>
+        <source>No default: the PLC starts with %1.</source>
+        <translation>Nessun valore iniziale: il PLC parte con %1.</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a supported type: use one of %2.</source>
+        <translation>&apos;%1&apos; non è un tipo supportato: usane uno tra %2.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valore iniziale</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commento</translation>
+    </message>
+    <message>
+        <source>IEC 61131-3 identifier, unique ignoring case. Renaming updates every condition.</source>
+        <translation>Identificatore IEC 61131-3, univoco senza distinzione tra maiuscole e minuscole. Rinominarlo aggiorna ogni condizione.</translation>
+    </message>
+    <message>
+        <source>Elementary IEC 61131-3 type</source>
+        <translation>Tipo elementare IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>Initial value, a literal of the type; empty for the type&apos;s implicit default</source>
+        <translation>Valore iniziale, un letterale del tipo; vuoto per il valore predefinito implicito del tipo</translation>
+    </message>
+    <message>
+        <source>Free text, written into the generated declarations</source>
+        <translation>Testo libero, scritto nelle dichiarazioni generate</translation>
+    </message>
+    <message>
+        <source>Line %1: the name is empty.</source>
+        <translation>Riga %1: il nome è vuoto.</translation>
+    </message>
+    <message>
+        <source>Line %1: &apos;%2&apos; is not a supported type: use one of %3.</source>
+        <translation>Riga %1: &apos;%2&apos; non è un tipo supportato: usane uno tra %3.</translation>
+    </message>
+    <message>
+        <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
+        <translation>Non ci sono variabili da incollare: copia righe con nome, tipo, valore iniziale e commento, separati da tabulazioni.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ZoomIndicator</name>
+    <message>
+        <source>Zoom: %1 %</source>
+        <translation>Zoom: %1 %</translation>
+    </message>
+    <message>
+        <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
+        <translation>Ctrl+rotellina ingrandisce attorno al puntatore; Ctrl+0 adatta il diagramma</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>Editor for the GEMMA-GRAFCET method of specifying machine operating modes</source>
+        <translation>Editor per il metodo GEMMA-GRAFCET, per specificare i modi di marcia e di arresto delle macchine</translation>
+    </message>
+    <message>
+        <source>The model file to open (GG Studio JSON, GG-Generator JSON or GG Studio PLCopen XML).</source>
+        <translation>Il file del modello da aprire (JSON GG Studio, JSON GG-Generator o PLCopen XML GG Studio).</translation>
+    </message>
+</context>
+</TS>
