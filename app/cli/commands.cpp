@@ -6,6 +6,8 @@
 #include "core/fileio.h"
 #include "core/modelfiles.h"
 #include "core/plcopenwriter.h"
+#include "core/scenario.h"
+#include "core/simulator.h"
 #include "core/stexport.h"
 #include "core/stgenerator.h"
 #include "cycletime.h"
@@ -14,6 +16,7 @@
 #include <functional>
 #include <map>
 #include <ostream>
+#include <stdexcept>
 
 namespace cli {
 
@@ -38,6 +41,10 @@ const char* const kUsage =
     "      unless --force (the code then carries a comment at each problem).\n"
     "  st MODEL [--dialect iec|codesys]\n"
     "      Print the GEMMA program's Structured Text.\n"
+    "  simulate MODEL [SCENARIO] [--scans N] [--trace]\n"
+    "      Run the GEMMA program scan by scan: one line 'scan N: STEP [fired TRANSITION]' per\n"
+    "      scan (--trace adds inputs, Entry, tokens and Complete). Runs the scenario's last\n"
+    "      scan, else 10 scans, or N. Exit 1 when an expectation of the scenario fails.\n"
     "\n"
     "Formats: IN is recognised by its content. OUT is GG-Generator JSON when it ends in\n"
     ".gg.json, GG Studio JSON otherwise; --to overrides the extension.\n"
@@ -264,6 +271,111 @@ int commandSt(const Arguments& args, Streams streams)
     return Success;
 }
 
+// --- simulate ----------------------------------------------------------------
+
+constexpr std::int64_t kDefaultSimulationScans = 10;
+
+std::string joinValues(const std::vector<std::string>& names, const std::vector<bool>& values)
+{
+    std::string text;
+    for (std::size_t i = 0; i < names.size() && i < values.size(); ++i)
+        text += (i ? ", " : "") + names[i] + " = " + (values[i] ? "TRUE" : "FALSE");
+    return text.empty() ? "none" : text;
+}
+
+void printScan(const core::ScanRecord& record, const core::Simulator& simulator, bool trace, std::ostream& out)
+{
+    out << "scan " << record.scan << ": " << (record.stepAfter.empty() ? "(no visible step)" : record.stepAfter);
+    if (!record.fired.empty())
+        out << " fired " << record.fired;
+    out << "\n";
+    if (!trace)
+        return;
+    std::string inputs;
+    for (const core::InputChange& change : record.changedInputs)
+        inputs += (inputs.empty() ? "" : ", ") + change.variable + " = " + core::cond::formatValue(change.value);
+    out << "    inputs changed: " << (inputs.empty() ? "none" : inputs) << "\n";
+    out << "    Entry = " << (record.entry ? "TRUE" : "FALSE") << "\n";
+    out << "    tokens: " << joinValues(simulator.tokenNames(), record.tokens) << "\n";
+    out << "    Complete: " << joinValues(simulator.nestedSteps(), record.complete) << "\n";
+}
+
+// The scenario file, parsed and checked against the model; false (and the
+// errors printed) when it cannot be used.
+bool loadScenario(const std::string& path, const core::Simulator& simulator, core::Scenario& scenario,
+                  std::ostream& err)
+{
+    std::string text;
+    if (core::Status status = core::readFileLimited(path, 16u * 1024u * 1024u, text); !status) {
+        err << path << ": " << status.message << "\n";
+        return false;
+    }
+    core::ScenarioParseResult parsed = core::parseScenario(text, path);
+    std::vector<core::ScenarioError> errors = parsed.errors;
+    if (parsed.ok())
+        errors = core::validateScenario(parsed.scenario, simulator);
+    for (const core::ScenarioError& error : errors)
+        err << error.toString() << "\n";
+    scenario = std::move(parsed.scenario);
+    return errors.empty();
+}
+
+int commandSimulate(const Arguments& args, Streams streams)
+{
+    const std::vector<std::string>& files = args.positional();
+    if (files.empty() || files.size() > 2)
+        return usageError(streams.err, "simulate takes a model file and an optional scenario file");
+    std::int64_t scans = 0;
+    if (auto given = args.value("--scans")) {
+        std::size_t used = 0;
+        try {
+            scans = std::stoll(*given, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != given->size() || scans < 1)
+            return usageError(streams.err, "--scans takes a positive number of scans, not '" + *given + "'");
+    }
+    std::unique_ptr<core::Model> model = loadOrReport(files[0], streams.err);
+    if (!model)
+        return UnreadableInput;
+    core::Simulator simulator(*model);
+    int errors = 0;
+    for (const core::GemmaProblem& problem : simulator.program().problems)
+        errors += problem.kind == core::GemmaProblem::Kind::Error ? 1 : 0;
+    if (errors > 0)
+        streams.err << files[0] << ": " << errors << " error(s) in the model (see 'ggstudio-cli validate'): "
+                    << "a condition that cannot be used never fires, as in the generated code\n";
+
+    core::Scenario scenario;
+    if (files.size() == 2 && !loadScenario(files[1], simulator, scenario, streams.err))
+        return UnreadableInput;
+    if (scans == 0)
+        scans = scenario.lastScan() > 0 ? scenario.lastScan() : kDefaultSimulationScans;
+
+    const bool trace = args.has("--trace");
+    core::ScenarioRunner runner(scenario, simulator);
+    std::size_t failures = 0;
+    for (std::int64_t i = 0; i < scans; ++i) {
+        const core::ScanRecord record = runner.step();
+        printScan(record, simulator, trace, streams.out);
+        for (const core::ScenarioFailure& failure : runner.lastFailures())
+            streams.err << files[1] << ":" << failure.line << ": " << failure.message << "\n";
+        failures += runner.lastFailures().size();
+    }
+    if (files.size() == 2) {
+        std::size_t expectations = 0;
+        for (const core::ScenarioAction& action : scenario.actions)
+            expectations += action.isExpectation() && action.scan <= scans ? 1 : 0;
+        if (failures > 0) {
+            streams.err << files[1] << ": " << failures << " of " << expectations << " expectation(s) failed\n";
+            return ModelHasErrors;
+        }
+        streams.out << files[1] << ": all " << expectations << " expectation(s) met\n";
+    }
+    return Success;
+}
+
 struct Command {
     std::function<int(const Arguments&, Streams)> run;
     std::vector<std::string> options;
@@ -278,6 +390,7 @@ const std::map<std::string, Command>& commands()
         {"convert", {commandConvert, {"--to"}, {}}},
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
         {"st", {commandSt, {"--dialect"}, {}}},
+        {"simulate", {commandSimulate, {"--scans"}, {"--trace"}}},
     };
     return table;
 }

@@ -1,0 +1,662 @@
+#include "core/scenario.h"
+
+#include "core/gemmatemplate.h"
+#include "core/iectypes.h"
+
+#include <algorithm>
+#include <charconv>
+
+namespace core {
+
+namespace {
+
+constexpr std::int64_t kMaxScan = 1'000'000'000'000;
+
+// A word or one of the punctuation marks , = : of a scenario line.
+struct Word {
+    std::string_view text;
+    int column = 0; // 1-based
+};
+
+bool isSeparator(char c)
+{
+    return c == ',' || c == '=' || c == ':';
+}
+
+bool isSpace(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
+}
+
+std::vector<Word> splitLine(std::string_view line)
+{
+    std::vector<Word> words;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        const char c = line[i];
+        if (c == '#')
+            break;
+        if (isSpace(c)) {
+            ++i;
+            continue;
+        }
+        const std::size_t start = i;
+        if (isSeparator(c)) {
+            ++i;
+        } else {
+            while (i < line.size() && !isSpace(line[i]) && !isSeparator(line[i]) && line[i] != '#')
+                ++i;
+        }
+        words.push_back(Word{line.substr(start, i - start), static_cast<int>(start) + 1});
+    }
+    return words;
+}
+
+bool isKeyword(const Word& word, std::string_view keyword)
+{
+    return equalsIgnoreCase(word.text, keyword);
+}
+
+bool isPunctuation(const Word& word)
+{
+    return word.text.size() == 1 && isSeparator(word.text.front());
+}
+
+std::string quote(std::string_view text)
+{
+    return "'" + std::string(text) + "'";
+}
+
+// Reads one line's words left to right; the first problem stops it.
+class LineParser {
+public:
+    LineParser(std::vector<Word> words, int line, int endColumn, const std::string& fileName)
+        : m_words(std::move(words)), m_line(line), m_endColumn(endColumn), m_fileName(fileName)
+    {
+    }
+
+    void parse(std::vector<ScenarioAction>& actions, std::vector<ScenarioError>& errors)
+    {
+        if (m_words.empty())
+            return;
+        std::vector<ScenarioAction> parsed;
+        if (!parseLine(parsed)) {
+            errors.push_back(m_error);
+            return;
+        }
+        actions.insert(actions.end(), parsed.begin(), parsed.end());
+    }
+
+private:
+    bool atEnd() const { return m_next >= m_words.size(); }
+    int column() const { return atEnd() ? m_endColumn : m_words[m_next].column; }
+    std::string found() const { return atEnd() ? "the end of the line" : quote(m_words[m_next].text); }
+
+    bool fail(std::string message)
+    {
+        m_error = ScenarioError{m_fileName, m_line, column(), std::move(message)};
+        return false;
+    }
+
+    bool accept(std::string_view keyword)
+    {
+        if (atEnd() || !isKeyword(m_words[m_next], keyword))
+            return false;
+        ++m_next;
+        return true;
+    }
+
+    bool name(const std::string& what, Word& word)
+    {
+        if (atEnd() || isPunctuation(m_words[m_next]))
+            return fail("expected " + what + ", found " + found());
+        word = m_words[m_next++];
+        return true;
+    }
+
+    bool expect(char mark, const std::string& after)
+    {
+        if (atEnd() || m_words[m_next].text != std::string_view(&mark, 1))
+            return fail("expected '" + std::string(1, mark) + "' after " + after + ", found " + found());
+        ++m_next;
+        return true;
+    }
+
+    bool value(const std::string& after, ScenarioAction& action)
+    {
+        if (!expect('=', after))
+            return false;
+        Word word;
+        if (!name("a value after '='", word))
+            return false;
+        action.value = std::string(word.text);
+        action.valueColumn = word.column;
+        return true;
+    }
+
+    bool boolValue(const std::string& after, ScenarioAction& action)
+    {
+        if (!value(after, action))
+            return false;
+        if (!equalsIgnoreCase(action.value, "TRUE") && !equalsIgnoreCase(action.value, "FALSE")) {
+            --m_next;
+            return fail("expected TRUE or FALSE, found " + quote(action.value));
+        }
+        action.value = toUpperAscii(action.value);
+        return true;
+    }
+
+    bool endOfLine()
+    {
+        if (!atEnd())
+            return fail("expected the end of the line, found " + found());
+        return true;
+    }
+
+    ScenarioAction makeAction(ScenarioAction::Kind kind, const Word& at) const
+    {
+        ScenarioAction action;
+        action.kind = kind;
+        action.scan = m_scan;
+        action.line = m_line;
+        action.column = at.column;
+        return action;
+    }
+
+    bool parseLine(std::vector<ScenarioAction>& actions)
+    {
+        if (!accept("at"))
+            return fail("expected 'at SCAN:' at the start of the line, found " + found());
+        if (!scanNumber())
+            return false;
+        if (!expect(':', "the scan number"))
+            return false;
+        if (accept("set"))
+            return parseSet(actions);
+        if (accept("expect"))
+            return parseExpect(actions);
+        return fail("expected 'set' or 'expect', found " + found());
+    }
+
+    bool scanNumber()
+    {
+        if (atEnd() || isPunctuation(m_words[m_next]))
+            return fail("expected a scan number after 'at', found " + found());
+        const std::string_view text = m_words[m_next].text;
+        std::int64_t number = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
+        if (error != std::errc() || end != text.data() + text.size() || text.front() == '-' || text.front() == '+')
+            return fail("expected a scan number after 'at', found " + found());
+        if (number < 1)
+            return fail("scans are numbered from 1");
+        if (number > kMaxScan)
+            return fail("scan number " + std::string(text) + " is too large");
+        m_scan = number;
+        ++m_next;
+        return true;
+    }
+
+    // set NAME = VALUE, complete STEP = TRUE|FALSE|auto, ...
+    bool parseSet(std::vector<ScenarioAction>& actions)
+    {
+        do {
+            Word word;
+            if (!name("a variable name or 'complete STEP'", word))
+                return false;
+            if (isKeyword(word, "complete")) {
+                Word step;
+                if (!name("a step id after 'complete'", step))
+                    return false;
+                ScenarioAction action = makeAction(ScenarioAction::Kind::SetComplete, step);
+                action.name = std::string(step.text);
+                if (!value("the step id", action))
+                    return false;
+                if (equalsIgnoreCase(action.value, "auto") || equalsIgnoreCase(action.value, "automatic")) {
+                    action.kind = ScenarioAction::Kind::SetCompleteAuto;
+                    action.value = "auto";
+                } else if (equalsIgnoreCase(action.value, "TRUE") || equalsIgnoreCase(action.value, "FALSE")) {
+                    action.value = toUpperAscii(action.value);
+                } else {
+                    --m_next;
+                    return fail("expected TRUE, FALSE or auto, found " + quote(action.value));
+                }
+                actions.push_back(std::move(action));
+            } else {
+                ScenarioAction action = makeAction(ScenarioAction::Kind::SetVariable, word);
+                action.name = std::string(word.text);
+                if (!value("the variable name", action))
+                    return false;
+                actions.push_back(std::move(action));
+            }
+            if (atEnd())
+                return true;
+            if (m_words[m_next].text != ",")
+                return fail("expected ',' or the end of the line, found " + found());
+            ++m_next;
+        } while (true);
+    }
+
+    bool parseExpect(std::vector<ScenarioAction>& actions)
+    {
+        using Kind = ScenarioAction::Kind;
+        const Word keyword = atEnd() ? Word{{}, m_endColumn} : m_words[m_next];
+        Word word;
+        if (accept("step")) {
+            if (!name("a step id after 'step'", word))
+                return false;
+            ScenarioAction action = makeAction(Kind::ExpectStep, word);
+            action.name = std::string(word.text);
+            actions.push_back(std::move(action));
+        } else if (accept("fired")) {
+            if (!name("a transition id or 'none' after 'fired'", word))
+                return false;
+            const bool none = isKeyword(word, "none");
+            ScenarioAction action = makeAction(none ? Kind::ExpectNoFiring : Kind::ExpectFired, word);
+            if (!none)
+                action.name = std::string(word.text);
+            actions.push_back(std::move(action));
+        } else if (accept("token")) {
+            if (!name("a token name after 'token'", word))
+                return false;
+            ScenarioAction action = makeAction(Kind::ExpectToken, word);
+            action.name = std::string(word.text);
+            if (!boolValue("the token name", action))
+                return false;
+            actions.push_back(std::move(action));
+        } else if (accept("variable")) {
+            if (!name("a variable name after 'variable'", word))
+                return false;
+            ScenarioAction action = makeAction(Kind::ExpectVariable, word);
+            action.name = std::string(word.text);
+            if (!value("the variable name", action))
+                return false;
+            actions.push_back(std::move(action));
+        } else if (accept("entry")) {
+            ScenarioAction action = makeAction(Kind::ExpectEntry, keyword);
+            if (!boolValue("'entry'", action))
+                return false;
+            actions.push_back(std::move(action));
+        } else if (accept("complete")) {
+            if (!name("a step id after 'complete'", word))
+                return false;
+            ScenarioAction action = makeAction(Kind::ExpectComplete, word);
+            action.name = std::string(word.text);
+            if (!boolValue("the step id", action))
+                return false;
+            actions.push_back(std::move(action));
+        } else {
+            return fail("expected step, fired, token, variable, entry or complete after 'expect', found " + found());
+        }
+        return endOfLine();
+    }
+
+    std::vector<Word> m_words;
+    std::size_t m_next = 0;
+    int m_line;
+    int m_endColumn;
+    const std::string& m_fileName;
+    std::int64_t m_scan = 0;
+    ScenarioError m_error;
+};
+
+// --- Validation -----------------------------------------------------------------
+
+const GemmaStep* findStep(const GemmaProgram& program, std::string_view id)
+{
+    for (const GemmaStep& step : program.steps) {
+        if (equalsIgnoreCase(step.id, id))
+            return &step;
+    }
+    return nullptr;
+}
+
+const GemmaTransition* findTransition(const GemmaProgram& program, std::string_view id)
+{
+    for (const GemmaStep& step : program.steps) {
+        for (const GemmaTransition& transition : step.transitions) {
+            if (equalsIgnoreCase(transition.id, id))
+                return &transition;
+        }
+    }
+    return nullptr;
+}
+
+bool isTemplateTransition(std::string_view id)
+{
+    for (const TemplateTransition& transition : templateTransitions()) {
+        if (equalsIgnoreCase(makeTransitionId(transition.source, transition.target), id))
+            return true;
+    }
+    return false;
+}
+
+std::string stepProblem(const Simulator& simulator, std::string_view id)
+{
+    if (findStep(simulator.program(), id))
+        return {};
+    if (findTemplateState(toUpperAscii(id)))
+        return "step " + toUpperAscii(id) + " is hidden: it does not exist for the simulator";
+    return "unknown step " + quote(id);
+}
+
+class Validator {
+public:
+    Validator(const Scenario& scenario, const Simulator& simulator)
+        : m_scenario(scenario), m_simulator(simulator)
+    {
+    }
+
+    std::vector<ScenarioError> run()
+    {
+        for (const ScenarioAction& action : m_scenario.actions)
+            check(action);
+        return std::move(m_errors);
+    }
+
+private:
+    void error(const ScenarioAction& action, int column, std::string message)
+    {
+        m_errors.push_back(ScenarioError{m_scenario.fileName, action.line, column, std::move(message)});
+    }
+
+    void checkVariable(const ScenarioAction& action)
+    {
+        const int index = m_simulator.variableIndex(action.name);
+        if (index < 0) {
+            error(action, action.column, "unknown variable " + quote(action.name));
+            return;
+        }
+        const std::string& declared = m_simulator.variableNames()[static_cast<std::size_t>(index)];
+        const IecType type = iecTypeOf(index);
+        const std::string problem = defaultValueProblem(type, action.value);
+        if (!problem.empty())
+            error(action, action.valueColumn, declared + " is " + std::string(iecTypeName(type)) + ": " + problem);
+    }
+
+    IecType iecTypeOf(int index) const
+    {
+        // The simulator knows the kinds; the program's types come from the model's declarations.
+        return m_simulator.variableType(static_cast<std::size_t>(index));
+    }
+
+    void checkNestedStep(const ScenarioAction& action)
+    {
+        if (std::string problem = stepProblem(m_simulator, action.name); !problem.empty()) {
+            error(action, action.column, problem);
+            return;
+        }
+        const auto& nested = m_simulator.nestedSteps();
+        const bool found = std::any_of(nested.begin(), nested.end(),
+                                       [&](const std::string& id) { return equalsIgnoreCase(id, action.name); });
+        if (!found)
+            error(action, action.column, "step " + toUpperAscii(action.name) + " is a simple step: it has no Complete");
+    }
+
+    void check(const ScenarioAction& action)
+    {
+        using Kind = ScenarioAction::Kind;
+        switch (action.kind) {
+        case Kind::SetVariable:
+        case Kind::ExpectVariable: checkVariable(action); break;
+        case Kind::SetComplete:
+        case Kind::SetCompleteAuto:
+        case Kind::ExpectComplete: checkNestedStep(action); break;
+        case Kind::ExpectStep:
+            if (std::string problem = stepProblem(m_simulator, action.name); !problem.empty())
+                error(action, action.column, problem);
+            break;
+        case Kind::ExpectFired:
+            if (!findTransition(m_simulator.program(), action.name)) {
+                error(action, action.column,
+                      isTemplateTransition(action.name)
+                          ? "transition " + action.name + " is not effective (it or one of its steps is hidden)"
+                          : "unknown transition " + quote(action.name));
+            }
+            break;
+        case Kind::ExpectToken: {
+            const auto& names = m_simulator.tokenNames();
+            const bool found = std::any_of(names.begin(), names.end(),
+                                           [&](const std::string& n) { return equalsIgnoreCase(n, action.name); });
+            if (!found)
+                error(action, action.column, "unknown token " + quote(action.name));
+            break;
+        }
+        case Kind::ExpectNoFiring:
+        case Kind::ExpectEntry: break;
+        }
+    }
+
+    const Scenario& m_scenario;
+    const Simulator& m_simulator;
+    std::vector<ScenarioError> m_errors;
+};
+
+std::string boolText(bool value)
+{
+    return value ? "TRUE" : "FALSE";
+}
+
+} // namespace
+
+std::int64_t Scenario::lastScan() const
+{
+    std::int64_t last = 0;
+    for (const ScenarioAction& action : actions)
+        last = std::max(last, action.scan);
+    return last;
+}
+
+std::string ScenarioError::toString() const
+{
+    std::string text = fileName.empty() ? std::string("scenario") : fileName;
+    text += ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message;
+    return text;
+}
+
+ScenarioParseResult parseScenario(std::string_view text, std::string fileName)
+{
+    ScenarioParseResult result;
+    result.scenario.fileName = fileName;
+    int lineNumber = 0;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos)
+            end = text.size();
+        std::string_view line = text.substr(start, end - start);
+        ++lineNumber;
+        // Errors about a missing word point just past the line's last character before any comment.
+        const std::string_view code = line.substr(0, line.find('#'));
+        const std::size_t last = code.find_last_not_of(" \t\r\f\v");
+        const int endColumn = last == std::string_view::npos ? 1 : static_cast<int>(last) + 2;
+        LineParser(splitLine(line), lineNumber, endColumn, result.scenario.fileName)
+            .parse(result.scenario.actions, result.errors);
+        if (end == text.size())
+            break;
+        start = end + 1;
+    }
+    return result;
+}
+
+std::vector<ScenarioError> validateScenario(const Scenario& scenario, const Simulator& simulator)
+{
+    return Validator(scenario, simulator).run();
+}
+
+// --- Running --------------------------------------------------------------------
+
+ScenarioRunner::ScenarioRunner(const Scenario& scenario, Simulator& simulator)
+    : m_scenario(scenario), m_simulator(simulator)
+{
+    for (const ScenarioAction& action : m_scenario.actions)
+        m_byScan[action.scan].push_back(&action);
+}
+
+void ScenarioRunner::apply(const ScenarioAction& action)
+{
+    using Kind = ScenarioAction::Kind;
+    Status status;
+    switch (action.kind) {
+    case Kind::SetVariable: status = m_simulator.setVariableText(action.name, action.value); break;
+    case Kind::SetComplete:
+        status = m_simulator.setCompleteMode(action.name, CompleteMode::Manual);
+        if (status)
+            status = m_simulator.setComplete(action.name, action.value == "TRUE");
+        break;
+    case Kind::SetCompleteAuto: status = m_simulator.setCompleteMode(action.name, CompleteMode::Automatic); break;
+    default: return;
+    }
+    if (!status) {
+        const std::int64_t scan = m_simulator.scanCount() + 1;
+        m_lastFailures.push_back(
+            ScenarioFailure{scan, action.line, "scan " + std::to_string(scan) + ": cannot apply: " + status.message});
+    }
+}
+
+void ScenarioRunner::check(const ScenarioAction& action, const ScanRecord& record)
+{
+    using Kind = ScenarioAction::Kind;
+    const std::string prefix = "scan " + std::to_string(record.scan) + ": ";
+    std::string problem;
+    switch (action.kind) {
+    case Kind::ExpectStep:
+        if (!equalsIgnoreCase(record.stepAfter, action.name)) {
+            problem = "expected step " + toUpperAscii(action.name) + ", active step is "
+                      + (record.stepAfter.empty() ? "none (State = " + std::to_string(m_simulator.activeStepNumber())
+                                                        + " names no visible step)"
+                                                  : record.stepAfter);
+        }
+        break;
+    case Kind::ExpectFired:
+        if (!equalsIgnoreCase(record.fired, action.name))
+            problem = "expected " + action.name + " to fire, "
+                      + (record.fired.empty() ? std::string("no transition fired") : record.fired + " fired");
+        break;
+    case Kind::ExpectNoFiring:
+        if (!record.fired.empty())
+            problem = "expected no transition to fire, " + record.fired + " fired";
+        break;
+    case Kind::ExpectToken: {
+        const bool actual = m_simulator.token(action.name);
+        if (boolText(actual) != action.value)
+            problem = "expected token " + action.name + " = " + action.value + ", it is " + boolText(actual);
+        break;
+    }
+    case Kind::ExpectVariable: {
+        const int index = m_simulator.variableIndex(action.name);
+        if (index < 0) {
+            problem = "unknown variable " + quote(action.name);
+            break;
+        }
+        const std::optional<cond::Value> expected =
+            cond::parseValue(m_simulator.variableType(static_cast<std::size_t>(index)), action.value);
+        const cond::Value actual = m_simulator.variableValue(static_cast<std::size_t>(index));
+        if (!expected || *expected != actual)
+            problem = "expected " + m_simulator.variableNames()[static_cast<std::size_t>(index)] + " = " + action.value
+                      + ", it is " + cond::formatValue(actual);
+        break;
+    }
+    case Kind::ExpectEntry:
+        if (boolText(record.entry) != action.value)
+            problem = "expected Entry = " + action.value + ", it is " + boolText(record.entry);
+        break;
+    case Kind::ExpectComplete: {
+        const bool actual = m_simulator.complete(action.name);
+        if (boolText(actual) != action.value)
+            problem = "expected " + toUpperAscii(action.name) + ".Complete = " + action.value + ", it is "
+                      + boolText(actual);
+        break;
+    }
+    default: return;
+    }
+    if (!problem.empty())
+        m_lastFailures.push_back(ScenarioFailure{record.scan, action.line, prefix + problem});
+}
+
+ScanRecord ScenarioRunner::step()
+{
+    m_lastFailures.clear();
+    const std::int64_t scan = m_simulator.scanCount() + 1;
+    auto found = m_byScan.find(scan);
+    if (found != m_byScan.end()) {
+        for (const ScenarioAction* action : found->second) {
+            if (!action->isExpectation())
+                apply(*action);
+        }
+    }
+    ScanRecord record = m_simulator.step();
+    if (found != m_byScan.end()) {
+        for (const ScenarioAction* action : found->second) {
+            if (action->isExpectation())
+                check(*action, record);
+        }
+    }
+    m_failures.insert(m_failures.end(), m_lastFailures.begin(), m_lastFailures.end());
+    return record;
+}
+
+ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, std::int64_t scans)
+{
+    // A scenario starts from the program's start state with every Complete automatic.
+    simulator.reset();
+    for (const std::string& step : simulator.nestedSteps()) {
+        simulator.setCompleteMode(step, CompleteMode::Automatic);
+        simulator.setComplete(step, false);
+    }
+    ScenarioRunResult result;
+    ScenarioRunner runner(scenario, simulator);
+    const std::int64_t count = scans > 0 ? scans : scenario.lastScan();
+    for (std::int64_t i = 0; i < count; ++i)
+        result.records.push_back(runner.step());
+    result.failures = runner.failures();
+    return result;
+}
+
+// --- Writing ----------------------------------------------------------------------
+
+std::string writeScenario(const ScenarioRecording& recording)
+{
+    std::string out;
+    if (!recording.title.empty()) {
+        std::size_t start = 0;
+        while (start <= recording.title.size()) {
+            std::size_t end = recording.title.find('\n', start);
+            if (end == std::string::npos)
+                end = recording.title.size();
+            std::string line = recording.title.substr(start, end - start);
+            line.erase(std::remove(line.begin(), line.end(), '\r'), line.end());
+            out += line.empty() ? "#\n" : "# " + line + "\n";
+            start = end + 1;
+        }
+    }
+    // Every line in scan order: sets of a scan, then what it did.
+    std::map<std::int64_t, std::vector<std::string>> lines;
+    for (const RecordedScan& scan : recording.changes) {
+        const std::string at = "at " + std::to_string(scan.scan) + ": ";
+        if (!scan.inputs.empty()) {
+            std::string line = at + "set ";
+            for (std::size_t i = 0; i < scan.inputs.size(); ++i)
+                line += (i ? ", " : "") + scan.inputs[i].variable + " = " + cond::formatValue(scan.inputs[i].value);
+            lines[scan.scan].push_back(std::move(line));
+        }
+        for (const RecordedScan::CompleteSetting& complete : scan.completes) {
+            lines[scan.scan].push_back(at + "set complete " + complete.stepId + " = "
+                                       + (complete.manualValue ? boolText(*complete.manualValue) : "auto"));
+        }
+    }
+    for (const ScanRecord& record : recording.records) {
+        if (record.fired.empty())
+            continue;
+        const std::string at = "at " + std::to_string(record.scan) + ": ";
+        lines[record.scan].push_back(at + "expect fired " + record.fired);
+        if (!record.stepAfter.empty())
+            lines[record.scan].push_back(at + "expect step " + record.stepAfter);
+    }
+    for (const auto& [scan, texts] : lines) {
+        for (const std::string& text : texts)
+            out += text + "\n";
+    }
+    return out;
+}
+
+} // namespace core

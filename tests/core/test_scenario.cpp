@@ -1,0 +1,262 @@
+#include <catch2/catch.hpp>
+
+#include "core/model.h"
+#include "core/scenario.h"
+#include "core/simulator.h"
+#include "modelfactory.h"
+
+#include <string>
+#include <vector>
+
+using namespace core;
+
+namespace {
+
+std::vector<std::string> errorTexts(const std::vector<ScenarioError>& errors)
+{
+    std::vector<std::string> texts;
+    for (const ScenarioError& error : errors)
+        texts.push_back(error.toString());
+    return texts;
+}
+
+std::vector<std::string> failureTexts(const std::vector<ScenarioFailure>& failures)
+{
+    std::vector<std::string> texts;
+    for (const ScenarioFailure& failure : failures)
+        texts.push_back(failure.message);
+    return texts;
+}
+
+// The realistic bottling model: A6 -> A1 on HomePosition AND AirPressureOk,
+// A1 -> F1 on Start AND AutoMode AND PreparationDone AND DoorClosed, F1 a
+// macro-step, F1 -> A2 on NOT Stop with a token (Stop_F1_2_MEM).
+const char* const kBottling = R"(# Bottling line: home, start, stop
+at 1: set HomePosition = TRUE, AirPressureOk = TRUE   # both needed
+at 1: expect fired A6->A1
+at 1: expect step A1
+AT 2: SET Start = TRUE, PreparationDone = TRUE, DoorClosed = TRUE
+at 2: expect step F1
+at 2: expect entry = TRUE
+at 3: set Start = FALSE, complete F1 = FALSE
+at 3: expect fired none
+at 3: expect entry = FALSE
+at 4: set Stop = TRUE
+at 4: expect token Stop_F1_2_MEM = TRUE
+at 5: set Stop = FALSE
+at 5: expect step F1
+at 5: expect complete F1 = FALSE
+at 6: set complete F1 = auto
+at 6: expect fired F1->A2
+at 6: expect variable BatchSize = 500
+at 6: expect variable temperature = 20.0
+)";
+
+} // namespace
+
+TEST_CASE("Scenario: parse the documented syntax", "[simulation]")
+{
+    const ScenarioParseResult parsed = parseScenario(kBottling, "bottling.txt");
+    INFO(errorTexts(parsed.errors).size());
+    REQUIRE(parsed.ok());
+    const Scenario& scenario = parsed.scenario;
+    CHECK(scenario.lastScan() == 6);
+    REQUIRE(scenario.actions.size() == 22);
+    const ScenarioAction& first = scenario.actions[0];
+    CHECK(first.kind == ScenarioAction::Kind::SetVariable);
+    CHECK(first.scan == 1);
+    CHECK(first.name == "HomePosition");
+    CHECK(first.value == "TRUE");
+    CHECK(first.line == 2);
+    CHECK(first.column == 11);
+    CHECK(scenario.actions[2].kind == ScenarioAction::Kind::ExpectFired);
+    CHECK(scenario.actions[2].name == "A6->A1");
+    CHECK(scenario.actions[10].kind == ScenarioAction::Kind::SetComplete);
+    CHECK(scenario.actions[10].name == "F1");
+    CHECK(scenario.actions[10].value == "FALSE");
+    CHECK(scenario.actions[11].kind == ScenarioAction::Kind::ExpectNoFiring);
+    CHECK(scenario.actions[18].kind == ScenarioAction::Kind::SetCompleteAuto);
+
+    Simulator sim(factory::realisticModel());
+    CHECK(validateScenario(scenario, sim).empty());
+}
+
+TEST_CASE("Scenario: malformed lines give file:line:column errors", "[simulation]")
+{
+    struct Case {
+        const char* line;
+        const char* error;
+    };
+    const std::vector<Case> cases = {
+        {"set Start = TRUE", "s.txt:1:1: expected 'at SCAN:' at the start of the line, found 'set'"},
+        {"at x: set Start = TRUE", "s.txt:1:4: expected a scan number after 'at', found 'x'"},
+        {"at 0: set Start = TRUE", "s.txt:1:4: scans are numbered from 1"},
+        {"at -2: set Start = TRUE", "s.txt:1:4: expected a scan number after 'at', found '-2'"},
+        {"at 3 set Start = TRUE", "s.txt:1:6: expected ':' after the scan number, found 'set'"},
+        {"at 3: put Start = TRUE", "s.txt:1:7: expected 'set' or 'expect', found 'put'"},
+        {"at 4: set Start TRUE", "s.txt:1:17: expected '=' after the variable name, found 'TRUE'"},
+        {"at 4: set Start =", "s.txt:1:18: expected a value after '=', found the end of the line"},
+        {"at 4: set Start = TRUE Stop = FALSE", "s.txt:1:24: expected ',' or the end of the line, found 'Stop'"},
+        {"at 4: set Start = TRUE,", "s.txt:1:24: expected a variable name or 'complete STEP', found the end of the line"},
+        {"at 4: set complete = TRUE", "s.txt:1:20: expected a step id after 'complete', found '='"},
+        {"at 4: set complete F1 = maybe", "s.txt:1:25: expected TRUE, FALSE or auto, found 'maybe'"},
+        {"at 4: expect stop F1", "s.txt:1:14: expected step, fired, token, variable, entry or complete after 'expect', found 'stop'"},
+        {"at 4: expect step", "s.txt:1:18: expected a step id after 'step', found the end of the line"},
+        {"at 4: expect step F1 F2   # two steps", "s.txt:1:22: expected the end of the line, found 'F2'"},
+        {"at 4: expect token T_F1_1_MEM = 1", "s.txt:1:33: expected TRUE or FALSE, found '1'"},
+        {"at 4: expect entry TRUE", "s.txt:1:20: expected '=' after 'entry', found 'TRUE'"},
+        {"at 99999999999999: expect entry = TRUE", "s.txt:1:4: scan number 99999999999999 is too large"},
+    };
+    for (const Case& c : cases) {
+        const ScenarioParseResult parsed = parseScenario(c.line, "s.txt");
+        INFO(c.line);
+        REQUIRE(parsed.errors.size() == 1);
+        CHECK(parsed.errors[0].toString() == c.error);
+        CHECK(parsed.scenario.actions.empty());
+    }
+
+    // Every bad line is reported, the good ones are kept; comments and blank lines are nothing.
+    const ScenarioParseResult parsed = parseScenario("# title\n\nat 1: set A = TRUE\nat 2 set\n   \nat 3: expect\n"
+                                                     "at 4: expect fired none # ok\n",
+                                                     "x.txt");
+    CHECK(errorTexts(parsed.errors)
+          == std::vector<std::string>{"x.txt:4:6: expected ':' after the scan number, found 'set'",
+                                      "x.txt:6:13: expected step, fired, token, variable, entry or complete after "
+                                      "'expect', found the end of the line"});
+    CHECK(parsed.scenario.actions.size() == 2);
+}
+
+TEST_CASE("Scenario: unknown names are errors naming the line", "[simulation]")
+{
+    const char* text = "at 1: set Nope = TRUE\n"
+                       "at 1: set BatchSize = TRUE\n"
+                       "at 2: set BatchSize = 40000\n"
+                       "at 2: expect step F3\n"
+                       "at 2: expect step Q7\n"
+                       "at 3: expect fired A1->F5\n"
+                       "at 3: expect fired A1->Z1\n"
+                       "at 4: set complete F2 = TRUE\n"
+                       "at 4: expect token Start_F1_1_MEM = TRUE\n"
+                       "at 5: expect variable Temperature = hot\n";
+    const ScenarioParseResult parsed = parseScenario(text, "bad.txt");
+    REQUIRE(parsed.ok());
+    Simulator sim(factory::realisticModel());
+    CHECK(errorTexts(validateScenario(parsed.scenario, sim))
+          == std::vector<std::string>{
+              "bad.txt:1:11: unknown variable 'Nope'",
+              "bad.txt:2:23: BatchSize is INT: 'TRUE' is not an INT literal: write a whole number such as 42",
+              "bad.txt:3:23: BatchSize is INT: '40000' is out of range for INT (-32768..32767)",
+              "bad.txt:4:19: step F3 is hidden: it does not exist for the simulator",
+              "bad.txt:5:19: unknown step 'Q7'",
+              "bad.txt:6:20: transition A1->F5 is not effective (it or one of its steps is hidden)",
+              "bad.txt:7:20: unknown transition 'A1->Z1'",
+              "bad.txt:8:20: step F2 is a simple step: it has no Complete",
+              "bad.txt:9:20: unknown token 'Start_F1_1_MEM'",
+              "bad.txt:10:37: Temperature is REAL: 'hot' is not a REAL literal: write a decimal number such as 1.5 or 2.0E3",
+          });
+}
+
+TEST_CASE("Scenario: running checks each expectation after its scan", "[simulation]")
+{
+    Simulator sim(factory::realisticModel());
+    const ScenarioParseResult parsed = parseScenario(kBottling, "bottling.txt");
+    REQUIRE(parsed.ok());
+    ScenarioRunResult result = runScenario(parsed.scenario, sim);
+    CHECK(failureTexts(result.failures).empty());
+    REQUIRE(result.records.size() == 6);
+    CHECK(result.records[1].fired == "A1->F1");
+    CHECK(result.records[5].fired == "F1->A2");
+    CHECK(sim.completeMode("F1") == CompleteMode::Automatic);
+
+    // The same scenario with wrong expectations: each failure says the scan and what differed.
+    const ScenarioParseResult wrong = parseScenario("at 1: expect step A1\n"
+                                                    "at 2: expect fired A1->F1\n"
+                                                    "at 2: expect fired none\n"
+                                                    "at 2: expect token Stop_F1_2_MEM = TRUE\n"
+                                                    "at 2: expect entry = FALSE\n"
+                                                    "at 2: expect variable BatchSize = 12\n"
+                                                    "at 2: expect complete F1 = TRUE\n"
+                                                    "at 3: set HomePosition = TRUE, AirPressureOk = TRUE\n"
+                                                    "at 3: expect fired none\n",
+                                                    "wrong.txt");
+    REQUIRE(wrong.ok());
+    REQUIRE(validateScenario(wrong.scenario, sim).empty());
+    result = runScenario(wrong.scenario, sim);
+    CHECK(failureTexts(result.failures)
+          == std::vector<std::string>{
+              "scan 1: expected step A1, active step is A6",
+              "scan 2: expected A1->F1 to fire, no transition fired",
+              "scan 2: expected token Stop_F1_2_MEM = TRUE, it is FALSE",
+              "scan 2: expected Entry = FALSE, it is TRUE",
+              "scan 2: expected BatchSize = 12, it is 500",
+              "scan 2: expected F1.Complete = TRUE, it is FALSE",
+              "scan 3: expected no transition to fire, A6->A1 fired",
+          });
+    CHECK(result.failures[0].line == 1);
+    CHECK(result.failures.back().line == 9);
+
+    SECTION("--scans beyond the scenario runs idle scans")
+    {
+        result = runScenario(parsed.scenario, sim, 10);
+        CHECK(result.records.size() == 10);
+        CHECK(result.passed());
+    }
+}
+
+TEST_CASE("Scenario: a recorded session is written back as a scenario that replays it", "[simulation]")
+{
+    Simulator sim(factory::realisticModel());
+    ScenarioRecording recording;
+    recording.title = "Recorded session\nsecond line";
+    auto before = [&](std::int64_t scan, std::vector<InputChange> inputs,
+                      std::vector<RecordedScan::CompleteSetting> completes = {}) {
+        for (const InputChange& change : inputs)
+            REQUIRE(sim.setVariable(change.variable, change.value));
+        for (const auto& complete : completes) {
+            REQUIRE(sim.setCompleteMode(complete.stepId,
+                                        complete.manualValue ? CompleteMode::Manual : CompleteMode::Automatic));
+            if (complete.manualValue)
+                REQUIRE(sim.setComplete(complete.stepId, *complete.manualValue));
+        }
+        recording.changes.push_back(RecordedScan{scan, std::move(inputs), std::move(completes)});
+    };
+    before(1, {{"HomePosition", true}, {"AirPressureOk", true}});
+    recording.records.push_back(sim.step());
+    before(2, {{"Start", true}, {"PreparationDone", true}, {"DoorClosed", true}, {"Temperature", 30.5}});
+    recording.records.push_back(sim.step());
+    before(3, {{"Stop", true}}, {{"F1", false}});
+    recording.records.push_back(sim.step());
+    before(4, {{"Stop", false}, {"BatchSize", std::int64_t{-3}}}, {{"F1", std::nullopt}});
+    recording.records.push_back(sim.step());
+    // Scan 3's entry block reset the token and Stop was TRUE then: the pulse
+    // of scan 4 is captured at its end, and F1 -> A2 fires in scan 5.
+    REQUIRE(recording.records.back().fired.empty());
+    recording.records.push_back(sim.step());
+    REQUIRE(recording.records.back().fired == "F1->A2");
+
+    const std::string text = writeScenario(recording);
+    CHECK(text == "# Recorded session\n"
+                  "# second line\n"
+                  "at 1: set HomePosition = TRUE, AirPressureOk = TRUE\n"
+                  "at 1: expect fired A6->A1\n"
+                  "at 1: expect step A1\n"
+                  "at 2: set Start = TRUE, PreparationDone = TRUE, DoorClosed = TRUE, Temperature = 30.5\n"
+                  "at 2: expect fired A1->F1\n"
+                  "at 2: expect step F1\n"
+                  "at 3: set Stop = TRUE\n"
+                  "at 3: set complete F1 = FALSE\n"
+                  "at 4: set Stop = FALSE, BatchSize = -3\n"
+                  "at 4: set complete F1 = auto\n"
+                  "at 5: expect fired F1->A2\n"
+                  "at 5: expect step A2\n");
+    const ScenarioParseResult parsed = parseScenario(text);
+    REQUIRE(parsed.ok());
+    REQUIRE(validateScenario(parsed.scenario, sim).empty());
+    const ScenarioRunResult replay = runScenario(parsed.scenario, sim);
+    CHECK(failureTexts(replay.failures).empty());
+    REQUIRE(replay.records.size() == 5);
+    for (std::size_t i = 0; i < 5; ++i) {
+        CHECK(replay.records[i].fired == recording.records[i].fired);
+        CHECK(replay.records[i].tokens == recording.records[i].tokens);
+    }
+}
