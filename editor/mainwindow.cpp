@@ -17,6 +17,9 @@
 #include "editor/recoveryprompt.h"
 #include "editor/selection.h"
 #include "editor/settings.h"
+#include "editor/simulation/simulationchartmarks.h"
+#include "editor/simulation/simulationdock.h"
+#include "editor/simulation/simulationsession.h"
 #include "editor/statusindicators.h"
 
 #include <QAction>
@@ -26,10 +29,12 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
+#include <QSignalBlocker>
 #include <QStatusBar>
 #include <QUndoStack>
 
@@ -63,7 +68,8 @@ MainWindow::MainWindow(Translators& translators, QWidget* parent)
     , m_view(new ChartView(m_scene, this))
 {
     setObjectName("mainWindow");
-    setWindowIcon(QIcon(QStringLiteral(":/icons/ggstudio.svg")));
+    // The window icon is the application's (editor::runApplication sets it):
+    // reading the SVG once is enough at start-up.
     m_view->setObjectName("chartView");
     setCentralWidget(m_view);
 
@@ -71,15 +77,19 @@ MainWindow::MainWindow(Translators& translators, QWidget* parent)
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
+    m_session = new SimulationSession(m_document, this);
+    m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
     createDocks();
     createActions();
     createMenus();
     createStatusBar();
     retranslate();
+    onSimulationActiveChanged(m_session->isActive());
 
     connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::editFailed, this, &MainWindow::showEditFailure);
+    connect(m_session, &SimulationSession::activeChanged, this, &MainWindow::onSimulationActiveChanged);
     connect(m_autosave, &Autosave::writeFailed, this, [this](const QString& message) {
         statusBar()->showMessage(tr("Autosave failed: %1").arg(message), kStatusMessageMs);
     });
@@ -95,6 +105,8 @@ MainWindow::~MainWindow()
     // hears none of the signals the document sends as it goes.
     m_document->undoStack()->disconnect(this);
     m_document->disconnect(this);
+    m_session->disconnect(this);
+    delete m_chartMarks;
     delete m_problemCounter;
     deleteDocks();
     delete m_view;
@@ -103,7 +115,7 @@ MainWindow::~MainWindow()
 
 QList<QDockWidget*> MainWindow::docks() const
 {
-    return {m_stepDock, m_transitionDock, m_variablesDock, m_problemsDock, m_stPreviewDock};
+    return {m_stepDock, m_transitionDock, m_simulationDock, m_variablesDock, m_problemsDock, m_stPreviewDock};
 }
 
 void MainWindow::createDocks()
@@ -113,10 +125,13 @@ void MainWindow::createDocks()
     m_variablesDock = new VariablesDock(m_document, m_selection, this);
     m_problemsDock = new ProblemsDock(m_document, m_selection, this);
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
+    m_simulationDock = new SimulationDock(m_session, m_document, this);
 
     addDockWidget(Qt::RightDockWidgetArea, m_stepDock);
     addDockWidget(Qt::RightDockWidgetArea, m_transitionDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_simulationDock);
     tabifyDockWidget(m_stepDock, m_transitionDock);
+    tabifyDockWidget(m_transitionDock, m_simulationDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_variablesDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_problemsDock);
     addDockWidget(Qt::BottomDockWidgetArea, m_stPreviewDock);
@@ -137,6 +152,7 @@ void MainWindow::deleteDocks()
     m_variablesDock = nullptr;
     m_problemsDock = nullptr;
     m_stPreviewDock = nullptr;
+    m_simulationDock = nullptr;
 }
 
 // The docks set their texts when they are built, so a new language builds
@@ -151,6 +167,7 @@ void MainWindow::rebuildDocks()
     deleteDocks();
     createDocks();
     restoreState(state);
+    applyEditingLock();
     m_viewMenu->insertActions(m_dockActionsEnd, toggleViewActions());
     // The chart paints its frame titles in the current language.
     m_scene->update();
@@ -186,8 +203,10 @@ void MainWindow::createActions()
     m_redoAction = action("redoAction", [stack] { stack->redo(); }, QKeySequence::Redo);
     m_undoAction->setEnabled(stack->canUndo());
     m_redoAction->setEnabled(stack->canRedo());
-    connect(stack, &QUndoStack::canUndoChanged, m_undoAction, &QAction::setEnabled);
-    connect(stack, &QUndoStack::canRedoChanged, m_redoAction, &QAction::setEnabled);
+    connect(stack, &QUndoStack::canUndoChanged, this,
+            [this](bool can) { m_undoAction->setEnabled(can && !m_session->isActive()); });
+    connect(stack, &QUndoStack::canRedoChanged, this,
+            [this](bool can) { m_redoAction->setEnabled(can && !m_session->isActive()); });
     connect(stack, &QUndoStack::undoTextChanged, this, &MainWindow::retranslate);
     connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::retranslate);
     m_modelSettingsAction = action("modelSettingsAction", &MainWindow::editModelSettings);
@@ -201,6 +220,28 @@ void MainWindow::createActions()
     m_actualSizeAction = action("actualSizeAction", [this] { m_view->zoomToActualSize(); }, Qt::CTRL | Qt::Key_1);
     m_zoomInAction = action("zoomInAction", [this] { m_view->zoomIn(); }, QKeySequence::ZoomIn);
     m_zoomOutAction = action("zoomOutAction", [this] { m_view->zoomOut(); }, QKeySequence::ZoomOut);
+
+    m_simulateAction = new QAction(this);
+    m_simulateAction->setObjectName("simulateAction");
+    m_simulateAction->setShortcut(Qt::Key_F5);
+    m_simulateAction->setCheckable(true);
+    connect(m_simulateAction, &QAction::toggled, m_session, &SimulationSession::setActive);
+    m_runAction = new QAction(this);
+    m_runAction->setObjectName("runSimulationAction");
+    m_runAction->setShortcut(Qt::Key_F6);
+    m_runAction->setCheckable(true);
+    connect(m_runAction, &QAction::toggled, this, [this](bool run) {
+        if (run)
+            m_session->run();
+        else
+            m_session->pause();
+    });
+    connect(m_session, &SimulationSession::runningChanged, this, [this](bool running) {
+        const QSignalBlocker blocker(m_runAction);
+        m_runAction->setChecked(running);
+    });
+    m_scanAction = action("singleScanAction", [this] { m_session->stepOnce(); }, Qt::Key_F10);
+    m_resetSimulationAction = action("resetSimulationAction", [this] { m_session->reset(); });
 
     m_aboutAction = action("aboutAction", &MainWindow::about);
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -259,6 +300,12 @@ void MainWindow::createMenus()
     m_languageMenu->setObjectName("languageMenu");
     m_languageMenu->addActions(m_languageGroup->actions());
 
+    m_simulationMenu = menuBar()->addMenu(QString());
+    m_simulationMenu->setObjectName("simulationMenu");
+    m_simulationMenu->addAction(m_simulateAction);
+    m_simulationMenu->addSeparator();
+    m_simulationMenu->addActions({m_runAction, m_scanAction, m_resetSimulationAction});
+
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName("helpMenu");
     m_helpMenu->addActions({m_aboutAction, m_aboutQtAction});
@@ -274,6 +321,12 @@ void MainWindow::createStatusBar()
     m_zoomIndicator = new ZoomIndicator(this);
     m_zoomIndicator->setZoom(m_view->zoom());
     connect(m_view, &ChartView::zoomChanged, m_zoomIndicator, &ZoomIndicator::setZoom);
+    m_simulationIndicator = new QLabel(this);
+    m_simulationIndicator->setObjectName("simulationIndicator");
+    m_simulationIndicator->setStyleSheet(
+        QStringLiteral("QLabel { background: #ffd84d; color: #20242a; padding: 1px 6px; border-radius: 3px; }"));
+    m_simulationIndicator->hide();
+    statusBar()->addPermanentWidget(m_simulationIndicator);
     statusBar()->addPermanentWidget(m_problemCounter);
     statusBar()->addPermanentWidget(m_zoomIndicator);
 }
@@ -325,6 +378,7 @@ void MainWindow::retranslate()
     m_editMenu->setTitle(tr("&Edit"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));
+    m_simulationMenu->setTitle(tr("&Simulation"));
     m_helpMenu->setTitle(tr("&Help"));
 
     m_newAction->setText(tr("&New"));
@@ -349,6 +403,14 @@ void MainWindow::retranslate()
     m_actualSizeAction->setText(tr("&Actual Size (100 %)"));
     m_zoomInAction->setText(tr("Zoom &In"));
     m_zoomOutAction->setText(tr("Zoom &Out"));
+
+    m_simulateAction->setText(tr("&Simulate"));
+    m_simulateAction->setStatusTip(tr("Run the model scan by scan; editing is locked while the simulation is on"));
+    m_runAction->setText(tr("&Run"));
+    m_runAction->setStatusTip(tr("Run scans at the speed set in the Simulation dock, or pause them"));
+    m_scanAction->setText(tr("Single S&can"));
+    m_resetSimulationAction->setText(tr("R&eset Simulation"));
+    m_simulationIndicator->setText(tr("Simulation: editing locked"));
 
     m_aboutAction->setText(tr("&About GG Studio"));
     m_aboutQtAction->setText(tr("About &Qt"));
@@ -568,6 +630,37 @@ void MainWindow::about()
 void MainWindow::showEditFailure(const QString& message)
 {
     statusBar()->showMessage(message, kStatusMessageMs);
+}
+
+void MainWindow::onSimulationActiveChanged(bool active)
+{
+    {
+        const QSignalBlocker blocker(m_simulateAction);
+        m_simulateAction->setChecked(active);
+    }
+    m_runAction->setEnabled(active);
+    m_scanAction->setEnabled(active);
+    m_resetSimulationAction->setEnabled(active);
+    m_simulationIndicator->setVisible(active);
+    applyEditingLock();
+    if (active) {
+        m_simulationDock->show();
+        m_simulationDock->raise();
+    }
+}
+
+// Editing widgets are disabled rather than left to fail: the Document
+// refuses every edit while the simulation runs, and a user expects to see it.
+void MainWindow::applyEditingLock()
+{
+    const bool locked = m_session->isActive();
+    QUndoStack* stack = m_document->undoStack();
+    m_undoAction->setEnabled(!locked && stack->canUndo());
+    m_redoAction->setEnabled(!locked && stack->canRedo());
+    m_modelSettingsAction->setEnabled(!locked);
+    m_resetAction->setEnabled(!locked);
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock, m_variablesDock})
+        dock->widget()->setEnabled(!locked);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

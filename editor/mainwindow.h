@@ -9,6 +9,7 @@
 class QAction;
 class QActionGroup;
 class QDockWidget;
+class QLabel;
 class QMenu;
 
 namespace editor {
@@ -23,6 +24,9 @@ class ProblemsDock;
 class RecentFiles;
 class Selection;
 class Settings;
+class SimulationChartMarks;
+class SimulationDock;
+class SimulationSession;
 class StPreviewDock;
 class StepDock;
 class TransitionDock;
@@ -47,6 +51,7 @@ public:
     ChartScene* chartScene() const { return m_scene; }
     ChartView* chartView() const { return m_view; }
     ExportActions* exportActions() const { return m_exportActions; }
+    SimulationSession* simulationSession() const { return m_session; }
 
 public slots:
     // Asks to save unsaved changes first. A file that cannot be read leaves
@@ -94,6 +99,9 @@ private:
     bool needsSaveAs() const;
     void updateTitle();
     void showEditFailure(const QString& message);
+    // Simulation mode: locks the editing actions and docks, shows the dock.
+    void onSimulationActiveChanged(bool active);
+    void applyEditingLock();
 
     Translators& m_translators;
     std::unique_ptr<Settings> m_settings;
@@ -111,11 +119,16 @@ private:
     ExportActions* m_exportActions = nullptr;
     ProblemCounter* m_problemCounter = nullptr;
     ZoomIndicator* m_zoomIndicator = nullptr;
+    SimulationSession* m_session = nullptr;
+    SimulationChartMarks* m_chartMarks = nullptr;
+    SimulationDock* m_simulationDock = nullptr;
+    QLabel* m_simulationIndicator = nullptr;
 
     QMenu* m_fileMenu = nullptr;
     QMenu* m_editMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     QMenu* m_languageMenu = nullptr;
+    QMenu* m_simulationMenu = nullptr;
     QMenu* m_helpMenu = nullptr;
 
     QAction* m_newAction = nullptr;
@@ -132,6 +145,10 @@ private:
     QAction* m_actualSizeAction = nullptr;
     QAction* m_zoomInAction = nullptr;
     QAction* m_zoomOutAction = nullptr;
+    QAction* m_simulateAction = nullptr;
+    QAction* m_runAction = nullptr;
+    QAction* m_scanAction = nullptr;
+    QAction* m_resetSimulationAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QAction* m_aboutQtAction = nullptr;
     QActionGroup* m_languageGroup = nullptr;

@@ -85,7 +85,16 @@ StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* 
     // Coalesces the signals of one edit (a rename changes many transitions).
     m_updateTimer->setSingleShot(true);
     m_updateTimer->setInterval(0);
-    connect(m_updateTimer, &QTimer::timeout, this, &StPreviewDock::updatePreview);
+    connect(m_updateTimer, &QTimer::timeout, this, [this] {
+        if (isOnScreen())
+            updatePreview();
+    });
+    // A tab brought to the front (QDockWidget says so with this signal; its
+    // isVisible() stays true behind another tab).
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible && m_stale)
+            scheduleUpdate();
+    });
 
     connect(m_document, &Document::stepChanged, this, &StPreviewDock::scheduleUpdate);
     connect(m_document, &Document::transitionChanged, this, &StPreviewDock::scheduleUpdate);
@@ -106,10 +115,18 @@ void StPreviewDock::showEvent(QShowEvent* event)
         scheduleUpdate();
 }
 
+bool StPreviewDock::isOnScreen() const
+{
+    // A tab behind another is visible to Qt, but placed outside the window.
+    return isVisible() && !visibleRegion().isEmpty();
+}
+
 void StPreviewDock::scheduleUpdate()
 {
     m_stale = true;
-    // A hidden preview (a closed dock, a tab behind another) waits until shown.
+    // A hidden preview (a closed dock, a tab behind another) waits until
+    // shown: generating and laying out the program is the costliest work of
+    // an edit, and of the startup when the window first opens.
     if (isVisible())
         m_updateTimer->start();
 }
@@ -151,7 +168,7 @@ void StPreviewDock::onDialectChosen(int index)
 
 void StPreviewDock::onSelectionChanged()
 {
-    if (m_stale && isVisible())
+    if (m_stale && isOnScreen())
         updatePreview();
     highlightSelection(true);
 }

@@ -39,6 +39,7 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    bool isOnScreen() const;
     void scheduleUpdate();
     void refreshDialect();
     void onDialectChosen(int index);

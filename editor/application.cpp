@@ -1,0 +1,49 @@
+#include "editor/application.h"
+
+#include "editor/autosave.h"
+#include "editor/languages.h"
+#include "editor/mainwindow.h"
+#include "editor/settings.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QIcon>
+
+namespace editor {
+
+int runApplication(int argc, char** argv, const StartupHooks& hooks)
+{
+    QApplication app(argc, argv);
+    // Where QSettings and autosave keep their files.
+    QApplication::setOrganizationName(QStringLiteral("GG Studio"));
+    QApplication::setApplicationName(QStringLiteral("GG Studio"));
+    QApplication::setApplicationVersion(QStringLiteral(GGSTUDIO_VERSION));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/ggstudio.svg")));
+
+    // Translated before any widget exists, so every text starts right.
+    Translators translators;
+    translators.setLanguage(Settings().language());
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QApplication::translate("main", "Editor for the GEMMA-GRAFCET method of specifying machine operating modes"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("model"),
+                                 QApplication::translate("main", "The model file to open (GG Studio JSON, "
+                                                                 "GG-Generator JSON or GG Studio PLCopen XML)."),
+                                 QStringLiteral("[model]"));
+    parser.process(app);
+
+    MainWindow window(translators);
+    if (hooks.windowCreated)
+        hooks.windowCreated(window);
+    window.show();
+    if (!Autosave::pendingRecoveries().empty())
+        window.offerRecovery();
+    if (!parser.positionalArguments().isEmpty())
+        window.openFile(parser.positionalArguments().constFirst());
+    return app.exec();
+}
+
+} // namespace editor

@@ -1,0 +1,328 @@
+// Catch2 BENCHMARKs of the editor's responsiveness, behind the figures of the
+// README's Performance section:
+//  - a keystroke in the condition editor until the problems list, the ST
+//    preview and the chart label show the new condition, painting included;
+//  - one frame of simulation at 1,000 scans/s: the batch of scans one
+//    16 ms timer tick runs, the chart marks and Simulation dock refresh,
+//    and the repaint of the chart and the dock;
+//  - the cold start to the first shown chart against a bare Qt window
+//    (tests/bench/startupprobe.cpp), both started here alternately.
+// Run with QT_QPA_PLATFORM=offscreen when there is no display. Nothing here
+// asserts a time: the machine running the tests decides those.
+
+#define CATCH_CONFIG_RUNNER
+#define CATCH_CONFIG_ENABLE_BENCHMARKING
+#include <catch2/catch.hpp>
+
+#include "modelfactory.h"
+
+#include "editor/chart/chartscene.h"
+#include "editor/chart/chartview.h"
+#include "editor/chart/transitionitem.h"
+#include "editor/docks/conditionedit.h"
+#include "editor/docks/problemsdock.h"
+#include "editor/docks/stpreviewdock.h"
+#include "editor/docks/transitiondock.h"
+#include "editor/document.h"
+#include "editor/languages.h"
+#include "editor/mainwindow.h"
+#include "editor/selection.h"
+#include "editor/simulation/simulationdock.h"
+#include "editor/simulation/simulationsession.h"
+#include "editor/simulation/tracetablemodel.h"
+
+#include <QApplication>
+#include <QDeadlineTimer>
+#include <QElapsedTimer>
+#include <QPlainTextEdit>
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <QSet>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTabWidget>
+#include <QTextCursor>
+#include <QTreeWidget>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+namespace {
+
+const QString kTransition = QStringLiteral("F1->A2");
+constexpr int kTimedKeystrokes = 100;
+
+double median(std::vector<double> values)
+{
+    std::sort(values.begin(), values.end());
+    const std::size_t middle = values.size() / 2;
+    return values.size() % 2 ? values[middle] : (values[middle - 1] + values[middle]) / 2.0;
+}
+
+// Whether the problems list has a row whose message names `word`.
+bool problemsMention(const editor::ProblemsDock& dock, const QString& word)
+{
+    const QTreeWidget* view = dock.view();
+    for (int i = 0; i < view->topLevelItemCount(); ++i) {
+        if (view->topLevelItem(i)->text(editor::ProblemsDock::MessageColumn).contains(word))
+            return true;
+    }
+    return false;
+}
+
+// The window with the realistic model, F1->A2 in the Transition dock and the
+// ST preview in front.
+struct EditingSession {
+    editor::Translators translators;
+    // Before the window: a later change of language rebuilds its docks.
+    bool english = translators.setLanguage(QStringLiteral("en"));
+    editor::MainWindow window{translators};
+    editor::TransitionDock* transitionDock = nullptr;
+    editor::StPreviewDock* previewDock = nullptr;
+    editor::ProblemsDock* problemsDock = nullptr;
+    editor::ConditionEdit* conditionEdit = nullptr;
+    editor::TransitionItem* chartItem = nullptr;
+
+    EditingSession()
+    {
+        REQUIRE(english);
+        window.show();
+        REQUIRE(QTest::qWaitForWindowExposed(&window));
+        window.document()->replaceModel(factory::realisticModel(), QString(), core::ModelFormat::Native);
+        window.selection()->select(editor::ElementRef::transition(kTransition));
+        transitionDock = window.findChild<editor::TransitionDock*>();
+        previewDock = window.findChild<editor::StPreviewDock*>();
+        problemsDock = window.findChild<editor::ProblemsDock*>();
+        REQUIRE(transitionDock);
+        REQUIRE(previewDock);
+        REQUIRE(problemsDock);
+        transitionDock->show();
+        transitionDock->raise();
+        previewDock->show();
+        previewDock->raise();
+        conditionEdit = transitionDock->findChild<editor::ConditionEdit*>();
+        chartItem = window.chartScene()->transitionItem(kTransition);
+        REQUIRE(conditionEdit);
+        REQUIRE(chartItem);
+        window.activateWindow();
+        conditionEdit->setFocus();
+        QTextCursor cursor = conditionEdit->textCursor();
+        cursor.movePosition(QTextCursor::End);
+        conditionEdit->setTextCursor(cursor);
+        QTest::qWait(50);
+    }
+
+    // Problems list, ST preview and chart label all show (or all no longer
+    // show) the word.
+    bool showsEverywhere(const QString& word, bool shown) const
+    {
+        return problemsMention(*problemsDock, word) == shown
+            && previewDock->editor()->toPlainText().contains(word) == shown
+            && chartItem->labelText().contains(word) == shown;
+    }
+
+    // Processes events until the views show the state; false after 5 s.
+    bool waitUntilShown(const QString& word, bool shown) const
+    {
+        const QDeadlineTimer deadline(5000);
+        while (!showsEverywhere(word, shown)) {
+            if (deadline.hasExpired())
+                return false;
+            QCoreApplication::processEvents(QEventLoop::AllEvents);
+        }
+        return true;
+    }
+};
+
+} // namespace
+
+TEST_CASE("keystroke to updated view", "[editorbench]")
+{
+    EditingSession session;
+    const QString original = session.conditionEdit->text();
+    REQUIRE(original == QStringLiteral("NOT Stop"));
+    REQUIRE(session.previewDock->isVisible());
+    REQUIRE(session.conditionEdit->isVisible());
+    // "Stopx" is an undeclared variable: an error in the problems list, a
+    // problem comment in the preview, and the label's new text.
+    const QString typed = QStringLiteral("Stopx");
+    REQUIRE(session.waitUntilShown(typed, false));
+
+    // The pairs of keystrokes check that both states are reached before timing.
+    QTest::keyClick(session.conditionEdit, Qt::Key_X);
+    REQUIRE(session.waitUntilShown(typed, true));
+    QTest::keyClick(session.conditionEdit, Qt::Key_Backspace);
+    REQUIRE(session.waitUntilShown(typed, false));
+    REQUIRE(session.conditionEdit->text() == original);
+
+    bool typedLast = false;
+    bool allShown = true;
+    QWidget* viewport = session.window.chartView()->viewport();
+    BENCHMARK("keystroke to updated view")
+    {
+        typedLast = !typedLast;
+        QTest::keyClick(session.conditionEdit, typedLast ? Qt::Key_X : Qt::Key_Backspace);
+        allShown = session.waitUntilShown(typed, typedLast) && allShown;
+        viewport->repaint();
+    };
+    CHECK(allShown);
+
+    // The same, timed one by one for the median and the slow tail, which
+    // Catch's mean hides on a loaded machine.
+    std::vector<double> latencies;
+    for (int i = 0; i < kTimedKeystrokes; ++i) {
+        typedLast = !typedLast;
+        QElapsedTimer timer;
+        timer.start();
+        QTest::keyClick(session.conditionEdit, typedLast ? Qt::Key_X : Qt::Key_Backspace);
+        REQUIRE(session.waitUntilShown(typed, typedLast));
+        viewport->repaint();
+        latencies.push_back(static_cast<double>(timer.nsecsElapsed()) / 1e6);
+    }
+    std::sort(latencies.begin(), latencies.end());
+    std::printf("\nkeystroke to updated view, %d keystrokes: median %.2f ms, 90th percentile %.2f ms, max %.2f ms\n",
+                kTimedKeystrokes, median(latencies), latencies[latencies.size() * 9 / 10], latencies.back());
+    std::fflush(stdout);
+}
+
+TEST_CASE("simulation frame at 1,000 scans/s", "[editorbench]")
+{
+    editor::Translators translators;
+    translators.setLanguage(QStringLiteral("en"));
+    editor::MainWindow window(translators);
+    window.resize(1366, 768);
+    window.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&window));
+    window.document()->replaceModel(factory::realisticModel(), QString(), core::ModelFormat::Native);
+    editor::SimulationSession* session = window.simulationSession();
+    session->setActive(true);
+    REQUIRE(session->isActive());
+    auto* dock = window.findChild<editor::SimulationDock*>();
+    REQUIRE(dock);
+    REQUIRE(dock->isVisible());
+    // The trace in front: its rows scroll every frame, the costliest tab.
+    auto* tabs = dock->findChild<QTabWidget*>(QStringLiteral("simulationTabs"));
+    REQUIRE(tabs);
+    tabs->setCurrentIndex(1);
+    // Inputs that make the line cycle A1 -> F1 -> A2 -> A1 for ever, so
+    // nearly every frame moves the active step and the fired transition.
+    for (const char* input : {"HomePosition", "AirPressureOk", "Start", "PreparationDone", "DoorClosed", "CycleEnd"})
+        REQUIRE(session->setVariable(session->simulator()->variableIndex(input), true));
+    session->advance(100);
+    REQUIRE(!session->lastFiredTransition().isEmpty());
+    QTest::qWait(50);
+
+    // What one 16 ms tick does at 1,000 scans/s.
+    const int scansPerFrame = 1000 * editor::SimulationSession::kTickMs / 1000;
+    QWidget* viewport = window.chartView()->viewport();
+    const std::int64_t scansBefore = session->simulator()->scanCount();
+    BENCHMARK("simulation frame at 1,000 scans/s")
+    {
+        session->advance(scansPerFrame);
+        viewport->repaint();
+        dock->repaint();
+    };
+    CHECK(session->simulator()->scanCount() > scansBefore);
+    // The frames did fire transitions: the marks and the trace had work to do.
+    QSet<QString> fired;
+    for (const core::ScanRecord& record : session->trace())
+        fired.insert(QString::fromStdString(record.fired));
+    CHECK(fired.size() >= 4); // A1->F1, F1->A2, A2->A1 and the scans that fire none
+    CHECK(dock->traceModel()->rowCount() == static_cast<int>(session->trace().size()));
+}
+
+namespace {
+
+struct StartupTimes {
+    double fromProcessStart = 0.0; // wall time seen by the parent: exec, libraries, main(), first paint
+    double fromMain = 0.0;         // what the probe measured itself, from main()
+};
+
+// Runs `startup_probe MODE` once, offscreen, with settings and autosave in
+// an empty folder (a first start). The probe prints its own figure right
+// after the first paint of the chart's viewport; the time until that line
+// arrives here is the cold start a user waits through.
+StartupTimes probeOnce(const QString& mode)
+{
+    QTemporaryDir home;
+    REQUIRE(home.isValid());
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    environment.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
+    environment.insert(QStringLiteral("XDG_DATA_HOME"), home.filePath(QStringLiteral("data")));
+    environment.insert(QStringLiteral("XDG_CACHE_HOME"), home.filePath(QStringLiteral("cache")));
+    QProcess probe;
+    probe.setProcessEnvironment(environment);
+    QElapsedTimer clock;
+    clock.start();
+    probe.start(QStringLiteral(GGSTUDIO_STARTUP_PROBE), {mode});
+    QByteArray line;
+    while (!line.contains('\n') && probe.waitForReadyRead(60000))
+        line += probe.readAllStandardOutput();
+    const double fromProcessStart = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+    REQUIRE(probe.waitForFinished(60000));
+    line += probe.readAllStandardOutput();
+    INFO("startup_probe " << mode.toStdString() << ": " << probe.readAllStandardError().toStdString());
+    REQUIRE(probe.exitStatus() == QProcess::NormalExit);
+    REQUIRE(probe.exitCode() == 0);
+    bool ok = false;
+    const double fromMain = QString::fromLocal8Bit(line).trimmed().toDouble(&ok);
+    REQUIRE(ok);
+    REQUIRE(fromMain > 0.0);
+    return {fromProcessStart, fromMain};
+}
+
+// GGSTUDIO_STARTUP_RUNS, default 10.
+int startupRuns()
+{
+    bool ok = false;
+    const int runs = qEnvironmentVariableIntValue("GGSTUDIO_STARTUP_RUNS", &ok);
+    return ok && runs > 0 ? runs : 10;
+}
+
+} // namespace
+
+TEST_CASE("cold start to the first shown chart", "[editorbench]")
+{
+    // Alternately, so a change of the machine's load weighs on all alike.
+    const QStringList modes{QStringLiteral("bare"), QStringLiteral("ggstudio"), QStringLiteral("chart")};
+    std::vector<std::vector<double>> process(3);
+    std::vector<std::vector<double>> fromMain(3);
+    const int runs = startupRuns();
+    for (int run = 0; run < runs; ++run) {
+        for (int mode = 0; mode < 3; ++mode) {
+            const StartupTimes times = probeOnce(modes[mode]);
+            process[static_cast<std::size_t>(mode)].push_back(times.fromProcessStart);
+            fromMain[static_cast<std::size_t>(mode)].push_back(times.fromMain);
+        }
+    }
+    const double bare = median(process[0]);
+    const double ggstudio = median(process[1]);
+    const double chart = median(process[2]);
+    std::printf("\ncold start to the first shown chart, median of %d runs each:\n"
+                "                                           from process start   from main()\n"
+                "  bare QMainWindow + empty QGraphicsView:  %8.1f ms          %8.1f ms\n"
+                "  GG Studio on the template:               %8.1f ms          %8.1f ms\n"
+                "  the bare window with the chart alone:    %8.1f ms          %8.1f ms\n"
+                "  ratio GG Studio / bare:                  %8.2f             %8.2f\n\n",
+                runs, bare, median(fromMain[0]), ggstudio, median(fromMain[1]), chart, median(fromMain[2]),
+                ggstudio / bare, median(fromMain[1]) / median(fromMain[0]));
+    std::fflush(stdout);
+}
+
+int main(int argc, char* argv[])
+{
+    QApplication app(argc, argv);
+    // The window reads and writes its settings and autosave files: keep the
+    // user's own out of it.
+    QTemporaryDir settingsDir;
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
+    QApplication::setOrganizationName(QStringLiteral("GG Studio Benchmarks"));
+    QApplication::setApplicationName(QStringLiteral("editor_benchmarks"));
+    return Catch::Session().run(argc, argv);
+}

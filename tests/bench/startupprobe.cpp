@@ -1,0 +1,128 @@
+// startup_probe MODE [ARGS...]: milliseconds from main() to the first shown chart.
+//
+//   bare      QApplication + QMainWindow whose central widget is an empty
+//             QGraphicsView, at the size GG Studio's window first opens with.
+//   ggstudio  GG Studio's real startup (editor::runApplication, as app/gui
+//             runs it) on the template; ARGS go to it as its command line.
+//   chart     for reference: the bare window with GG Studio's chart of the
+//             template instead of the empty view (no docks, menus or
+//             status bar), the least any start showing this chart costs.
+//
+// The time runs from the first statement of main() to the end of the first
+// paint of the view's viewport, and is printed as one number ("123.456")
+// before the probe quits. It starts at main() rather than at the process
+// start (/proc/self/stat) because that start is counted in clock ticks (10 ms
+// here, as coarse as the figure itself) and because both modes are this one
+// executable: loading it and its libraries costs them the same. The
+// editor_benchmarks case "cold start" runs both modes alternately.
+
+#include "editor/application.h"
+#include "editor/chart/chartscene.h"
+#include "editor/chart/chartview.h"
+#include "editor/document.h"
+#include "editor/mainwindow.h"
+#include "editor/selection.h"
+
+#include <QApplication>
+#include <QEvent>
+#include <QGraphicsScene>
+#include <QGraphicsView>
+#include <QMainWindow>
+#include <QScreen>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Prints the time to the end of the first paint of the watched widget, then
+// quits the application.
+class FirstPaintProbe : public QObject {
+public:
+    FirstPaintProbe(QWidget* watched, Clock::time_point start)
+        : QObject(watched)
+        , m_start(start)
+    {
+        watched->installEventFilter(this);
+    }
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (event->type() != QEvent::Paint)
+            return false;
+        watched->removeEventFilter(this);
+        // Paints now, so the time includes the painting itself; the event
+        // is then consumed rather than painted twice.
+        QCoreApplication::sendEvent(watched, event);
+        const std::chrono::duration<double, std::milli> elapsed = Clock::now() - m_start;
+        std::printf("%.3f\n", elapsed.count());
+        std::fflush(stdout);
+        QCoreApplication::exit(0);
+        return true;
+    }
+
+private:
+    Clock::time_point m_start;
+};
+
+// The size MainWindow opens with when no layout was saved.
+QSize firstWindowSize()
+{
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    const QSize available = screen ? screen->availableSize() : QSize(1366, 768);
+    return QSize(std::min(available.width(), 1600), std::min(available.height(), 1000));
+}
+
+int runBare(int argc, char** argv, Clock::time_point start, bool withChart)
+{
+    QApplication app(argc, argv);
+    QMainWindow window;
+    QGraphicsView* view = nullptr;
+    if (withChart) {
+        auto* document = new editor::Document(&window);
+        auto* scene = new editor::ChartScene(document, new editor::Selection(&window), &window);
+        view = new editor::ChartView(scene, &window);
+    } else {
+        view = new QGraphicsView(new QGraphicsScene(&window), &window);
+    }
+    window.setCentralWidget(view);
+    window.resize(firstWindowSize());
+    new FirstPaintProbe(view->viewport(), start);
+    window.show();
+    return app.exec();
+}
+
+int runGgStudio(int argc, char** argv, Clock::time_point start)
+{
+    editor::StartupHooks hooks;
+    hooks.windowCreated = [start](editor::MainWindow& window) {
+        new FirstPaintProbe(window.chartView()->viewport(), start);
+    };
+    return editor::runApplication(argc, argv, hooks);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    const Clock::time_point start = Clock::now();
+    const std::string mode = argc < 2 ? std::string() : std::string(argv[1]);
+    if (mode != "bare" && mode != "ggstudio" && mode != "chart") {
+        std::fputs("usage: startup_probe bare|ggstudio|chart [ARGS...]\n", stderr);
+        return 2;
+    }
+    // The application sees its own name and ARGS, not MODE.
+    std::vector<char*> arguments{argv[0]};
+    arguments.insert(arguments.end(), argv + 2, argv + argc);
+    arguments.push_back(nullptr);
+    const int count = argc - 1;
+    if (mode == "ggstudio")
+        return runGgStudio(count, arguments.data(), start);
+    return runBare(count, arguments.data(), start, mode == "chart");
+}
