@@ -69,6 +69,11 @@ Document::~Document()
 
 bool Document::push(QUndoCommand* command)
 {
+    if (m_readOnly) {
+        delete command;
+        emit editFailed(tr("Stop the simulation to edit the model"));
+        return false;
+    }
     // Apply before QUndoStack::push: the stack drops its redo history on
     // every push, even of a command it then discards as obsolete.
     auto* modelCommand = dynamic_cast<ModelCommand*>(command);
@@ -79,6 +84,14 @@ bool Document::push(QUndoCommand* command)
     }
     m_undoStack->push(command);
     return true;
+}
+
+void Document::setReadOnly(bool readOnly)
+{
+    if (m_readOnly == readOnly)
+        return;
+    m_readOnly = readOnly;
+    emit readOnlyChanged(m_readOnly);
 }
 
 void Document::reportEditFailure(const QString& message)

@@ -42,6 +42,12 @@ public:
     // ModelCommand that changes nothing is dropped as well (returns true).
     bool push(QUndoCommand* command);
 
+    // While read-only (simulation mode) push() refuses every command: it
+    // emits editFailed() and returns false. Loading or replacing the model
+    // is still allowed: the simulation ends when the model it runs goes.
+    bool isReadOnly() const { return m_readOnly; }
+    void setReadOnly(bool readOnly);
+
     // Checks of the current model, recomputed after every edit (a command's
     // redo or undo, a load); diagnosticsChanged() is emitted when they differ.
     // The typed signals of an edit come when it is complete, after the checks,
@@ -74,6 +80,7 @@ signals:
     void diagnosticsChanged();
     void filePathChanged(const QString& path);
     void modifiedChanged(bool modified);
+    void readOnlyChanged(bool readOnly);
     // An edit was refused (its model operation failed); the message is for the user.
     void editFailed(const QString& message);
 
@@ -95,6 +102,7 @@ private:
     int m_observer = 0;
     int m_editDepth = 0;
     bool m_recheckQueued = false;
+    bool m_readOnly = false;
     std::vector<core::ModelChange> m_pendingChanges; // of the edit under way
 };
 

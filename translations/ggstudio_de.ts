@@ -508,6 +508,10 @@
         <source>Untitled</source>
         <translation>Unbenannt</translation>
     </message>
+    <message>
+        <source>Stop the simulation to edit the model</source>
+        <translation>Beenden Sie die Simulation, um das Modell zu bearbeiten</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportActions</name>
@@ -911,6 +915,38 @@
         <source>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 program that runs them (Structured Text, PLCopen XML).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Ein Editor für die GEMMA-GRAFCET-Methode: Wählen Sie die Betriebsarten einer Maschine auf der GEMMA-Vorlage, schreiben Sie die Bedingungen ihrer Transitionen und erzeugen Sie das Programm nach IEC 61131-3, das sie ausführt (Strukturierter Text, PLCopen XML).&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Simulate</source>
+        <translation>&amp;Simulieren</translation>
+    </message>
+    <message>
+        <source>Run the model scan by scan; editing is locked while the simulation is on</source>
+        <translation>Das Modell Zyklus für Zyklus ausführen; während der Simulation ist das Bearbeiten gesperrt</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Ausführen</translation>
+    </message>
+    <message>
+        <source>Run scans at the speed set in the Simulation dock, or pause them</source>
+        <translation>Zyklen mit der im Fenster Simulation eingestellten Geschwindigkeit ausführen oder anhalten</translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation>&amp;Einzelner Zyklus</translation>
+    </message>
+    <message>
+        <source>R&amp;eset Simulation</source>
+        <translation>Simulation &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Simulation: editing locked</source>
+        <translation>Simulation: Bearbeiten gesperrt</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -1069,6 +1105,252 @@
     <message>
         <source>&amp;Clear Menu</source>
         <translation>Liste &amp;leeren</translation>
+    </message>
+</context>
+<context>
+    <name>editor::SimulationDock</name>
+    <message>
+        <source>fires in the next scan</source>
+        <translation>schaltet im nächsten Zyklus</translation>
+    </message>
+    <message>
+        <source>condition FALSE</source>
+        <translation>Bedingung FALSE</translation>
+    </message>
+    <message>
+        <source>waits for Complete</source>
+        <translation>wartet auf Complete</translation>
+    </message>
+    <message>
+        <source>preempted by %1</source>
+        <translation>verdrängt durch %1</translation>
+    </message>
+    <message>
+        <source>condition unusable (always FALSE)</source>
+        <translation>Bedingung unbrauchbar (immer FALSE)</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>The simulation runs the model scan by scan, as the generated program runs on the PLC: play the inputs, watch the active step and see why each transition fires or not. Editing is locked while it runs.</source>
+        <translation>Die Simulation führt das Modell Zyklus für Zyklus aus, so wie das erzeugte Programm auf der SPS läuft: Eingänge bedienen, den aktiven Schritt verfolgen und sehen, warum jede Transition schaltet oder nicht. Während der Simulation ist das Bearbeiten gesperrt.</translation>
+    </message>
+    <message>
+        <source>Start Simulation</source>
+        <translation>Simulation starten</translation>
+    </message>
+    <message>
+        <source>Explanation</source>
+        <translation>Erklärung</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Verlauf</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Szenario</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ausführen</translation>
+    </message>
+    <message>
+        <source>Run scans at the chosen speed; press again to pause</source>
+        <translation>Zyklen mit der gewählten Geschwindigkeit ausführen; erneut drücken zum Anhalten</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Zyklus</translation>
+    </message>
+    <message>
+        <source>Run a single scan</source>
+        <translation>Einen einzelnen Zyklus ausführen</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Back to the initial step, the inputs to their defaults; clears the trace</source>
+        <translation>Zurück zum Anfangsschritt, Eingänge auf ihre Anfangswerte; löscht den Verlauf</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Beenden</translation>
+    </message>
+    <message>
+        <source>End the simulation and unlock editing</source>
+        <translation>Die Simulation beenden und das Bearbeiten freigeben</translation>
+    </message>
+    <message>
+        <source>&amp;Speed:</source>
+        <translation>&amp;Geschwindigkeit:</translation>
+    </message>
+    <message>
+        <source> scans/s</source>
+        <translation> Zyklen/s</translation>
+    </message>
+    <message>
+        <source>Scans per second (the model&apos;s cycle time only sets the simulated time)</source>
+        <translation>Zyklen pro Sekunde (die Zykluszeit des Modells bestimmt nur die simulierte Zeit)</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Next scan</source>
+        <translation>Nächster Zyklus</translation>
+    </message>
+    <message>
+        <source>&amp;Record as Scenario…</source>
+        <translation>Als Szenario &amp;aufzeichnen…</translation>
+    </message>
+    <message>
+        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and an expectation for every transition that fired</source>
+        <translation>Diese Sitzung seit dem letzten Zurücksetzen als Szenariodatei speichern: die Eingänge jedes Zyklus und eine Erwartung für jede geschaltete Transition</translation>
+    </message>
+    <message>
+        <source>Re&amp;play Scenario…</source>
+        <translation>Szenario ab&amp;spielen…</translation>
+    </message>
+    <message>
+        <source>Run a scenario file from the initial step and check its expectations</source>
+        <translation>Eine Szenariodatei ab dem Anfangsschritt ausführen und ihre Erwartungen prüfen</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Eingänge</translation>
+    </message>
+    <message>
+        <source>The model declares no variables.</source>
+        <translation>Das Modell deklariert keine Variablen.</translation>
+    </message>
+    <message>
+        <source>Complete of nested steps</source>
+        <translation>Complete der Schritte mit untergeordnetem Ablauf</translation>
+    </message>
+    <message>
+        <source>Automatic: the skeleton function block completes at once. Manual: you play the nested behaviour and set Complete yourself.</source>
+        <translation>Automatisch: Der Gerüst-Funktionsbaustein ist sofort abgeschlossen. Manuell: Sie spielen den untergeordneten Ablauf und setzen Complete selbst.</translation>
+    </message>
+    <message>
+        <source>Switch %1 between TRUE and FALSE</source>
+        <translation>%1 zwischen TRUE und FALSE umschalten</translation>
+    </message>
+    <message>
+        <source>Press</source>
+        <translation>Drücken</translation>
+    </message>
+    <message>
+        <source>TRUE while held down, like a push button (for at least one scan)</source>
+        <translation>TRUE, solange gedrückt, wie ein Taster (mindestens einen Zyklus lang)</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manuell</translation>
+    </message>
+    <message>
+        <source>How %1&apos;s function block sets Complete</source>
+        <translation>Wie der Funktionsbaustein von %1 Complete setzt</translation>
+    </message>
+    <message>
+        <source>Complete</source>
+        <translation>Complete</translation>
+    </message>
+    <message>
+        <source>The value the nested behaviour gives Complete (manual mode)</source>
+        <translation>Der Wert, den der untergeordnete Ablauf Complete gibt (manueller Modus)</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Scan %1 · %2 s</source>
+        <translation>Zyklus %1 · %2 s</translation>
+    </message>
+    <message>
+        <source>%1.Complete = %2 (after the last call of its function block)</source>
+        <translation>%1.Complete = %2 (nach dem letzten Aufruf seines Funktionsbausteins)</translation>
+    </message>
+    <message>
+        <source>No visible step is active (State = %1).</source>
+        <translation>Kein sichtbarer Schritt ist aktiv (State = %1).</translation>
+    </message>
+    <message>
+        <source>Active step: &lt;b&gt;%1&lt;/b&gt; %2 · Entry = %3</source>
+        <translation>Aktiver Schritt: &lt;b&gt;%1&lt;/b&gt; %2 · Entry = %3</translation>
+    </message>
+    <message>
+        <source>%1 (family)</source>
+        <translation>%1 (Familie)</translation>
+    </message>
+    <message>
+        <source>The active step has no transition to evaluate.</source>
+        <translation>Der aktive Schritt hat keine Transition auszuwerten.</translation>
+    </message>
+    <message>
+        <source>Record this session as a scenario file, or replay one.</source>
+        <translation>Diese Sitzung als Szenariodatei aufzeichnen oder eine abspielen.</translation>
+    </message>
+    <message>
+        <source>Replaying %1: %2 scans.</source>
+        <translation>%1 wird abgespielt: %2 Zyklen.</translation>
+    </message>
+    <message>
+        <source>%1: every expectation met (%2).</source>
+        <translation>%1: alle Erwartungen erfüllt (%2).</translation>
+    </message>
+    <message>
+        <source>%1: %2 of %3 expectations failed.</source>
+        <translation>%1: %2 von %3 Erwartungen nicht erfüllt.</translation>
+    </message>
+    <message>
+        <source>Line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>session</source>
+        <translation>Sitzung</translation>
+    </message>
+    <message>
+        <source>Record as Scenario</source>
+        <translation>Als Szenario aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Simulation scenarios (*.scenario *.txt);;All files (*)</source>
+        <translation>Simulationsszenarien (*.scenario *.txt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Recorded %1 scans to %2.</source>
+        <translation>%1 Zyklen in %2 aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>Replay Scenario</source>
+        <translation>Szenario abspielen</translation>
+    </message>
+    <message>
+        <source>Could not replay %1.</source>
+        <translation>%1 konnte nicht abgespielt werden.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::SimulationSession</name>
+    <message>
+        <source>(%1 more)</source>
+        <translation>(%1 weitere)</translation>
     </message>
 </context>
 <context>
@@ -1245,6 +1527,33 @@ Einschließender Schritt: Seine Transitionen schalten unabhängig davon, was der
     <message>
         <source>%1, hidden</source>
         <translation>%1, ausgeblendet</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TraceTableModel</name>
+    <message>
+        <source>Scan</source>
+        <translation>Zyklus</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Fired</source>
+        <translation>Geschaltet</translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation>Entry</translation>
+    </message>
+    <message>
+        <source>Tokens TRUE</source>
+        <translation>Merker TRUE</translation>
+    </message>
+    <message>
+        <source>Changed inputs</source>
+        <translation>Geänderte Eingänge</translation>
     </message>
 </context>
 <context>

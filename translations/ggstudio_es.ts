@@ -508,6 +508,10 @@
         <source>Untitled</source>
         <translation>Sin título</translation>
     </message>
+    <message>
+        <source>Stop the simulation to edit the model</source>
+        <translation>Detenga la simulación para editar el modelo</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportActions</name>
@@ -911,6 +915,38 @@
         <source>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 program that runs them (Structured Text, PLCopen XML).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Un editor para el método GEMMA-GRAFCET: elija los modos de marcha y parada de una máquina sobre la plantilla GEMMA, escriba las condiciones de sus transiciones y genere el programa IEC 61131-3 que los ejecuta (texto estructurado (ST), PLCopen XML).&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulación</translation>
+    </message>
+    <message>
+        <source>&amp;Simulate</source>
+        <translation>&amp;Simular</translation>
+    </message>
+    <message>
+        <source>Run the model scan by scan; editing is locked while the simulation is on</source>
+        <translation>Ejecutar el modelo ciclo a ciclo; la edición queda bloqueada durante la simulación</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Ejecutar</translation>
+    </message>
+    <message>
+        <source>Run scans at the speed set in the Simulation dock, or pause them</source>
+        <translation>Ejecutar los ciclos a la velocidad fijada en el panel Simulación, o pausarlos</translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation>&amp;Un ciclo</translation>
+    </message>
+    <message>
+        <source>R&amp;eset Simulation</source>
+        <translation>&amp;Reiniciar la simulación</translation>
+    </message>
+    <message>
+        <source>Simulation: editing locked</source>
+        <translation>Simulación: edición bloqueada</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -1069,6 +1105,252 @@
     <message>
         <source>&amp;Clear Menu</source>
         <translation>&amp;Vaciar el menú</translation>
+    </message>
+</context>
+<context>
+    <name>editor::SimulationDock</name>
+    <message>
+        <source>fires in the next scan</source>
+        <translation>se franquea en el próximo ciclo</translation>
+    </message>
+    <message>
+        <source>condition FALSE</source>
+        <translation>condición FALSE</translation>
+    </message>
+    <message>
+        <source>waits for Complete</source>
+        <translation>espera a Complete</translation>
+    </message>
+    <message>
+        <source>preempted by %1</source>
+        <translation>adelantada por %1</translation>
+    </message>
+    <message>
+        <source>condition unusable (always FALSE)</source>
+        <translation>condición inutilizable (siempre FALSE)</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulación</translation>
+    </message>
+    <message>
+        <source>The simulation runs the model scan by scan, as the generated program runs on the PLC: play the inputs, watch the active step and see why each transition fires or not. Editing is locked while it runs.</source>
+        <translation>La simulación ejecuta el modelo ciclo a ciclo, como el programa generado se ejecuta en el PLC: actúe sobre las entradas, observe la etapa activa y vea por qué cada transición se franquea o no. La edición queda bloqueada mientras se ejecuta.</translation>
+    </message>
+    <message>
+        <source>Start Simulation</source>
+        <translation>Iniciar la simulación</translation>
+    </message>
+    <message>
+        <source>Explanation</source>
+        <translation>Explicación</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Traza</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Escenario</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Ejecutar</translation>
+    </message>
+    <message>
+        <source>Run scans at the chosen speed; press again to pause</source>
+        <translation>Ejecutar los ciclos a la velocidad elegida; pulse de nuevo para pausar</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>Run a single scan</source>
+        <translation>Ejecutar un solo ciclo</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <source>Back to the initial step, the inputs to their defaults; clears the trace</source>
+        <translation>Vuelve a la etapa inicial y las entradas a su valor inicial; borra la traza</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Terminar</translation>
+    </message>
+    <message>
+        <source>End the simulation and unlock editing</source>
+        <translation>Terminar la simulación y desbloquear la edición</translation>
+    </message>
+    <message>
+        <source>&amp;Speed:</source>
+        <translation>&amp;Velocidad:</translation>
+    </message>
+    <message>
+        <source> scans/s</source>
+        <translation> ciclos/s</translation>
+    </message>
+    <message>
+        <source>Scans per second (the model&apos;s cycle time only sets the simulated time)</source>
+        <translation>Ciclos por segundo (el tiempo de ciclo del modelo solo fija el tiempo simulado)</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transición</translation>
+    </message>
+    <message>
+        <source>Next scan</source>
+        <translation>Próximo ciclo</translation>
+    </message>
+    <message>
+        <source>&amp;Record as Scenario…</source>
+        <translation>&amp;Grabar como escenario…</translation>
+    </message>
+    <message>
+        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and an expectation for every transition that fired</source>
+        <translation>Guardar esta sesión desde el último reinicio como archivo de escenario: las entradas de cada ciclo y una expectativa por cada transición franqueada</translation>
+    </message>
+    <message>
+        <source>Re&amp;play Scenario…</source>
+        <translation>&amp;Reproducir un escenario…</translation>
+    </message>
+    <message>
+        <source>Run a scenario file from the initial step and check its expectations</source>
+        <translation>Ejecutar un archivo de escenario desde la etapa inicial y comprobar sus expectativas</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Entradas</translation>
+    </message>
+    <message>
+        <source>The model declares no variables.</source>
+        <translation>El modelo no declara ninguna variable.</translation>
+    </message>
+    <message>
+        <source>Complete of nested steps</source>
+        <translation>Complete de las etapas con comportamiento anidado</translation>
+    </message>
+    <message>
+        <source>Automatic: the skeleton function block completes at once. Manual: you play the nested behaviour and set Complete yourself.</source>
+        <translation>Automático: el bloque de función esqueleto termina de inmediato. Manual: usted representa el comportamiento anidado y fija Complete.</translation>
+    </message>
+    <message>
+        <source>Switch %1 between TRUE and FALSE</source>
+        <translation>Alternar %1 entre TRUE y FALSE</translation>
+    </message>
+    <message>
+        <source>Press</source>
+        <translation>Pulsar</translation>
+    </message>
+    <message>
+        <source>TRUE while held down, like a push button (for at least one scan)</source>
+        <translation>TRUE mientras se mantiene pulsado, como un pulsador (al menos un ciclo)</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automático</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <source>How %1&apos;s function block sets Complete</source>
+        <translation>Cómo fija Complete el bloque de función de %1</translation>
+    </message>
+    <message>
+        <source>Complete</source>
+        <translation>Complete</translation>
+    </message>
+    <message>
+        <source>The value the nested behaviour gives Complete (manual mode)</source>
+        <translation>El valor que el comportamiento anidado da a Complete (modo manual)</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Scan %1 · %2 s</source>
+        <translation>Ciclo %1 · %2 s</translation>
+    </message>
+    <message>
+        <source>%1.Complete = %2 (after the last call of its function block)</source>
+        <translation>%1.Complete = %2 (tras la última llamada de su bloque de función)</translation>
+    </message>
+    <message>
+        <source>No visible step is active (State = %1).</source>
+        <translation>Ninguna etapa visible está activa (State = %1).</translation>
+    </message>
+    <message>
+        <source>Active step: &lt;b&gt;%1&lt;/b&gt; %2 · Entry = %3</source>
+        <translation>Etapa activa: &lt;b&gt;%1&lt;/b&gt; %2 · Entry = %3</translation>
+    </message>
+    <message>
+        <source>%1 (family)</source>
+        <translation>%1 (familia)</translation>
+    </message>
+    <message>
+        <source>The active step has no transition to evaluate.</source>
+        <translation>La etapa activa no tiene ninguna transición que evaluar.</translation>
+    </message>
+    <message>
+        <source>Record this session as a scenario file, or replay one.</source>
+        <translation>Grabe esta sesión como archivo de escenario, o reproduzca uno.</translation>
+    </message>
+    <message>
+        <source>Replaying %1: %2 scans.</source>
+        <translation>Reproduciendo %1: %2 ciclos.</translation>
+    </message>
+    <message>
+        <source>%1: every expectation met (%2).</source>
+        <translation>%1: se cumplen todas las expectativas (%2).</translation>
+    </message>
+    <message>
+        <source>%1: %2 of %3 expectations failed.</source>
+        <translation>%1: %2 de %3 expectativas no se cumplen.</translation>
+    </message>
+    <message>
+        <source>Line %1: %2</source>
+        <translation>Línea %1: %2</translation>
+    </message>
+    <message>
+        <source>session</source>
+        <translation>sesion</translation>
+    </message>
+    <message>
+        <source>Record as Scenario</source>
+        <translation>Grabar como escenario</translation>
+    </message>
+    <message>
+        <source>Simulation scenarios (*.scenario *.txt);;All files (*)</source>
+        <translation>Escenarios de simulación (*.scenario *.txt);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>No se ha podido escribir %1.</translation>
+    </message>
+    <message>
+        <source>Recorded %1 scans to %2.</source>
+        <translation>%1 ciclos grabados en %2.</translation>
+    </message>
+    <message>
+        <source>Replay Scenario</source>
+        <translation>Reproducir un escenario</translation>
+    </message>
+    <message>
+        <source>Could not replay %1.</source>
+        <translation>No se ha podido reproducir %1.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::SimulationSession</name>
+    <message>
+        <source>(%1 more)</source>
+        <translation>(%1 más)</translation>
     </message>
 </context>
 <context>
@@ -1245,6 +1527,33 @@ Etapa encapsulante: sus transiciones se franquean haga lo que haga el comportami
     <message>
         <source>%1, hidden</source>
         <translation>%1, oculta</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TraceTableModel</name>
+    <message>
+        <source>Scan</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Etapa</translation>
+    </message>
+    <message>
+        <source>Fired</source>
+        <translation>Franqueada</translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation>Entry</translation>
+    </message>
+    <message>
+        <source>Tokens TRUE</source>
+        <translation>Memorias TRUE</translation>
+    </message>
+    <message>
+        <source>Changed inputs</source>
+        <translation>Entradas cambiadas</translation>
     </message>
 </context>
 <context>

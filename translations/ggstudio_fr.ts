@@ -39,7 +39,7 @@
     </message>
     <message>
         <source>&apos;%1&apos; is not a valid IEC 61131-3 identifier: use ASCII letters, digits and &apos;_&apos;, not starting with a digit</source>
-        <translation>&apos;%1&apos; n&apos;est pas un identificateur IEC 61131-3 valide : utilisez des lettres ASCII, des chiffres et &apos;_&apos;, sans commencer par un chiffre</translation>
+        <translation>&apos;%1&apos; n&apos;est pas un identificateur IEC 61131-3 valide&#xa0;: utilisez des lettres ASCII, des chiffres et &apos;_&apos;, sans commencer par un chiffre</translation>
     </message>
     <message>
         <source>&apos;%1&apos; contains &apos;__&apos;, which IEC 61131-3 identifiers may not</source>
@@ -59,11 +59,11 @@
     </message>
     <message>
         <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; does not occur in the condition.</source>
-        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide : &apos;%2&apos; n&apos;apparaît pas dans la réceptivité.</translation>
+        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide&#xa0;: &apos;%2&apos; n&apos;apparaît pas dans la réceptivité.</translation>
     </message>
     <message>
         <source>The token on &apos;%2&apos; in %1 is ambiguous: the condition uses both %2 and NOT %2, so the token could be neither normally open nor normally closed.</source>
-        <translation>La mémoire de &apos;%2&apos; dans %1 est ambiguë : la réceptivité utilise à la fois %2 et NOT %2, la mémoire ne peut donc être ni normalement ouverte ni normalement fermée.</translation>
+        <translation>La mémoire de &apos;%2&apos; dans %1 est ambiguë&#xa0;: la réceptivité utilise à la fois %2 et NOT %2, la mémoire ne peut donc être ni normalement ouverte ni normalement fermée.</translation>
     </message>
     <message>
         <source>The token in %1 names &apos;%2&apos;, which is not a declared variable.</source>
@@ -71,39 +71,39 @@
     </message>
     <message>
         <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is compared with &apos;=&apos; or &apos;&lt;&gt;&apos; in the condition, where it has no polarity; a token can only replace a literal %2 or NOT %2.</source>
-        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide : &apos;%2&apos; est comparée avec &apos;=&apos; ou &apos;&lt;&gt;&apos; dans la réceptivité, où elle n&apos;a pas de polarité ; une mémoire ne peut remplacer qu&apos;un littéral %2 ou NOT %2.</translation>
+        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide&#xa0;: &apos;%2&apos; est comparée avec &apos;=&apos; ou &apos;&lt;&gt;&apos; dans la réceptivité, où elle n&apos;a pas de polarité&#xa0;; une mémoire ne peut remplacer qu&apos;un littéral %2 ou NOT %2.</translation>
     </message>
     <message>
         <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: family transitions never wait for Complete.</source>
-        <translation>La mémoire de &apos;%2&apos; dans %1 n&apos;a aucun effet et n&apos;est pas générée : les transitions de famille n&apos;attendent jamais Complete.</translation>
+        <translation>La mémoire de &apos;%2&apos; dans %1 n&apos;a aucun effet et n&apos;est pas générée&#xa0;: les transitions de famille n&apos;attendent jamais Complete.</translation>
     </message>
     <message>
         <source>The token on &apos;%2&apos; in %1 has no effect and is not generated: its source %3 is a simple step.</source>
-        <translation>La mémoire de &apos;%2&apos; dans %1 n&apos;a aucun effet et n&apos;est pas générée : son étape source %3 est une étape simple.</translation>
+        <translation>La mémoire de &apos;%2&apos; dans %1 n&apos;a aucun effet et n&apos;est pas générée&#xa0;: son étape source %3 est une étape simple.</translation>
     </message>
     <message>
         <source>The initial step %1 is hidden: the PLC would start in a state that has no code.</source>
-        <translation>L&apos;étape initiale %1 est masquée : l&apos;automate démarrerait dans un état sans code.</translation>
+        <translation>L&apos;étape initiale %1 est masquée&#xa0;: l&apos;automate démarrerait dans un état sans code.</translation>
     </message>
     <message>
         <source>Step %1 has no visible outgoing transition: the machine would stay in it forever.</source>
-        <translation>L&apos;étape %1 n&apos;a aucune transition de sortie visible : la machine y resterait indéfiniment.</translation>
+        <translation>L&apos;étape %1 n&apos;a aucune transition de sortie visible&#xa0;: la machine y resterait indéfiniment.</translation>
     </message>
     <message>
         <source>Step %1 has no visible incoming transition: it can never become active.</source>
-        <translation>L&apos;étape %1 n&apos;a aucune transition d&apos;entrée visible : elle ne peut jamais devenir active.</translation>
+        <translation>L&apos;étape %1 n&apos;a aucune transition d&apos;entrée visible&#xa0;: elle ne peut jamais devenir active.</translation>
     </message>
     <message>
         <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
-        <translation>La réceptivité de %1 est vide : écrivez TRUE pour une transition toujours franchissable.</translation>
+        <translation>La réceptivité de %1 est vide&#xa0;: écrivez TRUE pour une transition toujours franchissable.</translation>
     </message>
     <message>
         <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
-        <translation>La transition de famille %1 est niée, ce qui n&apos;a aucun effet : les transitions de famille n&apos;attendent jamais Complete.</translation>
+        <translation>La transition de famille %1 est niée, ce qui n&apos;a aucun effet&#xa0;: les transitions de famille n&apos;attendent jamais Complete.</translation>
     </message>
     <message>
         <source>The condition of %1 is FALSE: the transition can never fire (hide it instead).</source>
-        <translation>La réceptivité de %1 est FALSE : la transition ne peut jamais être franchie (masquez-la plutôt).</translation>
+        <translation>La réceptivité de %1 est FALSE&#xa0;: la transition ne peut jamais être franchie (masquez-la plutôt).</translation>
     </message>
     <message>
         <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
@@ -111,39 +111,39 @@
     </message>
     <message>
         <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
-        <translation>L&apos;étape %1 n&apos;est pas accessible depuis l&apos;étape initiale %2 par des transitions visibles : elle ne peut jamais devenir active.</translation>
+        <translation>L&apos;étape %1 n&apos;est pas accessible depuis l&apos;étape initiale %2 par des transitions visibles&#xa0;: elle ne peut jamais devenir active.</translation>
     </message>
     <message>
         <source>Transition %1 is negated, which has no effect: its source %2 is a simple step, and negation only changes transitions out of macro and enclosing steps.</source>
-        <translation>La transition %1 est niée, ce qui n&apos;a aucun effet : son étape source %2 est une étape simple, et la négation ne change que les transitions issues de macro-étapes et d&apos;étapes encapsulantes.</translation>
+        <translation>La transition %1 est niée, ce qui n&apos;a aucun effet&#xa0;: son étape source %2 est une étape simple, et la négation ne change que les transitions issues de macro-étapes et d&apos;étapes encapsulantes.</translation>
     </message>
     <message>
         <source>The condition of %1 is TRUE and does not wait for Complete: the lower-priority transitions %2 can never fire.</source>
-        <translation>La réceptivité de %1 est TRUE et n&apos;attend pas Complete : les transitions moins prioritaires %2 ne peuvent jamais être franchies.</translation>
+        <translation>La réceptivité de %1 est TRUE et n&apos;attend pas Complete&#xa0;: les transitions moins prioritaires %2 ne peuvent jamais être franchies.</translation>
     </message>
     <message>
         <source>Invalid variable name: %1.</source>
-        <translation>Nom de variable invalide : %1.</translation>
+        <translation>Nom de variable invalide&#xa0;: %1.</translation>
     </message>
     <message>
         <source>Syntax error in the condition of %1: %2.</source>
-        <translation>Erreur de syntaxe dans la réceptivité de %1 : %2.</translation>
+        <translation>Erreur de syntaxe dans la réceptivité de %1&#xa0;: %2.</translation>
     </message>
     <message>
         <source>In the condition of %1: &apos;%2&apos; is not a declared variable.</source>
-        <translation>Dans la réceptivité de %1 : &apos;%2&apos; n&apos;est pas une variable déclarée.</translation>
+        <translation>Dans la réceptivité de %1&#xa0;: &apos;%2&apos; n&apos;est pas une variable déclarée.</translation>
     </message>
     <message>
         <source>Type error in the condition of %1: %2.</source>
-        <translation>Erreur de type dans la réceptivité de %1 : %2.</translation>
+        <translation>Erreur de type dans la réceptivité de %1&#xa0;: %2.</translation>
     </message>
     <message>
         <source>The token on &apos;%2&apos; in %1 is invalid: &apos;%2&apos; is %3, and only BOOL variables can have a token.</source>
-        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide : &apos;%2&apos; est de type %3, et seules les variables BOOL peuvent avoir une mémoire.</translation>
+        <translation>La mémoire de &apos;%2&apos; dans %1 est invalide&#xa0;: &apos;%2&apos; est de type %3, et seules les variables BOOL peuvent avoir une mémoire.</translation>
     </message>
     <message>
         <source>The default value of variable &apos;%1&apos; is invalid: %2.</source>
-        <translation>La valeur initiale de la variable &apos;%1&apos; est invalide : %2.</translation>
+        <translation>La valeur initiale de la variable &apos;%1&apos; est invalide&#xa0;: %2.</translation>
     </message>
     <message>
         <source>Error</source>
@@ -231,7 +231,7 @@
     </message>
     <message>
         <source>Autosave kept a copy on %1. Recover it? You can then save it or discard it.</source>
-        <translation>L&apos;enregistrement automatique en a conservé une copie le %1. La récupérer ? Vous pourrez ensuite l&apos;enregistrer ou l&apos;abandonner.</translation>
+        <translation>L&apos;enregistrement automatique en a conservé une copie le %1. La récupérer&#xa0;? Vous pourrez ensuite l&apos;enregistrer ou l&apos;abandonner.</translation>
     </message>
     <message>
         <source>&amp;Recover</source>
@@ -495,18 +495,22 @@
     </message>
     <message>
         <source>Cannot write the recovery copy: %1</source>
-        <translation>Impossible d&apos;écrire la copie de récupération : %1</translation>
+        <translation>Impossible d&apos;écrire la copie de récupération&#xa0;: %1</translation>
     </message>
 </context>
 <context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
-        <translation>%1 : %2</translation>
+        <translation>%1&#xa0;: %2</translation>
     </message>
     <message>
         <source>Untitled</source>
         <translation>Sans titre</translation>
+    </message>
+    <message>
+        <source>Stop the simulation to edit the model</source>
+        <translation>Arrêtez la simulation pour modifier le modèle</translation>
     </message>
 </context>
 <context>
@@ -658,11 +662,11 @@
     </message>
     <message>
         <source>Files:</source>
-        <translation>Fichiers :</translation>
+        <translation>Fichiers&#xa0;:</translation>
     </message>
     <message>
         <source>&amp;Dialect:</source>
-        <translation>&amp;Dialecte :</translation>
+        <translation>&amp;Dialecte&#xa0;:</translation>
     </message>
     <message>
         <source>IEC writes PLCopen TC6 XML 2.01 with the globals in the configuration. CODESYS writes what CODESYS V3.5 imports, with a GVL.</source>
@@ -670,7 +674,7 @@
     </message>
     <message>
         <source>The single file is always IEC 61131-3: CODESYS code names a GVL that IEC compilers do not know.</source>
-        <translation>Le fichier unique est toujours en IEC 61131-3 : le code CODESYS fait référence à une GVL que les compilateurs IEC ne connaissent pas.</translation>
+        <translation>Le fichier unique est toujours en IEC 61131-3&#xa0;: le code CODESYS fait référence à une GVL que les compilateurs IEC ne connaissent pas.</translation>
     </message>
     <message>
         <source>&amp;Export…</source>
@@ -697,7 +701,7 @@
     <name>editor::MainWindow</name>
     <message>
         <source>Autosave failed: %1</source>
-        <translation>Échec de l&apos;enregistrement automatique : %1</translation>
+        <translation>Échec de l&apos;enregistrement automatique&#xa0;: %1</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -821,11 +825,11 @@
     </message>
     <message>
         <source>The model “%1” has unsaved changes.</source>
-        <translation>Le modèle « %1 » contient des modifications non enregistrées.</translation>
+        <translation>Le modèle «&#xa0;%1&#xa0;» contient des modifications non enregistrées.</translation>
     </message>
     <message>
         <source>Do you want to save them?</source>
-        <translation>Voulez-vous les enregistrer ?</translation>
+        <translation>Voulez-vous les enregistrer&#xa0;?</translation>
     </message>
     <message>
         <source>All supported files (*.json *.xml)</source>
@@ -857,11 +861,11 @@
     </message>
     <message>
         <source>Opened %1</source>
-        <translation>Ouvert : %1</translation>
+        <translation>Ouvert&#xa0;: %1</translation>
     </message>
     <message>
         <source>Imported %1: Save As keeps it as a GG Studio model</source>
-        <translation>%1 importé : « Enregistrer sous » le conserve comme modèle GG Studio</translation>
+        <translation>%1 importé&#xa0;: «&#xa0;Enregistrer sous&#xa0;» le conserve comme modèle GG Studio</translation>
     </message>
     <message>
         <source>untitled</source>
@@ -881,7 +885,7 @@
     </message>
     <message>
         <source>Saved %1</source>
-        <translation>Enregistré : %1</translation>
+        <translation>Enregistré&#xa0;: %1</translation>
     </message>
     <message>
         <source>Export Failed</source>
@@ -893,7 +897,7 @@
     </message>
     <message>
         <source>Recovered unsaved changes: save them to keep them</source>
-        <translation>Modifications non enregistrées récupérées : enregistrez-les pour les conserver</translation>
+        <translation>Modifications non enregistrées récupérées&#xa0;: enregistrez-les pour les conserver</translation>
     </message>
     <message>
         <source>Reset to Template</source>
@@ -901,7 +905,7 @@
     </message>
     <message>
         <source>Put every state, transition, variable and setting back to the GEMMA template? You can undo this.</source>
-        <translation>Remettre chaque état, transition, variable et paramètre comme dans le gabarit GEMMA ? Vous pourrez annuler cette opération.</translation>
+        <translation>Remettre chaque état, transition, variable et paramètre comme dans le gabarit GEMMA&#xa0;? Vous pourrez annuler cette opération.</translation>
     </message>
     <message>
         <source>About GG Studio</source>
@@ -909,7 +913,39 @@
     </message>
     <message>
         <source>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 program that runs them (Structured Text, PLCopen XML).&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Un éditeur pour la méthode GEMMA-GRAFCET : choisissez les modes de marche et d&apos;arrêt d&apos;une machine sur le gabarit GEMMA, écrivez les réceptivités de leurs transitions et générez le programme IEC 61131-3 qui les exécute (texte structuré (ST), PLCopen XML).&lt;/p&gt;</translation>
+        <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Un éditeur pour la méthode GEMMA-GRAFCET&#xa0;: choisissez les modes de marche et d&apos;arrêt d&apos;une machine sur le gabarit GEMMA, écrivez les réceptivités de leurs transitions et générez le programme IEC 61131-3 qui les exécute (texte structuré (ST), PLCopen XML).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Simulate</source>
+        <translation>&amp;Simuler</translation>
+    </message>
+    <message>
+        <source>Run the model scan by scan; editing is locked while the simulation is on</source>
+        <translation>Exécuter le modèle cycle par cycle&#xa0;; la modification est verrouillée pendant la simulation</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Exécuter</translation>
+    </message>
+    <message>
+        <source>Run scans at the speed set in the Simulation dock, or pause them</source>
+        <translation>Exécuter les cycles à la vitesse choisie dans le panneau Simulation, ou les mettre en pause</translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation>&amp;Un cycle</translation>
+    </message>
+    <message>
+        <source>R&amp;eset Simulation</source>
+        <translation>&amp;Réinitialiser la simulation</translation>
+    </message>
+    <message>
+        <source>Simulation: editing locked</source>
+        <translation>Simulation&#xa0;: modification verrouillée</translation>
     </message>
 </context>
 <context>
@@ -917,7 +953,7 @@
     <message>
         <source>%1: %2</source>
         <extracomment>%1 is the edit (&quot;Rename variable Stop to Halt&quot;), %2 why the model refused it</extracomment>
-        <translation>%1 : %2</translation>
+        <translation>%1&#xa0;: %2</translation>
     </message>
 </context>
 <context>
@@ -948,15 +984,15 @@
     </message>
     <message>
         <source>&amp;Name:</source>
-        <translation>&amp;Nom :</translation>
+        <translation>&amp;Nom&#xa0;:</translation>
     </message>
     <message>
         <source>PLC &amp;cycle time:</source>
-        <translation>Temps de &amp;cycle de l&apos;automate :</translation>
+        <translation>Temps de &amp;cycle de l&apos;automate&#xa0;:</translation>
     </message>
     <message>
         <source>&amp;Dialect:</source>
-        <translation>&amp;Dialecte :</translation>
+        <translation>&amp;Dialecte&#xa0;:</translation>
     </message>
     <message>
         <source>Change model settings</source>
@@ -1072,6 +1108,252 @@
     </message>
 </context>
 <context>
+    <name>editor::SimulationDock</name>
+    <message>
+        <source>fires in the next scan</source>
+        <translation>franchie au prochain cycle</translation>
+    </message>
+    <message>
+        <source>condition FALSE</source>
+        <translation>réceptivité FALSE</translation>
+    </message>
+    <message>
+        <source>waits for Complete</source>
+        <translation>attend Complete</translation>
+    </message>
+    <message>
+        <source>preempted by %1</source>
+        <translation>devancée par %1</translation>
+    </message>
+    <message>
+        <source>condition unusable (always FALSE)</source>
+        <translation>réceptivité inutilisable (toujours FALSE)</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulation</translation>
+    </message>
+    <message>
+        <source>The simulation runs the model scan by scan, as the generated program runs on the PLC: play the inputs, watch the active step and see why each transition fires or not. Editing is locked while it runs.</source>
+        <translation>La simulation exécute le modèle cycle par cycle, comme le programme généré s&apos;exécute sur l&apos;automate&#xa0;: agissez sur les entrées, suivez l&apos;étape active et voyez pourquoi chaque transition est franchie ou non. La modification est verrouillée pendant la simulation.</translation>
+    </message>
+    <message>
+        <source>Start Simulation</source>
+        <translation>Démarrer la simulation</translation>
+    </message>
+    <message>
+        <source>Explanation</source>
+        <translation>Explication</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Trace</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Scénario</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Exécuter</translation>
+    </message>
+    <message>
+        <source>Run scans at the chosen speed; press again to pause</source>
+        <translation>Exécuter les cycles à la vitesse choisie&#xa0;; appuyez de nouveau pour mettre en pause</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Cycle</translation>
+    </message>
+    <message>
+        <source>Run a single scan</source>
+        <translation>Exécuter un seul cycle</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Réinitialiser</translation>
+    </message>
+    <message>
+        <source>Back to the initial step, the inputs to their defaults; clears the trace</source>
+        <translation>Retour à l&apos;étape initiale, entrées à leur valeur initiale&#xa0;; efface la trace</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Terminer</translation>
+    </message>
+    <message>
+        <source>End the simulation and unlock editing</source>
+        <translation>Terminer la simulation et déverrouiller la modification</translation>
+    </message>
+    <message>
+        <source>&amp;Speed:</source>
+        <translation>&amp;Vitesse&#xa0;:</translation>
+    </message>
+    <message>
+        <source> scans/s</source>
+        <translation> cycles/s</translation>
+    </message>
+    <message>
+        <source>Scans per second (the model&apos;s cycle time only sets the simulated time)</source>
+        <translation>Cycles par seconde (le temps de cycle du modèle ne fixe que le temps simulé)</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Next scan</source>
+        <translation>Prochain cycle</translation>
+    </message>
+    <message>
+        <source>&amp;Record as Scenario…</source>
+        <translation>&amp;Enregistrer comme scénario…</translation>
+    </message>
+    <message>
+        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and an expectation for every transition that fired</source>
+        <translation>Enregistrer cette session depuis la dernière réinitialisation dans un fichier de scénario&#xa0;: les entrées de chaque cycle et une attente pour chaque transition franchie</translation>
+    </message>
+    <message>
+        <source>Re&amp;play Scenario…</source>
+        <translation>&amp;Rejouer un scénario…</translation>
+    </message>
+    <message>
+        <source>Run a scenario file from the initial step and check its expectations</source>
+        <translation>Exécuter un fichier de scénario depuis l&apos;étape initiale et vérifier ses attentes</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Entrées</translation>
+    </message>
+    <message>
+        <source>The model declares no variables.</source>
+        <translation>Le modèle ne déclare aucune variable.</translation>
+    </message>
+    <message>
+        <source>Complete of nested steps</source>
+        <translation>Complete des étapes à comportement imbriqué</translation>
+    </message>
+    <message>
+        <source>Automatic: the skeleton function block completes at once. Manual: you play the nested behaviour and set Complete yourself.</source>
+        <translation>Automatique&#xa0;: le bloc fonctionnel squelette se termine aussitôt. Manuel&#xa0;: vous jouez le comportement imbriqué et fixez Complete vous-même.</translation>
+    </message>
+    <message>
+        <source>Switch %1 between TRUE and FALSE</source>
+        <translation>Basculer %1 entre TRUE et FALSE</translation>
+    </message>
+    <message>
+        <source>Press</source>
+        <translation>Appuyer</translation>
+    </message>
+    <message>
+        <source>TRUE while held down, like a push button (for at least one scan)</source>
+        <translation>TRUE tant qu&apos;il est enfoncé, comme un bouton-poussoir (au moins un cycle)</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatique</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manuel</translation>
+    </message>
+    <message>
+        <source>How %1&apos;s function block sets Complete</source>
+        <translation>Comment le bloc fonctionnel de %1 fixe Complete</translation>
+    </message>
+    <message>
+        <source>Complete</source>
+        <translation>Complete</translation>
+    </message>
+    <message>
+        <source>The value the nested behaviour gives Complete (manual mode)</source>
+        <translation>La valeur que le comportement imbriqué donne à Complete (mode manuel)</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Scan %1 · %2 s</source>
+        <translation>Cycle %1 · %2 s</translation>
+    </message>
+    <message>
+        <source>%1.Complete = %2 (after the last call of its function block)</source>
+        <translation>%1.Complete = %2 (après le dernier appel de son bloc fonctionnel)</translation>
+    </message>
+    <message>
+        <source>No visible step is active (State = %1).</source>
+        <translation>Aucune étape visible n&apos;est active (State = %1).</translation>
+    </message>
+    <message>
+        <source>Active step: &lt;b&gt;%1&lt;/b&gt; %2 · Entry = %3</source>
+        <translation>Étape active&#xa0;: &lt;b&gt;%1&lt;/b&gt; %2 · Entry = %3</translation>
+    </message>
+    <message>
+        <source>%1 (family)</source>
+        <translation>%1 (famille)</translation>
+    </message>
+    <message>
+        <source>The active step has no transition to evaluate.</source>
+        <translation>L&apos;étape active n&apos;a aucune transition à évaluer.</translation>
+    </message>
+    <message>
+        <source>Record this session as a scenario file, or replay one.</source>
+        <translation>Enregistrez cette session comme fichier de scénario, ou rejouez-en un.</translation>
+    </message>
+    <message>
+        <source>Replaying %1: %2 scans.</source>
+        <translation>Relecture de %1&#xa0;: %2 cycles.</translation>
+    </message>
+    <message>
+        <source>%1: every expectation met (%2).</source>
+        <translation>%1&#xa0;: toutes les attentes sont satisfaites (%2).</translation>
+    </message>
+    <message>
+        <source>%1: %2 of %3 expectations failed.</source>
+        <translation>%1&#xa0;: %2 attentes sur %3 non satisfaites.</translation>
+    </message>
+    <message>
+        <source>Line %1: %2</source>
+        <translation>Ligne %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>session</source>
+        <translation>session</translation>
+    </message>
+    <message>
+        <source>Record as Scenario</source>
+        <translation>Enregistrer comme scénario</translation>
+    </message>
+    <message>
+        <source>Simulation scenarios (*.scenario *.txt);;All files (*)</source>
+        <translation>Scénarios de simulation (*.scenario *.txt);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>Impossible d&apos;écrire %1.</translation>
+    </message>
+    <message>
+        <source>Recorded %1 scans to %2.</source>
+        <translation>%1 cycles enregistrés dans %2.</translation>
+    </message>
+    <message>
+        <source>Replay Scenario</source>
+        <translation>Rejouer un scénario</translation>
+    </message>
+    <message>
+        <source>Could not replay %1.</source>
+        <translation>Impossible de rejouer %1.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::SimulationSession</name>
+    <message>
+        <source>(%1 more)</source>
+        <translation>(%1 de plus)</translation>
+    </message>
+</context>
+<context>
     <name>editor::StPreviewDock</name>
     <message>
         <source>Structured Text</source>
@@ -1079,7 +1361,7 @@
     </message>
     <message>
         <source>&amp;Dialect:</source>
-        <translation>&amp;Dialecte :</translation>
+        <translation>&amp;Dialecte&#xa0;:</translation>
     </message>
     <message>
         <source>IEC 61131-3</source>
@@ -1091,23 +1373,23 @@
     </message>
     <message>
         <source>Beremiz, OpenPLC, TwinCAT, matiec: globals in the configuration</source>
-        <translation>Beremiz, OpenPLC, TwinCAT, matiec : variables globales dans la configuration</translation>
+        <translation>Beremiz, OpenPLC, TwinCAT, matiec&#xa0;: variables globales dans la configuration</translation>
     </message>
     <message>
         <source>CODESYS V3.5: globals in the list GVL, read as GVL.Name</source>
-        <translation>CODESYS V3.5 : variables globales dans la liste GVL, lues sous la forme GVL.Nom</translation>
+        <translation>CODESYS V3.5&#xa0;: variables globales dans la liste GVL, lues sous la forme GVL.Nom</translation>
     </message>
     <message>
         <source>The flavour of the generated code; saved with the model</source>
-        <translation>La variante du code généré ; enregistrée avec le modèle</translation>
+        <translation>La variante du code généré&#xa0;; enregistrée avec le modèle</translation>
     </message>
     <message>
         <source>%1 is hidden: it generates no code.</source>
-        <translation>%1 est masquée : elle ne génère aucun code.</translation>
+        <translation>%1 est masquée&#xa0;: elle ne génère aucun code.</translation>
     </message>
     <message>
         <source>This transition is not effective: it generates no code.</source>
-        <translation>Cette transition n&apos;est pas effective : elle ne génère aucun code.</translation>
+        <translation>Cette transition n&apos;est pas effective&#xa0;: elle ne génère aucun code.</translation>
     </message>
 </context>
 <context>
@@ -1124,13 +1406,13 @@
         <source>Simple step: no nested behaviour.
 Macro-step: its transitions wait until the nested behaviour is complete.
 Enclosing step: its transitions fire whatever the nested behaviour is doing.</source>
-        <translation>Étape simple : aucun comportement imbriqué.
-Macro-étape : ses transitions attendent que le comportement imbriqué soit terminé.
-Étape encapsulante : ses transitions sont franchies quel que soit l&apos;état du comportement imbriqué.</translation>
+        <translation>Étape simple&#xa0;: aucun comportement imbriqué.
+Macro-étape&#xa0;: ses transitions attendent que le comportement imbriqué soit terminé.
+Étape encapsulante&#xa0;: ses transitions sont franchies quel que soit l&apos;état du comportement imbriqué.</translation>
     </message>
     <message>
         <source>&amp;Type:</source>
-        <translation>&amp;Type :</translation>
+        <translation>&amp;Type&#xa0;:</translation>
     </message>
     <message>
         <source>&amp;Initial</source>
@@ -1142,7 +1424,7 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     </message>
     <message>
         <source>A hidden step is not part of this machine: it generates no code, and its transitions are not effective.</source>
-        <translation>Une étape masquée ne fait pas partie de cette machine : elle ne génère aucun code et ses transitions ne sont pas effectives.</translation>
+        <translation>Une étape masquée ne fait pas partie de cette machine&#xa0;: elle ne génère aucun code et ses transitions ne sont pas effectives.</translation>
     </message>
     <message>
         <source>What this state does on this machine</source>
@@ -1150,7 +1432,7 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     </message>
     <message>
         <source>&amp;Comment:</source>
-        <translation>&amp;Commentaire :</translation>
+        <translation>&amp;Commentaire&#xa0;:</translation>
     </message>
     <message>
         <source>Incoming transitions</source>
@@ -1178,7 +1460,7 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     </message>
     <message>
         <source>%1 is the initial step. There is always exactly one initial step: to change it, make another step initial.</source>
-        <translation>%1 est l&apos;étape initiale. Il y a toujours exactement une étape initiale : pour la changer, rendez une autre étape initiale.</translation>
+        <translation>%1 est l&apos;étape initiale. Il y a toujours exactement une étape initiale&#xa0;: pour la changer, rendez une autre étape initiale.</translation>
     </message>
     <message>
         <source>Make %1 the initial step (the PLC starts in it). The current initial step is %2.</source>
@@ -1196,12 +1478,12 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     <message>
         <source>F: → %1</source>
         <extracomment>the family transition in the outgoing list of an F state</extracomment>
-        <translation>F : → %1</translation>
+        <translation>F&#xa0;: → %1</translation>
     </message>
     <message>
         <source>%1: → %2</source>
         <extracomment>an outgoing transition: priority, arrow, target (&quot;1: → F4&quot;); – when it has none</extracomment>
-        <translation>%1 : → %2</translation>
+        <translation>%1&#xa0;: → %2</translation>
     </message>
     <message>
         <source>–</source>
@@ -1209,7 +1491,7 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     </message>
     <message>
         <source>Family transition: evaluated before the own transitions of every visible F state.</source>
-        <translation>Transition de famille : évaluée avant les transitions propres de chaque état F visible.</translation>
+        <translation>Transition de famille&#xa0;: évaluée avant les transitions propres de chaque état F visible.</translation>
     </message>
     <message>
         <source>Negated</source>
@@ -1217,11 +1499,11 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     </message>
     <message>
         <source>Condition: %1</source>
-        <translation>Réceptivité : %1</translation>
+        <translation>Réceptivité&#xa0;: %1</translation>
     </message>
     <message>
         <source>Not effective (%1): generates no code.</source>
-        <translation>Non effective (%1) : ne génère aucun code.</translation>
+        <translation>Non effective (%1)&#xa0;: ne génère aucun code.</translation>
     </message>
 </context>
 <context>
@@ -1248,6 +1530,33 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     </message>
 </context>
 <context>
+    <name>editor::TraceTableModel</name>
+    <message>
+        <source>Scan</source>
+        <translation>Cycle</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Étape</translation>
+    </message>
+    <message>
+        <source>Fired</source>
+        <translation>Franchie</translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation>Entry</translation>
+    </message>
+    <message>
+        <source>Tokens TRUE</source>
+        <translation>Mémoires TRUE</translation>
+    </message>
+    <message>
+        <source>Changed inputs</source>
+        <translation>Entrées modifiées</translation>
+    </message>
+</context>
+<context>
     <name>editor::TransitionDock</name>
     <message>
         <source>Transition</source>
@@ -1263,7 +1572,7 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     </message>
     <message>
         <source>C&amp;ondition:</source>
-        <translation>&amp;Réceptivité :</translation>
+        <translation>&amp;Réceptivité&#xa0;:</translation>
     </message>
     <message>
         <source>e.g. Start AND NOT Stop</source>
@@ -1272,12 +1581,12 @@ Macro-étape : ses transitions attendent que le comportement imbriqué soit ter
     <message>
         <source>Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparisons and arithmetic.
 Ctrl+Space completes a variable name.</source>
-        <translation>Texte structuré (ST) : variables déclarées, nombres, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparaisons et arithmétique.
+        <translation>Texte structuré (ST)&#xa0;: variables déclarées, nombres, TRUE, FALSE, NOT, AND (&amp;), XOR, OR, comparaisons et arithmétique.
 Ctrl+Espace complète un nom de variable.</translation>
     </message>
     <message>
         <source>&amp;Priority:</source>
-        <translation>&amp;Priorité :</translation>
+        <translation>&amp;Priorité&#xa0;:</translation>
     </message>
     <message>
         <source>&amp;Negated</source>
@@ -1287,8 +1596,8 @@ Ctrl+Espace complète un nom de variable.</translation>
         <source>Negation flips when this transition waits for the nested behaviour of its source:
 a negated transition out of a macro-step ignores Complete;
 a negated transition out of an enclosing step waits for Complete.</source>
-        <translation>La négation inverse l&apos;attente de cette transition sur le comportement imbriqué de sa source :
-une transition niée issue d&apos;une macro-étape ignore Complete ;
+        <translation>La négation inverse l&apos;attente de cette transition sur le comportement imbriqué de sa source&#xa0;:
+une transition niée issue d&apos;une macro-étape ignore Complete&#xa0;;
 une transition niée issue d&apos;une étape encapsulante attend Complete.</translation>
     </message>
     <message>
@@ -1297,7 +1606,7 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>A hidden transition is not part of this machine: it generates no code.</source>
-        <translation>Une transition masquée ne fait pas partie de cette machine : elle ne génère aucun code.</translation>
+        <translation>Une transition masquée ne fait pas partie de cette machine&#xa0;: elle ne génère aucun code.</translation>
     </message>
     <message>
         <source>Tokens</source>
@@ -1314,7 +1623,7 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Not effective (%1): generates no code.</source>
-        <translation>Non effective (%1) : ne génère aucun code.</translation>
+        <translation>Non effective (%1)&#xa0;: ne génère aucun code.</translation>
     </message>
     <message>
         <source>First</source>
@@ -1330,7 +1639,7 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Only effective transitions have a priority: show this transition and both its steps first.</source>
-        <translation>Seules les transitions effectives ont une priorité : affichez d&apos;abord cette transition et ses deux étapes.</translation>
+        <translation>Seules les transitions effectives ont une priorité&#xa0;: affichez d&apos;abord cette transition et ses deux étapes.</translation>
     </message>
     <message>
         <source> of %1</source>
@@ -1339,15 +1648,15 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>1 is evaluated first among the effective transitions out of %1; the others move to make room.</source>
-        <translation>1 est évaluée en premier parmi les transitions effectives issues de %1 ; les autres se décalent pour faire de la place.</translation>
+        <translation>1 est évaluée en premier parmi les transitions effectives issues de %1&#xa0;; les autres se décalent pour faire de la place.</translation>
     </message>
     <message>
         <source>Negation has no effect here: family transitions never wait for Complete.</source>
-        <translation>La négation n&apos;a aucun effet ici : les transitions de famille n&apos;attendent jamais Complete.</translation>
+        <translation>La négation n&apos;a aucun effet ici&#xa0;: les transitions de famille n&apos;attendent jamais Complete.</translation>
     </message>
     <message>
         <source>Negation has no effect here: %1 is a simple step, and only transitions out of macro-steps and enclosing steps wait for Complete.</source>
-        <translation>La négation n&apos;a aucun effet ici : %1 est une étape simple, et seules les transitions issues de macro-étapes et d&apos;étapes encapsulantes attendent Complete.</translation>
+        <translation>La négation n&apos;a aucun effet ici&#xa0;: %1 est une étape simple, et seules les transitions issues de macro-étapes et d&apos;étapes encapsulantes attendent Complete.</translation>
     </message>
     <message>
         <source>Fires without waiting for the nested behaviour of macro-step %1 to complete.</source>
@@ -1367,7 +1676,7 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Token on %1 (compared: no polarity)</source>
-        <translation>Mémoire de %1 (comparée : sans polarité)</translation>
+        <translation>Mémoire de %1 (comparée&#xa0;: sans polarité)</translation>
     </message>
     <message>
         <source>Token on %1 (both NO and NC)</source>
@@ -1383,15 +1692,15 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>A token replaces a literal %1 or NOT %1: rewrite the condition so that %1 has one polarity.</source>
-        <translation>Une mémoire remplace un littéral %1 ou NOT %1 : réécrivez la réceptivité pour que %1 n&apos;ait qu&apos;une polarité.</translation>
+        <translation>Une mémoire remplace un littéral %1 ou NOT %1&#xa0;: réécrivez la réceptivité pour que %1 n&apos;ait qu&apos;une polarité.</translation>
     </message>
     <message>
         <source>Normally closed: remembers that %1 was FALSE while the nested behaviour of %2 was not complete.</source>
-        <translation>Normalement fermée : retient que %1 a été FALSE pendant que le comportement imbriqué de %2 n&apos;était pas terminé.</translation>
+        <translation>Normalement fermée&#xa0;: retient que %1 a été FALSE pendant que le comportement imbriqué de %2 n&apos;était pas terminé.</translation>
     </message>
     <message>
         <source>Normally open: remembers that %1 was TRUE while the nested behaviour of %2 was not complete.</source>
-        <translation>Normalement ouverte : retient que %1 a été TRUE pendant que le comportement imbriqué de %2 n&apos;était pas terminé.</translation>
+        <translation>Normalement ouverte&#xa0;: retient que %1 a été TRUE pendant que le comportement imbriqué de %2 n&apos;était pas terminé.</translation>
     </message>
     <message>
         <source>Generated as %1_%2_%3_MEM.</source>
@@ -1407,11 +1716,11 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Family transitions never wait for Complete, so tokens do not apply to them.</source>
-        <translation>Les transitions de famille n&apos;attendent jamais Complete : les mémoires ne s&apos;y appliquent donc pas.</translation>
+        <translation>Les transitions de famille n&apos;attendent jamais Complete&#xa0;: les mémoires ne s&apos;y appliquent donc pas.</translation>
     </message>
     <message>
         <source>Tokens apply to transitions out of macro-steps and enclosing steps; %1 is a simple step.</source>
-        <translation>Les mémoires s&apos;appliquent aux transitions issues de macro-étapes et d&apos;étapes encapsulantes ; %1 est une étape simple.</translation>
+        <translation>Les mémoires s&apos;appliquent aux transitions issues de macro-étapes et d&apos;étapes encapsulantes&#xa0;; %1 est une étape simple.</translation>
     </message>
     <message>
         <source>Correct the condition to choose its tokens.</source>
@@ -1430,7 +1739,7 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <name>editor::TransitionItem</name>
     <message>
         <source>Family transition: applies to every F state</source>
-        <translation>Transition de famille : s&apos;applique à chaque état F</translation>
+        <translation>Transition de famille&#xa0;: s&apos;applique à chaque état F</translation>
     </message>
     <message>
         <source>Priority %1</source>
@@ -1446,7 +1755,7 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Condition:</source>
-        <translation>Réceptivité :</translation>
+        <translation>Réceptivité&#xa0;:</translation>
     </message>
     <message>
         <source>empty</source>
@@ -1454,7 +1763,7 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Tokens: %1</source>
-        <translation>Mémoires : %1</translation>
+        <translation>Mémoires&#xa0;: %1</translation>
     </message>
 </context>
 <context>
@@ -1548,18 +1857,18 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Paste rows from a spreadsheet: name, type, default and comment</source>
-        <translation>Coller des lignes d&apos;un tableur : nom, type, valeur initiale et commentaire</translation>
+        <translation>Coller des lignes d&apos;un tableur&#xa0;: nom, type, valeur initiale et commentaire</translation>
     </message>
 </context>
 <context>
     <name>editor::VariablesTableModel</name>
     <message>
         <source>No default: the PLC starts with %1.</source>
-        <translation>Pas de valeur initiale : l&apos;automate démarre avec %1.</translation>
+        <translation>Pas de valeur initiale&#xa0;: l&apos;automate démarre avec %1.</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a supported type: use one of %2.</source>
-        <translation>&apos;%1&apos; n&apos;est pas un type pris en charge : utilisez l&apos;un de ceux-ci : %2.</translation>
+        <translation>&apos;%1&apos; n&apos;est pas un type pris en charge&#xa0;: utilisez l&apos;un de ceux-ci&#xa0;: %2.</translation>
     </message>
     <message>
         <source>Name</source>
@@ -1587,7 +1896,7 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Initial value, a literal of the type; empty for the type&apos;s implicit default</source>
-        <translation>Valeur initiale, un littéral du type ; vide pour la valeur par défaut implicite du type</translation>
+        <translation>Valeur initiale, un littéral du type&#xa0;; vide pour la valeur par défaut implicite du type</translation>
     </message>
     <message>
         <source>Free text, written into the generated declarations</source>
@@ -1595,26 +1904,26 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     </message>
     <message>
         <source>Line %1: the name is empty.</source>
-        <translation>Ligne %1 : le nom est vide.</translation>
+        <translation>Ligne %1&#xa0;: le nom est vide.</translation>
     </message>
     <message>
         <source>Line %1: &apos;%2&apos; is not a supported type: use one of %3.</source>
-        <translation>Ligne %1 : &apos;%2&apos; n&apos;est pas un type pris en charge : utilisez l&apos;un de ceux-ci : %3.</translation>
+        <translation>Ligne %1&#xa0;: &apos;%2&apos; n&apos;est pas un type pris en charge&#xa0;: utilisez l&apos;un de ceux-ci&#xa0;: %3.</translation>
     </message>
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
-        <translation>Il n&apos;y a aucune variable à coller : copiez des lignes de nom, type, valeur initiale et commentaire, séparés par des tabulations.</translation>
+        <translation>Il n&apos;y a aucune variable à coller&#xa0;: copiez des lignes de nom, type, valeur initiale et commentaire, séparés par des tabulations.</translation>
     </message>
 </context>
 <context>
     <name>editor::ZoomIndicator</name>
     <message>
         <source>Zoom: %1 %</source>
-        <translation>Zoom : %1 %</translation>
+        <translation>Zoom&#xa0;: %1 %</translation>
     </message>
     <message>
         <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
-        <translation>Ctrl+molette zoome autour de la souris ; Ctrl+0 ajuste le diagramme à la fenêtre</translation>
+        <translation>Ctrl+molette zoome autour de la souris&#xa0;; Ctrl+0 ajuste le diagramme à la fenêtre</translation>
     </message>
 </context>
 <context>

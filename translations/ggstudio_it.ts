@@ -508,6 +508,10 @@
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
+    <message>
+        <source>Stop the simulation to edit the model</source>
+        <translation>Termina la simulazione per modificare il modello</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportActions</name>
@@ -911,6 +915,38 @@
         <source>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;An editor for the GEMMA-GRAFCET method: choose the operating modes of a machine on the GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 program that runs them (Structured Text, PLCopen XML).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;GG Studio %1&lt;/h3&gt;&lt;p&gt;Un editor per il metodo GEMMA-GRAFCET: scegli i modi di marcia e di arresto di una macchina sul template GEMMA, scrivi le condizioni delle loro transizioni e genera il programma IEC 61131-3 che li esegue (Testo strutturato, PLCopen XML).&lt;/p&gt;</translation>
     </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulazione</translation>
+    </message>
+    <message>
+        <source>&amp;Simulate</source>
+        <translation>&amp;Simula</translation>
+    </message>
+    <message>
+        <source>Run the model scan by scan; editing is locked while the simulation is on</source>
+        <translation>Esegue il modello ciclo per ciclo; la modifica è bloccata durante la simulazione</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Esegui</translation>
+    </message>
+    <message>
+        <source>Run scans at the speed set in the Simulation dock, or pause them</source>
+        <translation>Esegue i cicli alla velocità impostata nel pannello Simulazione, o li mette in pausa</translation>
+    </message>
+    <message>
+        <source>Single S&amp;can</source>
+        <translation>&amp;Un ciclo</translation>
+    </message>
+    <message>
+        <source>R&amp;eset Simulation</source>
+        <translation>&amp;Reimposta la simulazione</translation>
+    </message>
+    <message>
+        <source>Simulation: editing locked</source>
+        <translation>Simulazione: modifica bloccata</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -1069,6 +1105,252 @@
     <message>
         <source>&amp;Clear Menu</source>
         <translation>&amp;Svuota il menu</translation>
+    </message>
+</context>
+<context>
+    <name>editor::SimulationDock</name>
+    <message>
+        <source>fires in the next scan</source>
+        <translation>scatta al prossimo ciclo</translation>
+    </message>
+    <message>
+        <source>condition FALSE</source>
+        <translation>condizione FALSE</translation>
+    </message>
+    <message>
+        <source>waits for Complete</source>
+        <translation>attende Complete</translation>
+    </message>
+    <message>
+        <source>preempted by %1</source>
+        <translation>preceduta da %1</translation>
+    </message>
+    <message>
+        <source>condition unusable (always FALSE)</source>
+        <translation>condizione inutilizzabile (sempre FALSE)</translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulazione</translation>
+    </message>
+    <message>
+        <source>The simulation runs the model scan by scan, as the generated program runs on the PLC: play the inputs, watch the active step and see why each transition fires or not. Editing is locked while it runs.</source>
+        <translation>La simulazione esegue il modello ciclo per ciclo, come il programma generato viene eseguito sul PLC: agisci sugli ingressi, osserva la tappa attiva e scopri perché ogni transizione scatta o no. La modifica è bloccata durante la simulazione.</translation>
+    </message>
+    <message>
+        <source>Start Simulation</source>
+        <translation>Avvia la simulazione</translation>
+    </message>
+    <message>
+        <source>Explanation</source>
+        <translation>Spiegazione</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Traccia</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Scenario</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Esegui</translation>
+    </message>
+    <message>
+        <source>Run scans at the chosen speed; press again to pause</source>
+        <translation>Esegue i cicli alla velocità scelta; premi di nuovo per mettere in pausa</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>Run a single scan</source>
+        <translation>Esegue un solo ciclo</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reimposta</translation>
+    </message>
+    <message>
+        <source>Back to the initial step, the inputs to their defaults; clears the trace</source>
+        <translation>Torna alla tappa iniziale, gli ingressi ai valori iniziali; cancella la traccia</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Termina</translation>
+    </message>
+    <message>
+        <source>End the simulation and unlock editing</source>
+        <translation>Termina la simulazione e sblocca la modifica</translation>
+    </message>
+    <message>
+        <source>&amp;Speed:</source>
+        <translation>&amp;Velocità:</translation>
+    </message>
+    <message>
+        <source> scans/s</source>
+        <translation> cicli/s</translation>
+    </message>
+    <message>
+        <source>Scans per second (the model&apos;s cycle time only sets the simulated time)</source>
+        <translation>Cicli al secondo (il tempo di ciclo del modello determina solo il tempo simulato)</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transizione</translation>
+    </message>
+    <message>
+        <source>Next scan</source>
+        <translation>Prossimo ciclo</translation>
+    </message>
+    <message>
+        <source>&amp;Record as Scenario…</source>
+        <translation>&amp;Registra come scenario…</translation>
+    </message>
+    <message>
+        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and an expectation for every transition that fired</source>
+        <translation>Salva questa sessione dall&apos;ultimo ripristino come file di scenario: gli ingressi di ogni ciclo e un&apos;attesa per ogni transizione scattata</translation>
+    </message>
+    <message>
+        <source>Re&amp;play Scenario…</source>
+        <translation>Ri&amp;produci uno scenario…</translation>
+    </message>
+    <message>
+        <source>Run a scenario file from the initial step and check its expectations</source>
+        <translation>Esegue un file di scenario dalla tappa iniziale e ne verifica le attese</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Ingressi</translation>
+    </message>
+    <message>
+        <source>The model declares no variables.</source>
+        <translation>Il modello non dichiara variabili.</translation>
+    </message>
+    <message>
+        <source>Complete of nested steps</source>
+        <translation>Complete delle tappe con comportamento interno</translation>
+    </message>
+    <message>
+        <source>Automatic: the skeleton function block completes at once. Manual: you play the nested behaviour and set Complete yourself.</source>
+        <translation>Automatico: il blocco funzione scheletro si completa subito. Manuale: simuli tu il comportamento interno e imposti Complete.</translation>
+    </message>
+    <message>
+        <source>Switch %1 between TRUE and FALSE</source>
+        <translation>Commuta %1 tra TRUE e FALSE</translation>
+    </message>
+    <message>
+        <source>Press</source>
+        <translation>Premi</translation>
+    </message>
+    <message>
+        <source>TRUE while held down, like a push button (for at least one scan)</source>
+        <translation>TRUE finché è premuto, come un pulsante (almeno per un ciclo)</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatico</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manuale</translation>
+    </message>
+    <message>
+        <source>How %1&apos;s function block sets Complete</source>
+        <translation>Come il blocco funzione di %1 imposta Complete</translation>
+    </message>
+    <message>
+        <source>Complete</source>
+        <translation>Complete</translation>
+    </message>
+    <message>
+        <source>The value the nested behaviour gives Complete (manual mode)</source>
+        <translation>Il valore che il comportamento interno dà a Complete (modalità manuale)</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Scan %1 · %2 s</source>
+        <translation>Ciclo %1 · %2 s</translation>
+    </message>
+    <message>
+        <source>%1.Complete = %2 (after the last call of its function block)</source>
+        <translation>%1.Complete = %2 (dopo l&apos;ultima chiamata del suo blocco funzione)</translation>
+    </message>
+    <message>
+        <source>No visible step is active (State = %1).</source>
+        <translation>Nessuna tappa visibile è attiva (State = %1).</translation>
+    </message>
+    <message>
+        <source>Active step: &lt;b&gt;%1&lt;/b&gt; %2 · Entry = %3</source>
+        <translation>Tappa attiva: &lt;b&gt;%1&lt;/b&gt; %2 · Entry = %3</translation>
+    </message>
+    <message>
+        <source>%1 (family)</source>
+        <translation>%1 (famiglia)</translation>
+    </message>
+    <message>
+        <source>The active step has no transition to evaluate.</source>
+        <translation>La tappa attiva non ha transizioni da valutare.</translation>
+    </message>
+    <message>
+        <source>Record this session as a scenario file, or replay one.</source>
+        <translation>Registra questa sessione come file di scenario, o riproducine uno.</translation>
+    </message>
+    <message>
+        <source>Replaying %1: %2 scans.</source>
+        <translation>Riproduzione di %1: %2 cicli.</translation>
+    </message>
+    <message>
+        <source>%1: every expectation met (%2).</source>
+        <translation>%1: tutte le attese soddisfatte (%2).</translation>
+    </message>
+    <message>
+        <source>%1: %2 of %3 expectations failed.</source>
+        <translation>%1: %2 attese su %3 non soddisfatte.</translation>
+    </message>
+    <message>
+        <source>Line %1: %2</source>
+        <translation>Riga %1: %2</translation>
+    </message>
+    <message>
+        <source>session</source>
+        <translation>sessione</translation>
+    </message>
+    <message>
+        <source>Record as Scenario</source>
+        <translation>Registra come scenario</translation>
+    </message>
+    <message>
+        <source>Simulation scenarios (*.scenario *.txt);;All files (*)</source>
+        <translation>Scenari di simulazione (*.scenario *.txt);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <source>Could not write %1.</source>
+        <translation>Impossibile scrivere %1.</translation>
+    </message>
+    <message>
+        <source>Recorded %1 scans to %2.</source>
+        <translation>%1 cicli registrati in %2.</translation>
+    </message>
+    <message>
+        <source>Replay Scenario</source>
+        <translation>Riproduci uno scenario</translation>
+    </message>
+    <message>
+        <source>Could not replay %1.</source>
+        <translation>Impossibile riprodurre %1.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::SimulationSession</name>
+    <message>
+        <source>(%1 more)</source>
+        <translation>(altri %1)</translation>
     </message>
 </context>
 <context>
@@ -1245,6 +1527,33 @@ Tappa incapsulante: le sue transizioni scattano qualunque cosa stia facendo il c
     <message>
         <source>%1, hidden</source>
         <translation>%1, nascosta</translation>
+    </message>
+</context>
+<context>
+    <name>editor::TraceTableModel</name>
+    <message>
+        <source>Scan</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Tappa</translation>
+    </message>
+    <message>
+        <source>Fired</source>
+        <translation>Scattata</translation>
+    </message>
+    <message>
+        <source>Entry</source>
+        <translation>Entry</translation>
+    </message>
+    <message>
+        <source>Tokens TRUE</source>
+        <translation>Memorie TRUE</translation>
+    </message>
+    <message>
+        <source>Changed inputs</source>
+        <translation>Ingressi modificati</translation>
     </message>
 </context>
 <context>

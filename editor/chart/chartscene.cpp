@@ -99,6 +99,39 @@ void ChartScene::setActiveStep(const QString& id)
         item->setActive(true);
 }
 
+void ChartScene::setFiredTransition(const QString& id)
+{
+    if (m_firedTransition == id)
+        return;
+    if (TransitionItem* old = transitionItem(m_firedTransition))
+        old->setFired(false);
+    m_firedTransition = id;
+    if (TransitionItem* item = transitionItem(id))
+        item->setFired(true);
+}
+
+void ChartScene::setCompleteMark(const QString& stepId, std::optional<bool> complete)
+{
+    if (StepItem* item = stepItem(stepId))
+        item->setCompleteMark(complete);
+}
+
+void ChartScene::setTokenMarks(const QString& transitionId, const QList<bool>& tokens)
+{
+    if (TransitionItem* item = transitionItem(transitionId))
+        item->setTokenMarks(tokens);
+}
+
+void ChartScene::clearSimulationMarks()
+{
+    setActiveStep(QString());
+    setFiredTransition(QString());
+    for (StepItem* item : std::as_const(m_steps))
+        item->setCompleteMark(std::nullopt);
+    for (TransitionItem* item : std::as_const(m_transitions))
+        item->setTokenMarks({});
+}
+
 QList<QGraphicsItem*> ChartScene::tabOrder() const
 {
     QList<QGraphicsItem*> order;

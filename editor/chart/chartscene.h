@@ -7,6 +7,8 @@
 #include <QHash>
 #include <QList>
 
+#include <optional>
+
 namespace editor {
 
 class Document;
@@ -36,6 +38,15 @@ public:
     // The step drawn filled as the active state (simulation); empty for none.
     QString activeStep() const { return m_activeStep; }
     void setActiveStep(const QString& id);
+    // The transition drawn thick and green as the one that fired last; empty for none.
+    QString firedTransition() const { return m_firedTransition; }
+    void setFiredTransition(const QString& id);
+    // Complete of a nested step as a badge on it (nullopt: no badge), and
+    // the tokens of a transition as dots on its bar (empty: none).
+    void setCompleteMark(const QString& stepId, std::optional<bool> complete);
+    void setTokenMarks(const QString& transitionId, const QList<bool>& tokens);
+    // Removes every simulation mark: active step, fired transition, badges, dots.
+    void clearSimulationMarks();
 
     // Redraws texts that come from the UI language (tooltips, frame titles).
     void retranslate();
@@ -76,6 +87,7 @@ private:
     bool m_showHidden = false;
     bool m_syncingSelection = false;
     QString m_activeStep;
+    QString m_firedTransition;
 
     QList<FrameItem*> m_frames;
     QList<StepItem*> m_steps;

@@ -24,6 +24,9 @@ inline constexpr double kEnclosingMark = 8; // leg length of an enclosing step's
 inline constexpr double kBadgeRadius = 7;
 inline constexpr double kOverlineWidth = 1.4; // the overline on a negated transition's priority
 inline constexpr double kOverlineGap = 1.6;
+inline constexpr double kFiredWidth = 3.2;     // the route of the transition that fired last (simulation)
+inline constexpr double kTokenRadius = 3.6;    // a token's dot on its transition bar (simulation)
+inline constexpr double kCompleteBadgeSize = 14; // the "C" badge of a nested step (simulation)
 
 inline QColor inkColor() { return QColor(0x20, 0x24, 0x2a); }
 inline QColor stepFillColor() { return QColor(0xff, 0xff, 0xff); }
@@ -31,6 +34,11 @@ inline QColor activeFillColor() { return QColor(0xff, 0xd8, 0x4d); }
 inline QColor problemColor() { return QColor(0xd3, 0x1f, 0x1f); }
 inline QColor haloColor() { return QColor(0x25, 0x74, 0xe8, 120); }
 inline QColor labelColor() { return QColor(0x1d, 0x2f, 0x4a); }
+// Simulation marks: the transition that fired last, a TRUE token or Complete,
+// and a FALSE one.
+inline QColor firedColor() { return QColor(0x1e, 0x9e, 0x3e); }
+inline QColor trueMarkColor() { return QColor(0x1e, 0x9e, 0x3e); }
+inline QColor falseMarkColor() { return QColor(0x9a, 0xa1, 0xab); }
 
 // Soft tints after the classic GEMMA sheet: stops blue, operation green,
 // failures red-orange.

@@ -58,6 +58,14 @@ void StepItem::setActive(bool active)
     update();
 }
 
+void StepItem::setCompleteMark(std::optional<bool> complete)
+{
+    if (m_complete == complete)
+        return;
+    m_complete = complete;
+    update();
+}
+
 QString StepItem::toolTipText(const core::Step& step) const
 {
     QString kind;
@@ -81,7 +89,8 @@ QString StepItem::toolTipText(const core::Step& step) const
 
 QRectF StepItem::boundingRect() const
 {
-    const double margin = std::max(chartstyle::kHaloWidth, chartstyle::kBadgeRadius) + 1;
+    const double margin =
+        std::max({chartstyle::kHaloWidth, chartstyle::kBadgeRadius, chartstyle::kCompleteBadgeSize / 2}) + 1;
     return m_box.adjusted(-margin, -margin, margin, margin);
 }
 
@@ -107,6 +116,8 @@ void StepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, 
     paintSymbol(painter, *s);
     if (m_problem)
         paintBadge(painter);
+    if (m_complete)
+        paintCompleteBadge(painter);
 }
 
 void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
@@ -157,6 +168,18 @@ void StepItem::paintBadge(QPainter* painter) const
     painter->drawEllipse(badge);
     painter->setFont(chartstyle::badgeFont());
     painter->drawText(badge, Qt::AlignCenter, QStringLiteral("!"));
+}
+
+// On the bottom-right corner, clear of the problem badge (top right).
+void StepItem::paintCompleteBadge(QPainter* painter) const
+{
+    const double size = chartstyle::kCompleteBadgeSize;
+    const QRectF badge(m_box.right() - size / 2, m_box.bottom() - size / 2, size, size);
+    painter->setPen(QPen(Qt::white, 1));
+    painter->setBrush(*m_complete ? chartstyle::trueMarkColor() : chartstyle::falseMarkColor());
+    painter->drawRoundedRect(badge, 3, 3);
+    painter->setFont(chartstyle::badgeFont());
+    painter->drawText(badge, Qt::AlignCenter, QStringLiteral("C"));
 }
 
 } // namespace editor

@@ -5,6 +5,7 @@
 #include <QCoreApplication>
 #include <QGraphicsItem>
 
+#include <optional>
 #include <string>
 
 namespace core {
@@ -43,6 +44,12 @@ public:
     bool isActive() const { return m_active; }
     void setActive(bool active);
 
+    // The Complete output of a nested step's function block during
+    // simulation, drawn as a "C" badge (green TRUE, grey FALSE); nullopt
+    // draws none.
+    std::optional<bool> completeMark() const { return m_complete; }
+    void setCompleteMark(std::optional<bool> complete);
+
     QRectF boundingRect() const override;
     QPainterPath shape() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -52,6 +59,7 @@ private:
     QString toolTipText(const core::Step& step) const;
     void paintSymbol(QPainter* painter, const core::Step& step) const;
     void paintBadge(QPainter* painter) const;
+    void paintCompleteBadge(QPainter* painter) const;
 
     const Document& m_document;
     QString m_id;
@@ -59,6 +67,7 @@ private:
     QRectF m_box; // item coordinates: the item sits at the box's top-left corner
     bool m_problem = false;
     bool m_active = false;
+    std::optional<bool> m_complete;
 };
 
 } // namespace editor

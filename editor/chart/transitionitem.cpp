@@ -95,6 +95,22 @@ void TransitionItem::setProblemMark(bool problem)
     update();
 }
 
+void TransitionItem::setFired(bool fired)
+{
+    if (m_fired == fired)
+        return;
+    m_fired = fired;
+    update();
+}
+
+void TransitionItem::setTokenMarks(const QList<bool>& tokens)
+{
+    if (m_tokens == tokens)
+        return;
+    m_tokens = tokens;
+    update();
+}
+
 void TransitionItem::updateLabel()
 {
     const core::Model& model = m_document.model();
@@ -212,21 +228,39 @@ void TransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* op
             painter->drawRoundedRect(labelTextRect().adjusted(-2, -1, 2, 1), 3, 3);
     }
 
-    QPen pen(chartstyle::inkColor(), chartstyle::kRouteWidth, hidden ? Qt::DashLine : Qt::SolidLine,
-             Qt::FlatCap, Qt::MiterJoin);
+    const QColor ink = m_fired ? chartstyle::firedColor() : chartstyle::inkColor();
+    QPen pen(ink, m_fired ? chartstyle::kFiredWidth : chartstyle::kRouteWidth,
+             hidden ? Qt::DashLine : Qt::SolidLine, Qt::FlatCap, Qt::MiterJoin);
     painter->setPen(pen);
     painter->setBrush(Qt::NoBrush);
     painter->drawPolyline(m_line);
     pen.setStyle(Qt::SolidLine);
     painter->setPen(pen);
-    painter->setBrush(chartstyle::inkColor());
+    painter->setBrush(ink);
     painter->drawPolygon(m_arrow);
 
-    const QColor mark = m_problem ? chartstyle::problemColor() : chartstyle::inkColor();
+    const QColor mark = m_problem ? chartstyle::problemColor() : ink;
     painter->setPen(QPen(mark, chartstyle::kBarWidth, Qt::SolidLine, Qt::FlatCap));
     painter->drawLine(bar);
 
+    paintTokens(painter);
     paintLabel(painter);
+}
+
+// Evenly along the bar, which is 20 units long: a token reads as a memory
+// sitting on its transition.
+void TransitionItem::paintTokens(QPainter* painter) const
+{
+    if (m_tokens.isEmpty())
+        return;
+    const QLineF bar = barLine();
+    const double count = static_cast<double>(m_tokens.size());
+    painter->setPen(QPen(chartstyle::inkColor(), 1.2));
+    for (qsizetype i = 0; i < m_tokens.size(); ++i) {
+        const QPointF center = bar.pointAt((static_cast<double>(i) + 0.5) / count);
+        painter->setBrush(m_tokens[i] ? chartstyle::trueMarkColor() : QColor(Qt::white));
+        painter->drawEllipse(center, chartstyle::kTokenRadius, chartstyle::kTokenRadius);
+    }
 }
 
 void TransitionItem::paintLabel(QPainter* painter) const

@@ -4,6 +4,7 @@
 
 #include <QCoreApplication>
 #include <QGraphicsItem>
+#include <QList>
 #include <QPainterPath>
 #include <QPolygonF>
 
@@ -49,6 +50,14 @@ public:
     bool hasProblemMark() const { return m_problem; }
     void setProblemMark(bool problem);
 
+    // Simulation marks, set by the scene: the transition that fired last is
+    // drawn thick and green; each of its tokens is a dot on the bar, filled
+    // when TRUE (in the order of Simulator::tokenNames()).
+    bool isFired() const { return m_fired; }
+    void setFired(bool fired);
+    const QList<bool>& tokenMarks() const { return m_tokens; }
+    void setTokenMarks(const QList<bool>& tokens);
+
     QRectF boundingRect() const override;
     QPainterPath shape() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -60,6 +69,7 @@ private:
     QLineF barLine() const;
     QRectF labelTextRect() const; // the part of the label rectangle the text covers
     void paintLabel(QPainter* painter) const;
+    void paintTokens(QPainter* painter) const;
 
     const Document& m_document;
     QString m_id;
@@ -82,6 +92,8 @@ private:
     QString m_elidedCondition;
     bool m_overlined = false;
     bool m_problem = false;
+    bool m_fired = false;
+    QList<bool> m_tokens;
 };
 
 } // namespace editor

@@ -1,5 +1,6 @@
 // ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... [--show-hidden] [--language CODE]
 //                     [--export-chart FILE.svg|png|pdf] [--dialog ACTION]
+//                     [--simulate] [--input NAME=VALUE]... [--scans N] [--simulation-tab INDEX]
 //
 // Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
 // with a step or transition selected, a dock brought to the front) and
@@ -8,7 +9,8 @@
 // GGSTUDIO_SELECT environment variable; --export-chart also writes the
 // chart as File > Export Chart does. --dialog triggers the window's action
 // of that object name ("modelSettingsAction", "exportPlcOpenAction"...) and
-// saves a picture of the first dialog it opens instead of the window. Settings go to a temporary folder,
+// saves a picture of the first dialog it opens instead of the window. --simulate starts the simulation
+// mode, sets the --input values (before the first scan) and runs N scans. Settings go to a temporary folder,
 // so the picture shows the default layout whatever the user's settings.
 
 #include "editor/chart/chartscene.h"
@@ -17,12 +19,14 @@
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
+#include "editor/simulation/simulationsession.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -34,7 +38,8 @@ namespace {
 int usage()
 {
     std::fputs("usage: ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... "
-               "[--show-hidden] [--language CODE] [--export-chart FILE] [--dialog ACTION]\n",
+               "[--show-hidden] [--language CODE] [--export-chart FILE] [--dialog ACTION] "
+               "[--simulate] [--input NAME=VALUE]... [--scans N] [--simulation-tab INDEX]\n",
                stderr);
     return 2;
 }
@@ -91,6 +96,10 @@ int main(int argc, char* argv[])
     QString chartFile;
     QString dialogAction;
     bool showHidden = false;
+    bool simulate = false;
+    QStringList inputs;
+    int scans = 0;
+    int simulationTab = 0;
     const QStringList args = app.arguments().mid(1);
     for (qsizetype i = 0; i < args.size(); ++i) {
         if (args[i] == QLatin1String("--select") && i + 1 < args.size())
@@ -105,6 +114,14 @@ int main(int argc, char* argv[])
             chartFile = args[++i];
         else if (args[i] == QLatin1String("--show-hidden"))
             showHidden = true;
+        else if (args[i] == QLatin1String("--simulate"))
+            simulate = true;
+        else if (args[i] == QLatin1String("--input") && i + 1 < args.size())
+            inputs << args[++i];
+        else if (args[i] == QLatin1String("--scans") && i + 1 < args.size())
+            scans = args[++i].toInt();
+        else if (args[i] == QLatin1String("--simulation-tab") && i + 1 < args.size())
+            simulationTab = args[++i].toInt();
         else if (args[i].startsWith(QLatin1String("--")))
             return usage();
         else
@@ -143,6 +160,29 @@ int main(int argc, char* argv[])
         }
         dock->show();
         dock->raise();
+    }
+    if (simulate) {
+        window.findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+        editor::SimulationSession* session = window.simulationSession();
+        for (const QString& input : inputs) {
+            const QString name = input.section(QLatin1Char('='), 0, 0);
+            const int index = session->simulator()->variableIndex(name.toStdString());
+            const auto status = index < 0 ? core::Status::failure("", "unknown variable")
+                                           : window.simulationSession()->simulator()->variableType(index)
+                                                         == core::IecType::Bool
+                                               ? core::Status::success()
+                                               : core::Status::failure("", "not a BOOL");
+            if (!status) {
+                std::fprintf(stderr, "ggstudio_screenshot: --input %s: %s\n", qPrintable(input),
+                             status.message.c_str());
+                return 2;
+            }
+            session->setVariable(index, input.section(QLatin1Char('='), 1).compare(QLatin1String("TRUE"),
+                                                                                 Qt::CaseInsensitive) == 0);
+        }
+        session->advance(scans);
+        if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("simulationTabs")))
+            tabs->setCurrentIndex(simulationTab);
     }
     QTest::qWait(50);
     window.chartView()->zoomToFit();

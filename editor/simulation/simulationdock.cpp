@@ -1,0 +1,831 @@
+#include "editor/simulation/simulationdock.h"
+
+#include "editor/docks/elementlabels.h"
+#include "editor/document.h"
+#include "editor/simulation/simulationsession.h"
+#include "editor/simulation/tracetablemodel.h"
+#include "editor/statenames.h"
+
+#include "core/model.h"
+#include "core/simulator.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QStyle>
+#include <QTabWidget>
+#include <QTableView>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <limits>
+#include <variant>
+
+namespace editor {
+
+namespace {
+
+enum Page { OffPage, OnPage };
+enum Tab { ExplanationTab, TraceTab, ScenarioTab };
+
+// Doubles hold integers exactly up to 2^53: the spin boxes of LINT and
+// ULINT stop there, far beyond any count or setpoint a GEMMA condition reads.
+constexpr double kExactIntegerLimit = 9007199254740992.0;
+// REAL and LREAL spin boxes: wide enough for any physical quantity, narrow
+// enough for the box to show its text.
+constexpr double kRealLimit = 1e9;
+constexpr int kRealDecimals = 3;
+
+struct NumberRange {
+    double min;
+    double max;
+};
+
+NumberRange rangeOf(core::IecType type)
+{
+    switch (type) {
+    case core::IecType::Sint: return {-128, 127};
+    case core::IecType::Int: return {-32768, 32767};
+    case core::IecType::Dint: return {-2147483648.0, 2147483647.0};
+    case core::IecType::Lint: return {-kExactIntegerLimit, kExactIntegerLimit};
+    case core::IecType::Usint: return {0, 255};
+    case core::IecType::Uint: return {0, 65535};
+    case core::IecType::Udint: return {0, 4294967295.0};
+    case core::IecType::Ulint: return {0, kExactIntegerLimit};
+    case core::IecType::Real:
+    case core::IecType::Lreal:
+    case core::IecType::Bool: break;
+    }
+    return {-kRealLimit, kRealLimit};
+}
+
+bool fitsInt(core::IecType type)
+{
+    switch (type) {
+    case core::IecType::Sint:
+    case core::IecType::Int:
+    case core::IecType::Dint:
+    case core::IecType::Usint:
+    case core::IecType::Uint: return true;
+    default: return false;
+    }
+}
+
+double numberOf(const core::cond::Value& value)
+{
+    if (const auto* i = std::get_if<std::int64_t>(&value))
+        return static_cast<double>(*i);
+    if (const auto* d = std::get_if<double>(&value))
+        return *d;
+    return std::get<bool>(value) ? 1 : 0;
+}
+
+bool boolOf(const core::cond::Value& value)
+{
+    const auto* b = std::get_if<bool>(&value);
+    return b && *b;
+}
+
+QString boolText(bool value)
+{
+    return value ? QStringLiteral("TRUE") : QStringLiteral("FALSE");
+}
+
+QString statusText(const core::TransitionExplanation& explanation)
+{
+    switch (explanation.status) {
+    case core::TransitionStatus::Fires: return SimulationDock::tr("fires in the next scan");
+    case core::TransitionStatus::ConditionFalse: return SimulationDock::tr("condition FALSE");
+    case core::TransitionStatus::WaitingForComplete: return SimulationDock::tr("waits for Complete");
+    case core::TransitionStatus::PreemptedByHigherPriority:
+        return SimulationDock::tr("preempted by %1").arg(transitionLabel(QString::fromStdString(explanation.preemptedBy)));
+    case core::TransitionStatus::Unusable: return SimulationDock::tr("condition unusable (always FALSE)");
+    }
+    return {};
+}
+
+QColor statusColor(core::TransitionStatus status)
+{
+    switch (status) {
+    case core::TransitionStatus::Fires: return QColor(0x1e, 0x8e, 0x3e);
+    case core::TransitionStatus::WaitingForComplete: return QColor(0xb0, 0x6a, 0x00);
+    case core::TransitionStatus::Unusable: return QColor(0xc6, 0x28, 0x28);
+    case core::TransitionStatus::ConditionFalse:
+    case core::TransitionStatus::PreemptedByHigherPriority: break;
+    }
+    return {};
+}
+
+QToolButton* toolButton(QWidget* parent, const QString& objectName, QStyle::StandardPixmap icon)
+{
+    auto* button = new QToolButton(parent);
+    button->setObjectName(objectName);
+    button->setIcon(parent->style()->standardIcon(icon));
+    button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    button->setAutoRaise(true);
+    return button;
+}
+
+QLabel* sectionLabel(const QString& text, QWidget* parent)
+{
+    auto* label = new QLabel(text, parent);
+    QFont font = label->font();
+    font.setBold(true);
+    label->setFont(font);
+    return label;
+}
+
+} // namespace
+
+SimulationDock::SimulationDock(SimulationSession* session, Document* document, QWidget* parent)
+    : QDockWidget(tr("Simulation"), parent)
+    , m_session(session)
+    , m_document(document)
+{
+    setObjectName(QStringLiteral("simulationDock"));
+    m_pages = new QStackedWidget(this);
+    m_pages->addWidget(createOffPage());
+    m_pages->addWidget(createOnPage());
+    setWidget(m_pages);
+
+    connect(m_session, &SimulationSession::activeChanged, this, &SimulationDock::onActiveChanged);
+    connect(m_session, &SimulationSession::runningChanged, this, &SimulationDock::onRunningChanged);
+    connect(m_session, &SimulationSession::stepped, this, &SimulationDock::onStepped);
+    connect(m_session, &SimulationSession::inputsChanged, this, [this] {
+        syncInputs();
+        syncCompletes();
+        refreshExplanation();
+    });
+    connect(m_session, &SimulationSession::wasReset, m_traceModel, &TraceTableModel::reload);
+    connect(m_session, &SimulationSession::replayChanged, this, &SimulationDock::refreshReplay);
+    connect(m_session, &SimulationSession::speedChanged, this, [this](int speed) {
+        const QSignalBlocker blocker(m_speedSpin);
+        m_speedSpin->setValue(speed);
+    });
+    onActiveChanged(m_session->isActive());
+}
+
+QWidget* SimulationDock::createOffPage()
+{
+    auto* page = new QWidget(this);
+    auto* layout = new QVBoxLayout(page);
+    auto* text = new QLabel(tr("The simulation runs the model scan by scan, as the generated program runs on "
+                               "the PLC: play the inputs, watch the active step and see why each transition "
+                               "fires or not. Editing is locked while it runs."),
+                            page);
+    text->setWordWrap(true);
+    auto* start = new QPushButton(tr("Start Simulation"), page);
+    start->setObjectName(QStringLiteral("startButton"));
+    connect(start, &QPushButton::clicked, this, [this] { m_session->setActive(true); });
+    layout->addWidget(text);
+    layout->addWidget(start, 0, Qt::AlignLeft);
+    layout->addStretch();
+    return page;
+}
+
+QWidget* SimulationDock::createOnPage()
+{
+    auto* page = new QWidget(this);
+    auto* layout = new QVBoxLayout(page);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(createControls());
+
+    auto* splitter = new QSplitter(Qt::Vertical, page);
+    splitter->setChildrenCollapsible(false);
+    auto* scroll = new QScrollArea(splitter);
+    scroll->setObjectName(QStringLiteral("inputsArea"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_inputsWidget = new QWidget(scroll);
+    m_inputsWidget->setObjectName(QStringLiteral("inputsPanel"));
+    m_inputsLayout = new QGridLayout(m_inputsWidget);
+    m_inputsLayout->setContentsMargins(6, 4, 6, 4);
+    m_inputsLayout->setVerticalSpacing(2);
+    scroll->setWidget(m_inputsWidget);
+
+    m_tabs = new QTabWidget(splitter);
+    m_tabs->setObjectName(QStringLiteral("simulationTabs"));
+    m_tabs->setDocumentMode(true);
+    m_tabs->addTab(createExplanationTab(), tr("Explanation"));
+    m_tabs->addTab(createTraceTab(), tr("Trace"));
+    m_tabs->addTab(createScenarioTab(), tr("Scenario"));
+    splitter->addWidget(scroll);
+    splitter->addWidget(m_tabs);
+    // The sizes are proportions: the inputs get the larger part.
+    scroll->setMinimumHeight(fontMetrics().height() * 6);
+    splitter->setStretchFactor(0, 3);
+    splitter->setStretchFactor(1, 2);
+    splitter->setSizes({3000, 2000});
+    layout->addWidget(splitter, 1);
+    return page;
+}
+
+QWidget* SimulationDock::createControls()
+{
+    auto* controls = new QWidget(this);
+    auto* layout = new QVBoxLayout(controls);
+    layout->setContentsMargins(4, 2, 4, 2);
+    layout->setSpacing(0);
+
+    auto* buttons = new QHBoxLayout;
+    buttons->setSpacing(2);
+    m_runButton = toolButton(controls, QStringLiteral("runButton"), QStyle::SP_MediaPlay);
+    m_runButton->setCheckable(true);
+    m_runButton->setText(tr("Run"));
+    m_runButton->setToolTip(tr("Run scans at the chosen speed; press again to pause"));
+    connect(m_runButton, &QToolButton::toggled, this, [this](bool run) {
+        if (run)
+            m_session->run();
+        else
+            m_session->pause();
+    });
+    m_stepButton = toolButton(controls, QStringLiteral("stepButton"), QStyle::SP_MediaSkipForward);
+    m_stepButton->setText(tr("Scan"));
+    m_stepButton->setToolTip(tr("Run a single scan"));
+    connect(m_stepButton, &QToolButton::clicked, m_session, &SimulationSession::stepOnce);
+    m_resetButton = toolButton(controls, QStringLiteral("resetButton"), QStyle::SP_MediaSkipBackward);
+    m_resetButton->setText(tr("Reset"));
+    m_resetButton->setToolTip(tr("Back to the initial step, the inputs to their defaults; clears the trace"));
+    connect(m_resetButton, &QToolButton::clicked, m_session, &SimulationSession::reset);
+    auto* end = toolButton(controls, QStringLiteral("endButton"), QStyle::SP_MediaStop);
+    end->setText(tr("End"));
+    end->setToolTip(tr("End the simulation and unlock editing"));
+    connect(end, &QToolButton::clicked, this, [this] { m_session->setActive(false); });
+    buttons->addWidget(m_runButton);
+    buttons->addWidget(m_stepButton);
+    buttons->addWidget(m_resetButton);
+    buttons->addStretch();
+    buttons->addWidget(end);
+    layout->addLayout(buttons);
+
+    auto* speedRow = new QHBoxLayout;
+    speedRow->setContentsMargins(4, 0, 4, 0);
+    auto* speedLabel = new QLabel(tr("&Speed:"), controls);
+    m_speedSpin = new QSpinBox(controls);
+    m_speedSpin->setObjectName(QStringLiteral("speedSpin"));
+    m_speedSpin->setRange(SimulationSession::kMinSpeed, SimulationSession::kMaxSpeed);
+    m_speedSpin->setValue(m_session->speed());
+    m_speedSpin->setSuffix(tr(" scans/s"));
+    m_speedSpin->setKeyboardTracking(false);
+    m_speedSpin->setToolTip(tr("Scans per second (the model's cycle time only sets the simulated time)"));
+    speedLabel->setBuddy(m_speedSpin);
+    connect(m_speedSpin, &QSpinBox::valueChanged, m_session, &SimulationSession::setSpeed);
+    m_statusLabel = new QLabel(controls);
+    m_statusLabel->setObjectName(QStringLiteral("statusLabel"));
+    m_statusLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    speedRow->addWidget(speedLabel);
+    speedRow->addWidget(m_speedSpin);
+    speedRow->addStretch();
+    speedRow->addWidget(m_statusLabel);
+    layout->addLayout(speedRow);
+    return controls;
+}
+
+QWidget* SimulationDock::createExplanationTab()
+{
+    auto* tab = new QWidget(this);
+    auto* layout = new QVBoxLayout(tab);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(4);
+    m_activeLabel = new QLabel(tab);
+    m_activeLabel->setObjectName(QStringLiteral("activeStepLabel"));
+    m_activeLabel->setWordWrap(true);
+    m_explanationView = new QTreeWidget(tab);
+    m_explanationView->setObjectName(QStringLiteral("explanationView"));
+    m_explanationView->setColumnCount(2);
+    m_explanationView->setHeaderLabels({tr("Transition"), tr("Next scan")});
+    m_explanationView->setUniformRowHeights(true);
+    m_explanationView->setSelectionMode(QAbstractItemView::NoSelection);
+    m_explanationView->header()->setStretchLastSection(true);
+    m_explanationView->header()->resizeSection(TransitionColumn, 130);
+    layout->addWidget(m_activeLabel);
+    layout->addWidget(m_explanationView, 1);
+    return tab;
+}
+
+QWidget* SimulationDock::createTraceTab()
+{
+    m_traceModel = new TraceTableModel(m_session, this);
+    m_traceView = new QTableView(this);
+    m_traceView->setObjectName(QStringLiteral("traceView"));
+    m_traceView->setModel(m_traceModel);
+    m_traceView->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_traceView->setWordWrap(false);
+    m_traceView->verticalHeader()->hide();
+    m_traceView->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_traceView->verticalHeader()->setDefaultSectionSize(m_traceView->fontMetrics().height() + 4);
+    m_traceView->horizontalHeader()->setStretchLastSection(true);
+    m_traceView->horizontalHeader()->setHighlightSections(false);
+    const int digit = m_traceView->fontMetrics().horizontalAdvance(QLatin1Char('0'));
+    m_traceView->setColumnWidth(TraceTableModel::ScanColumn, digit * 8);
+    m_traceView->setColumnWidth(TraceTableModel::StepColumn, digit * 5);
+    m_traceView->setColumnWidth(TraceTableModel::FiredColumn, digit * 10);
+    m_traceView->setColumnWidth(TraceTableModel::EntryColumn, digit * 7);
+    m_traceView->setColumnWidth(TraceTableModel::TokensColumn, digit * 14);
+    return m_traceView;
+}
+
+QWidget* SimulationDock::createScenarioTab()
+{
+    m_scenarioTab = new QWidget(this);
+    auto* layout = new QVBoxLayout(m_scenarioTab);
+    layout->setContentsMargins(4, 4, 4, 4);
+    auto* buttons = new QHBoxLayout;
+    m_recordButton = new QPushButton(tr("&Record as Scenario…"), m_scenarioTab);
+    m_recordButton->setObjectName(QStringLiteral("recordButton"));
+    m_recordButton->setToolTip(tr("Save this session since the last reset as a scenario file: the inputs of "
+                                  "each scan, and an expectation for every transition that fired"));
+    connect(m_recordButton, &QPushButton::clicked, this, &SimulationDock::recordScenario);
+    m_replayButton = new QPushButton(tr("Re&play Scenario…"), m_scenarioTab);
+    m_replayButton->setObjectName(QStringLiteral("replayButton"));
+    m_replayButton->setToolTip(tr("Run a scenario file from the initial step and check its expectations"));
+    connect(m_replayButton, &QPushButton::clicked, this, &SimulationDock::replayScenario);
+    buttons->addWidget(m_recordButton);
+    buttons->addWidget(m_replayButton);
+    buttons->addStretch();
+    m_replayLabel = new QLabel(m_scenarioTab);
+    m_replayLabel->setObjectName(QStringLiteral("replayLabel"));
+    m_replayLabel->setWordWrap(true);
+    m_failureList = new QListWidget(m_scenarioTab);
+    m_failureList->setObjectName(QStringLiteral("failureList"));
+    m_failureList->setWordWrap(true);
+    layout->addLayout(buttons);
+    layout->addWidget(m_replayLabel);
+    layout->addWidget(m_failureList, 1);
+    return m_scenarioTab;
+}
+
+void SimulationDock::buildInputRows()
+{
+    m_inputRows.clear();
+    m_completeRows.clear();
+    while (QLayoutItem* item = m_inputsLayout->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    const core::Simulator* simulator = m_session->simulator();
+    if (!simulator)
+        return;
+    int row = 0;
+    m_inputsLayout->addWidget(sectionLabel(tr("Inputs"), m_inputsWidget), row++, 0, 1, 2);
+    for (int i = 0; i < static_cast<int>(simulator->variableNames().size()); ++i) {
+        if (simulator->variableType(static_cast<std::size_t>(i)) == core::IecType::Bool)
+            addBoolRow(i, row++);
+        else
+            addNumberRow(i, row++);
+    }
+    if (simulator->variableNames().empty()) {
+        auto* none = new QLabel(tr("The model declares no variables."), m_inputsWidget);
+        none->setForegroundRole(QPalette::PlaceholderText);
+        m_inputsLayout->addWidget(none, row++, 0, 1, 2);
+    }
+    if (!simulator->nestedSteps().empty()) {
+        auto* title = sectionLabel(tr("Complete of nested steps"), m_inputsWidget);
+        title->setToolTip(tr("Automatic: the skeleton function block completes at once. Manual: you play the "
+                             "nested behaviour and set Complete yourself."));
+        m_inputsLayout->addWidget(title, row++, 0, 1, 2);
+        for (const std::string& step : simulator->nestedSteps())
+            addCompleteRow(QString::fromStdString(step), row++);
+    }
+    m_inputsLayout->setColumnStretch(1, 1);
+    m_inputsLayout->setRowStretch(row, 1);
+    syncInputs();
+    syncCompletes();
+}
+
+void SimulationDock::addBoolRow(int index, int row)
+{
+    const core::Simulator* simulator = m_session->simulator();
+    InputRow input;
+    input.name = QString::fromStdString(simulator->variableNames()[static_cast<std::size_t>(index)]);
+    auto* label = new QLabel(input.name, m_inputsWidget);
+    if (const core::Variable* variable = m_document->model().variable(input.name.toStdString()))
+        label->setToolTip(QString::fromStdString(variable->comment));
+
+    auto* cell = new QWidget(m_inputsWidget);
+    auto* layout = new QHBoxLayout(cell);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(4);
+    // Tool buttons: compact enough for a row to fit the dock's narrow column.
+    const int buttonWidth = fontMetrics().horizontalAdvance(QStringLiteral("FALSE")) + 18;
+    auto* toggle = new QToolButton(cell);
+    toggle->setObjectName(QStringLiteral("toggle_") + input.name);
+    toggle->setCheckable(true);
+    toggle->setMinimumWidth(buttonWidth);
+    toggle->setToolTip(tr("Switch %1 between TRUE and FALSE").arg(input.name));
+    connect(toggle, &QToolButton::toggled, this, [this, index](bool checked) {
+        m_session->setVariable(index, checked);
+    });
+    auto* press = new QToolButton(cell);
+    press->setText(tr("Press"));
+    press->setObjectName(QStringLiteral("press_") + input.name);
+    press->setMinimumWidth(buttonWidth);
+    press->setToolTip(tr("TRUE while held down, like a push button (for at least one scan)"));
+    connect(press, &QToolButton::pressed, this, [this, index] { m_session->press(index); });
+    connect(press, &QToolButton::released, this, [this, index] { m_session->release(index); });
+    layout->addWidget(toggle);
+    layout->addWidget(press);
+    layout->addStretch();
+    label->setBuddy(toggle);
+    m_inputsLayout->addWidget(label, row, 0);
+    m_inputsLayout->addWidget(cell, row, 1);
+    input.toggle = toggle;
+    input.press = press;
+    m_inputRows << input;
+}
+
+void SimulationDock::addNumberRow(int index, int row)
+{
+    const core::Simulator* simulator = m_session->simulator();
+    const core::IecType type = simulator->variableType(static_cast<std::size_t>(index));
+    InputRow input;
+    input.name = QString::fromStdString(simulator->variableNames()[static_cast<std::size_t>(index)]);
+    auto* label = new QLabel(input.name, m_inputsWidget);
+    QString toolTip = QString::fromUtf8(core::iecTypeName(type).data(), static_cast<qsizetype>(core::iecTypeName(type).size()));
+    if (const core::Variable* variable = m_document->model().variable(input.name.toStdString())) {
+        if (!variable->comment.empty())
+            toolTip += QStringLiteral(": ") + QString::fromStdString(variable->comment);
+    }
+    label->setToolTip(toolTip);
+
+    const NumberRange range = rangeOf(type);
+    QWidget* editor = nullptr;
+    if (fitsInt(type)) {
+        auto* spin = new QSpinBox(m_inputsWidget);
+        spin->setRange(static_cast<int>(range.min), static_cast<int>(range.max));
+        connect(spin, &QSpinBox::valueChanged, this, [this, index](int value) { setNumber(index, value); });
+        editor = spin;
+    } else {
+        auto* spin = new QDoubleSpinBox(m_inputsWidget);
+        spin->setDecimals(core::isRealType(type) ? kRealDecimals : 0);
+        spin->setRange(range.min, range.max);
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, index](double value) { setNumber(index, value); });
+        editor = spin;
+    }
+    editor->setObjectName(QStringLiteral("value_") + input.name);
+    editor->setToolTip(toolTip);
+    static_cast<QAbstractSpinBox*>(editor)->setKeyboardTracking(false);
+    // As wide as the toggle and Press buttons of the BOOL rows: a REAL's
+    // range would otherwise make it wider than the dock.
+    const int buttonWidth = fontMetrics().horizontalAdvance(QStringLiteral("FALSE")) + 18;
+    editor->setFixedWidth(2 * buttonWidth + 4);
+    label->setBuddy(editor);
+    m_inputsLayout->addWidget(label, row, 0);
+    m_inputsLayout->addWidget(editor, row, 1);
+    input.editor = editor;
+    m_inputRows << input;
+}
+
+void SimulationDock::setNumber(int index, double value)
+{
+    const core::Simulator* simulator = m_session->simulator();
+    if (!simulator)
+        return;
+    const core::IecType type = simulator->variableType(static_cast<std::size_t>(index));
+    const core::cond::Value typed = core::isRealType(type) ? core::cond::Value(value)
+                                                           : core::cond::Value(static_cast<std::int64_t>(std::llround(value)));
+    m_session->setVariable(index, typed);
+}
+
+void SimulationDock::addCompleteRow(const QString& stepId, int row)
+{
+    CompleteRow complete;
+    complete.stepId = stepId;
+    // The step id with its Complete output as the chart draws it: a "C"
+    // badge, green when TRUE.
+    auto* name = new QWidget(m_inputsWidget);
+    auto* nameLayout = new QHBoxLayout(name);
+    nameLayout->setContentsMargins(0, 0, 0, 0);
+    nameLayout->setSpacing(6);
+    auto* label = new QLabel(stepId, name);
+    label->setToolTip(officialStateName(stepId));
+    complete.output = new QLabel(QStringLiteral("C"), name);
+    complete.output->setObjectName(QStringLiteral("completeOutput_") + stepId);
+    complete.output->setAlignment(Qt::AlignCenter);
+    complete.output->setFixedSize(fontMetrics().height(), fontMetrics().height());
+    nameLayout->addWidget(label);
+    nameLayout->addWidget(complete.output);
+    nameLayout->addStretch();
+    auto* cell = new QWidget(m_inputsWidget);
+    auto* layout = new QHBoxLayout(cell);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(4);
+    complete.mode = new QComboBox(cell);
+    complete.mode->setObjectName(QStringLiteral("completeMode_") + stepId);
+    complete.mode->addItem(tr("Automatic"), static_cast<int>(core::CompleteMode::Automatic));
+    complete.mode->addItem(tr("Manual"), static_cast<int>(core::CompleteMode::Manual));
+    complete.mode->setToolTip(tr("How %1's function block sets Complete").arg(stepId));
+    connect(complete.mode, &QComboBox::currentIndexChanged, this, [this, stepId](int index) {
+        m_session->setCompleteMode(stepId, index == 1 ? core::CompleteMode::Manual : core::CompleteMode::Automatic);
+    });
+    complete.manual = new QCheckBox(tr("Complete"), cell);
+    complete.manual->setObjectName(QStringLiteral("completeValue_") + stepId);
+    complete.manual->setToolTip(tr("The value the nested behaviour gives Complete (manual mode)"));
+    connect(complete.manual, &QCheckBox::toggled, this,
+            [this, stepId](bool checked) { m_session->setManualComplete(stepId, checked); });
+    layout->addWidget(complete.mode);
+    layout->addWidget(complete.manual);
+    layout->addStretch();
+    label->setBuddy(complete.mode);
+    m_inputsLayout->addWidget(name, row, 0);
+    m_inputsLayout->addWidget(cell, row, 1);
+    m_completeRows << complete;
+}
+
+QAbstractButton* SimulationDock::toggleButton(const QString& variable) const
+{
+    for (const InputRow& row : m_inputRows) {
+        if (row.name.compare(variable, Qt::CaseInsensitive) == 0)
+            return row.toggle;
+    }
+    return nullptr;
+}
+
+QAbstractButton* SimulationDock::pressButton(const QString& variable) const
+{
+    for (const InputRow& row : m_inputRows) {
+        if (row.name.compare(variable, Qt::CaseInsensitive) == 0)
+            return row.press;
+    }
+    return nullptr;
+}
+
+QWidget* SimulationDock::valueEditor(const QString& variable) const
+{
+    for (const InputRow& row : m_inputRows) {
+        if (row.name.compare(variable, Qt::CaseInsensitive) == 0)
+            return row.editor;
+    }
+    return nullptr;
+}
+
+QComboBox* SimulationDock::completeModeCombo(const QString& stepId) const
+{
+    for (const CompleteRow& row : m_completeRows) {
+        if (row.stepId == stepId)
+            return row.mode;
+    }
+    return nullptr;
+}
+
+QCheckBox* SimulationDock::manualCompleteCheck(const QString& stepId) const
+{
+    for (const CompleteRow& row : m_completeRows) {
+        if (row.stepId == stepId)
+            return row.manual;
+    }
+    return nullptr;
+}
+
+void SimulationDock::onActiveChanged(bool active)
+{
+    m_pages->setCurrentIndex(active ? OnPage : OffPage);
+    m_shownExplanation.clear();
+    buildInputRows();
+    m_traceModel->reload();
+    onRunningChanged(m_session->isRunning());
+    onStepped();
+    refreshReplay();
+}
+
+void SimulationDock::onRunningChanged(bool running)
+{
+    const QSignalBlocker blocker(m_runButton);
+    m_runButton->setChecked(running);
+    m_runButton->setText(running ? tr("Pause") : tr("Run"));
+    m_runButton->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+}
+
+void SimulationDock::onStepped()
+{
+    if (!m_session->isActive())
+        return;
+    refreshStatus();
+    syncCompletes();
+    refreshExplanation();
+
+    // Follow the new scans only when the user is looking at the latest ones.
+    QScrollBar* bar = m_traceView->verticalScrollBar();
+    const bool atBottom = bar->value() >= bar->maximum();
+    m_traceModel->sync();
+    if (atBottom && m_traceView->isVisible())
+        m_traceView->scrollToBottom();
+}
+
+void SimulationDock::refreshStatus()
+{
+    const core::Simulator* simulator = m_session->simulator();
+    const double seconds = static_cast<double>(simulator->simulatedTimeMs()) / 1000.0;
+    m_statusLabel->setText(tr("Scan %1 · %2 s")
+                               .arg(QLocale().toString(static_cast<qlonglong>(simulator->scanCount())),
+                                    QLocale().toString(seconds, 'f', 2)));
+}
+
+void SimulationDock::syncInputs()
+{
+    const core::Simulator* simulator = m_session->simulator();
+    if (!simulator)
+        return;
+    for (int i = 0; i < m_inputRows.size(); ++i) {
+        const InputRow& row = m_inputRows[i];
+        const core::cond::Value value = simulator->variableValue(static_cast<std::size_t>(i));
+        if (row.toggle) {
+            const QSignalBlocker blocker(row.toggle);
+            row.toggle->setChecked(boolOf(value));
+            row.toggle->setText(boolText(boolOf(value)));
+        } else if (auto* spin = qobject_cast<QSpinBox*>(row.editor)) {
+            const QSignalBlocker blocker(spin);
+            spin->setValue(static_cast<int>(numberOf(value)));
+        } else if (auto* spin = qobject_cast<QDoubleSpinBox*>(row.editor)) {
+            const QSignalBlocker blocker(spin);
+            spin->setValue(numberOf(value));
+        }
+    }
+    // A replay plays the inputs.
+    m_inputsWidget->setEnabled(!m_session->isReplaying());
+}
+
+void SimulationDock::syncCompletes()
+{
+    const core::Simulator* simulator = m_session->simulator();
+    if (!simulator)
+        return;
+    for (const CompleteRow& row : std::as_const(m_completeRows)) {
+        const std::string id = row.stepId.toStdString();
+        const bool manual = simulator->completeMode(id) == core::CompleteMode::Manual;
+        {
+            const QSignalBlocker blocker(row.mode);
+            row.mode->setCurrentIndex(manual ? 1 : 0);
+        }
+        {
+            const QSignalBlocker blocker(row.manual);
+            row.manual->setChecked(simulator->manualComplete(id));
+        }
+        row.manual->setEnabled(manual);
+        const bool output = simulator->complete(id);
+        // A style sheet costs a restyle: only when the value changes.
+        const QVariant shown = row.output->property("complete");
+        if (shown.isValid() && shown.toBool() == output)
+            continue;
+        row.output->setProperty("complete", output);
+        row.output->setToolTip(tr("%1.Complete = %2 (after the last call of its function block)")
+                                   .arg(row.stepId, boolText(output)));
+        row.output->setStyleSheet(QStringLiteral("QLabel { color: white; font-weight: bold; border-radius: 3px; "
+                                                 "background: %1; }")
+                                      .arg(output ? QStringLiteral("#1e9e3e") : QStringLiteral("#9aa1ab")));
+    }
+}
+
+void SimulationDock::refreshExplanation()
+{
+    const core::Simulator* simulator = m_session->simulator();
+    if (!simulator)
+        return;
+    const QString active = QString::fromStdString(simulator->activeStepId());
+    const std::vector<core::TransitionExplanation> explanations = simulator->explain();
+
+    QStringList shown{active, boolText(simulator->entry())};
+    for (const core::TransitionExplanation& e : explanations) {
+        shown << QString::fromStdString(e.transitionId) << QString::number(static_cast<int>(e.status))
+              << QString::fromStdString(e.preemptedBy);
+        for (const std::string& reason : e.reasons)
+            shown << QString::fromStdString(reason);
+        shown << QString();
+    }
+    if (shown == m_shownExplanation)
+        return;
+    m_shownExplanation = shown;
+
+    if (active.isEmpty())
+        m_activeLabel->setText(tr("No visible step is active (State = %1).").arg(simulator->activeStepNumber()));
+    else
+        m_activeLabel->setText(tr("Active step: <b>%1</b> %2 · Entry = %3")
+                                   .arg(active, officialStateName(active).toHtmlEscaped(),
+                                        boolText(simulator->entry())));
+
+    m_explanationView->clear();
+    for (const core::TransitionExplanation& e : explanations) {
+        auto* item = new QTreeWidgetItem(m_explanationView);
+        QString name = transitionLabel(QString::fromStdString(e.transitionId));
+        if (e.family)
+            name = tr("%1 (family)").arg(name);
+        item->setText(TransitionColumn, name);
+        item->setText(StatusColumn, statusText(e));
+        item->setToolTip(TransitionColumn, QString::fromStdString(e.transitionId));
+        const QColor color = statusColor(e.status);
+        if (color.isValid())
+            item->setForeground(StatusColumn, color);
+        for (const std::string& reason : e.reasons) {
+            auto* child = new QTreeWidgetItem(item);
+            child->setText(TransitionColumn, QString::fromStdString(reason));
+            child->setToolTip(TransitionColumn, QString::fromStdString(reason));
+            child->setFirstColumnSpanned(true);
+        }
+    }
+    if (explanations.empty()) {
+        auto* item = new QTreeWidgetItem(m_explanationView);
+        item->setText(TransitionColumn, tr("The active step has no transition to evaluate."));
+        item->setFirstColumnSpanned(true);
+    }
+    m_explanationView->expandAll();
+}
+
+void SimulationDock::refreshReplay()
+{
+    m_failureList->clear();
+    const SimulationSession::ReplayState state = m_session->replayState();
+    const std::vector<core::ScenarioFailure>& failures = m_session->replayFailures();
+    switch (state) {
+    case SimulationSession::ReplayState::None:
+        m_replayLabel->setText(tr("Record this session as a scenario file, or replay one."));
+        break;
+    case SimulationSession::ReplayState::Running:
+        m_replayLabel->setText(tr("Replaying %1: %2 scans.").arg(m_session->replayFileName()).arg(m_session->replayLength()));
+        break;
+    case SimulationSession::ReplayState::Finished: {
+        const int expectations = m_session->replayExpectationCount();
+        if (failures.empty())
+            m_replayLabel->setText(tr("%1: every expectation met (%2).").arg(m_session->replayFileName()).arg(expectations));
+        else
+            m_replayLabel->setText(tr("%1: %2 of %3 expectations failed.")
+                                       .arg(m_session->replayFileName())
+                                       .arg(failures.size())
+                                       .arg(expectations));
+        break;
+    }
+    }
+    for (const core::ScenarioFailure& failure : failures) {
+        auto* item = new QListWidgetItem(tr("Line %1: %2").arg(failure.line).arg(QString::fromStdString(failure.message)),
+                                         m_failureList);
+        item->setForeground(QColor(0xc6, 0x28, 0x28));
+    }
+    m_recordButton->setEnabled(m_session->isActive() && !m_session->isReplaying());
+    syncInputs();
+}
+
+void SimulationDock::recordScenario()
+{
+    const QString suggestion = QFileInfo(m_document->filePath()).completeBaseName();
+    const QString base = suggestion.isEmpty() ? tr("session") : suggestion + QStringLiteral("-session");
+    const QString dir = m_document->filePath().isEmpty() ? QDir::homePath()
+                                                         : QFileInfo(m_document->filePath()).absolutePath();
+    QString path = QFileDialog::getSaveFileName(this, tr("Record as Scenario"),
+                                                QDir(dir).filePath(base + QStringLiteral(".scenario")),
+                                                tr("Simulation scenarios (*.scenario *.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    if (QFileInfo(path).suffix().isEmpty())
+        path += QStringLiteral(".scenario");
+    QString error;
+    if (!m_session->saveRecording(path, &error)) {
+        QMessageBox::critical(this, tr("Record as Scenario"),
+                              tr("Could not write %1.").arg(QDir::toNativeSeparators(path)) + QStringLiteral("\n\n")
+                                  + error);
+        return;
+    }
+    m_replayLabel->setText(tr("Recorded %1 scans to %2.")
+                               .arg(m_session->simulator()->scanCount())
+                               .arg(QDir::toNativeSeparators(path)));
+}
+
+void SimulationDock::replayScenario()
+{
+    const QString dir = m_document->filePath().isEmpty() ? QDir::homePath()
+                                                         : QFileInfo(m_document->filePath()).absolutePath();
+    const QString path = QFileDialog::getOpenFileName(this, tr("Replay Scenario"), dir,
+                                                      tr("Simulation scenarios (*.scenario *.txt);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!m_session->startReplay(path, &error)) {
+        QMessageBox box(QMessageBox::Warning, tr("Replay Scenario"),
+                        tr("Could not replay %1.").arg(QDir::toNativeSeparators(path)), QMessageBox::Ok, this);
+        box.setInformativeText(error);
+        box.exec();
+        return;
+    }
+    m_tabs->setCurrentIndex(ScenarioTab);
+    m_session->run();
+}
+
+} // namespace editor

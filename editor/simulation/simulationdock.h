@@ -1,0 +1,124 @@
+#pragma once
+
+#include <QDockWidget>
+#include <QList>
+#include <QStringList>
+
+class QAbstractButton;
+class QCheckBox;
+class QComboBox;
+class QGridLayout;
+class QLabel;
+class QListWidget;
+class QPushButton;
+class QSpinBox;
+class QStackedWidget;
+class QTabWidget;
+class QTableView;
+class QToolButton;
+class QTreeWidget;
+class QWidget;
+
+namespace editor {
+
+class Document;
+class SimulationSession;
+class TraceTableModel;
+
+// Plays the simulation: run, pause, single scan, reset and speed; the
+// inputs (BOOL variables as toggles with a momentary Press button for push
+// buttons, numbers as spin boxes in their IEC range); Complete of each
+// nested step, automatic or manual; why the active step's transitions do or
+// do not fire; the trace; recording and replaying scenario files. The
+// session lives in the window, so a rebuilt dock (new language) shows the
+// same simulation.
+class SimulationDock : public QDockWidget {
+    Q_OBJECT
+
+public:
+    enum ExplanationColumn { TransitionColumn, StatusColumn };
+
+    SimulationDock(SimulationSession* session, Document* document, QWidget* parent = nullptr);
+
+    SimulationSession* session() const { return m_session; }
+    QTreeWidget* explanationView() const { return m_explanationView; }
+    QTableView* traceView() const { return m_traceView; }
+    TraceTableModel* traceModel() const { return m_traceModel; }
+    QListWidget* failureList() const { return m_failureList; }
+    QLabel* replayLabel() const { return m_replayLabel; }
+    QLabel* statusLabel() const { return m_statusLabel; }
+
+    // The input widgets of a variable or nested step; nullptr when none.
+    QAbstractButton* toggleButton(const QString& variable) const;
+    QAbstractButton* pressButton(const QString& variable) const;
+    QWidget* valueEditor(const QString& variable) const; // QSpinBox or QDoubleSpinBox
+    QComboBox* completeModeCombo(const QString& stepId) const;
+    QCheckBox* manualCompleteCheck(const QString& stepId) const;
+
+    // File > Save / Open dialogs, then the session's recording or replay.
+    void recordScenario();
+    void replayScenario();
+
+private:
+    // The widgets of one input row, by Simulator::variableNames() index.
+    struct InputRow {
+        QString name;
+        QAbstractButton* toggle = nullptr;
+        QAbstractButton* press = nullptr;
+        QWidget* editor = nullptr;
+    };
+    struct CompleteRow {
+        QString stepId;
+        QComboBox* mode = nullptr;
+        QCheckBox* manual = nullptr;
+        QLabel* output = nullptr;
+    };
+
+    QWidget* createOffPage();
+    QWidget* createOnPage();
+    QWidget* createControls();
+    QWidget* createExplanationTab();
+    QWidget* createTraceTab();
+    QWidget* createScenarioTab();
+    void buildInputRows();
+    void addBoolRow(int index, int row);
+    void addNumberRow(int index, int row);
+    void addCompleteRow(const QString& stepId, int row);
+
+    void onActiveChanged(bool active);
+    void onRunningChanged(bool running);
+    void onStepped();
+    void syncInputs();
+    void syncCompletes();
+    void refreshStatus();
+    void refreshExplanation();
+    void refreshReplay();
+    void setNumber(int index, double value);
+
+    SimulationSession* m_session;
+    Document* m_document;
+    QStackedWidget* m_pages = nullptr;
+    QToolButton* m_runButton = nullptr;
+    QToolButton* m_stepButton = nullptr;
+    QToolButton* m_resetButton = nullptr;
+    QSpinBox* m_speedSpin = nullptr;
+    QLabel* m_statusLabel = nullptr;
+    QWidget* m_inputsWidget = nullptr;
+    QGridLayout* m_inputsLayout = nullptr;
+    QTabWidget* m_tabs = nullptr;
+    QLabel* m_activeLabel = nullptr;
+    QTreeWidget* m_explanationView = nullptr;
+    QTableView* m_traceView = nullptr;
+    TraceTableModel* m_traceModel = nullptr;
+    QPushButton* m_recordButton = nullptr;
+    QPushButton* m_replayButton = nullptr;
+    QLabel* m_replayLabel = nullptr;
+    QListWidget* m_failureList = nullptr;
+    QWidget* m_scenarioTab = nullptr;
+
+    QList<InputRow> m_inputRows;
+    QList<CompleteRow> m_completeRows;
+    QStringList m_shownExplanation; // what the explanation view shows, to skip identical refreshes
+};
+
+} // namespace editor

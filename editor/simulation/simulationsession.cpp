@@ -1,0 +1,421 @@
+#include "editor/simulation/simulationsession.h"
+
+#include "editor/document.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+#include <QTimer>
+
+#include <algorithm>
+#include <cmath>
+
+namespace editor {
+
+namespace {
+
+// A tick that comes late (a busy machine, a modal dialog) does not try to
+// catch up on more than this: simulated time then runs slower than real
+// time instead of freezing the window.
+constexpr double kMaxCatchUpSeconds = 0.1;
+
+// At most this many problems of a scenario file are listed.
+constexpr std::size_t kMaxListedErrors = 10;
+
+QString errorList(const std::vector<core::ScenarioError>& errors)
+{
+    QStringList lines;
+    for (std::size_t i = 0; i < errors.size() && i < kMaxListedErrors; ++i)
+        lines << QString::fromStdString(errors[i].toString());
+    if (errors.size() > kMaxListedErrors)
+        lines << QCoreApplication::translate("editor::SimulationSession", "(%1 more)")
+                     .arg(errors.size() - kMaxListedErrors);
+    return lines.join(QLatin1Char('\n'));
+}
+
+} // namespace
+
+SimulationSession::SimulationSession(Document* document, QObject* parent)
+    : QObject(parent)
+    , m_document(document)
+    , m_timer(new QTimer(this))
+{
+    Q_ASSERT(document);
+    m_timer->setInterval(kTickMs);
+    m_timer->setTimerType(Qt::PreciseTimer);
+    connect(m_timer, &QTimer::timeout, this, &SimulationSession::onTick);
+
+    // The simulator runs a copy of the program: any change of the model ends it.
+    connect(m_document, &Document::modelReset, this, &SimulationSession::onModelChanged);
+    connect(m_document, &Document::stepChanged, this, &SimulationSession::onModelChanged);
+    connect(m_document, &Document::transitionChanged, this, &SimulationSession::onModelChanged);
+    connect(m_document, &Document::variableChanged, this, &SimulationSession::onModelChanged);
+    connect(m_document, &Document::variablesChanged, this, &SimulationSession::onModelChanged);
+    connect(m_document, &Document::settingsChanged, this, &SimulationSession::onModelChanged);
+}
+
+SimulationSession::~SimulationSession()
+{
+    m_runner.reset(); // refers to the scenario and the simulator
+}
+
+void SimulationSession::setActive(bool active)
+{
+    if (active == isActive())
+        return;
+    if (active) {
+        m_simulator = std::make_unique<core::Simulator>(m_document->model());
+        m_tokenTransitions.clear();
+        for (const std::string& name : m_simulator->tokenNames()) {
+            std::string transition;
+            for (const core::GemmaStep& step : m_simulator->program().steps) {
+                for (const core::GemmaToken& token : step.tokens) {
+                    if (token.name == name)
+                        transition = token.transitionId;
+                }
+            }
+            m_tokenTransitions.push_back(transition);
+        }
+        clearSession();
+        m_document->setReadOnly(true);
+    } else {
+        pause();
+        stopReplay();
+        m_runner.reset();
+        m_simulator.reset();
+        m_trace.clear();
+        m_lastFired.clear();
+        m_document->setReadOnly(false);
+    }
+    emit activeChanged(active);
+}
+
+void SimulationSession::onModelChanged()
+{
+    setActive(false);
+}
+
+bool SimulationSession::isRunning() const
+{
+    return m_timer->isActive();
+}
+
+void SimulationSession::run()
+{
+    if (!isActive() || isRunning())
+        return;
+    // The first scan comes with the first tick rather than a whole period later.
+    m_owedScans = 1;
+    m_clock.start();
+    m_timer->start();
+    emit runningChanged(true);
+}
+
+void SimulationSession::pause()
+{
+    if (!isRunning())
+        return;
+    m_timer->stop();
+    emit runningChanged(false);
+}
+
+void SimulationSession::stepOnce()
+{
+    advance(1);
+}
+
+void SimulationSession::reset()
+{
+    if (!isActive())
+        return;
+    pause();
+    stopReplay();
+    m_simulator->reset();
+    clearSession();
+    emit wasReset();
+    emit inputsChanged();
+    emit stepped();
+}
+
+void SimulationSession::clearSession()
+{
+    m_trace.clear();
+    m_lastFired.clear();
+    m_pendingReleases.clear();
+    m_pressedAt.assign(m_simulator->variableNames().size(), -1);
+    m_changes.clear();
+    m_firings.clear();
+    // Manual settings kept across the reset are recorded at scan 1: a
+    // scenario starts with every Complete automatic.
+    m_completeSettings.assign(m_simulator->nestedSteps().size(), std::nullopt);
+}
+
+void SimulationSession::setSpeed(int scansPerSecond)
+{
+    const int speed = std::clamp(scansPerSecond, kMinSpeed, kMaxSpeed);
+    if (speed == m_speed)
+        return;
+    m_speed = speed;
+    emit speedChanged(m_speed);
+}
+
+void SimulationSession::onTick()
+{
+    const double seconds = std::min(static_cast<double>(m_clock.nsecsElapsed()) / 1e9, kMaxCatchUpSeconds);
+    m_clock.restart();
+    m_owedScans += seconds * m_speed;
+    const double scans = std::floor(m_owedScans);
+    m_owedScans -= scans;
+    advance(static_cast<std::int64_t>(scans));
+}
+
+void SimulationSession::advance(std::int64_t scans)
+{
+    if (!isActive() || scans <= 0)
+        return;
+    const bool hadPendingReleases = !m_pendingReleases.empty();
+    std::int64_t ran = 0;
+    for (; ran < scans; ++ran) {
+        if (m_runner && m_simulator->scanCount() >= m_scenario->lastScan()) {
+            finishReplay();
+            break;
+        }
+        core::ScanRecord record = m_runner ? m_runner->step() : m_simulator->step();
+        if (m_runner) {
+            const std::vector<core::ScenarioFailure>& failures = m_runner->lastFailures();
+            m_replayFailures.insert(m_replayFailures.end(), failures.begin(), failures.end());
+        }
+        afterScan(std::move(record));
+    }
+    // A replay whose last scan just ran ends now rather than on the next press.
+    if (m_runner && m_simulator->scanCount() >= m_scenario->lastScan())
+        finishReplay();
+    if (ran == 0)
+        return;
+    if (hadPendingReleases || m_runner || m_replayState == ReplayState::Finished)
+        emit inputsChanged();
+    emit stepped();
+}
+
+void SimulationSession::afterScan(core::ScanRecord&& record)
+{
+    // A released push button goes FALSE once a scan has read its TRUE.
+    for (int index : m_pendingReleases)
+        m_simulator->setVariableAt(static_cast<std::size_t>(index), false);
+    m_pendingReleases.clear();
+
+    core::RecordedScan changes;
+    changes.scan = record.scan;
+    changes.inputs = record.changedInputs;
+    recordCompleteSettings(changes);
+    if (!changes.inputs.empty() || !changes.completes.empty())
+        m_changes.push_back(std::move(changes));
+
+    if (!record.fired.empty()) {
+        m_lastFired = QString::fromStdString(record.fired);
+        if (m_firings.size() < static_cast<std::size_t>(kRecordedFiringCapacity))
+            m_firings.push_back(record);
+    }
+    m_trace.push_back(std::move(record));
+    if (m_trace.size() > static_cast<std::size_t>(kTraceCapacity))
+        m_trace.pop_front();
+}
+
+std::optional<bool> SimulationSession::completeSetting(const std::string& stepId) const
+{
+    if (m_simulator->completeMode(stepId) == core::CompleteMode::Automatic)
+        return std::nullopt;
+    return m_simulator->manualComplete(stepId);
+}
+
+// The Complete settings the scan ran with, where they differ from the last
+// ones recorded.
+void SimulationSession::recordCompleteSettings(core::RecordedScan& changes)
+{
+    const std::vector<std::string>& steps = m_simulator->nestedSteps();
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const std::optional<bool> setting = completeSetting(steps[i]);
+        if (setting != m_completeSettings[i]) {
+            m_completeSettings[i] = setting;
+            changes.completes.push_back({steps[i], setting});
+        }
+    }
+}
+
+bool SimulationSession::setVariable(int index, const core::cond::Value& value, QString* error)
+{
+    if (!isActive())
+        return false;
+    const core::Status status = m_simulator->setVariableAt(static_cast<std::size_t>(index), value);
+    if (!status) {
+        if (error)
+            *error = QString::fromStdString(status.message);
+        return false;
+    }
+    emit inputsChanged();
+    return true;
+}
+
+void SimulationSession::press(int index)
+{
+    if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size())
+        return;
+    m_pendingReleases.erase(std::remove(m_pendingReleases.begin(), m_pendingReleases.end(), index),
+                            m_pendingReleases.end());
+    m_pressedAt[static_cast<std::size_t>(index)] = m_simulator->scanCount();
+    setVariable(index, true);
+}
+
+void SimulationSession::release(int index)
+{
+    if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size())
+        return;
+    std::int64_t& pressedAt = m_pressedAt[static_cast<std::size_t>(index)];
+    const bool scanned = pressedAt < 0 || m_simulator->scanCount() > pressedAt;
+    pressedAt = -1;
+    if (scanned)
+        setVariable(index, false);
+    else
+        m_pendingReleases.push_back(index);
+}
+
+void SimulationSession::setCompleteMode(const QString& stepId, core::CompleteMode mode)
+{
+    if (isActive() && m_simulator->setCompleteMode(stepId.toStdString(), mode))
+        emit inputsChanged();
+}
+
+void SimulationSession::setManualComplete(const QString& stepId, bool complete)
+{
+    if (isActive() && m_simulator->setComplete(stepId.toStdString(), complete))
+        emit inputsChanged();
+}
+
+core::ScenarioRecording SimulationSession::recording() const
+{
+    core::ScenarioRecording recording;
+    if (!isActive())
+        return recording;
+    const std::string name = m_document->model().settings().name;
+    recording.title = "GG Studio simulation of " + (name.empty() ? std::string("an untitled model") : name) + ", "
+                    + std::to_string(m_simulator->scanCount()) + " scans, recorded "
+                    + QDateTime::currentDateTime().toString(Qt::ISODate).toStdString();
+    if (m_firings.size() >= static_cast<std::size_t>(kRecordedFiringCapacity))
+        recording.title += "\nExpectations only for the first " + std::to_string(kRecordedFiringCapacity)
+                         + " firings.";
+    recording.changes = m_changes;
+    recording.records = m_firings;
+    return recording;
+}
+
+std::string SimulationSession::recordingText() const
+{
+    const core::ScenarioRecording session = recording();
+    std::string text = core::writeScenario(session);
+    if (!isActive())
+        return text;
+    // The session may go on after its last change or firing: the replay
+    // runs as long and checks where it ended.
+    std::int64_t last = 0;
+    for (const core::RecordedScan& scan : session.changes)
+        last = std::max(last, scan.scan);
+    for (const core::ScanRecord& record : session.records)
+        last = std::max(last, record.scan);
+    const std::int64_t scans = m_simulator->scanCount();
+    const std::string step = m_simulator->activeStepId();
+    if (scans > last && !step.empty())
+        text += "at " + std::to_string(scans) + ": expect step " + step + "\n";
+    return text;
+}
+
+bool SimulationSession::saveRecording(const QString& path, QString* error) const
+{
+    QSaveFile file(path);
+    const std::string text = recordingText();
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)
+        || file.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size())
+        || !file.commit()) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    return true;
+}
+
+bool SimulationSession::startReplay(const QString& path, QString* error)
+{
+    if (!isActive())
+        return false;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    const QByteArray text = file.readAll();
+    const QString fileName = QFileInfo(path).fileName();
+    core::ScenarioParseResult parsed =
+        core::parseScenario(std::string_view(text.constData(), static_cast<std::size_t>(text.size())),
+                            fileName.toStdString());
+    std::vector<core::ScenarioError> errors = parsed.errors;
+    if (parsed.ok())
+        errors = core::validateScenario(parsed.scenario, *m_simulator);
+    if (!errors.empty()) {
+        if (error)
+            *error = errorList(errors);
+        return false;
+    }
+
+    pause();
+    stopReplay();
+    // A scenario starts from the program's start state with every Complete automatic.
+    m_simulator->reset();
+    for (const std::string& step : m_simulator->nestedSteps()) {
+        m_simulator->setCompleteMode(step, core::CompleteMode::Automatic);
+        m_simulator->setComplete(step, false);
+    }
+    clearSession();
+    m_scenario = std::make_unique<core::Scenario>(std::move(parsed.scenario));
+    m_runner = std::make_unique<core::ScenarioRunner>(*m_scenario, *m_simulator);
+    m_replayFile = fileName;
+    m_replayExpectations = static_cast<int>(std::count_if(m_scenario->actions.begin(), m_scenario->actions.end(),
+                                                          [](const core::ScenarioAction& a) {
+                                                              return a.isExpectation();
+                                                          }));
+    m_replayState = ReplayState::Running;
+    emit wasReset();
+    emit inputsChanged();
+    emit replayChanged();
+    emit stepped();
+    return true;
+}
+
+std::int64_t SimulationSession::replayLength() const
+{
+    return m_scenario ? m_scenario->lastScan() : 0;
+}
+
+void SimulationSession::finishReplay()
+{
+    m_runner.reset();
+    m_replayState = ReplayState::Finished;
+    pause();
+    emit replayChanged();
+}
+
+void SimulationSession::stopReplay()
+{
+    const bool changed = m_replayState != ReplayState::None;
+    m_runner.reset();
+    m_scenario.reset();
+    m_replayFailures.clear();
+    m_replayFile.clear();
+    m_replayExpectations = 0;
+    m_replayState = ReplayState::None;
+    if (changed)
+        emit replayChanged();
+}
+
+} // namespace editor

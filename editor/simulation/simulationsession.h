@@ -1,0 +1,159 @@
+#pragma once
+
+#include "core/scenario.h"
+#include "core/simulator.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QTimer;
+
+namespace editor {
+
+class Document;
+
+// The editor's simulation mode: a core::Simulator built from the Document's
+// model when the mode starts, the inputs the user plays, and the trace.
+// While active the Document is read-only; any change of the model (a file
+// opened, a new model) ends the mode, since the simulator ran the old one.
+//
+// A timer drives the scans in batches: every tick (about one frame) runs the
+// scans owed at the chosen speed since the last tick and emits stepped()
+// once, so 1,000 scans per second cost one UI update per frame, not 1,000.
+//
+// Everything the user does is kept from the last reset, so the session can
+// be saved as a scenario file (the inputs and Complete settings of each
+// scan, plus an expectation for every transition that fired), and a
+// scenario file can be replayed scan by scan, its expectations checked.
+class SimulationSession : public QObject {
+    Q_OBJECT
+
+public:
+    static constexpr int kMinSpeed = 1;      // scans per second
+    static constexpr int kMaxSpeed = 10000;
+    static constexpr int kDefaultSpeed = 10;
+    static constexpr int kTickMs = 16;
+    static constexpr int kTraceCapacity = 10000; // the trace keeps the latest scans
+    // Expectations written for at most this many firings: a session at
+    // 10,000 scans/s that fires on most scans would otherwise grow without end.
+    static constexpr int kRecordedFiringCapacity = 100000;
+
+    enum class ReplayState { None, Running, Finished };
+
+    explicit SimulationSession(Document* document, QObject* parent = nullptr);
+    ~SimulationSession() override;
+
+    // The simulation mode: building the simulator and locking the Document.
+    bool isActive() const { return m_simulator != nullptr; }
+    void setActive(bool active);
+    // nullptr while inactive.
+    const core::Simulator* simulator() const { return m_simulator.get(); }
+
+    bool isRunning() const;
+    void run();
+    void pause();
+    void stepOnce();
+    // Start state, inputs at their defaults, trace and recording cleared;
+    // pauses and ends a replay. Complete settings are kept.
+    void reset();
+    // Runs up to `scans` scans as one batch and emits stepped() once when
+    // any ran (a replay stops at its last scan). The timer calls it.
+    void advance(std::int64_t scans);
+
+    int speed() const { return m_speed; }
+    void setSpeed(int scansPerSecond); // clamped to kMinSpeed..kMaxSpeed
+
+    // Inputs, by Simulator::variableNames() index. False with the reason
+    // when the simulator refuses the value (wrong kind, out of range).
+    bool setVariable(int index, const core::cond::Value& value, QString* error = nullptr);
+    // A push button: TRUE from press() on. release() sets FALSE, but never
+    // before a scan has read the TRUE: a press shorter than a scan is not lost.
+    void press(int index);
+    void release(int index);
+    void setCompleteMode(const QString& stepId, core::CompleteMode mode);
+    void setManualComplete(const QString& stepId, bool complete);
+
+    // The latest scans since reset, oldest first (at most kTraceCapacity).
+    const std::deque<core::ScanRecord>& trace() const { return m_trace; }
+    // The transition that fired last since reset; empty when none has.
+    QString lastFiredTransition() const { return m_lastFired; }
+    // Which token (Simulator::tokenNames() index) belongs to which transition.
+    const std::vector<std::string>& tokenTransitions() const { return m_tokenTransitions; }
+
+    // The session since the last reset, as the scenario writer takes it.
+    core::ScenarioRecording recording() const;
+    // Its scenario text: the recording, plus the step it ended in when it
+    // ran on after the last change or firing.
+    std::string recordingText() const;
+    bool saveRecording(const QString& path, QString* error) const;
+
+    // Reads, checks and starts a scenario from the start state (every
+    // Complete automatic); run() or stepOnce() plays it. False with the
+    // problems when the file cannot be read or does not fit the model.
+    bool startReplay(const QString& path, QString* error);
+    ReplayState replayState() const { return m_replayState; }
+    bool isReplaying() const { return m_replayState == ReplayState::Running; }
+    QString replayFileName() const { return m_replayFile; }
+    std::int64_t replayLength() const;
+    int replayExpectationCount() const { return m_replayExpectations; }
+    // Expectations that did not hold so far (kept after the replay finished).
+    const std::vector<core::ScenarioFailure>& replayFailures() const { return m_replayFailures; }
+
+signals:
+    void activeChanged(bool active);
+    void runningChanged(bool running);
+    void speedChanged(int speed);
+    // A batch of scans ran: state, trace and Complete outputs changed.
+    void stepped();
+    // Variables or Complete settings changed: by the user, a released
+    // button, a reset or a replay.
+    void inputsChanged();
+    // Back to the start state: the trace was cleared.
+    void wasReset();
+    void replayChanged();
+
+private:
+    void onTick();
+    void onModelChanged();
+    void clearSession();
+    void afterScan(core::ScanRecord&& record);
+    void recordCompleteSettings(core::RecordedScan& changes);
+    void finishReplay();
+    void stopReplay();
+    std::optional<bool> completeSetting(const std::string& stepId) const;
+
+    Document* m_document;
+    std::unique_ptr<core::Simulator> m_simulator;
+    QTimer* m_timer;
+    QElapsedTimer m_clock;
+    double m_owedScans = 0;
+    int m_speed = kDefaultSpeed;
+
+    std::deque<core::ScanRecord> m_trace;
+    QString m_lastFired;
+    std::vector<std::string> m_tokenTransitions;
+    std::vector<int> m_pendingReleases;
+    std::vector<std::int64_t> m_pressedAt; // scan count at press(), by variable index; -1 when not pressed
+
+    // Recording since reset.
+    std::vector<core::RecordedScan> m_changes;
+    std::vector<core::ScanRecord> m_firings;
+    std::vector<std::optional<bool>> m_completeSettings; // last recorded, by nestedSteps() index
+
+    // Replay.
+    ReplayState m_replayState = ReplayState::None;
+    QString m_replayFile;
+    int m_replayExpectations = 0;
+    std::unique_ptr<core::Scenario> m_scenario;
+    std::unique_ptr<core::ScenarioRunner> m_runner;
+    std::vector<core::ScenarioFailure> m_replayFailures;
+};
+
+} // namespace editor

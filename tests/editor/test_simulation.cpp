@@ -1,0 +1,529 @@
+// The editor's simulation mode: the editing lock, the chart marks, the
+// Simulation dock's inputs, Complete, explanation and trace, recording and
+// replaying scenarios, and the batching that keeps 1,000 scans/s at one UI
+// update per frame.
+
+#include "modelfactory.h"
+
+#include "editor/chart/chartscene.h"
+#include "editor/chart/stepitem.h"
+#include "editor/chart/transitionitem.h"
+#include "editor/commands/setconditioncommand.h"
+#include "editor/docks/elementlabels.h"
+#include "editor/document.h"
+#include "editor/languages.h"
+#include "editor/mainwindow.h"
+#include "editor/simulation/simulationdock.h"
+#include "editor/simulation/simulationsession.h"
+#include "editor/simulation/tracetablemodel.h"
+
+#include "core/conditionevaluator.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QLabel>
+#include <QListWidget>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTreeWidget>
+#include <QUndoStack>
+
+#include <memory>
+
+using namespace editor;
+
+namespace {
+
+bool boolValue(const core::Simulator& simulator, const char* name)
+{
+    return core::cond::isTrue(simulator.variable(name));
+}
+
+// Every text of the explanation view, reasons included.
+QStringList explanationTexts(const QTreeWidget& view)
+{
+    QStringList texts;
+    for (int i = 0; i < view.topLevelItemCount(); ++i) {
+        const QTreeWidgetItem* item = view.topLevelItem(i);
+        texts << item->text(0) + QStringLiteral(" | ") + item->text(1);
+        for (int j = 0; j < item->childCount(); ++j)
+            texts << item->child(j)->text(0);
+    }
+    return texts;
+}
+
+bool anyContains(const QStringList& texts, const QString& part)
+{
+    for (const QString& text : texts) {
+        if (text.contains(part))
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+class TestSimulation : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void simulationLocksEditing();
+    void windowLocksEditingWidgets();
+    void changingTheModelEndsTheSimulation();
+    void inputsMoveTheActiveStepOnTheChart();
+    void momentaryPressIsTrueThenFalse();
+    void manualCompleteHoldsAMacroStep();
+    void explanationNamesTheReasons();
+    void traceTableHasOneRowPerScan();
+    void recordedSessionReplaysWithEveryExpectationMet();
+    void replayShowsFailedExpectations();
+    void thousandScansPerSecondRunInBatches();
+    void languageChangeKeepsTheSimulation();
+
+private:
+    void startOnRealisticModel();
+    void click(const QString& variable);
+    void scan(int count = 1);
+
+    QTemporaryDir m_settingsDir;
+    QTemporaryDir m_files;
+    std::unique_ptr<Translators> m_translators;
+    std::unique_ptr<MainWindow> m_window;
+    SimulationSession* m_session = nullptr;
+    SimulationDock* m_dock = nullptr;
+};
+
+void TestSimulation::initTestCase()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QVERIFY(m_settingsDir.isValid());
+    QVERIFY(m_files.isValid());
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
+    QCoreApplication::setOrganizationName(QStringLiteral("GG Studio Tests"));
+    QCoreApplication::setApplicationName(QStringLiteral("test_simulation"));
+}
+
+void TestSimulation::init()
+{
+    m_translators = std::make_unique<Translators>();
+    m_translators->setLanguage(QStringLiteral("en"));
+    m_window = std::make_unique<MainWindow>(*m_translators);
+    m_window->resize(1366, 768);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_session = m_window->simulationSession();
+    m_dock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));
+    QVERIFY(m_session);
+    QVERIFY(m_dock);
+}
+
+void TestSimulation::cleanup()
+{
+    if (m_window)
+        m_window->document()->undoStack()->setClean(); // no "save changes?" on close
+    m_window.reset();
+    m_translators.reset();
+}
+
+void TestSimulation::startOnRealisticModel()
+{
+    m_window->document()->replaceModel(factory::realisticModel(), QString(), core::ModelFormat::Native);
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(m_session->isActive());
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A6"));
+}
+
+void TestSimulation::click(const QString& variable)
+{
+    QAbstractButton* toggle = m_dock->toggleButton(variable);
+    QVERIFY2(toggle, qPrintable(variable));
+    QTest::mouseClick(toggle, Qt::LeftButton);
+}
+
+void TestSimulation::scan(int count)
+{
+    auto* button = m_dock->findChild<QAbstractButton*>(QStringLiteral("stepButton"));
+    QVERIFY(button);
+    for (int i = 0; i < count; ++i)
+        QTest::mouseClick(button, Qt::LeftButton);
+}
+
+void TestSimulation::simulationLocksEditing()
+{
+    Document document;
+    SimulationSession session(&document);
+    QSignalSpy failures(&document, &Document::editFailed);
+
+    session.setActive(true);
+    QVERIFY(document.isReadOnly());
+    QVERIFY(!document.push(new SetConditionCommand(document, QStringLiteral("A6->A1"), QStringLiteral("TRUE"))));
+    QCOMPARE(failures.size(), 1);
+    QCOMPARE(failures.first().first().toString(), QStringLiteral("Stop the simulation to edit the model"));
+    QCOMPARE(document.model().transition("A6->A1")->condition, std::string());
+    QCOMPARE(document.undoStack()->count(), 0);
+
+    session.setActive(false);
+    QVERIFY(!document.isReadOnly());
+    QVERIFY(document.push(new SetConditionCommand(document, QStringLiteral("A6->A1"), QStringLiteral("TRUE"))));
+    QCOMPARE(document.model().transition("A6->A1")->condition, std::string("TRUE"));
+}
+
+void TestSimulation::windowLocksEditingWidgets()
+{
+    Document* document = m_window->document();
+    QVERIFY(document->push(new SetConditionCommand(*document, QStringLiteral("A6->A1"), QStringLiteral("TRUE"))));
+    auto* simulate = m_window->findChild<QAction*>(QStringLiteral("simulateAction"));
+    auto* undo = m_window->findChild<QAction*>(QStringLiteral("undoAction"));
+    auto* settings = m_window->findChild<QAction*>(QStringLiteral("modelSettingsAction"));
+    auto* stepDock = m_window->findChild<QDockWidget*>(QStringLiteral("stepDock"));
+    auto* variablesDock = m_window->findChild<QDockWidget*>(QStringLiteral("variablesDock"));
+    QVERIFY(simulate && undo && settings && stepDock && variablesDock);
+    QCOMPARE(simulate->shortcut(), QKeySequence(Qt::Key_F5));
+    QVERIFY(undo->isEnabled());
+
+    simulate->trigger();
+    QVERIFY(simulate->isChecked());
+    QVERIFY(document->isReadOnly());
+    QVERIFY(!undo->isEnabled());
+    QVERIFY(!settings->isEnabled());
+    QVERIFY(!stepDock->widget()->isEnabled());
+    QVERIFY(!variablesDock->widget()->isEnabled());
+    QVERIFY(m_dock->isVisible());
+    QVERIFY(m_window->findChild<QLabel*>(QStringLiteral("simulationIndicator"))->isVisible());
+
+    simulate->trigger();
+    QVERIFY(!simulate->isChecked());
+    QVERIFY(!document->isReadOnly());
+    QVERIFY(undo->isEnabled());
+    QVERIFY(settings->isEnabled());
+    QVERIFY(stepDock->widget()->isEnabled());
+    QVERIFY(variablesDock->widget()->isEnabled());
+    QVERIFY(m_window->chartScene()->activeStep().isEmpty());
+}
+
+void TestSimulation::changingTheModelEndsTheSimulation()
+{
+    startOnRealisticModel();
+    m_window->document()->replaceModel(core::Model(), QString(), core::ModelFormat::Native);
+    QVERIFY(!m_session->isActive());
+    QVERIFY(!m_window->document()->isReadOnly());
+    QVERIFY(!m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->isChecked());
+    QVERIFY(m_window->chartScene()->activeStep().isEmpty());
+}
+
+void TestSimulation::inputsMoveTheActiveStepOnTheChart()
+{
+    startOnRealisticModel();
+    ChartScene* scene = m_window->chartScene();
+    scan();
+    QCOMPARE(scene->activeStep(), QStringLiteral("A6"));
+    QVERIFY(scene->firedTransition().isEmpty());
+
+    click(QStringLiteral("HomePosition"));
+    click(QStringLiteral("AirPressureOk"));
+    QVERIFY(boolValue(*m_session->simulator(), "HomePosition"));
+    QCOMPARE(m_dock->toggleButton(QStringLiteral("HomePosition"))->text(), QStringLiteral("TRUE"));
+    scan();
+    QCOMPARE(scene->activeStep(), QStringLiteral("A1"));
+    QCOMPARE(scene->firedTransition(), QStringLiteral("A6->A1"));
+    QVERIFY(scene->stepItem(QStringLiteral("A1"))->isActive());
+    QVERIFY(!scene->stepItem(QStringLiteral("A6"))->isActive());
+    QVERIFY(scene->transitionItem(QStringLiteral("A6->A1"))->isFired());
+
+    for (const char* name : {"Start", "PreparationDone", "DoorClosed"})
+        click(QString::fromLatin1(name));
+    scan();
+    QCOMPARE(scene->activeStep(), QStringLiteral("F1"));
+    QCOMPARE(scene->firedTransition(), QStringLiteral("A1->F1"));
+    QVERIFY(!scene->transitionItem(QStringLiteral("A6->A1"))->isFired());
+    // F1 is a macro-step: its Complete shows on it; the tokens of its
+    // transitions show on their bars (Stop's normally-closed token is set).
+    QVERIFY(scene->stepItem(QStringLiteral("F1"))->completeMark().has_value());
+    QVERIFY(!scene->stepItem(QStringLiteral("A1"))->completeMark().has_value());
+    QCOMPARE(scene->transitionItem(QStringLiteral("F1->A2"))->tokenMarks(), QList<bool>{true});
+    QCOMPARE(scene->transitionItem(QStringLiteral("F1->D2"))->tokenMarks(), QList<bool>{false});
+    QVERIFY(scene->transitionItem(QStringLiteral("A6->A1"))->tokenMarks().isEmpty());
+
+    // A number typed in its spin box reaches the simulator.
+    auto* count = qobject_cast<QSpinBox*>(m_dock->valueEditor(QStringLiteral("BottleCount")));
+    QVERIFY(count);
+    QCOMPARE(count->maximum(), 32767);
+    count->setValue(42);
+    QCOMPARE(m_session->simulator()->variable("BottleCount"), core::cond::Value(std::int64_t{42}));
+    QVERIFY(m_dock->statusLabel()->text().contains(QStringLiteral("Scan 3")));
+}
+
+void TestSimulation::momentaryPressIsTrueThenFalse()
+{
+    startOnRealisticModel();
+    QAbstractButton* press = m_dock->pressButton(QStringLiteral("Stop"));
+    QAbstractButton* toggle = m_dock->toggleButton(QStringLiteral("Stop"));
+    QVERIFY(press && toggle);
+    const core::Simulator& simulator = *m_session->simulator();
+
+    // Held over a scan: TRUE while held, FALSE on release.
+    QTest::mousePress(press, Qt::LeftButton);
+    QVERIFY(boolValue(simulator, "Stop"));
+    QVERIFY(toggle->isChecked());
+    scan();
+    QVERIFY(boolValue(simulator, "Stop"));
+    QTest::mouseRelease(press, Qt::LeftButton);
+    QVERIFY(!boolValue(simulator, "Stop"));
+    QVERIFY(!toggle->isChecked());
+    scan();
+
+    // Released before any scan ran: the next scan still reads TRUE, then FALSE.
+    QTest::mousePress(press, Qt::LeftButton);
+    QTest::mouseRelease(press, Qt::LeftButton);
+    QVERIFY(boolValue(simulator, "Stop"));
+    scan();
+    const core::ScanRecord& record = m_session->trace().back();
+    QCOMPARE(record.changedInputs.size(), std::size_t{1});
+    QCOMPARE(record.changedInputs.front().variable, std::string("Stop"));
+    QCOMPARE(record.changedInputs.front().value, core::cond::Value(true));
+    QVERIFY(!boolValue(simulator, "Stop"));
+    QVERIFY(!toggle->isChecked());
+}
+
+void TestSimulation::manualCompleteHoldsAMacroStep()
+{
+    startOnRealisticModel();
+    QComboBox* mode = m_dock->completeModeCombo(QStringLiteral("F1"));
+    QCheckBox* manual = m_dock->manualCompleteCheck(QStringLiteral("F1"));
+    QVERIFY(mode && manual);
+    QVERIFY(!manual->isEnabled());
+    mode->setCurrentIndex(1); // Manual, Complete unchecked
+    QCOMPARE(m_session->simulator()->completeMode("F1"), core::CompleteMode::Manual);
+    QVERIFY(manual->isEnabled());
+
+    for (const char* name : {"HomePosition", "AirPressureOk", "Start", "PreparationDone", "DoorClosed"})
+        click(QString::fromLatin1(name));
+    scan(2);
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("F1"));
+    // F1 -> A2 (NOT Stop, with a token) is ready but waits for Complete.
+    scan(20);
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("F1"));
+    QCOMPARE(m_window->chartScene()->stepItem(QStringLiteral("F1"))->completeMark(), std::optional<bool>(false));
+
+    QTest::mouseClick(manual, Qt::LeftButton);
+    QVERIFY(m_session->simulator()->manualComplete("F1"));
+    scan();
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A2"));
+    QCOMPARE(m_window->chartScene()->firedTransition(), QStringLiteral("F1->A2"));
+
+    // In automatic mode, the same model leaves F1 by itself.
+    m_session->reset();
+    mode->setCurrentIndex(0);
+    for (const char* name : {"HomePosition", "AirPressureOk", "Start", "PreparationDone", "DoorClosed"})
+        click(QString::fromLatin1(name));
+    scan(22);
+    QVERIFY(m_window->chartScene()->activeStep() != QStringLiteral("F1"));
+}
+
+void TestSimulation::explanationNamesTheReasons()
+{
+    startOnRealisticModel();
+    QTreeWidget* view = m_dock->explanationView();
+    QStringList texts = explanationTexts(*view);
+    QVERIFY2(anyContains(texts, QStringLiteral("HomePosition = FALSE")), qPrintable(texts.join('\n')));
+    QVERIFY(anyContains(texts, QStringLiteral("condition FALSE")));
+
+    // The explanation predicts the next scan: it follows the inputs at once.
+    click(QStringLiteral("HomePosition"));
+    click(QStringLiteral("AirPressureOk"));
+    texts = explanationTexts(*view);
+    QVERIFY2(anyContains(texts, transitionLabel(QStringLiteral("A6->A1")) + QStringLiteral(" | fires")),
+             qPrintable(texts.join('\n')));
+
+    m_dock->completeModeCombo(QStringLiteral("F1"))->setCurrentIndex(1);
+    for (const char* name : {"Start", "PreparationDone", "DoorClosed"})
+        click(QString::fromLatin1(name));
+    scan(4);
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("F1"));
+    texts = explanationTexts(*view);
+    QVERIFY2(anyContains(texts, QStringLiteral("waits for Complete")), qPrintable(texts.join('\n')));
+    QVERIFY(anyContains(texts, QStringLiteral("F1.Complete = FALSE")));
+    QVERIFY(m_dock->findChild<QLabel*>(QStringLiteral("activeStepLabel"))->text().contains(QStringLiteral("F1")));
+}
+
+void TestSimulation::traceTableHasOneRowPerScan()
+{
+    startOnRealisticModel();
+    TraceTableModel* model = m_dock->traceModel();
+    QCOMPARE(model->rowCount(), 0);
+    click(QStringLiteral("HomePosition"));
+    click(QStringLiteral("AirPressureOk"));
+    scan(3);
+    QCOMPARE(model->rowCount(), 3);
+    QCOMPARE(model->index(0, TraceTableModel::ScanColumn).data().toString(), QStringLiteral("1"));
+    QCOMPARE(model->index(0, TraceTableModel::StepColumn).data().toString(), QStringLiteral("A1"));
+    QCOMPARE(model->index(0, TraceTableModel::FiredColumn).data().toString(), transitionLabel(QStringLiteral("A6->A1")));
+    QCOMPARE(model->index(0, TraceTableModel::EntryColumn).data().toString(), QStringLiteral("TRUE"));
+    QCOMPARE(model->index(0, TraceTableModel::InputsColumn).data().toString(),
+             QStringLiteral("AirPressureOk = TRUE, HomePosition = TRUE")); // declaration order
+    QVERIFY(model->index(1, TraceTableModel::FiredColumn).data().toString().isEmpty());
+    QVERIFY(model->index(1, TraceTableModel::InputsColumn).data().toString().isEmpty());
+
+    // The table keeps the latest scans.
+    m_session->advance(SimulationSession::kTraceCapacity + 500);
+    QCOMPARE(model->rowCount(), SimulationSession::kTraceCapacity);
+    QCOMPARE(model->index(0, TraceTableModel::ScanColumn).data().toString(), QStringLiteral("504"));
+    QCOMPARE(model->index(model->rowCount() - 1, TraceTableModel::ScanColumn).data().toString(),
+             QString::number(SimulationSession::kTraceCapacity + 503));
+
+    m_session->reset();
+    QCOMPARE(model->rowCount(), 0);
+}
+
+void TestSimulation::recordedSessionReplaysWithEveryExpectationMet()
+{
+    startOnRealisticModel();
+    m_dock->completeModeCombo(QStringLiteral("F1"))->setCurrentIndex(1);
+    click(QStringLiteral("HomePosition"));
+    click(QStringLiteral("AirPressureOk"));
+    scan(2);
+    for (const char* name : {"Start", "PreparationDone", "DoorClosed"})
+        click(QString::fromLatin1(name));
+    scan(3);
+    QTest::mousePress(m_dock->pressButton(QStringLiteral("Stop")), Qt::LeftButton);
+    QTest::mouseRelease(m_dock->pressButton(QStringLiteral("Stop")), Qt::LeftButton);
+    scan(2);
+    QTest::mouseClick(m_dock->manualCompleteCheck(QStringLiteral("F1")), Qt::LeftButton);
+    scan(3);
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A2"));
+    const std::int64_t scans = m_session->simulator()->scanCount();
+
+    const QString path = m_files.filePath(QStringLiteral("session.scenario"));
+    QString error;
+    QVERIFY2(m_session->saveRecording(path, &error), qPrintable(error));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(file.readAll());
+    QVERIFY2(text.contains(QStringLiteral("at 1: set complete F1 = FALSE")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("expect fired A6->A1")), qPrintable(text));
+    QVERIFY(text.contains(QStringLiteral("expect fired F1->A2")));
+    QVERIFY(text.contains(QStringLiteral("set Stop = TRUE")));
+    QVERIFY(text.contains(QStringLiteral("set Stop = FALSE")));
+    QVERIFY2(text.trimmed().endsWith(QStringLiteral("at %1: expect step A2").arg(scans)), qPrintable(text));
+
+    // Replayed from the start, with the user's Complete setting gone.
+    m_dock->completeModeCombo(QStringLiteral("F1"))->setCurrentIndex(0);
+    QSignalSpy replay(m_session, &SimulationSession::replayChanged);
+    QVERIFY2(m_session->startReplay(path, &error), qPrintable(error));
+    QVERIFY(m_session->isReplaying());
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{0});
+    QVERIFY(!m_dock->findChild<QWidget*>(QStringLiteral("inputsPanel"))->isEnabled());
+    m_session->advance(1000);
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QCOMPARE(m_session->simulator()->scanCount(), scans);
+    QVERIFY(m_session->replayFailures().empty());
+    QVERIFY(m_session->replayExpectationCount() >= 6);
+    QCOMPARE(m_dock->failureList()->count(), 0);
+    QVERIFY2(m_dock->replayLabel()->text().contains(QStringLiteral("every expectation met")),
+             qPrintable(m_dock->replayLabel()->text()));
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A2"));
+    QVERIFY(m_dock->findChild<QWidget*>(QStringLiteral("inputsPanel"))->isEnabled());
+    QVERIFY(replay.size() >= 2);
+}
+
+void TestSimulation::replayShowsFailedExpectations()
+{
+    startOnRealisticModel();
+    const QString path = m_files.filePath(QStringLiteral("wrong.scenario"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write("# A6 needs the air pressure too\n"
+               "at 1: set HomePosition = TRUE\n"
+               "at 2: expect step A1\n"
+               "at 3: expect step A6\n");
+    file.close();
+    QString error;
+    QVERIFY2(m_session->startReplay(path, &error), qPrintable(error));
+    m_session->advance(10);
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{3});
+    QCOMPARE(m_session->replayFailures().size(), std::size_t{1});
+    QCOMPARE(m_dock->failureList()->count(), 1);
+    QVERIFY2(m_dock->failureList()->item(0)->text().startsWith(QStringLiteral("Line 3:")),
+             qPrintable(m_dock->failureList()->item(0)->text()));
+    QVERIFY(m_dock->replayLabel()->text().contains(QStringLiteral("1 of 2 expectations failed")));
+
+    // A file that does not fit the model is refused with the reason.
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write("at 1: set NoSuchInput = TRUE\n");
+    file.close();
+    QVERIFY(!m_session->startReplay(path, &error));
+    QVERIFY2(error.contains(QStringLiteral("NoSuchInput")), qPrintable(error));
+    QVERIFY2(error.contains(QStringLiteral("wrong.scenario:1:")), qPrintable(error));
+}
+
+void TestSimulation::thousandScansPerSecondRunInBatches()
+{
+    startOnRealisticModel();
+    auto* speed = m_dock->findChild<QSpinBox*>(QStringLiteral("speedSpin"));
+    QVERIFY(speed);
+    QCOMPARE(speed->maximum(), SimulationSession::kMaxSpeed);
+    speed->setValue(1000);
+    QCOMPARE(m_session->speed(), 1000);
+
+    QSignalSpy stepped(m_session, &SimulationSession::stepped);
+    QElapsedTimer clock;
+    auto* run = m_dock->findChild<QAbstractButton*>(QStringLiteral("runButton"));
+    QTest::mouseClick(run, Qt::LeftButton);
+    clock.start();
+    QVERIFY(m_session->isRunning());
+    QTest::qWait(600);
+    QTest::mouseClick(run, Qt::LeftButton);
+    const double seconds = static_cast<double>(clock.elapsed()) / 1000.0;
+    QVERIFY(!m_session->isRunning());
+
+    const std::int64_t scans = m_session->simulator()->scanCount();
+    const auto updates = static_cast<std::int64_t>(stepped.size());
+    qInfo("%lld scans in %lld UI updates over %.2f s", static_cast<long long>(scans),
+          static_cast<long long>(updates), seconds);
+    // Never ahead of the clock, and not far behind it (a late tick catches up
+    // at most 0.1 s: a loaded machine loses some).
+    QVERIFY(scans <= static_cast<std::int64_t>(seconds * 1000) + 2);
+    QVERIFY(scans >= 200);
+    // Batches: about one update per 16 ms frame, each running ~16 scans.
+    QVERIFY(updates >= 1);
+    QVERIFY2(updates * 5 <= scans, "the session emits about one update per frame, not one per scan");
+    QCOMPARE(m_dock->traceModel()->rowCount(), static_cast<int>(scans));
+}
+
+void TestSimulation::languageChangeKeepsTheSimulation()
+{
+    startOnRealisticModel();
+    click(QStringLiteral("HomePosition"));
+    scan(2);
+    // The docks are built again in the new language; the session stays.
+    QVERIFY(m_translators->setLanguage(QStringLiteral("es")));
+    QTRY_COMPARE(m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"))->windowTitle(),
+                 QStringLiteral("Simulación"));
+    m_dock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));
+    QVERIFY(m_session->isActive());
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{2});
+    QVERIFY(m_dock->toggleButton(QStringLiteral("HomePosition"))->isChecked());
+    QCOMPARE(m_dock->traceModel()->rowCount(), 2);
+    QVERIFY(!m_window->findChild<QDockWidget*>(QStringLiteral("stepDock"))->widget()->isEnabled());
+    scan();
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{3});
+}
+
+QTEST_MAIN(TestSimulation)
+#include "test_simulation.moc"
