@@ -22,13 +22,13 @@ void benchmarkConditionEdit(core::Model& model, const std::string& transitionId)
 
 } // namespace
 
-TEST_CASE("Re-check after a condition edit: realistic model (target <= 1 ms)", "[!benchmark][checks]")
+TEST_CASE("Re-check after a condition edit: realistic model (target <= 1 ms)", "[benchmark][checks]")
 {
     core::Model model = factory::realisticModel();
     benchmarkConditionEdit(model, "F1->A2");
 }
 
-TEST_CASE("Re-check after a condition edit: stress model (target <= 10 ms)", "[!benchmark][checks]")
+TEST_CASE("Re-check after a condition edit: stress model (target <= 10 ms)", "[benchmark][checks]")
 {
     core::Model model = factory::stressModel();
     benchmarkConditionEdit(model, "F1->A2");

@@ -7,7 +7,7 @@
 #include <memory>
 #include <variant>
 
-TEST_CASE("Load + save the realistic model (target <= 2 ms)", "[!benchmark][files]")
+TEST_CASE("Load + save the realistic model (target <= 2 ms)", "[benchmark][files]")
 {
     const std::string text = core::saveNativeJson(factory::realisticModel());
     BENCHMARK("load + save native JSON")

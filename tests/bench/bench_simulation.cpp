@@ -89,7 +89,7 @@ void reportScansPerSecond(const char* what, core::Simulator& simulator, const In
 
 } // namespace
 
-TEST_CASE("Simulation of the realistic model (target >= 1,000,000 scans/s)", "[!benchmark][simulation]")
+TEST_CASE("Simulation of the realistic model (target >= 1,000,000 scans/s)", "[benchmark][simulation]")
 {
     core::Simulator simulator(factory::realisticModel());
     const InputScript script(simulator);
