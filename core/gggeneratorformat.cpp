@@ -210,6 +210,9 @@ struct ReadState {
     bool familyFrameHidden = false;
 };
 
+const VariableEntrySpelling kSignalSpelling{
+    "signal", "a type such as \"bool\"", "bool, sint, int, dint, lint, usint, uint, udint, ulint, real or lreal"};
+
 std::string readSignalDefault(const json& value, const std::string& path)
 {
     if (value.is_null())
@@ -240,21 +243,7 @@ void readSignals(Model& model, const json& root)
     for (std::size_t i = 0; i < signals.size(); ++i) {
         const std::string path = childPath("/graph/data/signals", i);
         const json& signal = expectObject(signals[i], path);
-        VariableEntry entry;
-        entry.namePath = path + "/name";
-        const json* name = findMember(signal, "name");
-        if (!name)
-            failAt(entry.namePath, "missing; every signal needs a name");
-        entry.variable.name = readString(*name, entry.namePath);
-        const json* type = findMember(signal, "type");
-        if (!type)
-            failAt(path + "/type", "missing; expected a type such as \"bool\"");
-        const std::string typeName = readString(*type, path + "/type");
-        const auto parsed = parseIecType(typeName);
-        if (!parsed)
-            failAt(path + "/type", "unknown type \"" + typeName
-                + "\"; expected bool, sint, int, dint, lint, usint, uint, udint, ulint, real or lreal");
-        entry.variable.type = *parsed;
+        VariableEntry entry = readVariableNameAndType(signal, path, kSignalSpelling);
         if (const json* value = findMember(signal, "defaultValue"))
             entry.variable.defaultValue = readSignalDefault(*value, path + "/defaultValue");
         entries.push_back(std::move(entry));

@@ -99,4 +99,24 @@ std::string describeSource(std::string_view source)
     return std::string(source);
 }
 
+VariableEntry readVariableNameAndType(const nlohmann::ordered_json& object, const std::string& path,
+                                      const VariableEntrySpelling& spelling)
+{
+    VariableEntry entry;
+    entry.namePath = path + "/name";
+    const nlohmann::ordered_json* name = findMember(object, "name");
+    if (!name)
+        failAt(entry.namePath, std::string("missing; every ") + spelling.noun + " needs a name");
+    entry.variable.name = readString(*name, entry.namePath);
+    const nlohmann::ordered_json* type = findMember(object, "type");
+    if (!type)
+        failAt(path + "/type", std::string("missing; expected ") + spelling.typeExample);
+    const std::string typeName = readString(*type, path + "/type");
+    const auto parsed = parseIecType(typeName);
+    if (!parsed)
+        failAt(path + "/type", "unknown type \"" + typeName + "\"; expected " + spelling.typeList);
+    entry.variable.type = *parsed;
+    return entry;
+}
+
 } // namespace core

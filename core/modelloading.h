@@ -8,6 +8,8 @@
 #include "core/model.h"
 #include "core/status.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -47,6 +49,18 @@ struct VariableEntry {
     Variable variable;
     std::string namePath;
 };
+
+// How a file format spells a variable entry, for reading and for messages.
+struct VariableEntrySpelling {
+    const char* noun;        // "variable", "signal"
+    const char* typeExample; // "an IEC type such as \"BOOL\""
+    const char* typeList;    // "BOOL, SINT, ..." as the format writes them
+};
+
+// The name and type of the variable entry at path (members "name" and
+// "type"); the caller reads the members its format adds.
+VariableEntry readVariableNameAndType(const nlohmann::ordered_json& object, const std::string& path,
+                                      const VariableEntrySpelling& spelling);
 
 // Appends the variables, refusing empty and case-insensitively duplicate
 // names and more than kMaxFileVariables variables (listPath names the list).

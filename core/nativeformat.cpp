@@ -14,6 +14,9 @@ namespace core {
 
 namespace {
 
+const VariableEntrySpelling kVariableSpelling{
+    "variable", "an IEC type such as \"BOOL\"", "BOOL, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, REAL or LREAL"};
+
 // ---- Writing ---------------------------------------------------------------
 
 ordered_json stepJson(const Step& step)
@@ -122,21 +125,7 @@ void readVariables(Model& model, const json& root)
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = childPath("/variables", i);
         const json& object = expectObject(list[i], path);
-        VariableEntry entry;
-        entry.namePath = path + "/name";
-        const json* name = findMember(object, "name");
-        if (!name)
-            failAt(entry.namePath, "missing; every variable needs a name");
-        entry.variable.name = readString(*name, entry.namePath);
-        const json* type = findMember(object, "type");
-        if (!type)
-            failAt(path + "/type", "missing; expected an IEC type such as \"BOOL\"");
-        const std::string typeName = readString(*type, path + "/type");
-        const auto parsed = parseIecType(typeName);
-        if (!parsed)
-            failAt(path + "/type", "unknown type \"" + typeName
-                + "\"; expected BOOL, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, REAL or LREAL");
-        entry.variable.type = *parsed;
+        VariableEntry entry = readVariableNameAndType(object, path, kVariableSpelling);
         if (const json* value = findMember(object, "default"))
             entry.variable.defaultValue = readString(*value, path + "/default");
         if (const json* comment = findMember(object, "comment"))
