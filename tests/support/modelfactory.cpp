@@ -142,6 +142,26 @@ core::Model stressModel()
     return model;
 }
 
+core::Model verificationStressModel()
+{
+    core::Model model;
+    constexpr int kVariables = 40;
+    for (int i = 0; i < kVariables; ++i)
+        require(model.addVariable(variable("In" + std::to_string(i), core::IecType::Bool, "", "")));
+    int next = 0;
+    for (const core::Transition& t : model.transitions()) {
+        std::vector<std::string> names;
+        for (int k = 0; k < 3; ++k)
+            names.push_back("In" + std::to_string((next + k * 13) % kVariables));
+        next += 3;
+        require(model.setCondition(t.id, "(" + names[0] + " AND NOT " + names[1] + ") OR " + names[2]));
+        const core::Step* source = model.step(t.source);
+        if (source && source->type != core::StepType::Simple && !t.isFamilyTransition())
+            require(model.setTokens(t.id, names));
+    }
+    return model;
+}
+
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count)
 {
     std::vector<std::string> stepIds;

@@ -22,6 +22,12 @@ core::Model realisticModel();
 // every condition 30 operands long.
 core::Model stressModel();
 
+// For the verifier: every step and transition of the template visible, 40
+// BOOL variables spread over the conditions (each condition reads three of
+// them, `(A AND NOT B) OR C`), and a token on every variable of every
+// transition out of a macro or enclosing step.
+core::Model verificationStressModel();
+
 // Applies `count` random operations (valid and invalid ones: the model must
 // refuse the latter) and returns how many the model accepted.
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count);

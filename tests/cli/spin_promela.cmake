@@ -1,0 +1,79 @@
+# `ggstudio-cli verify MODEL --promela OUT.pml`, then SPIN on OUT.pml: the file
+# must be a Promela model whose exhaustive search completes without errors,
+# and SPIN must agree with the verify output on unreachable steps (GV101: the
+# `reach S` marker line is listed as unreached iff S is reported) and on stuck
+# steps (GV106: the `no fire in S` marker line is reached).
+# -D CLI=path -D MODEL=file (or "template": a new model) -D WORKDIR=dir
+find_program(SPIN spin)
+find_program(CC gcc)
+if(NOT SPIN OR NOT CC)
+    message(FATAL_ERROR "spin and gcc are needed (Debian packages spin and gcc)")
+endif()
+set(dir "${WORKDIR}/spin-promela")
+file(REMOVE_RECURSE "${dir}")
+file(MAKE_DIRECTORY "${dir}")
+
+if(MODEL STREQUAL "template")
+    set(MODEL "${dir}/template.json")
+    execute_process(COMMAND "${CLI}" new "${MODEL}" RESULT_VARIABLE code)
+    if(NOT code EQUAL 0)
+        message(FATAL_ERROR "ggstudio-cli new: exit ${code}")
+    endif()
+endif()
+execute_process(COMMAND "${CLI}" verify "${MODEL}" --promela "${dir}/model.pml"
+    RESULT_VARIABLE code OUTPUT_VARIABLE verify ERROR_VARIABLE err)
+if(NOT (code EQUAL 0 OR code EQUAL 1) OR NOT EXISTS "${dir}/model.pml")
+    message(FATAL_ERROR "ggstudio-cli verify --promela: exit ${code}\n${verify}\n${err}")
+endif()
+
+execute_process(COMMAND "${SPIN}" -o3 -a model.pml WORKING_DIRECTORY "${dir}"
+    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+    message(FATAL_ERROR "spin -a: exit ${code}\n${out}\n${err}")
+endif()
+execute_process(COMMAND "${CC}" -O0 -DSAFETY -DMEMLIM=512 -o pan pan.c WORKING_DIRECTORY "${dir}"
+    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+    message(FATAL_ERROR "compiling pan.c: exit ${code}\n${out}\n${err}")
+endif()
+execute_process(COMMAND ./pan -m200000 -w20 WORKING_DIRECTORY "${dir}"
+    RESULT_VARIABLE code OUTPUT_VARIABLE pan ERROR_VARIABLE err)
+if(NOT pan MATCHES "errors: 0\n" OR NOT pan MATCHES "unreached in proctype scan\n"
+   OR pan MATCHES "max search depth too small")
+    message(FATAL_ERROR "pan did not complete its search:\n${pan}\n${err}")
+endif()
+
+# Line numbers of pan's unreached statements.
+string(REGEX MATCHALL "model\\.pml:[0-9]+," listed "${pan}")
+set(unreached "")
+foreach(item IN LISTS listed)
+    string(REGEX REPLACE "model\\.pml:([0-9]+)," "\\1" line "${item}")
+    list(APPEND unreached ${line})
+endforeach()
+
+file(STRINGS "${dir}/model.pml" lines)
+set(number 0)
+set(markers 0)
+foreach(text IN LISTS lines)
+    math(EXPR number "${number} + 1")
+    list(FIND unreached ${number} found)
+    if(text MATCHES "/\\* reach ([A-F][0-9]) \\*/")
+        math(EXPR markers "${markers} + 1")
+        set(step ${CMAKE_MATCH_1})
+        set(reported FALSE)
+        if(verify MATCHES ": ${step}(, [^:\n]*)?: warning: GV101: ")
+            set(reported TRUE)
+        endif()
+        if((found EQUAL -1 AND reported) OR (NOT found EQUAL -1 AND NOT reported))
+            message(FATAL_ERROR "SPIN and verify disagree on whether ${step} is reachable:\n${verify}\n${pan}")
+        endif()
+    elseif(text MATCHES "/\\* no fire in ([A-F][0-9]) \\*/")
+        set(step ${CMAKE_MATCH_1})
+        if(verify MATCHES ": ${step}(, [^:\n]*)?: error: GV106: " AND NOT found EQUAL -1)
+            message(FATAL_ERROR "verify says ${step} is stuck, SPIN finds an input that fires in every situation")
+        endif()
+    endif()
+endforeach()
+if(markers EQUAL 0)
+    message(FATAL_ERROR "model.pml has no reach markers")
+endif()
