@@ -4,6 +4,7 @@
 #include "core/iectypes.h"
 
 #include <QCoreApplication>
+#include <QStringList>
 #include <QStyle>
 
 #include <vector>
@@ -166,7 +167,92 @@ QString translated(const core::Diagnostic& d)
     return {};
 }
 
+// The translated text of a finding, or an empty string when the code has no
+// template for these arguments.
+QString translatedFinding(const core::VerificationFinding& f)
+{
+    namespace gv = core::verification;
+    const std::vector<std::string>& a = f.arguments;
+    const std::string& code = f.code;
+    const std::size_t n = a.size();
+    if (code == gv::kIncomplete)
+        return DiagnosticText::tr("The verification stopped at its limit of decision-diagram nodes: the model was "
+                                  "not verified, and no property is claimed.");
+    if (n == 0)
+        return {};
+    const QString element = fromStd(a[0]);
+    QStringList others;
+    for (std::size_t i = 1; i < n; ++i)
+        others << fromStd(a[i]);
+    const QString named = others.join(QStringLiteral(", "));
+
+    if (code == gv::kUnreachableStep)
+        return n == 1 ? DiagnosticText::tr("Step %1 can never become active: no effective transition leads to it.")
+                            .arg(element)
+                      : DiagnosticText::tr("Step %1 can never become active: no situation reachable from the "
+                                           "initial step lets %2 fire.")
+                            .arg(element, named);
+    if (code == gv::kDeadTransition)
+        return n == 1 ? DiagnosticText::tr("Transition %1 can never fire: its condition is never TRUE in a situation "
+                                           "reachable from the initial step.")
+                            .arg(element)
+                      : DiagnosticText::tr("Transition %1 can never fire: whenever its condition holds, a transition "
+                                           "of higher priority fires first (%2).")
+                            .arg(element, named);
+    if (code == gv::kAlwaysTrue)
+        return n == 1 ? DiagnosticText::tr("The condition of %1 is always TRUE: no own transition of an F step can "
+                                           "ever fire.")
+                            .arg(element)
+                      : DiagnosticText::tr("The condition of %1 is always TRUE when %3 is active: %2 can never fire.")
+                            .arg(element, named, sourceOf(a[0]));
+    if (code == gv::kOverlap && n == 2)
+        return DiagnosticText::tr("%1 and %2 can both be TRUE in the same scan: the priority decides, %1 fires.")
+            .arg(element, named);
+    if (code == gv::kNoReturn)
+        return DiagnosticText::tr("Once %1 is active, the inputs can lead to a situation from which the initial step "
+                                  "can never become active again.")
+            .arg(element);
+    if (code == gv::kStuck)
+        return DiagnosticText::tr("Step %1 can get stuck: the inputs can lead to a situation in it from which no "
+                                  "transition out of it can ever fire.")
+            .arg(element);
+    if (code == gv::kNoEmergencyStop)
+        return n == 1 ? DiagnosticText::tr("The emergency stop D1 can never be entered from %1: the family "
+                                           "transition F->D1 is not effective and %1 has no transition to D1.")
+                            .arg(element)
+                      : DiagnosticText::tr("In some situations of %1 the emergency stop D1 cannot be entered in one "
+                                           "scan, whatever the inputs: %2 cannot fire there.")
+                            .arg(element, named);
+    return {};
+}
+
+// A claim that needs a path whose counterexample does not replay is only
+// information (core/verification.h).
+bool unconfirmed(const core::VerificationFinding& f)
+{
+    namespace gv = core::verification;
+    const bool needsPath = f.code == gv::kOverlap || f.code == gv::kNoReturn || f.code == gv::kStuck
+                           || f.code == gv::kNoEmergencyStop;
+    return needsPath && f.counterexample && !f.counterexample->confirmed;
+}
+
 } // namespace
+
+QString verificationText(const core::VerificationFinding& finding)
+{
+    QString text = translatedFinding(finding);
+    if (text.isEmpty()) {
+        text = fromStd(finding.message);
+        if (!text.isEmpty())
+            text[0] = text[0].toUpper();
+        return text;
+    }
+    if (unconfirmed(finding))
+        text += QLatin1Char(' ')
+                + DiagnosticText::tr("Not confirmed: a condition uses a comparison the verifier cannot decide, and "
+                                     "the counterexample does not replay.");
+    return text;
+}
 
 QString diagnosticText(const core::Diagnostic& diagnostic)
 {

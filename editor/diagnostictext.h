@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/diagnostic.h"
+#include "core/verification.h"
 
 #include <QIcon>
 #include <QString>
@@ -14,6 +15,13 @@ namespace editor {
 // to the core's English message when the arguments are not what the code
 // promises (a newer core, a code without a template).
 QString diagnosticText(const core::Diagnostic& diagnostic);
+
+// The message of a verification finding in the UI language, the same way:
+// a template per GV code (docs/verification.md) filled with
+// VerificationFinding::arguments (the element, then the elements it names).
+// Where the core words one code several ways, the template states what they
+// share. Falls back to the core's English message for an unknown code.
+QString verificationText(const core::VerificationFinding& finding);
 
 // "Error", "Warning", "Information".
 QString severityText(core::Severity severity);

@@ -5,6 +5,7 @@
 #include "editor/chart/chartview.h"
 #include "editor/commands/resetmodelcommand.h"
 #include "editor/docks/problemsdock.h"
+#include "editor/docks/verificationpanel.h"
 #include "editor/docks/stepdock.h"
 #include "editor/docks/stpreviewdock.h"
 #include "editor/docks/transitiondock.h"
@@ -21,6 +22,7 @@
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/statusindicators.h"
+#include "editor/verificationrunner.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -79,6 +81,7 @@ MainWindow::MainWindow(Translators& translators, QWidget* parent)
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     m_session = new SimulationSession(m_document, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
+    m_verification = new VerificationRunner(m_document, this);
     createDocks();
     createActions();
     createMenus();
@@ -90,6 +93,9 @@ MainWindow::MainWindow(Translators& translators, QWidget* parent)
     connect(m_document, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::editFailed, this, &MainWindow::showEditFailure);
     connect(m_session, &SimulationSession::activeChanged, this, &MainWindow::onSimulationActiveChanged);
+    connect(m_verification, &VerificationRunner::started, this, &MainWindow::showVerificationStatus);
+    connect(m_verification, &VerificationRunner::finished, this, &MainWindow::showVerificationStatus);
+    connect(m_verification, &VerificationRunner::cancelled, this, &MainWindow::showVerificationStatus);
     connect(m_autosave, &Autosave::writeFailed, this, [this](const QString& message) {
         statusBar()->showMessage(tr("Autosave failed: %1").arg(message), kStatusMessageMs);
     });
@@ -106,6 +112,7 @@ MainWindow::~MainWindow()
     m_document->undoStack()->disconnect(this);
     m_document->disconnect(this);
     m_session->disconnect(this);
+    m_verification->disconnect(this);
     delete m_chartMarks;
     delete m_problemCounter;
     deleteDocks();
@@ -123,7 +130,9 @@ void MainWindow::createDocks()
     m_stepDock = new StepDock(m_document, m_selection, this);
     m_transitionDock = new TransitionDock(m_document, m_selection, this);
     m_variablesDock = new VariablesDock(m_document, m_selection, this);
-    m_problemsDock = new ProblemsDock(m_document, m_selection, this);
+    m_problemsDock = new ProblemsDock(m_document, m_selection, m_verification, this);
+    connect(m_problemsDock->verificationPanel(), &VerificationPanel::replayRequested, this,
+            &MainWindow::replayCounterexample);
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
     m_simulationDock = new SimulationDock(m_session, m_document, this);
 
@@ -242,6 +251,8 @@ void MainWindow::createActions()
     });
     m_scanAction = action("singleScanAction", [this] { m_session->stepOnce(); }, Qt::Key_F10);
     m_resetSimulationAction = action("resetSimulationAction", [this] { m_session->reset(); });
+    m_verifyAction = action("verifyAction", &MainWindow::verify, Qt::Key_F7);
+    m_verifyAction->setShortcuts({QKeySequence(Qt::Key_F7), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V)});
 
     m_aboutAction = action("aboutAction", &MainWindow::about);
     m_aboutAction->setMenuRole(QAction::AboutRole);
@@ -305,6 +316,8 @@ void MainWindow::createMenus()
     m_simulationMenu->addAction(m_simulateAction);
     m_simulationMenu->addSeparator();
     m_simulationMenu->addActions({m_runAction, m_scanAction, m_resetSimulationAction});
+    m_simulationMenu->addSeparator();
+    m_simulationMenu->addAction(m_verifyAction);
 
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName("helpMenu");
@@ -411,6 +424,9 @@ void MainWindow::retranslate()
     m_scanAction->setText(tr("Single S&can"));
     m_resetSimulationAction->setText(tr("R&eset Simulation"));
     m_simulationIndicator->setText(tr("Simulation: editing locked"));
+    m_verifyAction->setText(tr("&Verify"));
+    m_verifyAction->setStatusTip(tr("Prove what the GEMMA layer can and cannot do for every input sequence; "
+                                    "the findings go to the Problems dock"));
 
     m_aboutAction->setText(tr("&About GG Studio"));
     m_aboutQtAction->setText(tr("About &Qt"));
@@ -647,6 +663,52 @@ void MainWindow::onSimulationActiveChanged(bool active)
         m_simulationDock->show();
         m_simulationDock->raise();
     }
+}
+
+void MainWindow::verify()
+{
+    m_verification->start();
+    m_problemsDock->show();
+    m_problemsDock->raise();
+    m_problemsDock->showVerification();
+}
+
+void MainWindow::showVerificationStatus()
+{
+    if (m_verification->isRunning()) {
+        statusBar()->showMessage(tr("Verifying…"));
+        return;
+    }
+    QString message;
+    if (!m_verification->failure().isEmpty())
+        message = tr("Verification failed: %1").arg(m_verification->failure());
+    else if (m_verification->isStale() || !m_verification->hasResult())
+        message = tr("Verification cancelled: the model changed");
+    else if (m_verification->result().violated())
+        message = tr("Verification finished: some properties do not hold (see Problems)");
+    else
+        message = tr("Verification finished: every property holds");
+    statusBar()->showMessage(message, kStatusMessageMs);
+}
+
+void MainWindow::replayCounterexample(int findingIndex)
+{
+    const core::VerificationFinding* finding = m_verification->finding(findingIndex);
+    if (!finding || !finding->counterexample)
+        return;
+    m_session->setActive(true);
+    QString error;
+    const QString name = tr("%1 counterexample").arg(QString::fromStdString(finding->code));
+    if (!m_session->startReplayText(finding->counterexample->text, name, &error)) {
+        QMessageBox box(QMessageBox::Warning, tr("Replay in Simulator"), tr("Could not replay %1.").arg(name),
+                        QMessageBox::Ok, this);
+        box.setInformativeText(error);
+        box.exec();
+        return;
+    }
+    m_simulationDock->show();
+    m_simulationDock->raise();
+    m_session->run();
 }
 
 // Editing widgets are disabled rather than left to fail: the Document

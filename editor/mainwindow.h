@@ -32,6 +32,7 @@ class StepDock;
 class TransitionDock;
 class Translators;
 class VariablesDock;
+class VerificationRunner;
 class ZoomIndicator;
 
 // GG Studio's window: the chart in the middle, the Step and Transition docks
@@ -52,6 +53,7 @@ public:
     ChartView* chartView() const { return m_view; }
     ExportActions* exportActions() const { return m_exportActions; }
     SimulationSession* simulationSession() const { return m_session; }
+    VerificationRunner* verificationRunner() const { return m_verification; }
 
 public slots:
     // Asks to save unsaved changes first. A file that cannot be read leaves
@@ -102,6 +104,11 @@ private:
     // Simulation mode: locks the editing actions and docks, shows the dock.
     void onSimulationActiveChanged(bool active);
     void applyEditingLock();
+    // Verify: runs the verifier and shows its findings in the Problems dock.
+    void verify();
+    void showVerificationStatus();
+    // Starts the simulation on a finding's counterexample and plays it.
+    void replayCounterexample(int findingIndex);
 
     Translators& m_translators;
     std::unique_ptr<Settings> m_settings;
@@ -123,6 +130,7 @@ private:
     SimulationChartMarks* m_chartMarks = nullptr;
     SimulationDock* m_simulationDock = nullptr;
     QLabel* m_simulationIndicator = nullptr;
+    VerificationRunner* m_verification = nullptr;
 
     QMenu* m_fileMenu = nullptr;
     QMenu* m_editMenu = nullptr;
@@ -149,6 +157,7 @@ private:
     QAction* m_runAction = nullptr;
     QAction* m_scanAction = nullptr;
     QAction* m_resetSimulationAction = nullptr;
+    QAction* m_verifyAction = nullptr;
     QAction* m_aboutAction = nullptr;
     QAction* m_aboutQtAction = nullptr;
     QActionGroup* m_languageGroup = nullptr;

@@ -157,6 +157,58 @@
         <source>Information</source>
         <translation>Information</translation>
     </message>
+    <message>
+        <source>The verification stopped at its limit of decision-diagram nodes: the model was not verified, and no property is claimed.</source>
+        <translation>Die Verifikation hat an ihrer Grenze für Entscheidungsdiagramm-Knoten angehalten: Das Modell wurde nicht verifiziert, keine Eigenschaft wird behauptet.</translation>
+    </message>
+    <message>
+        <source>Step %1 can never become active: no effective transition leads to it.</source>
+        <translation>Schritt %1 kann nie aktiv werden: Keine wirksame Transition führt zu ihm.</translation>
+    </message>
+    <message>
+        <source>Step %1 can never become active: no situation reachable from the initial step lets %2 fire.</source>
+        <translation>Schritt %1 kann nie aktiv werden: In keiner vom Anfangsschritt aus erreichbaren Situation kann %2 schalten.</translation>
+    </message>
+    <message>
+        <source>Transition %1 can never fire: its condition is never TRUE in a situation reachable from the initial step.</source>
+        <translation>Transition %1 kann nie schalten: Ihre Bedingung ist in keiner vom Anfangsschritt aus erreichbaren Situation TRUE.</translation>
+    </message>
+    <message>
+        <source>Transition %1 can never fire: whenever its condition holds, a transition of higher priority fires first (%2).</source>
+        <translation>Transition %1 kann nie schalten: Immer wenn ihre Bedingung erfüllt ist, schaltet zuerst eine Transition höherer Priorität (%2).</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is always TRUE: no own transition of an F step can ever fire.</source>
+        <translation>Die Bedingung von %1 ist immer TRUE: Keine eigene Transition eines F-Schritts kann je schalten.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is always TRUE when %3 is active: %2 can never fire.</source>
+        <translation>Die Bedingung von %1 ist immer TRUE, wenn %3 aktiv ist: %2 kann nie schalten.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 can both be TRUE in the same scan: the priority decides, %1 fires.</source>
+        <translation>%1 und %2 können im selben Zyklus beide TRUE sein: Die Priorität entscheidet, %1 schaltet.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead to a situation from which the initial step can never become active again.</source>
+        <translation>Ist %1 aktiv, können die Eingänge zu einer Situation führen, aus der der Anfangsschritt nie wieder aktiv werden kann.</translation>
+    </message>
+    <message>
+        <source>Step %1 can get stuck: the inputs can lead to a situation in it from which no transition out of it can ever fire.</source>
+        <translation>Schritt %1 kann hängen bleiben: Die Eingänge können zu einer Situation darin führen, in der keine seiner ausgehenden Transitionen je schalten kann.</translation>
+    </message>
+    <message>
+        <source>The emergency stop D1 can never be entered from %1: the family transition F-&gt;D1 is not effective and %1 has no transition to D1.</source>
+        <translation>Der Not-Halt D1 kann von %1 aus nie erreicht werden: Die Familientransition F-&gt;D1 ist nicht wirksam und %1 hat keine Transition nach D1.</translation>
+    </message>
+    <message>
+        <source>In some situations of %1 the emergency stop D1 cannot be entered in one scan, whatever the inputs: %2 cannot fire there.</source>
+        <translation>In manchen Situationen von %1 kann der Not-Halt D1 nicht in einem Zyklus erreicht werden, was auch immer die Eingänge sind: %2 kann dort nicht schalten.</translation>
+    </message>
+    <message>
+        <source>Not confirmed: a condition uses a comparison the verifier cannot decide, and the counterexample does not replay.</source>
+        <translation>Nicht bestätigt: Eine Bedingung verwendet einen Vergleich, den der Verifizierer nicht entscheiden kann, und das Gegenbeispiel lässt sich nicht abspielen.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -947,6 +999,46 @@
         <source>Simulation: editing locked</source>
         <translation>Simulation: Bearbeiten gesperrt</translation>
     </message>
+    <message>
+        <source>&amp;Verify</source>
+        <translation>&amp;Verifizieren</translation>
+    </message>
+    <message>
+        <source>Prove what the GEMMA layer can and cannot do for every input sequence; the findings go to the Problems dock</source>
+        <translation>Beweisen, was die GEMMA-Ebene für jede Eingangsfolge tun kann und was nicht; die Befunde erscheinen im Bereich „Probleme“</translation>
+    </message>
+    <message>
+        <source>Verifying…</source>
+        <translation>Verifikation läuft…</translation>
+    </message>
+    <message>
+        <source>Verification failed: %1</source>
+        <translation>Verifikation fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model changed</source>
+        <translation>Verifikation abgebrochen: Das Modell wurde geändert</translation>
+    </message>
+    <message>
+        <source>Verification finished: some properties do not hold (see Problems)</source>
+        <translation>Verifikation beendet: Einige Eigenschaften gelten nicht (siehe Probleme)</translation>
+    </message>
+    <message>
+        <source>Verification finished: every property holds</source>
+        <translation>Verifikation beendet: Alle Eigenschaften gelten</translation>
+    </message>
+    <message>
+        <source>%1 counterexample</source>
+        <translation>Gegenbeispiel %1</translation>
+    </message>
+    <message>
+        <source>Replay in Simulator</source>
+        <translation>Im Simulator abspielen</translation>
+    </message>
+    <message>
+        <source>Could not replay %1.</source>
+        <translation>%1 konnte nicht abgespielt werden.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -1094,6 +1186,22 @@
     <message>
         <source>Show or hide the information messages</source>
         <translation>Informationsmeldungen ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <source>Checks (%1)</source>
+        <translation>Prüfungen (%1)</translation>
+    </message>
+    <message>
+        <source>Verification</source>
+        <translation>Verifikation</translation>
+    </message>
+    <message>
+        <source>Verification (outdated)</source>
+        <translation>Verifikation (veraltet)</translation>
+    </message>
+    <message>
+        <source>Verification (%1)</source>
+        <translation>Verifikation (%1)</translation>
     </message>
 </context>
 <context>
@@ -1913,6 +2021,89 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
         <translation>Es gibt keine Variablen zum Einfügen: Kopieren Sie Zeilen mit Name, Typ, Anfangswert und Kommentar, getrennt durch Tabulatoren.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VerificationPanel</name>
+    <message>
+        <source>&amp;Verify</source>
+        <translation>&amp;Verifizieren</translation>
+    </message>
+    <message>
+        <source>&amp;Show on Chart</source>
+        <translation>Im &amp;Diagramm zeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Replay in Simulator</source>
+        <translation>Im &amp;Simulator abspielen</translation>
+    </message>
+    <message>
+        <source>Explore every input sequence of the GEMMA layer and report what cannot happen</source>
+        <translation>Alle Eingangsfolgen der GEMMA-Ebene durchsuchen und melden, was nicht eintreten kann</translation>
+    </message>
+    <message>
+        <source>Select the element of the finding on the chart</source>
+        <translation>Das Element des Befunds im Diagramm auswählen</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Code</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Element</translation>
+    </message>
+    <message>
+        <source>Scans</source>
+        <translation>Zyklen</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>Scans of the counterexample, which the simulator can replay</source>
+        <translation>Zyklen des Gegenbeispiels, das der Simulator abspielen kann</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Kopieren</translation>
+    </message>
+    <message>
+        <source>Verifying…</source>
+        <translation>Verifikation läuft…</translation>
+    </message>
+    <message>
+        <source>Verification failed: %1.</source>
+        <translation>Verifikation fehlgeschlagen: %1.</translation>
+    </message>
+    <message>
+        <source>Not verified yet.</source>
+        <translation>Noch nicht verifiziert.</translation>
+    </message>
+    <message>
+        <source>Model changed since verification: verify again to update the findings.</source>
+        <translation>Das Modell wurde seit der Verifikation geändert: Erneut verifizieren, um die Befunde zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>Some properties do not hold (%1 configurations explored).</source>
+        <translation>Einige Eigenschaften gelten nicht (%1 Konfigurationen untersucht).</translation>
+    </message>
+    <message>
+        <source>Every property holds; see the notes (%1 configurations explored).</source>
+        <translation>Alle Eigenschaften gelten; siehe die Hinweise (%1 Konfigurationen untersucht).</translation>
+    </message>
+    <message>
+        <source>Every property holds (%1 configurations explored).</source>
+        <translation>Alle Eigenschaften gelten (%1 Konfigurationen untersucht).</translation>
+    </message>
+    <message>
+        <source>The model changed since verification: verify again to replay</source>
+        <translation>Das Modell wurde seit der Verifikation geändert: Zum Abspielen erneut verifizieren</translation>
+    </message>
+    <message>
+        <source>Start the simulation and replay the scans that lead to the finding</source>
+        <translation>Die Simulation starten und die Zyklen abspielen, die zum Befund führen</translation>
     </message>
 </context>
 <context>

@@ -157,6 +157,58 @@
         <source>Information</source>
         <translation>Información</translation>
     </message>
+    <message>
+        <source>The verification stopped at its limit of decision-diagram nodes: the model was not verified, and no property is claimed.</source>
+        <translation>La verificación se detuvo en su límite de nodos de diagrama de decisión: el modelo no se ha verificado y no se afirma ninguna propiedad.</translation>
+    </message>
+    <message>
+        <source>Step %1 can never become active: no effective transition leads to it.</source>
+        <translation>La etapa %1 nunca puede activarse: ninguna transición efectiva lleva a ella.</translation>
+    </message>
+    <message>
+        <source>Step %1 can never become active: no situation reachable from the initial step lets %2 fire.</source>
+        <translation>La etapa %1 nunca puede activarse: ninguna situación alcanzable desde la etapa inicial permite franquear %2.</translation>
+    </message>
+    <message>
+        <source>Transition %1 can never fire: its condition is never TRUE in a situation reachable from the initial step.</source>
+        <translation>La transición %1 nunca puede franquearse: su condición no es TRUE en ninguna situación alcanzable desde la etapa inicial.</translation>
+    </message>
+    <message>
+        <source>Transition %1 can never fire: whenever its condition holds, a transition of higher priority fires first (%2).</source>
+        <translation>La transición %1 nunca puede franquearse: siempre que su condición se cumple, una transición de mayor prioridad se franquea antes (%2).</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is always TRUE: no own transition of an F step can ever fire.</source>
+        <translation>La condición de %1 es siempre TRUE: ninguna transición propia de una etapa F puede franquearse nunca.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is always TRUE when %3 is active: %2 can never fire.</source>
+        <translation>La condición de %1 es siempre TRUE cuando %3 está activa: %2 nunca puede franquearse.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 can both be TRUE in the same scan: the priority decides, %1 fires.</source>
+        <translation>%1 y %2 pueden ser TRUE en el mismo ciclo: decide la prioridad, se franquea %1.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead to a situation from which the initial step can never become active again.</source>
+        <translation>Una vez activa %1, las entradas pueden llevar a una situación desde la que la etapa inicial nunca puede volver a activarse.</translation>
+    </message>
+    <message>
+        <source>Step %1 can get stuck: the inputs can lead to a situation in it from which no transition out of it can ever fire.</source>
+        <translation>La etapa %1 puede quedarse bloqueada: las entradas pueden llevar a una situación en ella en la que ninguna de sus transiciones de salida puede franquearse nunca.</translation>
+    </message>
+    <message>
+        <source>The emergency stop D1 can never be entered from %1: the family transition F-&gt;D1 is not effective and %1 has no transition to D1.</source>
+        <translation>La parada de emergencia D1 nunca puede alcanzarse desde %1: la transición de familia F-&gt;D1 no es efectiva y %1 no tiene ninguna transición hacia D1.</translation>
+    </message>
+    <message>
+        <source>In some situations of %1 the emergency stop D1 cannot be entered in one scan, whatever the inputs: %2 cannot fire there.</source>
+        <translation>En algunas situaciones de %1 la parada de emergencia D1 no puede alcanzarse en un ciclo, sean cuales sean las entradas: %2 no puede franquearse allí.</translation>
+    </message>
+    <message>
+        <source>Not confirmed: a condition uses a comparison the verifier cannot decide, and the counterexample does not replay.</source>
+        <translation>No confirmado: una condición usa una comparación que el verificador no puede decidir, y el contraejemplo no se reproduce.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -947,6 +999,46 @@
         <source>Simulation: editing locked</source>
         <translation>Simulación: edición bloqueada</translation>
     </message>
+    <message>
+        <source>&amp;Verify</source>
+        <translation>&amp;Verificar</translation>
+    </message>
+    <message>
+        <source>Prove what the GEMMA layer can and cannot do for every input sequence; the findings go to the Problems dock</source>
+        <translation>Demostrar lo que la capa GEMMA puede y no puede hacer para cualquier secuencia de entradas; los resultados van al panel Problemas</translation>
+    </message>
+    <message>
+        <source>Verifying…</source>
+        <translation>Verificando…</translation>
+    </message>
+    <message>
+        <source>Verification failed: %1</source>
+        <translation>La verificación ha fallado: %1</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model changed</source>
+        <translation>Verificación cancelada: el modelo ha cambiado</translation>
+    </message>
+    <message>
+        <source>Verification finished: some properties do not hold (see Problems)</source>
+        <translation>Verificación terminada: algunas propiedades no se cumplen (ver Problemas)</translation>
+    </message>
+    <message>
+        <source>Verification finished: every property holds</source>
+        <translation>Verificación terminada: se cumplen todas las propiedades</translation>
+    </message>
+    <message>
+        <source>%1 counterexample</source>
+        <translation>contraejemplo %1</translation>
+    </message>
+    <message>
+        <source>Replay in Simulator</source>
+        <translation>Reproducir en el simulador</translation>
+    </message>
+    <message>
+        <source>Could not replay %1.</source>
+        <translation>No se ha podido reproducir %1.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -1094,6 +1186,22 @@
     <message>
         <source>Show or hide the information messages</source>
         <translation>Mostrar u ocultar los mensajes informativos</translation>
+    </message>
+    <message>
+        <source>Checks (%1)</source>
+        <translation>Comprobaciones (%1)</translation>
+    </message>
+    <message>
+        <source>Verification</source>
+        <translation>Verificación</translation>
+    </message>
+    <message>
+        <source>Verification (outdated)</source>
+        <translation>Verificación (obsoleta)</translation>
+    </message>
+    <message>
+        <source>Verification (%1)</source>
+        <translation>Verificación (%1)</translation>
     </message>
 </context>
 <context>
@@ -1913,6 +2021,89 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
         <translation>No hay variables que pegar: copie filas de nombre, tipo, valor inicial y comentario, separados por tabuladores.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VerificationPanel</name>
+    <message>
+        <source>&amp;Verify</source>
+        <translation>&amp;Verificar</translation>
+    </message>
+    <message>
+        <source>&amp;Show on Chart</source>
+        <translation>&amp;Mostrar en el diagrama</translation>
+    </message>
+    <message>
+        <source>&amp;Replay in Simulator</source>
+        <translation>&amp;Reproducir en el simulador</translation>
+    </message>
+    <message>
+        <source>Explore every input sequence of the GEMMA layer and report what cannot happen</source>
+        <translation>Explorar todas las secuencias de entradas de la capa GEMMA e indicar lo que no puede ocurrir</translation>
+    </message>
+    <message>
+        <source>Select the element of the finding on the chart</source>
+        <translation>Seleccionar el elemento del resultado en el diagrama</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Código</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Elemento</translation>
+    </message>
+    <message>
+        <source>Scans</source>
+        <translation>Ciclos</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Mensaje</translation>
+    </message>
+    <message>
+        <source>Scans of the counterexample, which the simulator can replay</source>
+        <translation>Ciclos del contraejemplo, que el simulador puede reproducir</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copiar</translation>
+    </message>
+    <message>
+        <source>Verifying…</source>
+        <translation>Verificando…</translation>
+    </message>
+    <message>
+        <source>Verification failed: %1.</source>
+        <translation>La verificación ha fallado: %1.</translation>
+    </message>
+    <message>
+        <source>Not verified yet.</source>
+        <translation>Aún no verificado.</translation>
+    </message>
+    <message>
+        <source>Model changed since verification: verify again to update the findings.</source>
+        <translation>El modelo ha cambiado desde la verificación: vuelva a verificar para actualizar los resultados.</translation>
+    </message>
+    <message>
+        <source>Some properties do not hold (%1 configurations explored).</source>
+        <translation>Algunas propiedades no se cumplen (%1 configuraciones exploradas).</translation>
+    </message>
+    <message>
+        <source>Every property holds; see the notes (%1 configurations explored).</source>
+        <translation>Se cumplen todas las propiedades; vea las notas (%1 configuraciones exploradas).</translation>
+    </message>
+    <message>
+        <source>Every property holds (%1 configurations explored).</source>
+        <translation>Se cumplen todas las propiedades (%1 configuraciones exploradas).</translation>
+    </message>
+    <message>
+        <source>The model changed since verification: verify again to replay</source>
+        <translation>El modelo ha cambiado desde la verificación: vuelva a verificar para reproducir</translation>
+    </message>
+    <message>
+        <source>Start the simulation and replay the scans that lead to the finding</source>
+        <translation>Iniciar la simulación y reproducir los ciclos que llevan al resultado</translation>
     </message>
 </context>
 <context>

@@ -157,6 +157,58 @@
         <source>Information</source>
         <translation>Information</translation>
     </message>
+    <message>
+        <source>The verification stopped at its limit of decision-diagram nodes: the model was not verified, and no property is claimed.</source>
+        <translation>La vérification s&apos;est arrêtée à sa limite de nœuds de diagramme de décision&#xa0;: le modèle n&apos;a pas été vérifié, aucune propriété n&apos;est affirmée.</translation>
+    </message>
+    <message>
+        <source>Step %1 can never become active: no effective transition leads to it.</source>
+        <translation>L&apos;étape %1 ne peut jamais devenir active&#xa0;: aucune transition effective n&apos;y mène.</translation>
+    </message>
+    <message>
+        <source>Step %1 can never become active: no situation reachable from the initial step lets %2 fire.</source>
+        <translation>L&apos;étape %1 ne peut jamais devenir active&#xa0;: aucune situation accessible depuis l&apos;étape initiale ne permet de franchir %2.</translation>
+    </message>
+    <message>
+        <source>Transition %1 can never fire: its condition is never TRUE in a situation reachable from the initial step.</source>
+        <translation>La transition %1 ne peut jamais être franchie&#xa0;: sa réceptivité n&apos;est TRUE dans aucune situation accessible depuis l&apos;étape initiale.</translation>
+    </message>
+    <message>
+        <source>Transition %1 can never fire: whenever its condition holds, a transition of higher priority fires first (%2).</source>
+        <translation>La transition %1 ne peut jamais être franchie&#xa0;: chaque fois que sa réceptivité est vraie, une transition plus prioritaire est franchie avant elle (%2).</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is always TRUE: no own transition of an F step can ever fire.</source>
+        <translation>La réceptivité de %1 est toujours TRUE&#xa0;: aucune transition propre d&apos;une étape F ne peut jamais être franchie.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is always TRUE when %3 is active: %2 can never fire.</source>
+        <translation>La réceptivité de %1 est toujours TRUE quand %3 est active&#xa0;: %2 ne peut jamais être franchie.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 can both be TRUE in the same scan: the priority decides, %1 fires.</source>
+        <translation>%1 et %2 peuvent être TRUE dans le même cycle&#xa0;: la priorité décide, %1 est franchie.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead to a situation from which the initial step can never become active again.</source>
+        <translation>Une fois %1 active, les entrées peuvent mener à une situation d&apos;où l&apos;étape initiale ne peut plus jamais redevenir active.</translation>
+    </message>
+    <message>
+        <source>Step %1 can get stuck: the inputs can lead to a situation in it from which no transition out of it can ever fire.</source>
+        <translation>L&apos;étape %1 peut se bloquer&#xa0;: les entrées peuvent mener à une situation où aucune de ses transitions de sortie ne peut plus jamais être franchie.</translation>
+    </message>
+    <message>
+        <source>The emergency stop D1 can never be entered from %1: the family transition F-&gt;D1 is not effective and %1 has no transition to D1.</source>
+        <translation>L&apos;arrêt d&apos;urgence D1 ne peut jamais être atteint depuis %1&#xa0;: la transition de famille F-&gt;D1 n&apos;est pas effective et %1 n&apos;a aucune transition vers D1.</translation>
+    </message>
+    <message>
+        <source>In some situations of %1 the emergency stop D1 cannot be entered in one scan, whatever the inputs: %2 cannot fire there.</source>
+        <translation>Dans certaines situations de %1, l&apos;arrêt d&apos;urgence D1 ne peut pas être atteint en un cycle, quelles que soient les entrées&#xa0;: %2 ne peut pas y être franchie.</translation>
+    </message>
+    <message>
+        <source>Not confirmed: a condition uses a comparison the verifier cannot decide, and the counterexample does not replay.</source>
+        <translation>Non confirmé&#xa0;: une réceptivité utilise une comparaison que le vérificateur ne sait pas trancher, et le contre-exemple ne se rejoue pas.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -947,6 +999,46 @@
         <source>Simulation: editing locked</source>
         <translation>Simulation&#xa0;: modification verrouillée</translation>
     </message>
+    <message>
+        <source>&amp;Verify</source>
+        <translation>&amp;Vérifier</translation>
+    </message>
+    <message>
+        <source>Prove what the GEMMA layer can and cannot do for every input sequence; the findings go to the Problems dock</source>
+        <translation>Prouver ce que la couche GEMMA peut et ne peut pas faire pour toute séquence d&apos;entrées&#xa0;; les résultats vont dans le panneau Problèmes</translation>
+    </message>
+    <message>
+        <source>Verifying…</source>
+        <translation>Vérification…</translation>
+    </message>
+    <message>
+        <source>Verification failed: %1</source>
+        <translation>Échec de la vérification&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model changed</source>
+        <translation>Vérification annulée&#xa0;: le modèle a changé</translation>
+    </message>
+    <message>
+        <source>Verification finished: some properties do not hold (see Problems)</source>
+        <translation>Vérification terminée&#xa0;: certaines propriétés ne sont pas satisfaites (voir Problèmes)</translation>
+    </message>
+    <message>
+        <source>Verification finished: every property holds</source>
+        <translation>Vérification terminée&#xa0;: toutes les propriétés sont satisfaites</translation>
+    </message>
+    <message>
+        <source>%1 counterexample</source>
+        <translation>contre-exemple %1</translation>
+    </message>
+    <message>
+        <source>Replay in Simulator</source>
+        <translation>Rejouer dans le simulateur</translation>
+    </message>
+    <message>
+        <source>Could not replay %1.</source>
+        <translation>Impossible de rejouer %1.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -1094,6 +1186,22 @@
     <message>
         <source>Show or hide the information messages</source>
         <translation>Afficher ou masquer les messages d&apos;information</translation>
+    </message>
+    <message>
+        <source>Checks (%1)</source>
+        <translation>Contrôles (%1)</translation>
+    </message>
+    <message>
+        <source>Verification</source>
+        <translation>Vérification</translation>
+    </message>
+    <message>
+        <source>Verification (outdated)</source>
+        <translation>Vérification (périmée)</translation>
+    </message>
+    <message>
+        <source>Verification (%1)</source>
+        <translation>Vérification (%1)</translation>
     </message>
 </context>
 <context>
@@ -1913,6 +2021,89 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
         <translation>Il n&apos;y a aucune variable à coller&#xa0;: copiez des lignes de nom, type, valeur initiale et commentaire, séparés par des tabulations.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VerificationPanel</name>
+    <message>
+        <source>&amp;Verify</source>
+        <translation>&amp;Vérifier</translation>
+    </message>
+    <message>
+        <source>&amp;Show on Chart</source>
+        <translation>&amp;Montrer sur le diagramme</translation>
+    </message>
+    <message>
+        <source>&amp;Replay in Simulator</source>
+        <translation>&amp;Rejouer dans le simulateur</translation>
+    </message>
+    <message>
+        <source>Explore every input sequence of the GEMMA layer and report what cannot happen</source>
+        <translation>Explorer toutes les séquences d&apos;entrées de la couche GEMMA et signaler ce qui ne peut pas arriver</translation>
+    </message>
+    <message>
+        <source>Select the element of the finding on the chart</source>
+        <translation>Sélectionner l&apos;élément du résultat sur le diagramme</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Code</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Élément</translation>
+    </message>
+    <message>
+        <source>Scans</source>
+        <translation>Cycles</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Message</translation>
+    </message>
+    <message>
+        <source>Scans of the counterexample, which the simulator can replay</source>
+        <translation>Cycles du contre-exemple, que le simulateur peut rejouer</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copier</translation>
+    </message>
+    <message>
+        <source>Verifying…</source>
+        <translation>Vérification…</translation>
+    </message>
+    <message>
+        <source>Verification failed: %1.</source>
+        <translation>Échec de la vérification&#xa0;: %1.</translation>
+    </message>
+    <message>
+        <source>Not verified yet.</source>
+        <translation>Pas encore vérifié.</translation>
+    </message>
+    <message>
+        <source>Model changed since verification: verify again to update the findings.</source>
+        <translation>Le modèle a changé depuis la vérification&#xa0;: vérifiez à nouveau pour mettre à jour les résultats.</translation>
+    </message>
+    <message>
+        <source>Some properties do not hold (%1 configurations explored).</source>
+        <translation>Certaines propriétés ne sont pas satisfaites (%1 configurations explorées).</translation>
+    </message>
+    <message>
+        <source>Every property holds; see the notes (%1 configurations explored).</source>
+        <translation>Toutes les propriétés sont satisfaites&#xa0;; voir les remarques (%1 configurations explorées).</translation>
+    </message>
+    <message>
+        <source>Every property holds (%1 configurations explored).</source>
+        <translation>Toutes les propriétés sont satisfaites (%1 configurations explorées).</translation>
+    </message>
+    <message>
+        <source>The model changed since verification: verify again to replay</source>
+        <translation>Le modèle a changé depuis la vérification&#xa0;: vérifiez à nouveau pour rejouer</translation>
+    </message>
+    <message>
+        <source>Start the simulation and replay the scans that lead to the finding</source>
+        <translation>Démarrer la simulation et rejouer les cycles qui mènent au résultat</translation>
     </message>
 </context>
 <context>

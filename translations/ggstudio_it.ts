@@ -157,6 +157,58 @@
         <source>Information</source>
         <translation>Informazione</translation>
     </message>
+    <message>
+        <source>The verification stopped at its limit of decision-diagram nodes: the model was not verified, and no property is claimed.</source>
+        <translation>La verifica si è fermata al suo limite di nodi del diagramma di decisione: il modello non è stato verificato e nessuna proprietà è garantita.</translation>
+    </message>
+    <message>
+        <source>Step %1 can never become active: no effective transition leads to it.</source>
+        <translation>La tappa %1 non può mai diventare attiva: nessuna transizione effettiva vi conduce.</translation>
+    </message>
+    <message>
+        <source>Step %1 can never become active: no situation reachable from the initial step lets %2 fire.</source>
+        <translation>La tappa %1 non può mai diventare attiva: nessuna situazione raggiungibile dalla tappa iniziale fa scattare %2.</translation>
+    </message>
+    <message>
+        <source>Transition %1 can never fire: its condition is never TRUE in a situation reachable from the initial step.</source>
+        <translation>La transizione %1 non può mai scattare: la sua condizione non è TRUE in nessuna situazione raggiungibile dalla tappa iniziale.</translation>
+    </message>
+    <message>
+        <source>Transition %1 can never fire: whenever its condition holds, a transition of higher priority fires first (%2).</source>
+        <translation>La transizione %1 non può mai scattare: ogni volta che la sua condizione è vera, scatta prima una transizione a priorità più alta (%2).</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is always TRUE: no own transition of an F step can ever fire.</source>
+        <translation>La condizione di %1 è sempre TRUE: nessuna transizione propria di una tappa F può mai scattare.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is always TRUE when %3 is active: %2 can never fire.</source>
+        <translation>La condizione di %1 è sempre TRUE quando %3 è attiva: %2 non può mai scattare.</translation>
+    </message>
+    <message>
+        <source>%1 and %2 can both be TRUE in the same scan: the priority decides, %1 fires.</source>
+        <translation>%1 e %2 possono essere entrambe TRUE nello stesso ciclo: decide la priorità, scatta %1.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead to a situation from which the initial step can never become active again.</source>
+        <translation>Una volta attiva %1, gli ingressi possono portare a una situazione da cui la tappa iniziale non può mai più diventare attiva.</translation>
+    </message>
+    <message>
+        <source>Step %1 can get stuck: the inputs can lead to a situation in it from which no transition out of it can ever fire.</source>
+        <translation>La tappa %1 può bloccarsi: gli ingressi possono portare a una situazione in cui nessuna delle sue transizioni uscenti può mai scattare.</translation>
+    </message>
+    <message>
+        <source>The emergency stop D1 can never be entered from %1: the family transition F-&gt;D1 is not effective and %1 has no transition to D1.</source>
+        <translation>L&apos;arresto di emergenza D1 non può mai essere raggiunto da %1: la transizione di famiglia F-&gt;D1 non è effettiva e %1 non ha transizioni verso D1.</translation>
+    </message>
+    <message>
+        <source>In some situations of %1 the emergency stop D1 cannot be entered in one scan, whatever the inputs: %2 cannot fire there.</source>
+        <translation>In alcune situazioni di %1 l&apos;arresto di emergenza D1 non può essere raggiunto in un ciclo, qualunque siano gli ingressi: %2 non vi può scattare.</translation>
+    </message>
+    <message>
+        <source>Not confirmed: a condition uses a comparison the verifier cannot decide, and the counterexample does not replay.</source>
+        <translation>Non confermato: una condizione usa un confronto che il verificatore non sa decidere, e il controesempio non si riproduce.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -947,6 +999,46 @@
         <source>Simulation: editing locked</source>
         <translation>Simulazione: modifica bloccata</translation>
     </message>
+    <message>
+        <source>&amp;Verify</source>
+        <translation>&amp;Verifica</translation>
+    </message>
+    <message>
+        <source>Prove what the GEMMA layer can and cannot do for every input sequence; the findings go to the Problems dock</source>
+        <translation>Dimostra ciò che il livello GEMMA può e non può fare per ogni sequenza di ingressi; i risultati vanno nel pannello Problemi</translation>
+    </message>
+    <message>
+        <source>Verifying…</source>
+        <translation>Verifica in corso…</translation>
+    </message>
+    <message>
+        <source>Verification failed: %1</source>
+        <translation>Verifica non riuscita: %1</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model changed</source>
+        <translation>Verifica annullata: il modello è cambiato</translation>
+    </message>
+    <message>
+        <source>Verification finished: some properties do not hold (see Problems)</source>
+        <translation>Verifica terminata: alcune proprietà non sono soddisfatte (vedi Problemi)</translation>
+    </message>
+    <message>
+        <source>Verification finished: every property holds</source>
+        <translation>Verifica terminata: tutte le proprietà sono soddisfatte</translation>
+    </message>
+    <message>
+        <source>%1 counterexample</source>
+        <translation>controesempio %1</translation>
+    </message>
+    <message>
+        <source>Replay in Simulator</source>
+        <translation>Riproduci nel simulatore</translation>
+    </message>
+    <message>
+        <source>Could not replay %1.</source>
+        <translation>Impossibile riprodurre %1.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -1094,6 +1186,22 @@
     <message>
         <source>Show or hide the information messages</source>
         <translation>Mostra o nascondi i messaggi informativi</translation>
+    </message>
+    <message>
+        <source>Checks (%1)</source>
+        <translation>Controlli (%1)</translation>
+    </message>
+    <message>
+        <source>Verification</source>
+        <translation>Verifica</translation>
+    </message>
+    <message>
+        <source>Verification (outdated)</source>
+        <translation>Verifica (superata)</translation>
+    </message>
+    <message>
+        <source>Verification (%1)</source>
+        <translation>Verifica (%1)</translation>
     </message>
 </context>
 <context>
@@ -1913,6 +2021,89 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
         <translation>Non ci sono variabili da incollare: copia righe con nome, tipo, valore iniziale e commento, separati da tabulazioni.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::VerificationPanel</name>
+    <message>
+        <source>&amp;Verify</source>
+        <translation>&amp;Verifica</translation>
+    </message>
+    <message>
+        <source>&amp;Show on Chart</source>
+        <translation>&amp;Mostra nel diagramma</translation>
+    </message>
+    <message>
+        <source>&amp;Replay in Simulator</source>
+        <translation>&amp;Riproduci nel simulatore</translation>
+    </message>
+    <message>
+        <source>Explore every input sequence of the GEMMA layer and report what cannot happen</source>
+        <translation>Esplora ogni sequenza di ingressi del livello GEMMA e segnala ciò che non può accadere</translation>
+    </message>
+    <message>
+        <source>Select the element of the finding on the chart</source>
+        <translation>Seleziona l&apos;elemento del risultato nel diagramma</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Codice</translation>
+    </message>
+    <message>
+        <source>Element</source>
+        <translation>Elemento</translation>
+    </message>
+    <message>
+        <source>Scans</source>
+        <translation>Cicli</translation>
+    </message>
+    <message>
+        <source>Message</source>
+        <translation>Messaggio</translation>
+    </message>
+    <message>
+        <source>Scans of the counterexample, which the simulator can replay</source>
+        <translation>Cicli del controesempio, che il simulatore può riprodurre</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copia</translation>
+    </message>
+    <message>
+        <source>Verifying…</source>
+        <translation>Verifica in corso…</translation>
+    </message>
+    <message>
+        <source>Verification failed: %1.</source>
+        <translation>Verifica non riuscita: %1.</translation>
+    </message>
+    <message>
+        <source>Not verified yet.</source>
+        <translation>Non ancora verificato.</translation>
+    </message>
+    <message>
+        <source>Model changed since verification: verify again to update the findings.</source>
+        <translation>Il modello è cambiato dalla verifica: verifica di nuovo per aggiornare i risultati.</translation>
+    </message>
+    <message>
+        <source>Some properties do not hold (%1 configurations explored).</source>
+        <translation>Alcune proprietà non sono soddisfatte (%1 configurazioni esplorate).</translation>
+    </message>
+    <message>
+        <source>Every property holds; see the notes (%1 configurations explored).</source>
+        <translation>Tutte le proprietà sono soddisfatte; vedi le note (%1 configurazioni esplorate).</translation>
+    </message>
+    <message>
+        <source>Every property holds (%1 configurations explored).</source>
+        <translation>Tutte le proprietà sono soddisfatte (%1 configurazioni esplorate).</translation>
+    </message>
+    <message>
+        <source>The model changed since verification: verify again to replay</source>
+        <translation>Il modello è cambiato dalla verifica: verifica di nuovo per riprodurre</translation>
+    </message>
+    <message>
+        <source>Start the simulation and replay the scans that lead to the finding</source>
+        <translation>Avvia la simulazione e riproduci i cicli che portano al risultato</translation>
     </message>
 </context>
 <context>

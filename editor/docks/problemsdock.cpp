@@ -2,8 +2,10 @@
 
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/docks/verificationpanel.h"
 #include "editor/document.h"
 #include "editor/selection.h"
+#include "editor/verificationrunner.h"
 
 #include <QAction>
 #include <QClipboard>
@@ -12,9 +14,12 @@
 #include <QHeaderView>
 #include <QScrollBar>
 #include <QStyle>
+#include <QTabWidget>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace editor {
 
@@ -71,10 +76,17 @@ QString keyOf(const core::Diagnostic& diagnostic)
 } // namespace
 
 ProblemsDock::ProblemsDock(Document* document, Selection* selection, QWidget* parent)
+    : ProblemsDock(document, selection, nullptr, parent)
+{
+}
+
+ProblemsDock::ProblemsDock(Document* document, Selection* selection, VerificationRunner* verification,
+                           QWidget* parent)
     : QDockWidget(tr("Problems"), parent)
     , m_document(document)
     , m_selection(selection)
     , m_view(new QTreeWidget)
+    , m_verification(verification)
 {
     setObjectName(QStringLiteral("problemsDock"));
 
@@ -113,7 +125,19 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, QWidget* pa
     m_view->addAction(copyAction);
     connect(m_view, &QTreeWidget::itemActivated, this, &ProblemsDock::activate);
     layout->addWidget(m_view, 1);
-    setWidget(content);
+    if (m_verification) {
+        m_tabs = new QTabWidget(this);
+        m_tabs->setObjectName(QStringLiteral("problemsTabs"));
+        m_tabs->setDocumentMode(true);
+        m_verificationPanel = new VerificationPanel(m_verification, m_selection);
+        m_tabs->addTab(content, QString());
+        m_tabs->addTab(m_verificationPanel, QString());
+        connect(m_verification, &VerificationRunner::finished, this, &ProblemsDock::updateTabTexts);
+        connect(m_verification, &VerificationRunner::staleChanged, this, &ProblemsDock::updateTabTexts);
+        setWidget(m_tabs);
+    } else {
+        setWidget(content);
+    }
 
     connect(m_document, &Document::diagnosticsChanged, this, &ProblemsDock::refresh);
     connect(m_document, &Document::modelReset, this, &ProblemsDock::refresh);
@@ -194,6 +218,36 @@ void ProblemsDock::updateFilterButtons()
     m_errorsButton->setToolTip(tr("Show or hide the errors"));
     m_warningsButton->setToolTip(tr("Show or hide the warnings"));
     m_infoButton->setToolTip(tr("Show or hide the information messages"));
+    updateTabTexts();
+}
+
+void ProblemsDock::updateTabTexts()
+{
+    if (!m_tabs)
+        return;
+    const std::size_t diagnostics = m_document->diagnostics().size();
+    m_tabs->setTabText(0, tr("Checks (%1)").arg(diagnostics));
+    const core::VerificationResult& result = m_verification->result();
+    QString verification = tr("Verification");
+    if (m_verification->hasResult())
+        verification = m_verification->isStale() ? tr("Verification (outdated)")
+                                                  : tr("Verification (%1)").arg(result.findings.size());
+    m_tabs->setTabText(1, verification);
+    // The worst severity found, at a glance.
+    QIcon icon;
+    if (m_verification->hasResult() && !result.findings.empty()) {
+        core::Severity worst = core::Severity::Info;
+        for (const core::VerificationFinding& finding : result.findings)
+            worst = std::min(worst, finding.severity);
+        icon = severityIcon(worst, style());
+    }
+    m_tabs->setTabIcon(1, icon);
+}
+
+void ProblemsDock::showVerification()
+{
+    if (m_tabs)
+        m_tabs->setCurrentWidget(m_verificationPanel);
 }
 
 void ProblemsDock::applyFilter()

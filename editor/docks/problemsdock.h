@@ -4,6 +4,7 @@
 
 #include <QDockWidget>
 
+class QTabWidget;
 class QToolButton;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -12,11 +13,15 @@ namespace editor {
 
 class Document;
 class Selection;
+class VerificationPanel;
+class VerificationRunner;
 
 // Every diagnostic of the model (severity, code, element, message), with a
 // filter button per severity that shows its count. Double-clicking (or
 // Enter on) a problem selects its element and asks for the field at fault,
-// which the Step, Transition and Variables docks focus.
+// which the Step, Transition and Variables docks focus. Given a
+// VerificationRunner, the live checks and the verification findings are two
+// categories, each on its own tab (VerificationPanel).
 class ProblemsDock : public QDockWidget {
     Q_OBJECT
 
@@ -24,8 +29,15 @@ public:
     enum Column { CodeColumn, ElementColumn, MessageColumn };
 
     ProblemsDock(Document* document, Selection* selection, QWidget* parent = nullptr);
+    ProblemsDock(Document* document, Selection* selection, VerificationRunner* verification,
+                 QWidget* parent = nullptr);
 
     QTreeWidget* view() const { return m_view; }
+    // nullptr without a VerificationRunner.
+    VerificationPanel* verificationPanel() const { return m_verificationPanel; }
+    QTabWidget* tabs() const { return m_tabs; }
+    // Brings the Verification tab to the front.
+    void showVerification();
     // Selects the element of a problem row and asks to focus its field.
     void activate(QTreeWidgetItem* item);
 
@@ -33,6 +45,7 @@ private:
     QToolButton* createFilterButton(core::Severity severity, const QString& objectName);
     void refresh();
     void updateFilterButtons();
+    void updateTabTexts();
     void applyFilter();
     void copySelected();
     bool isShown(core::Severity severity) const;
@@ -43,6 +56,9 @@ private:
     QToolButton* m_errorsButton = nullptr;
     QToolButton* m_warningsButton = nullptr;
     QToolButton* m_infoButton = nullptr;
+    VerificationRunner* m_verification = nullptr;
+    VerificationPanel* m_verificationPanel = nullptr;
+    QTabWidget* m_tabs = nullptr;
 };
 
 } // namespace editor

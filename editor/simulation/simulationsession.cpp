@@ -355,10 +355,15 @@ bool SimulationSession::startReplay(const QString& path, QString* error)
         return false;
     }
     const QByteArray text = file.readAll();
-    const QString fileName = QFileInfo(path).fileName();
-    core::ScenarioParseResult parsed =
-        core::parseScenario(std::string_view(text.constData(), static_cast<std::size_t>(text.size())),
-                            fileName.toStdString());
+    return startReplayText(std::string_view(text.constData(), static_cast<std::size_t>(text.size())),
+                           QFileInfo(path).fileName(), error);
+}
+
+bool SimulationSession::startReplayText(std::string_view text, const QString& fileName, QString* error)
+{
+    if (!isActive())
+        return false;
+    core::ScenarioParseResult parsed = core::parseScenario(text, fileName.toStdString());
     std::vector<core::ScenarioError> errors = parsed.errors;
     if (parsed.ok())
         errors = core::validateScenario(parsed.scenario, *m_simulator);

@@ -11,6 +11,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 class QTimer;
@@ -98,6 +99,9 @@ public:
     // Complete automatic); run() or stepOnce() plays it. False with the
     // problems when the file cannot be read or does not fit the model.
     bool startReplay(const QString& path, QString* error);
+    // The same from scenario text (a verification counterexample);
+    // `fileName` names it in messages and in the Simulation dock.
+    bool startReplayText(std::string_view text, const QString& fileName, QString* error);
     ReplayState replayState() const { return m_replayState; }
     bool isReplaying() const { return m_replayState == ReplayState::Running; }
     QString replayFileName() const { return m_replayFile; }

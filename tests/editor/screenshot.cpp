@@ -1,6 +1,6 @@
 // ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... [--show-hidden] [--language CODE]
 //                     [--export-chart FILE.svg|png|pdf] [--dialog ACTION]
-//                     [--simulate] [--input NAME=VALUE]... [--scans N] [--simulation-tab INDEX]
+//                     [--simulate] [--input NAME=VALUE]... [--scans N] [--simulation-tab INDEX] [--verify]
 //
 // Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
 // with a step or transition selected, a dock brought to the front) and
@@ -12,6 +12,7 @@
 // saves a picture of the first dialog it opens instead of the window. --simulate starts the simulation
 // mode, sets the --input values (before the first scan) and runs N scans. Settings go to a temporary folder,
 // so the picture shows the default layout whatever the user's settings.
+// --verify runs Simulation > Verify and waits for its findings.
 
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
@@ -20,6 +21,7 @@
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/verificationrunner.h"
 
 #include <QAction>
 #include <QApplication>
@@ -39,7 +41,7 @@ int usage()
 {
     std::fputs("usage: ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... "
                "[--show-hidden] [--language CODE] [--export-chart FILE] [--dialog ACTION] "
-               "[--simulate] [--input NAME=VALUE]... [--scans N] [--simulation-tab INDEX]\n",
+               "[--simulate] [--input NAME=VALUE]... [--scans N] [--simulation-tab INDEX] [--verify]\n",
                stderr);
     return 2;
 }
@@ -97,6 +99,7 @@ int main(int argc, char* argv[])
     QString dialogAction;
     bool showHidden = false;
     bool simulate = false;
+    bool verify = false;
     QStringList inputs;
     int scans = 0;
     int simulationTab = 0;
@@ -116,6 +119,8 @@ int main(int argc, char* argv[])
             showHidden = true;
         else if (args[i] == QLatin1String("--simulate"))
             simulate = true;
+        else if (args[i] == QLatin1String("--verify"))
+            verify = true;
         else if (args[i] == QLatin1String("--input") && i + 1 < args.size())
             inputs << args[++i];
         else if (args[i] == QLatin1String("--scans") && i + 1 < args.size())
@@ -160,6 +165,14 @@ int main(int argc, char* argv[])
         }
         dock->show();
         dock->raise();
+    }
+    if (verify) {
+        window.findChild<QAction*>(QStringLiteral("verifyAction"))->trigger();
+        editor::VerificationRunner* runner = window.verificationRunner();
+        if (!QTest::qWaitFor([runner] { return !runner->isRunning(); }, 120000)) {
+            std::fputs("ggstudio_screenshot: the verification did not finish\n", stderr);
+            return 1;
+        }
     }
     if (simulate) {
         window.findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();

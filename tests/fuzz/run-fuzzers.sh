@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs every libFuzzer target of a fuzz build for SECONDS each, starting from
-# a copy of the seed corpus (the seeds in the repository stay untouched).
+# Runs every libFuzzer target of a fuzz build for SECONDS each, all at once
+# (the time is wall-clock, so the whole run takes SECONDS), starting from a
+# copy of the seed corpus (the seeds in the repository stay untouched).
 # Exits non-zero when a target crashes, leaks, times out or is missing.
 #
 #   CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DGGSTUDIO_FUZZ=ON -DGGSTUDIO_BUILD_TESTS=ON
@@ -22,17 +23,19 @@ here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/ggstudio-fuzz.XXXXXX") || exit 2
 failed=0
 
-# run TARGET MAX_LEN DICTIONARY
+# run TARGET MAX_LEN DICTIONARY: prints its report into $work/TARGET/report
+# and leaves $work/TARGET/failed when the target failed.
 run() {
     local target=$1 max_len=$2 dictionary=$3
     local binary=$build_dir/tests/fuzz/$target
     local dir=$work/$target
+    mkdir -p "$dir/corpus" "$dir/artifacts"
+    exec >"$dir/report"
     if [ ! -x "$binary" ]; then
         echo "!! $target: no $binary (configure with -DGGSTUDIO_FUZZ=ON and build it)"
-        failed=1
+        touch "$dir/failed"
         return
     fi
-    mkdir -p "$dir/corpus" "$dir/artifacts"
     cp "$here/corpus/$target/"* "$dir/corpus/"
     echo "== $target: ${duration}s"
     # -max_len: above the largest seed (a full model file is 6-14 KB), far
@@ -44,13 +47,20 @@ run() {
     else
         echo "!! $target failed: log $dir/log.txt, failing input(s) in $dir/artifacts/"
         grep -E -A12 'ERROR: |runtime error|deadly signal|Test unit written' "$dir/log.txt" | head -40 | sed 's/^/   /'
-        failed=1
+        touch "$dir/failed"
     fi
 }
 
-run fuzz_native_loader 32768 json.dict
-run fuzz_gggenerator_importer 32768 json.dict
-run fuzz_condition_parser 2048 conditions.dict
+targets=(fuzz_native_loader fuzz_gggenerator_importer fuzz_condition_parser)
+run fuzz_native_loader 32768 json.dict &
+run fuzz_gggenerator_importer 32768 json.dict &
+run fuzz_condition_parser 2048 conditions.dict &
+wait
+
+for target in "${targets[@]}"; do
+    cat "$work/$target/report"
+    [ -e "$work/$target/failed" ] && failed=1
+done
 
 if [ $failed -eq 0 ]; then
     rm -rf "$work"

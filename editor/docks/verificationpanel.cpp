@@ -1,0 +1,233 @@
+#include "editor/docks/verificationpanel.h"
+
+#include "editor/diagnostictext.h"
+#include "editor/docks/elementlabels.h"
+#include "editor/selection.h"
+#include "editor/verificationrunner.h"
+
+#include <QAction>
+#include <QClipboard>
+#include <QGuiApplication>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QStyle>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <numeric>
+
+namespace editor {
+
+namespace {
+
+constexpr int kIndexRole = Qt::UserRole;
+
+QString elementText(const std::string& id)
+{
+    const QString text = QString::fromStdString(id);
+    return text.contains(QLatin1String("->")) ? transitionLabel(text) : text;
+}
+
+QString elementsText(const core::VerificationFinding& finding)
+{
+    QStringList parts;
+    for (const std::string& id : finding.elements)
+        parts << elementText(id);
+    return parts.join(QStringLiteral(", "));
+}
+
+ElementRef elementRef(const std::string& id)
+{
+    const QString text = QString::fromStdString(id);
+    return text.contains(QLatin1String("->")) ? ElementRef::transition(text) : ElementRef::step(text);
+}
+
+QToolButton* toolButton(QAction* action, QWidget* parent)
+{
+    auto* button = new QToolButton(parent);
+    button->setDefaultAction(action);
+    button->setAutoRaise(true);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    return button;
+}
+
+} // namespace
+
+VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* selection, QWidget* parent)
+    : QWidget(parent)
+    , m_runner(runner)
+    , m_selection(selection)
+    , m_view(new QTreeWidget(this))
+    , m_statusLabel(new QLabel(this))
+    , m_verifyAction(new QAction(tr("&Verify"), this))
+    , m_showAction(new QAction(tr("&Show on Chart"), this))
+    , m_replayAction(new QAction(tr("&Replay in Simulator"), this))
+{
+    Q_ASSERT(runner && selection);
+    setObjectName(QStringLiteral("verificationPanel"));
+    m_verifyAction->setObjectName(QStringLiteral("panelVerifyAction"));
+    m_verifyAction->setToolTip(tr("Explore every input sequence of the GEMMA layer and report what cannot happen"));
+    m_showAction->setObjectName(QStringLiteral("showOnChartAction"));
+    m_showAction->setToolTip(tr("Select the element of the finding on the chart"));
+    m_replayAction->setObjectName(QStringLiteral("replayCounterexampleAction"));
+    connect(m_verifyAction, &QAction::triggered, m_runner, &VerificationRunner::start);
+    connect(m_showAction, &QAction::triggered, this, [this] { showOnChart(m_view->currentItem()); });
+    connect(m_replayAction, &QAction::triggered, this, [this] { replay(m_view->currentItem()); });
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    auto* bar = new QHBoxLayout;
+    bar->setContentsMargins(4, 2, 4, 2);
+    bar->setSpacing(4);
+    auto* verifyButton = toolButton(m_verifyAction, this);
+    verifyButton->setObjectName(QStringLiteral("verifyButton"));
+    bar->addWidget(verifyButton);
+    m_statusLabel->setObjectName(QStringLiteral("verificationStatus"));
+    m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // A long status must not widen the dock: it is cut, and the tooltip has it whole.
+    m_statusLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    bar->addWidget(m_statusLabel, 1);
+    bar->addWidget(toolButton(m_showAction, this));
+    bar->addWidget(toolButton(m_replayAction, this));
+    layout->addLayout(bar);
+
+    m_view->setObjectName(QStringLiteral("verificationView"));
+    m_view->setColumnCount(4);
+    m_view->setHeaderLabels({tr("Code"), tr("Element"), tr("Scans"), tr("Message")});
+    m_view->headerItem()->setToolTip(ScansColumn, tr("Scans of the counterexample, which the simulator can replay"));
+    m_view->setRootIsDecorated(false);
+    m_view->setUniformRowHeights(true);
+    m_view->setAllColumnsShowFocus(true);
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_view->header()->setStretchLastSection(true);
+    m_view->header()->resizeSection(CodeColumn, 80);
+    m_view->header()->resizeSection(ElementColumn, 110);
+    m_view->header()->resizeSection(ScansColumn, 50);
+    m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
+    auto* separator = new QAction(m_view);
+    separator->setSeparator(true);
+    auto* copyAction = new QAction(tr("&Copy"), m_view);
+    connect(copyAction, &QAction::triggered, this, &VerificationPanel::copySelected);
+    m_view->addActions({m_showAction, m_replayAction, separator, copyAction});
+    connect(m_view, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) { showOnChart(item); });
+    connect(m_view, &QTreeWidget::currentItemChanged, this, &VerificationPanel::updateActions);
+    layout->addWidget(m_view, 1);
+
+    connect(m_runner, &VerificationRunner::started, this, &VerificationPanel::refreshStatus);
+    connect(m_runner, &VerificationRunner::cancelled, this, &VerificationPanel::refreshStatus);
+    connect(m_runner, &VerificationRunner::finished, this, &VerificationPanel::refresh);
+    connect(m_runner, &VerificationRunner::staleChanged, this, &VerificationPanel::refresh);
+    refresh();
+}
+
+int VerificationPanel::findingIndex(const QTreeWidgetItem* item)
+{
+    return item ? item->data(0, kIndexRole).toInt() : -1;
+}
+
+void VerificationPanel::refresh()
+{
+    m_view->clear();
+    const std::vector<core::VerificationFinding>& findings = m_runner->result().findings;
+    // A stale finding is greyed: it describes the model as it was.
+    const bool stale = m_runner->isStale();
+    const QBrush grey = palette().brush(QPalette::Disabled, QPalette::Text);
+    // Errors first: the core orders by code, and the violations matter most.
+    std::vector<std::size_t> order(findings.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return findings[a].severity < findings[b].severity; });
+    QList<QTreeWidgetItem*> items;
+    for (std::size_t i : order) {
+        const core::VerificationFinding& finding = findings[i];
+        const QString message = verificationText(finding);
+        const QString scans =
+            finding.counterexample ? QString::number(finding.counterexample->scans) : QString();
+        auto* item = new QTreeWidgetItem(
+            {QString::fromStdString(finding.code), elementsText(finding), scans, message});
+        item->setIcon(CodeColumn, severityIcon(finding.severity, style()));
+        item->setToolTip(CodeColumn, severityText(finding.severity));
+        item->setToolTip(ElementColumn, item->text(ElementColumn));
+        item->setToolTip(MessageColumn, message);
+        item->setTextAlignment(ScansColumn, Qt::AlignRight | Qt::AlignVCenter);
+        item->setData(0, kIndexRole, static_cast<int>(i));
+        for (int column = 0; stale && column < m_view->columnCount(); ++column)
+            item->setForeground(column, grey);
+        items << item;
+    }
+    m_view->addTopLevelItems(items);
+    if (!items.isEmpty())
+        m_view->setCurrentItem(items.front(), 0, QItemSelectionModel::NoUpdate);
+    refreshStatus();
+    updateActions();
+}
+
+void VerificationPanel::refreshStatus()
+{
+    QString text;
+    if (m_runner->isRunning()) {
+        text = tr("Verifying…");
+    } else if (!m_runner->failure().isEmpty()) {
+        text = tr("Verification failed: %1.").arg(m_runner->failure());
+    } else if (!m_runner->hasResult()) {
+        text = tr("Not verified yet.");
+    } else if (m_runner->isStale()) {
+        text = tr("Model changed since verification: verify again to update the findings.");
+    } else {
+        const core::VerificationResult& result = m_runner->result();
+        const QString configurations = QString::number(static_cast<qulonglong>(result.configurations));
+        if (result.violated())
+            text = tr("Some properties do not hold (%1 configurations explored).").arg(configurations);
+        else if (!result.findings.empty())
+            text = tr("Every property holds; see the notes (%1 configurations explored).").arg(configurations);
+        else
+            text = tr("Every property holds (%1 configurations explored).").arg(configurations);
+    }
+    m_statusLabel->setText(text);
+    m_statusLabel->setToolTip(text);
+}
+
+void VerificationPanel::updateActions()
+{
+    const core::VerificationFinding* finding = m_runner->finding(findingIndex(m_view->currentItem()));
+    m_showAction->setEnabled(finding && !finding->elements.empty());
+    // A stale counterexample may not fit the model any more.
+    m_replayAction->setEnabled(finding && finding->counterexample && !m_runner->isStale());
+    m_replayAction->setToolTip(m_runner->isStale()
+                                   ? tr("The model changed since verification: verify again to replay")
+                                   : tr("Start the simulation and replay the scans that lead to the finding"));
+}
+
+void VerificationPanel::showOnChart(const QTreeWidgetItem* item)
+{
+    const core::VerificationFinding* finding = m_runner->finding(findingIndex(item));
+    if (finding && !finding->elements.empty())
+        m_selection->select(elementRef(finding->elements.front()));
+}
+
+void VerificationPanel::replay(const QTreeWidgetItem* item)
+{
+    const int index = findingIndex(item);
+    const core::VerificationFinding* finding = m_runner->finding(index);
+    if (finding && finding->counterexample && !m_runner->isStale())
+        emit replayRequested(index);
+}
+
+void VerificationPanel::copySelected()
+{
+    QStringList lines;
+    for (int i = 0; i < m_view->topLevelItemCount(); ++i) {
+        const QTreeWidgetItem* item = m_view->topLevelItem(i);
+        if (item->isSelected())
+            lines << QStringLiteral("%1\t%2\t%3")
+                         .arg(item->text(CodeColumn), item->text(ElementColumn), item->text(MessageColumn));
+    }
+    if (!lines.isEmpty())
+        QGuiApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));
+}
+
+} // namespace editor

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <QWidget>
+
+class QAction;
+class QLabel;
+class QToolButton;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace editor {
+
+class Selection;
+class VerificationRunner;
+
+// The Verification category of the Problems dock: a Verify button, what the
+// last run found (severity, code, elements, counterexample length, message;
+// errors first)
+// and, for the current finding, Show on Chart (selects its first element)
+// and Replay in Simulator (asked of the window through replayRequested()).
+// After a change of the model the findings stay, greyed, with a note, until
+// the next run.
+class VerificationPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    enum Column { CodeColumn, ElementColumn, ScansColumn, MessageColumn };
+
+    VerificationPanel(VerificationRunner* runner, Selection* selection, QWidget* parent = nullptr);
+
+    QTreeWidget* view() const { return m_view; }
+    QLabel* statusLabel() const { return m_statusLabel; }
+    QAction* verifyAction() const { return m_verifyAction; }
+    QAction* showOnChartAction() const { return m_showAction; }
+    QAction* replayAction() const { return m_replayAction; }
+
+    // The index of the row's finding in the runner's result; -1 for none.
+    static int findingIndex(const QTreeWidgetItem* item);
+    void showOnChart(const QTreeWidgetItem* item);
+    void replay(const QTreeWidgetItem* item);
+
+signals:
+    // The user asked to replay the counterexample of this finding.
+    void replayRequested(int findingIndex);
+
+private:
+    void refresh();
+    void refreshStatus();
+    void updateActions();
+    void copySelected();
+
+    VerificationRunner* m_runner;
+    Selection* m_selection;
+    QTreeWidget* m_view;
+    QLabel* m_statusLabel;
+    QAction* m_verifyAction;
+    QAction* m_showAction;
+    QAction* m_replayAction;
+};
+
+} // namespace editor

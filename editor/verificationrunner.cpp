@@ -1,0 +1,147 @@
+#include "editor/verificationrunner.h"
+
+#include "editor/document.h"
+
+#include "core/model.h"
+
+#include <QThread>
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <new>
+
+namespace editor {
+
+// What one run shares with its thread: the thread only reads `model` and
+// `cancelled` and writes `result` or `failure`, which the GUI thread reads
+// after the thread finished.
+struct VerificationRunner::Job {
+    explicit Job(const core::Model& m)
+        : model(m)
+    {
+    }
+
+    core::Model model;
+    std::atomic<bool> cancelled{false};
+    core::VerificationResult result;
+    std::string failure;
+};
+
+VerificationRunner::VerificationRunner(Document* document, QObject* parent)
+    : QObject(parent)
+    , m_document(document)
+{
+    Q_ASSERT(document);
+    connect(m_document, &Document::modelReset, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::stepChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::transitionChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::variableChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::variablesChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::settingsChanged, this, &VerificationRunner::onModelChanged);
+}
+
+VerificationRunner::~VerificationRunner()
+{
+    // The verifier polls `cancelled`, so the threads end soon.
+    for (const Worker& worker : m_workers)
+        worker.job->cancelled = true;
+    for (const Worker& worker : m_workers) {
+        worker.thread->wait();
+        delete worker.thread;
+    }
+}
+
+void VerificationRunner::start()
+{
+    const bool wasRunning = isRunning();
+    if (wasRunning)
+        m_current->cancelled = true;
+    auto job = std::make_shared<Job>(m_document->model());
+    m_current = job;
+    QThread* thread = QThread::create([job] { runJob(job); });
+    thread->setObjectName(QStringLiteral("verification"));
+    // Queued to this thread: the worker thread emits finished().
+    connect(thread, &QThread::finished, this, [this, thread] { onThreadFinished(thread); });
+    m_workers.push_back({thread, job});
+    if (wasRunning)
+        emit cancelled();
+    thread->start(QThread::LowPriority);
+    emit started();
+}
+
+void VerificationRunner::cancel()
+{
+    if (!isRunning())
+        return;
+    m_current->cancelled = true;
+    m_current.reset();
+    emit cancelled();
+}
+
+const core::VerificationResult& VerificationRunner::result() const
+{
+    static const core::VerificationResult empty;
+    return m_result ? *m_result : empty;
+}
+
+const core::VerificationFinding* VerificationRunner::finding(int index) const
+{
+    const std::vector<core::VerificationFinding>& findings = result().findings;
+    if (index < 0 || static_cast<std::size_t>(index) >= findings.size())
+        return nullptr;
+    return &findings[static_cast<std::size_t>(index)];
+}
+
+void VerificationRunner::onModelChanged()
+{
+    cancel();
+    if (m_result && !m_stale) {
+        m_stale = true;
+        emit staleChanged(true);
+    }
+}
+
+void VerificationRunner::onThreadFinished(QThread* thread)
+{
+    const auto it = std::find_if(m_workers.begin(), m_workers.end(),
+                                 [thread](const Worker& worker) { return worker.thread == thread; });
+    if (it == m_workers.end())
+        return;
+    const std::shared_ptr<Job> job = it->job;
+    m_workers.erase(it);
+    thread->deleteLater();
+    if (job != m_current)
+        return; // abandoned
+    m_current.reset();
+    if (job->result.cancelled)
+        return; // cancel() already said so
+    const bool wasStale = m_stale;
+    if (job->failure.empty()) {
+        m_result = std::move(job->result);
+        m_failure.clear();
+        m_stale = false;
+    } else {
+        m_failure = QString::fromStdString(job->failure);
+    }
+    emit finished();
+    if (wasStale != m_stale)
+        emit staleChanged(m_stale);
+}
+
+void VerificationRunner::runJob(const std::shared_ptr<Job>& job)
+{
+    core::VerificationOptions options;
+    options.cancelled = [job] { return job->cancelled.load(std::memory_order_relaxed); };
+    try {
+        job->result = core::verifyModel(job->model, options);
+    } catch (const std::bad_alloc&) {
+        job->failure = "not enough memory";
+    } catch (const std::exception& e) {
+        job->failure = e.what();
+    }
+    if (job->cancelled)
+        job->result.cancelled = true;
+}
+
+} // namespace editor
