@@ -602,7 +602,8 @@ TEST_CASE("The symbolic exploration agrees with an explicit one on random models
     int compared = 0;
     int withStuck = 0;
     int withNoReturn = 0;
-    for (int round = 0; round < 40; ++round) {
+    // 12 models: a minute under the sanitizers; the explicit search is the slow side.
+    for (int round = 0; round < 12; ++round) {
         const core::Model model = randomModel(random);
         const Explicit truth = exploreExplicitly(model, 3000);
         if (!truth.complete)
@@ -626,7 +627,7 @@ TEST_CASE("The symbolic exploration agrees with an explicit one on random models
             CHECK(finding.counterexample->confirmed);
         }
     }
-    CHECK(compared >= 30);
+    CHECK(compared >= 10);
     // The sample exercises the interesting answers, not only empty sets.
     CHECK(withStuck >= 3);
     CHECK(withNoReturn >= 3);
