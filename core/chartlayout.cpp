@@ -61,7 +61,7 @@ namespace {
 // over the full height. docs/chart-layout.md explains the choices.
 
 constexpr Rect kSceneRect{0, 0, 1500, 960};
-constexpr double kTitleWidth = 240;
+constexpr double kTitleWidth = 360; // room for the longest translated family title
 constexpr double kTitleHeight = 20;
 constexpr double kTitleInset = 8;
 

@@ -5,6 +5,7 @@
 #include "editor/statenames.h"
 
 #include <QPainter>
+#include <QtMath>
 
 namespace editor {
 
@@ -37,7 +38,9 @@ void FrameItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
 
     painter->setPen(chartstyle::frameBorderColor(m_family).darker(150));
     painter->setFont(chartstyle::titleFont());
-    painter->drawText(m_titleRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, title());
+    // Elided rather than cut mid-letter, should a translation be longer still.
+    const QString text = painter->fontMetrics().elidedText(title(), Qt::ElideRight, qFloor(m_titleRect.width()));
+    painter->drawText(m_titleRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, text);
 }
 
 } // namespace editor
