@@ -175,16 +175,6 @@ bool isVariableNamed(const cond::Expression& expression, int index, std::string_
     return node.kind == cond::NodeKind::Variable && equalsIgnoreCase(node.text, name);
 }
 
-// `X` or `NOT X` directly under = or <>: `X = FALSE` means NOT X, so a token
-// standing for X there would capture the opposite of what the condition waits for.
-bool isComparedOperand(const cond::Expression& expression, int index, std::string_view name)
-{
-    const cond::Node& node = expression.at(index);
-    if (node.kind == cond::NodeKind::Unary && node.unaryOp == cond::UnaryOp::Not)
-        return isVariableNamed(expression, node.operand, name);
-    return isVariableNamed(expression, index, name);
-}
-
 TokenUse tokenUse(const cond::Expression& expression, const std::vector<cond::Literal>& literals,
                   std::string_view name)
 {
@@ -195,13 +185,7 @@ TokenUse tokenUse(const cond::Expression& expression, const std::vector<cond::Li
     }
     for (int index : cond::variableNodes(expression))
         use.occurs = use.occurs || isVariableNamed(expression, index, name);
-    for (const cond::Node& node : expression.nodes) {
-        const bool comparison = node.kind == cond::NodeKind::Binary
-            && (node.binaryOp == cond::BinaryOp::Equal || node.binaryOp == cond::BinaryOp::NotEqual);
-        if (comparison && (isComparedOperand(expression, node.left, name)
-                           || isComparedOperand(expression, node.right, name)))
-            use.compared = true;
-    }
+    use.compared = cond::isComparedWithEquality(expression, name);
     return use;
 }
 

@@ -481,4 +481,35 @@ bool needsParenthesesBeforeAnd(const Expression& expression, const PrintOptions&
     return root.kind == NodeKind::Binary && (root.binaryOp == BinaryOp::Or || root.binaryOp == BinaryOp::Xor);
 }
 
+namespace {
+
+bool isVariableNamed(const Expression& expression, int index, std::string_view name)
+{
+    const Node& node = expression.at(index);
+    return node.kind == NodeKind::Variable && equalsIgnoreCase(node.text, name);
+}
+
+bool isEqualityOperand(const Expression& expression, int index, std::string_view name)
+{
+    const Node& node = expression.at(index);
+    if (node.kind == NodeKind::Unary && node.unaryOp == UnaryOp::Not)
+        return isVariableNamed(expression, node.operand, name);
+    return isVariableNamed(expression, index, name);
+}
+
+} // namespace
+
+bool isComparedWithEquality(const Expression& expression, std::string_view variableName)
+{
+    for (const Node& node : expression.nodes) {
+        const bool equality = node.kind == NodeKind::Binary
+            && (node.binaryOp == BinaryOp::Equal || node.binaryOp == BinaryOp::NotEqual);
+        if (equality
+            && (isEqualityOperand(expression, node.left, variableName)
+                || isEqualityOperand(expression, node.right, variableName)))
+            return true;
+    }
+    return false;
+}
+
 } // namespace core::cond

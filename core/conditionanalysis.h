@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace core::cond {
@@ -40,6 +41,12 @@ struct Literal {
     bool negated = false;
 };
 std::vector<Literal> booleanLiterals(const Expression& expression);
+
+// True when the variable (matched case-insensitively) is an operand of = or
+// <>, bare or directly under NOT. There it has no polarity: `X = FALSE` means
+// NOT X, so a token standing for X would capture the opposite of what the
+// condition waits for. The checks (GG212) and the generator refuse such a token.
+bool isComparedWithEquality(const Expression& expression, std::string_view variableName);
 
 struct PrintOptions {
     // The spelling of a variable in the output; default: as written.

@@ -89,32 +89,6 @@ struct TokenLiterals {
     std::string problem;
 };
 
-bool isVariable(const BuildContext& context, const cond::Expression& expression, int index, const Variable& variable)
-{
-    const cond::Node& node = expression.at(index);
-    return node.kind == cond::NodeKind::Variable && context.symbols.find(node.text) == &variable;
-}
-
-// `X` or `NOT X` directly under = or <>: `X = FALSE` means NOT X, so a token
-// standing for X there would capture the opposite of what the condition
-// waits for. The checks refuse such a token (GG212); so does the generator.
-bool isCompared(const BuildContext& context, const cond::Expression& expression, const Variable& variable)
-{
-    auto operandIs = [&](int index) {
-        const cond::Node& node = expression.at(index);
-        if (node.kind == cond::NodeKind::Unary && node.unaryOp == cond::UnaryOp::Not)
-            return isVariable(context, expression, node.operand, variable);
-        return isVariable(context, expression, index, variable);
-    };
-    for (const cond::Node& node : expression.nodes) {
-        const bool comparison = node.kind == cond::NodeKind::Binary
-            && (node.binaryOp == cond::BinaryOp::Equal || node.binaryOp == cond::BinaryOp::NotEqual);
-        if (comparison && (operandIs(node.left) || operandIs(node.right)))
-            return true;
-    }
-    return false;
-}
-
 TokenLiterals findTokenLiterals(const BuildContext& context, const GemmaTransition& transition,
                                 const Variable& variable)
 {
@@ -135,7 +109,7 @@ TokenLiterals findTokenLiterals(const BuildContext& context, const GemmaTransiti
     if (!occurs) {
         result.problemCode = kTokenAbsentCode;
         result.problem = name + " does not occur in the condition";
-    } else if (isCompared(context, expression, variable)) {
+    } else if (cond::isComparedWithEquality(expression, variable.name)) {
         result.problemCode = kTokenNoLiteralCode;
         result.problem = name + " is compared with '=' or '<>' in the condition, where it has no polarity";
     } else if (result.nodes.empty()) {
