@@ -239,4 +239,19 @@ std::string formatValue(const Value& value)
     return text;
 }
 
+IntegerRange integerRange(IecType type)
+{
+    constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+    switch (type) {
+    case IecType::Sint: return {-128, 127};
+    case IecType::Int: return {-32768, 32767};
+    case IecType::Dint: return {-2147483648LL, 2147483647LL};
+    case IecType::Usint: return {0, 255};
+    case IecType::Uint: return {0, 65535};
+    case IecType::Udint: return {0, 4294967295LL};
+    case IecType::Ulint: return {0, kMax};
+    default: return {std::numeric_limits<std::int64_t>::min(), kMax};
+    }
+}
+
 } // namespace core::cond

@@ -38,6 +38,15 @@ bool isTrue(const Value& value);
 // values above 9223372036854775807 are clamped to it.
 std::optional<Value> parseValue(IecType type, std::string_view text);
 
+// The values an integer type holds, as the 64-bit values the evaluator
+// computes with: ULINT and UDINT above 9223372036854775807 are clamped to it,
+// as parseValue does. Non-integer types give the whole 64-bit range.
+struct IntegerRange {
+    std::int64_t low;
+    std::int64_t high;
+};
+IntegerRange integerRange(IecType type);
+
 // ST spelling: "TRUE", "-42", "1.5", "2.0".
 std::string formatValue(const Value& value);
 

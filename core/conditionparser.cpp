@@ -36,23 +36,6 @@ std::size_t skipGlue(std::string_view text, std::size_t pos)
     return pos;
 }
 
-// IEC integer: digit {['_'] digit}.
-std::size_t scanDigits(std::string_view text, std::size_t pos)
-{
-    if (pos >= text.size() || !isDigit(text[pos]))
-        return pos;
-    ++pos;
-    while (pos < text.size()) {
-        if (isDigit(text[pos]))
-            ++pos;
-        else if (text[pos] == '_' && pos + 1 < text.size() && isDigit(text[pos + 1]))
-            pos += 2;
-        else
-            break;
-    }
-    return pos;
-}
-
 TokenKind wordKind(std::string_view word)
 {
     struct Keyword {
@@ -95,9 +78,9 @@ Token scanWord(std::string_view text, std::size_t begin)
 Token scanNumber(std::string_view text, std::size_t begin)
 {
     TokenKind kind = TokenKind::IntegerLiteral;
-    std::size_t pos = scanDigits(text, begin);
+    std::size_t pos = scanIecDigits(text, begin);
     if (pos + 1 < text.size() && text[pos] == '.' && isDigit(text[pos + 1])) {
-        pos = scanDigits(text, pos + 1);
+        pos = scanIecDigits(text, pos + 1);
         kind = TokenKind::RealLiteral;
     }
     if (pos < text.size() && (text[pos] == 'e' || text[pos] == 'E')) {
@@ -105,7 +88,7 @@ Token scanNumber(std::string_view text, std::size_t begin)
         if (exponent < text.size() && (text[exponent] == '+' || text[exponent] == '-'))
             ++exponent;
         if (exponent < text.size() && isDigit(text[exponent])) {
-            pos = scanDigits(text, exponent);
+            pos = scanIecDigits(text, exponent);
             kind = TokenKind::RealLiteral;
         }
     }

@@ -138,25 +138,6 @@ bool isTokenName(std::string_view word)
 
 // --- literal scanning -------------------------------------------------------
 
-// IEC integer: digit {['_'] digit}. Returns the position after it, or `from`
-// when there is none.
-std::size_t scanDigits(std::string_view text, std::size_t from)
-{
-    std::size_t pos = from;
-    if (pos >= text.size() || !isDigit(text[pos]))
-        return from;
-    ++pos;
-    while (pos < text.size()) {
-        if (isDigit(text[pos]))
-            ++pos;
-        else if (text[pos] == '_' && pos + 1 < text.size() && isDigit(text[pos + 1]))
-            pos += 2;
-        else
-            break;
-    }
-    return pos;
-}
-
 struct IntegerText {
     bool negative = false;
     bool overflow = false; // magnitude beyond 2^64 - 1
@@ -172,7 +153,7 @@ std::optional<IntegerText> parseSignedInteger(std::string_view text)
         result.negative = text[0] == '-';
         pos = 1;
     }
-    const std::size_t end = scanDigits(text, pos);
+    const std::size_t end = scanIecDigits(text, pos);
     if (end == pos || end != text.size())
         return std::nullopt;
     constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
@@ -192,12 +173,12 @@ std::optional<IntegerText> parseSignedInteger(std::string_view text)
 bool isRealLiteral(std::string_view text)
 {
     std::size_t pos = (!text.empty() && (text[0] == '+' || text[0] == '-')) ? 1 : 0;
-    std::size_t end = scanDigits(text, pos);
+    std::size_t end = scanIecDigits(text, pos);
     if (end == pos)
         return false;
     pos = end;
     if (pos < text.size() && text[pos] == '.') {
-        end = scanDigits(text, pos + 1);
+        end = scanIecDigits(text, pos + 1);
         if (end == pos + 1)
             return false;
         pos = end;
@@ -206,7 +187,7 @@ bool isRealLiteral(std::string_view text)
         ++pos;
         if (pos < text.size() && (text[pos] == '+' || text[pos] == '-'))
             ++pos;
-        end = scanDigits(text, pos);
+        end = scanIecDigits(text, pos);
         if (end == pos)
             return false;
         pos = end;
@@ -491,6 +472,24 @@ std::string toUpperAscii(std::string_view text)
     for (char& c : result)
         c = upperAscii(c);
     return result;
+}
+
+std::size_t scanIecDigits(std::string_view text, std::size_t from)
+{
+    const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+    std::size_t pos = from;
+    if (pos >= text.size() || !isDigit(text[pos]))
+        return from;
+    ++pos;
+    while (pos < text.size()) {
+        if (isDigit(text[pos]))
+            ++pos;
+        else if (text[pos] == '_' && pos + 1 < text.size() && isDigit(text[pos + 1]))
+            pos += 2;
+        else
+            break;
+    }
+    return pos;
 }
 
 } // namespace core

@@ -51,6 +51,11 @@ std::string identifierProblemMessage(IdentifierProblem problem, std::string_view
 bool isIecKeyword(std::string_view word);
 bool isGeneratorName(std::string_view word);
 
+// IEC integer digits, digit {['_'] digit}, from `from`: the position after
+// them, or `from` when there are none. The condition lexer and the literal
+// checks read numbers the same way.
+std::size_t scanIecDigits(std::string_view text, std::size_t from);
+
 // ASCII case-insensitive comparison, as IEC identifiers compare.
 bool equalsIgnoreCase(std::string_view a, std::string_view b);
 std::string toUpperAscii(std::string_view text);

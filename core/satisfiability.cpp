@@ -13,31 +13,12 @@ namespace core::sat {
 
 namespace {
 
-constexpr std::int64_t kInt64Max = std::numeric_limits<std::int64_t>::max();
-constexpr std::int64_t kInt64Min = std::numeric_limits<std::int64_t>::min();
 // Beyond this magnitude a double no longer holds every integer: comparisons
 // of 64-bit integers with such real constants are left opaque.
 constexpr double kExactIntegerLimit = 9007199254740992.0; // 2^53
 
-struct IntegerRange {
-    std::int64_t low;
-    std::int64_t high;
-};
-
-// The same ranges the simulator accepts (ULINT clamped like parseValue).
-IntegerRange integerRange(IecType type)
-{
-    switch (type) {
-    case IecType::Sint: return {-128, 127};
-    case IecType::Int: return {-32768, 32767};
-    case IecType::Dint: return {-2147483648LL, 2147483647LL};
-    case IecType::Usint: return {0, 255};
-    case IecType::Uint: return {0, 65535};
-    case IecType::Udint: return {0, 4294967295LL};
-    case IecType::Ulint: return {0, kInt64Max};
-    default: return {kInt64Min, kInt64Max};
-    }
-}
+using cond::IntegerRange;
+using cond::integerRange;
 
 double realLimit(IecType type)
 {

@@ -118,26 +118,6 @@ struct CompiledStep {
     std::vector<CompiledTransition> transitions;
 };
 
-struct IntRange {
-    std::int64_t low;
-    std::int64_t high;
-};
-
-IntRange integerRange(IecType type)
-{
-    constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
-    switch (type) {
-    case IecType::Sint: return {-128, 127};
-    case IecType::Int: return {-32768, 32767};
-    case IecType::Dint: return {-2147483648LL, 2147483647LL};
-    case IecType::Usint: return {0, 255};
-    case IecType::Uint: return {0, 65535};
-    case IecType::Udint: return {0, 4294967295LL};
-    case IecType::Ulint: return {0, kMax};
-    default: return {std::numeric_limits<std::int64_t>::min(), kMax};
-    }
-}
-
 } // namespace
 
 std::string_view transitionStatusName(TransitionStatus status)
@@ -861,7 +841,7 @@ Status Simulator::setVariableAt(std::size_t index, const cond::Value& value)
     }
     bool inRange = true;
     if (kind == Kind::Integer) {
-        const IntRange range = integerRange(type);
+        const cond::IntegerRange range = cond::integerRange(type);
         inRange = cell.i >= range.low && cell.i <= range.high;
     } else if (kind == Kind::Real) {
         const double limit = type == IecType::Real ? static_cast<double>(FLT_MAX) : DBL_MAX;
