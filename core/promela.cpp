@@ -29,6 +29,9 @@ constexpr const char* kState = "gState";
 constexpr const char* kEntry = "gEntry";
 constexpr const char* kMark = "mark";
 constexpr const char* kProbeComplete = "pc";
+constexpr const char* kFrom = "gFrom";
+constexpr const char* kUntil = "gUntil";
+constexpr int kNoUntil = 255;
 
 // Text safe inside a Promela (C preprocessor) comment, on one line.
 std::string commentText(std::string_view text)
@@ -589,6 +592,17 @@ private:
     void writeProbe(const StepPlan& plan);
     void writeTokenUpdates();
     void writeReset();
+    void writeStart();
+    void writeStartReading();
+    void writeUntilReading();
+    void writeListing();
+
+    // The variables a configuration consists of, with the largest value each holds.
+    struct StateVariable {
+        std::string name;
+        int max = 1;
+    };
+    std::vector<StateVariable> stateVariables() const;
 
     std::string gated(const StepPlan& plan, std::size_t t, const std::string& complete) const
     {
@@ -686,6 +700,17 @@ void Exporter::writeHeader()
              " *                  fires any transition in one scan (needed for GV106)",
              " *   no D1 from S   NOT listed: in some reachable situation of the F step S",
              " *                  no input leads to D1 in one scan (GV107)",
+             " *",
+             " * The search starts from reset. pan reads three environment variables:",
+             " *   " + std::string(kSpinStartVariable) + "=\"gState=N gEntry=0|1 tk_...=0|1\"  starts from that",
+             " *       configuration instead (variables not named keep their reset values);",
+             " *   " + std::string(kSpinListVariable) + "=1  prints \"GG_CONFIG\" and the configuration, in that syntax,",
+             " *       at the start of every scan explored: the reachable configurations;",
+             " *   " + std::string(kSpinUntilVariable) + "=N  entering State N violates an assertion: the search stops.",
+             " * From a reachable configuration C of step S, with GG_START=C and GG_UNTIL",
+             " * set to the initial step's State: no assertion violated = the initial",
+             " * step never comes back from C (GV105 for S); and then every \"fire T in S\"",
+             " * listed = S is never left from C (GV106 for S).",
              " */",
          })
         m_out.line(text);
@@ -702,14 +727,14 @@ void Exporter::writeDeclarations()
         for (const GemmaToken& token : step.tokens)
             m_out.line("bool tk_" + token.name + " = 0; /* token of " + commentText(token.transitionId) + " */");
     }
+    m_out.line("");
+    m_out.line("/* Inputs and Complete: chosen at every scan, reset to 0 after it (not part of the state). */");
     for (const StepPlan& plan : m_plans) {
         if (!plan.step->hasNestedBehaviour())
             continue;
-        m_out.line("bool " + completeName(*plan.step) + " = 0; /* " + plan.step->id + ".Complete, "
+        m_out.line("bool " + completeName(*plan.step) + "; /* " + plan.step->id + ".Complete, "
                    + (plan.freeComplete ? "free" : "TRUE (automatic)") + " */");
     }
-    m_out.line("");
-    m_out.line("/* Inputs: chosen at every scan, reset to 0 after it (not part of the state). */");
     for (const Variable* variable : m_inputs.bools())
         m_out.line("byte " + Inputs::boolName(*variable) + "; /* " + variable->name + " : BOOL */");
     for (const NumericInput& input : m_inputs.numerics()) {
@@ -724,6 +749,9 @@ void Exporter::writeDeclarations()
     m_out.line("");
     m_out.line("/* Bookkeeping of the markers and probes, reset after every scan. */");
     m_out.line("byte " + std::string(kMark) + ";");
+    m_out.line("byte " + std::string(kFrom) + "; /* State at the start of the scan */");
+    m_out.line("byte " + std::string(kUntil) + " = " + std::to_string(kNoUntil) + "; /* " + kSpinUntilVariable
+               + ": entering this State ends the search (" + std::to_string(kNoUntil) + ": never) */");
     if (m_options.probes) {
         m_out.line("byte " + std::string(kProbeComplete) + "; /* Complete while probing */");
         m_out.line("byte pg[" + std::to_string(m_maxTransitions) + "]; /* each transition's gated condition */");
@@ -734,14 +762,114 @@ void Exporter::writeDeclarations()
     m_out.line("");
 }
 
+std::vector<Exporter::StateVariable> Exporter::stateVariables() const
+{
+    // Complete is not among them: the FB rewrites it before the transitions read it.
+    std::vector<StateVariable> out{{kState, 255}, {kEntry, 1}};
+    for (const GemmaStep& step : m_program.steps) {
+        for (const GemmaToken& token : step.tokens)
+            out.push_back({"tk_" + token.name, 1});
+    }
+    return out;
+}
+
+// GG_START and GG_UNTIL, read once before the first scan: one compiled pan can then
+// explore from any configuration (docs/verification.md).
+void Exporter::writeStart()
+{
+    m_out.line("c_code {");
+    m_out.in();
+    writeStartReading();
+    writeUntilReading();
+    m_out.out();
+    m_out.line("};");
+}
+
+void Exporter::writeStartReading()
+{
+    std::size_t longest = 63;
+    for (const StateVariable& variable : stateVariables())
+        longest = std::max(longest, variable.name.size());
+    const std::string width = std::to_string(longest);
+    m_out.line("/* GG_START=\"NAME=VALUE ...\": start from this configuration instead of the reset one */");
+    m_out.line("const char *ggText = getenv(\"" + std::string(kSpinStartVariable) + "\");");
+    m_out.line("char ggName[" + std::to_string(longest + 1) + "];");
+    m_out.line("int ggValue = 0, ggUsed = 0;");
+    m_out.line("while (ggText && sscanf(ggText, \" %" + width + "[A-Za-z0-9_] = %d%n\", ggName, &ggValue, &ggUsed) == 2) {");
+    m_out.in();
+    m_out.line("ggText += ggUsed;");
+    std::string keyword = "if";
+    for (const StateVariable& variable : stateVariables()) {
+        m_out.line(keyword + " (strcmp(ggName, \"" + variable.name + "\") == 0 && ggValue >= 0 && ggValue <= "
+                   + std::to_string(variable.max) + ") now." + variable.name + " = ggValue;");
+        keyword = "else if";
+    }
+    m_out.line("else {");
+    m_out.in();
+    m_out.line("printf(\"GG_START: %s=%d: no such state variable, or a value it cannot hold\\n\", ggName, ggValue);");
+    m_out.line("exit(2);");
+    m_out.out();
+    m_out.line("}");
+    m_out.out();
+    m_out.line("}");
+    m_out.line("while (ggText && *ggText == ' ') ggText++;");
+    m_out.line("if (ggText && *ggText) {");
+    m_out.in();
+    m_out.line("printf(\"GG_START: cannot read '%s': expected NAME=VALUE separated by spaces\\n\", ggText);");
+    m_out.line("exit(2);");
+    m_out.out();
+    m_out.line("}");
+}
+
+// After writeStartReading, in the same block: its variables are reused.
+void Exporter::writeUntilReading()
+{
+    m_out.line("/* " + std::string(kSpinUntilVariable) + "=N: entering State N is an error, which ends the search */");
+    m_out.line("ggText = getenv(\"" + std::string(kSpinUntilVariable) + "\");");
+    m_out.line("if (ggText) {");
+    m_out.in();
+    m_out.line("if (sscanf(ggText, \" %d %n\", &ggValue, &ggUsed) != 1 || ggText[ggUsed] || ggValue < 0 || ggValue >= "
+               + std::to_string(kNoUntil) + ") {");
+    m_out.in();
+    m_out.line("printf(\"" + std::string(kSpinUntilVariable) + ": cannot read '%s': expected a State number\\n\", ggText);");
+    m_out.line("exit(2);");
+    m_out.out();
+    m_out.line("}");
+    m_out.line("now." + std::string(kUntil) + " = ggValue;");
+    m_out.out();
+    m_out.line("}");
+}
+
+// GG_LIST: the configuration every explored scan starts in, in GG_START's syntax.
+void Exporter::writeListing()
+{
+    m_out.line("c_code {");
+    m_out.in();
+    m_out.line("static int ggList = -1; /* GG_LIST set: print the configuration of every scan explored */");
+    m_out.line("if (ggList < 0) ggList = getenv(\"" + std::string(kSpinListVariable) + "\") != 0;");
+    m_out.line("if (ggList) {");
+    m_out.in();
+    m_out.line("printf(\"GG_CONFIG\");");
+    for (const StateVariable& variable : stateVariables())
+        m_out.line("printf(\" " + variable.name + "=%d\", (int) now." + variable.name + ");");
+    m_out.line("printf(\"\\n\");");
+    m_out.out();
+    m_out.line("}");
+    m_out.out();
+    m_out.line("};");
+}
+
 void Exporter::writeProcess()
 {
     m_out.line("active proctype scan()");
     m_out.line("{");
     m_out.in();
+    writeStart();
     m_out.line("do");
     m_out.line(":: atomic {");
     m_out.in();
+    writeListing();
+    m_out.line(std::string(kFrom) + " = " + kState + ";");
     m_out.line("if");
     for (const StepPlan& plan : m_plans)
         writeStep(plan);
@@ -754,6 +882,8 @@ void Exporter::writeProcess()
     m_out.line("scanned:");
     m_out.in();
     m_out.line(std::string(kMark) + " = 0;");
+    m_out.line("assert(" + std::string(kUntil) + " == " + std::to_string(kNoUntil) + " || " + kState + " != " + kUntil
+               + " || " + kFrom + " == " + kUntil + "); /* " + kSpinUntilVariable + " */");
     writeTokenUpdates();
     writeReset();
     m_out.out();
@@ -933,16 +1063,20 @@ void Exporter::writeTokenUpdates()
 
 void Exporter::writeReset()
 {
-    std::string reset = "d_step { ";
+    std::string reset = "d_step { " + std::string(kFrom) + " = 0; ";
     for (const Variable* variable : m_inputs.bools())
         reset += Inputs::boolName(*variable) + " = 0; ";
     for (const NumericInput& input : m_inputs.numerics())
         reset += input.name + " = 0; ";
     for (std::size_t i = 0; i < m_inputs.atoms().size(); ++i)
         reset += Inputs::atomName(i) + " = 0; ";
+    for (const StepPlan& plan : m_plans) {
+        if (plan.step->hasNestedBehaviour())
+            reset += completeName(*plan.step) + " = 0; ";
+    }
     if (m_options.probes)
         reset += "for (pi : 0 .. " + std::to_string(m_maxFlags - 1) + ") { pflag[pi] = 0 }; pi = 0; ";
-    m_out.line("/* the inputs are forgotten: the next scan chooses them anew */");
+    m_out.line("/* the inputs and Complete are forgotten: the next scan chooses them anew */");
     m_out.line(reset + "}");
 }
 
@@ -964,6 +1098,16 @@ long long numberAfter(std::string_view text, std::string_view label)
     return digits ? value : -1;
 }
 
+// pan's "pan:1: assertion violated ..." line names GG_UNTIL's variable.
+bool untilAssertion(std::string_view panOutput)
+{
+    const auto at = panOutput.find("pan:1: assertion violated");
+    if (at == std::string_view::npos)
+        return false;
+    const auto end = panOutput.find('\n', at);
+    return panOutput.substr(at, end == std::string_view::npos ? end : end - at).find(kUntil) != std::string_view::npos;
+}
+
 } // namespace
 
 PromelaModel buildPromela(const Model& model, const PromelaOptions& options)
@@ -979,6 +1123,25 @@ std::string exportPromela(const Model& model, const PromelaOptions& options)
 bool SpinReport::reached(const PromelaMarker& marker) const
 {
     return complete && std::find(unreachedLines.begin(), unreachedLines.end(), marker.line) == unreachedLines.end();
+}
+
+std::vector<SpinConfiguration> readSpinConfigurations(std::string_view panOutput)
+{
+    constexpr std::string_view prefix = "GG_CONFIG ";
+    std::vector<SpinConfiguration> out;
+    std::set<std::string> seen;
+    std::istringstream lines{std::string(panOutput)};
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (line.rfind(prefix, 0) != 0)
+            continue;
+        std::string text = line.substr(prefix.size());
+        if (!seen.insert(text).second)
+            continue;
+        const long long state = numberAfter(text, std::string(kState) + "=");
+        out.push_back(SpinConfiguration{std::move(text), static_cast<int>(state)});
+    }
+    return out;
 }
 
 SpinReport readSpinReport(std::string_view panOutput)
@@ -1013,6 +1176,7 @@ SpinReport readSpinReport(std::string_view panOutput)
         begin = begin == std::string_view::npos ? 0 : begin + 1;
         report.statesStored = numberAfter(panOutput.substr(begin, stored - begin + 1), "");
     }
+    report.depthReached = numberAfter(panOutput, "depth reached");
     const long long errors = numberAfter(panOutput, "errors:");
     if (panOutput.find("max search depth too small") != std::string_view::npos)
         report.problem = "pan's search depth limit (-m) cut the search short";
@@ -1021,7 +1185,10 @@ SpinReport readSpinReport(std::string_view panOutput)
         report.problem = "pan ran out of memory before the search was complete";
     else if (errors < 0)
         report.problem = "pan's output has no \"errors:\" line: the search did not run";
-    else if (errors > 0)
+    else if (errors == 1 && untilAssertion(panOutput)) {
+        report.untilReached = true;
+        report.problem = std::string("pan stopped where ") + kSpinUntilVariable + " says: that State was entered";
+    } else if (errors > 0)
         report.problem = "pan reported " + std::to_string(errors) + " error(s)";
     else if (!sawScanSection)
         report.problem = "pan's output has no \"unreached in proctype scan\" report";

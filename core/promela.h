@@ -6,9 +6,9 @@
 //
 // The model is the scan loop of the generated PROGRAM GEMMA (spec §6.6),
 // read from core::GemmaProgram: one iteration of a `do` loop is one scan.
-// Global state: State, Entry, the token bits and the Complete output of every
-// nested step's FB. Inputs are chosen anew in every scan and forgotten after
-// it (they are not part of the state between scans):
+// Global state: State, Entry and the token bits. Inputs (and Complete) are
+// chosen anew in every scan and forgotten after it (they are not part of the
+// state between scans):
 // - a BOOL variable: TRUE or FALSE;
 // - a numeric variable compared with constants: one value per interval
 //   between the constants it is compared with (and per constant), over the
@@ -87,6 +87,33 @@ inline constexpr const char* kSpinGenerate = "spin -o3 -a";               // + F
 inline constexpr const char* kSpinCompile = "gcc -O2 -DSAFETY -DMEMLIM=1024 -o pan pan.c";
 inline constexpr const char* kSpinRun = "./pan -m200000 -w20";
 
+// Where pan starts, and what it lists, are read from the environment when pan
+// runs, so that one compiled pan serves many starts (docs/verification.md):
+// - GG_START="gState=8 gEntry=0 tk_Stop_F1_2_MEM=1": the scan loop starts in
+//   this configuration instead of the reset one (a variable not named keeps
+//   its reset value; a name that is not a state variable of the model, or a
+//   value it cannot hold, stops pan with exit code 2 before the search);
+// - GG_LIST (any value): at the start of every scan the search explores, pan
+//   prints `GG_CONFIG ` and the configuration in the syntax GG_START reads.
+// - GG_UNTIL=N: a scan that enters State N (a transition from another step
+//   into it fires) violates an assertion, which ends the search: with
+//   GG_START in another step, "State N can become active" is then
+//   SpinReport::untilReached.
+// Without them the model is the plain scan loop from reset.
+inline constexpr const char* kSpinStartVariable = "GG_START";
+inline constexpr const char* kSpinListVariable = "GG_LIST";
+inline constexpr const char* kSpinUntilVariable = "GG_UNTIL";
+
+// A configuration a GG_LIST run printed: every state variable (State, Entry,
+// every step's tokens) with its value.
+struct SpinConfiguration {
+    std::string text; // "gState=8 gEntry=0 tk_Stop_F1_2_MEM=1 ...": what GG_START reads
+    int state = -1;   // gState's value
+};
+
+// The configurations a GG_LIST run printed, each once, in the order printed.
+std::vector<SpinConfiguration> readSpinConfigurations(std::string_view panOutput);
+
 // What SPIN's verifier (pan) printed, read.
 struct SpinReport {
     // The search covered the whole state space without errors and printed
@@ -95,6 +122,10 @@ struct SpinReport {
     std::string problem;            // why not, in English; empty when complete
     std::vector<int> unreachedLines; // lines of statements of the scan process never executed
     long long statesStored = -1;
+    long long depthReached = -1; // pan's deepest search stack (statements, not scans)
+    // pan stopped at GG_UNTIL's assertion: the State it names was entered
+    // (then not complete: the search was cut short on purpose).
+    bool untilReached = false;
 
     // Reached: the marker's claim holds somewhere. False when not complete.
     bool reached(const PromelaMarker& marker) const;

@@ -5,6 +5,7 @@
 #include "core/verification.h"
 #include "modelfactory.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -46,32 +47,73 @@ std::string readText(const fs::path& path)
     return text.str();
 }
 
-// Runs spin, the C compiler and pan in a fresh temporary folder; returns pan's output.
-std::string runSpin(const PromelaModel& promela, const std::string& name)
-{
-    REQUIRE(toolAvailable("spin -V"));   // Debian package `spin` (CI installs it)
-    REQUIRE(toolAvailable("gcc --version"));
-    std::string pattern = (fs::temp_directory_path() / ("ggstudio-spin-" + name + "-XXXXXX")).string();
-    REQUIRE(::mkdtemp(pattern.data()) != nullptr);
-    const fs::path folder = pattern;
+// spin and the C compiler run once per model, in a fresh temporary folder;
+// then pan runs as often as needed, from reset or from given configurations.
+class CompiledPan {
+public:
+    CompiledPan(const PromelaModel& promela, const std::string& name)
     {
-        std::ofstream out(folder / "model.pml", std::ios::binary);
-        out << promela.text;
+        REQUIRE(toolAvailable("spin -V")); // Debian package `spin` (CI installs it)
+        REQUIRE(toolAvailable("gcc --version"));
+        std::string pattern = (fs::temp_directory_path() / ("ggstudio-spin-" + name + "-XXXXXX")).string();
+        REQUIRE(::mkdtemp(pattern.data()) != nullptr);
+        m_folder = pattern;
+        {
+            std::ofstream out(m_folder / "model.pml", std::ios::binary);
+            out << promela.text;
+        }
+        // kSpinCompile but -O0: these state spaces take milliseconds,
+        // compiling pan.c with optimisation takes seconds.
+        const std::string command = "cd '" + m_folder.string() + "' && timeout 120 " + kSpinGenerate
+            + " model.pml > spin.log 2>&1 && timeout 120 gcc -O0 -DSAFETY -DMEMLIM=512 -o pan pan.c > cc.log 2>&1";
+        const int status = std::system(command.c_str());
+        INFO("spin: " << readText(m_folder / "spin.log") << "\ncc: " << readText(m_folder / "cc.log"));
+        REQUIRE(status == 0);
     }
-    // kSpinCompile but -O0: these state spaces take milliseconds, compiling
-    // pan.c with optimisation takes seconds.
-    const std::string command = "cd '" + folder.string() + "' && timeout 120 " + kSpinGenerate
-        + " model.pml > spin.log 2>&1 && timeout 120 gcc -O0 -DSAFETY -DMEMLIM=512 -o pan pan.c > cc.log 2>&1"
-        + " && timeout 120 " + kSpinRun + " > pan.txt 2>&1";
-    const int status = std::system(command.c_str());
-    INFO("spin: " << readText(folder / "spin.log") << "\ncc: " << readText(folder / "cc.log"));
-    const std::string output = readText(folder / "pan.txt");
-    INFO("pan: " << output);
-    CHECK(status == 0);
-    std::error_code ignored;
-    fs::remove_all(folder, ignored);
-    return output;
-}
+    CompiledPan(const CompiledPan&) = delete;
+    CompiledPan& operator=(const CompiledPan&) = delete;
+    ~CompiledPan()
+    {
+        std::error_code ignored;
+        fs::remove_all(m_folder, ignored);
+    }
+
+    // pan's output (readSpinReport says whether the search completed);
+    // `environment` is put before the command ("GG_LIST=1").
+    std::string run(const std::string& environment = {}) const
+    {
+        const std::string command = "cd '" + m_folder.string() + "' && " + environment + " timeout 120 " + kSpinRun
+            + " > pan.txt 2>&1";
+        REQUIRE(std::system(command.c_str()) != -1);
+        return readText(m_folder / "pan.txt");
+    }
+
+    // One run per start (GG_START), each stopped when it enters State
+    // `until` (GG_UNTIL), in one shell: pan's outputs, in order. Each run
+    // costs about a millisecond if pan does not allocate kSpinRun's
+    // 200000-deep stack: `depth` is the limit (a search that needs more
+    // says so and is not complete).
+    std::vector<std::string> runFrom(const std::vector<std::string>& starts, int until, long long depth) const
+    {
+        {
+            std::ofstream out(m_folder / "starts.txt", std::ios::binary);
+            for (const std::string& start : starts)
+                out << start << "\n";
+        }
+        const std::string loop = "i=0; while IFS= read -r start; do i=$((i+1)); " + std::string(kSpinStartVariable)
+            + "=\"$start\" " + kSpinUntilVariable + "=" + std::to_string(until) + " ./pan -m" + std::to_string(depth)
+            + " -w14 > from-$i.txt 2>&1; done < starts.txt";
+        const std::string command = "cd '" + m_folder.string() + "' && timeout 300 sh -c '" + loop + "'";
+        REQUIRE(std::system(command.c_str()) != -1); // each run's output says whether it completed
+        std::vector<std::string> outputs;
+        for (std::size_t i = 1; i <= starts.size(); ++i)
+            outputs.push_back(readText(m_folder / ("from-" + std::to_string(i) + ".txt")));
+        return outputs;
+    }
+
+private:
+    fs::path m_folder;
+};
 
 // What SPIN says about the model, by marker kind.
 struct SpinFacts {
@@ -83,16 +125,72 @@ struct SpinFacts {
     std::set<Pair> overlaps; // (first, second)
     Set noFire;
     Set noEmergencyStop;
+    // From one run per reachable configuration (GG_START):
+    std::size_t configurations = 0;
+    Set listed;   // the steps of the configurations GG_LIST printed
+    Set stuck;    // a configuration from which no transition out of the step ever fires
+    Set noReturn; // a configuration from which the initial step is never entered (GV106 steps included)
 };
+
+// One run from each reachable configuration SPIN lists, each stopped as soon
+// as the initial step is entered (GG_UNTIL): when it is not, the search was
+// exhaustive, and the step can be left iff one of its `fire` markers was reached.
+void addConfigurationFacts(const CompiledPan& pan, const PromelaModel& promela, const GemmaProgram& program,
+                           const std::string& panOutput, const SpinReport& fromReset, SpinFacts& facts)
+{
+    std::map<int, std::string> stepOfState;
+    for (const GemmaStep& step : program.steps)
+        stepOfState[step.number] = step.id;
+    std::vector<std::string> starts;
+    std::vector<std::string> stepOfStart;
+    for (const SpinConfiguration& configuration : readSpinConfigurations(panOutput)) {
+        auto step = stepOfState.find(configuration.state);
+        if (step == stepOfState.end())
+            continue; // a hidden initial step: the PLC runs no code
+        starts.push_back(configuration.text);
+        stepOfStart.push_back(step->second);
+        facts.listed.insert(step->second);
+    }
+    facts.configurations = starts.size();
+    const PromelaMarker* reachInitial = nullptr;
+    for (const PromelaMarker& marker : promela.markers) {
+        if (marker.kind == PromelaMarkerKind::Reach && marker.step == program.initialStepId)
+            reachInitial = &marker;
+    }
+    // Generous: the search from a configuration covers part of the search from reset.
+    const long long depth = std::max(10000LL, 4 * fromReset.depthReached);
+    const std::vector<std::string> outputs = pan.runFrom(starts, program.initialNumber, depth);
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const SpinReport report = readSpinReport(outputs[i]);
+        if (report.untilReached)
+            continue; // left the step, and the initial step came back
+        INFO("from " << starts[i] << ": " << report.problem << "\n" << outputs[i]);
+        REQUIRE(report.complete);
+        const std::string& step = stepOfStart[i];
+        bool leaves = false;
+        for (const PromelaMarker& marker : promela.markers)
+            leaves = leaves || (marker.kind == PromelaMarkerKind::Fire && marker.step == step && report.reached(marker));
+        if (!leaves)
+            facts.stuck.insert(step);
+        if (step != program.initialStepId) {
+            REQUIRE(reachInitial);
+            CHECK(!report.reached(*reachInitial)); // GG_UNTIL would have stopped the search
+            facts.noReturn.insert(step);
+        }
+    }
+}
 
 SpinFacts spinFacts(const Model& model, const PromelaOptions& options, const std::string& name)
 {
     const PromelaModel promela = buildPromela(model, options);
-    const SpinReport report = readSpinReport(runSpin(promela, name));
+    const CompiledPan pan(promela, name);
+    const std::string output = pan.run(std::string(kSpinListVariable) + "=1");
+    const SpinReport report = readSpinReport(output);
     INFO(report.problem);
     REQUIRE(report.complete);
     REQUIRE(report.statesStored > 0);
     SpinFacts facts;
+    addConfigurationFacts(pan, promela, buildGemmaProgram(model), output, report, facts);
     for (const PromelaMarker& marker : promela.markers) {
         if (!report.reached(marker))
             continue;
@@ -223,17 +321,23 @@ Comparison compare(const Model& model, const std::string& name,
     }
     CHECK(builtInOverlaps == overlaps);
 
-    // GV106: stuck needs a situation where no input fires anything; for a
-    // step without tokens (its situations all read alike) that is enough.
-    const Set stuck = findings(result, code::kStuck);
-    for (const std::string& id : stuck)
+    // GG_LIST printed a configuration of every reachable step, and only those.
+    CHECK(spin.listed == spin.reachable);
+
+    // GV106: a reachable configuration from which the step is never left; it
+    // has no input that fires anything in one scan.
+    CHECK(findings(result, code::kStuck) == spin.stuck);
+    for (const std::string& id : spin.stuck)
         CHECK(spin.noFire.count(id));
-    for (const GemmaStep& step : program.steps) {
-        if (step.tokens.empty() && spin.noFire.count(step.id)) {
-            INFO(step.id << " has no tokens and SPIN finds no input that fires");
-            CHECK(stuck.count(step.id));
-        }
+
+    // GV105: a reachable configuration from which the initial step is never
+    // entered again; not reported for a step that is stuck (GV106 says more).
+    Set noReturn;
+    for (const std::string& id : spin.noReturn) {
+        if (!spin.stuck.count(id))
+            noReturn.insert(id);
     }
+    CHECK(findings(result, code::kNoReturn) == noReturn);
 
     // GV107: the F steps with a reachable situation that cannot enter D1 in one scan.
     CHECK(findings(result, code::kNoEmergencyStop) == spin.noEmergencyStop);
@@ -299,6 +403,33 @@ Model realisticWith(const std::vector<std::pair<const char*, const char*>>& cond
     return model;
 }
 
+// A1 (initial) -> F1 -> A2 -> A1, the other steps hidden. F1 is enclosing
+// (its transitions do not wait for Complete) and leaves by F1->A2 with the
+// given condition and tokens; with `trap`, also by F1->D2 when Trap is TRUE,
+// to D2, which has no way out.
+Model tokenLoop(const std::string& condition, const std::vector<std::string>& tokens, bool trap = false)
+{
+    Model model;
+    for (const char* name : {"Go", "Ready", "Trap"})
+        REQUIRE(model.addVariable(Variable{name, IecType::Bool, "", ""}));
+    REQUIRE(model.setInitialStep("A1"));
+    std::vector<std::string> stepIds;
+    for (const Step& step : model.steps())
+        stepIds.push_back(step.id);
+    for (const std::string& id : stepIds) {
+        if (id != "A1" && id != "F1" && id != "A2" && !(trap && id == "D2"))
+            REQUIRE(model.setStepHidden(id, true));
+    }
+    REQUIRE(model.setStepType("F1", StepType::Enclosing));
+    REQUIRE(model.setCondition("A1->F1", "TRUE"));
+    REQUIRE(model.setCondition("A2->A1", "TRUE"));
+    REQUIRE(model.setCondition("F1->A2", condition));
+    REQUIRE(model.setTokens("F1->A2", tokens));
+    if (trap)
+        REQUIRE(model.setCondition("F1->D2", "Trap"));
+    return model;
+}
+
 } // namespace
 
 TEST_CASE("SPIN agrees with the verifier on the template", "[spin]")
@@ -320,6 +451,11 @@ TEST_CASE("SPIN agrees with the verifier on the realistic model", "[spin]")
         CHECK(c.spin.firing.count("F1->A2"));
         CHECK(c.spin.noEmergencyStop.empty());
         CHECK(!c.spin.overlaps.empty());
+        // Every configuration leaves its step and leads back to A6, stale
+        // tokens of the steps left included.
+        CHECK(c.spin.configurations > 21);
+        CHECK(c.spin.stuck.empty());
+        CHECK(c.spin.noReturn.empty());
     }
     SECTION("Complete automatic")
     {
@@ -376,11 +512,67 @@ TEST_CASE("SPIN agrees with the verifier on seeded defects", "[spin]")
         CHECK(c.spin.reachable.empty());
         CHECK(findings(c.builtIn, code::kUnreachableStep).size() == 10);
     }
+    SECTION("no way back to the initial step")
+    {
+        Model model = factory::realisticModel();
+        REQUIRE(model.setTransitionHidden("A5->A6", true));
+        REQUIRE(model.setTransitionHidden("F4->A6", true));
+        const Comparison c = compare(model, "no-return");
+        CHECK(c.spin.noReturn.count("A1"));
+        CHECK(!c.spin.noReturn.count("A6"));
+        CHECK(c.spin.stuck.empty());
+        CHECK(findings(c.builtIn, code::kNoReturn).count("F1"));
+    }
+    SECTION("a step no transition can leave")
+    {
+        const Comparison c = compare(realisticWith({{"D2->A5", "Acknowledge AND NOT Acknowledge"}}), "stuck");
+        CHECK(c.spin.stuck == Set{"D2"});
+        CHECK(findings(c.builtIn, code::kStuck) == Set{"D2"});
+        CHECK(!findings(c.builtIn, code::kNoReturn).count("D2"));
+    }
     SECTION("F states that cannot enter D1 in one scan")
     {
         // F1 keeps its own F1->D1; F2 and F4 only had the family transition.
         const Comparison c = compare(realisticWith({{"F->D1", "EmergencyStop AND NOT EmergencyStop"}}), "no-d1");
         CHECK(c.spin.noEmergencyStop == Set{"F2", "F4"});
+    }
+}
+
+TEST_CASE("SPIN agrees with the verifier where tokens decide GV105 and GV106", "[spin]")
+{
+    // In each, F1's entry configuration (tokens cleared) can leave F1 and
+    // come back to A1, or can do neither in one scan: what matters is the
+    // configurations F1 reaches after tokens were set.
+    SECTION("stuck once both tokens are set: Go XOR Ready reads two tokens")
+    {
+        const Comparison c = compare(tokenLoop("Go XOR Ready", {"Go", "Ready"}), "tokens-stuck");
+        CHECK(c.spin.stuck == Set{"F1"});
+        const VerificationFinding* f = finding(c.builtIn, code::kStuck, "F1");
+        REQUIRE(f);
+        CHECK(f->message.find("tokens") != std::string::npos);
+    }
+    SECTION("never stuck although no input fires on entry: Go AND Ready reads two tokens")
+    {
+        const Comparison c = compare(tokenLoop("Go AND Ready", {"Go", "Ready"}), "tokens-not-stuck");
+        CHECK(c.spin.noFire.count("F1"));
+        CHECK(c.spin.stuck.empty());
+        CHECK(findings(c.builtIn, code::kStuck).empty());
+    }
+    SECTION("no way back once the token on Go is set: only the trap is left")
+    {
+        const Comparison c = compare(tokenLoop("(Go XOR TRUE) AND Ready", {"Go"}, true), "tokens-no-return");
+        CHECK(c.spin.stuck == Set{"D2"});
+        CHECK(c.spin.noReturn == Set{"F1", "D2"});
+        const VerificationFinding* f = finding(c.builtIn, code::kNoReturn, "F1");
+        REQUIRE(f);
+        CHECK(f->message.find("tokens") != std::string::npos);
+    }
+    SECTION("the same without the token: F1 can always come back")
+    {
+        const Comparison c = compare(tokenLoop("(Go XOR TRUE) AND Ready", {}, true), "tokens-return");
+        CHECK(c.spin.stuck == Set{"D2"});
+        CHECK(c.spin.noReturn == Set{"D2"});
+        CHECK(findings(c.builtIn, code::kNoReturn).empty());
     }
 }
 
@@ -401,7 +593,7 @@ TEST_CASE("SPIN agrees with the verifier on random models", "[spin]")
     }
     // The sample exercises every property SPIN cross-checks, held and violated.
     for (const char* findingCode : {code::kUnreachableStep, code::kDeadTransition, code::kAlwaysTrue, code::kOverlap,
-                                    code::kStuck, code::kNoEmergencyStop}) {
+                                    code::kNoReturn, code::kStuck, code::kNoEmergencyStop}) {
         INFO(findingCode);
         CHECK(seen[findingCode] > 0);
     }
@@ -426,10 +618,76 @@ TEST_CASE("readSpinReport reads pan's verdicts and refuses incomplete searches",
     CHECK(!readSpinReport("pan:1: assertion violated (0) (at depth 3)\nState-vector 20 byte, depth reached 3, "
                           "errors: 1\nunreached in proctype scan\n")
                .complete);
+    const SpinReport until = readSpinReport(
+        "pan:1: assertion violated (((gUntil==255)||(gState!=gUntil))||(gFrom==gUntil)) (at depth 160)\n"
+        "State-vector 84 byte, depth reached 160, errors: 1\n");
+    CHECK(until.untilReached);
+    CHECK(!until.complete);
+    CHECK(until.depthReached == 160);
+    CHECK(report.depthReached == 8);
+    CHECK(!report.untilReached);
     const SpinReport cut = readSpinReport("error: max search depth too small\nerrors: 0\nunreached in proctype scan\n");
     CHECK(!cut.complete);
     CHECK(cut.problem.find("depth") != std::string::npos);
     CHECK(!readSpinReport("").complete);
+}
+
+TEST_CASE("pan starts where GG_START says, lists with GG_LIST and stops where GG_UNTIL says", "[spin]")
+{
+    const Model model = factory::realisticModel();
+    const PromelaModel promela = buildPromela(model);
+    const GemmaProgram program = buildGemmaProgram(model);
+    auto reach = [](const PromelaModel& in, const std::string& step) {
+        for (const PromelaMarker& m : in.markers) {
+            if (m.kind == PromelaMarkerKind::Reach && m.step == step)
+                return m;
+        }
+        FAIL("no reach marker for " << step);
+        return PromelaMarker{};
+    };
+    auto number = [&](const std::string& id) { return std::to_string(program.step(id)->number); };
+    const CompiledPan pan(promela, "start");
+
+    // Default: reset. The configurations listed start with the reset one.
+    const std::string fromReset = pan.run(std::string(kSpinListVariable) + "=1");
+    const std::vector<SpinConfiguration> listed = readSpinConfigurations(fromReset);
+    REQUIRE(!listed.empty());
+    CHECK(listed.front().text == "gState=6 gEntry=1 tk_Stop_F1_2_MEM=0 tk_VerifyMode_F1_3_MEM=0 tk_Fault_F1_4_MEM=0");
+    CHECK(listed.front().state == 6);
+    const SpinReport plain = readSpinReport(pan.run());
+    REQUIRE(plain.complete);
+    CHECK(plain.reached(reach(promela, "A6")));
+    CHECK(readSpinConfigurations(pan.run()).empty());
+
+    // From D1: A6 comes back through A5, and GG_UNTIL stops the search there.
+    const std::string d1 = std::string(kSpinStartVariable) + "='gState=" + number("D1") + "'";
+    const SpinReport fromD1 = readSpinReport(pan.run(d1));
+    REQUIRE(fromD1.complete);
+    CHECK(fromD1.reached(reach(promela, "D1")));
+    CHECK(fromD1.reached(reach(promela, "A6")));
+    const SpinReport untilA6 = readSpinReport(pan.run(d1 + " " + kSpinUntilVariable + "=" + number("A6")));
+    CHECK(untilA6.untilReached);
+    CHECK(untilA6.statesStored < fromD1.statesStored);
+
+    // The template (every condition FALSE): nothing ever fires. A6 staying
+    // active is not entering it; from A1, A1 is reached and A6 is not.
+    const PromelaModel templatePromela = buildPromela(Model());
+    const CompiledPan templatePan(templatePromela, "start-template");
+    const SpinReport stays = readSpinReport(templatePan.run(std::string(kSpinUntilVariable) + "=6"));
+    CHECK(stays.complete);
+    CHECK(!stays.untilReached);
+    const SpinReport fromA1 = readSpinReport(templatePan.run(std::string(kSpinStartVariable) + "='gState=1'"));
+    REQUIRE(fromA1.complete);
+    CHECK(fromA1.reached(reach(templatePromela, "A1")));
+    CHECK(!fromA1.reached(reach(templatePromela, "A6")));
+
+    // A name that is not a state variable, or a value out of range: pan stops before searching.
+    for (const char* wrong : {"'gState=8 Stop=1'", "'gEntry=2'", "'gState=8,gEntry=0'"}) {
+        INFO(wrong);
+        const std::string output = pan.run(std::string(kSpinStartVariable) + "=" + wrong);
+        CHECK(output.find("GG_START: ") != std::string::npos);
+        CHECK(!readSpinReport(output).complete);
+    }
 }
 
 TEST_CASE("exportPromela writes the scan loop of the generated code", "[spin]")
