@@ -81,7 +81,7 @@ MainWindow::MainWindow(Translators& translators, QWidget* parent)
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     m_session = new SimulationSession(m_document, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
-    m_verification = new VerificationRunner(m_document, this);
+    m_verification = new VerificationRunner(m_document, m_session, this);
     createDocks();
     createActions();
     createMenus();
@@ -682,8 +682,8 @@ void MainWindow::showVerificationStatus()
     QString message;
     if (!m_verification->failure().isEmpty())
         message = tr("Verification failed: %1").arg(m_verification->failure());
-    else if (m_verification->isStale() || !m_verification->hasResult())
-        message = tr("Verification cancelled: the model changed");
+    else if (m_verification->wasCancelled() || m_verification->isStale() || !m_verification->hasResult())
+        message = tr("Verification cancelled: the model or the Complete settings changed");
     else if (m_verification->result().violated())
         message = tr("Verification finished: some properties do not hold (see Problems)");
     else

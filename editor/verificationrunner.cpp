@@ -1,36 +1,46 @@
 #include "editor/verificationrunner.h"
 
 #include "editor/document.h"
+#include "editor/simulation/simulationsession.h"
 
 #include "core/model.h"
+#include "core/simulator.h"
 
 #include <QThread>
 
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <map>
 #include <new>
+#include <string>
 
 namespace editor {
 
-// What one run shares with its thread: the thread only reads `model` and
-// `cancelled` and writes `result` or `failure`, which the GUI thread reads
-// after the thread finished.
+// What one run shares with its thread: the thread only reads `model`,
+// `complete` and `cancelled` and writes `result` or `failure`, which the GUI
+// thread reads after the thread finished. `automatic` is the GUI thread's.
 struct VerificationRunner::Job {
-    explicit Job(const core::Model& m)
+    Job(const core::Model& m, const QStringList& automaticSteps)
         : model(m)
+        , automatic(automaticSteps)
     {
+        for (const QString& step : automaticSteps)
+            complete[step.toStdString()] = core::CompleteAssumption::Automatic;
     }
 
     core::Model model;
+    QStringList automatic;
+    std::map<std::string, core::CompleteAssumption> complete;
     std::atomic<bool> cancelled{false};
     core::VerificationResult result;
     std::string failure;
 };
 
-VerificationRunner::VerificationRunner(Document* document, QObject* parent)
+VerificationRunner::VerificationRunner(Document* document, SimulationSession* session, QObject* parent)
     : QObject(parent)
     , m_document(document)
+    , m_session(session)
 {
     Q_ASSERT(document);
     connect(m_document, &Document::modelReset, this, &VerificationRunner::onModelChanged);
@@ -39,6 +49,13 @@ VerificationRunner::VerificationRunner(Document* document, QObject* parent)
     connect(m_document, &Document::variableChanged, this, &VerificationRunner::onModelChanged);
     connect(m_document, &Document::variablesChanged, this, &VerificationRunner::onModelChanged);
     connect(m_document, &Document::settingsChanged, this, &VerificationRunner::onModelChanged);
+    if (m_session) {
+        // Complete modes change with the user's choice, a reset or a replay,
+        // each followed by inputsChanged(); they exist while the mode is active.
+        connect(m_session, &SimulationSession::activeChanged, this, &VerificationRunner::onSessionChanged);
+        connect(m_session, &SimulationSession::inputsChanged, this, &VerificationRunner::onSessionChanged);
+    }
+    m_assumedAutomatic = sessionAutomaticSteps();
 }
 
 VerificationRunner::~VerificationRunner()
@@ -57,8 +74,9 @@ void VerificationRunner::start()
     const bool wasRunning = isRunning();
     if (wasRunning)
         m_current->cancelled = true;
-    auto job = std::make_shared<Job>(m_document->model());
+    auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic);
     m_current = job;
+    m_wasCancelled = false;
     QThread* thread = QThread::create([job] { runJob(job); });
     thread->setObjectName(QStringLiteral("verification"));
     // Queued to this thread: the worker thread emits finished().
@@ -76,6 +94,7 @@ void VerificationRunner::cancel()
         return;
     m_current->cancelled = true;
     m_current.reset();
+    m_wasCancelled = true;
     emit cancelled();
 }
 
@@ -102,6 +121,31 @@ void VerificationRunner::onModelChanged()
     }
 }
 
+QStringList VerificationRunner::sessionAutomaticSteps() const
+{
+    QStringList steps;
+    const core::Simulator* simulator = m_session ? m_session->simulator() : nullptr;
+    if (!simulator)
+        return steps;
+    for (const std::string& step : simulator->nestedSteps()) {
+        if (simulator->completeMode(step) == core::CompleteMode::Automatic)
+            steps << QString::fromStdString(step);
+    }
+    return steps;
+}
+
+// Called for every input the user plays: only a change of the assumptions counts.
+void VerificationRunner::onSessionChanged()
+{
+    QStringList automatic = sessionAutomaticSteps();
+    if (automatic == m_assumedAutomatic)
+        return;
+    m_assumedAutomatic = std::move(automatic);
+    if (isRunning() && m_current->automatic != m_assumedAutomatic)
+        cancel();
+    emit assumptionsChanged();
+}
+
 void VerificationRunner::onThreadFinished(QThread* thread)
 {
     const auto it = std::find_if(m_workers.begin(), m_workers.end(),
@@ -119,6 +163,7 @@ void VerificationRunner::onThreadFinished(QThread* thread)
     const bool wasStale = m_stale;
     if (job->failure.empty()) {
         m_result = std::move(job->result);
+        m_resultAutomatic = job->automatic;
         m_failure.clear();
         m_stale = false;
     } else {
@@ -132,6 +177,7 @@ void VerificationRunner::onThreadFinished(QThread* thread)
 void VerificationRunner::runJob(const std::shared_ptr<Job>& job)
 {
     core::VerificationOptions options;
+    options.complete = job->complete;
     options.cancelled = [job] { return job->cancelled.load(std::memory_order_relaxed); };
     try {
         job->result = core::verifyModel(job->model, options);

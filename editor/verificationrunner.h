@@ -3,7 +3,9 @@
 #include "core/verification.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
+#include <QStringList>
 
 #include <memory>
 #include <optional>
@@ -14,6 +16,7 @@ class QThread;
 namespace editor {
 
 class Document;
+class SimulationSession;
 
 // Runs core::verifyModel on a copy of the Document's model in a worker
 // thread (a proof can take seconds; the window stays responsive) and keeps
@@ -21,14 +24,20 @@ class Document;
 // under way; a change also marks the last result stale, since it describes
 // a model that no longer is, until the next run.
 //
-// Every nested step's Complete is assumed free (any value at any scan): it
-// covers whatever the user's nested behaviour does, so a "never" claim holds
-// for every behaviour and a counterexample sets Complete as it needs.
+// A nested step's Complete is assumed free (any value at any scan: it covers
+// whatever the user's nested behaviour does) unless the simulation runs with
+// that step's Complete automatic in the Simulation dock: then it is assumed
+// automatic (TRUE at every scan, as the skeleton FB). A step set to manual
+// stays free, since the user may set Complete at any time. A change of these
+// assumptions, like a change of the model, abandons a run under way; the
+// last result keeps the assumptions it was computed with, so the window can
+// tell that it no longer matches them.
 class VerificationRunner : public QObject {
     Q_OBJECT
 
 public:
-    explicit VerificationRunner(Document* document, QObject* parent = nullptr);
+    // `session` may be null: every Complete is then free.
+    VerificationRunner(Document* document, SimulationSession* session, QObject* parent = nullptr);
     ~VerificationRunner() override;
 
     // Verifies the current model; a run under way is abandoned.
@@ -45,6 +54,17 @@ public:
     bool isStale() const { return m_stale; }
     // Why the last run gave no result (out of memory...); empty otherwise.
     QString failure() const { return m_failure; }
+    // The last run was abandoned (a change, not a new start), until the next start.
+    bool wasCancelled() const { return m_wasCancelled; }
+
+    // The nested steps whose Complete the next run assumes automatic, state order.
+    QStringList assumedAutomatic() const { return m_assumedAutomatic; }
+    // The same for the last result.
+    QStringList resultAssumedAutomatic() const { return m_resultAutomatic; }
+    // The last result was computed with other Complete assumptions than the
+    // next run would use. Its counterexamples still fit the model (they set
+    // Complete themselves), so unlike isStale() this does not stop a replay.
+    bool assumptionsDiffer() const { return hasResult() && m_resultAutomatic != m_assumedAutomatic; }
 
 signals:
     void started();
@@ -53,6 +73,8 @@ signals:
     // A run was abandoned: the model changed, or the user started again.
     void cancelled();
     void staleChanged(bool stale);
+    // assumedAutomatic() changed (and with it maybe assumptionsDiffer()).
+    void assumptionsChanged();
 
 private:
     struct Job;
@@ -64,14 +86,20 @@ private:
     // In the worker thread.
     static void runJob(const std::shared_ptr<Job>& job);
     void onModelChanged();
+    void onSessionChanged();
+    QStringList sessionAutomaticSteps() const;
     void onThreadFinished(QThread* thread);
 
     Document* m_document;
+    QPointer<SimulationSession> m_session;
     std::shared_ptr<Job> m_current;   // the run whose result is wanted
     std::vector<Worker> m_workers;    // every thread not yet joined, abandoned ones included
     std::optional<core::VerificationResult> m_result;
     QString m_failure;
     bool m_stale = false;
+    bool m_wasCancelled = false;
+    QStringList m_assumedAutomatic;
+    QStringList m_resultAutomatic;
 };
 
 } // namespace editor

@@ -1016,10 +1016,6 @@
         <translation>Verifikation fehlgeschlagen: %1</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model changed</source>
-        <translation>Verifikation abgebrochen: Das Modell wurde geändert</translation>
-    </message>
-    <message>
         <source>Verification finished: some properties do not hold (see Problems)</source>
         <translation>Verifikation beendet: Einige Eigenschaften gelten nicht (siehe Probleme)</translation>
     </message>
@@ -1038,6 +1034,10 @@
     <message>
         <source>Could not replay %1.</source>
         <translation>%1 konnte nicht abgespielt werden.</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model or the Complete settings changed</source>
+        <translation>Verifikation abgebrochen: Das Modell oder die Complete-Einstellungen wurden geändert</translation>
     </message>
 </context>
 <context>
@@ -2104,6 +2104,22 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>Start the simulation and replay the scans that lead to the finding</source>
         <translation>Die Simulation starten und die Zyklen abspielen, die zum Befund führen</translation>
+    </message>
+    <message>
+        <source>Complete settings changed since verification: verify again to update the findings.</source>
+        <translation>Die Complete-Einstellungen wurden seit der Verifikation geändert: Erneut verifizieren, um die Befunde zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>All Complete outputs free</source>
+        <translation>Alle Complete-Ausgänge frei</translation>
+    </message>
+    <message>
+        <source>Assumed Complete automatic: %1</source>
+        <translation>Complete als automatisch angenommen: %1</translation>
+    </message>
+    <message>
+        <source>Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at every scan, as the skeleton function block. Verify assumes automatic the nested steps whose Complete is Automatic in the Simulation dock while the simulation runs; all others are free.</source>
+        <translation>Frei: Der untergeordnete Ablauf kann in jedem Zyklus abgeschlossen sein oder nie. Automatisch: Complete ist in jedem Zyklus TRUE, wie beim Gerüst-Funktionsbaustein. Die Verifikation nimmt die Schritte als automatisch an, deren Complete im Simulationsfenster während der Simulation auf Automatisch steht; alle anderen sind frei.</translation>
     </message>
 </context>
 <context>

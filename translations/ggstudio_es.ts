@@ -1016,10 +1016,6 @@
         <translation>La verificación ha fallado: %1</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model changed</source>
-        <translation>Verificación cancelada: el modelo ha cambiado</translation>
-    </message>
-    <message>
         <source>Verification finished: some properties do not hold (see Problems)</source>
         <translation>Verificación terminada: algunas propiedades no se cumplen (ver Problemas)</translation>
     </message>
@@ -1038,6 +1034,10 @@
     <message>
         <source>Could not replay %1.</source>
         <translation>No se ha podido reproducir %1.</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model or the Complete settings changed</source>
+        <translation>Verificación cancelada: el modelo o los ajustes de Complete han cambiado</translation>
     </message>
 </context>
 <context>
@@ -2104,6 +2104,22 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>Start the simulation and replay the scans that lead to the finding</source>
         <translation>Iniciar la simulación y reproducir los ciclos que llevan al resultado</translation>
+    </message>
+    <message>
+        <source>Complete settings changed since verification: verify again to update the findings.</source>
+        <translation>Los ajustes de Complete han cambiado desde la verificación: vuelva a verificar para actualizar los resultados.</translation>
+    </message>
+    <message>
+        <source>All Complete outputs free</source>
+        <translation>Todas las salidas Complete libres</translation>
+    </message>
+    <message>
+        <source>Assumed Complete automatic: %1</source>
+        <translation>Complete supuesto automático: %1</translation>
+    </message>
+    <message>
+        <source>Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at every scan, as the skeleton function block. Verify assumes automatic the nested steps whose Complete is Automatic in the Simulation dock while the simulation runs; all others are free.</source>
+        <translation>Libre: el comportamiento anidado puede terminar en cualquier ciclo, o nunca. Automático: Complete es TRUE en cada ciclo, como en el bloque de función esqueleto. La verificación supone automáticas las etapas anidadas cuyo Complete está en Automático en el panel Simulación mientras la simulación está activa; todas las demás son libres.</translation>
     </message>
 </context>
 <context>

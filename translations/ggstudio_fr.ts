@@ -1016,10 +1016,6 @@
         <translation>Échec de la vérification&#xa0;: %1</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model changed</source>
-        <translation>Vérification annulée&#xa0;: le modèle a changé</translation>
-    </message>
-    <message>
         <source>Verification finished: some properties do not hold (see Problems)</source>
         <translation>Vérification terminée&#xa0;: certaines propriétés ne sont pas satisfaites (voir Problèmes)</translation>
     </message>
@@ -1038,6 +1034,10 @@
     <message>
         <source>Could not replay %1.</source>
         <translation>Impossible de rejouer %1.</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model or the Complete settings changed</source>
+        <translation>Vérification annulée&#xa0;: le modèle ou les réglages de Complete ont changé</translation>
     </message>
 </context>
 <context>
@@ -2104,6 +2104,22 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>Start the simulation and replay the scans that lead to the finding</source>
         <translation>Démarrer la simulation et rejouer les cycles qui mènent au résultat</translation>
+    </message>
+    <message>
+        <source>Complete settings changed since verification: verify again to update the findings.</source>
+        <translation>Les réglages de Complete ont changé depuis la vérification&#xa0;: vérifiez à nouveau pour mettre à jour les résultats.</translation>
+    </message>
+    <message>
+        <source>All Complete outputs free</source>
+        <translation>Toutes les sorties Complete libres</translation>
+    </message>
+    <message>
+        <source>Assumed Complete automatic: %1</source>
+        <translation>Complete supposé automatique&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at every scan, as the skeleton function block. Verify assumes automatic the nested steps whose Complete is Automatic in the Simulation dock while the simulation runs; all others are free.</source>
+        <translation>Libre&#xa0;: le comportement imbriqué peut se terminer à n’importe quel cycle, ou jamais. Automatique&#xa0;: Complete vaut TRUE à chaque cycle, comme dans le bloc fonctionnel squelette. La vérification suppose automatiques les étapes à comportement imbriqué dont le Complete est Automatique dans le panneau Simulation pendant la simulation&#xa0;; toutes les autres sont libres.</translation>
     </message>
 </context>
 <context>

@@ -1016,10 +1016,6 @@
         <translation>Verifica non riuscita: %1</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model changed</source>
-        <translation>Verifica annullata: il modello è cambiato</translation>
-    </message>
-    <message>
         <source>Verification finished: some properties do not hold (see Problems)</source>
         <translation>Verifica terminata: alcune proprietà non sono soddisfatte (vedi Problemi)</translation>
     </message>
@@ -1038,6 +1034,10 @@
     <message>
         <source>Could not replay %1.</source>
         <translation>Impossibile riprodurre %1.</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model or the Complete settings changed</source>
+        <translation>Verifica annullata: il modello o le impostazioni di Complete sono cambiati</translation>
     </message>
 </context>
 <context>
@@ -2104,6 +2104,22 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>Start the simulation and replay the scans that lead to the finding</source>
         <translation>Avvia la simulazione e riproduci i cicli che portano al risultato</translation>
+    </message>
+    <message>
+        <source>Complete settings changed since verification: verify again to update the findings.</source>
+        <translation>Le impostazioni di Complete sono cambiate dalla verifica: verifica di nuovo per aggiornare i risultati.</translation>
+    </message>
+    <message>
+        <source>All Complete outputs free</source>
+        <translation>Tutte le uscite Complete libere</translation>
+    </message>
+    <message>
+        <source>Assumed Complete automatic: %1</source>
+        <translation>Complete assunto automatico: %1</translation>
+    </message>
+    <message>
+        <source>Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at every scan, as the skeleton function block. Verify assumes automatic the nested steps whose Complete is Automatic in the Simulation dock while the simulation runs; all others are free.</source>
+        <translation>Libero: il comportamento interno può completarsi a qualsiasi ciclo, o mai. Automatico: Complete è TRUE a ogni ciclo, come nel blocco funzione scheletro. La verifica assume automatiche le tappe con comportamento interno il cui Complete è Automatico nel pannello Simulazione durante la simulazione; tutte le altre sono libere.</translation>
     </message>
 </context>
 <context>

@@ -47,10 +47,12 @@ const char* const kUsage =
     "      scan (--trace adds inputs, Entry, tokens and Complete). Runs the scenario's last\n"
     "      scan, else 10 scans, or N. Exit 1 when an expectation of the scenario fails.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
+    "         [--complete-automatic STEP[,STEP...]|all]\n"
     "      Prove properties of the mode chart (docs/verification.md): print FILE: ELEMENTS:\n"
     "      severity: CODE: message lines; with DIR, write each counterexample as a scenario\n"
-    "      file there; with --promela, also write the model for SPIN. Exit 1 when a finding\n"
-    "      is an error or a warning.\n"
+    "      file there; with --promela, also write the model for SPIN. Complete of each nested\n"
+    "      step is free (any value at any scan) unless named by --complete-automatic (TRUE\n"
+    "      at every scan, as the skeleton FB). Exit 1 when a finding is an error or a warning.\n"
     "\n"
     "Formats: IN is recognised by its content. OUT is GG-Generator JSON when it ends in\n"
     ".gg.json, GG Studio JSON otherwise; --to overrides the extension.\n"
@@ -397,7 +399,7 @@ const std::map<std::string, Command>& commands()
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
         {"st", {commandSt, {"--dialect"}, {}}},
         {"simulate", {commandSimulate, {"--scans"}, {"--trace"}}},
-        {"verify", {commandVerify, {"--counterexamples", "--promela"}, {}}},
+        {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic"}, {}}},
     };
     return table;
 }

@@ -1,14 +1,20 @@
 #include "verifycommand.h"
 
 #include "core/fileio.h"
+#include "core/gemmaprogram.h"
+#include "core/model.h"
 #include "core/modelfiles.h"
 #include "core/promela.h"
 #include "core/verification.h"
 
 #include <filesystem>
+#include <optional>
 #include <ostream>
 #include <set>
+#include <sstream>
+#include <string>
 #include <system_error>
+#include <vector>
 
 namespace cli {
 
@@ -36,6 +42,71 @@ std::string counterexampleName(const core::VerificationFinding& finding, std::se
     return name;
 }
 
+std::string joined(const std::vector<std::string>& ids)
+{
+    std::string text;
+    for (const std::string& id : ids)
+        text += (text.empty() ? "" : ", ") + id;
+    return text;
+}
+
+// Why `id` cannot be assumed automatic, empty when it can: only a visible
+// macro or enclosing step has a Complete output in the generated program.
+std::string notNestedReason(const core::Model& model, const std::string& id)
+{
+    const core::Step* step = model.step(id);
+    if (!step)
+        return "no step '" + id + "' in the model";
+    if (step->type == core::StepType::Simple)
+        return id + " is a simple step: it has no Complete";
+    if (step->hidden)
+        return id + " is hidden: it is not in the generated program";
+    return {};
+}
+
+// The steps that have a Complete output: visible macro and enclosing steps, state order.
+std::vector<std::string> nestedSteps(const core::Model& model)
+{
+    std::vector<std::string> nested;
+    for (const core::GemmaStep& step : core::buildGemmaProgram(model).steps) {
+        if (step.hasNestedBehaviour())
+            nested.push_back(step.id);
+    }
+    return nested;
+}
+
+// --complete-automatic STEP[,STEP...] or `all`: the steps assumed automatic,
+// in state order; nullopt with a message on `err`.
+std::optional<std::vector<std::string>> parseCompleteAutomatic(const std::string& value, const core::Model& model,
+                                                               std::ostream& err)
+{
+    const std::vector<std::string> nested = nestedSteps(model);
+    if (value == "all")
+        return nested;
+    std::set<std::string> ids;
+    std::istringstream items(value);
+    for (std::string id; std::getline(items, id, ',');) {
+        if (id.empty())
+            break;
+        if (const std::string reason = notNestedReason(model, id); !reason.empty()) {
+            err << "ggstudio-cli: --complete-automatic: " << reason << " (nested steps: "
+                << (nested.empty() ? std::string("none") : joined(nested)) << ")\n";
+            return std::nullopt;
+        }
+        ids.insert(id);
+    }
+    if (ids.empty() || items) {
+        err << "ggstudio-cli: --complete-automatic takes step ids separated by commas, or all\n";
+        return std::nullopt;
+    }
+    std::vector<std::string> automatic;
+    for (const std::string& id : nested) {
+        if (ids.count(id))
+            automatic.push_back(id);
+    }
+    return automatic;
+}
+
 } // namespace
 
 int commandVerify(const Arguments& args, Streams streams)
@@ -55,6 +126,16 @@ int commandVerify(const Arguments& args, Streams streams)
         streams.err << loaded.error.toString() << "\n";
         return UnreadableInput;
     }
+    std::vector<std::string> automatic;
+    if (const std::optional<std::string> value = args.value("--complete-automatic")) {
+        std::optional<std::vector<std::string>> steps = parseCompleteAutomatic(*value, *loaded.model, streams.err);
+        if (!steps)
+            return UsageError;
+        automatic = std::move(*steps);
+    }
+    core::VerificationOptions options;
+    for (const std::string& id : automatic)
+        options.complete[id] = core::CompleteAssumption::Automatic;
     if (directory) {
         std::error_code error;
         std::filesystem::create_directories(*directory, error);
@@ -68,12 +149,16 @@ int commandVerify(const Arguments& args, Streams streams)
             streams.err << "ggstudio-cli: --promela needs an output file\nTry 'ggstudio-cli --help'.\n";
             return UsageError;
         }
-        if (core::Status status = core::writeFileAtomically(*promela, core::exportPromela(*loaded.model)); !status) {
+        core::PromelaOptions promelaOptions;
+        promelaOptions.complete = options.complete;
+        if (core::Status status =
+                core::writeFileAtomically(*promela, core::exportPromela(*loaded.model, promelaOptions));
+            !status) {
             streams.err << *promela << ": " << status.message << "\n";
             return UnreadableInput;
         }
     }
-    const core::VerificationResult result = core::verifyModel(*loaded.model);
+    const core::VerificationResult result = core::verifyModel(*loaded.model, options);
     std::set<std::string> used;
     for (const core::VerificationFinding& finding : result.findings) {
         streams.out << path << ": " << core::verificationElementLabel(finding) << ": "
@@ -91,7 +176,10 @@ int commandVerify(const Arguments& args, Streams streams)
     }
     streams.out << path << ": " << result.reachableSteps.size() << " reachable steps, " << result.configurations
                 << " reachable configurations, " << result.findings.size() << " finding(s)"
-                << (result.exhaustive ? "" : " (not exhaustive)") << "\n";
+                << (result.exhaustive ? "" : " (not exhaustive)");
+    if (!automatic.empty())
+        streams.out << ", Complete automatic: " << joined(automatic);
+    streams.out << "\n";
     return result.violated() ? ModelHasErrors : Success;
 }
 

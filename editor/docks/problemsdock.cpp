@@ -134,6 +134,7 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
         m_tabs->addTab(m_verificationPanel, QString());
         connect(m_verification, &VerificationRunner::finished, this, &ProblemsDock::updateTabTexts);
         connect(m_verification, &VerificationRunner::staleChanged, this, &ProblemsDock::updateTabTexts);
+        connect(m_verification, &VerificationRunner::assumptionsChanged, this, &ProblemsDock::updateTabTexts);
         setWidget(m_tabs);
     } else {
         setWidget(content);
@@ -230,8 +231,9 @@ void ProblemsDock::updateTabTexts()
     const core::VerificationResult& result = m_verification->result();
     QString verification = tr("Verification");
     if (m_verification->hasResult())
-        verification = m_verification->isStale() ? tr("Verification (outdated)")
-                                                  : tr("Verification (%1)").arg(result.findings.size());
+        verification = m_verification->isStale() || m_verification->assumptionsDiffer()
+                           ? tr("Verification (outdated)")
+                           : tr("Verification (%1)").arg(result.findings.size());
     m_tabs->setTabText(1, verification);
     // The worst severity found, at a glance.
     QIcon icon;

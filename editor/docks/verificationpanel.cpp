@@ -62,6 +62,7 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     , m_selection(selection)
     , m_view(new QTreeWidget(this))
     , m_statusLabel(new QLabel(this))
+    , m_assumptionsLabel(new QLabel(this))
     , m_verifyAction(new QAction(tr("&Verify"), this))
     , m_showAction(new QAction(tr("&Show on Chart"), this))
     , m_replayAction(new QAction(tr("&Replay in Simulator"), this))
@@ -90,7 +91,11 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     // A long status must not widen the dock: it is cut, and the tooltip has it whole.
     m_statusLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    bar->addWidget(m_statusLabel, 1);
+    bar->addWidget(m_statusLabel, 3);
+    m_assumptionsLabel->setObjectName(QStringLiteral("verificationAssumptions"));
+    m_assumptionsLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_assumptionsLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    bar->addWidget(m_assumptionsLabel, 2);
     bar->addWidget(toolButton(m_showAction, this));
     bar->addWidget(toolButton(m_replayAction, this));
     layout->addLayout(bar);
@@ -121,6 +126,7 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     connect(m_runner, &VerificationRunner::cancelled, this, &VerificationPanel::refreshStatus);
     connect(m_runner, &VerificationRunner::finished, this, &VerificationPanel::refresh);
     connect(m_runner, &VerificationRunner::staleChanged, this, &VerificationPanel::refresh);
+    connect(m_runner, &VerificationRunner::assumptionsChanged, this, &VerificationPanel::refresh);
     refresh();
 }
 
@@ -131,10 +137,13 @@ int VerificationPanel::findingIndex(const QTreeWidgetItem* item)
 
 void VerificationPanel::refresh()
 {
+    // The same finding stays current: entering the simulation to replay one
+    // refreshes the list (the Complete assumptions change).
+    const int current = findingIndex(m_view->currentItem());
     m_view->clear();
     const std::vector<core::VerificationFinding>& findings = m_runner->result().findings;
-    // A stale finding is greyed: it describes the model as it was.
-    const bool stale = m_runner->isStale();
+    // A stale finding is greyed: it describes the model, or assumptions, as they were.
+    const bool stale = m_runner->isStale() || m_runner->assumptionsDiffer();
     const QBrush grey = palette().brush(QPalette::Disabled, QPalette::Text);
     // Errors first: the core orders by code, and the violations matter most.
     std::vector<std::size_t> order(findings.size());
@@ -160,7 +169,11 @@ void VerificationPanel::refresh()
         items << item;
     }
     m_view->addTopLevelItems(items);
-    if (!items.isEmpty())
+    auto same = std::find_if(items.cbegin(), items.cend(),
+                             [current](const QTreeWidgetItem* item) { return findingIndex(item) == current; });
+    if (same != items.cend())
+        m_view->setCurrentItem(*same, 0, QItemSelectionModel::NoUpdate);
+    else if (!items.isEmpty())
         m_view->setCurrentItem(items.front(), 0, QItemSelectionModel::NoUpdate);
     refreshStatus();
     updateActions();
@@ -177,6 +190,8 @@ void VerificationPanel::refreshStatus()
         text = tr("Not verified yet.");
     } else if (m_runner->isStale()) {
         text = tr("Model changed since verification: verify again to update the findings.");
+    } else if (m_runner->assumptionsDiffer()) {
+        text = tr("Complete settings changed since verification: verify again to update the findings.");
     } else {
         const core::VerificationResult& result = m_runner->result();
         const QString configurations = QString::number(static_cast<qulonglong>(result.configurations));
@@ -189,6 +204,23 @@ void VerificationPanel::refreshStatus()
     }
     m_statusLabel->setText(text);
     m_statusLabel->setToolTip(text);
+    refreshAssumptions();
+}
+
+// What the shown findings assume, else what Verify will assume.
+void VerificationPanel::refreshAssumptions()
+{
+    const QStringList automatic =
+        m_runner->hasResult() ? m_runner->resultAssumedAutomatic() : m_runner->assumedAutomatic();
+    const QString text = automatic.isEmpty()
+        ? tr("All Complete outputs free")
+        : tr("Assumed Complete automatic: %1").arg(automatic.join(QStringLiteral(", ")));
+    m_assumptionsLabel->setText(text);
+    m_assumptionsLabel->setToolTip(
+        text + QLatin1Char('\n')
+        + tr("Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at "
+             "every scan, as the skeleton function block. Verify assumes automatic the nested steps whose "
+             "Complete is Automatic in the Simulation dock while the simulation runs; all others are free."));
 }
 
 void VerificationPanel::updateActions()

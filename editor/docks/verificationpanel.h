@@ -18,8 +18,9 @@ class VerificationRunner;
 // errors first)
 // and, for the current finding, Show on Chart (selects its first element)
 // and Replay in Simulator (asked of the window through replayRequested()).
-// After a change of the model the findings stay, greyed, with a note, until
-// the next run.
+// After a change of the model, or of the Complete assumptions (Simulation
+// dock), the findings stay, greyed, with a note, until the next run. A label
+// says which nested steps the shown findings assume Complete automatic.
 class VerificationPanel : public QWidget {
     Q_OBJECT
 
@@ -30,6 +31,7 @@ public:
 
     QTreeWidget* view() const { return m_view; }
     QLabel* statusLabel() const { return m_statusLabel; }
+    QLabel* assumptionsLabel() const { return m_assumptionsLabel; }
     QAction* verifyAction() const { return m_verifyAction; }
     QAction* showOnChartAction() const { return m_showAction; }
     QAction* replayAction() const { return m_replayAction; }
@@ -46,6 +48,7 @@ signals:
 private:
     void refresh();
     void refreshStatus();
+    void refreshAssumptions();
     void updateActions();
     void copySelected();
 
@@ -53,6 +56,7 @@ private:
     Selection* m_selection;
     QTreeWidget* m_view;
     QLabel* m_statusLabel;
+    QLabel* m_assumptionsLabel;
     QAction* m_verifyAction;
     QAction* m_showAction;
     QAction* m_replayAction;

@@ -1,7 +1,9 @@
 // Verify in the editor: the action runs the verifier in a worker thread, the
 // findings go to the Problems dock's Verification category, Show on Chart
 // selects the element, Replay in Simulator plays the counterexample to the
-// state it claims, and a change of the model marks the findings stale.
+// state it claims, and a change of the model marks the findings stale. The
+// Complete modes of the Simulation dock decide which nested steps are
+// verified with Complete automatic, and the panel says which.
 
 #include "modelfactory.h"
 
@@ -18,8 +20,10 @@
 #include "editor/verificationrunner.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QLabel>
 #include <QSettings>
+#include <QStatusBar>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTabWidget>
@@ -42,6 +46,18 @@ core::Model modelWithStuckStep()
     core::Model model = factory::realisticModel();
     if (!model.setCondition("D2->A5", "Acknowledge AND NOT Acknowledge"))
         qFatal("cannot seed the defect");
+    return model;
+}
+
+// F1->A2 is TRUE and waits for F1.Complete; F1->F4 does not wait. With
+// F1's Complete free, F1->F4 fires whenever Complete is FALSE; automatic,
+// F1->A2 always fires first and F1->F4 is dead (GV102).
+core::Model modelWaitingForComplete()
+{
+    core::Model model = factory::realisticModel();
+    if (!model.setCondition("F1->A2", "TRUE") || !model.setTokens("F1->A2", {}) || !model.setNegated("F1->F4", true)
+        || !model.setTokens("F1->F4", {}))
+        qFatal("cannot build the model");
     return model;
 }
 
@@ -73,11 +89,14 @@ private slots:
     void modelEditMarksResultsStale();
     void modelEditCancelsARunningVerification();
     void languageChangeKeepsTheFindings();
+    void simulationCompleteModesAreAssumed();
+    void completeSettingChangeCancelsARunningVerification();
     void everyCodeHasATemplate();
 
 private:
     void verifyAndWait();
     QTreeWidgetItem* row(const QString& code, const QString& element) const;
+    void setCompleteMode(const QString& step, const QString& mode);
 
     QTemporaryDir m_settingsDir;
     std::unique_ptr<Translators> m_translators;
@@ -144,6 +163,18 @@ QTreeWidgetItem* TestVerification::row(const QString& code, const QString& eleme
             return item;
     }
     return nullptr;
+}
+
+// As the user does it: the step's combo box in the Simulation dock.
+void TestVerification::setCompleteMode(const QString& step, const QString& mode)
+{
+    auto* dock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));
+    QVERIFY(dock);
+    QComboBox* combo = dock->completeModeCombo(step);
+    QVERIFY(combo);
+    const int index = combo->findText(mode);
+    QVERIFY(index >= 0);
+    combo->setCurrentIndex(index);
 }
 
 void TestVerification::verifyListsTheDefect()
@@ -229,8 +260,11 @@ void TestVerification::replayReachesTheCounterexampleState()
     QVERIFY(session->replayFailures().empty());
     QCOMPARE(session->simulator()->scanCount(), finding->counterexample->scans);
     QCOMPARE(QString::fromStdString(session->simulator()->activeStepId()), QStringLiteral("D2"));
-    // Entering the simulation is no change of the model.
+    // Entering the simulation is no change of the model: the Complete
+    // assumptions may differ now, but a counterexample sets Complete itself.
     QVERIFY(!m_runner->isStale());
+    QCOMPARE(panel->view()->currentItem(), row(QStringLiteral("GV106"), QStringLiteral("D2")));
+    QVERIFY(panel->replayAction()->isEnabled());
 }
 
 void TestVerification::modelEditMarksResultsStale()
@@ -307,7 +341,108 @@ void TestVerification::languageChangeKeepsTheFindings()
     QVERIFY(stuck);
     QVERIFY(stuck->text(VerificationPanel::MessageColumn) != english);
     QVERIFY(stuck->text(VerificationPanel::MessageColumn).contains(QStringLiteral("D2")));
+    const QString assumptions = m_dock->verificationPanel()->assumptionsLabel()->text();
+    QVERIFY(!assumptions.isEmpty());
+    QVERIFY(assumptions != QStringLiteral("All Complete outputs free"));
     m_translators->setLanguage(QStringLiteral("en"));
+}
+
+void TestVerification::simulationCompleteModesAreAssumed()
+{
+    m_window->document()->replaceModel(modelWaitingForComplete(), QString(), core::ModelFormat::Native);
+    VerificationPanel* panel = m_dock->verificationPanel();
+    const auto deadF1F4 = [this] { return row(QStringLiteral("GV102"), QStringLiteral("F1->F4")); };
+
+    // Without the simulation every Complete is free: F1->F4 can fire.
+    QVERIFY(m_runner->assumedAutomatic().isEmpty());
+    verifyAndWait();
+    QVERIFY(!deadF1F4());
+    QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("All Complete outputs free"));
+    const QString freeStatus = panel->statusLabel()->text();
+
+    // The simulation starts with every Complete automatic: the findings no
+    // longer match what Verify would assume, yet their scenarios still replay.
+    SimulationSession* session = m_window->simulationSession();
+    QSignalSpy assumptionsChanged(m_runner, &VerificationRunner::assumptionsChanged);
+    session->setActive(true);
+    QCOMPARE(assumptionsChanged.size(), 1);
+    QCOMPARE(m_runner->assumedAutomatic(), QStringList({"A7", "F1", "F4"}));
+    QVERIFY(m_runner->assumptionsDiffer());
+    QVERIFY(!m_runner->isStale());
+    QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("Complete settings changed since verification")));
+    QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("All Complete outputs free")); // the findings'
+    QCOMPARE(m_dock->tabs()->tabText(1), QStringLiteral("Verification (outdated)"));
+    QTreeWidgetItem* first = panel->view()->topLevelItem(0);
+    QVERIFY(first);
+    QCOMPARE(first->foreground(VerificationPanel::MessageColumn).color(),
+             panel->palette().color(QPalette::Disabled, QPalette::Text));
+    panel->view()->setCurrentItem(first);
+    QVERIFY(panel->replayAction()->isEnabled());
+
+    // Manual everywhere is free everywhere: the findings match again. Playing
+    // an input changes no assumption.
+    for (const QString& step : {QStringLiteral("A7"), QStringLiteral("F1"), QStringLiteral("F4")})
+        setCompleteMode(step, QStringLiteral("Manual"));
+    QVERIFY(m_runner->assumedAutomatic().isEmpty());
+    QVERIFY(!m_runner->assumptionsDiffer());
+    QCOMPARE(panel->statusLabel()->text(), freeStatus);
+    QCOMPARE(m_dock->tabs()->tabText(1), QStringLiteral("Verification (%1)").arg(m_runner->result().findings.size()));
+    const int changes = assumptionsChanged.size();
+    QVERIFY(session->setVariable(0, true));
+    QCOMPARE(assumptionsChanged.size(), changes);
+
+    // F1 automatic: F1->A2 always fires first, F1->F4 is dead.
+    setCompleteMode(QStringLiteral("F1"), QStringLiteral("Automatic"));
+    QCOMPARE(m_runner->assumedAutomatic(), QStringList({"F1"}));
+    QVERIFY(m_runner->assumptionsDiffer());
+    verifyAndWait();
+    QVERIFY(!m_runner->assumptionsDiffer());
+    QTreeWidgetItem* dead = deadF1F4();
+    QVERIFY2(dead, "F1->F4 is dead when F1 completes at once");
+    QVERIFY(!dead->text(VerificationPanel::ScansColumn).isEmpty());
+    QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("Assumed Complete automatic: F1"));
+    QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("do not hold")));
+
+    // Leaving the simulation: every Complete free again.
+    session->setActive(false);
+    QVERIFY(m_runner->assumedAutomatic().isEmpty());
+    QVERIFY(m_runner->assumptionsDiffer());
+    verifyAndWait();
+    QVERIFY(!deadF1F4());
+    QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("All Complete outputs free"));
+}
+
+void TestVerification::completeSettingChangeCancelsARunningVerification()
+{
+    SimulationSession* session = m_window->simulationSession();
+    session->setActive(true);
+    QSignalSpy cancelled(m_runner, &VerificationRunner::cancelled);
+    QSignalSpy finished(m_runner, &VerificationRunner::finished);
+
+    // An input played is no change of the assumptions: the run goes on.
+    m_window->findChild<QAction*>(QStringLiteral("verifyAction"))->trigger();
+    QVERIFY(m_runner->isRunning());
+    QVERIFY(session->setVariable(0, true));
+    QVERIFY(m_runner->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(finished.size() == 1, kVerifyTimeoutMs);
+    QCOMPARE(cancelled.size(), 0);
+    QCOMPARE(m_runner->resultAssumedAutomatic(), QStringList({"A7", "F1", "F4"}));
+
+    // A Complete mode changed is: the run under way assumed the old one.
+    m_runner->start();
+    QVERIFY(m_runner->isRunning());
+    setCompleteMode(QStringLiteral("F4"), QStringLiteral("Manual"));
+    QVERIFY(!m_runner->isRunning());
+    QCOMPARE(cancelled.size(), 1);
+    QVERIFY(m_runner->wasCancelled());
+    QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("Complete settings changed")));
+    QTest::qWait(300);
+    QCOMPARE(finished.size(), 1);
+    // The last result stays, with what it assumed.
+    QCOMPARE(m_runner->resultAssumedAutomatic(), QStringList({"A7", "F1", "F4"}));
+    QVERIFY(m_runner->assumptionsDiffer());
+    QCOMPARE(m_dock->verificationPanel()->assumptionsLabel()->text(),
+             QStringLiteral("Assumed Complete automatic: A7, F1, F4"));
 }
 
 void TestVerification::everyCodeHasATemplate()
