@@ -18,7 +18,6 @@ int runApplication(int argc, char** argv, const StartupHooks& hooks)
     QApplication::setOrganizationName(QStringLiteral("GG Studio"));
     QApplication::setApplicationName(QStringLiteral("GG Studio"));
     QApplication::setApplicationVersion(QStringLiteral(GGSTUDIO_VERSION));
-    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/ggstudio.svg")));
 
     // Translated before any widget exists, so every text starts right.
     Translators translators;
@@ -35,7 +34,13 @@ int runApplication(int argc, char** argv, const StartupHooks& hooks)
                                  QStringLiteral("[model]"));
     parser.process(app);
 
-    MainWindow window(translators);
+    // The chart first: the docks fill in right after the first frame.
+    MainWindow window(translators, MainWindow::DockContents::AfterFirstFrame);
+    // After the first frame as well: the X11 platform renders the icon in
+    // every size a window manager may ask for, a cost the chart need not wait for.
+    QObject::connect(&window, &MainWindow::firstFrameShown, &app, [] {
+        QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/ggstudio.svg")));
+    }, Qt::QueuedConnection);
     if (hooks.windowCreated)
         hooks.windowCreated(window);
     window.show();

@@ -5,7 +5,6 @@
 
 #include <QCoreApplication>
 #include <QStringList>
-#include <QStyle>
 
 #include <vector>
 
@@ -269,19 +268,6 @@ QString severityText(core::Severity severity)
         return DiagnosticText::tr("Warning");
     case core::Severity::Info:
         return DiagnosticText::tr("Information");
-    }
-    return {};
-}
-
-QIcon severityIcon(core::Severity severity, const QStyle* style)
-{
-    switch (severity) {
-    case core::Severity::Error:
-        return style->standardIcon(QStyle::SP_MessageBoxCritical);
-    case core::Severity::Warning:
-        return style->standardIcon(QStyle::SP_MessageBoxWarning);
-    case core::Severity::Info:
-        return style->standardIcon(QStyle::SP_MessageBoxInformation);
     }
     return {};
 }

@@ -3,10 +3,7 @@
 #include "core/diagnostic.h"
 #include "core/verification.h"
 
-#include <QIcon>
 #include <QString>
-
-class QStyle;
 
 namespace editor {
 
@@ -25,8 +22,5 @@ QString verificationText(const core::VerificationFinding& finding);
 
 // "Error", "Warning", "Information".
 QString severityText(core::Severity severity);
-
-// The standard message-box icon of the severity, from the given style.
-QIcon severityIcon(core::Severity severity, const QStyle* style);
 
 } // namespace editor

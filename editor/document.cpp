@@ -52,8 +52,13 @@ std::string localPath(const QString& path)
 } // namespace
 
 Document::Document(QObject* parent)
+    : Document(core::Model(), parent)
+{
+}
+
+Document::Document(const core::Model& model, QObject* parent)
     : QObject(parent)
-    , m_model(std::make_unique<core::Model>())
+    , m_model(std::make_unique<core::Model>(model))
     , m_undoStack(new QUndoStack(this))
 {
     m_observer = m_model->addObserver([this](const core::ModelChange& change) { onModelChanged(change); });

@@ -28,7 +28,10 @@ class Document : public QObject {
     Q_OBJECT
 
 public:
+    // The template with the default settings.
     explicit Document(QObject* parent = nullptr);
+    // Starts on `model` (untitled, native format), as replaceModel would.
+    explicit Document(const core::Model& model, QObject* parent = nullptr);
     ~Document() override;
 
     const core::Model& model() const { return *m_model; }

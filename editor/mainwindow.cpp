@@ -48,6 +48,15 @@ namespace {
 
 constexpr int kStatusMessageMs = 6000;
 
+// What File > New opens: the template with the user's default settings.
+core::Model newTemplate(const Settings& settings)
+{
+    core::Model model;
+    model.setCycleTimeMs(settings.defaultCycleTimeMs());
+    model.setDialect(settings.defaultDialect());
+    return model;
+}
+
 // The window's first size: most of the screen, but no wider than a chart
 // and its docks need.
 QSize defaultWindowSize(const QWidget* window)
@@ -59,19 +68,19 @@ QSize defaultWindowSize(const QWidget* window)
 
 } // namespace
 
-MainWindow::MainWindow(Translators& translators, QWidget* parent)
+MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget* parent)
     : QMainWindow(parent)
     , m_translators(translators)
     , m_settings(std::make_unique<Settings>())
-    , m_document(new Document(this))
+    , m_document(new Document(newTemplate(*m_settings), this))
     , m_selection(new Selection(this))
     , m_autosave(new Autosave(*m_document, m_document))
     , m_scene(new ChartScene(m_document, m_selection, this))
     , m_view(new ChartView(m_scene, this))
 {
     setObjectName("mainWindow");
-    // The window icon is the application's (editor::runApplication sets it):
-    // reading the SVG once is enough at start-up.
+    // The window icon is the application's: editor::runApplication sets it
+    // once, after the first frame.
     m_view->setObjectName("chartView");
     setCentralWidget(m_view);
 
@@ -82,7 +91,12 @@ MainWindow::MainWindow(Translators& translators, QWidget* parent)
     m_session = new SimulationSession(m_document, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
     m_verification = new VerificationRunner(m_document, m_session, this);
-    createDocks();
+    if (contents == DockContents::Immediate) {
+        createDocks();
+    } else {
+        createDockFrames();
+        m_view->viewport()->installEventFilter(this);
+    }
     createActions();
     createMenus();
     createStatusBar();
@@ -100,7 +114,8 @@ MainWindow::MainWindow(Translators& translators, QWidget* parent)
         statusBar()->showMessage(tr("Autosave failed: %1").arg(message), kStatusMessageMs);
     });
 
-    newModel();
+    // The document already holds the template newModel() would load.
+    updateTitle();
     m_showHiddenAction->setChecked(m_settings->showHidden());
     restoreLayout();
 }
@@ -122,7 +137,14 @@ MainWindow::~MainWindow()
 
 QList<QDockWidget*> MainWindow::docks() const
 {
+    if (!m_dockFrames.isEmpty())
+        return m_dockFrames;
     return {m_stepDock, m_transitionDock, m_simulationDock, m_variablesDock, m_problemsDock, m_stPreviewDock};
+}
+
+QDockWidget* MainWindow::dockNamed(const QString& objectName) const
+{
+    return findChild<QDockWidget*>(objectName, Qt::FindDirectChildrenOnly);
 }
 
 void MainWindow::createDocks()
@@ -135,19 +157,55 @@ void MainWindow::createDocks()
             &MainWindow::replayCounterexample);
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
     m_simulationDock = new SimulationDock(m_session, m_document, this);
+    arrangeDocks(docks());
+}
 
-    addDockWidget(Qt::RightDockWidgetArea, m_stepDock);
-    addDockWidget(Qt::RightDockWidgetArea, m_transitionDock);
-    addDockWidget(Qt::RightDockWidgetArea, m_simulationDock);
-    tabifyDockWidget(m_stepDock, m_transitionDock);
-    tabifyDockWidget(m_transitionDock, m_simulationDock);
-    addDockWidget(Qt::BottomDockWidgetArea, m_variablesDock);
-    addDockWidget(Qt::BottomDockWidgetArea, m_problemsDock);
-    addDockWidget(Qt::BottomDockWidgetArea, m_stPreviewDock);
-    tabifyDockWidget(m_variablesDock, m_problemsDock);
-    tabifyDockWidget(m_problemsDock, m_stPreviewDock);
-    m_stepDock->raise();
-    m_variablesDock->raise();
+// Empty docks with the real ones' titles and names, so that the window has
+// its final layout (and restores the saved one) from the first frame.
+void MainWindow::createDockFrames()
+{
+    const std::pair<QString, const char*> frames[] = {
+        {StepDock::title(), "stepDock"},         {TransitionDock::title(), "transitionDock"},
+        {SimulationDock::title(), "simulationDock"}, {VariablesDock::title(), "variablesDock"},
+        {ProblemsDock::title(), "problemsDock"},   {StPreviewDock::title(), "stPreviewDock"},
+    };
+    for (const auto& [title, name] : frames) {
+        auto* frame = new QDockWidget(title, this);
+        frame->setObjectName(QLatin1String(name));
+        m_dockFrames << frame;
+    }
+    arrangeDocks(m_dockFrames);
+}
+
+// `docks` in the order of docks(): Step, Transition, Simulation on the right,
+// tabbed; Variables, Problems, Structured Text below, tabbed.
+void MainWindow::arrangeDocks(const QList<QDockWidget*>& docks)
+{
+    for (int i = 0; i < 3; ++i)
+        addDockWidget(Qt::RightDockWidgetArea, docks[i]);
+    for (int i = 3; i < 6; ++i)
+        addDockWidget(Qt::BottomDockWidgetArea, docks[i]);
+    for (int i : {0, 1, 3, 4})
+        tabifyDockWidget(docks[i], docks[i + 1]);
+    docks[0]->raise();
+    docks[3]->raise();
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == m_view->viewport() && event->type() == QEvent::Paint) {
+        m_view->viewport()->removeEventFilter(this);
+        // After this paint is on screen, not within it.
+        QMetaObject::invokeMethod(this, &MainWindow::ensureDocksReady, Qt::QueuedConnection);
+        emit firstFrameShown();
+    }
+    return QMainWindow::eventFilter(watched, event);
+}
+
+void MainWindow::ensureDocksReady()
+{
+    if (!docksReady())
+        rebuildDocks();
 }
 
 void MainWindow::deleteDocks()
@@ -162,14 +220,17 @@ void MainWindow::deleteDocks()
     m_problemsDock = nullptr;
     m_stPreviewDock = nullptr;
     m_simulationDock = nullptr;
+    m_dockFrames.clear();
 }
 
 // The docks set their texts when they are built, so a new language builds
 // them again, in the place and size the user gave them. Only what they show
-// of the document and the selection matters, and that comes back.
+// of the document and the selection matters, and that comes back. The empty
+// frames of a deferred start are replaced the same way.
 void MainWindow::rebuildDocks()
 {
     m_docksRebuildPending = false;
+    const bool replacingFrames = !docksReady();
     const QByteArray state = saveState();
     for (QDockWidget* dock : docks())
         m_viewMenu->removeAction(dock->toggleViewAction());
@@ -178,6 +239,10 @@ void MainWindow::rebuildDocks()
     restoreState(state);
     applyEditingLock();
     m_viewMenu->insertActions(m_dockActionsEnd, toggleViewActions());
+    if (replacingFrames) {
+        emit docksBecameReady();
+        return;
+    }
     // The chart paints its frame titles in the current language.
     m_scene->update();
 }
@@ -328,6 +393,7 @@ void MainWindow::createStatusBar()
 {
     m_problemCounter = new ProblemCounter(*m_document, this);
     connect(m_problemCounter, &ProblemCounter::clicked, this, [this] {
+        ensureDocksReady();
         m_problemsDock->show();
         m_problemsDock->raise();
     });
@@ -351,9 +417,11 @@ void MainWindow::applyDefaultLayout()
 {
     const QSize window = size();
     const int rightWidth = std::clamp(window.width() * 26 / 100, 320, 440);
-    const int bottomHeight = std::clamp(window.height() * 21 / 100, 150, 320);
-    resizeDocks({m_stepDock}, {rightWidth}, Qt::Horizontal);
-    resizeDocks({m_variablesDock}, {bottomHeight}, Qt::Vertical);
+    // At least what the Problems dock needs below its tab bar, so that the
+    // docks filling in after the first frame (DockContents) do not push the chart.
+    const int bottomHeight = std::clamp(window.height() * 21 / 100, 180, 320);
+    resizeDocks({dockNamed(QStringLiteral("stepDock"))}, {rightWidth}, Qt::Horizontal);
+    resizeDocks({dockNamed(QStringLiteral("variablesDock"))}, {bottomHeight}, Qt::Vertical);
 }
 
 void MainWindow::restoreLayout()
@@ -469,10 +537,7 @@ void MainWindow::newModel()
 {
     if (!maybeSave())
         return;
-    core::Model model;
-    model.setCycleTimeMs(m_settings->defaultCycleTimeMs());
-    model.setDialect(m_settings->defaultDialect());
-    m_document->replaceModel(model, QString(), core::ModelFormat::Native);
+    m_document->replaceModel(newTemplate(*m_settings), QString(), core::ModelFormat::Native);
     m_selection->clear();
     updateTitle();
 }
@@ -660,6 +725,7 @@ void MainWindow::onSimulationActiveChanged(bool active)
     m_simulationIndicator->setVisible(active);
     applyEditingLock();
     if (active) {
+        ensureDocksReady();
         m_simulationDock->show();
         m_simulationDock->raise();
     }
@@ -668,6 +734,7 @@ void MainWindow::onSimulationActiveChanged(bool active)
 void MainWindow::verify()
 {
     m_verification->start();
+    ensureDocksReady();
     m_problemsDock->show();
     m_problemsDock->raise();
     m_problemsDock->showVerification();
@@ -706,6 +773,7 @@ void MainWindow::replayCounterexample(int findingIndex)
         box.exec();
         return;
     }
+    ensureDocksReady();
     m_simulationDock->show();
     m_simulationDock->raise();
     m_session->run();
@@ -721,6 +789,8 @@ void MainWindow::applyEditingLock()
     m_redoAction->setEnabled(!locked && stack->canRedo());
     m_modelSettingsAction->setEnabled(!locked);
     m_resetAction->setEnabled(!locked);
+    if (!docksReady())
+        return; // the docks are built with the lock applied
     for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock, m_variablesDock})
         dock->widget()->setEnabled(!locked);
 }

@@ -2,6 +2,7 @@
 
 #include "editor/diagnostictext.h"
 #include "editor/document.h"
+#include "editor/severityicon.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -68,9 +69,9 @@ void ProblemCounter::retranslate()
 {
     // The icon of the worst severity present; no icon when all is well.
     if (m_errors > 0)
-        m_button->setIcon(severityIcon(core::Severity::Error, style()));
+        m_button->setIcon(severityIcon(core::Severity::Error));
     else if (m_warnings > 0)
-        m_button->setIcon(severityIcon(core::Severity::Warning, style()));
+        m_button->setIcon(severityIcon(core::Severity::Warning));
     else
         m_button->setIcon(QIcon());
 

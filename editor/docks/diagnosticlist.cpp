@@ -1,6 +1,7 @@
 #include "editor/docks/diagnosticlist.h"
 
 #include "editor/diagnostictext.h"
+#include "editor/severityicon.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
@@ -34,7 +35,7 @@ void DiagnosticList::setDiagnostics(const std::vector<core::Diagnostic>& diagnos
         row->setContentsMargins(0, 0, 0, 0);
         row->setSpacing(4);
         auto* icon = new QLabel(rowWidget);
-        icon->setPixmap(severityIcon(diagnostic.severity, style()).pixmap(iconSize, iconSize));
+        icon->setPixmap(severityIcon(diagnostic.severity).pixmap(iconSize, iconSize));
         icon->setAlignment(Qt::AlignTop);
         icon->setToolTip(severityText(diagnostic.severity));
         auto* text = new QLabel(diagnosticText(diagnostic), rowWidget);

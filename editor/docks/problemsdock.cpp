@@ -5,6 +5,7 @@
 #include "editor/docks/verificationpanel.h"
 #include "editor/document.h"
 #include "editor/selection.h"
+#include "editor/severityicon.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>
@@ -75,6 +76,11 @@ QString keyOf(const core::Diagnostic& diagnostic)
 
 } // namespace
 
+QString ProblemsDock::title()
+{
+    return tr("Problems");
+}
+
 ProblemsDock::ProblemsDock(Document* document, Selection* selection, QWidget* parent)
     : ProblemsDock(document, selection, nullptr, parent)
 {
@@ -82,7 +88,7 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, QWidget* pa
 
 ProblemsDock::ProblemsDock(Document* document, Selection* selection, VerificationRunner* verification,
                            QWidget* parent)
-    : QDockWidget(tr("Problems"), parent)
+    : QDockWidget(title(), parent)
     , m_document(document)
     , m_selection(selection)
     , m_view(new QTreeWidget)
@@ -153,7 +159,7 @@ QToolButton* ProblemsDock::createFilterButton(core::Severity severity, const QSt
     button->setChecked(true);
     button->setAutoRaise(true);
     button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    button->setIcon(severityIcon(severity, style()));
+    button->setIcon(severityIcon(severity));
     button->setIconSize(QSize(16, 16));
     connect(button, &QToolButton::toggled, this, &ProblemsDock::applyFilter);
     return button;
@@ -184,7 +190,7 @@ void ProblemsDock::refresh()
     for (const core::Diagnostic& diagnostic : m_document->diagnostics()) {
         const QString message = diagnosticText(diagnostic);
         auto* item = new QTreeWidgetItem({ fromStd(diagnostic.code), elementText(diagnostic), message });
-        item->setIcon(CodeColumn, severityIcon(diagnostic.severity, style()));
+        item->setIcon(CodeColumn, severityIcon(diagnostic.severity));
         item->setToolTip(CodeColumn, severityText(diagnostic.severity));
         item->setToolTip(MessageColumn, message);
         item->setData(0, SeverityRole, static_cast<int>(diagnostic.severity));
@@ -241,7 +247,7 @@ void ProblemsDock::updateTabTexts()
         core::Severity worst = core::Severity::Info;
         for (const core::VerificationFinding& finding : result.findings)
             worst = std::min(worst, finding.severity);
-        icon = severityIcon(worst, style());
+        icon = severityIcon(worst);
     }
     m_tabs->setTabIcon(1, icon);
 }

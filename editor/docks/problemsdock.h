@@ -26,6 +26,8 @@ class ProblemsDock : public QDockWidget {
     Q_OBJECT
 
 public:
+    // Also the title of the empty frame that stands for the dock at start-up.
+    static QString title();
     enum Column { CodeColumn, ElementColumn, MessageColumn };
 
     ProblemsDock(Document* document, Selection* selection, QWidget* parent = nullptr);

@@ -11,6 +11,7 @@
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/document.h"
 #include "editor/selection.h"
+#include "editor/severityicon.h"
 #include "editor/statenames.h"
 
 #include "core/model.h"
@@ -57,8 +58,13 @@ int linesHeight(const QWidget* widget, int lines)
 
 } // namespace
 
+QString StepDock::title()
+{
+    return tr("Step");
+}
+
 StepDock::StepDock(Document* document, Selection* selection, QWidget* parent)
-    : QDockWidget(tr("Step"), parent)
+    : QDockWidget(title(), parent)
     , m_document(document)
     , m_selection(selection)
 {
@@ -320,7 +326,7 @@ QTreeWidgetItem* StepDock::transitionItem(const core::Transition& transition, bo
         }
     } else if (m_document->hasProblems(ElementRef::transition(id))) {
         const bool error = core::hasErrors(m_document->diagnosticsFor(ElementRef::transition(id)));
-        item->setIcon(1, severityIcon(error ? core::Severity::Error : core::Severity::Warning, style()));
+        item->setIcon(1, severityIcon(error ? core::Severity::Error : core::Severity::Warning));
     }
     item->setToolTip(0, tip.join(QLatin1Char('\n')));
     item->setToolTip(1, tip.join(QLatin1Char('\n')));

@@ -29,6 +29,8 @@ class StepDock : public QDockWidget {
     Q_OBJECT
 
 public:
+    // Also the title of the empty frame that stands for the dock at start-up.
+    static QString title();
     StepDock(Document* document, Selection* selection, QWidget* parent = nullptr);
 
     // The step shown; empty when the selection is not a step.

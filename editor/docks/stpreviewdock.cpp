@@ -34,8 +34,13 @@ QString fromStd(const std::string& text)
 
 } // namespace
 
+QString StPreviewDock::title()
+{
+    return tr("Structured Text");
+}
+
 StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* parent)
-    : QDockWidget(tr("Structured Text"), parent)
+    : QDockWidget(title(), parent)
     , m_document(document)
     , m_selection(selection)
     , m_dialectCombo(new QComboBox)

@@ -27,6 +27,8 @@ class StPreviewDock : public QDockWidget {
     Q_OBJECT
 
 public:
+    // Also the title of the empty frame that stands for the dock at start-up.
+    static QString title();
     StPreviewDock(Document* document, Selection* selection, QWidget* parent = nullptr);
 
     QPlainTextEdit* editor() const { return m_editor; }

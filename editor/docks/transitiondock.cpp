@@ -100,8 +100,13 @@ bool hasToken(const core::Transition& transition, const std::string& name)
 
 } // namespace
 
+QString TransitionDock::title()
+{
+    return tr("Transition");
+}
+
 TransitionDock::TransitionDock(Document* document, Selection* selection, QWidget* parent)
-    : QDockWidget(tr("Transition"), parent)
+    : QDockWidget(title(), parent)
     , m_document(document)
     , m_selection(selection)
 {

@@ -31,6 +31,8 @@ class TransitionDock : public QDockWidget {
     Q_OBJECT
 
 public:
+    // Also the title of the empty frame that stands for the dock at start-up.
+    static QString title();
     TransitionDock(Document* document, Selection* selection, QWidget* parent = nullptr);
 
     // The transition shown; empty when the selection is not a transition.

@@ -55,8 +55,13 @@ bool isClipboardKey(QKeyEvent* event)
 
 } // namespace
 
+QString VariablesDock::title()
+{
+    return tr("Variables");
+}
+
 VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* parent)
-    : QDockWidget(tr("Variables"), parent)
+    : QDockWidget(title(), parent)
     , m_document(document)
     , m_selection(selection)
     , m_model(new VariablesTableModel(document, this))

@@ -26,6 +26,8 @@ class VariablesDock : public QDockWidget {
     Q_OBJECT
 
 public:
+    // Also the title of the empty frame that stands for the dock at start-up.
+    static QString title();
     VariablesDock(Document* document, Selection* selection, QWidget* parent = nullptr);
 
     VariablesTableModel* tableModel() const { return m_model; }

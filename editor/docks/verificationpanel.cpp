@@ -3,6 +3,7 @@
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/selection.h"
+#include "editor/severityicon.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>
@@ -158,7 +159,7 @@ void VerificationPanel::refresh()
             finding.counterexample ? QString::number(finding.counterexample->scans) : QString();
         auto* item = new QTreeWidgetItem(
             {QString::fromStdString(finding.code), elementsText(finding), scans, message});
-        item->setIcon(CodeColumn, severityIcon(finding.severity, style()));
+        item->setIcon(CodeColumn, severityIcon(finding.severity));
         item->setToolTip(CodeColumn, severityText(finding.severity));
         item->setToolTip(ElementColumn, item->text(ElementColumn));
         item->setToolTip(MessageColumn, message);

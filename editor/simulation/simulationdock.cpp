@@ -155,8 +155,13 @@ QLabel* sectionLabel(const QString& text, QWidget* parent)
 
 } // namespace
 
+QString SimulationDock::title()
+{
+    return tr("Simulation");
+}
+
 SimulationDock::SimulationDock(SimulationSession* session, Document* document, QWidget* parent)
-    : QDockWidget(tr("Simulation"), parent)
+    : QDockWidget(title(), parent)
     , m_session(session)
     , m_document(document)
 {

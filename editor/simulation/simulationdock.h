@@ -36,6 +36,8 @@ class SimulationDock : public QDockWidget {
     Q_OBJECT
 
 public:
+    // Also the title of the empty frame that stands for the dock at start-up.
+    static QString title();
     enum ExplanationColumn { TransitionColumn, StatusColumn };
 
     SimulationDock(SimulationSession* session, Document* document, QWidget* parent = nullptr);

@@ -4,6 +4,8 @@
 //             QGraphicsView, at the size GG Studio's window first opens with.
 //   ggstudio  GG Studio's real startup (editor::runApplication, as app/gui
 //             runs it) on the template; ARGS go to it as its command line.
+//             It prints a second line: the time until the docks' contents,
+//             built after the first frame, are ready.
 //   chart     for reference: the bare window with GG Studio's chart of the
 //             template instead of the empty view (no docks, menus or
 //             status bar), the least any start showing this chart costs.
@@ -40,13 +42,21 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+void printElapsed(Clock::time_point start)
+{
+    const std::chrono::duration<double, std::milli> elapsed = Clock::now() - start;
+    std::printf("%.3f\n", elapsed.count());
+    std::fflush(stdout);
+}
+
 // Prints the time to the end of the first paint of the watched widget, then
-// quits the application.
+// quits the application unless told to go on.
 class FirstPaintProbe : public QObject {
 public:
-    FirstPaintProbe(QWidget* watched, Clock::time_point start)
+    FirstPaintProbe(QWidget* watched, Clock::time_point start, bool quit = true)
         : QObject(watched)
         , m_start(start)
+        , m_quit(quit)
     {
         watched->installEventFilter(this);
     }
@@ -60,15 +70,15 @@ protected:
         // Paints now, so the time includes the painting itself; the event
         // is then consumed rather than painted twice.
         QCoreApplication::sendEvent(watched, event);
-        const std::chrono::duration<double, std::milli> elapsed = Clock::now() - m_start;
-        std::printf("%.3f\n", elapsed.count());
-        std::fflush(stdout);
-        QCoreApplication::exit(0);
+        printElapsed(m_start);
+        if (m_quit)
+            QCoreApplication::exit(0);
         return true;
     }
 
 private:
     Clock::time_point m_start;
+    bool m_quit;
 };
 
 // The size MainWindow opens with when no layout was saved.
@@ -102,7 +112,11 @@ int runGgStudio(int argc, char** argv, Clock::time_point start)
 {
     editor::StartupHooks hooks;
     hooks.windowCreated = [start](editor::MainWindow& window) {
-        new FirstPaintProbe(window.chartView()->viewport(), start);
+        new FirstPaintProbe(window.chartView()->viewport(), start, false);
+        QObject::connect(&window, &editor::MainWindow::docksBecameReady, &window, [start] {
+            printElapsed(start);
+            QCoreApplication::exit(0);
+        });
     };
     return editor::runApplication(argc, argv, hooks);
 }

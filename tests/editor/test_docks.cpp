@@ -16,6 +16,7 @@
 #include "editor/docks/variablestablemodel.h"
 #include "editor/document.h"
 #include "editor/selection.h"
+#include "editor/severityicon.h"
 
 #include <QAbstractItemView>
 #include <QApplication>
@@ -82,6 +83,7 @@ class TestDocks : public QObject {
     Q_OBJECT
 
 private slots:
+    void severityIconsAreDrawnOnTransparency();
     void stepDockShowsSelectedStep();
     void stepDockTypeComboPushesUndoableCommand();
     void stepDockInitialHiddenAndComment();
@@ -699,4 +701,31 @@ void TestDocks::objectNamesForSaveState()
 }
 
 QTEST_MAIN(TestDocks)
+// The severity marks are drawings: transparent around, the severity's
+// colour in the middle, fainter when disabled, sharp at a device pixel ratio of 2.
+void TestDocks::severityIconsAreDrawnOnTransparency()
+{
+    const std::pair<core::Severity, QColor> expected[] = {
+        {core::Severity::Error, QColor(0xd3, 0x2f, 0x2f)},
+        {core::Severity::Warning, QColor(0xf9, 0xa8, 0x25)},
+        {core::Severity::Info, QColor(0x19, 0x76, 0xd2)},
+    };
+    for (const auto& [severity, colour] : expected) {
+        const QIcon icon = severityIcon(severity);
+        QVERIFY(!icon.isNull());
+        const QImage image = icon.pixmap(QSize(32, 32)).toImage();
+        QCOMPARE(image.size(), QSize(32, 32));
+        QCOMPARE(qAlpha(image.pixel(0, 0)), 0);
+        QCOMPARE(qAlpha(image.pixel(31, 0)), 0);
+        // Lower left of the centre: clear of the mark drawn on the disc or triangle.
+        const QColor inside = image.pixelColor(10, 24);
+        QCOMPARE(inside, colour);
+        const QImage disabled = icon.pixmap(QSize(32, 32), QIcon::Disabled).toImage();
+        QVERIFY(disabled.pixelColor(10, 24).alpha() < 255);
+        const QPixmap sharp = icon.pixmap(QSize(16, 16), 2.0);
+        QCOMPARE(sharp.size(), QSize(32, 32));
+        QCOMPARE(sharp.devicePixelRatio(), 2.0);
+    }
+}
+
 #include "test_docks.moc"

@@ -8,6 +8,8 @@
 #include "editor/chart/stepitem.h"
 #include "editor/chart/transitionitem.h"
 #include "editor/commands/setstephiddencommand.h"
+#include "editor/docks/problemsdock.h"
+#include "editor/docks/stepdock.h"
 #include "editor/document.h"
 #include "editor/exportactions.h"
 #include "editor/languages.h"
@@ -16,6 +18,8 @@
 #include "editor/chartexport.h"
 #include "editor/selection.h"
 #include "editor/settings.h"
+#include "editor/simulation/simulationdock.h"
+#include "editor/simulation/simulationsession.h"
 #include "editor/recentfiles.h"
 #include "editor/statusindicators.h"
 
@@ -28,6 +32,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
 #include <QMenu>
@@ -35,6 +40,7 @@
 #include <QMessageBox>
 #include <QProcess>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -150,6 +156,9 @@ private slots:
     void unsavedChangesAskBeforeOpening();
     void modelSettingsAreOneUndoStep();
     void layoutIsRestored();
+    void deferredDocksFillInAfterTheFirstFrame();
+    void deferredDocksKeepTheSavedLayout();
+    void deferredDocksAreBuiltWhenNeeded();
     void recoveryIsOffered();
     void translatorLoadsFrench();
     void languageChangeRetranslatesMenus();
@@ -462,6 +471,115 @@ void TestMainWindow::layoutIsRestored()
     QCOMPARE(again.dockWidgetArea(problems), Qt::RightDockWidgetArea);
     QCOMPARE(again.size(), QSize(1000, 700));
     QSettings().clear(); // the other tests start from the default layout
+}
+
+namespace {
+
+// The geometry of a widget when it is first painted.
+class FirstPaintGeometry : public QObject {
+public:
+    explicit FirstPaintGeometry(QWidget* widget)
+        : m_widget(widget)
+    {
+        widget->installEventFilter(this);
+    }
+    QRect geometry;
+
+protected:
+    bool eventFilter(QObject*, QEvent* event) override
+    {
+        if (event->type() == QEvent::Paint && geometry.isNull())
+            geometry = m_widget->geometry();
+        return false;
+    }
+
+private:
+    QWidget* m_widget;
+};
+
+} // namespace
+
+void TestMainWindow::deferredDocksFillInAfterTheFirstFrame()
+{
+    MainWindow window(*m_translators, MainWindow::DockContents::AfterFirstFrame);
+    window.resize(1366, 768);
+    QVERIFY(!window.docksReady());
+    // The frames stand where the docks go, with their titles.
+    auto* stepFrame = window.findChild<QDockWidget*>(QStringLiteral("stepDock"));
+    QVERIFY(stepFrame);
+    QCOMPARE(stepFrame->windowTitle(), QStringLiteral("Step"));
+    QVERIFY(!window.findChild<StepDock*>());
+    QSignalSpy shown(&window, &MainWindow::firstFrameShown);
+    QSignalSpy ready(&window, &MainWindow::docksBecameReady);
+    FirstPaintGeometry firstFrame(window.chartView()->viewport());
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(ready.count() == 1 || ready.wait(5000));
+    QCOMPARE(shown.count(), 1);
+    QCOMPARE(ready.count(), 1);
+    QVERIFY(window.docksReady());
+    // The chart stays where the first frame drew it, which is where a start
+    // with the docks built at once puts it.
+    QApplication::processEvents();
+    QVERIFY(!firstFrame.geometry.isNull());
+    QCOMPARE(window.chartView()->viewport()->geometry(), firstFrame.geometry);
+    QCOMPARE(window.chartView()->geometry(), m_window->chartView()->geometry());
+    // The real docks, one of each, where the frames were, working.
+    QCOMPARE(window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly).size(), 6);
+    auto* stepDock = window.findChild<StepDock*>(QStringLiteral("stepDock"));
+    QVERIFY(stepDock);
+    QCOMPARE(window.dockWidgetArea(stepDock), Qt::RightDockWidgetArea);
+    QCOMPARE(window.tabifiedDockWidgets(stepDock).size(), 2);
+    window.selection()->select(ElementRef::step(QStringLiteral("F1")));
+    auto* idLabel = stepDock->findChild<QLabel*>(QStringLiteral("idLabel"));
+    QVERIFY(idLabel);
+    QCOMPARE(idLabel->text(), QStringLiteral("F1"));
+    // The View menu lists the real docks' actions, and only them.
+    auto* viewMenu = window.findChild<QMenu*>(QStringLiteral("viewMenu"));
+    QVERIFY(viewMenu->actions().contains(stepDock->toggleViewAction()));
+    QCOMPARE(std::count_if(viewMenu->actions().cbegin(), viewMenu->actions().cend(),
+                           [](QAction* action) { return action->text() == QStringLiteral("Step"); }),
+             1);
+}
+
+// The frames take the saved layout, and the docks keep it: the chart does
+// not move when they fill in.
+void TestMainWindow::deferredDocksKeepTheSavedLayout()
+{
+    auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
+    m_window->addDockWidget(Qt::RightDockWidgetArea, problems);
+    QVERIFY(m_window->close());
+
+    MainWindow again(*m_translators, MainWindow::DockContents::AfterFirstFrame);
+    QCOMPARE(again.dockWidgetArea(again.findChild<QDockWidget*>(QStringLiteral("problemsDock"))),
+             Qt::RightDockWidgetArea);
+    QSignalSpy ready(&again, &MainWindow::docksBecameReady);
+    FirstPaintGeometry firstFrame(again.chartView()->viewport());
+    again.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&again));
+    QVERIFY(ready.count() == 1 || ready.wait(5000));
+    QApplication::processEvents();
+    QCOMPARE(again.dockWidgetArea(again.findChild<ProblemsDock*>(QStringLiteral("problemsDock"))),
+             Qt::RightDockWidgetArea);
+    QVERIFY(!firstFrame.geometry.isNull());
+    QCOMPARE(again.chartView()->viewport()->geometry(), firstFrame.geometry);
+    QSettings().clear(); // the other tests start from the default layout
+}
+
+// Whatever needs a dock before the first frame builds them at once.
+void TestMainWindow::deferredDocksAreBuiltWhenNeeded()
+{
+    MainWindow window(*m_translators, MainWindow::DockContents::AfterFirstFrame);
+    QVERIFY(!window.docksReady());
+    window.simulationSession()->setActive(true);
+    QVERIFY(window.docksReady());
+    auto* simulation = window.findChild<SimulationDock*>(QStringLiteral("simulationDock"));
+    QVERIFY(simulation);
+    QVERIFY(!simulation->isHidden());
+    // The editing lock holds for docks built while the simulation runs.
+    QVERIFY(!window.findChild<StepDock*>(QStringLiteral("stepDock"))->widget()->isEnabled());
+    window.simulationSession()->setActive(false);
+    QVERIFY(window.findChild<StepDock*>(QStringLiteral("stepDock"))->widget()->isEnabled());
 }
 
 void TestMainWindow::recoveryIsOffered()
