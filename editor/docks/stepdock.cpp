@@ -6,7 +6,6 @@
 #include "editor/commands/setsteptypecommand.h"
 #include "editor/diagnostictext.h"
 #include "editor/docks/diagnosticlist.h"
-#include "editor/docks/dockreveal.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/document.h"
@@ -24,7 +23,6 @@
 #include <QPlainTextEdit>
 #include <QScrollBar>
 #include <QSignalBlocker>
-#include <QStackedWidget>
 #include <QStyle>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -64,32 +62,11 @@ QString StepDock::title()
 }
 
 StepDock::StepDock(Document* document, Selection* selection, QWidget* parent)
-    : QDockWidget(title(), parent)
-    , m_document(document)
-    , m_selection(selection)
+    : PropertyDock(ElementRef::Kind::Step, title(), document, selection, parent)
 {
     setObjectName(QStringLiteral("stepDock"));
-
-    m_pages = new QStackedWidget(this);
-    auto* placeholder = new QLabel(tr("Select a step in the chart to see and edit its properties."), m_pages);
-    placeholder->setObjectName(QStringLiteral("placeholder"));
-    placeholder->setAlignment(Qt::AlignCenter);
-    placeholder->setWordWrap(true);
-    placeholder->setEnabled(false);
-    placeholder->setMargin(12);
-    m_pages->addWidget(placeholder);
-
     // No scroll area: the transition lists take the height there is.
-    m_pages->addWidget(createForm());
-    setWidget(m_pages);
-
-    connect(m_document, &Document::stepChanged, this, &StepDock::refresh);
-    connect(m_document, &Document::transitionChanged, this, &StepDock::refresh);
-    connect(m_document, &Document::modelReset, this, &StepDock::refresh);
-    connect(m_document, &Document::diagnosticsChanged, this, &StepDock::refresh);
-    connect(m_selection, &Selection::changed, this, &StepDock::onSelectionChanged);
-    connect(m_selection, &Selection::focusFieldRequested, this, &StepDock::onFocusFieldRequested);
-    onSelectionChanged(m_selection->current());
+    setPages(tr("Select a step in the chart to see and edit its properties."), createForm());
 }
 
 QWidget* StepDock::createForm()
@@ -185,22 +162,8 @@ QTreeWidget* StepDock::createTransitionList(const QString& objectName)
     return list;
 }
 
-void StepDock::onSelectionChanged(const ElementRef& element)
+void StepDock::focusField(const QString& field)
 {
-    const QString id = element.kind == ElementRef::Kind::Step ? element.id : QString();
-    if (id == m_stepId && !id.isEmpty())
-        return;
-    m_stepId = m_document->model().step(id.toStdString()) ? id : QString();
-    refresh();
-    if (!m_stepId.isEmpty())
-        raiseOverPropertySibling(this);
-}
-
-void StepDock::onFocusFieldRequested(const ElementRef& element, const QString& field)
-{
-    if (element.kind != ElementRef::Kind::Step || element.id != m_stepId || m_stepId.isEmpty())
-        return;
-    revealDock(this);
     QWidget* target = m_typeCombo;
     if (field == QLatin1String("initial") || field == QLatin1String("hidden"))
         target = m_hiddenCheck; // a hidden initial step: show it, or make another step initial
@@ -213,14 +176,11 @@ void StepDock::onFocusFieldRequested(const ElementRef& element, const QString& f
     target->setFocus(Qt::OtherFocusReason);
 }
 
-void StepDock::refresh()
+void StepDock::refreshForm()
 {
-    const core::Step* step = m_document->model().step(m_stepId.toStdString());
-    m_pages->setCurrentIndex(step ? 1 : 0);
-    if (!step)
-        return;
-    m_idLabel->setText(m_stepId);
-    m_nameLabel->setText(officialStateName(m_stepId));
+    const core::Step* step = document()->model().step(stepId().toStdString());
+    m_idLabel->setText(stepId());
+    m_nameLabel->setText(officialStateName(stepId()));
     m_familyLabel->setText(tr("%1 · state number %2").arg(officialFamilyName(step->family)).arg(step->number));
     {
         const QSignalBlocker blocker(m_typeCombo);
@@ -234,9 +194,9 @@ void StepDock::refresh()
         m_initialCheck->setToolTip(step->initial
                 ? tr("%1 is the initial step. There is always exactly one initial step: to change it, "
                      "make another step initial.")
-                      .arg(m_stepId)
+                      .arg(stepId())
                 : tr("Make %1 the initial step (the PLC starts in it). The current initial step is %2.")
-                      .arg(m_stepId, fromStd(m_document->model().initialStep().id)));
+                      .arg(stepId(), fromStd(document()->model().initialStep().id)));
     }
     {
         const QSignalBlocker blocker(m_hiddenCheck);
@@ -256,8 +216,8 @@ void StepDock::refresh()
 
 void StepDock::refreshTransitions()
 {
-    const core::Model& model = m_document->model();
-    const std::string id = m_stepId.toStdString();
+    const core::Model& model = document()->model();
+    const std::string id = stepId().toStdString();
     const core::Step* step = model.step(id);
     fillList(m_incomingList, model.incoming(id), false);
 
@@ -290,7 +250,7 @@ void StepDock::fillList(QTreeWidget* list, const std::vector<const core::Transit
 
 QTreeWidgetItem* StepDock::transitionItem(const core::Transition& transition, bool outgoing) const
 {
-    const core::Model& model = m_document->model();
+    const core::Model& model = document()->model();
     const QString id = fromStd(transition.id);
     QString text;
     if (!outgoing) {
@@ -324,8 +284,8 @@ QTreeWidgetItem* StepDock::transitionItem(const core::Transition& transition, bo
             item->setForeground(column, grey);
             item->setFont(column, font);
         }
-    } else if (m_document->hasProblems(ElementRef::transition(id))) {
-        const bool error = core::hasErrors(m_document->diagnosticsFor(ElementRef::transition(id)));
+    } else if (document()->hasProblems(ElementRef::transition(id))) {
+        const bool error = core::hasErrors(document()->diagnosticsFor(ElementRef::transition(id)));
         item->setIcon(1, severityIcon(error ? core::Severity::Error : core::Severity::Warning));
     }
     item->setToolTip(0, tip.join(QLatin1Char('\n')));
@@ -335,46 +295,46 @@ QTreeWidgetItem* StepDock::transitionItem(const core::Transition& transition, bo
 
 void StepDock::refreshProblems()
 {
-    m_problemList->setDiagnostics(m_document->diagnosticsFor(ElementRef::step(m_stepId)));
+    m_problemList->setDiagnostics(document()->diagnosticsFor(element()));
 }
 
 void StepDock::onTypeChosen(int index)
 {
-    if (m_stepId.isEmpty() || index < 0)
+    if (stepId().isEmpty() || index < 0)
         return;
     const auto type = static_cast<core::StepType>(m_typeCombo->itemData(index).toInt());
-    m_document->push(new SetStepTypeCommand(*m_document, m_stepId, type));
+    document()->push(new SetStepTypeCommand(*document(), stepId(), type));
     refresh(); // a refused edit puts the combo back
 }
 
 void StepDock::onInitialToggled(bool checked)
 {
-    if (m_stepId.isEmpty())
+    if (stepId().isEmpty())
         return;
     if (checked)
-        m_document->push(new SetInitialStepCommand(*m_document, m_stepId));
+        document()->push(new SetInitialStepCommand(*document(), stepId()));
     refresh();
 }
 
 void StepDock::onHiddenToggled(bool checked)
 {
-    if (m_stepId.isEmpty())
+    if (stepId().isEmpty())
         return;
-    m_document->push(new SetStepHiddenCommand(*m_document, m_stepId, checked));
+    document()->push(new SetStepHiddenCommand(*document(), stepId(), checked));
     refresh();
 }
 
 void StepDock::onCommentEdited()
 {
-    if (m_stepId.isEmpty())
+    if (stepId().isEmpty())
         return;
-    m_document->push(new SetStepCommentCommand(*m_document, m_stepId, m_commentEdit->toPlainText()));
+    document()->push(new SetStepCommentCommand(*document(), stepId(), m_commentEdit->toPlainText()));
 }
 
 void StepDock::onTransitionClicked(QTreeWidgetItem* item)
 {
     if (item)
-        m_selection->select(ElementRef::transition(item->data(0, kTransitionIdRole).toString()));
+        selection()->select(ElementRef::transition(item->data(0, kTransitionIdRole).toString()));
 }
 
 } // namespace editor

@@ -1,14 +1,11 @@
 #pragma once
 
-#include "editor/elementref.h"
-
-#include <QDockWidget>
+#include "editor/docks/propertydock.h"
 
 class QCheckBox;
 class QComboBox;
 class QLabel;
 class QPlainTextEdit;
-class QStackedWidget;
 class QTreeWidget;
 class QTreeWidgetItem;
 
@@ -25,7 +22,7 @@ class Selection;
 // Properties of the selected step: its official name, type, initial and
 // hidden flags, comment, and the transitions in and out of it as links.
 // Edits are commands pushed on the Document.
-class StepDock : public QDockWidget {
+class StepDock : public PropertyDock {
     Q_OBJECT
 
 public:
@@ -34,14 +31,13 @@ public:
     StepDock(Document* document, Selection* selection, QWidget* parent = nullptr);
 
     // The step shown; empty when the selection is not a step.
-    QString stepId() const { return m_stepId; }
+    QString stepId() const { return elementId(); }
 
 private:
     QWidget* createForm();
     QTreeWidget* createTransitionList(const QString& objectName);
-    void onSelectionChanged(const ElementRef& element);
-    void onFocusFieldRequested(const ElementRef& element, const QString& field);
-    void refresh();
+    void refreshForm() override;
+    void focusField(const QString& field) override;
     void refreshTransitions();
     void fillList(QTreeWidget* list, const std::vector<const core::Transition*>& transitions, bool outgoing);
     QTreeWidgetItem* transitionItem(const core::Transition& transition, bool outgoing) const;
@@ -53,11 +49,6 @@ private:
     void onCommentEdited();
     void onTransitionClicked(QTreeWidgetItem* item);
 
-    Document* m_document;
-    Selection* m_selection;
-    QString m_stepId;
-
-    QStackedWidget* m_pages = nullptr;
     QLabel* m_idLabel = nullptr;
     QLabel* m_nameLabel = nullptr;
     QLabel* m_familyLabel = nullptr;

@@ -8,7 +8,6 @@
 #include "editor/diagnostictext.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/diagnosticlist.h"
-#include "editor/docks/dockreveal.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/document.h"
 #include "editor/selection.h"
@@ -25,7 +24,6 @@
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
-#include <QStackedWidget>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -106,37 +104,17 @@ QString TransitionDock::title()
 }
 
 TransitionDock::TransitionDock(Document* document, Selection* selection, QWidget* parent)
-    : QDockWidget(title(), parent)
-    , m_document(document)
-    , m_selection(selection)
+    : PropertyDock(ElementRef::Kind::Transition, title(), document, selection, parent)
 {
     setObjectName(QStringLiteral("transitionDock"));
-
-    m_pages = new QStackedWidget(this);
-    auto* placeholder = new QLabel(tr("Select a transition in the chart to see and edit its condition."), m_pages);
-    placeholder->setObjectName(QStringLiteral("placeholder"));
-    placeholder->setAlignment(Qt::AlignCenter);
-    placeholder->setWordWrap(true);
-    placeholder->setEnabled(false);
-    placeholder->setMargin(12);
-    m_pages->addWidget(placeholder);
-
-    auto* scroll = new QScrollArea(m_pages);
+    auto* scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(createForm());
-    m_pages->addWidget(scroll);
-    setWidget(m_pages);
-
-    connect(m_document, &Document::transitionChanged, this, &TransitionDock::refresh);
-    connect(m_document, &Document::stepChanged, this, &TransitionDock::refresh);
-    connect(m_document, &Document::variableChanged, this, &TransitionDock::refresh);
-    connect(m_document, &Document::variablesChanged, this, &TransitionDock::refresh);
-    connect(m_document, &Document::modelReset, this, &TransitionDock::refresh);
-    connect(m_document, &Document::diagnosticsChanged, this, &TransitionDock::refresh);
-    connect(m_selection, &Selection::changed, this, &TransitionDock::onSelectionChanged);
-    connect(m_selection, &Selection::focusFieldRequested, this, &TransitionDock::onFocusFieldRequested);
-    onSelectionChanged(m_selection->current());
+    // The condition checks and the tokens depend on the declared variables.
+    connect(document, &Document::variableChanged, this, &TransitionDock::refresh);
+    connect(document, &Document::variablesChanged, this, &TransitionDock::refresh);
+    setPages(tr("Select a transition in the chart to see and edit its condition."), scroll);
 }
 
 QWidget* TransitionDock::createForm()
@@ -222,22 +200,8 @@ QWidget* TransitionDock::createForm()
     return form;
 }
 
-void TransitionDock::onSelectionChanged(const ElementRef& element)
+void TransitionDock::focusField(const QString& field)
 {
-    const QString id = element.kind == ElementRef::Kind::Transition ? element.id : QString();
-    if (id == m_transitionId && !id.isEmpty())
-        return;
-    m_transitionId = m_document->model().transition(id.toStdString()) ? id : QString();
-    refresh();
-    if (!m_transitionId.isEmpty())
-        raiseOverPropertySibling(this);
-}
-
-void TransitionDock::onFocusFieldRequested(const ElementRef& element, const QString& field)
-{
-    if (element.kind != ElementRef::Kind::Transition || element.id != m_transitionId || m_transitionId.isEmpty())
-        return;
-    revealDock(this);
     if (field == QLatin1String("tokens")) {
         QWidget* target = m_tokenChecks.isEmpty() ? static_cast<QWidget*>(m_tokenGroup) : m_tokenChecks.front();
         target->setFocus(Qt::OtherFocusReason);
@@ -265,23 +229,20 @@ void TransitionDock::focusCondition()
     m_conditionEdit->selectRange(end, end);
 }
 
-void TransitionDock::refresh()
+void TransitionDock::refreshForm()
 {
-    const core::Transition* transition = m_document->model().transition(m_transitionId.toStdString());
-    m_pages->setCurrentIndex(transition ? 1 : 0);
-    if (!transition)
-        return;
+    const core::Transition* transition = document()->model().transition(transitionId().toStdString());
     refreshHeader(*transition);
     refreshCondition(*transition);
     refreshPriority(*transition);
     refreshNegation(*transition);
     refreshTokens(*transition);
-    m_problemList->setDiagnostics(m_document->diagnosticsFor(ElementRef::transition(m_transitionId)));
+    m_problemList->setDiagnostics(document()->diagnosticsFor(element()));
 }
 
 void TransitionDock::refreshHeader(const core::Transition& transition)
 {
-    const core::Model& model = m_document->model();
+    const core::Model& model = document()->model();
     const QString source = fromStd(transition.source);
     const QString target = fromStd(transition.target);
     const auto link = [](const QString& id) { return QStringLiteral("<a href=\"%1\">%1</a>").arg(id); };
@@ -303,12 +264,12 @@ void TransitionDock::refreshCondition(const core::Transition& transition)
     m_conditionEdit->setText(condition);
 
     QStringList names;
-    for (const core::Variable& variable : m_document->model().variables())
+    for (const core::Variable& variable : document()->model().variables())
         names << fromStd(variable.name);
     m_conditionEdit->setVariableNames(names);
 
     QList<ConditionEdit::Problem> problems;
-    for (const core::Diagnostic& diagnostic : m_document->diagnosticsFor(ElementRef::transition(m_transitionId))) {
+    for (const core::Diagnostic& diagnostic : document()->diagnosticsFor(element())) {
         if (diagnostic.field != "condition" || !diagnostic.span)
             continue;
         ConditionEdit::Problem problem;
@@ -323,7 +284,7 @@ void TransitionDock::refreshCondition(const core::Transition& transition)
 
 void TransitionDock::refreshPriority(const core::Transition& transition)
 {
-    const core::Model& model = m_document->model();
+    const core::Model& model = document()->model();
     const QSignalBlocker blocker(m_prioritySpin);
     const int priority = model.priority(transition.id);
     if (transition.isFamilyTransition() || priority == 0) {
@@ -358,7 +319,7 @@ void TransitionDock::refreshNegation(const core::Transition& transition)
         const QSignalBlocker hiddenBlocker(m_hiddenCheck);
         m_hiddenCheck->setChecked(transition.hidden);
     }
-    const core::Step* source = m_document->model().step(transition.source);
+    const core::Step* source = document()->model().step(transition.source);
     const QString id = fromStd(transition.source);
     QString hint;
     if (transition.isFamilyTransition()) {
@@ -385,7 +346,7 @@ void TransitionDock::refreshNegation(const core::Transition& transition)
 
 QList<TransitionDock::TokenRow> TransitionDock::tokenRows(const core::Transition& transition, QString* hint) const
 {
-    const core::Model& model = m_document->model();
+    const core::Model& model = document()->model();
     const core::Step* source = model.step(transition.source);
     const bool applies = !transition.isFamilyTransition() && source && core::hasNestedBehaviour(source->type);
     const QString sourceId = fromStd(transition.source);
@@ -496,34 +457,34 @@ void TransitionDock::refreshTokens(const core::Transition& transition)
 
 void TransitionDock::onConditionEdited(const QString& text)
 {
-    if (!m_transitionId.isEmpty())
-        m_document->push(new SetConditionCommand(*m_document, m_transitionId, text));
+    if (!transitionId().isEmpty())
+        document()->push(new SetConditionCommand(*document(), transitionId(), text));
 }
 
 void TransitionDock::onPriorityChanged(int priority)
 {
-    if (!m_transitionId.isEmpty() && priority > 0)
-        m_document->push(new SetPriorityCommand(*m_document, m_transitionId, priority));
+    if (!transitionId().isEmpty() && priority > 0)
+        document()->push(new SetPriorityCommand(*document(), transitionId(), priority));
     refresh();
 }
 
 void TransitionDock::onNegatedToggled(bool checked)
 {
-    if (!m_transitionId.isEmpty())
-        m_document->push(new SetNegatedCommand(*m_document, m_transitionId, checked));
+    if (!transitionId().isEmpty())
+        document()->push(new SetNegatedCommand(*document(), transitionId(), checked));
     refresh();
 }
 
 void TransitionDock::onHiddenToggled(bool checked)
 {
-    if (!m_transitionId.isEmpty())
-        m_document->push(new SetTransitionHiddenCommand(*m_document, m_transitionId, checked));
+    if (!transitionId().isEmpty())
+        document()->push(new SetTransitionHiddenCommand(*document(), transitionId(), checked));
     refresh();
 }
 
 void TransitionDock::onTokenToggled(const QString& variable, bool checked)
 {
-    const core::Transition* transition = m_document->model().transition(m_transitionId.toStdString());
+    const core::Transition* transition = document()->model().transition(transitionId().toStdString());
     if (!transition)
         return;
     QStringList tokens;
@@ -533,13 +494,13 @@ void TransitionDock::onTokenToggled(const QString& variable, bool checked)
     }
     if (checked)
         tokens << variable;
-    m_document->push(new SetTokensCommand(*m_document, m_transitionId, tokens));
+    document()->push(new SetTokensCommand(*document(), transitionId(), tokens));
     refresh();
 }
 
 void TransitionDock::onStepLinkActivated(const QString& stepId)
 {
-    m_selection->select(ElementRef::step(stepId));
+    selection()->select(ElementRef::step(stepId));
 }
 
 } // namespace editor

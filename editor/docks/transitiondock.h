@@ -1,15 +1,13 @@
 #pragma once
 
-#include "editor/elementref.h"
+#include "editor/docks/propertydock.h"
 
-#include <QDockWidget>
 #include <QList>
 
 class QCheckBox;
 class QGroupBox;
 class QLabel;
 class QSpinBox;
-class QStackedWidget;
 class QVBoxLayout;
 
 namespace core {
@@ -27,7 +25,7 @@ class Selection;
 // Properties of the selected transition: its condition (checked as it is
 // typed), priority, negation, visibility and tokens. Edits are commands
 // pushed on the Document; typing a condition merges into one undo step.
-class TransitionDock : public QDockWidget {
+class TransitionDock : public PropertyDock {
     Q_OBJECT
 
 public:
@@ -36,7 +34,7 @@ public:
     TransitionDock(Document* document, Selection* selection, QWidget* parent = nullptr);
 
     // The transition shown; empty when the selection is not a transition.
-    QString transitionId() const { return m_transitionId; }
+    QString transitionId() const { return elementId(); }
 
 private:
     // One checkbox of the token area.
@@ -49,9 +47,8 @@ private:
     };
 
     QWidget* createForm();
-    void onSelectionChanged(const ElementRef& element);
-    void onFocusFieldRequested(const ElementRef& element, const QString& field);
-    void refresh();
+    void refreshForm() override;
+    void focusField(const QString& field) override;
     void refreshHeader(const core::Transition& transition);
     void refreshCondition(const core::Transition& transition);
     void refreshPriority(const core::Transition& transition);
@@ -67,11 +64,6 @@ private:
     void onTokenToggled(const QString& variable, bool checked);
     void onStepLinkActivated(const QString& stepId);
 
-    Document* m_document;
-    Selection* m_selection;
-    QString m_transitionId;
-
-    QStackedWidget* m_pages = nullptr;
     QLabel* m_titleLabel = nullptr;
     QLabel* m_namesLabel = nullptr;
     QLabel* m_effectLabel = nullptr;

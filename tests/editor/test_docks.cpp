@@ -28,6 +28,7 @@
 #include <QPlainTextEdit>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStackedWidget>
 #include <QTableView>
 #include <QTest>
 #include <QTextBlock>
@@ -88,6 +89,7 @@ private slots:
     void stepDockTypeComboPushesUndoableCommand();
     void stepDockInitialHiddenAndComment();
     void stepDockListsTransitionsByPriority();
+    void propertyDocksFollowTheirKindAndFocusFields();
     void transitionDockUnderlinesUndeclaredVariable();
     void conditionTypingIsOneUndoStep();
     void conditionEditCompletesVariableNames();
@@ -209,6 +211,44 @@ void TestDocks::stepDockListsTransitionsByPriority()
     outgoing->setCurrentItem(outgoing->topLevelItem(1));
     emit outgoing->itemClicked(outgoing->topLevelItem(1), 0);
     QCOMPARE(selection.current(), ElementRef::transition("F1->D1"));
+}
+
+// What the Step and Transition docks share (PropertyDock): each shows its
+// form for its own kind of element only, and a request for a field of that
+// element reveals the dock and focuses the field.
+void TestDocks::propertyDocksFollowTheirKindAndFocusFields()
+{
+    Document document;
+    Selection selection;
+    StepDock steps(&document, &selection);
+    TransitionDock transitions(&document, &selection);
+    auto* stepPages = qobject_cast<QStackedWidget*>(steps.widget());
+    auto* transitionPages = qobject_cast<QStackedWidget*>(transitions.widget());
+    QVERIFY(stepPages && transitionPages);
+    QLabel* stepPlaceholder = child<QLabel>(&steps, "placeholder");
+    QLabel* transitionPlaceholder = child<QLabel>(&transitions, "placeholder");
+    QCOMPARE(stepPages->currentWidget(), stepPlaceholder);
+    QCOMPARE(transitionPages->currentWidget(), transitionPlaceholder);
+    QVERIFY(steps.isHidden() && transitions.isHidden());
+
+    selection.select(ElementRef::step("F1"), "comment");
+    QVERIFY(stepPages->currentWidget() != stepPlaceholder);
+    QCOMPARE(transitionPages->currentWidget(), transitionPlaceholder);
+    QVERIFY(!steps.isHidden());
+    QVERIFY(transitions.isHidden());
+    QCOMPARE(steps.focusWidget(), child<QPlainTextEdit>(&steps, "commentEdit"));
+
+    selection.select(ElementRef::transition("A1->F4"), "negated");
+    QCOMPARE(stepPages->currentWidget(), stepPlaceholder);
+    QVERIFY(steps.stepId().isEmpty());
+    QVERIFY(transitionPages->currentWidget() != transitionPlaceholder);
+    QVERIFY(!transitions.isHidden());
+    QCOMPARE(transitions.focusWidget(), child<QCheckBox>(&transitions, "negatedCheck"));
+
+    // An element the model does not have shows the placeholder.
+    selection.select(ElementRef::transition("A1->Nowhere"), "negated");
+    QVERIFY(transitions.transitionId().isEmpty());
+    QCOMPARE(transitionPages->currentWidget(), transitionPlaceholder);
 }
 
 void TestDocks::transitionDockUnderlinesUndeclaredVariable()

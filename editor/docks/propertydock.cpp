@@ -1,0 +1,81 @@
+#include "editor/docks/propertydock.h"
+
+#include "editor/docks/dockreveal.h"
+#include "editor/document.h"
+#include "editor/selection.h"
+
+#include "core/model.h"
+
+#include <QLabel>
+#include <QStackedWidget>
+
+namespace editor {
+
+PropertyDock::PropertyDock(ElementRef::Kind kind, const QString& title, Document* document, Selection* selection,
+                           QWidget* parent)
+    : QDockWidget(title, parent)
+    , m_kind(kind)
+    , m_document(document)
+    , m_selection(selection)
+{
+}
+
+void PropertyDock::setPages(const QString& placeholder, QWidget* form)
+{
+    m_pages = new QStackedWidget(this);
+    auto* label = new QLabel(placeholder, m_pages);
+    label->setObjectName(QStringLiteral("placeholder"));
+    label->setAlignment(Qt::AlignCenter);
+    label->setWordWrap(true);
+    label->setEnabled(false);
+    label->setMargin(12);
+    m_pages->addWidget(label);
+    m_pages->addWidget(form);
+    setWidget(m_pages);
+
+    connect(m_document, &Document::stepChanged, this, &PropertyDock::refresh);
+    connect(m_document, &Document::transitionChanged, this, &PropertyDock::refresh);
+    connect(m_document, &Document::modelReset, this, &PropertyDock::refresh);
+    connect(m_document, &Document::diagnosticsChanged, this, &PropertyDock::refresh);
+    connect(m_selection, &Selection::changed, this, &PropertyDock::onSelectionChanged);
+    connect(m_selection, &Selection::focusFieldRequested, this, &PropertyDock::onFocusFieldRequested);
+    onSelectionChanged(m_selection->current());
+}
+
+void PropertyDock::refresh()
+{
+    const bool shown = exists(m_elementId);
+    m_pages->setCurrentIndex(shown ? 1 : 0);
+    if (shown)
+        refreshForm();
+}
+
+bool PropertyDock::exists(const QString& id) const
+{
+    const core::Model& model = m_document->model();
+    const std::string key = id.toStdString();
+    if (m_kind == ElementRef::Kind::Step)
+        return model.step(key) != nullptr;
+    return m_kind == ElementRef::Kind::Transition && model.transition(key) != nullptr;
+}
+
+void PropertyDock::onSelectionChanged(const ElementRef& element)
+{
+    const QString id = element.kind == m_kind ? element.id : QString();
+    if (id == m_elementId && !id.isEmpty())
+        return;
+    m_elementId = exists(id) ? id : QString();
+    refresh();
+    if (!m_elementId.isEmpty())
+        raiseOverPropertySibling(this);
+}
+
+void PropertyDock::onFocusFieldRequested(const ElementRef& element, const QString& field)
+{
+    if (element.kind != m_kind || element.id != m_elementId || m_elementId.isEmpty())
+        return;
+    revealDock(this);
+    focusField(field);
+}
+
+} // namespace editor

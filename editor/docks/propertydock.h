@@ -1,0 +1,56 @@
+#pragma once
+
+#include "editor/elementref.h"
+
+#include <QDockWidget>
+
+class QStackedWidget;
+
+namespace editor {
+
+class Document;
+class Selection;
+
+// A dock for the properties of the selected element of one kind (a step, a
+// transition): a placeholder while the selection is something else, the
+// dock's form otherwise. It follows the selection, refreshes as the document
+// changes and reveals itself to focus a field on Selection::focusFieldRequested;
+// each dock supplies its form, how it fills it and which widget a field is.
+class PropertyDock : public QDockWidget {
+    Q_OBJECT
+
+protected:
+    PropertyDock(ElementRef::Kind kind, const QString& title, Document* document, Selection* selection,
+                 QWidget* parent);
+
+    // At the end of the dock's constructor, once refreshForm() can run:
+    // shows `placeholder` or `form`, and starts following the selection.
+    void setPages(const QString& placeholder, QWidget* form);
+
+    Document* document() const { return m_document; }
+    Selection* selection() const { return m_selection; }
+    // Empty when the selection is not of the dock's kind.
+    QString elementId() const { return m_elementId; }
+    ElementRef element() const { return {m_kind, m_elementId}; }
+
+    // The form while the element exists, filled again; else the placeholder.
+    void refresh();
+
+private:
+    // Runs only while the element exists.
+    virtual void refreshForm() = 0;
+    // `field` as Selection::focusFieldRequested names it; the dock is revealed.
+    virtual void focusField(const QString& field) = 0;
+
+    bool exists(const QString& id) const;
+    void onSelectionChanged(const ElementRef& element);
+    void onFocusFieldRequested(const ElementRef& element, const QString& field);
+
+    const ElementRef::Kind m_kind;
+    Document* m_document;
+    Selection* m_selection;
+    QString m_elementId;
+    QStackedWidget* m_pages = nullptr;
+};
+
+} // namespace editor
