@@ -95,7 +95,8 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
         createDocks();
     } else {
         createDockFrames();
-        m_view->viewport()->installEventFilter(this);
+        m_firstFrameWatched = m_view->viewport();
+        m_firstFrameWatched->installEventFilter(this);
     }
     createActions();
     createMenus();
@@ -123,7 +124,9 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
 MainWindow::~MainWindow()
 {
     // Everything that shows the document goes before it, and the window
-    // hears none of the signals the document sends as it goes.
+    // hears none of the signals the document sends as it goes, nor the
+    // events of a chart that was never painted.
+    stopWatchingFirstFrame();
     m_document->undoStack()->disconnect(this);
     m_document->disconnect(this);
     m_session->disconnect(this);
@@ -193,13 +196,20 @@ void MainWindow::arrangeDocks(const QList<QDockWidget*>& docks)
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event)
 {
-    if (watched == m_view->viewport() && event->type() == QEvent::Paint) {
-        m_view->viewport()->removeEventFilter(this);
+    if (watched == m_firstFrameWatched && event->type() == QEvent::Paint) {
+        stopWatchingFirstFrame();
         // After this paint is on screen, not within it.
         QMetaObject::invokeMethod(this, &MainWindow::ensureDocksReady, Qt::QueuedConnection);
         emit firstFrameShown();
     }
     return QMainWindow::eventFilter(watched, event);
+}
+
+void MainWindow::stopWatchingFirstFrame()
+{
+    if (m_firstFrameWatched)
+        m_firstFrameWatched->removeEventFilter(this);
+    m_firstFrameWatched = nullptr;
 }
 
 void MainWindow::ensureDocksReady()

@@ -96,6 +96,7 @@ private:
     // Builds the docks' contents now if they were deferred.
     void ensureDocksReady();
     bool eventFilter(QObject* watched, QEvent* event) override;
+    void stopWatchingFirstFrame();
     void createActions();
     void createMenus();
     void createStatusBar();
@@ -185,6 +186,8 @@ private:
     bool m_docksRebuildPending = false;
     // The empty frames that stand for the docks until their contents are built.
     QList<QDockWidget*> m_dockFrames;
+    // The chart's viewport until its first paint (DockContents::AfterFirstFrame).
+    QWidget* m_firstFrameWatched = nullptr;
 };
 
 } // namespace editor
