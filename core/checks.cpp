@@ -43,15 +43,6 @@ std::string joined(const std::vector<std::string>& items)
     return result;
 }
 
-// The part of a condition a span designates, clamped so a bad span never reads
-// outside the text.
-std::string excerpt(std::string_view text, const Span& span)
-{
-    const std::size_t begin = std::min(span.begin, text.size());
-    const std::size_t end = std::clamp(span.end, begin, text.size());
-    return std::string(text.substr(begin, end - begin));
-}
-
 // Spec §6.3: macro-steps wait unless negated, enclosing steps wait only when
 // negated, family transitions never wait.
 bool waitsForComplete(const Transition& transition, const Step* source)

@@ -39,9 +39,10 @@ struct BuildContext {
     SymbolTable symbols;
 };
 
-GemmaProblem makeProblem(GemmaProblem::Kind kind, std::string code, const std::string& element, std::string message)
+GemmaProblem makeProblem(GemmaProblem::Kind kind, std::string code, const std::string& element, std::string message,
+                         std::vector<std::string> arguments = {})
 {
-    return GemmaProblem{kind, std::move(code), element, std::move(message)};
+    return GemmaProblem{kind, std::move(code), element, std::move(message), std::move(arguments)};
 }
 
 bool waitsForComplete(StepType sourceType, bool negated, bool family)
@@ -64,19 +65,23 @@ void analyseCondition(const BuildContext& context, GemmaTransition& transition)
     if (isBlank(transition.conditionText)) {
         transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kConditionEmptyCode, id,
                                                   "the condition of " + id
-                                                      + " is empty: write TRUE for a transition that is always ready"));
+                                                      + " is empty: write TRUE for a transition that is always ready",
+                                                  {id}));
         return;
     }
     if (!transition.condition.ok()) {
+        const cond::ParseError& error = *transition.condition.error;
         transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kConditionSyntaxCode, id,
-                                                  "syntax error in the condition of " + id + ": "
-                                                      + transition.condition.error->message));
+                                                  "syntax error in the condition of " + id + ": " + error.message,
+                                                  {id, excerpt(transition.conditionText, error.span), error.message}));
         return;
     }
     std::vector<cond::TypeIssue> issues = cond::typeCheck(transition.condition.expression, context.symbols);
     for (cond::TypeIssue& issue : issues) {
+        std::vector<std::string> arguments{id, excerpt(transition.conditionText, issue.span), issue.message};
         transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, std::move(issue.code), id,
-                                                  "in the condition of " + id + ": " + issue.message));
+                                                  "in the condition of " + id + ": " + issue.message,
+                                                  std::move(arguments)));
     }
     transition.conditionUsable = issues.empty();
 }

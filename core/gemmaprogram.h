@@ -47,6 +47,9 @@ struct GemmaProblem {
     std::string code;    // diagnostic code when one applies ("GG201"), else empty
     std::string element; // transition id or step id
     std::string message; // English, may quote user text
+    // For the condition errors (GG201-GG204): Diagnostic::arguments as the
+    // checks give them for the same code, so the UI can word them the same.
+    std::vector<std::string> arguments;
 };
 
 struct GemmaTransition {

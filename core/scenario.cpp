@@ -453,6 +453,34 @@ std::string ScenarioError::toString() const
     return text;
 }
 
+std::string toText(const ScenarioFailure& failure)
+{
+    using Kind = ScenarioFailure::Kind;
+    const std::string& expected = failure.expected;
+    const std::string& actual = failure.actual;
+    std::string problem;
+    switch (failure.kind) {
+    case Kind::CannotApply: problem = "cannot apply: " + failure.detail; break;
+    case Kind::WrongStep: problem = "expected step " + expected + ", active step is " + actual; break;
+    case Kind::NoVisibleStep:
+        problem = "expected step " + expected + ", active step is none (State = " + actual + " names no visible step)";
+        break;
+    case Kind::NothingFired: problem = "expected " + expected + " to fire, no transition fired"; break;
+    case Kind::WrongFiring: problem = "expected " + expected + " to fire, " + actual + " fired"; break;
+    case Kind::UnexpectedFiring: problem = "expected no transition to fire, " + actual + " fired"; break;
+    case Kind::WrongToken:
+        problem = "expected token " + failure.subject + " = " + expected + ", it is " + actual;
+        break;
+    case Kind::WrongVariable: problem = "expected " + failure.subject + " = " + expected + ", it is " + actual; break;
+    case Kind::UnknownVariable: problem = "unknown variable " + quote(failure.subject); break;
+    case Kind::WrongEntry: problem = "expected Entry = " + expected + ", it is " + actual; break;
+    case Kind::WrongComplete:
+        problem = "expected " + failure.subject + ".Complete = " + expected + ", it is " + actual;
+        break;
+    }
+    return "scan " + std::to_string(failure.scan) + ": " + problem;
+}
+
 ScenarioParseResult parseScenario(std::string_view text, std::string fileName)
 {
     ScenarioParseResult result;
@@ -507,70 +535,93 @@ void ScenarioRunner::apply(const ScenarioAction& action)
     default: return;
     }
     if (!status) {
-        const std::int64_t scan = m_simulator.scanCount() + 1;
-        m_lastFailures.push_back(
-            ScenarioFailure{scan, action.line, "scan " + std::to_string(scan) + ": cannot apply: " + status.message});
+        ScenarioFailure failure;
+        failure.scan = m_simulator.scanCount() + 1;
+        failure.line = action.line;
+        failure.kind = ScenarioFailure::Kind::CannotApply;
+        failure.subject = action.name;
+        failure.detail = status.message;
+        m_lastFailures.push_back(std::move(failure));
     }
 }
 
 void ScenarioRunner::check(const ScenarioAction& action, const ScanRecord& record)
 {
     using Kind = ScenarioAction::Kind;
-    const std::string prefix = "scan " + std::to_string(record.scan) + ": ";
-    std::string problem;
+    using Failure = ScenarioFailure::Kind;
+    ScenarioFailure failure;
+    failure.scan = record.scan;
+    failure.line = action.line;
     switch (action.kind) {
     case Kind::ExpectStep:
-        if (!equalsIgnoreCase(record.stepAfter, action.name)) {
-            problem = "expected step " + toUpperAscii(action.name) + ", active step is "
-                      + (record.stepAfter.empty() ? "none (State = " + std::to_string(m_simulator.activeStepNumber())
-                                                        + " names no visible step)"
-                                                  : record.stepAfter);
-        }
+        if (equalsIgnoreCase(record.stepAfter, action.name))
+            return;
+        failure.kind = record.stepAfter.empty() ? Failure::NoVisibleStep : Failure::WrongStep;
+        failure.expected = toUpperAscii(action.name);
+        failure.actual =
+            record.stepAfter.empty() ? std::to_string(m_simulator.activeStepNumber()) : record.stepAfter;
         break;
     case Kind::ExpectFired:
-        if (!equalsIgnoreCase(record.fired, action.name))
-            problem = "expected " + action.name + " to fire, "
-                      + (record.fired.empty() ? std::string("no transition fired") : record.fired + " fired");
+        if (equalsIgnoreCase(record.fired, action.name))
+            return;
+        failure.kind = record.fired.empty() ? Failure::NothingFired : Failure::WrongFiring;
+        failure.expected = action.name;
+        failure.actual = record.fired;
         break;
     case Kind::ExpectNoFiring:
-        if (!record.fired.empty())
-            problem = "expected no transition to fire, " + record.fired + " fired";
+        if (record.fired.empty())
+            return;
+        failure.kind = Failure::UnexpectedFiring;
+        failure.actual = record.fired;
         break;
     case Kind::ExpectToken: {
         const bool actual = m_simulator.token(action.name);
-        if (boolText(actual) != action.value)
-            problem = "expected token " + action.name + " = " + action.value + ", it is " + boolText(actual);
+        if (boolText(actual) == action.value)
+            return;
+        failure.kind = Failure::WrongToken;
+        failure.subject = action.name;
+        failure.expected = action.value;
+        failure.actual = boolText(actual);
         break;
     }
     case Kind::ExpectVariable: {
         const int index = m_simulator.variableIndex(action.name);
         if (index < 0) {
-            problem = "unknown variable " + quote(action.name);
+            failure.kind = Failure::UnknownVariable;
+            failure.subject = action.name;
             break;
         }
         const std::optional<cond::Value> expected =
             cond::parseValue(m_simulator.variableType(static_cast<std::size_t>(index)), action.value);
         const cond::Value actual = m_simulator.variableValue(static_cast<std::size_t>(index));
-        if (!expected || *expected != actual)
-            problem = "expected " + m_simulator.variableNames()[static_cast<std::size_t>(index)] + " = " + action.value
-                      + ", it is " + cond::formatValue(actual);
+        if (expected && *expected == actual)
+            return;
+        failure.kind = Failure::WrongVariable;
+        failure.subject = m_simulator.variableNames()[static_cast<std::size_t>(index)];
+        failure.expected = action.value;
+        failure.actual = cond::formatValue(actual);
         break;
     }
     case Kind::ExpectEntry:
-        if (boolText(record.entry) != action.value)
-            problem = "expected Entry = " + action.value + ", it is " + boolText(record.entry);
+        if (boolText(record.entry) == action.value)
+            return;
+        failure.kind = Failure::WrongEntry;
+        failure.expected = action.value;
+        failure.actual = boolText(record.entry);
         break;
     case Kind::ExpectComplete: {
         const bool actual = m_simulator.complete(action.name);
-        if (boolText(actual) != action.value)
-            problem = "expected " + toUpperAscii(action.name) + ".Complete = " + action.value + ", it is "
-                      + boolText(actual);
+        if (boolText(actual) == action.value)
+            return;
+        failure.kind = Failure::WrongComplete;
+        failure.subject = toUpperAscii(action.name);
+        failure.expected = action.value;
+        failure.actual = boolText(actual);
         break;
     }
     default: return;
     }
-    if (!problem.empty())
-        m_lastFailures.push_back(ScenarioFailure{record.scan, action.line, prefix + problem});
+    m_lastFailures.push_back(std::move(failure));
 }
 
 ScanRecord ScenarioRunner::step()

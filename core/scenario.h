@@ -85,12 +85,36 @@ ScenarioParseResult parseScenario(std::string_view text, std::string fileName = 
 // nested behaviour, values that are not of the variable's type.
 std::vector<ScenarioError> validateScenario(const Scenario& scenario, const Simulator& simulator);
 
-// An expectation that did not hold.
+// An expectation that did not hold, or a set that could not be applied, as
+// data: the editor words it in the UI language, toText() in English. Names
+// and values are IEC text.
 struct ScenarioFailure {
+    enum class Kind {
+        CannotApply,      // subject: the name set; detail: why (English, from the simulator)
+        WrongStep,        // expected: the step; actual: the active step
+        NoVisibleStep,    // expected: the step; actual: the value of State, which names no visible step
+        NothingFired,     // expected: the transition; none fired
+        WrongFiring,      // expected: the transition; actual: the one that fired
+        UnexpectedFiring, // none expected; actual: the one that fired
+        WrongToken,       // subject: the token; expected, actual: TRUE/FALSE
+        WrongVariable,    // subject: the variable as declared; expected: as written; actual
+        UnknownVariable,  // subject: the name as written
+        WrongEntry,       // expected, actual: TRUE/FALSE
+        WrongComplete,    // subject: the step; expected, actual: TRUE/FALSE
+    };
     std::int64_t scan = 0;
-    int line = 0;        // of the expectation in the scenario
-    std::string message; // "scan 3: expected step F1, active step is A1"
+    int line = 0; // of the action in the scenario
+    Kind kind = Kind::WrongStep;
+    std::string subject;
+    std::string expected;
+    std::string actual;
+    std::string detail;
+
+    friend bool operator==(const ScenarioFailure&, const ScenarioFailure&) = default;
 };
+
+// "scan 3: expected step F1, active step is A1".
+std::string toText(const ScenarioFailure& failure);
 
 // Plays a scenario on a simulator one scan at a time (the editor steps it,
 // the command line runs it). Scan numbers are the simulator's: the next scan

@@ -189,10 +189,11 @@ struct Simulator::Impl {
     void fillRecordAfter(ScanRecord& record) const;
     void collectChanges(ScanRecord* record);
     int stepIndexOfNested(std::string_view stepId) const;
-    std::vector<std::string> explainFalse(const CompiledTransition& transition, const std::vector<char>& tokenState) const;
+    std::vector<ExplanationReason> explainFalse(const CompiledTransition& transition,
+                                                const std::vector<char>& tokenState) const;
     void explainNode(const CompiledTransition& transition, const std::vector<char>& tokenState, int node,
-                     std::vector<std::string>& reasons) const;
-    std::string readingText(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
+                     std::vector<ExplanationReason>& reasons) const;
+    ConditionReading reading(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
 };
 
 Simulator::Impl::Impl(const Model& model)
@@ -647,31 +648,32 @@ int Simulator::Impl::stepIndexOfNested(std::string_view stepId) const
     return -1;
 }
 
-// "Speed = 3", "Stop_F1_3_MEM = FALSE (token of NOT Stop)".
-std::string Simulator::Impl::readingText(const CompiledTransition& transition, int node,
-                                         const std::vector<char>& tokenState) const
+// Speed reads 3; Stop_F1_3_MEM reads FALSE and stores NOT Stop.
+ConditionReading Simulator::Impl::reading(const CompiledTransition& transition, int node,
+                                          const std::vector<char>& tokenState) const
 {
     const auto index = static_cast<std::size_t>(node);
-    const cond::Value value = nodeReading(transition, node, tokenState);
+    ConditionReading result;
+    result.value = cond::formatValue(nodeReading(transition, node, tokenState));
     const int token = transition.nodeToken[index];
     if (token >= 0) {
         const CompiledToken& t = tokens[static_cast<std::size_t>(token)];
-        std::string literal = t.variableSlot >= 0 ? variableNames[static_cast<std::size_t>(t.variableSlot)] : "?";
+        result.name = tokenNames[static_cast<std::size_t>(token)];
+        result.tokenLiteral = t.variableSlot >= 0 ? variableNames[static_cast<std::size_t>(t.variableSlot)] : "?";
         if (t.normallyClosed)
-            literal = "NOT " + literal;
-        return tokenNames[static_cast<std::size_t>(token)] + " = " + cond::formatValue(value) + " (token of " + literal
-               + ")";
+            result.tokenLiteral = "NOT " + result.tokenLiteral;
+        return result;
     }
     const int slot = transition.nodeVariable[index];
-    const std::string name = slot >= 0 ? variableNames[static_cast<std::size_t>(slot)] : transition.readable.at(node).text;
-    return name + " = " + cond::formatValue(value);
+    result.name = slot >= 0 ? variableNames[static_cast<std::size_t>(slot)] : transition.readable.at(node).text;
+    return result;
 }
 
 // Why the subtree at `node` has the value it has: logical operators descend
 // to the operands that decide the result, everything else is explained by
 // its text, its value and the values it reads.
 void Simulator::Impl::explainNode(const CompiledTransition& transition, const std::vector<char>& tokenState, int node,
-                                  std::vector<std::string>& reasons) const
+                                  std::vector<ExplanationReason>& reasons) const
 {
     const cond::Expression& expression = transition.readable;
     const cond::Node& n = expression.at(node);
@@ -680,12 +682,17 @@ void Simulator::Impl::explainNode(const CompiledTransition& transition, const st
         sub.root = at;
         return cond::isTrue(cond::evaluate(sub, [&](int v) { return nodeReading(transition, v, tokenState); }));
     };
+    ExplanationReason reason;
     if (n.kind == cond::NodeKind::Variable) {
-        reasons.push_back(readingText(transition, node, tokenState));
+        reason.kind = ExplanationReason::Kind::Reading;
+        reason.readings.push_back(reading(transition, node, tokenState));
+        reasons.push_back(std::move(reason));
         return;
     }
     if (n.kind == cond::NodeKind::BoolLiteral) {
-        reasons.push_back(toUpperAscii(n.text));
+        reason.kind = ExplanationReason::Kind::Literal;
+        reason.value = toUpperAscii(n.text);
+        reasons.push_back(std::move(reason));
         return;
     }
     if (n.kind == cond::NodeKind::Unary && n.unaryOp == cond::UnaryOp::Not) {
@@ -719,27 +726,21 @@ void Simulator::Impl::explainNode(const CompiledTransition& transition, const st
             return variableNames[static_cast<std::size_t>(transition.nodeVariable[at])];
         return variable.text;
     };
-    std::string text = cond::print(sub, options) + " is "
-                       + cond::formatValue(cond::evaluate(sub, [&](int v) { return nodeReading(transition, v, tokenState); }));
-    std::vector<std::string> readings;
+    reason.kind = ExplanationReason::Kind::Expression;
+    reason.subject = cond::print(sub, options);
+    reason.value = cond::formatValue(cond::evaluate(sub, [&](int v) { return nodeReading(transition, v, tokenState); }));
     for (int v : cond::variableNodes(sub)) { // walks the subtree only
-        std::string reading = readingText(transition, v, tokenState);
-        if (std::find(readings.begin(), readings.end(), reading) == readings.end())
-            readings.push_back(std::move(reading));
+        ConditionReading operand = reading(transition, v, tokenState);
+        if (std::find(reason.readings.begin(), reason.readings.end(), operand) == reason.readings.end())
+            reason.readings.push_back(std::move(operand));
     }
-    if (!readings.empty()) {
-        text += " (";
-        for (std::size_t i = 0; i < readings.size(); ++i)
-            text += (i ? ", " : "") + readings[i];
-        text += ")";
-    }
-    reasons.push_back(std::move(text));
+    reasons.push_back(std::move(reason));
 }
 
-std::vector<std::string> Simulator::Impl::explainFalse(const CompiledTransition& transition,
-                                                       const std::vector<char>& tokenState) const
+std::vector<ExplanationReason> Simulator::Impl::explainFalse(const CompiledTransition& transition,
+                                                             const std::vector<char>& tokenState) const
 {
-    std::vector<std::string> reasons;
+    std::vector<ExplanationReason> reasons;
     if (!transition.readable.empty())
         explainNode(transition, tokenState, transition.readable.root, reasons);
     return reasons;
@@ -1012,6 +1013,33 @@ std::string Simulator::lastFired() const
     return m_impl->lastFired ? m_impl->lastFired->id : std::string();
 }
 
+namespace {
+
+// The errors that make a condition unusable, with what the editor needs to
+// word them as the checks' diagnostics of the same code.
+std::vector<ExplanationReason> unusableReasons(const GemmaTransition& transition)
+{
+    std::vector<ExplanationReason> reasons;
+    for (const GemmaProblem& problem : transition.problems) {
+        if (problem.kind != GemmaProblem::Kind::Error)
+            continue;
+        ExplanationReason reason;
+        reason.kind = ExplanationReason::Kind::Unusable;
+        reason.code = problem.code;
+        reason.arguments = problem.arguments;
+        reason.message = problem.message;
+        reasons.push_back(std::move(reason));
+    }
+    if (reasons.empty()) { // not expected: an unusable condition has an error
+        ExplanationReason unknown;
+        unknown.kind = ExplanationReason::Kind::Unusable;
+        reasons.push_back(std::move(unknown));
+    }
+    return reasons;
+}
+
+} // namespace
+
 std::vector<TransitionExplanation> Simulator::explain() const
 {
     const Impl& impl = *m_impl;
@@ -1027,7 +1055,9 @@ std::vector<TransitionExplanation> Simulator::explain() const
             std::fill_n(tokenState.begin() + step.firstToken, step.tokenCount, 0);
         complete = impl.fbComplete(step.nestedIndex);
     }
-    const std::string completeText = step.source->id + ".Complete = " + (complete ? "TRUE" : "FALSE");
+    ExplanationReason completeFalse;
+    completeFalse.kind = ExplanationReason::Kind::CompleteFalse;
+    completeFalse.subject = step.source->id;
     std::string firing;
     for (const CompiledTransition& transition : step.transitions) {
         const GemmaTransition& source = *transition.source;
@@ -1039,24 +1069,22 @@ std::vector<TransitionExplanation> Simulator::explain() const
         explanation.waitsForComplete = source.waitsForComplete;
         if (!source.conditionUsable) {
             explanation.status = TransitionStatus::Unusable;
-            for (const GemmaProblem& problem : source.problems) {
-                if (problem.kind == GemmaProblem::Kind::Error)
-                    explanation.reasons.push_back(problem.message);
-            }
-            if (explanation.reasons.empty())
-                explanation.reasons.push_back("the condition cannot be used: it is FALSE");
+            explanation.reasons = unusableReasons(source);
         } else if (!impl.evaluate(transition, tokenState)) {
             explanation.status = TransitionStatus::ConditionFalse;
             explanation.reasons = impl.explainFalse(transition, tokenState);
             if (transition.waitsForComplete && !complete)
-                explanation.reasons.push_back(completeText);
+                explanation.reasons.push_back(completeFalse);
         } else if (transition.waitsForComplete && !complete) {
             explanation.status = TransitionStatus::WaitingForComplete;
-            explanation.reasons.push_back(completeText);
+            explanation.reasons.push_back(completeFalse);
         } else if (!firing.empty()) {
             explanation.status = TransitionStatus::PreemptedByHigherPriority;
             explanation.preemptedBy = firing;
-            explanation.reasons.push_back(firing + " fires first");
+            ExplanationReason first;
+            first.kind = ExplanationReason::Kind::FiresFirst;
+            first.subject = firing;
+            explanation.reasons.push_back(std::move(first));
         } else {
             explanation.status = TransitionStatus::Fires;
             firing = source.id;

@@ -40,6 +40,7 @@
 // evaluation scratch space. Copies are independent.
 
 #include "core/conditionevaluator.h"
+#include "core/explanationreason.h"
 #include "core/gemmaprogram.h"
 #include "core/status.h"
 
@@ -108,12 +109,14 @@ struct TransitionExplanation {
     bool family = false;
     bool waitsForComplete = false;
     TransitionStatus status = TransitionStatus::ConditionFalse;
-    // Readable reasons: for ConditionFalse the operands that made it FALSE,
-    // down to variables and comparisons ("Start = FALSE",
-    // "Speed > 10 is FALSE (Speed = 3)", "token Stop_F1_3_MEM = FALSE (NOT Stop)");
-    // for WaitingForComplete "F1.Complete = FALSE"; for Unusable the problem;
-    // for PreemptedByHigherPriority "F->D1 fires first".
-    std::vector<std::string> reasons;
+    // Why, as data (toText() words it in English): for ConditionFalse the
+    // operands that made it FALSE, down to variables and comparisons
+    // ("Start = FALSE", "Speed > 10 is FALSE (Speed = 3)",
+    // "Stop_F1_3_MEM = FALSE (token of NOT Stop)"), then "F1.Complete = FALSE"
+    // when it also waits for Complete; for WaitingForComplete
+    // "F1.Complete = FALSE"; for Unusable its problems; for
+    // PreemptedByHigherPriority "F->D1 fires first".
+    std::vector<ExplanationReason> reasons;
     std::string preemptedBy; // the transition that fires instead (PreemptedByHigherPriority only)
 };
 

@@ -461,6 +461,89 @@
     </message>
 </context>
 <context>
+    <name>SimulationText</name>
+    <message>
+        <source>%1 = %2 (token of %3)</source>
+        <extracomment>a token variable, its value, then the literal it stores (&quot;NOT Stop&quot;)</extracomment>
+        <translation>%1 = %2 (Merker von %3)</translation>
+    </message>
+    <message>
+        <source>%1 is %2</source>
+        <extracomment>an IEC expression of a condition, then TRUE or FALSE</extracomment>
+        <translation>%1 ist %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 (%3)</source>
+        <extracomment>an IEC expression of a condition, TRUE or FALSE, then the values it reads (&quot;Speed = 3&quot;)</extracomment>
+        <translation>%1 ist %2 (%3)</translation>
+    </message>
+    <message>
+        <source>The condition cannot be used: it is FALSE.</source>
+        <translation>Die Bedingung ist nicht verwendbar: Sie ist FALSE.</translation>
+    </message>
+    <message>
+        <source>cannot apply: %1</source>
+        <extracomment>%1: why, from the simulator (English)</extracomment>
+        <translation>nicht anwendbar: %1</translation>
+    </message>
+    <message>
+        <source>expected step %1, active step is %2</source>
+        <translation>Schritt %1 erwartet, aktiver Schritt ist %2</translation>
+    </message>
+    <message>
+        <source>expected step %1, no visible step is active (State = %2)</source>
+        <translation>Schritt %1 erwartet, kein sichtbarer Schritt ist aktiv (State = %2)</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, no transition fired</source>
+        <translation>%1 sollte schalten, keine Transition hat geschaltet</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, %2 fired</source>
+        <translation>%1 sollte schalten, %2 hat geschaltet</translation>
+    </message>
+    <message>
+        <source>expected no transition to fire, %1 fired</source>
+        <translation>keine Transition sollte schalten, %1 hat geschaltet</translation>
+    </message>
+    <message>
+        <source>expected token %1 = %2, it is %3</source>
+        <translation>Merker %1 = %2 erwartet, er ist %3</translation>
+    </message>
+    <message>
+        <source>expected %1 = %2, it is %3</source>
+        <extracomment>a variable, the value expected, the value it has</extracomment>
+        <translation>%1 = %2 erwartet, der Wert ist %3</translation>
+    </message>
+    <message>
+        <source>unknown variable &apos;%1&apos;</source>
+        <translation>unbekannte Variable &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>expected Entry = %1, it is %2</source>
+        <translation>Entry = %1 erwartet, ist %2</translation>
+    </message>
+    <message>
+        <source>expected %1.Complete = %2, it is %3</source>
+        <translation>%1.Complete = %2 erwartet, ist %3</translation>
+    </message>
+    <message>
+        <source>%1.Complete = FALSE</source>
+        <extracomment>a macro-step or enclosing step; the transition waits for its Complete</extracomment>
+        <translation>%1.Complete = FALSE</translation>
+    </message>
+    <message>
+        <source>%1 fires first</source>
+        <extracomment>a transition of higher priority whose condition holds</extracomment>
+        <translation>%1 schaltet zuerst</translation>
+    </message>
+    <message>
+        <source>scan %1: %2</source>
+        <extracomment>a scan number, then what differed</extracomment>
+        <translation>Zyklus %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -548,6 +631,14 @@
     <message>
         <source>Cannot write the recovery copy: %1</source>
         <translation>Die Wiederherstellungskopie kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>Cannot lock the recovery copy %1</source>
+        <translation>Die Wiederherstellungskopie %1 kann nicht gesperrt werden</translation>
+    </message>
+    <message>
+        <source>Another GG Studio is using the recovery copy %1.</source>
+        <translation>Eine andere GG-Studio-Instanz verwendet die Wiederherstellungskopie %1.</translation>
     </message>
 </context>
 <context>

@@ -461,6 +461,89 @@
     </message>
 </context>
 <context>
+    <name>SimulationText</name>
+    <message>
+        <source>%1 = %2 (token of %3)</source>
+        <extracomment>a token variable, its value, then the literal it stores (&quot;NOT Stop&quot;)</extracomment>
+        <translation>%1 = %2 (memoria de %3)</translation>
+    </message>
+    <message>
+        <source>%1 is %2</source>
+        <extracomment>an IEC expression of a condition, then TRUE or FALSE</extracomment>
+        <translation>%1 es %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 (%3)</source>
+        <extracomment>an IEC expression of a condition, TRUE or FALSE, then the values it reads (&quot;Speed = 3&quot;)</extracomment>
+        <translation>%1 es %2 (%3)</translation>
+    </message>
+    <message>
+        <source>The condition cannot be used: it is FALSE.</source>
+        <translation>La condición no se puede usar: vale FALSE.</translation>
+    </message>
+    <message>
+        <source>cannot apply: %1</source>
+        <extracomment>%1: why, from the simulator (English)</extracomment>
+        <translation>no se puede aplicar: %1</translation>
+    </message>
+    <message>
+        <source>expected step %1, active step is %2</source>
+        <translation>se esperaba la etapa %1, la etapa activa es %2</translation>
+    </message>
+    <message>
+        <source>expected step %1, no visible step is active (State = %2)</source>
+        <translation>se esperaba la etapa %1, ninguna etapa visible está activa (State = %2)</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, no transition fired</source>
+        <translation>se esperaba que se franqueara %1, no se franqueó ninguna transición</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, %2 fired</source>
+        <translation>se esperaba que se franqueara %1, se franqueó %2</translation>
+    </message>
+    <message>
+        <source>expected no transition to fire, %1 fired</source>
+        <translation>no se esperaba que se franqueara ninguna transición, se franqueó %1</translation>
+    </message>
+    <message>
+        <source>expected token %1 = %2, it is %3</source>
+        <translation>se esperaba la memoria %1 = %2, vale %3</translation>
+    </message>
+    <message>
+        <source>expected %1 = %2, it is %3</source>
+        <extracomment>a variable, the value expected, the value it has</extracomment>
+        <translation>se esperaba %1 = %2, vale %3</translation>
+    </message>
+    <message>
+        <source>unknown variable &apos;%1&apos;</source>
+        <translation>variable &apos;%1&apos; desconocida</translation>
+    </message>
+    <message>
+        <source>expected Entry = %1, it is %2</source>
+        <translation>se esperaba Entry = %1, vale %2</translation>
+    </message>
+    <message>
+        <source>expected %1.Complete = %2, it is %3</source>
+        <translation>se esperaba %1.Complete = %2, vale %3</translation>
+    </message>
+    <message>
+        <source>%1.Complete = FALSE</source>
+        <extracomment>a macro-step or enclosing step; the transition waits for its Complete</extracomment>
+        <translation>%1.Complete = FALSE</translation>
+    </message>
+    <message>
+        <source>%1 fires first</source>
+        <extracomment>a transition of higher priority whose condition holds</extracomment>
+        <translation>%1 se franquea primero</translation>
+    </message>
+    <message>
+        <source>scan %1: %2</source>
+        <extracomment>a scan number, then what differed</extracomment>
+        <translation>ciclo %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -548,6 +631,14 @@
     <message>
         <source>Cannot write the recovery copy: %1</source>
         <translation>No se puede escribir la copia de recuperación: %1</translation>
+    </message>
+    <message>
+        <source>Cannot lock the recovery copy %1</source>
+        <translation>No se puede bloquear la copia de recuperación %1</translation>
+    </message>
+    <message>
+        <source>Another GG Studio is using the recovery copy %1.</source>
+        <translation>Otra instancia de GG Studio está usando la copia de recuperación %1.</translation>
     </message>
 </context>
 <context>

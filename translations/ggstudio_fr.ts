@@ -461,6 +461,89 @@
     </message>
 </context>
 <context>
+    <name>SimulationText</name>
+    <message>
+        <source>%1 = %2 (token of %3)</source>
+        <extracomment>a token variable, its value, then the literal it stores (&quot;NOT Stop&quot;)</extracomment>
+        <translation>%1 = %2 (mémoire de %3)</translation>
+    </message>
+    <message>
+        <source>%1 is %2</source>
+        <extracomment>an IEC expression of a condition, then TRUE or FALSE</extracomment>
+        <translation>%1 est %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 (%3)</source>
+        <extracomment>an IEC expression of a condition, TRUE or FALSE, then the values it reads (&quot;Speed = 3&quot;)</extracomment>
+        <translation>%1 est %2 (%3)</translation>
+    </message>
+    <message>
+        <source>The condition cannot be used: it is FALSE.</source>
+        <translation>La réceptivité est inutilisable&#xa0;: elle vaut FALSE.</translation>
+    </message>
+    <message>
+        <source>cannot apply: %1</source>
+        <extracomment>%1: why, from the simulator (English)</extracomment>
+        <translation>impossible d&apos;appliquer&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>expected step %1, active step is %2</source>
+        <translation>étape %1 attendue, l&apos;étape active est %2</translation>
+    </message>
+    <message>
+        <source>expected step %1, no visible step is active (State = %2)</source>
+        <translation>étape %1 attendue, aucune étape visible n&apos;est active (State = %2)</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, no transition fired</source>
+        <translation>%1 devait être franchie, aucune transition ne l&apos;a été</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, %2 fired</source>
+        <translation>%1 devait être franchie, %2 l&apos;a été</translation>
+    </message>
+    <message>
+        <source>expected no transition to fire, %1 fired</source>
+        <translation>aucune transition ne devait être franchie, %1 l&apos;a été</translation>
+    </message>
+    <message>
+        <source>expected token %1 = %2, it is %3</source>
+        <translation>mémoire %1 = %2 attendue, elle vaut %3</translation>
+    </message>
+    <message>
+        <source>expected %1 = %2, it is %3</source>
+        <extracomment>a variable, the value expected, the value it has</extracomment>
+        <translation>%1 = %2 attendu, la valeur est %3</translation>
+    </message>
+    <message>
+        <source>unknown variable &apos;%1&apos;</source>
+        <translation>variable &apos;%1&apos; inconnue</translation>
+    </message>
+    <message>
+        <source>expected Entry = %1, it is %2</source>
+        <translation>Entry = %1 attendu, il vaut %2</translation>
+    </message>
+    <message>
+        <source>expected %1.Complete = %2, it is %3</source>
+        <translation>%1.Complete = %2 attendu, il vaut %3</translation>
+    </message>
+    <message>
+        <source>%1.Complete = FALSE</source>
+        <extracomment>a macro-step or enclosing step; the transition waits for its Complete</extracomment>
+        <translation>%1.Complete = FALSE</translation>
+    </message>
+    <message>
+        <source>%1 fires first</source>
+        <extracomment>a transition of higher priority whose condition holds</extracomment>
+        <translation>%1 est franchie en premier</translation>
+    </message>
+    <message>
+        <source>scan %1: %2</source>
+        <extracomment>a scan number, then what differed</extracomment>
+        <translation>cycle %1&#xa0;: %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -548,6 +631,14 @@
     <message>
         <source>Cannot write the recovery copy: %1</source>
         <translation>Impossible d&apos;écrire la copie de récupération&#xa0;: %1</translation>
+    </message>
+    <message>
+        <source>Cannot lock the recovery copy %1</source>
+        <translation>Impossible de verrouiller la copie de récupération %1</translation>
+    </message>
+    <message>
+        <source>Another GG Studio is using the recovery copy %1.</source>
+        <translation>Une autre instance de GG Studio utilise la copie de récupération %1.</translation>
     </message>
 </context>
 <context>

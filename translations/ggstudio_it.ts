@@ -461,6 +461,89 @@
     </message>
 </context>
 <context>
+    <name>SimulationText</name>
+    <message>
+        <source>%1 = %2 (token of %3)</source>
+        <extracomment>a token variable, its value, then the literal it stores (&quot;NOT Stop&quot;)</extracomment>
+        <translation>%1 = %2 (memoria di %3)</translation>
+    </message>
+    <message>
+        <source>%1 is %2</source>
+        <extracomment>an IEC expression of a condition, then TRUE or FALSE</extracomment>
+        <translation>%1 è %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2 (%3)</source>
+        <extracomment>an IEC expression of a condition, TRUE or FALSE, then the values it reads (&quot;Speed = 3&quot;)</extracomment>
+        <translation>%1 è %2 (%3)</translation>
+    </message>
+    <message>
+        <source>The condition cannot be used: it is FALSE.</source>
+        <translation>La condizione non è utilizzabile: vale FALSE.</translation>
+    </message>
+    <message>
+        <source>cannot apply: %1</source>
+        <extracomment>%1: why, from the simulator (English)</extracomment>
+        <translation>impossibile applicare: %1</translation>
+    </message>
+    <message>
+        <source>expected step %1, active step is %2</source>
+        <translation>attesa la tappa %1, la tappa attiva è %2</translation>
+    </message>
+    <message>
+        <source>expected step %1, no visible step is active (State = %2)</source>
+        <translation>attesa la tappa %1, nessuna tappa visibile è attiva (State = %2)</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, no transition fired</source>
+        <translation>%1 doveva scattare, nessuna transizione è scattata</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, %2 fired</source>
+        <translation>%1 doveva scattare, è scattata %2</translation>
+    </message>
+    <message>
+        <source>expected no transition to fire, %1 fired</source>
+        <translation>nessuna transizione doveva scattare, è scattata %1</translation>
+    </message>
+    <message>
+        <source>expected token %1 = %2, it is %3</source>
+        <translation>attesa la memoria %1 = %2, vale %3</translation>
+    </message>
+    <message>
+        <source>expected %1 = %2, it is %3</source>
+        <extracomment>a variable, the value expected, the value it has</extracomment>
+        <translation>atteso %1 = %2, vale %3</translation>
+    </message>
+    <message>
+        <source>unknown variable &apos;%1&apos;</source>
+        <translation>variabile &apos;%1&apos; sconosciuta</translation>
+    </message>
+    <message>
+        <source>expected Entry = %1, it is %2</source>
+        <translation>atteso Entry = %1, vale %2</translation>
+    </message>
+    <message>
+        <source>expected %1.Complete = %2, it is %3</source>
+        <translation>atteso %1.Complete = %2, vale %3</translation>
+    </message>
+    <message>
+        <source>%1.Complete = FALSE</source>
+        <extracomment>a macro-step or enclosing step; the transition waits for its Complete</extracomment>
+        <translation>%1.Complete = FALSE</translation>
+    </message>
+    <message>
+        <source>%1 fires first</source>
+        <extracomment>a transition of higher priority whose condition holds</extracomment>
+        <translation>%1 scatta per prima</translation>
+    </message>
+    <message>
+        <source>scan %1: %2</source>
+        <extracomment>a scan number, then what differed</extracomment>
+        <translation>ciclo %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -548,6 +631,14 @@
     <message>
         <source>Cannot write the recovery copy: %1</source>
         <translation>Impossibile scrivere la copia di recupero: %1</translation>
+    </message>
+    <message>
+        <source>Cannot lock the recovery copy %1</source>
+        <translation>Impossibile bloccare la copia di recupero %1</translation>
+    </message>
+    <message>
+        <source>Another GG Studio is using the recovery copy %1.</source>
+        <translation>Un&apos;altra istanza di GG Studio sta usando la copia di recupero %1.</translation>
     </message>
 </context>
 <context>

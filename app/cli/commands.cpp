@@ -368,7 +368,7 @@ int commandSimulate(const Arguments& args, Streams streams)
         const core::ScanRecord record = runner.step();
         printScan(record, simulator, trace, streams.out);
         for (const core::ScenarioFailure& failure : runner.lastFailures())
-            streams.err << files[1] << ":" << failure.line << ": " << failure.message << "\n";
+            streams.err << files[1] << ":" << failure.line << ": " << core::toText(failure) << "\n";
         failures += runner.lastFailures().size();
     }
     if (files.size() == 2) {

@@ -3,6 +3,7 @@
 #include "editor/docks/elementlabels.h"
 #include "editor/document.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
 #include "editor/statenames.h"
 
@@ -713,8 +714,8 @@ void SimulationDock::refreshExplanation()
     for (const core::TransitionExplanation& e : explanations) {
         shown << QString::fromStdString(e.transitionId) << QString::number(static_cast<int>(e.status))
               << QString::fromStdString(e.preemptedBy);
-        for (const std::string& reason : e.reasons)
-            shown << QString::fromStdString(reason);
+        for (const core::ExplanationReason& reason : e.reasons)
+            shown << QString::fromStdString(core::toText(reason)); // a language change builds the dock anew
         shown << QString();
     }
     if (shown == m_shownExplanation)
@@ -740,10 +741,11 @@ void SimulationDock::refreshExplanation()
         const QColor color = statusColor(e.status);
         if (color.isValid())
             item->setForeground(StatusColumn, color);
-        for (const std::string& reason : e.reasons) {
+        for (const core::ExplanationReason& reason : e.reasons) {
+            const QString text = explanationReasonText(reason);
             auto* child = new QTreeWidgetItem(item);
-            child->setText(TransitionColumn, QString::fromStdString(reason));
-            child->setToolTip(TransitionColumn, QString::fromStdString(reason));
+            child->setText(TransitionColumn, text);
+            child->setToolTip(TransitionColumn, text);
             child->setFirstColumnSpanned(true);
         }
     }
@@ -780,7 +782,7 @@ void SimulationDock::refreshReplay()
     }
     }
     for (const core::ScenarioFailure& failure : failures) {
-        auto* item = new QListWidgetItem(tr("Line %1: %2").arg(failure.line).arg(QString::fromStdString(failure.message)),
+        auto* item = new QListWidgetItem(tr("Line %1: %2").arg(failure.line).arg(scenarioFailureText(failure)),
                                          m_failureList);
         item->setForeground(QColor(0xc6, 0x28, 0x28));
     }

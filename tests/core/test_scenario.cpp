@@ -24,7 +24,7 @@ std::vector<std::string> failureTexts(const std::vector<ScenarioFailure>& failur
 {
     std::vector<std::string> texts;
     for (const ScenarioFailure& failure : failures)
-        texts.push_back(failure.message);
+        texts.push_back(toText(failure));
     return texts;
 }
 
@@ -194,6 +194,15 @@ TEST_CASE("Scenario: running checks each expectation after its scan", "[simulati
           });
     CHECK(result.failures[0].line == 1);
     CHECK(result.failures.back().line == 9);
+    // The same as data, for the editor to word.
+    REQUIRE(result.failures.size() == 7);
+    using Kind = ScenarioFailure::Kind;
+    CHECK(result.failures[0] == ScenarioFailure{1, 1, Kind::WrongStep, "", "A1", "A6", ""});
+    CHECK(result.failures[1] == ScenarioFailure{2, 2, Kind::NothingFired, "", "A1->F1", "", ""});
+    CHECK(result.failures[2] == ScenarioFailure{2, 4, Kind::WrongToken, "Stop_F1_2_MEM", "TRUE", "FALSE", ""});
+    CHECK(result.failures[4] == ScenarioFailure{2, 6, Kind::WrongVariable, "BatchSize", "12", "500", ""});
+    CHECK(result.failures[5] == ScenarioFailure{2, 7, Kind::WrongComplete, "F1", "TRUE", "FALSE", ""});
+    CHECK(result.failures[6] == ScenarioFailure{3, 9, Kind::UnexpectedFiring, "", "", "A6->A1", ""});
 
     SECTION("--scans beyond the scenario runs idle scans")
     {
@@ -201,6 +210,34 @@ TEST_CASE("Scenario: running checks each expectation after its scan", "[simulati
         CHECK(result.records.size() == 10);
         CHECK(result.passed());
     }
+}
+
+TEST_CASE("Scenario: English text of the failures the runner rarely meets", "[simulation]")
+{
+    using Kind = ScenarioFailure::Kind;
+    CHECK(toText(ScenarioFailure{4, 1, Kind::NoVisibleStep, "", "F1", "6", ""})
+          == "scan 4: expected step F1, active step is none (State = 6 names no visible step)");
+    CHECK(toText(ScenarioFailure{2, 1, Kind::WrongFiring, "", "A1->F1", "A1->F2", ""})
+          == "scan 2: expected A1->F1 to fire, A1->F2 fired");
+    CHECK(toText(ScenarioFailure{2, 1, Kind::UnknownVariable, "Speed", "", "", ""})
+          == "scan 2: unknown variable 'Speed'");
+    CHECK(toText(ScenarioFailure{3, 1, Kind::CannotApply, "Speed", "", "", "out of range"})
+          == "scan 3: cannot apply: out of range");
+}
+
+TEST_CASE("Scenario: an expected step while State names no visible step", "[simulation]")
+{
+    Model model = factory::realisticModel();
+    REQUIRE(model.setInitialStep("A3")); // hidden in the realistic model
+    Simulator sim(model);
+    const ScenarioParseResult parsed = parseScenario("at 1: expect step a1\n");
+    REQUIRE(parsed.ok());
+    const ScenarioRunResult result = runScenario(parsed.scenario, sim);
+    REQUIRE(result.failures.size() == 1);
+    CHECK(result.failures[0].kind == ScenarioFailure::Kind::NoVisibleStep);
+    CHECK(result.failures[0].expected == "A1");
+    CHECK(result.failures[0].actual == std::to_string(sim.activeStepNumber()));
+    CHECK_THAT(toText(result.failures[0]), Catch::EndsWith(" names no visible step)"));
 }
 
 TEST_CASE("Scenario: a recorded session is written back as a scenario that replays it", "[simulation]")

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include "core/checks.h"
 #include "core/conditionparser.h"
 #include "core/model.h"
 #include "core/simulator.h"
@@ -47,6 +48,15 @@ void set(Simulator& simulator, const char* name, cond::Value value)
     const Status status = simulator.setVariable(name, value);
     INFO(status.message);
     REQUIRE(status);
+}
+
+// The English text of each reason.
+std::vector<std::string> texts(const std::vector<ExplanationReason>& reasons)
+{
+    std::vector<std::string> result;
+    for (const ExplanationReason& reason : reasons)
+        result.push_back(toText(reason));
+    return result;
 }
 
 // "before>after fired E tokens": e.g. "A1>F1 A1->F1 E 01".
@@ -243,6 +253,10 @@ TEST_CASE("Simulator: priorities decide among transitions that hold", "[simulati
     CHECK(explanations[1].transitionId == "A1->F2");
     CHECK(explanations[1].status == TransitionStatus::PreemptedByHigherPriority);
     CHECK(explanations[1].preemptedBy == "A1->F1");
+    REQUIRE(explanations[1].reasons.size() == 1);
+    CHECK(explanations[1].reasons[0].kind == ExplanationReason::Kind::FiresFirst);
+    CHECK(explanations[1].reasons[0].subject == "A1->F1");
+    CHECK(texts(explanations[1].reasons) == std::vector<std::string>{"A1->F1 fires first"});
     CHECK(explanations[2].transitionId == "A1->F5");
     CHECK(explanations[2].status == TransitionStatus::PreemptedByHigherPriority);
     CHECK(scan(sim) == "A1>F1 A1->F1 E");
@@ -339,10 +353,17 @@ TEST_CASE("Simulator: unusable conditions are FALSE and explained", "[simulation
     std::vector<TransitionExplanation> explanations = sim.explain();
     REQUIRE(explanations.size() == 2);
     CHECK(explanations[0].status == TransitionStatus::Unusable);
-    REQUIRE_FALSE(explanations[0].reasons.empty());
-    CHECK_THAT(explanations[0].reasons[0], Catch::Contains("syntax error"));
+    REQUIRE(explanations[0].reasons.size() == 1);
+    const ExplanationReason& unusable = explanations[0].reasons[0];
+    CHECK(unusable.kind == ExplanationReason::Kind::Unusable);
+    CHECK_THAT(toText(unusable), Catch::StartsWith("syntax error in the condition of A1->F2: "));
+    // What the checks report for the same condition, so the editor words both alike.
+    CHECK(unusable.code == "GG201");
+    REQUIRE(unusable.arguments.size() == 3);
+    CHECK(unusable.arguments[0] == "A1->F2");
+    CHECK(unusable.message == "syntax error in the condition of A1->F2: " + unusable.arguments[2]);
     CHECK(explanations[1].status == TransitionStatus::ConditionFalse);
-    CHECK(explanations[1].reasons == std::vector<std::string>{"Start = FALSE", "Speed > 10 is FALSE (Speed = 3)"});
+    CHECK(texts(explanations[1].reasons) == std::vector<std::string>{"Start = FALSE", "Speed > 10 is FALSE (Speed = 3)"});
     CHECK(scan(sim) == "A1>A1 - E");
     set(sim, "Speed", std::int64_t{11});
     explanations = sim.explain();
@@ -365,7 +386,7 @@ TEST_CASE("Simulator: explain names the operands that make a condition FALSE", "
     std::vector<TransitionExplanation> explanations = sim.explain();
     REQUIRE(explanations.size() == 1);
     // AND: only its FALSE operands; NOT (OR) is FALSE because an operand of the OR is TRUE.
-    CHECK(explanations[0].reasons == std::vector<std::string>{"Start = FALSE", "Level < 3.0 is TRUE (Level = 2.5)"});
+    CHECK(texts(explanations[0].reasons) == std::vector<std::string>{"Start = FALSE", "Level < 3.0 is TRUE (Level = 2.5)"});
 
     set(sim, "Start", true);
     set(sim, "Level", 4.0);
@@ -376,14 +397,103 @@ TEST_CASE("Simulator: explain names the operands that make a condition FALSE", "
     explanations = sim.explain();
     REQUIRE(explanations.size() == 1);
     CHECK(explanations[0].status == TransitionStatus::ConditionFalse);
-    CHECK(explanations[0].reasons
+    CHECK(texts(explanations[0].reasons)
           == std::vector<std::string>{"Stop_F1_1_MEM = FALSE (token of NOT Stop)", "F1.Complete = FALSE"});
     CHECK(scan(sim) == "F1>F1 - . 1");
     explanations = sim.explain();
     CHECK(explanations[0].status == TransitionStatus::WaitingForComplete);
-    CHECK(explanations[0].reasons == std::vector<std::string>{"F1.Complete = FALSE"});
+    CHECK(texts(explanations[0].reasons) == std::vector<std::string>{"F1.Complete = FALSE"});
     REQUIRE(sim.setComplete("F1", true));
     CHECK(sim.explain()[0].status == TransitionStatus::Fires);
+}
+
+TEST_CASE("Simulator: explanation reasons are data the UI can word", "[simulation]")
+{
+    using Kind = ExplanationReason::Kind;
+    Model model = onlyVisible({"A1", "F1", "A2", "F2", "F3"}, "A1");
+    addVariable(model, "Start");
+    addVariable(model, "Stop", IecType::Bool, "TRUE");
+    addVariable(model, "Speed", IecType::Int, "3");
+    addVariable(model, "Limit", IecType::Int, "10");
+    condition(model, "A1->F1", "Start AND FALSE AND Speed + Speed > Limit");
+    condition(model, "A1->F2", "Speed = 7");
+    condition(model, "F1->A2", "NOT Stop");
+    condition(model, "F1->F3", "Nothing");
+    REQUIRE(model.setTokens("F1->A2", {"Stop"}));
+    Simulator sim(model);
+
+    std::vector<TransitionExplanation> explanations = sim.explain();
+    REQUIRE(explanations.size() == 2);
+    REQUIRE(explanations[1].transitionId == "A1->F1");
+    const std::vector<ExplanationReason>& reasons = explanations[1].reasons;
+    REQUIRE(reasons.size() == 3);
+    CHECK(reasons[0].kind == Kind::Reading);
+    CHECK(reasons[0].readings == std::vector<ConditionReading>{{"Start", "FALSE", ""}});
+    CHECK(reasons[1].kind == Kind::Literal);
+    CHECK(reasons[1].value == "FALSE");
+    CHECK(reasons[2].kind == Kind::Expression);
+    CHECK(reasons[2].subject == "Speed + Speed > Limit");
+    CHECK(reasons[2].value == "FALSE");
+    // Each operand once, in the order the expression reads them.
+    CHECK(reasons[2].readings == std::vector<ConditionReading>{{"Speed", "3", ""}, {"Limit", "10", ""}});
+    CHECK(texts(reasons)
+          == std::vector<std::string>{"Start = FALSE", "FALSE", "Speed + Speed > Limit is FALSE (Speed = 3, Limit = 10)"});
+
+    REQUIRE(model.setInitialStep("F1"));
+    Simulator fromF1(model);
+    REQUIRE(fromF1.setCompleteMode("F1", CompleteMode::Manual));
+    set(fromF1, "Stop", false);
+    CHECK(scan(fromF1) == "F1>F1 - . 1");
+    explanations = fromF1.explain();
+    REQUIRE(explanations.size() == 2);
+    // The token reads TRUE: only Complete holds the transition back.
+    CHECK(explanations[0].status == TransitionStatus::WaitingForComplete);
+    REQUIRE(explanations[0].reasons.size() == 1);
+    CHECK(explanations[0].reasons[0].kind == Kind::CompleteFalse);
+    CHECK(explanations[0].reasons[0].subject == "F1");
+    // An undeclared variable: the error as the checks give it (GG203).
+    CHECK(explanations[1].status == TransitionStatus::Unusable);
+    REQUIRE(explanations[1].reasons.size() == 1);
+    const ExplanationReason& unusable = explanations[1].reasons[0];
+    CHECK(unusable.kind == Kind::Unusable);
+    CHECK(unusable.code == "GG203");
+    CHECK(unusable.arguments == std::vector<std::string>{"F1->F3", "Nothing", "'Nothing' is not a declared variable"});
+    CHECK(toText(unusable) == "in the condition of F1->F3: 'Nothing' is not a declared variable");
+    const std::vector<Diagnostic> diagnostics = checkModel(model);
+    const auto checked = std::find_if(diagnostics.begin(), diagnostics.end(),
+                                      [](const Diagnostic& d) { return d.element == "F1->F3" && d.code == "GG203"; });
+    REQUIRE(checked != diagnostics.end());
+    CHECK(checked->arguments == unusable.arguments);
+    CHECK(checked->message == unusable.message);
+}
+
+TEST_CASE("Explanation reasons: English text of each kind", "[simulation]")
+{
+    using Kind = ExplanationReason::Kind;
+    const ConditionReading token{"Stop_F1_1_MEM", "FALSE", "NOT Stop"};
+    CHECK(token.isToken());
+    CHECK(toText(token) == "Stop_F1_1_MEM = FALSE (token of NOT Stop)");
+    CHECK(toText(ConditionReading{"Level", "2.5", ""}) == "Level = 2.5");
+
+    ExplanationReason reason;
+    reason.kind = Kind::Expression;
+    reason.subject = "Level < 3.0";
+    reason.value = "TRUE";
+    CHECK(toText(reason) == "Level < 3.0 is TRUE"); // a constant comparison reads nothing
+    reason.readings = {{"Level", "2.5", ""}, token};
+    CHECK(toText(reason) == "Level < 3.0 is TRUE (Level = 2.5, Stop_F1_1_MEM = FALSE (token of NOT Stop))");
+
+    ExplanationReason complete;
+    complete.kind = Kind::CompleteFalse;
+    complete.subject = "F1";
+    CHECK(toText(complete) == "F1.Complete = FALSE");
+    ExplanationReason first;
+    first.kind = Kind::FiresFirst;
+    first.subject = "F->D1";
+    CHECK(toText(first) == "F->D1 fires first");
+    ExplanationReason unusable;
+    unusable.kind = Kind::Unusable;
+    CHECK(toText(unusable) == "the condition cannot be used: it is FALSE");
 }
 
 TEST_CASE("Simulator: inputs are checked against their IEC type", "[simulation]")

@@ -88,6 +88,8 @@ private slots:
     void momentaryPressIsTrueThenFalse();
     void manualCompleteHoldsAMacroStep();
     void explanationNamesTheReasons();
+    void explanationIsInTheUiLanguage();
+    void replayFailuresAreInTheUiLanguage();
     void traceTableHasOneRowPerScan();
     void recordedSessionReplaysWithEveryExpectationMet();
     void replayShowsFailedExpectations();
@@ -96,6 +98,7 @@ private slots:
 
 private:
     void startOnRealisticModel();
+    void reopenInFrench();
     void click(const QString& variable);
     void scan(int count = 1);
 
@@ -146,6 +149,22 @@ void TestSimulation::startOnRealisticModel()
     m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
     QVERIFY(m_session->isActive());
     QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A6"));
+}
+
+// A new window in French, as if the user had started GG Studio in French.
+void TestSimulation::reopenInFrench()
+{
+    m_window->document()->undoStack()->setClean();
+    m_window.reset();
+    QVERIFY(m_translators->setLanguage(QStringLiteral("fr")));
+    m_window = std::make_unique<MainWindow>(*m_translators);
+    m_window->resize(1366, 768);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_session = m_window->simulationSession();
+    m_dock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));
+    QVERIFY(m_session);
+    QVERIFY(m_dock);
 }
 
 void TestSimulation::click(const QString& variable)
@@ -359,6 +378,66 @@ void TestSimulation::explanationNamesTheReasons()
     QVERIFY2(anyContains(texts, QStringLiteral("waits for Complete")), qPrintable(texts.join('\n')));
     QVERIFY(anyContains(texts, QStringLiteral("F1.Complete = FALSE")));
     QVERIFY(m_dock->findChild<QLabel*>(QStringLiteral("activeStepLabel"))->text().contains(QStringLiteral("F1")));
+}
+
+void TestSimulation::explanationIsInTheUiLanguage()
+{
+    reopenInFrench();
+    startOnRealisticModel();
+    QTreeWidget* view = m_dock->explanationView();
+    click(QStringLiteral("HomePosition"));
+    click(QStringLiteral("AirPressureOk"));
+    scan();
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
+
+    // A1 -> F4 and A1 -> F2 both hold: the first by priority fires.
+    click(QStringLiteral("VerifyMode"));
+    click(QStringLiteral("Start"));
+    QStringList texts = explanationTexts(*view);
+    QVERIFY2(texts.contains(transitionLabel(QStringLiteral("A1->F4")) + QStringLiteral(" est franchie en premier")),
+             qPrintable(texts.join('\n')));
+    QVERIFY2(!anyContains(texts, QStringLiteral("fires first")), qPrintable(texts.join('\n')));
+
+    // In F1, F1 -> D1 reads MotorOverload OR Temperature > MaxTemperature: both FALSE.
+    click(QStringLiteral("VerifyMode"));
+    click(QStringLiteral("PreparationDone"));
+    click(QStringLiteral("DoorClosed"));
+    scan();
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("F1"));
+    texts = explanationTexts(*view);
+    const QString temperature = QString::fromStdString(
+        core::cond::formatValue(m_session->simulator()->variable("Temperature")));
+    const QString maximum = QString::fromStdString(
+        core::cond::formatValue(m_session->simulator()->variable("MaxTemperature")));
+    QVERIFY2(texts.contains(QStringLiteral("Temperature > MaxTemperature est FALSE (Temperature = %1, MaxTemperature = %2)")
+                                .arg(temperature, maximum)),
+             qPrintable(texts.join('\n')));
+    QVERIFY(texts.contains(QStringLiteral("MotorOverload = FALSE")));
+    // The entry scan resets F1's tokens: the token of NOT Stop reads FALSE.
+    QVERIFY2(anyContains(texts, QStringLiteral(" = FALSE (mémoire de NOT Stop)")), qPrintable(texts.join('\n')));
+    QVERIFY2(!anyContains(texts, QStringLiteral(" is FALSE")), qPrintable(texts.join('\n')));
+}
+
+void TestSimulation::replayFailuresAreInTheUiLanguage()
+{
+    reopenInFrench();
+    startOnRealisticModel();
+    const QString path = m_files.filePath(QStringLiteral("french.scenario"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write("at 1: set HomePosition = TRUE\n"
+               "at 2: expect step A1\n"
+               "at 2: expect fired A6->A1\n");
+    file.close();
+    QString error;
+    QVERIFY2(m_session->startReplay(path, &error), qPrintable(error));
+    m_session->advance(10);
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QCOMPARE(m_dock->failureList()->count(), 2);
+    QCOMPARE(m_dock->failureList()->item(0)->text(),
+             QStringLiteral("Ligne 2\u00a0: cycle 2\u00a0: étape A1 attendue, l'étape active est A6"));
+    QCOMPARE(m_dock->failureList()->item(1)->text(),
+             QStringLiteral("Ligne 3\u00a0: cycle 2\u00a0: A6->A1 devait être franchie, aucune transition ne l'a été"));
 }
 
 void TestSimulation::traceTableHasOneRowPerScan()

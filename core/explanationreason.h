@@ -1,0 +1,54 @@
+#pragma once
+
+// One reason why a transition does or does not fire in the next scan
+// (Simulator::explain()), as data: the editor words it in the UI language,
+// toText() gives the English text the command line and tests use. IEC code
+// (expressions, names, TRUE/FALSE, values) is kept as text: it is code in
+// every language, only the words around it are translated.
+
+#include <string>
+#include <vector>
+
+namespace core {
+
+// What an operand of a condition reads in the predicted scan.
+struct ConditionReading {
+    std::string name;  // the variable as declared ("Speed"), or the token ("Stop_F1_1_MEM")
+    std::string value; // IEC text: "FALSE", "3", "2.5"
+    // For a token: the literal it stores ("Stop", "NOT Stop"); empty for a variable.
+    std::string tokenLiteral;
+
+    bool isToken() const { return !tokenLiteral.empty(); }
+    friend bool operator==(const ConditionReading&, const ConditionReading&) = default;
+};
+
+struct ExplanationReason {
+    enum class Kind {
+        Reading,       // a variable or token operand: readings holds the one reading
+        Literal,       // a TRUE/FALSE constant: value
+        Expression,    // any other operand (a comparison...): subject is value, readings it depends on
+        CompleteFalse, // subject (a step id).Complete = FALSE: the transition waits for it
+        FiresFirst,    // subject (a transition id) fires first
+        Unusable,      // the condition cannot be used (code, arguments, message); no code: no detail known
+    };
+
+    Kind kind = Kind::Reading;
+    std::string subject;                   // Expression: its IEC text; CompleteFalse: step; FiresFirst: transition
+    std::string value;                     // Literal, Expression: "TRUE" or "FALSE"
+    std::vector<ConditionReading> readings; // Reading: one; Expression: each distinct one, in order
+    // Unusable: the problem as core::Diagnostic gives it, so the UI can use
+    // its translated diagnostic texts.
+    std::string code;                   // "GG201"; empty when the problem has no code
+    std::vector<std::string> arguments; // as Diagnostic::arguments for that code
+    std::string message;                // English
+
+    friend bool operator==(const ExplanationReason&, const ExplanationReason&) = default;
+};
+
+// "Start = FALSE", "Stop_F1_1_MEM = FALSE (token of NOT Stop)".
+std::string toText(const ConditionReading& reading);
+// "Speed > 10 is FALSE (Speed = 3)", "F1.Complete = FALSE", "F->D1 fires first",
+// the problem's message for an unusable condition.
+std::string toText(const ExplanationReason& reason);
+
+} // namespace core

@@ -1,0 +1,22 @@
+#pragma once
+
+#include "core/explanationreason.h"
+#include "core/scenario.h"
+
+#include <QString>
+
+namespace editor {
+
+// What the core says about a simulation, in the UI language. IEC code
+// (expressions, names, TRUE/FALSE, values) stays as it is; only the words
+// around it are translated.
+
+// "Speed > 10 is FALSE (Speed = 3)", "F1.Complete = FALSE",
+// "A1 → F1 fires first"; an unusable condition as the Problems dock words
+// the diagnostic of the same code.
+QString explanationReasonText(const core::ExplanationReason& reason);
+
+// "scan 3: expected step F1, active step is A1".
+QString scenarioFailureText(const core::ScenarioFailure& failure);
+
+} // namespace editor
