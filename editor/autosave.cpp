@@ -10,10 +10,12 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLockFile>
 #include <QSaveFile>
 #include <QStandardPaths>
 #include <QTimer>
 #include <QUndoStack>
+#include <QUuid>
 
 #include <algorithm>
 
@@ -23,19 +25,57 @@ namespace {
 
 const QString kCopySuffix = QStringLiteral(".json");
 const QString kSidecarSuffix = QStringLiteral(".info");
+const QString kLockSuffix = QStringLiteral(".lock");
+
+// A live owner's lock is safe from age: the system lock on the lock file
+// (flock, or the open handle on Windows) keeps others from removing it, and
+// a dead owner on this machine is seen at once (its PID is gone, or the
+// machine rebooted). The age only settles what those cannot: an owner on
+// another machine sharing the folder, or a PID taken by another GG Studio.
+// Long, because it is all that protects a live owner where the folder's
+// file system has no locks.
+constexpr int kStaleLockMs = 60 * 60 * 1000;
+// Random keys practically never clash; a few draws cover a clash anyway.
+constexpr int kKeyDraws = 3;
+
+// Every Autosave alive (GUI thread only, like the documents), so that
+// recover() can have the document's own Autosave take the recovered edit over.
+std::vector<Autosave*>& liveAutosaves()
+{
+    static std::vector<Autosave*> autosaves;
+    return autosaves;
+}
 
 QString sidecarPath(const QString& copyPath)
 {
     return copyPath.chopped(kCopySuffix.size()) + kSidecarSuffix;
 }
 
-// Stable across sessions, so the next start finds the copy of a given file.
-QString keyFor(const QString& filePath)
+QString lockPath(const QString& copyPath)
+{
+    return copyPath.chopped(kCopySuffix.size()) + kLockSuffix;
+}
+
+std::unique_ptr<QLockFile> makeLock(const QString& copyPath)
+{
+    auto lock = std::make_unique<QLockFile>(lockPath(copyPath));
+    lock->setStaleLockTime(kStaleLockMs);
+    return lock;
+}
+
+QString newInstanceKey()
+{
+    return QUuid::createUuid().toString(QUuid::Id128).left(12);
+}
+
+// Readable: which file the copy is of, and which session wrote it.
+QString keyFor(const QString& filePath, const QString& instanceKey)
 {
     if (filePath.isEmpty())
-        return QStringLiteral("untitled");
+        return QStringLiteral("untitled-") + instanceKey;
     const QByteArray absolute = QFileInfo(filePath).absoluteFilePath().toUtf8();
-    return QString::fromLatin1(QCryptographicHash::hash(absolute, QCryptographicHash::Sha1).toHex().left(16));
+    return QString::fromLatin1(QCryptographicHash::hash(absolute, QCryptographicHash::Sha1).toHex().left(16)) +
+           QLatin1Char('-') + instanceKey;
 }
 
 bool writeSidecar(const QString& path, const QString& originalPath, QString* errorMessage)
@@ -49,6 +89,23 @@ bool writeSidecar(const QString& path, const QString& originalPath, QString* err
         return false;
     }
     return true;
+}
+
+bool writeCopy(const core::Model& model, const QString& path, QString* errorMessage)
+{
+    const core::Status status =
+        core::saveModelFile(model, QFile::encodeName(path).toStdString(), core::ModelFormat::Native);
+    if (!status)
+        *errorMessage = QStringLiteral("%1: %2").arg(path, QString::fromStdString(status.message));
+    return static_cast<bool>(status);
+}
+
+// The copy first: a sidecar without a copy is a leftover to clean, a copy
+// without a sidecar would no longer say which file it was.
+void removeCopyFiles(const QString& copyPath)
+{
+    QFile::remove(copyPath);
+    QFile::remove(sidecarPath(copyPath));
 }
 
 RecoveryFile readRecoveryFile(const QFileInfo& copy)
@@ -68,13 +125,43 @@ RecoveryFile readRecoveryFile(const QFileInfo& copy)
     return result;
 }
 
+// A session that crashed between taking its lock, writing its sidecar and
+// writing its copy (or removing them) left a sidecar or a lock alone.
+void removeLeftovers(const QDir& directory)
+{
+    const QFileInfoList files =
+        directory.entryInfoList({QStringLiteral("*") + kSidecarSuffix, QStringLiteral("*") + kLockSuffix}, QDir::Files);
+    for (const QFileInfo& file : files) {
+        const QString copyPath = directory.filePath(file.completeBaseName() + kCopySuffix);
+        if (QFile::exists(copyPath))
+            continue;
+        const std::unique_ptr<QLockFile> lock = makeLock(copyPath);
+        if (lock->tryLock() && !QFile::exists(copyPath))
+            QFile::remove(sidecarPath(copyPath)); // the lock goes with `lock`
+    }
+}
+
+// The lock of a copy to recover or discard: the one pendingRecoveries() took,
+// or a new one; null while a running instance holds the copy.
+std::shared_ptr<QLockFile> claimCopy(const RecoveryFile& file)
+{
+    if (file.lock && file.lock->isLocked())
+        return file.lock;
+    std::shared_ptr<QLockFile> lock = makeLock(file.recoveryPath);
+    if (!lock->tryLock())
+        return nullptr;
+    return lock;
+}
+
 } // namespace
 
 Autosave::Autosave(Document& document, QObject* parent)
     : QObject(parent)
     , m_document(&document)
     , m_timer(new QTimer(this))
+    , m_instanceKey(newInstanceKey())
 {
+    liveAutosaves().push_back(this);
     m_timer->setInterval(kDefaultIntervalMs);
     connect(m_timer, &QTimer::timeout, this, &Autosave::writeNow);
     connect(&document, &Document::modifiedChanged, this, &Autosave::onModifiedChanged);
@@ -83,6 +170,11 @@ Autosave::Autosave(Document& document, QObject* parent)
     connect(&document, &QObject::destroyed, m_timer, &QTimer::stop);
     if (document.isModified())
         onModifiedChanged(true);
+}
+
+Autosave::~Autosave()
+{
+    std::erase(liveAutosaves(), this);
 }
 
 int Autosave::interval() const
@@ -103,29 +195,30 @@ QString Autosave::recoveryDirectory()
 QString Autosave::recoveryPath() const
 {
     const QString filePath = m_document ? m_document->filePath() : QString();
-    return recoveryDirectory() + QLatin1Char('/') + keyFor(filePath) + kCopySuffix;
+    return recoveryDirectory() + QLatin1Char('/') + keyFor(filePath, m_instanceKey) + kCopySuffix;
 }
 
 bool Autosave::writeNow()
 {
     if (!m_document || !m_document->isModified())
         return true;
-    const QString path = recoveryPath();
     const quint64 revision = m_document->model().revision();
-    if (m_written && m_ownCopy == path && revision == m_writtenRevision && QFile::exists(path))
+    if (m_written && m_ownCopy == recoveryPath() && revision == m_writtenRevision && QFile::exists(m_ownCopy))
         return true; // the copy is up to date
-    m_ownCopy = path;
     if (!QDir().mkpath(recoveryDirectory())) {
         m_lastError = tr("Cannot create the folder %1 for recovery copies").arg(recoveryDirectory());
         emit writeFailed(m_lastError);
         return false;
     }
-    const core::Status status =
-        core::saveModelFile(m_document->model(), QFile::encodeName(path).toStdString(), core::ModelFormat::Native);
-    QString sidecarError;
-    if (!status || !writeSidecar(sidecarPath(path), m_document->filePath(), &sidecarError)) {
-        m_lastError = status ? sidecarError : QStringLiteral("%1: %2").arg(path, QString::fromStdString(status.message));
-        m_lastError = tr("Cannot write the recovery copy: %1").arg(m_lastError);
+    if (!lockOwnCopy()) {
+        m_lastError = tr("Cannot lock the recovery copy %1").arg(lockPath(recoveryPath()));
+        emit writeFailed(m_lastError);
+        return false;
+    }
+    QString error;
+    if (!writeSidecar(sidecarPath(m_ownCopy), m_document->filePath(), &error) ||
+        !writeCopy(m_document->model(), m_ownCopy, &error)) {
+        m_lastError = tr("Cannot write the recovery copy: %1").arg(error);
         emit writeFailed(m_lastError);
         return false;
     }
@@ -143,9 +236,6 @@ void Autosave::discard()
 void Autosave::onModifiedChanged(bool modified)
 {
     if (modified) {
-        // From now on the copy under this document's key is this document's
-        // (after a recovery, that is the copy just recovered).
-        m_ownCopy = recoveryPath();
         m_written = false;
         m_timer->start();
     } else {
@@ -156,19 +246,38 @@ void Autosave::onModifiedChanged(bool modified)
 
 void Autosave::onFilePathChanged()
 {
-    if (m_ownCopy.isEmpty() || m_ownCopy == recoveryPath())
-        return;
-    removeOwnCopy();
-    if (m_document && m_document->isModified())
-        m_ownCopy = recoveryPath();
+    // The next write starts the copy under the new file's key.
+    if (!m_ownCopy.isEmpty() && m_ownCopy != recoveryPath())
+        removeOwnCopy();
+}
+
+// Locks recoveryPath() for this Autosave's copy, drawing another key while
+// that one is locked or already has files: those are another session's,
+// never to be overwritten.
+bool Autosave::lockOwnCopy()
+{
+    if (!m_ownCopy.isEmpty() && m_ownCopy == recoveryPath())
+        return true;
+    removeOwnCopy(); // the copy of the file the document had before
+    for (int draw = 0; draw < kKeyDraws; ++draw) {
+        const QString path = recoveryPath();
+        std::unique_ptr<QLockFile> lock = makeLock(path);
+        if (lock->tryLock() && !QFile::exists(path) && !QFile::exists(sidecarPath(path))) {
+            m_lock = std::move(lock);
+            m_ownCopy = path;
+            return true;
+        }
+        m_instanceKey = newInstanceKey();
+    }
+    return false;
 }
 
 void Autosave::removeOwnCopy()
 {
     if (m_ownCopy.isEmpty())
         return;
-    QFile::remove(m_ownCopy);
-    QFile::remove(sidecarPath(m_ownCopy));
+    removeCopyFiles(m_ownCopy);
+    m_lock.reset(); // last: a copy is never left unlocked while this session runs
     m_ownCopy.clear();
     m_written = false;
 }
@@ -177,10 +286,19 @@ std::vector<RecoveryFile> Autosave::pendingRecoveries()
 {
     std::vector<RecoveryFile> result;
     const QDir directory(recoveryDirectory());
+    removeLeftovers(directory);
     const QFileInfoList copies =
         directory.entryInfoList({QStringLiteral("*") + kCopySuffix}, QDir::Files | QDir::Readable, QDir::Name);
-    for (const QFileInfo& copy : copies)
-        result.push_back(readRecoveryFile(copy));
+    for (const QFileInfo& copy : copies) {
+        // Locked: a running session's copy, or one another instance offers.
+        // Taken here when its lock is gone or stale (its owner crashed).
+        std::unique_ptr<QLockFile> lock = makeLock(copy.absoluteFilePath());
+        if (!lock->tryLock())
+            continue;
+        RecoveryFile file = readRecoveryFile(copy);
+        file.lock = std::move(lock);
+        result.push_back(std::move(file));
+    }
     std::stable_sort(result.begin(), result.end(),
                      [](const RecoveryFile& a, const RecoveryFile& b) { return a.savedAt > b.savedAt; });
     return result;
@@ -188,6 +306,12 @@ std::vector<RecoveryFile> Autosave::pendingRecoveries()
 
 bool Autosave::recover(const RecoveryFile& file, Document& document, QString* errorMessage)
 {
+    const std::shared_ptr<QLockFile> lock = claimCopy(file);
+    if (!lock) {
+        if (errorMessage)
+            *errorMessage = tr("Another GG Studio is using the recovery copy %1.").arg(file.recoveryPath);
+        return false;
+    }
     core::LoadedModel loaded = core::loadModelFile(QFile::encodeName(file.recoveryPath).toStdString());
     if (!loaded.ok()) {
         if (errorMessage)
@@ -196,13 +320,29 @@ bool Autosave::recover(const RecoveryFile& file, Document& document, QString* er
     }
     document.replaceModel(*loaded.model, file.originalPath, core::ModelFormat::Native);
     document.undoStack()->resetClean(); // modified until the user saves
+
+    // The old copy goes only once the document's own copy holds the edit.
+    bool taken = false;
+    const std::vector<Autosave*> autosaves = liveAutosaves(); // writeNow() may create or end some
+    for (Autosave* autosave : autosaves) {
+        if (autosave->m_document == &document) {
+            autosave->m_written = false;
+            taken = autosave->writeNow() || taken;
+        }
+    }
+    if (taken)
+        removeCopyFiles(file.recoveryPath);
+    lock->unlock();
     return true;
 }
 
 void Autosave::discard(const RecoveryFile& file)
 {
-    QFile::remove(file.recoveryPath);
-    QFile::remove(sidecarPath(file.recoveryPath));
+    const std::shared_ptr<QLockFile> lock = claimCopy(file);
+    if (!lock)
+        return;
+    removeCopyFiles(file.recoveryPath);
+    lock->unlock();
 }
 
 } // namespace editor

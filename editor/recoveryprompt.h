@@ -8,9 +8,11 @@ namespace editor {
 
 class Document;
 
-// At start: offers the models autosave kept when the editor last ended
-// without saving them (editor/autosave.h), newest first. The user recovers
-// one into the document, discards it, or keeps it for the next start.
+// At start: offers the models autosave kept when a session ended without
+// saving them (editor/autosave.h), newest first; never those of an instance
+// still running, nor those another starting instance offers at the same
+// time. The user recovers one into the document, discards it, or keeps it
+// for the next start.
 class RecoveryPrompt {
     Q_DECLARE_TR_FUNCTIONS(RecoveryPrompt)
 

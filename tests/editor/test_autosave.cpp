@@ -5,13 +5,21 @@
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/document.h"
 
+#include "core/modelfiles.h"
+
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QLockFile>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QStandardPaths>
+#include <QSysInfo>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <memory>
 
 using namespace editor;
@@ -27,6 +35,69 @@ const RecoveryFile* findFor(const std::vector<RecoveryFile>& files, const QStrin
     return nullptr;
 }
 
+QString lockPathOf(const QString& copyPath)
+{
+    return copyPath.left(copyPath.lastIndexOf('.')) + ".lock";
+}
+
+QString sidecarPathOf(const QString& copyPath)
+{
+    return copyPath.left(copyPath.lastIndexOf('.')) + ".info";
+}
+
+// The PID of a process that has ended, as the owner of a crashed session's lock.
+qint64 deadProcessId()
+{
+    QProcess process;
+    process.start(QCoreApplication::applicationFilePath(), {"-functions"});
+    if (!process.waitForStarted())
+        return 0;
+    const qint64 pid = process.processId();
+    process.waitForFinished();
+    return pid;
+}
+
+// A lock file as QLockFile writes it, for the process `pid` named `appName`.
+bool writeLockFile(const QString& path, qint64 pid, const QString& appName)
+{
+    QFile lock(path);
+    if (pid <= 0 || !lock.open(QIODevice::WriteOnly))
+        return false;
+    const QByteArray contents = QByteArray::number(pid) + '\n' + appName.toUtf8() + '\n' +
+                                QSysInfo::machineHostName().toUtf8() + '\n' + QSysInfo::machineUniqueId() + '\n' +
+                                QSysInfo::bootUniqueId() + '\n';
+    return lock.write(contents) == contents.size();
+}
+
+// An edit of an untitled document, left as a session that crashed leaves it:
+// the copy and its sidecar, and a lock whose owner is gone. Returns the copy.
+QString leaveCrashedCopy(const char* condition)
+{
+    QString copyPath;
+    {
+        Document document;
+        Autosave autosave(document);
+        if (!document.push(new SetConditionCommand(document, "A1->F1", condition)) || !autosave.writeNow())
+            return QString();
+        copyPath = autosave.recoveryPath();
+    } // the Autosave ends without removing its copy, releasing its lock
+    if (!QFile::exists(copyPath) || QFile::exists(lockPathOf(copyPath)) ||
+        !writeLockFile(lockPathOf(copyPath), deadProcessId(), "ggstudio"))
+        return QString();
+    return copyPath;
+}
+
+std::string conditionIn(const QString& copyPath)
+{
+    const core::LoadedModel loaded = core::loadModelFile(QFile::encodeName(copyPath).toStdString());
+    return loaded.ok() ? loaded.model->transition("A1->F1")->condition : std::string("unreadable");
+}
+
+QStringList recoveryFolderFiles()
+{
+    return QDir(Autosave::recoveryDirectory()).entryList(QDir::Files, QDir::Name);
+}
+
 } // namespace
 
 class TestAutosave : public QObject {
@@ -38,11 +109,19 @@ private slots:
     void cleanupTestCase();
 
     void writesOnlyWhenModified();
+    void twoInstancesKeepTwoCopies();
+    void sameFileOpenTwiceKeepsTwoCopies();
+    void crashedSessionIsOffered();
+    void lockOfARunningProcessIsRespected();
+    void offeredCopyIsNotOfferedTwice();
+    void neverOverwritesAnotherSessionsCopy();
     void recoverRestoresUnsavedEdit();
     void recoveredUntitledDocument();
+    void recoveryWithoutAutosaveKeepsTheCopy();
     void undoToSavedStateRemovesCopy();
     void saveAsMovesTheCopy();
     void discardRemovesCopy();
+    void leftoversAreRemoved();
     void unreadableCopyIsReported();
 
 private:
@@ -76,16 +155,165 @@ void TestAutosave::writesOnlyWhenModified()
     autosave.setInterval(20);
     QTest::qWait(100);
     QVERIFY(!QFile::exists(autosave.recoveryPath()));
-    QVERIFY(autosave.recoveryPath().endsWith("/recovery/untitled.json"));
+    QVERIFY2(QRegularExpression("/recovery/untitled-[0-9a-f]{12}\\.json$").match(autosave.recoveryPath()).hasMatch(),
+             qPrintable(autosave.recoveryPath()));
 
     QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "TRUE")));
     QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(autosave.recoveryPath()), 5000);
+    QVERIFY(QFile::exists(lockPathOf(autosave.recoveryPath())));
+    QVERIFY(Autosave::pendingRecoveries().empty()); // this session is alive
+}
+
+void TestAutosave::twoInstancesKeepTwoCopies()
+{
+    Document first;
+    Document second;
+    auto firstAutosave = std::make_unique<Autosave>(first);
+    Autosave secondAutosave(second);
+    QVERIFY(first.push(new SetConditionCommand(first, "A1->F1", "TRUE")));
+    QVERIFY(second.push(new SetConditionCommand(second, "A1->F1", "FALSE")));
+    QVERIFY(firstAutosave->writeNow());
+    QVERIFY(secondAutosave.writeNow());
+    const QString firstCopy = firstAutosave->recoveryPath();
+    QVERIFY(firstCopy != secondAutosave.recoveryPath());
+    QCOMPARE(conditionIn(firstCopy), std::string("TRUE"));
+    QCOMPARE(conditionIn(secondAutosave.recoveryPath()), std::string("FALSE"));
+    QVERIFY(Autosave::pendingRecoveries().empty()); // both sessions are alive
+
+    firstAutosave.reset(); // the first instance ends without saving
+    QVERIFY(QFile::exists(firstCopy));
+    QVERIFY(!QFile::exists(lockPathOf(firstCopy)));
+    const std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
+    QCOMPARE(pending.size(), std::size_t(1));
+    QCOMPARE(pending.front().recoveryPath, firstCopy);
+    QVERIFY(pending.front().originalPath.isEmpty());
+    QVERIFY(pending.front().savedAt.isValid());
+}
+
+void TestAutosave::sameFileOpenTwiceKeepsTwoCopies()
+{
+    const QString path = m_files.filePath("twice.ggs.json");
+    QVERIFY(Document().save(path, nullptr));
+    Document first;
+    Document second;
+    QVERIFY(first.load(path, nullptr));
+    QVERIFY(second.load(path, nullptr));
+    std::vector<QString> copies;
+    {
+        Autosave firstAutosave(first);
+        Autosave secondAutosave(second);
+        QVERIFY(first.push(new SetConditionCommand(first, "A1->F1", "TRUE")));
+        QVERIFY(second.push(new SetConditionCommand(second, "A1->F1", "FALSE")));
+        QVERIFY(firstAutosave.writeNow());
+        QVERIFY(secondAutosave.writeNow());
+        copies = {firstAutosave.recoveryPath(), secondAutosave.recoveryPath()};
+        QVERIFY(copies[0] != copies[1]);
+    }
+    const std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
+    QCOMPARE(pending.size(), std::size_t(2));
+    for (const RecoveryFile& file : pending) {
+        QCOMPARE(file.originalPath, path);
+        QVERIFY(std::find(copies.begin(), copies.end(), file.recoveryPath) != copies.end());
+    }
+    QCOMPARE(conditionIn(copies[0]), std::string("TRUE"));
+    QCOMPARE(conditionIn(copies[1]), std::string("FALSE"));
+}
+
+void TestAutosave::crashedSessionIsOffered()
+{
+    const QString oldCopy = leaveCrashedCopy("TRUE");
+    QVERIFY(!oldCopy.isEmpty());
+    QVERIFY(QFile::exists(lockPathOf(oldCopy)));
 
     const std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
     QCOMPARE(pending.size(), std::size_t(1));
-    QCOMPARE(pending.front().recoveryPath, autosave.recoveryPath());
-    QVERIFY(pending.front().originalPath.isEmpty());
-    QVERIFY(pending.front().savedAt.isValid());
+    QCOMPARE(pending.front().recoveryPath, oldCopy);
+
+    Document document;
+    Autosave autosave(document); // the next session's
+    QString error;
+    QVERIFY2(Autosave::recover(pending.front(), document, &error), qPrintable(error));
+    QCOMPARE(document.model().transition("A1->F1")->condition, std::string("TRUE"));
+    QVERIFY(document.isModified());
+    // The old copy, its sidecar and its lock are gone; the document's own copy holds the edit.
+    QVERIFY(!QFile::exists(oldCopy));
+    QVERIFY(!QFile::exists(sidecarPathOf(oldCopy)));
+    QVERIFY(!QFile::exists(lockPathOf(oldCopy)));
+    QVERIFY(autosave.recoveryPath() != oldCopy);
+    QCOMPARE(conditionIn(autosave.recoveryPath()), std::string("TRUE"));
+    QVERIFY(QFile::exists(lockPathOf(autosave.recoveryPath())));
+    QVERIFY(Autosave::pendingRecoveries().empty());
+
+    // The recovered document goes on as any other.
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "FALSE")));
+    QVERIFY(autosave.writeNow());
+    QCOMPARE(conditionIn(autosave.recoveryPath()), std::string("FALSE"));
+    autosave.discard();
+    QVERIFY(recoveryFolderFiles().isEmpty());
+}
+
+void TestAutosave::lockOfARunningProcessIsRespected()
+{
+    const QString copyPath = leaveCrashedCopy("TRUE");
+    QVERIFY(!copyPath.isEmpty());
+    // Another instance running now (this process stands for it) holds the copy.
+    QVERIFY(QFile::remove(lockPathOf(copyPath)));
+    QVERIFY(writeLockFile(lockPathOf(copyPath), QCoreApplication::applicationPid(),
+                          QFileInfo(QCoreApplication::applicationFilePath()).fileName()));
+    QVERIFY(Autosave::pendingRecoveries().empty());
+
+    RecoveryFile file;
+    file.recoveryPath = copyPath;
+    Autosave::discard(file);
+    QVERIFY(QFile::exists(copyPath));
+    Document document;
+    QString error;
+    QVERIFY(!Autosave::recover(file, document, &error));
+    QVERIFY2(error.contains(QFileInfo(copyPath).fileName()), qPrintable(error));
+    QVERIFY(!document.isModified());
+
+    // Its process gone, the copy is offered.
+    QVERIFY(QFile::remove(lockPathOf(copyPath)));
+    QVERIFY(writeLockFile(lockPathOf(copyPath), deadProcessId(), "ggstudio"));
+    QCOMPARE(Autosave::pendingRecoveries().size(), std::size_t(1));
+}
+
+void TestAutosave::offeredCopyIsNotOfferedTwice()
+{
+    const QString copyPath = leaveCrashedCopy("TRUE");
+    QVERIFY(!copyPath.isEmpty());
+    std::vector<RecoveryFile> offered = Autosave::pendingRecoveries();
+    QCOMPARE(offered.size(), std::size_t(1));
+
+    // A second instance starting while the first one's prompt is open.
+    QVERIFY(Autosave::pendingRecoveries().empty());
+    RecoveryFile sameCopy;
+    sameCopy.recoveryPath = copyPath;
+    Document document;
+    QVERIFY(!Autosave::recover(sameCopy, document, nullptr));
+
+    offered.clear(); // the first prompt closed with Not Now
+    QCOMPARE(Autosave::pendingRecoveries().size(), std::size_t(1));
+    QVERIFY(QFile::exists(copyPath));
+}
+
+void TestAutosave::neverOverwritesAnotherSessionsCopy()
+{
+    Document document;
+    Autosave autosave(document);
+    const QString taken = autosave.recoveryPath();
+    QVERIFY(QDir().mkpath(Autosave::recoveryDirectory()));
+    QFile foreign(taken);
+    QVERIFY(foreign.open(QIODevice::WriteOnly));
+    foreign.write("another session's copy");
+    foreign.close();
+
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "TRUE")));
+    QVERIFY(autosave.writeNow());
+    QVERIFY(autosave.recoveryPath() != taken);
+    QCOMPARE(conditionIn(autosave.recoveryPath()), std::string("TRUE"));
+    QVERIFY(foreign.open(QIODevice::ReadOnly));
+    QCOMPARE(foreign.readAll(), QByteArray("another session's copy"));
 }
 
 void TestAutosave::recoverRestoresUnsavedEdit()
@@ -120,12 +348,16 @@ void TestAutosave::recoverRestoresUnsavedEdit()
     QVERIFY(document.model().sameContent(*edited));
     QVERIFY(document.isModified()); // the user must save
     QCOMPARE(document.filePath(), path);
-    QCOMPARE(autosave.recoveryPath(), copyPath);
-    QVERIFY(QFile::exists(copyPath)); // until it is saved
+    // The document's own copy took over: a new key, the old copy gone.
+    QVERIFY(autosave.recoveryPath() != copyPath);
+    QVERIFY(QFile::exists(autosave.recoveryPath()));
+    QVERIFY(!QFile::exists(copyPath));
+    QVERIFY(!QFile::exists(lockPathOf(copyPath)));
 
     QVERIFY2(document.save(document.filePath(), &error), qPrintable(error));
-    QVERIFY(!QFile::exists(copyPath));
+    QVERIFY(!QFile::exists(autosave.recoveryPath()));
     QVERIFY(Autosave::pendingRecoveries().empty());
+    QVERIFY(recoveryFolderFiles().isEmpty());
 
     Document reopened;
     QVERIFY(reopened.load(path, &error));
@@ -150,9 +382,28 @@ void TestAutosave::recoveredUntitledDocument()
     QVERIFY(document.isModified());
     QCOMPARE(document.model().transition("F1->A2")->condition, std::string("FALSE"));
 
+    QVERIFY(!QFile::exists(pending.front().recoveryPath));
+
     const QString path = m_files.filePath("untitled-recovered.ggs.json");
     QVERIFY(document.save(path, nullptr));
     QVERIFY(Autosave::pendingRecoveries().empty());
+    QVERIFY(recoveryFolderFiles().isEmpty());
+}
+
+void TestAutosave::recoveryWithoutAutosaveKeepsTheCopy()
+{
+    const QString copyPath = leaveCrashedCopy("TRUE");
+    QVERIFY(!copyPath.isEmpty());
+    {
+        const std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
+        QCOMPARE(pending.size(), std::size_t(1));
+        Document document; // nothing would keep the edit should this session crash
+        QVERIFY(Autosave::recover(pending.front(), document));
+        QCOMPARE(document.model().transition("A1->F1")->condition, std::string("TRUE"));
+    }
+    QVERIFY(QFile::exists(copyPath));
+    QVERIFY(!QFile::exists(lockPathOf(copyPath)));
+    QCOMPARE(Autosave::pendingRecoveries().size(), std::size_t(1));
 }
 
 void TestAutosave::undoToSavedStateRemovesCopy()
@@ -166,23 +417,26 @@ void TestAutosave::undoToSavedStateRemovesCopy()
     QVERIFY(!document.isModified());
     QVERIFY(!QFile::exists(autosave.recoveryPath()));
     QVERIFY(Autosave::pendingRecoveries().empty());
+    QVERIFY(recoveryFolderFiles().isEmpty()); // the sidecar and the lock too
 }
 
 void TestAutosave::saveAsMovesTheCopy()
 {
     Document document;
-    Autosave autosave(document);
+    auto autosave = std::make_unique<Autosave>(document);
     QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "TRUE")));
-    QVERIFY(autosave.writeNow());
-    const QString untitledCopy = autosave.recoveryPath();
+    QVERIFY(autosave->writeNow());
+    const QString untitledCopy = autosave->recoveryPath();
     QVERIFY(QFile::exists(untitledCopy));
 
     QVERIFY(document.save(m_files.filePath("saved-as.ggs.json"), nullptr));
     QVERIFY(!QFile::exists(untitledCopy));
-    QVERIFY(autosave.recoveryPath() != untitledCopy);
+    QVERIFY(!QFile::exists(lockPathOf(untitledCopy)));
+    QVERIFY(autosave->recoveryPath() != untitledCopy);
 
     QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "FALSE")));
-    QVERIFY(autosave.writeNow());
+    QVERIFY(autosave->writeNow());
+    autosave.reset(); // ends without saving
     const std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
     QCOMPARE(pending.size(), std::size_t(1));
     QCOMPARE(pending.front().originalPath, m_files.filePath("saved-as.ggs.json"));
@@ -191,18 +445,43 @@ void TestAutosave::saveAsMovesTheCopy()
 void TestAutosave::discardRemovesCopy()
 {
     Document document;
-    Autosave autosave(document);
+    auto autosave = std::make_unique<Autosave>(document);
     QVERIFY(document.push(new SetConditionCommand(document, "A1->F1", "TRUE")));
-    QVERIFY(autosave.writeNow());
-    autosave.discard(); // the user closed without saving, on purpose
-    QVERIFY(Autosave::pendingRecoveries().empty());
+    QVERIFY(autosave->writeNow());
+    autosave->discard(); // the user closed without saving, on purpose
+    QVERIFY(recoveryFolderFiles().isEmpty());
 
-    QVERIFY(autosave.writeNow()); // still modified: a new copy
-    const std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
+    QVERIFY(autosave->writeNow()); // still modified: a new copy
+    autosave.reset();
+    std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
     QCOMPARE(pending.size(), std::size_t(1));
     Autosave::discard(pending.front()); // the user declined to recover it
+    pending.clear();
     QVERIFY(Autosave::pendingRecoveries().empty());
-    QVERIFY(QDir(Autosave::recoveryDirectory()).isEmpty());
+    QVERIFY2(recoveryFolderFiles().isEmpty(), qPrintable(recoveryFolderFiles().join(' ')));
+
+    // A crashed session's copy, discarded as named (no prompt took its lock).
+    RecoveryFile crashed;
+    crashed.recoveryPath = leaveCrashedCopy("FALSE");
+    QVERIFY(!crashed.recoveryPath.isEmpty());
+    QVERIFY(QFile::exists(lockPathOf(crashed.recoveryPath)));
+    Autosave::discard(crashed);
+    QVERIFY2(recoveryFolderFiles().isEmpty(), qPrintable(recoveryFolderFiles().join(' ')));
+}
+
+void TestAutosave::leftoversAreRemoved()
+{
+    // A session crashed after taking its lock and writing its sidecar.
+    const QString copyPath = leaveCrashedCopy("TRUE");
+    QVERIFY(!copyPath.isEmpty());
+    QVERIFY(QFile::remove(copyPath));
+    // And a live session that has just taken its lock keeps it.
+    const QString liveCopy = Autosave::recoveryDirectory() + "/untitled-live.json";
+    QLockFile liveLock(lockPathOf(liveCopy));
+    QVERIFY(liveLock.tryLock());
+
+    QVERIFY(Autosave::pendingRecoveries().empty());
+    QCOMPARE(recoveryFolderFiles(), QStringList{"untitled-live.lock"});
 }
 
 void TestAutosave::unreadableCopyIsReported()
