@@ -98,6 +98,7 @@ private slots:
 
 private:
     void startOnRealisticModel();
+    void openWindow();
     void reopenInFrench();
     void click(const QString& variable);
     void scan(int count = 1);
@@ -125,6 +126,12 @@ void TestSimulation::init()
 {
     m_translators = std::make_unique<Translators>();
     m_translators->setLanguage(QStringLiteral("en"));
+    openWindow();
+}
+
+// The window in the translators' language, shown, with its session and dock.
+void TestSimulation::openWindow()
+{
     m_window = std::make_unique<MainWindow>(*m_translators);
     m_window->resize(1366, 768);
     m_window->show();
@@ -157,14 +164,7 @@ void TestSimulation::reopenInFrench()
     m_window->document()->undoStack()->setClean();
     m_window.reset();
     QVERIFY(m_translators->setLanguage(QStringLiteral("fr")));
-    m_window = std::make_unique<MainWindow>(*m_translators);
-    m_window->resize(1366, 768);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    m_session = m_window->simulationSession();
-    m_dock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));
-    QVERIFY(m_session);
-    QVERIFY(m_dock);
+    openWindow();
 }
 
 void TestSimulation::click(const QString& variable)
