@@ -333,9 +333,11 @@ private:
         }
         if (!parsed->ok()) {
             const cond::ParseError& error = *parsed->error;
+            std::vector<std::string> arguments{id, excerpt(transition.condition, error.span), error.message};
+            cond::appendArguments(error, arguments);
             addTransition("GG201", Severity::Error, id, "condition",
-                          "syntax error in the condition of " + id + ": " + error.message,
-                          {id, excerpt(transition.condition, error.span), error.message}, error.span);
+                          "syntax error in the condition of " + id + ": " + error.message, std::move(arguments),
+                          error.span);
             return;
         }
         const std::vector<cond::TypeIssue> issues = cond::typeCheck(parsed->expression, m_symbols);

@@ -3,7 +3,6 @@
 #include "core/iectypes.h"
 
 #include <algorithm>
-#include <cstdio>
 
 namespace core::cond {
 
@@ -152,12 +151,9 @@ Token scanToken(std::string_view text, std::size_t begin)
     return scanSymbol(text, begin);
 }
 
-// --- messages -----------------------------------------------------------------
+// --- errors -------------------------------------------------------------------
 
-std::string quoted(std::string_view text)
-{
-    return "'" + std::string(text) + "'";
-}
+using ErrorKind = ParseError::Kind;
 
 bool isValidUtf8(std::string_view text)
 {
@@ -184,14 +180,6 @@ bool isValidUtf8(std::string_view text)
     return true;
 }
 
-std::string byteMessage(char c)
-{
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "unexpected control character (byte 0x%02X)",
-                  static_cast<unsigned>(static_cast<unsigned char>(c)));
-    return buffer;
-}
-
 bool isTypeName(std::string_view upper)
 {
     static constexpr std::string_view kOtherTypes[] = {
@@ -208,63 +196,53 @@ bool isTypeName(std::string_view upper)
     return false;
 }
 
-std::string keywordMessage(std::string_view word)
+ErrorKind keywordKind(std::string_view word)
 {
     const std::string upper = toUpperAscii(word);
-    const std::string base = quoted(word) + " is not allowed in a condition";
     if (upper == "IF" || upper == "THEN" || upper == "ELSIF" || upper == "ELSE" || upper == "END_IF")
-        return base + ": write only the boolean expression, without IF ... THEN";
-    if (isTypeName(upper))
-        return base + ": it is a type name";
-    return base + ": it is an IEC 61131-3 keyword";
+        return ErrorKind::IfThen;
+    return isTypeName(upper) ? ErrorKind::TypeName : ErrorKind::Keyword;
 }
 
-std::string wordMessage(std::string_view text)
+ErrorKind invalidWordKind(std::string_view text)
 {
     bool nonAscii = false;
     for (char c : text)
         nonAscii = nonAscii || isNonAscii(c);
-    if (nonAscii) {
-        if (!isValidUtf8(text))
-            return "the text contains bytes that are not valid UTF-8";
-        return quoted(text) + " contains a non-ASCII character: names use ASCII letters, digits and _ only";
-    }
+    if (nonAscii)
+        return isValidUtf8(text) ? ErrorKind::NonAscii : ErrorKind::InvalidUtf8;
     if (text.find('#') != std::string_view::npos)
-        return quoted(text) + " is not supported: write plain decimal numbers, TRUE or FALSE"
-                              " (no typed, based or time literals)";
+        return ErrorKind::TypedLiteral;
     if (text.find('.') != std::string_view::npos && !isDigit(text[0]))
-        return quoted(text) + ": qualified names are not allowed, write the variable name alone";
+        return ErrorKind::QualifiedName;
     if (isDigit(text[0]))
-        return quoted(text) + " is not a valid number";
-    return keywordMessage(text);
+        return ErrorKind::InvalidNumber;
+    return keywordKind(text);
 }
 
-std::string invalidTokenMessage(std::string_view text)
+ErrorKind invalidTokenKind(std::string_view text)
 {
+    struct Symbol {
+        std::string_view text;
+        ErrorKind kind;
+    };
+    static constexpr Symbol kSymbols[] = {
+        {":=", ErrorKind::ColonEquals}, {"==", ErrorKind::DoubleEquals}, {"!=", ErrorKind::BangEquals},
+        {"!", ErrorKind::Bang},         {"&&", ErrorKind::DoubleAmpersand}, {"||", ErrorKind::Pipe},
+        {"|", ErrorKind::Pipe},         {"**", ErrorKind::Power},      {";", ErrorKind::Semicolon},
+    };
     if (text.starts_with("(*") || text.starts_with("//"))
-        return "comments are not allowed in a condition";
-    if (text == ":=")
-        return "use = to compare; := is assignment";
-    if (text == "==")
-        return "use = to compare; == is not Structured Text";
-    if (text == "!=")
-        return "use <> for 'not equal'";
-    if (text == "!")
-        return "use NOT for negation";
-    if (text == "&&")
-        return "use AND (or &) for 'and'";
-    if (text == "||" || text == "|")
-        return "use OR for 'or'";
-    if (text == "**")
-        return "'**' (power) is not supported in a condition";
-    if (text == ";")
-        return "';' is not allowed in a condition: write only the expression";
+        return ErrorKind::Comment;
+    for (const Symbol& symbol : kSymbols) {
+        if (text == symbol.text)
+            return symbol.kind;
+    }
     const char c = text[0];
     if (isIdentifierStart(c) || isDigit(c) || isNonAscii(c))
-        return wordMessage(text);
+        return invalidWordKind(text);
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
-        return byteMessage(c);
-    return "unexpected character " + quoted(text);
+        return ErrorKind::ControlCharacter;
+    return ErrorKind::UnexpectedCharacter;
 }
 
 std::optional<BinaryOp> binaryOperator(TokenKind kind)
@@ -312,8 +290,7 @@ public:
     {
         ParseResult result;
         if (m_tokens.front().kind == TokenKind::End) {
-            result.error = ParseError{"empty condition: write TRUE for a transition that is always ready",
-                                      Span{0, m_text.size()}};
+            result.error = makeParseError(ErrorKind::Empty, Span{0, m_text.size()});
             return result;
         }
         m_expression.nodes.reserve(m_tokens.size());
@@ -340,25 +317,31 @@ private:
     const Token& peek() const { return m_tokens[m_position]; }
     const Token& advance() { return m_tokens[m_position++]; }
 
-    Parsed fail(std::string message, Span span)
+    Parsed fail(ErrorKind kind, const Token& found, std::size_t number = 0)
+    {
+        return fail(kind, found.span, found.kind == TokenKind::End ? std::string_view() : found.text, {}, number);
+    }
+
+    Parsed fail(ErrorKind kind, Span span, std::string_view found = {}, std::string_view previous = {},
+                std::size_t number = 0)
     {
         if (!m_error)
-            m_error = ParseError{std::move(message), span};
+            m_error = makeParseError(kind, span, found, previous, number);
         return {};
     }
 
     Parsed failInvalid(const Token& token)
     {
-        return fail(invalidTokenMessage(token.text), token.span);
+        const ErrorKind kind = invalidTokenKind(token.text);
+        const std::size_t byte = static_cast<unsigned char>(token.text[0]);
+        return fail(kind, token, kind == ErrorKind::ControlCharacter ? byte : 0);
     }
 
     // Appends a node built in place (no copy of its text) and bounds the tree height.
     Node* newNode(NodeKind kind, Span span, int height, std::size_t tokenForError)
     {
         if (height > kMaxTreeHeight) {
-            fail("condition too complex: operators nested more than " + std::to_string(kMaxTreeHeight)
-                     + " levels deep",
-                 m_tokens[tokenForError].span);
+            fail(ErrorKind::TooComplex, m_tokens[tokenForError], kMaxTreeHeight);
             return nullptr;
         }
         Node& node = m_expression.nodes.emplace_back();
@@ -403,7 +386,7 @@ private:
         if (kind != TokenKind::Not && kind != TokenKind::Minus)
             return parsePrimary();
         const std::size_t operatorToken = m_position;
-        if (!enter(m_unaryNesting, "unary operators"))
+        if (!enter(m_unaryNesting, ErrorKind::TooDeepUnary))
             return {};
         advance();
         const Parsed operand = parseUnary();
@@ -445,7 +428,7 @@ private:
     Parsed parseParenthesised()
     {
         const Token& open = peek();
-        if (!enter(m_parenNesting, "parentheses"))
+        if (!enter(m_parenNesting, ErrorKind::TooDeepParentheses))
             return {};
         advance();
         Parsed inner = parseExpression(1);
@@ -460,12 +443,11 @@ private:
         return inner;
     }
 
-    bool enter(int& nesting, const char* what)
+    bool enter(int& nesting, ErrorKind tooDeep)
     {
         if (++nesting <= kMaxNesting)
             return true;
-        fail("condition nested too deeply: more than " + std::to_string(kMaxNesting) + " levels of " + what,
-             peek().span);
+        fail(tooDeep, peek(), kMaxNesting);
         return false;
     }
 
@@ -474,31 +456,24 @@ private:
         const Token& found = peek();
         if (found.kind == TokenKind::Invalid)
             return failInvalid(found);
-        if (m_position == 0) {
-            if (found.kind == TokenKind::RightParen)
-                return fail("unmatched ')': no '(' opens it", found.span);
-            return fail("expected an operand before " + quoted(found.text), found.span);
-        }
+        if (m_position == 0)
+            return fail(found.kind == TokenKind::RightParen ? ErrorKind::UnmatchedClose : ErrorKind::OperandBefore,
+                        found);
         const Token& previous = m_tokens[m_position - 1];
         if (previous.kind == TokenKind::LeftParen && found.kind == TokenKind::RightParen)
-            return fail("empty parentheses: expected an expression inside '( )'",
-                        Span{previous.span.begin, found.span.end});
-        std::string message = "expected an operand after " + quoted(previous.text);
-        if (found.kind != TokenKind::End)
-            message += ", found " + quoted(found.text);
-        return fail(std::move(message), found.span);
+            return fail(ErrorKind::EmptyParentheses, Span{previous.span.begin, found.span.end});
+        const std::string_view text = found.kind == TokenKind::End ? std::string_view() : found.text;
+        return fail(ErrorKind::OperandAfter, found.span, text, previous.text);
     }
 
     Parsed failUnclosed(const Token& open, const Token& found)
     {
         if (found.kind == TokenKind::Invalid)
             return failInvalid(found);
-        const std::string column = std::to_string(open.span.begin + 1);
+        const std::size_t column = open.span.begin + 1;
         if (found.kind == TokenKind::End)
-            return fail("unmatched '(' at column " + column + ": missing ')'", open.span);
-        return fail("unexpected " + quoted(found.text) + ": expected an operator or ')' to close the '(' at column "
-                        + column,
-                    found.span);
+            return fail(ErrorKind::UnclosedAtEnd, open.span, {}, {}, column);
+        return fail(ErrorKind::Unclosed, found, column);
     }
 
     void failAfterCondition()
@@ -507,12 +482,9 @@ private:
         if (found.kind == TokenKind::Invalid) {
             failInvalid(found);
         } else if (found.kind == TokenKind::RightParen) {
-            fail("unmatched ')': no '(' opens it", found.span);
+            fail(ErrorKind::UnmatchedClose, found);
         } else {
-            std::string message = "unexpected " + quoted(found.text) + " after a complete condition";
-            if (startsOperand(found.kind))
-                message += " (missing operator?)";
-            fail(std::move(message), found.span);
+            fail(startsOperand(found.kind) ? ErrorKind::MissingOperator : ErrorKind::AfterCondition, found);
         }
     }
 

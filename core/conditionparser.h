@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/conditionparseerror.h"
 #include "core/conditionsyntax.h"
 
 #include <optional>
@@ -28,11 +29,6 @@ struct Token {
 // Splits a condition into tokens; never fails (bad characters become Invalid
 // tokens). The last token is always End.
 std::vector<Token> tokenize(std::string_view text);
-
-struct ParseError {
-    std::string message; // English, names what was expected and what was found
-    Span span;           // where; an empty span at the end for missing input
-};
 
 struct ParseResult {
     Expression expression;            // empty when error is set

@@ -71,9 +71,11 @@ void analyseCondition(const BuildContext& context, GemmaTransition& transition)
     }
     if (!transition.condition.ok()) {
         const cond::ParseError& error = *transition.condition.error;
+        std::vector<std::string> arguments{id, excerpt(transition.conditionText, error.span), error.message};
+        cond::appendArguments(error, arguments);
         transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kConditionSyntaxCode, id,
                                                   "syntax error in the condition of " + id + ": " + error.message,
-                                                  {id, excerpt(transition.conditionText, error.span), error.message}));
+                                                  std::move(arguments)));
         return;
     }
     std::vector<cond::TypeIssue> issues = cond::typeCheck(transition.condition.expression, context.symbols);

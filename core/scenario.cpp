@@ -67,6 +67,22 @@ std::string quote(std::string_view text)
     return "'" + std::string(text) + "'";
 }
 
+using ErrorKind = ScenarioError::Kind;
+
+ScenarioError makeError(const std::string& fileName, int line, int column, ErrorKind kind, std::string_view found,
+                        std::string subject)
+{
+    ScenarioError error;
+    error.fileName = fileName;
+    error.line = line;
+    error.column = column;
+    error.kind = kind;
+    error.found = std::string(found);
+    error.subject = std::move(subject);
+    error.message = toText(error);
+    return error;
+}
+
 // Reads one line's words left to right; the first problem stops it.
 class LineParser {
 public:
@@ -90,11 +106,11 @@ public:
 private:
     bool atEnd() const { return m_next >= m_words.size(); }
     int column() const { return atEnd() ? m_endColumn : m_words[m_next].column; }
-    std::string found() const { return atEnd() ? "the end of the line" : quote(m_words[m_next].text); }
+    std::string_view found() const { return atEnd() ? std::string_view() : m_words[m_next].text; }
 
-    bool fail(std::string message)
+    bool fail(ErrorKind kind, std::string subject = {})
     {
-        m_error = ScenarioError{m_fileName, m_line, column(), std::move(message)};
+        m_error = makeError(m_fileName, m_line, column(), kind, found(), std::move(subject));
         return false;
     }
 
@@ -106,41 +122,42 @@ private:
         return true;
     }
 
-    bool name(const std::string& what, Word& word)
+    bool name(ErrorKind missing, Word& word)
     {
         if (atEnd() || isPunctuation(m_words[m_next]))
-            return fail("expected " + what + ", found " + found());
+            return fail(missing);
         word = m_words[m_next++];
         return true;
     }
 
-    bool expect(char mark, const std::string& after)
+    bool expect(char mark, ErrorKind missing)
     {
         if (atEnd() || m_words[m_next].text != std::string_view(&mark, 1))
-            return fail("expected '" + std::string(1, mark) + "' after " + after + ", found " + found());
+            return fail(missing);
         ++m_next;
         return true;
     }
 
-    bool value(const std::string& after, ScenarioAction& action)
+    // missingEquals: the error when the '=' before the value is missing.
+    bool value(ErrorKind missingEquals, ScenarioAction& action)
     {
-        if (!expect('=', after))
+        if (!expect('=', missingEquals))
             return false;
         Word word;
-        if (!name("a value after '='", word))
+        if (!name(ErrorKind::ExpectedValue, word))
             return false;
         action.value = std::string(word.text);
         action.valueColumn = word.column;
         return true;
     }
 
-    bool boolValue(const std::string& after, ScenarioAction& action)
+    bool boolValue(ErrorKind missingEquals, ScenarioAction& action)
     {
-        if (!value(after, action))
+        if (!value(missingEquals, action))
             return false;
         if (!equalsIgnoreCase(action.value, "TRUE") && !equalsIgnoreCase(action.value, "FALSE")) {
             --m_next;
-            return fail("expected TRUE or FALSE, found " + quote(action.value));
+            return fail(ErrorKind::ExpectedBool);
         }
         action.value = toUpperAscii(action.value);
         return true;
@@ -149,7 +166,7 @@ private:
     bool endOfLine()
     {
         if (!atEnd())
-            return fail("expected the end of the line, found " + found());
+            return fail(ErrorKind::ExpectedEnd);
         return true;
     }
 
@@ -166,31 +183,31 @@ private:
     bool parseLine(std::vector<ScenarioAction>& actions)
     {
         if (!accept("at"))
-            return fail("expected 'at SCAN:' at the start of the line, found " + found());
+            return fail(ErrorKind::ExpectedAt);
         if (!scanNumber())
             return false;
-        if (!expect(':', "the scan number"))
+        if (!expect(':', ErrorKind::ExpectedColon))
             return false;
         if (accept("set"))
             return parseSet(actions);
         if (accept("expect"))
             return parseExpect(actions);
-        return fail("expected 'set' or 'expect', found " + found());
+        return fail(ErrorKind::ExpectedSetOrExpect);
     }
 
     bool scanNumber()
     {
         if (atEnd() || isPunctuation(m_words[m_next]))
-            return fail("expected a scan number after 'at', found " + found());
+            return fail(ErrorKind::ExpectedScanNumber);
         const std::string_view text = m_words[m_next].text;
         std::int64_t number = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
         if (error != std::errc() || end != text.data() + text.size() || text.front() == '-' || text.front() == '+')
-            return fail("expected a scan number after 'at', found " + found());
+            return fail(ErrorKind::ExpectedScanNumber);
         if (number < 1)
-            return fail("scans are numbered from 1");
+            return fail(ErrorKind::ScanBelowOne);
         if (number > kMaxScan)
-            return fail("scan number " + std::string(text) + " is too large");
+            return fail(ErrorKind::ScanTooLarge, std::string(text));
         m_scan = number;
         ++m_next;
         return true;
@@ -201,15 +218,15 @@ private:
     {
         do {
             Word word;
-            if (!name("a variable name or 'complete STEP'", word))
+            if (!name(ErrorKind::ExpectedSetItem, word))
                 return false;
             if (isKeyword(word, "complete")) {
                 Word step;
-                if (!name("a step id after 'complete'", step))
+                if (!name(ErrorKind::ExpectedStepAfterComplete, step))
                     return false;
                 ScenarioAction action = makeAction(ScenarioAction::Kind::SetComplete, step);
                 action.name = std::string(step.text);
-                if (!value("the step id", action))
+                if (!value(ErrorKind::ExpectedEqualsAfterStep, action))
                     return false;
                 if (equalsIgnoreCase(action.value, "auto") || equalsIgnoreCase(action.value, "automatic")) {
                     action.kind = ScenarioAction::Kind::SetCompleteAuto;
@@ -218,20 +235,20 @@ private:
                     action.value = toUpperAscii(action.value);
                 } else {
                     --m_next;
-                    return fail("expected TRUE, FALSE or auto, found " + quote(action.value));
+                    return fail(ErrorKind::ExpectedCompleteValue);
                 }
                 actions.push_back(std::move(action));
             } else {
                 ScenarioAction action = makeAction(ScenarioAction::Kind::SetVariable, word);
                 action.name = std::string(word.text);
-                if (!value("the variable name", action))
+                if (!value(ErrorKind::ExpectedEqualsAfterVariable, action))
                     return false;
                 actions.push_back(std::move(action));
             }
             if (atEnd())
                 return true;
             if (m_words[m_next].text != ",")
-                return fail("expected ',' or the end of the line, found " + found());
+                return fail(ErrorKind::ExpectedCommaOrEnd);
             ++m_next;
         } while (true);
     }
@@ -242,13 +259,13 @@ private:
         const Word keyword = atEnd() ? Word{{}, m_endColumn} : m_words[m_next];
         Word word;
         if (accept("step")) {
-            if (!name("a step id after 'step'", word))
+            if (!name(ErrorKind::ExpectedStepAfterStep, word))
                 return false;
             ScenarioAction action = makeAction(Kind::ExpectStep, word);
             action.name = std::string(word.text);
             actions.push_back(std::move(action));
         } else if (accept("fired")) {
-            if (!name("a transition id or 'none' after 'fired'", word))
+            if (!name(ErrorKind::ExpectedTransition, word))
                 return false;
             const bool none = isKeyword(word, "none");
             ScenarioAction action = makeAction(none ? Kind::ExpectNoFiring : Kind::ExpectFired, word);
@@ -256,36 +273,36 @@ private:
                 action.name = std::string(word.text);
             actions.push_back(std::move(action));
         } else if (accept("token")) {
-            if (!name("a token name after 'token'", word))
+            if (!name(ErrorKind::ExpectedToken, word))
                 return false;
             ScenarioAction action = makeAction(Kind::ExpectToken, word);
             action.name = std::string(word.text);
-            if (!boolValue("the token name", action))
+            if (!boolValue(ErrorKind::ExpectedEqualsAfterToken, action))
                 return false;
             actions.push_back(std::move(action));
         } else if (accept("variable")) {
-            if (!name("a variable name after 'variable'", word))
+            if (!name(ErrorKind::ExpectedVariable, word))
                 return false;
             ScenarioAction action = makeAction(Kind::ExpectVariable, word);
             action.name = std::string(word.text);
-            if (!value("the variable name", action))
+            if (!value(ErrorKind::ExpectedEqualsAfterVariable, action))
                 return false;
             actions.push_back(std::move(action));
         } else if (accept("entry")) {
             ScenarioAction action = makeAction(Kind::ExpectEntry, keyword);
-            if (!boolValue("'entry'", action))
+            if (!boolValue(ErrorKind::ExpectedEqualsAfterEntry, action))
                 return false;
             actions.push_back(std::move(action));
         } else if (accept("complete")) {
-            if (!name("a step id after 'complete'", word))
+            if (!name(ErrorKind::ExpectedStepAfterComplete, word))
                 return false;
             ScenarioAction action = makeAction(Kind::ExpectComplete, word);
             action.name = std::string(word.text);
-            if (!boolValue("the step id", action))
+            if (!boolValue(ErrorKind::ExpectedEqualsAfterStep, action))
                 return false;
             actions.push_back(std::move(action));
         } else {
-            return fail("expected step, fired, token, variable, entry or complete after 'expect', found " + found());
+            return fail(ErrorKind::ExpectedExpectItem);
         }
         return endOfLine();
     }
@@ -330,13 +347,18 @@ bool isTemplateTransition(std::string_view id)
     return false;
 }
 
-std::string stepProblem(const Simulator& simulator, std::string_view id)
+// Why the simulator has no step `id`; nullopt when it has one.
+std::optional<ErrorKind> stepProblem(const Simulator& simulator, std::string_view id)
 {
     if (findStep(simulator.program(), id))
-        return {};
-    if (findTemplateState(toUpperAscii(id)))
-        return "step " + toUpperAscii(id) + " is hidden: it does not exist for the simulator";
-    return "unknown step " + quote(id);
+        return std::nullopt;
+    return findTemplateState(toUpperAscii(id)) ? ErrorKind::HiddenStep : ErrorKind::UnknownStep;
+}
+
+// HiddenStep names the step in capitals, UnknownStep as written.
+std::string stepSubject(ErrorKind kind, const std::string& id)
+{
+    return kind == ErrorKind::HiddenStep ? toUpperAscii(id) : id;
 }
 
 class Validator {
@@ -354,23 +376,33 @@ public:
     }
 
 private:
-    void error(const ScenarioAction& action, int column, std::string message)
+    ScenarioError& error(const ScenarioAction& action, int column, ErrorKind kind, std::string subject)
     {
-        m_errors.push_back(ScenarioError{m_scenario.fileName, action.line, column, std::move(message)});
+        return m_errors.emplace_back(
+            makeError(m_scenario.fileName, action.line, column, kind, {}, std::move(subject)));
+    }
+
+    void stepError(const ScenarioAction& action, ErrorKind kind)
+    {
+        error(action, action.column, kind, stepSubject(kind, action.name));
     }
 
     void checkVariable(const ScenarioAction& action)
     {
         const int index = m_simulator.variableIndex(action.name);
         if (index < 0) {
-            error(action, action.column, "unknown variable " + quote(action.name));
+            error(action, action.column, ErrorKind::UnknownVariable, action.name);
             return;
         }
         const std::string& declared = m_simulator.variableNames()[static_cast<std::size_t>(index)];
         const IecType type = iecTypeOf(index);
-        const std::string problem = defaultValueProblem(type, action.value);
-        if (!problem.empty())
-            error(action, action.valueColumn, declared + " is " + std::string(iecTypeName(type)) + ": " + problem);
+        std::string problem = defaultValueProblem(type, action.value);
+        if (problem.empty())
+            return;
+        ScenarioError& invalid = error(action, action.valueColumn, ErrorKind::InvalidValue, declared);
+        invalid.type = std::string(iecTypeName(type));
+        invalid.detail = std::move(problem);
+        invalid.message = toText(invalid);
     }
 
     IecType iecTypeOf(int index) const
@@ -381,15 +413,15 @@ private:
 
     void checkNestedStep(const ScenarioAction& action)
     {
-        if (std::string problem = stepProblem(m_simulator, action.name); !problem.empty()) {
-            error(action, action.column, problem);
+        if (const std::optional<ErrorKind> problem = stepProblem(m_simulator, action.name)) {
+            stepError(action, *problem);
             return;
         }
         const auto& nested = m_simulator.nestedSteps();
         const bool found = std::any_of(nested.begin(), nested.end(),
                                        [&](const std::string& id) { return equalsIgnoreCase(id, action.name); });
         if (!found)
-            error(action, action.column, "step " + toUpperAscii(action.name) + " is a simple step: it has no Complete");
+            error(action, action.column, ErrorKind::SimpleStep, toUpperAscii(action.name));
     }
 
     void check(const ScenarioAction& action)
@@ -402,15 +434,15 @@ private:
         case Kind::SetCompleteAuto:
         case Kind::ExpectComplete: checkNestedStep(action); break;
         case Kind::ExpectStep:
-            if (std::string problem = stepProblem(m_simulator, action.name); !problem.empty())
-                error(action, action.column, problem);
+            if (const std::optional<ErrorKind> problem = stepProblem(m_simulator, action.name))
+                stepError(action, *problem);
             break;
         case Kind::ExpectFired:
             if (!findTransition(m_simulator.program(), action.name)) {
                 error(action, action.column,
-                      isTemplateTransition(action.name)
-                          ? "transition " + action.name + " is not effective (it or one of its steps is hidden)"
-                          : "unknown transition " + quote(action.name));
+                      isTemplateTransition(action.name) ? ErrorKind::IneffectiveTransition
+                                                        : ErrorKind::UnknownTransition,
+                      action.name);
             }
             break;
         case Kind::ExpectToken: {
@@ -418,7 +450,7 @@ private:
             const bool found = std::any_of(names.begin(), names.end(),
                                            [&](const std::string& n) { return equalsIgnoreCase(n, action.name); });
             if (!found)
-                error(action, action.column, "unknown token " + quote(action.name));
+                error(action, action.column, ErrorKind::UnknownToken, action.name);
             break;
         }
         case Kind::ExpectNoFiring:
@@ -444,13 +476,6 @@ std::int64_t Scenario::lastScan() const
     for (const ScenarioAction& action : actions)
         last = std::max(last, action.scan);
     return last;
-}
-
-std::string ScenarioError::toString() const
-{
-    std::string text = fileName.empty() ? std::string("scenario") : fileName;
-    text += ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message;
-    return text;
 }
 
 std::string toText(const ScenarioFailure& failure)

@@ -17,6 +17,7 @@
 // `at N: expect ...` is checked after scan N. Keywords are case-insensitive,
 // `#` starts a comment.
 
+#include "core/scenarioerror.h"
 #include "core/simulator.h"
 
 #include <cstdint>
@@ -58,16 +59,6 @@ struct Scenario {
 
     // The highest scan an action names; 0 when there is none.
     std::int64_t lastScan() const;
-};
-
-// "scenario.txt:4:12: expected '=' after the variable name".
-struct ScenarioError {
-    std::string fileName;
-    int line = 0;
-    int column = 0;
-    std::string message;
-
-    std::string toString() const;
 };
 
 struct ScenarioParseResult {

@@ -1,11 +1,14 @@
 #include "editor/diagnostictext.h"
 
+#include "editor/conditionerrortext.h"
+
 #include "core/gemmatemplate.h"
 #include "core/iectypes.h"
 
 #include <QCoreApplication>
 #include <QStringList>
 
+#include <optional>
 #include <vector>
 
 namespace editor {
@@ -148,9 +151,13 @@ QString translated(const core::Diagnostic& d)
             return detail.isEmpty() ? QString() : DiagnosticText::tr("Invalid variable name: %1.").arg(detail);
         }
     }
+    if (code == "GG201" && n >= 3) {
+        // The parse error's kind and pieces follow the English detail (docs/diagnostics.md).
+        const std::optional<core::cond::ParseError> error = core::cond::parseErrorFromArguments(a, 3);
+        return DiagnosticText::tr("Syntax error in the condition of %1: %2.")
+            .arg(arg(0), error ? conditionErrorText(*error) : arg(2));
+    }
     if (n == 3) {
-        if (code == "GG201")
-            return DiagnosticText::tr("Syntax error in the condition of %1: %2.").arg(arg(0), arg(2));
         if (code == "GG203")
             return DiagnosticText::tr("In the condition of %1: '%2' is not a declared variable.").arg(arg(0), arg(1));
         if (code == "GG204")

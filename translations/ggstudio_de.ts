@@ -32,6 +32,144 @@
     </message>
 </context>
 <context>
+    <name>ConditionErrorText</name>
+    <message>
+        <source>comments are not allowed in a condition</source>
+        <translation>Kommentare sind in einer Bedingung nicht erlaubt</translation>
+    </message>
+    <message>
+        <source>use = to compare; := is assignment</source>
+        <translation>= zum Vergleichen verwenden; := ist die Zuweisung</translation>
+    </message>
+    <message>
+        <source>use = to compare; == is not Structured Text</source>
+        <translation>= zum Vergleichen verwenden; == gibt es in Structured Text nicht</translation>
+    </message>
+    <message>
+        <source>use &lt;&gt; for &apos;not equal&apos;</source>
+        <translation>&lt;&gt; für &apos;ungleich&apos; verwenden</translation>
+    </message>
+    <message>
+        <source>use NOT for negation</source>
+        <translation>NOT für die Negation verwenden</translation>
+    </message>
+    <message>
+        <source>use AND (or &amp;) for &apos;and&apos;</source>
+        <translation>AND (oder &amp;) für &apos;und&apos; verwenden</translation>
+    </message>
+    <message>
+        <source>use OR for &apos;or&apos;</source>
+        <translation>OR für &apos;oder&apos; verwenden</translation>
+    </message>
+    <message>
+        <source>&apos;**&apos; (power) is not supported in a condition</source>
+        <translation>&apos;**&apos; (Potenz) wird in einer Bedingung nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>&apos;;&apos; is not allowed in a condition: write only the expression</source>
+        <translation>&apos;;&apos; ist in einer Bedingung nicht erlaubt: nur den Ausdruck schreiben</translation>
+    </message>
+    <message>
+        <source>the text contains bytes that are not valid UTF-8</source>
+        <translation>der Text enthält Bytes, die kein gültiges UTF-8 sind</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; contains a non-ASCII character: names use ASCII letters, digits and _ only</source>
+        <translation>&apos;%1&apos; enthält ein Nicht-ASCII-Zeichen: Namen bestehen nur aus ASCII-Buchstaben, Ziffern und _</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not supported: write plain decimal numbers, TRUE or FALSE (no typed, based or time literals)</source>
+        <translation>&apos;%1&apos; wird nicht unterstützt: einfache Dezimalzahlen, TRUE oder FALSE schreiben (keine typisierten, Basis- oder Zeitliterale)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: qualified names are not allowed, write the variable name alone</source>
+        <translation>&apos;%1&apos;: qualifizierte Namen sind nicht erlaubt, nur den Variablennamen schreiben</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid number</source>
+        <translation>&apos;%1&apos; ist keine gültige Zahl</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: write only the boolean expression, without IF ... THEN</source>
+        <extracomment>%1: IF, THEN, ELSE... as written</extracomment>
+        <translation>&apos;%1&apos; ist in einer Bedingung nicht erlaubt: nur den booleschen Ausdruck schreiben, ohne IF ... THEN</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: it is a type name</source>
+        <translation>&apos;%1&apos; ist in einer Bedingung nicht erlaubt: Es ist ein Typname</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: it is an IEC 61131-3 keyword</source>
+        <translation>&apos;%1&apos; ist in einer Bedingung nicht erlaubt: Es ist ein Schlüsselwort von IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>unexpected control character (byte %1)</source>
+        <extracomment>%1: the byte in hexadecimal (0x1B)</extracomment>
+        <translation>unerwartetes Steuerzeichen (Byte %1)</translation>
+    </message>
+    <message>
+        <source>unexpected character &apos;%1&apos;</source>
+        <translation>unerwartetes Zeichen &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>empty condition: write TRUE for a transition that is always ready</source>
+        <translation>leere Bedingung: Für eine stets schaltbereite Transition TRUE eintragen</translation>
+    </message>
+    <message>
+        <source>condition too complex: operators nested more than %1 levels deep</source>
+        <translation>Bedingung zu komplex: Operatoren über mehr als %1 Ebenen verschachtelt</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply: more than %1 levels of parentheses</source>
+        <translation>Bedingung zu tief verschachtelt: mehr als %1 Klammerebenen</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply: more than %1 levels of unary operators</source>
+        <translation>Bedingung zu tief verschachtelt: mehr als %1 Ebenen unärer Operatoren</translation>
+    </message>
+    <message>
+        <source>unmatched &apos;)&apos;: no &apos;(&apos; opens it</source>
+        <translation>&apos;)&apos; ohne Gegenstück: Keine &apos;(&apos; öffnet sie</translation>
+    </message>
+    <message>
+        <source>expected an operand before &apos;%1&apos;</source>
+        <extracomment>%1: an operator the condition starts with</extracomment>
+        <translation>Operand vor &apos;%1&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>empty parentheses: expected an expression inside &apos;( )&apos;</source>
+        <translation>leere Klammern: Ausdruck in &apos;( )&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>expected an operand after &apos;%1&apos;</source>
+        <extracomment>%1: the operator or &apos;(&apos; the condition ends with</extracomment>
+        <translation>Operand nach &apos;%1&apos; erwartet</translation>
+    </message>
+    <message>
+        <source>expected an operand after &apos;%1&apos;, found &apos;%2&apos;</source>
+        <extracomment>%1: an operator or &apos;(&apos;; %2: what follows it instead of an operand</extracomment>
+        <translation>Operand nach &apos;%1&apos; erwartet, &apos;%2&apos; gefunden</translation>
+    </message>
+    <message>
+        <source>unmatched &apos;(&apos; at column %1: missing &apos;)&apos;</source>
+        <extracomment>%1: a column number</extracomment>
+        <translation>&apos;(&apos; ohne Gegenstück in Spalte %1: &apos;)&apos; fehlt</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos;: expected an operator or &apos;)&apos; to close the &apos;(&apos; at column %2</source>
+        <extracomment>%1: what was found; %2: the column of the &apos;(&apos;</extracomment>
+        <translation>unerwartetes &apos;%1&apos;: Operator oder &apos;)&apos; erwartet, um die &apos;(&apos; in Spalte %2 zu schließen</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete condition</source>
+        <translation>unerwartetes &apos;%1&apos; nach einer vollständigen Bedingung</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete condition (missing operator?)</source>
+        <translation>unerwartetes &apos;%1&apos; nach einer vollständigen Bedingung (fehlt ein Operator?)</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -541,6 +679,130 @@
         <source>scan %1: %2</source>
         <extracomment>a scan number, then what differed</extracomment>
         <translation>Zyklus %1: %2</translation>
+    </message>
+    <message>
+        <source>expected &apos;at SCAN:&apos; at the start of the line, found %1</source>
+        <extracomment>%1: the word found in quotes, or &quot;the end of the line&quot;; &apos;at SCAN:&apos; is scenario syntax</extracomment>
+        <translation>&apos;at SCAN:&apos; am Zeilenanfang erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected a scan number after &apos;at&apos;, found %1</source>
+        <translation>Zyklusnummer nach &apos;at&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected &apos;:&apos; after the scan number, found %1</source>
+        <translation>&apos;:&apos; nach der Zyklusnummer erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected &apos;set&apos; or &apos;expect&apos;, found %1</source>
+        <translation>&apos;set&apos; oder &apos;expect&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected a variable name or &apos;complete STEP&apos;, found %1</source>
+        <translation>Variablenname oder &apos;complete STEP&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;complete&apos;, found %1</source>
+        <translation>Schrittkennung nach &apos;complete&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;step&apos;, found %1</source>
+        <translation>Schrittkennung nach &apos;step&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected a transition id or &apos;none&apos; after &apos;fired&apos;, found %1</source>
+        <translation>Transitionskennung oder &apos;none&apos; nach &apos;fired&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected a token name after &apos;token&apos;, found %1</source>
+        <translation>Merkername nach &apos;token&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected a variable name after &apos;variable&apos;, found %1</source>
+        <translation>Variablenname nach &apos;variable&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected step, fired, token, variable, entry or complete after &apos;expect&apos;, found %1</source>
+        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
+        <translation>step, fired, token, variable, entry oder complete nach &apos;expect&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the step id, found %1</source>
+        <translation>&apos;=&apos; nach der Schrittkennung erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the variable name, found %1</source>
+        <translation>&apos;=&apos; nach dem Variablennamen erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the token name, found %1</source>
+        <translation>&apos;=&apos; nach dem Merkernamen erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after &apos;entry&apos;, found %1</source>
+        <translation>&apos;=&apos; nach &apos;entry&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected a value after &apos;=&apos;, found %1</source>
+        <translation>Wert nach &apos;=&apos; erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected TRUE or FALSE, found %1</source>
+        <translation>TRUE oder FALSE erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected TRUE, FALSE or auto, found %1</source>
+        <extracomment>auto is scenario syntax</extracomment>
+        <translation>TRUE, FALSE oder auto erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected &apos;,&apos; or the end of the line, found %1</source>
+        <translation>&apos;,&apos; oder Zeilenende erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>expected the end of the line, found %1</source>
+        <translation>Zeilenende erwartet, %1 gefunden</translation>
+    </message>
+    <message>
+        <source>scans are numbered from 1</source>
+        <translation>Zyklen werden ab 1 gezählt</translation>
+    </message>
+    <message>
+        <source>scan number %1 is too large</source>
+        <translation>Zyklusnummer %1 ist zu groß</translation>
+    </message>
+    <message>
+        <source>%1 is %2: %3</source>
+        <extracomment>a variable, its IEC type (INT), then why the value does not fit it (English, from the value parser)</extracomment>
+        <translation>%1 ist vom Typ %2: %3</translation>
+    </message>
+    <message>
+        <source>step %1 is hidden: it does not exist for the simulator</source>
+        <translation>Schritt %1 ist ausgeblendet: Für den Simulator existiert er nicht</translation>
+    </message>
+    <message>
+        <source>unknown step &apos;%1&apos;</source>
+        <translation>unbekannter Schritt &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>step %1 is a simple step: it has no Complete</source>
+        <translation>Schritt %1 ist ein einfacher Schritt: Er hat kein Complete</translation>
+    </message>
+    <message>
+        <source>transition %1 is not effective (it or one of its steps is hidden)</source>
+        <translation>Transition %1 ist nicht wirksam (sie oder einer ihrer Schritte ist ausgeblendet)</translation>
+    </message>
+    <message>
+        <source>unknown transition &apos;%1&apos;</source>
+        <translation>unbekannte Transition &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown token &apos;%1&apos;</source>
+        <translation>unbekannter Merker &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the end of the line</source>
+        <translation>das Zeilenende</translation>
     </message>
 </context>
 <context>

@@ -32,6 +32,144 @@
     </message>
 </context>
 <context>
+    <name>ConditionErrorText</name>
+    <message>
+        <source>comments are not allowed in a condition</source>
+        <translation>los comentarios no están permitidos en una condición</translation>
+    </message>
+    <message>
+        <source>use = to compare; := is assignment</source>
+        <translation>use = para comparar; := es la asignación</translation>
+    </message>
+    <message>
+        <source>use = to compare; == is not Structured Text</source>
+        <translation>use = para comparar; == no es Structured Text</translation>
+    </message>
+    <message>
+        <source>use &lt;&gt; for &apos;not equal&apos;</source>
+        <translation>use &lt;&gt; para &apos;distinto de&apos;</translation>
+    </message>
+    <message>
+        <source>use NOT for negation</source>
+        <translation>use NOT para la negación</translation>
+    </message>
+    <message>
+        <source>use AND (or &amp;) for &apos;and&apos;</source>
+        <translation>use AND (o &amp;) para &apos;y&apos;</translation>
+    </message>
+    <message>
+        <source>use OR for &apos;or&apos;</source>
+        <translation>use OR para &apos;o&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;**&apos; (power) is not supported in a condition</source>
+        <translation>&apos;**&apos; (potencia) no está admitido en una condición</translation>
+    </message>
+    <message>
+        <source>&apos;;&apos; is not allowed in a condition: write only the expression</source>
+        <translation>&apos;;&apos; no está permitido en una condición: escriba solo la expresión</translation>
+    </message>
+    <message>
+        <source>the text contains bytes that are not valid UTF-8</source>
+        <translation>el texto contiene bytes que no son UTF-8 válido</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; contains a non-ASCII character: names use ASCII letters, digits and _ only</source>
+        <translation>&apos;%1&apos; contiene un carácter no ASCII: los nombres solo usan letras ASCII, dígitos y _</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not supported: write plain decimal numbers, TRUE or FALSE (no typed, based or time literals)</source>
+        <translation>&apos;%1&apos; no está admitido: escriba números decimales simples, TRUE o FALSE (sin literales con tipo, en base o de tiempo)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: qualified names are not allowed, write the variable name alone</source>
+        <translation>&apos;%1&apos;: los nombres calificados no están permitidos, escriba solo el nombre de la variable</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid number</source>
+        <translation>&apos;%1&apos; no es un número válido</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: write only the boolean expression, without IF ... THEN</source>
+        <extracomment>%1: IF, THEN, ELSE... as written</extracomment>
+        <translation>&apos;%1&apos; no está permitido en una condición: escriba solo la expresión booleana, sin IF ... THEN</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: it is a type name</source>
+        <translation>&apos;%1&apos; no está permitido en una condición: es un nombre de tipo</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: it is an IEC 61131-3 keyword</source>
+        <translation>&apos;%1&apos; no está permitido en una condición: es una palabra clave IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>unexpected control character (byte %1)</source>
+        <extracomment>%1: the byte in hexadecimal (0x1B)</extracomment>
+        <translation>carácter de control inesperado (byte %1)</translation>
+    </message>
+    <message>
+        <source>unexpected character &apos;%1&apos;</source>
+        <translation>carácter &apos;%1&apos; inesperado</translation>
+    </message>
+    <message>
+        <source>empty condition: write TRUE for a transition that is always ready</source>
+        <translation>condición vacía: escriba TRUE para una transición siempre franqueable</translation>
+    </message>
+    <message>
+        <source>condition too complex: operators nested more than %1 levels deep</source>
+        <translation>condición demasiado compleja: operadores anidados en más de %1 niveles</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply: more than %1 levels of parentheses</source>
+        <translation>condición demasiado anidada: más de %1 niveles de paréntesis</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply: more than %1 levels of unary operators</source>
+        <translation>condición demasiado anidada: más de %1 niveles de operadores unarios</translation>
+    </message>
+    <message>
+        <source>unmatched &apos;)&apos;: no &apos;(&apos; opens it</source>
+        <translation>&apos;)&apos; sin pareja: ningún &apos;(&apos; lo abre</translation>
+    </message>
+    <message>
+        <source>expected an operand before &apos;%1&apos;</source>
+        <extracomment>%1: an operator the condition starts with</extracomment>
+        <translation>se esperaba un operando antes de &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>empty parentheses: expected an expression inside &apos;( )&apos;</source>
+        <translation>paréntesis vacíos: se esperaba una expresión dentro de &apos;( )&apos;</translation>
+    </message>
+    <message>
+        <source>expected an operand after &apos;%1&apos;</source>
+        <extracomment>%1: the operator or &apos;(&apos; the condition ends with</extracomment>
+        <translation>se esperaba un operando después de &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>expected an operand after &apos;%1&apos;, found &apos;%2&apos;</source>
+        <extracomment>%1: an operator or &apos;(&apos;; %2: what follows it instead of an operand</extracomment>
+        <translation>se esperaba un operando después de &apos;%1&apos;, se encontró &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>unmatched &apos;(&apos; at column %1: missing &apos;)&apos;</source>
+        <extracomment>%1: a column number</extracomment>
+        <translation>&apos;(&apos; sin pareja en la columna %1: falta &apos;)&apos;</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos;: expected an operator or &apos;)&apos; to close the &apos;(&apos; at column %2</source>
+        <extracomment>%1: what was found; %2: the column of the &apos;(&apos;</extracomment>
+        <translation>&apos;%1&apos; inesperado: se esperaba un operador o &apos;)&apos; para cerrar el &apos;(&apos; de la columna %2</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete condition</source>
+        <translation>&apos;%1&apos; inesperado después de una condición completa</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete condition (missing operator?)</source>
+        <translation>&apos;%1&apos; inesperado después de una condición completa (¿falta un operador?)</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -541,6 +679,130 @@
         <source>scan %1: %2</source>
         <extracomment>a scan number, then what differed</extracomment>
         <translation>ciclo %1: %2</translation>
+    </message>
+    <message>
+        <source>expected &apos;at SCAN:&apos; at the start of the line, found %1</source>
+        <extracomment>%1: the word found in quotes, or &quot;the end of the line&quot;; &apos;at SCAN:&apos; is scenario syntax</extracomment>
+        <translation>se esperaba &apos;at SCAN:&apos; al principio de la línea, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a scan number after &apos;at&apos;, found %1</source>
+        <translation>se esperaba un número de ciclo después de &apos;at&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;:&apos; after the scan number, found %1</source>
+        <translation>se esperaba &apos;:&apos; después del número de ciclo, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;set&apos; or &apos;expect&apos;, found %1</source>
+        <translation>se esperaba &apos;set&apos; o &apos;expect&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a variable name or &apos;complete STEP&apos;, found %1</source>
+        <translation>se esperaba un nombre de variable o &apos;complete STEP&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;complete&apos;, found %1</source>
+        <translation>se esperaba un identificador de etapa después de &apos;complete&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;step&apos;, found %1</source>
+        <translation>se esperaba un identificador de etapa después de &apos;step&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a transition id or &apos;none&apos; after &apos;fired&apos;, found %1</source>
+        <translation>se esperaba un identificador de transición o &apos;none&apos; después de &apos;fired&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a token name after &apos;token&apos;, found %1</source>
+        <translation>se esperaba un nombre de memoria después de &apos;token&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a variable name after &apos;variable&apos;, found %1</source>
+        <translation>se esperaba un nombre de variable después de &apos;variable&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected step, fired, token, variable, entry or complete after &apos;expect&apos;, found %1</source>
+        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
+        <translation>se esperaba step, fired, token, variable, entry o complete después de &apos;expect&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the step id, found %1</source>
+        <translation>se esperaba &apos;=&apos; después del identificador de etapa, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the variable name, found %1</source>
+        <translation>se esperaba &apos;=&apos; después del nombre de variable, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the token name, found %1</source>
+        <translation>se esperaba &apos;=&apos; después del nombre de memoria, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after &apos;entry&apos;, found %1</source>
+        <translation>se esperaba &apos;=&apos; después de &apos;entry&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a value after &apos;=&apos;, found %1</source>
+        <translation>se esperaba un valor después de &apos;=&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected TRUE or FALSE, found %1</source>
+        <translation>se esperaba TRUE o FALSE, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected TRUE, FALSE or auto, found %1</source>
+        <extracomment>auto is scenario syntax</extracomment>
+        <translation>se esperaba TRUE, FALSE o auto, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;,&apos; or the end of the line, found %1</source>
+        <translation>se esperaba &apos;,&apos; o el final de la línea, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected the end of the line, found %1</source>
+        <translation>se esperaba el final de la línea, se encontró %1</translation>
+    </message>
+    <message>
+        <source>scans are numbered from 1</source>
+        <translation>los ciclos se numeran a partir de 1</translation>
+    </message>
+    <message>
+        <source>scan number %1 is too large</source>
+        <translation>el número de ciclo %1 es demasiado grande</translation>
+    </message>
+    <message>
+        <source>%1 is %2: %3</source>
+        <extracomment>a variable, its IEC type (INT), then why the value does not fit it (English, from the value parser)</extracomment>
+        <translation>%1 es de tipo %2: %3</translation>
+    </message>
+    <message>
+        <source>step %1 is hidden: it does not exist for the simulator</source>
+        <translation>la etapa %1 está oculta: no existe para el simulador</translation>
+    </message>
+    <message>
+        <source>unknown step &apos;%1&apos;</source>
+        <translation>etapa &apos;%1&apos; desconocida</translation>
+    </message>
+    <message>
+        <source>step %1 is a simple step: it has no Complete</source>
+        <translation>la etapa %1 es una etapa simple: no tiene Complete</translation>
+    </message>
+    <message>
+        <source>transition %1 is not effective (it or one of its steps is hidden)</source>
+        <translation>la transición %1 no es efectiva (ella o una de sus etapas está oculta)</translation>
+    </message>
+    <message>
+        <source>unknown transition &apos;%1&apos;</source>
+        <translation>transición &apos;%1&apos; desconocida</translation>
+    </message>
+    <message>
+        <source>unknown token &apos;%1&apos;</source>
+        <translation>memoria &apos;%1&apos; desconocida</translation>
+    </message>
+    <message>
+        <source>the end of the line</source>
+        <translation>el final de la línea</translation>
     </message>
 </context>
 <context>

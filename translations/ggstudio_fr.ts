@@ -32,6 +32,144 @@
     </message>
 </context>
 <context>
+    <name>ConditionErrorText</name>
+    <message>
+        <source>comments are not allowed in a condition</source>
+        <translation>les commentaires ne sont pas autorisés dans une réceptivité</translation>
+    </message>
+    <message>
+        <source>use = to compare; := is assignment</source>
+        <translation>utilisez = pour comparer&#xa0;; := est l&apos;affectation</translation>
+    </message>
+    <message>
+        <source>use = to compare; == is not Structured Text</source>
+        <translation>utilisez = pour comparer&#xa0;; == n&apos;existe pas en Structured Text</translation>
+    </message>
+    <message>
+        <source>use &lt;&gt; for &apos;not equal&apos;</source>
+        <translation>utilisez &lt;&gt; pour &apos;différent de&apos;</translation>
+    </message>
+    <message>
+        <source>use NOT for negation</source>
+        <translation>utilisez NOT pour la négation</translation>
+    </message>
+    <message>
+        <source>use AND (or &amp;) for &apos;and&apos;</source>
+        <translation>utilisez AND (ou &amp;) pour &apos;et&apos;</translation>
+    </message>
+    <message>
+        <source>use OR for &apos;or&apos;</source>
+        <translation>utilisez OR pour &apos;ou&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;**&apos; (power) is not supported in a condition</source>
+        <translation>&apos;**&apos; (puissance) n&apos;est pas pris en charge dans une réceptivité</translation>
+    </message>
+    <message>
+        <source>&apos;;&apos; is not allowed in a condition: write only the expression</source>
+        <translation>&apos;;&apos; n&apos;est pas autorisé dans une réceptivité&#xa0;: écrivez seulement l&apos;expression</translation>
+    </message>
+    <message>
+        <source>the text contains bytes that are not valid UTF-8</source>
+        <translation>le texte contient des octets qui ne sont pas de l&apos;UTF-8 valide</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; contains a non-ASCII character: names use ASCII letters, digits and _ only</source>
+        <translation>&apos;%1&apos; contient un caractère non ASCII&#xa0;: les noms n&apos;utilisent que des lettres ASCII, des chiffres et _</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not supported: write plain decimal numbers, TRUE or FALSE (no typed, based or time literals)</source>
+        <translation>&apos;%1&apos; n&apos;est pas pris en charge&#xa0;: écrivez des nombres décimaux simples, TRUE ou FALSE (pas de littéraux typés, en base ou de durée)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: qualified names are not allowed, write the variable name alone</source>
+        <translation>&apos;%1&apos;&#xa0;: les noms qualifiés ne sont pas autorisés, écrivez le nom de la variable seul</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid number</source>
+        <translation>&apos;%1&apos; n&apos;est pas un nombre valide</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: write only the boolean expression, without IF ... THEN</source>
+        <extracomment>%1: IF, THEN, ELSE... as written</extracomment>
+        <translation>&apos;%1&apos; n&apos;est pas autorisé dans une réceptivité&#xa0;: écrivez seulement l&apos;expression booléenne, sans IF ... THEN</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: it is a type name</source>
+        <translation>&apos;%1&apos; n&apos;est pas autorisé dans une réceptivité&#xa0;: c&apos;est un nom de type</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: it is an IEC 61131-3 keyword</source>
+        <translation>&apos;%1&apos; n&apos;est pas autorisé dans une réceptivité&#xa0;: c&apos;est un mot-clé IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>unexpected control character (byte %1)</source>
+        <extracomment>%1: the byte in hexadecimal (0x1B)</extracomment>
+        <translation>caractère de contrôle inattendu (octet %1)</translation>
+    </message>
+    <message>
+        <source>unexpected character &apos;%1&apos;</source>
+        <translation>caractère &apos;%1&apos; inattendu</translation>
+    </message>
+    <message>
+        <source>empty condition: write TRUE for a transition that is always ready</source>
+        <translation>réceptivité vide&#xa0;: écrivez TRUE pour une transition toujours franchissable</translation>
+    </message>
+    <message>
+        <source>condition too complex: operators nested more than %1 levels deep</source>
+        <translation>réceptivité trop complexe&#xa0;: opérateurs imbriqués sur plus de %1 niveaux</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply: more than %1 levels of parentheses</source>
+        <translation>réceptivité trop imbriquée&#xa0;: plus de %1 niveaux de parenthèses</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply: more than %1 levels of unary operators</source>
+        <translation>réceptivité trop imbriquée&#xa0;: plus de %1 niveaux d&apos;opérateurs unaires</translation>
+    </message>
+    <message>
+        <source>unmatched &apos;)&apos;: no &apos;(&apos; opens it</source>
+        <translation>&apos;)&apos; sans correspondance&#xa0;: aucune &apos;(&apos; ne l&apos;ouvre</translation>
+    </message>
+    <message>
+        <source>expected an operand before &apos;%1&apos;</source>
+        <extracomment>%1: an operator the condition starts with</extracomment>
+        <translation>opérande attendu avant &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>empty parentheses: expected an expression inside &apos;( )&apos;</source>
+        <translation>parenthèses vides&#xa0;: une expression est attendue dans &apos;( )&apos;</translation>
+    </message>
+    <message>
+        <source>expected an operand after &apos;%1&apos;</source>
+        <extracomment>%1: the operator or &apos;(&apos; the condition ends with</extracomment>
+        <translation>opérande attendu après &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>expected an operand after &apos;%1&apos;, found &apos;%2&apos;</source>
+        <extracomment>%1: an operator or &apos;(&apos;; %2: what follows it instead of an operand</extracomment>
+        <translation>opérande attendu après &apos;%1&apos;, trouvé &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>unmatched &apos;(&apos; at column %1: missing &apos;)&apos;</source>
+        <extracomment>%1: a column number</extracomment>
+        <translation>&apos;(&apos; sans correspondance à la colonne %1&#xa0;: &apos;)&apos; manquante</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos;: expected an operator or &apos;)&apos; to close the &apos;(&apos; at column %2</source>
+        <extracomment>%1: what was found; %2: the column of the &apos;(&apos;</extracomment>
+        <translation>&apos;%1&apos; inattendu&#xa0;: un opérateur ou &apos;)&apos; est attendu pour fermer la &apos;(&apos; de la colonne %2</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete condition</source>
+        <translation>&apos;%1&apos; inattendu après une réceptivité complète</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete condition (missing operator?)</source>
+        <translation>&apos;%1&apos; inattendu après une réceptivité complète (opérateur manquant&#xa0;?)</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -541,6 +679,130 @@
         <source>scan %1: %2</source>
         <extracomment>a scan number, then what differed</extracomment>
         <translation>cycle %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <source>expected &apos;at SCAN:&apos; at the start of the line, found %1</source>
+        <extracomment>%1: the word found in quotes, or &quot;the end of the line&quot;; &apos;at SCAN:&apos; is scenario syntax</extracomment>
+        <translation>&apos;at SCAN:&apos; attendu en début de ligne, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a scan number after &apos;at&apos;, found %1</source>
+        <translation>numéro de cycle attendu après &apos;at&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;:&apos; after the scan number, found %1</source>
+        <translation>&apos;:&apos; attendu après le numéro de cycle, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;set&apos; or &apos;expect&apos;, found %1</source>
+        <translation>&apos;set&apos; ou &apos;expect&apos; attendu, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a variable name or &apos;complete STEP&apos;, found %1</source>
+        <translation>nom de variable ou &apos;complete STEP&apos; attendu, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;complete&apos;, found %1</source>
+        <translation>identifiant d&apos;étape attendu après &apos;complete&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;step&apos;, found %1</source>
+        <translation>identifiant d&apos;étape attendu après &apos;step&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a transition id or &apos;none&apos; after &apos;fired&apos;, found %1</source>
+        <translation>identifiant de transition ou &apos;none&apos; attendu après &apos;fired&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a token name after &apos;token&apos;, found %1</source>
+        <translation>nom de mémoire attendu après &apos;token&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a variable name after &apos;variable&apos;, found %1</source>
+        <translation>nom de variable attendu après &apos;variable&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected step, fired, token, variable, entry or complete after &apos;expect&apos;, found %1</source>
+        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
+        <translation>step, fired, token, variable, entry ou complete attendu après &apos;expect&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the step id, found %1</source>
+        <translation>&apos;=&apos; attendu après l&apos;identifiant d&apos;étape, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the variable name, found %1</source>
+        <translation>&apos;=&apos; attendu après le nom de variable, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the token name, found %1</source>
+        <translation>&apos;=&apos; attendu après le nom de mémoire, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after &apos;entry&apos;, found %1</source>
+        <translation>&apos;=&apos; attendu après &apos;entry&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a value after &apos;=&apos;, found %1</source>
+        <translation>valeur attendue après &apos;=&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected TRUE or FALSE, found %1</source>
+        <translation>TRUE ou FALSE attendu, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected TRUE, FALSE or auto, found %1</source>
+        <extracomment>auto is scenario syntax</extracomment>
+        <translation>TRUE, FALSE ou auto attendu, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;,&apos; or the end of the line, found %1</source>
+        <translation>&apos;,&apos; ou fin de ligne attendu, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected the end of the line, found %1</source>
+        <translation>fin de ligne attendue, trouvé %1</translation>
+    </message>
+    <message>
+        <source>scans are numbered from 1</source>
+        <translation>les cycles sont numérotés à partir de 1</translation>
+    </message>
+    <message>
+        <source>scan number %1 is too large</source>
+        <translation>le numéro de cycle %1 est trop grand</translation>
+    </message>
+    <message>
+        <source>%1 is %2: %3</source>
+        <extracomment>a variable, its IEC type (INT), then why the value does not fit it (English, from the value parser)</extracomment>
+        <translation>%1 est de type %2&#xa0;: %3</translation>
+    </message>
+    <message>
+        <source>step %1 is hidden: it does not exist for the simulator</source>
+        <translation>l&apos;étape %1 est masquée&#xa0;: elle n&apos;existe pas pour le simulateur</translation>
+    </message>
+    <message>
+        <source>unknown step &apos;%1&apos;</source>
+        <translation>étape &apos;%1&apos; inconnue</translation>
+    </message>
+    <message>
+        <source>step %1 is a simple step: it has no Complete</source>
+        <translation>l&apos;étape %1 est une étape simple&#xa0;: elle n&apos;a pas de Complete</translation>
+    </message>
+    <message>
+        <source>transition %1 is not effective (it or one of its steps is hidden)</source>
+        <translation>la transition %1 n&apos;est pas effective (elle ou l&apos;une de ses étapes est masquée)</translation>
+    </message>
+    <message>
+        <source>unknown transition &apos;%1&apos;</source>
+        <translation>transition &apos;%1&apos; inconnue</translation>
+    </message>
+    <message>
+        <source>unknown token &apos;%1&apos;</source>
+        <translation>mémoire &apos;%1&apos; inconnue</translation>
+    </message>
+    <message>
+        <source>the end of the line</source>
+        <translation>la fin de la ligne</translation>
     </message>
 </context>
 <context>

@@ -32,6 +32,144 @@
     </message>
 </context>
 <context>
+    <name>ConditionErrorText</name>
+    <message>
+        <source>comments are not allowed in a condition</source>
+        <translation>i commenti non sono ammessi in una condizione</translation>
+    </message>
+    <message>
+        <source>use = to compare; := is assignment</source>
+        <translation>usare = per confrontare; := è l&apos;assegnazione</translation>
+    </message>
+    <message>
+        <source>use = to compare; == is not Structured Text</source>
+        <translation>usare = per confrontare; == non è Structured Text</translation>
+    </message>
+    <message>
+        <source>use &lt;&gt; for &apos;not equal&apos;</source>
+        <translation>usare &lt;&gt; per &apos;diverso da&apos;</translation>
+    </message>
+    <message>
+        <source>use NOT for negation</source>
+        <translation>usare NOT per la negazione</translation>
+    </message>
+    <message>
+        <source>use AND (or &amp;) for &apos;and&apos;</source>
+        <translation>usare AND (o &amp;) per &apos;e&apos;</translation>
+    </message>
+    <message>
+        <source>use OR for &apos;or&apos;</source>
+        <translation>usare OR per &apos;o&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;**&apos; (power) is not supported in a condition</source>
+        <translation>&apos;**&apos; (potenza) non è supportato in una condizione</translation>
+    </message>
+    <message>
+        <source>&apos;;&apos; is not allowed in a condition: write only the expression</source>
+        <translation>&apos;;&apos; non è ammesso in una condizione: scrivere solo l&apos;espressione</translation>
+    </message>
+    <message>
+        <source>the text contains bytes that are not valid UTF-8</source>
+        <translation>il testo contiene byte che non sono UTF-8 valido</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; contains a non-ASCII character: names use ASCII letters, digits and _ only</source>
+        <translation>&apos;%1&apos; contiene un carattere non ASCII: i nomi usano solo lettere ASCII, cifre e _</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not supported: write plain decimal numbers, TRUE or FALSE (no typed, based or time literals)</source>
+        <translation>&apos;%1&apos; non è supportato: scrivere numeri decimali semplici, TRUE o FALSE (niente letterali tipizzati, in base o di tempo)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: qualified names are not allowed, write the variable name alone</source>
+        <translation>&apos;%1&apos;: i nomi qualificati non sono ammessi, scrivere solo il nome della variabile</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid number</source>
+        <translation>&apos;%1&apos; non è un numero valido</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: write only the boolean expression, without IF ... THEN</source>
+        <extracomment>%1: IF, THEN, ELSE... as written</extracomment>
+        <translation>&apos;%1&apos; non è ammesso in una condizione: scrivere solo l&apos;espressione booleana, senza IF ... THEN</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: it is a type name</source>
+        <translation>&apos;%1&apos; non è ammesso in una condizione: è un nome di tipo</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not allowed in a condition: it is an IEC 61131-3 keyword</source>
+        <translation>&apos;%1&apos; non è ammesso in una condizione: è una parola chiave IEC 61131-3</translation>
+    </message>
+    <message>
+        <source>unexpected control character (byte %1)</source>
+        <extracomment>%1: the byte in hexadecimal (0x1B)</extracomment>
+        <translation>carattere di controllo inatteso (byte %1)</translation>
+    </message>
+    <message>
+        <source>unexpected character &apos;%1&apos;</source>
+        <translation>carattere &apos;%1&apos; inatteso</translation>
+    </message>
+    <message>
+        <source>empty condition: write TRUE for a transition that is always ready</source>
+        <translation>condizione vuota: scrivere TRUE per una transizione sempre pronta</translation>
+    </message>
+    <message>
+        <source>condition too complex: operators nested more than %1 levels deep</source>
+        <translation>condizione troppo complessa: operatori annidati su più di %1 livelli</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply: more than %1 levels of parentheses</source>
+        <translation>condizione troppo annidata: più di %1 livelli di parentesi</translation>
+    </message>
+    <message>
+        <source>condition nested too deeply: more than %1 levels of unary operators</source>
+        <translation>condizione troppo annidata: più di %1 livelli di operatori unari</translation>
+    </message>
+    <message>
+        <source>unmatched &apos;)&apos;: no &apos;(&apos; opens it</source>
+        <translation>&apos;)&apos; senza corrispondenza: nessuna &apos;(&apos; la apre</translation>
+    </message>
+    <message>
+        <source>expected an operand before &apos;%1&apos;</source>
+        <extracomment>%1: an operator the condition starts with</extracomment>
+        <translation>atteso un operando prima di &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>empty parentheses: expected an expression inside &apos;( )&apos;</source>
+        <translation>parentesi vuote: attesa un&apos;espressione dentro &apos;( )&apos;</translation>
+    </message>
+    <message>
+        <source>expected an operand after &apos;%1&apos;</source>
+        <extracomment>%1: the operator or &apos;(&apos; the condition ends with</extracomment>
+        <translation>atteso un operando dopo &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>expected an operand after &apos;%1&apos;, found &apos;%2&apos;</source>
+        <extracomment>%1: an operator or &apos;(&apos;; %2: what follows it instead of an operand</extracomment>
+        <translation>atteso un operando dopo &apos;%1&apos;, trovato &apos;%2&apos;</translation>
+    </message>
+    <message>
+        <source>unmatched &apos;(&apos; at column %1: missing &apos;)&apos;</source>
+        <extracomment>%1: a column number</extracomment>
+        <translation>&apos;(&apos; senza corrispondenza alla colonna %1: manca &apos;)&apos;</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos;: expected an operator or &apos;)&apos; to close the &apos;(&apos; at column %2</source>
+        <extracomment>%1: what was found; %2: the column of the &apos;(&apos;</extracomment>
+        <translation>&apos;%1&apos; inatteso: atteso un operatore o &apos;)&apos; per chiudere la &apos;(&apos; alla colonna %2</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete condition</source>
+        <translation>&apos;%1&apos; inatteso dopo una condizione completa</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete condition (missing operator?)</source>
+        <translation>&apos;%1&apos; inatteso dopo una condizione completa (manca un operatore?)</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -541,6 +679,130 @@
         <source>scan %1: %2</source>
         <extracomment>a scan number, then what differed</extracomment>
         <translation>ciclo %1: %2</translation>
+    </message>
+    <message>
+        <source>expected &apos;at SCAN:&apos; at the start of the line, found %1</source>
+        <extracomment>%1: the word found in quotes, or &quot;the end of the line&quot;; &apos;at SCAN:&apos; is scenario syntax</extracomment>
+        <translation>atteso &apos;at SCAN:&apos; all&apos;inizio della riga, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a scan number after &apos;at&apos;, found %1</source>
+        <translation>atteso un numero di ciclo dopo &apos;at&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;:&apos; after the scan number, found %1</source>
+        <translation>atteso &apos;:&apos; dopo il numero di ciclo, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;set&apos; or &apos;expect&apos;, found %1</source>
+        <translation>atteso &apos;set&apos; o &apos;expect&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a variable name or &apos;complete STEP&apos;, found %1</source>
+        <translation>atteso un nome di variabile o &apos;complete STEP&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;complete&apos;, found %1</source>
+        <translation>atteso un identificativo di tappa dopo &apos;complete&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;step&apos;, found %1</source>
+        <translation>atteso un identificativo di tappa dopo &apos;step&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a transition id or &apos;none&apos; after &apos;fired&apos;, found %1</source>
+        <translation>atteso un identificativo di transizione o &apos;none&apos; dopo &apos;fired&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a token name after &apos;token&apos;, found %1</source>
+        <translation>atteso un nome di memoria dopo &apos;token&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a variable name after &apos;variable&apos;, found %1</source>
+        <translation>atteso un nome di variabile dopo &apos;variable&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected step, fired, token, variable, entry or complete after &apos;expect&apos;, found %1</source>
+        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
+        <translation>atteso step, fired, token, variable, entry o complete dopo &apos;expect&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the step id, found %1</source>
+        <translation>atteso &apos;=&apos; dopo l&apos;identificativo di tappa, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the variable name, found %1</source>
+        <translation>atteso &apos;=&apos; dopo il nome di variabile, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after the token name, found %1</source>
+        <translation>atteso &apos;=&apos; dopo il nome di memoria, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;=&apos; after &apos;entry&apos;, found %1</source>
+        <translation>atteso &apos;=&apos; dopo &apos;entry&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a value after &apos;=&apos;, found %1</source>
+        <translation>atteso un valore dopo &apos;=&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected TRUE or FALSE, found %1</source>
+        <translation>atteso TRUE o FALSE, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected TRUE, FALSE or auto, found %1</source>
+        <extracomment>auto is scenario syntax</extracomment>
+        <translation>atteso TRUE, FALSE o auto, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;,&apos; or the end of the line, found %1</source>
+        <translation>atteso &apos;,&apos; o la fine della riga, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected the end of the line, found %1</source>
+        <translation>attesa la fine della riga, trovato %1</translation>
+    </message>
+    <message>
+        <source>scans are numbered from 1</source>
+        <translation>i cicli sono numerati a partire da 1</translation>
+    </message>
+    <message>
+        <source>scan number %1 is too large</source>
+        <translation>il numero di ciclo %1 è troppo grande</translation>
+    </message>
+    <message>
+        <source>%1 is %2: %3</source>
+        <extracomment>a variable, its IEC type (INT), then why the value does not fit it (English, from the value parser)</extracomment>
+        <translation>%1 è di tipo %2: %3</translation>
+    </message>
+    <message>
+        <source>step %1 is hidden: it does not exist for the simulator</source>
+        <translation>la tappa %1 è nascosta: non esiste per il simulatore</translation>
+    </message>
+    <message>
+        <source>unknown step &apos;%1&apos;</source>
+        <translation>tappa &apos;%1&apos; sconosciuta</translation>
+    </message>
+    <message>
+        <source>step %1 is a simple step: it has no Complete</source>
+        <translation>la tappa %1 è una tappa semplice: non ha Complete</translation>
+    </message>
+    <message>
+        <source>transition %1 is not effective (it or one of its steps is hidden)</source>
+        <translation>la transizione %1 non è effettiva (essa o una delle sue tappe è nascosta)</translation>
+    </message>
+    <message>
+        <source>unknown transition &apos;%1&apos;</source>
+        <translation>transizione &apos;%1&apos; sconosciuta</translation>
+    </message>
+    <message>
+        <source>unknown token &apos;%1&apos;</source>
+        <translation>memoria &apos;%1&apos; sconosciuta</translation>
+    </message>
+    <message>
+        <source>the end of the line</source>
+        <translation>la fine della riga</translation>
     </message>
 </context>
 <context>

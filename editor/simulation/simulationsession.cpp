@@ -1,6 +1,7 @@
 #include "editor/simulation/simulationsession.h"
 
 #include "editor/document.h"
+#include "editor/simulation/simulationtext.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -28,7 +29,7 @@ QString errorList(const std::vector<core::ScenarioError>& errors)
 {
     QStringList lines;
     for (std::size_t i = 0; i < errors.size() && i < kMaxListedErrors; ++i)
-        lines << QString::fromStdString(errors[i].toString());
+        lines << scenarioErrorText(errors[i]);
     if (errors.size() > kMaxListedErrors)
         lines << QCoreApplication::translate("editor::SimulationSession", "(%1 more)")
                      .arg(errors.size() - kMaxListedErrors);

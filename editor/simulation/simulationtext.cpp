@@ -91,6 +91,77 @@ QString failureProblem(const core::ScenarioFailure& failure)
     return {};
 }
 
+// What a syntax error expected, then what it found: %1 is a word of the
+// file in quotes, or "the end of the line".
+QString syntaxErrorText(core::ScenarioError::Kind kind, const QString& found)
+{
+    using Kind = core::ScenarioError::Kind;
+    switch (kind) {
+    case Kind::ExpectedAt:
+        //: %1: the word found in quotes, or "the end of the line"; 'at SCAN:' is scenario syntax
+        return SimulationText::tr("expected 'at SCAN:' at the start of the line, found %1").arg(found);
+    case Kind::ExpectedScanNumber:
+        return SimulationText::tr("expected a scan number after 'at', found %1").arg(found);
+    case Kind::ExpectedColon: return SimulationText::tr("expected ':' after the scan number, found %1").arg(found);
+    case Kind::ExpectedSetOrExpect: return SimulationText::tr("expected 'set' or 'expect', found %1").arg(found);
+    case Kind::ExpectedSetItem:
+        return SimulationText::tr("expected a variable name or 'complete STEP', found %1").arg(found);
+    case Kind::ExpectedStepAfterComplete:
+        return SimulationText::tr("expected a step id after 'complete', found %1").arg(found);
+    case Kind::ExpectedStepAfterStep:
+        return SimulationText::tr("expected a step id after 'step', found %1").arg(found);
+    case Kind::ExpectedTransition:
+        return SimulationText::tr("expected a transition id or 'none' after 'fired', found %1").arg(found);
+    case Kind::ExpectedToken: return SimulationText::tr("expected a token name after 'token', found %1").arg(found);
+    case Kind::ExpectedVariable:
+        return SimulationText::tr("expected a variable name after 'variable', found %1").arg(found);
+    case Kind::ExpectedExpectItem:
+        //: step, fired, token, variable, entry and complete are scenario syntax
+        return SimulationText::tr("expected step, fired, token, variable, entry or complete after 'expect', found %1")
+            .arg(found);
+    case Kind::ExpectedEqualsAfterStep:
+        return SimulationText::tr("expected '=' after the step id, found %1").arg(found);
+    case Kind::ExpectedEqualsAfterVariable:
+        return SimulationText::tr("expected '=' after the variable name, found %1").arg(found);
+    case Kind::ExpectedEqualsAfterToken:
+        return SimulationText::tr("expected '=' after the token name, found %1").arg(found);
+    case Kind::ExpectedEqualsAfterEntry: return SimulationText::tr("expected '=' after 'entry', found %1").arg(found);
+    case Kind::ExpectedValue: return SimulationText::tr("expected a value after '=', found %1").arg(found);
+    case Kind::ExpectedBool: return SimulationText::tr("expected TRUE or FALSE, found %1").arg(found);
+    case Kind::ExpectedCompleteValue:
+        //: auto is scenario syntax
+        return SimulationText::tr("expected TRUE, FALSE or auto, found %1").arg(found);
+    case Kind::ExpectedCommaOrEnd: return SimulationText::tr("expected ',' or the end of the line, found %1").arg(found);
+    case Kind::ExpectedEnd: return SimulationText::tr("expected the end of the line, found %1").arg(found);
+    default: return {};
+    }
+}
+
+QString scenarioErrorMessage(const core::ScenarioError& error)
+{
+    using Kind = core::ScenarioError::Kind;
+    const QString subject = fromStd(error.subject);
+    switch (error.kind) {
+    case Kind::ScanBelowOne: return SimulationText::tr("scans are numbered from 1");
+    case Kind::ScanTooLarge: return SimulationText::tr("scan number %1 is too large").arg(subject);
+    case Kind::UnknownVariable: return SimulationText::tr("unknown variable '%1'").arg(subject);
+    case Kind::InvalidValue:
+        //: a variable, its IEC type (INT), then why the value does not fit it (English, from the value parser)
+        return SimulationText::tr("%1 is %2: %3").arg(subject, fromStd(error.type), fromStd(error.detail));
+    case Kind::HiddenStep: return SimulationText::tr("step %1 is hidden: it does not exist for the simulator").arg(subject);
+    case Kind::UnknownStep: return SimulationText::tr("unknown step '%1'").arg(subject);
+    case Kind::SimpleStep: return SimulationText::tr("step %1 is a simple step: it has no Complete").arg(subject);
+    case Kind::IneffectiveTransition:
+        return SimulationText::tr("transition %1 is not effective (it or one of its steps is hidden)").arg(subject);
+    case Kind::UnknownTransition: return SimulationText::tr("unknown transition '%1'").arg(subject);
+    case Kind::UnknownToken: return SimulationText::tr("unknown token '%1'").arg(subject);
+    default: break;
+    }
+    const QString found = error.found.empty() ? SimulationText::tr("the end of the line")
+                                              : QStringLiteral("'%1'").arg(fromStd(error.found));
+    return syntaxErrorText(error.kind, found);
+}
+
 } // namespace
 
 QString explanationReasonText(const core::ExplanationReason& reason)
@@ -115,6 +186,14 @@ QString scenarioFailureText(const core::ScenarioFailure& failure)
 {
     //: a scan number, then what differed
     return SimulationText::tr("scan %1: %2").arg(failure.scan).arg(failureProblem(failure));
+}
+
+QString scenarioErrorText(const core::ScenarioError& error)
+{
+    const QString file = error.fileName.empty() ? QStringLiteral("scenario") : fromStd(error.fileName);
+    // The location is written as compilers write it, in every language.
+    return QStringLiteral("%1:%2:%3: %4")
+        .arg(file, QString::number(error.line), QString::number(error.column), scenarioErrorMessage(error));
 }
 
 } // namespace editor

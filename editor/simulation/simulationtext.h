@@ -19,4 +19,10 @@ QString explanationReasonText(const core::ExplanationReason& reason);
 // "scan 3: expected step F1, active step is A1".
 QString scenarioFailureText(const core::ScenarioFailure& failure);
 
+// "s.txt:4:12: expected '=' after the variable name, found 'TRUE'": the
+// location as ScenarioError::toString() writes it, then the message. The
+// reason a value does not fit its type comes from the value parser in
+// English.
+QString scenarioErrorText(const core::ScenarioError& error);
+
 } // namespace editor

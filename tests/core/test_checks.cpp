@@ -221,9 +221,13 @@ TEST_CASE("GG201: syntax error in an effective condition, with its span", "[chec
     REQUIRE(d.span.has_value());
     CHECK(*d.span == Span{7, 8});
     CHECK(mentions(d, "A1->F4"));
-    REQUIRE(d.arguments.size() == 3);
+    // transition, text at the span, English detail, then the parse error's kind and pieces.
+    REQUIRE(d.arguments.size() == 7);
     CHECK(d.arguments[0] == "A1->F4");
     CHECK(d.arguments[1] == ")");
+    CHECK(d.arguments[2] == "expected an operand after 'AND', found ')'");
+    CHECK(std::vector<std::string>(d.arguments.begin() + 3, d.arguments.end())
+          == std::vector<std::string>{"operand-after", ")", "AND", "0"});
     CHECK(diagnostics.size() == 1);
 
     SECTION("not checked on a hidden transition")

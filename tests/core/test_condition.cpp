@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -276,6 +277,106 @@ TEST_CASE("malformed conditions give precise messages and spans", "[condition]")
         CHECK(error.span == c.span);
     }
     REQUIRE(cases.size() >= 20);
+}
+
+TEST_CASE("parse errors carry their kind and pieces, and the same English text", "[condition]")
+{
+    using Kind = ParseError::Kind;
+    struct Case {
+        std::string text;
+        Kind kind;
+        std::string found;
+        std::string previous;
+        std::size_t number;
+        std::string message; // exact
+    };
+    std::string chain = "a";
+    for (int i = 0; i < 1001; ++i)
+        chain += " AND a";
+    std::string nots;
+    for (int i = 0; i < 201; ++i)
+        nots += "NOT ";
+    const std::vector<Case> cases = {
+        {" ", Kind::Empty, "", "", 0, "empty condition: write TRUE for a transition that is always ready"},
+        {"a (* x *)", Kind::Comment, "(* x *)", "", 0, "comments are not allowed in a condition"},
+        {"a := b", Kind::ColonEquals, ":=", "", 0, "use = to compare; := is assignment"},
+        {"a == b", Kind::DoubleEquals, "==", "", 0, "use = to compare; == is not Structured Text"},
+        {"a != b", Kind::BangEquals, "!=", "", 0, "use <> for 'not equal'"},
+        {"!a", Kind::Bang, "!", "", 0, "use NOT for negation"},
+        {"a && b", Kind::DoubleAmpersand, "&&", "", 0, "use AND (or &) for 'and'"},
+        {"a | b", Kind::Pipe, "|", "", 0, "use OR for 'or'"},
+        {"a ** 2", Kind::Power, "**", "", 0, "'**' (power) is not supported in a condition"},
+        {"a;", Kind::Semicolon, ";", "", 0, "';' is not allowed in a condition: write only the expression"},
+        {"a AND \xFF", Kind::InvalidUtf8, "\xFF", "", 0, "the text contains bytes that are not valid UTF-8"},
+        {"Temp\xC3\xA9", Kind::NonAscii, "Temp\xC3\xA9", "", 0,
+         "'Temp\xC3\xA9' contains a non-ASCII character: names use ASCII letters, digits and _ only"},
+        {"x = 16#FF", Kind::TypedLiteral, "16#FF", "", 0,
+         "'16#FF' is not supported: write plain decimal numbers, TRUE or FALSE (no typed, based or time literals)"},
+        {"GVL.Start", Kind::QualifiedName, "GVL.Start", "", 0,
+         "'GVL.Start': qualified names are not allowed, write the variable name alone"},
+        {"x > 1.5.3", Kind::InvalidNumber, "1.5.3", "", 0, "'1.5.3' is not a valid number"},
+        {"IF a", Kind::IfThen, "IF", "", 0,
+         "'IF' is not allowed in a condition: write only the boolean expression, without IF ... THEN"},
+        {"TIME > 5", Kind::TypeName, "TIME", "", 0, "'TIME' is not allowed in a condition: it is a type name"},
+        {"a AND Case", Kind::Keyword, "Case", "", 0,
+         "'Case' is not allowed in a condition: it is an IEC 61131-3 keyword"},
+        {"a AND \x1B", Kind::ControlCharacter, "\x1B", "", 0x1B, "unexpected control character (byte 0x1B)"},
+        {"a AND @", Kind::UnexpectedCharacter, "@", "", 0, "unexpected character '@'"},
+        {chain, Kind::TooComplex, "AND", "", 1000,
+         "condition too complex: operators nested more than 1000 levels deep"},
+        {std::string(201, '(') + "a", Kind::TooDeepParentheses, "(", "", 200,
+         "condition nested too deeply: more than 200 levels of parentheses"},
+        {nots + "a", Kind::TooDeepUnary, "NOT", "", 200,
+         "condition nested too deeply: more than 200 levels of unary operators"},
+        {"a)", Kind::UnmatchedClose, ")", "", 0, "unmatched ')': no '(' opens it"},
+        {"OR b", Kind::OperandBefore, "OR", "", 0, "expected an operand before 'OR'"},
+        {"a AND ( )", Kind::EmptyParentheses, "", "", 0, "empty parentheses: expected an expression inside '( )'"},
+        {"a AND", Kind::OperandAfter, "", "AND", 0, "expected an operand after 'AND'"},
+        {"a AND (b OR)", Kind::OperandAfter, ")", "OR", 0, "expected an operand after 'OR', found ')'"},
+        {"a AND ((b)", Kind::UnclosedAtEnd, "", "", 7, "unmatched '(' at column 7: missing ')'"},
+        {"x OR (a b)", Kind::Unclosed, "b", "", 6,
+         "unexpected 'b': expected an operator or ')' to close the '(' at column 6"},
+        {"a b", Kind::MissingOperator, "b", "", 0, "unexpected 'b' after a complete condition (missing operator?)"},
+    };
+    for (const Case& c : cases) {
+        INFO("condition: " << c.text.substr(0, 40));
+        const ParseError error = errorOf(c.text);
+        CHECK(error.kind == c.kind);
+        CHECK(error.found == c.found);
+        CHECK(error.previous == c.previous);
+        CHECK(error.number == c.number);
+        CHECK(error.message == c.message);
+        CHECK(toText(error) == c.message);
+
+        // The form GG201 appends to Diagnostic::arguments reads back to the same error.
+        std::vector<std::string> arguments{"A1->F1"};
+        appendArguments(error, arguments);
+        REQUIRE(arguments.size() == 5);
+        CHECK(arguments[1] == kindName(c.kind));
+        const std::optional<ParseError> back = parseErrorFromArguments(arguments, 1);
+        REQUIRE(back.has_value());
+        CHECK(back->kind == c.kind);
+        CHECK(back->message == c.message);
+    }
+
+    // No reachable input ends here today (every token after a condition is
+    // an operator, ')' or an operand); the kind keeps its text.
+    CHECK(toText(makeParseError(Kind::AfterCondition, Span{}, "x")) == "unexpected 'x' after a complete condition");
+
+    // Every kind has its own name.
+    std::set<std::string_view> names;
+    for (int k = 0; k <= static_cast<int>(Kind::MissingOperator); ++k) {
+        const std::string_view name = kindName(static_cast<Kind>(k));
+        CHECK_FALSE(name.empty());
+        CHECK(parseErrorKind(name) == static_cast<Kind>(k));
+        names.insert(name);
+    }
+    CHECK(names.size() == static_cast<std::size_t>(Kind::MissingOperator) + 1);
+
+    // Arguments from elsewhere (an older core, a bad number) are not read.
+    CHECK_FALSE(parseErrorFromArguments({"unknown-kind", "", "", "0"}, 0));
+    CHECK_FALSE(parseErrorFromArguments({"operand-after", "", "AND", "x"}, 0));
+    CHECK_FALSE(parseErrorFromArguments({"operand-after", "", "AND"}, 0));
 }
 
 TEST_CASE("deep nesting is an error, not a stack overflow", "[condition]")

@@ -126,6 +126,65 @@ TEST_CASE("Scenario: malformed lines give file:line:column errors", "[simulation
     CHECK(parsed.scenario.actions.size() == 2);
 }
 
+TEST_CASE("Scenario: syntax errors carry their kind and the word found", "[simulation]")
+{
+    using Kind = ScenarioError::Kind;
+    struct Case {
+        const char* line;
+        Kind kind;
+        std::string found; // empty: the end of the line
+        std::string subject;
+        std::string message; // exact
+    };
+    const std::vector<Case> cases = {
+        {"set A = TRUE", Kind::ExpectedAt, "set", "", "expected 'at SCAN:' at the start of the line, found 'set'"},
+        {"at", Kind::ExpectedScanNumber, "", "", "expected a scan number after 'at', found the end of the line"},
+        {"at 0: set A = TRUE", Kind::ScanBelowOne, "0", "", "scans are numbered from 1"},
+        {"at 99999999999999: set A = TRUE", Kind::ScanTooLarge, "99999999999999", "99999999999999",
+         "scan number 99999999999999 is too large"},
+        {"at 3 set", Kind::ExpectedColon, "set", "", "expected ':' after the scan number, found 'set'"},
+        {"at 3: put", Kind::ExpectedSetOrExpect, "put", "", "expected 'set' or 'expect', found 'put'"},
+        {"at 3: set = 1", Kind::ExpectedSetItem, "=", "", "expected a variable name or 'complete STEP', found '='"},
+        {"at 3: set complete", Kind::ExpectedStepAfterComplete, "", "",
+         "expected a step id after 'complete', found the end of the line"},
+        {"at 3: set complete F1 TRUE", Kind::ExpectedEqualsAfterStep, "TRUE", "",
+         "expected '=' after the step id, found 'TRUE'"},
+        {"at 3: set A TRUE", Kind::ExpectedEqualsAfterVariable, "TRUE", "",
+         "expected '=' after the variable name, found 'TRUE'"},
+        {"at 3: set A = ,", Kind::ExpectedValue, ",", "", "expected a value after '=', found ','"},
+        {"at 3: set complete F1 = soon", Kind::ExpectedCompleteValue, "soon", "",
+         "expected TRUE, FALSE or auto, found 'soon'"},
+        {"at 3: set A = 1 B = 2", Kind::ExpectedCommaOrEnd, "B", "", "expected ',' or the end of the line, found 'B'"},
+        {"at 3: expect", Kind::ExpectedExpectItem, "", "",
+         "expected step, fired, token, variable, entry or complete after 'expect', found the end of the line"},
+        {"at 3: expect step :", Kind::ExpectedStepAfterStep, ":", "", "expected a step id after 'step', found ':'"},
+        {"at 3: expect fired", Kind::ExpectedTransition, "", "",
+         "expected a transition id or 'none' after 'fired', found the end of the line"},
+        {"at 3: expect token", Kind::ExpectedToken, "", "",
+         "expected a token name after 'token', found the end of the line"},
+        {"at 3: expect token T TRUE", Kind::ExpectedEqualsAfterToken, "TRUE", "",
+         "expected '=' after the token name, found 'TRUE'"},
+        {"at 3: expect token T = yes", Kind::ExpectedBool, "yes", "", "expected TRUE or FALSE, found 'yes'"},
+        {"at 3: expect variable", Kind::ExpectedVariable, "", "",
+         "expected a variable name after 'variable', found the end of the line"},
+        {"at 3: expect entry", Kind::ExpectedEqualsAfterEntry, "", "",
+         "expected '=' after 'entry', found the end of the line"},
+        {"at 3: expect fired none now", Kind::ExpectedEnd, "now", "", "expected the end of the line, found 'now'"},
+    };
+    for (const Case& c : cases) {
+        const ScenarioParseResult parsed = parseScenario(c.line, "s.txt");
+        INFO(c.line);
+        REQUIRE(parsed.errors.size() == 1);
+        const ScenarioError& error = parsed.errors[0];
+        CHECK(error.kind == c.kind);
+        CHECK(error.found == c.found);
+        CHECK(error.subject == c.subject);
+        CHECK(error.message == c.message);
+        CHECK(toText(error) == c.message);
+        CHECK(error.line == 1);
+    }
+}
+
 TEST_CASE("Scenario: unknown names are errors naming the line", "[simulation]")
 {
     const char* text = "at 1: set Nope = TRUE\n"
@@ -154,6 +213,27 @@ TEST_CASE("Scenario: unknown names are errors naming the line", "[simulation]")
               "bad.txt:9:20: unknown token 'Start_F1_1_MEM'",
               "bad.txt:10:37: Temperature is REAL: 'hot' is not a REAL literal: write a decimal number such as 1.5 or 2.0E3",
           });
+
+    // The same as data: the kind and the names, the value parser's English as the detail.
+    using Kind = ScenarioError::Kind;
+    const std::vector<ScenarioError> errors = validateScenario(parsed.scenario, sim);
+    REQUIRE(errors.size() == 10);
+    const std::vector<std::pair<Kind, std::string>> kinds = {
+        {Kind::UnknownVariable, "Nope"},     {Kind::InvalidValue, "BatchSize"},
+        {Kind::InvalidValue, "BatchSize"},   {Kind::HiddenStep, "F3"},
+        {Kind::UnknownStep, "Q7"},           {Kind::IneffectiveTransition, "A1->F5"},
+        {Kind::UnknownTransition, "A1->Z1"}, {Kind::SimpleStep, "F2"},
+        {Kind::UnknownToken, "Start_F1_1_MEM"}, {Kind::InvalidValue, "Temperature"},
+    };
+    for (std::size_t i = 0; i < errors.size(); ++i) {
+        INFO(i);
+        CHECK(errors[i].kind == kinds[i].first);
+        CHECK(errors[i].subject == kinds[i].second);
+        CHECK(errors[i].message == toText(errors[i]));
+    }
+    CHECK(errors[2].type == "INT");
+    CHECK(errors[2].detail == "'40000' is out of range for INT (-32768..32767)");
+    CHECK(errors[9].type == "REAL");
 }
 
 TEST_CASE("Scenario: running checks each expectation after its scan", "[simulation]")

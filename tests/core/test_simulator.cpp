@@ -359,9 +359,11 @@ TEST_CASE("Simulator: unusable conditions are FALSE and explained", "[simulation
     CHECK_THAT(toText(unusable), Catch::StartsWith("syntax error in the condition of A1->F2: "));
     // What the checks report for the same condition, so the editor words both alike.
     CHECK(unusable.code == "GG201");
-    REQUIRE(unusable.arguments.size() == 3);
+    REQUIRE(unusable.arguments.size() == 7);
     CHECK(unusable.arguments[0] == "A1->F2");
     CHECK(unusable.message == "syntax error in the condition of A1->F2: " + unusable.arguments[2]);
+    CHECK(unusable.arguments[3] == "operand-after");
+    CHECK(unusable.arguments[5] == "AND");
     CHECK(explanations[1].status == TransitionStatus::ConditionFalse);
     CHECK(texts(explanations[1].reasons) == std::vector<std::string>{"Start = FALSE", "Speed > 10 is FALSE (Speed = 3)"});
     CHECK(scan(sim) == "A1>A1 - E");

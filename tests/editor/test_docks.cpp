@@ -6,6 +6,7 @@
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/commands/settokenscommand.h"
+#include "editor/conditionerrortext.h"
 #include "editor/diagnostictext.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/problemsdock.h"
@@ -15,6 +16,7 @@
 #include "editor/docks/variablesdock.h"
 #include "editor/docks/variablestablemodel.h"
 #include "editor/document.h"
+#include "editor/languages.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
 
@@ -36,6 +38,10 @@
 #include <QToolTip>
 #include <QTreeWidget>
 #include <QUndoStack>
+
+#include <set>
+#include <string>
+#include <vector>
 
 using namespace editor;
 
@@ -109,6 +115,7 @@ private slots:
     void stPreviewShowsProgramAndHighlightsStep();
     void stPreviewDialectIsUndoable();
     void diagnosticTextTranslatesByCode();
+    void syntaxErrorsAreInTheUiLanguage();
     void objectNamesForSaveState();
 };
 
@@ -727,6 +734,67 @@ void TestDocks::diagnosticTextTranslatesByCode()
     Document document;
     for (const core::Diagnostic& diagnostic : document.diagnostics())
         QVERIFY(!diagnosticText(diagnostic).isEmpty());
+}
+
+// The condition parser's errors: every kind worded in English as the core
+// words it, and in French in GG201 wherever the editor shows it.
+void TestDocks::syntaxErrorsAreInTheUiLanguage()
+{
+    std::string chain = "a";
+    std::string nots;
+    for (int i = 0; i < 1001; ++i)
+        chain += " AND a";
+    for (int i = 0; i < 201; ++i)
+        nots += "NOT ";
+    const std::vector<std::string> conditions = {
+        " ", "a (* x *)", "a := b", "a == b", "a != b", "!a", "a && b", "a | b", "a ** 2", "a;", "a AND \xFF",
+        "Temp\xC3\xA9", "x = 16#FF", "GVL.Start", "x > 1.5.3", "IF a", "TIME > 5", "a AND Case", "a AND \x1B",
+        "a AND @", chain, std::string(201, '(') + "a", nots + "a", "a)",
+        "OR b", "a AND ( )", "a AND", "a AND (b OR)", "a AND ((b)", "x OR (a b)", "a b",
+    };
+    std::set<core::cond::ParseError::Kind> kinds;
+    for (const std::string& condition : conditions) {
+        const core::cond::ParseResult parsed = core::cond::parse(condition);
+        QVERIFY2(!parsed.ok(), condition.c_str());
+        kinds.insert(parsed.error->kind);
+        QCOMPARE(conditionErrorText(*parsed.error), QString::fromStdString(parsed.error->message));
+    }
+    QCOMPARE(kinds.size(), conditions.size() - 1); // two conditions end in OperandAfter
+    QCOMPARE(conditionErrorText(core::cond::makeParseError(core::cond::ParseError::Kind::AfterCondition, {}, "x")),
+             QString("unexpected 'x' after a complete condition"));
+
+    Document document;
+    Selection selection;
+    declare(document, "Go");
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "Go AND )")));
+    const std::vector<core::Diagnostic> diagnostics = document.diagnosticsFor(ElementRef::transition("A1->F4"));
+    QCOMPARE(diagnostics.size(), std::size_t{1});
+    const core::Diagnostic& syntax = diagnostics.front();
+    QCOMPARE(QString::fromStdString(syntax.code), QString("GG201"));
+    QCOMPARE(diagnosticText(syntax),
+             QString("Syntax error in the condition of A1->F4: expected an operand after 'AND', found ')'."));
+
+    Translators translators;
+    QVERIFY(translators.setLanguage("fr"));
+    const QString french = QString::fromUtf8("Erreur de syntaxe dans la r\u00e9ceptivit\u00e9 de A1->F4\u00a0: "
+                                             "op\u00e9rande attendu apr\u00e8s 'AND', trouv\u00e9 ')'.");
+    QCOMPARE(diagnosticText(syntax), french);
+    // The condition editor of the Transition dock and the Problems dock show it.
+    TransitionDock transitions(&document, &selection);
+    ProblemsDock problems(&document, &selection);
+    selection.select(ElementRef::transition("A1->F4"));
+    auto* edit = child<ConditionEdit>(&transitions, "conditionEdit");
+    QCOMPARE(edit->problems().size(), 1);
+    QCOMPARE(edit->problems().front().message, french);
+    QTreeWidgetItem* item = problemItem(problems.view(), "GG201", "A1 \u2192 F4");
+    QVERIFY(item);
+    QCOMPARE(item->text(ProblemsDock::MessageColumn), french);
+
+    // A kind this editor does not know (a newer core): the English detail in the translated frame.
+    core::Diagnostic newer = syntax;
+    newer.arguments[3] = "something-new";
+    QVERIFY(diagnosticText(newer).startsWith(QString::fromUtf8("Erreur de syntaxe dans la r\u00e9ceptivit\u00e9")));
+    QVERIFY(diagnosticText(newer).contains("expected an operand after 'AND', found ')'"));
 }
 
 void TestDocks::objectNamesForSaveState()

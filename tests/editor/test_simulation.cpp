@@ -15,9 +15,11 @@
 #include "editor/mainwindow.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
 
 #include "core/conditionevaluator.h"
+#include "core/scenario.h"
 
 #include <QAbstractButton>
 #include <QAction>
@@ -39,6 +41,7 @@
 #include <QUndoStack>
 
 #include <memory>
+#include <set>
 
 using namespace editor;
 
@@ -90,6 +93,8 @@ private slots:
     void explanationNamesTheReasons();
     void explanationIsInTheUiLanguage();
     void replayFailuresAreInTheUiLanguage();
+    void scenarioErrorsAreInTheUiLanguage();
+    void unusableConditionIsInTheUiLanguage();
     void traceTableHasOneRowPerScan();
     void recordedSessionReplaysWithEveryExpectationMet();
     void replayShowsFailedExpectations();
@@ -438,6 +443,68 @@ void TestSimulation::replayFailuresAreInTheUiLanguage()
              QStringLiteral("Ligne 2\u00a0: cycle 2\u00a0: étape A1 attendue, l'étape active est A6"));
     QCOMPARE(m_dock->failureList()->item(1)->text(),
              QStringLiteral("Ligne 3\u00a0: cycle 2\u00a0: A6->A1 devait être franchie, aucune transition ne l'a été"));
+}
+
+void TestSimulation::scenarioErrorsAreInTheUiLanguage()
+{
+    // In English the editor words every kind of error as the core does.
+    const core::Simulator simulator(factory::realisticModel());
+    const char* const lines[] = {
+        "set A = TRUE", "at", "at 0: set A = TRUE", "at 99999999999999: set A = TRUE", "at 3 set", "at 3: put",
+        "at 3: set = 1", "at 3: set complete", "at 3: set complete F1 TRUE", "at 3: set A TRUE", "at 3: set A = ,",
+        "at 3: set complete F1 = soon", "at 3: set A = 1 B = 2", "at 3: expect", "at 3: expect step :",
+        "at 3: expect fired", "at 3: expect token", "at 3: expect token T TRUE", "at 3: expect token T = yes",
+        "at 3: expect variable", "at 3: expect entry", "at 3: expect fired none now", "at 1: set Nope = TRUE",
+        "at 2: set BatchSize = 40000", "at 2: expect step F3", "at 2: expect step Q7", "at 3: expect fired A1->F5",
+        "at 3: expect fired A1->Z1", "at 4: set complete F2 = TRUE", "at 4: expect token Start_F1_1_MEM = TRUE",
+    };
+    std::set<core::ScenarioError::Kind> kinds;
+    for (const char* line : lines) {
+        const core::ScenarioParseResult parsed = core::parseScenario(line, "s.txt");
+        const std::vector<core::ScenarioError> errors =
+            parsed.ok() ? core::validateScenario(parsed.scenario, simulator) : parsed.errors;
+        QCOMPARE(errors.size(), std::size_t{1});
+        kinds.insert(errors.front().kind);
+        QCOMPARE(scenarioErrorText(errors.front()), QString::fromStdString(errors.front().toString()));
+    }
+    QCOMPARE(kinds.size(), std::size(lines));
+
+    // In French, a replay refuses the file with the reasons in French, the names as written.
+    reopenInFrench();
+    startOnRealisticModel();
+    const QString path = m_files.filePath(QStringLiteral("erreurs.scenario"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write("at 1: set HomePosition TRUE\n"
+               "at 2: expect\n");
+    file.close();
+    QString error;
+    QVERIFY(!m_session->startReplay(path, &error));
+    QCOMPARE(error, QStringLiteral("erreurs.scenario:1:24: '=' attendu après le nom de variable, trouvé 'TRUE'\n"
+                                   "erreurs.scenario:2:13: step, fired, token, variable, entry ou complete attendu "
+                                   "après 'expect', trouvé la fin de la ligne"));
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write("at 1: set NoSuchInput = TRUE\n"
+               "at 2: expect step Q7\n");
+    file.close();
+    QVERIFY(!m_session->startReplay(path, &error));
+    QCOMPARE(error, QStringLiteral("erreurs.scenario:1:11: variable 'NoSuchInput' inconnue\n"
+                                   "erreurs.scenario:2:19: étape 'Q7' inconnue"));
+}
+
+// The Simulation dock words a condition that does not parse as the Problems dock does.
+void TestSimulation::unusableConditionIsInTheUiLanguage()
+{
+    reopenInFrench();
+    core::Model model = factory::realisticModel();
+    QVERIFY(model.setCondition("A6->A1", "HomePosition AND"));
+    m_window->document()->replaceModel(std::move(model), QString(), core::ModelFormat::Native);
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(m_session->isActive());
+    const QStringList texts = explanationTexts(*m_dock->explanationView());
+    QVERIFY2(texts.contains(QStringLiteral("Erreur de syntaxe dans la réceptivité de A6->A1\u00a0: opérande attendu "
+                                           "après 'AND'.")),
+             qPrintable(texts.join('\n')));
 }
 
 void TestSimulation::traceTableHasOneRowPerScan()

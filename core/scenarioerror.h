@@ -1,0 +1,68 @@
+#pragma once
+
+// A malformed or invalid line of a scenario file (core/scenario.h), as data:
+// the editor words it in the UI language, toText() gives the English text
+// the command line and tests use. Words of the file, names and values are
+// kept as written: they are code in every language.
+
+#include <string>
+
+namespace core {
+
+struct ScenarioError {
+    enum class Kind {
+        // Syntax (parseScenario). found: the word there instead, as written;
+        // empty at the end of the line.
+        ExpectedAt,               // 'at SCAN:' at the start of the line
+        ExpectedScanNumber,       // a scan number after 'at'
+        ScanBelowOne,             // scans are numbered from 1
+        ScanTooLarge,             // subject: the scan number as written
+        ExpectedColon,            // ':' after the scan number
+        ExpectedSetOrExpect,      // 'set' or 'expect' after the ':'
+        ExpectedSetItem,          // a variable name or 'complete STEP' after 'set' or ','
+        ExpectedStepAfterComplete, // a step id after 'complete'
+        ExpectedStepAfterStep,    // a step id after 'step'
+        ExpectedTransition,       // a transition id or 'none' after 'fired'
+        ExpectedToken,            // a token name after 'token'
+        ExpectedVariable,         // a variable name after 'variable'
+        ExpectedExpectItem,       // step, fired, token, variable, entry or complete after 'expect'
+        ExpectedEqualsAfterStep,  // '=' after the step id
+        ExpectedEqualsAfterVariable, // '=' after the variable name
+        ExpectedEqualsAfterToken, // '=' after the token name
+        ExpectedEqualsAfterEntry, // '=' after 'entry'
+        ExpectedValue,            // a value after '='
+        ExpectedBool,             // TRUE or FALSE
+        ExpectedCompleteValue,    // TRUE, FALSE or auto
+        ExpectedCommaOrEnd,       // ',' or the end of the line
+        ExpectedEnd,              // the end of the line
+        // Names and values (validateScenario). subject: the name, as the kind says.
+        UnknownVariable,          // as written
+        InvalidValue,             // the variable as declared; type: its IEC type; detail: why (English)
+        HiddenStep,               // the step id in capitals
+        UnknownStep,              // as written
+        SimpleStep,               // the step id in capitals: it has no Complete
+        IneffectiveTransition,    // as written: it or one of its steps is hidden
+        UnknownTransition,        // as written
+        UnknownToken,             // as written
+    };
+
+    std::string fileName;
+    int line = 0;
+    int column = 0;
+    Kind kind = Kind::ExpectedAt;
+    std::string found;
+    std::string subject;
+    std::string type;    // InvalidValue: "INT"
+    std::string detail;  // InvalidValue: the value parser's English ("'x' is not an integer")
+    std::string message; // English: toText() of the above
+
+    // "scenario.txt:4:12: expected '=' after the variable name, found 'TRUE'".
+    std::string toString() const;
+
+    friend bool operator==(const ScenarioError&, const ScenarioError&) = default;
+};
+
+// "expected '=' after the variable name, found 'TRUE'", "unknown step 'X9'".
+std::string toText(const ScenarioError& error);
+
+} // namespace core
