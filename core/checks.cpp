@@ -341,10 +341,13 @@ private:
             return;
         }
         const std::vector<cond::TypeIssue> issues = cond::typeCheck(parsed->expression, m_symbols);
-        for (const cond::TypeIssue& issue : issues)
+        for (const cond::TypeIssue& issue : issues) {
+            std::vector<std::string> arguments{id, excerpt(transition.condition, issue.span), issue.message};
+            if (issue.error)
+                cond::appendArguments(*issue.error, arguments);
             addTransition(issue.code, Severity::Error, id, "condition",
-                          "in the condition of " + id + ": " + issue.message,
-                          {id, excerpt(transition.condition, issue.span), issue.message}, issue.span);
+                          "in the condition of " + id + ": " + issue.message, std::move(arguments), issue.span);
+        }
         if (issues.empty())
             checkConstantCondition(transition, source, parsed->expression);
     }
@@ -501,11 +504,14 @@ private:
     void checkVariable(const Variable& variable, bool used)
     {
         checkVariableName(variable);
-        const std::string problem = defaultValueProblem(variable.type, variable.defaultValue);
-        if (!problem.empty())
+        if (const std::optional<ValueProblem> problem = valueProblem(variable.type, variable.defaultValue)) {
+            const std::string detail = toText(*problem);
+            std::vector<std::string> arguments{variable.name, variable.defaultValue, detail};
+            appendArguments(*problem, arguments);
             addVariable("GG304", Severity::Error, variable, "default",
-                        "the default value of variable " + quoted(variable.name) + " is invalid: " + problem,
-                        {variable.name, variable.defaultValue, problem});
+                        "the default value of variable " + quoted(variable.name) + " is invalid: " + detail,
+                        std::move(arguments));
+        }
         if (!used)
             addVariable("GG305", Severity::Warning, variable, "name",
                         "variable " + quoted(variable.name) + " is not used by any visible transition condition",

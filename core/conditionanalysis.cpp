@@ -138,14 +138,26 @@ private:
     std::string m_out;
 };
 
-std::string quotedSubexpression(const Expression& expression, int node)
+// A subexpression as a type error quotes it.
+std::string shortSubexpression(const Expression& expression, int node)
 {
     static const PrintOptions plain;
     constexpr std::size_t kMaxLength = 40;
     std::string text = Printer(expression, plain).run(node);
     if (text.size() > kMaxLength)
         text = text.substr(0, kMaxLength - 3) + "...";
-    return "'" + text + "'";
+    return text;
+}
+
+std::string valueType(ValueKind kind)
+{
+    switch (kind) {
+    case ValueKind::Bool: return "BOOL";
+    case ValueKind::Integer: return std::string(TypeError::kIntegerValue);
+    case ValueKind::Real: return std::string(TypeError::kRealValue);
+    case ValueKind::Unknown: break;
+    }
+    return std::string(TypeError::kUnknownValue);
 }
 
 // --- type checking ----------------------------------------------------------------
@@ -211,28 +223,37 @@ private:
     void report(const char* code, std::string message, Span span)
     {
         if (m_issues)
-            m_issues->push_back(TypeIssue{code, std::move(message), span});
+            m_issues->push_back(TypeIssue{code, std::move(message), span, std::nullopt});
     }
 
-    std::string kindText(int node) const
+    void report(TypeError error, Span span)
+    {
+        if (m_issues) {
+            std::string message = toText(error);
+            m_issues->push_back(TypeIssue{"GG204", std::move(message), span, std::move(error)});
+        }
+    }
+
+    // A declared variable is named by its type, anything else by its kind of value.
+    TypeError::Operand operandOf(int node) const
     {
         const Node& n = m_expression.at(node);
+        std::string type;
         if (n.kind == NodeKind::Variable) {
             if (const Variable* variable = m_symbols.find(n.text))
-                return std::string(iecTypeName(variable->type));
+                type = iecTypeName(variable->type);
         }
-        switch (m_kinds[static_cast<std::size_t>(node)]) {
-        case ValueKind::Bool: return "BOOL";
-        case ValueKind::Integer: return "an integer";
-        case ValueKind::Real: return "a real number";
-        case ValueKind::Unknown: break;
-        }
-        return "of unknown type";
+        if (type.empty())
+            type = valueType(m_kinds[static_cast<std::size_t>(node)]);
+        return {shortSubexpression(m_expression, node), std::move(type)};
     }
 
-    std::string describe(int node) const
+    void reportLiteral(TypeError::Kind kind, const Node& node)
     {
-        return quotedSubexpression(m_expression, node) + " is " + kindText(node);
+        TypeError error;
+        error.kind = kind;
+        error.first.text = node.text;
+        report(std::move(error), node.span);
     }
 
     // -9223372036854775808 is a valid LINT: its literal may exceed INT64_MAX by one.
@@ -256,7 +277,7 @@ private:
         case NodeKind::IntegerLiteral: checkIntegerLiteral(index); return ValueKind::Integer;
         case NodeKind::RealLiteral:
             if (m_issues && !parseRealLiteral(node.text))
-                report("GG204", "'" + node.text + "' is out of range for LREAL (-1.8E308..1.8E308)", node.span);
+                reportLiteral(TypeError::Kind::RealLiteralRange, node);
             return ValueKind::Real;
         case NodeKind::Unary: return unaryKind(index, node);
         case NodeKind::Binary: return binaryKind(index, node);
@@ -280,9 +301,7 @@ private:
         const auto magnitude = integerMagnitude(node.text);
         const std::uint64_t limit = m_negatedLiteral[static_cast<std::size_t>(index)] ? kInt64Max + 1 : kInt64Max;
         if (!magnitude || *magnitude > limit)
-            report("GG204",
-                   "'" + node.text + "' is out of range: integer literals go up to 9223372036854775807 (LINT)",
-                   node.span);
+            reportLiteral(TypeError::Kind::IntegerLiteralRange, node);
     }
 
     ValueKind unaryKind(int index, const Node& node)
@@ -292,33 +311,38 @@ private:
             return node.unaryOp == UnaryOp::Not ? ValueKind::Bool : ValueKind::Unknown;
         if (node.unaryOp == UnaryOp::Not) {
             if (operand != ValueKind::Bool)
-                reportOperand("NOT needs a BOOL operand", node.operand);
+                reportOperand(TypeError::Kind::NotBoolOperand, "NOT", node.operand);
             return ValueKind::Bool;
         }
         if (operand == ValueKind::Bool) {
-            reportOperand("unary '-' needs a numeric operand", node.operand);
+            reportOperand(TypeError::Kind::NotNumericOperand, "'-'", node.operand);
             return ValueKind::Unknown;
         }
         return operand;
     }
 
-    void reportOperand(const std::string& rule, int operand)
+    void reportOperand(TypeError::Kind kind, std::string op, int node)
     {
-        if (m_issues)
-            report("GG204", rule + ", but " + describe(operand), m_expression.at(operand).span);
+        if (!m_issues)
+            return;
+        TypeError error;
+        error.kind = kind;
+        error.op = std::move(op);
+        error.first = operandOf(node);
+        report(std::move(error), m_expression.at(node).span);
     }
 
     // Reports each operand that fails `accepts`; true when both pass.
     template<typename Accepts>
-    bool checkOperands(int index, const Node& node, const std::string& rule, Accepts accepts)
+    bool checkOperands(int index, const Node& node, TypeError::Kind rule, Accepts accepts)
     {
         bool ok = true;
-        for (int operand : {node.left, node.right}) {
-            const ValueKind kind = kindOf(operand, index);
+        for (int child : {node.left, node.right}) {
+            const ValueKind kind = kindOf(child, index);
             if (kind == ValueKind::Unknown) {
                 ok = false;
             } else if (!accepts(kind)) {
-                reportOperand(rule, operand);
+                reportOperand(rule, operatorLabel(node.binaryOp), child);
                 ok = false;
             }
         }
@@ -327,44 +351,46 @@ private:
 
     ValueKind binaryKind(int index, const Node& node)
     {
+        using Kind = TypeError::Kind;
         const BinaryOp op = node.binaryOp;
-        const std::string label = operatorLabel(op);
         if (isLogical(op)) {
-            checkOperands(index, node, label + " needs BOOL operands",
-                          [](ValueKind k) { return k == ValueKind::Bool; });
+            checkOperands(index, node, Kind::BoolOperands, [](ValueKind k) { return k == ValueKind::Bool; });
             return ValueKind::Bool;
         }
         if (isOrdering(op)) {
-            checkOperands(index, node, label + " needs numeric operands", isNumeric);
+            checkOperands(index, node, Kind::NumericOperands, isNumeric);
             return ValueKind::Bool;
         }
         if (op == BinaryOp::Modulo) {
-            const bool ok = checkOperands(index, node, "MOD needs integer operands",
+            const bool ok = checkOperands(index, node, Kind::IntegerOperands,
                                           [](ValueKind k) { return k == ValueKind::Integer; });
             return ok ? ValueKind::Integer : ValueKind::Unknown;
         }
         if (isArithmetic(op)) {
-            if (!checkOperands(index, node, label + " needs numeric operands", isNumeric))
+            if (!checkOperands(index, node, Kind::NumericOperands, isNumeric))
                 return ValueKind::Unknown;
             const bool real = kindOf(node.left, index) == ValueKind::Real
                 || kindOf(node.right, index) == ValueKind::Real;
             return real ? ValueKind::Real : ValueKind::Integer;
         }
-        checkComparable(index, node, label);
+        checkComparable(index, node);
         return ValueKind::Bool;
     }
 
-    void checkComparable(int index, const Node& node, const std::string& label)
+    void checkComparable(int index, const Node& node)
     {
         const ValueKind left = kindOf(node.left, index);
         const ValueKind right = kindOf(node.right, index);
         if (left == ValueKind::Unknown || right == ValueKind::Unknown || !m_issues)
             return;
-        if ((left == ValueKind::Bool) != (right == ValueKind::Bool))
-            report("GG204",
-                   label + " needs two operands of the same kind, but " + describe(node.left) + " and "
-                       + describe(node.right),
-                   node.span);
+        if ((left == ValueKind::Bool) == (right == ValueKind::Bool))
+            return;
+        TypeError error;
+        error.kind = TypeError::Kind::SameKindOperands;
+        error.op = operatorLabel(node.binaryOp);
+        error.first = operandOf(node.left);
+        error.second = operandOf(node.right);
+        report(std::move(error), node.span);
     }
 
     const Expression& m_expression;
@@ -397,12 +423,12 @@ std::vector<TypeIssue> typeCheck(const Expression& expression, const SymbolTable
     TypeChecker checker(expression, symbols, &issues);
     const ValueKind kind = checker.kindUpTo(expression.root);
     if (kind != ValueKind::Bool && kind != ValueKind::Unknown) {
-        const Node& root = expression.rootNode();
-        const char* kindText = kind == ValueKind::Integer ? "an integer" : "a real number";
-        issues.push_back(TypeIssue{"GG204",
-                                   "a condition must be BOOL, but " + quotedSubexpression(expression, expression.root)
-                                       + " is " + kindText,
-                                   root.span});
+        // Named by its kind of value even when it is a variable: "'Temp' is a real number".
+        TypeError error;
+        error.kind = TypeError::Kind::NotBoolCondition;
+        error.first = {shortSubexpression(expression, expression.root), valueType(kind)};
+        std::string message = toText(error);
+        issues.push_back(TypeIssue{"GG204", std::move(message), expression.rootNode().span, std::move(error)});
     }
     std::stable_sort(issues.begin(), issues.end(),
                      [](const TypeIssue& a, const TypeIssue& b) { return a.span.begin < b.span.begin; });

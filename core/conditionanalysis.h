@@ -4,10 +4,12 @@
 // its variables and boolean literals (for tokens), and its ST text.
 
 #include "core/conditionsyntax.h"
+#include "core/conditiontypeerror.h"
 #include "core/symboltable.h"
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +22,7 @@ struct TypeIssue {
     std::string code;    // diagnostic code, see core/diagnostic.h
     std::string message; // English
     Span span;
+    std::optional<TypeError> error; // GG204: the message as data
 };
 
 // Checks that the expression is BOOL and every operator gets operands of the

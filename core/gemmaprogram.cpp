@@ -81,6 +81,8 @@ void analyseCondition(const BuildContext& context, GemmaTransition& transition)
     std::vector<cond::TypeIssue> issues = cond::typeCheck(transition.condition.expression, context.symbols);
     for (cond::TypeIssue& issue : issues) {
         std::vector<std::string> arguments{id, excerpt(transition.conditionText, issue.span), issue.message};
+        if (issue.error)
+            cond::appendArguments(*issue.error, arguments);
         transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, std::move(issue.code), id,
                                                   "in the condition of " + id + ": " + issue.message,
                                                   std::move(arguments)));

@@ -260,33 +260,35 @@ std::string quoted(std::string_view value)
     return "'" + std::string(value) + "'";
 }
 
-std::string integerProblem(IecType type, std::string_view value)
+ValueProblem makeProblem(ValueProblem::Kind kind, IecType type, std::string_view value, std::string low = {},
+                         std::string high = {})
 {
-    const std::string name(iecTypeName(type));
-    const auto parsed = parseSignedInteger(value);
-    if (!parsed)
-        return quoted(value) + " is not " + (type == IecType::Int ? "an " : "a ") + name
-            + " literal: write a whole number such as 42";
-    const IntegerRange range = integerRange(type);
-    if (fitsRange(*parsed, range))
-        return {};
-    return quoted(value) + " is out of range for " + name + " (" + std::to_string(range.min)
-        + ".." + std::to_string(range.max) + ")";
+    return ValueProblem{kind, std::string(value), std::string(iecTypeName(type)), std::move(low), std::move(high)};
 }
 
-std::string realProblem(IecType type, std::string_view value)
+std::optional<ValueProblem> integerProblem(IecType type, std::string_view value)
 {
-    const std::string name(iecTypeName(type));
+    const auto parsed = parseSignedInteger(value);
+    if (!parsed)
+        return makeProblem(ValueProblem::Kind::NotInteger, type, value);
+    const IntegerRange range = integerRange(type);
+    if (fitsRange(*parsed, range))
+        return std::nullopt;
+    return makeProblem(ValueProblem::Kind::OutOfRange, type, value, std::to_string(range.min),
+                       std::to_string(range.max));
+}
+
+std::optional<ValueProblem> realProblem(IecType type, std::string_view value)
+{
     if (!isRealLiteral(value))
-        return quoted(value) + " is not a " + name
-            + " literal: write a decimal number such as 1.5 or 2.0E3";
+        return makeProblem(ValueProblem::Kind::NotReal, type, value);
     const auto number = parseRealLiteral(value);
-    const double limit = type == IecType::Real ? static_cast<double>(FLT_MAX) : DBL_MAX;
-    if (!number || std::fabs(*number) > limit) {
-        const char* bounds = type == IecType::Real ? "-3.4E38..3.4E38" : "-1.8E308..1.8E308";
-        return quoted(value) + " is out of range for " + name + " (" + bounds + ")";
-    }
-    return {};
+    const bool real = type == IecType::Real;
+    const double limit = real ? static_cast<double>(FLT_MAX) : DBL_MAX;
+    if (!number || std::fabs(*number) > limit)
+        return makeProblem(ValueProblem::Kind::OutOfRange, type, value, real ? "-3.4E38" : "-1.8E308",
+                           real ? "3.4E38" : "1.8E308");
+    return std::nullopt;
 }
 
 } // namespace
@@ -366,22 +368,28 @@ std::optional<double> parseRealLiteral(std::string_view text)
     return value;
 }
 
-std::string defaultValueProblem(IecType type, std::string_view value)
+std::optional<ValueProblem> valueProblem(IecType type, std::string_view value)
 {
     if (value.empty())
-        return {};
+        return std::nullopt;
     if (value.front() == ' ' || value.back() == ' ' || value.front() == '\t' || value.back() == '\t')
-        return quoted(value) + " has leading or trailing spaces";
+        return makeProblem(ValueProblem::Kind::Spaces, type, value);
     if (type == IecType::Bool) {
         // IEC 61131-3 also writes BOOL literals as 0 and 1; both are accepted.
         if (equalsIgnoreCase(value, "TRUE") || equalsIgnoreCase(value, "FALSE") || value == "0"
             || value == "1")
-            return {};
-        return quoted(value) + " is not a BOOL literal (TRUE or FALSE)";
+            return std::nullopt;
+        return makeProblem(ValueProblem::Kind::NotBool, type, value);
     }
     if (isRealType(type))
         return realProblem(type, value);
     return integerProblem(type, value);
+}
+
+std::string defaultValueProblem(IecType type, std::string_view value)
+{
+    const std::optional<ValueProblem> problem = valueProblem(type, value);
+    return problem ? toText(*problem) : std::string();
 }
 
 std::string_view implicitDefault(IecType type)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/valueproblem.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,7 +25,10 @@ bool isIntegerType(IecType type);
 bool isRealType(IecType type);
 bool isNumericType(IecType type);
 
-// Why a default value does not fit its type; empty when it fits or is empty.
+// Why a default value does not fit its type; nullopt when it fits or is empty.
+std::optional<ValueProblem> valueProblem(IecType type, std::string_view value);
+
+// valueProblem() in English; empty when the value fits or is empty.
 // Examples: "'300' is out of range for SINT (-128..127)", "'yes' is not a BOOL literal".
 std::string defaultValueProblem(IecType type, std::string_view value);
 

@@ -396,12 +396,13 @@ private:
         }
         const std::string& declared = m_simulator.variableNames()[static_cast<std::size_t>(index)];
         const IecType type = iecTypeOf(index);
-        std::string problem = defaultValueProblem(type, action.value);
-        if (problem.empty())
+        std::optional<ValueProblem> problem = valueProblem(type, action.value);
+        if (!problem)
             return;
         ScenarioError& invalid = error(action, action.valueColumn, ErrorKind::InvalidValue, declared);
         invalid.type = std::string(iecTypeName(type));
-        invalid.detail = std::move(problem);
+        invalid.detail = toText(*problem);
+        invalid.problem = std::move(problem);
         invalid.message = toText(invalid);
     }
 

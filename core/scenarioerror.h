@@ -5,6 +5,9 @@
 // the command line and tests use. Words of the file, names and values are
 // kept as written: they are code in every language.
 
+#include "core/valueproblem.h"
+
+#include <optional>
 #include <string>
 
 namespace core {
@@ -54,6 +57,7 @@ struct ScenarioError {
     std::string subject;
     std::string type;    // InvalidValue: "INT"
     std::string detail;  // InvalidValue: the value parser's English ("'x' is not an integer")
+    std::optional<ValueProblem> problem; // InvalidValue: detail as data
     std::string message; // English: toText() of the above
 
     // "scenario.txt:4:12: expected '=' after the variable name, found 'TRUE'".

@@ -1,6 +1,8 @@
 #include "editor/diagnostictext.h"
 
 #include "editor/conditionerrortext.h"
+#include "editor/conditiontypeerrortext.h"
+#include "editor/valueproblemtext.h"
 
 #include "core/gemmatemplate.h"
 #include "core/iectypes.h"
@@ -157,18 +159,26 @@ QString translated(const core::Diagnostic& d)
         return DiagnosticText::tr("Syntax error in the condition of %1: %2.")
             .arg(arg(0), error ? conditionErrorText(*error) : arg(2));
     }
+    if (code == "GG204" && n >= 3) {
+        // The type error's kind and pieces follow the English detail (docs/diagnostics.md).
+        const std::optional<core::cond::TypeError> error = core::cond::typeErrorFromArguments(a, 3);
+        return DiagnosticText::tr("Type error in the condition of %1: %2.")
+            .arg(arg(0), error ? conditionTypeErrorText(*error) : arg(2));
+    }
+    if (code == "GG304" && n >= 3) {
+        // The value problem's kind and pieces follow the English detail (docs/diagnostics.md).
+        const std::optional<core::ValueProblem> problem = core::valueProblemFromArguments(a, 3);
+        return DiagnosticText::tr("The default value of variable '%1' is invalid: %2.")
+            .arg(arg(0), problem ? valueProblemText(*problem) : arg(2));
+    }
     if (n == 3) {
         if (code == "GG203")
             return DiagnosticText::tr("In the condition of %1: '%2' is not a declared variable.").arg(arg(0), arg(1));
-        if (code == "GG204")
-            return DiagnosticText::tr("Type error in the condition of %1: %2.").arg(arg(0), arg(2));
         if (code == "GG207")
             return DiagnosticText::tr(
                 "The token on '%2' in %1 is invalid: '%2' is %3, and only BOOL variables can have a "
                 "token.")
                 .arg(arg(0), arg(1), arg(2));
-        if (code == "GG304")
-            return DiagnosticText::tr("The default value of variable '%1' is invalid: %2.").arg(arg(0), arg(2));
     }
     return {};
 }

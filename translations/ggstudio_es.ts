@@ -170,6 +170,70 @@
     </message>
 </context>
 <context>
+    <name>ConditionTypeErrorText</name>
+    <message>
+        <source>&apos;%1&apos; is an integer</source>
+        <extracomment>%1: a subexpression of the condition</extracomment>
+        <translation>&apos;%1&apos; es un entero</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a real number</source>
+        <translation>&apos;%1&apos; es un número real</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is of unknown type</source>
+        <translation>&apos;%1&apos; es de tipo desconocido</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is %2</source>
+        <extracomment>%1: a subexpression of the condition; %2: its IEC type (INT, BOOL)</extracomment>
+        <translation>&apos;%1&apos; es de tipo %2</translation>
+    </message>
+    <message>
+        <source>a condition must be BOOL, but %1</source>
+        <extracomment>%1: the condition and what it is (&quot;&apos;Speed + 1&apos; is an integer&quot;)</extracomment>
+        <translation>una condición debe ser BOOL, pero %1</translation>
+    </message>
+    <message>
+        <source>%1 needs a BOOL operand, but %2</source>
+        <extracomment>%1: NOT; %2: its operand and what it is (&quot;&apos;Speed&apos; is INT&quot;)</extracomment>
+        <translation>%1 necesita un operando BOOL, pero %2</translation>
+    </message>
+    <message>
+        <source>unary %1 needs a numeric operand, but %2</source>
+        <extracomment>%1: &apos;-&apos; (negation); %2: its operand and what it is (&quot;&apos;Start&apos; is BOOL&quot;)</extracomment>
+        <translation>el %1 unario necesita un operando numérico, pero %2</translation>
+    </message>
+    <message>
+        <source>%1 needs BOOL operands, but %2</source>
+        <extracomment>%1: AND, OR or XOR; %2: the operand at fault and what it is (&quot;&apos;Speed&apos; is INT&quot;)</extracomment>
+        <translation>%1 necesita operandos BOOL, pero %2</translation>
+    </message>
+    <message>
+        <source>%1 needs numeric operands, but %2</source>
+        <extracomment>%1: a comparison or arithmetic operator (&apos;&lt;&apos;, &apos;+&apos;); %2: the operand at fault and what it is</extracomment>
+        <translation>%1 necesita operandos numéricos, pero %2</translation>
+    </message>
+    <message>
+        <source>%1 needs integer operands, but %2</source>
+        <extracomment>%1: MOD; %2: the operand at fault and what it is (&quot;&apos;Temp&apos; is REAL&quot;)</extracomment>
+        <translation>%1 necesita operandos enteros, pero %2</translation>
+    </message>
+    <message>
+        <source>%1 needs two operands of the same kind, but %2 and %3</source>
+        <extracomment>%1: &apos;=&apos; or &apos;&lt;&gt;&apos;; %2, %3: each operand and what it is (&quot;&apos;Start&apos; is BOOL&quot;, &quot;&apos;Speed&apos; is INT&quot;)</extracomment>
+        <translation>%1 necesita dos operandos de la misma clase, pero %2 y %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range: integer literals go up to 9223372036854775807 (LINT)</source>
+        <translation>&apos;%1&apos; está fuera de rango: los literales enteros llegan hasta 9223372036854775807 (LINT)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range for LREAL (-1.8E308..1.8E308)</source>
+        <translation>&apos;%1&apos; está fuera del rango de LREAL (-1.8E308..1.8E308)</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -773,7 +837,7 @@
     </message>
     <message>
         <source>%1 is %2: %3</source>
-        <extracomment>a variable, its IEC type (INT), then why the value does not fit it (English, from the value parser)</extracomment>
+        <extracomment>a variable, its IEC type (INT), then why the value does not fit it</extracomment>
         <translation>%1 es de tipo %2: %3</translation>
     </message>
     <message>
@@ -882,6 +946,37 @@
     <message>
         <source>Failure procedures</source>
         <translation>Procedimientos de fallo</translation>
+    </message>
+</context>
+<context>
+    <name>ValueProblemText</name>
+    <message>
+        <source>&apos;%1&apos; is not an %2 literal: write a whole number such as 42</source>
+        <extracomment>%1: the value as written; %2: INT</extracomment>
+        <translation>&apos;%1&apos; no es un literal %2: escriba un número entero, por ejemplo 42</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a %2 literal: write a whole number such as 42</source>
+        <extracomment>%1: the value as written; %2: an integer type other than INT (SINT, UDINT...)</extracomment>
+        <translation>&apos;%1&apos; no es un literal %2: escriba un número entero, por ejemplo 42</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has leading or trailing spaces</source>
+        <translation>&apos;%1&apos; tiene espacios al principio o al final</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a BOOL literal (TRUE or FALSE)</source>
+        <translation>&apos;%1&apos; no es un literal BOOL (TRUE o FALSE)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a %2 literal: write a decimal number such as 1.5 or 2.0E3</source>
+        <extracomment>%1: the value as written; %2: REAL or LREAL</extracomment>
+        <translation>&apos;%1&apos; no es un literal %2: escriba un número decimal, por ejemplo 1.5 o 2.0E3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range for %2 (%3..%4)</source>
+        <extracomment>%1: the value as written; %2: its IEC type; %3..%4: the type&apos;s range</extracomment>
+        <translation>&apos;%1&apos; está fuera del rango de %2 (%3..%4)</translation>
     </message>
 </context>
 <context>

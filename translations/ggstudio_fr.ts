@@ -170,6 +170,70 @@
     </message>
 </context>
 <context>
+    <name>ConditionTypeErrorText</name>
+    <message>
+        <source>&apos;%1&apos; is an integer</source>
+        <extracomment>%1: a subexpression of the condition</extracomment>
+        <translation>&apos;%1&apos; est un entier</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is a real number</source>
+        <translation>&apos;%1&apos; est un nombre réel</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is of unknown type</source>
+        <translation>&apos;%1&apos; est de type inconnu</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is %2</source>
+        <extracomment>%1: a subexpression of the condition; %2: its IEC type (INT, BOOL)</extracomment>
+        <translation>&apos;%1&apos; est de type %2</translation>
+    </message>
+    <message>
+        <source>a condition must be BOOL, but %1</source>
+        <extracomment>%1: the condition and what it is (&quot;&apos;Speed + 1&apos; is an integer&quot;)</extracomment>
+        <translation>une réceptivité doit être BOOL, mais %1</translation>
+    </message>
+    <message>
+        <source>%1 needs a BOOL operand, but %2</source>
+        <extracomment>%1: NOT; %2: its operand and what it is (&quot;&apos;Speed&apos; is INT&quot;)</extracomment>
+        <translation>%1 exige un opérande BOOL, mais %2</translation>
+    </message>
+    <message>
+        <source>unary %1 needs a numeric operand, but %2</source>
+        <extracomment>%1: &apos;-&apos; (negation); %2: its operand and what it is (&quot;&apos;Start&apos; is BOOL&quot;)</extracomment>
+        <translation>le %1 unaire exige un opérande numérique, mais %2</translation>
+    </message>
+    <message>
+        <source>%1 needs BOOL operands, but %2</source>
+        <extracomment>%1: AND, OR or XOR; %2: the operand at fault and what it is (&quot;&apos;Speed&apos; is INT&quot;)</extracomment>
+        <translation>%1 exige des opérandes BOOL, mais %2</translation>
+    </message>
+    <message>
+        <source>%1 needs numeric operands, but %2</source>
+        <extracomment>%1: a comparison or arithmetic operator (&apos;&lt;&apos;, &apos;+&apos;); %2: the operand at fault and what it is</extracomment>
+        <translation>%1 exige des opérandes numériques, mais %2</translation>
+    </message>
+    <message>
+        <source>%1 needs integer operands, but %2</source>
+        <extracomment>%1: MOD; %2: the operand at fault and what it is (&quot;&apos;Temp&apos; is REAL&quot;)</extracomment>
+        <translation>%1 exige des opérandes entiers, mais %2</translation>
+    </message>
+    <message>
+        <source>%1 needs two operands of the same kind, but %2 and %3</source>
+        <extracomment>%1: &apos;=&apos; or &apos;&lt;&gt;&apos;; %2, %3: each operand and what it is (&quot;&apos;Start&apos; is BOOL&quot;, &quot;&apos;Speed&apos; is INT&quot;)</extracomment>
+        <translation>%1 exige deux opérandes de même nature, mais %2 et %3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range: integer literals go up to 9223372036854775807 (LINT)</source>
+        <translation>&apos;%1&apos; est hors limites&#xa0;: les littéraux entiers vont jusqu&apos;à 9223372036854775807 (LINT)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range for LREAL (-1.8E308..1.8E308)</source>
+        <translation>&apos;%1&apos; est hors limites pour LREAL (-1.8E308..1.8E308)</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -773,7 +837,7 @@
     </message>
     <message>
         <source>%1 is %2: %3</source>
-        <extracomment>a variable, its IEC type (INT), then why the value does not fit it (English, from the value parser)</extracomment>
+        <extracomment>a variable, its IEC type (INT), then why the value does not fit it</extracomment>
         <translation>%1 est de type %2&#xa0;: %3</translation>
     </message>
     <message>
@@ -882,6 +946,37 @@
     <message>
         <source>Failure procedures</source>
         <translation>Procédures en défaillance</translation>
+    </message>
+</context>
+<context>
+    <name>ValueProblemText</name>
+    <message>
+        <source>&apos;%1&apos; is not an %2 literal: write a whole number such as 42</source>
+        <extracomment>%1: the value as written; %2: INT</extracomment>
+        <translation>&apos;%1&apos; n&apos;est pas un littéral %2&#xa0;: écrivez un nombre entier, par exemple 42</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a %2 literal: write a whole number such as 42</source>
+        <extracomment>%1: the value as written; %2: an integer type other than INT (SINT, UDINT...)</extracomment>
+        <translation>&apos;%1&apos; n&apos;est pas un littéral %2&#xa0;: écrivez un nombre entier, par exemple 42</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; has leading or trailing spaces</source>
+        <translation>&apos;%1&apos; a des espaces au début ou à la fin</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a BOOL literal (TRUE or FALSE)</source>
+        <translation>&apos;%1&apos; n&apos;est pas un littéral BOOL (TRUE ou FALSE)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a %2 literal: write a decimal number such as 1.5 or 2.0E3</source>
+        <extracomment>%1: the value as written; %2: REAL or LREAL</extracomment>
+        <translation>&apos;%1&apos; n&apos;est pas un littéral %2&#xa0;: écrivez un nombre décimal, par exemple 1.5 ou 2.0E3</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is out of range for %2 (%3..%4)</source>
+        <extracomment>%1: the value as written; %2: its IEC type; %3..%4: the type&apos;s range</extracomment>
+        <translation>&apos;%1&apos; est hors limites pour %2 (%3..%4)</translation>
     </message>
 </context>
 <context>

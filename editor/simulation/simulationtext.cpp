@@ -2,6 +2,7 @@
 
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/valueproblemtext.h"
 
 #include "core/diagnostic.h"
 
@@ -146,8 +147,9 @@ QString scenarioErrorMessage(const core::ScenarioError& error)
     case Kind::ScanTooLarge: return SimulationText::tr("scan number %1 is too large").arg(subject);
     case Kind::UnknownVariable: return SimulationText::tr("unknown variable '%1'").arg(subject);
     case Kind::InvalidValue:
-        //: a variable, its IEC type (INT), then why the value does not fit it (English, from the value parser)
-        return SimulationText::tr("%1 is %2: %3").arg(subject, fromStd(error.type), fromStd(error.detail));
+        //: a variable, its IEC type (INT), then why the value does not fit it
+        return SimulationText::tr("%1 is %2: %3")
+            .arg(subject, fromStd(error.type), error.problem ? valueProblemText(*error.problem) : fromStd(error.detail));
     case Kind::HiddenStep: return SimulationText::tr("step %1 is hidden: it does not exist for the simulator").arg(subject);
     case Kind::UnknownStep: return SimulationText::tr("unknown step '%1'").arg(subject);
     case Kind::SimpleStep: return SimulationText::tr("step %1 is a simple step: it has no Complete").arg(subject);

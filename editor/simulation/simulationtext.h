@@ -20,9 +20,7 @@ QString explanationReasonText(const core::ExplanationReason& reason);
 QString scenarioFailureText(const core::ScenarioFailure& failure);
 
 // "s.txt:4:12: expected '=' after the variable name, found 'TRUE'": the
-// location as ScenarioError::toString() writes it, then the message. The
-// reason a value does not fit its type comes from the value parser in
-// English.
+// location as ScenarioError::toString() writes it, then the message.
 QString scenarioErrorText(const core::ScenarioError& error);
 
 } // namespace editor

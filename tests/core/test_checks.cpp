@@ -290,6 +290,10 @@ TEST_CASE("GG204: type error in a condition, with its span", "[checks]")
     CHECK(d.span->begin >= 7);
     CHECK(d.span->end <= 16);
     CHECK(mentions(d, "A2->A1"));
+    // transition, text at the span, English detail, then the type error's kind and pieces.
+    CHECK(d.arguments == std::vector<std::string>{"A2->A1", "Speed + 1",
+                                                  "AND needs BOOL operands, but 'Speed + 1' is an integer",
+                                                  "bool-operands", "AND", "Speed + 1", "integer", "", ""});
 
     REQUIRE(model.setCondition("A2->A1", "Go AND Speed + 1 > 3"));
     CHECK(checkModel(model).empty());
@@ -562,9 +566,9 @@ TEST_CASE("GG304: default value not a literal of the type or out of range", "[ch
     const Diagnostic d = only(diagnostics, "GG304", "Small");
     CHECK(d.severity == Severity::Error);
     CHECK(d.field == "default");
-    REQUIRE(d.arguments.size() == 3);
-    CHECK(d.arguments[0] == "Small");
-    CHECK(d.arguments[1] == "300");
+    // variable, default value, English detail, then the value problem's kind and pieces.
+    CHECK(d.arguments == std::vector<std::string>{"Small", "300", "'300' is out of range for SINT (-128..127)",
+                                                  "out-of-range", "300", "SINT", "-128", "127"});
     CHECK(mentions(d, "'Small'"));
     CHECK(has(diagnostics, "GG304", "Flag"));
     CHECK_FALSE(has(diagnostics, "GG304", "Count"));

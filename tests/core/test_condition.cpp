@@ -703,6 +703,96 @@ TEST_CASE("type check issues carry codes, messages and spans", "[condition]")
     }
 }
 
+TEST_CASE("type errors carry their kind and pieces, and the same English text", "[condition]")
+{
+    using Kind = TypeError::Kind;
+    using Operand = TypeError::Operand;
+    struct Case {
+        std::string text;
+        Kind kind;
+        std::string op;
+        Operand first;
+        Operand second;
+        std::string message; // exact
+    };
+    const std::vector<Case> cases = {
+        {"Speed + 1", Kind::NotBoolCondition, "", {"Speed + 1", "integer"}, {},
+         "a condition must be BOOL, but 'Speed + 1' is an integer"},
+        {"Temp", Kind::NotBoolCondition, "", {"Temp", "real"}, {}, "a condition must be BOOL, but 'Temp' is a real number"},
+        {"NOT Speed", Kind::NotBoolOperand, "NOT", {"Speed", "INT"}, {}, "NOT needs a BOOL operand, but 'Speed' is INT"},
+        {"NOT 2.5", Kind::NotBoolOperand, "NOT", {"2.5", "real"}, {}, "NOT needs a BOOL operand, but '2.5' is a real number"},
+        {"-Start", Kind::NotNumericOperand, "'-'", {"Start", "BOOL"}, {},
+         "unary '-' needs a numeric operand, but 'Start' is BOOL"},
+        {"Speed AND Start", Kind::BoolOperands, "AND", {"Speed", "INT"}, {},
+         "AND needs BOOL operands, but 'Speed' is INT"},
+        {"Start XOR (Speed + 1)", Kind::BoolOperands, "XOR", {"Speed + 1", "integer"}, {},
+         "XOR needs BOOL operands, but 'Speed + 1' is an integer"},
+        {"Start + 1 > 0", Kind::NumericOperands, "'+'", {"Start", "BOOL"}, {},
+         "'+' needs numeric operands, but 'Start' is BOOL"},
+        {"(Start AND Stop) <= 3", Kind::NumericOperands, "'<='", {"Start AND Stop", "BOOL"}, {},
+         "'<=' needs numeric operands, but 'Start AND Stop' is BOOL"},
+        {"Temp MOD 2 > 1", Kind::IntegerOperands, "MOD", {"Temp", "REAL"}, {},
+         "MOD needs integer operands, but 'Temp' is REAL"},
+        {"Start = Speed", Kind::SameKindOperands, "'='", {"Start", "BOOL"}, {"Speed", "INT"},
+         "'=' needs two operands of the same kind, but 'Start' is BOOL and 'Speed' is INT"},
+        {"2.5 <> Stop", Kind::SameKindOperands, "'<>'", {"2.5", "real"}, {"Stop", "BOOL"},
+         "'<>' needs two operands of the same kind, but '2.5' is a real number and 'Stop' is BOOL"},
+        {"Start AND (Count + Count + Count + Count + Count + 1)", Kind::BoolOperands, "AND",
+         {"Count + Count + Count + Count + Count...", "integer"}, {},
+         "AND needs BOOL operands, but 'Count + Count + Count + Count + Count...' is an integer"},
+        {"Speed > 9223372036854775808", Kind::IntegerLiteralRange, "", {"9223372036854775808", ""}, {},
+         "'9223372036854775808' is out of range: integer literals go up to 9223372036854775807 (LINT)"},
+        {"Temp < 1e999", Kind::RealLiteralRange, "", {"1e999", ""}, {},
+         "'1e999' is out of range for LREAL (-1.8E308..1.8E308)"},
+    };
+    for (const Case& c : cases) {
+        INFO("condition: " << c.text);
+        const auto issues = issuesOf(c.text);
+        REQUIRE(issues.size() == 1);
+        CHECK(issues[0].code == "GG204");
+        REQUIRE(issues[0].error.has_value());
+        const TypeError& error = *issues[0].error;
+        CHECK(error.kind == c.kind);
+        CHECK(error.op == c.op);
+        CHECK(error.first == c.first);
+        CHECK(error.second == c.second);
+        CHECK(issues[0].message == c.message);
+        CHECK(toText(error) == c.message);
+
+        // The form GG204 appends to Diagnostic::arguments reads back to the same error.
+        std::vector<std::string> arguments{"A1->F1"};
+        appendArguments(error, arguments);
+        REQUIRE(arguments.size() == 7);
+        CHECK(arguments[1] == kindName(c.kind));
+        const std::optional<TypeError> back = typeErrorFromArguments(arguments, 1);
+        REQUIRE(back.has_value());
+        CHECK(*back == error);
+    }
+
+    // An undeclared variable is GG203, with no type error.
+    const auto undeclared = issuesOf("Unknown OR Start");
+    REQUIRE(undeclared.size() == 1);
+    CHECK_FALSE(undeclared[0].error.has_value());
+
+    // No reachable operand is of unknown type today (an unknown operand raises
+    // no further issue); the kind keeps its text.
+    CHECK(toText(Operand{"x", "unknown"}) == "'x' is of unknown type");
+
+    // Every kind has its own name.
+    std::set<std::string_view> names;
+    for (int k = 0; k <= static_cast<int>(Kind::RealLiteralRange); ++k) {
+        const std::string_view name = kindName(static_cast<Kind>(k));
+        CHECK_FALSE(name.empty());
+        CHECK(typeErrorKind(name) == static_cast<Kind>(k));
+        names.insert(name);
+    }
+    CHECK(names.size() == static_cast<std::size_t>(Kind::RealLiteralRange) + 1);
+
+    // Arguments from elsewhere (an unknown kind, too few) are not read.
+    CHECK_FALSE(typeErrorFromArguments({"unknown-kind", "", "", "", "", ""}, 0));
+    CHECK_FALSE(typeErrorFromArguments({"bool-operands", "AND", "Speed", "INT", ""}, 0));
+}
+
 TEST_CASE("type errors do not cascade and come in source order", "[condition]")
 {
     // The undeclared variable is reported once; the + and > above it stay quiet.

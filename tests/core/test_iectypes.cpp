@@ -2,7 +2,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <set>
 #include <string>
+#include <vector>
 
 using namespace core;
 
@@ -130,6 +132,68 @@ TEST_CASE("real default values", "[iectypes]")
           == "'abc' is not a LREAL literal: write a decimal number such as 1.5 or 2.0E3");
     for (const char* bad : {"1.", ".5", "1.5.3", "1e", "1e+", "1,5", "inf", "nan", "1.5f", "0x1p3"})
         CHECK_FALSE(defaultValueProblem(IecType::Lreal, bad).empty());
+}
+
+TEST_CASE("value problems carry their kind and pieces, and the same English text", "[iectypes]")
+{
+    using Kind = ValueProblem::Kind;
+    struct Case {
+        IecType type;
+        std::string value;
+        ValueProblem problem;
+        std::string message; // exact
+    };
+    const std::vector<Case> cases = {
+        {IecType::Int, " 5", {Kind::Spaces, " 5", "INT", "", ""}, "' 5' has leading or trailing spaces"},
+        {IecType::Bool, "TRUE\t", {Kind::Spaces, "TRUE\t", "BOOL", "", ""}, "'TRUE\t' has leading or trailing spaces"},
+        {IecType::Bool, "yes", {Kind::NotBool, "yes", "BOOL", "", ""}, "'yes' is not a BOOL literal (TRUE or FALSE)"},
+        {IecType::Int, "abc", {Kind::NotInteger, "abc", "INT", "", ""},
+         "'abc' is not an INT literal: write a whole number such as 42"},
+        {IecType::Udint, "1.5", {Kind::NotInteger, "1.5", "UDINT", "", ""},
+         "'1.5' is not a UDINT literal: write a whole number such as 42"},
+        {IecType::Real, "hot", {Kind::NotReal, "hot", "REAL", "", ""},
+         "'hot' is not a REAL literal: write a decimal number such as 1.5 or 2.0E3"},
+        {IecType::Int, "40000", {Kind::OutOfRange, "40000", "INT", "-32768", "32767"},
+         "'40000' is out of range for INT (-32768..32767)"},
+        {IecType::Lint, "-9223372036854775809",
+         {Kind::OutOfRange, "-9223372036854775809", "LINT", "-9223372036854775808", "9223372036854775807"},
+         "'-9223372036854775809' is out of range for LINT (-9223372036854775808..9223372036854775807)"},
+        {IecType::Real, "3.5E38", {Kind::OutOfRange, "3.5E38", "REAL", "-3.4E38", "3.4E38"},
+         "'3.5E38' is out of range for REAL (-3.4E38..3.4E38)"},
+        {IecType::Lreal, "-1e309", {Kind::OutOfRange, "-1e309", "LREAL", "-1.8E308", "1.8E308"},
+         "'-1e309' is out of range for LREAL (-1.8E308..1.8E308)"},
+    };
+    for (const Case& c : cases) {
+        INFO(iecTypeName(c.type) << " " << c.value);
+        const std::optional<ValueProblem> problem = valueProblem(c.type, c.value);
+        REQUIRE(problem.has_value());
+        CHECK(*problem == c.problem);
+        CHECK(toText(*problem) == c.message);
+        CHECK(defaultValueProblem(c.type, c.value) == c.message);
+
+        // The form GG304 appends to Diagnostic::arguments reads back to the same problem.
+        std::vector<std::string> arguments{"Speed"};
+        appendArguments(*problem, arguments);
+        REQUIRE(arguments.size() == 6);
+        CHECK(arguments[1] == kindName(c.problem.kind));
+        CHECK(valueProblemFromArguments(arguments, 1) == problem);
+    }
+    CHECK_FALSE(valueProblem(IecType::Int, "").has_value());
+    CHECK_FALSE(valueProblem(IecType::Int, "-32768").has_value());
+
+    // Every kind has its own name.
+    std::set<std::string_view> names;
+    for (int k = 0; k <= static_cast<int>(Kind::OutOfRange); ++k) {
+        const std::string_view name = kindName(static_cast<Kind>(k));
+        CHECK_FALSE(name.empty());
+        CHECK(valueProblemKind(name) == static_cast<Kind>(k));
+        names.insert(name);
+    }
+    CHECK(names.size() == static_cast<std::size_t>(Kind::OutOfRange) + 1);
+
+    // Arguments from elsewhere (an unknown kind, too few) are not read.
+    CHECK_FALSE(valueProblemFromArguments({"unknown-kind", "1", "INT", "", ""}, 0));
+    CHECK_FALSE(valueProblemFromArguments({"out-of-range", "1", "INT", ""}, 0));
 }
 
 TEST_CASE("parseRealLiteral reads IEC decimals without the C locale", "[iectypes]")

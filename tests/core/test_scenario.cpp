@@ -233,6 +233,11 @@ TEST_CASE("Scenario: unknown names are errors naming the line", "[simulation]")
     }
     CHECK(errors[2].type == "INT");
     CHECK(errors[2].detail == "'40000' is out of range for INT (-32768..32767)");
+    REQUIRE(errors[2].problem.has_value());
+    CHECK(*errors[2].problem == ValueProblem{ValueProblem::Kind::OutOfRange, "40000", "INT", "-32768", "32767"});
+    REQUIRE(errors[1].problem.has_value());
+    CHECK(errors[1].problem->kind == ValueProblem::Kind::NotInteger);
+    CHECK_FALSE(errors[0].problem.has_value());
     CHECK(errors[9].type == "REAL");
 }
 

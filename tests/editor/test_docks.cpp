@@ -7,6 +7,7 @@
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/commands/settokenscommand.h"
 #include "editor/conditionerrortext.h"
+#include "editor/conditiontypeerrortext.h"
 #include "editor/diagnostictext.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/problemsdock.h"
@@ -19,6 +20,11 @@
 #include "editor/languages.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
+#include "editor/valueproblemtext.h"
+
+#include "core/conditionanalysis.h"
+#include "core/conditionparser.h"
+#include "core/symboltable.h"
 
 #include <QAbstractItemView>
 #include <QApplication>
@@ -39,6 +45,7 @@
 #include <QTreeWidget>
 #include <QUndoStack>
 
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -116,6 +123,7 @@ private slots:
     void stPreviewDialectIsUndoable();
     void diagnosticTextTranslatesByCode();
     void syntaxErrorsAreInTheUiLanguage();
+    void typeAndValueErrorsAreInTheUiLanguage();
     void objectNamesForSaveState();
 };
 
@@ -795,6 +803,96 @@ void TestDocks::syntaxErrorsAreInTheUiLanguage()
     newer.arguments[3] = "something-new";
     QVERIFY(diagnosticText(newer).startsWith(QString::fromUtf8("Erreur de syntaxe dans la r\u00e9ceptivit\u00e9")));
     QVERIFY(diagnosticText(newer).contains("expected an operand after 'AND', found ')'"));
+}
+
+// The type checker's errors and the value parser's problems: every kind
+// worded in English as the core words it, and in French in GG204 and GG304.
+void TestDocks::typeAndValueErrorsAreInTheUiLanguage()
+{
+    const std::vector<core::Variable> variables = {
+        {"Go", core::IecType::Bool, "", ""}, {"Speed", core::IecType::Int, "", ""}, {"Temp", core::IecType::Real, "", ""}};
+    const core::SymbolTable symbols(variables);
+    const char* const conditions[] = {
+        "Speed + 1", "NOT Speed", "-Go", "Speed AND Go", "Go + 1 > 0", "Temp MOD 2 > 1", "Go = (Speed * 2.5)",
+        "Speed > 9223372036854775808", "Temp < 1e999",
+    };
+    std::set<core::cond::TypeError::Kind> typeKinds;
+    for (const char* condition : conditions) {
+        const core::cond::ParseResult parsed = core::cond::parse(condition);
+        QVERIFY2(parsed.ok(), condition);
+        const std::vector<core::cond::TypeIssue> issues = core::cond::typeCheck(parsed.expression, symbols);
+        QCOMPARE(issues.size(), std::size_t{1});
+        QVERIFY2(issues.front().error.has_value(), condition);
+        typeKinds.insert(issues.front().error->kind);
+        QCOMPARE(conditionTypeErrorText(*issues.front().error), QString::fromStdString(issues.front().message));
+    }
+    QCOMPARE(typeKinds.size(), std::size(conditions));
+    // No condition gives an operand of unknown type today; the text stays the core's.
+    const core::cond::TypeError unknown{core::cond::TypeError::Kind::NotBoolOperand, "NOT", {"x", "unknown"}, {}};
+    QCOMPARE(conditionTypeErrorText(unknown), QString::fromStdString(core::cond::toText(unknown)));
+
+    const std::pair<core::IecType, const char*> values[] = {
+        {core::IecType::Int, " 5"},  {core::IecType::Bool, "yes"},  {core::IecType::Int, "abc"},
+        {core::IecType::Sint, "abc"}, {core::IecType::Real, "hot"}, {core::IecType::Int, "40000"},
+        {core::IecType::Lreal, "1e309"},
+    };
+    std::set<core::ValueProblem::Kind> valueKinds;
+    for (const auto& [type, value] : values) {
+        const std::optional<core::ValueProblem> problem = core::valueProblem(type, value);
+        QVERIFY2(problem.has_value(), value);
+        valueKinds.insert(problem->kind);
+        QCOMPARE(valueProblemText(*problem), QString::fromStdString(core::toText(*problem)));
+    }
+    QCOMPARE(valueKinds.size(), std::size_t{5});
+
+    Document document;
+    Selection selection;
+    declare(document, "Go");
+    declare(document, "BottleCount", core::IecType::Int);
+    core::Variable limit;
+    limit.name = "Limit";
+    limit.type = core::IecType::Int;
+    limit.defaultValue = "40000";
+    QVERIFY(document.push(new AddVariableCommand(document, limit)));
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "BottleCount AND Go")));
+    const std::vector<core::Diagnostic> onTransition = document.diagnosticsFor(ElementRef::transition("A1->F4"));
+    QCOMPARE(onTransition.size(), std::size_t{1});
+    const core::Diagnostic& typeError = onTransition.front();
+    QCOMPARE(QString::fromStdString(typeError.code), QString("GG204"));
+    QCOMPARE(diagnosticText(typeError),
+             QString("Type error in the condition of A1->F4: AND needs BOOL operands, but 'BottleCount' is INT."));
+    std::optional<core::Diagnostic> defaultError;
+    for (const core::Diagnostic& diagnostic : document.diagnosticsFor(ElementRef::variable("Limit"))) {
+        if (diagnostic.code == "GG304")
+            defaultError = diagnostic;
+    }
+    QVERIFY(defaultError.has_value());
+    QCOMPARE(diagnosticText(*defaultError),
+             QString("The default value of variable 'Limit' is invalid: '40000' is out of range for INT "
+                     "(-32768..32767)."));
+
+    Translators translators;
+    QVERIFY(translators.setLanguage("fr"));
+    const QString frenchType = QString::fromUtf8("Erreur de type dans la r\u00e9ceptivit\u00e9 de A1->F4\u00a0: AND exige "
+                                                 "des op\u00e9randes BOOL, mais 'BottleCount' est de type INT.");
+    QCOMPARE(diagnosticText(typeError), frenchType);
+    QCOMPARE(diagnosticText(*defaultError),
+             QString::fromUtf8("La valeur initiale de la variable 'Limit' est invalide\u00a0: '40000' est hors limites "
+                               "pour INT (-32768..32767)."));
+    // The Problems dock shows them.
+    ProblemsDock problems(&document, &selection);
+    QTreeWidgetItem* item = problemItem(problems.view(), "GG204", "A1 \u2192 F4");
+    QVERIFY(item);
+    QCOMPARE(item->text(ProblemsDock::MessageColumn), frenchType);
+
+    // A kind this editor does not know (a newer core): the English detail in the translated frame.
+    core::Diagnostic newer = typeError;
+    newer.arguments[3] = "something-new";
+    QCOMPARE(diagnosticText(newer), QString::fromUtf8("Erreur de type dans la r\u00e9ceptivit\u00e9 de A1->F4\u00a0: AND "
+                                                      "needs BOOL operands, but 'BottleCount' is INT."));
+    newer = *defaultError;
+    newer.arguments[3] = "something-new";
+    QVERIFY(diagnosticText(newer).endsWith("'40000' is out of range for INT (-32768..32767)."));
 }
 
 void TestDocks::objectNamesForSaveState()

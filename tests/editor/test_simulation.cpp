@@ -485,11 +485,14 @@ void TestSimulation::scenarioErrorsAreInTheUiLanguage()
                                    "après 'expect', trouvé la fin de la ligne"));
     QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
     file.write("at 1: set NoSuchInput = TRUE\n"
-               "at 2: expect step Q7\n");
+               "at 2: expect step Q7\n"
+               "at 3: set BatchSize = 40000\n");
     file.close();
     QVERIFY(!m_session->startReplay(path, &error));
     QCOMPARE(error, QStringLiteral("erreurs.scenario:1:11: variable 'NoSuchInput' inconnue\n"
-                                   "erreurs.scenario:2:19: étape 'Q7' inconnue"));
+                                   "erreurs.scenario:2:19: étape 'Q7' inconnue\n"
+                                   "erreurs.scenario:3:23: BatchSize est de type INT\u00a0: '40000' est hors limites "
+                                   "pour INT (-32768..32767)"));
 }
 
 // The Simulation dock words a condition that does not parse as the Problems dock does.
