@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <unordered_map>
 
 namespace core {
@@ -132,7 +133,13 @@ std::string_view transitionStatusName(TransitionStatus status)
     return "";
 }
 
-struct Simulator::Impl {
+namespace {
+
+// The program compiled from a model: built once, never changed, so copies
+// of a simulator share it (a copy costs only the run-time state).
+struct CompiledProgram {
+    explicit CompiledProgram(const Model& model);
+
     GemmaProgram program;
     int initialNumber = 0;
     int cycleTimeMs = 0;
@@ -143,18 +150,51 @@ struct Simulator::Impl {
     std::vector<Kind> variableKinds;
     std::vector<Cell> defaults;
     std::unordered_map<std::string, int> variableByUpperName;
-    std::vector<Cell> values;
-    std::vector<Cell> valuesAtLastScan;
-    std::vector<int> dirty;          // slots set since the last scan
-    std::vector<char> isDirty;
 
-    // Program.
+    // Steps and transitions; `source` pointers point into `program`.
     std::vector<CompiledStep> steps;
     std::vector<int> stepByNumber; // State value -> index in steps, -1
     std::vector<std::string> tokenNames;
     std::vector<CompiledToken> tokens;
     std::vector<std::string> nestedSteps;
     std::vector<int> nestedStepIndex; // nested index -> index in steps
+    int stackDepth = 1;               // the deepest condition's evaluation stack
+
+private:
+    void compileVariables(const Model& model);
+    void compileProgram();
+    void compileTransition(const GemmaTransition& transition, CompiledTransition& out);
+    bool compileNode(const CompiledTransition& transition, const cond::Expression& expression,
+                     const std::vector<char>& constant, int node, CompiledCondition& out, Kind& kind, int& depth);
+};
+
+} // namespace
+
+struct Simulator::Impl {
+    explicit Impl(const Model& model);
+
+    std::shared_ptr<const CompiledProgram> compiled;
+    // Shorthands into *compiled; a copied Impl's refer to the same program.
+    const GemmaProgram& program = compiled->program;
+    const int& initialNumber = compiled->initialNumber;
+    const int& cycleTimeMs = compiled->cycleTimeMs;
+    const std::vector<std::string>& variableNames = compiled->variableNames;
+    const std::vector<IecType>& variableTypes = compiled->variableTypes;
+    const std::vector<Kind>& variableKinds = compiled->variableKinds;
+    const std::vector<Cell>& defaults = compiled->defaults;
+    const std::unordered_map<std::string, int>& variableByUpperName = compiled->variableByUpperName;
+    const std::vector<CompiledStep>& steps = compiled->steps;
+    const std::vector<int>& stepByNumber = compiled->stepByNumber;
+    const std::vector<std::string>& tokenNames = compiled->tokenNames;
+    const std::vector<CompiledToken>& tokens = compiled->tokens;
+    const std::vector<std::string>& nestedSteps = compiled->nestedSteps;
+    const std::vector<int>& nestedStepIndex = compiled->nestedStepIndex;
+
+    // Variables.
+    std::vector<Cell> values;
+    std::vector<Cell> valuesAtLastScan;
+    std::vector<int> dirty;          // slots set since the last scan
+    std::vector<char> isDirty;
 
     // State.
     int state = 0;
@@ -174,12 +214,6 @@ struct Simulator::Impl {
     std::vector<ScanRecord> trace;
     std::function<void(const ScanRecord&)> callback;
 
-    explicit Impl(const Model& model);
-    void compileVariables(const Model& model);
-    void compileProgram();
-    void compileTransition(const GemmaTransition& transition, CompiledTransition& out);
-    bool compileNode(const CompiledTransition& transition, const cond::Expression& expression,
-                     const std::vector<char>& constant, int node, CompiledCondition& out, Kind& kind, int& depth);
     void reset();
     bool evaluate(const CompiledTransition& transition, const std::vector<char>& tokenState) const;
     cond::Value nodeReading(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
@@ -196,17 +230,26 @@ struct Simulator::Impl {
     ConditionReading reading(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
 };
 
-Simulator::Impl::Impl(const Model& model)
+CompiledProgram::CompiledProgram(const Model& model)
     : program(buildGemmaProgram(model))
     , initialNumber(program.initialNumber)
     , cycleTimeMs(model.settings().cycleTimeMs)
 {
     compileVariables(model);
     compileProgram();
+}
+
+Simulator::Impl::Impl(const Model& model)
+    : compiled(std::make_shared<const CompiledProgram>(model))
+    , isDirty(variableNames.size(), 0)
+    , completeModes(nestedSteps.size(), CompleteMode::Automatic)
+    , manualComplete(nestedSteps.size(), 0)
+    , stack(static_cast<std::size_t>(compiled->stackDepth) + 1)
+{
     reset();
 }
 
-void Simulator::Impl::compileVariables(const Model& model)
+void CompiledProgram::compileVariables(const Model& model)
 {
     for (const Variable& variable : model.variables()) {
         const int slot = static_cast<int>(variableNames.size());
@@ -220,10 +263,9 @@ void Simulator::Impl::compileVariables(const Model& model)
         defaults.push_back(value ? toCell(*value) : Cell{});
         variableByUpperName.emplace(toUpperAscii(variable.name), slot);
     }
-    isDirty.assign(variableNames.size(), 0);
 }
 
-void Simulator::Impl::compileProgram()
+void CompiledProgram::compileProgram()
 {
     int maxNumber = program.initialNumber;
     for (const GemmaStep& step : program.steps)
@@ -258,17 +300,13 @@ void Simulator::Impl::compileProgram()
             compileTransition(transition, steps[i].transitions.back());
         }
     }
-    int depth = 1;
     for (const CompiledStep& step : steps) {
         for (const CompiledTransition& transition : step.transitions)
-            depth = std::max(depth, transition.condition.depth);
+            stackDepth = std::max(stackDepth, transition.condition.depth);
     }
-    stack.resize(static_cast<std::size_t>(depth) + 1);
-    completeModes.assign(nestedSteps.size(), CompleteMode::Automatic);
-    manualComplete.assign(nestedSteps.size(), 0);
 }
 
-void Simulator::Impl::compileTransition(const GemmaTransition& transition, CompiledTransition& out)
+void CompiledProgram::compileTransition(const GemmaTransition& transition, CompiledTransition& out)
 {
     out.source = &transition;
     out.targetNumber = transition.targetNumber;
@@ -325,7 +363,7 @@ void Simulator::Impl::compileTransition(const GemmaTransition& transition, Compi
 
 // Emits postfix code for the subtree at `node`; false when its shape is not
 // one the instruction set covers. `depth` receives the stack depth it needs.
-bool Simulator::Impl::compileNode(const CompiledTransition& transition, const cond::Expression& expression,
+bool CompiledProgram::compileNode(const CompiledTransition& transition, const cond::Expression& expression,
                                   const std::vector<char>& constant, int node, CompiledCondition& out, Kind& kind,
                                   int& depth)
 {
@@ -757,26 +795,10 @@ Simulator::~Simulator() = default;
 Simulator::Simulator(Simulator&&) noexcept = default;
 Simulator& Simulator::operator=(Simulator&&) noexcept = default;
 
-// The compiled program points into the Impl's own GemmaProgram: recompile
-// from the copy so the pointers follow.
+// The copy shares the compiled program; `lastFired` points into it, so it stays valid.
 Simulator::Simulator(const Simulator& other)
     : m_impl(std::make_unique<Impl>(*other.m_impl))
 {
-    Impl& impl = *m_impl;
-    for (std::size_t s = 0; s < impl.steps.size(); ++s) {
-        impl.steps[s].source = &impl.program.steps[s];
-        for (std::size_t t = 0; t < impl.steps[s].transitions.size(); ++t)
-            impl.steps[s].transitions[t].source = &impl.program.steps[s].transitions[t];
-    }
-    if (other.m_impl->lastFired) {
-        impl.lastFired = nullptr;
-        for (std::size_t s = 0; s < other.m_impl->steps.size(); ++s) {
-            for (std::size_t t = 0; t < other.m_impl->steps[s].transitions.size(); ++t) {
-                if (other.m_impl->steps[s].transitions[t].source == other.m_impl->lastFired)
-                    impl.lastFired = impl.steps[s].transitions[t].source;
-            }
-        }
-    }
 }
 
 Simulator& Simulator::operator=(const Simulator& other)

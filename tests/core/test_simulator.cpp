@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -624,6 +625,16 @@ TEST_CASE("Simulator: trace, callback and copies", "[simulation]")
     CHECK(sim.activeStepId() == "A6"); // the original did not move
     Simulator assigned = copy;
     CHECK(assigned.lastFired() == "A6->A1");
+    // Copies share the compiled program: a copy outlives the simulator it came from.
+    std::optional<Simulator> survivor;
+    {
+        Simulator original(copy);
+        survivor.emplace(original);
+    }
+    CHECK(survivor->lastFired() == "A6->A1");
+    CHECK(survivor->activeStepId() == "A1");
+    survivor->run(2);
+    CHECK(survivor->scanCount() == copy.scanCount() + 2);
     sim.reset();
     CHECK(sim.trace().empty());
     CHECK(sim.scanCount() == 0);

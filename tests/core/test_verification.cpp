@@ -602,7 +602,7 @@ TEST_CASE("The symbolic exploration agrees with an explicit one on random models
     int compared = 0;
     int withStuck = 0;
     int withNoReturn = 0;
-    // 12 models: a minute under the sanitizers; the explicit search is the slow side.
+    // 12 models: the explicit search is the slow side (a Simulator copy per state and input).
     for (int round = 0; round < 12; ++round) {
         const core::Model model = randomModel(random);
         const Explicit truth = exploreExplicitly(model, 3000);
