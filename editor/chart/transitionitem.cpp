@@ -71,7 +71,6 @@ TransitionItem::TransitionItem(const Document& document, const core::TransitionL
     const double margin = chartstyle::kHaloWidth + chartstyle::kBarWidth;
     m_bounds = (m_line.boundingRect() | m_arrow.boundingRect() | m_labelRect)
                    .adjusted(-margin, -margin, margin, margin);
-    refresh();
 }
 
 bool TransitionItem::isHiddenInModel() const

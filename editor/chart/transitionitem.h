@@ -24,6 +24,8 @@ class TransitionItem : public QGraphicsItem {
 public:
     enum { Type = QGraphicsItem::UserType + 2 };
 
+    // Shows nothing of the model until refresh(), as a StepItem: the scene
+    // refreshes every item once they are all built.
     TransitionItem(const Document& document, const core::TransitionLayout& layout,
                    QGraphicsItem* parent = nullptr);
 
