@@ -83,12 +83,22 @@ QPixmap pixmap(ToolIcon icon, const QColor& color, int size)
     return result;
 }
 
+// "hicolor" is the fallback every system has, and by the icon theme
+// specification holds application icons only: a lookup there always fails,
+// after scanning its folders for the name and each shorter form of it
+// (about a millisecond per icon, as the docks are first built).
+bool hasActionIconTheme()
+{
+    const QString theme = QIcon::themeName();
+    return !theme.isEmpty() && theme != QLatin1String("hicolor");
+}
+
 } // namespace
 
 QIcon toolIcon(ToolIcon icon, const QWidget* widget)
 {
     const QString name = themeName(icon);
-    if (QIcon::hasThemeIcon(name))
+    if (hasActionIconTheme() && QIcon::hasThemeIcon(name))
         return QIcon::fromTheme(name);
     const QPalette& palette = widget->palette();
     QIcon result;
