@@ -15,6 +15,7 @@
 #include <QScrollBar>
 #include <QSignalBlocker>
 #include <QTextBlock>
+#include <QTextCursor>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -30,6 +31,28 @@ constexpr int kContextLines = 2;
 QString fromStd(const std::string& text)
 {
     return QString::fromStdString(text);
+}
+
+// Replaces only what differs between the document's text and `text` (the
+// span between their common beginning and common end), so that an edit of
+// one condition re-lays out and re-highlights a line or two instead of the
+// whole program, and the view keeps its place.
+void replaceChangedSpan(QPlainTextEdit& editor, const QString& text)
+{
+    const QString old = editor.toPlainText();
+    const qsizetype shorter = std::min(old.size(), text.size());
+    qsizetype prefix = 0;
+    while (prefix < shorter && old[prefix] == text[prefix])
+        ++prefix;
+    qsizetype suffix = 0;
+    while (suffix < shorter - prefix && old[old.size() - 1 - suffix] == text[text.size() - 1 - suffix])
+        ++suffix;
+    QTextCursor cursor(editor.document());
+    cursor.beginEditBlock();
+    cursor.setPosition(static_cast<int>(prefix));
+    cursor.setPosition(static_cast<int>(old.size() - suffix), QTextCursor::KeepAnchor);
+    cursor.insertText(text.mid(prefix, text.size() - prefix - suffix));
+    cursor.endEditBlock();
 }
 
 } // namespace
@@ -80,6 +103,9 @@ StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* 
     m_editor->setParent(content);
     m_editor->setObjectName(QStringLiteral("codeView"));
     m_editor->setReadOnly(true);
+    // The preview is rewritten in place on every edit (replaceChangedSpan):
+    // no history of those rewrites to keep.
+    m_editor->setUndoRedoEnabled(false);
     m_editor->setLineWrapMode(QPlainTextEdit::NoWrap);
     m_editor->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_editor->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
@@ -148,7 +174,7 @@ void StPreviewDock::updatePreview()
         QScrollBar* horizontal = m_editor->horizontalScrollBar();
         const int top = vertical->value();
         const int left = horizontal->value();
-        m_editor->setPlainText(text);
+        replaceChangedSpan(*m_editor, text);
         vertical->setValue(top);
         horizontal->setValue(left);
     }

@@ -4,6 +4,7 @@
 
 #include "editor/commands/addvariablecommand.h"
 #include "editor/commands/setconditioncommand.h"
+#include "editor/commands/setdialectcommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/commands/settokenscommand.h"
 #include "editor/conditionerrortext.h"
@@ -34,6 +35,7 @@
 #include <QHelpEvent>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStackedWidget>
@@ -104,6 +106,7 @@ private slots:
     void stepDockListsTransitionsByPriority();
     void propertyDocksFollowTheirKindAndFocusFields();
     void transitionDockUnderlinesUndeclaredVariable();
+    void transitionDockListsItsProblemsUnderTheFields();
     void conditionTypingIsOneUndoStep();
     void conditionEditCompletesVariableNames();
     void tokenCheckboxesShowPolarity();
@@ -121,6 +124,7 @@ private slots:
     void problemFocusesConditionSpan();
     void stPreviewShowsProgramAndHighlightsStep();
     void stPreviewDialectIsUndoable();
+    void stPreviewRewritesOnlyWhatChanged();
     void diagnosticTextTranslatesByCode();
     void syntaxErrorsAreInTheUiLanguage();
     void typeAndValueErrorsAreInTheUiLanguage();
@@ -264,6 +268,50 @@ void TestDocks::propertyDocksFollowTheirKindAndFocusFields()
     selection.select(ElementRef::transition("A1->Nowhere"), "negated");
     QVERIFY(transitions.transitionId().isEmpty());
     QCOMPARE(transitionPages->currentWidget(), transitionPlaceholder);
+}
+
+namespace {
+
+// The texts of the visible rows of a DiagnosticList.
+QStringList visibleProblemRows(const QWidget* list)
+{
+    QStringList rows;
+    for (const QLabel* label : list->findChildren<QLabel*>()) {
+        if (label->wordWrap() && label->isVisibleTo(list))
+            rows << label->text();
+    }
+    return rows;
+}
+
+} // namespace
+
+void TestDocks::transitionDockListsItsProblemsUnderTheFields()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Start");
+    TransitionDock dock(&document, &selection);
+    dock.resize(340, 600);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    selection.select(ElementRef::transition("A1->F4"));
+    auto* list = child<QWidget>(&dock, "problemList");
+
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "Foo AND Bar")));
+    QTRY_COMPARE(visibleProblemRows(list).size(), 2);
+    QVERIFY(list->isVisible());
+    QStringList rows = visibleProblemRows(list);
+    QVERIFY(rows[0].contains("'Foo'"));
+    QVERIFY(rows[1].contains("'Bar'"));
+
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "Start")));
+    QTRY_VERIFY2(!list->isVisible(), qPrintable(visibleProblemRows(list).join('\n')));
+
+    // Problems that come and go as one types: the list follows.
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "Baz")));
+    QTRY_COMPARE(visibleProblemRows(list).size(), 1);
+    QVERIFY(list->isVisible());
+    QVERIFY(visibleProblemRows(list).constFirst().contains("'Baz'"));
 }
 
 void TestDocks::transitionDockUnderlinesUndeclaredVariable()
@@ -719,6 +767,52 @@ void TestDocks::stPreviewDialectIsUndoable()
     document.undoStack()->undo();
     QCOMPARE(dialect->currentData().toInt(), static_cast<int>(core::Dialect::Iec));
     QTRY_VERIFY(!dock.editor()->toPlainText().contains("GVL.Start"));
+}
+
+void TestDocks::stPreviewRewritesOnlyWhatChanged()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Start");
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "Start")));
+    StPreviewDock dock(&document, &selection);
+    dock.resize(700, 300);
+    dock.show();
+    QPlainTextEdit* code = dock.editor();
+    QTRY_VERIFY(code->toPlainText().contains("CASE State OF"));
+    QScrollBar* vertical = code->verticalScrollBar();
+    QVERIFY(vertical->maximum() > 10);
+    vertical->setValue(vertical->maximum() / 2);
+    const int top = vertical->value();
+
+    const auto generated = [&document] {
+        const core::Model& model = document.model();
+        return QString::fromStdString(core::previewGemmaProgram(model, model.settings().dialect).text);
+    };
+    // The first change an update makes is its text edit; the highlighter's
+    // format changes follow.
+    int changedCharacters = -1;
+    connect(code->document(), &QTextDocument::contentsChange, &dock, [&](int, int removed, int added) {
+        if (changedCharacters < 0)
+            changedCharacters = removed + added;
+    });
+
+    // One condition: the text is exactly the generated one, a few characters changed, the view stays.
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "NOT Start")));
+    QTRY_COMPARE(code->toPlainText(), generated());
+    QVERIFY(changedCharacters > 0);
+    QVERIFY(changedCharacters < 40);
+    QCOMPARE(vertical->value(), top);
+
+    // Shorter again, and a change everywhere (the dialect): still exactly the generated text.
+    QVERIFY(document.push(new SetConditionCommand(document, "A1->F4", "")));
+    QTRY_COMPARE(code->toPlainText(), generated());
+    QVERIFY(document.push(new SetDialectCommand(document, core::Dialect::Codesys)));
+    QTRY_COMPARE(code->toPlainText(), generated());
+    document.undoStack()->undo();
+    QTRY_COMPARE(code->toPlainText(), generated());
+    // The rewrites are not an edit history of the read-only preview.
+    QVERIFY(!code->document()->isUndoAvailable());
 }
 
 void TestDocks::diagnosticTextTranslatesByCode()
