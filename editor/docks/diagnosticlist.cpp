@@ -1,6 +1,7 @@
 #include "editor/docks/diagnosticlist.h"
 
 #include "editor/diagnostictext.h"
+#include "editor/docks/wrappinglabel.h"
 #include "editor/severityicon.h"
 
 #include <QHBoxLayout>
@@ -38,8 +39,7 @@ void DiagnosticList::setDiagnostics(const std::vector<core::Diagnostic>& diagnos
         icon->setPixmap(severityIcon(diagnostic.severity).pixmap(iconSize, iconSize));
         icon->setAlignment(Qt::AlignTop);
         icon->setToolTip(severityText(diagnostic.severity));
-        auto* text = new QLabel(diagnosticText(diagnostic), rowWidget);
-        text->setWordWrap(true);
+        auto* text = new WrappingLabel(diagnosticText(diagnostic), rowWidget);
         text->setTextInteractionFlags(Qt::TextSelectableByMouse);
         text->setToolTip(QString::fromStdString(diagnostic.code));
         row->addWidget(icon, 0, Qt::AlignTop);

@@ -1,6 +1,7 @@
 #include "editor/docks/propertydock.h"
 
 #include "editor/docks/dockreveal.h"
+#include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/selection.h"
 
@@ -23,10 +24,9 @@ PropertyDock::PropertyDock(ElementRef::Kind kind, const QString& title, Document
 void PropertyDock::setPages(const QString& placeholder, QWidget* form)
 {
     m_pages = new QStackedWidget(this);
-    auto* label = new QLabel(placeholder, m_pages);
+    auto* label = new WrappingLabel(placeholder, m_pages);
     label->setObjectName(QStringLiteral("placeholder"));
     label->setAlignment(Qt::AlignCenter);
-    label->setWordWrap(true);
     label->setEnabled(false);
     label->setMargin(12);
     m_pages->addWidget(label);

@@ -8,6 +8,7 @@
 #include "editor/docks/diagnosticlist.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/docks/undoshortcutfilter.h"
+#include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
@@ -83,9 +84,8 @@ QWidget* StepDock::createForm()
     idFont.setBold(true);
     idFont.setPointSizeF(idFont.pointSizeF() * 1.3);
     m_idLabel->setFont(idFont);
-    m_nameLabel = new QLabel(form);
+    m_nameLabel = new WrappingLabel(form);
     m_nameLabel->setObjectName(QStringLiteral("nameLabel"));
-    m_nameLabel->setWordWrap(true);
     m_nameLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     header->addWidget(m_idLabel, 0, Qt::AlignTop);
     header->addWidget(m_nameLabel, 1);

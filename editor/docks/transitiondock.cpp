@@ -9,6 +9,7 @@
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/diagnosticlist.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/selection.h"
 #include "editor/statenames.h"
@@ -39,8 +40,7 @@ QString fromStd(const std::string& text)
 
 QLabel* hintLabel(QWidget* parent)
 {
-    auto* label = new QLabel(parent);
-    label->setWordWrap(true);
+    auto* label = new WrappingLabel(parent);
     QFont font = label->font();
     font.setPointSizeF(font.pointSizeF() * 0.9);
     label->setFont(font);

@@ -17,6 +17,7 @@
 #include "editor/docks/transitiondock.h"
 #include "editor/docks/variablesdock.h"
 #include "editor/docks/variablestablemodel.h"
+#include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/languages.h"
 #include "editor/selection.h"
@@ -125,6 +126,7 @@ private slots:
     void stPreviewShowsProgramAndHighlightsStep();
     void stPreviewDialectIsUndoable();
     void stPreviewRewritesOnlyWhatChanged();
+    void wrappingLabelHeightFollowsTextAndFont();
     void diagnosticTextTranslatesByCode();
     void syntaxErrorsAreInTheUiLanguage();
     void typeAndValueErrorsAreInTheUiLanguage();
@@ -813,6 +815,32 @@ void TestDocks::stPreviewRewritesOnlyWhatChanged()
     QTRY_COMPARE(code->toPlainText(), generated());
     // The rewrites are not an edit history of the read-only preview.
     QVERIFY(!code->document()->isUndoAvailable());
+}
+
+void TestDocks::wrappingLabelHeightFollowsTextAndFont()
+{
+    const QString text = QStringLiteral("In the condition of A1->F4: 'Foo' is not a declared variable, "
+                                        "nor is 'Bar', and the condition is empty otherwise.");
+    WrappingLabel label(text);
+    QLabel plain(text);
+    plain.setWordWrap(true);
+    QVERIFY(label.wordWrap());
+    for (int width : {80, 160, 320, 80, 640, 160})
+        QCOMPARE(label.heightForWidth(width), plain.heightForWidth(width));
+    const int oneLine = label.heightForWidth(2000);
+    QVERIFY(label.heightForWidth(80) > oneLine);
+
+    // A new text, a bigger font: new heights, not the remembered ones.
+    label.setText(text + QStringLiteral(" ") + text);
+    plain.setText(label.text());
+    QCOMPARE(label.heightForWidth(160), plain.heightForWidth(160));
+    QFont bigger = label.font();
+    bigger.setPointSizeF(bigger.pointSizeF() * 2);
+    label.setFont(bigger);
+    plain.setFont(bigger);
+    QCOMPARE(label.heightForWidth(160), plain.heightForWidth(160));
+    QCOMPARE(label.heightForWidth(2000), plain.heightForWidth(2000));
+    QVERIFY(label.heightForWidth(2000) > oneLine);
 }
 
 void TestDocks::diagnosticTextTranslatesByCode()
