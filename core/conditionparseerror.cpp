@@ -1,5 +1,7 @@
 #include "core/conditionparseerror.h"
 
+#include "core/enumnames.h"
+
 #include <charconv>
 #include <cstdio>
 
@@ -9,13 +11,8 @@ namespace {
 
 using Kind = ParseError::Kind;
 
-struct KindName {
-    Kind kind;
-    std::string_view name;
-};
-
 // The names are part of the arguments' contract: never rename one.
-constexpr KindName kKindNames[] = {
+constexpr EnumName<Kind> kKindNames[] = {
     {Kind::Empty, "empty"},
     {Kind::Comment, "comment"},
     {Kind::ColonEquals, "colon-equals"},
@@ -141,20 +138,12 @@ std::string toText(const ParseError& error)
 
 std::string_view kindName(ParseError::Kind kind)
 {
-    for (const KindName& entry : kKindNames) {
-        if (entry.kind == kind)
-            return entry.name;
-    }
-    return {};
+    return nameIn(kKindNames, kind);
 }
 
 std::optional<ParseError::Kind> parseErrorKind(std::string_view name)
 {
-    for (const KindName& entry : kKindNames) {
-        if (entry.name == name)
-            return entry.kind;
-    }
-    return std::nullopt;
+    return valueIn(kKindNames, name);
 }
 
 void appendArguments(const ParseError& error, std::vector<std::string>& arguments)

@@ -1,18 +1,15 @@
 #include "core/conditiontypeerror.h"
 
+#include "core/enumnames.h"
+
 namespace core::cond {
 
 namespace {
 
 using Kind = TypeError::Kind;
 
-struct KindName {
-    Kind kind;
-    std::string_view name;
-};
-
 // The names are part of the arguments' contract: never rename one.
-constexpr KindName kKindNames[] = {
+constexpr EnumName<Kind> kKindNames[] = {
     {Kind::NotBoolCondition, "not-bool-condition"},
     {Kind::NotBoolOperand, "not-bool-operand"},
     {Kind::NotNumericOperand, "not-numeric-operand"},
@@ -70,20 +67,12 @@ std::string toText(const TypeError& error)
 
 std::string_view kindName(TypeError::Kind kind)
 {
-    for (const KindName& entry : kKindNames) {
-        if (entry.kind == kind)
-            return entry.name;
-    }
-    return {};
+    return nameIn(kKindNames, kind);
 }
 
 std::optional<TypeError::Kind> typeErrorKind(std::string_view name)
 {
-    for (const KindName& entry : kKindNames) {
-        if (entry.name == name)
-            return entry.kind;
-    }
-    return std::nullopt;
+    return valueIn(kKindNames, name);
 }
 
 void appendArguments(const TypeError& error, std::vector<std::string>& arguments)

@@ -1,18 +1,15 @@
 #include "core/valueproblem.h"
 
+#include "core/enumnames.h"
+
 namespace core {
 
 namespace {
 
 using Kind = ValueProblem::Kind;
 
-struct KindName {
-    Kind kind;
-    std::string_view name;
-};
-
 // The names are part of the arguments' contract: never rename one.
-constexpr KindName kKindNames[] = {
+constexpr EnumName<Kind> kKindNames[] = {
     {Kind::Spaces, "spaces"},
     {Kind::NotBool, "not-bool"},
     {Kind::NotInteger, "not-integer"},
@@ -48,20 +45,12 @@ std::string toText(const ValueProblem& problem)
 
 std::string_view kindName(ValueProblem::Kind kind)
 {
-    for (const KindName& entry : kKindNames) {
-        if (entry.kind == kind)
-            return entry.name;
-    }
-    return {};
+    return nameIn(kKindNames, kind);
 }
 
 std::optional<ValueProblem::Kind> valueProblemKind(std::string_view name)
 {
-    for (const KindName& entry : kKindNames) {
-        if (entry.name == name)
-            return entry.kind;
-    }
-    return std::nullopt;
+    return valueIn(kKindNames, name);
 }
 
 void appendArguments(const ValueProblem& problem, std::vector<std::string>& arguments)
