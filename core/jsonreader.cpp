@@ -1,6 +1,7 @@
 #include "core/jsonreader.h"
 
 #include "core/fileio.h"
+#include "core/model.h"
 
 #include <cmath>
 #include <unordered_set>
@@ -184,6 +185,21 @@ std::optional<json> parseStrictJson(std::string_view text, JsonReadError& error)
         return std::nullopt;
     }
     return root;
+}
+
+std::variant<std::unique_ptr<Model>, LoadError> loadModelJson(
+    std::string_view text, const std::string& displayName,
+    const std::function<std::unique_ptr<Model>(const json&)>& build)
+{
+    JsonReadError error;
+    const std::optional<json> root = parseStrictJson(text, error);
+    if (!root)
+        return LoadError{displayName, error.location, error.message};
+    try {
+        return build(*root);
+    } catch (const JsonReadError& failure) {
+        return LoadError{displayName, failure.location, failure.message};
+    }
 }
 
 void failAt(std::string path, std::string message)

@@ -5,14 +5,21 @@
 // errors with a location) plus typed accessors whose errors name the JSON
 // path ("/steps/F1/hidden: expected true or false, found \"yes\"").
 
+#include "core/loaderror.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 
 namespace core {
+
+class Model;
 
 inline constexpr std::size_t kMaxJsonDepth = 64;
 
@@ -27,6 +34,12 @@ struct JsonReadError {
 // Fails on invalid UTF-8, nesting deeper than kMaxJsonDepth, malformed JSON
 // (with line and column) and duplicate object keys (with their JSON path).
 std::optional<nlohmann::ordered_json> parseStrictJson(std::string_view text, JsonReadError& error);
+
+// A model file's loading: parseStrictJson, then `build` on the root (which
+// throws JsonReadError); either failure becomes a LoadError for `displayName`.
+std::variant<std::unique_ptr<Model>, LoadError> loadModelJson(
+    std::string_view text, const std::string& displayName,
+    const std::function<std::unique_ptr<Model>(const nlohmann::ordered_json&)>& build);
 
 // The typed accessors below throw JsonReadError; loaders catch it at their
 // boundary so it never escapes the core API.

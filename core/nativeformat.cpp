@@ -281,15 +281,7 @@ std::string saveNativeJson(const Model& model)
 
 std::variant<std::unique_ptr<Model>, LoadError> loadNativeJson(std::string_view text, const std::string& displayName)
 {
-    JsonReadError error;
-    const std::optional<json> root = parseStrictJson(text, error);
-    if (!root)
-        return LoadError{displayName, error.location, error.message};
-    try {
-        return buildModel(*root);
-    } catch (const JsonReadError& failure) {
-        return LoadError{displayName, failure.location, failure.message};
-    }
+    return loadModelJson(text, displayName, buildModel);
 }
 
 bool looksLikeNativeJson(std::string_view text)
