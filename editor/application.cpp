@@ -4,6 +4,7 @@
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/settings.h"
+#include "editor/windowbuttonstyle.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -14,6 +15,8 @@ namespace editor {
 int runApplication(int argc, char** argv, const StartupHooks& hooks)
 {
     QApplication app(argc, argv);
+    // Before any widget exists, so that every one is built with it.
+    WindowButtonStyle::install();
     // Where QSettings and autosave keep their files.
     QApplication::setOrganizationName(QStringLiteral("GG Studio"));
     QApplication::setApplicationName(QStringLiteral("GG Studio"));

@@ -1,6 +1,7 @@
 #include "editor/severityicon.h"
 
-#include <QIconEngine>
+#include "editor/drawniconengine.h"
+
 #include <QPainter>
 #include <QPainterPath>
 
@@ -10,52 +11,33 @@ namespace editor {
 
 namespace {
 
-// Draws the mark in any size, so the icon is sharp at every device pixel ratio.
-class SeverityIconEngine : public QIconEngine {
+class SeverityIconEngine : public DrawnIconEngine {
 public:
     explicit SeverityIconEngine(core::Severity severity)
         : m_severity(severity)
     {
     }
 
-    void paint(QPainter* painter, const QRect& rect, QIcon::Mode mode, QIcon::State) override
-    {
-        const qreal side = std::min(rect.width(), rect.height());
-        if (side <= 0)
-            return;
-        painter->save();
-        painter->setRenderHint(QPainter::Antialiasing);
-        painter->translate(rect.center() - QPointF(side / 2.0, side / 2.0) + QPointF(0.5, 0.5));
-        painter->scale(side / 16.0, side / 16.0); // drawn on a 16 x 16 grid
-        if (mode == QIcon::Disabled)
-            painter->setOpacity(0.45);
-        switch (m_severity) {
-        case core::Severity::Error:
-            drawError(*painter);
-            break;
-        case core::Severity::Warning:
-            drawWarning(*painter);
-            break;
-        case core::Severity::Info:
-            drawInfo(*painter);
-            break;
-        }
-        painter->restore();
-    }
-
-    // QIconEngine's own leaves the pixmap uninitialised around the drawing.
-    // QIcon asks for device pixels here and sets the pixel ratio itself.
-    QPixmap pixmap(const QSize& size, QIcon::Mode mode, QIcon::State state) override
-    {
-        QPixmap pixmap(size);
-        pixmap.fill(Qt::transparent);
-        QPainter painter(&pixmap);
-        paint(&painter, QRect(QPoint(0, 0), size), mode, state);
-        return pixmap;
-    }
-
     QIconEngine* clone() const override { return new SeverityIconEngine(m_severity); }
     QString key() const override { return QStringLiteral("ggstudio-severity"); }
+
+protected:
+    void draw(QPainter& painter, QIcon::Mode mode) const override
+    {
+        if (mode == QIcon::Disabled)
+            painter.setOpacity(0.45);
+        switch (m_severity) {
+        case core::Severity::Error:
+            drawError(painter);
+            break;
+        case core::Severity::Warning:
+            drawWarning(painter);
+            break;
+        case core::Severity::Info:
+            drawInfo(painter);
+            break;
+        }
+    }
 
 private:
     static void drawError(QPainter& painter)

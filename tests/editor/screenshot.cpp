@@ -22,6 +22,7 @@
 #include "editor/selection.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/verificationrunner.h"
+#include "editor/windowbuttonstyle.h"
 
 #include <QAction>
 #include <QApplication>
@@ -84,6 +85,7 @@ int grabDialog(QWidget& window, const QString& actionName, const QString& out)
 int main(int argc, char* argv[])
 {
     QApplication app(argc, argv);
+    editor::WindowButtonStyle::install(); // as the application does
     QTemporaryDir settingsDir;
     QStandardPaths::setTestModeEnabled(true);
     QSettings::setDefaultFormat(QSettings::IniFormat);

@@ -22,6 +22,7 @@
 #include "editor/simulation/simulationsession.h"
 #include "editor/recentfiles.h"
 #include "editor/statusindicators.h"
+#include "editor/windowbuttonstyle.h"
 
 #include "core/modelfiles.h"
 
@@ -30,11 +31,13 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QComboBox>
+#include <QCommonStyle>
 #include <QDir>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
+#include <QStyleFactory>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -164,6 +167,9 @@ private slots:
     void translatorLoadsFrench();
     void languageChangeRetranslatesMenus();
     void frenchMenuTitles();
+    void windowButtonsAreDrawn();
+    // Last: it replaces the application's style.
+    void windowButtonStyleWrapsQtsOwnStyles();
 
 private:
     static void discardRecoveries()
@@ -690,6 +696,71 @@ void TestMainWindow::frenchMenuTitles()
     auto* fileMenu = m_window->findChild<QMenu*>(QStringLiteral("fileMenu"));
     QVERIFY(fileMenu);
     QCOMPARE(fileMenu->title(), expected);
+}
+
+namespace {
+
+// A style that counts the standard icons asked of it.
+class CountingStyle : public QCommonStyle {
+public:
+    QIcon standardIcon(StandardPixmap standardIcon, const QStyleOption* option,
+                       const QWidget* widget) const override
+    {
+        ++calls;
+        return QCommonStyle::standardIcon(standardIcon, option, widget);
+    }
+
+    mutable int calls = 0;
+};
+
+} // namespace
+
+void TestMainWindow::windowButtonsAreDrawn()
+{
+    auto* counting = new CountingStyle;
+    const WindowButtonStyle style(counting); // owns `counting`
+    for (const QStyle::StandardPixmap glyph :
+         {QStyle::SP_TitleBarCloseButton, QStyle::SP_DockWidgetCloseButton, QStyle::SP_TitleBarNormalButton,
+          QStyle::SP_ToolBarHorizontalExtensionButton, QStyle::SP_ToolBarVerticalExtensionButton}) {
+        const QImage image = style.standardIcon(glyph).pixmap(QSize(32, 32)).toImage();
+        QCOMPARE(image.size(), QSize(32, 32));
+        QCOMPARE(qAlpha(image.pixel(0, 0)), 0); // drawn on transparency
+        int inked = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x)
+                inked += qAlpha(image.pixel(x, y)) > 128 ? 1 : 0;
+        }
+        QVERIFY2(inked > 20, qPrintable(QString::number(glyph)));
+    }
+    QCOMPARE(counting->calls, 0); // none of them asked of the base style
+
+    style.standardIcon(QStyle::SP_MessageBoxWarning);
+    QCOMPARE(counting->calls, 1); // everything else is the base style's
+}
+
+void TestMainWindow::windowButtonStyleWrapsQtsOwnStyles()
+{
+    QVERIFY(WindowButtonStyle::appliesTo(QStringLiteral("fusion")));
+    QVERIFY(WindowButtonStyle::appliesTo(QStringLiteral("Windows")));
+    QVERIFY(!WindowButtonStyle::appliesTo(QStringLiteral("breeze")));
+
+    m_window.reset();
+    const QString chosen = QApplication::style()->name();
+    QVERIFY(WindowButtonStyle::appliesTo(chosen)); // offscreen runs Fusion
+    WindowButtonStyle::install();
+    auto* installed = qobject_cast<WindowButtonStyle*>(QApplication::style());
+    QVERIFY(installed);
+    QCOMPARE(installed->baseStyle()->name(), chosen);
+
+    // A window built under it: its docks' title buttons show the drawn glyphs.
+    m_window = std::make_unique<MainWindow>(*m_translators);
+    auto* dock = m_window->findChild<QDockWidget*>(QStringLiteral("stepDock"));
+    QVERIFY(dock);
+    auto* close = dock->findChild<QAbstractButton*>(QStringLiteral("qt_dockwidget_closebutton"));
+    QVERIFY(close);
+    const QImage shown = close->icon().pixmap(QSize(16, 16)).toImage();
+    const QImage drawn = installed->standardIcon(QStyle::SP_TitleBarCloseButton).pixmap(QSize(16, 16)).toImage();
+    QCOMPARE(shown, drawn);
 }
 
 QTEST_MAIN(TestMainWindow)

@@ -1,0 +1,113 @@
+#include "editor/windowbuttonstyle.h"
+
+#include "editor/drawniconengine.h"
+
+#include <QApplication>
+#include <QPainter>
+#include <QStyleFactory>
+#include <QStyleOption>
+
+namespace editor {
+
+namespace {
+
+enum class Glyph { Close, Float, ArrowRight, ArrowLeft, ArrowDown };
+
+// A glyph in the palette's text colour.
+class WindowButtonIconEngine : public DrawnIconEngine {
+public:
+    explicit WindowButtonIconEngine(Glyph glyph)
+        : m_glyph(glyph)
+    {
+    }
+
+    QIconEngine* clone() const override { return new WindowButtonIconEngine(m_glyph); }
+
+    QString key() const override { return QStringLiteral("ggstudio-window-button"); }
+
+protected:
+    void draw(QPainter& painter, QIcon::Mode mode) const override
+    {
+        const QPalette::ColorGroup group = mode == QIcon::Disabled ? QPalette::Disabled : QPalette::Active;
+        const QColor ink = QGuiApplication::palette().color(group, QPalette::WindowText);
+        painter.setPen(QPen(ink, 1.3, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter.setBrush(Qt::NoBrush);
+        drawGlyph(painter);
+    }
+
+private:
+    void drawGlyph(QPainter& painter) const
+    {
+        switch (m_glyph) {
+        case Glyph::Close:
+            painter.drawLine(QPointF(4.5, 4.5), QPointF(10.5, 10.5));
+            painter.drawLine(QPointF(10.5, 4.5), QPointF(4.5, 10.5));
+            return;
+        case Glyph::Float:
+            // A window in front of another: the one behind shows its top and right.
+            painter.drawPolyline(QPolygonF({QPointF(5.5, 5.0), QPointF(5.5, 3.0), QPointF(12.0, 3.0),
+                                            QPointF(12.0, 9.5), QPointF(10.0, 9.5)}));
+            painter.drawRect(QRectF(3.0, 5.5, 6.5, 6.5));
+            return;
+        case Glyph::ArrowRight:
+        case Glyph::ArrowLeft:
+        case Glyph::ArrowDown:
+            painter.translate(7.5, 7.5);
+            painter.rotate(m_glyph == Glyph::ArrowLeft ? 180 : m_glyph == Glyph::ArrowDown ? 90 : 0);
+            for (const qreal x : {-3.5, 0.5}) // a double chevron, as overflow arrows are drawn
+                painter.drawPolyline(QPolygonF({QPointF(x, -3.5), QPointF(x + 3.0, 0.0), QPointF(x, 3.5)}));
+            return;
+        }
+    }
+
+    Glyph m_glyph;
+};
+
+bool rightToLeft(const QStyleOption* option)
+{
+    return option ? option->direction == Qt::RightToLeft : QGuiApplication::isRightToLeft();
+}
+
+} // namespace
+
+WindowButtonStyle::WindowButtonStyle(QStyle* base)
+    : QProxyStyle(base)
+{
+}
+
+QIcon WindowButtonStyle::standardIcon(StandardPixmap standardIcon, const QStyleOption* option,
+                                      const QWidget* widget) const
+{
+    switch (standardIcon) {
+    case SP_TitleBarCloseButton:
+    case SP_DockWidgetCloseButton:
+        return QIcon(new WindowButtonIconEngine(Glyph::Close));
+    case SP_TitleBarNormalButton:
+        return QIcon(new WindowButtonIconEngine(Glyph::Float));
+    case SP_ToolBarHorizontalExtensionButton:
+        return QIcon(new WindowButtonIconEngine(rightToLeft(option) ? Glyph::ArrowLeft : Glyph::ArrowRight));
+    case SP_ToolBarVerticalExtensionButton:
+        return QIcon(new WindowButtonIconEngine(Glyph::ArrowDown));
+    default:
+        return QProxyStyle::standardIcon(standardIcon, option, widget);
+    }
+}
+
+bool WindowButtonStyle::appliesTo(const QString& styleName)
+{
+    return styleName.compare(QLatin1String("fusion"), Qt::CaseInsensitive) == 0
+        || styleName.compare(QLatin1String("windows"), Qt::CaseInsensitive) == 0;
+}
+
+void WindowButtonStyle::install()
+{
+    const QString name = QApplication::style()->name();
+    if (!appliesTo(name))
+        return;
+    // A new instance of the style chosen (by -style, QT_STYLE_OVERRIDE or the
+    // desktop), so that the application's own one is replaced, not shared.
+    if (QStyle* base = QStyleFactory::create(name))
+        QApplication::setStyle(new WindowButtonStyle(base));
+}
+
+} // namespace editor

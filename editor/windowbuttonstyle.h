@@ -1,0 +1,35 @@
+#pragma once
+
+#include <QProxyStyle>
+
+namespace editor {
+
+// Qt's own styles (Fusion, Windows) with the small window-button glyphs
+// drawn instead of loaded: the close and float buttons of dock title bars
+// and the overflow arrow of menu bars and tool bars.
+//
+// Those styles load the glyphs from PNG files, and the first PNG read goes
+// through QImageReader, which loads every installed image-format plugin
+// (GIF, JPEG, SVG, TIFF, WebP... and with KDE's image formats a dozen more,
+// each with its libraries) to ask whether it reads PNG. The dock title
+// bars are in the first frame, so that cost was paid before the chart
+// showed. Drawn glyphs also stay sharp at any scale. Platform styles
+// (Breeze, ...) draw their own buttons and are left as they are.
+class WindowButtonStyle : public QProxyStyle {
+    Q_OBJECT
+
+public:
+    // `base`: the style to follow; the proxy takes it over.
+    explicit WindowButtonStyle(QStyle* base);
+
+    QIcon standardIcon(StandardPixmap standardIcon, const QStyleOption* option = nullptr,
+                       const QWidget* widget = nullptr) const override;
+
+    // Whether the style named `styleName` ("fusion", "Windows") is one of Qt's own.
+    static bool appliesTo(const QString& styleName);
+
+    // Wraps the application's style when it is one of Qt's own; once, at start-up.
+    static void install();
+};
+
+} // namespace editor
