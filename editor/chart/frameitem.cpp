@@ -1,6 +1,7 @@
 #include "editor/chart/frameitem.h"
 
 #include "editor/chart/chartstyle.h"
+#include "editor/chart/segmentstroke.h"
 #include "editor/chart/layoutconversion.h"
 #include "editor/statenames.h"
 
@@ -32,9 +33,9 @@ QRectF FrameItem::boundingRect() const
 
 void FrameItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
+    painter->fillRect(m_rect, chartstyle::frameFillColor(m_family));
     painter->setPen(QPen(chartstyle::frameBorderColor(m_family), chartstyle::kStrokeWidth));
-    painter->setBrush(chartstyle::frameFillColor(m_family));
-    painter->drawRect(m_rect);
+    segmentstroke::drawRectOutline(painter, m_rect);
 
     painter->setPen(chartstyle::frameBorderColor(m_family).darker(150));
     painter->setFont(chartstyle::titleFont());

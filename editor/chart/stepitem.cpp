@@ -1,6 +1,7 @@
 #include "editor/chart/stepitem.h"
 
 #include "editor/chart/chartstyle.h"
+#include "editor/chart/segmentstroke.h"
 #include "editor/document.h"
 #include "editor/statenames.h"
 
@@ -127,8 +128,8 @@ void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
     if (step.hidden)
         pen.setStyle(Qt::DashLine);
     painter->setPen(pen);
-    painter->setBrush(m_active ? chartstyle::activeFillColor() : chartstyle::stepFillColor());
-    painter->drawRect(m_box);
+    painter->fillRect(m_box, m_active ? chartstyle::activeFillColor() : chartstyle::stepFillColor());
+    segmentstroke::drawRectOutline(painter, m_box);
     painter->setBrush(Qt::NoBrush);
 
     // The type marks go inside the inner square of an initial step.
@@ -136,7 +137,7 @@ void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
     if (step.initial) {
         const double inset = chartstyle::kInitialInset;
         symbol.adjust(inset, inset, -inset, -inset);
-        painter->drawRect(symbol);
+        segmentstroke::drawRectOutline(painter, symbol);
     }
     if (step.type == core::StepType::Macro) {
         const double y1 = symbol.top() + chartstyle::kMacroInset;

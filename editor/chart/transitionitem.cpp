@@ -1,6 +1,7 @@
 #include "editor/chart/transitionitem.h"
 
 #include "editor/chart/chartstyle.h"
+#include "editor/chart/segmentstroke.h"
 #include "editor/chart/layoutconversion.h"
 #include "editor/document.h"
 
@@ -232,7 +233,7 @@ void TransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* op
              hidden ? Qt::DashLine : Qt::SolidLine, Qt::FlatCap, Qt::MiterJoin);
     painter->setPen(pen);
     painter->setBrush(Qt::NoBrush);
-    painter->drawPolyline(m_line);
+    segmentstroke::drawPolyline(painter, m_line);
     pen.setStyle(Qt::SolidLine);
     painter->setPen(pen);
     painter->setBrush(ink);
