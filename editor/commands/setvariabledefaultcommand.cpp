@@ -8,9 +8,7 @@ namespace editor {
 
 SetVariableDefaultCommand::SetVariableDefaultCommand(Document& document, const QString& name,
                                                      const QString& value)
-    : ModelCommand(document, tr("Set default of %1").arg(name))
-    , m_name(toStdString(name))
-    , m_value(toStdString(value))
+    : VariableTextCommand(document, tr("Set default of %1").arg(name), name, value)
 {
 }
 
@@ -19,28 +17,14 @@ int SetVariableDefaultCommand::id() const
     return SetVariableDefaultId;
 }
 
-bool SetVariableDefaultCommand::mergeWith(const QUndoCommand* other)
+std::string SetVariableDefaultCommand::field(const core::Variable& variable) const
 {
-    const auto* next = static_cast<const SetVariableDefaultCommand*>(other); // same id()
-    if (!core::equalsIgnoreCase(next->m_name, m_name)) // IEC names ignore case
-        return false;
-    m_value = next->m_value;
-    setObsolete(m_value == m_previous); // typed back to where it started
-    return true;
+    return variable.defaultValue;
 }
 
-core::Status SetVariableDefaultCommand::apply()
+core::Status SetVariableDefaultCommand::setField(const std::string& name, const std::string& value)
 {
-    if (firstRun()) {
-        if (const core::Variable* variable = model().variable(m_name))
-            m_previous = variable->defaultValue;
-    }
-    return model().setVariableDefault(m_name, m_value);
-}
-
-core::Status SetVariableDefaultCommand::revert()
-{
-    return model().setVariableDefault(m_name, m_previous);
+    return model().setVariableDefault(name, value);
 }
 
 } // namespace editor

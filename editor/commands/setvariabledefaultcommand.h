@@ -1,28 +1,22 @@
 #pragma once
 
-#include "editor/commands/modelcommand.h"
+#include "editor/commands/variabletextcommand.h"
 
 #include <QCoreApplication>
 
 namespace editor {
 
-// "Set default of Speed". Consecutive edits of the same variable's default merge into one
-// undo step, so typing undoes as a whole.
-class SetVariableDefaultCommand : public ModelCommand {
+// "Set default of Speed"; typing in the same default merges.
+class SetVariableDefaultCommand : public VariableTextCommand {
     Q_DECLARE_TR_FUNCTIONS(SetVariableDefaultCommand)
 
 public:
     SetVariableDefaultCommand(Document& document, const QString& name, const QString& value);
     int id() const override;
-    bool mergeWith(const QUndoCommand* other) override;
 
 private:
-    core::Status apply() override;
-    core::Status revert() override;
-
-    std::string m_name;
-    std::string m_value;
-    std::string m_previous;
+    std::string field(const core::Variable& variable) const override;
+    core::Status setField(const std::string& name, const std::string& value) override;
 };
 
 } // namespace editor
