@@ -1,6 +1,8 @@
 // The GEMMA chart: items built from the template layout, kept in step with
 // the Document and the Selection.
 
+#include "editortestsupport.h"
+
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
 #include "editor/chart/frameitem.h"
@@ -24,6 +26,7 @@
 #include <QUndoStack>
 
 using namespace editor;
+using editortest::countItems;
 
 namespace {
 
@@ -35,16 +38,6 @@ core::Variable boolVariable(const char* name)
     return variable;
 }
 
-template <typename Item>
-int countItems(const QGraphicsScene& scene)
-{
-    int count = 0;
-    for (QGraphicsItem* item : scene.items()) {
-        if (item->type() == Item::Type)
-            ++count;
-    }
-    return count;
-}
 
 } // namespace
 

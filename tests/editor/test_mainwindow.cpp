@@ -2,6 +2,8 @@
 // PLCopen export of the GUI, the dock layout, undo texts and the runtime
 // language switch.
 
+#include "editortestsupport.h"
+
 #include "editor/autosave.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
@@ -55,19 +57,10 @@
 #include <memory>
 
 using namespace editor;
+using editortest::countItems;
 
 namespace {
 
-template <typename Item>
-int countItems(const QGraphicsScene& scene)
-{
-    int count = 0;
-    for (QGraphicsItem* item : scene.items()) {
-        if (item->type() == Item::Type)
-            ++count;
-    }
-    return count;
-}
 
 // Wraps every text of the editor's classes in brackets, to see which texts
 // are retranslated without needing a finished translation.
@@ -187,13 +180,9 @@ private:
 void TestMainWindow::initTestCase()
 {
     // Keep the user's settings and autosave folder out of the tests.
-    QStandardPaths::setTestModeEnabled(true);
     QVERIFY(m_settingsDir.isValid());
     QVERIFY(m_files.isValid());
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-    QCoreApplication::setOrganizationName(QStringLiteral("GG Studio Tests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_mainwindow"));
+    editortest::useTestSettings(m_settingsDir.path(), QStringLiteral("test_mainwindow"));
     discardRecoveries(); // left by an interrupted run
 }
 
@@ -201,9 +190,7 @@ void TestMainWindow::init()
 {
     m_translators = std::make_unique<Translators>();
     m_translators->setLanguage(QStringLiteral("en"));
-    m_window = std::make_unique<MainWindow>(*m_translators);
-    m_window->resize(1366, 768);
-    m_window->show();
+    m_window = editortest::showMainWindow(*m_translators);
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
 }
 

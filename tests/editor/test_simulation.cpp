@@ -5,6 +5,8 @@
 
 #include "modelfactory.h"
 
+#include "editortestsupport.h"
+
 #include "editor/chart/chartscene.h"
 #include "editor/chart/stepitem.h"
 #include "editor/chart/transitionitem.h"
@@ -118,13 +120,9 @@ private:
 
 void TestSimulation::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
     QVERIFY(m_settingsDir.isValid());
     QVERIFY(m_files.isValid());
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-    QCoreApplication::setOrganizationName(QStringLiteral("GG Studio Tests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_simulation"));
+    editortest::useTestSettings(m_settingsDir.path(), QStringLiteral("test_simulation"));
 }
 
 void TestSimulation::init()
@@ -137,9 +135,7 @@ void TestSimulation::init()
 // The window in the translators' language, shown, with its session and dock.
 void TestSimulation::openWindow()
 {
-    m_window = std::make_unique<MainWindow>(*m_translators);
-    m_window->resize(1366, 768);
-    m_window->show();
+    m_window = editortest::showMainWindow(*m_translators);
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
     m_session = m_window->simulationSession();
     m_dock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));

@@ -7,6 +7,8 @@
 
 #include "modelfactory.h"
 
+#include "editortestsupport.h"
+
 #include "editor/commands/setconditioncommand.h"
 #include "editor/diagnostictext.h"
 #include "editor/docks/problemsdock.h"
@@ -107,21 +109,15 @@ private:
 
 void TestVerification::initTestCase()
 {
-    QStandardPaths::setTestModeEnabled(true);
     QVERIFY(m_settingsDir.isValid());
-    QSettings::setDefaultFormat(QSettings::IniFormat);
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, m_settingsDir.path());
-    QCoreApplication::setOrganizationName(QStringLiteral("GG Studio Tests"));
-    QCoreApplication::setApplicationName(QStringLiteral("test_verification"));
+    editortest::useTestSettings(m_settingsDir.path(), QStringLiteral("test_verification"));
 }
 
 void TestVerification::init()
 {
     m_translators = std::make_unique<Translators>();
     m_translators->setLanguage(QStringLiteral("en"));
-    m_window = std::make_unique<MainWindow>(*m_translators);
-    m_window->resize(1366, 768);
-    m_window->show();
+    m_window = editortest::showMainWindow(*m_translators);
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
     m_runner = m_window->verificationRunner();
     m_dock = m_window->findChild<ProblemsDock*>(QStringLiteral("problemsDock"));

@@ -1,0 +1,51 @@
+#pragma once
+
+// What the editor's window tests share: settings kept away from the user's,
+// a shown main window, counting chart items.
+
+#include "editor/mainwindow.h"
+
+#include <QCoreApplication>
+#include <QGraphicsItem>
+#include <QGraphicsScene>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QString>
+
+#include <memory>
+
+namespace editortest {
+
+// QSettings in INI files under `folder`, and the autosave folder in
+// QStandardPaths' test location, so that no test reads or writes the user's.
+inline void useTestSettings(const QString& folder, const QString& testName)
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, folder);
+    QCoreApplication::setOrganizationName(QStringLiteral("GG Studio Tests"));
+    QCoreApplication::setApplicationName(testName);
+}
+
+// The main window at the size of the smallest screen GG Studio is laid out
+// for, shown; the caller waits for it to be exposed (QTest::qWaitForWindowExposed).
+inline std::unique_ptr<editor::MainWindow> showMainWindow(editor::Translators& translators)
+{
+    auto window = std::make_unique<editor::MainWindow>(translators);
+    window->resize(1366, 768);
+    window->show();
+    return window;
+}
+
+template <typename Item>
+int countItems(const QGraphicsScene& scene)
+{
+    int count = 0;
+    for (QGraphicsItem* item : scene.items()) {
+        if (item->type() == Item::Type)
+            ++count;
+    }
+    return count;
+}
+
+} // namespace editortest
