@@ -30,6 +30,11 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QTextDocumentFragment>
+#include <QTabBar>
+#include <QRegularExpression>
+#include <QGroupBox>
+#include <QAbstractItemView>
 #include <QApplication>
 #include <QDockWidget>
 #include <QComboBox>
@@ -54,6 +59,8 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <cctype>
+#include <functional>
 #include <memory>
 
 using namespace editor;
@@ -61,9 +68,9 @@ using editortest::countItems;
 
 namespace {
 
-
-// Wraps every text of the editor's classes in brackets, to see which texts
-// are retranslated without needing a finished translation.
+// Wraps every text of GG Studio in brackets, to see which texts are
+// retranslated without needing a finished translation. Qt's own texts
+// (contexts "QShortcut", "QDialogButtonBox"...) are left alone.
 class BracketTranslator : public QTranslator {
 public:
     QString translate(const char* context, const char* sourceText, const char* disambiguation = nullptr,
@@ -71,7 +78,8 @@ public:
     {
         Q_UNUSED(disambiguation)
         Q_UNUSED(n)
-        if (!QByteArray(context).startsWith("editor::"))
+        const QByteArray name(context);
+        if (name.size() > 1 && name[0] == 'Q' && std::isupper(static_cast<unsigned char>(name[1])))
             return {};
         return QStringLiteral("[%1]").arg(QString::fromUtf8(sourceText));
     }
@@ -111,6 +119,64 @@ private:
         box->close();
     }
 };
+
+// Whether `text` is language: it has letters and is not an element id, an
+// IEC type name or a key name.
+bool isLanguage(const QString& text)
+{
+    static const QRegularExpression notLanguage(
+        QStringLiteral(R"(^([A-Z][0-9](->[A-Z][0-9])?|F->D1|[A-Z]+|[A-Z]{2}[0-9]{3}|[-+]?[0-9.,]+ ?%?|Ctrl\+.*)$)"));
+    const QString plain = QTextDocumentFragment::fromHtml(text).toPlainText().trimmed();
+    const bool hasLetters = std::any_of(plain.begin(), plain.end(), [](QChar c) { return c.isLetter(); });
+    return hasLetters && !notLanguage.match(plain).hasMatch();
+}
+
+using TextCheck = std::function<void(const QObject* owner, const QString& what, const QString& text)>;
+
+// Passes each text `widget` shows to `check`.
+void checkWidgetTexts(const QWidget& widget, const TextCheck& check)
+{
+    check(&widget, QStringLiteral("tooltip"), widget.toolTip());
+    if (const auto* label = qobject_cast<const QLabel*>(&widget))
+        check(label, QStringLiteral("text"), label->text());
+    if (const auto* button = qobject_cast<const QAbstractButton*>(&widget))
+        check(button, QStringLiteral("text"), button->text());
+    if (const auto* edit = qobject_cast<const QLineEdit*>(&widget))
+        check(edit, QStringLiteral("placeholder"), edit->placeholderText());
+    if (const auto* box = qobject_cast<const QGroupBox*>(&widget))
+        check(box, QStringLiteral("title"), box->title());
+    if (const auto* tabs = qobject_cast<const QTabBar*>(&widget)) {
+        for (int i = 0; i < tabs->count(); ++i)
+            check(tabs, QStringLiteral("tab"), tabs->tabText(i));
+    }
+    if (const auto* view = qobject_cast<const QAbstractItemView*>(&widget); view && view->model()) {
+        for (int column = 0; column < view->model()->columnCount(); ++column)
+            check(view, QStringLiteral("header"), view->model()->headerData(column, Qt::Horizontal).toString());
+    }
+    if (const auto* combo = qobject_cast<const QComboBox*>(&widget)) {
+        for (int i = 0; i < combo->count(); ++i)
+            check(combo, QStringLiteral("item"), combo->itemText(i));
+    }
+}
+
+// The texts of the window's docks and status bar that carry no bracket,
+// each as "class name (what): text". The menus have a test of their own.
+QStringList untranslatedWindowTexts(const QMainWindow& window)
+{
+    QStringList found;
+    const TextCheck check = [&found](const QObject* owner, const QString& what, const QString& text) {
+        if (isLanguage(text) && !text.contains(QLatin1Char('[')))
+            found << QStringLiteral("%1 %2 (%3): %4")
+                         .arg(QString::fromLatin1(owner->metaObject()->className()), owner->objectName(), what, text);
+    };
+    for (const QDockWidget* dock : window.findChildren<QDockWidget*>())
+        check(dock, QStringLiteral("title"), dock->windowTitle());
+    for (const QWidget* widget : window.findChildren<QWidget*>()) {
+        if (!qobject_cast<const QMenu*>(widget) && !qobject_cast<const QMenuBar*>(widget))
+            checkWidgetTexts(*widget, check);
+    }
+    return found;
+}
 
 core::Model namedModel(const std::string& name)
 {
@@ -159,6 +225,8 @@ private slots:
     void recoveryIsOffered();
     void translatorLoadsFrench();
     void languageChangeRetranslatesMenus();
+    void languageChangeRetranslatesEveryWindowText_data();
+    void languageChangeRetranslatesEveryWindowText();
     void frenchMenuTitles();
     void windowButtonsAreDrawn();
     // Last: it replaces the application's style.
@@ -667,6 +735,32 @@ void TestMainWindow::languageChangeRetranslatesMenus()
     QCOMPARE(fileMenu->title(), QStringLiteral("&File"));
     QTRY_COMPARE(m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"))->windowTitle(),
                  QStringLiteral("Problems"));
+}
+
+// Every text the docks and the status bar show, on every tab and page,
+// follows a change of language: after the switch each one carries the bracket translator's
+// brackets, unless it is not language at all (an element id, a type name, a
+// number).
+void TestMainWindow::languageChangeRetranslatesEveryWindowText_data()
+{
+    QTest::addColumn<ElementRef>("selected");
+    QTest::newRow("step") << ElementRef::step(QStringLiteral("F1"));
+    QTest::newRow("transition with a problem") << ElementRef::transition(QStringLiteral("F1->A2"));
+}
+
+void TestMainWindow::languageChangeRetranslatesEveryWindowText()
+{
+    QFETCH(ElementRef, selected);
+    m_window->selection()->select(selected);
+    BracketTranslator translator;
+    QCoreApplication::installTranslator(&translator);
+    QCoreApplication::processEvents();
+    QTRY_COMPARE(m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"))->windowTitle(),
+                 QStringLiteral("[Problems]"));
+
+    const QStringList untranslated = untranslatedWindowTexts(*m_window);
+    QCoreApplication::removeTranslator(&translator);
+    QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join(QLatin1Char('\n'))));
 }
 
 void TestMainWindow::frenchMenuTitles()
