@@ -215,7 +215,7 @@ void MainWindow::stopWatchingFirstFrame()
 void MainWindow::ensureDocksReady()
 {
     if (!docksReady())
-        rebuildDocks();
+        replaceDockFrames();
 }
 
 void MainWindow::deleteDocks()
@@ -233,14 +233,10 @@ void MainWindow::deleteDocks()
     m_dockFrames.clear();
 }
 
-// The docks set their texts when they are built, so a new language builds
-// them again, in the place and size the user gave them. Only what they show
-// of the document and the selection matters, and that comes back. The empty
-// frames of a deferred start are replaced the same way.
-void MainWindow::rebuildDocks()
+// The empty frames of a deferred start give way to the docks, in the place
+// and size the frames had (the saved layout included).
+void MainWindow::replaceDockFrames()
 {
-    m_docksRebuildPending = false;
-    const bool replacingFrames = !docksReady();
     const QByteArray state = saveState();
     for (QDockWidget* dock : docks())
         m_viewMenu->removeAction(dock->toggleViewAction());
@@ -249,12 +245,7 @@ void MainWindow::rebuildDocks()
     restoreState(state);
     applyEditingLock();
     m_viewMenu->insertActions(m_dockActionsEnd, toggleViewActions());
-    if (replacingFrames) {
-        emit docksBecameReady();
-        return;
-    }
-    // The chart paints its frame titles in the current language.
-    m_scene->update();
+    emit docksBecameReady();
 }
 
 QList<QAction*> MainWindow::toggleViewActions() const
@@ -452,13 +443,10 @@ void MainWindow::saveLayout()
 void MainWindow::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) {
+        // The docks retranslate themselves (the event goes on to them); the
+        // chart paints its frame titles in the current language.
         retranslate();
-        // Later: the event is still on its way to the docks, and one switch
-        // of language sends several.
-        if (!m_docksRebuildPending) {
-            m_docksRebuildPending = true;
-            QMetaObject::invokeMethod(this, &MainWindow::rebuildDocks, Qt::QueuedConnection);
-        }
+        m_scene->update();
     }
     QMainWindow::changeEvent(event);
 }

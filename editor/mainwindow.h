@@ -92,7 +92,7 @@ private:
     void arrangeDocks(const QList<QDockWidget*>& docks);
     QDockWidget* dockNamed(const QString& objectName) const;
     void deleteDocks();
-    void rebuildDocks();
+    void replaceDockFrames();
     // Builds the docks' contents now if they were deferred.
     void ensureDocksReady();
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -183,7 +183,6 @@ private:
     QAction* m_aboutQtAction = nullptr;
     QActionGroup* m_languageGroup = nullptr;
     QAction* m_dockActionsEnd = nullptr; // the separator after the docks in the View menu
-    bool m_docksRebuildPending = false;
     // The empty frames that stand for the docks until their contents are built.
     QList<QDockWidget*> m_dockFrames;
     // The chart's viewport until its first paint (DockContents::AfterFirstFrame).

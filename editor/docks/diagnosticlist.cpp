@@ -4,6 +4,7 @@
 #include "editor/docks/wrappinglabel.h"
 #include "editor/severityicon.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QStyle>
@@ -25,12 +26,24 @@ void DiagnosticList::setDiagnostics(const std::vector<core::Diagnostic>& diagnos
     if (diagnostics == m_diagnostics)
         return; // no flicker while typing leaves the problems as they are
     m_diagnostics = diagnostics;
+    rebuildRows();
+}
+
+void DiagnosticList::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        rebuildRows(); // the messages are worded when the rows are built
+    QWidget::changeEvent(event);
+}
+
+void DiagnosticList::rebuildRows()
+{
     while (QLayoutItem* item = m_layout->takeAt(0)) {
         delete item->widget(); // a row and its labels
         delete item;
     }
     const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, this);
-    for (const core::Diagnostic& diagnostic : diagnostics) {
+    for (const core::Diagnostic& diagnostic : m_diagnostics) {
         auto* rowWidget = new QWidget(this);
         auto* row = new QHBoxLayout(rowWidget);
         row->setContentsMargins(0, 0, 0, 0);
@@ -46,7 +59,7 @@ void DiagnosticList::setDiagnostics(const std::vector<core::Diagnostic>& diagnos
         row->addWidget(text, 1);
         m_layout->addWidget(rowWidget);
     }
-    setVisible(!diagnostics.empty());
+    setVisible(!m_diagnostics.empty());
 }
 
 } // namespace editor

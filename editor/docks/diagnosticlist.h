@@ -22,7 +22,12 @@ public:
     void setDiagnostics(const std::vector<core::Diagnostic>& diagnostics);
     int count() const { return static_cast<int>(m_diagnostics.size()); }
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
+    void rebuildRows();
+
     QVBoxLayout* m_layout;
     std::vector<core::Diagnostic> m_diagnostics;
 };

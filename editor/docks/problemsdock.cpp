@@ -10,6 +10,7 @@
 
 #include <QAction>
 #include <QClipboard>
+#include <QEvent>
 #include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -115,7 +116,6 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
     m_view->setParent(content);
     m_view->setObjectName(QStringLiteral("problemsView"));
     m_view->setColumnCount(3);
-    m_view->setHeaderLabels({ tr("Code"), tr("Element"), tr("Message") });
     m_view->setRootIsDecorated(false);
     m_view->setUniformRowHeights(true);
     m_view->setAllColumnsShowFocus(true);
@@ -126,9 +126,9 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
     m_view->header()->resizeSection(ElementColumn, 110);
     m_view->setToolTip(QString());
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
-    auto* copyAction = new QAction(tr("&Copy"), m_view);
-    connect(copyAction, &QAction::triggered, this, &ProblemsDock::copySelected);
-    m_view->addAction(copyAction);
+    m_copyAction = new QAction(m_view);
+    connect(m_copyAction, &QAction::triggered, this, &ProblemsDock::copySelected);
+    m_view->addAction(m_copyAction);
     connect(m_view, &QTreeWidget::itemActivated, this, &ProblemsDock::activate);
     layout->addWidget(m_view, 1);
     if (m_verification) {
@@ -148,6 +148,22 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
 
     connect(m_document, &Document::diagnosticsChanged, this, &ProblemsDock::refresh);
     connect(m_document, &Document::modelReset, this, &ProblemsDock::refresh);
+    retranslate();
+}
+
+void ProblemsDock::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QDockWidget::changeEvent(event);
+}
+
+// The messages too: they are worded in the UI language when listed.
+void ProblemsDock::retranslate()
+{
+    setWindowTitle(title());
+    m_view->setHeaderLabels({ tr("Code"), tr("Element"), tr("Message") });
+    m_copyAction->setText(tr("&Copy"));
     refresh();
 }
 

@@ -43,7 +43,11 @@ public:
     // Selects the element of a problem row and asks to focus its field.
     void activate(QTreeWidgetItem* item);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
+    void retranslate();
     QToolButton* createFilterButton(core::Severity severity, const QString& objectName);
     void refresh();
     void updateFilterButtons();
@@ -55,6 +59,7 @@ private:
     Document* m_document;
     Selection* m_selection;
     QTreeWidget* m_view;
+    QAction* m_copyAction = nullptr;
     QToolButton* m_errorsButton = nullptr;
     QToolButton* m_warningsButton = nullptr;
     QToolButton* m_infoButton = nullptr;

@@ -7,6 +7,7 @@
 
 #include "core/model.h"
 
+#include <QEvent>
 #include <QLabel>
 #include <QStackedWidget>
 
@@ -21,15 +22,15 @@ PropertyDock::PropertyDock(ElementRef::Kind kind, const QString& title, Document
 {
 }
 
-void PropertyDock::setPages(const QString& placeholder, QWidget* form)
+void PropertyDock::setPages(QWidget* form)
 {
     m_pages = new QStackedWidget(this);
-    auto* label = new WrappingLabel(placeholder, m_pages);
-    label->setObjectName(QStringLiteral("placeholder"));
-    label->setAlignment(Qt::AlignCenter);
-    label->setEnabled(false);
-    label->setMargin(12);
-    m_pages->addWidget(label);
+    m_placeholder = new WrappingLabel(m_pages);
+    m_placeholder->setObjectName(QStringLiteral("placeholder"));
+    m_placeholder->setAlignment(Qt::AlignCenter);
+    m_placeholder->setEnabled(false);
+    m_placeholder->setMargin(12);
+    m_pages->addWidget(m_placeholder);
     m_pages->addWidget(form);
     setWidget(m_pages);
 
@@ -40,6 +41,20 @@ void PropertyDock::setPages(const QString& placeholder, QWidget* form)
     connect(m_selection, &Selection::changed, this, &PropertyDock::onSelectionChanged);
     connect(m_selection, &Selection::focusFieldRequested, this, &PropertyDock::onFocusFieldRequested);
     onSelectionChanged(m_selection->current());
+}
+
+void PropertyDock::setPlaceholder(const QString& text)
+{
+    m_placeholder->setText(text);
+}
+
+void PropertyDock::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange && m_pages) {
+        retranslate();
+        refresh();
+    }
+    QDockWidget::changeEvent(event);
 }
 
 void PropertyDock::refresh()

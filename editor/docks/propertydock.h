@@ -10,12 +10,14 @@ namespace editor {
 
 class Document;
 class Selection;
+class WrappingLabel;
 
 // A dock for the properties of the selected element of one kind (a step, a
 // transition): a placeholder while the selection is something else, the
 // dock's form otherwise. It follows the selection, refreshes as the document
-// changes and reveals itself to focus a field on Selection::focusFieldRequested;
-// each dock supplies its form, how it fills it and which widget a field is.
+// changes, reveals itself to focus a field on Selection::focusFieldRequested
+// and follows a change of language; each dock supplies its form, how it
+// fills it, its texts and which widget a field is.
 class PropertyDock : public QDockWidget {
     Q_OBJECT
 
@@ -24,8 +26,12 @@ protected:
                  QWidget* parent);
 
     // At the end of the dock's constructor, once refreshForm() can run:
-    // shows `placeholder` or `form`, and starts following the selection.
-    void setPages(const QString& placeholder, QWidget* form);
+    // shows the placeholder or `form`, and starts following the selection.
+    void setPages(QWidget* form);
+    // What the dock says while no element of its kind is selected.
+    void setPlaceholder(const QString& text);
+
+    void changeEvent(QEvent* event) override;
 
     Document* document() const { return m_document; }
     Selection* selection() const { return m_selection; }
@@ -37,6 +43,9 @@ protected:
     void refresh();
 
 private:
+    // The texts that do not depend on the element, in the UI language; the
+    // constructor calls it too. refreshForm() follows on a change of language.
+    virtual void retranslate() = 0;
     // Runs only while the element exists.
     virtual void refreshForm() = 0;
     // `field` as Selection::focusFieldRequested names it; the dock is revealed.
@@ -51,6 +60,7 @@ private:
     Selection* m_selection;
     QString m_elementId;
     QStackedWidget* m_pages = nullptr;
+    WrappingLabel* m_placeholder = nullptr;
 };
 
 } // namespace editor

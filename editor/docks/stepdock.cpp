@@ -39,9 +39,9 @@ QString fromStd(const std::string& text)
     return QString::fromStdString(text);
 }
 
-QLabel* sectionLabel(const QString& text, QWidget* parent)
+QLabel* sectionLabel(QWidget* parent)
 {
-    auto* label = new QLabel(text, parent);
+    auto* label = new QLabel(parent);
     QFont font = label->font();
     font.setBold(true);
     label->setFont(font);
@@ -67,7 +67,32 @@ StepDock::StepDock(Document* document, Selection* selection, QWidget* parent)
 {
     setObjectName(QStringLiteral("stepDock"));
     // No scroll area: the transition lists take the height there is.
-    setPages(tr("Select a step in the chart to see and edit its properties."), createForm());
+    setPages(createForm());
+    retranslate();
+}
+
+void StepDock::retranslate()
+{
+    setWindowTitle(title());
+    setPlaceholder(tr("Select a step in the chart to see and edit its properties."));
+    for (int i = 0; i < m_typeCombo->count(); ++i)
+        m_typeCombo->setItemText(i, stepTypeText(static_cast<core::StepType>(m_typeCombo->itemData(i).toInt())));
+    m_typeCombo->setToolTip(tr("Simple step: no nested behaviour.\n"
+                               "Macro-step: its transitions wait until the nested behaviour is complete.\n"
+                               "Enclosing step: its transitions fire whatever the nested behaviour is doing."));
+    m_typeLabel->setText(tr("&Type:"));
+    m_initialCheck->setText(tr("&Initial"));
+    m_hiddenCheck->setText(tr("&Hidden"));
+    m_hiddenCheck->setToolTip(tr("A hidden step is not part of this machine: it generates no code, and its "
+                                 "transitions are not effective."));
+    m_commentLabel->setText(tr("&Comment:"));
+    m_commentEdit->setPlaceholderText(tr("What this state does on this machine"));
+    m_incomingHeading->setText(tr("Incoming transitions"));
+    m_outgoingHeading->setText(tr("Outgoing transitions, by priority"));
+    for (QTreeWidget* list : {m_incomingList, m_outgoingList}) {
+        list->setHeaderLabels({tr("Transition"), tr("Condition")});
+        list->setToolTip(tr("Click a transition to select it"));
+    }
 }
 
 QWidget* StepDock::createForm()
@@ -99,21 +124,18 @@ QWidget* StepDock::createForm()
     m_typeCombo = new QComboBox(form);
     m_typeCombo->setObjectName(QStringLiteral("typeCombo"));
     for (core::StepType type : { core::StepType::Simple, core::StepType::Macro, core::StepType::Enclosing })
-        m_typeCombo->addItem(stepTypeText(type), static_cast<int>(type));
-    m_typeCombo->setToolTip(tr("Simple step: no nested behaviour.\n"
-                               "Macro-step: its transitions wait until the nested behaviour is complete.\n"
-                               "Enclosing step: its transitions fire whatever the nested behaviour is doing."));
+        m_typeCombo->addItem(QString(), static_cast<int>(type));
     connect(m_typeCombo, &QComboBox::currentIndexChanged, this, &StepDock::onTypeChosen);
-    fields->addRow(tr("&Type:"), m_typeCombo);
+    m_typeLabel = new QLabel(form);
+    m_typeLabel->setBuddy(m_typeCombo);
+    fields->addRow(m_typeLabel, m_typeCombo);
 
     auto* flags = new QHBoxLayout;
-    m_initialCheck = new QCheckBox(tr("&Initial"), form);
+    m_initialCheck = new QCheckBox(form);
     m_initialCheck->setObjectName(QStringLiteral("initialCheck"));
     connect(m_initialCheck, &QCheckBox::toggled, this, &StepDock::onInitialToggled);
-    m_hiddenCheck = new QCheckBox(tr("&Hidden"), form);
+    m_hiddenCheck = new QCheckBox(form);
     m_hiddenCheck->setObjectName(QStringLiteral("hiddenCheck"));
-    m_hiddenCheck->setToolTip(tr("A hidden step is not part of this machine: it generates no code, and its "
-                                 "transitions are not effective."));
     connect(m_hiddenCheck, &QCheckBox::toggled, this, &StepDock::onHiddenToggled);
     flags->addWidget(m_initialCheck);
     flags->addWidget(m_hiddenCheck);
@@ -128,13 +150,17 @@ QWidget* StepDock::createForm()
     m_commentEdit->setFixedHeight(linesHeight(m_commentEdit, 3));
     UndoShortcutFilter::install(m_commentEdit);
     connect(m_commentEdit, &QPlainTextEdit::textChanged, this, &StepDock::onCommentEdited);
-    fields->addRow(tr("&Comment:"), m_commentEdit);
+    m_commentLabel = new QLabel(form);
+    m_commentLabel->setBuddy(m_commentEdit);
+    fields->addRow(m_commentLabel, m_commentEdit);
     layout->addLayout(fields);
 
-    layout->addWidget(sectionLabel(tr("Incoming transitions"), form));
+    m_incomingHeading = sectionLabel(form);
+    layout->addWidget(m_incomingHeading);
     m_incomingList = createTransitionList(QStringLiteral("incomingList"));
     layout->addWidget(m_incomingList, 1);
-    layout->addWidget(sectionLabel(tr("Outgoing transitions, by priority"), form));
+    m_outgoingHeading = sectionLabel(form);
+    layout->addWidget(m_outgoingHeading);
     m_outgoingList = createTransitionList(QStringLiteral("outgoingList"));
     layout->addWidget(m_outgoingList, 2);
 
@@ -149,14 +175,12 @@ QTreeWidget* StepDock::createTransitionList(const QString& objectName)
     auto* list = new QTreeWidget;
     list->setObjectName(objectName);
     list->setColumnCount(2);
-    list->setHeaderLabels({ tr("Transition"), tr("Condition") });
     list->setRootIsDecorated(false);
     list->setUniformRowHeights(true);
     list->setAllColumnsShowFocus(true);
     list->setMinimumHeight(linesHeight(list, 4));
     list->header()->setStretchLastSection(true);
     list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
-    list->setToolTip(tr("Click a transition to select it"));
     connect(list, &QTreeWidget::itemClicked, this, &StepDock::onTransitionClicked);
     connect(list, &QTreeWidget::itemActivated, this, &StepDock::onTransitionClicked);
     return list;

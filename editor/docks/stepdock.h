@@ -36,6 +36,7 @@ public:
 private:
     QWidget* createForm();
     QTreeWidget* createTransitionList(const QString& objectName);
+    void retranslate() override;
     void refreshForm() override;
     void focusField(const QString& field) override;
     void refreshTransitions();
@@ -52,10 +53,14 @@ private:
     QLabel* m_idLabel = nullptr;
     QLabel* m_nameLabel = nullptr;
     QLabel* m_familyLabel = nullptr;
+    QLabel* m_typeLabel = nullptr;
     QComboBox* m_typeCombo = nullptr;
     QCheckBox* m_initialCheck = nullptr;
     QCheckBox* m_hiddenCheck = nullptr;
+    QLabel* m_commentLabel = nullptr;
     QPlainTextEdit* m_commentEdit = nullptr;
+    QLabel* m_incomingHeading = nullptr;
+    QLabel* m_outgoingHeading = nullptr;
     QTreeWidget* m_incomingList = nullptr;
     QTreeWidget* m_outgoingList = nullptr;
     DiagnosticList* m_problemList = nullptr;

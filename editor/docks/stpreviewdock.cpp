@@ -8,6 +8,7 @@
 #include "core/model.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -66,6 +67,7 @@ StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* 
     : QDockWidget(title(), parent)
     , m_document(document)
     , m_selection(selection)
+    , m_dialectLabel(new QLabel)
     , m_dialectCombo(new QComboBox)
     , m_noteLabel(new QLabel)
     , m_editor(new QPlainTextEdit)
@@ -80,21 +82,17 @@ StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* 
     layout->setSpacing(0);
     auto* bar = new QHBoxLayout;
     bar->setContentsMargins(6, 3, 6, 3);
-    auto* dialectLabel = new QLabel(tr("&Dialect:"), content);
-    dialectLabel->setBuddy(m_dialectCombo);
+    m_dialectLabel->setParent(content);
+    m_dialectLabel->setBuddy(m_dialectCombo);
     m_dialectCombo->setParent(content);
     m_dialectCombo->setObjectName(QStringLiteral("dialectCombo"));
-    m_dialectCombo->addItem(tr("IEC 61131-3"), static_cast<int>(core::Dialect::Iec));
-    m_dialectCombo->addItem(tr("CODESYS"), static_cast<int>(core::Dialect::Codesys));
-    m_dialectCombo->setItemData(
-        0, tr("Beremiz, OpenPLC, TwinCAT, matiec: globals in the configuration"), Qt::ToolTipRole);
-    m_dialectCombo->setItemData(1, tr("CODESYS V3.5: globals in the list GVL, read as GVL.Name"), Qt::ToolTipRole);
-    m_dialectCombo->setToolTip(tr("The flavour of the generated code; saved with the model"));
+    m_dialectCombo->addItem(QString(), static_cast<int>(core::Dialect::Iec));
+    m_dialectCombo->addItem(QString(), static_cast<int>(core::Dialect::Codesys));
     connect(m_dialectCombo, &QComboBox::currentIndexChanged, this, &StPreviewDock::onDialectChosen);
     m_noteLabel->setParent(content);
     m_noteLabel->setObjectName(QStringLiteral("noteLabel"));
     m_noteLabel->setForegroundRole(QPalette::PlaceholderText);
-    bar->addWidget(dialectLabel);
+    bar->addWidget(m_dialectLabel);
     bar->addWidget(m_dialectCombo);
     bar->addSpacing(8);
     bar->addWidget(m_noteLabel, 1);
@@ -137,6 +135,27 @@ StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* 
     connect(m_document, &Document::modelReset, this, &StPreviewDock::refreshDialect);
     connect(m_selection, &Selection::changed, this, &StPreviewDock::onSelectionChanged);
     refreshDialect();
+    retranslate();
+}
+
+void StPreviewDock::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QDockWidget::changeEvent(event);
+}
+
+void StPreviewDock::retranslate()
+{
+    setWindowTitle(title());
+    m_dialectLabel->setText(tr("&Dialect:"));
+    m_dialectCombo->setItemText(0, tr("IEC 61131-3"));
+    m_dialectCombo->setItemText(1, tr("CODESYS"));
+    m_dialectCombo->setItemData(
+        0, tr("Beremiz, OpenPLC, TwinCAT, matiec: globals in the configuration"), Qt::ToolTipRole);
+    m_dialectCombo->setItemData(1, tr("CODESYS V3.5: globals in the list GVL, read as GVL.Name"), Qt::ToolTipRole);
+    m_dialectCombo->setToolTip(tr("The flavour of the generated code; saved with the model"));
+    m_noteLabel->setText(noCodeReason(m_selection->current()));
 }
 
 void StPreviewDock::showEvent(QShowEvent* event)

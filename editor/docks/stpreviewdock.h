@@ -39,9 +39,11 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
 private:
     bool isOnScreen() const;
+    void retranslate();
     void scheduleUpdate();
     void refreshDialect();
     void onDialectChosen(int index);
@@ -53,6 +55,7 @@ private:
 
     Document* m_document;
     Selection* m_selection;
+    QLabel* m_dialectLabel;
     QComboBox* m_dialectCombo;
     QLabel* m_noteLabel;
     QPlainTextEdit* m_editor;

@@ -114,7 +114,27 @@ TransitionDock::TransitionDock(Document* document, Selection* selection, QWidget
     // The condition checks and the tokens depend on the declared variables.
     connect(document, &Document::variableChanged, this, &TransitionDock::refresh);
     connect(document, &Document::variablesChanged, this, &TransitionDock::refresh);
-    setPages(tr("Select a transition in the chart to see and edit its condition."), scroll);
+    setPages(scroll);
+    retranslate();
+}
+
+void TransitionDock::retranslate()
+{
+    setWindowTitle(title());
+    setPlaceholder(tr("Select a transition in the chart to see and edit its condition."));
+    m_titleLabel->setToolTip(tr("Click a step to select it"));
+    m_conditionLabel->setText(tr("C&ondition:"));
+    m_conditionEdit->setPlaceholderText(tr("e.g. Start AND NOT Stop"));
+    m_conditionEdit->setToolTip(tr("Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND (&), XOR, "
+                                   "OR, comparisons and arithmetic.\nCtrl+Space completes a variable name."));
+    m_priorityLabel->setText(tr("&Priority:"));
+    m_negatedCheck->setText(tr("&Negated"));
+    m_negatedCheck->setToolTip(tr("Negation flips when this transition waits for the nested behaviour of its "
+                                  "source:\na negated transition out of a macro-step ignores Complete;\n"
+                                  "a negated transition out of an enclosing step waits for Complete."));
+    m_hiddenCheck->setText(tr("&Hidden"));
+    m_hiddenCheck->setToolTip(tr("A hidden transition is not part of this machine: it generates no code."));
+    m_tokenGroup->setTitle(tr("Tokens"));
 }
 
 QWidget* TransitionDock::createForm()
@@ -131,7 +151,6 @@ QWidget* TransitionDock::createForm()
     titleFont.setPointSizeF(titleFont.pointSizeF() * 1.3);
     m_titleLabel->setFont(titleFont);
     m_titleLabel->setTextFormat(Qt::RichText);
-    m_titleLabel->setToolTip(tr("Click a step to select it"));
     connect(m_titleLabel, &QLabel::linkActivated, this, &TransitionDock::onStepLinkActivated);
     layout->addWidget(m_titleLabel);
     m_namesLabel = hintLabel(form);
@@ -140,14 +159,11 @@ QWidget* TransitionDock::createForm()
     m_effectLabel->setObjectName(QStringLiteral("effectLabel"));
     layout->addWidget(m_effectLabel);
 
-    auto* conditionLabel = new QLabel(tr("C&ondition:"), form);
-    layout->addWidget(conditionLabel);
+    m_conditionLabel = new QLabel(form);
+    layout->addWidget(m_conditionLabel);
     m_conditionEdit = new ConditionEdit(form);
     m_conditionEdit->setObjectName(QStringLiteral("conditionEdit"));
-    m_conditionEdit->setPlaceholderText(tr("e.g. Start AND NOT Stop"));
-    m_conditionEdit->setToolTip(tr("Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND (&), XOR, "
-                                   "OR, comparisons and arithmetic.\nCtrl+Space completes a variable name."));
-    conditionLabel->setBuddy(m_conditionEdit);
+    m_conditionLabel->setBuddy(m_conditionEdit);
     connect(m_conditionEdit, &ConditionEdit::textEdited, this, &TransitionDock::onConditionEdited);
     layout->addWidget(m_conditionEdit);
     m_problemList = new DiagnosticList(form);
@@ -164,20 +180,16 @@ QWidget* TransitionDock::createForm()
     auto* priorityRow = new QHBoxLayout;
     priorityRow->addWidget(m_prioritySpin);
     priorityRow->addStretch();
-    auto* priorityLabel = new QLabel(tr("&Priority:"), form);
-    priorityLabel->setBuddy(m_prioritySpin);
-    fields->addRow(priorityLabel, priorityRow);
+    m_priorityLabel = new QLabel(form);
+    m_priorityLabel->setBuddy(m_prioritySpin);
+    fields->addRow(m_priorityLabel, priorityRow);
 
     auto* flags = new QHBoxLayout;
-    m_negatedCheck = new QCheckBox(tr("&Negated"), form);
+    m_negatedCheck = new QCheckBox(form);
     m_negatedCheck->setObjectName(QStringLiteral("negatedCheck"));
-    m_negatedCheck->setToolTip(tr("Negation flips when this transition waits for the nested behaviour of its "
-                                  "source:\na negated transition out of a macro-step ignores Complete;\n"
-                                  "a negated transition out of an enclosing step waits for Complete."));
     connect(m_negatedCheck, &QCheckBox::toggled, this, &TransitionDock::onNegatedToggled);
-    m_hiddenCheck = new QCheckBox(tr("&Hidden"), form);
+    m_hiddenCheck = new QCheckBox(form);
     m_hiddenCheck->setObjectName(QStringLiteral("hiddenCheck"));
-    m_hiddenCheck->setToolTip(tr("A hidden transition is not part of this machine: it generates no code."));
     connect(m_hiddenCheck, &QCheckBox::toggled, this, &TransitionDock::onHiddenToggled);
     flags->addWidget(m_negatedCheck);
     flags->addWidget(m_hiddenCheck);
@@ -188,7 +200,7 @@ QWidget* TransitionDock::createForm()
     fields->addRow(m_negatedHint);
     layout->addLayout(fields);
 
-    m_tokenGroup = new QGroupBox(tr("Tokens"), form);
+    m_tokenGroup = new QGroupBox(form);
     m_tokenGroup->setObjectName(QStringLiteral("tokenGroup"));
     m_tokenLayout = new QVBoxLayout(m_tokenGroup);
     m_tokenLayout->setSpacing(2);

@@ -47,6 +47,7 @@ private:
     };
 
     QWidget* createForm();
+    void retranslate() override;
     void refreshForm() override;
     void focusField(const QString& field) override;
     void refreshHeader(const core::Transition& transition);
@@ -67,8 +68,10 @@ private:
     QLabel* m_titleLabel = nullptr;
     QLabel* m_namesLabel = nullptr;
     QLabel* m_effectLabel = nullptr;
+    QLabel* m_conditionLabel = nullptr;
     ConditionEdit* m_conditionEdit = nullptr;
     DiagnosticList* m_problemList = nullptr;
+    QLabel* m_priorityLabel = nullptr;
     QSpinBox* m_prioritySpin = nullptr;
     QCheckBox* m_negatedCheck = nullptr;
     QLabel* m_negatedHint = nullptr;

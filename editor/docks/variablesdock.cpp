@@ -16,6 +16,7 @@
 
 #include <QAction>
 #include <QClipboard>
+#include <QEvent>
 #include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -86,10 +87,8 @@ VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* 
     toolbar->addActions({ m_upAction, m_downAction, m_sortAction });
     m_filterEdit = new QLineEdit(toolbar);
     m_filterEdit->setObjectName(QStringLiteral("filterEdit"));
-    m_filterEdit->setPlaceholderText(tr("Filter"));
     m_filterEdit->setClearButtonEnabled(true);
     m_filterEdit->setMaximumWidth(160);
-    m_filterEdit->setToolTip(tr("Show only the variables whose name, type, default or comment contains this text"));
     connect(m_filterEdit, &QLineEdit::textChanged, m_proxy, &QSortFilterProxyModel::setFilterFixedString);
     auto* spacer = new QWidget(toolbar);
     spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
@@ -163,27 +162,48 @@ VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* 
     connect(m_selection, &Selection::focusFieldRequested, this, &VariablesDock::onFocusFieldRequested);
     onSelectionChanged(m_selection->current());
     updateActions();
+    retranslate();
 }
 
+void VariablesDock::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QDockWidget::changeEvent(event);
+}
+
+void VariablesDock::retranslate()
+{
+    setWindowTitle(title());
+    const auto name = [](QAction* action, const QString& text, const QString& tip) {
+        action->setText(text);
+        action->setToolTip(tip);
+    };
+    name(m_addAction, tr("Add"), tr("Add a BOOL variable after the current one"));
+    name(m_removeAction, tr("Remove"), tr("Remove the selected variables"));
+    name(m_duplicateAction, tr("Duplicate"), tr("Duplicate the selected variables"));
+    name(m_upAction, tr("Move Up"), tr("Move the current variable up (declaration order)"));
+    name(m_downAction, tr("Move Down"), tr("Move the current variable down (declaration order)"));
+    name(m_sortAction, tr("Sort by Name"), tr("Sort the declarations by name (one undo step)"));
+    name(m_copyAction, tr("Copy"), tr("Copy the selected variables as tab-separated rows"));
+    name(m_pasteAction, tr("Paste"), tr("Paste rows from a spreadsheet: name, type, default and comment"));
+    m_filterEdit->setPlaceholderText(tr("Filter"));
+    m_filterEdit->setToolTip(tr("Show only the variables whose name, type, default or comment contains this text"));
+    m_model->retranslate();
+}
+
+// Named by retranslate().
 void VariablesDock::createActions()
 {
-    const auto action = [this](const QString& text, const QIcon& icon, const QString& tip) {
-        auto* a = new QAction(icon, text, this);
-        a->setToolTip(tip);
-        return a;
-    };
-    m_addAction = action(tr("Add"), toolIcon(ToolIcon::Add, this), tr("Add a BOOL variable after the current one"));
-    m_removeAction = action(tr("Remove"), toolIcon(ToolIcon::Remove, this), tr("Remove the selected variables"));
-    m_duplicateAction
-        = action(tr("Duplicate"), toolIcon(ToolIcon::Duplicate, this), tr("Duplicate the selected variables"));
-    m_upAction = action(
-        tr("Move Up"), toolIcon(ToolIcon::MoveUp, this), tr("Move the current variable up (declaration order)"));
-    m_downAction = action(
-        tr("Move Down"), toolIcon(ToolIcon::MoveDown, this), tr("Move the current variable down (declaration order)"));
-    m_sortAction = action(
-        tr("Sort by Name"), toolIcon(ToolIcon::SortByName, this), tr("Sort the declarations by name (one undo step)"));
-    m_copyAction = action(tr("Copy"), QIcon(), tr("Copy the selected variables as tab-separated rows"));
-    m_pasteAction = action(tr("Paste"), QIcon(), tr("Paste rows from a spreadsheet: name, type, default and comment"));
+    const auto action = [this](const QIcon& icon) { return new QAction(icon, QString(), this); };
+    m_addAction = action(toolIcon(ToolIcon::Add, this));
+    m_removeAction = action(toolIcon(ToolIcon::Remove, this));
+    m_duplicateAction = action(toolIcon(ToolIcon::Duplicate, this));
+    m_upAction = action(toolIcon(ToolIcon::MoveUp, this));
+    m_downAction = action(toolIcon(ToolIcon::MoveDown, this));
+    m_sortAction = action(toolIcon(ToolIcon::SortByName, this));
+    m_copyAction = action(QIcon());
+    m_pasteAction = action(QIcon());
     // Shown in the context menu; the table's event filter handles the keys.
     m_removeAction->setShortcut(QKeySequence::Delete);
     m_copyAction->setShortcut(QKeySequence::Copy);

@@ -48,8 +48,10 @@ public:
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
 private:
+    void retranslate();
     void createActions();
     void onSelectionChanged(const ElementRef& element);
     void onFocusFieldRequested(const ElementRef& element, const QString& field);

@@ -32,6 +32,8 @@ public:
     bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
     Qt::ItemFlags flags(const QModelIndex& index) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    // The headers and tooltips were read in another language: views ask again.
+    void retranslate();
 
     QString variableName(int row) const;
     int rowOf(const QString& name) const; // case-insensitive; -1 when absent

@@ -8,6 +8,7 @@
 
 #include <QAction>
 #include <QClipboard>
+#include <QEvent>
 #include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -64,16 +65,15 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     , m_view(new QTreeWidget(this))
     , m_statusLabel(new QLabel(this))
     , m_assumptionsLabel(new QLabel(this))
-    , m_verifyAction(new QAction(tr("&Verify"), this))
-    , m_showAction(new QAction(tr("&Show on Chart"), this))
-    , m_replayAction(new QAction(tr("&Replay in Simulator"), this))
+    , m_verifyAction(new QAction(this))
+    , m_showAction(new QAction(this))
+    , m_replayAction(new QAction(this))
+    , m_copyAction(new QAction(m_view))
 {
     Q_ASSERT(runner && selection);
     setObjectName(QStringLiteral("verificationPanel"));
     m_verifyAction->setObjectName(QStringLiteral("panelVerifyAction"));
-    m_verifyAction->setToolTip(tr("Explore every input sequence of the GEMMA layer and report what cannot happen"));
     m_showAction->setObjectName(QStringLiteral("showOnChartAction"));
-    m_showAction->setToolTip(tr("Select the element of the finding on the chart"));
     m_replayAction->setObjectName(QStringLiteral("replayCounterexampleAction"));
     connect(m_verifyAction, &QAction::triggered, m_runner, &VerificationRunner::start);
     connect(m_showAction, &QAction::triggered, this, [this] { showOnChart(m_view->currentItem()); });
@@ -103,8 +103,7 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
 
     m_view->setObjectName(QStringLiteral("verificationView"));
     m_view->setColumnCount(4);
-    m_view->setHeaderLabels({tr("Code"), tr("Element"), tr("Scans"), tr("Message")});
-    m_view->headerItem()->setToolTip(ScansColumn, tr("Scans of the counterexample, which the simulator can replay"));
+    m_view->setHeaderLabels({QString(), QString(), QString(), QString()});
     m_view->setRootIsDecorated(false);
     m_view->setUniformRowHeights(true);
     m_view->setAllColumnsShowFocus(true);
@@ -116,9 +115,8 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
     auto* separator = new QAction(m_view);
     separator->setSeparator(true);
-    auto* copyAction = new QAction(tr("&Copy"), m_view);
-    connect(copyAction, &QAction::triggered, this, &VerificationPanel::copySelected);
-    m_view->addActions({m_showAction, m_replayAction, separator, copyAction});
+    connect(m_copyAction, &QAction::triggered, this, &VerificationPanel::copySelected);
+    m_view->addActions({m_showAction, m_replayAction, separator, m_copyAction});
     connect(m_view, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) { showOnChart(item); });
     connect(m_view, &QTreeWidget::currentItemChanged, this, &VerificationPanel::updateActions);
     layout->addWidget(m_view, 1);
@@ -128,6 +126,27 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     connect(m_runner, &VerificationRunner::finished, this, &VerificationPanel::refresh);
     connect(m_runner, &VerificationRunner::staleChanged, this, &VerificationPanel::refresh);
     connect(m_runner, &VerificationRunner::assumptionsChanged, this, &VerificationPanel::refresh);
+    retranslate();
+}
+
+void VerificationPanel::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+// The findings too: they are worded in the UI language when listed.
+void VerificationPanel::retranslate()
+{
+    m_verifyAction->setText(tr("&Verify"));
+    m_verifyAction->setToolTip(tr("Explore every input sequence of the GEMMA layer and report what cannot happen"));
+    m_showAction->setText(tr("&Show on Chart"));
+    m_showAction->setToolTip(tr("Select the element of the finding on the chart"));
+    m_replayAction->setText(tr("&Replay in Simulator"));
+    m_copyAction->setText(tr("&Copy"));
+    m_view->setHeaderLabels({tr("Code"), tr("Element"), tr("Scans"), tr("Message")});
+    m_view->headerItem()->setToolTip(ScansColumn, tr("Scans of the counterexample, which the simulator can replay"));
     refresh();
 }
 

@@ -45,7 +45,11 @@ signals:
     // The user asked to replay the counterexample of this finding.
     void replayRequested(int findingIndex);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
+    void retranslate();
     void refresh();
     void refreshStatus();
     void refreshAssumptions();
@@ -60,6 +64,7 @@ private:
     QAction* m_verifyAction;
     QAction* m_showAction;
     QAction* m_replayAction;
+    QAction* m_copyAction;
 };
 
 } // namespace editor

@@ -13,6 +13,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QEvent>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -186,23 +187,72 @@ SimulationDock::SimulationDock(SimulationSession* session, Document* document, Q
         const QSignalBlocker blocker(m_speedSpin);
         m_speedSpin->setValue(speed);
     });
+    setFixedTexts();
     onActiveChanged(m_session->isActive());
+}
+
+void SimulationDock::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QDockWidget::changeEvent(event);
+}
+
+// The texts of the running session too: the input rows are built again with
+// the session's values, the explanation, status and replay worded again.
+void SimulationDock::retranslate()
+{
+    setFixedTexts();
+    m_traceModel->retranslate();
+    onRunningChanged(m_session->isRunning());
+    if (m_session->isActive()) {
+        buildInputRows();
+        m_shownExplanation.clear();
+        onStepped();
+    }
+    refreshReplay();
+}
+
+// The texts that do not depend on the session.
+void SimulationDock::setFixedTexts()
+{
+    setWindowTitle(title());
+    m_introLabel->setText(tr("The simulation runs the model scan by scan, as the generated program runs on "
+                             "the PLC: play the inputs, watch the active step and see why each transition "
+                             "fires or not. Editing is locked while it runs."));
+    m_startButton->setText(tr("Start Simulation"));
+    m_tabs->setTabText(ExplanationTab, tr("Explanation"));
+    m_tabs->setTabText(TraceTab, tr("Trace"));
+    m_tabs->setTabText(ScenarioTab, tr("Scenario"));
+    m_runButton->setToolTip(tr("Run scans at the chosen speed; press again to pause"));
+    m_stepButton->setText(tr("Scan"));
+    m_stepButton->setToolTip(tr("Run a single scan"));
+    m_resetButton->setText(tr("Reset"));
+    m_resetButton->setToolTip(tr("Back to the initial step, the inputs to their defaults; clears the trace"));
+    m_endButton->setText(tr("End"));
+    m_endButton->setToolTip(tr("End the simulation and unlock editing"));
+    m_speedLabel->setText(tr("&Speed:"));
+    m_speedSpin->setSuffix(tr(" scans/s"));
+    m_speedSpin->setToolTip(tr("Scans per second (the model's cycle time only sets the simulated time)"));
+    m_explanationView->setHeaderLabels({tr("Transition"), tr("Next scan")});
+    m_recordButton->setText(tr("&Record as Scenario…"));
+    m_recordButton->setToolTip(tr("Save this session since the last reset as a scenario file: the inputs of "
+                                  "each scan, and an expectation for every transition that fired"));
+    m_replayButton->setText(tr("Re&play Scenario…"));
+    m_replayButton->setToolTip(tr("Run a scenario file from the initial step and check its expectations"));
 }
 
 QWidget* SimulationDock::createOffPage()
 {
     auto* page = new QWidget(this);
     auto* layout = new QVBoxLayout(page);
-    auto* text = new QLabel(tr("The simulation runs the model scan by scan, as the generated program runs on "
-                               "the PLC: play the inputs, watch the active step and see why each transition "
-                               "fires or not. Editing is locked while it runs."),
-                            page);
-    text->setWordWrap(true);
-    auto* start = new QPushButton(tr("Start Simulation"), page);
-    start->setObjectName(QStringLiteral("startButton"));
-    connect(start, &QPushButton::clicked, this, [this] { m_session->setActive(true); });
-    layout->addWidget(text);
-    layout->addWidget(start, 0, Qt::AlignLeft);
+    m_introLabel = new QLabel(page);
+    m_introLabel->setWordWrap(true);
+    m_startButton = new QPushButton(page);
+    m_startButton->setObjectName(QStringLiteral("startButton"));
+    connect(m_startButton, &QPushButton::clicked, this, [this] { m_session->setActive(true); });
+    layout->addWidget(m_introLabel);
+    layout->addWidget(m_startButton, 0, Qt::AlignLeft);
     layout->addStretch();
     return page;
 }
@@ -231,9 +281,9 @@ QWidget* SimulationDock::createOnPage()
     m_tabs = new QTabWidget(splitter);
     m_tabs->setObjectName(QStringLiteral("simulationTabs"));
     m_tabs->setDocumentMode(true);
-    m_tabs->addTab(createExplanationTab(), tr("Explanation"));
-    m_tabs->addTab(createTraceTab(), tr("Trace"));
-    m_tabs->addTab(createScenarioTab(), tr("Scenario"));
+    m_tabs->insertTab(ExplanationTab, createExplanationTab(), QString());
+    m_tabs->insertTab(TraceTab, createTraceTab(), QString());
+    m_tabs->insertTab(ScenarioTab, createScenarioTab(), QString());
     splitter->addWidget(scroll);
     splitter->addWidget(m_tabs);
     // The sizes are proportions: the inputs get the larger part.
@@ -256,8 +306,6 @@ QWidget* SimulationDock::createControls()
     buttons->setSpacing(2);
     m_runButton = toolButton(controls, QStringLiteral("runButton"), QStyle::SP_MediaPlay);
     m_runButton->setCheckable(true);
-    m_runButton->setText(tr("Run"));
-    m_runButton->setToolTip(tr("Run scans at the chosen speed; press again to pause"));
     connect(m_runButton, &QToolButton::toggled, this, [this](bool run) {
         if (run)
             m_session->run();
@@ -265,41 +313,33 @@ QWidget* SimulationDock::createControls()
             m_session->pause();
     });
     m_stepButton = toolButton(controls, QStringLiteral("stepButton"), QStyle::SP_MediaSkipForward);
-    m_stepButton->setText(tr("Scan"));
-    m_stepButton->setToolTip(tr("Run a single scan"));
     connect(m_stepButton, &QToolButton::clicked, m_session, &SimulationSession::stepOnce);
     m_resetButton = toolButton(controls, QStringLiteral("resetButton"), QStyle::SP_MediaSkipBackward);
-    m_resetButton->setText(tr("Reset"));
-    m_resetButton->setToolTip(tr("Back to the initial step, the inputs to their defaults; clears the trace"));
     connect(m_resetButton, &QToolButton::clicked, m_session, &SimulationSession::reset);
-    auto* end = toolButton(controls, QStringLiteral("endButton"), QStyle::SP_MediaStop);
-    end->setText(tr("End"));
-    end->setToolTip(tr("End the simulation and unlock editing"));
-    connect(end, &QToolButton::clicked, this, [this] { m_session->setActive(false); });
+    m_endButton = toolButton(controls, QStringLiteral("endButton"), QStyle::SP_MediaStop);
+    connect(m_endButton, &QToolButton::clicked, this, [this] { m_session->setActive(false); });
     buttons->addWidget(m_runButton);
     buttons->addWidget(m_stepButton);
     buttons->addWidget(m_resetButton);
     buttons->addStretch();
-    buttons->addWidget(end);
+    buttons->addWidget(m_endButton);
     layout->addLayout(buttons);
 
     auto* speedRow = new QHBoxLayout;
     speedRow->setContentsMargins(4, 0, 4, 0);
-    auto* speedLabel = new QLabel(tr("&Speed:"), controls);
+    m_speedLabel = new QLabel(controls);
     m_speedSpin = new QSpinBox(controls);
     m_speedSpin->setObjectName(QStringLiteral("speedSpin"));
     m_speedSpin->setRange(SimulationSession::kMinSpeed, SimulationSession::kMaxSpeed);
     m_speedSpin->setValue(m_session->speed());
-    m_speedSpin->setSuffix(tr(" scans/s"));
     m_speedSpin->setKeyboardTracking(false);
-    m_speedSpin->setToolTip(tr("Scans per second (the model's cycle time only sets the simulated time)"));
-    speedLabel->setBuddy(m_speedSpin);
+    m_speedLabel->setBuddy(m_speedSpin);
     connect(m_speedSpin, &QSpinBox::valueChanged, m_session, &SimulationSession::setSpeed);
     m_statusLabel = new QLabel(controls);
     m_statusLabel->setObjectName(QStringLiteral("statusLabel"));
     m_statusLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    speedRow->addWidget(speedLabel);
+    speedRow->addWidget(m_speedLabel);
     speedRow->addWidget(m_speedSpin);
     speedRow->addStretch();
     speedRow->addWidget(m_statusLabel);
@@ -319,7 +359,6 @@ QWidget* SimulationDock::createExplanationTab()
     m_explanationView = new QTreeWidget(tab);
     m_explanationView->setObjectName(QStringLiteral("explanationView"));
     m_explanationView->setColumnCount(2);
-    m_explanationView->setHeaderLabels({tr("Transition"), tr("Next scan")});
     m_explanationView->setUniformRowHeights(true);
     m_explanationView->setSelectionMode(QAbstractItemView::NoSelection);
     m_explanationView->header()->setStretchLastSection(true);
@@ -357,14 +396,11 @@ QWidget* SimulationDock::createScenarioTab()
     auto* layout = new QVBoxLayout(m_scenarioTab);
     layout->setContentsMargins(4, 4, 4, 4);
     auto* buttons = new QHBoxLayout;
-    m_recordButton = new QPushButton(tr("&Record as Scenario…"), m_scenarioTab);
+    m_recordButton = new QPushButton(m_scenarioTab);
     m_recordButton->setObjectName(QStringLiteral("recordButton"));
-    m_recordButton->setToolTip(tr("Save this session since the last reset as a scenario file: the inputs of "
-                                  "each scan, and an expectation for every transition that fired"));
     connect(m_recordButton, &QPushButton::clicked, this, &SimulationDock::recordScenario);
-    m_replayButton = new QPushButton(tr("Re&play Scenario…"), m_scenarioTab);
+    m_replayButton = new QPushButton(m_scenarioTab);
     m_replayButton->setObjectName(QStringLiteral("replayButton"));
-    m_replayButton->setToolTip(tr("Run a scenario file from the initial step and check its expectations"));
     connect(m_replayButton, &QPushButton::clicked, this, &SimulationDock::replayScenario);
     buttons->addWidget(m_recordButton);
     buttons->addWidget(m_replayButton);

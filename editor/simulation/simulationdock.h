@@ -30,8 +30,8 @@ class TraceTableModel;
 // buttons, numbers as spin boxes in their IEC range); Complete of each
 // nested step, automatic or manual; why the active step's transitions do or
 // do not fire; the trace; recording and replaying scenario files. The
-// session lives in the window, so a rebuilt dock (new language) shows the
-// same simulation.
+// session lives in the window; a change of language rewords the dock in
+// place, the running simulation included.
 class SimulationDock : public QDockWidget {
     Q_OBJECT
 
@@ -61,7 +61,12 @@ public:
     void recordScenario();
     void replayScenario();
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
+    enum Tab { ExplanationTab, TraceTab, ScenarioTab };
+
     // The widgets of one input row, by Simulator::variableNames() index.
     struct InputRow {
         QString name;
@@ -76,6 +81,8 @@ private:
         QLabel* output = nullptr;
     };
 
+    void retranslate();
+    void setFixedTexts();
     QWidget* createOffPage();
     QWidget* createOnPage();
     QWidget* createControls();
@@ -100,9 +107,13 @@ private:
     SimulationSession* m_session;
     Document* m_document;
     QStackedWidget* m_pages = nullptr;
+    QLabel* m_introLabel = nullptr;
+    QPushButton* m_startButton = nullptr;
     QToolButton* m_runButton = nullptr;
     QToolButton* m_stepButton = nullptr;
     QToolButton* m_resetButton = nullptr;
+    QToolButton* m_endButton = nullptr;
+    QLabel* m_speedLabel = nullptr;
     QSpinBox* m_speedSpin = nullptr;
     QLabel* m_statusLabel = nullptr;
     QWidget* m_inputsWidget = nullptr;

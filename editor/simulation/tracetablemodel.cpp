@@ -77,6 +77,11 @@ QVariant TraceTableModel::data(const QModelIndex& index, int role) const
     }
 }
 
+void TraceTableModel::retranslate()
+{
+    emit headerDataChanged(Qt::Horizontal, 0, columnCount() - 1);
+}
+
 QVariant TraceTableModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
     if (orientation != Qt::Horizontal || role != Qt::DisplayRole)

@@ -24,6 +24,8 @@ public:
     int columnCount(const QModelIndex& parent = {}) const override;
     QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
     QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    // The headers were read in another language: views ask again.
+    void retranslate();
 
     void sync();
     // After a reset, when the rows of the same scan numbers hold other scans.

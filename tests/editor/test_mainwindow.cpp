@@ -29,31 +29,34 @@
 #include "core/modelfiles.h"
 
 #include <QAbstractButton>
-#include <QAction>
-#include <QTextDocumentFragment>
-#include <QTabBar>
-#include <QRegularExpression>
-#include <QGroupBox>
 #include <QAbstractItemView>
+#include <QAction>
 #include <QApplication>
-#include <QDockWidget>
 #include <QComboBox>
 #include <QCommonStyle>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
+#include <QGroupBox>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
-#include <QSpinBox>
-#include <QStyleFactory>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPointer>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
+#include <QStyleFactory>
+#include <QTabBar>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextDocumentFragment>
 #include <QTimer>
 #include <QTranslator>
 #include <QUndoStack>
@@ -227,6 +230,7 @@ private slots:
     void languageChangeRetranslatesMenus();
     void languageChangeRetranslatesEveryWindowText_data();
     void languageChangeRetranslatesEveryWindowText();
+    void languageChangeKeepsWhatTheDocksShow();
     void frenchMenuTitles();
     void windowButtonsAreDrawn();
     // Last: it replaces the application's style.
@@ -744,14 +748,26 @@ void TestMainWindow::languageChangeRetranslatesMenus()
 void TestMainWindow::languageChangeRetranslatesEveryWindowText_data()
 {
     QTest::addColumn<ElementRef>("selected");
-    QTest::newRow("step") << ElementRef::step(QStringLiteral("F1"));
-    QTest::newRow("transition with a problem") << ElementRef::transition(QStringLiteral("F1->A2"));
+    QTest::addColumn<bool>("simulating");
+    QTest::newRow("step") << ElementRef::step(QStringLiteral("F1")) << false;
+    QTest::newRow("transition with a problem") << ElementRef::transition(QStringLiteral("F1->A2")) << false;
+    QTest::newRow("simulating") << ElementRef::step(QStringLiteral("A6")) << true;
 }
 
 void TestMainWindow::languageChangeRetranslatesEveryWindowText()
 {
     QFETCH(ElementRef, selected);
+    QFETCH(bool, simulating);
     m_window->selection()->select(selected);
+    if (simulating) {
+        // The user's texts are shown as they are: a variable named like an
+        // element, without a comment.
+        core::Model model;
+        model.addVariable(core::Variable{"S1", core::IecType::Bool, "", ""});
+        m_window->document()->replaceModel(model, QString(), core::ModelFormat::Native);
+        m_window->simulationSession()->setActive(true);
+        m_window->simulationSession()->stepOnce();
+    }
     BracketTranslator translator;
     QCoreApplication::installTranslator(&translator);
     QCoreApplication::processEvents();
@@ -760,7 +776,33 @@ void TestMainWindow::languageChangeRetranslatesEveryWindowText()
 
     const QStringList untranslated = untranslatedWindowTexts(*m_window);
     QCoreApplication::removeTranslator(&translator);
+    m_window->simulationSession()->setActive(false);
     QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join(QLatin1Char('\n'))));
+}
+
+// The docks are reworded in place: what the user set in them stays.
+void TestMainWindow::languageChangeKeepsWhatTheDocksShow()
+{
+    auto* filter = m_window->findChild<QLineEdit*>(QStringLiteral("filterEdit"));
+    auto* table = m_window->findChild<QTableView*>(QStringLiteral("variablesView"));
+    QVERIFY(filter && table);
+    filter->setText(QStringLiteral("motor"));
+    table->horizontalHeader()->resizeSection(0, 211);
+    const QPointer<QLineEdit> sameFilter(filter);
+
+    BracketTranslator translator;
+    QCoreApplication::installTranslator(&translator);
+    QCoreApplication::processEvents();
+    QCOMPARE(m_window->findChild<QDockWidget*>(QStringLiteral("variablesDock"))->windowTitle(),
+             QStringLiteral("[Variables]"));
+    QVERIFY(sameFilter);
+    QCOMPARE(filter->text(), QStringLiteral("motor"));
+    QCOMPARE(filter->placeholderText(), QStringLiteral("[Filter]"));
+    QCOMPARE(table->horizontalHeader()->sectionSize(0), 211);
+    QCOMPARE(table->model()->headerData(0, Qt::Horizontal).toString(), QStringLiteral("[Name]"));
+    QCoreApplication::removeTranslator(&translator);
+    QCoreApplication::processEvents();
+    QCOMPARE(filter->placeholderText(), QStringLiteral("Filter"));
 }
 
 void TestMainWindow::frenchMenuTitles()

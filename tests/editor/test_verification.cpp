@@ -329,7 +329,7 @@ void TestVerification::languageChangeKeepsTheFindings()
     verifyAndWait();
     const QString english = row(QStringLiteral("GV106"), QStringLiteral("D2"))->text(VerificationPanel::MessageColumn);
     QVERIFY(m_translators->setLanguage(QStringLiteral("fr")));
-    // The window rebuilds its docks in the new language, later.
+    // The panel rewords its findings in the new language.
     QTRY_VERIFY(m_window->findChild<ProblemsDock*>(QStringLiteral("problemsDock"))->windowTitle()
                 != QStringLiteral("Problems"));
     m_dock = m_window->findChild<ProblemsDock*>(QStringLiteral("problemsDock"));
