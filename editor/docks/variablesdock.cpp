@@ -190,6 +190,12 @@ void VariablesDock::retranslate()
     m_filterEdit->setPlaceholderText(tr("Filter"));
     m_filterEdit->setToolTip(tr("Show only the variables whose name, type, default or comment contains this text"));
     m_model->retranslate();
+    // A header may be longer in this language than the column is wide:
+    // widen it, never narrow what the user chose.
+    QHeaderView* header = m_view->horizontalHeader();
+    for (int column : {VariablesTableModel::NameColumn, VariablesTableModel::TypeColumn,
+                       VariablesTableModel::DefaultColumn})
+        header->resizeSection(column, std::max(header->sectionSize(column), header->sectionSizeHint(column)));
 }
 
 // Named by retranslate().
