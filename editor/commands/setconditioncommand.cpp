@@ -6,11 +6,8 @@
 
 namespace editor {
 
-SetConditionCommand::SetConditionCommand(Document& document, const QString& transitionId,
-                                         const QString& condition)
-    : ModelCommand(document, tr("Edit condition of %1").arg(transitionId))
-    , m_transitionId(toStdString(transitionId))
-    , m_condition(toStdString(condition))
+SetConditionCommand::SetConditionCommand(Document& document, const QString& transitionId, const QString& condition)
+    : TextFieldCommand(document, tr("Edit condition of %1").arg(transitionId), transitionId, condition)
 {
 }
 
@@ -19,28 +16,15 @@ int SetConditionCommand::id() const
     return SetConditionId;
 }
 
-bool SetConditionCommand::mergeWith(const QUndoCommand* other)
+std::string SetConditionCommand::read(const std::string& element) const
 {
-    const auto* next = static_cast<const SetConditionCommand*>(other); // same id()
-    if (next->m_transitionId != m_transitionId)
-        return false;
-    m_condition = next->m_condition;
-    setObsolete(m_condition == m_previous); // typed back to where it started
-    return true;
+    const core::Transition* transition = model().transition(element);
+    return transition ? transition->condition : std::string();
 }
 
-core::Status SetConditionCommand::apply()
+core::Status SetConditionCommand::write(const std::string& element, const std::string& value)
 {
-    if (firstRun()) {
-        if (const core::Transition* transition = model().transition(m_transitionId))
-            m_previous = transition->condition;
-    }
-    return model().setCondition(m_transitionId, m_condition);
-}
-
-core::Status SetConditionCommand::revert()
-{
-    return model().setCondition(m_transitionId, m_previous);
+    return model().setCondition(element, value);
 }
 
 } // namespace editor

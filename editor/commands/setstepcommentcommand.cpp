@@ -7,9 +7,7 @@
 namespace editor {
 
 SetStepCommentCommand::SetStepCommentCommand(Document& document, const QString& stepId, const QString& comment)
-    : ModelCommand(document, tr("Edit comment of %1").arg(stepId))
-    , m_stepId(toStdString(stepId))
-    , m_comment(toStdString(comment))
+    : TextFieldCommand(document, tr("Edit comment of %1").arg(stepId), stepId, comment)
 {
 }
 
@@ -18,28 +16,15 @@ int SetStepCommentCommand::id() const
     return SetStepCommentId;
 }
 
-bool SetStepCommentCommand::mergeWith(const QUndoCommand* other)
+std::string SetStepCommentCommand::read(const std::string& element) const
 {
-    const auto* next = static_cast<const SetStepCommentCommand*>(other); // same id()
-    if (next->m_stepId != m_stepId)
-        return false;
-    m_comment = next->m_comment;
-    setObsolete(m_comment == m_previous); // typed back to where it started
-    return true;
+    const core::Step* step = model().step(element);
+    return step ? step->comment : std::string();
 }
 
-core::Status SetStepCommentCommand::apply()
+core::Status SetStepCommentCommand::write(const std::string& element, const std::string& value)
 {
-    if (firstRun()) {
-        if (const core::Step* step = model().step(m_stepId))
-            m_previous = step->comment;
-    }
-    return model().setStepComment(m_stepId, m_comment);
-}
-
-core::Status SetStepCommentCommand::revert()
-{
-    return model().setStepComment(m_stepId, m_previous);
+    return model().setStepComment(element, value);
 }
 
 } // namespace editor

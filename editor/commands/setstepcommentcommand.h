@@ -1,28 +1,22 @@
 #pragma once
 
-#include "editor/commands/modelcommand.h"
+#include "editor/commands/textfieldcommand.h"
 
 #include <QCoreApplication>
 
 namespace editor {
 
-// "Edit comment of F1". Consecutive edits of the same step's comment merge
-// into one undo step, so typing undoes as a whole.
-class SetStepCommentCommand : public ModelCommand {
+// "Edit comment of F1"; typing in the same comment merges.
+class SetStepCommentCommand : public TextFieldCommand {
     Q_DECLARE_TR_FUNCTIONS(SetStepCommentCommand)
 
 public:
     SetStepCommentCommand(Document& document, const QString& stepId, const QString& comment);
     int id() const override;
-    bool mergeWith(const QUndoCommand* other) override;
 
 private:
-    core::Status apply() override;
-    core::Status revert() override;
-
-    std::string m_stepId;
-    std::string m_comment;
-    std::string m_previous;
+    std::string read(const std::string& element) const override;
+    core::Status write(const std::string& element, const std::string& value) override;
 };
 
 } // namespace editor

@@ -6,9 +6,8 @@
 
 namespace editor {
 
-SetVariableCommentCommand::SetVariableCommentCommand(Document& document, const QString& name,
-                                                     const QString& value)
-    : VariableTextCommand(document, tr("Edit comment of %1").arg(name), name, value)
+SetVariableCommentCommand::SetVariableCommentCommand(Document& document, const QString& name, const QString& value)
+    : TextFieldCommand(document, tr("Edit comment of %1").arg(name), name, value)
 {
 }
 
@@ -17,14 +16,20 @@ int SetVariableCommentCommand::id() const
     return SetVariableCommentId;
 }
 
-std::string SetVariableCommentCommand::field(const core::Variable& variable) const
+std::string SetVariableCommentCommand::read(const std::string& element) const
 {
-    return variable.comment;
+    const core::Variable* variable = model().variable(element);
+    return variable ? variable->comment : std::string();
 }
 
-core::Status SetVariableCommentCommand::setField(const std::string& name, const std::string& value)
+core::Status SetVariableCommentCommand::write(const std::string& element, const std::string& value)
 {
-    return model().setVariableComment(name, value);
+    return model().setVariableComment(element, value);
+}
+
+bool SetVariableCommentCommand::sameElement(const std::string& a, const std::string& b) const
+{
+    return core::equalsIgnoreCase(a, b); // IEC names ignore case
 }
 
 } // namespace editor

@@ -1,13 +1,13 @@
 #pragma once
 
-#include "editor/commands/variabletextcommand.h"
+#include "editor/commands/textfieldcommand.h"
 
 #include <QCoreApplication>
 
 namespace editor {
 
 // "Edit comment of Speed"; typing in the same comment merges.
-class SetVariableCommentCommand : public VariableTextCommand {
+class SetVariableCommentCommand : public TextFieldCommand {
     Q_DECLARE_TR_FUNCTIONS(SetVariableCommentCommand)
 
 public:
@@ -15,8 +15,9 @@ public:
     int id() const override;
 
 private:
-    std::string field(const core::Variable& variable) const override;
-    core::Status setField(const std::string& name, const std::string& value) override;
+    std::string read(const std::string& element) const override;
+    core::Status write(const std::string& element, const std::string& value) override;
+    bool sameElement(const std::string& a, const std::string& b) const override;
 };
 
 } // namespace editor

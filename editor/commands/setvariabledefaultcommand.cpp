@@ -6,9 +6,8 @@
 
 namespace editor {
 
-SetVariableDefaultCommand::SetVariableDefaultCommand(Document& document, const QString& name,
-                                                     const QString& value)
-    : VariableTextCommand(document, tr("Set default of %1").arg(name), name, value)
+SetVariableDefaultCommand::SetVariableDefaultCommand(Document& document, const QString& name, const QString& value)
+    : TextFieldCommand(document, tr("Set default of %1").arg(name), name, value)
 {
 }
 
@@ -17,14 +16,20 @@ int SetVariableDefaultCommand::id() const
     return SetVariableDefaultId;
 }
 
-std::string SetVariableDefaultCommand::field(const core::Variable& variable) const
+std::string SetVariableDefaultCommand::read(const std::string& element) const
 {
-    return variable.defaultValue;
+    const core::Variable* variable = model().variable(element);
+    return variable ? variable->defaultValue : std::string();
 }
 
-core::Status SetVariableDefaultCommand::setField(const std::string& name, const std::string& value)
+core::Status SetVariableDefaultCommand::write(const std::string& element, const std::string& value)
 {
-    return model().setVariableDefault(name, value);
+    return model().setVariableDefault(element, value);
+}
+
+bool SetVariableDefaultCommand::sameElement(const std::string& a, const std::string& b) const
+{
+    return core::equalsIgnoreCase(a, b); // IEC names ignore case
 }
 
 } // namespace editor

@@ -1,13 +1,13 @@
 #pragma once
 
-#include "editor/commands/variabletextcommand.h"
+#include "editor/commands/textfieldcommand.h"
 
 #include <QCoreApplication>
 
 namespace editor {
 
 // "Set default of Speed"; typing in the same default merges.
-class SetVariableDefaultCommand : public VariableTextCommand {
+class SetVariableDefaultCommand : public TextFieldCommand {
     Q_DECLARE_TR_FUNCTIONS(SetVariableDefaultCommand)
 
 public:
@@ -15,8 +15,9 @@ public:
     int id() const override;
 
 private:
-    std::string field(const core::Variable& variable) const override;
-    core::Status setField(const std::string& name, const std::string& value) override;
+    std::string read(const std::string& element) const override;
+    core::Status write(const std::string& element, const std::string& value) override;
+    bool sameElement(const std::string& a, const std::string& b) const override;
 };
 
 } // namespace editor

@@ -1,0 +1,35 @@
+#include "editor/commands/textfieldcommand.h"
+
+namespace editor {
+
+TextFieldCommand::TextFieldCommand(Document& document, const QString& text, const QString& element,
+                                   const QString& value)
+    : ModelCommand(document, text)
+    , m_element(toStdString(element))
+    , m_value(toStdString(value))
+{
+}
+
+bool TextFieldCommand::mergeWith(const QUndoCommand* other)
+{
+    const auto* next = static_cast<const TextFieldCommand*>(other); // same id(), so same field
+    if (!sameElement(next->m_element, m_element))
+        return false;
+    m_value = next->m_value;
+    setObsolete(m_value == m_previous); // typed back to where it started
+    return true;
+}
+
+core::Status TextFieldCommand::apply()
+{
+    if (firstRun())
+        m_previous = read(m_element);
+    return write(m_element, m_value);
+}
+
+core::Status TextFieldCommand::revert()
+{
+    return write(m_element, m_previous);
+}
+
+} // namespace editor
