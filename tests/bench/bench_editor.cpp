@@ -253,9 +253,9 @@ QString probePlatform()
 }
 
 // Runs `startup_probe MODE` once, with settings and autosave in an empty
-// folder (a first start). The probe prints its own figure right after the
-// first paint of the chart's viewport; the time until that line arrives here
-// is the cold start a user waits through. GG Studio's probe then prints when
+// folder (a first start). The probe prints its own figure once the window's
+// first frame showing the chart has been painted and flushed; the time until
+// that line arrives here is the cold start a user waits through. GG Studio's probe then prints when
 // its docks are ready.
 StartupTimes probeOnce(const QString& mode)
 {
