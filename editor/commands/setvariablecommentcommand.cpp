@@ -7,7 +7,7 @@
 namespace editor {
 
 SetVariableCommentCommand::SetVariableCommentCommand(Document& document, const QString& name, const QString& value)
-    : TextFieldCommand(document, tr("Edit comment of %1").arg(name), name, value)
+    : TextFieldCommand(document, tr("Edit comment of %1").arg(name), name, value, NameCase::Ignored)
 {
 }
 
@@ -25,11 +25,6 @@ std::string SetVariableCommentCommand::read(const std::string& element) const
 core::Status SetVariableCommentCommand::write(const std::string& element, const std::string& value)
 {
     return model().setVariableComment(element, value);
-}
-
-bool SetVariableCommentCommand::sameElement(const std::string& a, const std::string& b) const
-{
-    return core::equalsIgnoreCase(a, b); // IEC names ignore case
 }
 
 } // namespace editor

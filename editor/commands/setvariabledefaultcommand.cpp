@@ -7,7 +7,7 @@
 namespace editor {
 
 SetVariableDefaultCommand::SetVariableDefaultCommand(Document& document, const QString& name, const QString& value)
-    : TextFieldCommand(document, tr("Set default of %1").arg(name), name, value)
+    : TextFieldCommand(document, tr("Set default of %1").arg(name), name, value, NameCase::Ignored)
 {
 }
 
@@ -25,11 +25,6 @@ std::string SetVariableDefaultCommand::read(const std::string& element) const
 core::Status SetVariableDefaultCommand::write(const std::string& element, const std::string& value)
 {
     return model().setVariableDefault(element, value);
-}
-
-bool SetVariableDefaultCommand::sameElement(const std::string& a, const std::string& b) const
-{
-    return core::equalsIgnoreCase(a, b); // IEC names ignore case
 }
 
 } // namespace editor

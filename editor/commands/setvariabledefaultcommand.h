@@ -17,7 +17,6 @@ public:
 private:
     std::string read(const std::string& element) const override;
     core::Status write(const std::string& element, const std::string& value) override;
-    bool sameElement(const std::string& a, const std::string& b) const override;
 };
 
 } // namespace editor

@@ -1,10 +1,13 @@
 #include "editor/commands/textfieldcommand.h"
 
+#include "core/iectypes.h"
+
 namespace editor {
 
 TextFieldCommand::TextFieldCommand(Document& document, const QString& text, const QString& element,
-                                   const QString& value)
+                                   const QString& value, NameCase nameCase)
     : ModelCommand(document, text)
+    , m_nameCase(nameCase)
     , m_element(toStdString(element))
     , m_value(toStdString(value))
 {
@@ -13,7 +16,9 @@ TextFieldCommand::TextFieldCommand(Document& document, const QString& text, cons
 bool TextFieldCommand::mergeWith(const QUndoCommand* other)
 {
     const auto* next = static_cast<const TextFieldCommand*>(other); // same id(), so same field
-    if (!sameElement(next->m_element, m_element))
+    const bool sameElement = m_nameCase == NameCase::Ignored ? core::equalsIgnoreCase(next->m_element, m_element)
+                                                             : next->m_element == m_element;
+    if (!sameElement)
         return false;
     m_value = next->m_value;
     setObsolete(m_value == m_previous); // typed back to where it started

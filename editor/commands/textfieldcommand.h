@@ -15,19 +15,22 @@ public:
     bool mergeWith(const QUndoCommand* other) override;
 
 protected:
-    TextFieldCommand(Document& document, const QString& text, const QString& element, const QString& value);
+    // How element names compare: variable names ignore case (IEC 61131-3).
+    enum class NameCase { Exact, Ignored };
+
+    TextFieldCommand(Document& document, const QString& text, const QString& element, const QString& value,
+                     NameCase nameCase = NameCase::Exact);
 
     // The field's value before the first edit; empty when there is no such
     // element (writing then fails and says why).
     virtual std::string read(const std::string& element) const = 0;
     virtual core::Status write(const std::string& element, const std::string& value) = 0;
-    // Whether two edits are of the same element (variable names ignore case).
-    virtual bool sameElement(const std::string& a, const std::string& b) const { return a == b; }
 
 private:
     core::Status apply() final;
     core::Status revert() final;
 
+    NameCase m_nameCase;
     std::string m_element;
     std::string m_value;
     std::string m_previous;
