@@ -1,8 +1,8 @@
 #include "editor/chart/frameitem.h"
 
 #include "editor/chart/chartstyle.h"
-#include "editor/chart/segmentstroke.h"
 #include "editor/chart/layoutconversion.h"
+#include "editor/chart/segmentstroke.h"
 #include "editor/statenames.h"
 
 #include <QPainter>

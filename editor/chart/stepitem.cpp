@@ -130,7 +130,6 @@ void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
     painter->setPen(pen);
     painter->fillRect(m_box, m_active ? chartstyle::activeFillColor() : chartstyle::stepFillColor());
     segmentstroke::drawRectOutline(painter, m_box);
-    painter->setBrush(Qt::NoBrush);
 
     // The type marks go inside the inner square of an initial step.
     QRectF symbol = m_box;

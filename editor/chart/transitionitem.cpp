@@ -1,8 +1,8 @@
 #include "editor/chart/transitionitem.h"
 
 #include "editor/chart/chartstyle.h"
-#include "editor/chart/segmentstroke.h"
 #include "editor/chart/layoutconversion.h"
+#include "editor/chart/segmentstroke.h"
 #include "editor/document.h"
 
 #include <QFontMetricsF>

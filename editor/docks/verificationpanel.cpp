@@ -103,7 +103,6 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
 
     m_view->setObjectName(QStringLiteral("verificationView"));
     m_view->setColumnCount(4);
-    m_view->setHeaderLabels({QString(), QString(), QString(), QString()});
     m_view->setRootIsDecorated(false);
     m_view->setUniformRowHeights(true);
     m_view->setAllColumnsShowFocus(true);

@@ -207,8 +207,9 @@ void SimulationDock::retranslate()
     onRunningChanged(m_session->isRunning());
     if (m_session->isActive()) {
         buildInputRows();
+        refreshStatus();
         m_shownExplanation.clear();
-        onStepped();
+        refreshExplanation();
     }
     refreshReplay();
 }
@@ -751,7 +752,7 @@ void SimulationDock::refreshExplanation()
         shown << QString::fromStdString(e.transitionId) << QString::number(static_cast<int>(e.status))
               << QString::fromStdString(e.preemptedBy);
         for (const core::ExplanationReason& reason : e.reasons)
-            shown << QString::fromStdString(core::toText(reason)); // a language change builds the dock anew
+            shown << QString::fromStdString(core::toText(reason)); // retranslate() clears the cache
         shown << QString();
     }
     if (shown == m_shownExplanation)
