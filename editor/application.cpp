@@ -1,6 +1,7 @@
 #include "editor/application.h"
 
 #include "editor/autosave.h"
+#include "editor/fontconfigwarmup.h"
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/settings.h"
@@ -14,6 +15,8 @@ namespace editor {
 
 int runApplication(int argc, char** argv, const StartupHooks& hooks)
 {
+    // Beside the platform's start-up: the chart's first label needs it.
+    FontconfigWarmUp fontconfig;
     QApplication app(argc, argv);
     // Before any widget exists, so that every one is built with it.
     WindowButtonStyle::install();
@@ -37,6 +40,8 @@ int runApplication(int argc, char** argv, const StartupHooks& hooks)
                                  QStringLiteral("[model]"));
     parser.process(app);
 
+    // Nothing above lays out text; the chart's labels below do.
+    fontconfig.wait();
     // The chart first: the docks fill in right after the first frame.
     MainWindow window(translators, MainWindow::DockContents::AfterFirstFrame);
     // After the first frame as well: the X11 platform renders the icon in
