@@ -31,7 +31,6 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
@@ -401,10 +400,8 @@ void MainWindow::createStatusBar()
     m_zoomIndicator = new ZoomIndicator(this);
     m_zoomIndicator->setZoom(m_view->zoom());
     connect(m_view, &ChartView::zoomChanged, m_zoomIndicator, &ZoomIndicator::setZoom);
-    m_simulationIndicator = new QLabel(this);
+    m_simulationIndicator = new StatusBadge(this);
     m_simulationIndicator->setObjectName("simulationIndicator");
-    m_simulationIndicator->setStyleSheet(
-        QStringLiteral("QLabel { background: #ffd84d; color: #20242a; padding: 1px 6px; border-radius: 3px; }"));
     m_simulationIndicator->hide();
     statusBar()->addPermanentWidget(m_simulationIndicator);
     statusBar()->addPermanentWidget(m_problemCounter);

@@ -9,7 +9,6 @@
 class QAction;
 class QActionGroup;
 class QDockWidget;
-class QLabel;
 class QMenu;
 
 namespace editor {
@@ -27,6 +26,7 @@ class Settings;
 class SimulationChartMarks;
 class SimulationDock;
 class SimulationSession;
+class StatusBadge;
 class StPreviewDock;
 class StepDock;
 class TransitionDock;
@@ -150,7 +150,7 @@ private:
     SimulationSession* m_session = nullptr;
     SimulationChartMarks* m_chartMarks = nullptr;
     SimulationDock* m_simulationDock = nullptr;
-    QLabel* m_simulationIndicator = nullptr;
+    StatusBadge* m_simulationIndicator = nullptr;
     VerificationRunner* m_verification = nullptr;
 
     QMenu* m_fileMenu = nullptr;

@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
+#include <QPainter>
 #include <QStyle>
 #include <QToolButton>
 
@@ -119,6 +120,30 @@ void ZoomIndicator::retranslate()
     const int percent = int(std::lround(m_zoom * 100));
     m_label->setText(tr("Zoom: %1 %").arg(locale().toString(percent)));
     m_label->setToolTip(tr("Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart"));
+}
+
+StatusBadge::StatusBadge(QWidget* parent)
+    : QLabel(parent)
+{
+    constexpr int kHorizontalPadding = 6;
+    constexpr int kVerticalPadding = 1;
+    setContentsMargins(kHorizontalPadding, kVerticalPadding, kHorizontalPadding, kVerticalPadding);
+    QPalette colors = palette();
+    colors.setColor(QPalette::WindowText, textColor());
+    setPalette(colors);
+}
+
+void StatusBadge::paintEvent(QPaintEvent* event)
+{
+    constexpr double kCornerRadius = 3;
+    {
+        QPainter painter(this);
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(badgeColor());
+        painter.drawRoundedRect(QRectF(rect()), kCornerRadius, kCornerRadius);
+    }
+    QLabel::paintEvent(event);
 }
 
 } // namespace editor

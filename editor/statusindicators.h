@@ -1,8 +1,8 @@
 #pragma once
 
+#include <QLabel>
 #include <QWidget>
 
-class QLabel;
 class QToolButton;
 
 namespace editor {
@@ -53,6 +53,23 @@ private:
 
     QLabel* m_label;
     double m_zoom = 1.0;
+};
+
+// A label on a rounded yellow badge, like a highlighter mark: the status
+// bar's "Simulation: editing locked". Painted rather than styled: a style
+// sheet would put a QStyleSheetStyle (a CSS parser and a style of its own)
+// under the widget on every start, for a badge that shows only while simulating.
+class StatusBadge : public QLabel {
+    Q_OBJECT
+
+public:
+    explicit StatusBadge(QWidget* parent = nullptr);
+
+    static QColor badgeColor() { return QColor(0xff, 0xd8, 0x4d); }
+    static QColor textColor() { return QColor(0x20, 0x24, 0x2a); }
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
 };
 
 } // namespace editor

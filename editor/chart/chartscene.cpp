@@ -195,6 +195,8 @@ void ChartScene::onModelReset()
 
 void ChartScene::retranslate()
 {
+    for (FrameItem* frame : std::as_const(m_frames))
+        frame->retranslate();
     onModelReset();
     update();
 }

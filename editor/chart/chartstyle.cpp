@@ -1,5 +1,7 @@
 #include "editor/chart/chartstyle.h"
 
+#include <QPainter>
+
 namespace editor::chartstyle {
 
 namespace {
@@ -35,29 +37,36 @@ QColor frameBorderColor(core::Family family)
 }
 
 // Static fonts: built once, on the first paint (a QApplication exists by then).
-const QFont& stepFont(double boxSize)
-{
-    static const QFont normal = makeFont(15, true);
-    static const QFont big = makeFont(22, true);
-    return boxSize >= 60 ? big : normal;
-}
-
 const QFont& labelFont()
 {
     static const QFont font = makeFont(12);
     return font;
 }
 
-const QFont& titleFont()
+const QFont& boldFont()
 {
     static const QFont font = makeFont(15, true);
     return font;
 }
 
-const QFont& badgeFont()
+double stepIdScale(double boxSize)
 {
-    static const QFont font = makeFont(11, true);
-    return font;
+    return boxSize >= 60 ? 22.0 / 15.0 : 1.0;
+}
+
+void drawCentredText(QPainter* painter, const QRectF& rect, const QString& text, const QFont& font, double scale)
+{
+    painter->setFont(font);
+    if (scale == 1.0) {
+        painter->drawText(rect, Qt::AlignCenter, text);
+        return;
+    }
+    painter->save();
+    painter->translate(rect.center());
+    painter->scale(scale, scale);
+    const QSizeF size = rect.size() / scale;
+    painter->drawText(QRectF(QPointF(-size.width() / 2, -size.height() / 2), size), Qt::AlignCenter, text);
+    painter->restore();
 }
 
 } // namespace editor::chartstyle

@@ -4,6 +4,9 @@
 
 #include <QColor>
 #include <QFont>
+#include <QRectF>
+
+class QPainter;
 
 // Colours, pen widths and fonts of the chart, in one place so the items
 // agree. Sizes are in scene units: the template sheet is 1500 x 960, so a
@@ -45,9 +48,20 @@ inline QColor falseMarkColor() { return QColor(0x9a, 0xa1, 0xab); }
 QColor frameFillColor(core::Family family);
 QColor frameBorderColor(core::Family family);
 
-const QFont& stepFont(double boxSize);
+// The chart's text uses two fonts: a regular one for the transition labels
+// and a bold one for everything else, drawn larger or smaller by scaling.
+// Each size of a font is a font engine of its own (fontconfig matching,
+// FreeType sizing, shaping tables: 0.3 to 1 ms each, paid by the first frame),
+// and the chart is drawn scaled anyway, so a scaled bold font looks the same.
 const QFont& labelFont();
-const QFont& titleFont();
-const QFont& badgeFont();
+const QFont& boldFont();
+// The scale of boldFont() for a step's id (larger in the big hub steps) and
+// for a badge's letter; family frame titles use it as it is.
+double stepIdScale(double boxSize);
+inline constexpr double kBadgeScale = 11.0 / 15.0;
+
+// `text` centred in `rect`, in `font` enlarged by `scale`.
+void drawCentredText(QPainter* painter, const QRectF& rect, const QString& text, const QFont& font,
+                     double scale = 1.0);
 
 } // namespace editor::chartstyle

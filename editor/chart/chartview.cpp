@@ -28,6 +28,9 @@ ChartView::ChartView(ChartScene* scene, QWidget* parent)
     , m_scene(scene)
 {
     setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing | QPainter::SmoothPixmapTransform);
+    // drawBackground() paints every pixel it is given: the viewport's own
+    // background fill would only paint them once more before it.
+    viewport()->setAttribute(Qt::WA_OpaquePaintEvent);
     setDragMode(ScrollHandDrag);
     setFocusPolicy(Qt::StrongFocus);
     setTransformationAnchor(AnchorViewCenter);
@@ -101,7 +104,8 @@ void ChartView::resizeEvent(QResizeEvent* event)
         zoomToFit();
 }
 
-// The sheet as white paper on the window's colour.
+// The sheet as white paper on the window's colour, each pixel filled once:
+// the window's colour only around the sheet.
 void ChartView::drawBackground(QPainter* painter, const QRectF& rect)
 {
     // Crisp and cheap: the raster engine fills aliased rectangles and draws
@@ -109,14 +113,34 @@ void ChartView::drawBackground(QPainter* painter, const QRectF& rect)
     // edge by edge over the whole window.
     painter->save();
     painter->setRenderHint(QPainter::Antialiasing, false);
-    painter->fillRect(rect, palette().color(QPalette::Window));
     const QRectF sheet = sceneRect();
-    painter->fillRect(sheet, Qt::white);
+    const QColor surround = palette().color(QPalette::Window);
+    for (const QRectF& margin : marginsAround(sheet, rect))
+        painter->fillRect(margin, surround);
+    painter->fillRect(sheet & rect, Qt::white);
     QPen border(palette().color(QPalette::Mid), 0); // cosmetic hairline
     painter->setPen(border);
     painter->setBrush(Qt::NoBrush);
     painter->drawRect(sheet);
     painter->restore();
+}
+
+// Adjacent edges are shared, so the aliased fills of these and of
+// `inner & area` neither overlap nor leave a gap.
+QList<QRectF> ChartView::marginsAround(const QRectF& inner, const QRectF& area)
+{
+    QList<QRectF> margins;
+    const auto add = [&margins](double left, double top, double right, double bottom) {
+        if (right > left && bottom > top)
+            margins.append(QRectF(QPointF(left, top), QPointF(right, bottom)));
+    };
+    const double top = std::clamp(inner.top(), area.top(), area.bottom());
+    const double bottom = std::clamp(inner.bottom(), area.top(), area.bottom());
+    add(area.left(), area.top(), area.right(), top);
+    add(area.left(), bottom, area.right(), area.bottom());
+    add(area.left(), top, std::min(inner.left(), area.right()), bottom);
+    add(std::max(inner.right(), area.left()), top, area.right(), bottom);
+    return margins;
 }
 
 bool ChartView::focusNextPrevChild(bool next)

@@ -20,6 +20,10 @@ public:
     ChartScene* chartScene() const { return m_scene; }
     double zoom() const; // 1.0 is 100 %
 
+    // The parts of `area` outside `inner` (above, below, left and right),
+    // which tile it together with `inner & area`.
+    static QList<QRectF> marginsAround(const QRectF& inner, const QRectF& area);
+
 public slots:
     void zoomIn();
     void zoomOut();

@@ -25,6 +25,12 @@ QString FrameItem::title() const
     return tr("%1 — %2").arg(QString::fromUtf8(core::familyName(m_family)), officialFamilyName(m_family));
 }
 
+void FrameItem::retranslate()
+{
+    m_shownTitle = QString();
+    update();
+}
+
 QRectF FrameItem::boundingRect() const
 {
     const double margin = chartstyle::kStrokeWidth;
@@ -38,10 +44,12 @@ void FrameItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
     segmentstroke::drawRectOutline(painter, m_rect);
 
     painter->setPen(chartstyle::frameBorderColor(m_family).darker(150));
-    painter->setFont(chartstyle::titleFont());
-    // Elided rather than cut mid-letter, should a translation be longer still.
-    const QString text = painter->fontMetrics().elidedText(title(), Qt::ElideRight, qFloor(m_titleRect.width()));
-    painter->drawText(m_titleRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, text);
+    painter->setFont(chartstyle::boldFont());
+    // Elided rather than cut mid-letter, should a translation be longer still;
+    // once, not at every paint.
+    if (m_shownTitle.isNull())
+        m_shownTitle = painter->fontMetrics().elidedText(title(), Qt::ElideRight, qFloor(m_titleRect.width()));
+    painter->drawText(m_titleRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, m_shownTitle);
 }
 
 } // namespace editor

@@ -21,6 +21,10 @@ public:
     core::Family family() const { return m_family; }
     // "A — Stop procedures", in the UI language.
     QString title() const;
+    // title() as last painted, elided to its place; null before the first paint.
+    const QString& displayedTitle() const { return m_shownTitle; }
+    // After a change of language: the title is elided anew on the next paint.
+    void retranslate();
 
     QRectF boundingRect() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -29,6 +33,7 @@ private:
     core::Family m_family;
     QRectF m_rect;
     QRectF m_titleRect;
+    QString m_shownTitle; // title(), elided to m_titleRect; null until painted
 };
 
 } // namespace editor

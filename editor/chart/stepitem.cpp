@@ -154,9 +154,8 @@ void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
         painter->drawLines(marks, 4);
     }
 
-    painter->setFont(chartstyle::stepFont(m_box.width()));
     painter->setPen(m_problem ? chartstyle::problemColor() : chartstyle::inkColor());
-    painter->drawText(m_box, Qt::AlignCenter, m_id);
+    chartstyle::drawCentredText(painter, m_box, m_id, chartstyle::boldFont(), chartstyle::stepIdScale(m_box.width()));
 }
 
 void StepItem::paintBadge(QPainter* painter) const
@@ -166,8 +165,7 @@ void StepItem::paintBadge(QPainter* painter) const
     painter->setPen(QPen(Qt::white, 1));
     painter->setBrush(chartstyle::problemColor());
     painter->drawEllipse(badge);
-    painter->setFont(chartstyle::badgeFont());
-    painter->drawText(badge, Qt::AlignCenter, QStringLiteral("!"));
+    chartstyle::drawCentredText(painter, badge, QStringLiteral("!"), chartstyle::boldFont(), chartstyle::kBadgeScale);
 }
 
 // On the bottom-right corner, clear of the problem badge (top right).
@@ -178,8 +176,7 @@ void StepItem::paintCompleteBadge(QPainter* painter) const
     painter->setPen(QPen(Qt::white, 1));
     painter->setBrush(*m_complete ? chartstyle::trueMarkColor() : chartstyle::falseMarkColor());
     painter->drawRoundedRect(badge, 3, 3);
-    painter->setFont(chartstyle::badgeFont());
-    painter->drawText(badge, Qt::AlignCenter, QStringLiteral("C"));
+    chartstyle::drawCentredText(painter, badge, QStringLiteral("C"), chartstyle::boldFont(), chartstyle::kBadgeScale);
 }
 
 } // namespace editor

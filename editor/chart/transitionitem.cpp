@@ -128,9 +128,14 @@ void TransitionItem::updateLabel()
     m_conditionText = QString::fromStdString(transition->condition).simplified();
     m_separator = showPriority && !m_conditionText.isEmpty() ? QStringLiteral(": ") : QString();
 
+    // Each measurement shapes its text anew: none twice for the same text (a
+    // label is often its priority alone).
     const QFontMetricsF metrics(chartstyle::labelFont());
-    const double available = m_labelRect.width() - metrics.horizontalAdvance(m_priorityText + m_separator);
-    m_elidedCondition = metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, available));
+    const QString prefix = m_priorityText + m_separator;
+    const double prefixWidth = prefix.isEmpty() ? 0.0 : metrics.horizontalAdvance(prefix);
+    m_elidedCondition = metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, m_labelRect.width() - prefixWidth));
+    m_priorityWidth = m_separator.isEmpty() ? prefixWidth : metrics.horizontalAdvance(m_priorityText);
+    m_shownWidth = m_elidedCondition.isEmpty() ? prefixWidth : metrics.horizontalAdvance(prefix + m_elidedCondition);
 }
 
 QString TransitionItem::labelText() const
@@ -140,9 +145,7 @@ QString TransitionItem::labelText() const
 
 QRectF TransitionItem::labelTextRect() const
 {
-    const QFontMetricsF metrics(chartstyle::labelFont());
-    const double width = std::min(m_labelRect.width(),
-                                  metrics.horizontalAdvance(m_priorityText + m_separator + m_elidedCondition));
+    const double width = std::min(m_labelRect.width(), m_shownWidth);
     double x = m_labelRect.left();
     if (m_labelAlignment == Qt::AlignRight)
         x = m_labelRect.right() - width;
@@ -277,7 +280,7 @@ void TransitionItem::paintLabel(QPainter* painter) const
     painter->setFont(chartstyle::labelFont());
     if (!m_priorityText.isEmpty()) {
         painter->drawText(at, m_priorityText);
-        const double width = metrics.horizontalAdvance(m_priorityText);
+        const double width = m_priorityWidth;
         if (m_overlined) {
             // Drawn rather than QFont::setOverline: the font's overline is
             // a hairline that vanishes when the sheet is fitted to a screen.

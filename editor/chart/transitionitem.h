@@ -43,6 +43,7 @@ public:
 
     // What the label says, before eliding: "3: NOT Stop".
     QString labelText() const;
+    QRectF labelTextRect() const; // the part of the label rectangle the shown text covers
     // The condition as drawn: elided to the label width.
     const QString& displayedCondition() const { return m_elidedCondition; }
     bool priorityShown() const { return !m_priorityText.isEmpty(); }
@@ -69,7 +70,6 @@ private:
     void updateShape();
     QString toolTipText() const;
     QLineF barLine() const;
-    QRectF labelTextRect() const; // the part of the label rectangle the text covers
     void paintLabel(QPainter* painter) const;
     void paintTokens(QPainter* painter) const;
 
@@ -92,6 +92,9 @@ private:
     QString m_separator;      // ": " between priority and condition, or empty
     QString m_conditionText;  // full, on one line
     QString m_elidedCondition;
+    // Measured once per label change rather than at every paint.
+    double m_priorityWidth = 0;  // of m_priorityText
+    double m_shownWidth = 0;     // of the whole label as shown
     bool m_overlined = false;
     bool m_problem = false;
     bool m_fired = false;

@@ -4,6 +4,7 @@
 #include "editortestsupport.h"
 
 #include "editor/chart/chartscene.h"
+#include "editor/chart/chartstyle.h"
 #include "editor/chart/chartview.h"
 #include "editor/chart/frameitem.h"
 #include "editor/chart/stepitem.h"
@@ -20,6 +21,10 @@
 #include "core/gemmatemplate.h"
 
 #include <QApplication>
+#include <QFontMetricsF>
+#include <QImage>
+#include <QPainter>
+#include <QStyleOptionGraphicsItem>
 #include <QTest>
 #include <QTranslator>
 #include <QWheelEvent>
@@ -73,6 +78,10 @@ private slots:
     void tabLeavesPastTheLastElement();
     void replacedModelIsShown();
     void languageChangeRetranslatesTooltips();
+    void marginsTileTheArea();
+    void backgroundCoversEveryPixel();
+    void bigStepIdsAreDrawnLarger();
+    void labelWidthIsTheShownText();
 
 private:
     Document* m_document = nullptr;
@@ -431,6 +440,141 @@ void TestChart::languageChangeRetranslatesTooltips()
     QCoreApplication::processEvents();
     QVERIFY2(translated.contains("[[Normal production]]"), qPrintable(translated));
     QVERIFY(!m_scene->stepItem("F1")->toolTip().contains("[["));
+
+    // Family titles are elided once per language, not at every paint.
+    const FrameItem* frame = m_scene->frameItem(core::Family::A);
+    view.grab();
+    QCOMPARE(frame->displayedTitle(), frame->title());
+    QCoreApplication::installTranslator(&translator);
+    QCoreApplication::processEvents();
+    view.grab();
+    QVERIFY2(frame->displayedTitle().contains("[[Stop procedures"), qPrintable(frame->displayedTitle()));
+    QCoreApplication::removeTranslator(&translator);
+    QCoreApplication::processEvents();
+    view.grab();
+    QCOMPARE(frame->displayedTitle(), frame->title());
+}
+
+namespace {
+
+double area(const QRectF& rect)
+{
+    return rect.isEmpty() ? 0.0 : rect.width() * rect.height();
+}
+
+// The smallest rectangle around the pixels of `image` inside `within` that
+// are darker than mid-grey (the ink of a step's id).
+QRect inkBounds(const QImage& image, const QRect& within)
+{
+    QRect bounds;
+    for (int y = within.top(); y <= within.bottom(); ++y) {
+        for (int x = within.left(); x <= within.right(); ++x) {
+            if (qGray(image.pixel(x, y)) < 128)
+                bounds |= QRect(x, y, 1, 1);
+        }
+    }
+    return bounds;
+}
+
+// The id of `step` as painted at 100 %, within its box less the outlines
+// and the marks of its type.
+QRect idInk(StepItem* step)
+{
+    const QRectF bounds = step->boundingRect();
+    QImage image(bounds.size().toSize(), QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.translate(-bounds.topLeft());
+    QStyleOptionGraphicsItem option;
+    step->paint(&painter, &option, nullptr);
+    painter.end();
+    const int inset = qRound(-bounds.left()) + 10; // the item's box starts at (0, 0)
+    return inkBounds(image, QRect(QPoint(0, 0), image.size()).adjusted(inset, inset, -inset, -inset));
+}
+
+} // namespace
+
+void TestChart::marginsTileTheArea()
+{
+    const QRectF area(0, 0, 100, 80);
+    const QList<QRectF> inners{QRectF(20, 10, 50, 40), QRectF(-10, 30, 40, 100), QRectF(-5, -5, 200, 200),
+                               QRectF(150, 150, 10, 10), QRectF(0, 0, 100, 40)};
+    for (const QRectF& inner : inners) {
+        const QList<QRectF> margins = ChartView::marginsAround(inner, area);
+        double covered = ::area(inner & area);
+        for (qsizetype i = 0; i < margins.size(); ++i) {
+            QVERIFY(area.contains(margins[i]));
+            QCOMPARE(::area(margins[i] & inner), 0.0);
+            for (qsizetype j = i + 1; j < margins.size(); ++j)
+                QCOMPARE(::area(margins[i] & margins[j]), 0.0);
+            covered += ::area(margins[i]);
+        }
+        QCOMPARE(covered, ::area(area));
+    }
+}
+
+void TestChart::backgroundCoversEveryPixel()
+{
+    // The viewport paints without a background fill of its own: every pixel
+    // is the sheet, an item, or the window's colour around the sheet, at a
+    // fractional zoom that leaves room on all four sides.
+    ChartView view(m_scene);
+    view.resize(900, 700);
+    view.zoomToFit();
+    view.zoomOut();
+    view.zoomOut();
+    QWidget* viewport = view.viewport();
+    QVERIFY(viewport->testAttribute(Qt::WA_OpaquePaintEvent));
+    QImage image(viewport->size(), QImage::Format_RGB32);
+    const QColor unpainted(Qt::magenta);
+    image.fill(unpainted);
+    viewport->render(&image, QPoint(), QRegion(), QWidget::DrawChildren);
+
+    const QRect sheet = view.mapFromScene(m_scene->sceneRect()).boundingRect();
+    const QColor surround = view.palette().color(QPalette::Window);
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor pixel = image.pixelColor(x, y);
+            QVERIFY2(pixel != unpainted, qPrintable(QString("unpainted pixel at %1, %2").arg(x).arg(y)));
+            if (!sheet.adjusted(-1, -1, 1, 1).contains(x, y))
+                QCOMPARE(pixel, surround);
+        }
+    }
+    // The paper: white in the corner between the frames and the border.
+    const QPoint corner = sheet.topLeft() + QPoint(3, 3);
+    QCOMPARE(image.pixelColor(corner), QColor(Qt::white));
+}
+
+void TestChart::bigStepIdsAreDrawnLarger()
+{
+    // The hub step's id is the step font scaled up rather than a font of its
+    // own: A1 (the hub, 60 units) against A2 (40), both simple steps.
+    QCOMPARE(m_scene->stepItem("A1")->boundingRect().width() - m_scene->stepItem("A2")->boundingRect().width(), 20.0);
+    const QRect big = idInk(m_scene->stepItem("A1"));
+    const QRect normal = idInk(m_scene->stepItem("A2"));
+    QVERIFY(!big.isEmpty());
+    QVERIFY(!normal.isEmpty());
+    const double ratio = double(big.height()) / normal.height();
+    QVERIFY2(ratio > 1.3 && ratio < 1.65, qPrintable(QString::number(ratio)));
+    QVERIFY(big.width() > normal.width());
+}
+
+void TestChart::labelWidthIsTheShownText()
+{
+    const QFontMetricsF metrics(chartstyle::labelFont());
+    // A priority alone, a priority and a condition, and an elided condition.
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", "NOT Stop"));
+    m_document->push(new SetConditionCommand(*m_document, "F1->F4",
+                                             "Start AND NOT Stop AND Door_Closed AND Pressure_OK AND Air_OK"));
+    for (const char* id : {"F1->D2", "F1->A2", "F1->F4"}) {
+        const TransitionItem* item = m_scene->transitionItem(id);
+        QVERIFY(item->priorityShown());
+        const QString prefix = item->labelText().section(QLatin1Char(':'), 0, 0);
+        QString shown = prefix;
+        if (!item->displayedCondition().isEmpty())
+            shown += QStringLiteral(": ") + item->displayedCondition();
+        QCOMPARE(item->labelTextRect().width(), metrics.horizontalAdvance(shown));
+    }
 }
 
 QTEST_MAIN(TestChart)

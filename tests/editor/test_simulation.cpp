@@ -19,6 +19,7 @@
 #include "editor/simulation/simulationsession.h"
 #include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
+#include "editor/statusindicators.h"
 
 #include "core/conditionevaluator.h"
 #include "core/scenario.h"
@@ -224,7 +225,11 @@ void TestSimulation::windowLocksEditingWidgets()
     QVERIFY(!stepDock->widget()->isEnabled());
     QVERIFY(!variablesDock->widget()->isEnabled());
     QVERIFY(m_dock->isVisible());
-    QVERIFY(m_window->findChild<QLabel*>(QStringLiteral("simulationIndicator"))->isVisible());
+    auto* indicator = m_window->findChild<StatusBadge*>(QStringLiteral("simulationIndicator"));
+    QVERIFY(indicator && indicator->isVisible());
+    // On its badge, in the padding before the text.
+    const QImage badge = indicator->grab().toImage();
+    QCOMPARE(badge.pixelColor(3, badge.height() / 2), StatusBadge::badgeColor());
 
     simulate->trigger();
     QVERIFY(!simulate->isChecked());
