@@ -1,10 +1,10 @@
 #include "editor/application.h"
 
 #include "editor/autosave.h"
-#include "editor/fontconfigwarmup.h"
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/settings.h"
+#include "editor/startupwarmup.h"
 #include "editor/windowbuttonstyle.h"
 
 #include <QApplication>
@@ -15,8 +15,8 @@ namespace editor {
 
 int runApplication(int argc, char** argv, const StartupHooks& hooks)
 {
-    // Beside the platform's start-up: the chart's first label needs it.
-    FontconfigWarmUp fontconfig;
+    // Beside the platform's start-up (startupwarmup.h).
+    StartupWarmUp warmUp;
     QApplication app(argc, argv);
     // Before any widget exists, so that every one is built with it.
     WindowButtonStyle::install();
@@ -40,8 +40,9 @@ int runApplication(int argc, char** argv, const StartupHooks& hooks)
                                  QStringLiteral("[model]"));
     parser.process(app);
 
+    warmUp.applicationReady();
     // Nothing above lays out text; the chart's labels below do.
-    fontconfig.wait();
+    warmUp.waitForFontconfig();
     // The chart first: the docks fill in right after the first frame.
     MainWindow window(translators, MainWindow::DockContents::AfterFirstFrame);
     // After the first frame as well: the X11 platform renders the icon in
@@ -56,7 +57,9 @@ int runApplication(int argc, char** argv, const StartupHooks& hooks)
         window.offerRecovery();
     if (!parser.positionalArguments().isEmpty())
         window.openFile(parser.positionalArguments().constFirst());
-    return app.exec();
+    const int exitCode = app.exec();
+    warmUp.finish();
+    return exitCode;
 }
 
 } // namespace editor

@@ -1,4 +1,7 @@
-#include "editor/fontconfigwarmup.h"
+#include "editor/startupwarmup.h"
+
+#include <QDBusConnection>
+#include <QFontDatabase>
 
 #ifdef GGSTUDIO_HAVE_FONTCONFIG
 #include <fontconfig/fontconfig.h>
@@ -28,25 +31,55 @@ void lowerThisThreadsPriority()
 
 } // namespace
 
-FontconfigWarmUp::FontconfigWarmUp()
+StartupWarmUp::StartupWarmUp()
+    : m_thread([this] { run(); })
 {
+}
+
+StartupWarmUp::~StartupWarmUp()
+{
+    finish();
+}
+
+void StartupWarmUp::run()
+{
+    lowerThisThreadsPriority();
 #ifdef GGSTUDIO_HAVE_FONTCONFIG
     // FcInit loads the default configuration and the font caches once per
     // process; Qt's font database then finds them loaded.
-    m_thread = std::thread([] {
-        lowerThisThreadsPriority();
-        FcInit();
-    });
+    FcInit();
 #endif
+    std::unique_lock lock(m_mutex);
+    m_fontconfigLoaded = true;
+    m_changed.notify_all();
+    m_changed.wait(lock, [this] { return m_applicationReady || m_finishing; });
+    if (!m_applicationReady)
+        return;
+    lock.unlock();
+    QFontDatabase::families();
+    QDBusConnection::sessionBus();
 }
 
-FontconfigWarmUp::~FontconfigWarmUp()
+void StartupWarmUp::applicationReady()
 {
-    wait();
+    const std::lock_guard lock(m_mutex);
+    m_applicationReady = true;
+    m_changed.notify_all();
 }
 
-void FontconfigWarmUp::wait()
+void StartupWarmUp::waitForFontconfig()
 {
+    std::unique_lock lock(m_mutex);
+    m_changed.wait(lock, [this] { return m_fontconfigLoaded; });
+}
+
+void StartupWarmUp::finish()
+{
+    {
+        const std::lock_guard lock(m_mutex);
+        m_finishing = true;
+        m_changed.notify_all();
+    }
     if (m_thread.joinable())
         m_thread.join();
 }
