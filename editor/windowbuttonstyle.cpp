@@ -11,7 +11,7 @@ namespace editor {
 
 namespace {
 
-enum class Glyph { Close, Float, ArrowRight, ArrowLeft, ArrowDown };
+enum class Glyph { Close, Float, ArrowRight, ArrowLeft, ArrowDown, ClearText };
 
 // A glyph in the palette's text colour.
 class WindowButtonIconEngine : public DrawnIconEngine {
@@ -30,6 +30,10 @@ protected:
     {
         const QPalette::ColorGroup group = mode == QIcon::Disabled ? QPalette::Disabled : QPalette::Active;
         const QColor ink = QGuiApplication::palette().color(group, QPalette::WindowText);
+        if (m_glyph == Glyph::ClearText) {
+            drawClearText(painter, ink, QGuiApplication::palette().color(group, QPalette::Base));
+            return;
+        }
         painter.setPen(QPen(ink, 1.3, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         painter.setBrush(Qt::NoBrush);
         drawGlyph(painter);
@@ -49,6 +53,8 @@ private:
                                             QPointF(12.0, 9.5), QPointF(10.0, 9.5)}));
             painter.drawRect(QRectF(3.0, 5.5, 6.5, 6.5));
             return;
+        case Glyph::ClearText:
+            return; // drawClearText()
         case Glyph::ArrowRight:
         case Glyph::ArrowLeft:
         case Glyph::ArrowDown:
@@ -58,6 +64,19 @@ private:
                 painter.drawPolyline(QPolygonF({QPointF(x, -3.5), QPointF(x + 3.0, 0.0), QPointF(x, 3.5)}));
             return;
         }
+    }
+
+    // A line edit's clear button: a cross cut out of a soft disc, as the
+    // styles' own image shows it.
+    static void drawClearText(QPainter& painter, QColor ink, QColor cut)
+    {
+        ink.setAlphaF(0.55);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(ink);
+        painter.drawEllipse(QPointF(7.5, 7.5), 6.0, 6.0);
+        painter.setPen(QPen(cut, 1.4, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(QPointF(5.0, 5.0), QPointF(10.0, 10.0));
+        painter.drawLine(QPointF(10.0, 5.0), QPointF(5.0, 10.0));
     }
 
     Glyph m_glyph;
@@ -88,6 +107,8 @@ QIcon WindowButtonStyle::standardIcon(StandardPixmap standardIcon, const QStyleO
         return QIcon(new WindowButtonIconEngine(rightToLeft(option) ? Glyph::ArrowLeft : Glyph::ArrowRight));
     case SP_ToolBarVerticalExtensionButton:
         return QIcon(new WindowButtonIconEngine(Glyph::ArrowDown));
+    case SP_LineEditClearButton:
+        return QIcon(new WindowButtonIconEngine(Glyph::ClearText));
     default:
         return QProxyStyle::standardIcon(standardIcon, option, widget);
     }

@@ -5,8 +5,10 @@
 namespace editor {
 
 // Qt's own styles (Fusion, Windows) with the small window-button glyphs
-// drawn instead of loaded: the close and float buttons of dock title bars
-// and the overflow arrow of menu bars and tool bars.
+// drawn instead of loaded: the close and float buttons of dock title bars,
+// the overflow arrow of menu bars and tool bars, and the clear button of
+// line edits (the Variables dock's filter; its theme lookup and image read
+// were 5 ms of the docks' first build).
 //
 // Those styles load the glyphs from PNG files, and the first PNG read goes
 // through QImageReader, which loads every installed image-format plugin

@@ -844,7 +844,8 @@ void TestMainWindow::windowButtonsAreDrawn()
     const WindowButtonStyle style(counting); // owns `counting`
     for (const QStyle::StandardPixmap glyph :
          {QStyle::SP_TitleBarCloseButton, QStyle::SP_DockWidgetCloseButton, QStyle::SP_TitleBarNormalButton,
-          QStyle::SP_ToolBarHorizontalExtensionButton, QStyle::SP_ToolBarVerticalExtensionButton}) {
+          QStyle::SP_ToolBarHorizontalExtensionButton, QStyle::SP_ToolBarVerticalExtensionButton,
+          QStyle::SP_LineEditClearButton}) {
         const QImage image = style.standardIcon(glyph).pixmap(QSize(32, 32)).toImage();
         QCOMPARE(image.size(), QSize(32, 32));
         QCOMPARE(qAlpha(image.pixel(0, 0)), 0); // drawn on transparency
