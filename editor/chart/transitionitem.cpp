@@ -82,7 +82,7 @@ bool TransitionItem::isHiddenInModel() const
 void TransitionItem::refresh()
 {
     updateLabel();
-    updateShape();
+    m_shapeValid = false;
     setToolTip(toolTipText());
     update();
 }
@@ -162,19 +162,20 @@ QLineF TransitionItem::barLine() const
     return {m_barCenter.x(), m_barCenter.y() - half, m_barCenter.x(), m_barCenter.y() + half};
 }
 
-void TransitionItem::updateShape()
+QPainterPath TransitionItem::buildShape() const
 {
     QPainterPath route;
     route.addPolygon(m_line);
     QPainterPathStroker stroker;
     stroker.setWidth(8);
-    m_shape = stroker.createStroke(route);
-    m_shape.addPolygon(m_arrow);
+    QPainterPath shape = stroker.createStroke(route);
+    shape.addPolygon(m_arrow);
     const QLineF bar = barLine();
-    m_shape.addRect(QRectF(bar.p1(), bar.p2()).adjusted(-4, -4, 4, 4));
+    shape.addRect(QRectF(bar.p1(), bar.p2()).adjusted(-4, -4, 4, 4));
     if (!labelText().isEmpty())
-        m_shape.addRect(labelTextRect());
-    m_shape.setFillRule(Qt::WindingFill);
+        shape.addRect(labelTextRect());
+    shape.setFillRule(Qt::WindingFill);
+    return shape;
 }
 
 QString TransitionItem::toolTipText() const
@@ -211,6 +212,10 @@ QRectF TransitionItem::boundingRect() const
 
 QPainterPath TransitionItem::shape() const
 {
+    if (!m_shapeValid) {
+        m_shape = buildShape();
+        m_shapeValid = true;
+    }
     return m_shape;
 }
 

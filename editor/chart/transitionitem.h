@@ -67,7 +67,7 @@ public:
 
 private:
     void updateLabel();
-    void updateShape();
+    QPainterPath buildShape() const;
     QString toolTipText() const;
     QLineF barLine() const;
     void paintLabel(QPainter* painter) const;
@@ -86,7 +86,10 @@ private:
     QRectF m_labelRect;
     Qt::Alignment m_labelAlignment = Qt::AlignLeft; // towards the bar
     QRectF m_bounds;
-    QPainterPath m_shape;
+    // Built when the scene first asks (a click, a rubber band), not at every
+    // label change: stroking the route is most of a refresh.
+    mutable QPainterPath m_shape;
+    mutable bool m_shapeValid = false;
 
     QString m_priorityText;   // empty when the priority is not shown
     QString m_separator;      // ": " between priority and condition, or empty

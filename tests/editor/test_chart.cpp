@@ -82,6 +82,7 @@ private slots:
     void backgroundCoversEveryPixel();
     void bigStepIdsAreDrawnLarger();
     void labelWidthIsTheShownText();
+    void shapeFollowsTheLabel();
 
 private:
     Document* m_document = nullptr;
@@ -575,6 +576,26 @@ void TestChart::labelWidthIsTheShownText()
             shown += QStringLiteral(": ") + item->displayedCondition();
         QCOMPARE(item->labelTextRect().width(), metrics.horizontalAdvance(shown));
     }
+}
+
+void TestChart::shapeFollowsTheLabel()
+{
+    // The shape is built when first asked for: after a change it covers the
+    // label as it now is, not as it was.
+    TransitionItem* item = m_scene->transitionItem("F1->A2");
+    const QPointF shortLabel = item->labelTextRect().center();
+    QVERIFY(item->shape().contains(shortLabel));
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", "Start AND NOT Stop AND Door_Closed"));
+    const QRectF longLabel = item->labelTextRect();
+    QVERIFY(longLabel.width() > 60);
+    // The end of the long label away from where the short one stands (labels
+    // keep to their bar's side).
+    const bool shortNearRight = std::abs(longLabel.right() - shortLabel.x()) < std::abs(longLabel.left() - shortLabel.x());
+    const QPointF farEnd(shortNearRight ? longLabel.left() + 3 : longLabel.right() - 3, longLabel.center().y());
+    QVERIFY(item->shape().contains(farEnd));
+    m_document->undoStack()->undo();
+    QVERIFY(!item->shape().contains(farEnd));
+    QVERIFY(item->shape().contains(shortLabel));
 }
 
 QTEST_MAIN(TestChart)
