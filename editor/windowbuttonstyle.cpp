@@ -11,7 +11,17 @@ namespace editor {
 
 namespace {
 
-enum class Glyph { Close, Float, ArrowRight, ArrowLeft, ArrowDown, ClearText };
+enum class Glyph {
+    Close, Float, ArrowRight, ArrowLeft, ArrowDown, ClearText,
+    // Media controls (the Simulation dock): filled shapes.
+    Play, Pause, SkipForward, SkipBackward, Stop,
+};
+
+bool isMediaGlyph(Glyph glyph)
+{
+    return glyph == Glyph::Play || glyph == Glyph::Pause || glyph == Glyph::SkipForward
+        || glyph == Glyph::SkipBackward || glyph == Glyph::Stop;
+}
 
 // A glyph in the palette's text colour.
 class WindowButtonIconEngine : public DrawnIconEngine {
@@ -34,6 +44,12 @@ protected:
             drawClearText(painter, ink, QGuiApplication::palette().color(group, QPalette::Base));
             return;
         }
+        if (isMediaGlyph(m_glyph)) {
+            painter.setPen(Qt::NoPen);
+            painter.setBrush(ink);
+            drawMediaGlyph(painter);
+            return;
+        }
         painter.setPen(QPen(ink, 1.3, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         painter.setBrush(Qt::NoBrush);
         drawGlyph(painter);
@@ -54,7 +70,12 @@ private:
             painter.drawRect(QRectF(3.0, 5.5, 6.5, 6.5));
             return;
         case Glyph::ClearText:
-            return; // drawClearText()
+        case Glyph::Play:
+        case Glyph::Pause:
+        case Glyph::SkipForward:
+        case Glyph::SkipBackward:
+        case Glyph::Stop:
+            return; // drawClearText(), drawMediaGlyph()
         case Glyph::ArrowRight:
         case Glyph::ArrowLeft:
         case Glyph::ArrowDown:
@@ -77,6 +98,35 @@ private:
         painter.setPen(QPen(cut, 1.4, Qt::SolidLine, Qt::RoundCap));
         painter.drawLine(QPointF(5.0, 5.0), QPointF(10.0, 10.0));
         painter.drawLine(QPointF(10.0, 5.0), QPointF(5.0, 10.0));
+    }
+
+    void drawMediaGlyph(QPainter& painter) const
+    {
+        const QPolygonF playTriangle({QPointF(4.0, 2.5), QPointF(12.5, 7.5), QPointF(4.0, 12.5)});
+        switch (m_glyph) {
+        case Glyph::Play:
+            painter.drawPolygon(playTriangle);
+            return;
+        case Glyph::Pause:
+            painter.drawRect(QRectF(4.0, 3.0, 2.5, 9.0));
+            painter.drawRect(QRectF(8.5, 3.0, 2.5, 9.0));
+            return;
+        case Glyph::SkipForward:
+        case Glyph::SkipBackward:
+            // A triangle against a bar; mirrored for backward.
+            if (m_glyph == Glyph::SkipBackward) {
+                painter.translate(15.0, 0.0);
+                painter.scale(-1.0, 1.0);
+            }
+            painter.drawPolygon(QPolygonF({QPointF(3.0, 3.0), QPointF(10.0, 7.5), QPointF(3.0, 12.0)}));
+            painter.drawRect(QRectF(10.5, 3.0, 2.0, 9.0));
+            return;
+        case Glyph::Stop:
+            painter.drawRect(QRectF(3.5, 3.5, 8.0, 8.0));
+            return;
+        default:
+            return;
+        }
     }
 
     Glyph m_glyph;
@@ -109,6 +159,16 @@ QIcon WindowButtonStyle::standardIcon(StandardPixmap standardIcon, const QStyleO
         return QIcon(new WindowButtonIconEngine(Glyph::ArrowDown));
     case SP_LineEditClearButton:
         return QIcon(new WindowButtonIconEngine(Glyph::ClearText));
+    case SP_MediaPlay:
+        return QIcon(new WindowButtonIconEngine(Glyph::Play));
+    case SP_MediaPause:
+        return QIcon(new WindowButtonIconEngine(Glyph::Pause));
+    case SP_MediaSkipForward:
+        return QIcon(new WindowButtonIconEngine(Glyph::SkipForward));
+    case SP_MediaSkipBackward:
+        return QIcon(new WindowButtonIconEngine(Glyph::SkipBackward));
+    case SP_MediaStop:
+        return QIcon(new WindowButtonIconEngine(Glyph::Stop));
     default:
         return QProxyStyle::standardIcon(standardIcon, option, widget);
     }

@@ -10,6 +10,7 @@
 #include "editor/docks/variabletypedelegate.h"
 #include "editor/document.h"
 #include "editor/selection.h"
+#include "editor/severityicon.h"
 
 #include "core/iectypes.h"
 #include "core/model.h"
@@ -132,7 +133,9 @@ VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* 
     messageLayout->setContentsMargins(6, 4, 6, 4);
     auto* messageIcon = new QLabel(messageRow);
     const int iconSize = style()->pixelMetric(QStyle::PM_SmallIconSize);
-    messageIcon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(iconSize, iconSize));
+    // Drawn, as the Problems dock's marks: the style's message-box icon goes
+    // through the icon theme (a third of the docks' build, with no theme).
+    messageIcon->setPixmap(severityIcon(core::Severity::Warning).pixmap(iconSize, iconSize));
     m_messageLabel = new QLabel(messageRow);
     m_messageLabel->setObjectName(QStringLiteral("messageLabel"));
     m_messageLabel->setWordWrap(true);

@@ -845,7 +845,8 @@ void TestMainWindow::windowButtonsAreDrawn()
     for (const QStyle::StandardPixmap glyph :
          {QStyle::SP_TitleBarCloseButton, QStyle::SP_DockWidgetCloseButton, QStyle::SP_TitleBarNormalButton,
           QStyle::SP_ToolBarHorizontalExtensionButton, QStyle::SP_ToolBarVerticalExtensionButton,
-          QStyle::SP_LineEditClearButton}) {
+          QStyle::SP_LineEditClearButton, QStyle::SP_MediaPlay, QStyle::SP_MediaPause, QStyle::SP_MediaSkipForward,
+          QStyle::SP_MediaSkipBackward, QStyle::SP_MediaStop}) {
         const QImage image = style.standardIcon(glyph).pixmap(QSize(32, 32)).toImage();
         QCOMPARE(image.size(), QSize(32, 32));
         QCOMPARE(qAlpha(image.pixel(0, 0)), 0); // drawn on transparency
