@@ -7,21 +7,17 @@
 #include <QStyleFactory>
 #include <QStyleOption>
 
+#include <optional>
+
 namespace editor {
 
 namespace {
 
 enum class Glyph {
     Close, Float, ArrowRight, ArrowLeft, ArrowDown, ClearText,
-    // Media controls (the Simulation dock): filled shapes.
+    // Media controls (the Simulation dock).
     Play, Pause, SkipForward, SkipBackward, Stop,
 };
-
-bool isMediaGlyph(Glyph glyph)
-{
-    return glyph == Glyph::Play || glyph == Glyph::Pause || glyph == Glyph::SkipForward
-        || glyph == Glyph::SkipBackward || glyph == Glyph::Stop;
-}
 
 // A glyph in the palette's text colour.
 class WindowButtonIconEngine : public DrawnIconEngine {
@@ -39,81 +35,71 @@ protected:
     void draw(QPainter& painter, QIcon::Mode mode) const override
     {
         const QPalette::ColorGroup group = mode == QIcon::Disabled ? QPalette::Disabled : QPalette::Active;
-        const QColor ink = QGuiApplication::palette().color(group, QPalette::WindowText);
-        if (m_glyph == Glyph::ClearText) {
-            drawClearText(painter, ink, QGuiApplication::palette().color(group, QPalette::Base));
-            return;
-        }
-        if (isMediaGlyph(m_glyph)) {
-            painter.setPen(Qt::NoPen);
-            painter.setBrush(ink);
-            drawMediaGlyph(painter);
-            return;
-        }
-        painter.setPen(QPen(ink, 1.3, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        painter.setBrush(Qt::NoBrush);
-        drawGlyph(painter);
+        const QPalette& palette = QGuiApplication::palette();
+        drawGlyph(painter, palette.color(group, QPalette::WindowText), palette.color(group, QPalette::Base));
     }
 
 private:
-    void drawGlyph(QPainter& painter) const
+    // Window buttons and arrows are outlines; media controls are filled.
+    static void outline(QPainter& painter, const QColor& ink)
+    {
+        painter.setPen(QPen(ink, 1.3, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter.setBrush(Qt::NoBrush);
+    }
+
+    static void fill(QPainter& painter, const QColor& ink)
+    {
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(ink);
+    }
+
+    // `ink` draws the glyph; `base`, the field's background, cuts into it.
+    void drawGlyph(QPainter& painter, QColor ink, const QColor& base) const
     {
         switch (m_glyph) {
         case Glyph::Close:
+            outline(painter, ink);
             painter.drawLine(QPointF(4.5, 4.5), QPointF(10.5, 10.5));
             painter.drawLine(QPointF(10.5, 4.5), QPointF(4.5, 10.5));
             return;
         case Glyph::Float:
             // A window in front of another: the one behind shows its top and right.
+            outline(painter, ink);
             painter.drawPolyline(QPolygonF({QPointF(5.5, 5.0), QPointF(5.5, 3.0), QPointF(12.0, 3.0),
                                             QPointF(12.0, 9.5), QPointF(10.0, 9.5)}));
             painter.drawRect(QRectF(3.0, 5.5, 6.5, 6.5));
             return;
-        case Glyph::ClearText:
-        case Glyph::Play:
-        case Glyph::Pause:
-        case Glyph::SkipForward:
-        case Glyph::SkipBackward:
-        case Glyph::Stop:
-            return; // drawClearText(), drawMediaGlyph()
         case Glyph::ArrowRight:
         case Glyph::ArrowLeft:
         case Glyph::ArrowDown:
+            outline(painter, ink);
             painter.translate(7.5, 7.5);
             painter.rotate(m_glyph == Glyph::ArrowLeft ? 180 : m_glyph == Glyph::ArrowDown ? 90 : 0);
             for (const qreal x : {-3.5, 0.5}) // a double chevron, as overflow arrows are drawn
                 painter.drawPolyline(QPolygonF({QPointF(x, -3.5), QPointF(x + 3.0, 0.0), QPointF(x, 3.5)}));
             return;
-        }
-    }
-
-    // A line edit's clear button: a cross cut out of a soft disc, as the
-    // styles' own image shows it.
-    static void drawClearText(QPainter& painter, QColor ink, QColor cut)
-    {
-        ink.setAlphaF(0.55);
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(ink);
-        painter.drawEllipse(QPointF(7.5, 7.5), 6.0, 6.0);
-        painter.setPen(QPen(cut, 1.4, Qt::SolidLine, Qt::RoundCap));
-        painter.drawLine(QPointF(5.0, 5.0), QPointF(10.0, 10.0));
-        painter.drawLine(QPointF(10.0, 5.0), QPointF(5.0, 10.0));
-    }
-
-    void drawMediaGlyph(QPainter& painter) const
-    {
-        const QPolygonF playTriangle({QPointF(4.0, 2.5), QPointF(12.5, 7.5), QPointF(4.0, 12.5)});
-        switch (m_glyph) {
+        case Glyph::ClearText:
+            // A cross cut out of a soft disc, as the styles' own image shows it.
+            ink.setAlphaF(0.55);
+            fill(painter, ink);
+            painter.drawEllipse(QPointF(7.5, 7.5), 6.0, 6.0);
+            painter.setPen(QPen(base, 1.4, Qt::SolidLine, Qt::RoundCap));
+            painter.drawLine(QPointF(5.0, 5.0), QPointF(10.0, 10.0));
+            painter.drawLine(QPointF(10.0, 5.0), QPointF(5.0, 10.0));
+            return;
         case Glyph::Play:
-            painter.drawPolygon(playTriangle);
+            fill(painter, ink);
+            painter.drawPolygon(QPolygonF({QPointF(4.0, 2.5), QPointF(12.5, 7.5), QPointF(4.0, 12.5)}));
             return;
         case Glyph::Pause:
+            fill(painter, ink);
             painter.drawRect(QRectF(4.0, 3.0, 2.5, 9.0));
             painter.drawRect(QRectF(8.5, 3.0, 2.5, 9.0));
             return;
         case Glyph::SkipForward:
         case Glyph::SkipBackward:
             // A triangle against a bar; mirrored for backward.
+            fill(painter, ink);
             if (m_glyph == Glyph::SkipBackward) {
                 painter.translate(15.0, 0.0);
                 painter.scale(-1.0, 1.0);
@@ -122,9 +108,8 @@ private:
             painter.drawRect(QRectF(10.5, 3.0, 2.0, 9.0));
             return;
         case Glyph::Stop:
+            fill(painter, ink);
             painter.drawRect(QRectF(3.5, 3.5, 8.0, 8.0));
-            return;
-        default:
             return;
         }
     }
@@ -137,6 +122,25 @@ bool rightToLeft(const QStyleOption* option)
     return option ? option->direction == Qt::RightToLeft : QGuiApplication::isRightToLeft();
 }
 
+// The glyph drawn for `pixmap`, if it is one of those this style draws.
+std::optional<Glyph> drawnGlyph(QStyle::StandardPixmap pixmap, const QStyleOption* option)
+{
+    switch (pixmap) {
+    case QStyle::SP_TitleBarCloseButton:
+    case QStyle::SP_DockWidgetCloseButton: return Glyph::Close;
+    case QStyle::SP_TitleBarNormalButton: return Glyph::Float;
+    case QStyle::SP_ToolBarHorizontalExtensionButton: return rightToLeft(option) ? Glyph::ArrowLeft : Glyph::ArrowRight;
+    case QStyle::SP_ToolBarVerticalExtensionButton: return Glyph::ArrowDown;
+    case QStyle::SP_LineEditClearButton: return Glyph::ClearText;
+    case QStyle::SP_MediaPlay: return Glyph::Play;
+    case QStyle::SP_MediaPause: return Glyph::Pause;
+    case QStyle::SP_MediaSkipForward: return Glyph::SkipForward;
+    case QStyle::SP_MediaSkipBackward: return Glyph::SkipBackward;
+    case QStyle::SP_MediaStop: return Glyph::Stop;
+    default: return std::nullopt;
+    }
+}
+
 } // namespace
 
 WindowButtonStyle::WindowButtonStyle(QStyle* base)
@@ -147,31 +151,9 @@ WindowButtonStyle::WindowButtonStyle(QStyle* base)
 QIcon WindowButtonStyle::standardIcon(StandardPixmap standardIcon, const QStyleOption* option,
                                       const QWidget* widget) const
 {
-    switch (standardIcon) {
-    case SP_TitleBarCloseButton:
-    case SP_DockWidgetCloseButton:
-        return QIcon(new WindowButtonIconEngine(Glyph::Close));
-    case SP_TitleBarNormalButton:
-        return QIcon(new WindowButtonIconEngine(Glyph::Float));
-    case SP_ToolBarHorizontalExtensionButton:
-        return QIcon(new WindowButtonIconEngine(rightToLeft(option) ? Glyph::ArrowLeft : Glyph::ArrowRight));
-    case SP_ToolBarVerticalExtensionButton:
-        return QIcon(new WindowButtonIconEngine(Glyph::ArrowDown));
-    case SP_LineEditClearButton:
-        return QIcon(new WindowButtonIconEngine(Glyph::ClearText));
-    case SP_MediaPlay:
-        return QIcon(new WindowButtonIconEngine(Glyph::Play));
-    case SP_MediaPause:
-        return QIcon(new WindowButtonIconEngine(Glyph::Pause));
-    case SP_MediaSkipForward:
-        return QIcon(new WindowButtonIconEngine(Glyph::SkipForward));
-    case SP_MediaSkipBackward:
-        return QIcon(new WindowButtonIconEngine(Glyph::SkipBackward));
-    case SP_MediaStop:
-        return QIcon(new WindowButtonIconEngine(Glyph::Stop));
-    default:
-        return QProxyStyle::standardIcon(standardIcon, option, widget);
-    }
+    if (const std::optional<Glyph> glyph = drawnGlyph(standardIcon, option))
+        return QIcon(new WindowButtonIconEngine(*glyph));
+    return QProxyStyle::standardIcon(standardIcon, option, widget);
 }
 
 bool WindowButtonStyle::appliesTo(const QString& styleName)
