@@ -2,6 +2,7 @@
 
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/layoutconversion.h"
+#include "editor/chart/pixelsnap.h"
 #include "editor/chart/segmentstroke.h"
 #include "editor/statenames.h"
 
@@ -39,7 +40,7 @@ QRectF FrameItem::boundingRect() const
 
 void FrameItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
-    painter->fillRect(m_rect, chartstyle::frameFillColor(m_family));
+    pixelsnap::fillRect(painter, m_rect, chartstyle::frameFillColor(m_family));
     painter->setPen(QPen(chartstyle::frameBorderColor(m_family), chartstyle::kStrokeWidth));
     segmentstroke::drawRectOutline(painter, m_rect);
 

@@ -1,9 +1,16 @@
 #include "editor/chart/segmentstroke.h"
 
+#include "editor/chart/pixelsnap.h"
+
 #include <QLineF>
 #include <QPainter>
 #include <QPen>
 #include <QVarLengthArray>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
 
 namespace editor::segmentstroke {
 
@@ -44,6 +51,51 @@ void drawSquareCapped(QPainter* painter, const Segments& segments)
     painter->setPen(pen);
 }
 
+// The run of pixels from end `a` to end `b` of a segment along its axis. An
+// end that joins another segment reaches across that segment's own stroke,
+// as a square cap does, so that corners close; the outline's own ends stop
+// at their point.
+pixelsnap::Span lengthSpan(double a, bool aJoins, double b, bool bJoins, double width)
+{
+    if (a > b) {
+        std::swap(a, b);
+        std::swap(aJoins, bJoins);
+    }
+    const int begin = aJoins ? pixelsnap::strokeSpan(a, width).begin : static_cast<int>(std::lround(a));
+    const int end = bJoins ? pixelsnap::strokeSpan(b, width).end : static_cast<int>(std::lround(b));
+    return {begin, std::max(end, begin + 1)};
+}
+
+bool allAxisAligned(const Segments& segments)
+{
+    return std::all_of(segments.begin(), segments.end(), isAxisAligned);
+}
+
+// Orthogonal `segments`, each a piece of one outline that joins the next one
+// (and the last the first when `closed`), in whole device pixels.
+void drawSnapped(QPainter* painter, const QTransform& toDevice, const Segments& segments, bool closed)
+{
+    const QPen pen = painter->pen();
+    const double widthX = pen.widthF() * toDevice.m11();
+    const double widthY = pen.widthF() * toDevice.m22();
+    const qsizetype last = segments.size() - 1;
+    pixelsnap::DevicePixels pixels(painter);
+    for (qsizetype i = 0; i <= last; ++i) {
+        const QLineF& segment = segments[i];
+        const bool startJoins = closed || i > 0;
+        const bool endJoins = closed || i < last;
+        const QPointF from = toDevice.map(segment.p1());
+        const QPointF to = toDevice.map(segment.p2());
+        if (segment.dy() == 0 && segment.dx() != 0) {
+            pixels.fill(lengthSpan(from.x(), startJoins, to.x(), endJoins, widthX),
+                        pixelsnap::strokeSpan(from.y(), widthY), pen.brush());
+        } else {
+            pixels.fill(pixelsnap::strokeSpan(from.x(), widthX),
+                        lengthSpan(from.y(), startJoins, to.y(), endJoins, widthY), pen.brush());
+        }
+    }
+}
+
 // `line` with its ends moved towards each other by `atStart` and `atEnd`.
 QLineF pulledIn(const QLineF& line, double atStart, double atEnd)
 {
@@ -63,6 +115,11 @@ void drawPolyline(QPainter* painter, const QPolygonF& points)
     Segments segments;
     for (qsizetype i = 1; i < points.size(); ++i)
         segments.append(QLineF(points[i - 1], points[i]));
+    const std::optional<QTransform> toDevice = pixelsnap::deviceTransform(*painter);
+    if (toDevice && allAxisAligned(segments)) {
+        drawSnapped(painter, *toDevice, segments, false);
+        return;
+    }
     // The polyline's own ends stay flat: square caps would stick out by half
     // the width there, so those ends are pulled in by as much.
     const double halfWidth = pen.widthF() / 2;
@@ -86,12 +143,17 @@ void drawRectOutline(QPainter* painter, const QRectF& rect)
         painter->restore();
         return;
     }
-    drawSquareCapped(painter, {
+    const Segments sides = {
         QLineF(rect.topLeft(), rect.topRight()),
         QLineF(rect.topRight(), rect.bottomRight()),
         QLineF(rect.bottomRight(), rect.bottomLeft()),
         QLineF(rect.bottomLeft(), rect.topLeft()),
-    });
+    };
+    if (const std::optional<QTransform> toDevice = pixelsnap::deviceTransform(*painter)) {
+        drawSnapped(painter, *toDevice, sides, true);
+        return;
+    }
+    drawSquareCapped(painter, sides);
 }
 
 } // namespace editor::segmentstroke

@@ -17,7 +17,11 @@ namespace editor::segmentstroke {
 // them was most of the painting of the editor's first frame. Where two
 // segments meet at a right angle, their square caps cover the corner as a
 // mitre join does, so the chart's orthogonal outlines keep their shape.
-// Any other pen (dashed, cosmetic) is drawn the ordinary way.
+// On screen and in images (pixelsnap.h) the rectangles of an outline whose
+// segments are all horizontal or vertical are whole device pixels: each line
+// as many pixels thick as its width rounds to, at least one, and closed at
+// its corners. Any other pen (dashed, cosmetic) is drawn
+// the ordinary way.
 
 // An open polyline, as with Qt::FlatCap and Qt::MiterJoin.
 void drawPolyline(QPainter* painter, const QPolygonF& points);

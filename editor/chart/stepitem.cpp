@@ -1,6 +1,7 @@
 #include "editor/chart/stepitem.h"
 
 #include "editor/chart/chartstyle.h"
+#include "editor/chart/pixelsnap.h"
 #include "editor/chart/segmentstroke.h"
 #include "editor/document.h"
 #include "editor/statenames.h"
@@ -128,7 +129,7 @@ void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
     if (step.hidden)
         pen.setStyle(Qt::DashLine);
     painter->setPen(pen);
-    painter->fillRect(m_box, m_active ? chartstyle::activeFillColor() : chartstyle::stepFillColor());
+    pixelsnap::fillRect(painter, m_box, m_active ? chartstyle::activeFillColor() : chartstyle::stepFillColor());
     segmentstroke::drawRectOutline(painter, m_box);
 
     // The type marks go inside the inner square of an initial step.
@@ -141,8 +142,8 @@ void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
     if (step.type == core::StepType::Macro) {
         const double y1 = symbol.top() + chartstyle::kMacroInset;
         const double y2 = symbol.bottom() - chartstyle::kMacroInset;
-        painter->drawLine(QLineF(symbol.left(), y1, symbol.right(), y1));
-        painter->drawLine(QLineF(symbol.left(), y2, symbol.right(), y2));
+        segmentstroke::drawPolyline(painter, QPolygonF({{symbol.left(), y1}, {symbol.right(), y1}}));
+        segmentstroke::drawPolyline(painter, QPolygonF({{symbol.left(), y2}, {symbol.right(), y2}}));
     } else if (step.type == core::StepType::Enclosing) {
         const double k = chartstyle::kEnclosingMark;
         const QLineF marks[] = {
