@@ -6,11 +6,10 @@ namespace editor::chartstyle {
 
 namespace {
 
-QFont makeFont(int pixelSize, bool bold = false)
+QFont makeFont(int pixelSize)
 {
     QFont font;
     font.setPixelSize(pixelSize);
-    font.setBold(bold);
     return font;
 }
 
@@ -36,37 +35,37 @@ QColor frameBorderColor(core::Family family)
     return Qt::gray;
 }
 
-// Static fonts: built once, on the first paint (a QApplication exists by then).
-const QFont& labelFont()
+// Built once, at the first use (a QApplication exists by then).
+const QFont& font()
 {
     static const QFont font = makeFont(12);
     return font;
 }
 
-const QFont& boldFont()
-{
-    static const QFont font = makeFont(15, true);
-    return font;
-}
-
 double stepIdScale(double boxSize)
 {
-    return boxSize >= 60 ? 22.0 / 15.0 : 1.0;
+    return boxSize >= 60 ? 22.0 / 12.0 : 15.0 / 12.0;
 }
 
-void drawCentredText(QPainter* painter, const QRectF& rect, const QString& text, const QFont& font, double scale)
+void drawText(QPainter* painter, const QRectF& rect, int flags, const QString& text, double scale)
 {
-    painter->setFont(font);
+    painter->setFont(font());
     if (scale == 1.0) {
-        painter->drawText(rect, Qt::AlignCenter, text);
+        painter->drawText(rect, flags, text);
         return;
     }
+    // Scaled about the rectangle's centre: the text keeps its place in it.
     painter->save();
     painter->translate(rect.center());
     painter->scale(scale, scale);
     const QSizeF size = rect.size() / scale;
-    painter->drawText(QRectF(QPointF(-size.width() / 2, -size.height() / 2), size), Qt::AlignCenter, text);
+    painter->drawText(QRectF(QPointF(-size.width() / 2, -size.height() / 2), size), flags, text);
     painter->restore();
+}
+
+void drawCentredText(QPainter* painter, const QRectF& rect, const QString& text, double scale)
+{
+    drawText(painter, rect, Qt::AlignCenter, text, scale);
 }
 
 } // namespace editor::chartstyle

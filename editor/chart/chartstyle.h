@@ -48,20 +48,26 @@ inline QColor falseMarkColor() { return QColor(0x9a, 0xa1, 0xab); }
 QColor frameFillColor(core::Family family);
 QColor frameBorderColor(core::Family family);
 
-// The chart's text uses two fonts: a regular one for the transition labels
-// and a bold one for everything else, drawn larger or smaller by scaling.
-// Each size of a font is a font engine of its own (fontconfig matching,
-// FreeType sizing, shaping tables: 0.3 to 1 ms each, paid by the first frame),
-// and the chart is drawn scaled anyway, so a scaled bold font looks the same.
-const QFont& labelFont();
-const QFont& boldFont();
-// The scale of boldFont() for a step's id (larger in the big hub steps) and
-// for a badge's letter; family frame titles use it as it is.
+// All the chart's text is one font, the window's own face at 12 units:
+// the transition labels at that size, step ids, badges and family titles
+// drawn larger (or smaller) by scaling. Another size or weight would be a
+// font engine of its own, and a bold one another face too: fontconfig
+// matching, FreeType and HarfBuzz set-up and glyphs of its own, 5 M
+// instructions (about 3 ms) of the first frame, its largest single cost
+// (measured with callgrind). The chart is drawn scaled anyway, so scaled
+// text looks as a bigger font would; emphasis comes from size and colour,
+// and step numbers are regular, as in the figures of IEC 60848.
+const QFont& font();
+// Scales of font() for a step's id (larger in the big hub steps), a badge's
+// letter and a family frame's title.
 double stepIdScale(double boxSize);
-inline constexpr double kBadgeScale = 11.0 / 15.0;
+inline constexpr double kBadgeScale = 11.0 / 12.0;
+inline constexpr double kTitleScale = 15.0 / 12.0;
 
-// `text` centred in `rect`, in `font` enlarged by `scale`.
-void drawCentredText(QPainter* painter, const QRectF& rect, const QString& text, const QFont& font,
-                     double scale = 1.0);
+// `text` in `rect` with `flags` (Qt::AlignmentFlag, Qt::TextFlag), in
+// font() enlarged by `scale`.
+void drawText(QPainter* painter, const QRectF& rect, int flags, const QString& text, double scale = 1.0);
+// `text` centred in `rect`.
+void drawCentredText(QPainter* painter, const QRectF& rect, const QString& text, double scale = 1.0);
 
 } // namespace editor::chartstyle

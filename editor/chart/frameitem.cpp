@@ -6,6 +6,7 @@
 #include "editor/chart/segmentstroke.h"
 #include "editor/statenames.h"
 
+#include <QFontMetrics>
 #include <QPainter>
 #include <QtMath>
 
@@ -45,12 +46,15 @@ void FrameItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidge
     segmentstroke::drawRectOutline(painter, m_rect);
 
     painter->setPen(chartstyle::frameBorderColor(m_family).darker(150));
-    painter->setFont(chartstyle::boldFont());
     // Elided rather than cut mid-letter, should a translation be longer still;
     // once, not at every paint.
-    if (m_shownTitle.isNull())
-        m_shownTitle = painter->fontMetrics().elidedText(title(), Qt::ElideRight, qFloor(m_titleRect.width()));
-    painter->drawText(m_titleRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, m_shownTitle);
+    const double scale = chartstyle::kTitleScale;
+    if (m_shownTitle.isNull()) {
+        m_shownTitle = QFontMetrics(chartstyle::font())
+                           .elidedText(title(), Qt::ElideRight, qFloor(m_titleRect.width() / scale));
+    }
+    chartstyle::drawText(painter, m_titleRect, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, m_shownTitle,
+                         scale);
 }
 
 } // namespace editor

@@ -156,7 +156,7 @@ void StepItem::paintSymbol(QPainter* painter, const core::Step& step) const
     }
 
     painter->setPen(m_problem ? chartstyle::problemColor() : chartstyle::inkColor());
-    chartstyle::drawCentredText(painter, m_box, m_id, chartstyle::boldFont(), chartstyle::stepIdScale(m_box.width()));
+    chartstyle::drawCentredText(painter, m_box, m_id, chartstyle::stepIdScale(m_box.width()));
 }
 
 void StepItem::paintBadge(QPainter* painter) const
@@ -166,7 +166,7 @@ void StepItem::paintBadge(QPainter* painter) const
     painter->setPen(QPen(Qt::white, 1));
     painter->setBrush(chartstyle::problemColor());
     painter->drawEllipse(badge);
-    chartstyle::drawCentredText(painter, badge, QStringLiteral("!"), chartstyle::boldFont(), chartstyle::kBadgeScale);
+    chartstyle::drawCentredText(painter, badge, QStringLiteral("!"), chartstyle::kBadgeScale);
 }
 
 // On the bottom-right corner, clear of the problem badge (top right).
@@ -177,7 +177,7 @@ void StepItem::paintCompleteBadge(QPainter* painter) const
     painter->setPen(QPen(Qt::white, 1));
     painter->setBrush(*m_complete ? chartstyle::trueMarkColor() : chartstyle::falseMarkColor());
     painter->drawRoundedRect(badge, 3, 3);
-    chartstyle::drawCentredText(painter, badge, QStringLiteral("C"), chartstyle::boldFont(), chartstyle::kBadgeScale);
+    chartstyle::drawCentredText(painter, badge, QStringLiteral("C"), chartstyle::kBadgeScale);
 }
 
 } // namespace editor

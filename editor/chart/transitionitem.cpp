@@ -130,7 +130,7 @@ void TransitionItem::updateLabel()
 
     // Each measurement shapes its text anew: none twice for the same text (a
     // label is often its priority alone).
-    const QFontMetricsF metrics(chartstyle::labelFont());
+    const QFontMetricsF metrics(chartstyle::font());
     const QString prefix = m_priorityText + m_separator;
     const double prefixWidth = prefix.isEmpty() ? 0.0 : metrics.horizontalAdvance(prefix);
     m_elidedCondition = metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, m_labelRect.width() - prefixWidth));
@@ -275,14 +275,14 @@ void TransitionItem::paintLabel(QPainter* painter) const
 {
     if (m_priorityText.isEmpty() && m_elidedCondition.isEmpty())
         return;
-    const QFontMetricsF metrics(chartstyle::labelFont());
+    const QFontMetricsF metrics(chartstyle::font());
     const QRectF textRect = labelTextRect();
     const double baseline = textRect.center().y() + (metrics.ascent() - metrics.descent()) / 2;
     QPointF at(textRect.left(), baseline);
 
     const QColor color = m_problem ? chartstyle::problemColor() : chartstyle::labelColor();
     painter->setPen(color);
-    painter->setFont(chartstyle::labelFont());
+    painter->setFont(chartstyle::font());
     if (!m_priorityText.isEmpty()) {
         painter->drawText(at, m_priorityText);
         const double width = m_priorityWidth;

@@ -562,7 +562,7 @@ void TestChart::bigStepIdsAreDrawnLarger()
 
 void TestChart::labelWidthIsTheShownText()
 {
-    const QFontMetricsF metrics(chartstyle::labelFont());
+    const QFontMetricsF metrics(chartstyle::font());
     // A priority alone, a priority and a condition, and an elided condition.
     m_document->push(new SetConditionCommand(*m_document, "F1->A2", "NOT Stop"));
     m_document->push(new SetConditionCommand(*m_document, "F1->F4",
