@@ -31,7 +31,6 @@ ChartView::ChartView(ChartScene* scene, QWidget* parent)
     // drawBackground() paints every pixel it is given: the viewport's own
     // background fill would only paint them once more before it.
     viewport()->setAttribute(Qt::WA_OpaquePaintEvent);
-    setDragMode(ScrollHandDrag);
     setFocusPolicy(Qt::StrongFocus);
     setTransformationAnchor(AnchorViewCenter);
     setResizeAnchor(AnchorViewCenter);
@@ -169,6 +168,19 @@ void ChartView::revealSelection()
 {
     if (QGraphicsItem* item = m_scene->itemFor(m_scene->selection()->current()); item && item->isVisible())
         ensureVisible(item, kRevealMargin, kRevealMargin);
+}
+
+// Dragging the background pans, under the open hand: set once the first
+// frame is out. On X11 the first use of a cursor shape reads it from the
+// cursor theme and uploads it to the display server (1 M instructions and
+// a round trip), which the first frame need not wait for.
+bool ChartView::viewportEvent(QEvent* event)
+{
+    if (event->type() == QEvent::Paint && !m_panningSetUp) {
+        m_panningSetUp = true;
+        QMetaObject::invokeMethod(this, [this] { setDragMode(ScrollHandDrag); }, Qt::QueuedConnection);
+    }
+    return QGraphicsView::viewportEvent(event);
 }
 
 // The scene is no widget: the view passes the language change on to it.

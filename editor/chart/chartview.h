@@ -6,7 +6,8 @@ namespace editor {
 
 class ChartScene;
 
-// Shows the chart: antialiased, panned by dragging the background, zoomed
+// Shows the chart: antialiased, panned by dragging the background (from the
+// first frame on), zoomed
 // with Ctrl+wheel (about the point under the mouse) or the zoom slots.
 // Tab / Shift+Tab walk through the visible elements (ChartScene::tabOrder)
 // and leave the view past either end. The sheet stays fitted to the view
@@ -39,6 +40,7 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
+    bool viewportEvent(QEvent* event) override;
     void drawBackground(QPainter* painter, const QRectF& rect) override;
 
 private:
@@ -48,6 +50,7 @@ private:
 
     ChartScene* m_scene;
     bool m_fitted = true;
+    bool m_panningSetUp = false;
 };
 
 } // namespace editor

@@ -23,7 +23,9 @@
 #include <QApplication>
 #include <QFontMetricsF>
 #include <QImage>
+#include <QMouseEvent>
 #include <QPainter>
+#include <QScrollBar>
 #include <QStyleOptionGraphicsItem>
 #include <QTest>
 #include <QTranslator>
@@ -63,6 +65,7 @@ private slots:
     void selectionSelectsTheItem();
     void selectionSurvivesHidingTheItem();
     void clickSelects();
+    void dragPansFromTheFirstFrameOn();
     void tabWalksStepsThenTransitions();
     void tabSkipsHiddenElements();
     void labelShowsPriorityAndCondition();
@@ -229,6 +232,34 @@ void TestChart::clickSelects()
     const QPoint empty = view.mapFromScene(QPointF(40, 300));
     QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, empty);
     QVERIFY(m_selection->current().isNull());
+}
+
+void TestChart::dragPansFromTheFirstFrameOn()
+{
+    ChartView view(m_scene);
+    // No cursor to load before the first frame.
+    QCOMPARE(view.dragMode(), QGraphicsView::NoDrag);
+    QVERIFY(!view.viewport()->testAttribute(Qt::WA_SetCursor));
+    view.resize(1000, 700);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    QTRY_COMPARE(view.dragMode(), QGraphicsView::ScrollHandDrag);
+    QCOMPARE(view.viewport()->cursor().shape(), Qt::OpenHandCursor);
+
+    // At 100 % the sheet is larger than the view: dragging the empty sheet
+    // to the left scrolls it to the right.
+    view.zoomToActualSize();
+    QScrollBar* horizontal = view.horizontalScrollBar();
+    horizontal->setValue(horizontal->minimum());
+    const int before = horizontal->value();
+    const QPoint from = view.mapFromScene(QPointF(40, 300));
+    const QPoint to = from - QPoint(120, 0);
+    QTest::mousePress(view.viewport(), Qt::LeftButton, {}, from);
+    QMouseEvent move(QEvent::MouseMove, to, view.viewport()->mapToGlobal(to), Qt::NoButton, Qt::LeftButton, {});
+    QApplication::sendEvent(view.viewport(), &move);
+    QTest::mouseRelease(view.viewport(), Qt::LeftButton, {}, to);
+    QCOMPARE(horizontal->value(), before + 120);
+    QVERIFY(m_selection->current().isNull()); // panning selects nothing
 }
 
 void TestChart::tabWalksStepsThenTransitions()
