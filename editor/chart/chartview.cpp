@@ -27,6 +27,10 @@ ChartView::ChartView(ChartScene* scene, QWidget* parent)
     : QGraphicsView(scene, parent)
     , m_scene(scene)
 {
+    // The central view needs no frame: the sheet has its own border, and the
+    // style's frame around a view this size is a long outline to draw in
+    // the first frame.
+    setFrameShape(QFrame::NoFrame);
     setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing | QPainter::SmoothPixmapTransform);
     // drawBackground() paints every pixel it is given: the viewport's own
     // background fill would only paint them once more before it.
