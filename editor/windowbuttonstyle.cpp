@@ -148,6 +148,15 @@ WindowButtonStyle::WindowButtonStyle(QStyle* base)
 {
 }
 
+int WindowButtonStyle::styleHint(StyleHint hint, const QStyleOption* option, const QWidget* widget,
+                                 QStyleHintReturn* returnData) const
+{
+    // A widget whose window is hidden: QMainWindow's layout places it at once.
+    if (hint == SH_Widget_Animation_Duration && widget && !widget->window()->isVisible())
+        return 0;
+    return QProxyStyle::styleHint(hint, option, widget, returnData);
+}
+
 QIcon WindowButtonStyle::standardIcon(StandardPixmap standardIcon, const QStyleOption* option,
                                       const QWidget* widget) const
 {

@@ -19,6 +19,12 @@ namespace editor {
 // bars are in the first frame, so that cost was paid before the chart
 // showed. Drawn glyphs also stay sharp at any scale. Platform styles
 // (Breeze, ...) draw their own buttons and are left as they are.
+//
+// It also tells QMainWindow not to animate the docks of a window that is
+// not on screen yet: for every layout pass Qt creates a geometry animation
+// of no length for each dock, separator and tab bar whenever the style has
+// an animation duration, 67 of them before the first frame (1 M
+// instructions). Docks moved in a shown window animate as before.
 class WindowButtonStyle : public QProxyStyle {
     Q_OBJECT
 
@@ -26,6 +32,8 @@ public:
     // `base`: the style to follow; the proxy takes it over.
     explicit WindowButtonStyle(QStyle* base);
 
+    int styleHint(StyleHint hint, const QStyleOption* option = nullptr, const QWidget* widget = nullptr,
+                  QStyleHintReturn* returnData = nullptr) const override;
     QIcon standardIcon(StandardPixmap standardIcon, const QStyleOption* option = nullptr,
                        const QWidget* widget = nullptr) const override;
 

@@ -46,6 +46,7 @@
 #include <QMessageBox>
 #include <QPointer>
 #include <QProcess>
+#include <QPropertyAnimation>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
@@ -886,6 +887,16 @@ void TestMainWindow::windowButtonStyleWrapsQtsOwnStyles()
     const QImage shown = close->icon().pixmap(QSize(16, 16)).toImage();
     const QImage drawn = installed->standardIcon(QStyle::SP_TitleBarCloseButton).pixmap(QSize(16, 16)).toImage();
     QCOMPARE(shown, drawn);
+
+    // Laid out while hidden, the docks were placed at once: no geometry
+    // animation was made for them. On screen, moved docks animate.
+    QCOMPARE(m_window->findChildren<QPropertyAnimation*>().size(), 0);
+    QCOMPARE(installed->styleHint(QStyle::SH_Widget_Animation_Duration, nullptr, dock), 0);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    const int baseDuration = installed->baseStyle()->styleHint(QStyle::SH_Widget_Animation_Duration, nullptr, dock);
+    QVERIFY(baseDuration > 0);
+    QCOMPARE(installed->styleHint(QStyle::SH_Widget_Animation_Duration, nullptr, dock), baseDuration);
 }
 
 QTEST_MAIN(TestMainWindow)
