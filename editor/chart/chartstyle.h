@@ -52,9 +52,9 @@ QColor frameBorderColor(core::Family family);
 // the transition labels at that size, step ids, badges and family titles
 // drawn larger (or smaller) by scaling. Another size or weight would be a
 // font engine of its own, and a bold one another face too: fontconfig
-// matching, FreeType and HarfBuzz set-up and glyphs of its own, 5 M
-// instructions (about 3 ms) of the first frame, its largest single cost
-// (measured with callgrind). The chart is drawn scaled anyway, so scaled
+// matching, FreeType and HarfBuzz set-up and glyphs of its own, 3.4 M
+// instructions of the first frame, its largest single cost (measured with
+// callgrind). The chart is drawn scaled anyway, so scaled
 // text looks as a bigger font would; emphasis comes from size and colour,
 // and step numbers are regular, as in the figures of IEC 60848.
 const QFont& font();
