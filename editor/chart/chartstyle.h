@@ -54,9 +54,9 @@ QColor frameBorderColor(core::Family family);
 // font engine of its own, and a bold one another face too: fontconfig
 // matching, FreeType and HarfBuzz set-up and glyphs of its own, 3.4 M
 // instructions of the first frame, its largest single cost (measured with
-// callgrind). The chart is drawn scaled anyway, so scaled
-// text looks as a bigger font would; emphasis comes from size and colour,
-// and step numbers are regular, as in the figures of IEC 60848.
+// callgrind). The chart is drawn scaled anyway, so scaled text looks as a
+// bigger font would; emphasis comes from size and colour, and step numbers
+// are regular, as in the figures of IEC 60848.
 const QFont& font();
 // Scales of font() for a step's id (larger in the big hub steps), a badge's
 // letter and a family frame's title.

@@ -7,8 +7,8 @@ namespace editor {
 class ChartScene;
 
 // Shows the chart: antialiased, panned by dragging the background (from the
-// first frame on), zoomed
-// with Ctrl+wheel (about the point under the mouse) or the zoom slots.
+// first frame on), zoomed with Ctrl+wheel (about the point under the mouse)
+// or the zoom slots.
 // Tab / Shift+Tab walk through the visible elements (ChartScene::tabOrder)
 // and leave the view past either end. The sheet stays fitted to the view
 // when it is resized until the user picks another zoom.

@@ -20,8 +20,7 @@ namespace editor::segmentstroke {
 // On screen and in images (pixelsnap.h) the rectangles of an outline whose
 // segments are all horizontal or vertical are whole device pixels: each line
 // as many pixels thick as its width rounds to, at least one, and closed at
-// its corners. Any other pen (dashed, cosmetic) is drawn
-// the ordinary way.
+// its corners. Any other pen (dashed, cosmetic) is drawn the ordinary way.
 
 // An open polyline, as with Qt::FlatCap and Qt::MiterJoin.
 void drawPolyline(QPainter* painter, const QPolygonF& points);
