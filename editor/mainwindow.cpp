@@ -40,6 +40,9 @@
 #include <QUndoStack>
 
 #include <algorithm>
+#include <map>
+#include <string_view>
+#include <utility>
 
 namespace editor {
 
@@ -162,8 +165,51 @@ void MainWindow::createDocks()
     arrangeDocks(docks());
 }
 
+namespace {
+
+// The docks by object name, in the order of MainWindow::docks(), and where
+// the default layout puts them: Step, Transition, Simulation on the right,
+// tabbed; Variables, Problems, Structured Text below, tabbed, each group with
+// its first dock in front.
+struct DockPlace {
+    const char* name;
+    Qt::DockWidgetArea area;
+};
+constexpr DockPlace kDockPlaces[] = {
+    {"stepDock", Qt::RightDockWidgetArea},      {"transitionDock", Qt::RightDockWidgetArea},
+    {"simulationDock", Qt::RightDockWidgetArea}, {"variablesDock", Qt::BottomDockWidgetArea},
+    {"problemsDock", Qt::BottomDockWidgetArea},  {"stPreviewDock", Qt::BottomDockWidgetArea},
+};
+
+Qt::DockWidgetArea defaultArea(const QDockWidget* dock)
+{
+    for (const DockPlace& place : kDockPlaces) {
+        if (dock->objectName() == QLatin1String(place.name))
+            return place.area;
+    }
+    return Qt::RightDockWidgetArea;
+}
+
+// The first dock of its area in the default layout.
+bool isDefaultFront(std::string_view name)
+{
+    const auto place = std::find_if(std::cbegin(kDockPlaces), std::cend(kDockPlaces),
+                                    [name](const DockPlace& candidate) { return name == candidate.name; });
+    if (place == std::cend(kDockPlaces))
+        return false;
+    return place == std::find_if(std::cbegin(kDockPlaces), std::cend(kDockPlaces),
+                                 [place](const DockPlace& candidate) { return candidate.area == place->area; });
+}
+
+} // namespace
+
 // Empty docks with the real ones' titles and names, so that the window has
-// its final layout (and restores the saved one) from the first frame.
+// its final layout (and restores the saved one) from the first frame. In the
+// default layout a tab group stands as its front frame alone, and its tab
+// bar comes with the docks: two tab bars and their six tabs were 3.3 M
+// instructions of the first frame, a tenth of the start-up's own work. A
+// saved layout gets every frame: Qt restores a layout only onto the docks it
+// names.
 void MainWindow::createDockFrames()
 {
     const std::pair<QString, const char*> frames[] = {
@@ -171,7 +217,10 @@ void MainWindow::createDockFrames()
         {SimulationDock::title(), "simulationDock"}, {VariablesDock::title(), "variablesDock"},
         {ProblemsDock::title(), "problemsDock"},   {StPreviewDock::title(), "stPreviewDock"},
     };
+    const bool frontsOnly = m_settings->windowState().isEmpty();
     for (const auto& [title, name] : frames) {
+        if (frontsOnly && !isDefaultFront(name))
+            continue;
         auto* frame = new QDockWidget(title, this);
         frame->setObjectName(QLatin1String(name));
         m_dockFrames << frame;
@@ -179,18 +228,20 @@ void MainWindow::createDockFrames()
     arrangeDocks(m_dockFrames);
 }
 
-// `docks` in the order of docks(): Step, Transition, Simulation on the right,
-// tabbed; Variables, Problems, Structured Text below, tabbed.
+// The docks of each area tabbed behind its first (`docks` in the order of
+// docks(); the frames may be fewer).
 void MainWindow::arrangeDocks(const QList<QDockWidget*>& docks)
 {
-    for (int i = 0; i < 3; ++i)
-        addDockWidget(Qt::RightDockWidgetArea, docks[i]);
-    for (int i = 3; i < 6; ++i)
-        addDockWidget(Qt::BottomDockWidgetArea, docks[i]);
-    for (int i : {0, 1, 3, 4})
-        tabifyDockWidget(docks[i], docks[i + 1]);
-    docks[0]->raise();
-    docks[3]->raise();
+    std::map<Qt::DockWidgetArea, QDockWidget*> fronts;
+    for (QDockWidget* dock : docks) {
+        const Qt::DockWidgetArea area = defaultArea(dock);
+        addDockWidget(area, dock);
+        const auto [front, first] = fronts.try_emplace(area, dock);
+        if (!first)
+            tabifyDockWidget(front->second, dock);
+    }
+    for (const auto& [area, front] : fronts)
+        front->raise();
 }
 
 bool MainWindow::eventFilter(QObject* watched, QEvent* event)
@@ -232,16 +283,23 @@ void MainWindow::deleteDocks()
     m_dockFrames.clear();
 }
 
-// The empty frames of a deferred start give way to the docks, in the place
-// and size the frames had (the saved layout included).
+// The empty frames of a deferred start give way to the docks, in the saved
+// layout, or in the default one at the size the frames have.
 void MainWindow::replaceDockFrames()
 {
-    const QByteArray state = saveState();
+    const QByteArray savedLayout = std::exchange(m_framesLayout, {});
+    const QDockWidget* stepFrame = dockNamed(QStringLiteral("stepDock"));
+    const QDockWidget* variablesFrame = dockNamed(QStringLiteral("variablesDock"));
+    const int rightWidth = stepFrame ? stepFrame->width() : 0;
+    const int bottomHeight = variablesFrame ? variablesFrame->height() : 0;
     for (QDockWidget* dock : docks())
         m_viewMenu->removeAction(dock->toggleViewAction());
     deleteDocks();
     createDocks();
-    restoreState(state);
+    if (savedLayout.isEmpty() || !restoreState(savedLayout)) {
+        resizeDocks({m_stepDock}, {rightWidth}, Qt::Horizontal);
+        resizeDocks({m_variablesDock}, {bottomHeight}, Qt::Vertical);
+    }
     applyEditingLock();
     m_viewMenu->insertActions(m_dockActionsEnd, toggleViewActions());
     emit docksBecameReady();
@@ -426,12 +484,21 @@ void MainWindow::restoreLayout()
 {
     if (!restoreGeometry(m_settings->windowGeometry()))
         resize(defaultWindowSize(this));
-    if (!restoreState(m_settings->windowState()))
+    const QByteArray state = m_settings->windowState();
+    if (!restoreState(state)) {
         applyDefaultLayout();
+        return;
+    }
+    if (!docksReady())
+        m_framesLayout = state; // the docks take it once they are built
 }
 
 void MainWindow::saveLayout()
 {
+    // The frames may lack the docks tabbed behind others: the layout to
+    // save is the docks' (closing that early is rare, the docks come right
+    // after the first frame).
+    ensureDocksReady();
     m_settings->setWindowGeometry(saveGeometry());
     m_settings->setWindowState(saveState());
     m_settings->sync();

@@ -185,6 +185,8 @@ private:
     QAction* m_dockActionsEnd = nullptr; // the separator after the docks in the View menu
     // The empty frames that stand for the docks until their contents are built.
     QList<QDockWidget*> m_dockFrames;
+    // The saved layout the frames took, for the docks (empty: the default one).
+    QByteArray m_framesLayout;
     // The chart's viewport until its first paint (DockContents::AfterFirstFrame).
     QWidget* m_firstFrameWatched = nullptr;
 };

@@ -225,6 +225,7 @@ private slots:
     void layoutIsRestored();
     void deferredDocksFillInAfterTheFirstFrame();
     void deferredDocksKeepTheSavedLayout();
+    void deferredDocksSaveTheirLayoutWhenClosedEarly();
     void deferredDocksAreBuiltWhenNeeded();
     void recoveryIsOffered();
     void translatorLoadsFrench();
@@ -542,7 +543,22 @@ void TestMainWindow::layoutIsRestored()
 
 namespace {
 
-// The geometry of a widget when it is first painted.
+QStringList tabsShownIn(const QWidget* window)
+{
+    QStringList tabs;
+    // QMainWindow's tab bars of docks are its own children.
+    for (const QTabBar* bar : window->findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+        if (!bar->isVisible())
+            continue;
+        for (int i = 0; i < bar->count(); ++i)
+            tabs << bar->tabText(i);
+    }
+    tabs.sort();
+    return tabs;
+}
+
+// The geometry of a widget when it is first painted, and the tabs its
+// window shows then.
 class FirstPaintGeometry : public QObject {
 public:
     explicit FirstPaintGeometry(QWidget* widget)
@@ -551,12 +567,22 @@ public:
         widget->installEventFilter(this);
     }
     QRect geometry;
+    QStringList visibleTabs;
+    QStringList visibleDocks;
 
 protected:
     bool eventFilter(QObject*, QEvent* event) override
     {
-        if (event->type() == QEvent::Paint && geometry.isNull())
+        if (event->type() == QEvent::Paint && geometry.isNull()) {
             geometry = m_widget->geometry();
+            visibleTabs = tabsShownIn(m_widget->window());
+            for (const QDockWidget* dock :
+                 m_widget->window()->findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+                if (dock->isVisible())
+                    visibleDocks << dock->windowTitle();
+            }
+            visibleDocks.sort();
+        }
         return false;
     }
 
@@ -591,6 +617,12 @@ void TestMainWindow::deferredDocksFillInAfterTheFirstFrame()
     QVERIFY(!firstFrame.geometry.isNull());
     QCOMPARE(window.chartView()->viewport()->geometry(), firstFrame.geometry);
     QCOMPARE(window.chartView()->geometry(), m_window->chartView()->geometry());
+    // The default layout's tab bars come with the docks: the first frame
+    // showed the front frame of each group alone.
+    QCOMPARE(firstFrame.visibleDocks, (QStringList{"Step", "Variables"}));
+    QCOMPARE(firstFrame.visibleTabs, QStringList());
+    QCOMPARE(tabsShownIn(&window), (QStringList{"Problems", "Simulation", "Step", "Structured Text", "Transition",
+                                                "Variables"}));
     // The real docks, one of each, where the frames were, working.
     QCOMPARE(window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly).size(), 6);
     auto* stepDock = window.findChild<StepDock*>(QStringLiteral("stepDock"));
@@ -615,6 +647,7 @@ void TestMainWindow::deferredDocksKeepTheSavedLayout()
 {
     auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
     m_window->addDockWidget(Qt::RightDockWidgetArea, problems);
+    m_window->findChild<QDockWidget*>(QStringLiteral("stPreviewDock"))->raise();
     QVERIFY(m_window->close());
 
     MainWindow again(*m_translators, MainWindow::DockContents::AfterFirstFrame);
@@ -630,6 +663,29 @@ void TestMainWindow::deferredDocksKeepTheSavedLayout()
              Qt::RightDockWidgetArea);
     QVERIFY(!firstFrame.geometry.isNull());
     QCOMPARE(again.chartView()->viewport()->geometry(), firstFrame.geometry);
+    // A saved layout has a frame for every dock, its tab bars included.
+    const QStringList savedTabs{"Simulation", "Step", "Structured Text", "Transition", "Variables"};
+    QCOMPARE(firstFrame.visibleTabs, savedTabs);
+    QCOMPARE(tabsShownIn(&again), savedTabs);
+    QVERIFY(!again.findChild<QDockWidget*>(QStringLiteral("stPreviewDock"))->visibleRegion().isEmpty());
+    QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("variablesDock"))->visibleRegion().isEmpty());
+    QSettings().clear(); // the other tests start from the default layout
+}
+
+// Closed before its docks are built, the window saves their layout, not
+// the frames'.
+void TestMainWindow::deferredDocksSaveTheirLayoutWhenClosedEarly()
+{
+    {
+        MainWindow early(*m_translators, MainWindow::DockContents::AfterFirstFrame);
+        QVERIFY(!early.docksReady());
+        QVERIFY(early.close());
+    }
+    MainWindow again(*m_translators);
+    auto* problems = again.findChild<QDockWidget*>(QStringLiteral("problemsDock"));
+    QCOMPARE(again.dockWidgetArea(problems), Qt::BottomDockWidgetArea);
+    QCOMPARE(again.tabifiedDockWidgets(problems).size(), 2);
+    QCOMPARE(again.tabifiedDockWidgets(again.findChild<QDockWidget*>(QStringLiteral("stepDock"))).size(), 2);
     QSettings().clear(); // the other tests start from the default layout
 }
 
