@@ -9,7 +9,10 @@
 #include "editor/document.h"
 #include "editor/selection.h"
 
+#include <QGraphicsSceneHelpEvent>
+#include <QGraphicsView>
 #include <QScopedValueRollback>
+#include <QToolTip>
 #include <QSet>
 
 namespace editor {
@@ -146,6 +149,29 @@ QList<QGraphicsItem*> ChartScene::tabOrder() const
     return order;
 }
 
+QString ChartScene::toolTipAt(QPointF scenePos, const QTransform& viewportTransform) const
+{
+    const QList<QGraphicsItem*> hits = items(scenePos, Qt::IntersectsItemShape, Qt::DescendingOrder, viewportTransform);
+    for (const QGraphicsItem* item : hits) {
+        if (const auto* step = qgraphicsitem_cast<const StepItem*>(item))
+            return step->toolTipText();
+        if (const auto* transition = qgraphicsitem_cast<const TransitionItem*>(item))
+            return transition->toolTipText();
+    }
+    return {};
+}
+
+// Tooltips are built when one shows, not for every item at every change
+// (and at start-up, where the fifty of them were 0.8 M instructions).
+void ChartScene::helpEvent(QGraphicsSceneHelpEvent* event)
+{
+    // The event comes from a view's viewport.
+    const auto* view = event->widget() ? qobject_cast<const QGraphicsView*>(event->widget()->parentWidget()) : nullptr;
+    const QString text = toolTipAt(event->scenePos(), view ? view->viewportTransform() : QTransform());
+    QToolTip::showText(text.isEmpty() ? QPoint() : event->screenPos(), text, event->widget());
+    event->setAccepted(!text.isEmpty());
+}
+
 QGraphicsItem* ChartScene::itemFor(const ElementRef& element) const
 {
     switch (element.kind) {
@@ -197,7 +223,6 @@ void ChartScene::retranslate()
 {
     for (FrameItem* frame : std::as_const(m_frames))
         frame->retranslate();
-    onModelReset();
     update();
 }
 

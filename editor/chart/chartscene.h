@@ -48,7 +48,8 @@ public:
     // Removes every simulation mark: active step, fired transition, badges, dots.
     void clearSimulationMarks();
 
-    // Redraws texts that come from the UI language (tooltips, frame titles).
+    // Redraws texts that come from the UI language (the frame titles; the
+    // tooltips are built in it when they show).
     void retranslate();
 
     StepItem* stepItem(const QString& id) const { return m_stepItems.value(id); }
@@ -64,6 +65,13 @@ public:
 
     QGraphicsItem* itemFor(const ElementRef& element) const;
     static ElementRef elementOf(const QGraphicsItem* item);
+
+    // The tooltip of the topmost step or transition at a point, as a view
+    // with that viewport transform shows it; empty where there is none.
+    QString toolTipAt(QPointF scenePos, const QTransform& viewportTransform) const;
+
+protected:
+    void helpEvent(QGraphicsSceneHelpEvent* event) override;
 
 private:
     void buildItems();

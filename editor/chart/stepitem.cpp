@@ -39,8 +39,6 @@ bool StepItem::isHiddenInModel() const
 
 void StepItem::refresh()
 {
-    if (const core::Step* s = step())
-        setToolTip(toolTipText(*s));
     update();
 }
 
@@ -68,8 +66,12 @@ void StepItem::setCompleteMark(std::optional<bool> complete)
     update();
 }
 
-QString StepItem::toolTipText(const core::Step& step) const
+QString StepItem::toolTipText() const
 {
+    const core::Step* found = step();
+    if (!found)
+        return {};
+    const core::Step& step = *found;
     QString kind;
     switch (step.type) {
     case core::StepType::Simple: kind = tr("Simple step"); break;

@@ -31,9 +31,12 @@ public:
     int type() const override { return Type; }
     const QString& id() const { return m_id; }
 
-    // Re-reads what is not read in paint() (the tooltip) and repaints.
+    // Repaints with the model as it is now.
     void refresh();
     bool isHiddenInModel() const;
+    // The official GEMMA name in the UI language, the type and the user's
+    // comment; built when the tooltip shows (ChartScene::helpEvent).
+    QString toolTipText() const;
 
     // Set by the scene from Document::hasProblems, so the check runs once per
     // change of the diagnostics rather than on every paint.
@@ -56,7 +59,6 @@ public:
 
 private:
     const core::Step* step() const;
-    QString toolTipText(const core::Step& step) const;
     void paintSymbol(QPainter* painter, const core::Step& step) const;
     void paintBadge(QPainter* painter) const;
     void paintCompleteBadge(QPainter* painter) const;

@@ -83,7 +83,6 @@ void TransitionItem::refresh()
 {
     updateLabel();
     m_shapeValid = false;
-    setToolTip(toolTipText());
     update();
 }
 

@@ -34,12 +34,15 @@ public:
     const QString& sourceId() const { return m_sourceId; } // a step id, or "F" for the family transition
     const QString& targetId() const { return m_targetId; }
 
-    // Re-reads the model into the label, tooltip and shape, and repaints.
+    // Re-reads the model into the label and shape, and repaints.
     // The label needs the effective priorities, which cost a scan of the
     // source's transitions: done here on change rather than on every paint.
     void refresh();
     // Hidden itself, or not effective because an end is hidden.
     bool isHiddenInModel() const;
+    // Source and target, priority, negation, the full condition and the
+    // tokens; built when the tooltip shows (ChartScene::helpEvent).
+    QString toolTipText() const;
 
     // What the label says, before eliding: "3: NOT Stop".
     QString labelText() const;
@@ -68,7 +71,6 @@ public:
 private:
     void updateLabel();
     QPainterPath buildShape() const;
-    QString toolTipText() const;
     QLineF barLine() const;
     void paintLabel(QPainter* painter) const;
     void paintTokens(QPainter* painter) const;

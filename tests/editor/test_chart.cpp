@@ -22,12 +22,14 @@
 
 #include <QApplication>
 #include <QFontMetricsF>
+#include <QHelpEvent>
 #include <QImage>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QScrollBar>
 #include <QStyleOptionGraphicsItem>
 #include <QTest>
+#include <QToolTip>
 #include <QTranslator>
 #include <QWheelEvent>
 #include <QUndoStack>
@@ -81,6 +83,7 @@ private slots:
     void tabLeavesPastTheLastElement();
     void replacedModelIsShown();
     void languageChangeRetranslatesTooltips();
+    void hoverShowsTheTooltipOfTheItem();
     void marginsTileTheArea();
     void backgroundCoversEveryPixel();
     void bigStepIdsAreDrawnLarger();
@@ -140,7 +143,7 @@ void TestChart::officialNamesMatchTheTemplate()
         QCOMPARE(officialStateName(id), QString::fromUtf8(state.englishName.data(), state.englishName.size()));
     }
     QVERIFY(officialStateName("Z9").isEmpty());
-    QVERIFY(m_scene->stepItem("F1")->toolTip().contains("Normal production"));
+    QVERIFY(m_scene->stepItem("F1")->toolTipText().contains("Normal production"));
 }
 
 void TestChart::hidingAStepHidesItsTransitions()
@@ -306,7 +309,7 @@ void TestChart::labelShowsPriorityAndCondition()
     QVERIFY(item->priorityShown());
     QVERIFY(!item->priorityOverlined());
     QCOMPARE(item->displayedCondition(), QString("NOT Stop"));
-    QVERIFY(item->toolTip().contains("NOT Stop"));
+    QVERIFY(item->toolTipText().contains("NOT Stop"));
 }
 
 void TestChart::labelWithoutChoiceHasNoPriority()
@@ -340,7 +343,7 @@ void TestChart::longConditionIsElided()
     QCOMPARE(item->labelText(), "3: " + condition);
     QVERIFY(item->displayedCondition().size() < condition.size());
     QVERIFY(item->displayedCondition().endsWith(QChar(0x2026)));
-    QVERIFY(item->toolTip().contains(condition));
+    QVERIFY(item->toolTipText().contains(condition));
 }
 
 void TestChart::undeclaredVariableMarksTheTransition()
@@ -365,8 +368,8 @@ void TestChart::hiddenInitialStepIsMarked()
 void TestChart::stepTypeChangeRepaintsOnlyThatStep()
 {
     m_document->push(new SetStepTypeCommand(*m_document, "A4", core::StepType::Enclosing));
-    QVERIFY(m_scene->stepItem("A4")->toolTip().contains("Enclosing step"));
-    QVERIFY(m_scene->stepItem("A3")->toolTip().contains("Simple step"));
+    QVERIFY(m_scene->stepItem("A4")->toolTipText().contains("Enclosing step"));
+    QVERIFY(m_scene->stepItem("A3")->toolTipText().contains("Simple step"));
 }
 
 void TestChart::activeStepIsMarked()
@@ -460,6 +463,32 @@ public:
 
 } // namespace
 
+// Tooltips are built when they show: a help event over an item shows
+// that item's text, over the empty sheet none.
+void TestChart::hoverShowsTheTooltipOfTheItem()
+{
+    ChartView view(m_scene);
+    view.resize(1000, 700);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    // The text shown, empty when the event was not taken.
+    auto hover = [&view](QPointF scenePos) {
+        const QPoint at = view.mapFromScene(scenePos);
+        QHelpEvent help(QEvent::ToolTip, at, view.viewport()->mapToGlobal(at));
+        QApplication::sendEvent(view.viewport(), &help);
+        return help.isAccepted() && QToolTip::isVisible() ? QToolTip::text() : QString();
+    };
+    const QString f1 = hover(m_scene->stepItem("F1")->sceneBoundingRect().center());
+    QVERIFY2(f1.contains("Normal production"), qPrintable(f1));
+    QCOMPARE(f1, m_scene->stepItem("F1")->toolTipText());
+    m_document->push(new SetConditionCommand(*m_document, "A1->F1", "Start AND NOT Stop"));
+    const TransitionItem* transition = m_scene->transitionItem("A1->F1");
+    const QString text = hover(transition->mapToScene(transition->labelTextRect().center()));
+    QVERIFY2(text.contains("Start AND NOT Stop"), qPrintable(text));
+    QVERIFY(hover(QPointF(40, 300)).isEmpty());
+    QToolTip::hideText();
+}
+
 void TestChart::languageChangeRetranslatesTooltips()
 {
     ChartView view(m_scene);
@@ -467,11 +496,11 @@ void TestChart::languageChangeRetranslatesTooltips()
     StateNameTranslator translator;
     QCoreApplication::installTranslator(&translator);
     QCoreApplication::processEvents();
-    const QString translated = m_scene->stepItem("F1")->toolTip();
+    const QString translated = m_scene->stepItem("F1")->toolTipText();
     QCoreApplication::removeTranslator(&translator);
     QCoreApplication::processEvents();
     QVERIFY2(translated.contains("[[Normal production]]"), qPrintable(translated));
-    QVERIFY(!m_scene->stepItem("F1")->toolTip().contains("[["));
+    QVERIFY(!m_scene->stepItem("F1")->toolTipText().contains("[["));
 
     // Family titles are elided once per language, not at every paint.
     const FrameItem* frame = m_scene->frameItem(core::Family::A);
