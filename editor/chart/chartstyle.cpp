@@ -1,5 +1,7 @@
 #include "editor/chart/chartstyle.h"
 
+#include <QFontMetricsF>
+#include <QHash>
 #include <QPainter>
 
 namespace editor::chartstyle {
@@ -40,6 +42,20 @@ const QFont& font()
 {
     static const QFont font = makeFont(12);
     return font;
+}
+
+double advance(const QString& text)
+{
+    const QFontMetricsF metrics(font());
+    // Priorities and their separator; a few dozen at most.
+    constexpr qsizetype kRememberedLength = 4;
+    if (text.size() > kRememberedLength)
+        return metrics.horizontalAdvance(text);
+    static QHash<QString, double> remembered;
+    const auto found = remembered.constFind(text);
+    if (found != remembered.constEnd())
+        return *found;
+    return *remembered.insert(text, metrics.horizontalAdvance(text));
 }
 
 double stepIdScale(double boxSize)

@@ -63,6 +63,10 @@ const QFont& font();
 double stepIdScale(double boxSize);
 inline constexpr double kBadgeScale = 11.0 / 12.0;
 inline constexpr double kTitleScale = 15.0 / 12.0;
+// The advance of `text` in font(). The short texts every label repeats
+// ("2", "2: ") are measured once: each measurement shapes its text anew,
+// and the template's 34 labels are mostly a priority alone.
+double advance(const QString& text);
 
 // `text` in `rect` with `flags` (Qt::AlignmentFlag, Qt::TextFlag), in
 // font() enlarged by `scale`.

@@ -129,12 +129,16 @@ void TransitionItem::updateLabel()
 
     // Each measurement shapes its text anew: none twice for the same text (a
     // label is often its priority alone).
-    const QFontMetricsF metrics(chartstyle::font());
     const QString prefix = m_priorityText + m_separator;
-    const double prefixWidth = prefix.isEmpty() ? 0.0 : metrics.horizontalAdvance(prefix);
-    m_elidedCondition = metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, m_labelRect.width() - prefixWidth));
-    m_priorityWidth = m_separator.isEmpty() ? prefixWidth : metrics.horizontalAdvance(m_priorityText);
-    m_shownWidth = m_elidedCondition.isEmpty() ? prefixWidth : metrics.horizontalAdvance(prefix + m_elidedCondition);
+    const double prefixWidth = prefix.isEmpty() ? 0.0 : chartstyle::advance(prefix);
+    m_elidedCondition.clear();
+    if (!m_conditionText.isEmpty()) {
+        const QFontMetricsF metrics(chartstyle::font());
+        m_elidedCondition =
+            metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, m_labelRect.width() - prefixWidth));
+    }
+    m_priorityWidth = m_separator.isEmpty() ? prefixWidth : chartstyle::advance(m_priorityText);
+    m_shownWidth = m_elidedCondition.isEmpty() ? prefixWidth : chartstyle::advance(prefix + m_elidedCondition);
 }
 
 QString TransitionItem::labelText() const

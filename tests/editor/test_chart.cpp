@@ -636,6 +636,11 @@ void TestChart::labelWidthIsTheShownText()
             shown += QStringLiteral(": ") + item->displayedCondition();
         QCOMPARE(item->labelTextRect().width(), metrics.horizontalAdvance(shown));
     }
+    // The short texts are remembered, each as itself.
+    for (int pass = 0; pass < 2; ++pass) {
+        for (const QString& text : {QStringLiteral("2"), QStringLiteral("2: "), QStringLiteral("12: "), QStringLiteral("2: Stop")})
+            QCOMPARE(chartstyle::advance(text), metrics.horizontalAdvance(text));
+    }
 }
 
 void TestChart::shapeFollowsTheLabel()
