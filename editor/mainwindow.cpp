@@ -204,12 +204,15 @@ bool isDefaultFront(std::string_view name)
 } // namespace
 
 // Empty docks with the real ones' titles and names, so that the window has
-// its final layout (and restores the saved one) from the first frame. In the
-// default layout a tab group stands as its front frame alone, and its tab
-// bar comes with the docks: building, laying out and painting two tab bars
-// and their six tabs was 6 M instructions of the first frame, a seventh of
-// the start-up's own work. A saved layout gets every frame: Qt keeps a saved
-// layout's sizes only when the docks it names are there.
+// its final layout (and restores the saved one) from the first frame. A tab
+// group stands as its front frame alone, and its tab bar comes with the
+// docks: building, laying out and painting two tab bars and their six tabs
+// was 6 M instructions of the first frame, a seventh of the start-up's own
+// work. The default layout gets only the front frames. A saved layout gets
+// every frame, because Qt keeps a saved layout's sizes only when the docks
+// it names are there; those it had behind a tab are hidden once restored
+// (hideFramesTabbedBehind), which spares the tab bars' layout and painting
+// but not their building.
 void MainWindow::createDockFrames()
 {
     const std::pair<QString, const char*> frames[] = {
@@ -489,8 +492,42 @@ void MainWindow::restoreLayout()
         applyDefaultLayout();
         return;
     }
-    if (!docksReady())
+    if (!docksReady()) {
         m_framesLayout = state; // the docks take it once they are built
+        hideFramesTabbedBehind(m_settings->tabbedBehindDocks());
+    }
+}
+
+// Each group keeps a frame: one is hidden only while another of its group
+// stays (a stale list hides nothing it should not).
+void MainWindow::hideFramesTabbedBehind(const QStringList& names)
+{
+    for (QDockWidget* frame : std::as_const(m_dockFrames)) {
+        if (!names.contains(frame->objectName()))
+            continue;
+        const QList<QDockWidget*> group = tabifiedDockWidgets(frame);
+        const bool anotherStays = std::any_of(group.cbegin(), group.cend(), [&names](const QDockWidget* other) {
+            return !other->isHidden() && !names.contains(other->objectName());
+        });
+        if (anotherStays)
+            frame->hide();
+    }
+}
+
+// The docks behind another dock's tab now, by what is on screen: none of a
+// group whose front dock is not (the window minimised, for instance).
+QStringList MainWindow::docksTabbedBehind() const
+{
+    QStringList behind;
+    for (QDockWidget* dock : docks()) {
+        const QList<QDockWidget*> group = tabifiedDockWidgets(dock);
+        const bool frontShown = std::any_of(group.cbegin(), group.cend(), [](const QDockWidget* other) {
+            return !other->visibleRegion().isEmpty();
+        });
+        if (frontShown && dock->visibleRegion().isEmpty())
+            behind << dock->objectName();
+    }
+    return behind;
 }
 
 void MainWindow::saveLayout()
@@ -501,6 +538,7 @@ void MainWindow::saveLayout()
     ensureDocksReady();
     m_settings->setWindowGeometry(saveGeometry());
     m_settings->setWindowState(saveState());
+    m_settings->setTabbedBehindDocks(docksTabbedBehind());
     m_settings->sync();
 }
 

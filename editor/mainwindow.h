@@ -90,6 +90,8 @@ private:
     void createDocks();
     void createDockFrames();
     void arrangeDocks(const QList<QDockWidget*>& docks);
+    void hideFramesTabbedBehind(const QStringList& names);
+    QStringList docksTabbedBehind() const;
     QDockWidget* dockNamed(const QString& objectName) const;
     void deleteDocks();
     void replaceDockFrames();

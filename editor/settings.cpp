@@ -75,6 +75,16 @@ void Settings::setWindowState(const QByteArray& state)
     m_settings.setValue("window/state", state);
 }
 
+QStringList Settings::tabbedBehindDocks() const
+{
+    return m_settings.value("window/tabbedBehind").toStringList();
+}
+
+void Settings::setTabbedBehindDocks(const QStringList& names)
+{
+    m_settings.setValue("window/tabbedBehind", names);
+}
+
 QStringList Settings::recentFiles() const
 {
     QStringList files = m_settings.value("files/recent").toStringList();

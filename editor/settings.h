@@ -36,6 +36,10 @@ public:
     void setWindowGeometry(const QByteArray& geometry);
     QByteArray windowState() const;
     void setWindowState(const QByteArray& state);
+    // The docks (object names) the window state has tabbed behind another:
+    // the next start's first frame leaves them out.
+    QStringList tabbedBehindDocks() const;
+    void setTabbedBehindDocks(const QStringList& names);
 
     // Most recent first.
     QStringList recentFiles() const;

@@ -225,6 +225,7 @@ private slots:
     void layoutIsRestored();
     void deferredDocksFillInAfterTheFirstFrame();
     void deferredDocksKeepTheSavedLayout();
+    void framesTabbedBehindNeedTheScreenAndKeepAFrame();
     void deferredDocksSaveTheirLayoutWhenClosedEarly();
     void deferredDocksAreBuiltWhenNeeded();
     void recoveryIsOffered();
@@ -546,9 +547,10 @@ namespace {
 QStringList tabsShownIn(const QWidget* window)
 {
     QStringList tabs;
-    // QMainWindow's tab bars of docks are its own children.
+    // QMainWindow's tab bars of docks are its own children; one it does not
+    // need it moves out of the window rather than hiding it.
     for (const QTabBar* bar : window->findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
-        if (!bar->isVisible())
+        if (!bar->isVisible() || !window->rect().intersects(bar->geometry()))
             continue;
         for (int i = 0; i < bar->count(); ++i)
             tabs << bar->tabText(i);
@@ -663,12 +665,36 @@ void TestMainWindow::deferredDocksKeepTheSavedLayout()
              Qt::RightDockWidgetArea);
     QVERIFY(!firstFrame.geometry.isNull());
     QCOMPARE(again.chartView()->viewport()->geometry(), firstFrame.geometry);
-    // A saved layout has a frame for every dock, its tab bars included.
-    const QStringList savedTabs{"Simulation", "Step", "Structured Text", "Transition", "Variables"};
-    QCOMPARE(firstFrame.visibleTabs, savedTabs);
-    QCOMPARE(tabsShownIn(&again), savedTabs);
+    // The first frame showed the front frame of each group, as saved, and
+    // no tab bar; the docks have them.
+    QCOMPARE(firstFrame.visibleDocks, (QStringList{"Problems", "Step", "Structured Text"}));
+    QCOMPARE(firstFrame.visibleTabs, QStringList());
+    QCOMPARE(tabsShownIn(&again), (QStringList{"Simulation", "Step", "Structured Text", "Transition", "Variables"}));
     QVERIFY(!again.findChild<QDockWidget*>(QStringLiteral("stPreviewDock"))->visibleRegion().isEmpty());
     QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("variablesDock"))->visibleRegion().isEmpty());
+    QSettings().clear(); // the other tests start from the default layout
+}
+
+// Which docks were behind a tab is read from the screen: a window never
+// shown records none, and a list that names a whole group (stale, or
+// edited) still leaves the group a frame.
+void TestMainWindow::framesTabbedBehindNeedTheScreenAndKeepAFrame()
+{
+    {
+        MainWindow unseen(*m_translators);
+        QVERIFY(unseen.close());
+    }
+    QVERIFY(QSettings().value(QStringLiteral("window/tabbedBehind")).toStringList().isEmpty());
+    QSettings().setValue(QStringLiteral("window/tabbedBehind"),
+                         QStringList{"stepDock", "transitionDock", "simulationDock", "variablesDock"});
+    MainWindow window(*m_translators, MainWindow::DockContents::AfterFirstFrame);
+    QStringList shown;
+    for (const QDockWidget* frame : window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
+        if (!frame->isHidden())
+            shown << frame->objectName();
+    }
+    shown.sort();
+    QCOMPARE(shown, (QStringList{"problemsDock", "simulationDock", "stPreviewDock", "stepDock", "transitionDock"}));
     QSettings().clear(); // the other tests start from the default layout
 }
 
