@@ -50,6 +50,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 #include <vector>
 
 namespace {
@@ -252,23 +253,45 @@ QString probePlatform()
     return QGuiApplication::platformName();
 }
 
-// Runs `startup_probe MODE` once, with settings and autosave in an empty
-// folder (a first start). The probe prints its own figure once the window's
-// first frame showing the chart has been painted and flushed; the time until
-// that line arrives here is the cold start a user waits through. GG Studio's probe then prints when
-// its docks are ready.
-StartupTimes probeOnce(const QString& mode)
+// Where the probe keeps its settings and autosave: an empty folder (a first
+// start), or one where a GG Studio window was opened and closed before (a
+// start with a saved layout).
+enum class ProbeSettings { FirstStart, SavedLayout };
+
+QProcessEnvironment probeEnvironment(const QTemporaryDir& home)
 {
-    QTemporaryDir home;
-    REQUIRE(home.isValid());
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert(QStringLiteral("QT_QPA_PLATFORM"), probePlatform());
     environment.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
     environment.insert(QStringLiteral("XDG_DATA_HOME"), home.filePath(QStringLiteral("data")));
     environment.insert(QStringLiteral("XDG_CACHE_HOME"), home.filePath(QStringLiteral("cache")));
+    return environment;
+}
+
+void saveALayout(const QTemporaryDir& home)
+{
+    QProcess probe;
+    probe.setProcessEnvironment(probeEnvironment(home));
+    probe.start(QStringLiteral(GGSTUDIO_STARTUP_PROBE), {QStringLiteral("save-layout")});
+    REQUIRE(probe.waitForFinished(60000));
+    INFO("startup_probe save-layout: " << probe.readAllStandardError().toStdString());
+    REQUIRE(probe.exitStatus() == QProcess::NormalExit);
+    REQUIRE(probe.exitCode() == 0);
+}
+
+// Runs `startup_probe MODE` once. The probe prints its own figure once the
+// window's first frame showing the chart has been painted and flushed; the
+// time until that line arrives here is the cold start a user waits through.
+// GG Studio's probe then prints when its docks are ready.
+StartupTimes probeOnce(const QString& mode, ProbeSettings settings = ProbeSettings::FirstStart)
+{
+    QTemporaryDir home;
+    REQUIRE(home.isValid());
+    if (settings == ProbeSettings::SavedLayout)
+        saveALayout(home);
     const int expectedLines = mode == QStringLiteral("ggstudio") ? 2 : 1;
     QProcess probe;
-    probe.setProcessEnvironment(environment);
+    probe.setProcessEnvironment(probeEnvironment(home));
     QElapsedTimer clock;
     clock.start();
     probe.start(QStringLiteral(GGSTUDIO_STARTUP_PROBE), {mode});
@@ -305,33 +328,46 @@ int startupRuns()
 TEST_CASE("cold start to the first shown chart", "[editorbench]")
 {
     // Alternately, so a change of the machine's load weighs on all alike.
-    const QStringList modes{QStringLiteral("bare"), QStringLiteral("ggstudio"), QStringLiteral("chart")};
-    std::vector<std::vector<double>> process(3);
-    std::vector<std::vector<double>> fromMain(3);
-    std::vector<double> docksReady;
+    struct Start {
+        QString mode;
+        ProbeSettings settings;
+    };
+    const Start starts[] = {{QStringLiteral("bare"), ProbeSettings::FirstStart},
+                            {QStringLiteral("ggstudio"), ProbeSettings::FirstStart},
+                            {QStringLiteral("chart"), ProbeSettings::FirstStart},
+                            {QStringLiteral("ggstudio"), ProbeSettings::SavedLayout}};
+    constexpr std::size_t kStarts = std::size(starts);
+    std::vector<std::vector<double>> process(kStarts);
+    std::vector<std::vector<double>> fromMain(kStarts);
+    std::vector<std::vector<double>> docksReady(kStarts);
     const int runs = startupRuns();
     for (int run = 0; run < runs; ++run) {
-        for (int mode = 0; mode < 3; ++mode) {
-            const StartupTimes times = probeOnce(modes[mode]);
-            process[static_cast<std::size_t>(mode)].push_back(times.fromProcessStart);
-            fromMain[static_cast<std::size_t>(mode)].push_back(times.fromMain);
-            if (mode == 1)
-                docksReady.push_back(times.docksFromProcessStart);
+        for (std::size_t start = 0; start < kStarts; ++start) {
+            const StartupTimes times = probeOnce(starts[start].mode, starts[start].settings);
+            process[start].push_back(times.fromProcessStart);
+            fromMain[start].push_back(times.fromMain);
+            docksReady[start].push_back(times.docksFromProcessStart);
         }
     }
     const double bare = median(process[0]);
     const double ggstudio = median(process[1]);
     const double chart = median(process[2]);
+    const double saved = median(process[3]);
     std::printf("\ncold start to the first shown chart (platform %s), median of %d runs each:\n"
                 "                                           from process start   from main()\n"
                 "  bare QMainWindow + empty QGraphicsView:  %8.1f ms          %8.1f ms\n"
                 "  GG Studio on the template:               %8.1f ms          %8.1f ms\n"
                 "    ... and its docks filled in:           %8.1f ms\n"
                 "  the bare window with the chart alone:    %8.1f ms          %8.1f ms\n"
-                "  ratio GG Studio / bare:                  %8.2f             %8.2f\n\n",
+                "  ratio GG Studio / bare:                  %8.2f             %8.2f\n"
+                "  GG Studio, layout saved by a previous start:\n"
+                "                                           %8.1f ms          %8.1f ms\n"
+                "    ... and its docks filled in:           %8.1f ms\n"
+                "  ratio GG Studio (saved layout) / bare:   %8.2f             %8.2f\n\n",
                 qPrintable(probePlatform()), runs, bare, median(fromMain[0]), ggstudio, median(fromMain[1]),
-                median(docksReady), chart, median(fromMain[2]), ggstudio / bare,
-                median(fromMain[1]) / median(fromMain[0]));
+                median(docksReady[1]), chart, median(fromMain[2]), ggstudio / bare,
+                median(fromMain[1]) / median(fromMain[0]), saved, median(fromMain[3]), median(docksReady[3]),
+                saved / bare, median(fromMain[3]) / median(fromMain[0]));
     std::fflush(stdout);
 }
 

@@ -6,6 +6,10 @@
 //             runs it) on the template; ARGS go to it as its command line.
 //             It prints a second line: the time until the docks' contents,
 //             built after the first frame, are ready.
+//   save-layout  GG Studio's real startup, closed by the probe once its
+//             docks are built and on screen: it leaves the settings a
+//             closed window saves (its layout), for a start with a saved
+//             layout. It times nothing.
 //   chart     for reference: the bare window with GG Studio's chart of the
 //             template instead of the empty view (no docks, menus or
 //             status bar) and GG Studio's start-up warm-up thread
@@ -35,6 +39,7 @@
 #include <QGraphicsView>
 #include <QMainWindow>
 #include <QScreen>
+#include <QTimer>
 
 #include <algorithm>
 #include <chrono>
@@ -140,14 +145,28 @@ int runGgStudio(int argc, char** argv, Clock::time_point start)
     return editor::runApplication(argc, argv, hooks);
 }
 
+// As a user closing the window once it is all there; closing saves the layout.
+int runSaveLayout(int argc, char** argv)
+{
+    editor::StartupHooks hooks;
+    hooks.windowCreated = [](editor::MainWindow& window) {
+        QObject::connect(&window, &editor::MainWindow::docksBecameReady, &window, [&window] {
+            // Once the docks are laid out and painted: the layout records
+            // which docks are behind a tab by what is on screen.
+            QTimer::singleShot(200, &window, [&window] { window.close(); });
+        });
+    };
+    return editor::runApplication(argc, argv, hooks);
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
 {
     const Clock::time_point start = Clock::now();
     const std::string mode = argc < 2 ? std::string() : std::string(argv[1]);
-    if (mode != "bare" && mode != "ggstudio" && mode != "chart") {
-        std::fputs("usage: startup_probe bare|ggstudio|chart [ARGS...]\n", stderr);
+    if (mode != "bare" && mode != "ggstudio" && mode != "chart" && mode != "save-layout") {
+        std::fputs("usage: startup_probe bare|ggstudio|chart|save-layout [ARGS...]\n", stderr);
         return 2;
     }
     // The application sees its own name and ARGS, not MODE.
@@ -157,5 +176,7 @@ int main(int argc, char* argv[])
     const int count = argc - 1;
     if (mode == "ggstudio")
         return runGgStudio(count, arguments.data(), start);
+    if (mode == "save-layout")
+        return runSaveLayout(count, arguments.data());
     return runBare(count, arguments.data(), start, mode == "chart");
 }
