@@ -41,7 +41,6 @@
 
 #include <algorithm>
 #include <map>
-#include <string_view>
 #include <utility>
 
 namespace editor {
@@ -167,18 +166,22 @@ void MainWindow::createDocks()
 
 namespace {
 
-// The docks by object name, in the order of MainWindow::docks(), and where
-// the default layout puts them: Step, Transition, Simulation on the right,
-// tabbed; Variables, Problems, Structured Text below, tabbed, each group with
-// its first dock in front.
+// The docks by object name, in the order of MainWindow::docks(), with their
+// titles and where the default layout puts them: Step, Transition,
+// Simulation on the right, tabbed; Variables, Problems, Structured Text
+// below, tabbed, each group with its first dock in front.
 struct DockPlace {
     const char* name;
+    QString (*title)();
     Qt::DockWidgetArea area;
 };
 constexpr DockPlace kDockPlaces[] = {
-    {"stepDock", Qt::RightDockWidgetArea},      {"transitionDock", Qt::RightDockWidgetArea},
-    {"simulationDock", Qt::RightDockWidgetArea}, {"variablesDock", Qt::BottomDockWidgetArea},
-    {"problemsDock", Qt::BottomDockWidgetArea},  {"stPreviewDock", Qt::BottomDockWidgetArea},
+    {"stepDock", &StepDock::title, Qt::RightDockWidgetArea},
+    {"transitionDock", &TransitionDock::title, Qt::RightDockWidgetArea},
+    {"simulationDock", &SimulationDock::title, Qt::RightDockWidgetArea},
+    {"variablesDock", &VariablesDock::title, Qt::BottomDockWidgetArea},
+    {"problemsDock", &ProblemsDock::title, Qt::BottomDockWidgetArea},
+    {"stPreviewDock", &StPreviewDock::title, Qt::BottomDockWidgetArea},
 };
 
 Qt::DockWidgetArea defaultArea(const QDockWidget* dock)
@@ -191,14 +194,10 @@ Qt::DockWidgetArea defaultArea(const QDockWidget* dock)
 }
 
 // The first dock of its area in the default layout.
-bool isDefaultFront(std::string_view name)
+bool isDefaultFront(const DockPlace& place)
 {
-    const auto place = std::find_if(std::cbegin(kDockPlaces), std::cend(kDockPlaces),
-                                    [name](const DockPlace& candidate) { return name == candidate.name; });
-    if (place == std::cend(kDockPlaces))
-        return false;
-    return place == std::find_if(std::cbegin(kDockPlaces), std::cend(kDockPlaces),
-                                 [place](const DockPlace& candidate) { return candidate.area == place->area; });
+    return &place == std::find_if(std::cbegin(kDockPlaces), std::cend(kDockPlaces),
+                                  [&place](const DockPlace& candidate) { return candidate.area == place.area; });
 }
 
 } // namespace
@@ -215,17 +214,12 @@ bool isDefaultFront(std::string_view name)
 // but not their building.
 void MainWindow::createDockFrames()
 {
-    const std::pair<QString, const char*> frames[] = {
-        {StepDock::title(), "stepDock"},         {TransitionDock::title(), "transitionDock"},
-        {SimulationDock::title(), "simulationDock"}, {VariablesDock::title(), "variablesDock"},
-        {ProblemsDock::title(), "problemsDock"},   {StPreviewDock::title(), "stPreviewDock"},
-    };
     const bool frontsOnly = m_settings->windowState().isEmpty();
-    for (const auto& [title, name] : frames) {
-        if (frontsOnly && !isDefaultFront(name))
+    for (const DockPlace& place : kDockPlaces) {
+        if (frontsOnly && !isDefaultFront(place))
             continue;
-        auto* frame = new QDockWidget(title, this);
-        frame->setObjectName(QLatin1String(name));
+        auto* frame = new QDockWidget(place.title(), this);
+        frame->setObjectName(QLatin1String(place.name));
         m_dockFrames << frame;
     }
     arrangeDocks(m_dockFrames);
