@@ -46,16 +46,15 @@ const QFont& font()
 
 double advance(const QString& text)
 {
-    const QFontMetricsF metrics(font());
     // Priorities and their separator; a few dozen at most.
     constexpr qsizetype kRememberedLength = 4;
     if (text.size() > kRememberedLength)
-        return metrics.horizontalAdvance(text);
+        return QFontMetricsF(font()).horizontalAdvance(text);
     static QHash<QString, double> remembered;
     const auto found = remembered.constFind(text);
     if (found != remembered.constEnd())
         return *found;
-    return *remembered.insert(text, metrics.horizontalAdvance(text));
+    return *remembered.insert(text, QFontMetricsF(font()).horizontalAdvance(text));
 }
 
 double stepIdScale(double boxSize)
