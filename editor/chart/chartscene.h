@@ -66,14 +66,13 @@ public:
     QGraphicsItem* itemFor(const ElementRef& element) const;
     static ElementRef elementOf(const QGraphicsItem* item);
 
-    // The tooltip of the topmost step or transition at a point, as a view
-    // with that viewport transform shows it; empty where there is none.
-    QString toolTipAt(QPointF scenePos, const QTransform& viewportTransform) const;
-
 protected:
     void helpEvent(QGraphicsSceneHelpEvent* event) override;
 
 private:
+    // The tooltip of the topmost step or transition at a point, as a view
+    // with that viewport transform shows it; empty where there is none.
+    QString toolTipAt(QPointF scenePos, const QTransform& viewportTransform) const;
     void buildItems();
     void onStepChanged(const QString& id);
     void onTransitionChanged(const QString& id);
