@@ -259,7 +259,7 @@ TEST_CASE("Model files are recognised by their content", "[files]")
     REQUIRE(loaded.ok());
     CHECK(loaded.format == ModelFormat::Native);
 
-    const std::string reference = filetests::readBinaryFile(fs::path(GGSTUDIO_SHARED_DIR) / "reference/gg-generator-template.json");
+    const std::string reference = filetests::readBinaryFile(fs::path(GGSTUDIO_REFERENCE_DIR) / "gg-generator/template.json");
     loaded = loadModelText(reference, "gg.json");
     REQUIRE(loaded.ok());
     CHECK(loaded.format == ModelFormat::GGGenerator);

@@ -18,7 +18,7 @@ namespace {
 
 std::string referenceText()
 {
-    return filetests::readBinaryFile(std::filesystem::path(GGSTUDIO_SHARED_DIR) / "reference/gg-generator-template.json");
+    return filetests::readBinaryFile(std::filesystem::path(GGSTUDIO_REFERENCE_DIR) / "gg-generator/template.json");
 }
 
 ordered_json reference()

@@ -153,7 +153,7 @@ bool validatesAgainstSchema(std::string text, const std::string& fileName)
         text.replace(at, from.size(), std::string(kPlcOpenNamespace201));
     const auto file = scratchFile(fileName);
     std::ofstream(file, std::ios::binary) << text;
-    const std::string command = "xmllint --noout --nonet --schema '" GGSTUDIO_SHARED_DIR
+    const std::string command = "xmllint --noout --nonet --schema '" GGSTUDIO_REFERENCE_DIR
                                 "/plcopen/tc6_xml_v201.xsd' '" + file.string() + "' 2>'" + file.string() + ".log'";
     const int status = std::system(command.c_str());
     if (status != 0) {

@@ -401,7 +401,7 @@ void TestMainWindow::plcOpenExportValidates()
     QProcess xmllint;
     xmllint.start(QStringLiteral("xmllint"),
                   {QStringLiteral("--noout"), QStringLiteral("--schema"),
-                   QStringLiteral(GGSTUDIO_SHARED_DIR "/plcopen/tc6_xml_v201.xsd"), path});
+                   QStringLiteral(GGSTUDIO_REFERENCE_DIR "/plcopen/tc6_xml_v201.xsd"), path});
     if (!xmllint.waitForStarted())
         QFAIL("xmllint is not installed (package libxml2-utils)");
     QVERIFY(xmllint.waitForFinished(60000));
