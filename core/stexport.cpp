@@ -4,14 +4,10 @@
 #include "core/stgenerator.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <system_error>
 
 namespace core {
 
 namespace {
-
-namespace fs = std::filesystem;
 
 // File names come from POU and list names, which are IEC identifiers; a name
 // that is not one could reach outside the folder, so it is refused.
@@ -34,22 +30,12 @@ std::string globalsText(const PlcProject& project)
     return project.dialect == Dialect::Iec ? formatConfiguration(project) : formatGlobals(project);
 }
 
-Status prepareFolder(const std::string& folderPath)
+// Problems with the folder itself keep this export's own code.
+Status asFolderProblem(Status status)
 {
-    std::error_code error;
-    const fs::path folder(folderPath);
-    if (folderPath.empty())
-        return Status::failure("stexport.folder", "no folder given for the Structured Text export");
-    if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
-        return Status::failure("stexport.folder",
-                               "cannot export into \"" + folderPath + "\": it exists and is not a folder");
-    }
-    fs::create_directories(folder, error);
-    if (error) {
-        return Status::failure("stexport.folder",
-                               "cannot create the folder \"" + folderPath + "\": " + error.message());
-    }
-    return Status::success();
+    if (status.code == "file.folder" || status.code == "file.not-folder")
+        status.code = "stexport.folder";
+    return status;
 }
 
 } // namespace
@@ -64,7 +50,7 @@ std::vector<StFile> stFolderFiles(const PlcProject& project)
     return files;
 }
 
-Status exportStFolder(const PlcProject& project, const std::string& folderPath)
+Status exportStFolder(const PlcProject& project, const std::string& folderPath, const FileWriter& writeFile)
 {
     const std::vector<StFile> files = stFolderFiles(project);
     for (const StFile& file : files) {
@@ -74,13 +60,13 @@ Status exportStFolder(const PlcProject& project, const std::string& folderPath)
                                    "cannot export \"" + file.name + "\": a POU or list name must be an IEC identifier");
         }
     }
-    if (Status prepared = prepareFolder(folderPath); !prepared)
-        return prepared;
-    for (const StFile& file : files) {
-        if (Status written = writeFileAtomically((fs::path(folderPath) / file.name).string(), file.text); !written)
-            return written;
-    }
-    return Status::success();
+    if (folderPath.empty())
+        return Status::failure("stexport.folder", "no folder given for the Structured Text export");
+    std::vector<FolderFile> contents;
+    contents.reserve(files.size());
+    for (const StFile& file : files)
+        contents.push_back({file.name, file.text});
+    return asFolderProblem(writeFolderAtomically(folderPath, contents, writeFile));
 }
 
 Status exportStSingleFile(const Model& model, const std::string& filePath)

@@ -4,6 +4,7 @@
 // for the globals (what a PLC tool imports file by file), or one IEC
 // 61131-3 file an IEC compiler builds directly.
 
+#include "core/fileio.h"
 #include "core/model.h"
 #include "core/plcproject.h"
 #include "core/status.h"
@@ -24,10 +25,13 @@ struct StFile {
 std::vector<StFile> stFolderFiles(const PlcProject& project);
 
 // Writes stFolderFiles into the folder, creating it (and its parents) when
-// needed. Each file is replaced atomically; other files in the folder are
-// left alone. Codes: "stexport.folder", "stexport.file-name", and those of
-// writeFileAtomically.
-Status exportStFolder(const PlcProject& project, const std::string& folderPath);
+// needed, all or nothing (writeFolderAtomically): after a failure the folder
+// holds the old set of files, after success the new one. Other entries of
+// the folder are kept. writeFile is for tests only (a write that fails).
+// Codes: "stexport.folder", "stexport.file-name", "file.not-regular" and
+// those of writeFileAtomically.
+Status exportStFolder(const PlcProject& project, const std::string& folderPath,
+                      const FileWriter& writeFile = writeFileAtomically);
 
 // One IEC file with every POU and the configuration (formatSingleFileIec),
 // always in the IEC dialect whatever the model's setting, since CODESYS

@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <system_error>
 
 #ifndef _WIN32
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/un.h>
 #include <unistd.h>
 #endif
 
@@ -96,6 +101,37 @@ void writeBinaryFile(const std::filesystem::path& path, const std::string& conte
     if (!out)
         throw std::runtime_error("cannot write " + path.string());
 }
+
+#ifndef _WIN32
+void makeFifo(const std::filesystem::path& path)
+{
+    if (::mkfifo(path.c_str(), 0644) != 0)
+        throw std::runtime_error("cannot create the FIFO " + path.string());
+}
+
+void makeSocket(const std::filesystem::path& path)
+{
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    if (path.string().size() >= sizeof address.sun_path)
+        throw std::runtime_error("socket path too long: " + path.string());
+    std::strcpy(address.sun_path, path.c_str());
+    const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    const bool bound = fd >= 0 && ::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0;
+    if (fd >= 0)
+        ::close(fd);
+    if (!bound)
+        throw std::runtime_error("cannot create the socket " + path.string());
+}
+
+std::filesystem::path harmlessCharacterDevice(const std::filesystem::path& folder)
+{
+    const std::filesystem::path node = folder / "null-device";
+    if (::mknod(node.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0)
+        return node;
+    return "/dev/null";
+}
+#endif
 
 ScratchFolder::ScratchFolder()
 {

@@ -23,6 +23,16 @@ core::Model richNativeModel();
 std::string readBinaryFile(const std::filesystem::path& path);
 void writeBinaryFile(const std::filesystem::path& path, const std::string& contents);
 
+#ifndef _WIN32
+// Entries that are not regular files, for the saves that must refuse them.
+void makeFifo(const std::filesystem::path& path);
+void makeSocket(const std::filesystem::path& path); // a bound UNIX socket, left on disk
+// A character device a test may aim a write at without risk: a private node
+// with /dev/null's numbers where that is allowed (root, who could replace
+// /dev/null itself), else /dev/null (which others cannot replace).
+std::filesystem::path harmlessCharacterDevice(const std::filesystem::path& folder);
+#endif
+
 // A fresh folder under the system temporary folder, removed with its
 // contents when the object dies.
 class ScratchFolder {

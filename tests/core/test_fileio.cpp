@@ -178,8 +178,8 @@ TEST_CASE("An atomic write onto a folder fails and changes nothing", "[files]")
 
     const Status status = writeFileAtomically(folder.file("model.json").string(), "data");
     CHECK_FALSE(status);
-    CHECK(status.code == "file.write");
-    CHECK_THAT(status.message, Catch::Contains("model.json"));
+    CHECK(status.code == "file.not-regular");
+    CHECK(status.message == "cannot save \"" + folder.file("model.json").string() + "\": it is a folder, not a file");
     CHECK(fs::is_directory(folder.file("model.json")));
     CHECK(filetests::readBinaryFile(folder.file("model.json") / "inside.txt") == "keep");
     CHECK(folder.entries() == std::vector<std::string>{"model.json"});
@@ -236,6 +236,158 @@ TEST_CASE("An atomic write through a symbolic link replaces the file it points t
     CHECK(fs::is_symlink(fs::symlink_status(folder.file("link.json"))));
     CHECK(filetests::readBinaryFile(folder.file("real.json")) == "new");
     CHECK(folder.entries() == std::vector<std::string>{"link.json", "real.json"});
+}
+
+TEST_CASE("An atomic write refuses a FIFO, a socket and a device and leaves them as they were", "[files]")
+{
+    ScratchFolder folder;
+    const fs::path fifo = folder.file("pipe.json");
+    filetests::makeFifo(fifo);
+    const fs::path socket = folder.file("socket.json");
+    filetests::makeSocket(socket);
+    const fs::path device = filetests::harmlessCharacterDevice(folder.path());
+    const auto refusal = [](const fs::path& target) {
+        const Status status = writeFileAtomically(target.string(), "data");
+        CHECK_FALSE(status);
+        CHECK(status.code == "file.not-regular");
+        return status.message;
+    };
+
+    CHECK(refusal(fifo) == "cannot save \"" + fifo.string() + "\": it is a named pipe (FIFO), not a regular file");
+    CHECK(fs::is_fifo(fs::symlink_status(fifo)));
+    CHECK(refusal(socket) == "cannot save \"" + socket.string() + "\": it is a socket, not a regular file");
+    CHECK(fs::is_socket(fs::symlink_status(socket)));
+    CHECK(refusal(device) == "cannot save \"" + device.string() + "\": it is a character device, not a regular file");
+    CHECK(fs::is_character_file(fs::symlink_status(device)));
+    // No temporary file left behind beside any of them.
+    for (const std::string& name : folder.entries())
+        CHECK(name.find(".tmp-") == std::string::npos);
+}
+
+TEST_CASE("An atomic write through a link to a device or a FIFO is refused; the link and its target stay", "[files]")
+{
+    ScratchFolder folder;
+    const fs::path device = filetests::harmlessCharacterDevice(folder.path());
+    fs::create_symlink(device, folder.file("to-device.json"));
+    filetests::makeFifo(folder.file("pipe"));
+    fs::create_symlink("pipe", folder.file("to-fifo.json"));
+
+    Status status = writeFileAtomically(folder.file("to-device.json").string(), "data");
+    CHECK(status.code == "file.not-regular");
+    CHECK(status.message == "cannot save \"" + folder.file("to-device.json").string() + "\": it links to \""
+        + fs::canonical(device).string() + "\", which is a character device, not a regular file");
+    CHECK(fs::is_character_file(fs::status(device)));
+    CHECK(fs::is_symlink(fs::symlink_status(folder.file("to-device.json"))));
+
+    status = writeFileAtomically(folder.file("to-fifo.json").string(), "data");
+    CHECK(status.code == "file.not-regular");
+    CHECK_THAT(status.message, Catch::Contains("which is a named pipe (FIFO)"));
+    CHECK(fs::is_fifo(fs::symlink_status(folder.file("pipe"))));
+    CHECK(fs::is_symlink(fs::symlink_status(folder.file("to-fifo.json"))));
+}
+
+TEST_CASE("saveModelFile refuses a FIFO: the model never replaces it", "[files]")
+{
+    ScratchFolder folder;
+    filetests::makeFifo(folder.file("model.json"));
+    const Status status = saveModelFile(filetests::richNativeModel(), folder.file("model.json").string(),
+                                        ModelFormat::Native);
+    CHECK(status.code == "file.not-regular");
+    CHECK(fs::is_fifo(fs::symlink_status(folder.file("model.json"))));
+    CHECK(folder.entries() == std::vector<std::string>{"model.json"});
+}
+
+TEST_CASE("A folder write creates the folder, replaces its files all at once and keeps the user's", "[files]")
+{
+    ScratchFolder scratch;
+    const fs::path folder = scratch.file("out") / "st";
+    REQUIRE(writeFolderAtomically(folder.string(), {{"A.st", "a1"}, {"B.st", "b1"}}));
+    CHECK(filetests::readBinaryFile(folder / "A.st") == "a1");
+    CHECK(filetests::readBinaryFile(folder / "B.st") == "b1");
+
+    filetests::writeBinaryFile(folder / "notes.txt", "mine");
+    fs::create_directory(folder / "sub");
+    filetests::writeBinaryFile(folder / "sub" / "deep.txt", "deep");
+    fs::create_symlink("notes.txt", folder / "notes-link");
+    fs::permissions(folder, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec);
+    REQUIRE(writeFolderAtomically(folder.string(), {{"A.st", "a2"}, {"C.st", "c2"}}));
+
+    CHECK(filetests::readBinaryFile(folder / "A.st") == "a2");
+    CHECK(filetests::readBinaryFile(folder / "C.st") == "c2");
+    CHECK(filetests::readBinaryFile(folder / "B.st") == "b1"); // not in the new set: the user's now
+    CHECK(filetests::readBinaryFile(folder / "notes.txt") == "mine");
+    CHECK(filetests::readBinaryFile(folder / "sub" / "deep.txt") == "deep");
+    CHECK(fs::read_symlink(folder / "notes-link") == "notes.txt");
+    CHECK((fs::status(folder).permissions() & fs::perms::all)
+        == (fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec));
+    // No staging or old folder left beside it.
+    CHECK(std::vector<std::string>{fs::directory_iterator(scratch.file("out"))->path().filename().string()}
+        == std::vector<std::string>{"st"});
+}
+
+TEST_CASE("A folder write that fails half-way leaves the old files, all of them", "[files]")
+{
+    ScratchFolder scratch;
+    const fs::path folder = scratch.file("st");
+    REQUIRE(writeFolderAtomically(folder.string(), {{"1.st", "old 1"}, {"2.st", "old 2"}, {"3.st", "old 3"}}));
+    int writes = 0;
+    const FileWriter fullDiskAtTheThirdFile = [&](const std::string& path, std::string_view contents) {
+        if (++writes == 3)
+            return Status::failure("file.write", "cannot save \"" + path + "\": No space left on device");
+        return writeFileAtomically(path, contents);
+    };
+
+    const Status status = writeFolderAtomically(folder.string(), {{"1.st", "new 1"}, {"2.st", "new 2"}, {"3.st", "new 3"}},
+                                                fullDiskAtTheThirdFile);
+    CHECK(status.code == "file.write");
+    CHECK(status.message == "cannot save \"" + (folder / "3.st").string()
+        + "\": No space left on device; nothing was changed");
+    CHECK(filetests::readBinaryFile(folder / "1.st") == "old 1");
+    CHECK(filetests::readBinaryFile(folder / "2.st") == "old 2");
+    CHECK(filetests::readBinaryFile(folder / "3.st") == "old 3");
+    CHECK(scratch.entries() == std::vector<std::string>{"st"});
+}
+
+TEST_CASE("A folder write refuses what is not a folder, and special files inside it", "[files]")
+{
+    ScratchFolder scratch;
+    filetests::makeFifo(scratch.file("pipe"));
+    Status status = writeFolderAtomically(scratch.file("pipe").string(), {{"A.st", "a"}});
+    CHECK(status.code == "file.not-folder");
+    CHECK(status.message == "cannot write into \"" + scratch.file("pipe").string()
+        + "\": it is a named pipe (FIFO), not a folder");
+    CHECK(fs::is_fifo(fs::symlink_status(scratch.file("pipe"))));
+
+    const fs::path folder = scratch.file("st");
+    fs::create_directory(folder);
+    filetests::writeBinaryFile(folder / "A.st", "old");
+    filetests::makeFifo(folder / "B.st");
+    status = writeFolderAtomically(folder.string(), {{"A.st", "new"}, {"B.st", "new"}});
+    CHECK(status.code == "file.not-regular");
+    CHECK(status.message == "cannot save \"" + (folder / "B.st").string() + "\": it is a named pipe (FIFO), not a regular file");
+    CHECK(fs::is_fifo(fs::symlink_status(folder / "B.st")));
+    CHECK(filetests::readBinaryFile(folder / "A.st") == "old");
+    CHECK(scratch.entries() == std::vector<std::string>{"pipe", "st"});
+
+    // Writing through a link would change a file outside before the swap.
+    fs::remove(folder / "B.st");
+    fs::create_symlink("A.st", folder / "B.st");
+    status = writeFolderAtomically(folder.string(), {{"B.st", "new"}});
+    CHECK(status.code == "file.not-regular");
+    CHECK_THAT(status.message, Catch::Contains("it is a symbolic link"));
+    CHECK(filetests::readBinaryFile(folder / "A.st") == "old");
+}
+
+TEST_CASE("A folder write through a link to a folder replaces the folder and keeps the link", "[files]")
+{
+    ScratchFolder scratch;
+    fs::create_directory(scratch.file("real"));
+    filetests::writeBinaryFile(scratch.file("real") / "A.st", "old");
+    fs::create_directory_symlink("real", scratch.file("link"));
+    REQUIRE(writeFolderAtomically(scratch.file("link").string() + "/", {{"A.st", "new"}}));
+    CHECK(fs::is_symlink(fs::symlink_status(scratch.file("link"))));
+    CHECK(filetests::readBinaryFile(scratch.file("real") / "A.st") == "new");
+    CHECK(scratch.entries() == std::vector<std::string>{"link", "real"});
 }
 #endif
 

@@ -7,8 +7,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 
 using namespace core;
@@ -98,7 +101,7 @@ TEST_CASE("Exporting a folder fails clearly", "[plcopen]")
         const Status status = exportStFolder(project, file.string());
         CHECK_FALSE(status.ok);
         CHECK(status.code == "stexport.folder");
-        CHECK(status.message.find("is not a folder") != std::string::npos);
+        CHECK(status.message == "cannot write into \"" + file.string() + "\": it is a file, not a folder");
     }
     SECTION("the folder cannot be created")
     {
@@ -123,6 +126,64 @@ TEST_CASE("Exporting a folder fails clearly", "[plcopen]")
         CHECK(status.code == "stexport.file-name");
         CHECK_FALSE(fs::exists(folder));
     }
+}
+
+namespace {
+
+// The files of a folder export, by name.
+std::map<std::string, std::string> folderContents(const fs::path& folder)
+{
+    std::map<std::string, std::string> contents;
+    for (const auto& entry : fs::directory_iterator(folder))
+        contents[entry.path().filename().string()] = readAll(entry.path());
+    return contents;
+}
+
+} // namespace
+
+TEST_CASE("A folder export that fails half-way leaves the complete old set", "[plcopen]")
+{
+    const PlcProject before = buildPlcProject(samples::caseStudyModel(), Dialect::Iec);
+    const fs::path folder = scratchFolder("half-way") / "st";
+    REQUIRE(exportStFolder(before, folder.string()).ok);
+    std::ofstream(folder / "notes.txt") << "mine";
+    const std::map<std::string, std::string> old = folderContents(folder);
+
+    PlcProject after = buildPlcProject(samples::caseStudyModel(), Dialect::Codesys);
+    std::size_t writes = 0;
+    const FileWriter diskFullAtTheThirdFile = [&](const std::string& path, std::string_view contents) {
+        if (++writes == 3)
+            return Status::failure("file.write", "cannot save \"" + path + "\": No space left on device");
+        return writeFileAtomically(path, contents);
+    };
+    const Status status = exportStFolder(after, folder.string(), diskFullAtTheThirdFile);
+    CHECK(status.code == "file.write");
+    const std::string third = stFolderFiles(after)[2].name;
+    CHECK(status.message == "cannot save \"" + (folder / third).string() + "\": No space left on device; nothing was changed");
+    CHECK(writes == 3);
+    CHECK(folderContents(folder) == old);
+    // Nothing left beside the folder either.
+    CHECK(std::distance(fs::directory_iterator(folder.parent_path()), fs::directory_iterator()) == 1);
+
+    // The same export without the failure gives the complete new set.
+    REQUIRE(exportStFolder(after, folder.string()).ok);
+    for (const StFile& file : stFolderFiles(after))
+        CHECK(readAll(folder / file.name) == file.text);
+    CHECK(readAll(folder / "notes.txt") == "mine");
+}
+
+TEST_CASE("A folder export never replaces a FIFO in the folder", "[plcopen]")
+{
+    const PlcProject project = buildPlcProject(samples::caseStudyModel(), Dialect::Iec);
+    const fs::path folder = scratchFolder("fifo-inside");
+    fs::create_directories(folder);
+    REQUIRE(::mkfifo((folder / "GEMMA.st").c_str(), 0644) == 0);
+    const Status status = exportStFolder(project, folder.string());
+    CHECK(status.code == "file.not-regular");
+    CHECK(status.message == "cannot save \"" + (folder / "GEMMA.st").string()
+        + "\": it is a named pipe (FIFO), not a regular file");
+    CHECK(fs::is_fifo(fs::symlink_status(folder / "GEMMA.st")));
+    CHECK(std::distance(fs::directory_iterator(folder), fs::directory_iterator()) == 1);
 }
 
 TEST_CASE("The single-file export is IEC whatever the model's dialect", "[plcopen]")
