@@ -3,11 +3,12 @@
 #include "editor/document.h"
 #include "editor/simulation/simulationtext.h"
 
+#include "core/fileio.h"
+
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QTimer>
 
 #include <algorithm>
@@ -331,18 +332,14 @@ std::string SimulationSession::recordingText() const
     return text;
 }
 
+// Through core's writer, like every save: atomic, and never onto a FIFO or
+// a device.
 bool SimulationSession::saveRecording(const QString& path, QString* error) const
 {
-    QSaveFile file(path);
-    const std::string text = recordingText();
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)
-        || file.write(text.data(), static_cast<qint64>(text.size())) != static_cast<qint64>(text.size())
-        || !file.commit()) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    return true;
+    const core::Status status = core::writeFileAtomically(QFile::encodeName(path).toStdString(), recordingText());
+    if (!status && error)
+        *error = QString::fromStdString(status.message);
+    return status.ok;
 }
 
 bool SimulationSession::startReplay(const QString& path, QString* error)

@@ -67,6 +67,9 @@
 #include <functional>
 #include <memory>
 
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+
 using namespace editor;
 using editortest::countItems;
 
@@ -123,6 +126,34 @@ private:
         box->close();
     }
 };
+
+QByteArray localPath(const QString& path)
+{
+    return QFile::encodeName(path);
+}
+
+bool isFifo(const QString& path)
+{
+    struct stat status {};
+    return ::lstat(localPath(path).constData(), &status) == 0 && S_ISFIFO(status.st_mode);
+}
+
+bool isCharacterDevice(const QString& path)
+{
+    struct stat status {};
+    return ::stat(localPath(path).constData(), &status) == 0 && S_ISCHR(status.st_mode);
+}
+
+// A device a write may be aimed at without risk: a private node with
+// /dev/null's numbers where allowed (root, who could replace /dev/null), else
+// /dev/null itself (which others cannot replace).
+QString harmlessCharacterDevice(const QTemporaryDir& dir)
+{
+    const QString node = dir.filePath(QStringLiteral("null-device"));
+    if (::mknod(localPath(node).constData(), S_IFCHR | 0666, makedev(1, 3)) == 0)
+        return node;
+    return QStringLiteral("/dev/null");
+}
 
 // Whether `text` is language: it has letters and is not an element id, an
 // IEC type name or a key name.
@@ -220,6 +251,8 @@ private slots:
     void otherExportsWriteTheirFiles();
     void exportWithErrorsAsksFirst();
     void chartPicturesAreWritten();
+    void saveOntoAFifoKeepsTheEditAndSaysWhy();
+    void exportsNeverReplaceAFifoOrADevice();
     void unsavedChangesAskBeforeOpening();
     void modelSettingsAreOneUndoStep();
     void layoutIsRestored();
@@ -490,6 +523,58 @@ void TestMainWindow::chartPicturesAreWritten()
 
     ChartExport::Format format;
     QVERIFY(!ChartExport::formatForPath(QStringLiteral("chart.gif"), &format));
+}
+
+void TestMainWindow::saveOntoAFifoKeepsTheEditAndSaysWhy()
+{
+    const QString path = writeNativeFile(m_files, QStringLiteral("became-fifo.json"), namedModel("Fifo"));
+    QVERIFY(m_window->openFile(path));
+    Document& document = *m_window->document();
+    QVERIFY(document.push(new SetStepHiddenCommand(document, QStringLiteral("A2"), true)));
+    QVERIFY(QFile::remove(path));
+    QCOMPARE(::mkfifo(localPath(path).constData(), 0644), 0);
+
+    MessageBoxCatcher catcher;
+    catcher.arm();
+    m_window->findChild<QAction*>(QStringLiteral("saveAction"))->trigger();
+    QVERIFY(catcher.seen);
+    QVERIFY2(catcher.text.contains(QDir::toNativeSeparators(path)), qPrintable(catcher.text));
+    QVERIFY2(catcher.text.contains(QStringLiteral("it is a named pipe (FIFO), not a regular file")),
+             qPrintable(catcher.text));
+    QVERIFY(isFifo(path));
+    QVERIFY(document.isModified());
+    QVERIFY(m_window->isWindowModified());
+    QVERIFY(document.model().step("A2")->hidden);
+    QCOMPARE(document.filePath(), path);
+}
+
+void TestMainWindow::exportsNeverReplaceAFifoOrADevice()
+{
+    const QString fifo = m_files.filePath(QStringLiteral("pipe"));
+    QCOMPARE(::mkfifo(localPath(fifo).constData(), 0644), 0);
+    const QString device = harmlessCharacterDevice(m_files);
+    const QString deviceLink = m_files.filePath(QStringLiteral("device-link.xml"));
+    QVERIFY(QFile::link(device, deviceLink));
+    const ExportActions& exports = *m_window->exportActions();
+    ChartExport chart(*m_window->chartScene());
+    const std::vector<std::pair<const char*, std::function<bool(const QString&, QString*)>>> writers{
+        {"PLCopen", [&](const QString& p, QString* e) { return exports.writePlcOpen(p, core::Dialect::Iec, e); }},
+        {"ST file", [&](const QString& p, QString* e) { return exports.writeStSingleFile(p, e); }},
+        {"ST folder", [&](const QString& p, QString* e) { return exports.writeStFolder(p, core::Dialect::Iec, e); }},
+        {"GG-Generator", [&](const QString& p, QString* e) { return exports.writeGGGenerator(p, e); }},
+        {"SVG", [&](const QString& p, QString* e) { return chart.write(p, ChartExport::Format::Svg, e); }},
+        {"PNG", [&](const QString& p, QString* e) { return chart.write(p, ChartExport::Format::Png, e); }},
+        {"PDF", [&](const QString& p, QString* e) { return chart.write(p, ChartExport::Format::Pdf, e); }},
+    };
+    for (const auto& [name, write] : writers) {
+        QString error;
+        QVERIFY2(!write(fifo, &error), name);
+        QVERIFY2(error.contains(QStringLiteral("a named pipe (FIFO), not a")), qPrintable(name + (": " + error)));
+        QVERIFY2(isFifo(fifo), name);
+        QVERIFY2(!write(deviceLink, &error), name);
+        QVERIFY2(error.contains(QStringLiteral("a character device, not a")), qPrintable(name + (": " + error)));
+        QVERIFY2(isCharacterDevice(device), name);
+    }
 }
 
 void TestMainWindow::unsavedChangesAskBeforeOpening()

@@ -46,6 +46,8 @@
 #include <memory>
 #include <set>
 
+#include <sys/stat.h>
+
 using namespace editor;
 
 namespace {
@@ -100,6 +102,7 @@ private slots:
     void unusableConditionIsInTheUiLanguage();
     void traceTableHasOneRowPerScan();
     void recordedSessionReplaysWithEveryExpectationMet();
+    void recordingNeverReplacesAFifo();
     void replayShowsFailedExpectations();
     void thousandScansPerSecondRunInBatches();
     void languageChangeKeepsTheSimulation();
@@ -589,6 +592,20 @@ void TestSimulation::recordedSessionReplaysWithEveryExpectationMet()
     QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A2"));
     QVERIFY(m_dock->findChild<QWidget*>(QStringLiteral("inputsPanel"))->isEnabled());
     QVERIFY(replay.size() >= 2);
+}
+
+void TestSimulation::recordingNeverReplacesAFifo()
+{
+    startOnRealisticModel();
+    scan(2);
+    const QString path = m_files.filePath(QStringLiteral("pipe.scenario"));
+    QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0644), 0);
+    QString error;
+    QVERIFY(!m_session->saveRecording(path, &error));
+    QVERIFY2(error.contains(QStringLiteral("it is a named pipe (FIFO), not a regular file")), qPrintable(error));
+    struct stat status {};
+    QCOMPARE(::lstat(QFile::encodeName(path).constData(), &status), 0);
+    QVERIFY(S_ISFIFO(status.st_mode));
 }
 
 void TestSimulation::replayShowsFailedExpectations()
