@@ -416,6 +416,11 @@ Status Model::renameVariable(std::string_view oldName, std::string newName)
         return unknownVariable(oldName);
     if (newName.empty())
         return Status::failure("empty-name", "a variable needs a name");
+    // Conditions are rewritten to the new name: one that is no identifier
+    // ("Stop 2", "AND") would leave them unparsable, and a second rename
+    // could not find it in them again.
+    if (const IdentifierProblem problem = identifierProblem(newName); problem != IdentifierProblem::None)
+        return Status::failure("invalid-name", identifierProblemMessage(problem, newName));
     const Variable* clash = variable(newName);
     if (clash && clash != v)
         return Status::failure("duplicate-name", "a variable named '" + clash->name +

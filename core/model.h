@@ -119,6 +119,8 @@ public:
     Status addVariable(Variable variable, int index = -1); // -1: append
     Status removeVariable(std::string_view name);
     // A refactoring: every condition and token that uses the variable follows.
+    // The new name must be a valid identifier (identifierProblem() of
+    // iectypes.h finds none), so that the rewritten conditions still parse.
     Status renameVariable(std::string_view oldName, std::string newName);
     Status setVariableType(std::string_view name, IecType type);
     Status setVariableDefault(std::string_view name, std::string defaultValue);

@@ -276,6 +276,11 @@ QString diagnosticText(const core::Diagnostic& diagnostic)
     return text.isEmpty() ? fallback(diagnostic) : text;
 }
 
+QString identifierProblemText(const QString& name)
+{
+    return identifierDetail(name);
+}
+
 QString severityText(core::Severity severity)
 {
     switch (severity) {

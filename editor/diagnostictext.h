@@ -20,6 +20,10 @@ QString diagnosticText(const core::Diagnostic& diagnostic);
 // share. Falls back to the core's English message for an unknown code.
 QString verificationText(const core::VerificationFinding& finding);
 
+// Why `name` is no valid variable name (the identifier rules of spec §3),
+// in the UI language; empty when it is one.
+QString identifierProblemText(const QString& name);
+
 // "Error", "Warning", "Information".
 QString severityText(core::Severity severity);
 

@@ -1,6 +1,7 @@
 #include "editor/commands/renamevariablecommand.h"
 
 #include "editor/commands/commandids.h"
+#include "editor/diagnostictext.h"
 
 #include "core/model.h"
 
@@ -26,7 +27,21 @@ core::Status RenameVariableCommand::apply()
         for (const core::Transition& transition : model().transitions())
             m_before.push_back({transition.id, transition.condition, transition.tokens});
     }
-    return model().renameVariable(m_oldName, m_newName);
+    return inUiLanguage(model().renameVariable(m_oldName, m_newName));
+}
+
+// The core refuses in English (for the CLI); the reasons a user meets while
+// typing a name are worded again in the UI language.
+core::Status RenameVariableCommand::inUiLanguage(core::Status status) const
+{
+    if (status.code == "invalid-name") {
+        status.message = toStdString(identifierProblemText(toQString(m_newName)));
+    } else if (status.code == "duplicate-name") {
+        if (const core::Variable* clash = model().variable(m_newName))
+            status.message = toStdString(tr("a variable named '%1' already exists (IEC names ignore case)")
+                                             .arg(toQString(clash->name)));
+    }
+    return status;
 }
 
 core::Status RenameVariableCommand::revert()

@@ -12,7 +12,8 @@ namespace editor {
 // that uses the variable follows. The model matches names ignoring case, so
 // renaming back would not restore a condition that spelled the name
 // differently ("STOP AND NOT stop"): undo restores the exact texts and
-// tokens kept before the rename.
+// tokens kept before the rename. A new name that is no valid identifier is
+// refused (core::Model::renameVariable), with the reason in the UI language.
 class RenameVariableCommand : public ModelCommand {
     Q_DECLARE_TR_FUNCTIONS(RenameVariableCommand)
 
@@ -23,6 +24,7 @@ public:
 private:
     core::Status apply() override;
     core::Status revert() override;
+    core::Status inUiLanguage(core::Status status) const;
 
     struct TransitionText {
         std::string id;

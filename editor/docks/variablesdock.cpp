@@ -155,6 +155,9 @@ VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* 
         const QRect cell = m_view->visualRect(m_proxy->mapFromSource(index));
         QToolTip::showText(m_view->viewport()->mapToGlobal(cell.bottomLeft()), message, m_view);
     });
+    // A refusal is about the edit just tried: the next edit that goes
+    // through (or an undo, a redo) makes it old news.
+    connect(m_document->undoStack(), &QUndoStack::indexChanged, this, &VariablesDock::hideMessage);
     connect(m_model, &VariablesTableModel::variableRenamed, this, &VariablesDock::onVariableRenamed);
     connect(m_model, &QAbstractItemModel::modelReset, this, &VariablesDock::onModelReset);
     connect(m_model, &QAbstractItemModel::dataChanged, this, &VariablesDock::updateActions);
@@ -365,6 +368,12 @@ void VariablesDock::showMessage(const QString& message)
     m_messageLabel->setText(message);
     m_messageLabel->parentWidget()->show();
     m_messageTimer->start();
+}
+
+void VariablesDock::hideMessage()
+{
+    m_messageTimer->stop();
+    m_messageLabel->parentWidget()->hide();
 }
 
 QString VariablesDock::freeVariableName() const

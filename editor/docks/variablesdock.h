@@ -60,6 +60,7 @@ private:
     void onModelReset();
     void updateActions();
     void showMessage(const QString& message);
+    void hideMessage();
     void selectVariable(const QString& name, int column = 0);
     QList<int> selectedRows() const; // model rows, ascending
     int currentRow() const; // model row; -1 for none

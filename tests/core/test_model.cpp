@@ -176,6 +176,23 @@ TEST_CASE("Renaming a variable rewrites every condition and token that uses it",
     CHECK(model.variable("Stop") == nullptr);
 }
 
+TEST_CASE("A variable is renamed only to a valid identifier, so its conditions still parse", "[model]")
+{
+    Model model;
+    REQUIRE(model.addVariable(boolVariable("Stop")));
+    REQUIRE(model.setCondition("F1->A2", "NOT Stop"));
+    const Model before(model);
+    for (const char* invalid : {"Stop 2", "AND", "Int", "2Stop", "Stop__2", "Stop_", "GEMMA"}) {
+        const Status status = model.renameVariable("Stop", invalid);
+        CHECK_FALSE(status);
+        CHECK(status.code == "invalid-name");
+        CHECK(status.message.find(invalid) != std::string::npos);
+    }
+    CHECK(model.sameContent(before));
+    REQUIRE(model.renameVariable("Stop", "Stop2"));
+    CHECK(model.transition("F1->A2")->condition == "NOT Stop2");
+}
+
 TEST_CASE("Variable type, default and comment can be changed by name", "[model]")
 {
     Model model;

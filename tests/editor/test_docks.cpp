@@ -115,6 +115,8 @@ private slots:
     void familyTransitionHeader();
     void variablesModelRenameRewritesConditions();
     void variablesModelRefusesDuplicateName();
+    void variablesModelRefusesInvalidNameKeepingConditions();
+    void variablesMessageGoesAtTheNextEdit();
     void invalidDefaultIsRedWithTooltip();
     void pasteAddsVariablesInOneUndoStep();
     void pasteRejectsBadRows();
@@ -530,6 +532,72 @@ void TestDocks::variablesModelRefusesDuplicateName()
     QCOMPARE(child<QLabel>(&dock, "messageLabel")->text(), message);
     QCOMPARE(document.model().variables()[1].name, std::string("Go"));
     QCOMPARE(document.undoStack()->count(), 0);
+}
+
+void TestDocks::variablesModelRefusesInvalidNameKeepingConditions()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Stop");
+    declare(document, "Start");
+    QVERIFY(document.push(new SetConditionCommand(document, "F1->A2", "Start AND NOT Stop")));
+    QVERIFY(document.push(new SetTokensCommand(document, "F1->A2", { "Stop" })));
+    document.undoStack()->clear();
+    VariablesDock dock(&document, &selection);
+    VariablesTableModel* model = dock.tableModel();
+    const QModelIndex name = model->index(0, VariablesTableModel::NameColumn);
+    QSignalSpy refused(model, &VariablesTableModel::editRefused);
+
+    // A blank, a keyword, a type name, a leading digit, a generator name, '__'.
+    for (const QString& invalid : { QString("Stop 2"), QString("AND"), QString("int"), QString("2Stop"),
+             QString("GEMMA"), QString("Stop__2"), QString("  ") }) {
+        refused.clear();
+        QVERIFY2(!model->setData(name, invalid), qPrintable(invalid));
+        QCOMPARE(refused.count(), 1);
+        const QString message = refused.front().at(1).toString();
+        const QString expectedReason = invalid.trimmed().isEmpty() ? QString("needs a name")
+                                                                   : identifierProblemText(invalid);
+        QVERIFY2(message.contains(expectedReason), qPrintable(message));
+        QCOMPARE(child<QLabel>(&dock, "messageLabel")->text(), message);
+        QCOMPARE(document.model().variables().front().name, std::string("Stop"));
+        QCOMPARE(document.model().transition("F1->A2")->condition, std::string("Start AND NOT Stop"));
+        QCOMPARE(document.model().transition("F1->A2")->tokens, std::vector<std::string> { "Stop" });
+        QCOMPARE(document.undoStack()->count(), 0);
+    }
+    QVERIFY(identifierProblemText("Stop 2").contains("Stop 2"));
+
+    // The conditions still name the variable: a valid name follows it there.
+    QVERIFY(model->setData(name, "Stop2"));
+    QCOMPARE(document.model().transition("F1->A2")->condition, std::string("Start AND NOT Stop2"));
+    QCOMPARE(document.model().transition("F1->A2")->tokens, std::vector<std::string> { "Stop2" });
+}
+
+void TestDocks::variablesMessageGoesAtTheNextEdit()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Stop");
+    declare(document, "Start");
+    VariablesDock dock(&document, &selection);
+    VariablesTableModel* model = dock.tableModel();
+    auto* messageRow = child<QWidget>(&dock, "messageRow");
+    QVERIFY(messageRow->isHidden());
+
+    QVERIFY(!model->setData(model->index(0, VariablesTableModel::NameColumn), "Start"));
+    QVERIFY(child<QLabel>(&dock, "messageLabel")->text().contains("already exists"));
+    QVERIFY(!messageRow->isHidden());
+    // Another refusal keeps a message up.
+    QVERIFY(!model->setData(model->index(0, VariablesTableModel::NameColumn), "Stop 2"));
+    QVERIFY(!messageRow->isHidden());
+
+    QVERIFY(model->setData(model->index(0, VariablesTableModel::NameColumn), "Halt"));
+    QVERIFY(messageRow->isHidden());
+
+    // Any edit that goes through, in another column too.
+    QVERIFY(!model->setData(model->index(1, VariablesTableModel::NameColumn), "halt"));
+    QVERIFY(!messageRow->isHidden());
+    QVERIFY(model->setData(model->index(1, VariablesTableModel::CommentColumn), "Start button"));
+    QVERIFY(messageRow->isHidden());
 }
 
 void TestDocks::invalidDefaultIsRedWithTooltip()

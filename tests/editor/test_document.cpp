@@ -58,6 +58,7 @@ private slots:
     void failedLoadKeepsModelAndHistory();
     void failedSaveKeepsModified();
     void replaceModelClearsHistory();
+    void renameToAnInvalidNameIsRefused();
     void newFromTemplate();
     void selection();
 };
@@ -138,6 +139,33 @@ void TestDocument::signalsComeWhenTheEditIsComplete()
     QCOMPARE(conditions, (QStringList{"A1->F1=Halt", "F1->A2=Halt"}));
     QCOMPARE(variables.count(), 1);
     QVERIFY(diagnosticsChanged.count() <= 1); // once for the whole edit, if at all
+}
+
+void TestDocument::renameToAnInvalidNameIsRefused()
+{
+    Document document;
+    core::Variable stop;
+    stop.name = "Stop";
+    QVERIFY(document.push(new AddVariableCommand(document, stop)));
+    QVERIFY(document.push(new SetConditionCommand(document, "F1->A2", "Stop OR NOT Stop")));
+    const core::Model before(document.model());
+    const int historySize = document.undoStack()->count();
+    QSignalSpy failed(&document, &Document::editFailed);
+
+    QVERIFY(!document.push(new RenameVariableCommand(document, "Stop", "Stop 2")));
+    QCOMPARE(failed.count(), 1);
+    const QString message = failed.front().at(0).toString();
+    QVERIFY2(message.contains("'Stop 2' is not a valid IEC 61131-3 identifier"), qPrintable(message));
+    QVERIFY(!document.push(new RenameVariableCommand(document, "Stop", "TRUE"))); // a keyword
+    QVERIFY2(failed.back().at(0).toString().contains("keyword"), qPrintable(failed.back().at(0).toString()));
+    QVERIFY(document.model().sameContent(before));
+    QCOMPARE(document.undoStack()->count(), historySize);
+
+    // Nor around the commands: the model itself refuses.
+    const core::Status status = document.modelForCommands().renameVariable("Stop", "Stop 2");
+    QVERIFY(!status);
+    QCOMPARE(status.code, std::string("invalid-name"));
+    QVERIFY(document.model().sameContent(before));
 }
 
 void TestDocument::editsAroundCommandsAreCheckedLater()
