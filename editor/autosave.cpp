@@ -78,10 +78,45 @@ QString keyFor(const QString& filePath, const QString& instanceKey)
            QLatin1Char('-') + instanceKey;
 }
 
-bool writeSidecar(const QString& path, const QString& originalPath, QString* errorMessage)
+const QString kOriginalPathKey = QStringLiteral("originalPath");
+const QString kOriginalDigestKey = QStringLiteral("originalSha256");
+
+// Hex SHA-256 of a file's contents; empty when it cannot be read.
+QByteArray fileDigest(const QString& path)
+{
+    QFile file(path);
+    QCryptographicHash hash(QCryptographicHash::Sha256);
+    if (!file.open(QIODevice::ReadOnly) || !hash.addData(&file))
+        return {};
+    return hash.result().toHex();
+}
+
+// The original as the sidecar records it: by a path that means the same
+// file from any working directory, and by its contents, so that a recovery
+// can tell whether the path still names the file the copy was edited from.
+// Read at every write, as the copy itself is: a model file is small.
+struct OriginalRecord {
+    QString path;
+    QByteArray digest;
+};
+
+OriginalRecord recordOriginal(const QString& filePath)
+{
+    if (filePath.isEmpty())
+        return {};
+    const QFileInfo info(filePath);
+    const QString canonical = info.canonicalFilePath();
+    if (canonical.isEmpty()) // gone meanwhile: named, but never to be saved onto unchecked
+        return {info.absoluteFilePath(), {}};
+    return {canonical, fileDigest(canonical)};
+}
+
+bool writeSidecar(const QString& path, const OriginalRecord& original, QString* errorMessage)
 {
     QJsonObject info;
-    info.insert(QStringLiteral("originalPath"), originalPath);
+    info.insert(kOriginalPathKey, original.path);
+    if (!original.digest.isEmpty())
+        info.insert(kOriginalDigestKey, QString::fromLatin1(original.digest));
     info.insert(QStringLiteral("savedAt"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(info).toJson()) < 0 || !file.commit()) {
@@ -116,7 +151,8 @@ RecoveryFile readRecoveryFile(const QFileInfo& copy)
     QFile sidecar(sidecarPath(result.recoveryPath));
     if (sidecar.size() < 64 * 1024 && sidecar.open(QIODevice::ReadOnly)) {
         const QJsonObject info = QJsonDocument::fromJson(sidecar.readAll()).object();
-        result.originalPath = info.value(QStringLiteral("originalPath")).toString();
+        result.originalPath = info.value(kOriginalPathKey).toString();
+        result.originalDigest = info.value(kOriginalDigestKey).toString().toLatin1();
         const QDateTime savedAt =
             QDateTime::fromString(info.value(QStringLiteral("savedAt")).toString(), Qt::ISODateWithMs);
         if (savedAt.isValid())
@@ -216,7 +252,7 @@ bool Autosave::writeNow()
         return false;
     }
     QString error;
-    if (!writeSidecar(sidecarPath(m_ownCopy), m_document->filePath(), &error) ||
+    if (!writeSidecar(sidecarPath(m_ownCopy), recordOriginal(m_document->filePath()), &error) ||
         !writeCopy(m_document->model(), m_ownCopy, &error)) {
         m_lastError = tr("Cannot write the recovery copy: %1").arg(error);
         emit writeFailed(m_lastError);
@@ -304,6 +340,21 @@ std::vector<RecoveryFile> Autosave::pendingRecoveries()
     return result;
 }
 
+QString Autosave::saveTarget(const RecoveryFile& file)
+{
+    // A relative path was relative to the crashed session's working
+    // directory, which is not known: here it could name any file.
+    if (file.originalPath.isEmpty() || !QDir::isAbsolutePath(file.originalPath) || file.originalDigest.isEmpty())
+        return {};
+    // Canonical when recorded: another canonical path now means a symbolic
+    // link on the way changed, or the file is gone.
+    if (QFileInfo(file.originalPath).canonicalFilePath() != file.originalPath)
+        return {};
+    if (fileDigest(file.originalPath) != file.originalDigest)
+        return {}; // another file in its place, or changed since: not the one edited
+    return file.originalPath;
+}
+
 bool Autosave::recover(const RecoveryFile& file, Document& document, QString* errorMessage)
 {
     const std::shared_ptr<QLockFile> lock = claimCopy(file);
@@ -318,7 +369,7 @@ bool Autosave::recover(const RecoveryFile& file, Document& document, QString* er
             *errorMessage = QString::fromStdString(loaded.error.toString());
         return false;
     }
-    document.replaceModel(*loaded.model, file.originalPath, core::ModelFormat::Native);
+    document.replaceModel(*loaded.model, saveTarget(file), core::ModelFormat::Native);
     document.undoStack()->resetClean(); // modified until the user saves
 
     // The old copy goes only once the document's own copy holds the edit.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QByteArray>
 #include <QDateTime>
 #include <QObject>
 #include <QPointer>
@@ -18,7 +19,13 @@ class Document;
 // A model kept by autosave after the editor ended without saving it.
 struct RecoveryFile {
     QString recoveryPath; // the autosaved model (native JSON)
-    QString originalPath; // the file the user was editing; empty when untitled
+    // The file the user was editing, absolute and canonical; empty when
+    // untitled. Records of older versions may hold a relative path, which
+    // says nothing of the folder it was relative to: see saveTarget().
+    QString originalPath;
+    // SHA-256 (hex) of the original file's contents when the copy was
+    // written; empty when it was not readable, and in older records.
+    QByteArray originalDigest;
     QDateTime savedAt;    // when autosave wrote it
     // Held from pendingRecoveries() until recover() or discard() is done with
     // the copy, or the last RecoveryFile sharing it goes: while a prompt
@@ -32,7 +39,8 @@ struct RecoveryFile {
 // <AppLocalDataLocation>/recovery/<key>.json, where the key is a hash of the
 // file path, or "untitled", followed by a random part drawn for this
 // Autosave: two running instances, or one file open twice, never share a
-// copy. A sidecar <key>.info names the original file. For as long as the
+// copy. A sidecar <key>.info names the original file (absolute and
+// canonical) and the digest of its contents. For as long as the
 // copy exists, this Autosave holds the lock file <key>.lock (QLockFile), so
 // pendingRecoveries() of another instance skips the copy of a live session.
 // The copy goes away, then its lock, when the document becomes unmodified
@@ -74,7 +82,14 @@ public:
     // instance is offering. Also removes the files left by a session that
     // crashed between writing its lock, sidecar and copy.
     static std::vector<RecoveryFile> pendingRecoveries();
-    // Loads a copy into the document as an unsaved edit of its original file
+    // The file a recovered copy may be saved onto: its original file while
+    // that is still the one the copy was edited from (the record names it by
+    // an absolute path, and a file is there with the contents it had then).
+    // Empty when untitled, or when the original can no longer be identified
+    // (moved, deleted, changed since, or a record of an older version with a
+    // relative path): then Save asks where to save, as for a new model.
+    static QString saveTarget(const RecoveryFile& file);
+    // Loads a copy into the document as an unsaved edit of saveTarget()
     // (the user must save). The document's Autosave writes its own copy at
     // once; then the old copy and its lock go (the old copy stays when the
     // document has no Autosave or its copy cannot be written). False, with

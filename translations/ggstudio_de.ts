@@ -476,6 +476,26 @@
         <translation>ein unbenanntes Modell</translation>
     </message>
     <message>
+        <source>Discard Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen verwerfen</translation>
+    </message>
+    <message>
+        <source>Delete the autosaved copy of %1 for good?</source>
+        <translation>Die automatisch gesicherte Kopie von %1 endgültig löschen?</translation>
+    </message>
+    <message>
+        <source>The changes it holds cannot be recovered afterwards.</source>
+        <translation>Die darin enthaltenen Änderungen können danach nicht mehr wiederhergestellt werden.</translation>
+    </message>
+    <message>
+        <source>Delete Copy</source>
+        <translation>Kopie löschen</translation>
+    </message>
+    <message>
+        <source>&amp;Keep Copy</source>
+        <translation>Kopie &amp;behalten</translation>
+    </message>
+    <message>
         <source>Recover Unsaved Changes</source>
         <translation>Ungespeicherte Änderungen wiederherstellen</translation>
     </message>
@@ -488,12 +508,16 @@
         <translation>Die automatische Sicherung hat am %1 eine Kopie angelegt. Wiederherstellen? Sie können sie danach speichern oder verwerfen.</translation>
     </message>
     <message>
+        <source>The original file can no longer be identified (moved, deleted or changed since, or named by an older version): saving the recovered model will ask for a file.</source>
+        <translation>Die ursprüngliche Datei lässt sich nicht mehr bestimmen (verschoben, gelöscht oder seitdem geändert, oder von einer älteren Version benannt): Beim Speichern des wiederhergestellten Modells wird nach einer Datei gefragt.</translation>
+    </message>
+    <message>
         <source>&amp;Recover</source>
         <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
-        <source>&amp;Discard</source>
-        <translation>&amp;Verwerfen</translation>
+        <source>Discard…</source>
+        <translation>Verwerfen…</translation>
     </message>
     <message>
         <source>&amp;Not Now</source>
@@ -516,6 +540,10 @@
     <message>
         <source>Rename variable %1 to %2</source>
         <translation>Variable %1 in %2 umbenennen</translation>
+    </message>
+    <message>
+        <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
+        <translation>eine Variable namens „%1“ ist bereits vorhanden (IEC-Namen unterscheiden keine Groß- und Kleinschreibung)</translation>
     </message>
 </context>
 <context>

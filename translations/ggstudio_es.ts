@@ -476,6 +476,26 @@
         <translation>un modelo sin título</translation>
     </message>
     <message>
+        <source>Discard Unsaved Changes</source>
+        <translation>Descartar los cambios no guardados</translation>
+    </message>
+    <message>
+        <source>Delete the autosaved copy of %1 for good?</source>
+        <translation>¿Eliminar definitivamente la copia guardada automáticamente de %1?</translation>
+    </message>
+    <message>
+        <source>The changes it holds cannot be recovered afterwards.</source>
+        <translation>Los cambios que contiene no se podrán recuperar después.</translation>
+    </message>
+    <message>
+        <source>Delete Copy</source>
+        <translation>Eliminar la copia</translation>
+    </message>
+    <message>
+        <source>&amp;Keep Copy</source>
+        <translation>&amp;Conservar la copia</translation>
+    </message>
+    <message>
         <source>Recover Unsaved Changes</source>
         <translation>Recuperar los cambios no guardados</translation>
     </message>
@@ -488,12 +508,16 @@
         <translation>El guardado automático conservó una copia el %1. ¿Recuperarla? Después podrá guardarla o descartarla.</translation>
     </message>
     <message>
+        <source>The original file can no longer be identified (moved, deleted or changed since, or named by an older version): saving the recovered model will ask for a file.</source>
+        <translation>El archivo original ya no se puede identificar (movido, eliminado o modificado desde entonces, o nombrado por una versión anterior): al guardar el modelo recuperado se le pedirá un archivo.</translation>
+    </message>
+    <message>
         <source>&amp;Recover</source>
         <translation>&amp;Recuperar</translation>
     </message>
     <message>
-        <source>&amp;Discard</source>
-        <translation>&amp;Descartar</translation>
+        <source>Discard…</source>
+        <translation>Descartar…</translation>
     </message>
     <message>
         <source>&amp;Not Now</source>
@@ -516,6 +540,10 @@
     <message>
         <source>Rename variable %1 to %2</source>
         <translation>Renombrar la variable %1 a %2</translation>
+    </message>
+    <message>
+        <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
+        <translation>ya existe una variable llamada &apos;%1&apos; (los nombres IEC no distinguen mayúsculas y minúsculas)</translation>
     </message>
 </context>
 <context>

@@ -476,6 +476,26 @@
         <translation>un modèle sans titre</translation>
     </message>
     <message>
+        <source>Discard Unsaved Changes</source>
+        <translation>Abandonner les modifications non enregistrées</translation>
+    </message>
+    <message>
+        <source>Delete the autosaved copy of %1 for good?</source>
+        <translation>Supprimer définitivement la copie enregistrée automatiquement de %1&#xa0;?</translation>
+    </message>
+    <message>
+        <source>The changes it holds cannot be recovered afterwards.</source>
+        <translation>Les modifications qu&apos;elle contient ne pourront plus être récupérées.</translation>
+    </message>
+    <message>
+        <source>Delete Copy</source>
+        <translation>Supprimer la copie</translation>
+    </message>
+    <message>
+        <source>&amp;Keep Copy</source>
+        <translation>&amp;Garder la copie</translation>
+    </message>
+    <message>
         <source>Recover Unsaved Changes</source>
         <translation>Récupérer les modifications non enregistrées</translation>
     </message>
@@ -488,12 +508,16 @@
         <translation>L&apos;enregistrement automatique en a conservé une copie le %1. La récupérer&#xa0;? Vous pourrez ensuite l&apos;enregistrer ou l&apos;abandonner.</translation>
     </message>
     <message>
+        <source>The original file can no longer be identified (moved, deleted or changed since, or named by an older version): saving the recovered model will ask for a file.</source>
+        <translation>Le fichier d&apos;origine ne peut plus être identifié (déplacé, supprimé ou modifié depuis, ou nommé par une version antérieure)&#xa0;: l&apos;enregistrement du modèle récupéré demandera un fichier.</translation>
+    </message>
+    <message>
         <source>&amp;Recover</source>
         <translation>&amp;Récupérer</translation>
     </message>
     <message>
-        <source>&amp;Discard</source>
-        <translation>&amp;Abandonner</translation>
+        <source>Discard…</source>
+        <translation>Abandonner…</translation>
     </message>
     <message>
         <source>&amp;Not Now</source>
@@ -516,6 +540,10 @@
     <message>
         <source>Rename variable %1 to %2</source>
         <translation>Renommer la variable %1 en %2</translation>
+    </message>
+    <message>
+        <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
+        <translation>une variable nommée «&#xa0;%1&#xa0;» existe déjà (les noms IEC ignorent la casse)</translation>
     </message>
 </context>
 <context>

@@ -476,6 +476,26 @@
         <translation>un modello senza titolo</translation>
     </message>
     <message>
+        <source>Discard Unsaved Changes</source>
+        <translation>Scarta le modifiche non salvate</translation>
+    </message>
+    <message>
+        <source>Delete the autosaved copy of %1 for good?</source>
+        <translation>Eliminare definitivamente la copia salvata automaticamente di %1?</translation>
+    </message>
+    <message>
+        <source>The changes it holds cannot be recovered afterwards.</source>
+        <translation>Le modifiche che contiene non potranno più essere recuperate.</translation>
+    </message>
+    <message>
+        <source>Delete Copy</source>
+        <translation>Elimina la copia</translation>
+    </message>
+    <message>
+        <source>&amp;Keep Copy</source>
+        <translation>&amp;Conserva la copia</translation>
+    </message>
+    <message>
         <source>Recover Unsaved Changes</source>
         <translation>Recupera le modifiche non salvate</translation>
     </message>
@@ -488,12 +508,16 @@
         <translation>Il salvataggio automatico ha conservato una copia il %1. Recuperarla? Potrai poi salvarla o scartarla.</translation>
     </message>
     <message>
+        <source>The original file can no longer be identified (moved, deleted or changed since, or named by an older version): saving the recovered model will ask for a file.</source>
+        <translation>Il file originale non è più identificabile (spostato, eliminato o modificato nel frattempo, oppure indicato da una versione precedente): al salvataggio del modello recuperato verrà chiesto un file.</translation>
+    </message>
+    <message>
         <source>&amp;Recover</source>
         <translation>&amp;Recupera</translation>
     </message>
     <message>
-        <source>&amp;Discard</source>
-        <translation>&amp;Scarta</translation>
+        <source>Discard…</source>
+        <translation>Scarta…</translation>
     </message>
     <message>
         <source>&amp;Not Now</source>
@@ -516,6 +540,10 @@
     <message>
         <source>Rename variable %1 to %2</source>
         <translation>Rinomina la variabile %1 in %2</translation>
+    </message>
+    <message>
+        <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
+        <translation>esiste già una variabile di nome &apos;%1&apos; (i nomi IEC non distinguono maiuscole e minuscole)</translation>
     </message>
 </context>
 <context>

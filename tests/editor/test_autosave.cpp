@@ -4,22 +4,32 @@
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/document.h"
+#include "editor/recoveryprompt.h"
 
 #include "core/modelfiles.h"
 
+#include <QAbstractButton>
+#include <QApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLockFile>
+#include <QMessageBox>
 #include <QProcess>
+#include <QPushButton>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QStandardPaths>
 #include <QSysInfo>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QUndoStack>
 
 #include <algorithm>
+#include <functional>
 #include <memory>
 
 using namespace editor;
@@ -98,6 +108,94 @@ QStringList recoveryFolderFiles()
     return QDir(Autosave::recoveryDirectory()).entryList(QDir::Files, QDir::Name);
 }
 
+QByteArray fileContents(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+// Saves the template with `condition` on A1->F1 at `path` (relative to the
+// working directory, as the user may name it).
+bool saveModelWith(const QString& path, const char* condition)
+{
+    Document document;
+    return document.push(new SetConditionCommand(document, "A1->F1", condition)) && document.save(path, nullptr);
+}
+
+// The session that edits `path` and crashes: its copy stays, with the edit
+// `condition` on A1->F1.
+bool crashWhileEditing(const QString& path, const char* condition)
+{
+    Document document;
+    if (!document.load(path, nullptr))
+        return false;
+    Autosave autosave(document);
+    return document.push(new SetConditionCommand(document, "A1->F1", condition)) && autosave.writeNow();
+}
+
+// Rewrites a copy's sidecar as an older version wrote it: the path as the
+// document had it, no digest.
+bool writeOldSidecar(const QString& copyPath, const QString& originalPath)
+{
+    QJsonObject info;
+    info.insert("originalPath", originalPath);
+    info.insert("savedAt", QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
+    QFile sidecar(sidecarPathOf(copyPath));
+    return sidecar.open(QIODevice::WriteOnly | QIODevice::Truncate) && sidecar.write(QJsonDocument(info).toJson()) > 0;
+}
+
+QAbstractButton* buttonOf(QMessageBox* box, QMessageBox::ButtonRole role)
+{
+    for (QAbstractButton* button : box->buttons()) {
+        if (box->buttonRole(button) == role)
+            return button;
+    }
+    return nullptr;
+}
+
+// Answers the modal message boxes of a prompt as they come up: every tick,
+// the next step acts on the box on top. The ticks are longer than the
+// delay of QAbstractButton::animateClick(), which a mnemonic key starts, so
+// a step sees the effect of the previous one. Once the steps are done, boxes
+// still open are answered with Escape, so that a failing test ends.
+class MessageBoxDriver : public QObject {
+public:
+    using Step = std::function<void(QMessageBox*)>;
+
+    explicit MessageBoxDriver(std::vector<Step> steps)
+        : m_steps(std::move(steps))
+    {
+        connect(&m_timer, &QTimer::timeout, this, &MessageBoxDriver::tick);
+        m_timer.start(200);
+    }
+    std::size_t stepsDone() const { return m_done; }
+    QStringList texts() const { return m_texts; } // of every box a step acted on
+
+private:
+    void tick()
+    {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box)
+            return;
+        if (m_done < m_steps.size()) {
+            m_texts << box->text() + '\n' + box->informativeText();
+            m_steps[m_done++](box);
+        } else {
+            QTest::keyClick(box, Qt::Key_Escape);
+        }
+    }
+
+    std::vector<Step> m_steps;
+    std::size_t m_done = 0;
+    QStringList m_texts;
+    QTimer m_timer;
+};
+
+void pressKey(QMessageBox* box, Qt::Key key)
+{
+    QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : box, key);
+}
+
 } // namespace
 
 class TestAutosave : public QObject {
@@ -123,6 +221,14 @@ private slots:
     void discardRemovesCopy();
     void leftoversAreRemoved();
     void unreadableCopyIsReported();
+    void relativePathIsRecoveredOntoItsOwnFile();
+    void changedOriginalIsNotSavedOnto();
+    void movedOriginalIsNotSavedOnto();
+    void oldRecordHasAnUnknownOriginal();
+    void promptRecoversOnEnter();
+    void promptIgnoresAStrayD();
+    void promptDiscardsOnlyWhenConfirmed();
+    void promptSaysWhenTheOriginalIsUnknown();
 
 private:
     QTemporaryDir m_files;
@@ -502,6 +608,202 @@ void TestAutosave::unreadableCopyIsReported()
     QVERIFY2(error.contains("broken.json"), qPrintable(error));
     QCOMPARE(document.model().transition("A1->F1")->condition, std::string("TRUE"));
     QVERIFY(document.undoStack()->canUndo());
+}
+
+void TestAutosave::relativePathIsRecoveredOntoItsOwnFile()
+{
+    // Two working directories, each with a gui/cs.json of its own.
+    QTemporaryDir firstFolder;
+    QTemporaryDir otherFolder;
+    QVERIFY(QDir(firstFolder.path()).mkpath("gui"));
+    QVERIFY(QDir(otherFolder.path()).mkpath("gui"));
+    const QString previousFolder = QDir::currentPath();
+    const auto restoreFolder = qScopeGuard([&] { QDir::setCurrent(previousFolder); });
+    QVERIFY(saveModelWith(otherFolder.filePath("gui/cs.json"), "FALSE"));
+    const QByteArray unrelated = fileContents(otherFolder.filePath("gui/cs.json"));
+
+    QVERIFY(QDir::setCurrent(firstFolder.path()));
+    QVERIFY(saveModelWith("gui/cs.json", "FALSE"));
+    QVERIFY(crashWhileEditing("gui/cs.json", "TRUE")); // opened by a relative path
+
+    QVERIFY(QDir::setCurrent(otherFolder.path())); // the next session starts elsewhere
+    const QString original = QFileInfo(firstFolder.filePath("gui/cs.json")).canonicalFilePath();
+    const std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
+    QCOMPARE(pending.size(), std::size_t(1));
+    QCOMPARE(pending.front().originalPath, original);
+    QCOMPARE(Autosave::saveTarget(pending.front()), original);
+
+    Document document;
+    Autosave autosave(document);
+    QVERIFY(Autosave::recover(pending.front(), document));
+    QCOMPARE(document.filePath(), original);
+    QVERIFY(document.save(document.filePath(), nullptr)); // what Save does
+    QCOMPARE(fileContents(otherFolder.filePath("gui/cs.json")), unrelated);
+    Document saved;
+    QVERIFY(saved.load(original, nullptr));
+    QCOMPARE(saved.model().transition("A1->F1")->condition, std::string("TRUE"));
+}
+
+void TestAutosave::changedOriginalIsNotSavedOnto()
+{
+    const QString path = m_files.filePath("changed.json");
+    QVERIFY(saveModelWith(path, "FALSE"));
+    QVERIFY(crashWhileEditing(path, "TRUE"));
+    QVERIFY(saveModelWith(path, "NOT FALSE")); // another file there now, or edited elsewhere
+    const QByteArray now = fileContents(path);
+
+    const std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
+    QCOMPARE(pending.size(), std::size_t(1));
+    QCOMPARE(pending.front().originalPath, QFileInfo(path).canonicalFilePath()); // still named, for the prompt
+    QVERIFY(Autosave::saveTarget(pending.front()).isEmpty());
+    Document document;
+    QVERIFY(Autosave::recover(pending.front(), document));
+    QVERIFY(document.filePath().isEmpty()); // Save asks for a file
+    QVERIFY(document.isModified());
+    QCOMPARE(document.model().transition("A1->F1")->condition, std::string("TRUE"));
+    QCOMPARE(fileContents(path), now);
+}
+
+void TestAutosave::movedOriginalIsNotSavedOnto()
+{
+    const QString path = m_files.filePath("moved.json");
+    QVERIFY(saveModelWith(path, "FALSE"));
+    QVERIFY(crashWhileEditing(path, "TRUE"));
+    QVERIFY(QFile::rename(path, m_files.filePath("moved-away.json")));
+
+    std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
+    QCOMPARE(pending.size(), std::size_t(1));
+    QVERIFY(Autosave::saveTarget(pending.front()).isEmpty());
+    Document document;
+    QVERIFY(Autosave::recover(pending.front(), document));
+    QVERIFY(document.filePath().isEmpty());
+    QVERIFY(!QFile::exists(path));
+}
+
+void TestAutosave::oldRecordHasAnUnknownOriginal()
+{
+    QTemporaryDir folder;
+    QVERIFY(QDir(folder.path()).mkpath("gui"));
+    const QString previousFolder = QDir::currentPath();
+    const auto restoreFolder = qScopeGuard([&] { QDir::setCurrent(previousFolder); });
+    QVERIFY(QDir::setCurrent(folder.path()));
+    QVERIFY(saveModelWith("gui/cs.json", "FALSE"));
+    const QByteArray before = fileContents("gui/cs.json");
+    const QString copyPath = leaveCrashedCopy("TRUE");
+    QVERIFY(!copyPath.isEmpty());
+    QVERIFY(writeOldSidecar(copyPath, "gui/cs.json"));
+
+    std::vector<RecoveryFile> pending = Autosave::pendingRecoveries();
+    QCOMPARE(pending.size(), std::size_t(1));
+    QCOMPARE(pending.front().originalPath, QString("gui/cs.json")); // readable
+    QVERIFY(pending.front().originalDigest.isEmpty());
+    QVERIFY(Autosave::saveTarget(pending.front()).isEmpty()); // relative to who knows where
+    Document document;
+    Autosave autosave(document); // takes the copy over
+    QVERIFY(Autosave::recover(pending.front(), document));
+    QVERIFY(document.filePath().isEmpty());
+    QCOMPARE(document.model().transition("A1->F1")->condition, std::string("TRUE"));
+    QCOMPARE(fileContents("gui/cs.json"), before);
+
+    // Absolute, but with nothing to tell it is still the same file.
+    const QString copyWithAbsolutePath = leaveCrashedCopy("TRUE");
+    QVERIFY(writeOldSidecar(copyWithAbsolutePath, QFileInfo("gui/cs.json").canonicalFilePath()));
+    pending = Autosave::pendingRecoveries();
+    QCOMPARE(pending.size(), std::size_t(1));
+    QVERIFY(Autosave::saveTarget(pending.front()).isEmpty());
+}
+
+void TestAutosave::promptRecoversOnEnter()
+{
+    const QString copyPath = leaveCrashedCopy("TRUE");
+    QVERIFY(!copyPath.isEmpty());
+    Document document;
+    MessageBoxDriver driver({[](QMessageBox* box) {
+        QVERIFY(box->defaultButton());
+        QCOMPARE(box->buttonRole(box->defaultButton()), QMessageBox::AcceptRole);
+        pressKey(box, Qt::Key_Return);
+    }});
+    QVERIFY(RecoveryPrompt::offer(nullptr, document));
+    QCOMPARE(driver.stepsDone(), std::size_t(1));
+    QCOMPARE(document.model().transition("A1->F1")->condition, std::string("TRUE"));
+    QVERIFY(document.isModified());
+}
+
+void TestAutosave::promptIgnoresAStrayD()
+{
+    const QString copyPath = leaveCrashedCopy("TRUE");
+    QVERIFY(!copyPath.isEmpty());
+    Document document;
+    bool stillAsked = false;
+    // Typing on, as one who did not see the prompt come up.
+    MessageBoxDriver driver({[](QMessageBox* box) { pressKey(box, Qt::Key_D); },
+                             [](QMessageBox* box) { pressKey(box, Qt::Key_D); },
+                             [&](QMessageBox* box) {
+                                 stillAsked = box->text().contains("ended without saving");
+                                 pressKey(box, Qt::Key_Escape); // Not Now
+                             }});
+    QVERIFY(!RecoveryPrompt::offer(nullptr, document));
+    QCOMPARE(driver.stepsDone(), std::size_t(3));
+    QVERIFY(stillAsked);
+    QVERIFY(QFile::exists(copyPath));
+    QCOMPARE(Autosave::pendingRecoveries().size(), std::size_t(1));
+}
+
+void TestAutosave::promptDiscardsOnlyWhenConfirmed()
+{
+    const QString copyPath = leaveCrashedCopy("TRUE");
+    QVERIFY(!copyPath.isEmpty());
+    Document document;
+    const auto clickDiscard = [](QMessageBox* box) {
+        QAbstractButton* discard = buttonOf(box, QMessageBox::DestructiveRole);
+        QVERIFY(discard);
+        QVERIFY(discard != box->defaultButton());
+        discard->click();
+    };
+    {
+        MessageBoxDriver keep({clickDiscard,
+                               [](QMessageBox* confirmation) {
+                                   QVERIFY(confirmation->defaultButton());
+                                   QVERIFY(confirmation->buttonRole(confirmation->defaultButton()) !=
+                                           QMessageBox::DestructiveRole);
+                                   pressKey(confirmation, Qt::Key_Return); // a stray Enter keeps the copy
+                               },
+                               [](QMessageBox* prompt) { pressKey(prompt, Qt::Key_Escape); }});
+        QVERIFY(!RecoveryPrompt::offer(nullptr, document));
+        QCOMPARE(keep.stepsDone(), std::size_t(3));
+        QVERIFY2(keep.texts().at(1).contains("for good"), qPrintable(keep.texts().join('|')));
+        // Kept: the prompt asks again.
+        QVERIFY2(keep.texts().at(2).contains("ended without saving"), qPrintable(keep.texts().join('|')));
+        QVERIFY(QFile::exists(copyPath));
+    } // one driver at a time: the one done answers every box with Escape
+
+    MessageBoxDriver discard({clickDiscard, [](QMessageBox* confirmation) {
+                                  buttonOf(confirmation, QMessageBox::DestructiveRole)->click();
+                              }});
+    QVERIFY(!RecoveryPrompt::offer(nullptr, document));
+    QCOMPARE(discard.stepsDone(), std::size_t(2));
+    QVERIFY(!QFile::exists(copyPath));
+    QVERIFY(Autosave::pendingRecoveries().empty());
+}
+
+void TestAutosave::promptSaysWhenTheOriginalIsUnknown()
+{
+    const QString path = m_files.filePath("prompt-moved.json");
+    QVERIFY(saveModelWith(path, "FALSE"));
+    QVERIFY(crashWhileEditing(path, "TRUE"));
+    Document document;
+    {
+        MessageBoxDriver known({[](QMessageBox* box) { pressKey(box, Qt::Key_Escape); }});
+        QVERIFY(!RecoveryPrompt::offer(nullptr, document));
+        QVERIFY(known.texts().at(0).contains(QDir::toNativeSeparators(QFileInfo(path).canonicalFilePath())));
+        QVERIFY(!known.texts().at(0).contains("can no longer be identified"));
+    }
+
+    QVERIFY(QFile::remove(path));
+    MessageBoxDriver lost({[](QMessageBox* box) { pressKey(box, Qt::Key_Return); }});
+    QVERIFY(RecoveryPrompt::offer(nullptr, document));
+    QVERIFY2(lost.texts().at(0).contains("can no longer be identified"), qPrintable(lost.texts().join('|')));
+    QVERIFY(document.filePath().isEmpty());
 }
 
 QTEST_MAIN(TestAutosave)
