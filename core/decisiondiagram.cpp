@@ -9,17 +9,37 @@ namespace {
 
 // Operation codes in the computed table; quantifications add 8 x mask id.
 enum : std::uint32_t { OpIte = 1, OpExists = 2, OpAndExists = 3 };
-constexpr std::size_t kCacheSize = std::size_t{1} << 14;
+// The computed table starts small (a manager per step, most steps need a few
+// hundred nodes) and grows with the diagram up to a bound: a table much
+// smaller than the diagram makes the operations recompute shared
+// subresults again and again, which costs exponential time.
+constexpr std::size_t kInitialCacheSize = std::size_t{1} << 12;
+constexpr std::size_t kMaxCacheSize = std::size_t{1} << 21;
+// Recursive steps between two looks at the clock.
+constexpr std::uint32_t kStepsPerClockCheck = 1u << 13;
 
 } // namespace
 
 Manager::Manager(int variableCount, std::size_t nodeLimit)
-    : m_variableCount(std::max(variableCount, 0)), m_nodeLimit(std::max<std::size_t>(nodeLimit, 16)),
-      m_cache(kCacheSize)
+    : m_variableCount(std::max(variableCount, 0)), m_ownBudget{std::max<std::size_t>(nodeLimit, 16), 0, {}},
+      m_budget(m_ownBudget), m_cache(kInitialCacheSize)
 {
     const auto terminal = static_cast<std::uint32_t>(m_variableCount);
     m_nodes.push_back(Node{terminal, kFalse, kFalse});
     m_nodes.push_back(Node{terminal, kTrue, kTrue});
+}
+
+Manager::Manager(int variableCount, Budget& budget)
+    : m_variableCount(std::max(variableCount, 0)), m_budget(budget), m_cache(kInitialCacheSize)
+{
+    const auto terminal = static_cast<std::uint32_t>(m_variableCount);
+    m_nodes.push_back(Node{terminal, kFalse, kFalse});
+    m_nodes.push_back(Node{terminal, kTrue, kTrue});
+}
+
+Manager::~Manager()
+{
+    m_budget.nodesUsed -= std::min(m_budget.nodesUsed, m_nodes.size() - 2);
 }
 
 Ref Manager::make(std::uint32_t variable, Ref low, Ref high)
@@ -30,12 +50,27 @@ Ref Manager::make(std::uint32_t variable, Ref low, Ref high)
     auto found = m_unique.find(key);
     if (found != m_unique.end())
         return found->second;
-    if (m_nodes.size() >= m_nodeLimit)
+    if (m_budget.nodesUsed >= m_budget.nodeLimit)
         throw NodeLimitExceeded();
+    ++m_budget.nodesUsed;
     const auto ref = static_cast<Ref>(m_nodes.size());
     m_nodes.push_back(Node{variable, low, high});
     m_unique.emplace(key, ref);
+    if (m_nodes.size() > 2 * m_cache.size() && m_cache.size() < kMaxCacheSize)
+        growCache();
     return ref;
+}
+
+void Manager::growCache()
+{
+    // Entries are placed by hash of the table size: start afresh.
+    m_cache.assign(m_cache.size() * 4, CacheEntry{});
+}
+
+void Manager::step()
+{
+    if (++m_steps % kStepsPerClockCheck == 0 && m_budget.expired())
+        throw TimeLimitExceeded();
 }
 
 Ref Manager::variable(int index)
@@ -55,7 +90,7 @@ bool Manager::cached(std::uint32_t op, Ref a, Ref b, Ref c, Ref& result) const
     h = h * 0x9E3779B97F4A7C15ull ^ a;
     h = h * 0x9E3779B97F4A7C15ull ^ b;
     h = h * 0x9E3779B97F4A7C15ull ^ c;
-    const CacheEntry& entry = m_cache[(h ^ (h >> 31)) & (kCacheSize - 1)];
+    const CacheEntry& entry = m_cache[(h ^ (h >> 31)) & (m_cache.size() - 1)];
     if (entry.op == op && entry.a == a && entry.b == b && entry.c == c) {
         result = entry.result;
         return true;
@@ -69,7 +104,7 @@ void Manager::remember(std::uint32_t op, Ref a, Ref b, Ref c, Ref result)
     h = h * 0x9E3779B97F4A7C15ull ^ a;
     h = h * 0x9E3779B97F4A7C15ull ^ b;
     h = h * 0x9E3779B97F4A7C15ull ^ c;
-    m_cache[(h ^ (h >> 31)) & (kCacheSize - 1)] = CacheEntry{op, a, b, c, result};
+    m_cache[(h ^ (h >> 31)) & (m_cache.size() - 1)] = CacheEntry{op, a, b, c, result};
 }
 
 Ref Manager::cofactor(Ref f, std::uint32_t variable, bool high) const
@@ -93,6 +128,7 @@ Ref Manager::ite(Ref f, Ref g, Ref h)
     Ref result;
     if (cached(OpIte, f, g, h, result))
         return result;
+    step();
     const std::uint32_t top = std::min({m_nodes[f].variable, m_nodes[g].variable, m_nodes[h].variable});
     const Ref low = ite(cofactor(f, top, false), cofactor(g, top, false), cofactor(h, top, false));
     const Ref high = ite(cofactor(f, top, true), cofactor(g, top, true), cofactor(h, top, true));
@@ -143,6 +179,7 @@ Ref Manager::existsRec(Ref f, const std::vector<bool>& mask, std::uint32_t op)
     Ref result;
     if (cached(op, f, 0, 0, result))
         return result;
+    step();
     const Node node = m_nodes[f];
     const Ref low = existsRec(node.low, mask, op);
     const bool quantified = node.variable < mask.size() && mask[node.variable];
@@ -176,6 +213,7 @@ Ref Manager::andExistsRec(Ref f, Ref g, const std::vector<bool>& mask, std::uint
     Ref result;
     if (cached(op, f, g, 0, result))
         return result;
+    step();
     const std::uint32_t top = std::min(m_nodes[f].variable, m_nodes[g].variable);
     const bool quantified = top < mask.size() && mask[top];
     const Ref low = andExistsRec(cofactor(f, top, false), cofactor(g, top, false), mask, op, existsOp);

@@ -14,11 +14,17 @@
 // computes.
 //
 // Variables are numbered 0..n-1; 0 is the top of the order. Node 0 is FALSE,
-// node 1 is TRUE. A Manager refuses to grow beyond its node limit by
-// throwing NodeLimitExceeded (the verifier reports "not exhaustive").
+// node 1 is TRUE. A Manager refuses to grow beyond its Budget: it throws
+// NodeLimitExceeded when the budget's nodes (shared by every manager of one
+// verification, so that the memory of the whole run is bounded) are used
+// up, and TimeLimitExceeded once the budget's deadline has passed (checked
+// every few thousand recursive steps, so even an operation that creates no
+// node stops in time). The verifier reports what it could not decide.
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 #include <vector>
@@ -29,13 +35,35 @@ using Ref = std::uint32_t;
 inline constexpr Ref kFalse = 0;
 inline constexpr Ref kTrue = 1;
 
-struct NodeLimitExceeded : std::runtime_error {
-    NodeLimitExceeded() : std::runtime_error("decision diagram node limit exceeded") {}
+struct BudgetExceeded : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+struct NodeLimitExceeded : BudgetExceeded {
+    NodeLimitExceeded() : BudgetExceeded("decision diagram node limit exceeded") {}
+};
+struct TimeLimitExceeded : BudgetExceeded {
+    TimeLimitExceeded() : BudgetExceeded("decision diagram time limit exceeded") {}
+};
+
+// What the managers sharing it may spend. Not thread-safe: one budget per
+// verification, which runs in one thread.
+struct Budget {
+    std::size_t nodeLimit = 0; // nodes of all managers together
+    std::size_t nodesUsed = 0;
+    std::optional<std::chrono::steady_clock::time_point> deadline;
+
+    bool expired() const { return deadline && std::chrono::steady_clock::now() >= *deadline; }
 };
 
 class Manager {
 public:
+    // A manager with a budget of its own.
     Manager(int variableCount, std::size_t nodeLimit);
+    // A manager spending a shared budget, which must outlive it.
+    Manager(int variableCount, Budget& budget);
+    ~Manager(); // gives its nodes back to the budget
+    Manager(const Manager&) = delete;
+    Manager& operator=(const Manager&) = delete;
 
     int variableCount() const { return m_variableCount; }
     std::size_t nodeCount() const { return m_nodes.size(); }
@@ -105,6 +133,8 @@ private:
     };
 
     Ref make(std::uint32_t variable, Ref low, Ref high);
+    void step(); // one recursive step: polls the deadline now and then
+    void growCache();
     std::uint32_t maskId(const std::vector<bool>& mask);
     bool cached(std::uint32_t op, Ref a, Ref b, Ref c, Ref& result) const;
     void remember(std::uint32_t op, Ref a, Ref b, Ref c, Ref result);
@@ -114,7 +144,9 @@ private:
     Ref renameRec(Ref f, const std::vector<int>& mapping, std::unordered_map<Ref, Ref>& memo);
 
     int m_variableCount;
-    std::size_t m_nodeLimit;
+    Budget m_ownBudget;
+    Budget& m_budget;
+    std::uint32_t m_steps = 0;
     std::vector<Node> m_nodes;
     std::unordered_map<Key, Ref, KeyHash> m_unique;
     std::vector<CacheEntry> m_cache;

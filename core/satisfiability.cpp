@@ -549,10 +549,92 @@ std::vector<cond::Value> representatives(IecType type, const std::vector<const A
     return {cond::Value{false}, cond::Value{true}};
 }
 
+// --- Numeric domains -------------------------------------------------------------
+
+namespace {
+
+std::vector<bool> truthsOf(const AtomTable& table, const std::vector<int>& atoms, const cond::Value& value)
+{
+    std::vector<bool> truths;
+    truths.reserve(atoms.size());
+    for (int atom : atoms)
+        truths.push_back(holds(table.atom(atom), value));
+    return truths;
+}
+
+bool valueLess(const cond::Value& a, const cond::Value& b)
+{
+    const auto* x = std::get_if<std::int64_t>(&a);
+    const auto* y = std::get_if<std::int64_t>(&b);
+    return x && y ? *x < *y : toDouble(a) < toDouble(b);
+}
+
+NumericDomain domainOf(const AtomTable& table, int variable, std::vector<int> atoms)
+{
+    NumericDomain domain;
+    domain.variable = variable;
+    std::sort(atoms.begin(), atoms.end());
+    domain.atoms = std::move(atoms);
+    std::vector<const Atom*> comparisons;
+    for (int atom : domain.atoms)
+        comparisons.push_back(&table.atom(atom));
+    std::vector<cond::Value> values = representatives(table.variableType(variable), comparisons);
+    std::sort(values.begin(), values.end(), valueLess);
+    // Values with the same truth values are one region (`<> 5` has two
+    // intervals and one region).
+    std::set<std::vector<bool>> seen;
+    for (const cond::Value& value : values) {
+        if (seen.insert(truthsOf(table, domain.atoms, value)).second)
+            domain.regionValues.push_back(value);
+    }
+    return domain;
+}
+
+} // namespace
+
+int NumericDomain::bitCount() const
+{
+    int bits = 0;
+    while ((std::size_t{1} << bits) < regionCount())
+        ++bits;
+    return bits;
+}
+
+std::size_t NumericDomain::regionOf(const AtomTable& table, const cond::Value& value) const
+{
+    const std::vector<bool> truths = truthsOf(table, atoms, value);
+    for (std::size_t region = 0; region < regionValues.size(); ++region) {
+        if (truthsOf(table, atoms, regionValues[region]) == truths)
+            return region;
+    }
+    return 0; // cannot happen: the regions cover every value of the type
+}
+
+std::vector<NumericDomain> numericDomains(const AtomTable& table, const std::vector<int>& atoms)
+{
+    std::vector<int> order;
+    std::map<int, std::vector<int>> byVariable;
+    for (int atom : atoms) {
+        const Atom& a = table.atom(atom);
+        if (a.kind != Atom::Kind::Comparison)
+            continue;
+        std::vector<int>& list = byVariable[a.variable];
+        if (list.empty())
+            order.push_back(a.variable);
+        if (std::find(list.begin(), list.end(), atom) == list.end())
+            list.push_back(atom);
+    }
+    std::vector<NumericDomain> domains;
+    for (int variable : order)
+        domains.push_back(domainOf(table, variable, byVariable[variable]));
+    return domains;
+}
+
 // --- Encoder -------------------------------------------------------------------
 
-Encoder::Encoder(bdd::Manager& manager, const AtomTable& atoms, std::vector<int> atomVariable)
-    : m_manager(manager), m_atoms(atoms), m_atomVariable(std::move(atomVariable))
+Encoder::Encoder(bdd::Manager& manager, const AtomTable& atoms, std::vector<int> atomVariable,
+                 std::vector<NumericDomain> domains)
+    : m_manager(manager), m_atoms(atoms), m_atomVariable(std::move(atomVariable)), m_domains(std::move(domains))
 {
 }
 
@@ -561,6 +643,53 @@ int Encoder::variableOf(int atom) const
     return atom >= 0 && static_cast<std::size_t>(atom) < m_atomVariable.size()
         ? m_atomVariable[static_cast<std::size_t>(atom)]
         : -1;
+}
+
+const NumericDomain* Encoder::domainOf(int variable) const
+{
+    for (const NumericDomain& domain : m_domains) {
+        if (domain.variable == variable)
+            return &domain;
+    }
+    return nullptr;
+}
+
+// The regions where `inside` holds, over the domain's bits; region indices
+// beyond the last region are FALSE. Linear in the regions.
+bdd::Ref Encoder::regionFunction(const NumericDomain& domain, const std::function<bool(std::size_t region)>& inside)
+{
+    const int bits = domain.bitCount();
+    const std::size_t regions = domain.regionCount();
+    auto build = [&](auto&& self, int depth, std::size_t prefix) -> bdd::Ref {
+        if ((prefix << (bits - depth)) >= regions)
+            return bdd::kFalse;
+        if (depth == bits)
+            return inside(prefix) ? bdd::kTrue : bdd::kFalse;
+        const bdd::Ref low = self(self, depth + 1, prefix << 1);
+        const bdd::Ref high = self(self, depth + 1, (prefix << 1) | 1);
+        return m_manager.ite(m_manager.variable(domain.bits[static_cast<std::size_t>(depth)]), high, low);
+    };
+    return build(build, 0, 0);
+}
+
+bdd::Ref Encoder::atomFunction(int atom)
+{
+    const Atom& a = m_atoms.atom(atom);
+    if (a.kind != Atom::Kind::Comparison) {
+        const int variable = variableOf(atom);
+        return variable >= 0 ? m_manager.variable(variable) : bdd::kFalse;
+    }
+    if (auto found = m_comparisons.find(atom); found != m_comparisons.end())
+        return found->second;
+    const NumericDomain* domain = domainOf(a.variable);
+    // Every atom of an encoded formula has variables (the caller lays out
+    // formula.atoms()); FALSE keeps a mistake from crashing.
+    if (!domain || std::find(domain->atoms.begin(), domain->atoms.end(), atom) == domain->atoms.end())
+        return bdd::kFalse;
+    const bdd::Ref function = regionFunction(
+        *domain, [&](std::size_t region) { return holds(a, domain->regionValues[region]); });
+    m_comparisons.emplace(atom, function);
+    return function;
 }
 
 bdd::Ref Encoder::encode(const Formula& formula, const std::function<bdd::Ref(int leafNode)>& leaf)
@@ -572,13 +701,7 @@ bdd::Ref Encoder::encode(const Formula& formula, const std::function<bdd::Ref(in
         switch (node.op) {
         case Formula::Op::False: value[i] = bdd::kFalse; break;
         case Formula::Op::True: value[i] = bdd::kTrue; break;
-        case Formula::Op::Atom: {
-            const int variable = variableOf(node.a);
-            // Every atom of an encoded formula has a variable (the caller maps
-            // formula.atoms()); FALSE keeps a mistake from crashing.
-            value[i] = variable >= 0 ? m_manager.variable(variable) : bdd::kFalse;
-            break;
-        }
+        case Formula::Op::Atom: value[i] = atomFunction(node.a); break;
         case Formula::Op::Leaf: value[i] = leaf ? leaf(node.a) : bdd::kFalse; break;
         case Formula::Op::Not: value[i] = m_manager.negate(operand(node.a)); break;
         case Formula::Op::And: value[i] = m_manager.conj(operand(node.a), operand(node.b)); break;
@@ -592,26 +715,9 @@ bdd::Ref Encoder::encode(const Formula& formula, const std::function<bdd::Ref(in
 
 bdd::Ref Encoder::theory()
 {
-    std::map<int, std::vector<int>> byVariable; // variable -> comparison atoms with a diagram variable
-    for (std::size_t i = 0; i < m_atoms.atoms().size(); ++i) {
-        const Atom& atom = m_atoms.atoms()[i];
-        if (atom.kind == Atom::Kind::Comparison && variableOf(static_cast<int>(i)) >= 0)
-            byVariable[atom.variable].push_back(static_cast<int>(i));
-    }
     bdd::Ref result = bdd::kTrue;
-    for (const auto& [variable, atomIndices] : byVariable) {
-        std::vector<const Atom*> comparisons;
-        for (int index : atomIndices)
-            comparisons.push_back(&m_atoms.atom(index));
-        bdd::Ref possible = bdd::kFalse;
-        for (const cond::Value& value : representatives(m_atoms.variableType(variable), comparisons)) {
-            bdd::Ref cube = bdd::kTrue;
-            for (int index : atomIndices)
-                cube = m_manager.conj(cube, m_manager.literal(variableOf(index), holds(m_atoms.atom(index), value)));
-            possible = m_manager.disj(possible, cube);
-        }
-        result = m_manager.conj(result, possible);
-    }
+    for (const NumericDomain& domain : m_domains)
+        result = m_manager.conj(result, regionFunction(domain, [](std::size_t) { return true; }));
     return result;
 }
 
@@ -674,14 +780,31 @@ struct SingleCondition {
     SingleCondition(const cond::Expression& expression, const std::vector<Variable>& variables) : atoms(variables)
     {
         formula = compileCondition(expression, {}, atoms);
-        const int count = static_cast<int>(atoms.atoms().size());
-        std::vector<int> mapping(atoms.atoms().size());
-        for (int i = 0; i < count; ++i)
-            mapping[static_cast<std::size_t>(i)] = i;
-        manager = std::make_unique<bdd::Manager>(count, std::size_t{1} << 22);
-        encoder = std::make_unique<Encoder>(*manager, atoms, mapping);
+        const std::vector<int> used = formula.atoms();
+        std::vector<NumericDomain> domains = numericDomains(atoms, used);
+        int next = 0;
+        std::vector<int> mapping(atoms.atoms().size(), -1);
+        for (int atom : used) {
+            if (atoms.atom(atom).kind != Atom::Kind::Comparison)
+                mapping[static_cast<std::size_t>(atom)] = next++;
+        }
+        for (NumericDomain& domain : domains) {
+            for (int bit = 0; bit < domain.bitCount(); ++bit)
+                domain.bits.push_back(next++);
+        }
+        manager = std::make_unique<bdd::Manager>(next, std::size_t{1} << 22);
+        encoder = std::make_unique<Encoder>(*manager, atoms, mapping, std::move(domains));
         theory = encoder->theory();
         condition = encoder->encode(formula, {});
+    }
+
+    // The truth of every atom of the formula under a diagram assignment.
+    std::vector<std::pair<int, bool>> truths(const std::vector<bool>& assignment)
+    {
+        std::vector<std::pair<int, bool>> out;
+        for (int atom : formula.atoms())
+            out.emplace_back(atom, manager->evaluate(encoder->atomFunction(atom), assignment));
+        return out;
     }
 };
 
@@ -716,10 +839,7 @@ std::optional<std::vector<cond::Value>> findValuation(const cond::Expression& ex
         std::vector<bool> assignment;
         if (!single.manager->pick(both, {}, assignment))
             return std::nullopt;
-        std::vector<std::pair<int, bool>> required;
-        for (int atom : single.formula.atoms())
-            required.emplace_back(atom, assignment[static_cast<std::size_t>(atom)]);
-        auto values = concretize(single.atoms, required, single.atoms.initialValues());
+        auto values = concretize(single.atoms, single.truths(assignment), single.atoms.initialValues());
         if (!values)
             return std::nullopt;
         const cond::Value result = cond::evaluate(expression, [&](int node) -> cond::Value {

@@ -28,6 +28,7 @@
 #include "core/symboltable.h"
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -114,22 +115,58 @@ bool holds(const Atom& atom, const cond::Value& value);
 // gives, one of these values gives it.
 std::vector<cond::Value> representatives(IecType type, const std::vector<const Atom*>& comparisons);
 
-// Builds diagrams over atoms: atomVariable[atom] is its diagram variable
-// (-1: the atom is not used).
+// The comparisons of one numeric variable with constants, as intervals: the
+// values of the type fall into *regions*, each giving one combination of
+// truth values of the comparisons (Speed > 10, Speed <= 200: the regions
+// ..10, 11..200, 201..). A diagram does not give each comparison a variable
+// of its own (k comparisons would allow 2^k combinations, of which k+1 or so
+// exist, and the constraint excluding the others grows with the product of
+// such counts over the variables); it encodes the index of the region in
+// binary, so every combination of its bits is a real value (or excluded by
+// one small constraint) and a comparison is a small function of the bits.
+struct NumericDomain {
+    int variable = -1;
+    std::vector<int> atoms;                 // the comparison atoms on it, ascending
+    std::vector<cond::Value> regionValues;  // one value per region, ascending
+    std::vector<int> bits;                  // diagram variables, most significant first (set by the caller)
+
+    std::size_t regionCount() const { return regionValues.size(); }
+    int bitCount() const;
+    // The region the value is in (the one with its truth values).
+    std::size_t regionOf(const AtomTable& table, const cond::Value& value) const;
+};
+
+// The domains of the numeric variables that the listed comparison atoms
+// compare (other atoms are ignored), in order of first appearance.
+std::vector<NumericDomain> numericDomains(const AtomTable& table, const std::vector<int>& atoms);
+
+// Builds diagrams over atoms: atomVariable[atom] is the diagram variable of a
+// Boolean or opaque atom (-1: the atom is not used); the comparisons are
+// encoded by their variable's domain.
 class Encoder {
 public:
-    Encoder(bdd::Manager& manager, const AtomTable& atoms, std::vector<int> atomVariable);
+    Encoder(bdd::Manager& manager, const AtomTable& atoms, std::vector<int> atomVariable,
+            std::vector<NumericDomain> domains);
 
     bdd::Ref encode(const Formula& formula, const std::function<bdd::Ref(int leafNode)>& leaf);
-    // The combinations of comparison truth values that values can give, per
-    // variable; conjoin it before asking anything about valuations.
+    // Only region indices that exist; conjoin it before asking anything about
+    // valuations. Linear in the bits, whatever the comparisons.
     bdd::Ref theory();
-    int variableOf(int atom) const;
+    // The atom as a function of the diagram variables; FALSE for an atom
+    // without variables.
+    bdd::Ref atomFunction(int atom);
+    int variableOf(int atom) const; // Boolean and opaque atoms; -1 otherwise
+    const std::vector<NumericDomain>& domains() const { return m_domains; }
+    const NumericDomain* domainOf(int variable) const;
 
 private:
+    bdd::Ref regionFunction(const NumericDomain& domain, const std::function<bool(std::size_t region)>& inside);
+
     bdd::Manager& m_manager;
     const AtomTable& m_atoms;
     std::vector<int> m_atomVariable;
+    std::vector<NumericDomain> m_domains;
+    std::map<int, bdd::Ref> m_comparisons; // atom -> function, built once
 };
 
 // Values for every variable (by index) under which each listed atom has the

@@ -6,12 +6,6 @@ namespace core::verify {
 
 namespace {
 
-// How many diagram variables the step needs: atoms, Complete, two per group.
-int variableCount(const CompiledStep& step, const sat::AtomTable& atoms)
-{
-    return static_cast<int>(atoms.atoms().size()) + 1 + 2 * static_cast<int>(step.groups.size());
-}
-
 bool anyWaits(const CompiledStep& step)
 {
     return std::any_of(step.transitions.begin(), step.transitions.end(),
@@ -30,10 +24,9 @@ int booleanAtomOf(const sat::AtomTable& atoms, int variable)
 
 } // namespace
 
-StepSpace::StepSpace(const CompiledStep& step, const sat::AtomTable& atoms, std::size_t nodeLimit,
+StepSpace::StepSpace(const CompiledStep& step, const sat::AtomTable& atoms, bdd::Budget& budget,
                      const std::function<bool()>& cancelled)
-    : m_step(step), m_cancelled(cancelled),
-      m_manager(std::make_unique<bdd::Manager>(variableCount(step, atoms), nodeLimit))
+    : m_step(step), m_atoms(atoms), m_cancelled(cancelled), m_budget(budget)
 {
     assignVariables(atoms);
     buildFormulas(atoms);
@@ -53,7 +46,9 @@ int StepSpace::atomVariable(int atom) const
 }
 
 // The order puts each token's now and after variables next to the input it
-// captures, so the update relation stays linear in the number of tokens.
+// captures, so the update relation stays linear in the number of tokens, and
+// the bits of one numeric variable's region together, at its first
+// comparison, so the constraint on them stays linear too.
 void StepSpace::assignVariables(const sat::AtomTable& atoms)
 {
     int next = 0;
@@ -62,6 +57,16 @@ void StepSpace::assignVariables(const sat::AtomTable& atoms)
     m_primedVar.assign(m_step.groups.size(), -1);
     if (nested() && m_step.freeComplete && anyWaits(m_step))
         m_completeVar = next++;
+
+    std::vector<int> comparisons;
+    for (const CompiledTransition& transition : m_step.transitions) {
+        for (const sat::Formula::Node& node : transition.formula.nodes) {
+            if (node.op == sat::Formula::Op::Atom)
+                comparisons.push_back(node.a);
+        }
+    }
+    std::vector<sat::NumericDomain> domains = sat::numericDomains(atoms, comparisons);
+    std::vector<bool> domainPlaced(domains.size(), false);
 
     std::function<void(int)> placeAtom;
     auto placeGroup = [&](int group) {
@@ -72,10 +77,24 @@ void StepSpace::assignVariables(const sat::AtomTable& atoms)
         m_primedVar[g] = next++;
         placeAtom(booleanAtomOf(atoms, m_step.groups[g].variable));
     };
+    auto placeDomain = [&](int variable) {
+        for (std::size_t d = 0; d < domains.size(); ++d) {
+            if (domains[d].variable != variable || domainPlaced[d])
+                continue;
+            domainPlaced[d] = true;
+            for (int bit = 0; bit < domains[d].bitCount(); ++bit)
+                domains[d].bits.push_back(next++);
+        }
+    };
     placeAtom = [&](int atom) {
-        if (atom < 0 || m_atomVar[static_cast<std::size_t>(atom)] >= 0)
+        if (atom < 0 || std::find(m_usedAtoms.begin(), m_usedAtoms.end(), atom) != m_usedAtoms.end())
             return;
+        m_usedAtoms.push_back(atom);
         const sat::Atom& a = atoms.atom(atom);
+        if (a.kind == sat::Atom::Kind::Comparison) {
+            placeDomain(a.variable);
+            return;
+        }
         if (a.kind == sat::Atom::Kind::Boolean) {
             for (std::size_t g = 0; g < m_step.groups.size(); ++g) {
                 if (m_step.groups[g].variable == a.variable && m_tokenVar[g] < 0) {
@@ -85,7 +104,6 @@ void StepSpace::assignVariables(const sat::AtomTable& atoms)
             }
         }
         m_atomVar[static_cast<std::size_t>(atom)] = next++;
-        m_usedAtoms.push_back(atom);
     };
     for (std::size_t t = 0; t < m_step.transitions.size(); ++t) {
         for (const sat::Formula::Node& node : m_step.transitions[t].formula.nodes) {
@@ -101,13 +119,20 @@ void StepSpace::assignVariables(const sat::AtomTable& atoms)
     for (std::size_t g = 0; g < m_step.groups.size(); ++g)
         placeGroup(static_cast<int>(g));
 
-    const auto count = static_cast<std::size_t>(m_manager->variableCount());
+    m_manager = std::make_unique<bdd::Manager>(next, m_budget);
+    const auto count = static_cast<std::size_t>(next);
     m_inputMask.assign(count, false);
     m_tokenMask.assign(count, false);
     m_toPrimed.assign(count, -1);
     m_fromPrimed.assign(count, -1);
-    for (int atom : m_usedAtoms)
-        m_inputMask[static_cast<std::size_t>(m_atomVar[static_cast<std::size_t>(atom)])] = true;
+    for (int atom : m_usedAtoms) {
+        if (m_atomVar[static_cast<std::size_t>(atom)] >= 0)
+            m_inputMask[static_cast<std::size_t>(m_atomVar[static_cast<std::size_t>(atom)])] = true;
+    }
+    for (const sat::NumericDomain& domain : domains) {
+        for (int bit : domain.bits)
+            m_inputMask[static_cast<std::size_t>(bit)] = true;
+    }
     if (m_completeVar >= 0)
         m_inputMask[static_cast<std::size_t>(m_completeVar)] = true;
     m_imageMask = m_inputMask;
@@ -121,12 +146,39 @@ void StepSpace::assignVariables(const sat::AtomTable& atoms)
         m_toPrimed[now] = m_primedVar[g];
         m_fromPrimed[after] = m_tokenVar[g];
     }
+    m_encoder = std::make_unique<sat::Encoder>(*m_manager, atoms, m_atomVar, std::move(domains));
+}
+
+bool StepSpace::atomHolds(int atom, const std::vector<bool>& assignment)
+{
+    return m_manager->evaluate(m_encoder->atomFunction(atom), assignment);
+}
+
+std::vector<int> StepSpace::preferredAssignment(const std::vector<cond::Value>& values)
+{
+    std::vector<int> preferred(static_cast<std::size_t>(m_manager->variableCount()), 0);
+    for (int atom : m_usedAtoms) {
+        const sat::Atom& a = m_atoms.atom(atom);
+        const int variable = m_atomVar[static_cast<std::size_t>(atom)];
+        if (a.kind == sat::Atom::Kind::Boolean)
+            preferred[static_cast<std::size_t>(variable)] = cond::isTrue(values[static_cast<std::size_t>(a.variable)]);
+        else if (a.kind == sat::Atom::Kind::Opaque)
+            preferred[static_cast<std::size_t>(variable)] = sat::evaluateOpaque(m_atoms, a, values);
+    }
+    for (const sat::NumericDomain& domain : m_encoder->domains()) {
+        const std::size_t region = domain.regionOf(m_atoms, values[static_cast<std::size_t>(domain.variable)]);
+        const int bits = domain.bitCount();
+        for (int bit = 0; bit < bits; ++bit)
+            preferred[static_cast<std::size_t>(domain.bits[static_cast<std::size_t>(bit)])] =
+                (region >> (bits - 1 - bit)) & 1 ? 1 : 0;
+    }
+    return preferred;
 }
 
 void StepSpace::buildFormulas(const sat::AtomTable& atoms)
 {
     bdd::Manager& m = *m_manager;
-    sat::Encoder encoder(m, atoms, m_atomVar);
+    sat::Encoder& encoder = *m_encoder;
     m_theory = encoder.theory();
     const bdd::Ref complete = m_completeVar >= 0 ? m.variable(m_completeVar) : bdd::kTrue;
     bdd::Ref earlier = bdd::kFalse;

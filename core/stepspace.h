@@ -50,7 +50,9 @@ struct CompiledStep {
 class StepSpace {
 public:
     // Builds the formulas and explores the step's token configurations.
-    StepSpace(const CompiledStep& step, const sat::AtomTable& atoms, std::size_t nodeLimit,
+    // Its diagrams spend `budget` (throwing bdd::BudgetExceeded when it runs
+    // out); the budget and the atoms must outlive it.
+    StepSpace(const CompiledStep& step, const sat::AtomTable& atoms, bdd::Budget& budget,
               const std::function<bool()>& cancelled);
 
     bdd::Manager& manager() { return *m_manager; }
@@ -85,8 +87,13 @@ public:
 
     long double configurationCount(); // entry configuration included
     int completeVariable() const { return m_completeVar; }
-    int atomVariable(int atom) const;
+    int atomVariable(int atom) const; // Boolean and opaque atoms; -1 for comparisons (region bits)
     const std::vector<int>& usedAtoms() const { return m_usedAtoms; }
+    // The truth of an atom of the step under a full assignment.
+    bool atomHolds(int atom, const std::vector<bool>& assignment);
+    // Per diagram variable: 1 where the inputs as they are (values by
+    // variable index) make it TRUE, for bdd::Manager::pick.
+    std::vector<int> preferredAssignment(const std::vector<cond::Value>& values);
     const std::vector<bool>& inputMask() const { return m_inputMask; }
     const std::vector<bool>& tokenMask() const { return m_tokenMask; }
 
@@ -97,8 +104,11 @@ private:
     void checkCancelled() const;
 
     const CompiledStep& m_step;
+    const sat::AtomTable& m_atoms;
     std::function<bool()> m_cancelled;
+    bdd::Budget& m_budget;
     std::unique_ptr<bdd::Manager> m_manager;
+    std::unique_ptr<sat::Encoder> m_encoder;
     int m_completeVar = -1;
     std::vector<int> m_tokenVar;
     std::vector<int> m_primedVar;

@@ -135,10 +135,15 @@ public:
     Verifier(const Model& model, const VerificationOptions& options)
         : m_model(model), m_options(options), m_program(buildGemmaProgram(model)), m_atoms(model.variables())
     {
+        m_budget.nodeLimit = options.maxDiagramNodes;
+        if (options.timeLimit.count() > 0)
+            m_budget.deadline = std::chrono::steady_clock::now() + options.timeLimit;
         m_steps.resize(m_program.steps.size());
         for (std::size_t i = 0; i < m_program.steps.size(); ++i)
             compileStep(m_program.steps[i], static_cast<int>(i), options, m_atoms, m_steps[i]);
         m_spaces.resize(m_steps.size());
+        m_spaceFailure.resize(m_steps.size());
+        m_possiblyReached.assign(m_steps.size(), false);
         m_distance.assign(m_steps.size(), kUnreached);
         m_parent.assign(m_steps.size(), Occurrence{});
         m_initial = stepIndex(m_program.initialStepId);
@@ -155,15 +160,28 @@ private:
         }
         return -1;
     }
+    // Reached through decided steps: a shortest path to it is known.
     bool reached(int step) const { return step >= 0 && m_distance[static_cast<std::size_t>(step)] != kUnreached; }
+    // Reached, or entered from a step whose space was not decided: it may be reachable.
+    bool maybeReached(int step) const { return reached(step) || m_possiblyReached[static_cast<std::size_t>(step)]; }
+    bool decided(int step) const { return m_spaces[static_cast<std::size_t>(step)] != nullptr; }
     StepSpace& space(int step) { return *m_spaces[static_cast<std::size_t>(step)]; }
     const GemmaTransition& transitionAt(const Occurrence& o) const
     {
         return *m_steps[static_cast<std::size_t>(o.step)].transitions[o.transition].transition;
     }
-    StepSpace& ensureSpace(int step);
+    StepSpace* ensureSpace(int step);
+
+    // Runs one unit of the analysis with at most half of the budget left (so
+    // that one hard step cannot starve the others); when the budget runs out,
+    // notes that `code` was not decided for `element` and returns false.
+    bool decide(const std::string& element, int order, const std::string& code, const std::function<void()>& unit);
+    void noteUndecided(const std::string& element, int order, const std::string& code, const std::string& reason);
+    std::string budgetReason(const bdd::BudgetExceeded& error) const;
+    void reportUndecided(VerificationResult& result);
 
     void explore();
+    void exploreUncertain();
     std::optional<Configuration> chooseConfiguration(int step, Ref tokenSet);
     std::vector<PlannedScan> pathTo(const Configuration& configuration);
     std::vector<PlannedScan> pathToEntry(int step);
@@ -174,9 +192,17 @@ private:
                                                    const std::function<Ref(const Configuration&)>& finalScan);
     bool fireable(const Occurrence& o);
 
+    // True when the properties of a step seen in a reachable configuration
+    // can be decided: it is reached on a known path and was analysed;
+    // otherwise notes `code` as undecided for it.
+    bool analysable(int step, const std::string& code);
     void checkUnreachable();
     void checkTransitions();
+    void checkTransition(const std::string& id, const std::vector<Occurrence>& occurrences, int order);
     void checkOverlaps();
+    void checkOverlaps(int step);
+    void checkStuck(int step);
+    void checkEmergencyStop(int step);
     void checkStuck();
     void checkReturn();
     void checkEmergencyStop();
@@ -188,7 +214,18 @@ private:
     GemmaProgram m_program;
     sat::AtomTable m_atoms;
     std::vector<CompiledStep> m_steps;
-    std::vector<std::unique_ptr<StepSpace>> m_spaces;
+    bdd::Budget m_budget;
+    std::vector<std::unique_ptr<StepSpace>> m_spaces; // null: not built, or not decided (m_spaceFailure says why)
+    std::vector<std::string> m_spaceFailure;
+    std::vector<bool> m_possiblyReached; // entered only through undecided steps
+    struct Undecided {
+        std::string element;
+        int order = 0;
+        std::vector<std::string> codes;
+        std::string reason;
+    };
+    std::vector<Undecided> m_undecided;
+    std::string m_counterexampleCut; // why the last counterexampleAt ran out of budget; empty: it did not
     std::vector<std::size_t> m_distance; // scans from the start to the step's entry configuration
     std::vector<Occurrence> m_parent;    // the transition that enters the step on a shortest path
     int m_initial = -1;
@@ -197,13 +234,62 @@ private:
     std::unique_ptr<Simulator> m_simulator;
 };
 
-StepSpace& Verifier::ensureSpace(int step)
+StepSpace* Verifier::ensureSpace(int step)
 {
-    auto& slot = m_spaces[static_cast<std::size_t>(step)];
+    const auto index = static_cast<std::size_t>(step);
+    auto& slot = m_spaces[index];
+    if (slot || !m_spaceFailure[index].empty())
+        return slot.get();
+    const std::string& id = m_steps[index].step->id;
+    decide(id, step, "space", [&] {
+        slot = std::make_unique<StepSpace>(m_steps[index], m_atoms, m_budget, m_options.cancelled);
+    });
     if (!slot)
-        slot = std::make_unique<StepSpace>(m_steps[static_cast<std::size_t>(step)], m_atoms,
-                                           m_options.maxDiagramNodes, m_options.cancelled);
-    return *slot;
+        m_spaceFailure[index] = m_undecided.back().reason;
+    return slot.get();
+}
+
+std::string Verifier::budgetReason(const bdd::BudgetExceeded& error) const
+{
+    if (dynamic_cast<const bdd::TimeLimitExceeded*>(&error))
+        return "the verification reached its time limit of " + std::to_string(m_options.timeLimit.count()) + " ms";
+    return "the verification reached its limit of " + std::to_string(m_options.maxDiagramNodes)
+        + " decision-diagram nodes";
+}
+
+bool Verifier::decide(const std::string& element, int order, const std::string& code,
+                      const std::function<void()>& unit)
+{
+    const bdd::Budget whole = m_budget;
+    const auto now = std::chrono::steady_clock::now();
+    if (whole.deadline && now < *whole.deadline)
+        m_budget.deadline = now + (*whole.deadline - now) / 2;
+    m_budget.nodeLimit = whole.nodesUsed + (whole.nodeLimit - std::min(whole.nodesUsed, whole.nodeLimit)) / 2;
+    bool done = false;
+    try {
+        unit();
+        done = true;
+    } catch (const bdd::BudgetExceeded& error) {
+        // The half given to this unit, or the whole budget, is spent: which
+        // one the user must raise is the whole.
+        noteUndecided(element, order, code, budgetReason(error));
+    }
+    m_budget.deadline = whole.deadline;
+    m_budget.nodeLimit = whole.nodeLimit;
+    return done;
+}
+
+void Verifier::noteUndecided(const std::string& element, int order, const std::string& code,
+                             const std::string& reason)
+{
+    auto entry = std::find_if(m_undecided.begin(), m_undecided.end(),
+                              [&](const Undecided& u) { return u.element == element; });
+    if (entry == m_undecided.end()) {
+        m_undecided.push_back(Undecided{element, order, {}, reason});
+        entry = m_undecided.end() - 1;
+    }
+    if (std::find(entry->codes.begin(), entry->codes.end(), code) == entry->codes.end())
+        entry->codes.push_back(code);
 }
 
 // Scans after the step's entry until a configuration of the set is reached;
@@ -244,20 +330,63 @@ void Verifier::explore()
         if (done[static_cast<std::size_t>(step)])
             continue;
         done[static_cast<std::size_t>(step)] = true;
-        StepSpace& s = ensureSpace(step);
         const CompiledStep& compiled = m_steps[static_cast<std::size_t>(step)];
+        StepSpace* s = ensureSpace(step);
+        std::vector<bool> relaxed(compiled.transitions.size(), false);
+        if (s) {
+            decide(compiled.step->id, step, "transitions", [&] {
+                for (std::size_t t = 0; t < compiled.transitions.size(); ++t) {
+                    const int target = stepIndex(compiled.transitions[t].transition->targetId);
+                    if (target < 0) {
+                        relaxed[t] = true;
+                        continue;
+                    }
+                    const auto configuration = chooseConfiguration(step, s->possible(s->fires(t)));
+                    relaxed[t] = true;
+                    if (!configuration)
+                        continue;
+                    const std::size_t through = distance + configuration->depth + 1;
+                    if (through < m_distance[static_cast<std::size_t>(target)]) {
+                        m_distance[static_cast<std::size_t>(target)] = through;
+                        m_parent[static_cast<std::size_t>(target)] = Occurrence{step, t};
+                        queue.push({through, target});
+                    }
+                }
+            });
+        }
+        // What an undecided step does is unknown: every target may be entered.
         for (std::size_t t = 0; t < compiled.transitions.size(); ++t) {
             const int target = stepIndex(compiled.transitions[t].transition->targetId);
-            if (target < 0)
+            if (!relaxed[t] && target >= 0)
+                m_possiblyReached[static_cast<std::size_t>(target)] = true;
+        }
+    }
+    exploreUncertain();
+}
+
+// Steps entered only through undecided steps may be reachable, and so may
+// the steps they lead to: "unreachable" stays a sound claim.
+void Verifier::exploreUncertain()
+{
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t st = 0; st < m_steps.size(); ++st) {
+            const int step = static_cast<int>(st);
+            if (reached(step) || !m_possiblyReached[st])
                 continue;
-            const auto configuration = chooseConfiguration(step, s.possible(s.fires(t)));
-            if (!configuration)
-                continue;
-            const std::size_t through = distance + configuration->depth + 1;
-            if (through < m_distance[static_cast<std::size_t>(target)]) {
-                m_distance[static_cast<std::size_t>(target)] = through;
-                m_parent[static_cast<std::size_t>(target)] = Occurrence{step, t};
-                queue.push({through, target});
+            StepSpace* s = ensureSpace(step);
+            for (std::size_t t = 0; t < m_steps[st].transitions.size(); ++t) {
+                const int target = stepIndex(m_steps[st].transitions[t].transition->targetId);
+                if (target < 0 || maybeReached(target))
+                    continue;
+                bool fires = true;
+                if (s)
+                    decide(m_steps[st].step->id, step, "transitions",
+                           [&] { fires = fireable(Occurrence{step, t}); });
+                if (fires) {
+                    m_possiblyReached[static_cast<std::size_t>(target)] = true;
+                    changed = true;
+                }
             }
         }
     }
@@ -317,11 +446,20 @@ Ref Verifier::defaultScan(int step, const Configuration& configuration)
 std::optional<Counterexample> Verifier::counterexampleAt(const std::string& title, int step, Ref tokenSet,
                                                          const std::function<Ref(const Configuration&)>& finalScan)
 {
-    const auto configuration = chooseConfiguration(step, tokenSet);
-    if (!configuration)
+    m_counterexampleCut.clear();
+    // No known path to a step entered only through undecided steps.
+    if (!reached(step))
         return std::nullopt;
-    return counterexample(title, *configuration,
-                          finalScan ? finalScan(*configuration) : defaultScan(step, *configuration));
+    try {
+        const auto configuration = chooseConfiguration(step, tokenSet);
+        if (!configuration)
+            return std::nullopt;
+        return counterexample(title, *configuration,
+                              finalScan ? finalScan(*configuration) : defaultScan(step, *configuration));
+    } catch (const bdd::BudgetExceeded& error) {
+        m_counterexampleCut = budgetReason(error);
+        return std::nullopt;
+    }
 }
 
 // Plays the planned scans forward, choosing input values (keeping the
@@ -344,18 +482,7 @@ std::optional<Counterexample> Verifier::counterexample(const std::string& title,
         StepSpace& s = space(scan.step);
         bdd::Manager& m = s.manager();
         const GemmaStep& step = *m_steps[static_cast<std::size_t>(scan.step)].step;
-        std::vector<int> preferred(static_cast<std::size_t>(m.variableCount()), 0);
-        for (int atom : s.usedAtoms()) {
-            const sat::Atom& a = m_atoms.atom(atom);
-            bool truth = false;
-            if (a.kind == sat::Atom::Kind::Boolean)
-                truth = cond::isTrue(values[static_cast<std::size_t>(a.variable)]);
-            else if (a.kind == sat::Atom::Kind::Comparison)
-                truth = sat::holds(a, values[static_cast<std::size_t>(a.variable)]);
-            else
-                truth = sat::evaluateOpaque(m_atoms, a, values);
-            preferred[static_cast<std::size_t>(s.atomVariable(atom))] = truth ? 1 : 0;
-        }
+        std::vector<int> preferred = s.preferredAssignment(values);
         if (s.completeVariable() >= 0 && manual.count(step.id))
             preferred[static_cast<std::size_t>(s.completeVariable())] = manual[step.id] ? 1 : 0;
         std::vector<bool> assignment;
@@ -365,7 +492,7 @@ std::optional<Counterexample> Verifier::counterexample(const std::string& title,
         }
         std::vector<std::pair<int, bool>> required;
         for (int atom : s.usedAtoms())
-            required.emplace_back(atom, assignment[static_cast<std::size_t>(s.atomVariable(atom))]);
+            required.emplace_back(atom, s.atomHolds(atom, assignment));
         RecordedScan recorded;
         recorded.scan = static_cast<std::int64_t>(n + 1);
         if (auto next = sat::concretize(m_atoms, required, values)) {
@@ -453,6 +580,14 @@ void Verifier::add(VerificationFinding finding, int order)
         finding.arguments = finding.elements;
     const bool needsPath = finding.code == code::kOverlap || finding.code == code::kNoReturn
         || finding.code == code::kStuck || finding.code == code::kNoEmergencyStop;
+    if (needsPath && !finding.counterexample && !m_counterexampleCut.empty()) {
+        // A configuration claimed reachable that could not be shown within
+        // the budget: not claimed.
+        noteUndecided(finding.elements.front(), order, finding.code, m_counterexampleCut);
+        m_counterexampleCut.clear();
+        return;
+    }
+    m_counterexampleCut.clear();
     if (needsPath && finding.counterexample && !finding.counterexample->confirmed) {
         // The configuration may exist only because an undecided comparison
         // was taken as free: say so rather than claim it.
@@ -468,7 +603,7 @@ void Verifier::add(VerificationFinding finding, int order)
 void Verifier::checkUnreachable()
 {
     for (std::size_t i = 0; i < m_steps.size(); ++i) {
-        if (reached(static_cast<int>(i)))
+        if (maybeReached(static_cast<int>(i)))
             continue;
         const std::string& id = m_steps[i].step->id;
         VerificationFinding finding{code::kUnreachableStep, Severity::Warning, {id}, {}, {}, {}};
@@ -481,7 +616,7 @@ void Verifier::checkUnreachable()
                     continue;
                 if (std::find(incoming.begin(), incoming.end(), transition.id) == incoming.end())
                     incoming.push_back(transition.id);
-                if (reached(static_cast<int>(s))
+                if (reached(static_cast<int>(s)) && decided(static_cast<int>(s))
                     && (nearest.step < 0 || m_distance[s] < m_distance[static_cast<std::size_t>(nearest.step)]))
                     nearest = Occurrence{static_cast<int>(s), t};
             }
@@ -499,8 +634,14 @@ void Verifier::checkUnreachable()
         }
         if (nearest.step >= 0) {
             StepSpace& s = space(nearest.step);
-            const Ref shown = s.manager().conj(s.theory(), s.gated(nearest.transition));
-            const Ref where = s.manager().conj(s.possible(shown), s.anyConfiguration());
+            Ref shown = bdd::kFalse;
+            Ref where = bdd::kFalse;
+            try {
+                shown = s.manager().conj(s.theory(), s.gated(nearest.transition));
+                where = s.manager().conj(s.possible(shown), s.anyConfiguration());
+            } catch (const bdd::BudgetExceeded&) {
+                where = bdd::kFalse; // show the source as it is
+            }
             finding.counterexample = counterexampleAt(
                 code::kUnreachableStep + std::string(": ") + finding.message, nearest.step,
                 where != bdd::kFalse ? where : s.anyConfiguration(),
@@ -517,7 +658,7 @@ void Verifier::checkTransitions()
     // Each transition id once, in program order, with every step that evaluates it.
     std::vector<std::pair<std::string, std::vector<Occurrence>>> byId;
     for (std::size_t s = 0; s < m_steps.size(); ++s) {
-        if (!reached(static_cast<int>(s)))
+        if (!maybeReached(static_cast<int>(s)))
             continue;
         for (std::size_t t = 0; t < m_steps[s].transitions.size(); ++t) {
             const std::string& id = m_steps[s].transitions[t].transition->id;
@@ -527,9 +668,26 @@ void Verifier::checkTransitions()
             found->second.push_back(Occurrence{static_cast<int>(s), t});
         }
     }
-    int order = 0;
     for (const auto& [id, occurrences] : byId) {
-        ++order;
+        const int order = occurrences.front().step * 1000 + static_cast<int>(occurrences.front().transition) + 1;
+        const bool allDecided = std::all_of(occurrences.begin(), occurrences.end(),
+                                            [&](const Occurrence& o) { return decided(o.step); });
+        if (!allDecided) {
+            const auto undecided = std::find_if(occurrences.begin(), occurrences.end(),
+                                                [&](const Occurrence& o) { return !decided(o.step); });
+            noteUndecided(id, order, code::kDeadTransition,
+                          m_steps[static_cast<std::size_t>(undecided->step)].step->id + " was not analysed");
+            noteUndecided(id, order, code::kAlwaysTrue, {});
+            continue;
+        }
+        if (!decide(id, order, code::kDeadTransition, [&] { checkTransition(id, occurrences, order); }))
+            noteUndecided(id, order, code::kAlwaysTrue, {});
+    }
+}
+
+void Verifier::checkTransition(const std::string& id, const std::vector<Occurrence>& occurrences, int order)
+{
+    {
         const GemmaTransition& transition = transitionAt(occurrences.front());
         bool anyFires = false;
         for (const Occurrence& o : occurrences)
@@ -594,7 +752,7 @@ void Verifier::checkTransitions()
                                                           first.step, s.anyConfiguration(), nullptr);
             }
             add(std::move(finding), order);
-            continue;
+            return;
         }
         // GV103: TRUE in every reachable situation, with transitions after it.
         bool alwaysTrue = true;
@@ -630,14 +788,34 @@ void Verifier::checkTransitions()
     }
 }
 
+bool Verifier::analysable(int step, const std::string& findingCode)
+{
+    if (reached(step) && decided(step))
+        return true;
+    if (maybeReached(step)) {
+        const std::size_t index = static_cast<std::size_t>(step);
+        noteUndecided(m_steps[index].step->id, step * 1000, findingCode,
+                      !decided(step) ? m_steps[index].step->id + " was not analysed"
+                                     : "it is entered only through steps that were not analysed");
+    }
+    return false;
+}
+
 // --- GV104 -----------------------------------------------------------------------
 
 void Verifier::checkOverlaps()
 {
     for (std::size_t st = 0; st < m_steps.size(); ++st) {
-        if (!reached(static_cast<int>(st)))
-            continue;
         const int step = static_cast<int>(st);
+        if (analysable(step, code::kOverlap))
+            decide(m_steps[st].step->id, step * 1000, code::kOverlap, [&] { checkOverlaps(step); });
+    }
+}
+
+void Verifier::checkOverlaps(int step)
+{
+    const auto st = static_cast<std::size_t>(step);
+    {
         StepSpace& s = space(step);
         bdd::Manager& m = s.manager();
         const auto& transitions = m_steps[st].transitions;
@@ -671,8 +849,15 @@ void Verifier::checkStuck()
 {
     for (std::size_t st = 0; st < m_steps.size(); ++st) {
         const int step = static_cast<int>(st);
-        if (!reached(step))
-            continue;
+        if (analysable(step, code::kStuck))
+            decide(m_steps[st].step->id, step * 1000, code::kStuck, [&] { checkStuck(step); });
+    }
+}
+
+void Verifier::checkStuck(int step)
+{
+    const auto st = static_cast<std::size_t>(step);
+    {
         StepSpace& s = space(step);
         bdd::Manager& m = s.manager();
         Ref fireAny = bdd::kFalse;
@@ -681,7 +866,7 @@ void Verifier::checkStuck()
         const Ref canLeave = s.canReach(s.possible(fireAny));
         const Ref stuck = m.conj(s.anyConfiguration(), m.negate(canLeave));
         if (stuck == bdd::kFalse)
-            continue;
+            return;
         m_stuckSteps.insert(step);
         const std::string& id = m_steps[st].step->id;
         VerificationFinding finding{code::kStuck, Severity::Error, {id}, {}, {}, {}};
@@ -705,39 +890,53 @@ void Verifier::checkReturn()
         return;
     // Steps whose entry configuration can lead back to the initial step,
     // grown until stable; with each, its configurations that can.
+    // A step not decided, or whose set was not computed within the budget,
+    // counts as leading back from everywhere: "never comes back" stays sound.
     std::vector<bool> good(m_steps.size(), false);
+    std::vector<bool> failed(m_steps.size(), false);
     std::vector<Ref> goodSet(m_steps.size(), bdd::kFalse);
     good[static_cast<std::size_t>(m_initial)] = true;
+    for (std::size_t st = 0; st < m_steps.size(); ++st)
+        good[st] = good[st] || (maybeReached(static_cast<int>(st)) && !decided(static_cast<int>(st)));
     for (bool changed = true; changed;) {
         changed = false;
         for (std::size_t st = 0; st < m_steps.size(); ++st) {
             const int step = static_cast<int>(st);
-            if (!reached(step) || step == m_initial)
+            if (!maybeReached(step) || !decided(step) || step == m_initial || failed[st])
                 continue;
-            StepSpace& s = space(step);
-            bdd::Manager& m = s.manager();
-            Ref leavesWell = bdd::kFalse;
-            for (std::size_t t = 0; t < m_steps[st].transitions.size(); ++t) {
-                const int target = stepIndex(m_steps[st].transitions[t].transition->targetId);
-                if (target >= 0 && good[static_cast<std::size_t>(target)])
-                    leavesWell = m.disj(leavesWell, s.fires(t));
-            }
-            goodSet[st] = s.canReach(s.possible(leavesWell));
-            if (!good[st] && m.conj(goodSet[st], s.zero()) != bdd::kFalse) {
+            const bool done = decide(m_steps[st].step->id, step * 1000, code::kNoReturn, [&] {
+                StepSpace& s = space(step);
+                bdd::Manager& m = s.manager();
+                Ref leavesWell = bdd::kFalse;
+                for (std::size_t t = 0; t < m_steps[st].transitions.size(); ++t) {
+                    const int target = stepIndex(m_steps[st].transitions[t].transition->targetId);
+                    if (target >= 0 && good[static_cast<std::size_t>(target)])
+                        leavesWell = m.disj(leavesWell, s.fires(t));
+                }
+                goodSet[st] = s.canReach(s.possible(leavesWell));
+                if (!good[st] && m.conj(goodSet[st], s.zero()) != bdd::kFalse) {
+                    good[st] = true;
+                    changed = true;
+                }
+            });
+            if (!done) {
+                failed[st] = true;
+                changed = changed || !good[st];
                 good[st] = true;
-                changed = true;
             }
         }
     }
     const std::string& initial = m_program.initialStepId;
     for (std::size_t st = 0; st < m_steps.size(); ++st) {
         const int step = static_cast<int>(st);
-        if (!reached(step) || step == m_initial || m_stuckSteps.count(step))
+        if (step == m_initial || m_stuckSteps.count(step) || failed[st] || !analysable(step, code::kNoReturn))
             continue;
         StepSpace& s = space(step);
         bdd::Manager& m = s.manager();
-        const Ref bad = m.conj(s.anyConfiguration(), m.negate(goodSet[st]));
-        if (bad == bdd::kFalse)
+        Ref bad = bdd::kFalse;
+        if (!decide(m_steps[st].step->id, step * 1000, code::kNoReturn,
+                    [&] { bad = m.conj(s.anyConfiguration(), m.negate(goodSet[st])); })
+            || bad == bdd::kFalse)
             continue;
         const std::string& id = m_steps[st].step->id;
         VerificationFinding finding{code::kNoReturn, Severity::Warning, {id}, {}, {}, {}};
@@ -760,8 +959,17 @@ void Verifier::checkEmergencyStop()
     for (std::size_t st = 0; st < m_steps.size(); ++st) {
         const int step = static_cast<int>(st);
         const GemmaStep& gemma = *m_steps[st].step;
-        if (!reached(step) || gemma.id.empty() || gemma.id[0] != 'F')
+        if (gemma.id.empty() || gemma.id[0] != 'F' || !analysable(step, code::kNoEmergencyStop))
             continue;
+        decide(gemma.id, step * 1000, code::kNoEmergencyStop, [&] { checkEmergencyStop(step); });
+    }
+}
+
+void Verifier::checkEmergencyStop(int step)
+{
+    const auto st = static_cast<std::size_t>(step);
+    const GemmaStep& gemma = *m_steps[st].step;
+    {
         StepSpace& s = space(step);
         bdd::Manager& m = s.manager();
         Ref toStop = bdd::kFalse;
@@ -777,7 +985,7 @@ void Verifier::checkEmergencyStop()
         }
         const Ref bad = m.conj(s.anyConfiguration(), m.negate(s.possible(toStop)));
         if (bad == bdd::kFalse)
-            continue;
+            return;
         VerificationFinding finding{code::kNoEmergencyStop, Severity::Error, {gemma.id}, {}, {}, {}};
         finding.elements.insert(finding.elements.end(), ways.begin(), ways.end());
         if (ways.empty())
@@ -806,20 +1014,64 @@ void Verifier::fillFacts(VerificationResult& result)
         if (!reached(step))
             continue;
         result.reachableSteps.push_back(m_steps[st].step->id);
+        if (!decided(step))
+            continue;
         StepSpace& s = space(step);
-        configurations += s.configurationCount();
-        result.maxDepth = std::max(result.maxDepth, m_distance[st] + s.layers().size());
-        for (std::size_t t = 0; t < m_steps[st].transitions.size(); ++t) {
-            const std::string& id = m_steps[st].transitions[t].transition->id;
-            if (fireable({step, t})
-                && std::find(result.fireableTransitions.begin(), result.fireableTransitions.end(), id)
-                    == result.fireableTransitions.end())
-                result.fireableTransitions.push_back(id);
+        try {
+            configurations += s.configurationCount();
+            result.maxDepth = std::max(result.maxDepth, m_distance[st] + s.layers().size());
+            for (std::size_t t = 0; t < m_steps[st].transitions.size(); ++t) {
+                const std::string& id = m_steps[st].transitions[t].transition->id;
+                if (fireable({step, t})
+                    && std::find(result.fireableTransitions.begin(), result.fireableTransitions.end(), id)
+                        == result.fireableTransitions.end())
+                    result.fireableTransitions.push_back(id);
+            }
+        } catch (const bdd::BudgetExceeded&) {
+            // Facts for cross-checks only, and the result is not exhaustive anyway.
         }
     }
     const auto limit = static_cast<long double>(std::numeric_limits<std::size_t>::max());
     result.configurations = configurations >= limit ? std::numeric_limits<std::size_t>::max()
                                                     : static_cast<std::size_t>(configurations);
+}
+
+// One GV100 per element with something undecided, saying what and why.
+void Verifier::reportUndecided(VerificationResult& result)
+{
+    result.exhaustive = m_undecided.empty();
+    for (const Undecided& entry : m_undecided) {
+        std::vector<std::string> codes;
+        bool space = false;
+        bool transitions = false;
+        bool rest = false;
+        for (const std::string& c : entry.codes) {
+            space = space || c == "space";
+            transitions = transitions || c == "transitions";
+            rest = rest || c == "rest";
+            if (c.rfind("GV", 0) == 0)
+                codes.push_back(c);
+        }
+        std::sort(codes.begin(), codes.end());
+        VerificationFinding finding{code::kIncomplete, Severity::Warning, {}, {}, {}, {}};
+        if (entry.element != "model")
+            finding.elements.push_back(entry.element);
+        if (rest) {
+            finding.message = entry.reason + " while checking the properties: those not reported were not decided";
+        } else if (space) {
+            finding.message = entry.reason + " while exploring the configurations of " + entry.element
+                + ": which of its transitions can fire, and GV102 to GV107 about it and its transitions, were "
+                  "not decided; the steps it leads to are taken as reachable";
+        } else {
+            std::string what = joined(codes, " and ");
+            if (transitions)
+                what = "where its transitions lead" + std::string(codes.empty() ? "" : ", ") + what;
+            finding.message = what + (codes.size() + (transitions ? 1 : 0) == 1 ? " was" : " were")
+                + " not decided for " + entry.element + ": " + entry.reason;
+        }
+        finding.arguments = finding.elements;
+        m_findings.emplace_back(entry.order, std::move(finding));
+    }
 }
 
 VerificationResult Verifier::run()
@@ -834,20 +1086,17 @@ VerificationResult Verifier::run()
         checkReturn();
         checkEmergencyStop();
         fillFacts(result);
-    } catch (const bdd::NodeLimitExceeded&) {
-        result = VerificationResult{};
-        result.exhaustive = false;
-        VerificationFinding finding{code::kIncomplete, Severity::Warning, {}, {}, {}, {}};
-        finding.message = "the verification stopped at its limit of " + std::to_string(m_options.maxDiagramNodes)
-            + " decision-diagram nodes for one step: the model was not verified, no property is claimed";
-        result.findings.push_back(std::move(finding));
-        return result;
+    } catch (const bdd::BudgetExceeded& error) {
+        // Every unit of the analysis is run by decide(); this is a safety net
+        // that keeps the findings decided so far.
+        noteUndecided("model", -1, "rest", budgetReason(error));
     } catch (const verify::Cancelled&) {
         result = VerificationResult{};
         result.cancelled = true;
         result.exhaustive = false;
         return result;
     }
+    reportUndecided(result);
     std::stable_sort(m_findings.begin(), m_findings.end(), [](const auto& a, const auto& b) {
         return a.second.code != b.second.code ? a.second.code < b.second.code : a.first < b.first;
     });

@@ -41,6 +41,7 @@
 #include "core/diagnostic.h"
 #include "core/scenario.h"
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -62,10 +63,16 @@ enum class CompleteAssumption {
 struct VerificationOptions {
     // By nested step id ("F1"); a step not listed is Free.
     std::map<std::string, CompleteAssumption> complete;
-    // Upper bound on the decision-diagram nodes of one step (memory: about 60
-    // bytes each). A model that needs more is not explored to the end: the
-    // result is then not exhaustive (GV100) and no property is claimed.
+    // The budget of one run, the same for the command line and the editor:
+    // what is not decided within it is named by GV100 findings (the result is
+    // then not exhaustive), and every property decided is still reported.
+    // Decision-diagram nodes of all steps together (memory: about 70 bytes
+    // each, so the default stays near 300 MB).
     std::size_t maxDiagramNodes = 4'000'000;
+    // Wall-clock time of the analysis; zero or less: no limit. With the
+    // counterexamples written and replayed after it, a run ends within about
+    // one more second.
+    std::chrono::milliseconds timeLimit{4000};
     // Polled now and then; returning true abandons the run (result.cancelled).
     std::function<bool()> cancelled;
 };
@@ -104,7 +111,7 @@ struct VerificationResult {
     // Reachable configurations (State, Entry, tokens); saturates at SIZE_MAX.
     std::size_t configurations = 0;
     std::size_t maxDepth = 0;       // scans from the start to the farthest reachable configuration
-    bool exhaustive = true;         // false when maxDiagramNodes stopped the exploration
+    bool exhaustive = true;         // false when the budget left something undecided (GV100)
     bool cancelled = false;
 
     // A finding of severity error or warning: a property does not hold.
@@ -121,7 +128,7 @@ std::string verificationElementLabel(const VerificationFinding& finding);
 
 // Codes, for the editor and tests.
 namespace verification {
-inline constexpr const char* kIncomplete = "GV100";       // warning: exploration stopped (limit), nothing proven
+inline constexpr const char* kIncomplete = "GV100";       // warning: the budget ran out before these were decided
 inline constexpr const char* kUnreachableStep = "GV101";  // warning
 inline constexpr const char* kDeadTransition = "GV102";   // warning
 inline constexpr const char* kAlwaysTrue = "GV103";       // warning

@@ -1,6 +1,10 @@
 // Verification (core/verification.h): the realistic model (budget 50 ms) and
 // the verification stress model (40 BOOL variables, a token on every eligible
-// variable: 2^27 token configurations in F1 alone; budget 1 s).
+// variable: 2^27 token configurations in F1 alone; budget 1 s); and the
+// hostile shapes of issue 15, each within the default budget of the command
+// line and the editor (5 s and 1 GiB in all): 12 INT comparisons per
+// condition, 24 mixed operands per condition, and two conditions of about
+// 5,000 characters (which end with GV100 findings naming them).
 
 #include "core/verification.h"
 
@@ -17,4 +21,16 @@ TEST_CASE("Verification", "[bench][verification]")
 
     BENCHMARK("verify realistic model") { return core::verifyModel(realistic).findings.size(); };
     BENCHMARK("verify stress model") { return core::verifyModel(stress).findings.size(); };
+}
+
+TEST_CASE("Verification of comparison-heavy models", "[bench][verification]")
+{
+    const core::Model comparisons = factory::comparisonVerificationModel(12, false);
+    const core::Model mixed = factory::comparisonVerificationModel(24, true);
+    const core::Model huge = factory::hugeConditionVerificationModel();
+    REQUIRE(core::verifyModel(comparisons).exhaustive);
+
+    BENCHMARK("verify 12 INT comparisons per condition") { return core::verifyModel(comparisons).findings.size(); };
+    BENCHMARK("verify 24 mixed operands per condition") { return core::verifyModel(mixed).findings.size(); };
+    BENCHMARK("verify 5,000-character conditions") { return core::verifyModel(huge).findings.size(); };
 }

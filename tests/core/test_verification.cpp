@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <deque>
 #include <map>
 #include <random>
@@ -426,9 +427,13 @@ TEST_CASE("Limits and cancellation", "[verification]")
     core::VerificationOptions tiny;
     tiny.maxDiagramNodes = 20;
     const core::VerificationResult limited = core::verifyModel(model, tiny);
+    INFO(describe(limited));
     CHECK_FALSE(limited.exhaustive);
-    REQUIRE(limited.findings.size() == 1);
+    REQUIRE_FALSE(limited.findings.empty());
     CHECK(limited.findings.front().code == code::kIncomplete);
+    // Nothing is reachable-claimed when nothing could be analysed: only GV100.
+    for (const core::VerificationFinding& finding : limited.findings)
+        CHECK(finding.code == code::kIncomplete);
     CHECK(limited.violated());
 
     core::VerificationOptions cancel;
@@ -436,6 +441,88 @@ TEST_CASE("Limits and cancellation", "[verification]")
     const core::VerificationResult cancelled = core::verifyModel(model, cancel);
     CHECK(cancelled.cancelled);
     CHECK(cancelled.findings.empty());
+}
+
+// --- The budget (issue 15) ---------------------------------------------------------
+// No time limit here (timing is the benchmarks' business): the node limit
+// decides, so that the results do not depend on the machine.
+
+TEST_CASE("Comparisons of INT variables with constants are decided as intervals, not combinations", "[verification]")
+{
+    // 12 comparisons per condition over 8 INT variables: with a diagram
+    // variable per comparison this exhausted 4,000,000 nodes (GV100).
+    const core::Model model = factory::comparisonVerificationModel(12, false);
+    core::VerificationOptions options;
+    options.timeLimit = std::chrono::milliseconds(0);
+    options.maxDiagramNodes = 500'000;
+    const core::VerificationResult result = core::verifyModel(model, options);
+    INFO(describe(result));
+    REQUIRE(result.exhaustive);
+    CHECK(findingsWith(result, code::kIncomplete).empty());
+    CHECK(result.reachableSteps.size() >= 10);
+    // Comparisons with constants only: exact, so every counterexample replays.
+    for (const core::VerificationFinding& finding : result.findings) {
+        if (!finding.counterexample)
+            continue;
+        INFO(finding.code << " " << core::verificationElementLabel(finding) << "\n" << finding.counterexample->text);
+        CHECK(finding.counterexample->confirmed);
+    }
+}
+
+TEST_CASE("Mixed operands (BOOL, INT, REAL, opaque) are decided within the node budget", "[verification]")
+{
+    // 8 operands: 24 still exceed this node budget in F1 (GV100, see the benchmark).
+    const core::Model model = factory::comparisonVerificationModel(8, true);
+    core::VerificationOptions options;
+    options.timeLimit = std::chrono::milliseconds(0);
+    options.maxDiagramNodes = 500'000;
+    const core::VerificationResult result = core::verifyModel(model, options);
+    INFO(describe(result));
+    CHECK(result.exhaustive);
+}
+
+TEST_CASE("Where the budget runs out, GV100 names the part and decided properties are still reported",
+          "[verification]")
+{
+    const core::Model model = factory::hugeConditionVerificationModel();
+    core::VerificationOptions options;
+    options.timeLimit = std::chrono::milliseconds(0);
+    options.maxDiagramNodes = 100'000;
+    const core::VerificationResult result = core::verifyModel(model, options);
+    INFO(describe(result));
+    CHECK_FALSE(result.exhaustive);
+    const auto incomplete = findingsWith(result, code::kIncomplete);
+    REQUIRE_FALSE(incomplete.empty());
+    // Every GV100 names what it is about, and the steps with a huge condition are among them.
+    std::set<std::string> named;
+    for (const core::VerificationFinding* finding : incomplete) {
+        REQUIRE(finding->elements.size() == 1);
+        named.insert(finding->elements.front());
+        CHECK(finding->message.find("not decided") != std::string::npos);
+    }
+    CHECK((named.count("A1") || named.count("A1->F1")));
+    CHECK((named.count("F1") || named.count("F1->A2")));
+    // A dead transition elsewhere is still proven dead ("never" stays sound).
+    const core::VerificationFinding* dead = findingFor(result, code::kDeadTransition, "D2->A5");
+    REQUIRE(dead != nullptr);
+    CHECK(dead->message.find("no values of the variables") != std::string::npos);
+    // Nothing is claimed about what was not decided.
+    for (const core::VerificationFinding& finding : result.findings) {
+        if (finding.code != code::kIncomplete)
+            CHECK_FALSE(named.count(finding.elements.front()));
+    }
+}
+
+TEST_CASE("The time limit ends a run early with GV100 findings", "[verification]")
+{
+    const core::Model model = factory::hugeConditionVerificationModel();
+    core::VerificationOptions options;
+    options.timeLimit = std::chrono::milliseconds(1);
+    const core::VerificationResult result = core::verifyModel(model, options);
+    INFO(describe(result));
+    CHECK_FALSE(result.exhaustive);
+    REQUIRE_FALSE(findingsWith(result, code::kIncomplete).empty());
+    CHECK(findingsWith(result, code::kIncomplete).front()->message.find("time limit of 1 ms") != std::string::npos);
 }
 
 TEST_CASE("The stress model is explored exhaustively and symbolically", "[verification]")

@@ -162,6 +162,65 @@ core::Model verificationStressModel()
     return model;
 }
 
+core::Model comparisonVerificationModel(int operands, bool mixed)
+{
+    core::Model model;
+    std::vector<std::string> ints;
+    std::vector<std::string> bools;
+    for (int i = 0; i < 8; ++i) {
+        ints.push_back((i % 2 ? "Level" : "Speed") + std::to_string(i));
+        require(model.addVariable(variable(ints.back(), core::IecType::Int, "", "")));
+        bools.push_back("In" + std::to_string(i));
+        require(model.addVariable(variable(bools.back(), core::IecType::Bool, "", "")));
+    }
+    require(model.addVariable(variable("Temperature", core::IecType::Real, "", "")));
+    require(model.addVariable(variable("Pressure", core::IecType::Real, "", "")));
+    static const std::vector<std::string> relations{">", "<=", "<", ">=", "=", "<>"};
+    std::mt19937 random(static_cast<std::uint32_t>(2026 + operands + (mixed ? 1000 : 0)));
+    for (const core::Transition& t : model.transitions()) {
+        std::string condition;
+        for (int operand = 0; operand < operands; ++operand) {
+            if (operand > 0)
+                condition += operand % 3 == 2 ? " OR " : " AND ";
+            const int kind = mixed ? operand % 4 : 0;
+            if (kind == 0)
+                condition += pick(random, ints) + " " + pick(random, relations) + " "
+                    + std::to_string(between(random, 0, 300));
+            else if (kind == 1)
+                condition += (operand % 8 == 1 ? "NOT " : "") + pick(random, bools);
+            else if (kind == 2)
+                condition += std::string(operand % 8 == 2 ? "Temperature" : "Pressure") + " > "
+                    + std::to_string(between(random, 0, 100)) + ".5";
+            else
+                condition += pick(random, ints) + " + " + pick(random, ints) + " > "
+                    + std::to_string(between(random, 0, 400));
+        }
+        require(model.setCondition(t.id, condition));
+    }
+    return model;
+}
+
+core::Model hugeConditionVerificationModel()
+{
+    core::Model model = comparisonVerificationModel(12, false);
+    std::mt19937 random(15);
+    for (const char* id : {"A1->F1", "F1->A2"}) {
+        std::string condition;
+        while (condition.size() < 5000) {
+            if (!condition.empty())
+                condition += " OR ";
+            condition += "(In" + std::to_string(between(random, 0, 7)) + " AND Speed"
+                + std::to_string(2 * between(random, 0, 3)) + " > " + std::to_string(between(random, 0, 300))
+                + " AND NOT In" + std::to_string(between(random, 0, 7)) + " AND Level"
+                + std::to_string(2 * between(random, 0, 3) + 1) + " <= " + std::to_string(between(random, 0, 300))
+                + ")";
+        }
+        require(model.setCondition(id, condition));
+    }
+    require(model.setCondition("D2->A5", "Speed0 > 10 AND Speed0 < 5"));
+    return model;
+}
+
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count)
 {
     std::vector<std::string> stepIds;

@@ -28,6 +28,21 @@ core::Model stressModel();
 // transition out of a macro or enclosing step.
 core::Model verificationStressModel();
 
+// For the verifier's budget (issue 15): every step and transition of the
+// template visible, 8 INT, 8 BOOL and 2 REAL variables, and on every
+// transition a condition of `operands` operands joined by AND and OR.
+// Comparisons only (`Speed3 > 10 AND Level5 <= 200 ...`) when `mixed` is
+// false; otherwise comparisons of INT and REAL variables with constants,
+// BOOL variables (some negated) and opaque comparisons (`Speed1 + Speed2 >
+// 40`) in turn. The same arguments give the same model.
+core::Model comparisonVerificationModel(int operands, bool mixed);
+
+// The comparison model with 12 operands, except that the conditions of
+// A1->F1 and F1->A2 are about 5,000 characters long (`(In0 AND Speed3 > 17)
+// OR ...` over 16 variables), and D2->A5 can never fire (`Speed0 > 10 AND
+// Speed0 < 5`): that GV102 must be found whatever happens to the huge ones.
+core::Model hugeConditionVerificationModel();
+
 // Applies `count` random operations (valid and invalid ones: the model must
 // refuse the latter) and returns how many the model accepted.
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count);
