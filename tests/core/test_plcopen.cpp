@@ -1,3 +1,4 @@
+#include "hostilemodels.h"
 #include "samplemodels.h"
 
 #include "core/checks.h"
@@ -16,6 +17,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <regex>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -417,14 +420,18 @@ TEST_CASE("Reading a PLCopen file says clearly what is wrong", "[plcopen]")
         CHECK(error.file == "bad.xml");
         return error;
     };
-    SECTION("malformed XML gives the line")
+    SECTION("malformed XML gives the line and column")
     {
         const LoadError unclosed = errorOf("<?xml version=\"1.0\"?>\n<project>\n  <types>\n</project>\n");
-        CHECK(unclosed.location == "line 3"); // where the unclosed element starts
-        CHECK(unclosed.message == "not well-formed XML: an element is not closed by its matching end tag");
+        CHECK(unclosed.location == "line 4, column 1"); // the end tag that does not match
+        CHECK(unclosed.message == "not well-formed XML: an element is not closed by its matching end tag: "
+                                  "</project> here closes <types> of line 3, column 3");
         const LoadError attribute = errorOf("<project>\n\n<types a=1/></project>");
-        CHECK(attribute.location == "line 3");
-        CHECK(attribute.message.find("not well-formed XML") != std::string::npos);
+        CHECK(attribute.location == "line 3, column 10");
+        CHECK(attribute.message == "not well-formed XML: the value of the attribute 'a' is not quoted");
+        const LoadError unfinished = errorOf("<project>\n  <types>");
+        CHECK(unfinished.location == "line 2, column 3");
+        CHECK(unfinished.message == "not well-formed XML: the element <types> is not closed");
     }
     SECTION("empty text")
     {
@@ -533,4 +540,331 @@ TEST_CASE("Model files of PLCopen XML are recognised and opened", "[plcopen]")
     CHECK(foreign.format == ModelFormat::PlcOpen);
     CHECK_FALSE(foreign.ok());
     CHECK(foreign.error.toString().find("other.xml: a PLCopen file without a GG Studio model") == 0);
+}
+
+namespace {
+
+std::string exportedFile()
+{
+    const Model model = samples::caseStudyModel();
+    return writePlcOpenXml(buildPlcProject(model, Dialect::Iec), model, fixedClock());
+}
+
+// An exported file with the fragment added as the last child of <project>.
+std::string exportedFileWithChild(const std::string& fragment)
+{
+    std::string xml = exportedFile();
+    const std::size_t end = xml.rfind("</project>");
+    REQUIRE(end != std::string::npos);
+    return xml.insert(end, fragment);
+}
+
+LoadError readError(const std::string& xml)
+{
+    auto loaded = readPlcOpenModel(xml, "bad.xml");
+    REQUIRE(std::holds_alternative<LoadError>(loaded));
+    return std::get<LoadError>(loaded);
+}
+
+} // namespace
+
+TEST_CASE("Character references that are no XML character are refused where they are", "[plcopen]")
+{
+    const LoadError nul = readError("<project>\n  <a>&#0;</a>\n</project>");
+    CHECK(nul.location == "line 2, column 6");
+    CHECK(nul.message == "not well-formed XML: the character reference &#0; stands for U+0000 (NUL), "
+                         "which XML 1.0 cannot carry");
+    const LoadError control = readError("<project a=\"x&#1;\"/>");
+    CHECK(control.location == "line 1, column 14");
+    CHECK(control.message == "not well-formed XML: the character reference &#1; stands for U+0001, "
+                             "which XML 1.0 cannot carry");
+    const LoadError nonCharacter = readError("<project>&#xFFFE;</project>");
+    CHECK(nonCharacter.location == "line 1, column 10");
+    CHECK(nonCharacter.message == "not well-formed XML: the character reference &#xFFFE; stands for U+FFFE, "
+                                  "which XML 1.0 cannot carry");
+    const LoadError surrogate = readError("<project>\n&#xD800;</project>");
+    CHECK(surrogate.location == "line 2, column 1");
+    CHECK(surrogate.message == "not well-formed XML: the character reference &#xD800; stands for U+D800, "
+                               "a surrogate, which XML 1.0 cannot carry");
+    const LoadError beyond = readError("<project>&#x110000;</project>");
+    CHECK(beyond.location == "line 1, column 10");
+    CHECK(beyond.message == "not well-formed XML: the character reference &#x110000; is beyond U+10FFFF, "
+                            "the last Unicode character");
+    const LoadError huge = readError("<project>&#99999999999999999999999999;</project>");
+    CHECK(huge.message.find("is beyond U+10FFFF") != std::string::npos);
+    // In an exported file the reference is refused, not turned into nothing.
+    CHECK(readError(exportedFileWithChild("<documentation>&#0;</documentation>")).message.find("&#0;")
+          != std::string::npos);
+}
+
+TEST_CASE("A raw NUL byte is refused where it is", "[plcopen]")
+{
+    const LoadError error = readError(std::string("<project>\n<a>x\0</a></project>", 26));
+    CHECK(error.location == "line 2, column 5");
+    CHECK(error.message == "not well-formed XML: a NUL byte (U+0000), which XML 1.0 cannot carry");
+    std::string exported = exportedFile();
+    exported.insert(exported.find("<types>"), 1, '\0');
+    CHECK(readError(exported).message.find("a NUL byte") != std::string::npos);
+}
+
+TEST_CASE("A PLCopen file has exactly one root element", "[plcopen]")
+{
+    const LoadError second = readError(exportedFile() + "<project/>\n");
+    CHECK(second.message == "not well-formed XML: a second root element <project>: "
+                            "an XML file has exactly one root element");
+    const LoadError small = readError("<project/>\n  <other/>");
+    CHECK(small.location == "line 2, column 3");
+    const LoadError text = readError("<project/>\nmore");
+    CHECK(text.location == "line 2, column 1");
+    CHECK(text.message == "not well-formed XML: text after the root element");
+}
+
+TEST_CASE("Entities are neither declared nor expanded", "[plcopen]")
+{
+    SECTION("an undeclared entity")
+    {
+        const LoadError error = readError("<project>\n  <a>&foo;</a></project>");
+        CHECK(error.location == "line 2, column 6");
+        CHECK(error.message == "not well-formed XML: the entity &foo; is not declared "
+                               "(XML predefines only &lt; &gt; &amp; &apos; &quot;)");
+        CHECK(readError(exportedFileWithChild("<documentation>&foo;</documentation>")).message.find("&foo;")
+              != std::string::npos);
+    }
+    SECTION("a raw '&'")
+    {
+        const LoadError inText = readError("<project>R&D</project>");
+        CHECK(inText.location == "line 1, column 11");
+        CHECK(inText.message == "not well-formed XML: a '&' that starts no reference (write it as &amp;)");
+        const LoadError inAttribute = readError("<project a=\"x & y\"/>");
+        CHECK(inAttribute.location == "line 1, column 15");
+        CHECK(readError("<project>&amp</project>").message
+              == "not well-formed XML: the reference &amp is not closed by ';'");
+    }
+    SECTION("billion laughs")
+    {
+        const std::string laughs = "<?xml version=\"1.0\"?>\n"
+                                   "<!DOCTYPE project [\n"
+                                   "  <!ENTITY lol \"lol\">\n"
+                                   "  <!ENTITY lol2 \"&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;\">\n"
+                                   "  <!ENTITY lol3 \"&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;\">\n"
+                                   "]>\n<project>&lol3;</project>";
+        const LoadError error = readError(laughs);
+        CHECK(error.location == "line 2, column 1");
+        CHECK(error.message == "not well-formed XML: a DOCTYPE: GG Studio reads no document type "
+                               "declaration and expands no entity (PLCopen files have none)");
+    }
+    SECTION("an external entity")
+    {
+        const std::string external = "<!DOCTYPE project [<!ENTITY secret SYSTEM \"file:///etc/passwd\">]>"
+                                     "<project>&secret;</project>";
+        const LoadError error = readError(external);
+        CHECK(error.location == "line 1, column 1");
+        CHECK(error.message.find("a DOCTYPE") != std::string::npos);
+        CHECK(error.message.find("root:") == std::string::npos);
+    }
+    SECTION("well-formed references are read")
+    {
+        const std::string xml
+            = exportedFileWithChild("<documentation a=\"&#233;&lt;\">&#x1F600;&#65;&amp;&lt;&gt;&apos;&quot;&#x10FFFF;"
+                                    "</documentation>");
+        auto loaded = readPlcOpenModel(xml, "references.xml");
+        REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(loaded));
+        CHECK(std::get<std::unique_ptr<Model>>(loaded)->sameContent(samples::caseStudyModel()));
+    }
+}
+
+TEST_CASE("An element with very many attributes is refused, not read for minutes", "[plcopen]")
+{
+    auto withAttributes = [](int count) {
+        std::string xml = "<?xml version=\"1.0\"?>\n<project";
+        for (int i = 0; i < count; ++i)
+            xml += " a" + std::to_string(i) + "=\"v\"";
+        return xml + "/>\n";
+    };
+    const LoadError justOver = readError(withAttributes(33));
+    CHECK(justOver.location == "line 2, column 256");
+    CHECK(justOver.message == "not well-formed XML: the element <project> has more than 32 attributes "
+                              "(GG Studio reads at most 32 on one element)");
+    const std::string huge = withAttributes(200000);
+    CHECK(huge.size() > 2'200'000);
+    CHECK(readError(huge).message == justOver.message);
+    const LoadError duplicate = readError("<project a=\"1\" b=\"2\" a=\"3\"/>");
+    CHECK(duplicate.location == "line 1, column 22");
+    CHECK(duplicate.message == "not well-formed XML: the attribute 'a' appears twice in <project>");
+}
+
+namespace {
+
+// Every element of the document, depth first.
+void forEachElement(const XMLElement* element, const std::function<void(const XMLElement*)>& visit)
+{
+    visit(element);
+    for (const XMLElement* c = element->FirstChildElement(); c; c = c->NextSiblingElement())
+        forEachElement(c, visit);
+}
+
+// The ST text with its (* *) comments removed; fails on a comment left open.
+std::string stCode(const std::string& text)
+{
+    std::string code;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t open = text.find("(*", at);
+        code += text.substr(at, open == std::string::npos ? std::string::npos : open - at);
+        if (open == std::string::npos)
+            break;
+        const std::size_t close = text.find("*)", open + 2);
+        REQUIRE(close != std::string::npos);
+        at = close + 2;
+    }
+    return code;
+}
+
+} // namespace
+
+TEST_CASE("PLCopen XML of models with hostile user text declares only identifiers", "[plcopen][property]")
+{
+    const std::regex identifier("[A-Za-z_][A-Za-z0-9_]*");
+    const std::regex literal("TRUE|FALSE|[-+]?[0-9][0-9_]*(\\.[0-9][0-9_]*)?([eE][-+]?[0-9_]+)?");
+    for (std::uint32_t seed = 1; seed <= 60; ++seed) {
+        INFO("hostile model " << seed);
+        const Model model = samples::hostileModel(seed);
+        for (Dialect dialect : {Dialect::Iec, Dialect::Codesys}) {
+            const std::string xml = writePlcOpenXml(buildPlcProject(model, dialect), model, fixedClock());
+            ParsedXml parsed(xml);
+            forEachElement(parsed.root(), [&](const XMLElement* element) {
+                const std::string name = element->Name();
+                if (name == "variable") {
+                    const std::string declared = attr(element, "name");
+                    INFO("variable " << declared);
+                    CHECK(std::regex_match(declared, identifier));
+                    CHECK_FALSE(isIecKeyword(declared));
+                } else if (name == "simpleValue") {
+                    CHECK(std::regex_match(attr(element, "value"), literal));
+                } else if (name == "documentation") {
+                    const std::string text = joinedText(element->FirstChildElement());
+                    INFO("documentation " << text);
+                    CHECK(text.find("(*") == std::string::npos);
+                    CHECK(text.find("*)") == std::string::npos);
+                } else if (name == "ST") {
+                    const std::string code = stCode(joinedText(element->FirstChildElement()));
+                    CHECK(code.find(samples::kInjectedMarker) == std::string::npos);
+                }
+            });
+        }
+    }
+    // The schema holds as well (xmllint is slow: a few of them).
+    for (std::uint32_t seed = 1; seed <= 3; ++seed) {
+        const Model model = samples::hostileModel(seed);
+        CHECK(validatesAgainstSchema(writePlcOpenXml(buildPlcProject(model, Dialect::Iec), model, fixedClock()),
+                                     "hostile-" + std::to_string(seed) + ".xml"));
+    }
+}
+
+TEST_CASE("Documentation keeps no comment delimiter of the user's", "[plcopen]")
+{
+    Model model;
+    REQUIRE(model.addVariable({"Start", IecType::Bool, "", "button *) Injected := 1; (* S1\nsecond line"}));
+    REQUIRE(model.setStepComment("F1", "fills (*) bottles *)"));
+    REQUIRE(model.setStepType("F1", StepType::Macro));
+    const std::string xml = writePlcOpenXml(buildPlcProject(model, Dialect::Iec), model, fixedClock());
+    ParsedXml parsed(xml);
+    const XMLElement* globals = path(parsed.root(), {"instances", "configurations", "configuration", "globalVars"});
+    CHECK(joinedText(path(variableNamed(globals, "Start"), {"documentation", "xhtml:p"}))
+          == "button * ) Injected := 1; ( * S1\nsecond line");
+    CHECK(joinedText(path(pouNamed(parsed.root(), "F1_FB"), {"documentation", "xhtml:p"}))
+          == "Nested behaviour of F1 Normal production (macro-step): fills ( * ) bottles * )");
+}
+
+TEST_CASE("The well-formedness check refuses what XML 1.0 refuses, at the first wrong byte", "[plcopen]")
+{
+    struct Case {
+        std::string text;
+        std::size_t offset;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {"", 0, "the file holds no XML element"},
+        {"  \n", 3, "the file holds no XML element"},
+        {"<?xml version=\"1.0\"?><!-- only a comment -->", 44, "the file holds no XML element"},
+        {"hello<project/>", 0, "text before the root element"},
+        {"<project/><!-- fine --><?pi fine?>\n<", 35, "markup after the root element"},
+        {"<project>\x01</project>", 9, "the character U+0001, which XML 1.0 cannot carry"},
+        {"<project>\xEF\xBF\xBF</project>", 9, "the character U+FFFF, which XML 1.0 cannot carry"},
+        {"<project>\xC3</project>", 9, "invalid UTF-8 (GG Studio reads PLCopen files in UTF-8)"},
+        {" <?xml version=\"1.0\"?><project/>", 1, "an XML declaration that is not at the very start of the file"},
+        {"<?xml version=\"1.1\"?><project/>", 0, "XML version '1.1' is not read: GG Studio reads XML 1.0"},
+        {"<?xml encoding=\"UTF-8\"?><project/>", 0, "the XML declaration does not start with its version"},
+        {"<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><project/>", 0,
+         "the encoding 'ISO-8859-1': GG Studio reads PLCopen files in UTF-8"},
+        {"<?xml version=\"1.0\" standalone=\"maybe\"?><project/>", 0,
+         "standalone must be 'yes' or 'no' in the XML declaration"},
+        {"<?xml version=\"1.0\"encoding=\"UTF-8\"?><project/>", 19, "expected a space or '?>' in the XML declaration"},
+        {"<project><!-- a -- b --></project>", 16, "'--' inside a comment"},
+        {"<project><!-- open", 9, "a comment is not closed by '-->'"},
+        {"<project><![CDATA[ open", 9, "a CDATA section is not closed by ']]>'"},
+        {"<project>a ]]> b</project>", 11, "']]>' in text (write it as ]]&gt;)"},
+        {"<project>1 < 2</project>", 11, "a '<' that starts no markup (write it as &lt;)"},
+        {"<project a=\"1 < 2\"/>", 14, "a '<' in the value of the attribute 'a' (write it as &lt;)"},
+        {"<project a=\"1\"b=\"2\"/>", 14, "expected a space, '>' or '/>' in the start tag <project>"},
+        {"<project a/>", 10, "expected '=' after the attribute 'a'"},
+        {"<project a=\"open/>", 9, "the value of the attribute 'a' is not closed by \""},
+        {"<project a=\"1\"", 0, "the start tag <project> is not closed by '>'"},
+        {"<project 1=\"1\"/>", 9, "expected an attribute name, '>' or '/>' in the start tag <project>"},
+        {"<project></project >x", 20, "text after the root element"},
+        {"<project></project", 18, "expected '>' to close the end tag </project>"},
+        {"<project><a></b></project>", 12,
+         "an element is not closed by its matching end tag: </b> here closes <a> of line 1, column 10"},
+        {"<project>&#;</project>", 9, "a malformed character reference: expected digits and ';' after '&#'"},
+        {"<project>&#x12</project>", 9,
+         "a malformed character reference: expected hexadecimal digits and ';' after '&#x'"},
+        {"<project>&# 65;</project>", 9, "a malformed character reference: expected digits and ';' after '&#'"},
+        {"<project><?xml version=\"1.0\"?></project>", 9,
+         "an XML declaration that is not at the very start of the file"},
+        {"<project><!DOCTYPE x></project>", 9, "a '<' that starts no markup (write it as &lt;)"},
+        {"<project><!ENTITY x \"y\"></project>", 9, "a '<' that starts no markup (write it as &lt;)"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.text);
+        const XmlCheck check = checkWellFormedXml(c.text);
+        REQUIRE(check.problem.has_value());
+        CHECK(check.problem->offset == c.offset);
+        CHECK(check.problem->message == c.message);
+    }
+}
+
+TEST_CASE("The well-formedness check accepts what XML 1.0 allows", "[plcopen]")
+{
+    const std::vector<std::string> wellFormed = {
+        "<project/>",
+        "\xEF\xBB\xBF<?xml version=\"1.0\" encoding=\"utf-8\" standalone='yes' ?>\r\n<project/>\n",
+        "<?xml version=\"1.0\"?>\n<!-- a - comment --><?target data?><ppx:project xmlns:ppx=\"urn:x\">"
+        "<ppx:a b = 'x\"y' c=\"it's &gt; &#x41;\">text &amp; more > fine ]] ]><![CDATA[<&]]]]><!-- c --><?p?>"
+        "</ppx:a   ></ppx:project>  <!-- after --> \n",
+        "<caf\xC3\xA9 \xC3\xA9t\xC3\xA9=\"\xE2\x82\xAC\">\xF0\x9F\x98\x80&#x10FFFF;&#xFFFD;&#9;&#10;&#13;</caf\xC3\xA9>",
+    };
+    for (const std::string& text : wellFormed) {
+        INFO(text);
+        const XmlCheck check = checkWellFormedXml(text);
+        CHECK_FALSE(check.problem.has_value());
+        if (check.problem)
+            INFO(check.problem->message);
+    }
+    CHECK(checkWellFormedXml("<?xml version=\"1.0\"?>\n<project/>").rootOffset == 22);
+
+    // Nesting: as deep as kMaxXmlDepth reads, one level more is refused at its start tag.
+    auto nested = [](std::size_t depth) {
+        std::string open, close;
+        for (std::size_t i = 0; i < depth; ++i)
+            open += "<e>", close += "</e>";
+        return open + close;
+    };
+    CHECK_FALSE(checkWellFormedXml(nested(kMaxXmlDepth)).problem.has_value());
+    const XmlCheck tooDeep = checkWellFormedXml(nested(kMaxXmlDepth + 1));
+    REQUIRE(tooDeep.problem.has_value());
+    CHECK(tooDeep.problem->offset == 3 * kMaxXmlDepth);
+    CHECK(tooDeep.problem->message == "elements nested deeper than 64 levels");
+    CHECK(checkWellFormedXml("<project>&#" + std::string(100000, '9') + ";</project>").problem->message
+          == "the character reference &#" + std::string(38, '9')
+                 + "... is beyond U+10FFFF, the last Unicode character");
 }
