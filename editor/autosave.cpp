@@ -2,6 +2,7 @@
 
 #include "editor/document.h"
 
+#include "core/fileio.h"
 #include "core/modelfiles.h"
 
 #include <QCryptographicHash>
@@ -11,7 +12,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLockFile>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <QTimer>
 #include <QUndoStack>
@@ -118,12 +118,13 @@ bool writeSidecar(const QString& path, const OriginalRecord& original, QString* 
     if (!original.digest.isEmpty())
         info.insert(kOriginalDigestKey, QString::fromLatin1(original.digest));
     info.insert(QStringLiteral("savedAt"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(QJsonDocument(info).toJson()) < 0 || !file.commit()) {
-        *errorMessage = QStringLiteral("%1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
+    // Through core's writer, like the copy: atomic, and never onto a FIFO or a device.
+    const QByteArray json = QJsonDocument(info).toJson();
+    const core::Status status = core::writeFileAtomically(QFile::encodeName(path).toStdString(),
+                                                          std::string_view(json.constData(), json.size()));
+    if (!status)
+        *errorMessage = QString::fromStdString(status.message);
+    return static_cast<bool>(status);
 }
 
 bool writeCopy(const core::Model& model, const QString& path, QString* errorMessage)

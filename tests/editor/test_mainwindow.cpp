@@ -253,6 +253,7 @@ private slots:
     void chartPicturesAreWritten();
     void saveOntoAFifoKeepsTheEditAndSaysWhy();
     void exportsNeverReplaceAFifoOrADevice();
+    void autosaveNeverReplacesAFifo();
     void unsavedChangesAskBeforeOpening();
     void modelSettingsAreOneUndoStep();
     void layoutIsRestored();
@@ -575,6 +576,31 @@ void TestMainWindow::exportsNeverReplaceAFifoOrADevice()
         QVERIFY2(error.contains(QStringLiteral("a character device, not a")), qPrintable(name + (": " + error)));
         QVERIFY2(isCharacterDevice(device), name);
     }
+}
+
+void TestMainWindow::autosaveNeverReplacesAFifo()
+{
+    discardRecoveries();
+    Document document;
+    Autosave autosave(document);
+    QVERIFY(document.push(new SetStepHiddenCommand(document, QStringLiteral("A3"), true)));
+    QVERIFY(autosave.writeNow()); // the session's copy and sidecar, locked
+    const QString copy = autosave.recoveryPath();
+    const QString sidecar = copy.chopped(int(QStringLiteral(".json").size())) + QStringLiteral(".info");
+    const QStringList fifos{sidecar, copy};
+    const QStringList steps{QStringLiteral("A4"), QStringLiteral("A5")};
+    for (int i = 0; i < fifos.size(); ++i) {
+        QVERIFY(QFile::remove(fifos[i]));
+        QCOMPARE(::mkfifo(localPath(fifos[i]).constData(), 0644), 0);
+        QVERIFY(document.push(new SetStepHiddenCommand(document, steps[i], true)));
+        QVERIFY2(!autosave.writeNow(), qPrintable(fifos[i]));
+        QVERIFY2(autosave.lastError().contains(QStringLiteral("it is a named pipe (FIFO), not a regular file")),
+                 qPrintable(autosave.lastError()));
+        QVERIFY(isFifo(fifos[i]));
+        QVERIFY(QFile::remove(fifos[i]));
+        QVERIFY(autosave.writeNow());
+    }
+    autosave.discard();
 }
 
 void TestMainWindow::unsavedChangesAskBeforeOpening()
