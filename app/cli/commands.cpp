@@ -4,7 +4,9 @@
 
 #include "core/checks.h"
 #include "core/fileio.h"
+#include "core/gggeneratorformat.h"
 #include "core/modelfiles.h"
+#include "core/nativeformat.h"
 #include "core/plcopenwriter.h"
 #include "core/scenario.h"
 #include "core/simulator.h"
@@ -27,14 +29,14 @@ const char* const kUsage =
     "Usage: ggstudio-cli COMMAND [ARGUMENTS]\n"
     "\n"
     "Commands:\n"
-    "  new OUT [--to native|gg-generator]\n"
+    "  new OUT|- [--to native|gg-generator]\n"
     "      Write the GEMMA template as a new model file.\n"
     "  validate FILE...\n"
     "      Check models; print FILE: ELEMENT: severity: CODE: message lines.\n"
     "      Exit 0 without errors, 1 when a model has errors, 2 when a file cannot be read.\n"
-    "  convert IN OUT [--to native|gg-generator]\n"
+    "  convert IN OUT|- [--to native|gg-generator]\n"
     "      Convert between GG Studio JSON, GG-Generator JSON and (as input) GG Studio PLCopen XML.\n"
-    "  export MODEL -o OUT [--dialect iec|codesys] [--format plcopen|st|st-folder]\n"
+    "  export MODEL -o OUT|- [--dialect iec|codesys] [--format plcopen|st|st-folder]\n"
     "         [--cycle-time 20ms] [--force]\n"
     "      Generate the PLC program: PLCopen XML (default for .xml), one IEC Structured Text\n"
     "      file (default for .st) or a folder with one .st file per POU. The dialect and\n"
@@ -55,7 +57,9 @@ const char* const kUsage =
     "      at every scan, as the skeleton FB). Exit 1 when a finding is an error or a warning.\n"
     "\n"
     "Formats: IN is recognised by its content. OUT is GG-Generator JSON when it ends in\n"
-    ".gg.json, GG Studio JSON otherwise; --to overrides the extension.\n"
+    ".gg.json, GG Studio JSON otherwise; --to overrides the extension. OUT - is standard\n"
+    "output (export -o - needs --format plcopen or st). A file is only ever replaced when\n"
+    "it is a regular file: never a FIFO, a device or a socket (exit 2).\n"
     "\n"
     "Options:\n"
     "  --help       Show this help.\n"
@@ -90,11 +94,22 @@ int usageError(std::ostream& err, const std::string& message)
     return UsageError;
 }
 
-int save(const core::Model& model, const std::string& path, core::ModelFormat format, std::ostream& err)
+// "-" where a command writes one file is standard output.
+bool isStandardOutput(const std::string& path)
 {
+    return path == "-";
+}
+
+int save(const core::Model& model, const std::string& path, core::ModelFormat format, Streams streams)
+{
+    if (isStandardOutput(path)) {
+        streams.out << (format == core::ModelFormat::GGGenerator ? core::saveGGGeneratorJson(model)
+                                                                 : core::saveNativeJson(model));
+        return Success;
+    }
     core::Status status = core::saveModelFile(model, path, format);
     if (!status) {
-        err << path << ": " << status.message << "\n";
+        streams.err << path << ": " << status.message << "\n";
         return UnreadableInput;
     }
     return Success;
@@ -116,7 +131,7 @@ int commandNew(const Arguments& args, Streams streams)
     core::ModelFormat format;
     if (!outputFormat(args, path, format, streams.err))
         return UsageError;
-    return save(core::Model(), path, format, streams.err);
+    return save(core::Model(), path, format, streams);
 }
 
 int validateOne(const std::string& path, Streams streams)
@@ -156,7 +171,7 @@ int commandConvert(const Arguments& args, Streams streams)
     std::unique_ptr<core::Model> model = loadOrReport(input, streams.err);
     if (!model)
         return UnreadableInput;
-    return save(*model, output, format, streams.err);
+    return save(*model, output, format, streams);
 }
 
 // The dialect from --dialect, else the model's setting.
@@ -176,7 +191,10 @@ bool chooseExportFormat(const Arguments& args, const std::string& output, Export
 {
     std::string name = args.value("--format").value_or("");
     if (name.empty()) {
-        if (endsWith(output, ".xml")) {
+        if (isStandardOutput(output)) {
+            err << "ggstudio-cli: -o - writes to standard output: say what with --format plcopen or st\n";
+            return false;
+        } else if (endsWith(output, ".xml")) {
             name = "plcopen";
         } else if (endsWith(output, ".st")) {
             name = "st";
@@ -213,6 +231,15 @@ bool reportExportErrors(const std::string& path, const core::Model& model, bool 
     return force;
 }
 
+// The one file of a PLCopen or single-file export, for standard output.
+std::string exportText(const core::Model& model, core::Dialect dialect, ExportFormat format)
+{
+    if (format == ExportFormat::PlcOpen)
+        return core::writePlcOpenXml(core::buildPlcProject(model, dialect), model);
+    // Always IEC, as core::exportStSingleFile writes it.
+    return core::formatSingleFileIec(core::buildPlcProject(model, core::Dialect::Iec));
+}
+
 core::Status writeExport(const core::Model& model, core::Dialect dialect, ExportFormat format,
                          const std::string& output)
 {
@@ -238,6 +265,8 @@ int commandExport(const Arguments& args, Streams streams)
     ExportFormat format;
     if (!chooseExportFormat(args, *output, format, streams.err))
         return UsageError;
+    if (format == ExportFormat::StFolder && isStandardOutput(*output))
+        return usageError(streams.err, "--format st-folder writes a folder: it cannot go to standard output");
 
     std::unique_ptr<core::Model> model = loadOrReport(input, streams.err);
     if (!model)
@@ -258,6 +287,10 @@ int commandExport(const Arguments& args, Streams streams)
     }
     if (!reportExportErrors(input, *model, args.has("--force"), streams.err))
         return ModelHasErrors;
+    if (isStandardOutput(*output)) {
+        streams.out << exportText(*model, dialect, format);
+        return Success;
+    }
     if (core::Status status = writeExport(*model, dialect, format, *output); !status) {
         streams.err << *output << ": " << status.message << "\n";
         return UnreadableInput;

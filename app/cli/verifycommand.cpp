@@ -121,6 +121,11 @@ int commandVerify(const Arguments& args, Streams streams)
         streams.err << "ggstudio-cli: --counterexamples needs a directory\nTry 'ggstudio-cli --help'.\n";
         return UsageError;
     }
+    if (directory && *directory == "-") {
+        streams.err << "ggstudio-cli: --counterexamples writes a folder: standard output carries the findings\n"
+                       "Try 'ggstudio-cli --help'.\n";
+        return UsageError;
+    }
     core::LoadedModel loaded = core::loadModelFile(path);
     if (!loaded.ok()) {
         streams.err << loaded.error.toString() << "\n";
@@ -137,6 +142,10 @@ int commandVerify(const Arguments& args, Streams streams)
     for (const std::string& id : automatic)
         options.complete[id] = core::CompleteAssumption::Automatic;
     if (directory) {
+        if (core::Status target = core::checkFolderTarget(*directory); !target) {
+            streams.err << *directory << ": " << target.message << "\n";
+            return UnreadableInput;
+        }
         std::error_code error;
         std::filesystem::create_directories(*directory, error);
         if (error) {
@@ -147,6 +156,11 @@ int commandVerify(const Arguments& args, Streams streams)
     if (const std::optional<std::string> promela = args.value("--promela")) {
         if (promela->empty()) {
             streams.err << "ggstudio-cli: --promela needs an output file\nTry 'ggstudio-cli --help'.\n";
+            return UsageError;
+        }
+        if (*promela == "-") {
+            streams.err << "ggstudio-cli: --promela writes a file: standard output carries the findings\n"
+                           "Try 'ggstudio-cli --help'.\n";
             return UsageError;
         }
         core::PromelaOptions promelaOptions;
