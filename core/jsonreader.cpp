@@ -169,6 +169,13 @@ std::optional<json> parseStrictJson(std::string_view text, JsonReadError& error)
         error = {describePosition(problem->position), "invalid UTF-8: the file must be UTF-8 text"};
         return std::nullopt;
     }
+    // nlohmann's lexer takes a NUL byte for the end of the input (it also reads
+    // C strings): without this check, whatever follows a NUL would be ignored.
+    if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+        error = {describePosition(textPosition(text, nul)),
+            "a NUL byte: JSON text cannot contain one (inside a string, write \\u0000)"};
+        return std::nullopt;
+    }
     if (auto offset = findExcessiveNesting(text, kMaxJsonDepth)) {
         error = {describePosition(textPosition(text, *offset)),
             "nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels"};

@@ -2,7 +2,8 @@
 
 // Strict JSON reading shared by the model file loaders: stricter than
 // nlohmann::ordered_json::parse (duplicate keys, nesting depth and invalid UTF-8 are
-// errors with a location) plus typed accessors whose errors name the JSON
+// errors with a location, and so is a NUL byte, where nlohmann would stop
+// reading) plus typed accessors whose errors name the JSON
 // path ("/steps/F1/hidden: expected true or false, found \"yes\"").
 
 #include "core/loaderror.h"
@@ -31,7 +32,7 @@ struct JsonReadError {
 };
 
 // Parses the whole text as one JSON value, keeping the keys in file order.
-// Fails on invalid UTF-8, nesting deeper than kMaxJsonDepth, malformed JSON
+// Fails on invalid UTF-8, a NUL byte, nesting deeper than kMaxJsonDepth, malformed JSON
 // (with line and column) and duplicate object keys (with their JSON path).
 std::optional<nlohmann::ordered_json> parseStrictJson(std::string_view text, JsonReadError& error);
 

@@ -47,11 +47,13 @@ LoadedModel loadModelText(std::string_view text, const std::string& displayName)
         return fromResult(loadNativeJson(text, displayName), ModelFormat::Native);
     if (looksLikeGGGeneratorJson(text))
         return fromResult(loadGGGeneratorJson(text, displayName), ModelFormat::GGGenerator);
-    if (first == '\0')
+    // A NUL byte is no blank: such a file is not empty.
+    const bool nulFirst = first == '\0' && text.find('\0') != std::string_view::npos;
+    if (first == '\0' && !nulFirst)
         return failure(displayName, "the file is empty");
-    if (first == '{' || first == '[') {
+    if (first == '{' || first == '[' || nulFirst) {
         // JSON of neither kind: the native loader says precisely what is wrong
-        // (malformed JSON, or the missing "format").
+        // (malformed JSON, a NUL byte, or the missing "format").
         return fromResult(loadNativeJson(text, displayName), ModelFormat::Native);
     }
     return failure(displayName, "not a model file: expected a GG Studio model (JSON with \"format\": \""

@@ -433,6 +433,30 @@ TEST_CASE("Model files are recognised by their content", "[files]")
     CHECK_THAT(loaded.error.message, Catch::StartsWith("not a model file"));
 }
 
+TEST_CASE("A NUL byte in a model file is an error at its place, whatever the format", "[files]")
+{
+    const std::string nul(1, '\0');
+    // A GG-Generator file whose real content follows a NUL: the part before
+    // it used to load alone, as a template.
+    const std::string reference = filetests::readBinaryFile(fs::path(GGSTUDIO_REFERENCE_DIR) / "gg-generator/template.json");
+    LoadedModel loaded = loadModelText("{\"nodes\": [], \"connections\": []}\n" + nul + reference, "gg.json");
+    CHECK(loaded.format == ModelFormat::GGGenerator);
+    REQUIRE_FALSE(loaded.ok());
+    CHECK(loaded.error.toString()
+          == "gg.json: line 2, column 1: a NUL byte: JSON text cannot contain one (inside a string, write \\u0000)");
+
+    loaded = loadModelText(saveNativeJson(filetests::richNativeModel()) + nul + "garbage", "native.json");
+    CHECK(loaded.format == ModelFormat::Native);
+    REQUIRE_FALSE(loaded.ok());
+    CHECK_THAT(loaded.error.message, Catch::StartsWith("a NUL byte"));
+
+    // Not "the file is empty": it is not.
+    loaded = loadModelText(" " + nul + "{}", "binary.json");
+    REQUIRE_FALSE(loaded.ok());
+    CHECK(loaded.error.location == "line 1, column 2");
+    CHECK_THAT(loaded.error.message, Catch::StartsWith("a NUL byte"));
+}
+
 TEST_CASE("saveModelFile writes native and GG-Generator files that load back", "[files]")
 {
     ScratchFolder folder;
