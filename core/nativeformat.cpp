@@ -5,7 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include <charconv>
+#include <algorithm>
+#include <initializer_list>
+#include <limits>
 
 using json = nlohmann::ordered_json;
 using nlohmann::ordered_json;
@@ -57,15 +59,29 @@ std::string versionText()
     return std::to_string(kNativeFormatMajor) + "." + std::to_string(kNativeFormatMinor);
 }
 
-bool parseNumber(std::string_view text, int& value)
+// A version part: decimal digits only (no sign, no blanks), without leading
+// zeros so "1.01" cannot pass for "1.1". Parts too large for an int saturate,
+// which still orders them after every real version.
+bool parseVersionPart(std::string_view text, int& value)
 {
-    if (text.empty() || text.size() > 9)
+    if (text.empty() || (text.size() > 1 && text.front() == '0'))
         return false;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return error == std::errc() && end == text.data() + text.size();
+    long long number = 0;
+    for (char c : text) {
+        if (c < '0' || c > '9')
+            return false;
+        number = std::min<long long>(number * 10 + (c - '0'), std::numeric_limits<int>::max());
+    }
+    value = static_cast<int>(number);
+    return true;
 }
 
-void checkFormatAndVersion(const json& root)
+struct FormatVersion {
+    int major = 0;
+    int minor = 0;
+};
+
+FormatVersion checkFormatAndVersion(const json& root)
 {
     const json* format = findMember(root, "format");
     if (!format)
@@ -78,19 +94,57 @@ void checkFormatAndVersion(const json& root)
         failAt("/version", "missing; expected a version such as \"" + versionText() + "\"");
     const std::string version = readString(*versionValue, "/version");
     const std::size_t dot = version.find('.');
-    int major = 0;
-    int minor = 0;
-    if (dot == std::string::npos || !parseNumber(std::string_view(version).substr(0, dot), major)
-        || !parseNumber(std::string_view(version).substr(dot + 1), minor))
-        failAt("/version", "expected a version MAJOR.MINOR such as \"" + versionText() + "\", found \"" + version + "\"");
+    FormatVersion parsed;
+    if (dot == std::string::npos || !parseVersionPart(std::string_view(version).substr(0, dot), parsed.major)
+        || !parseVersionPart(std::string_view(version).substr(dot + 1), parsed.minor))
+        failAt("/version", "expected a version MAJOR.MINOR of two whole numbers such as \"" + versionText()
+            + "\", found " + describeJsonValue(*versionValue));
     const std::string supported = "this version reads format " + std::to_string(kNativeFormatMajor) + ".x";
-    if (major > kNativeFormatMajor)
+    if (parsed.major > kNativeFormatMajor)
         failAt("/version", "this file was written by a newer GG Studio (format " + version + "); " + supported);
-    if (major < kNativeFormatMajor)
+    if (parsed.major < kNativeFormatMajor)
         failAt("/version", "unsupported format version " + version + "; " + supported);
+    return parsed;
 }
 
-void readSettings(Model& model, const json& root)
+// Which keys an object may hold. A file of the version this build writes (or
+// older) must use only the known keys, so a misspelt key is an error rather
+// than a setting silently left at its default; a newer minor version may add
+// keys, and those are skipped.
+class KeyRule {
+public:
+    explicit KeyRule(FormatVersion version) : m_version(version) {}
+
+    void check(const json& object, const std::string& path, const char* what,
+               std::initializer_list<std::string_view> known) const
+    {
+        if (m_version.minor > kNativeFormatMinor)
+            return;
+        for (const auto& [key, value] : object.items()) {
+            if (std::find(known.begin(), known.end(), key) == known.end())
+                failAt(childPath(path, key), "unknown key \"" + key + "\" in " + what + "; format "
+                    + versionText() + " knows " + listKeys(known));
+        }
+    }
+
+private:
+    static std::string listKeys(std::initializer_list<std::string_view> keys)
+    {
+        std::string text;
+        std::size_t index = 0;
+        for (std::string_view key : keys) {
+            if (index > 0)
+                text += index + 1 == keys.size() ? " and " : ", ";
+            text += "\"" + std::string(key) + "\"";
+            ++index;
+        }
+        return text;
+    }
+
+    FormatVersion m_version;
+};
+
+void readSettings(Model& model, const json& root, const KeyRule& keys)
 {
     if (const json* name = findMember(root, "name"))
         require(model.setName(readString(*name, "/name")), "/name");
@@ -98,6 +152,7 @@ void readSettings(Model& model, const json& root)
     if (!settingsValue)
         return;
     const json& settings = expectObject(*settingsValue, "/settings");
+    keys.check(settings, "/settings", "the settings", {"cycleTimeMs", "dialect"});
     if (const json* cycle = findMember(settings, "cycleTimeMs")) {
         const long long value = readInteger(*cycle, "/settings/cycleTimeMs", kMinCycleTimeMs, kMaxCycleTimeMs);
         require(model.setCycleTimeMs(static_cast<int>(value)), "/settings/cycleTimeMs");
@@ -111,7 +166,7 @@ void readSettings(Model& model, const json& root)
     }
 }
 
-void readVariables(Model& model, const json& root)
+void readVariables(Model& model, const json& root, const KeyRule& keys)
 {
     const json* listValue = findMember(root, "variables");
     if (!listValue)
@@ -125,6 +180,7 @@ void readVariables(Model& model, const json& root)
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = childPath("/variables", i);
         const json& object = expectObject(list[i], path);
+        keys.check(object, path, "a variable", {"name", "type", "default", "comment"});
         VariableEntry entry = readVariableNameAndType(object, path, kVariableSpelling);
         if (const json* value = findMember(object, "default"))
             entry.variable.defaultValue = readString(*value, path + "/default");
@@ -135,7 +191,7 @@ void readVariables(Model& model, const json& root)
     addVariables(model, entries, "/variables");
 }
 
-void readSteps(Model& model, const json& root)
+void readSteps(Model& model, const json& root, const KeyRule& keys)
 {
     const json* stepsValue = findMember(root, "steps");
     if (!stepsValue)
@@ -146,7 +202,8 @@ void readSteps(Model& model, const json& root)
         const std::string path = childPath("/steps", id);
         if (!findTemplateState(id))
             failAt(path, "unknown step \"" + id + "\"; the template's steps are A1 to A7, F1 to F6 and D1 to D3");
-        if (const json* initial = findMember(expectObject(value, path), "initial"))
+        keys.check(expectObject(value, path), path, "a step", {"type", "initial", "hidden", "comment"});
+        if (const json* initial = findMember(value, "initial"))
             initialFlags.push_back({id, readBool(*initial, path + "/initial"), path + "/initial"});
     }
     applyInitialFlags(model, initialFlags, "/steps");
@@ -180,7 +237,7 @@ std::vector<std::string> readTokens(const json& value, const std::string& path)
     return tokens;
 }
 
-void readTransitions(Model& model, const json& root)
+void readTransitions(Model& model, const json& root, const KeyRule& keys)
 {
     const json* transitionsValue = findMember(root, "transitions");
     if (!transitionsValue)
@@ -193,7 +250,9 @@ void readTransitions(Model& model, const json& root)
         if (!transition)
             failAt(path, "unknown transition \"" + id
                 + "\"; transitions are named SOURCE->TARGET after the template, such as \"F1->A2\" or \"F->D1\"");
-        if (const json* order = findMember(expectObject(value, path), "order")) {
+        keys.check(expectObject(value, path), path, "a transition",
+                   {"condition", "order", "negated", "hidden", "tokens"});
+        if (const json* order = findMember(value, "order")) {
             const auto count = static_cast<long long>(model.outgoing(transition->source).size());
             orders.push_back({id, static_cast<int>(readInteger(*order, path + "/order", 1, count)), path + "/order"});
         }
@@ -216,12 +275,13 @@ void readTransitions(Model& model, const json& root)
 std::unique_ptr<Model> buildModel(const json& root)
 {
     expectObject(root, "");
-    checkFormatAndVersion(root);
+    const KeyRule keys(checkFormatAndVersion(root));
+    keys.check(root, "", "a model file", {"format", "version", "name", "settings", "steps", "transitions", "variables"});
     auto model = std::make_unique<Model>();
-    readSettings(*model, root);
-    readVariables(*model, root);
-    readSteps(*model, root);
-    readTransitions(*model, root);
+    readSettings(*model, root, keys);
+    readVariables(*model, root, keys);
+    readSteps(*model, root, keys);
+    readTransitions(*model, root, keys);
     return model;
 }
 

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 using namespace core;
 
@@ -236,19 +237,89 @@ TEST_CASE("Native: invalid UTF-8 is reported with line and column", "[files]")
 TEST_CASE("Native: nesting deeper than 64 levels is refused", "[files]")
 {
     // The root object is level 1, so 63 arrays inside it are allowed and 64 are not.
-    const auto nested = [](int depth) {
-        return nativeFile("\"extra\": " + std::string(static_cast<std::size_t>(depth), '[')
-            + std::string(static_cast<std::size_t>(depth), ']'));
+    // A newer minor version, where the unknown key "extra" is allowed.
+    const std::string header = "{\"format\": \"ggstudio-model\", \"version\": \"1.1\"";
+    const auto nested = [&](int depth) {
+        return header + ", \"extra\": " + std::string(static_cast<std::size_t>(depth), '[')
+            + std::string(static_cast<std::size_t>(depth), ']') + "}";
     };
     CHECK(loadOk(nested(63))->sameContent(Model()));
     const LoadError error = loadError(nested(64));
     CHECK(error.message == "nesting deeper than 64 levels");
-    CHECK(error.location == "line 1, column " + std::to_string(kHeader.size() + 11 + 64));
+    CHECK(error.location == "line 1, column " + std::to_string(header.size() + 11 + 64));
 
     // Brackets inside strings do not count.
     CHECK(loadOk(nativeFile("\"name\": \"" + std::string(100, '[') + "\""))->settings().name == std::string(100, '['));
     // Far deeper input fails the same way, without exhausting the stack.
     CHECK(loadError(std::string(100000, '[')).message == "nesting deeper than 64 levels");
+}
+
+TEST_CASE("Native: a NUL byte is an error at its place, not the end of the file", "[files]")
+{
+    // nlohmann's lexer stops at a NUL: the header alone used to load as the template.
+    const std::string headerThenGarbage = nativeFile("") + "\n" + std::string("\0", 1) + "garbage";
+    CHECK(loadError(headerThenGarbage).toString()
+        == "test.json: line 2, column 1: a NUL byte: JSON text cannot contain one (inside a string, write \\u0000)");
+
+    // Nor may a whole model hide what follows it.
+    const std::string modelThenMore = saveNativeJson(Model()) + std::string("\0", 1) + "{\"steps\": 5}";
+    const LoadError error = loadError(modelThenMore);
+    CHECK_THAT(error.location, Catch::StartsWith("line "));
+    CHECK_THAT(error.message, Catch::StartsWith("a NUL byte"));
+
+    // A raw NUL inside a string is located too (the escape \u0000 is fine).
+    CHECK(loadError(nativeFile("\"name\": \"a" + std::string("\0", 1) + "b\"")).location
+        == "line 1, column " + std::to_string(kHeader.size() + 13));
+    CHECK(loadOk(nativeFile(R"("name": "a\u0000b")"))->settings().name == std::string("a\0b", 3));
+}
+
+TEST_CASE("Native: an unknown key in a file of this version is refused with its JSON path", "[files]")
+{
+    // A misspelt "hidden" used to be skipped, leaving the step visible.
+    CHECK(loadError(nativeFile(R"("steps": {"F1": {"hiden": true}})")).toString()
+        == "test.json: /steps/F1/hiden: unknown key \"hiden\" in a step; format 1.0 knows \"type\", \"initial\", "
+           "\"hidden\" and \"comment\"");
+
+    struct Case {
+        std::string members;
+        std::string location;
+    };
+    const std::vector<Case> cases = {
+        {R"("nmae": "Press")", "/nmae"},
+        {R"("settings": {"cycleTime": 50})", "/settings/cycleTime"},
+        {R"("transitions": {"F1->A2": {"condition": "TRUE", "negate": true}})", "/transitions/F1->A2/negate"},
+        {R"("variables": [{"name": "Go", "type": "BOOL"}, {"name": "Stop", "type": "BOOL", "defualt": "TRUE"}])",
+         "/variables/1/defualt"},
+        {R"("steps": {"A1": {"comment": "x", "a/b~": 1}})", "/steps/A1/a~1b~0"},
+    };
+    for (const Case& c : cases) {
+        INFO(c.members);
+        const LoadError error = loadError(nativeFile(c.members));
+        CHECK(error.location == c.location);
+        CHECK_THAT(error.message, Catch::StartsWith("unknown key \""));
+    }
+    CHECK(loadError(nativeFile(R"("settings": {"cycleTime": 50})")).message
+        == "unknown key \"cycleTime\" in the settings; format 1.0 knows \"cycleTimeMs\" and \"dialect\"");
+    CHECK(loadError(nativeFile(R"("nmae": "Press")")).message
+        == "unknown key \"nmae\" in a model file; format 1.0 knows \"format\", \"version\", \"name\", \"settings\", "
+           "\"steps\", \"transitions\" and \"variables\"");
+}
+
+TEST_CASE("Native: a version is two whole numbers, nothing else", "[files]")
+{
+    for (const char* version : {"1.-1", "-1.0", "+1.0", "1.+0", " 1.0", "1.0 ", "1. 0", "1.", ".0", "1..0", "1.0.0",
+                                "1,0", "1.0a", "01.0", "1.00", "1.01", "1", ""}) {
+        INFO(version);
+        const LoadError error = loadError(std::string("{\"format\": \"ggstudio-model\", \"version\": \"") + version + "\"}");
+        CHECK(error.location == "/version");
+        CHECK(error.message == std::string("expected a version MAJOR.MINOR of two whole numbers such as \"1.0\", found \"")
+            + version + "\"");
+    }
+    // Numbers too large for an int are still versions, newer than any real one.
+    CHECK(loadOk(R"({"format": "ggstudio-model", "version": "1.99999999999", "later": 1})")->sameContent(Model()));
+    CHECK_THAT(loadError(R"({"format": "ggstudio-model", "version": "99999999999.0"})").message,
+               Catch::StartsWith("this file was written by a newer GG Studio"));
+    CHECK(loadOk(R"({"format": "ggstudio-model", "version": "1.10", "later": 1})")->sameContent(Model()));
 }
 
 TEST_CASE("Native: a newer major version is refused", "[files]")
