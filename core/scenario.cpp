@@ -1,10 +1,12 @@
 #include "core/scenario.h"
 
+#include "core/fileio.h"
 #include "core/gemmatemplate.h"
 #include "core/iectypes.h"
 
 #include <algorithm>
 #include <charconv>
+#include <utility>
 
 namespace core {
 
@@ -28,28 +30,55 @@ bool isSpace(char c)
     return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
 }
 
+bool isContinuationByte(char c)
+{
+    return (static_cast<unsigned char>(c) & 0xC0u) == 0x80u;
+}
+
+// Columns count characters (UTF-8 code points), as core::textPosition and
+// editors do, not bytes.
 std::vector<Word> splitLine(std::string_view line)
 {
     std::vector<Word> words;
     std::size_t i = 0;
+    int column = 1; // of line[i]
+    const auto advance = [&] {
+        ++i;
+        if (i >= line.size() || !isContinuationByte(line[i]))
+            ++column;
+    };
     while (i < line.size()) {
         const char c = line[i];
         if (c == '#')
             break;
         if (isSpace(c)) {
-            ++i;
+            advance();
             continue;
         }
         const std::size_t start = i;
+        const int startColumn = column;
         if (isSeparator(c)) {
-            ++i;
+            advance();
         } else {
             while (i < line.size() && !isSpace(line[i]) && !isSeparator(line[i]) && line[i] != '#')
-                ++i;
+                advance();
         }
-        words.push_back(Word{line.substr(start, i - start), static_cast<int>(start) + 1});
+        words.push_back(Word{line.substr(start, i - start), startColumn});
     }
     return words;
+}
+
+// The column just past the last character before any comment, where an
+// error about a missing word points.
+int missingWordColumn(std::string_view line)
+{
+    const std::string_view code = line.substr(0, line.find('#'));
+    const std::size_t last = code.find_last_not_of(" \t\r\f\v");
+    if (last == std::string_view::npos)
+        return 1;
+    const std::string_view used = code.substr(0, last + 1);
+    const auto characters = std::count_if(used.begin(), used.end(), [](char c) { return !isContinuationByte(c); });
+    return static_cast<int>(characters) + 1;
 }
 
 bool isKeyword(const Word& word, std::string_view keyword)
@@ -397,8 +426,11 @@ private:
         const std::string& declared = m_simulator.variableNames()[static_cast<std::size_t>(index)];
         const IecType type = iecTypeOf(index);
         std::optional<ValueProblem> problem = valueProblem(type, action.value);
-        if (!problem)
+        if (!problem) {
+            if (action.kind == ScenarioAction::Kind::SetVariable)
+                checkSameValue(action, index, declared, type);
             return;
+        }
         ScenarioError& invalid = error(action, action.valueColumn, ErrorKind::InvalidValue, declared);
         invalid.type = std::string(iecTypeName(type));
         invalid.detail = toText(*problem);
@@ -423,6 +455,41 @@ private:
                                        [&](const std::string& id) { return equalsIgnoreCase(id, action.name); });
         if (!found)
             error(action, action.column, ErrorKind::SimpleStep, toUpperAscii(action.name));
+        else if (action.kind != ScenarioAction::Kind::ExpectComplete)
+            checkSameComplete(action);
+    }
+
+    // Line order within a scan does not matter, so one scan cannot set a
+    // variable to two values: neither line could be said to win. The same
+    // value twice is harmless and accepted. Values are compared in the
+    // variable's type ("1" and "1.0" are the same REAL).
+    void checkSameValue(const ScenarioAction& action, int index, const std::string& declared, IecType type)
+    {
+        const auto [slot, first] = m_firstSets.emplace(std::make_pair(action.scan, index), &action);
+        if (first)
+            return;
+        const ScenarioAction& earlier = *slot->second;
+        if (cond::parseValue(type, earlier.value) == cond::parseValue(type, action.value))
+            return;
+        conflict(action, earlier, ErrorKind::ConflictingValue, declared);
+    }
+
+    void checkSameComplete(const ScenarioAction& action)
+    {
+        const std::string step = toUpperAscii(action.name);
+        const auto [slot, first] = m_firstCompletes.emplace(std::make_pair(action.scan, step), &action);
+        if (!first && slot->second->value != action.value)
+            conflict(action, *slot->second, ErrorKind::ConflictingComplete, step);
+    }
+
+    void conflict(const ScenarioAction& action, const ScenarioAction& earlier, ErrorKind kind, std::string subject)
+    {
+        ScenarioError& problem = error(action, action.valueColumn, kind, std::move(subject));
+        problem.found = action.value;
+        problem.scan = action.scan;
+        problem.otherLine = earlier.line;
+        problem.otherValue = earlier.value;
+        problem.message = toText(problem);
     }
 
     void check(const ScenarioAction& action)
@@ -462,6 +529,9 @@ private:
     const Scenario& m_scenario;
     const Simulator& m_simulator;
     std::vector<ScenarioError> m_errors;
+    // The first set of each (scan, variable index) and (scan, step id).
+    std::map<std::pair<std::int64_t, int>, const ScenarioAction*> m_firstSets;
+    std::map<std::pair<std::int64_t, std::string>, const ScenarioAction*> m_firstCompletes;
 };
 
 std::string boolText(bool value)
@@ -511,19 +581,25 @@ ScenarioParseResult parseScenario(std::string_view text, std::string fileName)
 {
     ScenarioParseResult result;
     result.scenario.fileName = fileName;
+    // Not text in the one encoding scenarios use: one error at the first bad
+    // byte, rather than a line-by-line cascade.
+    if (const std::optional<Utf8Problem> problem = findInvalidUtf8(text)) {
+        result.errors.push_back(makeError(result.scenario.fileName, static_cast<int>(problem->position.line),
+                                          static_cast<int>(problem->position.column), ErrorKind::InvalidUtf8, {}, {}));
+        return result;
+    }
+    // Editors on Windows write a byte order mark; it is no part of line 1.
+    if (text.substr(0, 3) == "\xEF\xBB\xBF")
+        text.remove_prefix(3);
     int lineNumber = 0;
     std::size_t start = 0;
     while (start <= text.size()) {
         std::size_t end = text.find('\n', start);
         if (end == std::string_view::npos)
             end = text.size();
-        std::string_view line = text.substr(start, end - start);
+        const std::string_view line = text.substr(start, end - start);
         ++lineNumber;
-        // Errors about a missing word point just past the line's last character before any comment.
-        const std::string_view code = line.substr(0, line.find('#'));
-        const std::size_t last = code.find_last_not_of(" \t\r\f\v");
-        const int endColumn = last == std::string_view::npos ? 1 : static_cast<int>(last) + 2;
-        LineParser(splitLine(line), lineNumber, endColumn, result.scenario.fileName)
+        LineParser(splitLine(line), lineNumber, missingWordColumn(line), result.scenario.fileName)
             .parse(result.scenario.actions, result.errors);
         if (end == text.size())
             break;

@@ -53,6 +53,12 @@ std::string otherText(const ScenarioError& e)
         return "transition " + e.subject + " is not effective (it or one of its steps is hidden)";
     case Kind::UnknownTransition: return "unknown transition " + quote(e.subject);
     case Kind::UnknownToken: return "unknown token " + quote(e.subject);
+    case Kind::InvalidUtf8: return "invalid UTF-8: a scenario file must be UTF-8 text";
+    case Kind::ConflictingValue:
+    case Kind::ConflictingComplete:
+        return (e.kind == Kind::ConflictingValue ? e.subject : e.subject + "'s Complete") + " is set to two values in scan "
+            + std::to_string(e.scan) + ": " + e.otherValue + " on line " + std::to_string(e.otherLine) + ", "
+            + e.found + " on line " + std::to_string(e.line);
     default: return {};
     }
 }

@@ -7,6 +7,7 @@
 
 #include "core/valueproblem.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -38,6 +39,7 @@ struct ScenarioError {
         ExpectedCompleteValue,    // TRUE, FALSE or auto
         ExpectedCommaOrEnd,       // ',' or the end of the line
         ExpectedEnd,              // the end of the line
+        InvalidUtf8,              // at the first byte that is not UTF-8; the file is not read further
         // Names and values (validateScenario). subject: the name, as the kind says.
         UnknownVariable,          // as written
         InvalidValue,             // the variable as declared; type: its IEC type; detail: why (English)
@@ -47,6 +49,11 @@ struct ScenarioError {
         IneffectiveTransition,    // as written: it or one of its steps is hidden
         UnknownTransition,        // as written
         UnknownToken,             // as written
+        // A second set of one thing in one scan, to another value; at the
+        // value of the later line. found: its value; otherLine, otherValue:
+        // the earlier set's; scan: the scan both name.
+        ConflictingValue,         // subject: the variable as declared; values as written
+        ConflictingComplete,      // subject: the step id in capitals; values TRUE, FALSE or auto
     };
 
     std::string fileName;
@@ -58,6 +65,9 @@ struct ScenarioError {
     std::string type;    // InvalidValue: "INT"
     std::string detail;  // InvalidValue: the value parser's English ("'x' is not an integer")
     std::optional<ValueProblem> problem; // InvalidValue: detail as data
+    std::int64_t scan = 0;  // Conflicting*
+    int otherLine = 0;      // Conflicting*
+    std::string otherValue; // Conflicting*
     std::string message; // English: toText() of the above
 
     // "scenario.txt:4:12: expected '=' after the variable name, found 'TRUE'".

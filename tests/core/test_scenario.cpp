@@ -241,6 +241,78 @@ TEST_CASE("Scenario: unknown names are errors naming the line", "[simulation]")
     CHECK(errors[9].type == "REAL");
 }
 
+TEST_CASE("Scenario: a UTF-8 byte order mark at the start is accepted", "[simulation]")
+{
+    const ScenarioParseResult parsed = parseScenario("\xEF\xBB\xBF" "at 1: set Start = TRUE\nat 2: expect step A1\n", "bom.txt");
+    CHECK(errorTexts(parsed.errors).empty());
+    REQUIRE(parsed.scenario.actions.size() == 2);
+    CHECK(parsed.scenario.actions[0].column == 11); // the mark takes no column
+    // An error on line 1 counts columns without it too.
+    CHECK(errorTexts(parseScenario("\xEF\xBB\xBF" "at 1 set", "bom.txt").errors)
+          == std::vector<std::string>{"bom.txt:1:6: expected ':' after the scan number, found 'set'"});
+}
+
+TEST_CASE("Scenario: invalid UTF-8 is refused at its line and column", "[simulation]")
+{
+    // "Température" in Latin-1: not UTF-8.
+    const ScenarioParseResult parsed =
+        parseScenario("at 1: set Start = TRUE\nat 2: set Temp\xE9rature = 1.5\nat 3 oops\n", "latin1.txt");
+    CHECK(errorTexts(parsed.errors)
+          == std::vector<std::string>{"latin1.txt:2:15: invalid UTF-8: a scenario file must be UTF-8 text"});
+    CHECK(parsed.errors.front().kind == ScenarioError::Kind::InvalidUtf8);
+    CHECK(parsed.scenario.actions.empty());
+}
+
+TEST_CASE("Scenario: columns count characters, not bytes", "[simulation]")
+{
+    CHECK(errorTexts(parseScenario("at 1: set \xC3\x84rger = TRUE Stop", "u.txt").errors)
+          == std::vector<std::string>{"u.txt:1:24: expected ',' or the end of the line, found 'Stop'"});
+    CHECK(errorTexts(parseScenario("at 1: set \xC3\x84rger =   # \xC3\xA9", "u.txt").errors)
+          == std::vector<std::string>{"u.txt:1:18: expected a value after '=', found the end of the line"});
+}
+
+TEST_CASE("Scenario: one scan cannot set a variable or a Complete to two values", "[simulation]")
+{
+    Simulator sim(factory::realisticModel());
+    const auto validate = [&](const char* text) {
+        const ScenarioParseResult parsed = parseScenario(text, "c.txt");
+        REQUIRE(parsed.ok());
+        return validateScenario(parsed.scenario, sim);
+    };
+    // Line order within a scan does not matter, so no line may win.
+    const std::vector<ScenarioError> errors = validate("at 2: set Start = TRUE\n"
+                                                       "at 3: set Start = FALSE\n"
+                                                       "at 2: set Stop = TRUE, start = FALSE\n"
+                                                       "at 4: set complete F1 = FALSE\n"
+                                                       "at 4: set Complete f1 = auto\n");
+    CHECK(errorTexts(errors)
+          == std::vector<std::string>{
+              "c.txt:3:32: Start is set to two values in scan 2: TRUE on line 1, FALSE on line 3",
+              "c.txt:5:25: F1's Complete is set to two values in scan 4: FALSE on line 4, auto on line 5",
+          });
+    REQUIRE(errors.size() == 2);
+    CHECK(errors[0].kind == ScenarioError::Kind::ConflictingValue);
+    CHECK(errors[0].subject == "Start");
+    CHECK(errors[0].scan == 2);
+    CHECK(errors[0].otherLine == 1);
+    CHECK(errors[0].otherValue == "TRUE");
+    CHECK(errors[0].found == "FALSE");
+    CHECK(errors[1].kind == ScenarioError::Kind::ConflictingComplete);
+    CHECK(errors[1].subject == "F1");
+    CHECK(errors[1].otherValue == "FALSE");
+    CHECK(errors[1].found == "auto");
+
+    // The same value twice, spelt alike or not, is harmless.
+    CHECK(validate("at 2: set Start = TRUE, START = true\n"
+                   "at 2: set Temperature = 1, Temperature = 1.0\n"
+                   "at 2: set complete F1 = TRUE\n"
+                   "at 2: set complete F1 = TRUE\n")
+              .empty());
+    // Two values of one variable on one line are caught as well.
+    CHECK(errorTexts(validate("at 7: set BatchSize = 5, BatchSize = 6"))
+          == std::vector<std::string>{"c.txt:1:38: BatchSize is set to two values in scan 7: 5 on line 1, 6 on line 1"});
+}
+
 TEST_CASE("Scenario: running checks each expectation after its scan", "[simulation]")
 {
     Simulator sim(factory::realisticModel());
