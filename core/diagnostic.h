@@ -2,6 +2,7 @@
 
 #include "core/span.h"
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,5 +34,27 @@ struct Diagnostic {
 std::string diagnosticElementLabel(const Diagnostic& diagnostic);
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics);
+
+// One step of reading UTF-8: the code point at the start of `text` and how
+// many bytes it takes. An invalid, overlong or truncated sequence is one
+// byte long and not valid.
+struct Utf8Character {
+    char32_t codePoint = 0;
+    std::size_t length = 1;
+    bool valid = false;
+};
+Utf8Character decodeUtf8(std::string_view text);
+
+// Characters that break a line, drive a terminal or reorder the text around
+// them: the C0 controls, DEL, the C1 controls U+0080-U+009F, the bidi
+// embeddings, overrides and isolates (U+202A-U+202E, U+2066-U+2069) and the
+// line and paragraph separators U+2028, U+2029.
+bool isControlCharacter(char32_t codePoint);
+
+// User text fit for one line of a terminal, reversibly: \n, \r, \t and \\ for
+// themselves, \xNN for the other C0 controls, DEL and each byte of invalid
+// UTF-8, \uNNNN for the other control characters (lower-case hex). Every
+// other character, non-ASCII ones included, is kept.
+std::string escapeControlCharacters(std::string_view text);
 
 } // namespace core

@@ -57,6 +57,31 @@ bool waitsForComplete(StepType sourceType, bool negated, bool family)
     return false;
 }
 
+// A condition that reads a variable the code declares under another name
+// (unusableNameCode) is unusable: printing the name would write user text
+// into the code, printing the other name would read a variable the user
+// never named.
+void rejectUndeclarableNames(const BuildContext& context, GemmaTransition& transition)
+{
+    const std::string& id = transition.id;
+    const cond::Expression& expression = transition.condition.expression;
+    std::vector<const Variable*> reported;
+    for (int node : cond::variableNodes(expression)) {
+        const Variable* variable = context.symbols.find(expression.at(node).text);
+        if (!variable || std::find(reported.begin(), reported.end(), variable) != reported.end())
+            continue;
+        const char* code = unusableNameCode(variable->name);
+        if (!code)
+            continue;
+        reported.push_back(variable);
+        const std::string detail = identifierProblemMessage(identifierProblem(variable->name), variable->name);
+        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, code, id,
+                                                  "in the condition of " + id + ": invalid variable name: " + detail,
+                                                  {variable->name, detail}));
+        transition.conditionUsable = false;
+    }
+}
+
 // Parses and type-checks the condition; records why it cannot be used.
 void analyseCondition(const BuildContext& context, GemmaTransition& transition)
 {
@@ -88,6 +113,7 @@ void analyseCondition(const BuildContext& context, GemmaTransition& transition)
                                                   std::move(arguments)));
     }
     transition.conditionUsable = issues.empty();
+    rejectUndeclarableNames(context, transition);
 }
 
 // How one variable occurs in the condition, or why it cannot carry a token.
@@ -271,6 +297,16 @@ const GemmaStep* GemmaProgram::step(const std::string& id) const
             return &candidate;
     }
     return nullptr;
+}
+
+const char* unusableNameCode(std::string_view name)
+{
+    switch (identifierProblem(name)) {
+    case IdentifierProblem::None: return nullptr;
+    case IdentifierProblem::Keyword: return "GG302";
+    case IdentifierProblem::GeneratorName: return "GG303";
+    default: return "GG301"; // the codes of core/checks.cpp
+    }
 }
 
 std::string tokenVariableName(const std::string& variable, const std::string& sourceStepId, int priority)

@@ -12,6 +12,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace core {
@@ -97,6 +98,13 @@ struct GemmaProgram {
 };
 
 GemmaProgram buildGemmaProgram(const Model& model);
+
+// The checks' code for a variable name the generated code cannot declare as
+// it is: "GG301" (not an IEC identifier), "GG302" (a keyword), "GG303" (a
+// name the generator uses); nullptr for a name it can. Such a variable is
+// declared under another name (core/stgenerator.h), so no condition may
+// read it: the condition is unusable.
+const char* unusableNameCode(std::string_view name);
 
 // "Stop_F1_3_MEM".
 std::string tokenVariableName(const std::string& variable, const std::string& sourceStepId, int priority);

@@ -30,6 +30,22 @@ bool isElementaryTypeName(std::string_view name)
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+// Documentation is plain text, but tools that import the file may write it
+// into an ST comment (* ... *): as in the generated ST (escapeComment), no
+// "(*" or "*)" of the user's survives, while line breaks do.
+std::string documentationText(std::string_view text)
+{
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        out += text[i];
+        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+        if ((text[i] == '(' && next == '*') || (text[i] == '*' && next == ')'))
+            out += ' ';
+    }
+    return out;
+}
+
 class PlcOpenWriter {
 public:
     PlcOpenWriter(const PlcProject& project, const Model& model, const PlcOpenOptions& options)
@@ -178,7 +194,7 @@ void PlcOpenWriter::writePou(XMLElement* pous, const PlcPou& pou)
     writeInterface(element, pou);
     formattedText(add(add(element, "body"), "ST"), pou.body);
     if (!pou.comment.empty())
-        formattedText(add(element, "documentation"), pou.comment);
+        formattedText(add(element, "documentation"), documentationText(pou.comment));
 }
 
 void PlcOpenWriter::writeInterface(XMLElement* pou, const PlcPou& declarations)
@@ -217,7 +233,7 @@ void PlcOpenWriter::writeVariable(XMLElement* list, const PlcVariable& variable)
     if (!variable.initialValue.empty())
         attribute(add(add(element, "initialValue"), "simpleValue"), "value", variable.initialValue);
     if (!variable.comment.empty())
-        formattedText(add(element, "documentation"), variable.comment);
+        formattedText(add(element, "documentation"), documentationText(variable.comment));
 }
 
 const PlcPou* PlcOpenWriter::program() const

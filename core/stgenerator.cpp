@@ -18,9 +18,13 @@
 // - a default value that does not fit its type: the type's implicit default,
 //   with the reason in the declaration's comment;
 // - a hidden initial step: a comment at the top of the GEMMA body.
-// Variable names are written as declared; the checks refuse names that are
-// not IEC identifiers, and the generator does not rename them behind the
-// engineer's back.
+// - a variable whose name the code cannot declare (not an IEC identifier, a
+//   keyword, a name the generator uses: the checks' GG301-GG303) is
+//   declared as Invalid_Name_<its position>, with the reason in its comment,
+//   and every condition that reads it is FALSE with its ERROR comment
+//   (gemmaprogram.h, unusableNameCode). Other names are written as declared.
+// No user text is written outside a comment but names that are identifiers
+// and defaults that are literals of their type (docs/generated-code.md).
 //
 // IEC rules the printers keep: (* *) comments only, user text escaped inside
 // them; `;` after every END_IF and END_CASE; no empty statement, CASE branch,
@@ -33,9 +37,11 @@
 #include "core/stgenerator.h"
 
 #include "core/conditionanalysis.h"
+#include "core/diagnostic.h"
 #include "core/gemmaprogram.h"
 #include "core/symboltable.h"
 
+#include <algorithm>
 #include <string_view>
 
 namespace core {
@@ -77,12 +83,43 @@ std::string problemComment(const GemmaProblem& problem)
     return comment(text);
 }
 
+// The name each global is declared under, by position: its own, or
+// Invalid_Name_<position> when the code cannot declare it as it is
+// (unusableNameCode), with _2, _3, ... should a user variable already have
+// that name. No condition reads a renamed variable, so the name only has to
+// be a fresh identifier.
+std::vector<std::string> declaredNames(const std::vector<Variable>& variables)
+{
+    std::vector<std::string> names;
+    names.reserve(variables.size());
+    SymbolTable taken(variables);
+    std::vector<std::string> generated; // upper case
+    auto isFree = [&](const std::string& candidate) {
+        const std::string key = toUpperAscii(candidate);
+        return !taken.find(candidate) && std::find(generated.begin(), generated.end(), key) == generated.end();
+    };
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+        if (!unusableNameCode(variables[i].name)) {
+            names.push_back(variables[i].name);
+            continue;
+        }
+        const std::string base = "Invalid_Name_" + std::to_string(i + 1);
+        std::string candidate = base;
+        for (int suffix = 2; !isFree(candidate); ++suffix)
+            candidate = base + "_" + std::to_string(suffix);
+        generated.push_back(toUpperAscii(candidate));
+        names.push_back(std::move(candidate));
+    }
+    return names;
+}
+
 // Spellings of the names the code reads, per dialect.
 class Naming {
 public:
     Naming(const Model& model, Dialect dialect)
         : m_variables(model.variables())
         , m_symbols(model.variables())
+        , m_declared(declaredNames(model.variables()))
         , m_dialect(dialect)
         , m_read(model.variables().size(), false)
     {
@@ -92,21 +129,24 @@ public:
     std::string global(std::string_view writtenName)
     {
         const Variable* variable = m_symbols.find(writtenName);
-        std::string name = variable ? variable->name : std::string(writtenName);
-        if (variable)
-            m_read[static_cast<std::size_t>(variable - m_variables.data())] = true;
+        std::string name = std::string(writtenName); // not reached: usable conditions name declared variables
+        if (variable) {
+            const auto index = static_cast<std::size_t>(variable - m_variables.data());
+            m_read[index] = true;
+            name = m_declared[index];
+        }
         if (m_dialect == Dialect::Codesys)
             return std::string(kGlobalListName) + "." + name;
         return name;
     }
 
-    // The globals read so far, in declaration order.
-    std::vector<const Variable*> readVariables() const
+    // The globals read so far, in declaration order, as declared.
+    std::vector<PlcVariable> readVariables() const
     {
-        std::vector<const Variable*> result;
+        std::vector<PlcVariable> result;
         for (std::size_t i = 0; i < m_variables.size(); ++i) {
             if (m_read[i])
-                result.push_back(&m_variables[i]);
+                result.push_back(PlcVariable{m_declared[i], std::string(iecTypeName(m_variables[i].type)), {}, {}});
         }
         return result;
     }
@@ -114,6 +154,7 @@ public:
 private:
     const std::vector<Variable>& m_variables;
     SymbolTable m_symbols;
+    std::vector<std::string> m_declared;
     Dialect m_dialect;
     std::vector<bool> m_read;
 };
@@ -287,8 +328,7 @@ GemmaPou buildGemmaPou(const Model& model, const GemmaProgram& program, Dialect 
     result.bodyRanges = std::move(writer.ranges());
 
     if (dialect == Dialect::Iec) {
-        for (const Variable* variable : naming.readVariables())
-            pou.externals.push_back(plcVariable(variable->name, std::string(iecTypeName(variable->type)), {}, {}));
+        pou.externals = naming.readVariables();
     }
     return result;
 }
@@ -351,19 +391,37 @@ std::string initialValue(const Variable& variable, std::string& problem)
     return variable.defaultValue;
 }
 
+// "ERROR GG303: invalid variable name: 'State' is a name the generated code
+// uses; declared as Invalid_Name_1, and every condition that reads it is FALSE".
+std::string renamedNote(const Variable& variable, const std::string& declaredName)
+{
+    const char* code = unusableNameCode(variable.name);
+    return std::string("ERROR ") + code + ": invalid variable name: "
+           + identifierProblemMessage(identifierProblem(variable.name), variable.name) + "; declared as "
+           + declaredName + ", and every condition that reads it is FALSE";
+}
+
 std::vector<PlcVariable> buildGlobals(const Model& model)
 {
+    const std::vector<Variable>& variables = model.variables();
+    const std::vector<std::string> names = declaredNames(variables);
     std::vector<PlcVariable> globals;
-    globals.reserve(model.variables().size());
-    for (const Variable& variable : model.variables()) {
+    globals.reserve(variables.size());
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+        const Variable& variable = variables[i];
         std::string problem;
         std::string value = initialValue(variable, problem);
-        std::string note = variable.comment;
-        if (!problem.empty()) {
-            note = "ERROR: default " + problem + "; " + value + " is used instead"
-                   + (note.empty() ? std::string() : ". " + note);
-        }
-        globals.push_back(plcVariable(variable.name, std::string(iecTypeName(variable.type)), value, note));
+        std::vector<std::string> notes;
+        if (names[i] != variable.name)
+            notes.push_back(renamedNote(variable, names[i]));
+        if (!problem.empty())
+            notes.push_back("ERROR: default " + problem + "; " + value + " is used instead");
+        if (!variable.comment.empty())
+            notes.push_back(variable.comment);
+        std::string note;
+        for (const std::string& part : notes)
+            note += (note.empty() ? "" : ". ") + part;
+        globals.push_back(plcVariable(names[i], std::string(iecTypeName(variable.type)), value, note));
     }
     return globals;
 }
@@ -439,19 +497,24 @@ std::string escapeComment(const std::string& text)
 {
     std::string out;
     out.reserve(text.size());
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+    std::string_view rest = text;
+    while (!rest.empty()) {
+        const Utf8Character character = decodeUtf8(rest);
+        const char32_t c = character.codePoint;
+        const char next = rest.size() > 1 ? rest[1] : '\0';
         if ((c == '(' && next == '*') || (c == '*' && next == ')')) {
-            out += c;
+            out += static_cast<char>(c);
             out += ' ';
-        } else if (c == '\n' || c == '\r' || c == '\t') {
+        } else if (c == '\n' || c == '\r' || c == '\t' || c == 0x2028 || c == 0x2029) {
             out += ' ';
-        } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+        } else if (!character.valid || isControlCharacter(c)) {
+            // Neither the compiler nor an editor showing the file should
+            // meet a terminal control, a bidi override or invalid UTF-8.
             out += '?';
         } else {
-            out += c;
+            out.append(rest.substr(0, character.length));
         }
+        rest.remove_prefix(character.length);
     }
     return out;
 }

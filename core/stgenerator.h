@@ -40,7 +40,8 @@ std::string formatSingleFileIec(const PlcProject& project);
 std::string formatDuration(int milliseconds);
 
 // Text made safe inside (* *): no comment delimiter survives, line breaks
-// become spaces.
+// become spaces, and control characters (core::isControlCharacter: terminal
+// controls, bidi overrides) and invalid UTF-8 bytes become '?'.
 std::string escapeComment(const std::string& text);
 
 // The GEMMA POU as the editor previews it, with the lines each element

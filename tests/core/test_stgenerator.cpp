@@ -1,17 +1,21 @@
 #include <catch2/catch.hpp>
 
 #include "core/checks.h"
+#include "core/diagnostic.h"
 #include "core/gemmaprogram.h"
 #include "core/model.h"
 #include "core/stgenerator.h"
+#include "hostilemodels.h"
 #include "modelfactory.h"
 #include "samplemodels.h"
+#include "stinterpreter.h"
 
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -441,11 +445,67 @@ std::string upper(std::string text)
     return text;
 }
 
+// Each line of a declaration block is one declaration a compiler reads,
+// `name : TYPE [:= literal];`, the name an identifier and no keyword: no
+// user text can end the block, the declaration or a comment early.
+void checkDeclarationLines(const std::string& code)
+{
+    static const std::regex declaration(R"(([A-Za-z_][A-Za-z0-9_]*) : ([A-Za-z_][A-Za-z0-9_]*))"
+                                        R"(( := (TRUE|FALSE|[-+]?[0-9][0-9_]*(\.[0-9][0-9_]*)?([eE][-+]?[0-9_]+)?))?;)");
+    static const std::set<std::string> blocks = {"VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_EXTERNAL", "VAR_GLOBAL"};
+    bool inBlock = false;
+    for (const std::string& raw : splitLines(code)) {
+        const std::string line = trimmed(raw);
+        INFO("line: " << raw);
+        if (blocks.count(line)) {
+            CHECK_FALSE(inBlock);
+            inBlock = true;
+        } else if (line == "END_VAR") {
+            CHECK(inBlock);
+            inBlock = false;
+        } else if (inBlock && !line.empty()) {
+            std::smatch match;
+            REQUIRE(std::regex_match(line, match, declaration));
+            CHECK_FALSE(isIecKeyword(match[1].str()));
+            const std::string type = match[2].str();
+            CHECK((parseIecType(type) || (type.size() > 3 && type.substr(type.size() - 3) == "_FB")));
+        }
+    }
+    CHECK_FALSE(inBlock);
+}
+
+// One name, one thing: within a POU and among the globals (the IEC
+// VAR_EXTERNAL repeats a global, which is what it is for).
+void checkUniqueNames(const PlcProject& project)
+{
+    auto checkUnique = [](const std::vector<const std::vector<PlcVariable>*>& lists, std::set<std::string> seen) {
+        for (const std::vector<PlcVariable>* list : lists) {
+            for (const PlcVariable& variable : *list) {
+                INFO("declared twice: " << variable.name);
+                CHECK(seen.insert(upper(variable.name)).second);
+            }
+        }
+    };
+    checkUnique({&project.globals}, {});
+    std::set<std::string> globals;
+    for (const PlcVariable& variable : project.globals)
+        globals.insert(upper(variable.name));
+    for (const PlcPou& pou : project.pous) {
+        INFO(pou.name);
+        checkUnique({&pou.inputs, &pou.outputs, &pou.locals}, globals);
+        checkUnique({&pou.externals}, {});
+        for (const PlcVariable& external : pou.externals)
+            CHECK(globals.count(upper(external.name)) == 1);
+    }
+}
+
 // Every rule of spec §7 an IEC compiler would reject the text for.
 void checkIecRules(const PlcProject& project)
 {
     const std::string text = formatSingleFileIec(project);
     const std::string code = withoutComments(text);
+    checkDeclarationLines(code);
+    checkUniqueNames(project);
     CHECK(std::all_of(code.begin(), code.end(), [](char c) { return static_cast<unsigned char>(c) < 0x80; }));
     CHECK(code.find("//") == std::string::npos);
     CHECK(upper(code).find("NOT NOT") == std::string::npos);
@@ -456,9 +516,11 @@ void checkIecRules(const PlcProject& project)
         const std::string line = trimmed(lines[i]);
         INFO("line " << i + 1 << ": " << lines[i]);
         CHECK(line != ";");
+        const std::vector<std::string> words = identifiersIn(line);
+        const bool hasEndIf = std::find(words.begin(), words.end(), "END_IF") != words.end();
         if (line.rfind("END_IF", 0) == 0 || line.rfind("END_CASE", 0) == 0)
             CHECK(line.back() == ';');
-        if (line.find(" END_IF") != std::string::npos)
+        if (hasEndIf) // the keyword, not an identifier that starts with it
             CHECK(line.substr(line.size() - 7) == "END_IF;");
         if (isCaseLabel(line)) { // no empty CASE branch
             REQUIRE(i + 1 < lines.size());
@@ -569,6 +631,116 @@ TEST_CASE("user text in comments cannot close or open a comment", "[stgen]")
     const std::string code = withoutComments(fullText(model, Dialect::Iec));
     CHECK(code.find("State := 99") == std::string::npos);
     CHECK(code.find("in the batch") == std::string::npos);
+}
+
+// ---- user text that is not an identifier or a literal ------------------------
+
+TEST_CASE("a variable the code cannot declare gets a generated name and is never read", "[stgen]")
+{
+    Model model = macroBranchModel();
+    REQUIRE(model.addVariable({"X : BOOL; END_VAR State := 13; VAR Y", IecType::Bool, "", ""}));
+    REQUIRE(model.addVariable({"Z := TRUE; (*", IecType::Int, "", "its own comment"}));
+    REQUIRE(model.addVariable({"state", IecType::Bool, "TRUE; END_VAR Injected := 1;", ""}));
+    REQUIRE(model.addVariable({"Invalid_Name_6", IecType::Bool, "", "a user name the generated one avoids"}));
+    REQUIRE(model.addVariable({"F1.Complete", IecType::Bool, "", ""}));
+    set(model, "F1->A2", "state OR Stop");
+    set(model, "F1->F3", "F1.Complete");
+    set(model, "F1->A3", "Fault");
+
+    for (Dialect dialect : {Dialect::Iec, Dialect::Codesys}) {
+        INFO(dialectName(dialect));
+        const std::string text = fullText(model, dialect);
+        const std::string code = withoutComments(text);
+        CHECK(code.find("State := 13") == std::string::npos);
+        CHECK(code.find("Injected") == std::string::npos);
+        CHECK(code.find("Z := TRUE") == std::string::npos);
+        checkDeclarationLines(code);
+    }
+    const PlcProject project = buildPlcProject(model, Dialect::Iec);
+    checkIecRules(project);
+    const std::string globals = formatGlobals(project);
+    CHECK(globals.find("    Invalid_Name_4 : BOOL := FALSE; (* ERROR GG301: invalid variable name: 'X : BOOL; END_VAR "
+                       "State := 13; VAR Y' is not a valid IEC 61131-3 identifier")
+          != std::string::npos);
+    CHECK(globals.find("; declared as Invalid_Name_4, and every condition that reads it is FALSE *)")
+          != std::string::npos);
+    CHECK(globals.find("    Invalid_Name_5 : INT := 0; (* ERROR GG301: ") != std::string::npos);
+    CHECK(globals.find("FALSE. its own comment *)") != std::string::npos);
+    // A generator name (GG303), with an invalid default as well; the next free name.
+    CHECK(globals.find("    Invalid_Name_6_2 : BOOL := FALSE; (* ERROR GG303: invalid variable name: 'state' is a "
+                       "name the generated code uses; declared as Invalid_Name_6_2")
+          != std::string::npos);
+    CHECK(globals.find("    Invalid_Name_6 : BOOL := FALSE; (* a user name the generated one avoids *)")
+          != std::string::npos);
+    CHECK(globals.find("    Invalid_Name_8 : BOOL := FALSE;") != std::string::npos);
+
+    // Conditions that read them are FALSE, with the error above; the others stand.
+    const std::string gemma = gemmaText(model);
+    CHECK(hasLine(gemma, "    (* ERROR GG303: in the condition of F1->A2: invalid variable name: 'state' is a name the "
+                         "generated code uses *)"));
+    CHECK(hasLine(gemma, "    IF FALSE THEN"));
+    CHECK(hasLine(gemma, "    ELSIF FALSE THEN"));
+    CHECK(hasLine(gemma, "    ELSIF Fault AND F1.Complete THEN"));
+    std::vector<std::string> externals;
+    for (const PlcVariable& variable : project.pous.front().externals)
+        externals.push_back(variable.name);
+    CHECK(externals == std::vector<std::string>{"Fault"});
+}
+
+TEST_CASE("step comments and the model name cannot bring control characters into the code", "[stgen]")
+{
+    Model model = macroBranchModel();
+    REQUIRE(model.setStepComment("F1", "title\x1b]0;owned\x07 \xe2\x80\xae reversed \xc2\x9b \xff end"));
+    REQUIRE(model.setName("name\x1b[2J"));
+    const std::string text = fullText(model, Dialect::Iec);
+    CHECK(text.find('\x1b') == std::string::npos);
+    CHECK(text.find("title?]0;owned? ? reversed ? ? end") != std::string::npos);
+    CHECK(escapeComment("a\xe2\x80\xa8" "b\xe2\x81\xa6" "c") == "a b?c");
+}
+
+namespace {
+
+// No control character (terminal escape, bidi override, C1, invalid UTF-8)
+// anywhere in the text, comments included; line feeds end lines.
+void checkPrintable(const std::string& text)
+{
+    std::string_view rest = text;
+    while (!rest.empty()) {
+        const Utf8Character character = decodeUtf8(rest);
+        INFO("at offset " << text.size() - rest.size());
+        REQUIRE(character.valid);
+        if (character.codePoint != '\n')
+            REQUIRE_FALSE(isControlCharacter(character.codePoint));
+        rest.remove_prefix(character.length);
+    }
+}
+
+} // namespace
+
+TEST_CASE("forced code of models with hostile user text keeps the IEC rules", "[stgen][property]")
+{
+    for (std::uint32_t seed = 1; seed <= 150; ++seed) {
+        INFO("hostile model " << seed);
+        const Model model = samples::hostileModel(seed);
+        const PlcProject iec = buildPlcProject(model, Dialect::Iec);
+        checkIecRules(iec);
+        const std::string single = formatSingleFileIec(iec);
+        checkPrintable(single);
+        CHECK(withoutComments(single).find(samples::kInjectedMarker) == std::string::npos);
+
+        const std::string codesys = fullText(model, Dialect::Codesys);
+        checkPrintable(codesys);
+        const std::string codesysCode = withoutComments(codesys);
+        CHECK(codesysCode.find(samples::kInjectedMarker) == std::string::npos);
+        checkDeclarationLines(codesysCode);
+
+        // The program and its globals read as declarations and statements, and run.
+        sttest::StInterpreter plc(previewGemmaProgram(model, Dialect::Iec).text, formatGlobals(iec));
+        REQUIRE(plc.error().empty());
+        for (int scan = 0; scan < 3; ++scan)
+            plc.scan();
+        CHECK(plc.runtimeError().empty());
+    }
 }
 
 // ---- declarations, globals, configuration -------------------------------------
