@@ -13,6 +13,7 @@
 #include "core/stexport.h"
 #include "core/stgenerator.h"
 #include "cycletime.h"
+#include "terminal.h"
 #include "verifycommand.h"
 
 #include <algorithm>
@@ -79,7 +80,7 @@ bool outputFormat(const Arguments& args, const std::string& path, core::ModelFor
         } else if (*to == "gg-generator") {
             format = core::ModelFormat::GGGenerator;
         } else {
-            err << "ggstudio-cli: --to takes native or gg-generator, not '" << *to << "'\n";
+            err << "ggstudio-cli: --to takes native or gg-generator, not '" << *to << "'" << lineEnd;
             return false;
         }
         return true;
@@ -90,7 +91,7 @@ bool outputFormat(const Arguments& args, const std::string& path, core::ModelFor
 
 int usageError(std::ostream& err, const std::string& message)
 {
-    err << "ggstudio-cli: " << message << "\nTry 'ggstudio-cli --help'.\n";
+    err << "ggstudio-cli: " << message << lineEnd << "Try 'ggstudio-cli --help'." << lineEnd;
     return UsageError;
 }
 
@@ -103,13 +104,13 @@ bool isStandardOutput(const std::string& path)
 int save(const core::Model& model, const std::string& path, core::ModelFormat format, Streams streams)
 {
     if (isStandardOutput(path)) {
-        streams.out << (format == core::ModelFormat::GGGenerator ? core::saveGGGeneratorJson(model)
-                                                                 : core::saveNativeJson(model));
+        writeVerbatim(streams.out, format == core::ModelFormat::GGGenerator ? core::saveGGGeneratorJson(model)
+                                                                            : core::saveNativeJson(model));
         return Success;
     }
     core::Status status = core::saveModelFile(model, path, format);
     if (!status) {
-        streams.err << path << ": " << status.message << "\n";
+        streams.err << path << ": " << status.message << lineEnd;
         return UnreadableInput;
     }
     return Success;
@@ -119,7 +120,7 @@ std::unique_ptr<core::Model> loadOrReport(const std::string& path, std::ostream&
 {
     core::LoadedModel loaded = core::loadModelFile(path);
     if (!loaded.ok())
-        err << loaded.error.toString() << "\n";
+        err << loaded.error.toString() << lineEnd;
     return std::move(loaded.model);
 }
 
@@ -138,13 +139,13 @@ int validateOne(const std::string& path, Streams streams)
 {
     core::LoadedModel loaded = core::loadModelFile(path);
     if (!loaded.ok()) {
-        streams.err << loaded.error.toString() << "\n";
+        streams.err << loaded.error.toString() << lineEnd;
         return UnreadableInput;
     }
     const std::vector<core::Diagnostic> diagnostics = core::checkModel(*loaded.model);
     for (const core::Diagnostic& d : diagnostics) {
         streams.out << path << ": " << core::diagnosticElementLabel(d) << ": " << core::severityName(d.severity)
-                    << ": " << d.code << ": " << d.message << "\n";
+                    << ": " << d.code << ": " << d.message << lineEnd;
     }
     return core::hasErrors(diagnostics) ? ModelHasErrors : Success;
 }
@@ -179,7 +180,7 @@ bool chooseDialect(const Arguments& args, const core::Model& model, core::Dialec
 {
     dialect = model.settings().dialect;
     if (auto given = args.value("--dialect"); given && !core::parseDialect(*given, dialect)) {
-        err << "ggstudio-cli: --dialect takes iec or codesys, not '" << *given << "'\n";
+        err << "ggstudio-cli: --dialect takes iec or codesys, not '" << *given << "'" << lineEnd;
         return false;
     }
     return true;
@@ -192,7 +193,7 @@ bool chooseExportFormat(const Arguments& args, const std::string& output, Export
     std::string name = args.value("--format").value_or("");
     if (name.empty()) {
         if (isStandardOutput(output)) {
-            err << "ggstudio-cli: -o - writes to standard output: say what with --format plcopen or st\n";
+            err << "ggstudio-cli: -o - writes to standard output: say what with --format plcopen or st" << lineEnd;
             return false;
         } else if (endsWith(output, ".xml")) {
             name = "plcopen";
@@ -200,7 +201,7 @@ bool chooseExportFormat(const Arguments& args, const std::string& output, Export
             name = "st";
         } else {
             err << "ggstudio-cli: cannot tell the export format from '" << output
-                << "': use --format plcopen, st or st-folder\n";
+                << "': use --format plcopen, st or st-folder" << lineEnd;
             return false;
         }
     }
@@ -208,7 +209,7 @@ bool chooseExportFormat(const Arguments& args, const std::string& output, Export
         {"plcopen", ExportFormat::PlcOpen}, {"st", ExportFormat::StFile}, {"st-folder", ExportFormat::StFolder}};
     auto found = formats.find(name);
     if (found == formats.end()) {
-        err << "ggstudio-cli: --format takes plcopen, st or st-folder, not '" << name << "'\n";
+        err << "ggstudio-cli: --format takes plcopen, st or st-folder, not '" << name << "'" << lineEnd;
         return false;
     }
     format = found->second;
@@ -224,10 +225,11 @@ bool reportExportErrors(const std::string& path, const core::Model& model, bool 
     for (const core::Diagnostic& d : diagnostics) {
         if (d.severity == core::Severity::Error)
             err << path << ": " << core::diagnosticElementLabel(d) << ": error: " << d.code << ": " << d.message
-                << "\n";
+                << lineEnd;
     }
-    err << (force ? "ggstudio-cli: exporting anyway (--force): the code marks each problem with a comment\n"
-                  : "ggstudio-cli: the model has errors; fix them or export anyway with --force\n");
+    err << (force ? "ggstudio-cli: exporting anyway (--force): the code marks each problem with a comment"
+                  : "ggstudio-cli: the model has errors; fix them or export anyway with --force")
+        << lineEnd;
     return force;
 }
 
@@ -288,11 +290,11 @@ int commandExport(const Arguments& args, Streams streams)
     if (!reportExportErrors(input, *model, args.has("--force"), streams.err))
         return ModelHasErrors;
     if (isStandardOutput(*output)) {
-        streams.out << exportText(*model, dialect, format);
+        writeVerbatim(streams.out, exportText(*model, dialect, format));
         return Success;
     }
     if (core::Status status = writeExport(*model, dialect, format, *output); !status) {
-        streams.err << *output << ": " << status.message << "\n";
+        streams.err << *output << ": " << status.message << lineEnd;
         return UnreadableInput;
     }
     return Success;
@@ -308,7 +310,7 @@ int commandSt(const Arguments& args, Streams streams)
     core::Dialect dialect;
     if (!chooseDialect(args, *model, dialect, streams.err))
         return UsageError;
-    streams.out << core::previewGemmaProgram(*model, dialect).text;
+    writeVerbatim(streams.out, core::previewGemmaProgram(*model, dialect).text);
     return Success;
 }
 
@@ -329,16 +331,16 @@ void printScan(const core::ScanRecord& record, const core::Simulator& simulator,
     out << "scan " << record.scan << ": " << (record.stepAfter.empty() ? "(no visible step)" : record.stepAfter);
     if (!record.fired.empty())
         out << " fired " << record.fired;
-    out << "\n";
+    out << lineEnd;
     if (!trace)
         return;
     std::string inputs;
     for (const core::InputChange& change : record.changedInputs)
         inputs += (inputs.empty() ? "" : ", ") + change.variable + " = " + core::cond::formatValue(change.value);
-    out << "    inputs changed: " << (inputs.empty() ? "none" : inputs) << "\n";
-    out << "    Entry = " << (record.entry ? "TRUE" : "FALSE") << "\n";
-    out << "    tokens: " << joinValues(simulator.tokenNames(), record.tokens) << "\n";
-    out << "    Complete: " << joinValues(simulator.nestedSteps(), record.complete) << "\n";
+    out << "    inputs changed: " << (inputs.empty() ? "none" : inputs) << lineEnd;
+    out << "    Entry = " << (record.entry ? "TRUE" : "FALSE") << lineEnd;
+    out << "    tokens: " << joinValues(simulator.tokenNames(), record.tokens) << lineEnd;
+    out << "    Complete: " << joinValues(simulator.nestedSteps(), record.complete) << lineEnd;
 }
 
 // The scenario file, parsed and checked against the model; false (and the
@@ -348,7 +350,7 @@ bool loadScenario(const std::string& path, const core::Simulator& simulator, cor
 {
     std::string text;
     if (core::Status status = core::readFileLimited(path, 16u * 1024u * 1024u, text); !status) {
-        err << path << ": " << status.message << "\n";
+        err << path << ": " << status.message << lineEnd;
         return false;
     }
     core::ScenarioParseResult parsed = core::parseScenario(text, path);
@@ -356,7 +358,7 @@ bool loadScenario(const std::string& path, const core::Simulator& simulator, cor
     if (parsed.ok())
         errors = core::validateScenario(parsed.scenario, simulator);
     for (const core::ScenarioError& error : errors)
-        err << error.toString() << "\n";
+        err << error.toString() << lineEnd;
     scenario = std::move(parsed.scenario);
     return errors.empty();
 }
@@ -386,7 +388,7 @@ int commandSimulate(const Arguments& args, Streams streams)
         errors += problem.kind == core::GemmaProblem::Kind::Error ? 1 : 0;
     if (errors > 0)
         streams.err << files[0] << ": " << errors << " error(s) in the model (see 'ggstudio-cli validate'): "
-                    << "a condition that cannot be used never fires, as in the generated code\n";
+                    << "a condition that cannot be used never fires, as in the generated code" << lineEnd;
 
     core::Scenario scenario;
     if (files.size() == 2 && !loadScenario(files[1], simulator, scenario, streams.err))
@@ -401,7 +403,7 @@ int commandSimulate(const Arguments& args, Streams streams)
         const core::ScanRecord record = runner.step();
         printScan(record, simulator, trace, streams.out);
         for (const core::ScenarioFailure& failure : runner.lastFailures())
-            streams.err << files[1] << ":" << failure.line << ": " << core::toText(failure) << "\n";
+            streams.err << files[1] << ":" << failure.line << ": " << core::toText(failure) << lineEnd;
         failures += runner.lastFailures().size();
     }
     if (files.size() == 2) {
@@ -409,10 +411,11 @@ int commandSimulate(const Arguments& args, Streams streams)
         for (const core::ScenarioAction& action : scenario.actions)
             expectations += action.isExpectation() && action.scan <= scans ? 1 : 0;
         if (failures > 0) {
-            streams.err << files[1] << ": " << failures << " of " << expectations << " expectation(s) failed\n";
+            streams.err << files[1] << ": " << failures << " of " << expectations << " expectation(s) failed"
+                        << lineEnd;
             return ModelHasErrors;
         }
-        streams.out << files[1] << ": all " << expectations << " expectation(s) met\n";
+        streams.out << files[1] << ": all " << expectations << " expectation(s) met" << lineEnd;
     }
     return Success;
 }
@@ -437,19 +440,17 @@ const std::map<std::string, Command>& commands()
     return table;
 }
 
-} // namespace
-
-int run(const std::vector<std::string>& words, Streams streams)
+int runCommand(const std::vector<std::string>& words, Streams streams)
 {
     if (words.empty())
         return usageError(streams.err, "no command given");
     const std::string& name = words.front();
     if (name == "--help" || name == "-h" || name == "help") {
-        streams.out << kUsage;
+        writeVerbatim(streams.out, kUsage);
         return Success;
     }
     if (name == "--version") {
-        streams.out << "ggstudio-cli " << GGSTUDIO_VERSION << "\n";
+        streams.out << "ggstudio-cli " << GGSTUDIO_VERSION << lineEnd;
         return Success;
     }
     auto command = commands().find(name);
@@ -458,7 +459,7 @@ int run(const std::vector<std::string>& words, Streams streams)
 
     const std::vector<std::string> rest(words.begin() + 1, words.end());
     if (std::find(rest.begin(), rest.end(), "--help") != rest.end()) {
-        streams.out << kUsage;
+        writeVerbatim(streams.out, kUsage);
         return Success;
     }
     Arguments args(rest, command->second.flags);
@@ -469,6 +470,17 @@ int run(const std::vector<std::string>& words, Streams streams)
     if (std::string unknown = args.unknownOptions(allowed); !unknown.empty())
         return usageError(streams.err, unknown);
     return command->second.run(args, streams);
+}
+
+} // namespace
+
+// Every message passes through a TerminalStream: user text quoted in it is
+// escaped, whichever command prints it.
+int run(const std::vector<std::string>& words, Streams streams)
+{
+    TerminalStream out(streams.out);
+    TerminalStream err(streams.err);
+    return runCommand(words, {out, err});
 }
 
 } // namespace cli

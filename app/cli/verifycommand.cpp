@@ -1,5 +1,7 @@
 #include "verifycommand.h"
 
+#include "terminal.h"
+
 #include "core/fileio.h"
 #include "core/gemmaprogram.h"
 #include "core/model.h"
@@ -90,13 +92,13 @@ std::optional<std::vector<std::string>> parseCompleteAutomatic(const std::string
             break;
         if (const std::string reason = notNestedReason(model, id); !reason.empty()) {
             err << "ggstudio-cli: --complete-automatic: " << reason << " (nested steps: "
-                << (nested.empty() ? std::string("none") : joined(nested)) << ")\n";
+                << (nested.empty() ? std::string("none") : joined(nested)) << ")" << lineEnd;
             return std::nullopt;
         }
         ids.insert(id);
     }
     if (ids.empty() || items) {
-        err << "ggstudio-cli: --complete-automatic takes step ids separated by commas, or all\n";
+        err << "ggstudio-cli: --complete-automatic takes step ids separated by commas, or all" << lineEnd;
         return std::nullopt;
     }
     std::vector<std::string> automatic;
@@ -112,23 +114,25 @@ std::optional<std::vector<std::string>> parseCompleteAutomatic(const std::string
 int commandVerify(const Arguments& args, Streams streams)
 {
     if (args.positional().size() != 1) {
-        streams.err << "ggstudio-cli: verify takes one model file\nTry 'ggstudio-cli --help'.\n";
+        streams.err << "ggstudio-cli: verify takes one model file" << lineEnd << "Try 'ggstudio-cli --help'."
+                    << lineEnd;
         return UsageError;
     }
     const std::string& path = args.positional()[0];
     const std::optional<std::string> directory = args.value("--counterexamples");
     if (directory && directory->empty()) {
-        streams.err << "ggstudio-cli: --counterexamples needs a directory\nTry 'ggstudio-cli --help'.\n";
+        streams.err << "ggstudio-cli: --counterexamples needs a directory" << lineEnd << "Try 'ggstudio-cli --help'."
+                    << lineEnd;
         return UsageError;
     }
     if (directory && *directory == "-") {
-        streams.err << "ggstudio-cli: --counterexamples writes a folder: standard output carries the findings\n"
-                       "Try 'ggstudio-cli --help'.\n";
+        streams.err << "ggstudio-cli: --counterexamples writes a folder: standard output carries the findings"
+                    << lineEnd << "Try 'ggstudio-cli --help'." << lineEnd;
         return UsageError;
     }
     core::LoadedModel loaded = core::loadModelFile(path);
     if (!loaded.ok()) {
-        streams.err << loaded.error.toString() << "\n";
+        streams.err << loaded.error.toString() << lineEnd;
         return UnreadableInput;
     }
     std::vector<std::string> automatic;
@@ -143,24 +147,25 @@ int commandVerify(const Arguments& args, Streams streams)
         options.complete[id] = core::CompleteAssumption::Automatic;
     if (directory) {
         if (core::Status target = core::checkFolderTarget(*directory); !target) {
-            streams.err << *directory << ": " << target.message << "\n";
+            streams.err << *directory << ": " << target.message << lineEnd;
             return UnreadableInput;
         }
         std::error_code error;
         std::filesystem::create_directories(*directory, error);
         if (error) {
-            streams.err << *directory << ": cannot create the directory: " << error.message() << "\n";
+            streams.err << *directory << ": cannot create the directory: " << error.message() << lineEnd;
             return UnreadableInput;
         }
     }
     if (const std::optional<std::string> promela = args.value("--promela")) {
         if (promela->empty()) {
-            streams.err << "ggstudio-cli: --promela needs an output file\nTry 'ggstudio-cli --help'.\n";
+            streams.err << "ggstudio-cli: --promela needs an output file" << lineEnd << "Try 'ggstudio-cli --help'."
+                    << lineEnd;
             return UsageError;
         }
         if (*promela == "-") {
-            streams.err << "ggstudio-cli: --promela writes a file: standard output carries the findings\n"
-                           "Try 'ggstudio-cli --help'.\n";
+            streams.err << "ggstudio-cli: --promela writes a file: standard output carries the findings" << lineEnd
+                        << "Try 'ggstudio-cli --help'." << lineEnd;
             return UsageError;
         }
         core::PromelaOptions promelaOptions;
@@ -168,7 +173,7 @@ int commandVerify(const Arguments& args, Streams streams)
         if (core::Status status =
                 core::writeFileAtomically(*promela, core::exportPromela(*loaded.model, promelaOptions));
             !status) {
-            streams.err << *promela << ": " << status.message << "\n";
+            streams.err << *promela << ": " << status.message << lineEnd;
             return UnreadableInput;
         }
     }
@@ -177,23 +182,23 @@ int commandVerify(const Arguments& args, Streams streams)
     for (const core::VerificationFinding& finding : result.findings) {
         streams.out << path << ": " << core::verificationElementLabel(finding) << ": "
                     << core::severityName(finding.severity) << ": " << finding.code << ": " << finding.message
-                    << "\n";
+                    << lineEnd;
         if (!directory || !finding.counterexample)
             continue;
         const std::string file =
             (std::filesystem::path(*directory) / counterexampleName(finding, used)).string();
         if (core::Status status = core::writeFileAtomically(file, finding.counterexample->text); !status) {
-            streams.err << file << ": " << status.message << "\n";
+            streams.err << file << ": " << status.message << lineEnd;
             return UnreadableInput;
         }
-        streams.out << "    counterexample: " << file << " (" << finding.counterexample->scans << " scans)\n";
+        streams.out << "    counterexample: " << file << " (" << finding.counterexample->scans << " scans)" << lineEnd;
     }
     streams.out << path << ": " << result.reachableSteps.size() << " reachable steps, " << result.configurations
                 << " reachable configurations, " << result.findings.size() << " finding(s)"
                 << (result.exhaustive ? "" : " (not exhaustive)");
     if (!automatic.empty())
         streams.out << ", Complete automatic: " << joined(automatic);
-    streams.out << "\n";
+    streams.out << lineEnd;
     return result.violated() ? ModelHasErrors : Success;
 }
 
