@@ -5,7 +5,7 @@
 # Exits non-zero when a target crashes, leaks, times out or is missing.
 #
 #   CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DGGSTUDIO_FUZZ=ON -DGGSTUDIO_BUILD_TESTS=ON
-#   ninja -C build-fuzz fuzz_native_loader fuzz_gggenerator_importer fuzz_condition_parser fuzz_scenario_parser
+#   ninja -C build-fuzz fuzz_native_loader fuzz_gggenerator_importer fuzz_condition_parser fuzz_scenario_parser fuzz_plcopen_reader
 #   tests/fuzz/run-fuzzers.sh build-fuzz 60
 set -u
 
@@ -51,11 +51,13 @@ run() {
     fi
 }
 
-targets=(fuzz_native_loader fuzz_gggenerator_importer fuzz_condition_parser fuzz_scenario_parser)
+targets=(fuzz_native_loader fuzz_gggenerator_importer fuzz_condition_parser fuzz_scenario_parser fuzz_plcopen_reader)
 run fuzz_native_loader 32768 json.dict &
 run fuzz_gggenerator_importer 32768 json.dict &
 run fuzz_condition_parser 2048 conditions.dict &
 run fuzz_scenario_parser 4096 scenario.dict &
+# An export is 36 KB, most of it the embedded model: a whole seed fits.
+run fuzz_plcopen_reader 65536 xml.dict &
 wait
 
 for target in "${targets[@]}"; do
