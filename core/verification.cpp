@@ -325,7 +325,10 @@ void Verifier::explore()
     queue.push({0, m_initial});
     std::vector<bool> done(m_steps.size(), false);
     while (!queue.empty()) {
-        const auto [distance, step] = queue.top();
+        // Named copies, not structured bindings: clang 14 (the fuzz build)
+        // cannot capture bindings in the lambda below.
+        const std::size_t distance = queue.top().first;
+        const int step = queue.top().second;
         queue.pop();
         if (done[static_cast<std::size_t>(step)])
             continue;
@@ -668,7 +671,10 @@ void Verifier::checkTransitions()
             found->second.push_back(Occurrence{static_cast<int>(s), t});
         }
     }
-    for (const auto& [id, occurrences] : byId) {
+    // An entry, not structured bindings: clang 14 cannot capture those.
+    for (const auto& entry : byId) {
+        const std::string& id = entry.first;
+        const std::vector<Occurrence>& occurrences = entry.second;
         const int order = occurrences.front().step * 1000 + static_cast<int>(occurrences.front().transition) + 1;
         const bool allDecided = std::all_of(occurrences.begin(), occurrences.end(),
                                             [&](const Occurrence& o) { return decided(o.step); });
