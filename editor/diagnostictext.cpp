@@ -191,9 +191,15 @@ QString translatedFinding(const core::VerificationFinding& f)
     const std::vector<std::string>& a = f.arguments;
     const std::string& code = f.code;
     const std::size_t n = a.size();
+    // The command line's English message names the limit and the codes;
+    // here the sentence says what the user may rely on.
     if (code == gv::kIncomplete)
-        return DiagnosticText::tr("The verification stopped at its limit of decision-diagram nodes: the model was "
-                                  "not verified, and no property is claimed.");
+        return n == 0 ? DiagnosticText::tr("The verification reached its time or size limit before every property "
+                                           "was decided: the properties not reported were not decided.")
+                      : DiagnosticText::tr("The verification reached its time or size limit before deciding "
+                                           "everything about %1: what is not reported about it was not decided. "
+                                           "Every other finding holds.")
+                            .arg(fromStd(a[0]));
     if (n == 0)
         return {};
     const QString element = fromStd(a[0]);

@@ -447,6 +447,7 @@ void TestVerification::everyCodeHasATemplate()
     // Each code with the arguments the verifier gives: the element, then the elements it names.
     const std::vector<std::vector<std::string>> shapes{
         {gv::kIncomplete},
+        {gv::kIncomplete, "F1"},
         {gv::kUnreachableStep, "F2"},
         {gv::kUnreachableStep, "F2", "A1->F2"},
         {gv::kDeadTransition, "A1->F1"},
