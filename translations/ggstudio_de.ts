@@ -360,8 +360,12 @@
         <translation>Information</translation>
     </message>
     <message>
-        <source>The verification stopped at its limit of decision-diagram nodes: the model was not verified, and no property is claimed.</source>
-        <translation>Die Verifikation hat an ihrer Grenze für Entscheidungsdiagramm-Knoten angehalten: Das Modell wurde nicht verifiziert, keine Eigenschaft wird behauptet.</translation>
+        <source>The verification reached its time or size limit before every property was decided: the properties not reported were not decided.</source>
+        <translation>Die Verifikation hat ihre Zeit- oder Größengrenze erreicht, bevor alle Eigenschaften entschieden waren: Nicht gemeldete Eigenschaften wurden nicht entschieden.</translation>
+    </message>
+    <message>
+        <source>The verification reached its time or size limit before deciding everything about %1: what is not reported about it was not decided. Every other finding holds.</source>
+        <translation>Die Verifikation hat ihre Zeit- oder Größengrenze erreicht, bevor alles über %1 entschieden war: Was dazu nicht gemeldet wird, wurde nicht entschieden. Alle anderen Befunde gelten.</translation>
     </message>
     <message>
         <source>Step %1 can never become active: no effective transition leads to it.</source>
@@ -895,6 +899,20 @@
     <message>
         <source>the end of the line</source>
         <translation>das Zeilenende</translation>
+    </message>
+    <message>
+        <source>invalid UTF-8: a scenario file must be UTF-8 text</source>
+        <translation>ungültiges UTF-8: eine Szenariodatei muss UTF-8-Text sein</translation>
+    </message>
+    <message>
+        <source>%1&apos;s Complete is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
+        <extracomment>a step id, a scan number, then each value with the line that sets it</extracomment>
+        <translation>Complete von %1 erhält in Zyklus %2 zwei Werte: %3 in Zeile %4, %5 in Zeile %6</translation>
+    </message>
+    <message>
+        <source>%1 is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
+        <extracomment>a variable, a scan number, then each value with the line that sets it</extracomment>
+        <translation>%1 erhält in Zyklus %2 zwei Werte: %3 in Zeile %4, %5 in Zeile %6</translation>
     </message>
 </context>
 <context>

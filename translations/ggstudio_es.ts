@@ -360,8 +360,12 @@
         <translation>Información</translation>
     </message>
     <message>
-        <source>The verification stopped at its limit of decision-diagram nodes: the model was not verified, and no property is claimed.</source>
-        <translation>La verificación se detuvo en su límite de nodos de diagrama de decisión: el modelo no se ha verificado y no se afirma ninguna propiedad.</translation>
+        <source>The verification reached its time or size limit before every property was decided: the properties not reported were not decided.</source>
+        <translation>La verificación alcanzó su límite de tiempo o de tamaño antes de decidir todas las propiedades: las propiedades no indicadas no se decidieron.</translation>
+    </message>
+    <message>
+        <source>The verification reached its time or size limit before deciding everything about %1: what is not reported about it was not decided. Every other finding holds.</source>
+        <translation>La verificación alcanzó su límite de tiempo o de tamaño antes de decidirlo todo sobre %1: lo que no se indica sobre ello no se decidió. Todos los demás resultados son válidos.</translation>
     </message>
     <message>
         <source>Step %1 can never become active: no effective transition leads to it.</source>
@@ -895,6 +899,20 @@
     <message>
         <source>the end of the line</source>
         <translation>el final de la línea</translation>
+    </message>
+    <message>
+        <source>invalid UTF-8: a scenario file must be UTF-8 text</source>
+        <translation>UTF-8 no válido: un archivo de escenario debe ser texto UTF-8</translation>
+    </message>
+    <message>
+        <source>%1&apos;s Complete is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
+        <extracomment>a step id, a scan number, then each value with the line that sets it</extracomment>
+        <translation>el Complete de %1 recibe dos valores en el ciclo %2: %3 en la línea %4, %5 en la línea %6</translation>
+    </message>
+    <message>
+        <source>%1 is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
+        <extracomment>a variable, a scan number, then each value with the line that sets it</extracomment>
+        <translation>%1 recibe dos valores en el ciclo %2: %3 en la línea %4, %5 en la línea %6</translation>
     </message>
 </context>
 <context>

@@ -360,8 +360,12 @@
         <translation>Information</translation>
     </message>
     <message>
-        <source>The verification stopped at its limit of decision-diagram nodes: the model was not verified, and no property is claimed.</source>
-        <translation>La vérification s&apos;est arrêtée à sa limite de nœuds de diagramme de décision&#xa0;: le modèle n&apos;a pas été vérifié, aucune propriété n&apos;est affirmée.</translation>
+        <source>The verification reached its time or size limit before every property was decided: the properties not reported were not decided.</source>
+        <translation>La vérification a atteint sa limite de temps ou de taille avant que toutes les propriétés soient décidées&#xa0;: les propriétés non signalées n&apos;ont pas été décidées.</translation>
+    </message>
+    <message>
+        <source>The verification reached its time or size limit before deciding everything about %1: what is not reported about it was not decided. Every other finding holds.</source>
+        <translation>La vérification a atteint sa limite de temps ou de taille avant de tout décider sur %1&#xa0;: ce qui n&apos;est pas signalé à son sujet n&apos;a pas été décidé. Tous les autres résultats sont valables.</translation>
     </message>
     <message>
         <source>Step %1 can never become active: no effective transition leads to it.</source>
@@ -895,6 +899,20 @@
     <message>
         <source>the end of the line</source>
         <translation>la fin de la ligne</translation>
+    </message>
+    <message>
+        <source>invalid UTF-8: a scenario file must be UTF-8 text</source>
+        <translation>UTF-8 non valide&#xa0;: un fichier de scénario doit être du texte UTF-8</translation>
+    </message>
+    <message>
+        <source>%1&apos;s Complete is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
+        <extracomment>a step id, a scan number, then each value with the line that sets it</extracomment>
+        <translation>le Complete de %1 reçoit deux valeurs au cycle %2&#xa0;: %3 ligne %4, %5 ligne %6</translation>
+    </message>
+    <message>
+        <source>%1 is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
+        <extracomment>a variable, a scan number, then each value with the line that sets it</extracomment>
+        <translation>%1 reçoit deux valeurs au cycle %2&#xa0;: %3 ligne %4, %5 ligne %6</translation>
     </message>
 </context>
 <context>

@@ -360,8 +360,12 @@
         <translation>Informazione</translation>
     </message>
     <message>
-        <source>The verification stopped at its limit of decision-diagram nodes: the model was not verified, and no property is claimed.</source>
-        <translation>La verifica si è fermata al suo limite di nodi del diagramma di decisione: il modello non è stato verificato e nessuna proprietà è garantita.</translation>
+        <source>The verification reached its time or size limit before every property was decided: the properties not reported were not decided.</source>
+        <translation>La verifica ha raggiunto il suo limite di tempo o di dimensione prima di decidere tutte le proprietà: le proprietà non segnalate non sono state decise.</translation>
+    </message>
+    <message>
+        <source>The verification reached its time or size limit before deciding everything about %1: what is not reported about it was not decided. Every other finding holds.</source>
+        <translation>La verifica ha raggiunto il suo limite di tempo o di dimensione prima di decidere tutto su %1: ciò che non è segnalato al riguardo non è stato deciso. Tutti gli altri risultati valgono.</translation>
     </message>
     <message>
         <source>Step %1 can never become active: no effective transition leads to it.</source>
@@ -895,6 +899,20 @@
     <message>
         <source>the end of the line</source>
         <translation>la fine della riga</translation>
+    </message>
+    <message>
+        <source>invalid UTF-8: a scenario file must be UTF-8 text</source>
+        <translation>UTF-8 non valido: un file di scenario deve essere testo UTF-8</translation>
+    </message>
+    <message>
+        <source>%1&apos;s Complete is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
+        <extracomment>a step id, a scan number, then each value with the line that sets it</extracomment>
+        <translation>il Complete di %1 riceve due valori nel ciclo %2: %3 alla riga %4, %5 alla riga %6</translation>
+    </message>
+    <message>
+        <source>%1 is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
+        <extracomment>a variable, a scan number, then each value with the line that sets it</extracomment>
+        <translation>%1 riceve due valori nel ciclo %2: %3 alla riga %4, %5 alla riga %6</translation>
     </message>
 </context>
 <context>

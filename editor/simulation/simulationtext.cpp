@@ -138,6 +138,20 @@ QString syntaxErrorText(core::ScenarioError::Kind kind, const QString& found)
     }
 }
 
+// Two sets of one thing to different values in one scan.
+QString conflictText(const core::ScenarioError& error)
+{
+    const QString parts[] = {fromStd(error.subject), QString::number(error.scan), fromStd(error.otherValue),
+                             QString::number(error.otherLine), fromStd(error.found), QString::number(error.line)};
+    if (error.kind == core::ScenarioError::Kind::ConflictingComplete)
+        //: a step id, a scan number, then each value with the line that sets it
+        return SimulationText::tr("%1's Complete is set to two values in scan %2: %3 on line %4, %5 on line %6")
+            .arg(parts[0], parts[1], parts[2], parts[3], parts[4], parts[5]);
+    //: a variable, a scan number, then each value with the line that sets it
+    return SimulationText::tr("%1 is set to two values in scan %2: %3 on line %4, %5 on line %6")
+        .arg(parts[0], parts[1], parts[2], parts[3], parts[4], parts[5]);
+}
+
 QString scenarioErrorMessage(const core::ScenarioError& error)
 {
     using Kind = core::ScenarioError::Kind;
@@ -157,6 +171,9 @@ QString scenarioErrorMessage(const core::ScenarioError& error)
         return SimulationText::tr("transition %1 is not effective (it or one of its steps is hidden)").arg(subject);
     case Kind::UnknownTransition: return SimulationText::tr("unknown transition '%1'").arg(subject);
     case Kind::UnknownToken: return SimulationText::tr("unknown token '%1'").arg(subject);
+    case Kind::InvalidUtf8: return SimulationText::tr("invalid UTF-8: a scenario file must be UTF-8 text");
+    case Kind::ConflictingValue:
+    case Kind::ConflictingComplete: return conflictText(error);
     default: break;
     }
     const QString found = error.found.empty() ? SimulationText::tr("the end of the line")

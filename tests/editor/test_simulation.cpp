@@ -461,6 +461,8 @@ void TestSimulation::scenarioErrorsAreInTheUiLanguage()
         "at 3: expect variable", "at 3: expect entry", "at 3: expect fired none now", "at 1: set Nope = TRUE",
         "at 2: set BatchSize = 40000", "at 2: expect step F3", "at 2: expect step Q7", "at 3: expect fired A1->F5",
         "at 3: expect fired A1->Z1", "at 4: set complete F2 = TRUE", "at 4: expect token Start_F1_1_MEM = TRUE",
+        "at 1: set HomePosition\xff = TRUE", "at 2: set HomePosition = TRUE\nat 2: set HomePosition = FALSE",
+        "at 2: set complete F1 = TRUE\nat 2: set complete F1 = auto",
     };
     std::set<core::ScenarioError::Kind> kinds;
     for (const char* line : lines) {
