@@ -364,29 +364,25 @@ Status Grafcet::removeTransition(int number)
 
 Status Grafcet::setUpstream(int number, std::vector<int> steps)
 {
-    GrafcetTransition* t = mutableTransition(number);
-    if (!t)
-        return unknownTransition(number);
-    if (Status status = checkStepSet(steps, "upstream"); !status)
-        return status;
-    beginChanges();
-    if (t->upstream != steps) {
-        t->upstream = std::move(steps);
-        changed(GrafcetChange::Kind::Transition, number);
-    }
-    return Status::success();
+    return setStepSet(number, std::move(steps), &GrafcetTransition::upstream, "upstream");
 }
 
 Status Grafcet::setDownstream(int number, std::vector<int> steps)
 {
+    return setStepSet(number, std::move(steps), &GrafcetTransition::downstream, "downstream");
+}
+
+Status Grafcet::setStepSet(int number, std::vector<int> steps, std::vector<int> GrafcetTransition::*set,
+                           std::string_view which)
+{
     GrafcetTransition* t = mutableTransition(number);
     if (!t)
         return unknownTransition(number);
-    if (Status status = checkStepSet(steps, "downstream"); !status)
+    if (Status status = checkStepSet(steps, which); !status)
         return status;
     beginChanges();
-    if (t->downstream != steps) {
-        t->downstream = std::move(steps);
+    if (t->*set != steps) {
+        t->*set = std::move(steps);
         changed(GrafcetChange::Kind::Transition, number);
     }
     return Status::success();

@@ -129,6 +129,8 @@ private:
     GrafcetStep* mutableStep(int number);
     GrafcetTransition* mutableTransition(int number);
     Status checkStepSet(const std::vector<int>& steps, std::string_view which) const;
+    Status setStepSet(int number, std::vector<int> steps, std::vector<int> GrafcetTransition::*set,
+                      std::string_view which);
     void beginChanges() { m_lastChanges.clear(); }
     void changed(GrafcetChange::Kind kind, int number = 0) { m_lastChanges.push_back({kind, number}); }
 
