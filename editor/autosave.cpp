@@ -2,8 +2,8 @@
 
 #include "editor/document.h"
 
-#include "core/fileio.h"
-#include "core/modelfiles.h"
+#include "core/formats/fileio.h"
+#include "core/formats/modelfiles.h"
 
 #include <QCryptographicHash>
 #include <QDir>

@@ -2,7 +2,7 @@
 
 #include "editor/chart/chartscene.h"
 
-#include "core/fileio.h"
+#include "core/formats/fileio.h"
 
 #include <QBuffer>
 #include <QFile>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/conditionparseerror.h"
+#include "core/condition/conditionparseerror.h"
 
 #include <QString>
 

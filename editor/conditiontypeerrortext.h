@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/conditiontypeerror.h"
+#include "core/condition/conditiontypeerror.h"
 
 #include <QString>
 

@@ -4,8 +4,8 @@
 #include "editor/conditiontypeerrortext.h"
 #include "editor/valueproblemtext.h"
 
-#include "core/gemmatemplate.h"
-#include "core/iectypes.h"
+#include "core/model/gemmatemplate.h"
+#include "core/model/iectypes.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -249,7 +249,7 @@ QString translatedFinding(const core::VerificationFinding& f)
 }
 
 // A claim that needs a path whose counterexample does not replay is only
-// information (core/verification.h).
+// information (core/verification/verification.h).
 bool unconfirmed(const core::VerificationFinding& f)
 {
     namespace gv = core::verification;

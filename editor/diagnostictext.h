@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/diagnostic.h"
-#include "core/verification.h"
+#include "core/checks/diagnostic.h"
+#include "core/verification/verification.h"
 
 #include <QString>
 

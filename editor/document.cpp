@@ -2,8 +2,8 @@
 
 #include "editor/commands/modelcommand.h"
 
-#include "core/checks.h"
-#include "core/iectypes.h"
+#include "core/checks/checks.h"
+#include "core/model/iectypes.h"
 
 #include <QFile>
 #include <QFileInfo>

@@ -2,9 +2,9 @@
 
 #include "editor/elementref.h"
 
-#include "core/diagnostic.h"
-#include "core/model.h"
-#include "core/modelfiles.h"
+#include "core/checks/diagnostic.h"
+#include "core/model/model.h"
+#include "core/formats/modelfiles.h"
 
 #include <QObject>
 #include <QString>

@@ -7,11 +7,11 @@
 #include "editor/exportoptionsdialog.h"
 #include "editor/settings.h"
 
-#include "core/fileio.h"
-#include "core/modelfiles.h"
-#include "core/plcopenwriter.h"
-#include "core/stexport.h"
-#include "core/stgenerator.h"
+#include "core/formats/fileio.h"
+#include "core/formats/modelfiles.h"
+#include "core/codegen/plcopenwriter.h"
+#include "core/codegen/stexport.h"
+#include "core/codegen/stgenerator.h"
 
 #include <QAction>
 #include <QDir>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/diagnostic.h"
-#include "core/model.h"
+#include "core/checks/diagnostic.h"
+#include "core/model/model.h"
 
 #include <QObject>
 #include <QString>

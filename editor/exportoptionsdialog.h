@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <QDialog>
 
@@ -12,7 +12,7 @@ namespace editor {
 
 // Asks how to export the code: the dialect (IEC 61131-3 or CODESYS) and,
 // for Structured Text, one file per POU in a folder or one single file. The
-// single file is always IEC (core/stexport.h), so the dialect is disabled
+// single file is always IEC (core/codegen/stexport.h), so the dialect is disabled
 // when it is chosen.
 class ExportOptionsDialog : public QDialog {
     Q_OBJECT

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/diagnostic.h"
+#include "core/checks/diagnostic.h"
 
 #include <QIcon>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/valueproblem.h"
+#include "core/condition/valueproblem.h"
 
 #include <QString>
 

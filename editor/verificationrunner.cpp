@@ -3,8 +3,8 @@
 #include "editor/document.h"
 #include "editor/simulation/simulationsession.h"
 
-#include "core/model.h"
-#include "core/simulator.h"
+#include "core/model/model.h"
+#include "core/simulation/simulator.h"
 
 #include <QThread>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/verification.h"
+#include "core/verification/verification.h"
 
 #include <QObject>
 #include <QPointer>

@@ -1,6 +1,6 @@
 #include "terminal.h"
 
-#include "core/diagnostic.h"
+#include "core/checks/diagnostic.h"
 
 namespace cli {
 

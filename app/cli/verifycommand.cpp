@@ -2,12 +2,12 @@
 
 #include "terminal.h"
 
-#include "core/fileio.h"
-#include "core/gemmaprogram.h"
-#include "core/model.h"
-#include "core/modelfiles.h"
-#include "core/promela.h"
-#include "core/verification.h"
+#include "core/formats/fileio.h"
+#include "core/codegen/gemmaprogram.h"
+#include "core/model/model.h"
+#include "core/formats/modelfiles.h"
+#include "core/verification/promela.h"
+#include "core/verification/verification.h"
 
 #include <filesystem>
 #include <optional>

@@ -1,6 +1,6 @@
 #include "core/model/grafcet.h"
 
-#include "core/conditionparser.h"
+#include "core/condition/conditionparser.h"
 
 #include <algorithm>
 #include <set>

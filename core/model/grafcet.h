@@ -15,7 +15,7 @@
 // failed Status, leaving the GRAFCET untouched. What a valid GRAFCET needs
 // beyond that (an initial step, reachable steps...) is for the checks.
 
-#include "core/status.h"
+#include "core/model/status.h"
 
 #include <string>
 #include <string_view>

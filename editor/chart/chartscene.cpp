@@ -1,6 +1,6 @@
 #include "editor/chart/chartscene.h"
 
-#include "core/chartlayout.h"
+#include "core/layout/chartlayout.h"
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/frameitem.h"
 #include "editor/chart/layoutconversion.h"

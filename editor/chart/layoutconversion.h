@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/chartlayout.h"
+#include "core/layout/chartlayout.h"
 
 #include <QPointF>
 #include <QRectF>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/status.h"
+#include "core/model/status.h"
 
 #include <QUndoCommand>
 

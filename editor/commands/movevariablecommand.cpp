@@ -2,7 +2,7 @@
 
 #include "editor/commands/commandids.h"
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 namespace editor {
 

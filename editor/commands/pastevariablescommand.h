@@ -2,7 +2,7 @@
 
 #include "editor/commands/modelcommand.h"
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <QCoreApplication>
 

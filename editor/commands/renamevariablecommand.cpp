@@ -3,7 +3,7 @@
 #include "editor/commands/commandids.h"
 #include "editor/diagnostictext.h"
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 namespace editor {
 

@@ -2,7 +2,7 @@
 
 #include "editor/commands/modelcommand.h"
 
-#include "core/gemmatemplate.h"
+#include "core/model/gemmatemplate.h"
 
 #include <QCoreApplication>
 

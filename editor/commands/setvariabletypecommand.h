@@ -2,7 +2,7 @@
 
 #include "editor/commands/modelcommand.h"
 
-#include "core/iectypes.h"
+#include "core/model/iectypes.h"
 
 #include <QCoreApplication>
 

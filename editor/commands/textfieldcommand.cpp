@@ -1,6 +1,6 @@
 #include "editor/commands/textfieldcommand.h"
 
-#include "core/iectypes.h"
+#include "core/model/iectypes.h"
 
 namespace editor {
 

@@ -1,6 +1,6 @@
 #include "editor/docks/elementlabels.h"
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/gemmatemplate.h"
+#include "core/model/gemmatemplate.h"
 
 #include <QString>
 

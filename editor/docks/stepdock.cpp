@@ -14,7 +14,7 @@
 #include "editor/severityicon.h"
 #include "editor/statenames.h"
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <QCheckBox>
 #include <QComboBox>

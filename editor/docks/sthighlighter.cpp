@@ -1,6 +1,6 @@
 #include "editor/docks/sthighlighter.h"
 
-#include "core/iectypes.h"
+#include "core/model/iectypes.h"
 
 #include <QGuiApplication>
 #include <QPalette>

@@ -5,7 +5,7 @@
 #include "editor/document.h"
 #include "editor/selection.h"
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <QComboBox>
 #include <QEvent>

@@ -2,7 +2,7 @@
 
 #include "editor/elementref.h"
 
-#include "core/stgenerator.h"
+#include "core/codegen/stgenerator.h"
 
 #include <QDockWidget>
 

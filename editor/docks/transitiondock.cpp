@@ -14,9 +14,9 @@
 #include "editor/selection.h"
 #include "editor/statenames.h"
 
-#include "core/conditionanalysis.h"
-#include "core/conditionparser.h"
-#include "core/model.h"
+#include "core/condition/conditionanalysis.h"
+#include "core/condition/conditionparser.h"
+#include "core/model/model.h"
 
 #include <QCheckBox>
 #include <QFormLayout>

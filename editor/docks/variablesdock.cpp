@@ -12,8 +12,8 @@
 #include "editor/selection.h"
 #include "editor/severityicon.h"
 
-#include "core/iectypes.h"
-#include "core/model.h"
+#include "core/model/iectypes.h"
+#include "core/model/model.h"
 
 #include <QAction>
 #include <QClipboard>

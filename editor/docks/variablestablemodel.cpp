@@ -7,7 +7,7 @@
 #include "editor/diagnostictext.h"
 #include "editor/document.h"
 
-#include "core/iectypes.h"
+#include "core/model/iectypes.h"
 
 #include <QColor>
 #include <QFont>

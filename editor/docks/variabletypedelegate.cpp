@@ -1,6 +1,6 @@
 #include "editor/docks/variabletypedelegate.h"
 
-#include "core/iectypes.h"
+#include "core/model/iectypes.h"
 
 #include <QComboBox>
 

@@ -7,8 +7,8 @@
 #include "editor/simulation/tracetablemodel.h"
 #include "editor/statenames.h"
 
-#include "core/model.h"
-#include "core/simulator.h"
+#include "core/model/model.h"
+#include "core/simulation/simulator.h"
 
 #include <QCheckBox>
 #include <QComboBox>

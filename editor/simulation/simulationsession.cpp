@@ -3,7 +3,7 @@
 #include "editor/document.h"
 #include "editor/simulation/simulationtext.h"
 
-#include "core/fileio.h"
+#include "core/formats/fileio.h"
 
 #include <QCoreApplication>
 #include <QDateTime>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/scenario.h"
-#include "core/simulator.h"
+#include "core/simulation/scenario.h"
+#include "core/simulation/simulator.h"
 
 #include <QElapsedTimer>
 #include <QObject>

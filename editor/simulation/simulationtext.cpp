@@ -4,7 +4,7 @@
 #include "editor/docks/elementlabels.h"
 #include "editor/valueproblemtext.h"
 
-#include "core/diagnostic.h"
+#include "core/checks/diagnostic.h"
 
 #include <QCoreApplication>
 #include <QStringList>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/explanationreason.h"
-#include "core/scenario.h"
+#include "core/simulation/explanationreason.h"
+#include "core/simulation/scenario.h"
 
 #include <QString>
 

@@ -3,7 +3,7 @@
 #include "editor/docks/elementlabels.h"
 #include "editor/simulation/simulationsession.h"
 
-#include "core/conditionevaluator.h"
+#include "core/condition/conditionevaluator.h"
 
 #include <QStringList>
 

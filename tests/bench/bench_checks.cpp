@@ -1,6 +1,6 @@
 #include "modelfactory.h"
 
-#include "core/checks.h"
+#include "core/checks/checks.h"
 
 #include <catch2/catch.hpp>
 

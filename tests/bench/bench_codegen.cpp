@@ -1,7 +1,7 @@
 #include "modelfactory.h"
 
-#include "core/plcopenwriter.h"
-#include "core/stgenerator.h"
+#include "core/codegen/plcopenwriter.h"
+#include "core/codegen/stgenerator.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 #include "modelfactory.h"
 
-#include "core/nativeformat.h"
-#include "core/plcopenreader.h"
+#include "core/formats/nativeformat.h"
+#include "core/formats/plcopenreader.h"
 
 #include <catch2/catch.hpp>
 

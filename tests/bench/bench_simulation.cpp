@@ -1,6 +1,6 @@
 #include "modelfactory.h"
 
-#include "core/simulator.h"
+#include "core/simulation/simulator.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-// Verification (core/verification.h): the realistic model (budget 50 ms) and
+// Verification (core/verification/verification.h): the realistic model (budget 50 ms) and
 // the verification stress model (40 BOOL variables, a token on every eligible
 // variable: 2^27 token configurations in F1 alone; budget 1 s); and the
 // hostile shapes of issue 15, each within the default budget of the command
@@ -6,7 +6,7 @@
 // condition, 24 mixed operands per condition, and two conditions of about
 // 5,000 characters (which end with GV100 findings naming them).
 
-#include "core/verification.h"
+#include "core/verification/verification.h"
 
 #include "modelfactory.h"
 

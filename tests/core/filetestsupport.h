@@ -3,7 +3,7 @@
 // Helpers of the model file tests: a model that uses every feature both file
 // formats express, and a scratch folder that cleans up after itself.
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <filesystem>
 #include <string>

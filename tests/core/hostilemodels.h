@@ -6,7 +6,7 @@
 // line breaks, terminal escapes, bidi overrides, non-ASCII, invalid UTF-8,
 // keywords, the generator's own names), mixed with ordinary ones.
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <cstdint>
 #include <string_view>

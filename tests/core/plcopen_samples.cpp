@@ -5,9 +5,9 @@
 #include "modelfactory.h"
 #include "samplemodels.h"
 
-#include "core/fileio.h"
-#include "core/plcopenwriter.h"
-#include "core/stgenerator.h"
+#include "core/formats/fileio.h"
+#include "core/codegen/plcopenwriter.h"
+#include "core/codegen/stgenerator.h"
 
 #include <cstdio>
 #include <exception>

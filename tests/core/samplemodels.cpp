@@ -1,6 +1,6 @@
 #include "samplemodels.h"
 
-#include "core/checks.h"
+#include "core/checks/checks.h"
 
 #include <array>
 #include <random>

@@ -4,7 +4,7 @@
 // those of tests/support/modelfactory.h: the GG-Generator paper case study
 // (tokens, all three step types, six function blocks) and seeded random ones.
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <cstdint>
 

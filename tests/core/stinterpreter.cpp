@@ -1,7 +1,7 @@
 #include "stinterpreter.h"
 
-#include "core/conditionparser.h"
-#include "core/iectypes.h"
+#include "core/condition/conditionparser.h"
+#include "core/model/iectypes.h"
 
 #include <cctype>
 

@@ -13,8 +13,8 @@
 //   IF Initialization THEN Complete := FALSE; END_IF;
 //   Complete := TRUE;           (or the manual value the test gives)
 
-#include "core/conditionevaluator.h"
-#include "core/conditionsyntax.h"
+#include "core/condition/conditionevaluator.h"
+#include "core/condition/conditionsyntax.h"
 
 #include <map>
 #include <memory>

@@ -1,5 +1,5 @@
-#include "core/chartlayout.h"
-#include "core/gemmatemplate.h"
+#include "core/layout/chartlayout.h"
+#include "core/model/gemmatemplate.h"
 
 #include <catch2/catch.hpp>
 

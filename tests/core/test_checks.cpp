@@ -1,8 +1,8 @@
 #include <catch2/catch.hpp>
 
-#include "core/checks.h"
-#include "core/diagnostic.h"
-#include "core/model.h"
+#include "core/checks/checks.h"
+#include "core/checks/diagnostic.h"
+#include "core/model/model.h"
 
 #include <algorithm>
 #include <string>

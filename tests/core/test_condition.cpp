@@ -1,8 +1,8 @@
-#include "core/conditionanalysis.h"
-#include "core/conditionevaluator.h"
-#include "core/conditionparser.h"
-#include "core/model.h"
-#include "core/symboltable.h"
+#include "core/condition/conditionanalysis.h"
+#include "core/condition/conditionevaluator.h"
+#include "core/condition/conditionparser.h"
+#include "core/model/model.h"
+#include "core/condition/symboltable.h"
 
 #include <catch2/catch.hpp>
 

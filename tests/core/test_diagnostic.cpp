@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "core/diagnostic.h"
+#include "core/checks/diagnostic.h"
 
 #include <string>
 

@@ -1,8 +1,8 @@
 #include "filetestsupport.h"
 
-#include "core/fileio.h"
-#include "core/modelfiles.h"
-#include "core/nativeformat.h"
+#include "core/formats/fileio.h"
+#include "core/formats/modelfiles.h"
+#include "core/formats/nativeformat.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 #include "filetestsupport.h"
 
-#include "core/gggeneratorformat.h"
-#include "core/nativeformat.h"
+#include "core/formats/gggeneratorformat.h"
+#include "core/formats/nativeformat.h"
 
 #include <catch2/catch.hpp>
 

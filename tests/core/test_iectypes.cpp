@@ -1,4 +1,4 @@
-#include "core/iectypes.h"
+#include "core/model/iectypes.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 #include "filetestsupport.h"
 
-#include "core/nativeformat.h"
+#include "core/formats/nativeformat.h"
 
 #include <catch2/catch.hpp>
 

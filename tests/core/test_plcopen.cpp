@@ -1,13 +1,13 @@
 #include "hostilemodels.h"
 #include "samplemodels.h"
 
-#include "core/checks.h"
-#include "core/modelfiles.h"
-#include "core/nativeformat.h"
-#include "core/plcopenreader.h"
-#include "core/plcopenwriter.h"
-#include "core/stgenerator.h"
-#include "core/xmltext.h"
+#include "core/checks/checks.h"
+#include "core/formats/modelfiles.h"
+#include "core/formats/nativeformat.h"
+#include "core/formats/plcopenreader.h"
+#include "core/codegen/plcopenwriter.h"
+#include "core/codegen/stgenerator.h"
+#include "core/formats/xmltext.h"
 
 #include <catch2/catch.hpp>
 #include <tinyxml2.h>

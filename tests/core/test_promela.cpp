@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
-#include "core/model.h"
-#include "core/promela.h"
+#include "core/model/model.h"
+#include "core/verification/promela.h"
 #include "hostilemodels.h"
 
 #include <regex>

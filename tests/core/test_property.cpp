@@ -1,6 +1,6 @@
 #include "modelfactory.h"
 
-#include "core/nativeformat.h"
+#include "core/formats/nativeformat.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 #include <catch2/catch.hpp>
 
-#include "core/model.h"
-#include "core/scenario.h"
-#include "core/simulator.h"
+#include "core/model/model.h"
+#include "core/simulation/scenario.h"
+#include "core/simulation/simulator.h"
 #include "modelfactory.h"
 
 #include <string>

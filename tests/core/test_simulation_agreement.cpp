@@ -1,8 +1,8 @@
 #include <catch2/catch.hpp>
 
-#include "core/model.h"
-#include "core/simulator.h"
-#include "core/stgenerator.h"
+#include "core/model/model.h"
+#include "core/simulation/simulator.h"
+#include "core/codegen/stgenerator.h"
 #include "modelfactory.h"
 #include "samplemodels.h"
 #include "stinterpreter.h"

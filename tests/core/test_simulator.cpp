@@ -1,9 +1,9 @@
 #include <catch2/catch.hpp>
 
-#include "core/checks.h"
-#include "core/conditionparser.h"
-#include "core/model.h"
-#include "core/simulator.h"
+#include "core/checks/checks.h"
+#include "core/condition/conditionparser.h"
+#include "core/model/model.h"
+#include "core/simulation/simulator.h"
 #include "modelfactory.h"
 
 #include <algorithm>

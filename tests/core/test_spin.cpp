@@ -1,8 +1,8 @@
 #include <catch2/catch.hpp>
 
-#include "core/model.h"
-#include "core/promela.h"
-#include "core/verification.h"
+#include "core/model/model.h"
+#include "core/verification/promela.h"
+#include "core/verification/verification.h"
 #include "modelfactory.h"
 
 #include <algorithm>
@@ -22,7 +22,7 @@
 using namespace core;
 
 // SPIN as an independent check of core::verifyModel: the model is exported as
-// Promela (core/promela.h), SPIN explores it exhaustively, and the verdicts it
+// Promela (core/verification/promela.h), SPIN explores it exhaustively, and the verdicts it
 // gives through its unreached-code report must be the built-in verifier's.
 // docs/verification.md ("SPIN cross-check") says which property maps how.
 

@@ -1,7 +1,7 @@
 #include "samplemodels.h"
 
-#include "core/stexport.h"
-#include "core/stgenerator.h"
+#include "core/codegen/stexport.h"
+#include "core/codegen/stgenerator.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,10 +1,10 @@
 #include <catch2/catch.hpp>
 
-#include "core/checks.h"
-#include "core/diagnostic.h"
-#include "core/gemmaprogram.h"
-#include "core/model.h"
-#include "core/stgenerator.h"
+#include "core/checks/checks.h"
+#include "core/checks/diagnostic.h"
+#include "core/codegen/gemmaprogram.h"
+#include "core/model/model.h"
+#include "core/codegen/stgenerator.h"
 #include "hostilemodels.h"
 #include "modelfactory.h"
 #include "samplemodels.h"

@@ -1,4 +1,4 @@
-#include "core/gemmatemplate.h"
+#include "core/model/gemmatemplate.h"
 
 #include <catch2/catch.hpp>
 

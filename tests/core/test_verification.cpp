@@ -1,9 +1,9 @@
-#include "core/conditionparser.h"
-#include "core/model.h"
-#include "core/satisfiability.h"
-#include "core/scenario.h"
-#include "core/simulator.h"
-#include "core/verification.h"
+#include "core/condition/conditionparser.h"
+#include "core/model/model.h"
+#include "core/verification/satisfiability.h"
+#include "core/simulation/scenario.h"
+#include "core/simulation/simulator.h"
+#include "core/verification/verification.h"
 
 #include "modelfactory.h"
 

@@ -6,7 +6,7 @@
 #include "editor/document.h"
 #include "editor/recoveryprompt.h"
 
-#include "core/modelfiles.h"
+#include "core/formats/modelfiles.h"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -18,7 +18,7 @@
 #include "editor/selection.h"
 #include "editor/statenames.h"
 
-#include "core/gemmatemplate.h"
+#include "core/model/gemmatemplate.h"
 
 #include <QApplication>
 #include <QFontMetricsF>

@@ -24,9 +24,9 @@
 #include "editor/severityicon.h"
 #include "editor/valueproblemtext.h"
 
-#include "core/conditionanalysis.h"
-#include "core/conditionparser.h"
-#include "core/symboltable.h"
+#include "core/condition/conditionanalysis.h"
+#include "core/condition/conditionparser.h"
+#include "core/condition/symboltable.h"
 
 #include <QAbstractItemView>
 #include <QApplication>

@@ -26,7 +26,7 @@
 #include "editor/statusindicators.h"
 #include "editor/windowbuttonstyle.h"
 
-#include "core/modelfiles.h"
+#include "core/formats/modelfiles.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>

@@ -21,8 +21,8 @@
 #include "editor/simulation/tracetablemodel.h"
 #include "editor/statusindicators.h"
 
-#include "core/conditionevaluator.h"
-#include "core/scenario.h"
+#include "core/condition/conditionevaluator.h"
+#include "core/simulation/scenario.h"
 
 #include <QAbstractButton>
 #include <QAction>

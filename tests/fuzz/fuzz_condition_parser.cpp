@@ -2,10 +2,10 @@
 // arbitrary text. Spans must stay inside the text, and printing must be a
 // fixed point: the printed condition parses and prints to itself.
 
-#include "core/conditionanalysis.h"
-#include "core/conditionparser.h"
-#include "core/model.h"
-#include "core/symboltable.h"
+#include "core/condition/conditionanalysis.h"
+#include "core/condition/conditionparser.h"
+#include "core/model/model.h"
+#include "core/condition/symboltable.h"
 
 #include <cstdint>
 #include <cstdlib>

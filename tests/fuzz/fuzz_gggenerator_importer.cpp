@@ -1,7 +1,7 @@
 // libFuzzer target: the GG-Generator importer on arbitrary bytes. Whatever
 // imports must be a valid model that survives an export and a re-import.
 
-#include "core/gggeneratorformat.h"
+#include "core/formats/gggeneratorformat.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -2,8 +2,8 @@
 // crashes and sanitizer reports, it checks that whatever loads is a valid
 // model that saves and reloads unchanged, byte for byte.
 
-#include "core/modelfiles.h"
-#include "core/nativeformat.h"
+#include "core/formats/modelfiles.h"
+#include "core/formats/nativeformat.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -4,11 +4,11 @@
 // through, that every XML error has a line and column, and that whatever
 // loads survives a PLCopen export and a re-read.
 
-#include "core/model.h"
-#include "core/plcopenreader.h"
-#include "core/plcopenwriter.h"
-#include "core/stgenerator.h"
-#include "core/xmltext.h"
+#include "core/model/model.h"
+#include "core/formats/plcopenreader.h"
+#include "core/codegen/plcopenwriter.h"
+#include "core/codegen/stgenerator.h"
+#include "core/formats/xmltext.h"
 
 #include <tinyxml2.h>
 

@@ -4,9 +4,9 @@
 // that a leading byte order mark changes nothing, and that a valid scenario
 // runs exactly its last scan's number of scans.
 
-#include "core/model.h"
-#include "core/scenario.h"
-#include "core/simulator.h"
+#include "core/model/model.h"
+#include "core/simulation/scenario.h"
+#include "core/simulation/simulator.h"
 
 #include <cstdint>
 #include <cstdlib>

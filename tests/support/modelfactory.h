@@ -4,7 +4,7 @@
 // model the issues' performance figures refer to, and random edit sequences
 // for the property tests.
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 #include <cstdint>
 #include <random>

@@ -2,8 +2,8 @@
 // quality figures (route crossings, labels lying on routes) to stderr.
 // Usage: dump_layout_svg [output.svg]   (stdout when no file is given)
 
-#include "core/chartlayout.h"
-#include "core/gemmatemplate.h"
+#include "core/layout/chartlayout.h"
+#include "core/model/gemmatemplate.h"
 
 #include <algorithm>
 #include <cmath>

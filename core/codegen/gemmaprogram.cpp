@@ -1,0 +1,347 @@
+#include "core/codegen/gemmaprogram.h"
+
+#include "core/condition/conditionanalysis.h"
+#include "core/model/model.h"
+#include "core/condition/symboltable.h"
+
+#include <algorithm>
+#include <string_view>
+
+namespace core {
+
+namespace {
+
+// Codes and wording shared with the checks (core/checks/checks.cpp), so a comment
+// in the generated code names the same finding as the checks panel.
+constexpr const char* kInitialHiddenCode = "GG001";
+constexpr const char* kConditionSyntaxCode = "GG201";
+constexpr const char* kConditionEmptyCode = "GG202";
+constexpr const char* kTokenNotBoolCode = "GG207";
+constexpr const char* kTokenAbsentCode = "GG208";
+constexpr const char* kTokenBothPolaritiesCode = "GG209";
+constexpr const char* kTokenNoEffectCode = "GG210";
+constexpr const char* kTokenUndeclaredCode = "GG211";
+constexpr const char* kTokenNoLiteralCode = "GG212";
+
+bool isBlank(std::string_view text)
+{
+    return std::all_of(text.begin(), text.end(),
+                       [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; });
+}
+
+std::string quoted(const std::string& name)
+{
+    return "'" + name + "'";
+}
+
+struct BuildContext {
+    const Model& model;
+    SymbolTable symbols;
+};
+
+GemmaProblem makeProblem(GemmaProblem::Kind kind, std::string code, const std::string& element, std::string message,
+                         std::vector<std::string> arguments = {})
+{
+    return GemmaProblem{kind, std::move(code), element, std::move(message), std::move(arguments)};
+}
+
+bool waitsForComplete(StepType sourceType, bool negated, bool family)
+{
+    if (family)
+        return false;
+    switch (sourceType) {
+    case StepType::Simple: return false;
+    case StepType::Macro: return !negated;
+    case StepType::Enclosing: return negated;
+    }
+    return false;
+}
+
+// A condition that reads a variable the code declares under another name
+// (unusableNameCode) is unusable: printing the name would write user text
+// into the code, printing the other name would read a variable the user
+// never named.
+void rejectUndeclarableNames(const BuildContext& context, GemmaTransition& transition)
+{
+    const std::string& id = transition.id;
+    const cond::Expression& expression = transition.condition.expression;
+    std::vector<const Variable*> reported;
+    for (int node : cond::variableNodes(expression)) {
+        const Variable* variable = context.symbols.find(expression.at(node).text);
+        if (!variable || std::find(reported.begin(), reported.end(), variable) != reported.end())
+            continue;
+        const char* code = unusableNameCode(variable->name);
+        if (!code)
+            continue;
+        reported.push_back(variable);
+        const std::string detail = identifierProblemMessage(identifierProblem(variable->name), variable->name);
+        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, code, id,
+                                                  "in the condition of " + id + ": invalid variable name: " + detail,
+                                                  {variable->name, detail}));
+        transition.conditionUsable = false;
+    }
+}
+
+// Parses and type-checks the condition; records why it cannot be used.
+void analyseCondition(const BuildContext& context, GemmaTransition& transition)
+{
+    const std::string& id = transition.id;
+    transition.condition = cond::parse(transition.conditionText);
+    if (isBlank(transition.conditionText)) {
+        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kConditionEmptyCode, id,
+                                                  "the condition of " + id
+                                                      + " is empty: write TRUE for a transition that is always ready",
+                                                  {id}));
+        return;
+    }
+    if (!transition.condition.ok()) {
+        const cond::ParseError& error = *transition.condition.error;
+        std::vector<std::string> arguments{id, excerpt(transition.conditionText, error.span), error.message};
+        cond::appendArguments(error, arguments);
+        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kConditionSyntaxCode, id,
+                                                  "syntax error in the condition of " + id + ": " + error.message,
+                                                  std::move(arguments)));
+        return;
+    }
+    std::vector<cond::TypeIssue> issues = cond::typeCheck(transition.condition.expression, context.symbols);
+    for (cond::TypeIssue& issue : issues) {
+        std::vector<std::string> arguments{id, excerpt(transition.conditionText, issue.span), issue.message};
+        if (issue.error)
+            cond::appendArguments(*issue.error, arguments);
+        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, std::move(issue.code), id,
+                                                  "in the condition of " + id + ": " + issue.message,
+                                                  std::move(arguments)));
+    }
+    transition.conditionUsable = issues.empty();
+    rejectUndeclarableNames(context, transition);
+}
+
+// How one variable occurs in the condition, or why it cannot carry a token.
+struct TokenLiterals {
+    std::vector<int> nodes;
+    bool negated = false;
+    const char* problemCode = nullptr;
+    std::string problem;
+};
+
+TokenLiterals findTokenLiterals(const BuildContext& context, const GemmaTransition& transition,
+                                const Variable& variable)
+{
+    TokenLiterals result;
+    const cond::Expression& expression = transition.condition.expression;
+    bool occurs = false;
+    for (int node : cond::variableNodes(expression))
+        occurs = occurs || context.symbols.find(expression.at(node).text) == &variable;
+    bool sawOpen = false;
+    bool sawClosed = false;
+    for (const cond::Literal& literal : cond::booleanLiterals(expression)) {
+        if (context.symbols.find(expression.at(literal.variableNode).text) != &variable)
+            continue;
+        result.nodes.push_back(literal.node);
+        (literal.negated ? sawClosed : sawOpen) = true;
+    }
+    const std::string name = quoted(variable.name);
+    if (!occurs) {
+        result.problemCode = kTokenAbsentCode;
+        result.problem = name + " does not occur in the condition";
+    } else if (cond::isComparedWithEquality(expression, variable.name)) {
+        result.problemCode = kTokenNoLiteralCode;
+        result.problem = name + " is compared with '=' or '<>' in the condition, where it has no polarity";
+    } else if (result.nodes.empty()) {
+        result.problemCode = kTokenNoLiteralCode;
+        result.problem = name + " occurs in the condition only inside a comparison or other operation, never as a "
+                         "boolean literal";
+    } else if (sawOpen && sawClosed) {
+        result.problemCode = kTokenBothPolaritiesCode;
+        result.problem = "the condition uses both " + variable.name + " and NOT " + variable.name;
+    }
+    result.negated = sawClosed;
+    return result;
+}
+
+// Turns the transition's token names into tokens, ignoring (with a warning)
+// those that cannot take effect; the checks report the same cases as errors.
+void resolveTokens(const BuildContext& context, const Step& source, int priority, GemmaTransition& transition,
+                   const std::vector<std::string>& tokenNames, std::vector<GemmaToken>& tokens)
+{
+    std::vector<const Variable*> done;
+    for (const std::string& tokenName : tokenNames) {
+        auto ignore = [&](const char* code, const std::string& why) {
+            transition.problems.push_back(makeProblem(GemmaProblem::Kind::Warning, code ? code : "", transition.id,
+                                                      "the token on " + quoted(tokenName) + " in " + transition.id
+                                                          + " is not generated: " + why));
+        };
+        if (!hasNestedBehaviour(source.type)) {
+            ignore(kTokenNoEffectCode, "its source " + source.id + " is a simple step");
+            continue;
+        }
+        const Variable* variable = context.symbols.find(tokenName);
+        if (!variable) {
+            ignore(kTokenUndeclaredCode, quoted(tokenName) + " is not a declared variable");
+            continue;
+        }
+        if (std::find(done.begin(), done.end(), variable) != done.end())
+            continue; // the same variable listed twice: one token
+        if (variable->type != IecType::Bool) {
+            ignore(kTokenNotBoolCode, quoted(variable->name) + " is " + std::string(iecTypeName(variable->type))
+                                          + ", and only BOOL variables can have a token");
+            continue;
+        }
+        if (!transition.conditionUsable) {
+            ignore(nullptr, "the condition cannot be used");
+            continue;
+        }
+        TokenLiterals literals = findTokenLiterals(context, transition, *variable);
+        if (literals.problemCode) {
+            ignore(literals.problemCode, literals.problem);
+            continue;
+        }
+        done.push_back(variable);
+        GemmaToken token;
+        token.name = tokenVariableName(variable->name, source.id, priority);
+        token.variable = variable->name;
+        token.polarity = literals.negated ? TokenPolarity::NormallyClosed : TokenPolarity::NormallyOpen;
+        token.transitionId = transition.id;
+        token.literalNodes = std::move(literals.nodes);
+        for (int node : token.literalNodes)
+            transition.substitutions[node] = token.name;
+        tokens.push_back(std::move(token));
+    }
+}
+
+// Tokens in the order of their first literal in the condition, whatever the
+// order the user listed them in.
+void sortTokensBySourcePosition(const GemmaTransition& transition, std::vector<GemmaToken>::iterator first,
+                                std::vector<GemmaToken>::iterator last)
+{
+    const cond::Expression& expression = transition.condition.expression;
+    std::stable_sort(first, last, [&](const GemmaToken& a, const GemmaToken& b) {
+        return expression.at(a.literalNodes.front()).span.begin < expression.at(b.literalNodes.front()).span.begin;
+    });
+}
+
+GemmaTransition makeTransition(const BuildContext& context, const Transition& transition, int priority)
+{
+    GemmaTransition result;
+    result.id = transition.id;
+    result.targetId = transition.target;
+    if (const Step* target = context.model.step(transition.target))
+        result.targetNumber = target->number;
+    result.priority = priority;
+    result.family = transition.isFamilyTransition();
+    result.negated = transition.negated;
+    result.conditionText = transition.condition;
+    analyseCondition(context, result);
+    return result;
+}
+
+// The family transitions every visible F state evaluates first: visible and
+// leading to a visible step.
+std::vector<GemmaTransition> familyTransitions(const BuildContext& context)
+{
+    std::vector<const Transition*> family;
+    for (const Transition& transition : context.model.transitions()) {
+        if (!transition.isFamilyTransition() || transition.hidden)
+            continue;
+        const Step* target = context.model.step(transition.target);
+        if (target && !target->hidden)
+            family.push_back(&transition);
+    }
+    std::stable_sort(family.begin(), family.end(),
+                     [](const Transition* a, const Transition* b) { return a->order < b->order; });
+    std::vector<GemmaTransition> result;
+    int priority = 0;
+    for (const Transition* transition : family) {
+        result.push_back(makeTransition(context, *transition, ++priority));
+        if (!transition->tokens.empty()) {
+            result.back().problems.push_back(makeProblem(GemmaProblem::Kind::Warning, kTokenNoEffectCode,
+                                                         transition->id,
+                                                         "the tokens in " + transition->id + " are not generated: "
+                                                         "family transitions never wait for Complete"));
+        }
+    }
+    return result;
+}
+
+GemmaStep makeStep(const BuildContext& context, const Step& step, const std::vector<GemmaTransition>& family)
+{
+    GemmaStep result;
+    result.id = step.id;
+    result.number = step.number;
+    if (const TemplateState* state = findTemplateState(step.id))
+        result.name = std::string(state->englishName);
+    result.type = step.type;
+    result.initial = step.initial;
+    if (step.family == Family::F)
+        result.transitions = family;
+    int priority = 0;
+    for (const Transition* transition : context.model.effectiveOutgoing(step.id)) {
+        ++priority;
+        GemmaTransition own = makeTransition(context, *transition, priority);
+        own.waitsForComplete = waitsForComplete(step.type, transition->negated, false);
+        std::size_t firstToken = result.tokens.size();
+        resolveTokens(context, step, priority, own, transition->tokens, result.tokens);
+        sortTokensBySourcePosition(own, result.tokens.begin() + static_cast<std::ptrdiff_t>(firstToken),
+                                   result.tokens.end());
+        result.transitions.push_back(std::move(own));
+    }
+    return result;
+}
+
+} // namespace
+
+const GemmaStep* GemmaProgram::step(const std::string& id) const
+{
+    for (const GemmaStep& candidate : steps) {
+        if (candidate.id == id)
+            return &candidate;
+    }
+    return nullptr;
+}
+
+const char* unusableNameCode(std::string_view name)
+{
+    switch (identifierProblem(name)) {
+    case IdentifierProblem::None: return nullptr;
+    case IdentifierProblem::Keyword: return "GG302";
+    case IdentifierProblem::GeneratorName: return "GG303";
+    default: return "GG301"; // the codes of core/checks/checks.cpp
+    }
+}
+
+std::string tokenVariableName(const std::string& variable, const std::string& sourceStepId, int priority)
+{
+    return variable + "_" + sourceStepId + "_" + std::to_string(priority) + "_MEM";
+}
+
+GemmaProgram buildGemmaProgram(const Model& model)
+{
+    BuildContext context{model, SymbolTable(model.variables())};
+    GemmaProgram program;
+    const Step& initial = model.initialStep();
+    program.initialStepId = initial.id;
+    program.initialNumber = initial.number;
+    if (initial.hidden) {
+        program.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kInitialHiddenCode, initial.id,
+                                               "the initial step " + initial.id
+                                                   + " is hidden: the PLC would start in a state that has no code"));
+    }
+
+    const std::vector<GemmaTransition> family = familyTransitions(context);
+    bool familyProblemsReported = false;
+    for (const Step& step : model.steps()) {
+        if (step.hidden)
+            continue;
+        program.steps.push_back(makeStep(context, step, family));
+        for (const GemmaTransition& transition : program.steps.back().transitions) {
+            if (transition.family && familyProblemsReported)
+                continue;
+            program.problems.insert(program.problems.end(), transition.problems.begin(), transition.problems.end());
+        }
+        if (step.family == Family::F)
+            familyProblemsReported = true;
+    }
+    return program;
+}
+
+} // namespace core

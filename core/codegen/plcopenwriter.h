@@ -1,0 +1,45 @@
+#pragma once
+
+// PLCopen XML export of the generated program (spec §7). The IEC dialect
+// writes TC6 XML v2.01 (validates against tc6_xml_v201.xsd); the CODESYS
+// dialect follows what CODESYS V3.5 exports (tc6_0200, GVL with the
+// qualified_only attribute). Both carry the native model in the project's
+// addData so that GG Studio can open the file again (core/formats/plcopenreader.h).
+
+#include "core/model/model.h"
+#include "core/codegen/plcproject.h"
+
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace core {
+
+// The addData entry that carries the native model JSON. A URN, so that it
+// looks like no real web address.
+inline constexpr std::string_view kPlcOpenModelDataName = "urn:ggstudio:model:1";
+inline constexpr std::string_view kPlcOpenModelElement = "ggstudio:model";
+
+inline constexpr std::string_view kPlcOpenNamespace201 = "http://www.plcopen.org/xml/tc6_0201";
+inline constexpr std::string_view kPlcOpenNamespace200 = "http://www.plcopen.org/xml/tc6_0200";
+inline constexpr std::string_view kXhtmlNamespace = "http://www.w3.org/1999/xhtml";
+
+// The current UTC time as an xs:dateTime without fraction: "2026-11-21T10:00:00".
+std::string currentUtcDateTime();
+
+struct PlcOpenOptions {
+    // Injectable clock: the same model and the same clock give the same bytes.
+    std::function<std::string()> now = currentUtcDateTime;
+    std::string productVersion = GGSTUDIO_VERSION;
+};
+
+// The whole PLCopen XML document (UTF-8, with declaration), in the dialect of
+// the project. User text is escaped or put in CDATA; characters XML 1.0 cannot
+// carry are replaced by U+FFFD.
+std::string writePlcOpenXml(const PlcProject& project, const Model& model, const PlcOpenOptions& options = {});
+
+// "T#20ms" (IEC task interval) and "PT0.02S" (CODESYS export style).
+std::string iecTaskInterval(int cycleTimeMs);
+std::string isoTaskInterval(int cycleTimeMs);
+
+} // namespace core

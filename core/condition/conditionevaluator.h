@@ -1,0 +1,53 @@
+#pragma once
+
+// Evaluates a condition the way the PLC does, for the simulator and the
+// verifier (spec §6.6).
+
+#include "core/condition/conditionsyntax.h"
+#include "core/model/iectypes.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace core::cond {
+
+using Value = std::variant<bool, std::int64_t, double>;
+
+// The value of the expression, with `variableValue` giving the value of each
+// Variable node (by node index). ST semantics, computed in 64 bits (LINT /
+// LREAL; a narrower PLC type differs only where it would overflow):
+// - integer arithmetic wraps around instead of overflowing;
+// - integer / truncates toward zero, MOD takes the sign of the dividend;
+// - division or MOD by zero yields 0 (0.0 for reals): a PLC would stop with
+//   a fault, the simulator keeps running;
+// - an integer mixed with a real is converted to a real.
+// The expression should pass typeCheck; otherwise numbers read as BOOL are
+// TRUE when non-zero and BOOLs read as numbers are 1 or 0. An empty
+// expression is FALSE.
+Value evaluate(const Expression& expression, const std::function<Value(int node)>& variableValue);
+
+// TRUE, non-zero.
+bool isTrue(const Value& value);
+
+// The value of a variable's default (or of implicitDefault when empty), for
+// a text defaultValueProblem accepts; nullopt otherwise. ULINT and UDINT
+// values above 9223372036854775807 are clamped to it.
+std::optional<Value> parseValue(IecType type, std::string_view text);
+
+// The values an integer type holds, as the 64-bit values the evaluator
+// computes with: ULINT and UDINT above 9223372036854775807 are clamped to it,
+// as parseValue does. Non-integer types give the whole 64-bit range.
+struct IntegerRange {
+    std::int64_t low;
+    std::int64_t high;
+};
+IntegerRange integerRange(IecType type);
+
+// ST spelling: "TRUE", "-42", "1.5", "2.0".
+std::string formatValue(const Value& value);
+
+} // namespace core::cond

@@ -1,0 +1,324 @@
+#include "core/formats/jsonreader.h"
+
+#include "core/formats/fileio.h"
+#include "core/model/model.h"
+
+#include <cmath>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+using json = nlohmann::ordered_json;
+
+namespace core {
+
+namespace {
+
+// Byte offset of the bracket that opens level maxDepth + 1, if any. Done
+// before parsing so the error can carry a line and column.
+std::optional<std::size_t> findExcessiveNesting(std::string_view text, std::size_t maxDepth)
+{
+    std::size_t depth = 0;
+    bool inString = false;
+    bool escaped = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '{' || c == '[') {
+            if (++depth > maxDepth)
+                return i;
+        } else if ((c == '}' || c == ']') && depth > 0) {
+            --depth;
+        }
+    }
+    return std::nullopt;
+}
+
+// nlohmann's messages read "[json.exception.parse_error.101] parse error at
+// line 1, column 5: syntax error while ...": keep the part after the
+// position, which we compute ourselves in characters rather than bytes.
+std::string syntaxMessage(const std::string& what)
+{
+    const std::size_t colon = what.find(": ");
+    return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+// Builds the DOM like nlohmann's own SAX DOM parser, but refuses duplicate
+// keys (nlohmann silently keeps the last one).
+class StrictDomBuilder : public json::json_sax_t {
+public:
+    StrictDomBuilder(std::string_view text, json& root, JsonReadError& error)
+        : m_text(text), m_root(root), m_error(error)
+    {
+    }
+
+    bool null() override { return add(json(nullptr)); }
+    bool boolean(bool value) override { return add(json(value)); }
+    bool number_integer(number_integer_t value) override { return add(json(value)); }
+    bool number_unsigned(number_unsigned_t value) override { return add(json(value)); }
+    bool number_float(number_float_t value, const string_t&) override { return add(json(value)); }
+    bool string(string_t& value) override { return add(json(std::move(value))); }
+    bool binary(binary_t& value) override { return add(json::binary(std::move(value))); }
+
+    bool start_object(std::size_t) override { return open(json::object()); }
+    bool start_array(std::size_t) override { return open(json::array()); }
+    bool end_object() override { return close(); }
+    bool end_array() override { return close(); }
+
+    bool key(string_t& key) override
+    {
+        Frame& frame = m_stack.back();
+        if (!frame.keys.insert(key).second) {
+            m_error = {childPath(frame.path, key), "duplicate key \"" + key + "\" (each key may appear once per object)"};
+            return false;
+        }
+        frame.pendingKey = std::move(key);
+        return true;
+    }
+
+    bool parse_error(std::size_t position, const std::string&, const json::exception& exception) override
+    {
+        // position counts the bytes read, up to the one where parsing
+        // stopped (the end of the offending token).
+        const std::size_t offset = position > 0 ? position - 1 : 0;
+        m_error = {describePosition(textPosition(m_text, offset)), "malformed JSON: " + syntaxMessage(exception.what())};
+        return false;
+    }
+
+private:
+    struct Frame {
+        json* value;
+        std::string path;
+        std::string pendingKey;
+        std::unordered_set<std::string> keys; // ordered_json finds keys by linear search
+    };
+
+    // Inserts into the current container; returns where the value went.
+    json* insert(json&& value, std::string& path)
+    {
+        if (m_stack.empty()) {
+            m_root = std::move(value);
+            path.clear();
+            return &m_root;
+        }
+        Frame& frame = m_stack.back();
+        if (frame.value->is_array()) {
+            path = childPath(frame.path, frame.value->size());
+            frame.value->push_back(std::move(value));
+            return &frame.value->back();
+        }
+        path = childPath(frame.path, frame.pendingKey);
+        // The key is known to be new: append without ordered_map's linear search.
+        auto& members = static_cast<json::object_t::Container&>(frame.value->get_ref<json::object_t&>());
+        members.emplace_back(std::move(frame.pendingKey), std::move(value));
+        return &members.back().second;
+    }
+
+    bool add(json&& value)
+    {
+        std::string path;
+        insert(std::move(value), path);
+        return true;
+    }
+
+    bool open(json&& container)
+    {
+        std::string path;
+        json* inserted = insert(std::move(container), path);
+        m_stack.push_back({inserted, std::move(path), {}, {}});
+        return true;
+    }
+
+    bool close()
+    {
+        m_stack.pop_back();
+        return true;
+    }
+
+    std::string_view m_text;
+    json& m_root;
+    JsonReadError& m_error;
+    std::vector<Frame> m_stack;
+};
+
+std::string cut(std::string text, std::size_t maxLength)
+{
+    if (text.size() <= maxLength)
+        return text;
+    // Never cut inside a UTF-8 sequence.
+    std::size_t end = maxLength;
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0u) == 0x80u)
+        --end;
+    text.resize(end);
+    return text + "...";
+}
+
+} // namespace
+
+std::optional<json> parseStrictJson(std::string_view text, JsonReadError& error)
+{
+    if (auto problem = findInvalidUtf8(text)) {
+        error = {describePosition(problem->position), "invalid UTF-8: the file must be UTF-8 text"};
+        return std::nullopt;
+    }
+    // nlohmann's lexer takes a NUL byte for the end of the input (it also reads
+    // C strings): without this check, whatever follows a NUL would be ignored.
+    if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+        error = {describePosition(textPosition(text, nul)),
+            "a NUL byte: JSON text cannot contain one (inside a string, write \\u0000)"};
+        return std::nullopt;
+    }
+    if (auto offset = findExcessiveNesting(text, kMaxJsonDepth)) {
+        error = {describePosition(textPosition(text, *offset)),
+            "nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels"};
+        return std::nullopt;
+    }
+    json root;
+    StrictDomBuilder builder(text, root, error);
+    try {
+        if (!json::sax_parse(text, &builder, json::input_format_t::json, true, false))
+            return std::nullopt;
+    } catch (const json::exception& exception) {
+        // sax_parse reports through parse_error; this only guards the unexpected.
+        error = {{}, std::string("malformed JSON: ") + exception.what()};
+        return std::nullopt;
+    }
+    return root;
+}
+
+std::variant<std::unique_ptr<Model>, LoadError> loadModelJson(
+    std::string_view text, const std::string& displayName,
+    const std::function<std::unique_ptr<Model>(const json&)>& build)
+{
+    JsonReadError error;
+    const std::optional<json> root = parseStrictJson(text, error);
+    if (!root)
+        return LoadError{displayName, error.location, error.message};
+    try {
+        return build(*root);
+    } catch (const JsonReadError& failure) {
+        return LoadError{displayName, failure.location, failure.message};
+    }
+}
+
+void failAt(std::string path, std::string message)
+{
+    throw JsonReadError{std::move(path), std::move(message)};
+}
+
+std::string childPath(const std::string& path, std::string_view key)
+{
+    std::string result = path + "/";
+    for (char c : key) {
+        if (c == '~')
+            result += "~0";
+        else if (c == '/')
+            result += "~1";
+        else
+            result += c;
+    }
+    return result;
+}
+
+std::string childPath(const std::string& path, std::size_t index)
+{
+    return path + "/" + std::to_string(index);
+}
+
+std::string describeJsonValue(const json& value)
+{
+    switch (value.type()) {
+    case json::value_t::object: return "an object";
+    case json::value_t::array: return "an array";
+    case json::value_t::binary: return "binary data";
+    case json::value_t::discarded: return "nothing";
+    case json::value_t::string:
+        return cut(value.dump(-1, ' ', false, json::error_handler_t::replace), 60);
+    default:
+        return cut(value.dump(), 60);
+    }
+}
+
+const json& expectObject(const json& value, const std::string& path)
+{
+    if (!value.is_object())
+        failAt(path, "expected an object, found " + describeJsonValue(value));
+    return value;
+}
+
+const json& expectArray(const json& value, const std::string& path)
+{
+    if (!value.is_array())
+        failAt(path, "expected an array, found " + describeJsonValue(value));
+    return value;
+}
+
+bool readBool(const json& value, const std::string& path)
+{
+    if (!value.is_boolean())
+        failAt(path, "expected true or false, found " + describeJsonValue(value));
+    return value.get<bool>();
+}
+
+std::string readString(const json& value, const std::string& path)
+{
+    if (!value.is_string())
+        failAt(path, "expected a string, found " + describeJsonValue(value));
+    return value.get<std::string>();
+}
+
+long long readInteger(const json& value, const std::string& path, long long min, long long max)
+{
+    const auto fail = [&] {
+        failAt(path, "expected an integer from " + std::to_string(min) + " to " + std::to_string(max)
+            + ", found " + describeJsonValue(value));
+    };
+    if (value.is_number_integer() && !value.is_number_unsigned()) {
+        const auto number = value.get<json::number_integer_t>();
+        if (number < min || number > max)
+            fail();
+        return number;
+    }
+    if (value.is_number_unsigned()) {
+        const auto number = value.get<json::number_unsigned_t>();
+        if (max < 0 || number > static_cast<json::number_unsigned_t>(max) || static_cast<long long>(number) < min)
+            fail();
+        return static_cast<long long>(number);
+    }
+    if (value.is_number_float()) {
+        const double number = value.get<double>();
+        if (!std::isfinite(number) || std::floor(number) != number || number < static_cast<double>(min)
+            || number > static_cast<double>(max))
+            fail();
+        return static_cast<long long>(number);
+    }
+    fail();
+    return 0; // not reached: fail() throws
+}
+
+const json* findMember(const json& object, std::string_view key)
+{
+    const auto found = object.find(key);
+    return found == object.end() ? nullptr : &*found;
+}
+
+char firstSignificantCharacter(std::string_view text)
+{
+    if (text.substr(0, 3) == "\xEF\xBB\xBF")
+        text.remove_prefix(3);
+    for (char c : text) {
+        if (c != ' ' && c != '\t' && c != '\n' && c != '\r')
+            return c;
+    }
+    return '\0';
+}
+
+} // namespace core

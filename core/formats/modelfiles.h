@@ -1,0 +1,40 @@
+#pragma once
+
+// Reading and writing model files of every format GG Studio knows, chosen by
+// content (and extension when writing). Each format has its own file pair;
+// this is the single entry point the CLI and the editor use.
+
+#include "core/formats/loaderror.h"
+#include "core/model/model.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace core {
+
+enum class ModelFormat { Native, GGGenerator, PlcOpen };
+
+// Largest model file accepted; larger files are refused before being read.
+inline constexpr std::uintmax_t kMaxModelFileBytes = 64ull * 1024 * 1024;
+
+struct LoadedModel {
+    std::unique_ptr<Model> model; // set on success
+    ModelFormat format = ModelFormat::Native;
+    LoadError error;              // set when model is null
+    bool ok() const { return model != nullptr; }
+};
+
+// Detects the format from the content (native JSON, GG-Generator JSON, or a
+// GG Studio PLCopen XML file carrying its model).
+LoadedModel loadModelFile(const std::string& path);
+LoadedModel loadModelText(std::string_view text, const std::string& displayName);
+
+// Writes the model as a Native or GGGenerator file, atomically: on failure
+// the previous file is intact. PlcOpen files are written by the PLCopen
+// export (core/codegen/plcopenwriter.h); asking for one here is a failure.
+Status saveModelFile(const Model& model, const std::string& path, ModelFormat format);
+
+} // namespace core

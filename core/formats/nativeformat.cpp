@@ -1,0 +1,352 @@
+#include "core/formats/nativeformat.h"
+
+#include "core/formats/jsonreader.h"
+#include "core/formats/modelloading.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <initializer_list>
+#include <limits>
+
+using json = nlohmann::ordered_json;
+using nlohmann::ordered_json;
+
+namespace core {
+
+namespace {
+
+const VariableEntrySpelling kVariableSpelling{
+    "variable", "an IEC type such as \"BOOL\"", "BOOL, SINT, INT, DINT, LINT, USINT, UINT, UDINT, ULINT, REAL or LREAL"};
+
+// ---- Writing ---------------------------------------------------------------
+
+ordered_json stepJson(const Step& step)
+{
+    ordered_json object;
+    object["type"] = stepTypeName(step.type);
+    object["initial"] = step.initial;
+    object["hidden"] = step.hidden;
+    object["comment"] = step.comment;
+    return object;
+}
+
+ordered_json transitionJson(const Transition& transition)
+{
+    ordered_json object;
+    object["condition"] = transition.condition;
+    object["order"] = transition.order;
+    object["negated"] = transition.negated;
+    object["hidden"] = transition.hidden;
+    object["tokens"] = transition.tokens;
+    return object;
+}
+
+ordered_json variableJson(const Variable& variable)
+{
+    ordered_json object;
+    object["name"] = variable.name;
+    object["type"] = iecTypeName(variable.type);
+    object["default"] = variable.defaultValue;
+    object["comment"] = variable.comment;
+    return object;
+}
+
+// ---- Reading ---------------------------------------------------------------
+
+std::string versionText()
+{
+    return std::to_string(kNativeFormatMajor) + "." + std::to_string(kNativeFormatMinor);
+}
+
+// A version part: decimal digits only (no sign, no blanks), without leading
+// zeros so "1.01" cannot pass for "1.1". Parts too large for an int saturate,
+// which still orders them after every real version.
+bool parseVersionPart(std::string_view text, int& value)
+{
+    if (text.empty() || (text.size() > 1 && text.front() == '0'))
+        return false;
+    long long number = 0;
+    for (char c : text) {
+        if (c < '0' || c > '9')
+            return false;
+        number = std::min<long long>(number * 10 + (c - '0'), std::numeric_limits<int>::max());
+    }
+    value = static_cast<int>(number);
+    return true;
+}
+
+struct FormatVersion {
+    int major = 0;
+    int minor = 0;
+};
+
+FormatVersion checkFormatAndVersion(const json& root)
+{
+    const json* format = findMember(root, "format");
+    if (!format)
+        failAt("/format", "missing; a GG Studio model file has \"format\": \"" + std::string(kNativeFormatName) + "\"");
+    if (!format->is_string() || format->get<std::string>() != kNativeFormatName)
+        failAt("/format", "expected \"" + std::string(kNativeFormatName) + "\", found " + describeJsonValue(*format));
+
+    const json* versionValue = findMember(root, "version");
+    if (!versionValue)
+        failAt("/version", "missing; expected a version such as \"" + versionText() + "\"");
+    const std::string version = readString(*versionValue, "/version");
+    const std::size_t dot = version.find('.');
+    FormatVersion parsed;
+    if (dot == std::string::npos || !parseVersionPart(std::string_view(version).substr(0, dot), parsed.major)
+        || !parseVersionPart(std::string_view(version).substr(dot + 1), parsed.minor))
+        failAt("/version", "expected a version MAJOR.MINOR of two whole numbers such as \"" + versionText()
+            + "\", found " + describeJsonValue(*versionValue));
+    const std::string supported = "this version reads format " + std::to_string(kNativeFormatMajor) + ".x";
+    if (parsed.major > kNativeFormatMajor)
+        failAt("/version", "this file was written by a newer GG Studio (format " + version + "); " + supported);
+    if (parsed.major < kNativeFormatMajor)
+        failAt("/version", "unsupported format version " + version + "; " + supported);
+    return parsed;
+}
+
+// Which keys an object may hold. A file of the version this build writes (or
+// older) must use only the known keys, so a misspelt key is an error rather
+// than a setting silently left at its default; a newer minor version may add
+// keys, and those are skipped.
+class KeyRule {
+public:
+    explicit KeyRule(FormatVersion version) : m_version(version) {}
+
+    void check(const json& object, const std::string& path, const char* what,
+               std::initializer_list<std::string_view> known) const
+    {
+        if (m_version.minor > kNativeFormatMinor)
+            return;
+        for (const auto& [key, value] : object.items()) {
+            if (std::find(known.begin(), known.end(), key) == known.end())
+                failAt(childPath(path, key), "unknown key \"" + key + "\" in " + what + "; format "
+                    + versionText() + " knows " + listKeys(known));
+        }
+    }
+
+private:
+    static std::string listKeys(std::initializer_list<std::string_view> keys)
+    {
+        std::string text;
+        std::size_t index = 0;
+        for (std::string_view key : keys) {
+            if (index > 0)
+                text += index + 1 == keys.size() ? " and " : ", ";
+            text += "\"" + std::string(key) + "\"";
+            ++index;
+        }
+        return text;
+    }
+
+    FormatVersion m_version;
+};
+
+void readSettings(Model& model, const json& root, const KeyRule& keys)
+{
+    if (const json* name = findMember(root, "name"))
+        require(model.setName(readString(*name, "/name")), "/name");
+    const json* settingsValue = findMember(root, "settings");
+    if (!settingsValue)
+        return;
+    const json& settings = expectObject(*settingsValue, "/settings");
+    keys.check(settings, "/settings", "the settings", {"cycleTimeMs", "dialect"});
+    if (const json* cycle = findMember(settings, "cycleTimeMs")) {
+        const long long value = readInteger(*cycle, "/settings/cycleTimeMs", kMinCycleTimeMs, kMaxCycleTimeMs);
+        require(model.setCycleTimeMs(static_cast<int>(value)), "/settings/cycleTimeMs");
+    }
+    if (const json* dialectValue = findMember(settings, "dialect")) {
+        const std::string name = readString(*dialectValue, "/settings/dialect");
+        Dialect dialect = Dialect::Iec;
+        if (!parseDialect(name, dialect))
+            failAt("/settings/dialect", "unknown dialect \"" + name + "\"; expected \"iec\" or \"codesys\"");
+        model.setDialect(dialect);
+    }
+}
+
+void readVariables(Model& model, const json& root, const KeyRule& keys)
+{
+    const json* listValue = findMember(root, "variables");
+    if (!listValue)
+        return;
+    const json& list = expectArray(*listValue, "/variables");
+    if (list.size() > kMaxFileVariables)
+        failAt("/variables", std::to_string(list.size()) + " variables; a model holds at most "
+            + std::to_string(kMaxFileVariables));
+    std::vector<VariableEntry> entries;
+    entries.reserve(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = childPath("/variables", i);
+        const json& object = expectObject(list[i], path);
+        keys.check(object, path, "a variable", {"name", "type", "default", "comment"});
+        VariableEntry entry = readVariableNameAndType(object, path, kVariableSpelling);
+        if (const json* value = findMember(object, "default"))
+            entry.variable.defaultValue = readString(*value, path + "/default");
+        if (const json* comment = findMember(object, "comment"))
+            entry.variable.comment = readString(*comment, path + "/comment");
+        entries.push_back(std::move(entry));
+    }
+    addVariables(model, entries, "/variables");
+}
+
+void readSteps(Model& model, const json& root, const KeyRule& keys)
+{
+    const json* stepsValue = findMember(root, "steps");
+    if (!stepsValue)
+        return;
+    const json& steps = expectObject(*stepsValue, "/steps");
+    std::vector<InitialFlag> initialFlags;
+    for (const auto& [id, value] : steps.items()) {
+        const std::string path = childPath("/steps", id);
+        if (!findTemplateState(id))
+            failAt(path, "unknown step \"" + id + "\"; the template's steps are A1 to A7, F1 to F6 and D1 to D3");
+        keys.check(expectObject(value, path), path, "a step", {"type", "initial", "hidden", "comment"});
+        if (const json* initial = findMember(value, "initial"))
+            initialFlags.push_back({id, readBool(*initial, path + "/initial"), path + "/initial"});
+    }
+    applyInitialFlags(model, initialFlags, "/steps");
+
+    for (const auto& [id, value] : steps.items()) {
+        const std::string path = childPath("/steps", id);
+        if (const json* type = findMember(value, "type")) {
+            const std::string name = readString(*type, path + "/type");
+            StepType stepType = StepType::Simple;
+            if (!parseStepType(name, stepType))
+                failAt(path + "/type", "unknown step type \"" + name + "\"; expected \"simple\", \"macro\" or \"enclosing\"");
+            require(model.setStepType(id, stepType), path + "/type");
+        }
+        if (const json* hidden = findMember(value, "hidden"))
+            require(model.setStepHidden(id, readBool(*hidden, path + "/hidden")), path + "/hidden");
+        if (const json* comment = findMember(value, "comment"))
+            require(model.setStepComment(id, readString(*comment, path + "/comment")), path + "/comment");
+    }
+}
+
+std::vector<std::string> readTokens(const json& value, const std::string& path)
+{
+    const json& list = expectArray(value, path);
+    if (list.size() > kMaxFileVariables)
+        failAt(path, std::to_string(list.size()) + " tokens; a transition has at most one per variable, and a model "
+            "holds at most " + std::to_string(kMaxFileVariables) + " variables");
+    std::vector<std::string> tokens;
+    tokens.reserve(list.size());
+    for (std::size_t i = 0; i < list.size(); ++i)
+        tokens.push_back(readString(list[i], childPath(path, i)));
+    return tokens;
+}
+
+void readTransitions(Model& model, const json& root, const KeyRule& keys)
+{
+    const json* transitionsValue = findMember(root, "transitions");
+    if (!transitionsValue)
+        return;
+    const json& transitions = expectObject(*transitionsValue, "/transitions");
+    std::vector<OrderValue> orders;
+    for (const auto& [id, value] : transitions.items()) {
+        const std::string path = childPath("/transitions", id);
+        const Transition* transition = model.transition(id);
+        if (!transition)
+            failAt(path, "unknown transition \"" + id
+                + "\"; transitions are named SOURCE->TARGET after the template, such as \"F1->A2\" or \"F->D1\"");
+        keys.check(expectObject(value, path), path, "a transition",
+                   {"condition", "order", "negated", "hidden", "tokens"});
+        if (const json* order = findMember(value, "order")) {
+            const auto count = static_cast<long long>(model.outgoing(transition->source).size());
+            orders.push_back({id, static_cast<int>(readInteger(*order, path + "/order", 1, count)), path + "/order"});
+        }
+    }
+    applyOrders(model, orders);
+
+    for (const auto& [id, value] : transitions.items()) {
+        const std::string path = childPath("/transitions", id);
+        if (const json* condition = findMember(value, "condition"))
+            require(model.setCondition(id, readString(*condition, path + "/condition")), path + "/condition");
+        if (const json* negated = findMember(value, "negated"))
+            require(model.setNegated(id, readBool(*negated, path + "/negated")), path + "/negated");
+        if (const json* hidden = findMember(value, "hidden"))
+            require(model.setTransitionHidden(id, readBool(*hidden, path + "/hidden")), path + "/hidden");
+        if (const json* tokens = findMember(value, "tokens"))
+            require(model.setTokens(id, readTokens(*tokens, path + "/tokens")), path + "/tokens");
+    }
+}
+
+std::unique_ptr<Model> buildModel(const json& root)
+{
+    expectObject(root, "");
+    const KeyRule keys(checkFormatAndVersion(root));
+    keys.check(root, "", "a model file", {"format", "version", "name", "settings", "steps", "transitions", "variables"});
+    auto model = std::make_unique<Model>();
+    readSettings(*model, root, keys);
+    readVariables(*model, root, keys);
+    readSteps(*model, root, keys);
+    readTransitions(*model, root, keys);
+    return model;
+}
+
+// Does `"format"` map to the native format name somewhere in the text?
+bool hasNativeFormatMember(std::string_view text)
+{
+    const std::string_view key = "\"format\"";
+    const std::string value = "\"" + std::string(kNativeFormatName) + "\"";
+    for (std::size_t at = text.find(key); at != std::string_view::npos; at = text.find(key, at + 1)) {
+        std::size_t i = at + key.size();
+        const auto skipBlanks = [&] {
+            while (i < text.size() && (text[i] == ' ' || text[i] == '\t' || text[i] == '\n' || text[i] == '\r'))
+                ++i;
+        };
+        skipBlanks();
+        if (i >= text.size() || text[i] != ':')
+            continue;
+        ++i;
+        skipBlanks();
+        if (text.substr(i, value.size()) == value)
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+std::string saveNativeJson(const Model& model)
+{
+    ordered_json root;
+    root["format"] = kNativeFormatName;
+    root["version"] = versionText();
+    root["name"] = model.settings().name;
+    ordered_json settings;
+    settings["cycleTimeMs"] = model.settings().cycleTimeMs;
+    settings["dialect"] = dialectName(model.settings().dialect);
+    root["settings"] = std::move(settings);
+
+    ordered_json steps = ordered_json::object();
+    for (const Step& step : model.steps())
+        steps[step.id] = stepJson(step);
+    root["steps"] = std::move(steps);
+
+    ordered_json transitions = ordered_json::object();
+    for (const Transition& transition : model.transitions())
+        transitions[transition.id] = transitionJson(transition);
+    root["transitions"] = std::move(transitions);
+
+    ordered_json variables = ordered_json::array();
+    for (const Variable& variable : model.variables())
+        variables.push_back(variableJson(variable));
+    root["variables"] = std::move(variables);
+
+    // Text from elsewhere may hold invalid UTF-8: replace it rather than throw.
+    return root.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
+}
+
+std::variant<std::unique_ptr<Model>, LoadError> loadNativeJson(std::string_view text, const std::string& displayName)
+{
+    return loadModelJson(text, displayName, buildModel);
+}
+
+bool looksLikeNativeJson(std::string_view text)
+{
+    return firstSignificantCharacter(text) == '{' && hasNativeFormatMember(text);
+}
+
+} // namespace core

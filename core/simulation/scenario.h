@@ -1,0 +1,172 @@
+#pragma once
+
+// Simulation scenarios: a line-oriented text that says which inputs change
+// at which scan and what the GEMMA program must do (docs/simulation.md).
+//
+//   # Filling machine: start, then stop
+//   at 1: set Start = TRUE, AutoMode = TRUE
+//   at 2: set Start = FALSE
+//   at 3: expect step F1
+//   at 3: expect fired A1->F1
+//   at 5: set complete F1 = FALSE     # F1's Complete becomes manual, FALSE
+//   at 6: expect token Stop_F1_2_MEM = TRUE
+//   at 9: set complete F1 = auto      # back to the skeleton FB's behaviour
+//
+// Scans are numbered from 1, as Simulator and `ggstudio-cli simulate` number
+// them. `at N: set ...` applies before scan N runs (scan N reads the values);
+// `at N: expect ...` is checked after scan N. Keywords are case-insensitive,
+// `#` starts a comment.
+
+#include "core/simulation/scenarioerror.h"
+#include "core/simulation/simulator.h"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace core {
+
+struct ScenarioAction {
+    enum class Kind {
+        SetVariable,    // set NAME = VALUE
+        SetComplete,    // set complete STEP = TRUE|FALSE (Manual mode with that value)
+        SetCompleteAuto, // set complete STEP = auto (Automatic mode)
+        ExpectStep,     // expect step STEP
+        ExpectFired,    // expect fired TRANSITION
+        ExpectNoFiring, // expect fired none
+        ExpectToken,    // expect token TOKEN = TRUE|FALSE
+        ExpectVariable, // expect variable NAME = VALUE
+        ExpectEntry,    // expect entry = TRUE|FALSE
+        ExpectComplete, // expect complete STEP = TRUE|FALSE
+    };
+    Kind kind = Kind::SetVariable;
+    std::int64_t scan = 1;
+    std::string name;  // variable, step id, transition id or token name, as written
+    std::string value; // the value as written ("TRUE", "-3", "1.5"); empty when none
+    int line = 0;      // 1-based, of the action
+    int column = 0;    // 1-based, of the name (of the keyword when there is no name)
+    int valueColumn = 0;
+
+    bool isExpectation() const { return kind >= Kind::ExpectStep; }
+};
+
+struct Scenario {
+    std::string fileName; // for messages; may be empty
+    std::vector<ScenarioAction> actions; // in file order
+
+    // The highest scan an action names; 0 when there is none.
+    std::int64_t lastScan() const;
+};
+
+struct ScenarioParseResult {
+    Scenario scenario;
+    std::vector<ScenarioError> errors; // every malformed line, in order
+
+    bool ok() const { return errors.empty(); }
+};
+
+// Syntax only: names are not looked up (see validateScenario).
+ScenarioParseResult parseScenario(std::string_view text, std::string fileName = {});
+
+// Names and values against the program the simulator runs: unknown or hidden
+// variables, steps, transitions and tokens, `complete` on a step without
+// nested behaviour, values that are not of the variable's type.
+std::vector<ScenarioError> validateScenario(const Scenario& scenario, const Simulator& simulator);
+
+// An expectation that did not hold, or a set that could not be applied, as
+// data: the editor words it in the UI language, toText() in English. Names
+// and values are IEC text.
+struct ScenarioFailure {
+    enum class Kind {
+        CannotApply,      // subject: the name set; detail: why (English, from the simulator)
+        WrongStep,        // expected: the step; actual: the active step
+        NoVisibleStep,    // expected: the step; actual: the value of State, which names no visible step
+        NothingFired,     // expected: the transition; none fired
+        WrongFiring,      // expected: the transition; actual: the one that fired
+        UnexpectedFiring, // none expected; actual: the one that fired
+        WrongToken,       // subject: the token; expected, actual: TRUE/FALSE
+        WrongVariable,    // subject: the variable as declared; expected: as written; actual
+        UnknownVariable,  // subject: the name as written
+        WrongEntry,       // expected, actual: TRUE/FALSE
+        WrongComplete,    // subject: the step; expected, actual: TRUE/FALSE
+    };
+    std::int64_t scan = 0;
+    int line = 0; // of the action in the scenario
+    Kind kind = Kind::WrongStep;
+    std::string subject;
+    std::string expected;
+    std::string actual;
+    std::string detail;
+
+    friend bool operator==(const ScenarioFailure&, const ScenarioFailure&) = default;
+};
+
+// "scan 3: expected step F1, active step is A1".
+std::string toText(const ScenarioFailure& failure);
+
+// Plays a scenario on a simulator one scan at a time (the editor steps it,
+// the command line runs it). Scan numbers are the simulator's: the next scan
+// is simulator.scanCount() + 1. The scenario must have passed
+// validateScenario; actions with unknown names are reported as failures.
+// The runner keeps references: the scenario and the simulator must outlive it.
+class ScenarioRunner {
+public:
+    ScenarioRunner(const Scenario& scenario, Simulator& simulator);
+
+    // Applies the sets of the next scan, runs it, checks its expectations.
+    ScanRecord step();
+    // Failures of the last step() only.
+    const std::vector<ScenarioFailure>& lastFailures() const { return m_lastFailures; }
+    // Every failure so far.
+    const std::vector<ScenarioFailure>& failures() const { return m_failures; }
+
+private:
+    void apply(const ScenarioAction& action);
+    void check(const ScenarioAction& action, const ScanRecord& record);
+
+    const Scenario& m_scenario;
+    Simulator& m_simulator;
+    std::map<std::int64_t, std::vector<const ScenarioAction*>> m_byScan;
+    std::vector<ScenarioFailure> m_failures;
+    std::vector<ScenarioFailure> m_lastFailures;
+};
+
+struct ScenarioRunResult {
+    std::vector<ScanRecord> records; // one per scan run
+    std::vector<ScenarioFailure> failures;
+
+    bool passed() const { return failures.empty(); }
+};
+
+// Resets the simulator and runs `scans` scans (0: the scenario's last scan).
+ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, std::int64_t scans = 0);
+
+// --- Writing: "record the session as a scenario file" -----------------------
+
+// What the user changed before one scan.
+struct RecordedScan {
+    std::int64_t scan = 1;
+    std::vector<InputChange> inputs;
+    struct CompleteSetting {
+        std::string stepId;
+        std::optional<bool> manualValue; // nullopt: back to Automatic
+    };
+    std::vector<CompleteSetting> completes;
+};
+
+struct ScenarioRecording {
+    std::string title;                 // a leading `#` comment when not empty (line breaks kept as comment lines)
+    std::vector<RecordedScan> changes; // by scan
+    // Optional: what happened; writes `expect fired` and `expect step` after
+    // every scan that fired a transition, so replaying the file checks the
+    // session still behaves the same.
+    std::vector<ScanRecord> records;
+};
+
+// Scenario text that parseScenario reads back to the same actions.
+std::string writeScenario(const ScenarioRecording& recording);
+
+} // namespace core

@@ -1,0 +1,82 @@
+#pragma once
+
+// A malformed or invalid line of a scenario file (core/simulation/scenario.h), as data:
+// the editor words it in the UI language, toText() gives the English text
+// the command line and tests use. Words of the file, names and values are
+// kept as written: they are code in every language.
+
+#include "core/condition/valueproblem.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace core {
+
+struct ScenarioError {
+    enum class Kind {
+        // Syntax (parseScenario). found: the word there instead, as written;
+        // empty at the end of the line.
+        ExpectedAt,               // 'at SCAN:' at the start of the line
+        ExpectedScanNumber,       // a scan number after 'at'
+        ScanBelowOne,             // scans are numbered from 1
+        ScanTooLarge,             // subject: the scan number as written
+        ExpectedColon,            // ':' after the scan number
+        ExpectedSetOrExpect,      // 'set' or 'expect' after the ':'
+        ExpectedSetItem,          // a variable name or 'complete STEP' after 'set' or ','
+        ExpectedStepAfterComplete, // a step id after 'complete'
+        ExpectedStepAfterStep,    // a step id after 'step'
+        ExpectedTransition,       // a transition id or 'none' after 'fired'
+        ExpectedToken,            // a token name after 'token'
+        ExpectedVariable,         // a variable name after 'variable'
+        ExpectedExpectItem,       // step, fired, token, variable, entry or complete after 'expect'
+        ExpectedEqualsAfterStep,  // '=' after the step id
+        ExpectedEqualsAfterVariable, // '=' after the variable name
+        ExpectedEqualsAfterToken, // '=' after the token name
+        ExpectedEqualsAfterEntry, // '=' after 'entry'
+        ExpectedValue,            // a value after '='
+        ExpectedBool,             // TRUE or FALSE
+        ExpectedCompleteValue,    // TRUE, FALSE or auto
+        ExpectedCommaOrEnd,       // ',' or the end of the line
+        ExpectedEnd,              // the end of the line
+        InvalidUtf8,              // at the first byte that is not UTF-8; the file is not read further
+        // Names and values (validateScenario). subject: the name, as the kind says.
+        UnknownVariable,          // as written
+        InvalidValue,             // the variable as declared; type: its IEC type; detail: why (English)
+        HiddenStep,               // the step id in capitals
+        UnknownStep,              // as written
+        SimpleStep,               // the step id in capitals: it has no Complete
+        IneffectiveTransition,    // as written: it or one of its steps is hidden
+        UnknownTransition,        // as written
+        UnknownToken,             // as written
+        // A second set of one thing in one scan, to another value; at the
+        // value of the later line. found: its value; otherLine, otherValue:
+        // the earlier set's; scan: the scan both name.
+        ConflictingValue,         // subject: the variable as declared; values as written
+        ConflictingComplete,      // subject: the step id in capitals; values TRUE, FALSE or auto
+    };
+
+    std::string fileName;
+    int line = 0;
+    int column = 0;
+    Kind kind = Kind::ExpectedAt;
+    std::string found;
+    std::string subject;
+    std::string type;    // InvalidValue: "INT"
+    std::string detail;  // InvalidValue: the value parser's English ("'x' is not an integer")
+    std::optional<ValueProblem> problem; // InvalidValue: detail as data
+    std::int64_t scan = 0;  // Conflicting*
+    int otherLine = 0;      // Conflicting*
+    std::string otherValue; // Conflicting*
+    std::string message; // English: toText() of the above
+
+    // "scenario.txt:4:12: expected '=' after the variable name, found 'TRUE'".
+    std::string toString() const;
+
+    friend bool operator==(const ScenarioError&, const ScenarioError&) = default;
+};
+
+// "expected '=' after the variable name, found 'TRUE'", "unknown step 'X9'".
+std::string toText(const ScenarioError& error);
+
+} // namespace core

@@ -1,0 +1,141 @@
+#pragma once
+
+// Proves properties of the GEMMA layer (docs/verification.md) and gives, for
+// each one that does not hold, a scenario that replays the violation in the
+// simulator.
+//
+// What is verified is the finite system the generated PROGRAM GEMMA is
+// (spec §6.6), read from the one intermediate form, core::GemmaProgram:
+// - the state is a *configuration* (State, Entry, tokens);
+// - at every scan the inputs (the model's variables) take any value of their
+//   IEC type, independently of the previous scan;
+// - the Complete output of a nested step's function block is, per step,
+//   either free (any value at every scan, the entry scan included: the user's
+//   nested behaviour may complete at any time, or never) or automatic (TRUE at
+//   every scan, as the generated skeleton FB).
+// The reachable configurations are explored exactly from the start (State =
+// initial step, Entry = TRUE, tokens FALSE). The successors of a
+// configuration come from partitioning the input valuations by which
+// transition fires (evaluation order, family first, `AND Complete` where the
+// transition waits for it, token literals read the tokens, the entry block
+// clearing the tokens first), then, when none fires, by the token updates.
+//
+// Tokens of one step with the same literal (`Stop` on two transitions) always
+// hold the same value and count once. Tokens of steps other than the active
+// one are cleared before they are next read, so they do not make
+// configurations differ. Within one step the reachable token sets can be
+// exponential in the number of its tokens (a macro-step whose Complete is
+// free lets every pulse through), so they are computed symbolically, as
+// binary decision diagrams over the tokens and the condition atoms
+// (core/verification/decisiondiagram.h); the steps themselves are explored one by one,
+// shortest distances first, which gives shortest counterexamples.
+//
+// Conditions are decided exactly for boolean structure and for comparisons of
+// a variable with constants (intervals per variable, integer or real domain,
+// IEC type ranges). Any other comparison (`A + B > C`, `X = Y` between
+// numbers) is a free boolean: that only adds behaviour, so a "never" claim
+// (dead, unreachable, stuck) is never wrong. A claim that needs a path to a
+// configuration is confirmed by replaying its counterexample in the
+// simulator; one that cannot be confirmed is downgraded to info and says so.
+
+#include "core/checks/diagnostic.h"
+#include "core/simulation/scenario.h"
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace core {
+
+class Model;
+
+// What the verifier assumes about the Complete output of one nested step.
+enum class CompleteAssumption {
+    Free,      // any value at every scan (default)
+    Automatic, // TRUE at every scan, as the generated skeleton FB
+};
+
+struct VerificationOptions {
+    // By nested step id ("F1"); a step not listed is Free.
+    std::map<std::string, CompleteAssumption> complete;
+    // The budget of one run, the same for the command line and the editor:
+    // what is not decided within it is named by GV100 findings (the result is
+    // then not exhaustive), and every property decided is still reported.
+    // Decision-diagram nodes of all steps together (memory: about 70 bytes
+    // each, so the default stays near 300 MB).
+    std::size_t maxDiagramNodes = 4'000'000;
+    // Wall-clock time of the analysis; zero or less: no limit. With the
+    // counterexamples written and replayed after it, a run ends within about
+    // one more second.
+    std::chrono::milliseconds timeLimit{4000};
+    // Polled now and then; returning true abandons the run (result.cancelled).
+    std::function<bool()> cancelled;
+};
+
+// A run of the simulator from reset that shows a finding: scenario text the
+// editor can load and `ggstudio-cli simulate MODEL FILE` can replay. Its
+// expectations (`expect step`, `expect fired`) state what the finding claims
+// at the scan it happens.
+struct Counterexample {
+    std::string text;       // scenario text, starts with a `#` comment naming the finding
+    Scenario scenario;      // the same, parsed
+    std::int64_t scans = 0; // scans to replay (the scenario's last scan)
+    // True when it was replayed in core::Simulator and every expectation held.
+    bool confirmed = false;
+};
+
+// One finding (docs/verification.md lists the codes).
+struct VerificationFinding {
+    std::string code; // "GV101"
+    Severity severity = Severity::Warning;
+    // What it concerns first (a step or transition id), then the elements the
+    // message names (the covering transitions of a dead one, ...).
+    std::vector<std::string> elements;
+    std::string message; // English
+    std::vector<std::string> arguments; // the values the message names, for translation; first = elements[0]
+    std::optional<Counterexample> counterexample;
+};
+
+struct VerificationResult {
+    // By code, then by element in state order / program order.
+    std::vector<VerificationFinding> findings;
+
+    // Raw facts, for cross-checks (e.g. against SPIN) and the editor.
+    std::vector<std::string> reachableSteps;       // visible steps some reachable configuration has, state order
+    std::vector<std::string> fireableTransitions;  // transitions that fire in some reachable scan, program order, each once
+    // Reachable configurations (State, Entry, tokens); saturates at SIZE_MAX.
+    std::size_t configurations = 0;
+    std::size_t maxDepth = 0;       // scans from the start to the farthest reachable configuration
+    bool exhaustive = true;         // false when the budget left something undecided (GV100)
+    bool cancelled = false;
+
+    // A finding of severity error or warning: a property does not hold.
+    bool violated() const;
+};
+
+// Verifies the model with the given assumptions. Never throws for any model
+// the Model class accepts; a hidden initial step makes every visible step
+// unreachable (GV101), as on the PLC.
+VerificationResult verifyModel(const Model& model, const VerificationOptions& options = {});
+
+// "F1", "F1->A2", or "F1->D3, F1->A2" for several: the elements joined by ", ".
+std::string verificationElementLabel(const VerificationFinding& finding);
+
+// Codes, for the editor and tests.
+namespace verification {
+inline constexpr const char* kIncomplete = "GV100";       // warning: the budget ran out before these were decided
+inline constexpr const char* kUnreachableStep = "GV101";  // warning
+inline constexpr const char* kDeadTransition = "GV102";   // warning
+inline constexpr const char* kAlwaysTrue = "GV103";       // warning
+inline constexpr const char* kOverlap = "GV104";          // info
+inline constexpr const char* kNoReturn = "GV105";         // warning
+inline constexpr const char* kStuck = "GV106";            // error
+inline constexpr const char* kNoEmergencyStop = "GV107";  // error
+} // namespace verification
+
+} // namespace core
