@@ -258,6 +258,9 @@ void Document::emitChange(const core::ModelChange& change)
     case core::ModelChange::Kind::Settings:
         emit settingsChanged();
         break;
+    case core::ModelChange::Kind::Grafcet:
+        emit grafcetChanged(id);
+        break;
     case core::ModelChange::Kind::Reset:
         emit modelReset();
         break;

@@ -25,6 +25,11 @@ Status unknownVariable(std::string_view name)
     return Status::failure("unknown-variable", "there is no variable '" + std::string(name) + "'");
 }
 
+Status noGrafcet(std::string_view stepId)
+{
+    return Status::failure("no-grafcet", "step " + std::string(stepId) + " has no nested GRAFCET");
+}
+
 bool containsIgnoreCase(const std::vector<std::string>& names, std::string_view name)
 {
     return std::any_of(names.begin(), names.end(),
@@ -47,6 +52,43 @@ bool parseDialect(std::string_view name, Dialect& dialect)
     if (equalsIgnoreCase(name, "codesys")) {
         dialect = Dialect::Codesys;
         return true;
+    }
+    return false;
+}
+
+std::string_view variableKindName(VariableKind kind)
+{
+    switch (kind) {
+    case VariableKind::Output: return "output";
+    case VariableKind::Internal: return "internal";
+    case VariableKind::Input: break;
+    }
+    return "input";
+}
+
+bool parseVariableKind(std::string_view name, VariableKind& kind)
+{
+    for (VariableKind candidate : {VariableKind::Input, VariableKind::Output, VariableKind::Internal}) {
+        if (name == variableKindName(candidate)) {
+            kind = candidate;
+            return true;
+        }
+    }
+    return false;
+}
+
+std::string_view evolutionRuleName(EvolutionRule rule)
+{
+    return rule == EvolutionRule::UntilStable ? "until-stable" : "one-per-scan";
+}
+
+bool parseEvolutionRule(std::string_view name, EvolutionRule& rule)
+{
+    for (EvolutionRule candidate : {EvolutionRule::OneEvolutionPerScan, EvolutionRule::UntilStable}) {
+        if (name == evolutionRuleName(candidate)) {
+            rule = candidate;
+            return true;
+        }
     }
     return false;
 }
@@ -77,6 +119,7 @@ Model::Model(const Model& other)
     : m_steps(other.m_steps)
     , m_transitions(other.m_transitions)
     , m_variables(other.m_variables)
+    , m_grafcets(other.m_grafcets)
     , m_settings(other.m_settings)
 {
 }
@@ -177,6 +220,148 @@ int Model::priority(std::string_view transitionId) const
             return rank;
     }
     return 0;
+}
+
+const Grafcet* Model::grafcet(std::string_view stepId) const
+{
+    const auto found = m_grafcets.find(stepId);
+    return found == m_grafcets.end() ? nullptr : &found->second;
+}
+
+const Grafcet* Model::effectiveGrafcet(std::string_view stepId) const
+{
+    const Step* s = step(stepId);
+    if (!s || s->hidden || s->type == StepType::Simple)
+        return nullptr;
+    return grafcet(stepId);
+}
+
+// ---- nested GRAFCETs ---------------------------------------------------------
+
+Status Model::setGrafcet(std::string_view stepId, Grafcet grafcet)
+{
+    if (!step(stepId))
+        return unknownStep(stepId);
+    if (const std::vector<std::string> problems = grafcet.invariantViolations(); !problems.empty())
+        return Status::failure("invalid-grafcet", "the GRAFCET of " + std::string(stepId) + " is invalid: " + problems.front());
+    const auto found = m_grafcets.find(stepId);
+    if (found != m_grafcets.end() && found->second.sameContent(grafcet))
+        return Status::success();
+    m_grafcets.insert_or_assign(std::string(stepId), std::move(grafcet));
+    notifyGrafcet(stepId, {});
+    return Status::success();
+}
+
+Status Model::removeGrafcet(std::string_view stepId)
+{
+    const auto found = m_grafcets.find(stepId);
+    if (found == m_grafcets.end())
+        return step(stepId) ? noGrafcet(stepId) : unknownStep(stepId);
+    m_grafcets.erase(found);
+    notifyGrafcet(stepId, {});
+    return Status::success();
+}
+
+template <typename Edit>
+Status Model::editGrafcet(std::string_view stepId, Edit edit)
+{
+    const auto found = m_grafcets.find(stepId);
+    if (found == m_grafcets.end())
+        return step(stepId) ? noGrafcet(stepId) : unknownStep(stepId);
+    Status status = edit(found->second);
+    if (status.ok && !found->second.lastChanges().empty())
+        notifyGrafcet(stepId, found->second.lastChanges());
+    return status;
+}
+
+Status Model::addGrafcetStep(std::string_view stepId, GrafcetStep newStep)
+{
+    const Step* s = step(stepId);
+    if (!s)
+        return unknownStep(stepId);
+    if (!grafcet(stepId)) {
+        if (s->type == StepType::Simple)
+            return Status::failure("simple-step", "step " + s->id +
+                                                      " is a simple step: make it a macro-step or an enclosing step "
+                                                      "to give it a nested GRAFCET");
+        Grafcet created;
+        if (Status status = created.addStep(std::move(newStep)); !status)
+            return status;
+        m_grafcets.emplace(std::string(stepId), std::move(created));
+        notifyGrafcet(stepId, {});
+        return Status::success();
+    }
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.addStep(std::move(newStep)); });
+}
+
+Status Model::removeGrafcetStep(std::string_view stepId, int number)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.removeStep(number); });
+}
+
+Status Model::renumberGrafcetStep(std::string_view stepId, int number, int newNumber)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.renumberStep(number, newNumber); });
+}
+
+Status Model::setGrafcetStepInitial(std::string_view stepId, int number, bool initial)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.setStepInitial(number, initial); });
+}
+
+Status Model::setGrafcetInitialSteps(std::string_view stepId, const std::vector<int>& numbers)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.setInitialSteps(numbers); });
+}
+
+Status Model::setGrafcetStepComment(std::string_view stepId, int number, std::string comment)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.setStepComment(number, std::move(comment)); });
+}
+
+Status Model::addGrafcetAction(std::string_view stepId, int stepNumber, GrafcetAction action, int index)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.addAction(stepNumber, std::move(action), index); });
+}
+
+Status Model::setGrafcetAction(std::string_view stepId, int stepNumber, int index, GrafcetAction action)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.setAction(stepNumber, index, std::move(action)); });
+}
+
+Status Model::removeGrafcetAction(std::string_view stepId, int stepNumber, int index)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.removeAction(stepNumber, index); });
+}
+
+Status Model::moveGrafcetAction(std::string_view stepId, int stepNumber, int from, int to)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.moveAction(stepNumber, from, to); });
+}
+
+Status Model::addGrafcetTransition(std::string_view stepId, GrafcetTransition newTransition)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.addTransition(std::move(newTransition)); });
+}
+
+Status Model::removeGrafcetTransition(std::string_view stepId, int number)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.removeTransition(number); });
+}
+
+Status Model::setGrafcetUpstream(std::string_view stepId, int number, std::vector<int> steps)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.setUpstream(number, std::move(steps)); });
+}
+
+Status Model::setGrafcetDownstream(std::string_view stepId, int number, std::vector<int> steps)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.setDownstream(number, std::move(steps)); });
+}
+
+Status Model::setReceptivity(std::string_view stepId, int number, std::string receptivity)
+{
+    return editGrafcet(stepId, [&](Grafcet& g) { return g.setReceptivity(number, std::move(receptivity)); });
 }
 
 // ---- steps -------------------------------------------------------------------
@@ -445,6 +630,18 @@ Status Model::renameVariable(std::string_view oldName, std::string newName)
         if (changed)
             notify(ModelChange::Kind::Transition, t.id);
     }
+    for (auto& [stepId, nested] : m_grafcets) {
+        std::vector<int> steps;
+        std::vector<int> transitions;
+        nested.renameIdentifier(previous, newName, steps, transitions);
+        std::vector<GrafcetChange> changes;
+        for (int number : steps)
+            changes.push_back({GrafcetChange::Kind::Step, number});
+        for (int number : transitions)
+            changes.push_back({GrafcetChange::Kind::Transition, number});
+        if (!changes.empty())
+            notifyGrafcet(stepId, std::move(changes));
+    }
     notify(ModelChange::Kind::Variable, newName);
     notify(ModelChange::Kind::VariableList);
     return Status::success();
@@ -486,6 +683,18 @@ Status Model::setVariableComment(std::string_view name, std::string comment)
     return Status::success();
 }
 
+Status Model::setVariableKind(std::string_view name, VariableKind kind)
+{
+    Variable* v = mutableVariable(name);
+    if (!v)
+        return unknownVariable(name);
+    if (v->kind != kind) {
+        v->kind = kind;
+        notify(ModelChange::Kind::Variable, v->name);
+    }
+    return Status::success();
+}
+
 // ---- settings ----------------------------------------------------------------
 
 Status Model::setName(std::string name)
@@ -518,6 +727,14 @@ void Model::setDialect(Dialect dialect)
     }
 }
 
+void Model::setEvolutionRule(EvolutionRule rule)
+{
+    if (m_settings.evolution != rule) {
+        m_settings.evolution = rule;
+        notify(ModelChange::Kind::Settings);
+    }
+}
+
 void Model::resetToTemplate()
 {
     assign(Model());
@@ -530,6 +747,7 @@ void Model::assign(const Model& other)
     m_steps = other.m_steps;
     m_transitions = other.m_transitions;
     m_variables = other.m_variables;
+    m_grafcets = other.m_grafcets;
     m_settings = other.m_settings;
     notify(ModelChange::Kind::Reset);
 }
@@ -552,6 +770,14 @@ void Model::notify(ModelChange::Kind kind, std::string id)
 {
     ++m_revision;
     const ModelChange change{kind, std::move(id)};
+    for (const auto& [handle, observer] : m_observers)
+        observer(change);
+}
+
+void Model::notifyGrafcet(std::string_view stepId, std::vector<GrafcetChange> changes)
+{
+    ++m_revision;
+    const ModelChange change{ModelChange::Kind::Grafcet, std::string(stepId), std::move(changes)};
     for (const auto& [handle, observer] : m_observers)
         observer(change);
 }
@@ -598,13 +824,21 @@ std::vector<std::string> Model::invariantViolations() const
     }
     if (m_settings.cycleTimeMs < kMinCycleTimeMs || m_settings.cycleTimeMs > kMaxCycleTimeMs)
         problems.push_back("the cycle time is out of range");
+    for (const auto& [stepId, nested] : m_grafcets) {
+        if (!step(stepId))
+            problems.push_back("a nested GRAFCET belongs to '" + stepId + "', which is no template step");
+        for (const std::string& problem : nested.invariantViolations())
+            problems.push_back("GRAFCET of " + stepId + ": " + problem);
+    }
     return problems;
 }
 
 bool Model::sameContent(const Model& other) const
 {
     return m_steps == other.m_steps && m_transitions == other.m_transitions && m_variables == other.m_variables &&
-           m_settings == other.m_settings;
+           m_settings == other.m_settings &&
+           std::equal(m_grafcets.begin(), m_grafcets.end(), other.m_grafcets.begin(), other.m_grafcets.end(),
+                      [](const auto& a, const auto& b) { return a.first == b.first && a.second.sameContent(b.second); });
 }
 
 // ---- private helpers -----------------------------------------------------------
@@ -646,12 +880,13 @@ bool operator==(const Transition& a, const Transition& b)
 
 bool operator==(const Variable& a, const Variable& b)
 {
-    return a.name == b.name && a.type == b.type && a.defaultValue == b.defaultValue && a.comment == b.comment;
+    return a.name == b.name && a.type == b.type && a.kind == b.kind && a.defaultValue == b.defaultValue &&
+           a.comment == b.comment;
 }
 
 bool operator==(const ModelSettings& a, const ModelSettings& b)
 {
-    return a.name == b.name && a.cycleTimeMs == b.cycleTimeMs && a.dialect == b.dialect;
+    return a.name == b.name && a.cycleTimeMs == b.cycleTimeMs && a.dialect == b.dialect && a.evolution == b.evolution;
 }
 
 } // namespace core

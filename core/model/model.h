@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/model/gemmatemplate.h"
+#include "core/model/grafcet.h"
 #include "core/model/iectypes.h"
 #include "core/model/status.h"
 
@@ -43,17 +44,38 @@ struct Transition {
     bool isFamilyTransition() const { return source == kFamilySource; }
 };
 
+// What a variable is to the machine (spec grafcet-layer.md §2). Existing
+// files, written before kinds existed, declare inputs.
+enum class VariableKind {
+    Input,    // read from the machine; set in simulation and scenarios, never written by actions
+    Output,   // written by the actions of nested GRAFCETs; shown in simulation
+    Internal, // a memory the program writes and reads
+};
+std::string_view variableKindName(VariableKind kind); // "input", "output", "internal"
+bool parseVariableKind(std::string_view name, VariableKind& kind);
+
 struct Variable {
     std::string name;
     IecType type = IecType::Bool;
     std::string defaultValue; // empty: the type's implicit default
     std::string comment;
+    VariableKind kind = VariableKind::Input; // last, so that {name, type, default, comment} still reads
 };
+
+// How a nested GRAFCET evolves in one call of its function block (spec
+// grafcet-layer.md §4.1).
+enum class EvolutionRule {
+    OneEvolutionPerScan, // the default: one evolution per PLC cycle, as SFC runtimes do
+    UntilStable,         // IEC 60848's search for stability, bounded, reporting Unstable
+};
+std::string_view evolutionRuleName(EvolutionRule rule); // "one-per-scan", "until-stable"
+bool parseEvolutionRule(std::string_view name, EvolutionRule& rule);
 
 struct ModelSettings {
     std::string name = "GEMMA";
     int cycleTimeMs = 20;
     Dialect dialect = Dialect::Iec;
+    EvolutionRule evolution = EvolutionRule::OneEvolutionPerScan;
 };
 
 inline constexpr int kMinCycleTimeMs = 1;
@@ -61,9 +83,12 @@ inline constexpr int kMaxCycleTimeMs = 3'600'000;
 
 // What an operation changed, for observers (the editor's Document, caches).
 struct ModelChange {
-    enum class Kind { Step, Transition, Variable, VariableList, Settings, Reset };
+    enum class Kind { Step, Transition, Variable, VariableList, Settings, Grafcet, Reset };
     Kind kind;
     std::string id; // step id, transition id or variable name; empty for lists, settings, reset
+    // Kind::Grafcet (id: the GEMMA step): what changed inside its GRAFCET;
+    // empty when the whole GRAFCET was created, replaced or removed.
+    std::vector<GrafcetChange> grafcetChanges = {};
 };
 
 // The GEMMA-GRAFCET model: the fixed template plus what the user changed.
@@ -86,6 +111,14 @@ public:
     const Transition* transition(std::string_view id) const;
     const Variable* variable(std::string_view name) const; // case-insensitive
     const Step& initialStep() const;
+
+    // Nested GRAFCETs, by GEMMA step id, including those of steps that are
+    // hidden or simple now: they are kept for when the step comes back.
+    const std::map<std::string, Grafcet, std::less<>>& grafcets() const { return m_grafcets; }
+    const Grafcet* grafcet(std::string_view stepId) const;
+    // The GRAFCET that is the body of S_FB: the step is visible, a macro-step
+    // or an enclosing step, and has one; nullptr otherwise.
+    const Grafcet* effectiveGrafcet(std::string_view stepId) const;
 
     // A transition is effective when it and both its ends are visible.
     bool isEffective(const Transition& transition) const;
@@ -115,16 +148,41 @@ public:
     Status setNegated(std::string_view transitionId, bool negated);
     Status setTokens(std::string_view transitionId, std::vector<std::string> tokens);
 
+    // Nested GRAFCETs, addressed by GEMMA step id and nested step or
+    // transition number. A step that is simple has no GRAFCET created for it
+    // (make it a macro-step or an enclosing step first); one it kept from
+    // before can still be edited. See grafcet.h for each operation.
+    Status setGrafcet(std::string_view stepId, Grafcet grafcet); // creates or replaces (loaders, undo)
+    Status removeGrafcet(std::string_view stepId);
+    // Creates the step's GRAFCET when it has none.
+    Status addGrafcetStep(std::string_view stepId, GrafcetStep step);
+    Status removeGrafcetStep(std::string_view stepId, int number);
+    Status renumberGrafcetStep(std::string_view stepId, int number, int newNumber);
+    Status setGrafcetStepInitial(std::string_view stepId, int number, bool initial);
+    Status setGrafcetInitialSteps(std::string_view stepId, const std::vector<int>& numbers);
+    Status setGrafcetStepComment(std::string_view stepId, int number, std::string comment);
+    Status addGrafcetAction(std::string_view stepId, int stepNumber, GrafcetAction action, int index = -1);
+    Status setGrafcetAction(std::string_view stepId, int stepNumber, int index, GrafcetAction action);
+    Status removeGrafcetAction(std::string_view stepId, int stepNumber, int index);
+    Status moveGrafcetAction(std::string_view stepId, int stepNumber, int from, int to);
+    Status addGrafcetTransition(std::string_view stepId, GrafcetTransition transition);
+    Status removeGrafcetTransition(std::string_view stepId, int number);
+    Status setGrafcetUpstream(std::string_view stepId, int number, std::vector<int> steps);
+    Status setGrafcetDownstream(std::string_view stepId, int number, std::vector<int> steps);
+    Status setReceptivity(std::string_view stepId, int number, std::string receptivity);
+
     // Variables. Names are unique case-insensitively and never empty.
     Status addVariable(Variable variable, int index = -1); // -1: append
     Status removeVariable(std::string_view name);
-    // A refactoring: every condition and token that uses the variable follows.
+    // A refactoring: every condition, token, receptivity and action that
+    // uses the variable follows.
     // The new name must be a valid identifier (identifierProblem() of
     // iectypes.h finds none), so that the rewritten conditions still parse.
     Status renameVariable(std::string_view oldName, std::string newName);
     Status setVariableType(std::string_view name, IecType type);
     Status setVariableDefault(std::string_view name, std::string defaultValue);
     Status setVariableComment(std::string_view name, std::string comment);
+    Status setVariableKind(std::string_view name, VariableKind kind);
     Status moveVariable(std::string_view name, int index);
     int variableIndex(std::string_view name) const; // -1 when absent
 
@@ -132,6 +190,7 @@ public:
     Status setName(std::string name);
     Status setCycleTimeMs(int cycleTimeMs);
     void setDialect(Dialect dialect);
+    void setEvolutionRule(EvolutionRule rule);
 
     void resetToTemplate();
     void assign(const Model& other); // replaces everything; observers get Reset
@@ -154,12 +213,16 @@ private:
     Transition* mutableTransition(std::string_view id);
     Variable* mutableVariable(std::string_view name);
     void notify(ModelChange::Kind kind, std::string id = {});
+    void notifyGrafcet(std::string_view stepId, std::vector<GrafcetChange> changes);
+    template <typename Edit>
+    Status editGrafcet(std::string_view stepId, Edit edit);
     void renumberOrders(const std::vector<Transition*>& ordered);
     std::vector<Transition*> mutableOutgoing(std::string_view source);
 
     std::vector<Step> m_steps;
     std::vector<Transition> m_transitions;
     std::vector<Variable> m_variables;
+    std::map<std::string, Grafcet, std::less<>> m_grafcets;
     ModelSettings m_settings;
     std::uint64_t m_revision = 0;
     std::map<int, Observer> m_observers;

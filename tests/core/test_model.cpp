@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -280,4 +281,164 @@ TEST_CASE("Observers always see exactly one initial step", "[model]")
     });
     REQUIRE(model.setInitialStep("F1"));
     CHECK(initialSeen == std::vector<std::string>{"F1", "F1"});
+}
+
+// ---- nested GRAFCETs, variable kinds, evolution rule ---------------------------
+
+namespace {
+
+GrafcetStep nestedStep(int number, bool initial = false)
+{
+    GrafcetStep step;
+    step.number = number;
+    step.initial = initial;
+    return step;
+}
+
+GrafcetTransition nestedTransition(int number, int from, int to, std::string receptivity)
+{
+    GrafcetTransition transition;
+    transition.number = number;
+    transition.upstream = {from};
+    transition.downstream = {to};
+    transition.receptivity = std::move(receptivity);
+    return transition;
+}
+
+} // namespace
+
+TEST_CASE("A macro-step gets its nested GRAFCET by id, a simple step none", "[model][grafcet]")
+{
+    Model model;
+    CHECK(model.grafcet("F1") == nullptr);
+    const Status simple = model.addGrafcetStep("A1", nestedStep(1, true));
+    CHECK_FALSE(simple.ok);
+    CHECK(simple.code == "simple-step");
+    CHECK(model.addGrafcetStep("Z9", nestedStep(1)).code == "unknown-step");
+    CHECK(model.removeGrafcetStep("F1", 1).code == "no-grafcet");
+
+    REQUIRE(model.addGrafcetStep("F1", nestedStep(1, true)));
+    REQUIRE(model.addGrafcetStep("F1", nestedStep(2)));
+    REQUIRE(model.addGrafcetTransition("F1", nestedTransition(1, 1, 2, "Start")));
+    REQUIRE(model.grafcet("F1") != nullptr);
+    CHECK(model.grafcet("F1")->steps().size() == 2);
+    CHECK(model.effectiveGrafcet("F1") == model.grafcet("F1"));
+    // The GRAFCET's own invariants are kept through the model.
+    CHECK_FALSE(model.addGrafcetTransition("F1", nestedTransition(2, 1, 7, "TRUE")));
+    CHECK(model.invariantViolations().empty());
+}
+
+TEST_CASE("Hiding a step or making it simple keeps its GRAFCET, not effective", "[model][grafcet]")
+{
+    Model model;
+    REQUIRE(model.addGrafcetStep("F2", nestedStep(1, true)));
+    REQUIRE(model.setStepHidden("F2", true));
+    CHECK(model.grafcet("F2") != nullptr);
+    CHECK(model.effectiveGrafcet("F2") == nullptr);
+    REQUIRE(model.setStepHidden("F2", false));
+    REQUIRE(model.setStepType("F2", StepType::Simple));
+    CHECK(model.effectiveGrafcet("F2") == nullptr);
+    // What it kept can still be edited, and comes back with the type.
+    REQUIRE(model.addGrafcetStep("F2", nestedStep(2)));
+    REQUIRE(model.setStepType("F2", StepType::Enclosing));
+    REQUIRE(model.effectiveGrafcet("F2") != nullptr);
+    CHECK(model.effectiveGrafcet("F2")->steps().size() == 2);
+}
+
+TEST_CASE("Nested GRAFCET operations notify observers with what changed", "[model][grafcet]")
+{
+    Model model;
+    std::vector<ModelChange> changes;
+    model.addObserver([&](const ModelChange& change) { changes.push_back(change); });
+
+    REQUIRE(model.addGrafcetStep("F1", nestedStep(1, true)));
+    REQUIRE(changes.size() == 1);
+    CHECK(changes[0].kind == ModelChange::Kind::Grafcet);
+    CHECK(changes[0].id == "F1");
+    CHECK(changes[0].grafcetChanges.empty()); // created as a whole
+
+    changes.clear();
+    REQUIRE(model.addGrafcetStep("F1", nestedStep(2)));
+    REQUIRE(model.addGrafcetTransition("F1", nestedTransition(1, 1, 2, "A")));
+    REQUIRE(model.setReceptivity("F1", 1, "B"));
+    REQUIRE(changes.size() == 3);
+    CHECK(changes[2].grafcetChanges == std::vector<GrafcetChange>{{GrafcetChange::Kind::Transition, 1}});
+
+    changes.clear();
+    REQUIRE(model.setReceptivity("F1", 1, "B")); // no change, no event
+    CHECK(changes.empty());
+    CHECK_FALSE(model.setReceptivity("F1", 9, "B"));
+    CHECK(changes.empty());
+
+    REQUIRE(model.removeGrafcet("F1"));
+    REQUIRE(changes.size() == 1);
+    CHECK(changes[0].kind == ModelChange::Kind::Grafcet);
+    CHECK(model.grafcet("F1") == nullptr);
+}
+
+TEST_CASE("Renaming a variable rewrites receptivities and actions", "[model][grafcet]")
+{
+    Model model;
+    REQUIRE(model.addVariable(boolVariable("Valve")));
+    REQUIRE(model.addGrafcetStep("F1", nestedStep(1, true)));
+    REQUIRE(model.addGrafcetStep("F1", nestedStep(2)));
+    REQUIRE(model.addGrafcetAction("F1", 2, {ActionTiming::Continuous, "N Valve IF NOT valve_open"}));
+    REQUIRE(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "R VALVE"}));
+    REQUIRE(model.addGrafcetTransition("F1", nestedTransition(1, 1, 2, "Valve AND X1")));
+
+    std::vector<ModelChange> changes;
+    model.addObserver([&](const ModelChange& change) { changes.push_back(change); });
+    REQUIRE(model.renameVariable("Valve", "Inlet"));
+    const Grafcet& nested = *model.grafcet("F1");
+    CHECK(nested.step(2)->actions[0].text == "N Inlet IF NOT valve_open");
+    CHECK(nested.step(1)->actions[0].text == "R Inlet");
+    CHECK(nested.transition(1)->receptivity == "Inlet AND X1");
+    const bool heard = std::any_of(changes.begin(), changes.end(), [](const ModelChange& c) {
+        return c.kind == ModelChange::Kind::Grafcet && c.id == "F1" && !c.grafcetChanges.empty();
+    });
+    CHECK(heard);
+}
+
+TEST_CASE("Copies, assignment and sameContent include GRAFCETs, kinds and the rule", "[model][grafcet]")
+{
+    Model model;
+    REQUIRE(model.addGrafcetStep("D3", nestedStep(1, true)));
+    Model copy(model);
+    CHECK(copy.sameContent(model));
+    REQUIRE(copy.setGrafcetStepComment("D3", 1, "wait"));
+    CHECK_FALSE(copy.sameContent(model));
+    model.assign(copy);
+    CHECK(model.sameContent(copy));
+
+    REQUIRE(model.addVariable(boolVariable("Lamp")));
+    CHECK(model.variable("Lamp")->kind == VariableKind::Input);
+    Model before(model);
+    REQUIRE(model.setVariableKind("Lamp", VariableKind::Output));
+    CHECK_FALSE(model.sameContent(before));
+    CHECK(model.setVariableKind("Nope", VariableKind::Output).code == "unknown-variable");
+
+    Model ruled(model);
+    CHECK(ruled.settings().evolution == EvolutionRule::OneEvolutionPerScan);
+    ruled.setEvolutionRule(EvolutionRule::UntilStable);
+    CHECK_FALSE(ruled.sameContent(model));
+
+    Grafcet broken;
+    CHECK(model.setGrafcet("F3", broken));          // an empty GRAFCET is valid structure
+    CHECK(model.setGrafcet("Z1", broken).code == "unknown-step");
+}
+
+TEST_CASE("Variable kinds and evolution rules have stable names", "[model]")
+{
+    for (VariableKind kind : {VariableKind::Input, VariableKind::Output, VariableKind::Internal}) {
+        VariableKind parsed = VariableKind::Input;
+        REQUIRE(parseVariableKind(variableKindName(kind), parsed));
+        CHECK(parsed == kind);
+    }
+    VariableKind unused = VariableKind::Input;
+    CHECK_FALSE(parseVariableKind("Output", unused));
+    for (EvolutionRule rule : {EvolutionRule::OneEvolutionPerScan, EvolutionRule::UntilStable}) {
+        EvolutionRule parsed = EvolutionRule::OneEvolutionPerScan;
+        REQUIRE(parseEvolutionRule(evolutionRuleName(rule), parsed));
+        CHECK(parsed == rule);
+    }
 }
