@@ -1,0 +1,111 @@
+#pragma once
+
+// A nested GRAFCET as the function block S_FB executes it (spec
+// grafcet-layer.md §4): the steps in number order with their parsed actions,
+// the transitions in number order with their parsed receptivities, the TONs
+// of the time-dependent receptivities and the continuous outputs with their
+// drivers. The code generator prints it, the simulator runs it and the
+// verifier explores it: one structure, one reading of the semantics.
+//
+// Built by buildGemmaProgram (gemmaprogram.h) for every visible macro-step
+// and enclosing step that has a nested GRAFCET; GemmaStep::nested holds it.
+
+#include "core/condition/actionparser.h"
+#include "core/condition/conditionparser.h"
+#include "core/model/grafcet.h"
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace core {
+
+enum class EvolutionRule;
+
+// One action of a step. Unusable actions (they do not parse or type-check,
+// or write what they may not) are kept for the comments of the generated
+// code and do nothing.
+struct NestedAction {
+    ActionTiming timing = ActionTiming::Continuous;
+    int index = 0;                 // in the step's list of actions (GrafcetStep::actions)
+    std::string text;              // as the user wrote it
+    cond::ActionParseResult parsed;
+    bool usable = false;
+    // The variable written, spelled as declared, or "Complete".
+    std::string target;
+    bool targetIsComplete = false;
+};
+
+struct NestedStep {
+    int number = 0;
+    bool initial = false;
+    std::string comment;
+    // In list order, each group apart (spec §4.2: on-deactivation actions of
+    // the steps that left run before the on-activation actions of those that
+    // entered).
+    std::vector<NestedAction> onActivation;
+    std::vector<NestedAction> onDeactivation;
+    std::vector<NestedAction> continuous;
+    // Indices into NestedGrafcet::timers of the TONs with IN := X<number>.
+    std::vector<int> timers;
+};
+
+// The TON of one time-dependent receptivity `t/Xn` (one per step and
+// duration, shared by every receptivity that reads it).
+struct NestedTimer {
+    int step = 0;
+    std::int64_t durationMs = 0;
+    std::string name; // the FB's TON instance, a reserved name (spec §4.5)
+};
+
+struct NestedTransition {
+    int number = 0;
+    std::vector<int> upstream;   // as in the model, branch order
+    std::vector<int> downstream;
+    std::string text;            // the receptivity as written
+    cond::ParseResult receptivity; // parsed in the Nested context
+    // True when it parses and type-checks: only then is it used. Otherwise
+    // the generated code and the simulator use FALSE (the transition never fires).
+    bool usable = false;
+    // StepDuration node -> index into NestedGrafcet::timers.
+    std::map<int, int> timerOfNode;
+};
+
+// An output the FB computes from its continuous actions (spec §4.2 (3),
+// §4.3): the OR of X<step> AND condition over its drivers.
+struct ContinuousOutput {
+    std::string variable;     // spelled as declared, or "Complete"
+    bool isComplete = false;
+    struct Driver {
+        int step = 0;
+        int action = 0;       // index into that NestedStep::continuous
+    };
+    std::vector<Driver> drivers; // in step-number order, then action order
+};
+
+struct NestedGrafcet {
+    std::string stepId;       // the GEMMA step: "F1"
+    EvolutionRule rule{};     // the model's setting
+    std::vector<NestedStep> steps;             // by number
+    std::vector<NestedTransition> transitions; // by number
+    std::vector<NestedTimer> timers;           // by step number, then duration
+    std::vector<ContinuousOutput> outputs;     // by variable declaration order; Complete last
+    // Variables written by usable stored actions, declared spelling, in
+    // declaration order (Complete excluded).
+    std::vector<std::string> storedTargets;
+    // Variables read by usable receptivities, conditions and assigned values,
+    // declared spelling, in declaration order.
+    std::vector<std::string> readVariables;
+    // Complete is written by a usable action (stored or continuous).
+    bool writesComplete = false;
+    // Until stable: evolutions allowed in one call before Unstable (the
+    // number of transitions plus one).
+    int maxEvolutions = 1;
+
+    const NestedStep* step(int number) const;
+    const NestedTransition* transition(int number) const;
+    const ContinuousOutput* output(std::string_view variable) const; // case-insensitive
+};
+
+} // namespace core
