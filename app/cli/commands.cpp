@@ -43,8 +43,9 @@ const char* const kUsage =
     "      file (default for .st) or a folder with one .st file per POU. The dialect and\n"
     "      cycle time default to the model's settings. A model with errors is refused\n"
     "      unless --force (the code then carries a comment at each problem).\n"
-    "  st MODEL [--dialect iec|codesys]\n"
-    "      Print the GEMMA program's Structured Text.\n"
+    "  st MODEL [--dialect iec|codesys] [--step STEP]\n"
+    "      Print the GEMMA program's Structured Text, or with --step the function block of\n"
+    "      one visible macro-step or enclosing step (its nested GRAFCET).\n"
     "  simulate MODEL [SCENARIO] [--scans N] [--trace]\n"
     "      Run the GEMMA program scan by scan: one line 'scan N: STEP [fired TRANSITION]' per\n"
     "      scan (--trace adds inputs, Entry, tokens and Complete). Runs the scenario's last\n"
@@ -300,6 +301,26 @@ int commandExport(const Arguments& args, Streams streams)
     return Success;
 }
 
+// The function block of one visible macro-step or enclosing step.
+int printFunctionBlock(const core::Model& model, const std::string& stepId, core::Dialect dialect, Streams streams)
+{
+    const core::Step* step = model.step(stepId);
+    if (!step)
+        return usageError(streams.err, "--step: there is no step '" + stepId + "' in the GEMMA template");
+    if (step->hidden || step->type == core::StepType::Simple)
+        return usageError(streams.err, "--step: " + step->id + " has no function block (only visible macro-steps "
+                                                               "and enclosing steps have one)");
+    const core::PlcProject project = core::buildPlcProject(model, dialect);
+    const std::string name = step->id + "_FB";
+    for (const core::PlcPou& pou : project.pous) {
+        if (pou.name == name) {
+            writeVerbatim(streams.out, core::formatPou(pou, dialect));
+            return Success;
+        }
+    }
+    return usageError(streams.err, "--step: no function block " + name + " was generated");
+}
+
 int commandSt(const Arguments& args, Streams streams)
 {
     if (args.positional().size() != 1)
@@ -310,8 +331,12 @@ int commandSt(const Arguments& args, Streams streams)
     core::Dialect dialect;
     if (!chooseDialect(args, *model, dialect, streams.err))
         return UsageError;
-    writeVerbatim(streams.out, core::previewGemmaProgram(*model, dialect).text);
-    return Success;
+    const std::optional<std::string> stepId = args.value("--step");
+    if (!stepId) {
+        writeVerbatim(streams.out, core::previewGemmaProgram(*model, dialect).text);
+        return Success;
+    }
+    return printFunctionBlock(*model, *stepId, dialect, streams);
 }
 
 // --- simulate ----------------------------------------------------------------
@@ -433,7 +458,7 @@ const std::map<std::string, Command>& commands()
         {"validate", {commandValidate, {}, {}}},
         {"convert", {commandConvert, {"--to"}, {}}},
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
-        {"st", {commandSt, {"--dialect"}, {}}},
+        {"st", {commandSt, {"--dialect", "--step"}, {}}},
         {"simulate", {commandSimulate, {"--scans"}, {"--trace"}}},
         {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic"}, {}}},
     };
