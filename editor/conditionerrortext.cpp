@@ -57,6 +57,53 @@ QString invalidTokenText(const core::cond::ParseError& error, const QString& fou
     }
 }
 
+// The receptivities and actions of nested GRAFCETs.
+QString nestedText(const core::cond::ParseError& error, const QString& found)
+{
+    switch (error.kind) {
+    case Kind::EdgeOperand:
+        if (error.found.empty())
+            return ConditionErrorText::tr("an edge (RE, FE, ↑, ↓) applies to a variable name");
+        //: %1: what follows RE, FE, ↑ or ↓ instead of a variable name
+        return ConditionErrorText::tr("an edge (RE, FE, ↑, ↓) applies to a variable name, not to '%1'").arg(found);
+    case Kind::DurationWithoutStep:
+        //: %1: a duration such as 5s; X3 is step 3's activity, keep it as is
+        return ConditionErrorText::tr("the duration '%1' must be followed by /X<step>, as in %1/X3").arg(found);
+    case Kind::DurationStepExpected:
+        if (error.found.empty())
+            return ConditionErrorText::tr("expected a step activity X<step> after '/' of the duration");
+        return ConditionErrorText::tr("expected a step activity X<step> after '/' of the duration, found '%1'")
+            .arg(found);
+    case Kind::ZeroDuration:
+        return ConditionErrorText::tr("the duration '%1' is zero: write a positive duration").arg(found);
+    case Kind::InvalidDuration:
+        return ConditionErrorText::tr("'%1' is not a valid duration: write for example 200ms, 5s, 1m30s or T#5s "
+                                      "(units d, h, m, s, ms, largest first)")
+            .arg(found);
+    case Kind::EmptyAction:
+        return ConditionErrorText::tr(
+            "empty action: write for example Valve, S Valve, R Valve or Count := Count + 1");
+    case Kind::ActionTargetNotVariable:
+        return ConditionErrorText::tr("an action writes a variable: '%1' is not a variable name").arg(found);
+    case Kind::UnsupportedQualifier:
+        return ConditionErrorText::tr(
+                   "the qualifier '%1' is not supported: use N (or none), S, R or an assignment V := value")
+            .arg(found);
+    case Kind::QualifierWithAssignment:
+        return ConditionErrorText::tr("an assignment takes no qualifier: write V := value, without '%1'").arg(found);
+    case Kind::StoredWithCondition:
+        //: %1: the qualifier S or R
+        return ConditionErrorText::tr(
+                   "a stored action (%1) takes no IF condition: only continuous actions are conditional")
+            .arg(found);
+    case Kind::AssignmentWithoutValue: return ConditionErrorText::tr("expected a value after ':='");
+    case Kind::ConditionMissing: return ConditionErrorText::tr("expected a condition after IF");
+    case Kind::EqualsForAssignment: return ConditionErrorText::tr("use := to assign a value; = compares");
+    case Kind::AfterAction: return ConditionErrorText::tr("unexpected '%1' after a complete action").arg(found);
+    default: return invalidTokenText(error, found);
+    }
+}
+
 QString structureText(const core::cond::ParseError& error, const QString& found)
 {
     const QString number = QString::number(error.number);
@@ -92,7 +139,7 @@ QString structureText(const core::cond::ParseError& error, const QString& found)
         return ConditionErrorText::tr("unexpected '%1' after a complete condition").arg(found);
     case Kind::MissingOperator:
         return ConditionErrorText::tr("unexpected '%1' after a complete condition (missing operator?)").arg(found);
-    default: return invalidTokenText(error, found);
+    default: return nestedText(error, found);
     }
 }
 

@@ -120,9 +120,12 @@ private:
         case NodeKind::IntegerLiteral:
         case NodeKind::RealLiteral: m_out += node.text; break;
         case NodeKind::Unary:
-            m_out += node.unaryOp == UnaryOp::Not ? "NOT " : "-";
+            m_out += unaryPrefix(node.unaryOp);
             writeOperand(node.operand, index, false);
             break;
+        case NodeKind::StepActivity: m_out += "X" + std::to_string(node.number); break;
+        case NodeKind::StepDuration: m_out += node.text; break;
+        case NodeKind::Complete: m_out += "Complete"; break;
         case NodeKind::Binary:
             writeOperand(node.left, index, false);
             m_out += ' ';
@@ -131,6 +134,17 @@ private:
             writeOperand(node.right, index, true);
             break;
         }
+    }
+
+    static const char* unaryPrefix(UnaryOp op)
+    {
+        switch (op) {
+        case UnaryOp::Not: return "NOT ";
+        case UnaryOp::Negate: return "-";
+        case UnaryOp::RisingEdge: return "RE ";
+        case UnaryOp::FallingEdge: return "FE ";
+        }
+        return "?";
     }
 
     const Expression& m_expression;
@@ -281,6 +295,9 @@ private:
             return ValueKind::Real;
         case NodeKind::Unary: return unaryKind(index, node);
         case NodeKind::Binary: return binaryKind(index, node);
+        case NodeKind::StepActivity:
+        case NodeKind::StepDuration:
+        case NodeKind::Complete: return ValueKind::Bool;
         }
         return ValueKind::Unknown;
     }
@@ -306,6 +323,8 @@ private:
 
     ValueKind unaryKind(int index, const Node& node)
     {
+        if (node.unaryOp == UnaryOp::RisingEdge || node.unaryOp == UnaryOp::FallingEdge)
+            return edgeKind(index, node);
         const ValueKind operand = kindOf(node.operand, index);
         if (operand == ValueKind::Unknown)
             return node.unaryOp == UnaryOp::Not ? ValueKind::Bool : ValueKind::Unknown;
@@ -319,6 +338,19 @@ private:
             return ValueKind::Unknown;
         }
         return operand;
+    }
+
+    // An edge is BOOL; its operand must be a BOOL variable (GG410).
+    ValueKind edgeKind(int index, const Node& node)
+    {
+        const ValueKind operand = kindOf(node.operand, index);
+        if (operand != ValueKind::Unknown && operand != ValueKind::Bool && m_issues) {
+            const Node& variable = m_expression.at(node.operand);
+            const Variable* declared = m_symbols.find(variable.text);
+            const std::string type = declared ? std::string(iecTypeName(declared->type)) : valueType(operand);
+            report("GG410", "an edge applies to a BOOL variable; '" + variable.text + "' is " + type, node.span);
+        }
+        return ValueKind::Bool;
     }
 
     void reportOperand(TypeError::Kind kind, std::string op, int node)
@@ -470,6 +502,49 @@ std::vector<int> variableNodes(const Expression& expression)
 
 // Every variable occurrence is a literal, whatever its type or position: the
 // checks decide which ones may carry a token (BOOL variables, spec §5).
+namespace {
+
+// The reachable nodes that pass `keep`, in source order.
+template<typename Keep>
+std::vector<int> nodesInSourceOrder(const Expression& expression, Keep keep)
+{
+    std::vector<int> found;
+    if (!isRootValid(expression))
+        return found;
+    std::vector<int> pending{expression.root};
+    while (!pending.empty()) {
+        const int index = pending.back();
+        pending.pop_back();
+        const Node& node = expression.at(index);
+        if (keep(node))
+            found.push_back(index);
+        if (node.kind == NodeKind::Unary && isChild(expression, node.operand, index))
+            pending.push_back(node.operand);
+        else if (node.kind == NodeKind::Binary) {
+            if (isChild(expression, node.right, index))
+                pending.push_back(node.right);
+            if (isChild(expression, node.left, index))
+                pending.push_back(node.left);
+        }
+    }
+    return found;
+}
+
+} // namespace
+
+std::vector<int> nodesOfKind(const Expression& expression, NodeKind kind)
+{
+    return nodesInSourceOrder(expression, [kind](const Node& node) { return node.kind == kind; });
+}
+
+std::vector<int> edgeNodes(const Expression& expression)
+{
+    return nodesInSourceOrder(expression, [](const Node& node) {
+        return node.kind == NodeKind::Unary
+            && (node.unaryOp == UnaryOp::RisingEdge || node.unaryOp == UnaryOp::FallingEdge);
+    });
+}
+
 std::vector<Literal> booleanLiterals(const Expression& expression)
 {
     std::vector<Literal> literals;

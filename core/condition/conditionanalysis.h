@@ -32,8 +32,14 @@ std::vector<TypeIssue> typeCheck(const Expression& expression, const SymbolTable
 // The kind of value a node yields (Unknown for undeclared variables or errors).
 ValueKind valueKind(const Expression& expression, int node, const SymbolTable& symbols);
 
-// Indices of the Variable nodes, in source order.
+// Indices of the Variable nodes, in source order (edge operands included).
 std::vector<int> variableNodes(const Expression& expression);
+
+// Indices of the nodes of one kind, in source order.
+std::vector<int> nodesOfKind(const Expression& expression, NodeKind kind);
+
+// Indices of the edges (RE, FE unary nodes), in source order.
+std::vector<int> edgeNodes(const Expression& expression);
 
 // A boolean literal: an occurrence of a variable, either bare (`X`,
 // normally open) or directly under NOT (`NOT X`, normally closed). `node` is

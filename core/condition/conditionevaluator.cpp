@@ -155,7 +155,10 @@ public:
             return false;
         const Node& node = m_expression.at(index);
         switch (node.kind) {
-        case NodeKind::Variable: return m_variableValue ? m_variableValue(index) : Value{false};
+        case NodeKind::Variable:
+        case NodeKind::StepActivity:
+        case NodeKind::StepDuration:
+        case NodeKind::Complete: return m_variableValue ? m_variableValue(index) : Value{false};
         case NodeKind::BoolLiteral: return equalsIgnoreCase(node.text, "TRUE");
         case NodeKind::IntegerLiteral: return positiveLiteral(node.text);
         case NodeKind::RealLiteral: {
@@ -173,6 +176,8 @@ private:
     {
         if (node.unaryOp == UnaryOp::Not)
             return !isTrue(eval(node.operand, index));
+        if (node.unaryOp == UnaryOp::RisingEdge || node.unaryOp == UnaryOp::FallingEdge)
+            return m_variableValue ? Value{isTrue(m_variableValue(index))} : Value{false};
         // The literal of LINT's minimum exceeds INT64_MAX by one: negate it exactly.
         if (node.operand >= 0 && node.operand < index
             && m_expression.at(node.operand).kind == NodeKind::IntegerLiteral)

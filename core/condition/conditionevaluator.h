@@ -18,7 +18,9 @@ namespace core::cond {
 using Value = std::variant<bool, std::int64_t, double>;
 
 // The value of the expression, with `variableValue` giving the value of each
-// Variable node (by node index). ST semantics, computed in 64 bits (LINT /
+// Variable node (by node index) and, in the texts of nested GRAFCETs, of each
+// StepActivity, StepDuration and Complete node and of each edge (the RE/FE
+// Unary node as a whole: the evaluator does not look under an edge). ST semantics, computed in 64 bits (LINT /
 // LREAL; a narrower PLC type differs only where it would overflow):
 // - integer arithmetic wraps around instead of overflowing;
 // - integer / truncates toward zero, MOD takes the sign of the dividend;

@@ -44,6 +44,20 @@ constexpr EnumName<Kind> kKindNames[] = {
     {Kind::Unclosed, "unclosed"},
     {Kind::AfterCondition, "after-condition"},
     {Kind::MissingOperator, "missing-operator"},
+    {Kind::EdgeOperand, "edge-operand"},
+    {Kind::DurationWithoutStep, "duration-without-step"},
+    {Kind::DurationStepExpected, "duration-step-expected"},
+    {Kind::ZeroDuration, "zero-duration"},
+    {Kind::InvalidDuration, "invalid-duration"},
+    {Kind::EmptyAction, "empty-action"},
+    {Kind::ActionTargetNotVariable, "action-target-not-variable"},
+    {Kind::UnsupportedQualifier, "unsupported-qualifier"},
+    {Kind::QualifierWithAssignment, "qualifier-with-assignment"},
+    {Kind::StoredWithCondition, "stored-with-condition"},
+    {Kind::AssignmentWithoutValue, "assignment-without-value"},
+    {Kind::ConditionMissing, "condition-missing"},
+    {Kind::EqualsForAssignment, "equals-for-assignment"},
+    {Kind::AfterAction, "after-action"},
 };
 
 std::string quoted(std::string_view text)
@@ -93,6 +107,35 @@ std::string tokenText(const ParseError& e)
     }
 }
 
+std::string nestedText(const ParseError& e)
+{
+    switch (e.kind) {
+    case Kind::EdgeOperand:
+        return "an edge (RE, FE, ↑, ↓) applies to a variable name" + (e.found.empty() ? "" : ", not to " + quoted(e.found));
+    case Kind::DurationWithoutStep:
+        return "the duration " + quoted(e.found) + " must be followed by /X<step>, as in " + e.found + "/X3";
+    case Kind::DurationStepExpected:
+        return "expected a step activity X<step> after '/' of the duration" + (e.found.empty() ? "" : ", found " + quoted(e.found));
+    case Kind::ZeroDuration: return "the duration " + quoted(e.found) + " is zero: write a positive duration";
+    case Kind::InvalidDuration:
+        return quoted(e.found) + " is not a valid duration: write for example 200ms, 5s, 1m30s or T#5s (units d, h, m, s, ms, largest first)";
+    case Kind::EmptyAction: return "empty action: write for example Valve, S Valve, R Valve or Count := Count + 1";
+    case Kind::ActionTargetNotVariable:
+        return "an action writes a variable: " + quoted(e.found) + " is not a variable name";
+    case Kind::UnsupportedQualifier:
+        return "the qualifier " + quoted(e.found) + " is not supported: use N (or none), S, R or an assignment V := value";
+    case Kind::QualifierWithAssignment:
+        return "an assignment takes no qualifier: write V := value, without " + quoted(e.found);
+    case Kind::StoredWithCondition:
+        return "a stored action (" + e.found + ") takes no IF condition: only continuous actions are conditional";
+    case Kind::AssignmentWithoutValue: return "expected a value after ':='";
+    case Kind::ConditionMissing: return "expected a condition after IF";
+    case Kind::EqualsForAssignment: return "use := to assign a value; = compares";
+    case Kind::AfterAction: return "unexpected " + quoted(e.found) + " after a complete action";
+    default: return {};
+    }
+}
+
 std::string structureText(const ParseError& e)
 {
     const std::string number = std::to_string(e.number);
@@ -133,6 +176,8 @@ ParseError makeParseError(ParseError::Kind kind, Span span, std::string_view fou
 std::string toText(const ParseError& error)
 {
     std::string text = structureText(error);
+    if (text.empty())
+        text = nestedText(error);
     return text.empty() ? tokenText(error) : text;
 }
 

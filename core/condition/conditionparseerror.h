@@ -50,6 +50,22 @@ struct ParseError {
         Unclosed,           // found instead of ')'; number: the column of the '('
         AfterCondition,     // found after a complete condition
         MissingOperator,    // found, an operand, after a complete condition
+        // Receptivities of nested GRAFCETs (the Nested context).
+        EdgeOperand,        // an edge (RE, FE, ↑, ↓) not followed by a variable name; found: what follows
+        DurationWithoutStep, // found, a duration, not followed by /X<n>
+        DurationStepExpected, // found after the '/' of a duration instead of X<n>
+        ZeroDuration,       // found, a duration of 0
+        InvalidDuration,    // found, a malformed duration (T#5x, 1s2h)
+        // Actions of nested GRAFCETs.
+        EmptyAction,        // a blank action
+        ActionTargetNotVariable, // found where the variable an action writes should be
+        UnsupportedQualifier, // found, an IEC 60848 / 61131-3 qualifier GG Studio does not have (P, L, D, SD...)
+        QualifierWithAssignment, // found, the qualifier of `S V := 1`
+        StoredWithCondition, // found, the qualifier of `S V IF c`
+        AssignmentWithoutValue, // `V :=` with nothing after it
+        ConditionMissing,   // `V IF` with nothing after it
+        EqualsForAssignment, // `V = 1`: found "="
+        AfterAction,        // found after a complete action
     };
 
     Kind kind = Kind::Empty;

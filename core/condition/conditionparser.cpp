@@ -3,6 +3,7 @@
 #include "core/model/iectypes.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace core::cond {
 
@@ -151,6 +152,64 @@ Token scanToken(std::string_view text, std::size_t begin)
     return scanSymbol(text, begin);
 }
 
+constexpr std::string_view kUpArrow = "\xE2\x86\x91";   // ↑
+constexpr std::string_view kDownArrow = "\xE2\x86\x93"; // ↓
+
+// What the Nested context adds: edges, durations.
+Token scanNestedToken(std::string_view text, std::size_t begin)
+{
+    const std::string_view rest = text.substr(begin);
+    if (rest.starts_with(kUpArrow) || rest.starts_with(kDownArrow))
+        return makeToken(rest.starts_with(kUpArrow) ? TokenKind::RisingEdge : TokenKind::FallingEdge, text, begin,
+                         begin + kUpArrow.size());
+    Token token = scanToken(text, begin);
+    if (token.kind == TokenKind::Identifier && (equalsIgnoreCase(token.text, "RE") || equalsIgnoreCase(token.text, "FE")))
+        token.kind = equalsIgnoreCase(token.text, "RE") ? TokenKind::RisingEdge : TokenKind::FallingEdge;
+    else if (token.kind == TokenKind::Invalid && parseDurationMs(token.text))
+        token.kind = TokenKind::Duration;
+    return token;
+}
+
+bool looksLikeDuration(std::string_view text)
+{
+    const std::size_t hash = text.find('#');
+    if (hash == std::string_view::npos)
+        return false;
+    const std::string_view prefix = text.substr(0, hash);
+    return equalsIgnoreCase(prefix, "T") || equalsIgnoreCase(prefix, "TIME");
+}
+
+struct DurationUnit {
+    std::string_view name;
+    std::int64_t milliseconds;
+};
+
+constexpr DurationUnit kDurationUnits[] = {
+    {"d", 86'400'000}, {"h", 3'600'000}, {"ms", 1}, {"m", 60'000}, {"s", 1'000},
+};
+
+// The rank of a unit from the largest (0) to the smallest (4).
+int unitRank(std::string_view name)
+{
+    static constexpr std::string_view kOrder[] = {"d", "h", "m", "s", "ms"};
+    for (int i = 0; i < 5; ++i) {
+        if (kOrder[i] == name)
+            return i;
+    }
+    return -1;
+}
+
+std::optional<DurationUnit> scanUnit(std::string_view text, std::size_t& pos)
+{
+    for (const DurationUnit& unit : kDurationUnits) {
+        if (pos + unit.name.size() <= text.size() && equalsIgnoreCase(text.substr(pos, unit.name.size()), unit.name)) {
+            pos += unit.name.size();
+            return unit;
+        }
+    }
+    return std::nullopt;
+}
+
 // --- errors -------------------------------------------------------------------
 
 using ErrorKind = ParseError::Kind;
@@ -276,6 +335,9 @@ bool startsOperand(TokenKind kind)
     case TokenKind::False:
     case TokenKind::Not:
     case TokenKind::Minus:
+    case TokenKind::RisingEdge:
+    case TokenKind::FallingEdge:
+    case TokenKind::Duration:
     case TokenKind::LeftParen: return true;
     default: return false;
     }
@@ -284,7 +346,12 @@ bool startsOperand(TokenKind kind)
 // Recursive descent with precedence climbing over the token list.
 class Parser {
 public:
-    explicit Parser(std::string_view text) : m_text(text), m_tokens(tokenize(text)) {}
+    Parser(std::string_view text, std::vector<Token> tokens, Context context)
+        : m_text(text)
+        , m_tokens(std::move(tokens))
+        , m_nested(context == Context::Nested)
+    {
+    }
 
     ParseResult run()
     {
@@ -332,6 +399,8 @@ private:
 
     Parsed failInvalid(const Token& token)
     {
+        if (m_nested && looksLikeDuration(token.text))
+            return fail(ErrorKind::InvalidDuration, token);
         const ErrorKind kind = invalidTokenKind(token.text);
         const std::size_t byte = static_cast<unsigned char>(token.text[0]);
         return fail(kind, token, kind == ErrorKind::ControlCharacter ? byte : 0);
@@ -383,6 +452,8 @@ private:
     Parsed parseUnary()
     {
         const TokenKind kind = peek().kind;
+        if (kind == TokenKind::RisingEdge || kind == TokenKind::FallingEdge)
+            return parseEdge();
         if (kind != TokenKind::Not && kind != TokenKind::Minus)
             return parsePrimary();
         const std::size_t operatorToken = m_position;
@@ -403,11 +474,70 @@ private:
         return lastNode(height);
     }
 
+    // RE a, ↑a: the operand is a variable name, nothing else.
+    Parsed parseEdge()
+    {
+        const std::size_t operatorToken = m_position;
+        const Token& edge = advance();
+        const Token& operand = peek();
+        if (operand.kind == TokenKind::Invalid)
+            return failInvalid(operand);
+        if (operand.kind != TokenKind::Identifier || stepActivityNumber(operand.text) > 0
+            || equalsIgnoreCase(operand.text, "Complete"))
+            return operand.kind == TokenKind::End ? fail(ErrorKind::EdgeOperand, edge.span)
+                                                  : fail(ErrorKind::EdgeOperand, operand);
+        const Parsed variable = leaf(NodeKind::Variable);
+        Node* node = newNode(NodeKind::Unary, Span{edge.span.begin, variable.extent.end}, 2, operatorToken);
+        if (!node)
+            return {};
+        node->unaryOp = edge.kind == TokenKind::RisingEdge ? UnaryOp::RisingEdge : UnaryOp::FallingEdge;
+        node->operand = variable.node;
+        return lastNode(2);
+    }
+
+    Parsed identifier()
+    {
+        if (!m_nested)
+            return leaf(NodeKind::Variable);
+        const Token& token = peek();
+        if (const int number = stepActivityNumber(token.text); number > 0) {
+            const Parsed parsed = leaf(NodeKind::StepActivity);
+            m_expression.nodes.back().number = number;
+            return parsed;
+        }
+        return leaf(equalsIgnoreCase(token.text, "Complete") ? NodeKind::Complete : NodeKind::Variable);
+    }
+
+    // 5s/X3: the time step 3 has been active.
+    Parsed parseStepDuration()
+    {
+        const std::size_t durationToken = m_position;
+        const Token& duration = advance();
+        if (peek().kind != TokenKind::Slash)
+            return fail(ErrorKind::DurationWithoutStep, duration);
+        advance();
+        const Token& step = peek();
+        const int number = step.kind == TokenKind::Identifier ? stepActivityNumber(step.text) : 0;
+        if (number <= 0)
+            return fail(ErrorKind::DurationStepExpected, step);
+        const std::int64_t milliseconds = *parseDurationMs(duration.text);
+        if (milliseconds <= 0)
+            return fail(ErrorKind::ZeroDuration, duration);
+        advance();
+        const Span span{duration.span.begin, step.span.end};
+        Node* node = newNode(NodeKind::StepDuration, span, 1, durationToken);
+        node->text.assign(m_text.substr(span.begin, span.end - span.begin));
+        node->number = number;
+        node->durationMs = milliseconds;
+        return lastNode(1);
+    }
+
     Parsed parsePrimary()
     {
         const Token& token = peek();
         switch (token.kind) {
-        case TokenKind::Identifier: return leaf(NodeKind::Variable);
+        case TokenKind::Identifier: return identifier();
+        case TokenKind::Duration: return parseStepDuration();
         case TokenKind::IntegerLiteral: return leaf(NodeKind::IntegerLiteral);
         case TokenKind::RealLiteral: return leaf(NodeKind::RealLiteral);
         case TokenKind::True:
@@ -490,6 +620,7 @@ private:
 
     std::string_view m_text;
     std::vector<Token> m_tokens;
+    bool m_nested = false;
     std::size_t m_position = 0;
     int m_parenNesting = 0;
     int m_unaryNesting = 0;
@@ -513,8 +644,9 @@ bool isRenamable(const Token& token)
 
 } // namespace
 
-std::vector<Token> tokenize(std::string_view text)
+std::vector<Token> tokenize(std::string_view text, const ParseOptions& options)
 {
+    const bool nested = options.context == Context::Nested;
     std::vector<Token> tokens;
     tokens.reserve(text.size() / 4 + 2);
     std::size_t position = 0;
@@ -523,24 +655,91 @@ std::vector<Token> tokenize(std::string_view text)
             ++position;
         if (position >= text.size())
             break;
-        tokens.push_back(scanToken(text, position));
+        tokens.push_back(nested ? scanNestedToken(text, position) : scanToken(text, position));
         position = tokens.back().span.end;
     }
     tokens.push_back(Token{TokenKind::End, Span{text.size(), text.size()}, text.substr(text.size())});
     return tokens;
 }
 
-ParseResult parse(std::string_view text)
+ParseResult parse(std::string_view text, const ParseOptions& options)
 {
-    return Parser(text).run();
+    return Parser(text, tokenize(text, options), options.context).run();
 }
 
-std::string renameIdentifier(std::string_view text, std::string_view oldName, std::string_view newName)
+ParseResult parseTokens(std::string_view text, const std::vector<Token>& tokens, std::size_t first,
+                        std::size_t last, const ParseOptions& options)
+{
+    std::vector<Token> range(tokens.begin() + static_cast<std::ptrdiff_t>(first),
+                             tokens.begin() + static_cast<std::ptrdiff_t>(last));
+    range.push_back(Token{TokenKind::End, Span{text.size(), text.size()}, text.substr(text.size())});
+    return Parser(text, std::move(range), options.context).run();
+}
+
+std::optional<std::int64_t> parseDurationMs(std::string_view text)
+{
+    if (const std::size_t hash = text.find('#'); hash != std::string_view::npos) {
+        if (!looksLikeDuration(text))
+            return std::nullopt;
+        text.remove_prefix(hash + 1);
+    }
+    constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+    std::int64_t total = 0;
+    int previousRank = -1;
+    bool fractionSeen = false;
+    std::size_t pos = 0;
+    if (text.empty())
+        return std::nullopt;
+    while (pos < text.size()) {
+        if (fractionSeen || !isDigit(text[pos]))
+            return std::nullopt; // only the last part may have a fraction
+        std::int64_t whole = 0;
+        for (; pos < text.size() && isDigit(text[pos]); ++pos) {
+            if (whole > (kMax - 9) / 10)
+                return std::nullopt;
+            whole = whole * 10 + (text[pos] - '0');
+        }
+        double fraction = 0;
+        if (pos < text.size() && text[pos] == '.') {
+            const std::size_t start = ++pos;
+            double scale = 0.1;
+            for (; pos < text.size() && isDigit(text[pos]); ++pos, scale /= 10)
+                fraction += (text[pos] - '0') * scale;
+            if (pos == start)
+                return std::nullopt;
+            fractionSeen = true;
+        }
+        const std::optional<DurationUnit> unit = scanUnit(text, pos);
+        if (!unit || unitRank(unit->name) <= previousRank)
+            return std::nullopt;
+        previousRank = unitRank(unit->name);
+        if (whole > (kMax - total) / unit->milliseconds - 1)
+            return std::nullopt;
+        total += whole * unit->milliseconds + static_cast<std::int64_t>(fraction * static_cast<double>(unit->milliseconds) + 0.5);
+    }
+    return total;
+}
+
+int stepActivityNumber(std::string_view name)
+{
+    if (name.size() < 2 || name.size() > 10 || (name[0] != 'X' && name[0] != 'x'))
+        return 0;
+    int number = 0;
+    for (char c : name.substr(1)) {
+        if (!isDigit(c))
+            return 0;
+        number = number * 10 + (c - '0');
+    }
+    return number;
+}
+
+std::string renameIdentifier(std::string_view text, std::string_view oldName, std::string_view newName,
+                             const ParseOptions& options)
 {
     std::string result;
     result.reserve(text.size() + newName.size());
     std::size_t copied = 0;
-    for (const Token& token : tokenize(text)) {
+    for (const Token& token : tokenize(text, options)) {
         if (!isRenamable(token) || !equalsIgnoreCase(token.text, oldName))
             continue;
         result.append(text.substr(copied, token.span.begin - copied));

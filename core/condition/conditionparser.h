@@ -3,6 +3,7 @@
 #include "core/condition/conditionparseerror.h"
 #include "core/condition/conditionsyntax.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -17,7 +18,21 @@ enum class TokenKind {
     Equal, NotEqual, Less, Greater, LessEqual, GreaterEqual,
     LeftParen, RightParen,
     Invalid, // a character or word the language does not have
+    // Context::Nested only.
+    RisingEdge,  // RE, ↑
+    FallingEdge, // FE, ↓
+    Duration,    // 5s, 200ms, 1m30s, T#5s
     End,
+};
+
+// Where a text is read. The texts of nested GRAFCETs (receptivities, action
+// conditions and values) add step activities X<n>, durations t/X<n>, edges
+// and Complete to the GEMMA condition language; in the Gemma context all of
+// these are what they always were (X3 a variable, T#5s an error).
+enum class Context { Gemma, Nested };
+
+struct ParseOptions {
+    Context context = Context::Gemma;
 };
 
 struct Token {
@@ -28,7 +43,7 @@ struct Token {
 
 // Splits a condition into tokens; never fails (bad characters become Invalid
 // tokens). The last token is always End.
-std::vector<Token> tokenize(std::string_view text);
+std::vector<Token> tokenize(std::string_view text, const ParseOptions& options = {});
 
 struct ParseResult {
     Expression expression;            // empty when error is set
@@ -39,11 +54,28 @@ struct ParseResult {
 
 // Parses a whole condition. An empty or blank text is an error
 // ("empty condition: write TRUE for a transition that is always ready").
-ParseResult parse(std::string_view text);
+ParseResult parse(std::string_view text, const ParseOptions& options = {});
+
+// Parses the tokens [first, last) of a text tokenized in the given context
+// (last excluded; an End token is supplied): the expressions inside an
+// action. Spans stay offsets into the whole text.
+ParseResult parseTokens(std::string_view text, const std::vector<Token>& tokens, std::size_t first,
+                        std::size_t last, const ParseOptions& options);
+
+// A duration literal in milliseconds: 200ms, 5s, 1m30s, 1.5s, T#5s, TIME#1h
+// (units d, h, m, s, ms, largest first, each at most once; only the last may
+// have a fraction). nullopt when malformed or out of range; 0 is returned as
+// 0 (the parser refuses it).
+std::optional<std::int64_t> parseDurationMs(std::string_view text);
+
+// "X3" -> 3 in the Nested context: X (any case) and a step number without
+// sign that fits an int; 0 otherwise.
+int stepActivityNumber(std::string_view name);
 
 // Replaces every identifier token equal (case-insensitively) to oldName by
 // newName, leaving everything else byte for byte. Works on conditions that do
 // not parse, since it only needs the tokens.
-std::string renameIdentifier(std::string_view text, std::string_view oldName, std::string_view newName);
+std::string renameIdentifier(std::string_view text, std::string_view oldName, std::string_view newName,
+                             const ParseOptions& options = {});
 
 } // namespace core::cond

@@ -25,7 +25,13 @@ const char* operatorText(BinaryOp op)
 
 const char* operatorText(UnaryOp op)
 {
-    return op == UnaryOp::Not ? "NOT" : "-";
+    switch (op) {
+    case UnaryOp::Not: return "NOT";
+    case UnaryOp::Negate: return "-";
+    case UnaryOp::RisingEdge: return "RE";
+    case UnaryOp::FallingEdge: return "FE";
+    }
+    return "?";
 }
 
 int precedence(BinaryOp op)

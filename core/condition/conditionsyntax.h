@@ -6,12 +6,15 @@
 
 #include "core/model/span.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace core::cond {
 
-enum class UnaryOp { Not, Negate };
+// RisingEdge, FallingEdge (`RE a` / `↑a`, `FE a` / `↓a`): nested GRAFCETs
+// only; their operand is always a Variable node.
+enum class UnaryOp { Not, Negate, RisingEdge, FallingEdge };
 
 enum class BinaryOp {
     Or, Xor, And,
@@ -21,17 +24,25 @@ enum class BinaryOp {
     Multiply, Divide, Modulo,
 };
 
-enum class NodeKind { Variable, BoolLiteral, IntegerLiteral, RealLiteral, Unary, Binary };
+// StepActivity (`X3`), StepDuration (`5s/X3`) and Complete exist only in
+// the texts of nested GRAFCETs (Context::Nested of conditionparser.h).
+enum class NodeKind {
+    Variable, BoolLiteral, IntegerLiteral, RealLiteral, Unary, Binary,
+    StepActivity, StepDuration, Complete,
+};
 
 struct Node {
     NodeKind kind = NodeKind::BoolLiteral;
     Span span;          // the whole subexpression in the source text (parentheses excluded)
-    std::string text;   // Variable: the name as written; literals: their text ("TRUE", "42", "1.5e3")
+    std::string text;   // Variable: the name as written; literals: their text ("TRUE", "42", "1.5e3");
+                        // StepActivity, StepDuration, Complete: as written ("X3", "5s/X3")
     UnaryOp unaryOp = UnaryOp::Not;
     BinaryOp binaryOp = BinaryOp::Or;
     int operand = -1;   // Unary: index of the operand in Expression::nodes
     int left = -1;      // Binary: indices of the operands
     int right = -1;
+    int number = 0;              // StepActivity, StepDuration: the step number
+    std::int64_t durationMs = 0; // StepDuration: the duration in milliseconds
 };
 
 // An arena of nodes; children always come before their parent.

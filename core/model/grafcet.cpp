@@ -47,7 +47,7 @@ std::string activity(int number)
 // Rewrites one text, reporting whether it changed.
 bool rewrite(std::string& text, std::string_view oldName, std::string_view newName)
 {
-    std::string renamed = cond::renameIdentifier(text, oldName, newName);
+    std::string renamed = cond::renameIdentifier(text, oldName, newName, {cond::Context::Nested});
     if (renamed == text)
         return false;
     text = std::move(renamed);

@@ -26,7 +26,10 @@ std::string shape(const Expression& e, int index)
     switch (n.kind) {
     case NodeKind::Variable:
     case NodeKind::IntegerLiteral:
-    case NodeKind::RealLiteral: return n.text;
+    case NodeKind::RealLiteral:
+    case NodeKind::StepActivity:
+    case NodeKind::StepDuration:
+    case NodeKind::Complete: return n.text;
     case NodeKind::BoolLiteral: return toUpperAscii(n.text);
     case NodeKind::Unary: return std::string("(") + operatorText(n.unaryOp) + " " + shape(e, n.operand) + ")";
     case NodeKind::Binary:

@@ -1,7 +1,8 @@
-// libFuzzer target: the condition parser, type checker and printer on
-// arbitrary text. Spans must stay inside the text, and printing must be a
+// libFuzzer target: the condition parser (both contexts), the action parser,
+// the type checker and the printer on arbitrary text. Spans must stay inside the text, and printing must be a
 // fixed point: the printed condition parses and prints to itself.
 
+#include "core/condition/actionparser.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
 #include "core/model/model.h"
@@ -39,22 +40,20 @@ bool spanInside(const core::Span& span, std::size_t size)
     return span.begin <= span.end && span.end <= size;
 }
 
-} // namespace
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+// One context: tokens and spans inside the text, printing a fixed point.
+void checkCondition(std::string_view text, const core::cond::ParseOptions& options)
 {
-    const std::string_view text(reinterpret_cast<const char*>(data), size);
     static const core::SymbolTable symbols(variables());
-
-    for (const core::cond::Token& token : core::cond::tokenize(text))
+    const std::size_t size = text.size();
+    for (const core::cond::Token& token : core::cond::tokenize(text, options))
         expect(spanInside(token.span, size));
-    core::cond::renameIdentifier(text, "Start", "Go");
+    core::cond::renameIdentifier(text, "Start", "Go", options);
 
-    const core::cond::ParseResult parsed = core::cond::parse(text);
+    const core::cond::ParseResult parsed = core::cond::parse(text, options);
     if (!parsed.ok()) {
         expect(spanInside(parsed.error->span, size));
         expect(!parsed.error->message.empty());
-        return 0;
+        return;
     }
     const core::cond::Expression& expression = parsed.expression;
     for (const core::cond::Node& node : expression.nodes)
@@ -65,8 +64,36 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     core::cond::needsParenthesesBeforeAnd(expression);
 
     const std::string printed = core::cond::print(expression);
-    const core::cond::ParseResult reparsed = core::cond::parse(printed);
+    const core::cond::ParseResult reparsed = core::cond::parse(printed, options);
     expect(reparsed.ok());
     expect(core::cond::print(reparsed.expression) == printed);
+}
+
+// An action: spans inside the whole text, the expressions print and re-parse.
+void checkAction(std::string_view text)
+{
+    const core::cond::ActionParseResult parsed = core::cond::parseAction(text);
+    if (!parsed.ok()) {
+        expect(spanInside(parsed.error->span, text.size()));
+        expect(!parsed.error->message.empty());
+        return;
+    }
+    expect(spanInside(parsed.action.targetSpan, text.size()));
+    for (const core::cond::Expression* expression : {&parsed.action.condition, &parsed.action.value}) {
+        for (const core::cond::Node& node : expression->nodes)
+            expect(spanInside(node.span, text.size()));
+        if (!expression->empty())
+            expect(core::cond::parse(core::cond::print(*expression), {core::cond::Context::Nested}).ok());
+    }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    checkCondition(text, {});
+    checkCondition(text, {core::cond::Context::Nested});
+    checkAction(text);
     return 0;
 }
