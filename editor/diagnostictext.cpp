@@ -97,6 +97,45 @@ QString tokenText(const std::string& code, const QString& transition, const QStr
         .arg(transition, variable, sourceOf(transition.toStdString()));
 }
 
+// The findings about nested GRAFCETs as a whole (core/checks/grafcetchecks.h).
+QString nestedGrafcetText(const core::Diagnostic& d)
+{
+    const std::vector<std::string>& a = d.arguments;
+    const std::string& code = d.code;
+    const auto arg = [&](std::size_t i) { return fromStd(a[i]); };
+    const std::size_t n = a.size();
+    if (code == "GG400" && n == 1)
+        return DiagnosticText::tr("The nested GRAFCET of %1 has no initial step: it would never do anything.")
+            .arg(arg(0));
+    if (code == "GG412" && n == 2)
+        return DiagnosticText::tr("Step %2 of %1 cannot be reached from the initial steps through transitions: it "
+                                  "can never become active.")
+            .arg(arg(0), arg(1));
+    if (code == "GG416" && n == 2)
+        //: %2: the GEMMA transitions that wait for Complete
+        return DiagnosticText::tr("The nested GRAFCET of %1 never sets Complete, so %2, which wait for it, can never "
+                                  "fire.")
+            .arg(arg(0), arg(1));
+    if (code == "GG417" && n == 5)
+        //: %3, %4: two nested transitions; %5: the values that make both receptivities TRUE
+        return DiagnosticText::tr("The selection after step %2 of %1 is not exclusive: %3 and %4 can both fire (with "
+                                  "%5), and both branches then start.")
+            .arg(arg(0), arg(1), arg(2), arg(3), arg(4));
+    if (code == "GG418" && n == 2)
+        return DiagnosticText::tr("Step %2 of %1 has no outgoing transition and does not set Complete: the GRAFCET "
+                                  "stops there for good.")
+            .arg(arg(0), arg(1));
+    if (code == "GG419" && n == 3)
+        return DiagnosticText::tr("Under the until-stable rule, step %2 of %1 is left in the call that enters it (%3 "
+                                  "is always TRUE): the GEMMA layer never sees what it does to Complete.")
+            .arg(arg(0), arg(1), arg(2));
+    if (code == "GG422" && n == 2)
+        return a[1] == "hidden"
+            ? DiagnosticText::tr("The nested GRAFCET of %1 is kept but not used: %1 is hidden.").arg(arg(0))
+            : DiagnosticText::tr("The nested GRAFCET of %1 is kept but not used: %1 is a simple step.").arg(arg(0));
+    return {};
+}
+
 // The translated text, or an empty string when the code has no template
 // for this number of arguments.
 QString translated(const core::Diagnostic& d)
@@ -153,6 +192,8 @@ QString translated(const core::Diagnostic& d)
             return detail.isEmpty() ? QString() : DiagnosticText::tr("Invalid variable name: %1.").arg(detail);
         }
     }
+    if (const QString nested = nestedGrafcetText(d); !nested.isEmpty())
+        return nested;
     if (code == "GG201" && n >= 3) {
         // The parse error's kind and pieces follow the English detail (docs/diagnostics.md).
         const std::optional<core::cond::ParseError> error = core::cond::parseErrorFromArguments(a, 3);

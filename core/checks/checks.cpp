@@ -1,5 +1,7 @@
 #include "core/checks/checks.h"
 
+#include "core/checks/grafcetchecks.h"
+
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
 #include "core/model/iectypes.h"
@@ -201,6 +203,9 @@ public:
         const std::vector<Transition>& transitions = m_model.transitions();
         for (std::size_t i = 0; i < transitions.size(); ++i)
             checkTransition(transitions[i], m_effective[i], m_conditions[i]);
+        for (Diagnostic& diagnostic : checkGrafcets(m_model))
+            m_result.push_back(std::move(diagnostic));
+        forEachNestedIdentifier(m_model, [this](std::string_view name) { markUsed(name); });
         const std::vector<Variable>& variables = m_model.variables();
         for (std::size_t i = 0; i < variables.size(); ++i)
             checkVariable(variables[i], m_variableUsed[i]);

@@ -19,6 +19,10 @@ std::string diagnosticElementLabel(const Diagnostic& diagnostic)
 {
     if (diagnostic.target == Diagnostic::Target::Model || diagnostic.element.empty())
         return "model";
+    if (diagnostic.target == Diagnostic::Target::GrafcetStep)
+        return diagnostic.element + " step " + std::to_string(diagnostic.nestedNumber);
+    if (diagnostic.target == Diagnostic::Target::GrafcetTransition)
+        return diagnostic.element + " T" + std::to_string(diagnostic.nestedNumber);
     return diagnostic.element;
 }
 

@@ -16,7 +16,9 @@ std::string_view severityName(Severity severity); // "error", "warning", "info"
 // One finding of the checks (spec §5). The code is stable: the editor
 // translates by code, tests and scripts match on it; the README lists them.
 struct Diagnostic {
-    enum class Target { Model, Step, Transition, Variable };
+    // GrafcetStep and GrafcetTransition: a step or transition of the nested
+    // GRAFCET of the GEMMA step named by `element`, numbered by nestedNumber.
+    enum class Target { Model, Step, Transition, Variable, GrafcetStep, GrafcetTransition };
 
     std::string code;         // "GG201"
     Severity severity = Severity::Error;
@@ -26,11 +28,13 @@ struct Diagnostic {
     std::string message;      // English
     std::optional<Span> span; // for conditions: where in the text
     std::vector<std::string> arguments; // the values the message names, for translation
+    int nestedNumber = 0;     // GrafcetStep, GrafcetTransition: the nested step or transition number
+    int actionIndex = -1;     // GrafcetStep, field "action": the action's index in the step's list
 
     friend bool operator==(const Diagnostic&, const Diagnostic&) = default;
 };
 
-// "A1", "F1->A2", the variable name, or "model".
+// "A1", "F1->A2", the variable name, "F1 step 3", "F1 T2", or "model".
 std::string diagnosticElementLabel(const Diagnostic& diagnostic);
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics);

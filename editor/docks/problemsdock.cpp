@@ -44,6 +44,9 @@ ElementRef::Kind kindOf(core::Diagnostic::Target target)
 {
     switch (target) {
     case core::Diagnostic::Target::Step:
+    case core::Diagnostic::Target::GrafcetStep:
+    case core::Diagnostic::Target::GrafcetTransition:
+        // Until the GRAFCET view exists, a nested element selects its GEMMA step.
         return ElementRef::Kind::Step;
     case core::Diagnostic::Target::Transition:
         return ElementRef::Kind::Transition;
@@ -63,6 +66,12 @@ QString elementText(const core::Diagnostic& diagnostic)
         return transitionLabel(element);
     case core::Diagnostic::Target::Model:
         return ProblemsDock::tr("Model");
+    case core::Diagnostic::Target::GrafcetStep:
+        //: A step of the nested GRAFCET of a GEMMA step: "F1 step 3"
+        return ProblemsDock::tr("%1 step %2").arg(element).arg(diagnostic.nestedNumber);
+    case core::Diagnostic::Target::GrafcetTransition:
+        //: A transition of the nested GRAFCET of a GEMMA step: "F1 T2"
+        return ProblemsDock::tr("%1 T%2").arg(element).arg(diagnostic.nestedNumber);
     default:
         return element;
     }
@@ -70,9 +79,11 @@ QString elementText(const core::Diagnostic& diagnostic)
 
 QString keyOf(const core::Diagnostic& diagnostic)
 {
-    return QStringLiteral("%1|%2|%3|%4")
+    return QStringLiteral("%1|%2|%3|%4|%5|%6")
         .arg(fromStd(diagnostic.code), fromStd(diagnostic.element), fromStd(diagnostic.field))
-        .arg(diagnostic.span ? static_cast<qlonglong>(diagnostic.span->begin) : -1);
+        .arg(diagnostic.span ? static_cast<qlonglong>(diagnostic.span->begin) : -1)
+        .arg(diagnostic.nestedNumber)
+        .arg(diagnostic.actionIndex);
 }
 
 } // namespace

@@ -1,0 +1,437 @@
+#include "core/checks/grafcetchecks.h"
+
+#include "core/condition/actionparser.h"
+#include "core/condition/conditionanalysis.h"
+#include "core/condition/conditionevaluator.h"
+#include "core/condition/conditionparser.h"
+#include "core/condition/symboltable.h"
+#include "core/model/model.h"
+#include "core/verification/satisfiability.h"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+
+namespace core {
+
+namespace {
+
+const cond::ParseOptions kNested{cond::Context::Nested};
+
+std::string joined(const std::vector<std::string>& items)
+{
+    std::string result;
+    for (const std::string& item : items)
+        result += (result.empty() ? "" : ", ") + item;
+    return result;
+}
+
+std::string transitionName(int number)
+{
+    return "T" + std::to_string(number);
+}
+
+// A step's action that makes Complete TRUE at some point: `S Complete`,
+// `Complete := ...` or a continuous `Complete`.
+bool setsComplete(const cond::ActionParseResult& action)
+{
+    return action.ok() && action.action.targetIsComplete && action.action.form != cond::ActionForm::Reset;
+}
+
+bool writesComplete(const cond::ActionParseResult& action)
+{
+    return action.ok() && action.action.targetIsComplete;
+}
+
+// The texts of one effective GRAFCET, parsed once.
+struct ParsedGrafcet {
+    const Step& owner;
+    const Grafcet& grafcet;
+    std::map<int, cond::ParseResult> receptivities;             // by transition number
+    std::map<int, std::vector<cond::ActionParseResult>> actions; // by step number, in list order
+
+    ParsedGrafcet(const Step& step, const Grafcet& g)
+        : owner(step)
+        , grafcet(g)
+    {
+        for (const GrafcetTransition& t : g.transitions())
+            receptivities.emplace(t.number, cond::parse(t.receptivity, kNested));
+        for (const GrafcetStep& s : g.steps()) {
+            std::vector<cond::ActionParseResult>& parsed = actions[s.number];
+            for (const GrafcetAction& action : s.actions)
+                parsed.push_back(cond::parseAction(action.text));
+        }
+    }
+
+    bool stepSetsComplete(int number) const
+    {
+        const auto& list = actions.at(number);
+        return std::any_of(list.begin(), list.end(), setsComplete);
+    }
+
+    bool stepWritesComplete(int number) const
+    {
+        const auto& list = actions.at(number);
+        return std::any_of(list.begin(), list.end(), writesComplete);
+    }
+
+    bool anyStepSetsComplete() const
+    {
+        return std::any_of(grafcet.steps().begin(), grafcet.steps().end(),
+                           [&](const GrafcetStep& s) { return stepSetsComplete(s.number); });
+    }
+};
+
+// ---- satisfiability over the nested atoms ---------------------------------------
+
+// The satisfiability of core/verification knows declared variables only: the
+// atoms of the nested layer (X3, 5s/X3, RE a, Complete) become free BOOL
+// variables of their own. Treating them as free only adds valuations, so a
+// conjunction found unsatisfiable really is.
+class FreeAtomSpace {
+public:
+    explicit FreeAtomSpace(const std::vector<Variable>& declared)
+        : m_variables(declared)
+    {
+    }
+
+    const std::vector<Variable>& variables() const { return m_variables; }
+
+    // The expression with each nested atom replaced by a variable node.
+    cond::Expression substitute(const cond::Expression& expression)
+    {
+        cond::Expression result = expression;
+        for (cond::Node& node : result.nodes) {
+            const std::optional<std::string> name = atomName(expression, node);
+            if (!name)
+                continue;
+            declare(*name);
+            node = cond::Node{cond::NodeKind::Variable, node.span, *name};
+        }
+        return result;
+    }
+
+private:
+    static std::optional<std::string> atomName(const cond::Expression& expression, const cond::Node& node)
+    {
+        switch (node.kind) {
+        case cond::NodeKind::StepActivity: return "X" + std::to_string(node.number);
+        case cond::NodeKind::StepDuration:
+            return std::to_string(node.durationMs) + "ms/X" + std::to_string(node.number);
+        case cond::NodeKind::Complete: return std::string("Complete");
+        case cond::NodeKind::Unary:
+            if (node.unaryOp == cond::UnaryOp::RisingEdge || node.unaryOp == cond::UnaryOp::FallingEdge)
+                return (node.unaryOp == cond::UnaryOp::RisingEdge ? "RE " : "FE ")
+                    + expression.at(node.operand).text;
+            return std::nullopt;
+        default: return std::nullopt;
+        }
+    }
+
+    void declare(const std::string& name)
+    {
+        const bool known = std::any_of(m_variables.begin(), m_variables.end(),
+                                       [&](const Variable& v) { return equalsIgnoreCase(v.name, name); });
+        if (!known)
+            m_variables.push_back(Variable{name, IecType::Bool, "", ""});
+    }
+
+    std::vector<Variable> m_variables;
+};
+
+// a AND b, in one arena.
+cond::Expression conjunction(const cond::Expression& a, const cond::Expression& b)
+{
+    cond::Expression result = a;
+    const int offset = static_cast<int>(a.nodes.size());
+    for (cond::Node node : b.nodes) {
+        for (int* child : {&node.operand, &node.left, &node.right}) {
+            if (*child >= 0)
+                *child += offset;
+        }
+        result.nodes.push_back(node);
+    }
+    cond::Node both;
+    both.kind = cond::NodeKind::Binary;
+    both.binaryOp = cond::BinaryOp::And;
+    both.left = a.root;
+    both.right = b.root + offset;
+    result.nodes.push_back(both);
+    result.root = static_cast<int>(result.nodes.size()) - 1;
+    return result;
+}
+
+// "A = TRUE, Level = 3": the values of the variables the expression reads.
+std::string describeValuation(const cond::Expression& expression, const std::vector<Variable>& variables,
+                              const std::vector<cond::Value>& values)
+{
+    std::vector<std::string> parts;
+    std::set<std::size_t> shown;
+    for (int node : cond::variableNodes(expression)) {
+        const std::string& name = expression.at(node).text;
+        for (std::size_t i = 0; i < variables.size() && i < values.size(); ++i) {
+            if (equalsIgnoreCase(variables[i].name, name) && shown.insert(i).second)
+                parts.push_back(variables[i].name + " = " + cond::formatValue(values[i]));
+        }
+    }
+    return joined(parts);
+}
+
+// ---- the checker ------------------------------------------------------------------
+
+class GrafcetChecker {
+public:
+    explicit GrafcetChecker(const Model& model)
+        : m_model(model)
+        , m_symbols(model.variables())
+    {
+    }
+
+    std::vector<Diagnostic> run()
+    {
+        for (const Step& step : m_model.steps()) {
+            const Grafcet* grafcet = m_model.grafcet(step.id);
+            if (!grafcet)
+                continue;
+            if (!m_model.effectiveGrafcet(step.id)) {
+                checkKept(step, *grafcet);
+                continue;
+            }
+            const ParsedGrafcet parsed(step, *grafcet);
+            checkGrafcet(parsed);
+            checkSteps(parsed);
+            checkSelections(parsed);
+        }
+        return std::move(m_result);
+    }
+
+private:
+    void checkKept(const Step& step, const Grafcet& grafcet)
+    {
+        if (grafcet.steps().empty())
+            return;
+        const std::string why = step.hidden ? "hidden" : "a simple step";
+        addStepLevel("GG422", Severity::Info, step.id,
+                     "the nested GRAFCET of " + step.id + " is kept but not used: " + step.id + " is " + why
+                         + " (make it a visible macro-step or enclosing step to use it again)",
+                     {step.id, step.hidden ? "hidden" : "simple"});
+    }
+
+    // ---- the GRAFCET as a whole ----
+
+    void checkGrafcet(const ParsedGrafcet& parsed)
+    {
+        const std::string& id = parsed.owner.id;
+        if (parsed.grafcet.initialSteps().empty())
+            addStepLevel("GG400", Severity::Error, id,
+                         "the nested GRAFCET of " + id + " has no initial step: it would never do anything",
+                         {id});
+        const std::vector<std::string> waiting = transitionsWaitingForComplete(parsed.owner);
+        if (!waiting.empty() && !parsed.anyStepSetsComplete())
+            addStepLevel("GG416", Severity::Warning, id,
+                         "the nested GRAFCET of " + id + " never sets Complete, so " + joined(waiting)
+                             + ", which wait for it, can never fire",
+                         {id, joined(waiting)});
+    }
+
+    std::vector<std::string> transitionsWaitingForComplete(const Step& step) const
+    {
+        std::vector<std::string> waiting;
+        for (const Transition* t : m_model.effectiveOutgoing(step.id)) {
+            const bool waits = step.type == StepType::Macro ? !t->negated : t->negated;
+            if (waits)
+                waiting.push_back(t->id);
+        }
+        return waiting;
+    }
+
+    // ---- steps ----
+
+    void checkSteps(const ParsedGrafcet& parsed)
+    {
+        const std::set<int> reachable = reachableSteps(parsed.grafcet);
+        const bool anyInitial = !parsed.grafcet.initialSteps().empty();
+        const bool untilStable = m_model.settings().evolution == EvolutionRule::UntilStable;
+        for (const GrafcetStep& step : parsed.grafcet.steps()) {
+            if (anyInitial && !reachable.count(step.number))
+                addNestedStep("GG412", Severity::Warning, parsed.owner.id, step.number,
+                              "step " + std::to_string(step.number) + " of " + parsed.owner.id
+                                  + " cannot be reached from the initial steps through transitions: it can never "
+                                    "become active",
+                              {parsed.owner.id, std::to_string(step.number)});
+            if (parsed.grafcet.transitionsFrom(step.number).empty() && !parsed.stepSetsComplete(step.number))
+                addNestedStep("GG418", Severity::Warning, parsed.owner.id, step.number,
+                              "step " + std::to_string(step.number) + " of " + parsed.owner.id
+                                  + " has no outgoing transition and does not set Complete: the GRAFCET stops "
+                                    "there for good",
+                              {parsed.owner.id, std::to_string(step.number)});
+            if (untilStable && parsed.stepWritesComplete(step.number))
+                checkTransient(parsed, step.number);
+        }
+    }
+
+    // Structural reachability: a transition can fire once all its upstream
+    // steps can be active; its downstream steps then can be.
+    static std::set<int> reachableSteps(const Grafcet& grafcet)
+    {
+        const std::vector<int> initial = grafcet.initialSteps();
+        std::set<int> reachable(initial.begin(), initial.end());
+        for (bool grew = true; grew;) {
+            grew = false;
+            for (const GrafcetTransition& t : grafcet.transitions()) {
+                const bool enabled = std::all_of(t.upstream.begin(), t.upstream.end(),
+                                                 [&](int n) { return reachable.count(n) > 0; });
+                if (!enabled)
+                    continue;
+                for (int n : t.downstream)
+                    grew = reachable.insert(n).second || grew;
+            }
+        }
+        return reachable;
+    }
+
+    // Until stable: a step left through a transition of its own whose
+    // receptivity is always TRUE is left in the evolution after the one that
+    // entered it, in the same call; the GEMMA layer never sees it active.
+    void checkTransient(const ParsedGrafcet& parsed, int stepNumber)
+    {
+        for (const GrafcetTransition* t : parsed.grafcet.transitionsFrom(stepNumber)) {
+            if (t->upstream.size() != 1 || !alwaysTrue(parsed.receptivities.at(t->number)))
+                continue;
+            const std::string step = std::to_string(stepNumber);
+            addNestedStep("GG419", Severity::Warning, parsed.owner.id, stepNumber,
+                          "under the until-stable rule, step " + step + " of " + parsed.owner.id
+                              + " is left in the call that enters it (" + transitionName(t->number)
+                              + " is always TRUE): the GEMMA layer never sees what it does to Complete",
+                          {parsed.owner.id, step, transitionName(t->number)});
+            return;
+        }
+    }
+
+    bool usable(const cond::ParseResult& parsed) const
+    {
+        return parsed.ok() && cond::typeCheck(parsed.expression, m_symbols).empty();
+    }
+
+    bool alwaysTrue(const cond::ParseResult& parsed) const
+    {
+        if (!usable(parsed))
+            return false;
+        FreeAtomSpace space(m_model.variables());
+        const cond::Expression free = space.substitute(parsed.expression);
+        return sat::isValid(free, space.variables());
+    }
+
+    // ---- selection divergences ----
+
+    // IEC 60848 fires every transition that can fire: two branches of a
+    // selection whose receptivities hold together both start.
+    void checkSelections(const ParsedGrafcet& parsed)
+    {
+        std::set<std::pair<int, int>> reported;
+        for (const GrafcetStep& step : parsed.grafcet.steps()) {
+            const std::vector<const GrafcetTransition*> leaving = parsed.grafcet.transitionsFrom(step.number);
+            for (std::size_t i = 0; i < leaving.size(); ++i) {
+                for (std::size_t j = i + 1; j < leaving.size(); ++j) {
+                    const auto pair = std::make_pair(leaving[i]->number, leaving[j]->number);
+                    if (reported.count(pair) == 0 && checkExclusive(parsed, step.number, *leaving[i], *leaving[j]))
+                        reported.insert(pair);
+                }
+            }
+        }
+    }
+
+    // True when it reported the pair.
+    bool checkExclusive(const ParsedGrafcet& parsed, int stepNumber, const GrafcetTransition& first,
+                        const GrafcetTransition& second)
+    {
+        const cond::ParseResult& a = parsed.receptivities.at(first.number);
+        const cond::ParseResult& b = parsed.receptivities.at(second.number);
+        if (!usable(a) || !usable(b))
+            return false;
+        FreeAtomSpace space(m_model.variables());
+        const cond::Expression both = conjunction(space.substitute(a.expression), space.substitute(b.expression));
+        const std::optional<std::vector<cond::Value>> valuation = sat::findValuation(both, space.variables());
+        if (!valuation)
+            return false;
+        const std::string& id = parsed.owner.id;
+        const std::string witness = describeValuation(both, space.variables(), *valuation);
+        const std::string step = std::to_string(stepNumber);
+        addNestedTransition("GG417", Severity::Warning, id, second.number,
+                            "the selection after step " + step + " of " + id + " is not exclusive: "
+                                + transitionName(first.number) + " and " + transitionName(second.number)
+                                + " can both fire (" + (witness.empty() ? "always" : "with " + witness)
+                                + "), and both branches then start",
+                            {id, step, transitionName(first.number), transitionName(second.number), witness});
+        return true;
+    }
+
+    // ---- results ----
+
+    void addStepLevel(std::string code, Severity severity, const std::string& stepId, std::string message,
+                      std::vector<std::string> arguments)
+    {
+        Diagnostic d;
+        d.code = std::move(code);
+        d.severity = severity;
+        d.target = Diagnostic::Target::Step;
+        d.element = stepId;
+        d.field = "grafcet";
+        d.message = std::move(message);
+        d.arguments = std::move(arguments);
+        m_result.push_back(std::move(d));
+    }
+
+    void addNestedStep(std::string code, Severity severity, const std::string& stepId, int number,
+                       std::string message, std::vector<std::string> arguments)
+    {
+        addStepLevel(std::move(code), severity, stepId, std::move(message), std::move(arguments));
+        m_result.back().target = Diagnostic::Target::GrafcetStep;
+        m_result.back().nestedNumber = number;
+        m_result.back().field = "step";
+    }
+
+    void addNestedTransition(std::string code, Severity severity, const std::string& stepId, int number,
+                             std::string message, std::vector<std::string> arguments)
+    {
+        addStepLevel(std::move(code), severity, stepId, std::move(message), std::move(arguments));
+        m_result.back().target = Diagnostic::Target::GrafcetTransition;
+        m_result.back().nestedNumber = number;
+        m_result.back().field = "receptivity";
+    }
+
+    const Model& m_model;
+    SymbolTable m_symbols;
+    std::vector<Diagnostic> m_result;
+};
+
+} // namespace
+
+std::vector<Diagnostic> checkGrafcets(const Model& model)
+{
+    return GrafcetChecker(model).run();
+}
+
+void forEachNestedIdentifier(const Model& model, const std::function<void(std::string_view)>& use)
+{
+    const auto useTokens = [&](std::string_view text) {
+        for (const cond::Token& token : cond::tokenize(text, kNested)) {
+            if (token.kind == cond::TokenKind::Identifier)
+                use(token.text);
+        }
+    };
+    for (const auto& [stepId, grafcet] : model.grafcets()) {
+        if (!model.effectiveGrafcet(stepId))
+            continue;
+        for (const GrafcetTransition& t : grafcet.transitions())
+            useTokens(t.receptivity);
+        for (const GrafcetStep& s : grafcet.steps()) {
+            for (const GrafcetAction& action : s.actions)
+                useTokens(action.text);
+        }
+    }
+}
+
+} // namespace core
