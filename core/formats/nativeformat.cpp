@@ -42,11 +42,60 @@ ordered_json transitionJson(const Transition& transition)
     return object;
 }
 
-ordered_json variableJson(const Variable& variable)
+// Whether the model needs format 2.0 (nativeformat.h).
+bool needsNestedFormat(const Model& model)
+{
+    const auto& variables = model.variables();
+    return !model.grafcets().empty() || model.settings().evolution != EvolutionRule::OneEvolutionPerScan
+        || std::any_of(variables.begin(), variables.end(),
+                       [](const Variable& v) { return v.kind != VariableKind::Input; });
+}
+
+std::string_view timingName(ActionTiming timing)
+{
+    switch (timing) {
+    case ActionTiming::OnActivation: return "activation";
+    case ActionTiming::OnDeactivation: return "deactivation";
+    case ActionTiming::Continuous: break;
+    }
+    return "continuous";
+}
+
+bool parseTiming(std::string_view name, ActionTiming& timing)
+{
+    for (ActionTiming candidate : {ActionTiming::Continuous, ActionTiming::OnActivation, ActionTiming::OnDeactivation}) {
+        if (name == timingName(candidate)) {
+            timing = candidate;
+            return true;
+        }
+    }
+    return false;
+}
+
+ordered_json grafcetJson(const Grafcet& grafcet)
+{
+    ordered_json steps = ordered_json::array();
+    for (const GrafcetStep& step : grafcet.steps()) {
+        ordered_json actions = ordered_json::array();
+        for (const GrafcetAction& action : step.actions)
+            actions.push_back(ordered_json{{"timing", timingName(action.timing)}, {"text", action.text}});
+        steps.push_back(ordered_json{{"number", step.number}, {"initial", step.initial}, {"comment", step.comment},
+                                     {"actions", std::move(actions)}});
+    }
+    ordered_json transitions = ordered_json::array();
+    for (const GrafcetTransition& t : grafcet.transitions())
+        transitions.push_back(ordered_json{{"number", t.number}, {"upstream", t.upstream},
+                                           {"downstream", t.downstream}, {"receptivity", t.receptivity}});
+    return ordered_json{{"steps", std::move(steps)}, {"transitions", std::move(transitions)}};
+}
+
+ordered_json variableJson(const Variable& variable, bool nested)
 {
     ordered_json object;
     object["name"] = variable.name;
     object["type"] = iecTypeName(variable.type);
+    if (nested)
+        object["kind"] = variableKindName(variable.kind);
     object["default"] = variable.defaultValue;
     object["comment"] = variable.comment;
     return object;
@@ -54,9 +103,9 @@ ordered_json variableJson(const Variable& variable)
 
 // ---- Reading ---------------------------------------------------------------
 
-std::string versionText()
+std::string versionText(int major = kNativeFormatMajor)
 {
-    return std::to_string(kNativeFormatMajor) + "." + std::to_string(kNativeFormatMinor);
+    return std::to_string(major) + "." + std::to_string(kNativeFormatMinor);
 }
 
 // A version part: decimal digits only (no sign, no blanks), without leading
@@ -91,18 +140,18 @@ FormatVersion checkFormatAndVersion(const json& root)
 
     const json* versionValue = findMember(root, "version");
     if (!versionValue)
-        failAt("/version", "missing; expected a version such as \"" + versionText() + "\"");
+        failAt("/version", "missing; expected a version such as \"" + versionText(1) + "\"");
     const std::string version = readString(*versionValue, "/version");
     const std::size_t dot = version.find('.');
     FormatVersion parsed;
     if (dot == std::string::npos || !parseVersionPart(std::string_view(version).substr(0, dot), parsed.major)
         || !parseVersionPart(std::string_view(version).substr(dot + 1), parsed.minor))
-        failAt("/version", "expected a version MAJOR.MINOR of two whole numbers such as \"" + versionText()
+        failAt("/version", "expected a version MAJOR.MINOR of two whole numbers such as \"" + versionText(1)
             + "\", found " + describeJsonValue(*versionValue));
-    const std::string supported = "this version reads format " + std::to_string(kNativeFormatMajor) + ".x";
+    const std::string supported = "this version reads formats 1.x and 2.x";
     if (parsed.major > kNativeFormatMajor)
         failAt("/version", "this file was written by a newer GG Studio (format " + version + "); " + supported);
-    if (parsed.major < kNativeFormatMajor)
+    if (parsed.major < kNativeFormatOldestMajor)
         failAt("/version", "unsupported format version " + version + "; " + supported);
     return parsed;
 }
@@ -115,20 +164,28 @@ class KeyRule {
 public:
     explicit KeyRule(FormatVersion version) : m_version(version) {}
 
+    // Whether the file may hold format 2.0's keys (nested GRAFCETs, kinds, the rule).
+    bool nested() const { return m_version.major >= 2; }
+
+    // `known` in every version, `nestedKeys` from 2.0 on.
     void check(const json& object, const std::string& path, const char* what,
-               std::initializer_list<std::string_view> known) const
+               std::initializer_list<std::string_view> known,
+               std::initializer_list<std::string_view> nestedKeys = {}) const
     {
         if (m_version.minor > kNativeFormatMinor)
             return;
+        std::vector<std::string_view> keys(known);
+        if (nested())
+            keys.insert(keys.end(), nestedKeys.begin(), nestedKeys.end());
         for (const auto& [key, value] : object.items()) {
-            if (std::find(known.begin(), known.end(), key) == known.end())
+            if (std::find(keys.begin(), keys.end(), key) == keys.end())
                 failAt(childPath(path, key), "unknown key \"" + key + "\" in " + what + "; format "
-                    + versionText() + " knows " + listKeys(known));
+                    + versionText(m_version.major) + " knows " + listKeys(keys));
         }
     }
 
 private:
-    static std::string listKeys(std::initializer_list<std::string_view> keys)
+    static std::string listKeys(const std::vector<std::string_view>& keys)
     {
         std::string text;
         std::size_t index = 0;
@@ -152,7 +209,15 @@ void readSettings(Model& model, const json& root, const KeyRule& keys)
     if (!settingsValue)
         return;
     const json& settings = expectObject(*settingsValue, "/settings");
-    keys.check(settings, "/settings", "the settings", {"cycleTimeMs", "dialect"});
+    keys.check(settings, "/settings", "the settings", {"cycleTimeMs", "dialect"}, {"evolution"});
+    if (const json* evolution = findMember(settings, "evolution")) {
+        const std::string name = readString(*evolution, "/settings/evolution");
+        EvolutionRule rule = EvolutionRule::OneEvolutionPerScan;
+        if (!parseEvolutionRule(name, rule))
+            failAt("/settings/evolution",
+                   "unknown evolution rule \"" + name + "\"; expected \"one-per-scan\" or \"until-stable\"");
+        model.setEvolutionRule(rule);
+    }
     if (const json* cycle = findMember(settings, "cycleTimeMs")) {
         const long long value = readInteger(*cycle, "/settings/cycleTimeMs", kMinCycleTimeMs, kMaxCycleTimeMs);
         require(model.setCycleTimeMs(static_cast<int>(value)), "/settings/cycleTimeMs");
@@ -180,8 +245,14 @@ void readVariables(Model& model, const json& root, const KeyRule& keys)
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = childPath("/variables", i);
         const json& object = expectObject(list[i], path);
-        keys.check(object, path, "a variable", {"name", "type", "default", "comment"});
+        keys.check(object, path, "a variable", {"name", "type", "default", "comment"}, {"kind"});
         VariableEntry entry = readVariableNameAndType(object, path, kVariableSpelling);
+        if (const json* kind = findMember(object, "kind")) {
+            const std::string name = readString(*kind, path + "/kind");
+            if (!parseVariableKind(name, entry.variable.kind))
+                failAt(path + "/kind",
+                       "unknown variable kind \"" + name + "\"; expected \"input\", \"output\" or \"internal\"");
+        }
         if (const json* value = findMember(object, "default"))
             entry.variable.defaultValue = readString(*value, path + "/default");
         if (const json* comment = findMember(object, "comment"))
@@ -272,16 +343,137 @@ void readTransitions(Model& model, const json& root, const KeyRule& keys)
     }
 }
 
+// ---- nested GRAFCETs ----
+
+int readNumber(const json& value, const std::string& path)
+{
+    return static_cast<int>(readInteger(value, path, 1, kMaxGrafcetNumber));
+}
+
+const json& expectBoundedArray(const json& value, const std::string& path, const char* what)
+{
+    const json& list = expectArray(value, path);
+    if (list.size() > kMaxGrafcetElements)
+        failAt(path, std::to_string(list.size()) + " " + what + "; a nested GRAFCET holds at most "
+            + std::to_string(kMaxGrafcetElements));
+    return list;
+}
+
+std::vector<int> readStepSet(const json& value, const std::string& path)
+{
+    const json& list = expectBoundedArray(value, path, "steps");
+    std::vector<int> steps;
+    for (std::size_t i = 0; i < list.size(); ++i)
+        steps.push_back(readNumber(list[i], childPath(path, i)));
+    return steps;
+}
+
+GrafcetAction readAction(const json& value, const std::string& path, const KeyRule& keys)
+{
+    const json& object = expectObject(value, path);
+    keys.check(object, path, "an action", {"timing", "text"});
+    GrafcetAction action;
+    if (const json* timing = findMember(object, "timing")) {
+        const std::string name = readString(*timing, path + "/timing");
+        if (!parseTiming(name, action.timing))
+            failAt(path + "/timing",
+                   "unknown timing \"" + name + "\"; expected \"continuous\", \"activation\" or \"deactivation\"");
+    }
+    if (const json* text = findMember(object, "text"))
+        action.text = readString(*text, path + "/text");
+    return action;
+}
+
+GrafcetStep readGrafcetStep(const json& value, const std::string& path, const KeyRule& keys)
+{
+    const json& object = expectObject(value, path);
+    keys.check(object, path, "a nested step", {"number", "initial", "comment", "actions"});
+    const json* number = findMember(object, "number");
+    if (!number)
+        failAt(path + "/number", "missing; every nested step has a number");
+    GrafcetStep step;
+    step.number = readNumber(*number, path + "/number");
+    if (const json* initial = findMember(object, "initial"))
+        step.initial = readBool(*initial, path + "/initial");
+    if (const json* comment = findMember(object, "comment"))
+        step.comment = readString(*comment, path + "/comment");
+    if (const json* actions = findMember(object, "actions")) {
+        const json& list = expectBoundedArray(*actions, path + "/actions", "actions");
+        for (std::size_t i = 0; i < list.size(); ++i)
+            step.actions.push_back(readAction(list[i], childPath(path + "/actions", i), keys));
+    }
+    return step;
+}
+
+GrafcetTransition readGrafcetTransition(const json& value, const std::string& path, const KeyRule& keys)
+{
+    const json& object = expectObject(value, path);
+    keys.check(object, path, "a nested transition", {"number", "upstream", "downstream", "receptivity"});
+    GrafcetTransition transition;
+    const json* number = findMember(object, "number");
+    if (!number)
+        failAt(path + "/number", "missing; every nested transition has a number");
+    transition.number = readNumber(*number, path + "/number");
+    for (const auto& [key, set] : {std::pair{"upstream", &GrafcetTransition::upstream},
+                                   std::pair{"downstream", &GrafcetTransition::downstream}}) {
+        const json* steps = findMember(object, key);
+        if (!steps)
+            failAt(path + "/" + key, std::string("missing; a transition needs its ") + key + " steps");
+        transition.*set = readStepSet(*steps, path + "/" + key);
+    }
+    if (const json* receptivity = findMember(object, "receptivity"))
+        transition.receptivity = readString(*receptivity, path + "/receptivity");
+    return transition;
+}
+
+Grafcet readGrafcet(const json& value, const std::string& path, const KeyRule& keys)
+{
+    const json& object = expectObject(value, path);
+    keys.check(object, path, "a nested GRAFCET", {"steps", "transitions"});
+    Grafcet grafcet;
+    if (const json* steps = findMember(object, "steps")) {
+        const json& list = expectBoundedArray(*steps, path + "/steps", "steps");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string stepPath = childPath(path + "/steps", i);
+            require(grafcet.addStep(readGrafcetStep(list[i], stepPath, keys)), stepPath + "/number");
+        }
+    }
+    if (const json* transitions = findMember(object, "transitions")) {
+        const json& list = expectBoundedArray(*transitions, path + "/transitions", "transitions");
+        for (std::size_t i = 0; i < list.size(); ++i) {
+            const std::string transitionPath = childPath(path + "/transitions", i);
+            require(grafcet.addTransition(readGrafcetTransition(list[i], transitionPath, keys)), transitionPath);
+        }
+    }
+    return grafcet;
+}
+
+void readGrafcets(Model& model, const json& root, const KeyRule& keys)
+{
+    const json* grafcetsValue = findMember(root, "grafcets");
+    if (!grafcetsValue)
+        return;
+    const json& grafcets = expectObject(*grafcetsValue, "/grafcets");
+    for (const auto& [id, value] : grafcets.items()) {
+        const std::string path = childPath("/grafcets", id);
+        if (!model.step(id))
+            failAt(path, "unknown step \"" + id + "\"; the template's steps are A1 to A7, F1 to F6 and D1 to D3");
+        require(model.setGrafcet(id, readGrafcet(value, path, keys)), path);
+    }
+}
+
 std::unique_ptr<Model> buildModel(const json& root)
 {
     expectObject(root, "");
     const KeyRule keys(checkFormatAndVersion(root));
-    keys.check(root, "", "a model file", {"format", "version", "name", "settings", "steps", "transitions", "variables"});
+    keys.check(root, "", "a model file", {"format", "version", "name", "settings", "steps", "transitions", "variables"},
+               {"grafcets"});
     auto model = std::make_unique<Model>();
     readSettings(*model, root, keys);
     readVariables(*model, root, keys);
     readSteps(*model, root, keys);
     readTransitions(*model, root, keys);
+    readGrafcets(*model, root, keys);
     return model;
 }
 
@@ -311,13 +503,16 @@ bool hasNativeFormatMember(std::string_view text)
 
 std::string saveNativeJson(const Model& model)
 {
+    const bool nested = needsNestedFormat(model);
     ordered_json root;
     root["format"] = kNativeFormatName;
-    root["version"] = versionText();
+    root["version"] = versionText(nested ? 2 : 1);
     root["name"] = model.settings().name;
     ordered_json settings;
     settings["cycleTimeMs"] = model.settings().cycleTimeMs;
     settings["dialect"] = dialectName(model.settings().dialect);
+    if (nested)
+        settings["evolution"] = evolutionRuleName(model.settings().evolution);
     root["settings"] = std::move(settings);
 
     ordered_json steps = ordered_json::object();
@@ -332,8 +527,17 @@ std::string saveNativeJson(const Model& model)
 
     ordered_json variables = ordered_json::array();
     for (const Variable& variable : model.variables())
-        variables.push_back(variableJson(variable));
+        variables.push_back(variableJson(variable, nested));
     root["variables"] = std::move(variables);
+
+    if (nested) {
+        ordered_json grafcets = ordered_json::object();
+        for (const Step& step : model.steps()) {
+            if (const Grafcet* grafcet = model.grafcet(step.id))
+                grafcets[step.id] = grafcetJson(*grafcet);
+        }
+        root["grafcets"] = std::move(grafcets);
+    }
 
     // Text from elsewhere may hold invalid UTF-8: replace it rather than throw.
     return root.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";

@@ -7,6 +7,7 @@
 #include "core/model/model.h"
 
 #include <memory>
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -14,8 +15,17 @@
 namespace core {
 
 inline constexpr std::string_view kNativeFormatName = "ggstudio-model";
-inline constexpr int kNativeFormatMajor = 1;
+// A model that needs none of format 2.0's keys (no nested GRAFCET, only input
+// variables, the default evolution rule) is written as 1.0, byte for byte as
+// GG Studio wrote it before nested GRAFCETs, so older versions still read it.
+// Anything else is 2.0, which those versions refuse by its major number
+// instead of silently dropping the nested behaviour.
+inline constexpr int kNativeFormatMajor = 2;
 inline constexpr int kNativeFormatMinor = 0;
+inline constexpr int kNativeFormatOldestMajor = 1;
+// Limits of one nested GRAFCET in a file.
+inline constexpr int kMaxGrafcetNumber = 999'999;
+inline constexpr std::size_t kMaxGrafcetElements = 10'000;
 
 // Deterministic: the same model gives the same bytes (2-space indent, fixed key order, trailing newline).
 std::string saveNativeJson(const Model& model);

@@ -324,12 +324,13 @@ TEST_CASE("Native: a version is two whole numbers, nothing else", "[files]")
 
 TEST_CASE("Native: a newer major version is refused", "[files]")
 {
-    const LoadError error = loadError(R"({"format": "ggstudio-model", "version": "2.0", "steps": {"Z1": 5}})");
+    const LoadError error = loadError(R"({"format": "ggstudio-model", "version": "3.0", "steps": {"Z1": 5}})");
     CHECK(error.toString()
-        == "test.json: /version: this file was written by a newer GG Studio (format 2.0); this version reads format 1.x");
+        == "test.json: /version: this file was written by a newer GG Studio (format 3.0); this version reads "
+           "formats 1.x and 2.x");
 
     CHECK(loadError(R"({"format": "ggstudio-model", "version": "0.9"})").message
-        == "unsupported format version 0.9; this version reads format 1.x");
+        == "unsupported format version 0.9; this version reads formats 1.x and 2.x");
     CHECK(loadError(R"({"format": "ggstudio-model", "version": "1"})").location == "/version");
     CHECK(loadError(R"({"format": "ggstudio-model", "version": 1.0})").message == "expected a string, found 1.0");
     CHECK(loadError(R"({"format": "ggstudio-model"})").toString()
@@ -398,4 +399,120 @@ TEST_CASE("Native: more variables than a model may hold are refused", "[files]")
         list += std::string(i ? "," : "") + "{\"name\": \"V" + std::to_string(i) + "\", \"type\": \"BOOL\"}";
     const LoadError error = loadError(nativeFile("\"variables\": [" + list + "]"));
     CHECK(error.toString() == "test.json: /variables: 10001 variables; a model holds at most 10000");
+}
+
+// ---- format 2.0: nested GRAFCETs, variable kinds, the evolution rule ---------
+
+namespace {
+
+Model nestedModel()
+{
+    Model model;
+    REQUIRE(model.addVariable(Variable{"Start", IecType::Bool, "", "start button"}));
+    Variable lamp{"Lamp", IecType::Bool, "", ""};
+    lamp.kind = VariableKind::Output;
+    REQUIRE(model.addVariable(lamp));
+    Variable count{"Count", IecType::Int, "0", ""};
+    count.kind = VariableKind::Internal;
+    REQUIRE(model.addVariable(count));
+    model.setEvolutionRule(EvolutionRule::UntilStable);
+    REQUIRE(model.addGrafcetStep("F1", GrafcetStep{1, true, "wait", {}}));
+    REQUIRE(model.addGrafcetStep("F1", GrafcetStep{2, false, "", {{ActionTiming::Continuous, "N Lamp IF Start"},
+                                                                 {ActionTiming::OnActivation, "Count := Count + 1"},
+                                                                 {ActionTiming::OnDeactivation, "S Complete"}}}));
+    REQUIRE(model.addGrafcetStep("F1", GrafcetStep{3, false, "", {}}));
+    REQUIRE(model.addGrafcetTransition("F1", GrafcetTransition{1, {1}, {2, 3}, "RE Start"}));
+    REQUIRE(model.addGrafcetTransition("F1", GrafcetTransition{2, {2, 3}, {1}, "5s/X2"}));
+    // A GRAFCET kept on a simple step is saved too.
+    REQUIRE(model.addGrafcetStep("F2", GrafcetStep{1, true, "", {}}));
+    REQUIRE(model.setStepType("F2", StepType::Simple));
+    return model;
+}
+
+std::string withGrafcet(const std::string& grafcet)
+{
+    return R"({"format": "ggstudio-model", "version": "2.0", "grafcets": {"F1": )" + grafcet + "}}";
+}
+
+} // namespace
+
+TEST_CASE("Native 2.0: nested GRAFCETs, kinds and the rule round-trip", "[files][native]")
+{
+    const Model model = nestedModel();
+    const std::string text = saveNativeJson(model);
+    CHECK(text.find("\"version\": \"2.0\"") != std::string::npos);
+    CHECK(text.find("\"evolution\": \"until-stable\"") != std::string::npos);
+    CHECK(text.find("\"kind\": \"output\"") != std::string::npos);
+    const std::unique_ptr<Model> loaded = loadOk(text);
+    CHECK(loaded->sameContent(model));
+    CHECK(saveNativeJson(*loaded) == text);
+}
+
+TEST_CASE("Native: a model without nested content is still written as 1.0", "[files][native]")
+{
+    Model model;
+    REQUIRE(model.addVariable(Variable{"Start", IecType::Bool, "", ""}));
+    const std::string text = saveNativeJson(model);
+    CHECK(text.find("\"version\": \"1.0\"") != std::string::npos);
+    CHECK(text.find("kind") == std::string::npos);
+    CHECK(text.find("evolution") == std::string::npos);
+    CHECK(text.find("grafcets") == std::string::npos);
+}
+
+TEST_CASE("Native 1.0 files cannot hold the keys of 2.0", "[files][native]")
+{
+    CHECK(loadError(R"({"format": "ggstudio-model", "version": "1.0", "grafcets": {}})").toString()
+        == "test.json: /grafcets: unknown key \"grafcets\" in a model file; format 1.0 knows \"format\", \"version\", "
+           "\"name\", \"settings\", \"steps\", \"transitions\" and \"variables\"");
+    CHECK(loadError(R"({"format": "ggstudio-model", "version": "1.0", "variables": [{"name": "A", "type": "BOOL", "kind": "output"}]})")
+              .location == "/variables/0/kind");
+}
+
+TEST_CASE("Native 2.0: malformed nested parts are refused with their path", "[files][native]")
+{
+    struct Case {
+        std::string grafcet;
+        std::string location;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {"[]", "/grafcets/F1", "expected an object, found an array"},
+        {R"({"steps": [{"initial": true}]})", "/grafcets/F1/steps/0/number", "missing; every nested step has a number"},
+        {R"({"steps": [{"number": 0}]})", "/grafcets/F1/steps/0/number", "expected an integer from 1 to 999999, found 0"},
+        {R"({"steps": [{"number": 1}, {"number": 1}]})", "/grafcets/F1/steps/1/number", ""},
+        {R"({"steps": [{"number": 1, "actions": [{"timing": "always", "text": "A"}]}]})",
+         "/grafcets/F1/steps/0/actions/0/timing",
+         "unknown timing \"always\"; expected \"continuous\", \"activation\" or \"deactivation\""},
+        {R"({"steps": [{"number": 1, "actions": [{"txt": "A"}]}]})", "/grafcets/F1/steps/0/actions/0/txt", ""},
+        {R"({"steps": [{"number": 1}], "transitions": [{"number": 1, "upstream": [], "downstream": [1]}]})",
+         "/grafcets/F1/transitions/0", ""},
+        {R"({"steps": [{"number": 1}], "transitions": [{"number": 1, "upstream": [1], "downstream": [7]}]})",
+         "/grafcets/F1/transitions/0", ""},
+        {R"({"steps": [{"number": 1}], "transitions": [{"number": 1, "upstream": [1]}]})",
+         "/grafcets/F1/transitions/0/downstream", "missing; a transition needs its downstream steps"},
+        {R"({"steps": [{"number": 1}], "transitions": [{"number": 1, "upstream": ["1"], "downstream": [1]}]})",
+         "/grafcets/F1/transitions/0/upstream/0", ""},
+        {R"({"steps": [], "links": []})", "/grafcets/F1/links", ""},
+    };
+    for (const Case& c : cases) {
+        INFO(c.grafcet);
+        const LoadError error = loadError(withGrafcet(c.grafcet));
+        CHECK(error.location == c.location);
+        if (!c.message.empty())
+            CHECK(error.message == c.message);
+        CHECK_FALSE(error.message.empty());
+    }
+    CHECK(loadError(R"({"format": "ggstudio-model", "version": "2.0", "grafcets": {"Z9": {}}})").location
+        == "/grafcets/Z9");
+    CHECK(loadError(R"({"format": "ggstudio-model", "version": "2.0", "settings": {"evolution": "fast"}})").message
+        == "unknown evolution rule \"fast\"; expected \"one-per-scan\" or \"until-stable\"");
+    CHECK(loadError(R"({"format": "ggstudio-model", "version": "2.0", "variables": [{"name": "A", "type": "BOOL", "kind": "in"}]})")
+              .message
+        == "unknown variable kind \"in\"; expected \"input\", \"output\" or \"internal\"");
+
+    std::string many = R"({"steps": [)";
+    for (int i = 1; i <= 10001; ++i)
+        many += (i > 1 ? "," : "") + std::string(R"({"number": )") + std::to_string(i) + "}";
+    CHECK(loadError(withGrafcet(many + "]}")).message
+        == "10001 steps; a nested GRAFCET holds at most 10000");
 }
