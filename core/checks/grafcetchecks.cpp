@@ -1,5 +1,6 @@
 #include "core/checks/grafcetchecks.h"
 
+#include "core/codegen/gemmaprogram.h"
 #include "core/condition/actionparser.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
@@ -409,9 +410,39 @@ private:
 
 } // namespace
 
+// The problems of single receptivities and actions, as the code generator
+// found them (it uses FALSE for such a receptivity and skips such an action).
+std::vector<Diagnostic> elementDiagnostics(const Model& model)
+{
+    std::vector<Diagnostic> result;
+    if (model.grafcets().empty())
+        return result;
+    for (GemmaProblem& problem : buildGemmaProgram(model).problems) {
+        if (problem.nestedStep == 0 && problem.nestedTransition == 0)
+            continue;
+        Diagnostic d;
+        d.code = std::move(problem.code);
+        d.severity = problem.kind == GemmaProblem::Kind::Error ? Severity::Error : Severity::Warning;
+        d.element = std::move(problem.element);
+        const bool onTransition = problem.nestedTransition != 0;
+        d.target = onTransition ? Diagnostic::Target::GrafcetTransition : Diagnostic::Target::GrafcetStep;
+        d.nestedNumber = onTransition ? problem.nestedTransition : problem.nestedStep;
+        d.actionIndex = problem.actionIndex;
+        d.field = onTransition ? "receptivity" : "action";
+        d.message = std::move(problem.message);
+        d.span = problem.span;
+        d.arguments = std::move(problem.arguments);
+        result.push_back(std::move(d));
+    }
+    return result;
+}
+
 std::vector<Diagnostic> checkGrafcets(const Model& model)
 {
-    return GrafcetChecker(model).run();
+    std::vector<Diagnostic> result = GrafcetChecker(model).run();
+    for (Diagnostic& d : elementDiagnostics(model))
+        result.push_back(std::move(d));
+    return result;
 }
 
 void forEachNestedIdentifier(const Model& model, const std::function<void(std::string_view)>& use)

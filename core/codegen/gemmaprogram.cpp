@@ -5,6 +5,7 @@
 #include "core/condition/symboltable.h"
 
 #include <algorithm>
+#include <set>
 #include <string_view>
 
 namespace core {
@@ -42,7 +43,13 @@ struct BuildContext {
 GemmaProblem makeProblem(GemmaProblem::Kind kind, std::string code, const std::string& element, std::string message,
                          std::vector<std::string> arguments = {})
 {
-    return GemmaProblem{kind, std::move(code), element, std::move(message), std::move(arguments)};
+    GemmaProblem problem;
+    problem.kind = kind;
+    problem.code = std::move(code);
+    problem.element = element;
+    problem.message = std::move(message);
+    problem.arguments = std::move(arguments);
+    return problem;
 }
 
 bool waitsForComplete(StepType sourceType, bool negated, bool family)
@@ -288,7 +295,85 @@ GemmaStep makeStep(const BuildContext& context, const Step& step, const std::vec
     return result;
 }
 
+// Spec §3: a variable driven by continuous actions and written by stored
+// ones has no defined value (IEC 60848); the continuous actions win and the
+// stored ones are refused (GG415), so every output keeps one writer.
+void rejectStoredWritesOfContinuousOutputs(GemmaProgram& program)
+{
+    std::set<std::string> continuous; // upper case, Complete excluded
+    for (const GemmaStep& step : program.steps) {
+        if (!step.nested)
+            continue;
+        for (const ContinuousOutput& output : step.nested->outputs) {
+            if (!output.isComplete)
+                continuous.insert(toUpperAscii(output.variable));
+        }
+    }
+    for (GemmaStep& step : program.steps) {
+        if (!step.nested)
+            continue;
+        NestedGrafcet& nested = *step.nested;
+        const bool completeContinuous = nested.output("Complete") != nullptr;
+        for (NestedStep& nestedStep : nested.steps) {
+            for (auto* list : {&nestedStep.onActivation, &nestedStep.onDeactivation}) {
+                for (NestedAction& action : *list) {
+                    const bool clash = action.targetIsComplete ? completeContinuous
+                                                               : continuous.count(toUpperAscii(action.target)) > 0;
+                    if (!action.usable || !clash)
+                        continue;
+                    action.usable = false;
+                    const std::string where = "action " + std::to_string(action.index + 1) + " of step "
+                        + std::to_string(nestedStep.number) + " of " + step.id;
+                    GemmaProblem problem = makeProblem(
+                        GemmaProblem::Kind::Error, "GG415", step.id,
+                        "in " + where + ": " + quoted(action.target)
+                            + " is also driven by continuous actions; a variable has either continuous or stored "
+                              "actions (the stored one is not generated)",
+                        {step.id, where, action.target});
+                    problem.nestedStep = nestedStep.number;
+                    problem.actionIndex = action.index;
+                    problem.span = action.parsed.action.targetSpan;
+                    program.problems.push_back(std::move(problem));
+                }
+            }
+        }
+        auto& stored = nested.storedTargets;
+        stored.erase(std::remove_if(stored.begin(), stored.end(),
+                                    [&](const std::string& name) { return continuous.count(toUpperAscii(name)) > 0; }),
+                     stored.end());
+    }
+}
+
+std::vector<std::string> edgeVariablesOf(const Model& model, const GemmaProgram& program)
+{
+    std::vector<bool> edged(model.variables().size(), false);
+    for (const GemmaStep& step : program.steps) {
+        if (!step.nested)
+            continue;
+        for (const NestedTransition& t : step.nested->transitions) {
+            if (!t.usable)
+                continue;
+            for (int node : cond::edgeNodes(t.receptivity.expression)) {
+                const int index = model.variableIndex(t.receptivity.expression.at(t.receptivity.expression.at(node).operand).text);
+                if (index >= 0)
+                    edged[static_cast<std::size_t>(index)] = true;
+            }
+        }
+    }
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < edged.size(); ++i) {
+        if (edged[i])
+            names.push_back(model.variables()[i].name);
+    }
+    return names;
+}
+
 } // namespace
+
+bool GemmaProgram::hasNestedGrafcets() const
+{
+    return std::any_of(steps.begin(), steps.end(), [](const GemmaStep& s) { return s.nested.has_value(); });
+}
 
 const GemmaStep* GemmaProgram::step(const std::string& id) const
 {
@@ -340,7 +425,12 @@ GemmaProgram buildGemmaProgram(const Model& model)
         }
         if (step.family == Family::F)
             familyProblemsReported = true;
+        if (const Grafcet* grafcet = model.effectiveGrafcet(step.id))
+            program.steps.back().nested = buildNestedGrafcet(model, step, *grafcet, context.symbols, program.problems);
     }
+    program.evolution = model.settings().evolution;
+    rejectStoredWritesOfContinuousOutputs(program);
+    program.edgeVariables = edgeVariablesOf(model, program);
     return program;
 }
 

@@ -7,8 +7,12 @@
 // they cannot disagree on what "effective", "waits for Complete" or "token"
 // mean.
 
+#include "core/codegen/nestedprogram.h"
 #include "core/condition/conditionparser.h"
 #include "core/model/gemmatemplate.h"
+#include "core/model/model.h"
+
+#include <optional>
 
 #include <map>
 #include <string>
@@ -51,6 +55,12 @@ struct GemmaProblem {
     // For the condition errors (GG201-GG204): Diagnostic::arguments as the
     // checks give them for the same code, so the UI can word them the same.
     std::vector<std::string> arguments;
+    // In a nested GRAFCET (element: its GEMMA step): the nested step (with
+    // the action's index) or transition, and the span in its text.
+    int nestedStep = 0;
+    int nestedTransition = 0;
+    int actionIndex = -1;
+    std::optional<Span> span;
 };
 
 struct GemmaTransition {
@@ -83,6 +93,9 @@ struct GemmaStep {
     // then its own effective transitions by priority.
     std::vector<GemmaTransition> transitions;
 
+    // Its nested GRAFCET, when it has one (it then replaces the skeleton FB).
+    std::optional<NestedGrafcet> nested;
+
     bool hasNestedBehaviour() const { return type != StepType::Simple; }
 };
 
@@ -93,7 +106,12 @@ struct GemmaProgram {
     // Every problem of every step and transition, in program order (a family
     // transition's problems once, at its first use).
     std::vector<GemmaProblem> problems;
+    EvolutionRule evolution = EvolutionRule::OneEvolutionPerScan;
+    // BOOL variables read under an edge by a usable receptivity, spelled as
+    // declared, in declaration order: each has a global <V>_PREV.
+    std::vector<std::string> edgeVariables;
 
+    bool hasNestedGrafcets() const;
     const GemmaStep* step(const std::string& id) const;
 };
 

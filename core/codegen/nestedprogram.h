@@ -13,6 +13,9 @@
 #include "core/condition/actionparser.h"
 #include "core/condition/conditionparser.h"
 #include "core/model/grafcet.h"
+#include "core/model/span.h"
+
+#include <optional>
 
 #include <cstdint>
 #include <map>
@@ -22,6 +25,10 @@
 namespace core {
 
 enum class EvolutionRule;
+class Model;
+class SymbolTable;
+struct GemmaProblem;
+struct Step;
 
 // One action of a step. Unusable actions (they do not parse or type-check,
 // or write what they may not) are kept for the comments of the generated
@@ -107,5 +114,20 @@ struct NestedGrafcet {
     const NestedTransition* transition(int number) const;
     const ContinuousOutput* output(std::string_view variable) const; // case-insensitive
 };
+
+// Builds the GRAFCET of a visible macro/enclosing step, appending what is
+// wrong with its receptivities and actions to `problems` (codes GG401-GG406,
+// GG410, GG411, GG413, GG414, GG421; GG415 across GRAFCETs is added by
+// buildGemmaProgram).
+NestedGrafcet buildNestedGrafcet(const Model& model, const Step& step, const Grafcet& grafcet,
+                                 const SymbolTable& symbols, std::vector<GemmaProblem>& problems);
+
+// The names the code of a nested GRAFCET declares inside S_FB, reserved for
+// user variables of a model with nested GRAFCETs (spec grafcet-layer.md §4.5).
+std::string stepActivityName(int step);                     // "X3"
+std::string timerName(int step, std::int64_t durationMs);   // "GG_T3_5000ms"
+std::string fireFlagName(int transition);                   // "GG_Fire1"
+std::string edgeMemoryName(const std::string& variable);    // "Start_PREV"
+inline constexpr std::string_view kUnstableName = "Unstable";
 
 } // namespace core

@@ -39,9 +39,11 @@
 #include "core/condition/conditionanalysis.h"
 #include "core/checks/diagnostic.h"
 #include "core/codegen/gemmaprogram.h"
+#include "core/codegen/nestedcode.h"
 #include "core/condition/symboltable.h"
 
 #include <algorithm>
+#include <functional>
 #include <string_view>
 
 namespace core {
@@ -140,6 +142,14 @@ public:
         return name;
     }
 
+    // An edge memory global: "Start_PREV" or "GVL.Start_PREV".
+    std::string edgeMemory(std::string_view writtenName) const
+    {
+        const Variable* variable = m_symbols.find(writtenName);
+        const std::string name = edgeMemoryName(variable ? variable->name : std::string(writtenName));
+        return m_dialect == Dialect::Codesys ? std::string(kGlobalListName) + "." + name : name;
+    }
+
     // The globals read so far, in declaration order, as declared.
     std::vector<PlcVariable> readVariables() const
     {
@@ -198,7 +208,9 @@ public:
         for (const GemmaStep& step : m_program.steps)
             writeStep(step);
         m_out.line(0, "END_CASE;");
+        writeContinuousOutputs();
         writeTokenUpdates();
+        writeEdgeMemories();
     }
 
     std::string& text() { return m_out.text(); }
@@ -265,6 +277,49 @@ private:
         }
     }
 
+    // Spec §4.3: each continuous output of the nested GRAFCETs has one
+    // writer, gated by the state and by Entry, so leaving a state drops it.
+    void writeContinuousOutputs()
+    {
+        std::vector<std::string> written; // upper case
+        for (const GemmaStep& step : m_program.steps) {
+            if (!step.nested)
+                continue;
+            for (const ContinuousOutput& output : step.nested->outputs) {
+                const std::string key = toUpperAscii(output.variable);
+                if (output.isComplete || std::find(written.begin(), written.end(), key) != written.end())
+                    continue;
+                written.push_back(key);
+                if (written.size() == 1)
+                    m_out.line(0, comment("Continuous outputs of the nested GRAFCETs: one writer each"));
+                m_out.line(0, m_naming.global(output.variable) + " := " + continuousValue(output.variable) + ";");
+            }
+        }
+    }
+
+    std::string continuousValue(const std::string& variable) const
+    {
+        std::string value;
+        for (const GemmaStep& step : m_program.steps) {
+            if (!step.nested || !step.nested->output(variable))
+                continue;
+            const std::string own = step.nested->output(variable)->variable;
+            value += (value.empty() ? "" : " OR ") + std::string("(State = ") + std::to_string(step.number)
+                + " AND NOT Entry AND " + step.id + "." + own + ")";
+        }
+        return value;
+    }
+
+    // Spec §4.4: an edge compares with the value at the end of the previous scan.
+    void writeEdgeMemories()
+    {
+        if (m_program.edgeVariables.empty())
+            return;
+        m_out.line(0, comment("Edge memories: the values at the end of this scan"));
+        for (const std::string& name : m_program.edgeVariables)
+            m_out.line(0, m_naming.edgeMemory(name) + " := " + m_naming.global(name) + ";");
+    }
+
     void writeTokenUpdates()
     {
         bool any = false;
@@ -329,11 +384,38 @@ GemmaPou buildGemmaPou(const Model& model, const GemmaProgram& program, Dialect 
 
     if (dialect == Dialect::Iec) {
         pou.externals = naming.readVariables();
+        for (const std::string& name : program.edgeVariables)
+            pou.externals.push_back(plcVariable(edgeMemoryName(name), "BOOL", {}, {}));
     }
     return result;
 }
 
-PlcPou buildFunctionBlock(const GemmaStep& step, const Step& modelStep)
+PlcPou buildNestedFunctionBlock(const Model& model, const GemmaProgram& program, const GemmaStep& step,
+                                PlcPou pou, Dialect dialect)
+{
+    Naming naming(model, dialect);
+    const std::function<std::string(std::string_view)> global = [&naming](std::string_view name) {
+        return naming.global(name);
+    };
+    const std::function<std::string(std::string_view)> edgeMemory = [&naming](std::string_view name) {
+        return naming.edgeMemory(name);
+    };
+    NestedCode code = generateNestedCode(step, program, global, edgeMemory);
+    pou.outputs.insert(pou.outputs.end(), code.outputs.begin(), code.outputs.end());
+    pou.locals = std::move(code.locals);
+    pou.body = std::move(code.body);
+    if (dialect == Dialect::Iec) {
+        pou.externals = naming.readVariables();
+        pou.externals.insert(pou.externals.end(), code.edgeMemories.begin(), code.edgeMemories.end());
+    }
+    return pou;
+}
+
+PlcPou buildNestedFunctionBlock(const Model& model, const GemmaProgram& program, const GemmaStep& step,
+                                PlcPou pou, Dialect dialect);
+
+PlcPou buildFunctionBlock(const Model& model, const GemmaProgram& program, const GemmaStep& step,
+                          const Step& modelStep, Dialect dialect)
 {
     PlcPou pou;
     pou.name = step.id + "_FB";
@@ -344,6 +426,8 @@ PlcPou buildFunctionBlock(const GemmaStep& step, const Step& modelStep)
         pou.comment += ": " + modelStep.comment;
     pou.inputs.push_back(plcVariable("Initialization", "BOOL", {}, "TRUE in the first scan of " + step.id));
     pou.outputs.push_back(plcVariable("Complete", "BOOL", {}, "the nested behaviour has reached its exit step"));
+    if (step.nested)
+        return buildNestedFunctionBlock(model, program, step, std::move(pou), dialect);
 
     LineWriter body;
     body.line(0, "IF Initialization THEN");
@@ -401,7 +485,7 @@ std::string renamedNote(const Variable& variable, const std::string& declaredNam
            + declaredName + ", and every condition that reads it is FALSE";
 }
 
-std::vector<PlcVariable> buildGlobals(const Model& model)
+std::vector<PlcVariable> buildGlobals(const Model& model, const GemmaProgram& program)
 {
     const std::vector<Variable>& variables = model.variables();
     const std::vector<std::string> names = declaredNames(variables);
@@ -422,6 +506,12 @@ std::vector<PlcVariable> buildGlobals(const Model& model)
         for (const std::string& part : notes)
             note += (note.empty() ? "" : ". ") + part;
         globals.push_back(plcVariable(names[i], std::string(iecTypeName(variable.type)), value, note));
+    }
+    for (const std::string& name : program.edgeVariables) {
+        const Variable* variable = model.variable(name);
+        std::string unused;
+        globals.push_back(plcVariable(edgeMemoryName(name), "BOOL", variable ? initialValue(*variable, unused) : "FALSE",
+                                      "the value of " + name + " at the end of the previous scan, for its edges"));
     }
     return globals;
 }
@@ -557,14 +647,14 @@ PlcProject buildPlcProject(const Model& model, Dialect dialect)
     project.projectName = model.settings().name;
     project.dialect = dialect;
     project.cycleTimeMs = model.settings().cycleTimeMs;
-    project.globals = buildGlobals(model);
+    project.globals = buildGlobals(model, program);
     if (dialect == Dialect::Codesys)
         project.globalListName = std::string(kGlobalListName);
     project.pous.push_back(buildGemmaPou(model, program, dialect).pou);
     for (const GemmaStep& step : program.steps) {
         const Step* modelStep = model.step(step.id);
         if (step.hasNestedBehaviour() && modelStep)
-            project.pous.push_back(buildFunctionBlock(step, *modelStep));
+            project.pous.push_back(buildFunctionBlock(model, program, step, *modelStep, dialect));
     }
     return project;
 }

@@ -449,12 +449,22 @@ std::vector<int> parentsOf(const Expression& expression)
 
 std::vector<TypeIssue> typeCheck(const Expression& expression, const SymbolTable& symbols)
 {
+    return typeCheck(expression, symbols, true);
+}
+
+std::vector<TypeIssue> typeCheckValue(const Expression& expression, const SymbolTable& symbols)
+{
+    return typeCheck(expression, symbols, false);
+}
+
+std::vector<TypeIssue> typeCheck(const Expression& expression, const SymbolTable& symbols, bool mustBeBool)
+{
     std::vector<TypeIssue> issues;
     if (!isRootValid(expression))
         return issues;
     TypeChecker checker(expression, symbols, &issues);
     const ValueKind kind = checker.kindUpTo(expression.root);
-    if (kind != ValueKind::Bool && kind != ValueKind::Unknown) {
+    if (mustBeBool && kind != ValueKind::Bool && kind != ValueKind::Unknown) {
         // Named by its kind of value even when it is a variable: "'Temp' is a real number".
         TypeError error;
         error.kind = TypeError::Kind::NotBoolCondition;

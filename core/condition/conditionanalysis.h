@@ -28,6 +28,10 @@ struct TypeIssue {
 // Checks that the expression is BOOL and every operator gets operands of the
 // right kind (spec §4), and that every variable is declared.
 std::vector<TypeIssue> typeCheck(const Expression& expression, const SymbolTable& symbols);
+// The same for a value of any kind (the right-hand side of an assignment):
+// the operators and variables are checked, not that the whole is BOOL.
+std::vector<TypeIssue> typeCheckValue(const Expression& expression, const SymbolTable& symbols);
+std::vector<TypeIssue> typeCheck(const Expression& expression, const SymbolTable& symbols, bool mustBeBool);
 
 // The kind of value a node yields (Unknown for undeclared variables or errors).
 ValueKind valueKind(const Expression& expression, int node, const SymbolTable& symbols);
