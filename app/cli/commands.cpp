@@ -48,7 +48,8 @@ const char* const kUsage =
     "      one visible macro-step or enclosing step (its nested GRAFCET).\n"
     "  simulate MODEL [SCENARIO] [--scans N] [--trace]\n"
     "      Run the GEMMA program scan by scan: one line 'scan N: STEP [fired TRANSITION]' per\n"
-    "      scan (--trace adds inputs, Entry, tokens and Complete). Runs the scenario's last\n"
+    "      scan (--trace adds inputs, Entry, tokens, Complete, the active steps of each nested\n"
+    "      GRAFCET and the outputs they drive). Runs the scenario's last\n"
     "      scan, else 10 scans, or N. Exit 1 when an expectation of the scenario fails.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
     "         [--complete-automatic STEP[,STEP...]|all]\n"
@@ -351,6 +352,31 @@ std::string joinValues(const std::vector<std::string>& names, const std::vector<
     return text.empty() ? "none" : text;
 }
 
+// The active steps of every nested GRAFCET, then the outputs they drive.
+void printNestedState(const core::ScanRecord& record, const core::Simulator& simulator, std::ostream& out)
+{
+    const std::vector<std::string>& nested = simulator.nestedSteps();
+    std::vector<std::string> outputs;
+    for (std::size_t i = 0; i < nested.size() && i < record.nestedActive.size(); ++i) {
+        if (!simulator.hasGrafcet(nested[i]))
+            continue;
+        std::string steps;
+        for (int number : record.nestedActive[i])
+            steps += (steps.empty() ? "" : ", ") + std::to_string(number);
+        out << "    " << nested[i] << " steps: " << (steps.empty() ? "none" : steps) << lineEnd;
+        for (const std::string& name : simulator.nestedOutputs(nested[i])) {
+            if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
+                outputs.push_back(name);
+        }
+    }
+    if (outputs.empty())
+        return;
+    std::string values;
+    for (const std::string& name : outputs)
+        values += (values.empty() ? "" : ", ") + name + " = " + core::cond::formatValue(simulator.variable(name));
+    out << "    outputs: " << values << lineEnd;
+}
+
 void printScan(const core::ScanRecord& record, const core::Simulator& simulator, bool trace, std::ostream& out)
 {
     out << "scan " << record.scan << ": " << (record.stepAfter.empty() ? "(no visible step)" : record.stepAfter);
@@ -366,6 +392,7 @@ void printScan(const core::ScanRecord& record, const core::Simulator& simulator,
     out << "    Entry = " << (record.entry ? "TRUE" : "FALSE") << lineEnd;
     out << "    tokens: " << joinValues(simulator.tokenNames(), record.tokens) << lineEnd;
     out << "    Complete: " << joinValues(simulator.nestedSteps(), record.complete) << lineEnd;
+    printNestedState(record, simulator, out);
 }
 
 // The scenario file, parsed and checked against the model; false (and the

@@ -12,6 +12,18 @@ namespace core {
 
 namespace {
 
+// "6, 8, 10" (ascending), "none" for no step.
+std::string nestedStepsText(std::vector<int> numbers)
+{
+    std::sort(numbers.begin(), numbers.end());
+    numbers.erase(std::unique(numbers.begin(), numbers.end()), numbers.end());
+    std::string text;
+    for (int number : numbers)
+        text += (text.empty() ? "" : ", ") + std::to_string(number);
+    return text.empty() ? "none" : text;
+}
+
+
 constexpr std::int64_t kMaxScan = 1'000'000'000'000;
 
 // A word or one of the punctuation marks , = : of a scenario line.
@@ -330,10 +342,49 @@ private:
             if (!boolValue(ErrorKind::ExpectedEqualsAfterStep, action))
                 return false;
             actions.push_back(std::move(action));
+        } else if (accept("nested")) {
+            if (!parseNested(actions))
+                return false;
         } else {
             return fail(ErrorKind::ExpectedExpectItem);
         }
         return endOfLine();
+    }
+
+    // nested STEP steps 6, 8, 10 | nested STEP unstable = TRUE|FALSE
+    bool parseNested(std::vector<ScenarioAction>& actions)
+    {
+        using Kind = ScenarioAction::Kind;
+        Word step;
+        if (!name(ErrorKind::ExpectedStepAfterNested, step))
+            return false;
+        if (accept("unstable")) {
+            ScenarioAction action = makeAction(Kind::ExpectUnstable, step);
+            action.name = std::string(step.text);
+            if (!boolValue(ErrorKind::ExpectedEqualsAfterStep, action))
+                return false;
+            actions.push_back(std::move(action));
+            return true;
+        }
+        if (!accept("steps"))
+            return fail(ErrorKind::ExpectedNestedItem);
+        ScenarioAction action = makeAction(Kind::ExpectNestedSteps, step);
+        action.name = std::string(step.text);
+        std::vector<int> numbers;
+        do {
+            Word number;
+            if (!name(ErrorKind::ExpectedStepNumber, number))
+                return false;
+            const std::string text(number.text);
+            if (text.empty() || text.size() > 6 || !std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+                --m_next;
+                return fail(ErrorKind::ExpectedStepNumber);
+            }
+            numbers.push_back(std::stoi(text));
+        } while (accept(","));
+        action.value = nestedStepsText(numbers);
+        actions.push_back(std::move(action));
+        return true;
     }
 
     std::vector<Word> m_words;
@@ -425,6 +476,13 @@ private:
         }
         const std::string& declared = m_simulator.variableNames()[static_cast<std::size_t>(index)];
         const IecType type = iecTypeOf(index);
+        const VariableKind kind = m_simulator.variableKind(static_cast<std::size_t>(index));
+        if (action.kind == ScenarioAction::Kind::SetVariable && kind != VariableKind::Input) {
+            ScenarioError& notInput = error(action, action.column, ErrorKind::NotAnInput, declared);
+            notInput.detail = std::string(variableKindName(kind));
+            notInput.message = toText(notInput);
+            return;
+        }
         std::optional<ValueProblem> problem = valueProblem(type, action.value);
         if (!problem) {
             if (action.kind == ScenarioAction::Kind::SetVariable)
@@ -444,6 +502,16 @@ private:
         return m_simulator.variableType(static_cast<std::size_t>(index));
     }
 
+    void checkGrafcetStep(const ScenarioAction& action)
+    {
+        if (const std::optional<ErrorKind> problem = stepProblem(m_simulator, action.name)) {
+            stepError(action, *problem);
+            return;
+        }
+        if (!m_simulator.hasGrafcet(toUpperAscii(action.name)))
+            error(action, action.column, ErrorKind::NoGrafcet, toUpperAscii(action.name));
+    }
+
     void checkNestedStep(const ScenarioAction& action)
     {
         if (const std::optional<ErrorKind> problem = stepProblem(m_simulator, action.name)) {
@@ -455,6 +523,8 @@ private:
                                        [&](const std::string& id) { return equalsIgnoreCase(id, action.name); });
         if (!found)
             error(action, action.column, ErrorKind::SimpleStep, toUpperAscii(action.name));
+        else if (action.kind != ScenarioAction::Kind::ExpectComplete && m_simulator.hasGrafcet(toUpperAscii(action.name)))
+            error(action, action.column, ErrorKind::CompleteFromGrafcet, toUpperAscii(action.name));
         else if (action.kind != ScenarioAction::Kind::ExpectComplete)
             checkSameComplete(action);
     }
@@ -501,6 +571,8 @@ private:
         case Kind::SetComplete:
         case Kind::SetCompleteAuto:
         case Kind::ExpectComplete: checkNestedStep(action); break;
+        case Kind::ExpectNestedSteps:
+        case Kind::ExpectUnstable: checkGrafcetStep(action); break;
         case Kind::ExpectStep:
             if (const std::optional<ErrorKind> problem = stepProblem(m_simulator, action.name))
                 stepError(action, *problem);
@@ -572,6 +644,12 @@ std::string toText(const ScenarioFailure& failure)
     case Kind::WrongEntry: problem = "expected Entry = " + expected + ", it is " + actual; break;
     case Kind::WrongComplete:
         problem = "expected " + failure.subject + ".Complete = " + expected + ", it is " + actual;
+        break;
+    case Kind::WrongNestedSteps:
+        problem = "expected the active steps of " + failure.subject + " to be " + expected + ", they are " + actual;
+        break;
+    case Kind::WrongUnstable:
+        problem = "expected " + failure.subject + ".Unstable = " + expected + ", it is " + actual;
         break;
     }
     return "scan " + std::to_string(failure.scan) + ": " + problem;
@@ -716,6 +794,26 @@ void ScenarioRunner::check(const ScenarioAction& action, const ScanRecord& recor
         if (boolText(actual) == action.value)
             return;
         failure.kind = Failure::WrongComplete;
+        failure.subject = toUpperAscii(action.name);
+        failure.expected = action.value;
+        failure.actual = boolText(actual);
+        break;
+    }
+    case Kind::ExpectNestedSteps: {
+        const std::string actual = nestedStepsText(m_simulator.activeNestedSteps(toUpperAscii(action.name)));
+        if (actual == action.value)
+            return;
+        failure.kind = Failure::WrongNestedSteps;
+        failure.subject = toUpperAscii(action.name);
+        failure.expected = action.value;
+        failure.actual = actual;
+        break;
+    }
+    case Kind::ExpectUnstable: {
+        const bool actual = m_simulator.unstable(toUpperAscii(action.name));
+        if (boolText(actual) == action.value)
+            return;
+        failure.kind = Failure::WrongUnstable;
         failure.subject = toUpperAscii(action.name);
         failure.expected = action.value;
         failure.actual = boolText(actual);

@@ -41,6 +41,8 @@ struct ScenarioAction {
         ExpectVariable, // expect variable NAME = VALUE
         ExpectEntry,    // expect entry = TRUE|FALSE
         ExpectComplete, // expect complete STEP = TRUE|FALSE
+        ExpectNestedSteps, // expect nested STEP steps 6, 8, 10 (value: "6, 8, 10", ascending)
+        ExpectUnstable,    // expect nested STEP unstable = TRUE|FALSE
     };
     Kind kind = Kind::SetVariable;
     std::int64_t scan = 1;
@@ -92,6 +94,8 @@ struct ScenarioFailure {
         UnknownVariable,  // subject: the name as written
         WrongEntry,       // expected, actual: TRUE/FALSE
         WrongComplete,    // subject: the step; expected, actual: TRUE/FALSE
+        WrongNestedSteps, // subject: the step; expected, actual: "6, 8, 10" ("none" for no step)
+        WrongUnstable,    // subject: the step; expected, actual: TRUE/FALSE
     };
     std::int64_t scan = 0;
     int line = 0; // of the action in the scenario

@@ -25,7 +25,10 @@ std::string expectation(Kind kind)
     case Kind::ExpectedTransition: return "a transition id or 'none' after 'fired'";
     case Kind::ExpectedToken: return "a token name after 'token'";
     case Kind::ExpectedVariable: return "a variable name after 'variable'";
-    case Kind::ExpectedExpectItem: return "step, fired, token, variable, entry or complete after 'expect'";
+    case Kind::ExpectedExpectItem: return "step, fired, token, variable, entry, complete or nested after 'expect'";
+    case Kind::ExpectedStepAfterNested: return "a step id after 'nested'";
+    case Kind::ExpectedNestedItem: return "'steps' or 'unstable' after the step id";
+    case Kind::ExpectedStepNumber: return "a step number";
     case Kind::ExpectedEqualsAfterStep: return "'=' after the step id";
     case Kind::ExpectedEqualsAfterVariable: return "'=' after the variable name";
     case Kind::ExpectedEqualsAfterToken: return "'=' after the token name";
@@ -53,6 +56,11 @@ std::string otherText(const ScenarioError& e)
         return "transition " + e.subject + " is not effective (it or one of its steps is hidden)";
     case Kind::UnknownTransition: return "unknown transition " + quote(e.subject);
     case Kind::UnknownToken: return "unknown token " + quote(e.subject);
+    case Kind::NotAnInput:
+        return e.subject + " is an " + e.detail + " variable: the program writes it, a scenario sets only inputs";
+    case Kind::NoGrafcet: return "step " + e.subject + " has no nested GRAFCET";
+    case Kind::CompleteFromGrafcet:
+        return "the Complete of " + e.subject + " comes from its nested GRAFCET: it cannot be set";
     case Kind::InvalidUtf8: return "invalid UTF-8: a scenario file must be UTF-8 text";
     case Kind::ConflictingValue:
     case Kind::ConflictingComplete:

@@ -38,6 +38,9 @@ struct ScenarioError {
         ExpectedBool,             // TRUE or FALSE
         ExpectedCompleteValue,    // TRUE, FALSE or auto
         ExpectedCommaOrEnd,       // ',' or the end of the line
+        ExpectedStepAfterNested,  // a step id after 'nested'
+        ExpectedNestedItem,       // 'steps' or 'unstable' after 'nested STEP'
+        ExpectedStepNumber,       // a nested step number after 'steps' or ','
         ExpectedEnd,              // the end of the line
         InvalidUtf8,              // at the first byte that is not UTF-8; the file is not read further
         // Names and values (validateScenario). subject: the name, as the kind says.
@@ -49,6 +52,9 @@ struct ScenarioError {
         IneffectiveTransition,    // as written: it or one of its steps is hidden
         UnknownTransition,        // as written
         UnknownToken,             // as written
+        NotAnInput,               // the variable as declared; detail: its kind ("output", "internal")
+        NoGrafcet,                // the step id in capitals: it has no nested GRAFCET
+        CompleteFromGrafcet,      // the step id in capitals: its Complete comes from its GRAFCET
         // A second set of one thing in one scan, to another value; at the
         // value of the later line. found: its value; otherLine, otherValue:
         // the earlier set's; scan: the scan both name.

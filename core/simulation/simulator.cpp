@@ -1,5 +1,7 @@
 #include "core/simulation/simulator.h"
 
+#include "core/simulation/nestedengine.h"
+
 #include "core/condition/conditionanalysis.h"
 #include "core/model/model.h"
 
@@ -147,6 +149,7 @@ struct CompiledProgram {
     // Variables.
     std::vector<std::string> variableNames;
     std::vector<IecType> variableTypes;
+    std::vector<VariableKind> variableRoles; // input, output, internal
     std::vector<Kind> variableKinds;
     std::vector<Cell> defaults;
     std::unordered_map<std::string, int> variableByUpperName;
@@ -159,10 +162,30 @@ struct CompiledProgram {
     std::vector<std::string> nestedSteps;
     std::vector<int> nestedStepIndex; // nested index -> index in steps
     int stackDepth = 1;               // the deepest condition's evaluation stack
+    // Spec §4.3: each continuous output of the nested GRAFCETs, written after
+    // END_CASE from the FBs that drive it.
+    struct OutputDriver {
+        int stateNumber = 0;
+        int nestedIndex = 0;
+        std::size_t output = 0; // in that engine's outputNames()
+    };
+    struct OutputWrite {
+        int slot = -1;
+        std::vector<OutputDriver> drivers;
+    };
+    std::vector<OutputWrite> outputWrites;
+    std::vector<int> edgeSlots; // variables with a <V>_PREV memory
+
+    int slotOf(std::string_view name) const
+    {
+        const auto found = variableByUpperName.find(toUpperAscii(name));
+        return found == variableByUpperName.end() ? -1 : found->second;
+    }
 
 private:
     void compileVariables(const Model& model);
     void compileProgram();
+    void compileNestedOutputs();
     void compileTransition(const GemmaTransition& transition, CompiledTransition& out);
     bool compileNode(const CompiledTransition& transition, const cond::Expression& expression,
                      const std::vector<char>& constant, int node, CompiledCondition& out, Kind& kind, int& depth);
@@ -207,6 +230,11 @@ struct Simulator::Impl {
     std::int64_t scanCount = 0;
     const GemmaTransition* lastFired = nullptr;
 
+    // Nested GRAFCETs, by nested index (empty for a skeleton FB), and the
+    // edge memories by slot.
+    std::vector<std::optional<NestedEngine>> engines;
+    std::vector<char> previous;
+
     // Evaluation scratch.
     mutable std::vector<Cell> stack;
 
@@ -215,6 +243,9 @@ struct Simulator::Impl {
     std::function<void(const ScanRecord&)> callback;
 
     void reset();
+    void callFunctionBlock(const CompiledStep& step, bool initialization);
+    void writeContinuousOutputs();
+    void updateEdgeMemories();
     bool evaluate(const CompiledTransition& transition, const std::vector<char>& tokenState) const;
     cond::Value nodeReading(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
     bool fbComplete(int nestedIndex) const;
@@ -246,7 +277,77 @@ Simulator::Impl::Impl(const Model& model)
     , manualComplete(nestedSteps.size(), 0)
     , stack(static_cast<std::size_t>(compiled->stackDepth) + 1)
 {
+    // The engines refer to the shared, immutable program: copies of this Impl share it too.
+    const CompiledProgram* shared = compiled.get();
+    const std::function<int(std::string_view)> slotOf = [shared](std::string_view name) { return shared->slotOf(name); };
+    const std::function<IecType(int)> typeOf = [shared](int slot) {
+        return shared->variableTypes[static_cast<std::size_t>(slot)];
+    };
+    for (int stepIndex : nestedStepIndex) {
+        const GemmaStep& step = *steps[static_cast<std::size_t>(stepIndex)].source;
+        engines.emplace_back();
+        if (step.nested)
+            engines.back().emplace(*step.nested, slotOf, typeOf);
+    }
     reset();
+}
+
+// The globals as a nested GRAFCET's FB reads and writes them.
+class SimulatorGlobals final : public NestedGlobals {
+public:
+    SimulatorGlobals(std::vector<Cell>& values, const std::vector<Kind>& kinds, const std::vector<char>& previous)
+        : m_values(values)
+        , m_kinds(kinds)
+        , m_previous(previous)
+    {
+    }
+    cond::Value read(int slot) const override
+    {
+        return toValue(m_values[static_cast<std::size_t>(slot)], m_kinds[static_cast<std::size_t>(slot)]);
+    }
+    void write(int slot, const cond::Value& value) override
+    {
+        Cell cell = toCell(value);
+        if (m_kinds[static_cast<std::size_t>(slot)] == Kind::Real && !std::holds_alternative<double>(value))
+            cell.r = static_cast<double>(cell.i);
+        m_values[static_cast<std::size_t>(slot)] = cell;
+    }
+    bool previous(int slot) const override { return m_previous[static_cast<std::size_t>(slot)] != 0; }
+
+private:
+    std::vector<Cell>& m_values;
+    const std::vector<Kind>& m_kinds;
+    const std::vector<char>& m_previous;
+};
+
+// S(Initialization := ...): the nested GRAFCET, or the skeleton's Complete.
+void Simulator::Impl::callFunctionBlock(const CompiledStep& step, bool initialization)
+{
+    const auto nested = static_cast<std::size_t>(step.nestedIndex);
+    if (std::optional<NestedEngine>& engine = engines[nested]) {
+        SimulatorGlobals globals(values, variableKinds, previous);
+        engine->call(initialization, scanCount * cycleTimeMs, globals);
+        completeOutput[nested] = engine->complete();
+        return;
+    }
+    completeOutput[nested] = fbComplete(step.nestedIndex);
+}
+
+void Simulator::Impl::writeContinuousOutputs()
+{
+    for (const CompiledProgram::OutputWrite& write : compiled->outputWrites) {
+        bool value = false;
+        for (const CompiledProgram::OutputDriver& driver : write.drivers)
+            value = value || (state == driver.stateNumber && !entry
+                              && engines[static_cast<std::size_t>(driver.nestedIndex)]->output(driver.output));
+        values[static_cast<std::size_t>(write.slot)].i = value ? 1 : 0;
+    }
+}
+
+void Simulator::Impl::updateEdgeMemories()
+{
+    for (int slot : compiled->edgeSlots)
+        previous[static_cast<std::size_t>(slot)] = values[static_cast<std::size_t>(slot)].i != 0;
 }
 
 void CompiledProgram::compileVariables(const Model& model)
@@ -255,6 +356,7 @@ void CompiledProgram::compileVariables(const Model& model)
         const int slot = static_cast<int>(variableNames.size());
         variableNames.push_back(variable.name);
         variableTypes.push_back(variable.type);
+        variableRoles.push_back(variable.kind);
         variableKinds.push_back(kindOf(variable.type));
         // A default that does not fit: the implicit default, as the generated code declares it.
         std::optional<cond::Value> value = cond::parseValue(variable.type, variable.defaultValue);
@@ -263,6 +365,30 @@ void CompiledProgram::compileVariables(const Model& model)
         defaults.push_back(value ? toCell(*value) : Cell{});
         variableByUpperName.emplace(toUpperAscii(variable.name), slot);
     }
+}
+
+void CompiledProgram::compileNestedOutputs()
+{
+    for (std::size_t n = 0; n < nestedSteps.size(); ++n) {
+        const GemmaStep& step = program.steps[static_cast<std::size_t>(nestedStepIndex[n])];
+        if (!step.nested)
+            continue;
+        std::size_t outputIndex = 0;
+        for (const ContinuousOutput& output : step.nested->outputs) {
+            if (output.isComplete)
+                continue;
+            const int slot = slotOf(output.variable);
+            auto found = std::find_if(outputWrites.begin(), outputWrites.end(),
+                                      [slot](const OutputWrite& w) { return w.slot == slot; });
+            if (found == outputWrites.end()) {
+                outputWrites.push_back({slot, {}});
+                found = outputWrites.end() - 1;
+            }
+            found->drivers.push_back({step.number, static_cast<int>(n), outputIndex++});
+        }
+    }
+    for (const std::string& name : program.edgeVariables)
+        edgeSlots.push_back(slotOf(name));
 }
 
 void CompiledProgram::compileProgram()
@@ -294,6 +420,7 @@ void CompiledProgram::compileProgram()
                                            token.polarity == TokenPolarity::NormallyClosed});
         }
     }
+    compileNestedOutputs();
     for (std::size_t i = 0; i < program.steps.size(); ++i) {
         for (const GemmaTransition& transition : program.steps[i].transitions) {
             steps[i].transitions.emplace_back();
@@ -577,6 +704,13 @@ void Simulator::Impl::reset()
     entry = true;
     tokenValues.assign(tokens.size(), 0);
     completeOutput.assign(nestedSteps.size(), 0);
+    for (std::optional<NestedEngine>& engine : engines) {
+        if (engine)
+            engine->reset();
+    }
+    previous.assign(values.size(), 0);
+    for (std::size_t slot = 0; slot < values.size(); ++slot)
+        previous[slot] = variableKinds[slot] != Kind::Real && values[slot].i != 0;
     scanCount = 0;
     lastFired = nullptr;
     trace.clear();
@@ -632,11 +766,11 @@ void Simulator::Impl::scan(ScanRecord* record)
             const auto nested = static_cast<std::size_t>(step.nestedIndex);
             if (entry) {
                 // IF Entry THEN S(Initialization := Entry); Entry := FALSE; tokens := FALSE; END_IF;
-                completeOutput[nested] = fbComplete(step.nestedIndex);
+                callFunctionBlock(step, true);
                 entry = false;
                 std::fill_n(tokenValues.begin() + step.firstToken, step.tokenCount, 0);
             }
-            completeOutput[nested] = fbComplete(step.nestedIndex); // S(Initialization := Entry);
+            callFunctionBlock(step, false); // S(Initialization := Entry);
             complete = completeOutput[nested] != 0;
         }
         for (const CompiledTransition& transition : step.transitions) {
@@ -649,6 +783,7 @@ void Simulator::Impl::scan(ScanRecord* record)
             }
         }
     }
+    writeContinuousOutputs();
     // After END_CASE: IF State = <source no.> AND <literal> THEN token := TRUE; END_IF;
     // Only the active step's tokens can match State.
     if (active >= 0) {
@@ -662,6 +797,7 @@ void Simulator::Impl::scan(ScanRecord* record)
                 tokenValues[static_cast<std::size_t>(t)] = 1;
         }
     }
+    updateEdgeMemories();
     if (record)
         fillRecordAfter(*record);
 }
@@ -675,6 +811,9 @@ void Simulator::Impl::fillRecordAfter(ScanRecord& record) const
     record.entry = entry;
     record.tokens.assign(tokenValues.begin(), tokenValues.end());
     record.complete.assign(completeOutput.begin(), completeOutput.end());
+    record.nestedActive.clear();
+    for (const std::optional<NestedEngine>& engine : engines)
+        record.nestedActive.push_back(engine ? engine->activeSteps() : std::vector<int>{});
 }
 
 int Simulator::Impl::stepIndexOfNested(std::string_view stepId) const
@@ -884,6 +1023,12 @@ Status Simulator::setVariableAt(std::size_t index, const cond::Value& value)
     return Status::success();
 }
 
+VariableKind Simulator::variableKind(std::size_t index) const
+{
+    const auto& roles = m_impl->compiled->variableRoles;
+    return index < roles.size() ? roles[index] : VariableKind::Input;
+}
+
 Status Simulator::setVariableText(std::string_view name, std::string_view text)
 {
     const int index = variableIndex(name);
@@ -940,11 +1085,19 @@ Status noNestedStep(std::string_view stepId)
 
 } // namespace
 
+Status completeFromGrafcet(std::string_view stepId)
+{
+    return Status::failure("simulation.complete-from-grafcet",
+                           "the Complete of " + std::string(stepId) + " comes from its nested GRAFCET");
+}
+
 Status Simulator::setCompleteMode(std::string_view stepId, CompleteMode mode)
 {
     const int index = m_impl->stepIndexOfNested(stepId);
     if (index < 0)
         return noNestedStep(stepId);
+    if (m_impl->engines[static_cast<std::size_t>(index)])
+        return completeFromGrafcet(stepId);
     m_impl->completeModes[static_cast<std::size_t>(index)] = mode;
     return Status::success();
 }
@@ -954,6 +1107,8 @@ Status Simulator::setComplete(std::string_view stepId, bool complete)
     const int index = m_impl->stepIndexOfNested(stepId);
     if (index < 0)
         return noNestedStep(stepId);
+    if (m_impl->engines[static_cast<std::size_t>(index)])
+        return completeFromGrafcet(stepId);
     m_impl->manualComplete[static_cast<std::size_t>(index)] = complete;
     return Status::success();
 }
@@ -979,6 +1134,44 @@ bool Simulator::complete(std::string_view stepId) const
 const std::vector<std::string>& Simulator::nestedSteps() const
 {
     return m_impl->nestedSteps;
+}
+
+const NestedEngine* Simulator::grafcetEngine(std::string_view stepId) const
+{
+    const int index = m_impl->stepIndexOfNested(stepId);
+    if (index < 0)
+        return nullptr;
+    const std::optional<NestedEngine>& engine = m_impl->engines[static_cast<std::size_t>(index)];
+    return engine ? &*engine : nullptr;
+}
+
+bool Simulator::hasGrafcet(std::string_view stepId) const
+{
+    return grafcetEngine(stepId) != nullptr;
+}
+
+std::vector<int> Simulator::activeNestedSteps(std::string_view stepId) const
+{
+    const NestedEngine* engine = grafcetEngine(stepId);
+    return engine ? engine->activeSteps() : std::vector<int>{};
+}
+
+bool Simulator::unstable(std::string_view stepId) const
+{
+    const NestedEngine* engine = grafcetEngine(stepId);
+    return engine && engine->unstable();
+}
+
+std::vector<NestedTimerState> Simulator::nestedTimers(std::string_view stepId) const
+{
+    const NestedEngine* engine = grafcetEngine(stepId);
+    return engine ? engine->timers() : std::vector<NestedTimerState>{};
+}
+
+std::vector<std::string> Simulator::nestedOutputs(std::string_view stepId) const
+{
+    const NestedEngine* engine = grafcetEngine(stepId);
+    return engine ? engine->outputNames() : std::vector<std::string>{};
 }
 
 std::string Simulator::activeStepId() const

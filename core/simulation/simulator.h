@@ -41,7 +41,9 @@
 
 #include "core/condition/conditionevaluator.h"
 #include "core/simulation/explanationreason.h"
+#include "core/simulation/nestedengine.h"
 #include "core/codegen/gemmaprogram.h"
+#include "core/model/model.h"
 #include "core/model/status.h"
 
 #include <cstdint>
@@ -86,6 +88,9 @@ struct ScanRecord {
     std::vector<bool> tokens;   // after the scan, in Simulator::tokenNames() order
     std::vector<bool> complete; // Complete output of each nested step after the scan, in Simulator::nestedSteps() order
     std::vector<InputChange> changedInputs; // variables changed since the previous scan (for scan 1: since reset)
+    // After the scan, in Simulator::nestedSteps() order: the active nested
+    // steps of each GRAFCET (empty for a step without one).
+    std::vector<std::vector<int>> nestedActive;
 };
 
 enum class TransitionStatus {
@@ -155,6 +160,7 @@ public:
     const std::vector<std::string>& variableNames() const; // as declared, declaration order
     cond::Value variableValue(std::size_t index) const;    // by variableNames() index
     IecType variableType(std::size_t index) const;         // BOOL for an index out of range
+    VariableKind variableKind(std::size_t index) const;    // input for an index out of range
 
     // Complete of nested steps. Unknown ids or simple steps: failed Status.
     Status setCompleteMode(std::string_view stepId, CompleteMode mode);
@@ -166,6 +172,15 @@ public:
     // (FALSE before its first call; it keeps its value while the step is inactive).
     bool complete(std::string_view stepId) const;
     const std::vector<std::string>& nestedSteps() const; // visible macro/enclosing step ids, state order
+
+    // Nested GRAFCETs (spec grafcet-layer.md §4). A step that has one takes
+    // its Complete from it: Complete modes apply only to the others.
+    bool hasGrafcet(std::string_view stepId) const;
+    std::vector<int> activeNestedSteps(std::string_view stepId) const; // in number order
+    bool unstable(std::string_view stepId) const;                      // until stable only
+    std::vector<NestedTimerState> nestedTimers(std::string_view stepId) const;
+    std::vector<std::string> nestedOutputs(std::string_view stepId) const; // the continuous outputs it drives
+    const NestedEngine* grafcetEngine(std::string_view stepId) const;      // nullptr without a GRAFCET
 
     // State.
     std::string activeStepId() const;  // "" when State names no visible step

@@ -100,7 +100,7 @@ TEST_CASE("Scenario: malformed lines give file:line:column errors", "[simulation
         {"at 4: set Start = TRUE,", "s.txt:1:24: expected a variable name or 'complete STEP', found the end of the line"},
         {"at 4: set complete = TRUE", "s.txt:1:20: expected a step id after 'complete', found '='"},
         {"at 4: set complete F1 = maybe", "s.txt:1:25: expected TRUE, FALSE or auto, found 'maybe'"},
-        {"at 4: expect stop F1", "s.txt:1:14: expected step, fired, token, variable, entry or complete after 'expect', found 'stop'"},
+        {"at 4: expect stop F1", "s.txt:1:14: expected step, fired, token, variable, entry, complete or nested after 'expect', found 'stop'"},
         {"at 4: expect step", "s.txt:1:18: expected a step id after 'step', found the end of the line"},
         {"at 4: expect step F1 F2   # two steps", "s.txt:1:22: expected the end of the line, found 'F2'"},
         {"at 4: expect token T_F1_1_MEM = 1", "s.txt:1:33: expected TRUE or FALSE, found '1'"},
@@ -121,7 +121,7 @@ TEST_CASE("Scenario: malformed lines give file:line:column errors", "[simulation
                                                      "x.txt");
     CHECK(errorTexts(parsed.errors)
           == std::vector<std::string>{"x.txt:4:6: expected ':' after the scan number, found 'set'",
-                                      "x.txt:6:13: expected step, fired, token, variable, entry or complete after "
+                                      "x.txt:6:13: expected step, fired, token, variable, entry, complete or nested after "
                                       "'expect', found the end of the line"});
     CHECK(parsed.scenario.actions.size() == 2);
 }
@@ -156,7 +156,7 @@ TEST_CASE("Scenario: syntax errors carry their kind and the word found", "[simul
          "expected TRUE, FALSE or auto, found 'soon'"},
         {"at 3: set A = 1 B = 2", Kind::ExpectedCommaOrEnd, "B", "", "expected ',' or the end of the line, found 'B'"},
         {"at 3: expect", Kind::ExpectedExpectItem, "", "",
-         "expected step, fired, token, variable, entry or complete after 'expect', found the end of the line"},
+         "expected step, fired, token, variable, entry, complete or nested after 'expect', found the end of the line"},
         {"at 3: expect step :", Kind::ExpectedStepAfterStep, ":", "", "expected a step id after 'step', found ':'"},
         {"at 3: expect fired", Kind::ExpectedTransition, "", "",
          "expected a transition id or 'none' after 'fired', found the end of the line"},

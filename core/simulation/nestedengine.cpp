@@ -1,0 +1,281 @@
+#include "core/simulation/nestedengine.h"
+
+#include "core/model/model.h"
+
+#include <algorithm>
+
+namespace core {
+
+NestedEngine::NestedEngine(const NestedGrafcet& grafcet, const std::function<int(std::string_view)>& slotOf,
+                           const std::function<IecType(int)>& typeOf)
+    : m_grafcet(&grafcet)
+    , m_slotOf(slotOf)
+    , m_targetTypes(typeOf)
+    , m_untilStable(grafcet.rule == EvolutionRule::UntilStable)
+{
+    for (const NestedStep& step : grafcet.steps)
+        m_stepNumbers.push_back(step.number);
+    for (const ContinuousOutput& output : grafcet.outputs) {
+        if (output.isComplete) {
+            m_outputOf.push_back(-1);
+            continue;
+        }
+        m_outputOf.push_back(static_cast<int>(m_outputNames.size()));
+        m_outputNames.push_back(output.variable);
+        m_outputSlots.push_back(slotOf(output.variable));
+    }
+    reset();
+}
+
+void NestedEngine::reset()
+{
+    m_x.assign(m_stepNumbers.size(), 0);
+    m_timers.assign(m_grafcet->timers.size(), Timer{});
+    m_outputs.assign(m_outputNames.size(), 0);
+    m_complete = false;
+    m_unstable = false;
+}
+
+int NestedEngine::slot(std::string_view name) const
+{
+    return m_slotOf(name);
+}
+
+int NestedEngine::stepIndex(int number) const
+{
+    const auto found = std::lower_bound(m_stepNumbers.begin(), m_stepNumbers.end(), number);
+    return found != m_stepNumbers.end() && *found == number ? static_cast<int>(found - m_stepNumbers.begin()) : -1;
+}
+
+bool NestedEngine::active(int stepNumber) const
+{
+    const int index = stepIndex(stepNumber);
+    return index >= 0 && m_x[static_cast<std::size_t>(index)] != 0;
+}
+
+std::vector<int> NestedEngine::activeSteps() const
+{
+    std::vector<int> numbers;
+    for (std::size_t i = 0; i < m_x.size(); ++i) {
+        if (m_x[i])
+            numbers.push_back(m_stepNumbers[i]);
+    }
+    return numbers;
+}
+
+std::vector<NestedTimerState> NestedEngine::timers() const
+{
+    std::vector<NestedTimerState> states;
+    for (std::size_t i = 0; i < m_timers.size(); ++i) {
+        const NestedTimer& timer = m_grafcet->timers[i];
+        states.push_back({timer.name, timer.step, timer.durationMs, m_timers[i].elapsed, m_timers[i].q});
+    }
+    return states;
+}
+
+// IEC 61131-3 TON: ET counts from the call in which IN became TRUE.
+void NestedEngine::runTon(std::size_t index, bool in, std::int64_t nowMs)
+{
+    Timer& timer = m_timers[index];
+    if (!in) {
+        timer = Timer{};
+        return;
+    }
+    if (!timer.running) {
+        timer.running = true;
+        timer.start = nowMs;
+    }
+    timer.elapsed = std::min(nowMs - timer.start, m_grafcet->timers[index].durationMs);
+    timer.q = nowMs - timer.start >= m_grafcet->timers[index].durationMs;
+}
+
+cond::Value NestedEngine::atom(const cond::Expression& expression, int node, const std::map<int, int>* timers,
+                               const NestedGlobals& globals, bool firstEvolution) const
+{
+    const cond::Node& n = expression.at(node);
+    switch (n.kind) {
+    case cond::NodeKind::StepActivity: return active(n.number);
+    case cond::NodeKind::StepDuration: {
+        if (!timers || !timers->count(node))
+            return false;
+        return active(n.number) && m_timers[static_cast<std::size_t>(timers->at(node))].q;
+    }
+    case cond::NodeKind::Complete: return m_complete;
+    case cond::NodeKind::Variable: {
+        // The FB's own continuous outputs are its VAR_OUTPUTs: the previous call's values.
+        for (std::size_t i = 0; i < m_outputNames.size(); ++i) {
+            if (equalsIgnoreCase(m_outputNames[i], n.text))
+                return m_outputs[i] != 0;
+        }
+        const int s = slot(n.text);
+        return s >= 0 ? globals.read(s) : cond::Value{false};
+    }
+    case cond::NodeKind::Unary: { // an edge, true in the first evolution of a call only
+        if (!firstEvolution)
+            return false;
+        const int s = slot(expression.at(n.operand).text);
+        if (s < 0)
+            return false;
+        const bool now = cond::isTrue(globals.read(s));
+        const bool before = globals.previous(s);
+        return n.unaryOp == cond::UnaryOp::RisingEdge ? now && !before : !now && before;
+    }
+    default: return false;
+    }
+}
+
+cond::Value NestedEngine::evaluate(const cond::Expression& expression, const std::map<int, int>* timers,
+                                   const NestedGlobals& globals, bool firstEvolution) const
+{
+    return cond::evaluate(expression, [&](int node) { return atom(expression, node, timers, globals, firstEvolution); });
+}
+
+namespace {
+
+// The value as the target's IEC type stores it: integers wrap around.
+cond::Value storedValue(const cond::Value& value, IecType type)
+{
+    if (type == IecType::Bool)
+        return cond::isTrue(value);
+    if (isRealType(type)) {
+        const double real = std::holds_alternative<double>(value) ? std::get<double>(value)
+            : static_cast<double>(std::holds_alternative<std::int64_t>(value) ? std::get<std::int64_t>(value)
+                                                                                : std::get<bool>(value));
+        return type == IecType::Real ? static_cast<double>(static_cast<float>(real)) : real;
+    }
+    std::int64_t integer = std::holds_alternative<std::int64_t>(value) ? std::get<std::int64_t>(value)
+        : std::holds_alternative<bool>(value)                         ? std::int64_t{std::get<bool>(value)}
+                                                                      : static_cast<std::int64_t>(std::get<double>(value));
+    const cond::IntegerRange range = cond::integerRange(type);
+    const auto width = static_cast<std::uint64_t>(range.high) - static_cast<std::uint64_t>(range.low) + 1;
+    if (width != 0 && (integer < range.low || integer > range.high)) {
+        const auto offset = (static_cast<std::uint64_t>(integer) - static_cast<std::uint64_t>(range.low)) % width;
+        integer = static_cast<std::int64_t>(static_cast<std::uint64_t>(range.low) + offset);
+    }
+    return integer;
+}
+
+} // namespace
+
+void NestedEngine::runStored(const std::vector<NestedAction>& actions, NestedGlobals& globals)
+{
+    for (const NestedAction& action : actions) {
+        if (!action.usable)
+            continue;
+        const cond::ActionSyntax& syntax = action.parsed.action;
+        cond::Value value = syntax.form == cond::ActionForm::Set ? cond::Value{true}
+            : syntax.form == cond::ActionForm::Reset             ? cond::Value{false}
+                                                                 : evaluate(syntax.value, nullptr, globals, false);
+        if (action.targetIsComplete) {
+            m_complete = cond::isTrue(value);
+            continue;
+        }
+        const int s = slot(action.target);
+        if (s >= 0)
+            globals.write(s, storedValue(value, m_targetTypes(s)));
+    }
+}
+
+// IEC 60848 rules 2-5; true when a transition fired.
+bool NestedEngine::evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals& globals)
+{
+    const auto& transitions = m_grafcet->transitions;
+    m_fires.assign(transitions.size(), 0);
+    bool fired = false;
+    for (std::size_t t = 0; t < transitions.size(); ++t) {
+        const NestedTransition& transition = transitions[t];
+        if (!transition.usable)
+            continue;
+        const bool enabled = std::all_of(transition.upstream.begin(), transition.upstream.end(),
+                                         [&](int n) { return active(n); });
+        if (enabled && cond::isTrue(evaluate(transition.receptivity.expression, &transition.timerOfNode, globals,
+                                             firstEvolution))) {
+            m_fires[t] = 1;
+            fired = true;
+        }
+    }
+    if (!fired)
+        return false;
+    m_left.assign(m_x.size(), 0);
+    m_entered.assign(m_x.size(), 0);
+    std::vector<char> deactivated(m_x.size(), 0), activated(m_x.size(), 0);
+    for (std::size_t t = 0; t < transitions.size(); ++t) {
+        if (!m_fires[t])
+            continue;
+        for (int n : transitions[t].upstream)
+            deactivated[static_cast<std::size_t>(stepIndex(n))] = 1;
+        for (int n : transitions[t].downstream)
+            activated[static_cast<std::size_t>(stepIndex(n))] = 1;
+    }
+    for (std::size_t i = 0; i < m_x.size(); ++i) {
+        m_left[i] = deactivated[i] && !activated[i];
+        m_entered[i] = activated[i] && !m_x[i];
+    }
+    for (std::size_t i = 0; i < m_x.size(); ++i)
+        m_x[i] = (m_x[i] && !m_left[i]) || m_entered[i];
+    for (std::size_t i = 0; i < m_x.size(); ++i) {
+        if (m_left[i])
+            runStored(m_grafcet->steps[i].onDeactivation, globals);
+    }
+    for (std::size_t i = 0; i < m_x.size(); ++i) {
+        if (!m_entered[i])
+            continue;
+        runStored(m_grafcet->steps[i].onActivation, globals);
+        for (int timer : m_grafcet->steps[i].timers)
+            runTon(static_cast<std::size_t>(timer), false, nowMs);
+    }
+    return true;
+}
+
+void NestedEngine::computeOutputs(const NestedGlobals& globals)
+{
+    std::vector<char> values(m_outputs.size(), 0);
+    bool complete = m_complete;
+    for (std::size_t o = 0; o < m_grafcet->outputs.size(); ++o) {
+        const ContinuousOutput& output = m_grafcet->outputs[o];
+        bool value = false;
+        for (const ContinuousOutput::Driver& driver : output.drivers) {
+            if (value || !active(driver.step))
+                continue;
+            const NestedStep& step = m_grafcet->steps[static_cast<std::size_t>(stepIndex(driver.step))];
+            const cond::Expression& condition = step.continuous[static_cast<std::size_t>(driver.action)].parsed.action.condition;
+            value = condition.empty() || cond::isTrue(evaluate(condition, nullptr, globals, false));
+        }
+        if (m_outputOf[o] < 0)
+            complete = value;
+        else
+            values[static_cast<std::size_t>(m_outputOf[o])] = value;
+    }
+    m_outputs = std::move(values);
+    m_complete = complete;
+}
+
+void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& globals)
+{
+    if (initialization) {
+        for (std::size_t i = 0; i < m_x.size(); ++i)
+            m_x[i] = m_grafcet->steps[i].initial;
+        m_complete = false;
+        m_unstable = false;
+        for (std::size_t t = 0; t < m_timers.size(); ++t)
+            runTon(t, false, nowMs);
+        for (const NestedStep& step : m_grafcet->steps) {
+            if (step.initial)
+                runStored(step.onActivation, globals);
+        }
+    } else {
+        for (std::size_t t = 0; t < m_timers.size(); ++t)
+            runTon(t, active(m_grafcet->timers[t].step), nowMs);
+        int evolutions = 0;
+        bool fired = false;
+        do {
+            fired = evolve(evolutions == 0, nowMs, globals);
+            ++evolutions;
+        } while (m_untilStable && fired && evolutions < m_grafcet->maxEvolutions);
+        if (m_untilStable)
+            m_unstable = fired;
+    }
+    computeOutputs(globals);
+}
+
+} // namespace core

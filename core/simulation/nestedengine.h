@@ -1,0 +1,103 @@
+#pragma once
+
+// Runs one nested GRAFCET the way its generated S_FB runs (spec
+// grafcet-layer.md §4.2, core/codegen/nestedcode.h): one call per
+// `call()`, with the Initialization call, simultaneous firing, the actions
+// in their order, the TONs of the time-dependent receptivities and the
+// continuous outputs computed at the end of the call. The simulator owns the
+// global variables; the engine reads and writes them through NestedGlobals.
+
+#include "core/codegen/nestedprogram.h"
+#include "core/condition/conditionevaluator.h"
+#include "core/model/iectypes.h"
+
+#include <map>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace core {
+
+enum class EvolutionRule;
+
+// The globals as the FB sees them, by slot (declaration index).
+class NestedGlobals {
+public:
+    virtual ~NestedGlobals() = default;
+    virtual cond::Value read(int slot) const = 0;
+    virtual void write(int slot, const cond::Value& value) = 0;
+    // <V>_PREV: the value at the end of the previous scan.
+    virtual bool previous(int slot) const = 0;
+};
+
+struct NestedTimerState {
+    std::string name;   // the TON instance of the generated code
+    int step = 0;
+    std::int64_t durationMs = 0;
+    std::int64_t elapsedMs = 0; // ET
+    bool done = false;          // Q
+};
+
+class NestedEngine {
+public:
+    // `slotOf` gives the declaration index of a variable name (-1 when
+    // undeclared: usable texts never name one).
+    NestedEngine(const NestedGrafcet& grafcet, const std::function<int(std::string_view)>& slotOf,
+                 const std::function<IecType(int)>& typeOf);
+
+    // Power-on: no step active, outputs FALSE, timers stopped.
+    void reset();
+    // One call of S_FB at time nowMs (scan number x cycle time).
+    void call(bool initialization, std::int64_t nowMs, NestedGlobals& globals);
+
+    bool complete() const { return m_complete; }
+    bool unstable() const { return m_unstable; }
+    bool active(int stepNumber) const;
+    std::vector<int> activeSteps() const; // in number order
+    // The continuous outputs (Complete excluded), in NestedGrafcet::outputs order.
+    const std::vector<std::string>& outputNames() const { return m_outputNames; }
+    const std::vector<int>& outputSlots() const { return m_outputSlots; }
+    bool output(std::size_t index) const { return m_outputs[index] != 0; }
+    std::vector<NestedTimerState> timers() const;
+    const NestedGrafcet& grafcet() const { return *m_grafcet; }
+
+private:
+    struct Timer {
+        bool running = false;
+        std::int64_t start = 0;
+        std::int64_t elapsed = 0;
+        bool q = false;
+    };
+
+    cond::Value evaluate(const cond::Expression& expression, const std::map<int, int>* timers,
+                         const NestedGlobals& globals, bool firstEvolution) const;
+    cond::Value atom(const cond::Expression& expression, int node, const std::map<int, int>* timers,
+                     const NestedGlobals& globals, bool firstEvolution) const;
+    int stepIndex(int number) const;
+    void runTon(std::size_t timer, bool in, std::int64_t nowMs);
+    bool evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals& globals);
+    void runStored(const std::vector<NestedAction>& actions, NestedGlobals& globals);
+    void computeOutputs(const NestedGlobals& globals);
+    int slot(std::string_view name) const;
+
+    const NestedGrafcet* m_grafcet;
+    std::function<int(std::string_view)> m_slotOf;
+    std::function<IecType(int)> m_targetTypes;
+    bool m_untilStable = false;
+    std::vector<int> m_stepNumbers;       // by index
+    std::vector<char> m_x;                // by step index
+    std::vector<Timer> m_timers;
+    std::vector<std::string> m_outputNames;
+    std::vector<int> m_outputSlots;
+    std::vector<int> m_outputOf;          // NestedGrafcet::outputs index -> m_outputs index, -1 for Complete
+    std::vector<char> m_outputs;
+    bool m_complete = false;
+    bool m_unstable = false;
+    // Scratch of one evolution.
+    std::vector<char> m_fires, m_left, m_entered;
+};
+
+} // namespace core

@@ -1,0 +1,209 @@
+// The simulator runs nested GRAFCETs as spec grafcet-layer.md §4 says.
+
+#include "core/formats/modelfiles.h"
+#include "core/model/model.h"
+#include "core/simulation/scenario.h"
+#include "core/simulation/simulator.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+using namespace core;
+
+namespace {
+
+Variable variable(std::string name, IecType type, VariableKind kind)
+{
+    Variable v{std::move(name), type, "", ""};
+    v.kind = kind;
+    return v;
+}
+
+// F1 is the initial step. Its GRAFCET: 1 --RE Start--> 2 (N Lamp,
+// Count := Count + 1) --5s/X2--> 3 (S Complete). F1 -> A2 waits for Complete;
+// F -> D1 on Stop.
+Model timedModel()
+{
+    Model model;
+    REQUIRE(model.addVariable(variable("Start", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(variable("Stop", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(variable("Lamp", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.addVariable(variable("Count", IecType::Int, VariableKind::Internal)));
+    REQUIRE(model.setInitialStep("F1"));
+    REQUIRE(model.setCondition("F1->A2", "TRUE"));
+    REQUIRE(model.setCondition("F->D1", "Stop"));
+    REQUIRE(model.setTransitionHidden("F->D1", false));
+    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
+    REQUIRE(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::Continuous, "N Lamp"},
+                                                       {ActionTiming::OnActivation, "Count := Count + 1"}}}));
+    REQUIRE(model.addGrafcetStep("F1", {3, false, "", {{ActionTiming::OnActivation, "S Complete"}}}));
+    REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2}, "RE Start"}));
+    REQUIRE(model.addGrafcetTransition("F1", {2, {2}, {3}, "5s/X2"}));
+    return model;
+}
+
+} // namespace
+
+TEST_CASE("Nested GRAFCET: edges, stored and continuous actions, the TON count", "[simulation][nested-simulation]")
+{
+    Simulator simulator(timedModel());
+    REQUIRE(simulator.hasGrafcet("F1"));
+    CHECK_FALSE(simulator.setCompleteMode("F1", CompleteMode::Manual).ok);
+
+    simulator.step(); // the entry scan: Initialization, then one evolution
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{1});
+    simulator.step();
+    REQUIRE(simulator.setVariable("Start", true));
+    const ScanRecord third = simulator.step(); // scan 3: the rising edge
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2});
+    REQUIRE(third.nestedActive.size() == simulator.nestedSteps().size());
+    CHECK(simulator.variable("Count") == cond::Value{std::int64_t{1}});
+    CHECK(simulator.variable("Lamp") == cond::Value{true}); // written after END_CASE in the same scan
+    simulator.step(); // Start still TRUE: no edge, step 2 stays, Count stays
+    CHECK(simulator.variable("Count") == cond::Value{std::int64_t{1}});
+
+    // 5s/X2 at 20 ms: TRUE in the (250 + 1)th scan after scan 3.
+    simulator.run(253 - 4);
+    CHECK(simulator.scanCount() == 253);
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2});
+    const ScanRecord fired = simulator.step();
+    CHECK(fired.scan == 254);
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{3});
+    CHECK(simulator.complete("F1"));
+    CHECK(fired.fired == "F1->A2"); // Complete is seen by the GEMMA layer in the same scan
+    CHECK(simulator.variable("Lamp") == cond::Value{false});
+}
+
+TEST_CASE("Leaving the GEMMA state drops its continuous outputs in the same scan", "[simulation][nested-simulation]")
+{
+    Simulator simulator(timedModel());
+    simulator.step();
+    REQUIRE(simulator.setVariable("Start", true));
+    simulator.step();
+    REQUIRE(simulator.variable("Lamp") == cond::Value{true});
+    REQUIRE(simulator.setVariable("Stop", true));
+    const ScanRecord record = simulator.step();
+    CHECK(record.fired == "F->D1");
+    CHECK(simulator.variable("Lamp") == cond::Value{false});
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2}); // the FB is no longer called
+}
+
+TEST_CASE("Simultaneous divergence and convergence; a step both left and entered stays", "[simulation][nested-simulation]")
+{
+    Model model;
+    REQUIRE(model.addVariable(variable("Go", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(variable("Count", IecType::Int, VariableKind::Internal)));
+    REQUIRE(model.setInitialStep("F1"));
+    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
+    REQUIRE(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::OnActivation, "Count := Count + 1"}}}));
+    REQUIRE(model.addGrafcetStep("F1", {3, false, "", {}}));
+    REQUIRE(model.addGrafcetStep("F1", {4, false, "", {}}));
+    REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2, 3}, "Go"}));
+    REQUIRE(model.addGrafcetTransition("F1", {2, {2, 3}, {4}, "NOT Go"}));
+    // 2 -> 2 when Go: left and entered at once, it stays and its action does not run again.
+    REQUIRE(model.addGrafcetTransition("F1", {3, {2}, {2}, "Go"}));
+    Simulator simulator(model);
+    REQUIRE(simulator.setVariable("Go", true));
+    simulator.step();
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2, 3});
+    CHECK(simulator.variable("Count") == cond::Value{std::int64_t{1}});
+    simulator.step();
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2, 3});
+    CHECK(simulator.variable("Count") == cond::Value{std::int64_t{1}});
+    REQUIRE(simulator.setVariable("Go", false));
+    simulator.step();
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{4});
+}
+
+TEST_CASE("Until stable: the search goes on, bounded, and reports Unstable", "[simulation][nested-simulation]")
+{
+    Model model;
+    REQUIRE(model.addVariable(variable("A", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.setInitialStep("F1"));
+    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
+    REQUIRE(model.addGrafcetStep("F1", {2, false, "", {}}));
+    REQUIRE(model.addGrafcetStep("F1", {3, false, "", {}}));
+    REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2}, "A"}));
+    REQUIRE(model.addGrafcetTransition("F1", {2, {2}, {3}, "TRUE"}));
+    REQUIRE(model.addGrafcetTransition("F1", {3, {3}, {1}, "NOT A"}));
+    Model stable(model);
+    stable.setEvolutionRule(EvolutionRule::UntilStable);
+
+    Simulator perScan(model);
+    REQUIRE(perScan.setVariable("A", true));
+    perScan.step();
+    CHECK(perScan.activeNestedSteps("F1") == std::vector<int>{2}); // one evolution per call
+
+    Simulator search(stable);
+    REQUIRE(search.setVariable("A", true));
+    search.step();
+    CHECK(search.activeNestedSteps("F1") == std::vector<int>{3}); // 1 -> 2 -> 3 in one call
+    CHECK_FALSE(search.unstable("F1"));
+
+    Model looping(stable);
+    REQUIRE(looping.setReceptivity("F1", 3, "TRUE"));
+    Simulator endless(looping);
+    REQUIRE(endless.setVariable("A", true));
+    endless.step();
+    CHECK(endless.unstable("F1")); // four evolutions allowed, the last still fired
+}
+
+TEST_CASE("Scenarios set inputs only and expect nested steps and Unstable", "[simulation][nested-simulation][scenario]")
+{
+    Simulator simulator(timedModel());
+    const ScenarioParseResult bad = parseScenario("at 1: set Lamp = TRUE\nat 1: set complete F1 = TRUE\n", "s.txt");
+    REQUIRE(bad.ok());
+    const std::vector<ScenarioError> errors = validateScenario(bad.scenario, simulator);
+    REQUIRE(errors.size() == 2);
+    CHECK(errors[0].toString() == "s.txt:1:11: Lamp is an output variable: the program writes it, a scenario sets only inputs");
+    CHECK(errors[1].toString() == "s.txt:2:20: the Complete of F1 comes from its nested GRAFCET: it cannot be set");
+
+    const ScenarioParseResult good = parseScenario("at 1: expect nested F1 steps 1\n"
+                                                   "at 3: set Start = TRUE\n"
+                                                   "at 3: expect nested f1 steps 2\n"
+                                                   "at 3: expect variable Lamp = TRUE\n"
+                                                   "at 3: expect nested F1 unstable = FALSE\n"
+                                                   "at 4: expect nested F1 steps 3, 1\n",
+                                                   "s.txt");
+    REQUIRE(good.ok());
+    REQUIRE(validateScenario(good.scenario, simulator).empty());
+    ScenarioRunner runner(good.scenario, simulator);
+    std::vector<ScenarioFailure> failures;
+    for (int scan = 0; scan < 4; ++scan) {
+        runner.step();
+        failures.insert(failures.end(), runner.lastFailures().begin(), runner.lastFailures().end());
+    }
+    REQUIRE(failures.size() == 1);
+    CHECK(toText(failures[0]) == "scan 4: expected the active steps of F1 to be 1, 3, they are 2");
+
+    CHECK_FALSE(parseScenario("at 1: expect nested F1 stages 2\n").ok());
+    CHECK_FALSE(parseScenario("at 1: expect nested F1 steps two\n").ok());
+}
+
+TEST_CASE("The shipped example runs a production cycle", "[simulation][nested-simulation][example]")
+{
+    const auto loaded = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(loaded.model);
+    Simulator simulator(*loaded.model);
+    const auto set = [&](const char* name, bool value) { REQUIRE(simulator.setVariable(name, value)); };
+    set("DrillHigh", true);
+    set("Unclamped", true);
+    set("StartButton", true);
+    simulator.run(2);
+    CHECK(simulator.activeStepId() == "F2");
+    simulator.run(1100); // 10 s of warm-up at 10 ms
+    CHECK(simulator.activeStepId() == "F1");
+    CHECK(simulator.variable("ReadyLamp") == cond::Value{true});
+    set("PartPresent", true);
+    simulator.run(2);
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2});
+    CHECK(simulator.variable("ClampOut") == cond::Value{true});
+    set("Unclamped", false);
+    set("Clamped", true);
+    simulator.run(2);
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{3, 5}); // drill and mark in parallel
+    CHECK(simulator.variable("Spindle") == cond::Value{true});
+    CHECK(simulator.variable("Marker") == cond::Value{true});
+}
