@@ -129,6 +129,10 @@ QString nestedGrafcetText(const core::Diagnostic& d)
         return DiagnosticText::tr("Under the until-stable rule, step %2 of %1 is left in the call that enters it (%3 "
                                   "is always TRUE): the GEMMA layer never sees what it does to Complete.")
             .arg(arg(0), arg(1), arg(2));
+    if (code == "GG420" && n == 2)
+        //: %2: why, in English (a technical reason)
+        return DiagnosticText::tr("Variable '%1' has a name the code of the nested GRAFCETs uses: %2.")
+            .arg(arg(0), arg(1));
     if (code == "GG422" && n == 2)
         return a[1] == "hidden"
             ? DiagnosticText::tr("The nested GRAFCET of %1 is kept but not used: %1 is hidden.").arg(arg(0))

@@ -437,10 +437,53 @@ std::vector<Diagnostic> elementDiagnostics(const Model& model)
     return result;
 }
 
+// Spec §4.5: the names the code of nested GRAFCETs declares.
+std::optional<std::string> reservedNestedName(const Variable& variable, const GemmaProgram& program)
+{
+    const std::string& name = variable.name;
+    if (cond::stepActivityNumber(name) > 0)
+        return "X followed by a number is a step activity";
+    if (equalsIgnoreCase(name, kUnstableName))
+        return "Unstable is an output of the function blocks";
+    if (name.size() > 3 && equalsIgnoreCase(std::string_view(name).substr(0, 3), "GG_"))
+        return "names starting with GG_ are the generated code's";
+    for (const std::string& edged : program.edgeVariables) {
+        if (equalsIgnoreCase(name, edgeMemoryName(edged)))
+            return "it is the edge memory of " + edged;
+    }
+    return std::nullopt;
+}
+
+std::vector<Diagnostic> reservedNameDiagnostics(const Model& model)
+{
+    std::vector<Diagnostic> result;
+    const bool anyEffective = std::any_of(model.steps().begin(), model.steps().end(),
+                                          [&](const Step& s) { return model.effectiveGrafcet(s.id) != nullptr; });
+    if (!anyEffective)
+        return result;
+    const GemmaProgram program = buildGemmaProgram(model);
+    for (const Variable& variable : model.variables()) {
+        const std::optional<std::string> why = reservedNestedName(variable, program);
+        if (!why)
+            continue;
+        Diagnostic d;
+        d.code = "GG420";
+        d.target = Diagnostic::Target::Variable;
+        d.element = variable.name;
+        d.field = "name";
+        d.message = "variable '" + variable.name + "' has a name the code of the nested GRAFCETs uses: " + *why;
+        d.arguments = {variable.name, *why};
+        result.push_back(std::move(d));
+    }
+    return result;
+}
+
 std::vector<Diagnostic> checkGrafcets(const Model& model)
 {
     std::vector<Diagnostic> result = GrafcetChecker(model).run();
     for (Diagnostic& d : elementDiagnostics(model))
+        result.push_back(std::move(d));
+    for (Diagnostic& d : reservedNameDiagnostics(model))
         result.push_back(std::move(d));
     return result;
 }

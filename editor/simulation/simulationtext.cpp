@@ -88,6 +88,11 @@ QString failureProblem(const core::ScenarioFailure& failure)
     case Kind::WrongEntry: return SimulationText::tr("expected Entry = %1, it is %2").arg(expected, actual);
     case Kind::WrongComplete:
         return SimulationText::tr("expected %1.Complete = %2, it is %3").arg(subject, expected, actual);
+    case Kind::WrongNestedSteps:
+        //: %1: a GEMMA step; %2, %3: lists of nested step numbers
+        return SimulationText::tr("expected the active steps of %1 to be %2, they are %3").arg(subject, expected, actual);
+    case Kind::WrongUnstable:
+        return SimulationText::tr("expected %1.Unstable = %2, it is %3").arg(subject, expected, actual);
     }
     return {};
 }
@@ -118,8 +123,15 @@ QString syntaxErrorText(core::ScenarioError::Kind kind, const QString& found)
         return SimulationText::tr("expected a variable name after 'variable', found %1").arg(found);
     case Kind::ExpectedExpectItem:
         //: step, fired, token, variable, entry and complete are scenario syntax
-        return SimulationText::tr("expected step, fired, token, variable, entry or complete after 'expect', found %1")
+        return SimulationText::tr(
+                   "expected step, fired, token, variable, entry, complete or nested after 'expect', found %1")
             .arg(found);
+    case Kind::ExpectedStepAfterNested:
+        return SimulationText::tr("expected a step id after 'nested', found %1").arg(found);
+    case Kind::ExpectedNestedItem:
+        //: steps and unstable are scenario syntax
+        return SimulationText::tr("expected 'steps' or 'unstable' after the step id, found %1").arg(found);
+    case Kind::ExpectedStepNumber: return SimulationText::tr("expected a step number, found %1").arg(found);
     case Kind::ExpectedEqualsAfterStep:
         return SimulationText::tr("expected '=' after the step id, found %1").arg(found);
     case Kind::ExpectedEqualsAfterVariable:
@@ -167,6 +179,14 @@ QString scenarioErrorMessage(const core::ScenarioError& error)
     case Kind::HiddenStep: return SimulationText::tr("step %1 is hidden: it does not exist for the simulator").arg(subject);
     case Kind::UnknownStep: return SimulationText::tr("unknown step '%1'").arg(subject);
     case Kind::SimpleStep: return SimulationText::tr("step %1 is a simple step: it has no Complete").arg(subject);
+    case Kind::NotAnInput:
+        return error.detail == "output"
+            ? SimulationText::tr("%1 is an output variable: the program writes it, a scenario sets only inputs").arg(subject)
+            : SimulationText::tr("%1 is an internal variable: the program writes it, a scenario sets only inputs")
+                  .arg(subject);
+    case Kind::NoGrafcet: return SimulationText::tr("step %1 has no nested GRAFCET").arg(subject);
+    case Kind::CompleteFromGrafcet:
+        return SimulationText::tr("the Complete of %1 comes from its nested GRAFCET: it cannot be set").arg(subject);
     case Kind::IneffectiveTransition:
         return SimulationText::tr("transition %1 is not effective (it or one of its steps is hidden)").arg(subject);
     case Kind::UnknownTransition: return SimulationText::tr("unknown transition '%1'").arg(subject);

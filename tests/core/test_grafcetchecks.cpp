@@ -249,3 +249,19 @@ TEST_CASE("Variables used only by nested GRAFCETs are used", "[grafcet-checks]")
     CHECK(std::count(after.begin(), after.end(), "B") == 0);
     CHECK(std::count(after.begin(), after.end(), "A") == 0);
 }
+
+TEST_CASE("GG420: user variables named like the nested GRAFCETs' generated names", "[grafcet-checks]")
+{
+    Grafcet g = correctGrafcet();
+    REQUIRE(g.setReceptivity(1, "RE A"));
+    Model model = modelWith(g);
+    for (const char* name : {"X12", "unstable", "GG_Fire1", "A_PREV", "Xylophone", "B_PREV"})
+        REQUIRE(model.addVariable(Variable{name, IecType::Bool, "", ""}));
+    std::vector<std::string> flagged;
+    for (const Diagnostic& d : withCode(model, "GG420"))
+        flagged.push_back(d.element);
+    CHECK(flagged == std::vector<std::string>{"X12", "unstable", "GG_Fire1", "A_PREV"});
+    // Without an effective nested GRAFCET these names are free.
+    REQUIRE(model.setStepHidden("F1", true));
+    CHECK(withCode(model, "GG420").empty());
+}
