@@ -168,6 +168,73 @@
         <source>unexpected &apos;%1&apos; after a complete condition (missing operator?)</source>
         <translation>unerwartetes &apos;%1&apos; nach einer vollständigen Bedingung (fehlt ein Operator?)</translation>
     </message>
+    <message>
+        <source>an edge (RE, FE, ↑, ↓) applies to a variable name</source>
+        <translation>eine Flanke (RE, FE, ↑, ↓) gilt für einen Variablennamen</translation>
+    </message>
+    <message>
+        <source>an edge (RE, FE, ↑, ↓) applies to a variable name, not to &apos;%1&apos;</source>
+        <extracomment>%1: what follows RE, FE, ↑ or ↓ instead of a variable name</extracomment>
+        <translation>eine Flanke (RE, FE, ↑, ↓) gilt für einen Variablennamen, nicht für „%1“</translation>
+    </message>
+    <message>
+        <source>the duration &apos;%1&apos; must be followed by /X&lt;step&gt;, as in %1/X3</source>
+        <extracomment>%1: a duration such as 5s; X3 is step 3&apos;s activity, keep it as is</extracomment>
+        <translation>auf die Dauer „%1“ muss /X&lt;Schritt&gt; folgen, wie in %1/X3</translation>
+    </message>
+    <message>
+        <source>expected a step activity X&lt;step&gt; after &apos;/&apos; of the duration</source>
+        <translation>nach dem „/“ der Dauer wird eine Schrittaktivität X&lt;Schritt&gt; erwartet</translation>
+    </message>
+    <message>
+        <source>expected a step activity X&lt;step&gt; after &apos;/&apos; of the duration, found &apos;%1&apos;</source>
+        <translation>nach dem „/“ der Dauer wird eine Schrittaktivität X&lt;Schritt&gt; erwartet, gefunden: „%1“</translation>
+    </message>
+    <message>
+        <source>the duration &apos;%1&apos; is zero: write a positive duration</source>
+        <translation>die Dauer „%1“ ist null: schreiben Sie eine positive Dauer</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid duration: write for example 200ms, 5s, 1m30s or T#5s (units d, h, m, s, ms, largest first)</source>
+        <translation>„%1“ ist keine gültige Dauer: schreiben Sie zum Beispiel 200ms, 5s, 1m30s oder T#5s (Einheiten d, h, m, s, ms, die größte zuerst)</translation>
+    </message>
+    <message>
+        <source>empty action: write for example Valve, S Valve, R Valve or Count := Count + 1</source>
+        <translation>leere Aktion: schreiben Sie zum Beispiel Valve, S Valve, R Valve oder Count := Count + 1</translation>
+    </message>
+    <message>
+        <source>an action writes a variable: &apos;%1&apos; is not a variable name</source>
+        <translation>eine Aktion schreibt eine Variable: „%1“ ist kein Variablenname</translation>
+    </message>
+    <message>
+        <source>the qualifier &apos;%1&apos; is not supported: use N (or none), S, R or an assignment V := value</source>
+        <translation>der Bestimmungszeichen „%1“ wird nicht unterstützt: verwenden Sie N (oder keines), S, R oder eine Zuweisung V := Wert</translation>
+    </message>
+    <message>
+        <source>an assignment takes no qualifier: write V := value, without &apos;%1&apos;</source>
+        <translation>eine Zuweisung hat kein Bestimmungszeichen: schreiben Sie V := Wert, ohne „%1“</translation>
+    </message>
+    <message>
+        <source>a stored action (%1) takes no IF condition: only continuous actions are conditional</source>
+        <extracomment>%1: the qualifier S or R</extracomment>
+        <translation>eine speichernde Aktion (%1) hat keine IF-Bedingung: nur kontinuierliche Aktionen sind bedingt</translation>
+    </message>
+    <message>
+        <source>expected a value after &apos;:=&apos;</source>
+        <translation>nach „:=“ wird ein Wert erwartet</translation>
+    </message>
+    <message>
+        <source>expected a condition after IF</source>
+        <translation>nach IF wird eine Bedingung erwartet</translation>
+    </message>
+    <message>
+        <source>use := to assign a value; = compares</source>
+        <translation>verwenden Sie := für eine Zuweisung; = vergleicht</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete action</source>
+        <translation>unerwartetes „%1“ nach einer vollständigen Aktion</translation>
+    </message>
 </context>
 <context>
     <name>ConditionTypeErrorText</name>
@@ -414,6 +481,45 @@
     <message>
         <source>Not confirmed: a condition uses a comparison the verifier cannot decide, and the counterexample does not replay.</source>
         <translation>Nicht bestätigt: Eine Bedingung verwendet einen Vergleich, den der Verifizierer nicht entscheiden kann, und das Gegenbeispiel lässt sich nicht abspielen.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 has no initial step: it would never do anything.</source>
+        <translation>Der eingebettete GRAFCET von %1 hat keinen Anfangsschritt: er würde nie etwas tun.</translation>
+    </message>
+    <message>
+        <source>Step %2 of %1 cannot be reached from the initial steps through transitions: it can never become active.</source>
+        <translation>Schritt %2 von %1 ist von den Anfangsschritten über Transitionen nicht erreichbar: er kann nie aktiv werden.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 never sets Complete, so %2, which wait for it, can never fire.</source>
+        <extracomment>%2: the GEMMA transitions that wait for Complete</extracomment>
+        <translation>Der eingebettete GRAFCET von %1 setzt Complete nie, daher können %2, die darauf warten, nie schalten.</translation>
+    </message>
+    <message>
+        <source>The selection after step %2 of %1 is not exclusive: %3 and %4 can both fire (with %5), and both branches then start.</source>
+        <extracomment>%3, %4: two nested transitions; %5: the values that make both receptivities TRUE</extracomment>
+        <translation>Die Auswahl nach Schritt %2 von %1 ist nicht exklusiv: %3 und %4 können gleichzeitig schalten (mit %5), und dann starten beide Zweige.</translation>
+    </message>
+    <message>
+        <source>Step %2 of %1 has no outgoing transition and does not set Complete: the GRAFCET stops there for good.</source>
+        <translation>Schritt %2 von %1 hat keine nachfolgende Transition und setzt Complete nicht: der GRAFCET bleibt dort für immer stehen.</translation>
+    </message>
+    <message>
+        <source>Under the until-stable rule, step %2 of %1 is left in the call that enters it (%3 is always TRUE): the GEMMA layer never sees what it does to Complete.</source>
+        <translation>Nach der Regel „bis stabil“ wird Schritt %2 von %1 im selben Aufruf verlassen, der ihn aktiviert (%3 ist immer wahr): die GEMMA-Ebene sieht nie, was er mit Complete macht.</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has a name the code of the nested GRAFCETs uses: %2.</source>
+        <extracomment>%2: why, in English (a technical reason)</extracomment>
+        <translation>Die Variable „%1“ hat einen Namen, den der Code der eingebetteten GRAFCETs verwendet: %2.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 is kept but not used: %1 is hidden.</source>
+        <translation>Der eingebettete GRAFCET von %1 bleibt erhalten, wird aber nicht verwendet: %1 ist ausgeblendet.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 is kept but not used: %1 is a simple step.</source>
+        <translation>Der eingebettete GRAFCET von %1 bleibt erhalten, wird aber nicht verwendet: %1 ist ein einfacher Schritt.</translation>
     </message>
 </context>
 <context>
@@ -818,11 +924,6 @@
         <translation>Variablenname nach &apos;variable&apos; erwartet, %1 gefunden</translation>
     </message>
     <message>
-        <source>expected step, fired, token, variable, entry or complete after &apos;expect&apos;, found %1</source>
-        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
-        <translation>step, fired, token, variable, entry oder complete nach &apos;expect&apos; erwartet, %1 gefunden</translation>
-    </message>
-    <message>
         <source>expected &apos;=&apos; after the step id, found %1</source>
         <translation>&apos;=&apos; nach der Schrittkennung erwartet, %1 gefunden</translation>
     </message>
@@ -913,6 +1014,49 @@
         <source>%1 is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
         <extracomment>a variable, a scan number, then each value with the line that sets it</extracomment>
         <translation>%1 erhält in Zyklus %2 zwei Werte: %3 in Zeile %4, %5 in Zeile %6</translation>
+    </message>
+    <message>
+        <source>expected the active steps of %1 to be %2, they are %3</source>
+        <extracomment>%1: a GEMMA step; %2, %3: lists of nested step numbers</extracomment>
+        <translation>erwartet waren die aktiven Schritte %2 in %1, sie sind %3</translation>
+    </message>
+    <message>
+        <source>expected %1.Unstable = %2, it is %3</source>
+        <translation>erwartet war %1.Unstable = %2, es ist %3</translation>
+    </message>
+    <message>
+        <source>expected step, fired, token, variable, entry, complete or nested after &apos;expect&apos;, found %1</source>
+        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
+        <translation>step, fired, token, variable, entry, complete oder nested nach „expect“ erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;nested&apos;, found %1</source>
+        <translation>nach „nested“ wird eine Schritt-ID erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;steps&apos; or &apos;unstable&apos; after the step id, found %1</source>
+        <extracomment>steps and unstable are scenario syntax</extracomment>
+        <translation>nach der Schritt-ID wird „steps“ oder „unstable“ erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>expected a step number, found %1</source>
+        <translation>eine Schrittnummer wird erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>%1 is an output variable: the program writes it, a scenario sets only inputs</source>
+        <translation>%1 ist eine Ausgangsvariable: das Programm schreibt sie, ein Szenario setzt nur Eingänge</translation>
+    </message>
+    <message>
+        <source>%1 is an internal variable: the program writes it, a scenario sets only inputs</source>
+        <translation>%1 ist eine interne Variable: das Programm schreibt sie, ein Szenario setzt nur Eingänge</translation>
+    </message>
+    <message>
+        <source>step %1 has no nested GRAFCET</source>
+        <translation>Schritt %1 hat keinen eingebetteten GRAFCET</translation>
+    </message>
+    <message>
+        <source>the Complete of %1 comes from its nested GRAFCET: it cannot be set</source>
+        <translation>das Complete von %1 kommt aus seinem eingebetteten GRAFCET: es kann nicht gesetzt werden</translation>
     </message>
 </context>
 <context>
@@ -1696,6 +1840,16 @@
     <message>
         <source>Verification (%1)</source>
         <translation>Verifikation (%1)</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 Schritt %2</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
     </message>
 </context>
 <context>

@@ -168,6 +168,73 @@
         <source>unexpected &apos;%1&apos; after a complete condition (missing operator?)</source>
         <translation>&apos;%1&apos; inesperado después de una condición completa (¿falta un operador?)</translation>
     </message>
+    <message>
+        <source>an edge (RE, FE, ↑, ↓) applies to a variable name</source>
+        <translation>un flanco (RE, FE, ↑, ↓) se aplica a un nombre de variable</translation>
+    </message>
+    <message>
+        <source>an edge (RE, FE, ↑, ↓) applies to a variable name, not to &apos;%1&apos;</source>
+        <extracomment>%1: what follows RE, FE, ↑ or ↓ instead of a variable name</extracomment>
+        <translation>un flanco (RE, FE, ↑, ↓) se aplica a un nombre de variable, no a «%1»</translation>
+    </message>
+    <message>
+        <source>the duration &apos;%1&apos; must be followed by /X&lt;step&gt;, as in %1/X3</source>
+        <extracomment>%1: a duration such as 5s; X3 is step 3&apos;s activity, keep it as is</extracomment>
+        <translation>la duración «%1» debe ir seguida de /X&lt;etapa&gt;, como en %1/X3</translation>
+    </message>
+    <message>
+        <source>expected a step activity X&lt;step&gt; after &apos;/&apos; of the duration</source>
+        <translation>se esperaba una actividad de etapa X&lt;etapa&gt; tras la «/» de la duración</translation>
+    </message>
+    <message>
+        <source>expected a step activity X&lt;step&gt; after &apos;/&apos; of the duration, found &apos;%1&apos;</source>
+        <translation>se esperaba una actividad de etapa X&lt;etapa&gt; tras la «/» de la duración, se encontró «%1»</translation>
+    </message>
+    <message>
+        <source>the duration &apos;%1&apos; is zero: write a positive duration</source>
+        <translation>la duración «%1» es cero: escriba una duración positiva</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid duration: write for example 200ms, 5s, 1m30s or T#5s (units d, h, m, s, ms, largest first)</source>
+        <translation>«%1» no es una duración válida: escriba por ejemplo 200ms, 5s, 1m30s o T#5s (unidades d, h, m, s, ms, de mayor a menor)</translation>
+    </message>
+    <message>
+        <source>empty action: write for example Valve, S Valve, R Valve or Count := Count + 1</source>
+        <translation>acción vacía: escriba por ejemplo Valve, S Valve, R Valve o Count := Count + 1</translation>
+    </message>
+    <message>
+        <source>an action writes a variable: &apos;%1&apos; is not a variable name</source>
+        <translation>una acción escribe una variable: «%1» no es un nombre de variable</translation>
+    </message>
+    <message>
+        <source>the qualifier &apos;%1&apos; is not supported: use N (or none), S, R or an assignment V := value</source>
+        <translation>el calificador «%1» no está soportado: use N (o ninguno), S, R o una asignación V := valor</translation>
+    </message>
+    <message>
+        <source>an assignment takes no qualifier: write V := value, without &apos;%1&apos;</source>
+        <translation>una asignación no lleva calificador: escriba V := valor, sin «%1»</translation>
+    </message>
+    <message>
+        <source>a stored action (%1) takes no IF condition: only continuous actions are conditional</source>
+        <extracomment>%1: the qualifier S or R</extracomment>
+        <translation>una acción memorizada (%1) no lleva condición IF: solo las acciones continuas son condicionales</translation>
+    </message>
+    <message>
+        <source>expected a value after &apos;:=&apos;</source>
+        <translation>se esperaba un valor tras «:=»</translation>
+    </message>
+    <message>
+        <source>expected a condition after IF</source>
+        <translation>se esperaba una condición tras IF</translation>
+    </message>
+    <message>
+        <source>use := to assign a value; = compares</source>
+        <translation>use := para asignar un valor; = compara</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete action</source>
+        <translation>«%1» inesperado tras una acción completa</translation>
+    </message>
 </context>
 <context>
     <name>ConditionTypeErrorText</name>
@@ -414,6 +481,45 @@
     <message>
         <source>Not confirmed: a condition uses a comparison the verifier cannot decide, and the counterexample does not replay.</source>
         <translation>No confirmado: una condición usa una comparación que el verificador no puede decidir, y el contraejemplo no se reproduce.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 has no initial step: it would never do anything.</source>
+        <translation>El GRAFCET anidado de %1 no tiene etapa inicial: nunca haría nada.</translation>
+    </message>
+    <message>
+        <source>Step %2 of %1 cannot be reached from the initial steps through transitions: it can never become active.</source>
+        <translation>La etapa %2 de %1 no se puede alcanzar desde las etapas iniciales mediante transiciones: nunca puede activarse.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 never sets Complete, so %2, which wait for it, can never fire.</source>
+        <extracomment>%2: the GEMMA transitions that wait for Complete</extracomment>
+        <translation>El GRAFCET anidado de %1 nunca activa Complete, así que %2, que lo esperan, nunca pueden dispararse.</translation>
+    </message>
+    <message>
+        <source>The selection after step %2 of %1 is not exclusive: %3 and %4 can both fire (with %5), and both branches then start.</source>
+        <extracomment>%3, %4: two nested transitions; %5: the values that make both receptivities TRUE</extracomment>
+        <translation>La selección tras la etapa %2 de %1 no es exclusiva: %3 y %4 pueden dispararse a la vez (con %5), y entonces arrancan ambas ramas.</translation>
+    </message>
+    <message>
+        <source>Step %2 of %1 has no outgoing transition and does not set Complete: the GRAFCET stops there for good.</source>
+        <translation>La etapa %2 de %1 no tiene transición de salida y no activa Complete: el GRAFCET se detiene ahí para siempre.</translation>
+    </message>
+    <message>
+        <source>Under the until-stable rule, step %2 of %1 is left in the call that enters it (%3 is always TRUE): the GEMMA layer never sees what it does to Complete.</source>
+        <translation>Con la regla «hasta estabilidad», la etapa %2 de %1 se abandona en la misma llamada que la activa (%3 siempre es verdadera): la capa GEMMA nunca ve lo que hace con Complete.</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has a name the code of the nested GRAFCETs uses: %2.</source>
+        <extracomment>%2: why, in English (a technical reason)</extracomment>
+        <translation>La variable «%1» tiene un nombre que usa el código de los GRAFCET anidados: %2.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 is kept but not used: %1 is hidden.</source>
+        <translation>El GRAFCET anidado de %1 se conserva pero no se usa: %1 está oculta.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 is kept but not used: %1 is a simple step.</source>
+        <translation>El GRAFCET anidado de %1 se conserva pero no se usa: %1 es una etapa simple.</translation>
     </message>
 </context>
 <context>
@@ -818,11 +924,6 @@
         <translation>se esperaba un nombre de variable después de &apos;variable&apos;, se encontró %1</translation>
     </message>
     <message>
-        <source>expected step, fired, token, variable, entry or complete after &apos;expect&apos;, found %1</source>
-        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
-        <translation>se esperaba step, fired, token, variable, entry o complete después de &apos;expect&apos;, se encontró %1</translation>
-    </message>
-    <message>
         <source>expected &apos;=&apos; after the step id, found %1</source>
         <translation>se esperaba &apos;=&apos; después del identificador de etapa, se encontró %1</translation>
     </message>
@@ -913,6 +1014,49 @@
         <source>%1 is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
         <extracomment>a variable, a scan number, then each value with the line that sets it</extracomment>
         <translation>%1 recibe dos valores en el ciclo %2: %3 en la línea %4, %5 en la línea %6</translation>
+    </message>
+    <message>
+        <source>expected the active steps of %1 to be %2, they are %3</source>
+        <extracomment>%1: a GEMMA step; %2, %3: lists of nested step numbers</extracomment>
+        <translation>se esperaban las etapas activas %2 en %1, son %3</translation>
+    </message>
+    <message>
+        <source>expected %1.Unstable = %2, it is %3</source>
+        <translation>se esperaba %1.Unstable = %2, vale %3</translation>
+    </message>
+    <message>
+        <source>expected step, fired, token, variable, entry, complete or nested after &apos;expect&apos;, found %1</source>
+        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
+        <translation>se esperaba step, fired, token, variable, entry, complete o nested tras «expect», se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;nested&apos;, found %1</source>
+        <translation>se esperaba un identificador de etapa tras «nested», se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;steps&apos; or &apos;unstable&apos; after the step id, found %1</source>
+        <extracomment>steps and unstable are scenario syntax</extracomment>
+        <translation>se esperaba «steps» o «unstable» tras el identificador de etapa, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a step number, found %1</source>
+        <translation>se esperaba un número de etapa, se encontró %1</translation>
+    </message>
+    <message>
+        <source>%1 is an output variable: the program writes it, a scenario sets only inputs</source>
+        <translation>%1 es una variable de salida: el programa la escribe, un escenario solo fija entradas</translation>
+    </message>
+    <message>
+        <source>%1 is an internal variable: the program writes it, a scenario sets only inputs</source>
+        <translation>%1 es una variable interna: el programa la escribe, un escenario solo fija entradas</translation>
+    </message>
+    <message>
+        <source>step %1 has no nested GRAFCET</source>
+        <translation>la etapa %1 no tiene GRAFCET anidado</translation>
+    </message>
+    <message>
+        <source>the Complete of %1 comes from its nested GRAFCET: it cannot be set</source>
+        <translation>el Complete de %1 viene de su GRAFCET anidado: no se puede fijar</translation>
     </message>
 </context>
 <context>
@@ -1696,6 +1840,16 @@
     <message>
         <source>Verification (%1)</source>
         <translation>Verificación (%1)</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 etapa %2</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
     </message>
 </context>
 <context>

@@ -168,6 +168,73 @@
         <source>unexpected &apos;%1&apos; after a complete condition (missing operator?)</source>
         <translation>&apos;%1&apos; inattendu après une réceptivité complète (opérateur manquant&#xa0;?)</translation>
     </message>
+    <message>
+        <source>an edge (RE, FE, ↑, ↓) applies to a variable name</source>
+        <translation>un front (RE, FE, ↑, ↓) s&apos;applique à un nom de variable</translation>
+    </message>
+    <message>
+        <source>an edge (RE, FE, ↑, ↓) applies to a variable name, not to &apos;%1&apos;</source>
+        <extracomment>%1: what follows RE, FE, ↑ or ↓ instead of a variable name</extracomment>
+        <translation>un front (RE, FE, ↑, ↓) s&apos;applique à un nom de variable, pas à « %1 »</translation>
+    </message>
+    <message>
+        <source>the duration &apos;%1&apos; must be followed by /X&lt;step&gt;, as in %1/X3</source>
+        <extracomment>%1: a duration such as 5s; X3 is step 3&apos;s activity, keep it as is</extracomment>
+        <translation>la durée « %1 » doit être suivie de /X&lt;étape&gt;, comme dans %1/X3</translation>
+    </message>
+    <message>
+        <source>expected a step activity X&lt;step&gt; after &apos;/&apos; of the duration</source>
+        <translation>activité d&apos;étape X&lt;étape&gt; attendue après le « / » de la durée</translation>
+    </message>
+    <message>
+        <source>expected a step activity X&lt;step&gt; after &apos;/&apos; of the duration, found &apos;%1&apos;</source>
+        <translation>activité d&apos;étape X&lt;étape&gt; attendue après le « / » de la durée, trouvé « %1 »</translation>
+    </message>
+    <message>
+        <source>the duration &apos;%1&apos; is zero: write a positive duration</source>
+        <translation>la durée « %1 » est nulle : écrivez une durée positive</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid duration: write for example 200ms, 5s, 1m30s or T#5s (units d, h, m, s, ms, largest first)</source>
+        <translation>« %1 » n&apos;est pas une durée valide : écrivez par exemple 200ms, 5s, 1m30s ou T#5s (unités d, h, m, s, ms, de la plus grande à la plus petite)</translation>
+    </message>
+    <message>
+        <source>empty action: write for example Valve, S Valve, R Valve or Count := Count + 1</source>
+        <translation>action vide : écrivez par exemple Valve, S Valve, R Valve ou Count := Count + 1</translation>
+    </message>
+    <message>
+        <source>an action writes a variable: &apos;%1&apos; is not a variable name</source>
+        <translation>une action écrit une variable : « %1 » n&apos;est pas un nom de variable</translation>
+    </message>
+    <message>
+        <source>the qualifier &apos;%1&apos; is not supported: use N (or none), S, R or an assignment V := value</source>
+        <translation>le qualificatif « %1 » n&apos;est pas pris en charge : utilisez N (ou rien), S, R ou une affectation V := valeur</translation>
+    </message>
+    <message>
+        <source>an assignment takes no qualifier: write V := value, without &apos;%1&apos;</source>
+        <translation>une affectation ne prend pas de qualificatif : écrivez V := valeur, sans « %1 »</translation>
+    </message>
+    <message>
+        <source>a stored action (%1) takes no IF condition: only continuous actions are conditional</source>
+        <extracomment>%1: the qualifier S or R</extracomment>
+        <translation>une action mémorisée (%1) ne prend pas de condition IF : seules les actions continues sont conditionnelles</translation>
+    </message>
+    <message>
+        <source>expected a value after &apos;:=&apos;</source>
+        <translation>valeur attendue après « := »</translation>
+    </message>
+    <message>
+        <source>expected a condition after IF</source>
+        <translation>condition attendue après IF</translation>
+    </message>
+    <message>
+        <source>use := to assign a value; = compares</source>
+        <translation>utilisez := pour affecter une valeur ; = compare</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete action</source>
+        <translation>« %1 » inattendu après une action complète</translation>
+    </message>
 </context>
 <context>
     <name>ConditionTypeErrorText</name>
@@ -414,6 +481,45 @@
     <message>
         <source>Not confirmed: a condition uses a comparison the verifier cannot decide, and the counterexample does not replay.</source>
         <translation>Non confirmé&#xa0;: une réceptivité utilise une comparaison que le vérificateur ne sait pas trancher, et le contre-exemple ne se rejoue pas.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 has no initial step: it would never do anything.</source>
+        <translation>Le GRAFCET de %1 n&apos;a pas d&apos;étape initiale : il ne ferait jamais rien.</translation>
+    </message>
+    <message>
+        <source>Step %2 of %1 cannot be reached from the initial steps through transitions: it can never become active.</source>
+        <translation>L&apos;étape %2 de %1 ne peut pas être atteinte depuis les étapes initiales par des transitions : elle ne peut jamais devenir active.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 never sets Complete, so %2, which wait for it, can never fire.</source>
+        <extracomment>%2: the GEMMA transitions that wait for Complete</extracomment>
+        <translation>Le GRAFCET de %1 ne met jamais Complete à vrai : %2, qui l&apos;attendent, ne peuvent jamais être franchies.</translation>
+    </message>
+    <message>
+        <source>The selection after step %2 of %1 is not exclusive: %3 and %4 can both fire (with %5), and both branches then start.</source>
+        <extracomment>%3, %4: two nested transitions; %5: the values that make both receptivities TRUE</extracomment>
+        <translation>La sélection après l&apos;étape %2 de %1 n&apos;est pas exclusive : %3 et %4 peuvent être franchies ensemble (avec %5), et les deux branches démarrent alors.</translation>
+    </message>
+    <message>
+        <source>Step %2 of %1 has no outgoing transition and does not set Complete: the GRAFCET stops there for good.</source>
+        <translation>L&apos;étape %2 de %1 n&apos;a pas de transition aval et ne met pas Complete à vrai : le GRAFCET s&apos;y arrête définitivement.</translation>
+    </message>
+    <message>
+        <source>Under the until-stable rule, step %2 of %1 is left in the call that enters it (%3 is always TRUE): the GEMMA layer never sees what it does to Complete.</source>
+        <translation>Avec la règle « jusqu&apos;à stabilité », l&apos;étape %2 de %1 est quittée dans l&apos;appel qui l&apos;active (%3 est toujours vraie) : la couche GEMMA ne voit jamais ce qu&apos;elle fait de Complete.</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has a name the code of the nested GRAFCETs uses: %2.</source>
+        <extracomment>%2: why, in English (a technical reason)</extracomment>
+        <translation>La variable « %1 » porte un nom qu&apos;utilise le code des GRAFCET imbriqués : %2.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 is kept but not used: %1 is hidden.</source>
+        <translation>Le GRAFCET de %1 est conservé mais inutilisé : %1 est masquée.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 is kept but not used: %1 is a simple step.</source>
+        <translation>Le GRAFCET de %1 est conservé mais inutilisé : %1 est une étape simple.</translation>
     </message>
 </context>
 <context>
@@ -818,11 +924,6 @@
         <translation>nom de variable attendu après &apos;variable&apos;, trouvé %1</translation>
     </message>
     <message>
-        <source>expected step, fired, token, variable, entry or complete after &apos;expect&apos;, found %1</source>
-        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
-        <translation>step, fired, token, variable, entry ou complete attendu après &apos;expect&apos;, trouvé %1</translation>
-    </message>
-    <message>
         <source>expected &apos;=&apos; after the step id, found %1</source>
         <translation>&apos;=&apos; attendu après l&apos;identifiant d&apos;étape, trouvé %1</translation>
     </message>
@@ -913,6 +1014,49 @@
         <source>%1 is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
         <extracomment>a variable, a scan number, then each value with the line that sets it</extracomment>
         <translation>%1 reçoit deux valeurs au cycle %2&#xa0;: %3 ligne %4, %5 ligne %6</translation>
+    </message>
+    <message>
+        <source>expected the active steps of %1 to be %2, they are %3</source>
+        <extracomment>%1: a GEMMA step; %2, %3: lists of nested step numbers</extracomment>
+        <translation>étapes actives de %1 attendues : %2, elles sont : %3</translation>
+    </message>
+    <message>
+        <source>expected %1.Unstable = %2, it is %3</source>
+        <translation>%1.Unstable = %2 attendu, il vaut %3</translation>
+    </message>
+    <message>
+        <source>expected step, fired, token, variable, entry, complete or nested after &apos;expect&apos;, found %1</source>
+        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
+        <translation>step, fired, token, variable, entry, complete ou nested attendu après « expect », trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;nested&apos;, found %1</source>
+        <translation>identifiant d&apos;étape attendu après « nested », trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;steps&apos; or &apos;unstable&apos; after the step id, found %1</source>
+        <extracomment>steps and unstable are scenario syntax</extracomment>
+        <translation>« steps » ou « unstable » attendu après l&apos;identifiant d&apos;étape, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a step number, found %1</source>
+        <translation>numéro d&apos;étape attendu, trouvé %1</translation>
+    </message>
+    <message>
+        <source>%1 is an output variable: the program writes it, a scenario sets only inputs</source>
+        <translation>%1 est une variable de sortie : le programme l&apos;écrit, un scénario ne règle que les entrées</translation>
+    </message>
+    <message>
+        <source>%1 is an internal variable: the program writes it, a scenario sets only inputs</source>
+        <translation>%1 est une variable interne : le programme l&apos;écrit, un scénario ne règle que les entrées</translation>
+    </message>
+    <message>
+        <source>step %1 has no nested GRAFCET</source>
+        <translation>l&apos;étape %1 n&apos;a pas de GRAFCET imbriqué</translation>
+    </message>
+    <message>
+        <source>the Complete of %1 comes from its nested GRAFCET: it cannot be set</source>
+        <translation>le Complete de %1 vient de son GRAFCET imbriqué : il ne peut pas être réglé</translation>
     </message>
 </context>
 <context>
@@ -1696,6 +1840,16 @@
     <message>
         <source>Verification (%1)</source>
         <translation>Vérification (%1)</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 étape %2</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
     </message>
 </context>
 <context>

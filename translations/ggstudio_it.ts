@@ -168,6 +168,73 @@
         <source>unexpected &apos;%1&apos; after a complete condition (missing operator?)</source>
         <translation>&apos;%1&apos; inatteso dopo una condizione completa (manca un operatore?)</translation>
     </message>
+    <message>
+        <source>an edge (RE, FE, ↑, ↓) applies to a variable name</source>
+        <translation>un fronte (RE, FE, ↑, ↓) si applica a un nome di variabile</translation>
+    </message>
+    <message>
+        <source>an edge (RE, FE, ↑, ↓) applies to a variable name, not to &apos;%1&apos;</source>
+        <extracomment>%1: what follows RE, FE, ↑ or ↓ instead of a variable name</extracomment>
+        <translation>un fronte (RE, FE, ↑, ↓) si applica a un nome di variabile, non a «%1»</translation>
+    </message>
+    <message>
+        <source>the duration &apos;%1&apos; must be followed by /X&lt;step&gt;, as in %1/X3</source>
+        <extracomment>%1: a duration such as 5s; X3 is step 3&apos;s activity, keep it as is</extracomment>
+        <translation>la durata «%1» deve essere seguita da /X&lt;tappa&gt;, come in %1/X3</translation>
+    </message>
+    <message>
+        <source>expected a step activity X&lt;step&gt; after &apos;/&apos; of the duration</source>
+        <translation>attesa un&apos;attività di tappa X&lt;tappa&gt; dopo la «/» della durata</translation>
+    </message>
+    <message>
+        <source>expected a step activity X&lt;step&gt; after &apos;/&apos; of the duration, found &apos;%1&apos;</source>
+        <translation>attesa un&apos;attività di tappa X&lt;tappa&gt; dopo la «/» della durata, trovato «%1»</translation>
+    </message>
+    <message>
+        <source>the duration &apos;%1&apos; is zero: write a positive duration</source>
+        <translation>la durata «%1» è zero: scrivere una durata positiva</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a valid duration: write for example 200ms, 5s, 1m30s or T#5s (units d, h, m, s, ms, largest first)</source>
+        <translation>«%1» non è una durata valida: scrivere per esempio 200ms, 5s, 1m30s o T#5s (unità d, h, m, s, ms, dalla più grande)</translation>
+    </message>
+    <message>
+        <source>empty action: write for example Valve, S Valve, R Valve or Count := Count + 1</source>
+        <translation>azione vuota: scrivere per esempio Valve, S Valve, R Valve o Count := Count + 1</translation>
+    </message>
+    <message>
+        <source>an action writes a variable: &apos;%1&apos; is not a variable name</source>
+        <translation>un&apos;azione scrive una variabile: «%1» non è un nome di variabile</translation>
+    </message>
+    <message>
+        <source>the qualifier &apos;%1&apos; is not supported: use N (or none), S, R or an assignment V := value</source>
+        <translation>il qualificatore «%1» non è supportato: usare N (o nessuno), S, R o un&apos;assegnazione V := valore</translation>
+    </message>
+    <message>
+        <source>an assignment takes no qualifier: write V := value, without &apos;%1&apos;</source>
+        <translation>un&apos;assegnazione non ha qualificatore: scrivere V := valore, senza «%1»</translation>
+    </message>
+    <message>
+        <source>a stored action (%1) takes no IF condition: only continuous actions are conditional</source>
+        <extracomment>%1: the qualifier S or R</extracomment>
+        <translation>un&apos;azione memorizzata (%1) non ha condizione IF: solo le azioni continue sono condizionali</translation>
+    </message>
+    <message>
+        <source>expected a value after &apos;:=&apos;</source>
+        <translation>atteso un valore dopo «:=»</translation>
+    </message>
+    <message>
+        <source>expected a condition after IF</source>
+        <translation>attesa una condizione dopo IF</translation>
+    </message>
+    <message>
+        <source>use := to assign a value; = compares</source>
+        <translation>usare := per assegnare un valore; = confronta</translation>
+    </message>
+    <message>
+        <source>unexpected &apos;%1&apos; after a complete action</source>
+        <translation>«%1» inatteso dopo un&apos;azione completa</translation>
+    </message>
 </context>
 <context>
     <name>ConditionTypeErrorText</name>
@@ -414,6 +481,45 @@
     <message>
         <source>Not confirmed: a condition uses a comparison the verifier cannot decide, and the counterexample does not replay.</source>
         <translation>Non confermato: una condizione usa un confronto che il verificatore non sa decidere, e il controesempio non si riproduce.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 has no initial step: it would never do anything.</source>
+        <translation>Il GRAFCET annidato di %1 non ha tappa iniziale: non farebbe mai nulla.</translation>
+    </message>
+    <message>
+        <source>Step %2 of %1 cannot be reached from the initial steps through transitions: it can never become active.</source>
+        <translation>La tappa %2 di %1 non è raggiungibile dalle tappe iniziali tramite transizioni: non può mai diventare attiva.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 never sets Complete, so %2, which wait for it, can never fire.</source>
+        <extracomment>%2: the GEMMA transitions that wait for Complete</extracomment>
+        <translation>Il GRAFCET annidato di %1 non attiva mai Complete, quindi %2, che lo attendono, non possono mai scattare.</translation>
+    </message>
+    <message>
+        <source>The selection after step %2 of %1 is not exclusive: %3 and %4 can both fire (with %5), and both branches then start.</source>
+        <extracomment>%3, %4: two nested transitions; %5: the values that make both receptivities TRUE</extracomment>
+        <translation>La selezione dopo la tappa %2 di %1 non è esclusiva: %3 e %4 possono scattare insieme (con %5), e allora partono entrambi i rami.</translation>
+    </message>
+    <message>
+        <source>Step %2 of %1 has no outgoing transition and does not set Complete: the GRAFCET stops there for good.</source>
+        <translation>La tappa %2 di %1 non ha transizione in uscita e non attiva Complete: il GRAFCET si ferma lì per sempre.</translation>
+    </message>
+    <message>
+        <source>Under the until-stable rule, step %2 of %1 is left in the call that enters it (%3 is always TRUE): the GEMMA layer never sees what it does to Complete.</source>
+        <translation>Con la regola «fino a stabilità», la tappa %2 di %1 viene lasciata nella stessa chiamata che la attiva (%3 è sempre vera): il livello GEMMA non vede mai cosa fa di Complete.</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has a name the code of the nested GRAFCETs uses: %2.</source>
+        <extracomment>%2: why, in English (a technical reason)</extracomment>
+        <translation>La variabile «%1» ha un nome che usa il codice dei GRAFCET annidati: %2.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 is kept but not used: %1 is hidden.</source>
+        <translation>Il GRAFCET annidato di %1 è conservato ma non usato: %1 è nascosta.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 is kept but not used: %1 is a simple step.</source>
+        <translation>Il GRAFCET annidato di %1 è conservato ma non usato: %1 è una tappa semplice.</translation>
     </message>
 </context>
 <context>
@@ -818,11 +924,6 @@
         <translation>atteso un nome di variabile dopo &apos;variable&apos;, trovato %1</translation>
     </message>
     <message>
-        <source>expected step, fired, token, variable, entry or complete after &apos;expect&apos;, found %1</source>
-        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
-        <translation>atteso step, fired, token, variable, entry o complete dopo &apos;expect&apos;, trovato %1</translation>
-    </message>
-    <message>
         <source>expected &apos;=&apos; after the step id, found %1</source>
         <translation>atteso &apos;=&apos; dopo l&apos;identificativo di tappa, trovato %1</translation>
     </message>
@@ -913,6 +1014,49 @@
         <source>%1 is set to two values in scan %2: %3 on line %4, %5 on line %6</source>
         <extracomment>a variable, a scan number, then each value with the line that sets it</extracomment>
         <translation>%1 riceve due valori nel ciclo %2: %3 alla riga %4, %5 alla riga %6</translation>
+    </message>
+    <message>
+        <source>expected the active steps of %1 to be %2, they are %3</source>
+        <extracomment>%1: a GEMMA step; %2, %3: lists of nested step numbers</extracomment>
+        <translation>attese le tappe attive %2 in %1, sono %3</translation>
+    </message>
+    <message>
+        <source>expected %1.Unstable = %2, it is %3</source>
+        <translation>atteso %1.Unstable = %2, vale %3</translation>
+    </message>
+    <message>
+        <source>expected step, fired, token, variable, entry, complete or nested after &apos;expect&apos;, found %1</source>
+        <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
+        <translation>atteso step, fired, token, variable, entry, complete o nested dopo «expect», trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a step id after &apos;nested&apos;, found %1</source>
+        <translation>atteso un identificatore di tappa dopo «nested», trovato %1</translation>
+    </message>
+    <message>
+        <source>expected &apos;steps&apos; or &apos;unstable&apos; after the step id, found %1</source>
+        <extracomment>steps and unstable are scenario syntax</extracomment>
+        <translation>atteso «steps» o «unstable» dopo l&apos;identificatore di tappa, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a step number, found %1</source>
+        <translation>atteso un numero di tappa, trovato %1</translation>
+    </message>
+    <message>
+        <source>%1 is an output variable: the program writes it, a scenario sets only inputs</source>
+        <translation>%1 è una variabile di uscita: il programma la scrive, uno scenario imposta solo ingressi</translation>
+    </message>
+    <message>
+        <source>%1 is an internal variable: the program writes it, a scenario sets only inputs</source>
+        <translation>%1 è una variabile interna: il programma la scrive, uno scenario imposta solo ingressi</translation>
+    </message>
+    <message>
+        <source>step %1 has no nested GRAFCET</source>
+        <translation>la tappa %1 non ha GRAFCET annidato</translation>
+    </message>
+    <message>
+        <source>the Complete of %1 comes from its nested GRAFCET: it cannot be set</source>
+        <translation>il Complete di %1 viene dal suo GRAFCET annidato: non può essere impostato</translation>
     </message>
 </context>
 <context>
@@ -1696,6 +1840,16 @@
     <message>
         <source>Verification (%1)</source>
         <translation>Verifica (%1)</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 tappa %2</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
     </message>
 </context>
 <context>
