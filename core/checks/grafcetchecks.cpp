@@ -412,12 +412,10 @@ private:
 
 // The problems of single receptivities and actions, as the code generator
 // found them (it uses FALSE for such a receptivity and skips such an action).
-std::vector<Diagnostic> elementDiagnostics(const Model& model)
+std::vector<Diagnostic> elementDiagnostics(const GemmaProgram& program)
 {
     std::vector<Diagnostic> result;
-    if (model.grafcets().empty())
-        return result;
-    for (GemmaProblem& problem : buildGemmaProgram(model).problems) {
+    for (GemmaProblem problem : program.problems) {
         if (problem.nestedStep == 0 && problem.nestedTransition == 0)
             continue;
         Diagnostic d;
@@ -454,14 +452,11 @@ std::optional<std::string> reservedNestedName(const Variable& variable, const Ge
     return std::nullopt;
 }
 
-std::vector<Diagnostic> reservedNameDiagnostics(const Model& model)
+std::vector<Diagnostic> reservedNameDiagnostics(const Model& model, const GemmaProgram& program)
 {
     std::vector<Diagnostic> result;
-    const bool anyEffective = std::any_of(model.steps().begin(), model.steps().end(),
-                                          [&](const Step& s) { return model.effectiveGrafcet(s.id) != nullptr; });
-    if (!anyEffective)
+    if (!program.hasNestedGrafcets())
         return result;
-    const GemmaProgram program = buildGemmaProgram(model);
     for (const Variable& variable : model.variables()) {
         const std::optional<std::string> why = reservedNestedName(variable, program);
         if (!why)
@@ -481,9 +476,13 @@ std::vector<Diagnostic> reservedNameDiagnostics(const Model& model)
 std::vector<Diagnostic> checkGrafcets(const Model& model)
 {
     std::vector<Diagnostic> result = GrafcetChecker(model).run();
-    for (Diagnostic& d : elementDiagnostics(model))
+    if (model.grafcets().empty())
+        return result;
+    // One build of the intermediate form for both: the code generator's view.
+    const GemmaProgram program = buildGemmaProgram(model);
+    for (Diagnostic& d : elementDiagnostics(program))
         result.push_back(std::move(d));
-    for (Diagnostic& d : reservedNameDiagnostics(model))
+    for (Diagnostic& d : reservedNameDiagnostics(model, program))
         result.push_back(std::move(d));
     return result;
 }

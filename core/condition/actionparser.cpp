@@ -141,9 +141,11 @@ private:
         fail(ErrorKind::AfterAction, next);
     }
 
+    // `S V := <expr>` is the case study's spelling of a stored assignment:
+    // S says "stored", which every assignment is. N and R contradict it.
     void readAssignment()
     {
-        if (m_result.action.qualifierWritten) {
+        if (m_result.action.qualifierWritten && m_result.action.form != ActionForm::Set) {
             fail(ErrorKind::QualifierWithAssignment, m_qualifier);
             return;
         }

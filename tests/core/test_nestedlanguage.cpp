@@ -180,7 +180,8 @@ TEST_CASE("Each action form", "[action]")
     CHECK(lone.action.target == "R");
     CHECK(lone.action.form == ActionForm::Continuous);
 
-    const ActionParseResult alarm = parseAction("Alarm := NOT (CP1 AND CP2 AND CP3)");
+    const ActionParseResult alarm = parseAction("S Alarm := NOT (CP1 AND CP2 AND CP3)"); // the case study's spelling
+    CHECK(alarm.action.form == ActionForm::Assign);
     REQUIRE(alarm.ok());
     CHECK(print(alarm.action.value) == "NOT (CP1 AND CP2 AND CP3)");
 }
@@ -215,7 +216,7 @@ TEST_CASE("Twenty malformed receptivities and actions, with their messages and s
          "the qualifier 'P' is not supported: use N (or none), S, R or an assignment V := value", 0, 1},
         {true, "SD Valve",
          "the qualifier 'SD' is not supported: use N (or none), S, R or an assignment V := value", 0, 2},
-        {true, "S Count := 1", "an assignment takes no qualifier: write V := value, without 'S'", 0, 1},
+        {true, "R Count := 1", "an assignment takes no qualifier: write V := value, without 'R'", 0, 1},
         {true, "R Valve IF A", "a stored action (R) takes no IF condition: only continuous actions are conditional",
          0, 1},
         {true, "Count :=", "expected a value after ':='", 6, 8},
