@@ -1,5 +1,7 @@
 #include "core/formats/gggeneratorformat.h"
 
+#include <algorithm>
+
 #include "core/layout/chartlayout.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
@@ -483,6 +485,27 @@ bool looksLikeGGGeneratorJson(std::string_view text)
 {
     return firstSignificantCharacter(text) == '{' && text.find("\"nodes\"") != std::string_view::npos
         && text.find("\"connections\"") != std::string_view::npos;
+}
+
+std::vector<std::string> ggGeneratorLosses(const Model& model)
+{
+    std::vector<std::string> losses;
+    std::string steps;
+    for (const Step& step : model.steps()) {
+        if (model.grafcet(step.id))
+            steps += (steps.empty() ? "" : ", ") + step.id;
+    }
+    if (!steps.empty())
+        losses.push_back("the nested GRAFCETs of " + steps
+                         + " are left out: GG-Generator has no place for nested behaviour");
+    const bool kinds = std::any_of(model.variables().begin(), model.variables().end(),
+                                   [](const Variable& v) { return v.kind != VariableKind::Input; });
+    if (kinds)
+        losses.push_back("the variable kinds (output, internal) are left out: GG-Generator reads every variable as an "
+                         "input");
+    if (model.settings().evolution != EvolutionRule::OneEvolutionPerScan)
+        losses.push_back("the until-stable evolution rule is left out");
+    return losses;
 }
 
 } // namespace core

@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace core {
 
@@ -18,6 +19,11 @@ namespace core {
 // templateLayout(). What GG-Generator has no place for (model name,
 // settings, comments) is not written.
 std::string saveGGGeneratorJson(const Model& model);
+
+// What saveGGGeneratorJson leaves out of the nested layer, one English
+// sentence each (empty when nothing): the nested GRAFCETs, the variable
+// kinds, the until-stable rule. Exporting says so; nothing is silently lost.
+std::vector<std::string> ggGeneratorLosses(const Model& model);
 
 // Either a whole model or an error naming the JSON path. Tokens come from
 // data.savedSignalsWithMemory entries with withMemory true that name a

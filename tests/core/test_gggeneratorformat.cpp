@@ -299,3 +299,19 @@ TEST_CASE("GG-Generator format detection", "[files]")
     CHECK(looksLikeGGGeneratorJson(saveGGGeneratorJson(Model())));
     CHECK_FALSE(looksLikeGGGeneratorJson(saveNativeJson(Model())));
 }
+
+TEST_CASE("GG-Generator export says what of the nested layer it leaves out", "[files][gggenerator]")
+{
+    core::Model model;
+    CHECK(core::ggGeneratorLosses(model).empty());
+    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
+    core::Variable lamp{"Lamp", core::IecType::Bool, "", ""};
+    lamp.kind = core::VariableKind::Output;
+    REQUIRE(model.addVariable(lamp));
+    model.setEvolutionRule(core::EvolutionRule::UntilStable);
+    const std::vector<std::string> losses = core::ggGeneratorLosses(model);
+    REQUIRE(losses.size() == 3);
+    CHECK(losses[0] == "the nested GRAFCETs of F1 are left out: GG-Generator has no place for nested behaviour");
+    // And indeed nothing of it is in the file.
+    CHECK(core::saveGGGeneratorJson(model).find("Initialization") == std::string::npos);
+}
