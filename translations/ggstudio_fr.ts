@@ -1027,7 +1027,7 @@
     <message>
         <source>expected step, fired, token, variable, entry, complete or nested after &apos;expect&apos;, found %1</source>
         <extracomment>step, fired, token, variable, entry and complete are scenario syntax</extracomment>
-        <translation>step, fired, token, variable, entry, complete ou nested attendu après « expect », trouvé %1</translation>
+        <translation>step, fired, token, variable, entry, complete ou nested attendu après &apos;expect&apos;, trouvé %1</translation>
     </message>
     <message>
         <source>expected a step id after &apos;nested&apos;, found %1</source>

@@ -1,12 +1,14 @@
 // Writes PLCopen XML samples (IEC dialect) into the folder given as argument,
 // for the schema-validation test (validate_plcopen.cmake): the template, the
-// realistic model, the paper's case study and 200 seeded random models.
+// realistic model, the paper's case study, 200 seeded random models (every
+// other one with random nested GRAFCETs) and the shipped drilling-cell example.
 
 #include "modelfactory.h"
 #include "samplemodels.h"
 
 #include "core/formats/fileio.h"
 #include "core/codegen/plcopenwriter.h"
+#include "core/formats/modelfiles.h"
 #include "core/codegen/stgenerator.h"
 
 #include <cstdio>
@@ -50,8 +52,15 @@ int main(int argc, char** argv)
         bool ok = writeSample(folder, "template", core::Model());
         ok = writeSample(folder, "realistic", factory::realisticModel()) && ok;
         ok = writeSample(folder, "case-study", samples::caseStudyModel()) && ok;
-        for (int seed = 0; seed < kRandomModels; ++seed)
-            ok = writeSample(folder, randomName(seed), samples::randomModel(static_cast<std::uint32_t>(seed))) && ok;
+        for (int seed = 0; seed < kRandomModels; ++seed) {
+            core::Model model = samples::randomModel(static_cast<std::uint32_t>(seed));
+            // Every other one with random nested GRAFCETs: their FBs must validate too.
+            if (seed % 2 == 1)
+                samples::addRandomNestedGrafcets(model, static_cast<std::uint32_t>(seed));
+            ok = writeSample(folder, randomName(seed), model) && ok;
+        }
+        const core::LoadedModel example = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+        ok = example.model && writeSample(folder, "drilling-cell", *example.model) && ok;
         return ok ? 0 : 1;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "plcopen_samples: %s\n", error.what());

@@ -273,4 +273,79 @@ core::Model randomModel(std::uint32_t seed)
     return builder.build(false);
 }
 
+void addRandomNestedGrafcets(core::Model& model, std::uint32_t seed)
+{
+    std::mt19937 random(seed);
+    const auto pick = [&](int count) { return static_cast<int>(random() % static_cast<unsigned>(count)); };
+    std::vector<std::string> inputs;
+    for (const core::Variable& variable : model.variables()) {
+        if (variable.type == core::IecType::Bool && variable.kind == core::VariableKind::Input)
+            inputs.push_back(variable.name);
+    }
+    if (inputs.empty()) {
+        model.addVariable(core::Variable{"NestedIn", core::IecType::Bool, "", "input of the nested GRAFCETs"});
+        inputs.push_back("NestedIn");
+    }
+    std::vector<std::string> outputs;
+    for (int i = 0; i < 4; ++i) {
+        core::Variable output{"NestedOut" + std::to_string(i), core::IecType::Bool, "", "driven by nested GRAFCETs"};
+        output.kind = core::VariableKind::Output;
+        model.addVariable(output);
+        outputs.push_back(output.name);
+    }
+    core::Variable counter{"NestedCount", core::IecType::Int, "", "counted by nested GRAFCETs"};
+    counter.kind = core::VariableKind::Internal;
+    model.addVariable(counter);
+
+    for (const core::Step& step : model.steps()) {
+        if (step.hidden || step.type == core::StepType::Simple || pick(4) == 0)
+            continue;
+        const int steps = 3 + pick(7);
+        const auto input = [&] { return inputs[static_cast<std::size_t>(pick(static_cast<int>(inputs.size())))]; };
+        const auto receptivity = [&](int from) -> std::string {
+            switch (pick(7)) {
+            case 0: return input();
+            case 1: return "NOT " + input();
+            case 2: return "RE " + input();
+            case 3: return "FE " + input() + " OR " + input();
+            case 4: return std::to_string(20 * (1 + pick(10))) + "ms/X" + std::to_string(from);
+            case 5: return input() + " AND X" + std::to_string(1 + pick(steps));
+            default: return "TRUE";
+            }
+        };
+        const auto action = [&]() -> core::GrafcetAction {
+            const std::string out = outputs[static_cast<std::size_t>(pick(4))];
+            switch (pick(6)) {
+            case 0: return {core::ActionTiming::Continuous, "N " + out};
+            case 1: return {core::ActionTiming::Continuous, out + " IF " + input()};
+            case 2: return {core::ActionTiming::OnActivation, "NestedCount := NestedCount + 1"};
+            case 3: return {core::ActionTiming::OnDeactivation, "S " + out};
+            case 4: return {core::ActionTiming::OnActivation, "S Complete"};
+            default: return {core::ActionTiming::Continuous, "Complete"};
+            }
+        };
+        for (int n = 1; n <= steps; ++n) {
+            core::GrafcetStep nested{n, n == 1, "", {}};
+            for (int a = pick(3); a > 0; --a)
+                nested.actions.push_back(action());
+            model.addGrafcetStep(step.id, nested);
+        }
+        int number = 1;
+        for (int n = 1; n < steps; ++n)
+            model.addGrafcetTransition(step.id, {number++, {n}, {n + 1}, receptivity(n)});
+        model.addGrafcetTransition(step.id, {number++, {steps}, {1}, receptivity(steps)});
+        for (int extra = pick(4); extra > 0; --extra) {
+            std::vector<int> upstream{1 + pick(steps)};
+            std::vector<int> downstream{1 + pick(steps)};
+            if (pick(2) == 0 && upstream[0] != steps)
+                upstream.push_back(steps);
+            if (pick(2) == 0 && downstream[0] != 1)
+                downstream.push_back(1);
+            model.addGrafcetTransition(step.id, {number++, upstream, downstream, receptivity(upstream[0])});
+        }
+    }
+    if (pick(2) == 0)
+        model.setEvolutionRule(core::EvolutionRule::UntilStable);
+}
+
 } // namespace samples

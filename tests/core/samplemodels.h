@@ -20,4 +20,14 @@ core::Model caseStudyModel();
 // The same seed gives the same model.
 core::Model randomModel(std::uint32_t seed);
 
+// Gives every visible macro-step and enclosing step of the model, with
+// probability 3/4, a random nested GRAFCET of 3 to 9 steps: a sequence with a
+// loop back, extra transitions between random sets of steps (selections,
+// simultaneous divergences and convergences, jumps), receptivities with edges,
+// step activities and durations, continuous (some conditional) and stored
+// actions on declared outputs, and Complete. Declares the outputs it writes.
+// Not every such model is free of errors: the code generated from it must
+// still be valid.
+void addRandomNestedGrafcets(core::Model& model, std::uint32_t seed);
+
 } // namespace samples

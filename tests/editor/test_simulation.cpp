@@ -487,7 +487,7 @@ void TestSimulation::scenarioErrorsAreInTheUiLanguage()
     QString error;
     QVERIFY(!m_session->startReplay(path, &error));
     QCOMPARE(error, QStringLiteral("erreurs.scenario:1:24: '=' attendu après le nom de variable, trouvé 'TRUE'\n"
-                                   "erreurs.scenario:2:13: step, fired, token, variable, entry ou complete attendu "
+                                   "erreurs.scenario:2:13: step, fired, token, variable, entry, complete ou nested attendu "
                                    "après 'expect', trouvé la fin de la ligne"));
     QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
     file.write("at 1: set NoSuchInput = TRUE\n"
