@@ -484,37 +484,13 @@ ValueKind valueKind(const Expression& expression, int node, const SymbolTable& s
     return TypeChecker(expression, symbols, nullptr).kindUpTo(node);
 }
 
-std::vector<int> variableNodes(const Expression& expression)
-{
-    std::vector<int> variables;
-    if (!isRootValid(expression))
-        return variables;
-    // Pre-order walk with an explicit stack, left operand first: leaves come
-    // out in source order.
-    std::vector<int> pending{expression.root};
-    while (!pending.empty()) {
-        const int index = pending.back();
-        pending.pop_back();
-        const Node& node = expression.at(index);
-        if (node.kind == NodeKind::Variable)
-            variables.push_back(index);
-        else if (node.kind == NodeKind::Unary && isChild(expression, node.operand, index))
-            pending.push_back(node.operand);
-        else if (node.kind == NodeKind::Binary) {
-            if (isChild(expression, node.right, index))
-                pending.push_back(node.right);
-            if (isChild(expression, node.left, index))
-                pending.push_back(node.left);
-        }
-    }
-    return variables;
-}
 
 // Every variable occurrence is a literal, whatever its type or position: the
 // checks decide which ones may carry a token (BOOL variables, spec §5).
 namespace {
 
-// The reachable nodes that pass `keep`, in source order.
+// The reachable nodes that pass `keep`, in source order: a pre-order walk
+// with an explicit stack (no recursion on hostile trees), left operand first.
 template<typename Keep>
 std::vector<int> nodesInSourceOrder(const Expression& expression, Keep keep)
 {
@@ -541,6 +517,11 @@ std::vector<int> nodesInSourceOrder(const Expression& expression, Keep keep)
 }
 
 } // namespace
+
+std::vector<int> variableNodes(const Expression& expression)
+{
+    return nodesOfKind(expression, NodeKind::Variable);
+}
 
 std::vector<int> nodesOfKind(const Expression& expression, NodeKind kind)
 {
