@@ -8,6 +8,7 @@
 #include "editor/settings.h"
 
 #include "core/formats/fileio.h"
+#include "core/formats/gggeneratorformat.h"
 #include "core/formats/modelfiles.h"
 #include "core/codegen/plcopenwriter.h"
 #include "core/codegen/stexport.h"
@@ -157,6 +158,49 @@ bool ExportActions::confirmErrors(QWidget* parent, const std::vector<core::Diagn
     return box.clickedButton() == exportButton;
 }
 
+QStringList ExportActions::ggGeneratorLossTexts(const core::Model& model)
+{
+    QStringList texts;
+    for (const core::GGGeneratorLoss& loss : core::ggGeneratorLosses(model)) {
+        switch (loss.kind) {
+        case core::GGGeneratorLoss::Kind::NestedGrafcets: {
+            QStringList steps;
+            for (const std::string& step : loss.steps)
+                steps << QString::fromStdString(step);
+            texts << tr("The nested GRAFCETs of %1: GG-Generator has no place for nested behaviour.")
+                         .arg(steps.join(QStringLiteral(", ")));
+            break;
+        }
+        case core::GGGeneratorLoss::Kind::VariableKinds:
+            texts << tr("The variable kinds (output, internal): GG-Generator reads every variable as an input.");
+            break;
+        case core::GGGeneratorLoss::Kind::UntilStableRule:
+            texts << tr("The until-stable evolution rule: GG-Generator knows one evolution per scan only.");
+            break;
+        }
+    }
+    return texts;
+}
+
+bool ExportActions::confirmGGGeneratorLosses(QWidget* parent, const core::Model& model)
+{
+    const QStringList losses = ggGeneratorLossTexts(model);
+    if (losses.isEmpty())
+        return true;
+    QStringList lines;
+    for (const QString& loss : losses)
+        lines << QStringLiteral("• ") + loss;
+    QMessageBox box(QMessageBox::Warning, tr("Export to GG-Generator"),
+                    tr("The GG-Generator file will leave out part of this model. Your model and its own file "
+                       "keep everything."),
+                    QMessageBox::Cancel, parent);
+    box.setInformativeText(lines.join('\n'));
+    QPushButton* exportButton = box.addButton(tr("&Export Anyway"), QMessageBox::AcceptRole);
+    box.setDefaultButton(QMessageBox::Cancel);
+    box.exec();
+    return box.clickedButton() == exportButton;
+}
+
 void ExportActions::exportPlcOpen()
 {
     if (!confirmErrors(m_window, m_document.diagnostics()))
@@ -206,6 +250,8 @@ void ExportActions::exportStructuredText()
 
 void ExportActions::exportGGGenerator()
 {
+    if (!confirmGGGeneratorLosses(m_window, m_document.model()))
+        return;
     const QString path = askSavePath(tr("Export GG-Generator JSON"), QStringLiteral("json"),
                                      tr("GG-Generator JSON (*.json)"));
     if (path.isEmpty())

@@ -46,6 +46,12 @@ public:
     // their count and the first few. True when there are none or the user
     // goes on.
     static bool confirmErrors(QWidget* parent, const std::vector<core::Diagnostic>& diagnostics);
+    // The question asked before a GG-Generator export that leaves part of
+    // the model out (nested GRAFCETs, variable kinds, the evolution rule).
+    // True when nothing is lost or the user goes on.
+    static bool confirmGGGeneratorLosses(QWidget* parent, const core::Model& model);
+    // What the GG-Generator file would leave out, one translated sentence each.
+    static QStringList ggGeneratorLossTexts(const core::Model& model);
 
 signals:
     // A short report for the status bar ("Exported to ...").

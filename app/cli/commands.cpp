@@ -106,8 +106,8 @@ bool isStandardOutput(const std::string& path)
 int save(const core::Model& model, const std::string& path, core::ModelFormat format, Streams streams)
 {
     if (format == core::ModelFormat::GGGenerator) {
-        for (const std::string& loss : core::ggGeneratorLosses(model))
-            streams.err << "ggstudio-cli: warning: " << loss << lineEnd;
+        for (const core::GGGeneratorLoss& loss : core::ggGeneratorLosses(model))
+            streams.err << "ggstudio-cli: warning: " << core::toText(loss) << lineEnd;
     }
     if (isStandardOutput(path)) {
         writeVerbatim(streams.out, format == core::ModelFormat::GGGenerator ? core::saveGGGeneratorJson(model)

@@ -487,25 +487,40 @@ bool looksLikeGGGeneratorJson(std::string_view text)
         && text.find("\"connections\"") != std::string_view::npos;
 }
 
-std::vector<std::string> ggGeneratorLosses(const Model& model)
+std::vector<GGGeneratorLoss> ggGeneratorLosses(const Model& model)
 {
-    std::vector<std::string> losses;
-    std::string steps;
+    std::vector<GGGeneratorLoss> losses;
+    GGGeneratorLoss nested{GGGeneratorLoss::Kind::NestedGrafcets, {}};
     for (const Step& step : model.steps()) {
         if (model.grafcet(step.id))
-            steps += (steps.empty() ? "" : ", ") + step.id;
+            nested.steps.push_back(step.id);
     }
-    if (!steps.empty())
-        losses.push_back("the nested GRAFCETs of " + steps
-                         + " are left out: GG-Generator has no place for nested behaviour");
+    if (!nested.steps.empty())
+        losses.push_back(std::move(nested));
     const bool kinds = std::any_of(model.variables().begin(), model.variables().end(),
                                    [](const Variable& v) { return v.kind != VariableKind::Input; });
     if (kinds)
-        losses.push_back("the variable kinds (output, internal) are left out: GG-Generator reads every variable as an "
-                         "input");
+        losses.push_back({GGGeneratorLoss::Kind::VariableKinds, {}});
     if (model.settings().evolution != EvolutionRule::OneEvolutionPerScan)
-        losses.push_back("the until-stable evolution rule is left out");
+        losses.push_back({GGGeneratorLoss::Kind::UntilStableRule, {}});
     return losses;
+}
+
+std::string toText(const GGGeneratorLoss& loss)
+{
+    switch (loss.kind) {
+    case GGGeneratorLoss::Kind::NestedGrafcets: {
+        std::string steps;
+        for (const std::string& step : loss.steps)
+            steps += (steps.empty() ? "" : ", ") + step;
+        return "the nested GRAFCETs of " + steps + " are left out: GG-Generator has no place for nested behaviour";
+    }
+    case GGGeneratorLoss::Kind::VariableKinds:
+        return "the variable kinds (output, internal) are left out: GG-Generator reads every variable as an input";
+    case GGGeneratorLoss::Kind::UntilStableRule:
+        return "the until-stable evolution rule is left out";
+    }
+    return {};
 }
 
 } // namespace core

@@ -20,10 +20,24 @@ namespace core {
 // settings, comments) is not written.
 std::string saveGGGeneratorJson(const Model& model);
 
-// What saveGGGeneratorJson leaves out of the nested layer, one English
-// sentence each (empty when nothing): the nested GRAFCETs, the variable
-// kinds, the until-stable rule. Exporting says so; nothing is silently lost.
-std::vector<std::string> ggGeneratorLosses(const Model& model);
+// One part of the model saveGGGeneratorJson leaves out, as data: the editor
+// words it in the UI language, toText() gives the English the command line
+// prints. Exporting says so; nothing is silently lost.
+struct GGGeneratorLoss {
+    enum class Kind {
+        NestedGrafcets,  // steps: the GEMMA steps whose GRAFCET is left out
+        VariableKinds,   // output and internal kinds: GG-Generator reads every variable as an input
+        UntilStableRule, // the model's evolution rule
+    };
+    Kind kind = Kind::NestedGrafcets;
+    std::vector<std::string> steps;
+
+    friend bool operator==(const GGGeneratorLoss&, const GGGeneratorLoss&) = default;
+};
+
+// In the order of the Kind enumeration; empty when the file keeps everything.
+std::vector<GGGeneratorLoss> ggGeneratorLosses(const Model& model);
+std::string toText(const GGGeneratorLoss& loss);
 
 // Either a whole model or an error naming the JSON path. Tokens come from
 // data.savedSignalsWithMemory entries with withMemory true that name a

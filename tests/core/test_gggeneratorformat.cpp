@@ -309,9 +309,16 @@ TEST_CASE("GG-Generator export says what of the nested layer it leaves out", "[f
     lamp.kind = core::VariableKind::Output;
     REQUIRE(model.addVariable(lamp));
     model.setEvolutionRule(core::EvolutionRule::UntilStable);
-    const std::vector<std::string> losses = core::ggGeneratorLosses(model);
+    REQUIRE(model.addGrafcetStep("F2", {1, true, "", {}}));
+    const std::vector<core::GGGeneratorLoss> losses = core::ggGeneratorLosses(model);
     REQUIRE(losses.size() == 3);
-    CHECK(losses[0] == "the nested GRAFCETs of F1 are left out: GG-Generator has no place for nested behaviour");
+    CHECK(losses[0].kind == core::GGGeneratorLoss::Kind::NestedGrafcets);
+    CHECK(losses[0].steps == std::vector<std::string>{"F1", "F2"});
+    CHECK(core::toText(losses[0])
+          == "the nested GRAFCETs of F1, F2 are left out: GG-Generator has no place for nested behaviour");
+    CHECK(losses[1].kind == core::GGGeneratorLoss::Kind::VariableKinds);
+    CHECK(losses[2].kind == core::GGGeneratorLoss::Kind::UntilStableRule);
+    CHECK(core::toText(losses[2]) == "the until-stable evolution rule is left out");
     // And indeed nothing of it is in the file.
     CHECK(core::saveGGGeneratorJson(model).find("Initialization") == std::string::npos);
 }

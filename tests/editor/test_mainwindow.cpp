@@ -13,6 +13,7 @@
 #include "editor/docks/problemsdock.h"
 #include "editor/docks/stepdock.h"
 #include "editor/document.h"
+#include "editor/examplemodels.h"
 #include "editor/exportactions.h"
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
@@ -243,6 +244,7 @@ private slots:
     void opensOnTheTemplate();
     void docksAreAroundTheChart();
     void opensANativeFile();
+    void examplesOpenAsUntitledCopies();
     void brokenFileLeavesTheModelUntouched();
     void editsMarkTheTitleModified();
     void undoActionNamesTheCommand();
@@ -250,6 +252,7 @@ private slots:
     void plcOpenExportValidates();
     void otherExportsWriteTheirFiles();
     void exportWithErrorsAsksFirst();
+    void ggGeneratorExportSaysWhatItLeavesOut();
     void chartPicturesAreWritten();
     void saveOntoAFifoKeepsTheEditAndSaysWhy();
     void exportsNeverReplaceAFifoOrADevice();
@@ -355,6 +358,30 @@ void TestMainWindow::opensANativeFile()
     auto* recent = m_window->findChild<QMenu*>(QStringLiteral("recentFilesMenu"));
     QVERIFY(recent);
     QVERIFY(recent->actions().first()->text().contains(QStringLiteral("bottling.json")));
+}
+
+void TestMainWindow::examplesOpenAsUntitledCopies()
+{
+    auto* menu = m_window->findChild<QMenu*>(QStringLiteral("examplesMenu"));
+    QVERIFY(menu);
+    const std::vector<ExampleModel> examples = exampleModels();
+    QCOMPARE(menu->actions().size(), qsizetype(examples.size()));
+    for (size_t i = 0; i < examples.size(); ++i) {
+        QAction* action = menu->actions()[qsizetype(i)];
+        QCOMPARE(action->text(), examples[i].title);
+        action->trigger();
+        // The shipped file, as an untitled copy: Save asks for a new name.
+        const core::LoadedModel shipped = core::loadModelFile(
+            std::string(GGSTUDIO_EXAMPLES_DIR "/") + examples[i].fileName.toStdString());
+        QVERIFY2(shipped.ok(), shipped.error.toString().c_str());
+        QVERIFY(m_window->document()->model().sameContent(*shipped.model));
+        QVERIFY(m_window->document()->filePath().isEmpty());
+        QVERIFY(!m_window->document()->isModified());
+    }
+    // The drilling cell opens with its nested GRAFCETs and nothing to report.
+    menu->actions().first()->trigger();
+    QVERIFY(m_window->document()->model().grafcet("F1"));
+    QVERIFY(m_window->document()->diagnostics().empty());
 }
 
 void TestMainWindow::brokenFileLeavesTheModelUntouched()
@@ -496,6 +523,33 @@ void TestMainWindow::exportWithErrorsAsksFirst()
     std::vector<core::Diagnostic> warningsOnly(1);
     warningsOnly[0].severity = core::Severity::Warning;
     QVERIFY(ExportActions::confirmErrors(m_window.get(), warningsOnly));
+}
+
+void TestMainWindow::ggGeneratorExportSaysWhatItLeavesOut()
+{
+    // The template loses nothing: no question.
+    core::Model model;
+    QVERIFY(ExportActions::ggGeneratorLossTexts(model).isEmpty());
+    QVERIFY(ExportActions::confirmGGGeneratorLosses(m_window.get(), model));
+
+    QVERIFY(model.addGrafcetStep("F1", {1, true, "", {}}));
+    model.setEvolutionRule(core::EvolutionRule::UntilStable);
+    const QStringList losses = ExportActions::ggGeneratorLossTexts(model);
+    QCOMPARE(losses.size(), 2);
+    QVERIFY2(losses[0].contains(QStringLiteral("nested GRAFCETs of F1")), qPrintable(losses[0]));
+    QVERIFY2(losses[1].contains(QStringLiteral("until-stable")), qPrintable(losses[1]));
+
+    // Closing the question cancels; Export Anyway goes on.
+    MessageBoxCatcher cancel;
+    cancel.arm();
+    QVERIFY(!ExportActions::confirmGGGeneratorLosses(m_window.get(), model));
+    QVERIFY(cancel.seen);
+    QCOMPARE(cancel.informativeText.count(QChar(0x2022)), 2);
+    MessageBoxCatcher goOn;
+    goOn.button = QStringLiteral("&Export Anyway");
+    goOn.arm();
+    QVERIFY(ExportActions::confirmGGGeneratorLosses(m_window.get(), model));
+    QVERIFY(goOn.seen);
 }
 
 void TestMainWindow::chartPicturesAreWritten()
