@@ -448,6 +448,28 @@ TEST_CASE("Native 2.0: nested GRAFCETs, kinds and the rule round-trip", "[files]
     CHECK(saveNativeJson(*loaded) == text);
 }
 
+TEST_CASE("Native 2.0: the branch order, the layout hint of a nested GRAFCET, is kept", "[files][native]")
+{
+    // Branches drawn right to left of their numbers: a simultaneous divergence
+    // to 5 then 3, a selection whose branch T9 stands left of T4.
+    Model model;
+    for (int number : {1, 5, 3, 7})
+        REQUIRE(model.addGrafcetStep("F1", GrafcetStep{number, number == 1, "", {}}));
+    REQUIRE(model.addGrafcetTransition("F1", GrafcetTransition{9, {1}, {5, 3}, "TRUE"}));
+    REQUIRE(model.addGrafcetTransition("F1", GrafcetTransition{4, {1}, {7}, "FALSE"}));
+    REQUIRE(model.addGrafcetTransition("F1", GrafcetTransition{2, {3, 5}, {1}, "TRUE"}));
+    const std::unique_ptr<Model> loaded = loadOk(saveNativeJson(model));
+    const Grafcet* grafcet = loaded->grafcet("F1");
+    REQUIRE(grafcet);
+    CHECK(grafcet->transition(9)->downstream == std::vector<int>{5, 3});
+    CHECK(grafcet->transition(2)->upstream == std::vector<int>{3, 5});
+    const std::vector<const GrafcetTransition*> selection = grafcet->transitionsFrom(1);
+    REQUIRE(selection.size() == 2);
+    CHECK(selection[0]->number == 9);
+    CHECK(selection[1]->number == 4);
+    CHECK(grafcet->steps()[1].number == 5);
+}
+
 TEST_CASE("Native: a model without nested content is still written as 1.0", "[files][native]")
 {
     Model model;
