@@ -11,6 +11,7 @@
 #include "editor/docks/transitiondock.h"
 #include "editor/docks/variablesdock.h"
 #include "editor/document.h"
+#include "editor/examplemodels.h"
 #include "editor/exportactions.h"
 #include "editor/languages.h"
 #include "editor/modelsettingsdialog.h"
@@ -403,6 +404,13 @@ void MainWindow::createMenus()
     m_fileMenu->setObjectName("fileMenu");
     m_fileMenu->addActions({m_newAction, m_openAction});
     m_fileMenu->addMenu(m_recentFiles->menu());
+    m_examplesMenu = m_fileMenu->addMenu(QString());
+    m_examplesMenu->setObjectName("examplesMenu");
+    for (int i = 0; i < int(exampleModels().size()); ++i) {
+        QAction* example = m_examplesMenu->addAction(QString());
+        example->setObjectName(QStringLiteral("example_%1").arg(i));
+        connect(example, &QAction::triggered, this, [this, i] { openExample(i); });
+    }
     m_fileMenu->addActions({m_saveAction, m_saveAsAction});
     m_fileMenu->addSeparator();
     m_fileMenu->addActions({m_exportActions->plcOpenAction(), m_exportActions->structuredTextAction(),
@@ -562,6 +570,13 @@ void MainWindow::retranslate()
     m_openAction->setStatusTip(tr("Open a GG Studio model, a GG-Generator file or an exported PLCopen XML file"));
     m_saveAction->setText(tr("&Save"));
     m_saveAsAction->setText(tr("Save &As…"));
+    m_examplesMenu->setTitle(tr("E&xamples"));
+    const std::vector<ExampleModel> examples = exampleModels();
+    const QList<QAction*> exampleActions = m_examplesMenu->actions();
+    for (int i = 0; i < int(examples.size()) && i < int(exampleActions.size()); ++i) {
+        exampleActions[i]->setText(examples[size_t(i)].title);
+        exampleActions[i]->setStatusTip(examples[size_t(i)].description);
+    }
     m_resetAction->setText(tr("&Reset to Template…"));
     m_resetAction->setStatusTip(tr("Put every state, transition, variable and setting back to the template"));
     m_quitAction->setText(tr("&Quit"));
@@ -690,6 +705,27 @@ bool MainWindow::loadFile(const QString& path)
         break;
     }
     return true;
+}
+
+void MainWindow::openExample(int index)
+{
+    const std::vector<ExampleModel> examples = exampleModels();
+    if (index < 0 || index >= int(examples.size()) || !maybeSave())
+        return;
+    const ExampleModel& example = examples[size_t(index)];
+    QString error;
+    const std::unique_ptr<core::Model> model = loadExampleModel(example, &error);
+    if (!model) {
+        QMessageBox::critical(this, tr("Open Example"), tr("Could not open the example “%1”.").arg(example.title)
+                                                            + QStringLiteral("\n\n") + error);
+        return;
+    }
+    m_document->replaceModel(*model, QString(), core::ModelFormat::Native);
+    m_selection->clear();
+    updateTitle();
+    statusBar()->showMessage(tr("Opened the example “%1” as an untitled copy: Save As keeps your changes")
+                                 .arg(example.title),
+                             kStatusMessageMs);
 }
 
 bool MainWindow::needsSaveAs() const

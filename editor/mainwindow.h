@@ -120,6 +120,8 @@ private:
     // Save / Discard / Cancel for unsaved changes; true when the caller may go on.
     bool maybeSave();
     bool loadFile(const QString& path);
+    // File > Examples: the shipped example as an untitled copy.
+    void openExample(int index);
     // Whether Save must ask for a name: untitled, or read from another format.
     bool needsSaveAs() const;
     void updateTitle();
@@ -156,6 +158,7 @@ private:
     VerificationRunner* m_verification = nullptr;
 
     QMenu* m_fileMenu = nullptr;
+    QMenu* m_examplesMenu = nullptr;
     QMenu* m_editMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
     QMenu* m_languageMenu = nullptr;
