@@ -108,7 +108,9 @@ QString structureText(const core::cond::ParseError& error, const QString& found)
 {
     const QString number = QString::number(error.number);
     switch (error.kind) {
-    case Kind::Empty: return ConditionErrorText::tr("empty condition: write TRUE for a transition that is always ready");
+    case Kind::Empty:
+        return ConditionErrorText::tr("empty condition: write when the transition fires (TRUE if it is always "
+                                      "ready), or hide the transition if the machine does not need it");
     case Kind::TooComplex:
         return ConditionErrorText::tr("condition too complex: operators nested more than %1 levels deep").arg(number);
     case Kind::TooDeepParentheses:

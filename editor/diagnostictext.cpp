@@ -3,11 +3,13 @@
 #include "editor/conditionerrortext.h"
 #include "editor/conditiontypeerrortext.h"
 #include "editor/valueproblemtext.h"
+#include "editor/docks/elementlabels.h"
 
 #include "core/model/gemmatemplate.h"
 #include "core/model/iectypes.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 #include <QStringList>
 
 #include <optional>
@@ -27,10 +29,34 @@ QString fromStd(const std::string& text)
     return QString::fromStdString(text);
 }
 
+// A GEMMA transition id as the chart, the docks and the Problems dock name
+// it ("F1 → A2" for core's "F1->A2"); other text unchanged.
+const QRegularExpression& transitionIdPattern()
+{
+    static const QRegularExpression pattern(QStringLiteral(R"(\b([A-F]\d?)->([A-F]\d)\b)"));
+    return pattern;
+}
+
+QString withTransitionLabels(QString text)
+{
+    QRegularExpressionMatchIterator matches = transitionIdPattern().globalMatch(text);
+    QList<QRegularExpressionMatch> found;
+    while (matches.hasNext())
+        found.prepend(matches.next()); // replaced from the end, so offsets stay valid
+    for (const QRegularExpressionMatch& match : found)
+        text.replace(match.capturedStart(), match.capturedLength(), transitionLabel(match.captured()));
+    return text;
+}
+
+QString argumentText(const std::string& argument)
+{
+    return withTransitionLabels(fromStd(argument));
+}
+
 // The English message as the UI shows sentences: capitalised.
 QString fallback(const core::Diagnostic& diagnostic)
 {
-    QString text = fromStd(diagnostic.message);
+    QString text = withTransitionLabels(fromStd(diagnostic.message));
     if (!text.isEmpty())
         text[0] = text[0].toUpper();
     return text;
@@ -102,7 +128,7 @@ QString nestedGrafcetText(const core::Diagnostic& d)
 {
     const std::vector<std::string>& a = d.arguments;
     const std::string& code = d.code;
-    const auto arg = [&](std::size_t i) { return fromStd(a[i]); };
+    const auto arg = [&](std::size_t i) { return argumentText(a[i]); };
     const std::size_t n = a.size();
     if (code == "GG400" && n == 1)
         return DiagnosticText::tr("The nested GRAFCET of %1 has no initial step: it would never do anything.")
@@ -146,7 +172,7 @@ QString translated(const core::Diagnostic& d)
 {
     const std::vector<std::string>& a = d.arguments;
     const std::string& code = d.code;
-    const auto arg = [&](std::size_t i) { return fromStd(a[i]); };
+    const auto arg = [&](std::size_t i) { return argumentText(a[i]); };
     const std::size_t n = a.size();
 
     if (n == 1) {
@@ -161,7 +187,8 @@ QString translated(const core::Diagnostic& d)
             return DiagnosticText::tr("Step %1 has no visible incoming transition: it can never become active.")
                 .arg(arg(0));
         if (code == "GG202")
-            return DiagnosticText::tr("The condition of %1 is empty: write TRUE for a transition that is always ready.")
+            return DiagnosticText::tr("The condition of %1 is empty: write when it fires (TRUE if it is always "
+                                      "ready), or hide the transition if your machine does not need it.")
                 .arg(arg(0));
         if (code == "GG206")
             return DiagnosticText::tr(

@@ -140,7 +140,7 @@ std::string structureText(const ParseError& e)
 {
     const std::string number = std::to_string(e.number);
     switch (e.kind) {
-    case Kind::Empty: return "empty condition: write TRUE for a transition that is always ready";
+    case Kind::Empty: return "empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it";
     case Kind::TooComplex: return "condition too complex: operators nested more than " + number + " levels deep";
     case Kind::TooDeepParentheses: return "condition nested too deeply: more than " + number + " levels of parentheses";
     case Kind::TooDeepUnary: return "condition nested too deeply: more than " + number + " levels of unary operators";

@@ -53,7 +53,7 @@ struct ParseResult {
 };
 
 // Parses a whole condition. An empty or blank text is an error
-// ("empty condition: write TRUE for a transition that is always ready").
+// ("empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it").
 ParseResult parse(std::string_view text, const ParseOptions& options = {});
 
 // Parses the tokens [first, last) of a text tokenized in the given context

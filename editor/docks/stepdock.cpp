@@ -10,6 +10,7 @@
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
+#include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
 #include "editor/statenames.h"
@@ -301,7 +302,7 @@ QTreeWidgetItem* StepDock::transitionItem(const core::Transition& transition, bo
     const QString reason = ineffectiveReason(model, transition);
     if (!reason.isEmpty()) {
         tip << tr("Not effective (%1): generates no code.").arg(reason);
-        const QColor grey = palette().color(QPalette::Disabled, QPalette::Text);
+        const QColor grey = secondaryTextColor(palette(), QPalette::Base);
         QFont font = item->font(0);
         font.setItalic(true);
         for (int column = 0; column < 2; ++column) {

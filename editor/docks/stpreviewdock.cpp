@@ -3,6 +3,7 @@
 #include "editor/commands/setdialectcommand.h"
 #include "editor/docks/sthighlighter.h"
 #include "editor/document.h"
+#include "editor/secondarytext.h"
 #include "editor/selection.h"
 
 #include "core/model/model.h"
@@ -91,7 +92,7 @@ StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* 
     connect(m_dialectCombo, &QComboBox::currentIndexChanged, this, &StPreviewDock::onDialectChosen);
     m_noteLabel->setParent(content);
     m_noteLabel->setObjectName(QStringLiteral("noteLabel"));
-    m_noteLabel->setForegroundRole(QPalette::PlaceholderText);
+    useSecondaryText(m_noteLabel);
     bar->addWidget(m_dialectLabel);
     bar->addWidget(m_dialectCombo);
     bar->addSpacing(8);

@@ -11,6 +11,7 @@
 #include "editor/docks/elementlabels.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
+#include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/statenames.h"
 
@@ -44,7 +45,7 @@ QLabel* hintLabel(QWidget* parent)
     QFont font = label->font();
     font.setPointSizeF(font.pointSizeF() * 0.9);
     label->setFont(font);
-    label->setForegroundRole(QPalette::PlaceholderText);
+    useSecondaryText(label);
     return label;
 }
 
@@ -154,6 +155,7 @@ QWidget* TransitionDock::createForm()
     connect(m_titleLabel, &QLabel::linkActivated, this, &TransitionDock::onStepLinkActivated);
     layout->addWidget(m_titleLabel);
     m_namesLabel = hintLabel(form);
+    m_namesLabel->setObjectName(QStringLiteral("namesLabel"));
     layout->addWidget(m_namesLabel);
     m_effectLabel = hintLabel(form);
     m_effectLabel->setObjectName(QStringLiteral("effectLabel"));

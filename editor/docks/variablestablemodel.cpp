@@ -7,6 +7,8 @@
 #include "editor/diagnostictext.h"
 #include "editor/document.h"
 
+#include "editor/secondarytext.h"
+
 #include "core/model/iectypes.h"
 
 #include <QColor>
@@ -143,7 +145,7 @@ QVariant VariablesTableModel::data(const QModelIndex& index, int role) const
         return {};
     case Qt::ForegroundRole:
         if (column == DefaultColumn && variable->defaultValue.empty())
-            return QPalette().color(QPalette::Disabled, QPalette::Text);
+            return secondaryTextColor(QPalette(), QPalette::Base);
         return {};
     case Qt::FontRole:
         if (column == DefaultColumn && variable->defaultValue.empty()) {

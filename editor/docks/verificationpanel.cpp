@@ -2,6 +2,7 @@
 
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
 #include "editor/verificationrunner.h"
@@ -163,7 +164,7 @@ void VerificationPanel::refresh()
     const std::vector<core::VerificationFinding>& findings = m_runner->result().findings;
     // A stale finding is greyed: it describes the model, or assumptions, as they were.
     const bool stale = m_runner->isStale() || m_runner->assumptionsDiffer();
-    const QBrush grey = palette().brush(QPalette::Disabled, QPalette::Text);
+    const QBrush grey(secondaryTextColor(palette(), QPalette::Base));
     // Errors first: the core orders by code, and the violations matter most.
     std::vector<std::size_t> order(findings.size());
     std::iota(order.begin(), order.end(), std::size_t{0});

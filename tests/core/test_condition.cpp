@@ -229,8 +229,8 @@ TEST_CASE("malformed conditions give precise messages and spans", "[condition]")
         Span span;
     };
     const std::vector<Case> cases = {
-        {"", "empty condition: write TRUE", {0, 0}},
-        {"   ", "empty condition: write TRUE", {0, 3}},
+        {"", "empty condition: write when the transition fires", {0, 0}},
+        {"   ", "empty condition: write when the transition fires", {0, 3}},
         {"a AND", "expected an operand after 'AND'", {5, 5}},
         {"a AND OR b", "expected an operand after 'AND', found 'OR'", {6, 8}},
         {"AND b", "expected an operand before 'AND'", {0, 3}},
@@ -300,7 +300,7 @@ TEST_CASE("parse errors carry their kind and pieces, and the same English text",
     for (int i = 0; i < 201; ++i)
         nots += "NOT ";
     const std::vector<Case> cases = {
-        {" ", Kind::Empty, "", "", 0, "empty condition: write TRUE for a transition that is always ready"},
+        {" ", Kind::Empty, "", "", 0, "empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it"},
         {"a (* x *)", Kind::Comment, "(* x *)", "", 0, "comments are not allowed in a condition"},
         {"a := b", Kind::ColonEquals, ":=", "", 0, "use = to compare; := is assignment"},
         {"a == b", Kind::DoubleEquals, "==", "", 0, "use = to compare; == is not Structured Text"},

@@ -20,6 +20,7 @@
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/languages.h"
+#include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
 #include "editor/valueproblemtext.h"
@@ -130,6 +131,7 @@ private slots:
     void stPreviewRewritesOnlyWhatChanged();
     void wrappingLabelHeightFollowsTextAndFont();
     void diagnosticTextTranslatesByCode();
+    void secondaryTextIsReadable();
     void syntaxErrorsAreInTheUiLanguage();
     void typeAndValueErrorsAreInTheUiLanguage();
     void objectNamesForSaveState();
@@ -911,17 +913,61 @@ void TestDocks::wrappingLabelHeightFollowsTextAndFont()
     QVERIFY(label.heightForWidth(2000) > oneLine);
 }
 
+void TestDocks::secondaryTextIsReadable()
+{
+    QVERIFY(qAbs(contrastRatio(Qt::black, Qt::white) - 21.0) < 0.01);
+    QVERIFY(qAbs(contrastRatio(Qt::white, Qt::white) - 1.0) < 0.01);
+    // Fusion's disabled text on its window, what hints used before: 1.6:1.
+    QVERIFY(contrastRatio(QColor(0xbe, 0xbe, 0xbe), QColor(0xef, 0xef, 0xef)) < 1.7);
+
+    QPalette dark;
+    dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
+    dark.setColor(QPalette::WindowText, QColor(0xf0, 0xf0, 0xf0));
+    dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
+    dark.setColor(QPalette::Text, QColor(0xe0, 0xe0, 0xe0));
+    for (const QPalette& palette : {QApplication::palette(), dark}) {
+        for (QPalette::ColorRole background : {QPalette::Window, QPalette::Base}) {
+            const QColor text = palette.color(background == QPalette::Base ? QPalette::Text : QPalette::WindowText);
+            const QColor secondary = secondaryTextColor(palette, background);
+            QVERIFY(contrastRatio(secondary, palette.color(background)) >= kMinimumTextContrast);
+            QVERIFY(secondary != text); // still told apart from the main text
+        }
+    }
+
+    // The Transition dock's hint lines use it.
+    Document document;
+    Selection selection;
+    TransitionDock dock(&document, &selection);
+    selection.select(ElementRef::transition("A1->F4"));
+    auto* names = child<QLabel>(&dock, "namesLabel");
+    QVERIFY(contrastRatio(names->palette().color(QPalette::WindowText), names->palette().color(QPalette::Window))
+            >= kMinimumTextContrast);
+}
+
 void TestDocks::diagnosticTextTranslatesByCode()
 {
     core::Diagnostic undeclared;
     undeclared.code = "GG203";
     undeclared.message = "in the condition of A1->F4: 'Foo' is not a declared variable";
     undeclared.arguments = { "A1->F4", "Foo", "'Foo' is not a declared variable" };
-    QCOMPARE(diagnosticText(undeclared), QString("In the condition of A1->F4: 'Foo' is not a declared variable."));
+    // Transitions named as the chart and the Problems dock's element column name them.
+    QCOMPARE(diagnosticText(undeclared),
+             QString::fromUtf8("In the condition of A1 \u2192 F4: 'Foo' is not a declared variable."));
 
     // Arguments the code does not promise: the English message, capitalised.
     undeclared.arguments = { "A1->F4" };
-    QCOMPARE(diagnosticText(undeclared), QString("In the condition of A1->F4: 'Foo' is not a declared variable"));
+    QCOMPARE(diagnosticText(undeclared),
+             QString::fromUtf8("In the condition of A1 \u2192 F4: 'Foo' is not a declared variable"));
+    undeclared.message = "F->D1 and F1->A2 overlap";
+    QCOMPARE(diagnosticText(undeclared), QString::fromUtf8("F (family) \u2192 D1 and F1 \u2192 A2 overlap"));
+
+    // An empty condition says what to write, or to hide what the machine does not need.
+    core::Diagnostic empty;
+    empty.code = "GG202";
+    empty.message = "the condition of A1->F4 is empty";
+    empty.arguments = {"A1->F4"};
+    QVERIFY(diagnosticText(empty).startsWith(QString::fromUtf8("The condition of A1 \u2192 F4 is empty")));
+    QVERIFY(diagnosticText(empty).contains(QStringLiteral("hide the transition")));
 
     core::Diagnostic unknown;
     unknown.code = "GG999";
@@ -970,11 +1016,11 @@ void TestDocks::syntaxErrorsAreInTheUiLanguage()
     const core::Diagnostic& syntax = diagnostics.front();
     QCOMPARE(QString::fromStdString(syntax.code), QString("GG201"));
     QCOMPARE(diagnosticText(syntax),
-             QString("Syntax error in the condition of A1->F4: expected an operand after 'AND', found ')'."));
+             QString::fromUtf8("Syntax error in the condition of A1 \u2192 F4: expected an operand after 'AND', found ')'."));
 
     Translators translators;
     QVERIFY(translators.setLanguage("fr"));
-    const QString french = QString::fromUtf8("Erreur de syntaxe dans la r\u00e9ceptivit\u00e9 de A1->F4\u00a0: "
+    const QString french = QString::fromUtf8("Erreur de syntaxe dans la r\u00e9ceptivit\u00e9 de A1 \u2192 F4\u00a0: "
                                              "op\u00e9rande attendu apr\u00e8s 'AND', trouv\u00e9 ')'.");
     QCOMPARE(diagnosticText(syntax), french);
     // The condition editor of the Transition dock and the Problems dock show it.
@@ -1050,7 +1096,7 @@ void TestDocks::typeAndValueErrorsAreInTheUiLanguage()
     const core::Diagnostic& typeError = onTransition.front();
     QCOMPARE(QString::fromStdString(typeError.code), QString("GG204"));
     QCOMPARE(diagnosticText(typeError),
-             QString("Type error in the condition of A1->F4: AND needs BOOL operands, but 'BottleCount' is INT."));
+             QString::fromUtf8("Type error in the condition of A1 \u2192 F4: AND needs BOOL operands, but 'BottleCount' is INT."));
     std::optional<core::Diagnostic> defaultError;
     for (const core::Diagnostic& diagnostic : document.diagnosticsFor(ElementRef::variable("Limit"))) {
         if (diagnostic.code == "GG304")
@@ -1063,7 +1109,7 @@ void TestDocks::typeAndValueErrorsAreInTheUiLanguage()
 
     Translators translators;
     QVERIFY(translators.setLanguage("fr"));
-    const QString frenchType = QString::fromUtf8("Erreur de type dans la r\u00e9ceptivit\u00e9 de A1->F4\u00a0: AND exige "
+    const QString frenchType = QString::fromUtf8("Erreur de type dans la r\u00e9ceptivit\u00e9 de A1 \u2192 F4\u00a0: AND exige "
                                                  "des op\u00e9randes BOOL, mais 'BottleCount' est de type INT.");
     QCOMPARE(diagnosticText(typeError), frenchType);
     QCOMPARE(diagnosticText(*defaultError),
@@ -1078,7 +1124,7 @@ void TestDocks::typeAndValueErrorsAreInTheUiLanguage()
     // A kind this editor does not know (a newer core): the English detail in the translated frame.
     core::Diagnostic newer = typeError;
     newer.arguments[3] = "something-new";
-    QCOMPARE(diagnosticText(newer), QString::fromUtf8("Erreur de type dans la r\u00e9ceptivit\u00e9 de A1->F4\u00a0: AND "
+    QCOMPARE(diagnosticText(newer), QString::fromUtf8("Erreur de type dans la r\u00e9ceptivit\u00e9 de A1 \u2192 F4\u00a0: AND "
                                                       "needs BOOL operands, but 'BottleCount' is INT."));
     newer = *defaultError;
     newer.arguments[3] = "something-new";

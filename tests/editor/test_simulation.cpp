@@ -511,7 +511,7 @@ void TestSimulation::unusableConditionIsInTheUiLanguage()
     m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
     QVERIFY(m_session->isActive());
     const QStringList texts = explanationTexts(*m_dock->explanationView());
-    QVERIFY2(texts.contains(QStringLiteral("Erreur de syntaxe dans la réceptivité de A6->A1\u00a0: opérande attendu "
+    QVERIFY2(texts.contains(QStringLiteral("Erreur de syntaxe dans la réceptivité de A6 \u2192 A1\u00a0: opérande attendu "
                                            "après 'AND'.")),
              qPrintable(texts.join('\n')));
 }

@@ -9,6 +9,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/secondarytext.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/diagnostictext.h"
 #include "editor/docks/problemsdock.h"
@@ -279,7 +280,7 @@ void TestVerification::modelEditMarksResultsStale()
     QCOMPARE(panel->view()->topLevelItemCount(), count);
     stuck = row(QStringLiteral("GV106"), QStringLiteral("D2"));
     QVERIFY(stuck);
-    const QColor grey = panel->palette().color(QPalette::Disabled, QPalette::Text);
+    const QColor grey = secondaryTextColor(panel->palette(), QPalette::Base);
     QCOMPARE(stuck->foreground(VerificationPanel::MessageColumn).color(), grey);
     QVERIFY(normal != grey);
     QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("Model changed since verification")));
@@ -371,7 +372,7 @@ void TestVerification::simulationCompleteModesAreAssumed()
     QTreeWidgetItem* first = panel->view()->topLevelItem(0);
     QVERIFY(first);
     QCOMPARE(first->foreground(VerificationPanel::MessageColumn).color(),
-             panel->palette().color(QPalette::Disabled, QPalette::Text));
+             secondaryTextColor(panel->palette(), QPalette::Base));
     panel->view()->setCurrentItem(first);
     QVERIFY(panel->replayAction()->isEnabled());
 
