@@ -46,13 +46,20 @@ bool report(const core::Status& status, QString* errorMessage)
     return status.ok;
 }
 
-// The model name as a file name: characters file systems refuse become '_'.
-QString baseFileName(const core::Model& model)
+} // namespace
+
+QString ExportActions::suggestedBaseName(const QString& modelPath, const core::Model& model)
 {
-    QString name = QString::fromStdString(model.settings().name).trimmed();
+    // "press.json" and "press.ggstudio.json" both give "press"; characters
+    // file systems refuse become '_'.
+    QString name = QFileInfo(modelPath).fileName().section('.', 0, 0);
+    if (name.isEmpty())
+        name = QString::fromStdString(model.settings().name).trimmed();
     name.replace(QRegularExpression(QStringLiteral(R"([\\/:*?"<>|\x00-\x1f])")), QStringLiteral("_"));
-    return name.isEmpty() ? QStringLiteral("GEMMA") : name;
+    return name.isEmpty() ? tr("untitled") : name;
 }
+
+namespace {
 
 QString withSuffix(QString path, const QString& suffix)
 {
@@ -308,7 +315,7 @@ core::Dialect ExportActions::lastDialect() const
 QString ExportActions::askSavePath(const QString& title, const QString& suffix, const QString& filters,
                                    QString* selectedFilter)
 {
-    QString name = baseFileName(m_document.model());
+    QString name = suggestedBaseName(m_document.filePath(), m_document.model());
     if (!suffix.isEmpty())
         name += '.' + suffix;
     const QString start = QDir(m_settings.lastExportDirectory()).filePath(name);

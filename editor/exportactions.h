@@ -46,6 +46,9 @@ public:
     // their count and the first few. True when there are none or the user
     // goes on.
     static bool confirmErrors(QWidget* parent, const std::vector<core::Diagnostic>& diagnostics);
+    // The name an export file starts with: the model file's ("press" for
+    // press.json), else the model's name (its PLC program's), else "untitled".
+    static QString suggestedBaseName(const QString& modelPath, const core::Model& model);
     // The question asked before a GG-Generator export that leaves part of
     // the model out (nested GRAFCETs, variable kinds, the evolution rule).
     // True when nothing is lost or the user goes on.

@@ -36,6 +36,8 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
+#include <QStyle>
+#include <QToolBar>
 #include <QSignalBlocker>
 #include <QStatusBar>
 #include <QUndoStack>
@@ -60,11 +62,16 @@ core::Model newTemplate(const Settings& settings)
 }
 
 // The window's first size: most of the screen, but no wider than a chart
-// and its docks need.
+// and its docks need. The size is the window's inside: the title bar and
+// frame the window manager adds (unknown before the window is shown) must
+// fit too, so some room is left for them (kFrameAllowance, enough for the
+// title bars of GNOME, KDE and Xfce).
+constexpr QSize kFrameAllowance(16, 48);
+
 QSize defaultWindowSize(const QWidget* window)
 {
     const QScreen* screen = window->screen() ? window->screen() : QGuiApplication::primaryScreen();
-    const QSize available = screen ? screen->availableSize() : QSize(1366, 768);
+    const QSize available = (screen ? screen->availableSize() : QSize(1366, 768)) - kFrameAllowance;
     return QSize(std::min(available.width(), 1600), std::min(available.height(), 1000));
 }
 
@@ -101,6 +108,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
         m_firstFrameWatched->installEventFilter(this);
     }
     createActions();
+    createToolBar();
     createMenus();
     createStatusBar();
     retranslate();
@@ -323,7 +331,8 @@ void MainWindow::createActions()
     m_newAction = action("newAction", &MainWindow::newModel, QKeySequence::New);
     m_openAction = action("openAction", &MainWindow::open, QKeySequence::Open);
     m_saveAction = action("saveAction", &MainWindow::save, QKeySequence::Save);
-    m_saveAsAction = action("saveAsAction", &MainWindow::saveAs, QKeySequence::SaveAs);
+    // QKeySequence::SaveAs is empty on some desktops; Ctrl+Shift+S everywhere.
+    m_saveAsAction = action("saveAsAction", &MainWindow::saveAs, Qt::CTRL | Qt::SHIFT | Qt::Key_S);
     m_resetAction = action("resetAction", &MainWindow::resetToTemplate);
     m_quitAction = action("quitAction", &QWidget::close, QKeySequence::Quit);
     m_quitAction->setMenuRole(QAction::QuitRole);
@@ -340,6 +349,7 @@ void MainWindow::createActions()
     connect(stack, &QUndoStack::undoTextChanged, this, &MainWindow::retranslate);
     connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::retranslate);
     m_modelSettingsAction = action("modelSettingsAction", &MainWindow::editModelSettings);
+    m_resetLayoutAction = action("resetLayoutAction", &MainWindow::resetLayout);
 
     m_showHiddenAction = new QAction(this);
     m_showHiddenAction->setObjectName("showHiddenAction");
@@ -434,6 +444,8 @@ void MainWindow::createMenus()
     m_viewMenu->addActions({m_fitAction, m_actualSizeAction, m_zoomInAction, m_zoomOutAction});
     m_viewMenu->addSeparator();
     m_viewMenu->addActions(toggleViewActions());
+    m_viewMenu->addAction(m_mainToolBar->toggleViewAction());
+    m_viewMenu->addAction(m_resetLayoutAction);
     m_dockActionsEnd = m_viewMenu->addSeparator();
     m_languageMenu = m_viewMenu->addMenu(QString());
     m_languageMenu->setObjectName("languageMenu");
@@ -450,6 +462,44 @@ void MainWindow::createMenus()
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName("helpMenu");
     m_helpMenu->addActions({m_aboutAction, m_aboutQtAction});
+}
+
+// The commands used most, each with its icon and its name: students and
+// occasional users find them without the menus.
+void MainWindow::createToolBar()
+{
+    m_mainToolBar = addToolBar(QString());
+    m_mainToolBar->setObjectName("mainToolBar");
+    m_mainToolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_mainToolBar->setMovable(false);
+    const auto add = [this](QAction* action, QStyle::StandardPixmap icon) {
+        action->setIcon(style()->standardIcon(icon));
+        m_mainToolBar->addAction(action);
+    };
+    add(m_newAction, QStyle::SP_FileIcon);
+    add(m_openAction, QStyle::SP_DirOpenIcon);
+    add(m_saveAction, QStyle::SP_DialogSaveButton);
+    m_mainToolBar->addSeparator();
+    add(m_undoAction, QStyle::SP_ArrowBack);
+    add(m_redoAction, QStyle::SP_ArrowForward);
+    m_mainToolBar->addSeparator();
+    add(m_simulateAction, QStyle::SP_MediaPlay);
+    add(m_verifyAction, QStyle::SP_DialogApplyButton);
+    m_mainToolBar->addSeparator();
+    add(m_exportActions->plcOpenAction(), QStyle::SP_ComputerIcon);
+}
+
+void MainWindow::resetLayout()
+{
+    ensureDocksReady();
+    for (QDockWidget* dock : docks()) {
+        dock->setFloating(false);
+        dock->show();
+    }
+    arrangeDocks(docks());
+    m_mainToolBar->show();
+    addToolBar(Qt::TopToolBarArea, m_mainToolBar);
+    applyDefaultLayout();
 }
 
 void MainWindow::createStatusBar()
@@ -589,6 +639,10 @@ void MainWindow::retranslate()
 
     m_showHiddenAction->setText(tr("Show &Hidden Elements"));
     m_showHiddenAction->setStatusTip(tr("Draw the hidden states and transitions faded, so they can be selected"));
+    m_resetLayoutAction->setText(tr("&Reset Layout"));
+    m_resetLayoutAction->setStatusTip(tr("Put the panels and the toolbar back where they were at the first start"));
+    m_mainToolBar->setWindowTitle(tr("Main Toolbar"));
+    m_exportActions->plcOpenAction()->setIconText(tr("Export PLCopen XML"));
     m_fitAction->setText(tr("&Fit Chart"));
     m_actualSizeAction->setText(tr("&Actual Size (100 %)"));
     m_zoomInAction->setText(tr("Zoom &In"));

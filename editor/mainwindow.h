@@ -10,6 +10,7 @@ class QAction;
 class QActionGroup;
 class QDockWidget;
 class QMenu;
+class QToolBar;
 
 namespace editor {
 
@@ -101,10 +102,13 @@ private:
     void stopWatchingFirstFrame();
     void createActions();
     void createMenus();
+    void createToolBar();
     void createStatusBar();
     void applyDefaultLayout();
     void restoreLayout();
     void saveLayout();
+    // View > Reset Layout: every panel back in its place of the first start.
+    void resetLayout();
     void retranslate();
 
     void newModel();
@@ -174,6 +178,8 @@ private:
     QAction* m_undoAction = nullptr;
     QAction* m_redoAction = nullptr;
     QAction* m_modelSettingsAction = nullptr;
+    QAction* m_resetLayoutAction = nullptr;
+    QToolBar* m_mainToolBar = nullptr;
     QAction* m_showHiddenAction = nullptr;
     QAction* m_fitAction = nullptr;
     QAction* m_actualSizeAction = nullptr;

@@ -43,6 +43,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
+#include <QScreen>
+#include <QToolBar>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPointer>
@@ -243,6 +245,10 @@ private slots:
 
     void opensOnTheTemplate();
     void docksAreAroundTheChart();
+    void toolbarHoldsTheMainCommands();
+    void resetLayoutPutsEveryPanelBack();
+    void windowFitsTheScreen();
+    void exportNamesFollowTheModelFile();
     void opensANativeFile();
     void examplesOpenAsUntitledCopies();
     void brokenFileLeavesTheModelUntouched();
@@ -344,6 +350,79 @@ void TestMainWindow::docksAreAroundTheChart()
     auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
     QVERIFY(viewMenu);
     QVERIFY(viewMenu->actions().contains(dock("problemsDock")->toggleViewAction()));
+}
+
+void TestMainWindow::toolbarHoldsTheMainCommands()
+{
+    auto* toolbar = m_window->findChild<QToolBar*>(QStringLiteral("mainToolBar"));
+    QVERIFY(toolbar);
+    QVERIFY(toolbar->isVisible());
+    QStringList names;
+    for (QAction* action : toolbar->actions()) {
+        if (!action->isSeparator()) {
+            names << action->objectName();
+            QVERIFY2(!action->icon().isNull() && !action->iconText().isEmpty(), qPrintable(action->objectName()));
+        }
+    }
+    QCOMPARE(names, QStringList({"newAction", "openAction", "saveAction", "undoAction", "redoAction",
+                                 "simulateAction", "verifyAction", "exportPlcOpenAction"}));
+    // The standard shortcuts, Save As included.
+    auto* saveAs = m_window->findChild<QAction*>(QStringLiteral("saveAsAction"));
+    QVERIFY(saveAs->shortcuts().contains(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)));
+    auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
+    QVERIFY(viewMenu->actions().contains(toolbar->toggleViewAction()));
+}
+
+void TestMainWindow::resetLayoutPutsEveryPanelBack()
+{
+    const auto dock = [this](const char* name) { return m_window->findChild<QDockWidget*>(QLatin1String(name)); };
+    auto* toolbar = m_window->findChild<QToolBar*>(QStringLiteral("mainToolBar"));
+    dock("stepDock")->setFloating(true);
+    dock("problemsDock")->hide();
+    m_window->addDockWidget(Qt::LeftDockWidgetArea, dock("variablesDock"));
+    toolbar->hide();
+    auto* reset = m_window->findChild<QAction*>(QStringLiteral("resetLayoutAction"));
+    QVERIFY(reset);
+    reset->trigger();
+    for (const char* name : {"stepDock", "transitionDock", "simulationDock"}) {
+        QVERIFY2(!dock(name)->isFloating() && !dock(name)->isHidden(), name);
+        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::RightDockWidgetArea);
+    }
+    for (const char* name : {"variablesDock", "problemsDock", "stPreviewDock"}) {
+        QVERIFY2(!dock(name)->isHidden(), name);
+        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::BottomDockWidgetArea);
+    }
+    QVERIFY(m_window->tabifiedDockWidgets(dock("variablesDock")).contains(dock("problemsDock")));
+    QVERIFY(!toolbar->isHidden());
+}
+
+void TestMainWindow::windowFitsTheScreen()
+{
+    // The first start (no saved geometry): inside the screen's available
+    // area, with room left for the title bar the window manager adds.
+    m_window.reset();
+    QSettings().clear();
+    MainWindow window(*m_translators);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const QRect available = window.screen()->availableGeometry();
+    QVERIFY2(window.width() + 16 <= available.width() && window.height() + 48 <= available.height(),
+             qPrintable(QStringLiteral("%1 x %2 in %3 x %4")
+                            .arg(window.width())
+                            .arg(window.height())
+                            .arg(available.width())
+                            .arg(available.height())));
+}
+
+void TestMainWindow::exportNamesFollowTheModelFile()
+{
+    core::Model model;
+    QVERIFY(model.setName("Press_Line"));
+    QCOMPARE(ExportActions::suggestedBaseName(QStringLiteral("/work/press.json"), model), QStringLiteral("press"));
+    QCOMPARE(ExportActions::suggestedBaseName(QStringLiteral("/work/cell.ggstudio.json"), model),
+             QStringLiteral("cell"));
+    // Untitled: the model's name, which is also its PLC program's.
+    QCOMPARE(ExportActions::suggestedBaseName(QString(), model), QStringLiteral("Press_Line"));
 }
 
 void TestMainWindow::opensANativeFile()
