@@ -175,6 +175,7 @@ struct CompiledProgram {
     };
     std::vector<OutputWrite> outputWrites;
     std::vector<int> edgeSlots; // variables with a <V>_PREV memory
+    std::vector<int> outputSlots; // VariableKind::Output variables, declaration order
 
     int slotOf(std::string_view name) const
     {
@@ -251,7 +252,7 @@ struct Simulator::Impl {
     bool fbComplete(int nestedIndex) const;
     int activeIndexFor(int number) const;
     void scan(ScanRecord* record);
-    void fillRecordAfter(ScanRecord& record) const;
+    void fillRecordAfter(ScanRecord& record, const std::vector<Cell>& outputsBefore) const;
     void collectChanges(ScanRecord* record);
     int stepIndexOfNested(std::string_view stepId) const;
     std::vector<ExplanationReason> explainFalse(const CompiledTransition& transition,
@@ -364,6 +365,8 @@ void CompiledProgram::compileVariables(const Model& model)
             value = cond::parseValue(variable.type, "");
         defaults.push_back(value ? toCell(*value) : Cell{});
         variableByUpperName.emplace(toUpperAscii(variable.name), slot);
+        if (variable.kind == VariableKind::Output)
+            outputSlots.push_back(slot);
     }
 }
 
@@ -754,7 +757,10 @@ void Simulator::Impl::scan(ScanRecord* record)
         collectChanges(record);
     ++scanCount;
     lastFired = nullptr;
+    std::vector<Cell> outputsBefore;
     if (record) {
+        for (int slot : compiled->outputSlots)
+            outputsBefore.push_back(values[static_cast<std::size_t>(slot)]);
         record->scan = scanCount;
         if (active >= 0)
             record->stepBefore = steps[static_cast<std::size_t>(active)].source->id;
@@ -799,10 +805,10 @@ void Simulator::Impl::scan(ScanRecord* record)
     }
     updateEdgeMemories();
     if (record)
-        fillRecordAfter(*record);
+        fillRecordAfter(*record, outputsBefore);
 }
 
-void Simulator::Impl::fillRecordAfter(ScanRecord& record) const
+void Simulator::Impl::fillRecordAfter(ScanRecord& record, const std::vector<Cell>& outputsBefore) const
 {
     if (lastFired)
         record.fired = lastFired->id;
@@ -812,8 +818,17 @@ void Simulator::Impl::fillRecordAfter(ScanRecord& record) const
     record.tokens.assign(tokenValues.begin(), tokenValues.end());
     record.complete.assign(completeOutput.begin(), completeOutput.end());
     record.nestedActive.clear();
-    for (const std::optional<NestedEngine>& engine : engines)
+    record.unstable.clear();
+    for (const std::optional<NestedEngine>& engine : engines) {
         record.nestedActive.push_back(engine ? engine->activeSteps() : std::vector<int>{});
+        record.unstable.push_back(engine && engine->unstable());
+    }
+    record.changedOutputs.clear();
+    for (std::size_t i = 0; i < compiled->outputSlots.size() && i < outputsBefore.size(); ++i) {
+        const auto slot = static_cast<std::size_t>(compiled->outputSlots[i]);
+        if (!sameCell(values[slot], outputsBefore[i], variableKinds[slot]))
+            record.changedOutputs.push_back(InputChange{variableNames[slot], toValue(values[slot], variableKinds[slot])});
+    }
 }
 
 int Simulator::Impl::stepIndexOfNested(std::string_view stepId) const
@@ -1305,6 +1320,63 @@ std::vector<TransitionExplanation> Simulator::explain() const
             firing = source.id;
         }
         result.push_back(std::move(explanation));
+    }
+    return result;
+}
+
+NestedExplanation Simulator::explainNested(std::string_view stepId) const
+{
+    const Impl& impl = *m_impl;
+    NestedExplanation result;
+    const int index = impl.stepIndexOfNested(stepId);
+    if (index < 0 || !impl.engines[static_cast<std::size_t>(index)])
+        return result;
+    const NestedEngine& engine = *impl.engines[static_cast<std::size_t>(index)];
+    result.stepId = impl.nestedSteps[static_cast<std::size_t>(index)];
+    result.untilStable = engine.grafcet().rule == EvolutionRule::UntilStable;
+    result.called = impl.active >= 0 && impl.steps[static_cast<std::size_t>(impl.active)].nestedIndex == index;
+    if (!result.called) {
+        result.situation = engine.activeSteps();
+        ExplanationReason notCalled;
+        notCalled.kind = ExplanationReason::Kind::NotCalled;
+        notCalled.subject = result.stepId;
+        for (const NestedTransition& transition : engine.grafcet().transitions) {
+            NestedTransitionExplanation explanation;
+            explanation.number = transition.number;
+            explanation.upstream = transition.upstream;
+            explanation.downstream = transition.downstream;
+            explanation.receptivity = transition.text;
+            explanation.status = NestedTransitionStatus::NotCalled;
+            explanation.reasons.push_back(notCalled);
+            result.transitions.push_back(std::move(explanation));
+        }
+        return result;
+    }
+    result.initialization = impl.entry;
+    // The Initialization call's actions write the globals: predict on a copy.
+    std::vector<Cell> scratch = impl.values;
+    SimulatorGlobals globals(scratch, impl.variableKinds, impl.previous);
+    result.transitions = engine.explainNextCall(result.initialization, (impl.scanCount + 1) * impl.cycleTimeMs,
+                                                globals, &result.situation);
+    for (NestedTransitionExplanation& explanation : result.transitions) {
+        if (explanation.status != NestedTransitionStatus::Unusable)
+            continue;
+        for (const GemmaProblem& problem : impl.program.problems) {
+            if (problem.kind != GemmaProblem::Kind::Error || problem.nestedTransition != explanation.number
+                || !equalsIgnoreCase(problem.element, result.stepId))
+                continue;
+            ExplanationReason reason;
+            reason.kind = ExplanationReason::Kind::Unusable;
+            reason.code = problem.code;
+            reason.arguments = problem.arguments;
+            reason.message = problem.message;
+            explanation.reasons.push_back(std::move(reason));
+        }
+        if (explanation.reasons.empty()) { // not expected: an unusable receptivity has an error
+            ExplanationReason unknown;
+            unknown.kind = ExplanationReason::Kind::Unusable;
+            explanation.reasons.push_back(std::move(unknown));
+        }
     }
     return result;
 }
