@@ -250,6 +250,11 @@ struct Simulator::Impl {
     bool evaluate(const CompiledTransition& transition, const std::vector<char>& tokenState) const;
     cond::Value nodeReading(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
     bool fbComplete(int nestedIndex) const;
+    bool predictNestedCall(const CompiledStep& step, std::vector<Cell>& scratch) const;
+    // explain(): the values the next scan's conditions read, when they differ
+    // from `values` (a nested GRAFCET's stored actions run before them).
+    mutable const std::vector<Cell>* explainValues = nullptr;
+    const std::vector<Cell>& readValues() const { return explainValues ? *explainValues : values; }
     int activeIndexFor(int number) const;
     void scan(ScanRecord* record);
     void fillRecordAfter(ScanRecord& record, const std::vector<Cell>& outputsBefore) const;
@@ -636,7 +641,7 @@ bool Simulator::Impl::evaluate(const CompiledTransition& transition, const std::
     }
     // `next` is the first free cell; the top of the stack is next[-1].
     Cell* next = stack.data();
-    const Cell* vars = values.data();
+    const Cell* vars = readValues().data();
     for (const Instruction& in : condition.code) {
         switch (in.op) {
         case Op::PushVariable: *next++ = vars[in.slot]; break;
@@ -691,7 +696,7 @@ cond::Value Simulator::Impl::nodeReading(const CompiledTransition& transition, i
         return tokenState[static_cast<std::size_t>(transition.nodeToken[index])] != 0;
     if (index < transition.nodeVariable.size() && transition.nodeVariable[index] >= 0) {
         const auto slot = static_cast<std::size_t>(transition.nodeVariable[index]);
-        return toValue(values[slot], variableKinds[slot]);
+        return toValue(readValues()[slot], variableKinds[slot]);
     }
     return false;
 }
@@ -732,6 +737,24 @@ bool Simulator::Impl::fbComplete(int nestedIndex) const
 {
     const auto index = static_cast<std::size_t>(nestedIndex);
     return completeModes[index] == CompleteMode::Automatic || manualComplete[index] != 0;
+}
+
+// The next scan's call(s) of a step's nested GRAFCET, run on a copy of the
+// engine over `scratch` (a copy of the values, left as the calls leave them:
+// what the GEMMA conditions read after the FB). Returns the Complete the FB
+// yields. For a step without GRAFCET: fbComplete(), scratch untouched.
+bool Simulator::Impl::predictNestedCall(const CompiledStep& step, std::vector<Cell>& scratch) const
+{
+    const std::optional<NestedEngine>& engine = engines[static_cast<std::size_t>(step.nestedIndex)];
+    if (!engine)
+        return fbComplete(step.nestedIndex);
+    NestedEngine next(*engine);
+    SimulatorGlobals globals(scratch, variableKinds, previous);
+    const std::int64_t nowMs = (scanCount + 1) * cycleTimeMs;
+    if (entry)
+        next.call(true, nowMs, globals);
+    next.call(false, nowMs, globals);
+    return next.complete();
 }
 
 void Simulator::Impl::collectChanges(ScanRecord* record)
@@ -1280,10 +1303,21 @@ std::vector<TransitionExplanation> Simulator::explain() const
     // The next scan as it will start: the entry block resets the tokens, the FB yields Complete.
     std::vector<char> tokenState = impl.tokenValues;
     bool complete = false;
+    std::vector<Cell> afterCall;
+    struct ReadingGuard {
+        const Impl& impl;
+        ~ReadingGuard() { impl.explainValues = nullptr; }
+    } guard{impl};
     if (step.nestedIndex >= 0) {
         if (impl.entry)
             std::fill_n(tokenState.begin() + step.firstToken, step.tokenCount, 0);
-        complete = impl.fbComplete(step.nestedIndex);
+        // A nested GRAFCET runs first: Complete is what it yields, the
+        // conditions read what its stored actions wrote.
+        if (impl.engines[static_cast<std::size_t>(step.nestedIndex)]) {
+            afterCall = impl.values;
+            impl.explainValues = &afterCall;
+        }
+        complete = impl.predictNestedCall(step, afterCall);
     }
     ExplanationReason completeFalse;
     completeFalse.kind = ExplanationReason::Kind::CompleteFalse;

@@ -112,7 +112,9 @@ std::string_view transitionStatusName(TransitionStatus status); // "fires", "con
 // Why a transition of the active step does or does not fire in the NEXT scan.
 // explain() predicts that scan without running it: if Entry is TRUE and the
 // step has a nested behaviour, its tokens read FALSE (the entry block resets
-// them) and Complete is what its FB will yield in that scan.
+// them) and Complete is what its FB will yield in that scan; for a nested
+// GRAFCET the FB's calls are run on copies first, so Complete is the
+// GRAFCET's and the conditions read what its stored actions write.
 struct TransitionExplanation {
     std::string transitionId; // "F1->A2"
     std::string targetId;

@@ -271,7 +271,7 @@ TEST_CASE("Nested explanation: until stable explains the first evolution", "[sim
     CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{3});
 }
 
-TEST_CASE("Nested explanation: the prediction agrees with the scan on the drilling cell", "[simulation][nested-explanation][example]")
+TEST_CASE("Explanations: the predictions agree with the scan on the drilling cell", "[simulation][nested-explanation][example]")
 {
     const auto loaded = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
     REQUIRE(loaded.model);
@@ -293,15 +293,22 @@ TEST_CASE("Nested explanation: the prediction agrees with the scan on the drilli
             REQUIRE(simulator.setVariableAt(input, !cond::isTrue(simulator.variableValue(input))));
         }
         const std::string step = simulator.activeStepId();
+        // The GEMMA transition explain() says fires is the one the scan fires.
+        std::string firing;
+        for (const TransitionExplanation& e : simulator.explain()) {
+            if (e.status == TransitionStatus::Fires)
+                firing = e.transitionId;
+        }
         if (!simulator.hasGrafcet(step)) {
-            simulator.step();
+            CHECK(simulator.step().fired == firing);
             continue;
         }
         const NestedExplanation next = simulator.explainNested(step);
         REQUIRE(next.called);
         const std::vector<int> predicted = predictedSituation(next);
-        simulator.step();
+        const ScanRecord record = simulator.step();
         INFO("scan " << simulator.scanCount() << ", " << step);
+        CHECK(record.fired == firing);
         CHECK(simulator.activeNestedSteps(step) == predicted);
         ++explained;
         entries += next.initialization ? 1 : 0;
@@ -310,4 +317,41 @@ TEST_CASE("Nested explanation: the prediction agrees with the scan on the drilli
     CHECK(explained > 1000);
     CHECK(entries > 5);
     CHECK(firings > 20);
+}
+
+TEST_CASE("GEMMA explanation of a step with a GRAFCET: its Complete and its stored actions", "[simulation][nested-explanation]")
+{
+    // F1 -> A2 waits for the GRAFCET's Complete, set on entering step 3.
+    Simulator simulator(timedModel());
+    std::vector<TransitionExplanation> next = simulator.explain();
+    auto find = [&](const std::string& id) -> const TransitionExplanation& {
+        const auto found = std::find_if(next.begin(), next.end(),
+                                        [&](const TransitionExplanation& e) { return e.transitionId == id; });
+        REQUIRE(found != next.end());
+        return *found;
+    };
+    CHECK(find("F1->A2").status == TransitionStatus::WaitingForComplete);
+    REQUIRE(simulator.setVariable("Start", true));
+    simulator.run(251); // 1 -> 2 in scan 1; 5s/X2 holds in scan 252
+    next = simulator.explain();
+    CHECK(find("F1->A2").status == TransitionStatus::Fires); // step 3 sets Complete in that very call
+    CHECK(simulator.step().fired == "F1->A2");
+
+    // F -> D1 reads Alarm, which the initial step's on-activation action sets.
+    Model model;
+    Variable alarm{"Alarm", IecType::Bool, "", ""};
+    alarm.kind = VariableKind::Internal;
+    REQUIRE(model.addVariable(alarm));
+    REQUIRE(model.setInitialStep("F1"));
+    REQUIRE(model.setCondition("F1->A2", "TRUE"));
+    REQUIRE(model.setCondition("F->D1", "Alarm"));
+    REQUIRE(model.setTransitionHidden("F->D1", false));
+    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {{ActionTiming::OnActivation, "S Alarm"}}}));
+    REQUIRE(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::OnActivation, "S Complete"}}}));
+    REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2}, "FALSE"}));
+    Simulator alarmed(model);
+    next = alarmed.explain();
+    CHECK(find("F->D1").status == TransitionStatus::Fires);
+    CHECK(alarmed.variable("Alarm") == cond::Value{false}); // explaining changes nothing
+    CHECK(alarmed.step().fired == "F->D1");
 }
