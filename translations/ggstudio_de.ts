@@ -1058,6 +1058,36 @@
         <source>the Complete of %1 comes from its nested GRAFCET: it cannot be set</source>
         <translation>das Complete von %1 kommt aus seinem eingebetteten GRAFCET: es kann nicht gesetzt werden</translation>
     </message>
+    <message>
+        <source>step %1 is not active</source>
+        <extracomment>an upstream step of a nested GRAFCET&apos;s transition</extracomment>
+        <translation>Schritt %1 ist nicht aktiv</translation>
+    </message>
+    <message>
+        <source>steps %1 are not active</source>
+        <extracomment>the upstream steps of a nested GRAFCET&apos;s transition (&quot;2, 3&quot;)</extracomment>
+        <translation>Schritte %1 sind nicht aktiv</translation>
+    </message>
+    <message>
+        <source>no rising edge of %1 this scan (%1 = %2, at the end of the previous scan %3)</source>
+        <extracomment>%1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan</extracomment>
+        <translation>keine steigende Flanke von %1 in diesem Zyklus (%1 = %2, am Ende des vorigen Zyklus %3)</translation>
+    </message>
+    <message>
+        <source>no falling edge of %1 this scan (%1 = %2, at the end of the previous scan %3)</source>
+        <extracomment>%1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan</extracomment>
+        <translation>keine fallende Flanke von %1 in diesem Zyklus (%1 = %2, am Ende des vorigen Zyklus %3)</translation>
+    </message>
+    <message>
+        <source>%1 is FALSE: step %2 active for %3 ms of %4 ms</source>
+        <extracomment>%1: a time-dependent receptivity (&quot;5s/X2&quot;); %2: its step; %3 of %4: elapsed and set time in ms</extracomment>
+        <translation>%1 ist FALSE: Schritt %2 seit %3 ms von %4 ms aktiv</translation>
+    </message>
+    <message>
+        <source>%1 is not the active step: its GRAFCET does not evolve in the next scan</source>
+        <extracomment>a macro-step or enclosing step</extracomment>
+        <translation>%1 ist nicht der aktive Schritt: sein GRAFCET entwickelt sich im nächsten Zyklus nicht</translation>
+    </message>
 </context>
 <context>
     <name>StateNames</name>
@@ -1966,10 +1996,6 @@
         <translation>Als Szenario &amp;aufzeichnen…</translation>
     </message>
     <message>
-        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and an expectation for every transition that fired</source>
-        <translation>Diese Sitzung seit dem letzten Zurücksetzen als Szenariodatei speichern: die Eingänge jedes Zyklus und eine Erwartung für jede geschaltete Transition</translation>
-    </message>
-    <message>
         <source>Re&amp;play Scenario…</source>
         <translation>Szenario ab&amp;spielen…</translation>
     </message>
@@ -2100,6 +2126,65 @@
     <message>
         <source>Could not replay %1.</source>
         <translation>%1 konnte nicht abgespielt werden.</translation>
+    </message>
+    <message>
+        <source>upstream step not active</source>
+        <translation>vorausgehender Schritt nicht aktiv</translation>
+    </message>
+    <message>
+        <source>receptivity FALSE</source>
+        <translation>Weiterschaltbedingung FALSE</translation>
+    </message>
+    <message>
+        <source>receptivity unusable (always FALSE)</source>
+        <translation>Weiterschaltbedingung unbrauchbar (immer FALSE)</translation>
+    </message>
+    <message>
+        <source>not called</source>
+        <translation>nicht aufgerufen</translation>
+    </message>
+    <message>
+        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and expectations for every transition that fired, every output that changed and every nested situation that changed</source>
+        <translation>Diese Sitzung seit dem letzten Zurücksetzen als Szenariodatei speichern: die Eingänge jedes Zyklus und Erwartungen für jede geschaltete Transition, jeden geänderten Ausgang und jede geänderte Situation eines eingebetteten GRAFCETs</translation>
+    </message>
+    <message>
+        <source>GRAFCET of %1: no step active</source>
+        <translation>GRAFCET von %1: kein Schritt aktiv</translation>
+    </message>
+    <message>
+        <source>GRAFCET of %1: steps %2</source>
+        <translation>GRAFCET von %1: Schritte %2</translation>
+    </message>
+    <message>
+        <source>initialised again in the next scan (steps %1)</source>
+        <translation>wird im nächsten Zyklus neu initialisiert (Schritte %1)</translation>
+    </message>
+    <message>
+        <source>first evolution of the next scan</source>
+        <translation>erste Entwicklung des nächsten Zyklus</translation>
+    </message>
+    <message>
+        <source>Until stable: the next scan&apos;s first evolution is explained; later evolutions of the same scan follow with edges FALSE.</source>
+        <translation>Bis stabil: Erklärt wird die erste Entwicklung des nächsten Zyklus; weitere Entwicklungen desselben Zyklus folgen mit Flanken FALSE.</translation>
+    </message>
+    <message>
+        <source>One evolution per scan.</source>
+        <translation>Eine Entwicklung pro Zyklus.</translation>
+    </message>
+    <message>
+        <source>%1 (step %2): %3 ms of %4 ms</source>
+        <extracomment>%1: a timer of a time-dependent receptivity; %2: its step; %3 of %4: elapsed and set time in ms</extracomment>
+        <translation>%1 (Schritt %2): %3 ms von %4 ms</translation>
+    </message>
+    <message>
+        <source>Outputs: %1</source>
+        <extracomment>the outputs a nested GRAFCET drives, with their values (&quot;Spindle = TRUE, Marker = FALSE&quot;)</extracomment>
+        <translation>Ausgänge: %1</translation>
+    </message>
+    <message>
+        <source>T%1 (%2 → %3)</source>
+        <extracomment>a transition of a nested GRAFCET: its number, upstream and downstream steps</extracomment>
+        <translation>T%1 (%2 → %3)</translation>
     </message>
 </context>
 <context>

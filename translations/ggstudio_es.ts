@@ -1058,6 +1058,36 @@
         <source>the Complete of %1 comes from its nested GRAFCET: it cannot be set</source>
         <translation>el Complete de %1 viene de su GRAFCET anidado: no se puede fijar</translation>
     </message>
+    <message>
+        <source>step %1 is not active</source>
+        <extracomment>an upstream step of a nested GRAFCET&apos;s transition</extracomment>
+        <translation>la etapa %1 no está activa</translation>
+    </message>
+    <message>
+        <source>steps %1 are not active</source>
+        <extracomment>the upstream steps of a nested GRAFCET&apos;s transition (&quot;2, 3&quot;)</extracomment>
+        <translation>las etapas %1 no están activas</translation>
+    </message>
+    <message>
+        <source>no rising edge of %1 this scan (%1 = %2, at the end of the previous scan %3)</source>
+        <extracomment>%1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan</extracomment>
+        <translation>sin flanco ascendente de %1 en este ciclo (%1 = %2, al final del ciclo anterior %3)</translation>
+    </message>
+    <message>
+        <source>no falling edge of %1 this scan (%1 = %2, at the end of the previous scan %3)</source>
+        <extracomment>%1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan</extracomment>
+        <translation>sin flanco descendente de %1 en este ciclo (%1 = %2, al final del ciclo anterior %3)</translation>
+    </message>
+    <message>
+        <source>%1 is FALSE: step %2 active for %3 ms of %4 ms</source>
+        <extracomment>%1: a time-dependent receptivity (&quot;5s/X2&quot;); %2: its step; %3 of %4: elapsed and set time in ms</extracomment>
+        <translation>%1 es FALSE: etapa %2 activa desde hace %3 ms de %4 ms</translation>
+    </message>
+    <message>
+        <source>%1 is not the active step: its GRAFCET does not evolve in the next scan</source>
+        <extracomment>a macro-step or enclosing step</extracomment>
+        <translation>%1 no es la etapa activa: su GRAFCET no evoluciona en el próximo ciclo</translation>
+    </message>
 </context>
 <context>
     <name>StateNames</name>
@@ -1966,10 +1996,6 @@
         <translation>&amp;Grabar como escenario…</translation>
     </message>
     <message>
-        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and an expectation for every transition that fired</source>
-        <translation>Guardar esta sesión desde el último reinicio como archivo de escenario: las entradas de cada ciclo y una expectativa por cada transición franqueada</translation>
-    </message>
-    <message>
         <source>Re&amp;play Scenario…</source>
         <translation>&amp;Reproducir un escenario…</translation>
     </message>
@@ -2100,6 +2126,65 @@
     <message>
         <source>Could not replay %1.</source>
         <translation>No se ha podido reproducir %1.</translation>
+    </message>
+    <message>
+        <source>upstream step not active</source>
+        <translation>etapa anterior no activa</translation>
+    </message>
+    <message>
+        <source>receptivity FALSE</source>
+        <translation>receptividad FALSE</translation>
+    </message>
+    <message>
+        <source>receptivity unusable (always FALSE)</source>
+        <translation>receptividad inutilizable (siempre FALSE)</translation>
+    </message>
+    <message>
+        <source>not called</source>
+        <translation>no llamado</translation>
+    </message>
+    <message>
+        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and expectations for every transition that fired, every output that changed and every nested situation that changed</source>
+        <translation>Guardar esta sesión desde el último reinicio como archivo de escenario: las entradas de cada ciclo y expectativas por cada transición franqueada, cada salida que cambió y cada situación de un GRAFCET anidado que cambió</translation>
+    </message>
+    <message>
+        <source>GRAFCET of %1: no step active</source>
+        <translation>GRAFCET de %1: ninguna etapa activa</translation>
+    </message>
+    <message>
+        <source>GRAFCET of %1: steps %2</source>
+        <translation>GRAFCET de %1: etapas %2</translation>
+    </message>
+    <message>
+        <source>initialised again in the next scan (steps %1)</source>
+        <translation>se reinicializa en el próximo ciclo (etapas %1)</translation>
+    </message>
+    <message>
+        <source>first evolution of the next scan</source>
+        <translation>primera evolución del próximo ciclo</translation>
+    </message>
+    <message>
+        <source>Until stable: the next scan&apos;s first evolution is explained; later evolutions of the same scan follow with edges FALSE.</source>
+        <translation>Hasta estabilidad: se explica la primera evolución del próximo ciclo; las evoluciones siguientes del mismo ciclo siguen con los flancos en FALSE.</translation>
+    </message>
+    <message>
+        <source>One evolution per scan.</source>
+        <translation>Una evolución por ciclo.</translation>
+    </message>
+    <message>
+        <source>%1 (step %2): %3 ms of %4 ms</source>
+        <extracomment>%1: a timer of a time-dependent receptivity; %2: its step; %3 of %4: elapsed and set time in ms</extracomment>
+        <translation>%1 (etapa %2): %3 ms de %4 ms</translation>
+    </message>
+    <message>
+        <source>Outputs: %1</source>
+        <extracomment>the outputs a nested GRAFCET drives, with their values (&quot;Spindle = TRUE, Marker = FALSE&quot;)</extracomment>
+        <translation>Salidas: %1</translation>
+    </message>
+    <message>
+        <source>T%1 (%2 → %3)</source>
+        <extracomment>a transition of a nested GRAFCET: its number, upstream and downstream steps</extracomment>
+        <translation>T%1 (%2 → %3)</translation>
     </message>
 </context>
 <context>

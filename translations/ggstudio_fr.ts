@@ -1058,6 +1058,36 @@
         <source>the Complete of %1 comes from its nested GRAFCET: it cannot be set</source>
         <translation>le Complete de %1 vient de son GRAFCET imbriqué : il ne peut pas être réglé</translation>
     </message>
+    <message>
+        <source>step %1 is not active</source>
+        <extracomment>an upstream step of a nested GRAFCET&apos;s transition</extracomment>
+        <translation>l&apos;étape %1 n&apos;est pas active</translation>
+    </message>
+    <message>
+        <source>steps %1 are not active</source>
+        <extracomment>the upstream steps of a nested GRAFCET&apos;s transition (&quot;2, 3&quot;)</extracomment>
+        <translation>les étapes %1 ne sont pas actives</translation>
+    </message>
+    <message>
+        <source>no rising edge of %1 this scan (%1 = %2, at the end of the previous scan %3)</source>
+        <extracomment>%1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan</extracomment>
+        <translation>pas de front montant de %1 dans ce cycle (%1 = %2, à la fin du cycle précédent %3)</translation>
+    </message>
+    <message>
+        <source>no falling edge of %1 this scan (%1 = %2, at the end of the previous scan %3)</source>
+        <extracomment>%1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan</extracomment>
+        <translation>pas de front descendant de %1 dans ce cycle (%1 = %2, à la fin du cycle précédent %3)</translation>
+    </message>
+    <message>
+        <source>%1 is FALSE: step %2 active for %3 ms of %4 ms</source>
+        <extracomment>%1: a time-dependent receptivity (&quot;5s/X2&quot;); %2: its step; %3 of %4: elapsed and set time in ms</extracomment>
+        <translation>%1 est FALSE : étape %2 active depuis %3 ms sur %4 ms</translation>
+    </message>
+    <message>
+        <source>%1 is not the active step: its GRAFCET does not evolve in the next scan</source>
+        <extracomment>a macro-step or enclosing step</extracomment>
+        <translation>%1 n&apos;est pas l&apos;étape active : son GRAFCET n&apos;évolue pas au prochain cycle</translation>
+    </message>
 </context>
 <context>
     <name>StateNames</name>
@@ -1966,10 +1996,6 @@
         <translation>&amp;Enregistrer comme scénario…</translation>
     </message>
     <message>
-        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and an expectation for every transition that fired</source>
-        <translation>Enregistrer cette session depuis la dernière réinitialisation dans un fichier de scénario&#xa0;: les entrées de chaque cycle et une attente pour chaque transition franchie</translation>
-    </message>
-    <message>
         <source>Re&amp;play Scenario…</source>
         <translation>&amp;Rejouer un scénario…</translation>
     </message>
@@ -2100,6 +2126,65 @@
     <message>
         <source>Could not replay %1.</source>
         <translation>Impossible de rejouer %1.</translation>
+    </message>
+    <message>
+        <source>upstream step not active</source>
+        <translation>étape amont non active</translation>
+    </message>
+    <message>
+        <source>receptivity FALSE</source>
+        <translation>réceptivité FALSE</translation>
+    </message>
+    <message>
+        <source>receptivity unusable (always FALSE)</source>
+        <translation>réceptivité inutilisable (toujours FALSE)</translation>
+    </message>
+    <message>
+        <source>not called</source>
+        <translation>non appelé</translation>
+    </message>
+    <message>
+        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and expectations for every transition that fired, every output that changed and every nested situation that changed</source>
+        <translation>Enregistrer cette session depuis la dernière réinitialisation dans un fichier de scénario&#xa0;: les entrées de chaque cycle et des attentes pour chaque transition franchie, chaque sortie qui a changé et chaque situation d&apos;un GRAFCET imbriqué qui a changé</translation>
+    </message>
+    <message>
+        <source>GRAFCET of %1: no step active</source>
+        <translation>GRAFCET de %1 : aucune étape active</translation>
+    </message>
+    <message>
+        <source>GRAFCET of %1: steps %2</source>
+        <translation>GRAFCET de %1 : étapes %2</translation>
+    </message>
+    <message>
+        <source>initialised again in the next scan (steps %1)</source>
+        <translation>réinitialisé au prochain cycle (étapes %1)</translation>
+    </message>
+    <message>
+        <source>first evolution of the next scan</source>
+        <translation>première évolution du prochain cycle</translation>
+    </message>
+    <message>
+        <source>Until stable: the next scan&apos;s first evolution is explained; later evolutions of the same scan follow with edges FALSE.</source>
+        <translation>Jusqu&apos;à stabilité : la première évolution du prochain cycle est expliquée ; les évolutions suivantes du même cycle suivent avec les fronts à FALSE.</translation>
+    </message>
+    <message>
+        <source>One evolution per scan.</source>
+        <translation>Une évolution par cycle.</translation>
+    </message>
+    <message>
+        <source>%1 (step %2): %3 ms of %4 ms</source>
+        <extracomment>%1: a timer of a time-dependent receptivity; %2: its step; %3 of %4: elapsed and set time in ms</extracomment>
+        <translation>%1 (étape %2) : %3 ms sur %4 ms</translation>
+    </message>
+    <message>
+        <source>Outputs: %1</source>
+        <extracomment>the outputs a nested GRAFCET drives, with their values (&quot;Spindle = TRUE, Marker = FALSE&quot;)</extracomment>
+        <translation>Sorties : %1</translation>
+    </message>
+    <message>
+        <source>T%1 (%2 → %3)</source>
+        <extracomment>a transition of a nested GRAFCET: its number, upstream and downstream steps</extracomment>
+        <translation>T%1 (%2 → %3)</translation>
     </message>
 </context>
 <context>

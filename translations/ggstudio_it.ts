@@ -1058,6 +1058,36 @@
         <source>the Complete of %1 comes from its nested GRAFCET: it cannot be set</source>
         <translation>il Complete di %1 viene dal suo GRAFCET annidato: non può essere impostato</translation>
     </message>
+    <message>
+        <source>step %1 is not active</source>
+        <extracomment>an upstream step of a nested GRAFCET&apos;s transition</extracomment>
+        <translation>la tappa %1 non è attiva</translation>
+    </message>
+    <message>
+        <source>steps %1 are not active</source>
+        <extracomment>the upstream steps of a nested GRAFCET&apos;s transition (&quot;2, 3&quot;)</extracomment>
+        <translation>le tappe %1 non sono attive</translation>
+    </message>
+    <message>
+        <source>no rising edge of %1 this scan (%1 = %2, at the end of the previous scan %3)</source>
+        <extracomment>%1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan</extracomment>
+        <translation>nessun fronte di salita di %1 in questo ciclo (%1 = %2, alla fine del ciclo precedente %3)</translation>
+    </message>
+    <message>
+        <source>no falling edge of %1 this scan (%1 = %2, at the end of the previous scan %3)</source>
+        <extracomment>%1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan</extracomment>
+        <translation>nessun fronte di discesa di %1 in questo ciclo (%1 = %2, alla fine del ciclo precedente %3)</translation>
+    </message>
+    <message>
+        <source>%1 is FALSE: step %2 active for %3 ms of %4 ms</source>
+        <extracomment>%1: a time-dependent receptivity (&quot;5s/X2&quot;); %2: its step; %3 of %4: elapsed and set time in ms</extracomment>
+        <translation>%1 è FALSE: tappa %2 attiva da %3 ms su %4 ms</translation>
+    </message>
+    <message>
+        <source>%1 is not the active step: its GRAFCET does not evolve in the next scan</source>
+        <extracomment>a macro-step or enclosing step</extracomment>
+        <translation>%1 non è la tappa attiva: il suo GRAFCET non evolve al prossimo ciclo</translation>
+    </message>
 </context>
 <context>
     <name>StateNames</name>
@@ -1966,10 +1996,6 @@
         <translation>&amp;Registra come scenario…</translation>
     </message>
     <message>
-        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and an expectation for every transition that fired</source>
-        <translation>Salva questa sessione dall&apos;ultimo ripristino come file di scenario: gli ingressi di ogni ciclo e un&apos;attesa per ogni transizione scattata</translation>
-    </message>
-    <message>
         <source>Re&amp;play Scenario…</source>
         <translation>Ri&amp;produci uno scenario…</translation>
     </message>
@@ -2100,6 +2126,65 @@
     <message>
         <source>Could not replay %1.</source>
         <translation>Impossibile riprodurre %1.</translation>
+    </message>
+    <message>
+        <source>upstream step not active</source>
+        <translation>tappa a monte non attiva</translation>
+    </message>
+    <message>
+        <source>receptivity FALSE</source>
+        <translation>ricettività FALSE</translation>
+    </message>
+    <message>
+        <source>receptivity unusable (always FALSE)</source>
+        <translation>ricettività inutilizzabile (sempre FALSE)</translation>
+    </message>
+    <message>
+        <source>not called</source>
+        <translation>non chiamato</translation>
+    </message>
+    <message>
+        <source>Save this session since the last reset as a scenario file: the inputs of each scan, and expectations for every transition that fired, every output that changed and every nested situation that changed</source>
+        <translation>Salva questa sessione dall&apos;ultimo ripristino come file di scenario: gli ingressi di ogni ciclo e attese per ogni transizione scattata, ogni uscita cambiata e ogni situazione cambiata di un GRAFCET annidato</translation>
+    </message>
+    <message>
+        <source>GRAFCET of %1: no step active</source>
+        <translation>GRAFCET di %1: nessuna tappa attiva</translation>
+    </message>
+    <message>
+        <source>GRAFCET of %1: steps %2</source>
+        <translation>GRAFCET di %1: tappe %2</translation>
+    </message>
+    <message>
+        <source>initialised again in the next scan (steps %1)</source>
+        <translation>reinizializzato al prossimo ciclo (tappe %1)</translation>
+    </message>
+    <message>
+        <source>first evolution of the next scan</source>
+        <translation>prima evoluzione del prossimo ciclo</translation>
+    </message>
+    <message>
+        <source>Until stable: the next scan&apos;s first evolution is explained; later evolutions of the same scan follow with edges FALSE.</source>
+        <translation>Fino a stabilità: si spiega la prima evoluzione del prossimo ciclo; le evoluzioni successive dello stesso ciclo seguono con i fronti a FALSE.</translation>
+    </message>
+    <message>
+        <source>One evolution per scan.</source>
+        <translation>Una evoluzione per ciclo.</translation>
+    </message>
+    <message>
+        <source>%1 (step %2): %3 ms of %4 ms</source>
+        <extracomment>%1: a timer of a time-dependent receptivity; %2: its step; %3 of %4: elapsed and set time in ms</extracomment>
+        <translation>%1 (tappa %2): %3 ms su %4 ms</translation>
+    </message>
+    <message>
+        <source>Outputs: %1</source>
+        <extracomment>the outputs a nested GRAFCET drives, with their values (&quot;Spindle = TRUE, Marker = FALSE&quot;)</extracomment>
+        <translation>Uscite: %1</translation>
+    </message>
+    <message>
+        <source>T%1 (%2 → %3)</source>
+        <extracomment>a transition of a nested GRAFCET: its number, upstream and downstream steps</extracomment>
+        <translation>T%1 (%2 → %3)</translation>
     </message>
 </context>
 <context>

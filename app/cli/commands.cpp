@@ -46,11 +46,13 @@ const char* const kUsage =
     "  st MODEL [--dialect iec|codesys] [--step STEP]\n"
     "      Print the GEMMA program's Structured Text, or with --step the function block of\n"
     "      one visible macro-step or enclosing step (its nested GRAFCET).\n"
-    "  simulate MODEL [SCENARIO] [--scans N] [--trace]\n"
+    "  simulate MODEL [SCENARIO] [--scans N] [--trace] [--explain]\n"
     "      Run the GEMMA program scan by scan: one line 'scan N: STEP [fired TRANSITION]' per\n"
-    "      scan (--trace adds inputs, Entry, tokens, Complete, the active steps of each nested\n"
-    "      GRAFCET and the outputs they drive). Runs the scenario's last\n"
-    "      scan, else 10 scans, or N. Exit 1 when an expectation of the scenario fails.\n"
+    "      scan (--trace adds inputs, Entry, tokens, Complete, the active steps, timers and\n"
+    "      Unstable of each nested GRAFCET and the outputs they drive; --explain ends with why\n"
+    "      each transition of the active step and of its GRAFCET fires or not in the next scan).\n"
+    "      Runs the scenario's last scan, else 10 scans, or N. Exit 1 when an expectation of\n"
+    "      the scenario fails.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
     "         [--complete-automatic STEP[,STEP...]|all]\n"
     "      Prove properties of the mode chart (docs/verification.md): print FILE: ELEMENTS:\n"
@@ -356,7 +358,8 @@ std::string joinValues(const std::vector<std::string>& names, const std::vector<
     return text.empty() ? "none" : text;
 }
 
-// The active steps of every nested GRAFCET, then the outputs they drive.
+// The active steps, timers and Unstable of every nested GRAFCET, then the
+// outputs they drive.
 void printNestedState(const core::ScanRecord& record, const core::Simulator& simulator, std::ostream& out)
 {
     const std::vector<std::string>& nested = simulator.nestedSteps();
@@ -372,6 +375,15 @@ void printNestedState(const core::ScanRecord& record, const core::Simulator& sim
             if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
                 outputs.push_back(name);
         }
+        const core::NestedEngine* engine = simulator.grafcetEngine(nested[i]);
+        std::string timers;
+        for (const core::NestedTimerState& timer : engine->timers())
+            timers += (timers.empty() ? "" : ", ") + timer.name + " = " + std::to_string(timer.elapsedMs) + " of "
+                    + std::to_string(timer.durationMs) + " ms";
+        if (!timers.empty())
+            out << "    " << nested[i] << " timers: " << timers << lineEnd;
+        if (i < record.unstable.size() && record.unstable[i])
+            out << "    " << nested[i] << " Unstable = TRUE" << lineEnd;
     }
     if (outputs.empty())
         return;
@@ -397,6 +409,46 @@ void printScan(const core::ScanRecord& record, const core::Simulator& simulator,
     out << "    tokens: " << joinValues(simulator.tokenNames(), record.tokens) << lineEnd;
     out << "    Complete: " << joinValues(simulator.nestedSteps(), record.complete) << lineEnd;
     printNestedState(record, simulator, out);
+}
+
+std::string stepNumbers(const std::vector<int>& numbers)
+{
+    std::string text;
+    for (int number : numbers)
+        text += (text.empty() ? "" : ", ") + std::to_string(number);
+    return text.empty() ? "none" : text;
+}
+
+std::string reasonsText(const std::vector<core::ExplanationReason>& reasons)
+{
+    std::string text;
+    for (const core::ExplanationReason& reason : reasons)
+        text += (text.empty() ? ": " : "; ") + core::toText(reason);
+    return text;
+}
+
+// Why each transition of the active step, and of its nested GRAFCET, fires
+// or not in the next scan.
+void printExplanation(const core::Simulator& simulator, std::ostream& out)
+{
+    const std::string step = simulator.activeStepId();
+    out << "next scan " << simulator.scanCount() + 1 << ": "
+        << (step.empty() ? std::string("(no visible step)") : step) << lineEnd;
+    for (const core::TransitionExplanation& e : simulator.explain())
+        out << "    " << e.transitionId << ": " << core::transitionStatusName(e.status) << reasonsText(e.reasons)
+            << lineEnd;
+    if (!simulator.hasGrafcet(step))
+        return;
+    const core::NestedExplanation nested = simulator.explainNested(step);
+    out << "    " << step << " GRAFCET, steps " << stepNumbers(nested.situation);
+    if (nested.initialization)
+        out << " (re-initialised first)";
+    if (nested.untilStable)
+        out << ", first evolution";
+    out << ":" << lineEnd;
+    for (const core::NestedTransitionExplanation& t : nested.transitions)
+        out << "        T" << t.number << " (" << stepNumbers(t.upstream) << " -> " << stepNumbers(t.downstream)
+            << "): " << core::nestedTransitionStatusName(t.status) << reasonsText(t.reasons) << lineEnd;
 }
 
 // The scenario file, parsed and checked against the model; false (and the
@@ -462,6 +514,8 @@ int commandSimulate(const Arguments& args, Streams streams)
             streams.err << files[1] << ":" << failure.line << ": " << core::toText(failure) << lineEnd;
         failures += runner.lastFailures().size();
     }
+    if (args.has("--explain"))
+        printExplanation(simulator, streams.out);
     if (files.size() == 2) {
         std::size_t expectations = 0;
         for (const core::ScenarioAction& action : scenario.actions)
@@ -490,7 +544,7 @@ const std::map<std::string, Command>& commands()
         {"convert", {commandConvert, {"--to"}, {}}},
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
         {"st", {commandSt, {"--dialect", "--step"}, {}}},
-        {"simulate", {commandSimulate, {"--scans"}, {"--trace"}}},
+        {"simulate", {commandSimulate, {"--scans"}, {"--trace", "--explain"}}},
         {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic"}, {}}},
     };
     return table;

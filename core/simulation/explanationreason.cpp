@@ -2,6 +2,18 @@
 
 namespace core {
 
+namespace {
+
+std::string stepList(const std::vector<int>& steps)
+{
+    std::string text;
+    for (std::size_t i = 0; i < steps.size(); ++i)
+        text += (i ? ", " : "") + std::to_string(steps[i]);
+    return text;
+}
+
+} // namespace
+
 std::string toText(const ConditionReading& reading)
 {
     std::string text = reading.name + " = " + reading.value;
@@ -28,6 +40,19 @@ std::string toText(const ExplanationReason& reason)
     case Kind::FiresFirst: return reason.subject + " fires first";
     case Kind::Unusable:
         return reason.message.empty() ? std::string("the condition cannot be used: it is FALSE") : reason.message;
+    case Kind::StepsInactive:
+        return reason.steps.size() == 1 ? "step " + stepList(reason.steps) + " is not active"
+                                        : "steps " + stepList(reason.steps) + " are not active";
+    case Kind::NoRisingEdge:
+    case Kind::NoFallingEdge:
+        return std::string(reason.kind == Kind::NoRisingEdge ? "no rising" : "no falling") + " edge of "
+             + reason.subject + " this scan (" + reason.subject + " = " + reason.value
+             + ", at the end of the previous scan " + reason.previous + ")";
+    case Kind::TimerNotElapsed:
+        return reason.subject + " is FALSE: step " + stepList(reason.steps) + " active for "
+             + std::to_string(reason.elapsedMs) + " ms of " + std::to_string(reason.durationMs) + " ms";
+    case Kind::NotCalled:
+        return reason.subject + " is not the active step: its GRAFCET does not evolve in the next scan";
     }
     return {};
 }

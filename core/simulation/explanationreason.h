@@ -6,6 +6,7 @@
 // (expressions, names, TRUE/FALSE, values) is kept as text: it is code in
 // every language, only the words around it are translated.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,12 @@ struct ExplanationReason {
         CompleteFalse, // subject (a step id).Complete = FALSE: the transition waits for it
         FiresFirst,    // subject (a transition id) fires first
         Unusable,      // the condition cannot be used (code, arguments, message); no code: no detail known
+        // Nested GRAFCETs (Simulator::explainNested()):
+        StepsInactive,   // steps: the upstream steps of the nested transition that are not active
+        NoRisingEdge,    // subject: the variable; value: now; previous: at the end of the previous scan
+        NoFallingEdge,   // the same for a falling edge
+        TimerNotElapsed, // subject: "5s/X2"; steps: {2}; elapsedMs of durationMs
+        NotCalled,       // subject (a GEMMA step) is not active: its function block is not called
     };
 
     Kind kind = Kind::Reading;
@@ -41,6 +48,11 @@ struct ExplanationReason {
     std::string code;                   // "GG201"; empty when the problem has no code
     std::vector<std::string> arguments; // as Diagnostic::arguments for that code
     std::string message;                // English
+    // Nested GRAFCETs.
+    std::vector<int> steps;      // StepsInactive: step numbers; TimerNotElapsed: the step timed
+    std::string previous;        // NoRisingEdge, NoFallingEdge: "TRUE" or "FALSE"
+    std::int64_t elapsedMs = 0;  // TimerNotElapsed: the TON's ET as the evolution reads it
+    std::int64_t durationMs = 0; // TimerNotElapsed: its PT
 
     friend bool operator==(const ExplanationReason&, const ExplanationReason&) = default;
 };
@@ -48,7 +60,9 @@ struct ExplanationReason {
 // "Start = FALSE", "Stop_F1_1_MEM = FALSE (token of NOT Stop)".
 std::string toText(const ConditionReading& reading);
 // "Speed > 10 is FALSE (Speed = 3)", "F1.Complete = FALSE", "F->D1 fires first",
-// the problem's message for an unusable condition.
+// the problem's message for an unusable condition; for nested GRAFCETs
+// "step 3 is not active", "no rising edge of Start (Start = TRUE, FALSE ...)",
+// "5s/X2 is FALSE: step 2 active for 1200 ms of 5000 ms", "F1 is not active".
 std::string toText(const ExplanationReason& reason);
 
 } // namespace core

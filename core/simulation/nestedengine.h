@@ -9,6 +9,7 @@
 
 #include "core/codegen/nestedprogram.h"
 #include "core/condition/conditionevaluator.h"
+#include "core/simulation/explanationreason.h"
 #include "core/model/iectypes.h"
 
 #include <map>
@@ -41,6 +42,32 @@ struct NestedTimerState {
     bool done = false;          // Q
 };
 
+enum class NestedTransitionStatus {
+    Fires,            // it fires in the first evolution of the next call
+    UpstreamInactive, // some of its upstream steps are not active (reasons: which)
+    ReceptivityFalse, // its upstream steps are active, its receptivity is FALSE (reasons: why)
+    Unusable,         // its receptivity does not parse or type-check: it never fires
+    NotCalled,        // the GEMMA step is not active: the function block is not called
+};
+
+std::string_view nestedTransitionStatusName(NestedTransitionStatus status); // "fires", "upstream inactive", ...
+
+// Why one transition of a nested GRAFCET does or does not fire in the first
+// evolution of the next call.
+struct NestedTransitionExplanation {
+    int number = 0;
+    std::vector<int> upstream;
+    std::vector<int> downstream;
+    std::string receptivity; // as written
+    NestedTransitionStatus status = NestedTransitionStatus::ReceptivityFalse;
+    // As data (toText() words them): StepsInactive for UpstreamInactive; the
+    // operands that made the receptivity FALSE (Reading of a variable, of
+    // `X3` or of `Complete`, Literal, Expression for comparisons,
+    // NoRisingEdge/NoFallingEdge, TimerNotElapsed); Unusable: its problems;
+    // NotCalled: one NotCalled.
+    std::vector<ExplanationReason> reasons;
+};
+
 class NestedEngine {
 public:
     // `slotOf` gives the declaration index of a variable name (-1 when
@@ -64,6 +91,15 @@ public:
     std::vector<NestedTimerState> timers() const;
     const NestedGrafcet& grafcet() const { return *m_grafcet; }
 
+    // Predicts the first evolution of the next evolving call at nowMs without
+    // changing the engine: on a copy, the Initialization call first when
+    // `initialization` (it may write `globals`: pass scratch globals), then
+    // the TONs as the call runs them, then every transition as evolve()
+    // evaluates it (edges live: first evolution). `situation` receives the
+    // active steps the evolution starts from.
+    std::vector<NestedTransitionExplanation> explainNextCall(bool initialization, std::int64_t nowMs,
+                                                             NestedGlobals& globals, std::vector<int>* situation) const;
+
 private:
     struct Timer {
         bool running = false;
@@ -77,6 +113,9 @@ private:
     cond::Value atom(const cond::Expression& expression, int node, const std::map<int, int>* timers,
                      const NestedGlobals& globals, bool firstEvolution) const;
     int stepIndex(int number) const;
+    void explainNode(const cond::Expression& expression, int node, const std::map<int, int>& timers,
+                     const NestedGlobals& globals, std::vector<ExplanationReason>& reasons) const;
+    std::string declaredName(const std::string& written) const;
     void runTon(std::size_t timer, bool in, std::int64_t nowMs);
     bool evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals& globals);
     void runStored(const std::vector<NestedAction>& actions, NestedGlobals& globals);

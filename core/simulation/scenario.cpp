@@ -865,6 +865,18 @@ ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, st
 
 // --- Writing ----------------------------------------------------------------------
 
+bool recordWorthKeeping(const ScanRecord& record, const ScanRecord* previous)
+{
+    if (!record.fired.empty() || !record.changedOutputs.empty())
+        return true;
+    if (!previous) {
+        const auto any = [](const auto& list, const auto& test) { return std::any_of(list.begin(), list.end(), test); };
+        return any(record.nestedActive, [](const std::vector<int>& steps) { return !steps.empty(); })
+            || any(record.unstable, [](bool value) { return value; });
+    }
+    return record.nestedActive != previous->nestedActive || record.unstable != previous->unstable;
+}
+
 std::string writeScenario(const ScenarioRecording& recording)
 {
     std::string out;
@@ -895,13 +907,30 @@ std::string writeScenario(const ScenarioRecording& recording)
                                        + (complete.manualValue ? boolText(*complete.manualValue) : "auto"));
         }
     }
+    const std::vector<std::string>& nested = recording.nestedSteps;
+    std::vector<std::vector<int>> situations(nested.size());
+    std::vector<bool> unstable(nested.size(), false);
     for (const ScanRecord& record : recording.records) {
-        if (record.fired.empty())
-            continue;
         const std::string at = "at " + std::to_string(record.scan) + ": ";
-        lines[record.scan].push_back(at + "expect fired " + record.fired);
-        if (!record.stepAfter.empty())
-            lines[record.scan].push_back(at + "expect step " + record.stepAfter);
+        std::vector<std::string>& out = lines[record.scan];
+        if (!record.fired.empty()) {
+            out.push_back(at + "expect fired " + record.fired);
+            if (!record.stepAfter.empty())
+                out.push_back(at + "expect step " + record.stepAfter);
+        }
+        for (const InputChange& output : record.changedOutputs)
+            out.push_back(at + "expect variable " + output.variable + " = " + cond::formatValue(output.value));
+        for (std::size_t i = 0; i < nested.size(); ++i) {
+            if (i < record.nestedActive.size() && record.nestedActive[i] != situations[i]) {
+                situations[i] = record.nestedActive[i];
+                if (!situations[i].empty()) // only power-on has no active step
+                    out.push_back(at + "expect nested " + nested[i] + " steps " + nestedStepsText(situations[i]));
+            }
+            if (i < record.unstable.size() && record.unstable[i] != unstable[i]) {
+                unstable[i] = record.unstable[i];
+                out.push_back(at + "expect nested " + nested[i] + " unstable = " + boolText(unstable[i]));
+            }
+        }
     }
     for (const auto& [scan, texts] : lines) {
         for (const std::string& text : texts)

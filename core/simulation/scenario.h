@@ -164,11 +164,26 @@ struct RecordedScan {
 struct ScenarioRecording {
     std::string title;                 // a leading `#` comment when not empty (line breaks kept as comment lines)
     std::vector<RecordedScan> changes; // by scan
-    // Optional: what happened; writes `expect fired` and `expect step` after
-    // every scan that fired a transition, so replaying the file checks the
-    // session still behaves the same.
+    // Optional: what happened, so replaying the file checks the session
+    // still behaves the same. After each record's scan it writes `expect
+    // fired` and `expect step` when a transition fired, `expect variable`
+    // for each output the scan changed (ScanRecord::changedOutputs), and,
+    // when nestedSteps names the GRAFCETs of ScanRecord::nestedActive,
+    // `expect nested S steps ...` for each GRAFCET whose situation differs
+    // from the previous record's (the first record: from none) and `expect
+    // nested S unstable = ...` when its Unstable differs (from FALSE at
+    // first). So the records must hold every scan in which a situation or an
+    // Unstable changed (SimulationSession keeps them).
     std::vector<ScanRecord> records;
+    // Simulator::nestedSteps(): which GRAFCET each record's nestedActive and
+    // unstable entry belongs to; empty: no nested expectations.
+    std::vector<std::string> nestedSteps;
 };
+
+// True when the scan did something a recording writes an expectation for:
+// it fired, changed an output, or changed a nested situation or Unstable
+// since `previous` (nullptr for the first scan).
+bool recordWorthKeeping(const ScanRecord& record, const ScanRecord* previous);
 
 // Scenario text that parseScenario reads back to the same actions.
 std::string writeScenario(const ScenarioRecording& recording);

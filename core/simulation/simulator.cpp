@@ -175,6 +175,7 @@ struct CompiledProgram {
     };
     std::vector<OutputWrite> outputWrites;
     std::vector<int> edgeSlots; // variables with a <V>_PREV memory
+    std::vector<int> outputSlots; // VariableKind::Output variables, declaration order
 
     int slotOf(std::string_view name) const
     {
@@ -249,9 +250,14 @@ struct Simulator::Impl {
     bool evaluate(const CompiledTransition& transition, const std::vector<char>& tokenState) const;
     cond::Value nodeReading(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
     bool fbComplete(int nestedIndex) const;
+    bool predictNestedCall(const CompiledStep& step, std::vector<Cell>& scratch) const;
+    // explain(): the values the next scan's conditions read, when they differ
+    // from `values` (a nested GRAFCET's stored actions run before them).
+    mutable const std::vector<Cell>* explainValues = nullptr;
+    const std::vector<Cell>& readValues() const { return explainValues ? *explainValues : values; }
     int activeIndexFor(int number) const;
     void scan(ScanRecord* record);
-    void fillRecordAfter(ScanRecord& record) const;
+    void fillRecordAfter(ScanRecord& record, const std::vector<Cell>& outputsBefore) const;
     void collectChanges(ScanRecord* record);
     int stepIndexOfNested(std::string_view stepId) const;
     std::vector<ExplanationReason> explainFalse(const CompiledTransition& transition,
@@ -364,6 +370,8 @@ void CompiledProgram::compileVariables(const Model& model)
             value = cond::parseValue(variable.type, "");
         defaults.push_back(value ? toCell(*value) : Cell{});
         variableByUpperName.emplace(toUpperAscii(variable.name), slot);
+        if (variable.kind == VariableKind::Output)
+            outputSlots.push_back(slot);
     }
 }
 
@@ -633,7 +641,7 @@ bool Simulator::Impl::evaluate(const CompiledTransition& transition, const std::
     }
     // `next` is the first free cell; the top of the stack is next[-1].
     Cell* next = stack.data();
-    const Cell* vars = values.data();
+    const Cell* vars = readValues().data();
     for (const Instruction& in : condition.code) {
         switch (in.op) {
         case Op::PushVariable: *next++ = vars[in.slot]; break;
@@ -688,7 +696,7 @@ cond::Value Simulator::Impl::nodeReading(const CompiledTransition& transition, i
         return tokenState[static_cast<std::size_t>(transition.nodeToken[index])] != 0;
     if (index < transition.nodeVariable.size() && transition.nodeVariable[index] >= 0) {
         const auto slot = static_cast<std::size_t>(transition.nodeVariable[index]);
-        return toValue(values[slot], variableKinds[slot]);
+        return toValue(readValues()[slot], variableKinds[slot]);
     }
     return false;
 }
@@ -731,6 +739,24 @@ bool Simulator::Impl::fbComplete(int nestedIndex) const
     return completeModes[index] == CompleteMode::Automatic || manualComplete[index] != 0;
 }
 
+// The next scan's call(s) of a step's nested GRAFCET, run on a copy of the
+// engine over `scratch` (a copy of the values, left as the calls leave them:
+// what the GEMMA conditions read after the FB). Returns the Complete the FB
+// yields. For a step without GRAFCET: fbComplete(), scratch untouched.
+bool Simulator::Impl::predictNestedCall(const CompiledStep& step, std::vector<Cell>& scratch) const
+{
+    const std::optional<NestedEngine>& engine = engines[static_cast<std::size_t>(step.nestedIndex)];
+    if (!engine)
+        return fbComplete(step.nestedIndex);
+    NestedEngine next(*engine);
+    SimulatorGlobals globals(scratch, variableKinds, previous);
+    const std::int64_t nowMs = (scanCount + 1) * cycleTimeMs;
+    if (entry)
+        next.call(true, nowMs, globals);
+    next.call(false, nowMs, globals);
+    return next.complete();
+}
+
 void Simulator::Impl::collectChanges(ScanRecord* record)
 {
     if (record) // declaration order, whatever order the inputs were set in
@@ -754,7 +780,10 @@ void Simulator::Impl::scan(ScanRecord* record)
         collectChanges(record);
     ++scanCount;
     lastFired = nullptr;
+    std::vector<Cell> outputsBefore;
     if (record) {
+        for (int slot : compiled->outputSlots)
+            outputsBefore.push_back(values[static_cast<std::size_t>(slot)]);
         record->scan = scanCount;
         if (active >= 0)
             record->stepBefore = steps[static_cast<std::size_t>(active)].source->id;
@@ -799,10 +828,10 @@ void Simulator::Impl::scan(ScanRecord* record)
     }
     updateEdgeMemories();
     if (record)
-        fillRecordAfter(*record);
+        fillRecordAfter(*record, outputsBefore);
 }
 
-void Simulator::Impl::fillRecordAfter(ScanRecord& record) const
+void Simulator::Impl::fillRecordAfter(ScanRecord& record, const std::vector<Cell>& outputsBefore) const
 {
     if (lastFired)
         record.fired = lastFired->id;
@@ -812,8 +841,17 @@ void Simulator::Impl::fillRecordAfter(ScanRecord& record) const
     record.tokens.assign(tokenValues.begin(), tokenValues.end());
     record.complete.assign(completeOutput.begin(), completeOutput.end());
     record.nestedActive.clear();
-    for (const std::optional<NestedEngine>& engine : engines)
+    record.unstable.clear();
+    for (const std::optional<NestedEngine>& engine : engines) {
         record.nestedActive.push_back(engine ? engine->activeSteps() : std::vector<int>{});
+        record.unstable.push_back(engine && engine->unstable());
+    }
+    record.changedOutputs.clear();
+    for (std::size_t i = 0; i < compiled->outputSlots.size() && i < outputsBefore.size(); ++i) {
+        const auto slot = static_cast<std::size_t>(compiled->outputSlots[i]);
+        if (!sameCell(values[slot], outputsBefore[i], variableKinds[slot]))
+            record.changedOutputs.push_back(InputChange{variableNames[slot], toValue(values[slot], variableKinds[slot])});
+    }
 }
 
 int Simulator::Impl::stepIndexOfNested(std::string_view stepId) const
@@ -1265,10 +1303,21 @@ std::vector<TransitionExplanation> Simulator::explain() const
     // The next scan as it will start: the entry block resets the tokens, the FB yields Complete.
     std::vector<char> tokenState = impl.tokenValues;
     bool complete = false;
+    std::vector<Cell> afterCall;
+    struct ReadingGuard {
+        const Impl& impl;
+        ~ReadingGuard() { impl.explainValues = nullptr; }
+    } guard{impl};
     if (step.nestedIndex >= 0) {
         if (impl.entry)
             std::fill_n(tokenState.begin() + step.firstToken, step.tokenCount, 0);
-        complete = impl.fbComplete(step.nestedIndex);
+        // A nested GRAFCET runs first: Complete is what it yields, the
+        // conditions read what its stored actions wrote.
+        if (impl.engines[static_cast<std::size_t>(step.nestedIndex)]) {
+            afterCall = impl.values;
+            impl.explainValues = &afterCall;
+        }
+        complete = impl.predictNestedCall(step, afterCall);
     }
     ExplanationReason completeFalse;
     completeFalse.kind = ExplanationReason::Kind::CompleteFalse;
@@ -1305,6 +1354,63 @@ std::vector<TransitionExplanation> Simulator::explain() const
             firing = source.id;
         }
         result.push_back(std::move(explanation));
+    }
+    return result;
+}
+
+NestedExplanation Simulator::explainNested(std::string_view stepId) const
+{
+    const Impl& impl = *m_impl;
+    NestedExplanation result;
+    const int index = impl.stepIndexOfNested(stepId);
+    if (index < 0 || !impl.engines[static_cast<std::size_t>(index)])
+        return result;
+    const NestedEngine& engine = *impl.engines[static_cast<std::size_t>(index)];
+    result.stepId = impl.nestedSteps[static_cast<std::size_t>(index)];
+    result.untilStable = engine.grafcet().rule == EvolutionRule::UntilStable;
+    result.called = impl.active >= 0 && impl.steps[static_cast<std::size_t>(impl.active)].nestedIndex == index;
+    if (!result.called) {
+        result.situation = engine.activeSteps();
+        ExplanationReason notCalled;
+        notCalled.kind = ExplanationReason::Kind::NotCalled;
+        notCalled.subject = result.stepId;
+        for (const NestedTransition& transition : engine.grafcet().transitions) {
+            NestedTransitionExplanation explanation;
+            explanation.number = transition.number;
+            explanation.upstream = transition.upstream;
+            explanation.downstream = transition.downstream;
+            explanation.receptivity = transition.text;
+            explanation.status = NestedTransitionStatus::NotCalled;
+            explanation.reasons.push_back(notCalled);
+            result.transitions.push_back(std::move(explanation));
+        }
+        return result;
+    }
+    result.initialization = impl.entry;
+    // The Initialization call's actions write the globals: predict on a copy.
+    std::vector<Cell> scratch = impl.values;
+    SimulatorGlobals globals(scratch, impl.variableKinds, impl.previous);
+    result.transitions = engine.explainNextCall(result.initialization, (impl.scanCount + 1) * impl.cycleTimeMs,
+                                                globals, &result.situation);
+    for (NestedTransitionExplanation& explanation : result.transitions) {
+        if (explanation.status != NestedTransitionStatus::Unusable)
+            continue;
+        for (const GemmaProblem& problem : impl.program.problems) {
+            if (problem.kind != GemmaProblem::Kind::Error || problem.nestedTransition != explanation.number
+                || !equalsIgnoreCase(problem.element, result.stepId))
+                continue;
+            ExplanationReason reason;
+            reason.kind = ExplanationReason::Kind::Unusable;
+            reason.code = problem.code;
+            reason.arguments = problem.arguments;
+            reason.message = problem.message;
+            explanation.reasons.push_back(std::move(reason));
+        }
+        if (explanation.reasons.empty()) { // not expected: an unusable receptivity has an error
+            ExplanationReason unknown;
+            unknown.kind = ExplanationReason::Kind::Unusable;
+            explanation.reasons.push_back(std::move(unknown));
+        }
     }
     return result;
 }

@@ -91,6 +91,12 @@ struct ScanRecord {
     // After the scan, in Simulator::nestedSteps() order: the active nested
     // steps of each GRAFCET (empty for a step without one).
     std::vector<std::vector<int>> nestedActive;
+    // After the scan, in Simulator::nestedSteps() order: Unstable of each
+    // GRAFCET (FALSE for a step without one, and under one evolution per scan).
+    std::vector<bool> unstable;
+    // Output variables (VariableKind::Output) the scan changed: their value
+    // after it differs from their value when it began. Declaration order.
+    std::vector<InputChange> changedOutputs;
 };
 
 enum class TransitionStatus {
@@ -106,7 +112,9 @@ std::string_view transitionStatusName(TransitionStatus status); // "fires", "con
 // Why a transition of the active step does or does not fire in the NEXT scan.
 // explain() predicts that scan without running it: if Entry is TRUE and the
 // step has a nested behaviour, its tokens read FALSE (the entry block resets
-// them) and Complete is what its FB will yield in that scan.
+// them) and Complete is what its FB will yield in that scan; for a nested
+// GRAFCET the FB's calls are run on copies first, so Complete is the
+// GRAFCET's and the conditions read what its stored actions write.
 struct TransitionExplanation {
     std::string transitionId; // "F1->A2"
     std::string targetId;
@@ -123,6 +131,22 @@ struct TransitionExplanation {
     // PreemptedByHigherPriority "F->D1 fires first".
     std::vector<ExplanationReason> reasons;
     std::string preemptedBy; // the transition that fires instead (PreemptedByHigherPriority only)
+};
+
+// What the next scan does with the nested GRAFCET of a macro/enclosing step
+// (Simulator::explainNested()), predicted as the engine will run it: when
+// Entry is TRUE the Initialization call first puts the GRAFCET in its
+// initial situation (running its initial steps' on-activation actions), then
+// the TONs run, then the first evolution evaluates every transition on that
+// situation, edges included. Under *until stable* only that first evolution
+// is explained: later ones follow in the same call with edges FALSE.
+struct NestedExplanation {
+    std::string stepId;
+    bool called = false;         // the step is the active one: the next scan calls its FB
+    bool initialization = false; // the next scan re-initialises the GRAFCET before evolving
+    bool untilStable = false;    // more evolutions may follow the one explained
+    std::vector<int> situation;  // the active steps the first evolution starts from
+    std::vector<NestedTransitionExplanation> transitions; // in number order
 };
 
 class Simulator {
@@ -181,6 +205,9 @@ public:
     std::vector<NestedTimerState> nestedTimers(std::string_view stepId) const;
     std::vector<std::string> nestedOutputs(std::string_view stepId) const; // the continuous outputs it drives
     const NestedEngine* grafcetEngine(std::string_view stepId) const;      // nullptr without a GRAFCET
+    // Why each transition of the step's GRAFCET fires or not in the next
+    // scan; empty transitions (and stepId) for a step without GRAFCET.
+    NestedExplanation explainNested(std::string_view stepId) const;
 
     // State.
     std::string activeStepId() const;  // "" when State names no visible step

@@ -124,6 +124,36 @@ QString statusText(const core::TransitionExplanation& explanation)
     return {};
 }
 
+QString nestedStatusText(core::NestedTransitionStatus status)
+{
+    switch (status) {
+    case core::NestedTransitionStatus::Fires: return SimulationDock::tr("fires in the next scan");
+    case core::NestedTransitionStatus::UpstreamInactive: return SimulationDock::tr("upstream step not active");
+    case core::NestedTransitionStatus::ReceptivityFalse: return SimulationDock::tr("receptivity FALSE");
+    case core::NestedTransitionStatus::Unusable: return SimulationDock::tr("receptivity unusable (always FALSE)");
+    case core::NestedTransitionStatus::NotCalled: return SimulationDock::tr("not called");
+    }
+    return {};
+}
+
+QColor nestedStatusColor(core::NestedTransitionStatus status)
+{
+    switch (status) {
+    case core::NestedTransitionStatus::Fires: return QColor(0x1e, 0x8e, 0x3e);
+    case core::NestedTransitionStatus::Unusable: return QColor(0xc6, 0x28, 0x28);
+    default: break;
+    }
+    return {};
+}
+
+QString stepNumbersText(const std::vector<int>& numbers)
+{
+    QStringList list;
+    for (int number : numbers)
+        list << QString::number(number);
+    return list.join(QStringLiteral(", "));
+}
+
 QColor statusColor(core::TransitionStatus status)
 {
     switch (status) {
@@ -238,7 +268,8 @@ void SimulationDock::setFixedTexts()
     m_explanationView->setHeaderLabels({tr("Transition"), tr("Next scan")});
     m_recordButton->setText(tr("&Record as Scenario…"));
     m_recordButton->setToolTip(tr("Save this session since the last reset as a scenario file: the inputs of "
-                                  "each scan, and an expectation for every transition that fired"));
+                                  "each scan, and expectations for every transition that fired, every output "
+                                  "that changed and every nested situation that changed"));
     m_replayButton->setText(tr("Re&play Scenario…"));
     m_replayButton->setToolTip(tr("Run a scenario file from the initial step and check its expectations"));
 }
@@ -747,6 +778,9 @@ void SimulationDock::refreshExplanation()
     const QString active = QString::fromStdString(simulator->activeStepId());
     const std::vector<core::TransitionExplanation> explanations = simulator->explain();
 
+    const core::NestedExplanation nested = simulator->explainNested(active.toStdString());
+    const core::NestedEngine* engine = simulator->grafcetEngine(active.toStdString());
+
     QStringList shown{active, boolText(simulator->entry())};
     for (const core::TransitionExplanation& e : explanations) {
         shown << QString::fromStdString(e.transitionId) << QString::number(static_cast<int>(e.status))
@@ -754,6 +788,19 @@ void SimulationDock::refreshExplanation()
         for (const core::ExplanationReason& reason : e.reasons)
             shown << QString::fromStdString(core::toText(reason)); // retranslate() clears the cache
         shown << QString();
+    }
+    if (engine) {
+        shown << stepNumbersText(engine->activeSteps()) << stepNumbersText(nested.situation)
+              << boolText(nested.initialization) << boolText(engine->unstable());
+        for (const core::NestedTimerState& timer : engine->timers())
+            shown << QString::number(timer.elapsedMs);
+        for (std::size_t i = 0; i < engine->outputNames().size(); ++i)
+            shown << boolText(engine->output(i));
+        for (const core::NestedTransitionExplanation& t : nested.transitions) {
+            shown << QString::number(static_cast<int>(t.status));
+            for (const core::ExplanationReason& reason : t.reasons)
+                shown << QString::fromStdString(core::toText(reason));
+        }
     }
     if (shown == m_shownExplanation)
         return;
@@ -791,7 +838,73 @@ void SimulationDock::refreshExplanation()
         item->setText(TransitionColumn, tr("The active step has no transition to evaluate."));
         item->setFirstColumnSpanned(true);
     }
+    if (engine)
+        addNestedExplanation(*engine, nested);
     m_explanationView->expandAll();
+}
+
+// The nested GRAFCET of the active step: its state after the last scan
+// (active steps, timers, the outputs it drives, Unstable), then why each of
+// its transitions fires or not in the next scan.
+void SimulationDock::addNestedExplanation(const core::NestedEngine& engine, const core::NestedExplanation& nested)
+{
+    const QString step = QString::fromStdString(nested.stepId);
+    auto* grafcet = new QTreeWidgetItem(m_explanationView);
+    const std::vector<int> activeSteps = engine.activeSteps();
+    grafcet->setText(TransitionColumn, activeSteps.empty()
+                                           //: %1: a macro-step or enclosing step
+                                           ? tr("GRAFCET of %1: no step active").arg(step)
+                                           //: %1: a macro-step or enclosing step; %2: its active steps ("3, 5")
+                                           : tr("GRAFCET of %1: steps %2").arg(step, stepNumbersText(activeSteps)));
+    if (nested.initialization)
+        grafcet->setText(StatusColumn, tr("initialised again in the next scan (steps %1)")
+                                           .arg(stepNumbersText(nested.situation)));
+    else if (nested.untilStable)
+        grafcet->setText(StatusColumn, tr("first evolution of the next scan"));
+    grafcet->setToolTip(TransitionColumn, nested.untilStable
+                            ? tr("Until stable: the next scan's first evolution is explained; later evolutions "
+                                 "of the same scan follow with edges FALSE.")
+                            : tr("One evolution per scan."));
+    auto addState = [grafcet](const QString& text) {
+        auto* item = new QTreeWidgetItem(grafcet);
+        item->setText(TransitionColumn, text);
+        item->setToolTip(TransitionColumn, text);
+        item->setFirstColumnSpanned(true);
+    };
+    for (const core::NestedTimerState& timer : engine.timers())
+        //: %1: a timer of a time-dependent receptivity; %2: its step; %3 of %4: elapsed and set time in ms
+        addState(tr("%1 (step %2): %3 ms of %4 ms")
+                     .arg(QString::fromStdString(timer.name))
+                     .arg(timer.step)
+                     .arg(timer.elapsedMs)
+                     .arg(timer.durationMs));
+    QStringList outputs;
+    for (std::size_t i = 0; i < engine.outputNames().size(); ++i)
+        outputs << QStringLiteral("%1 = %2").arg(QString::fromStdString(engine.outputNames()[i]), boolText(engine.output(i)));
+    if (!outputs.isEmpty())
+        //: the outputs a nested GRAFCET drives, with their values ("Spindle = TRUE, Marker = FALSE")
+        addState(tr("Outputs: %1").arg(outputs.join(QStringLiteral(", "))));
+    if (nested.untilStable)
+        addState(QStringLiteral("Unstable = %1").arg(boolText(engine.unstable()))); // code in every language
+    for (const core::NestedTransitionExplanation& t : nested.transitions) {
+        auto* item = new QTreeWidgetItem(grafcet);
+        //: a transition of a nested GRAFCET: its number, upstream and downstream steps
+        item->setText(TransitionColumn, tr("T%1 (%2 → %3)")
+                                            .arg(t.number)
+                                            .arg(stepNumbersText(t.upstream), stepNumbersText(t.downstream)));
+        item->setToolTip(TransitionColumn, QString::fromStdString(t.receptivity));
+        item->setText(StatusColumn, nestedStatusText(t.status));
+        const QColor color = nestedStatusColor(t.status);
+        if (color.isValid())
+            item->setForeground(StatusColumn, color);
+        for (const core::ExplanationReason& reason : t.reasons) {
+            const QString text = explanationReasonText(reason);
+            auto* child = new QTreeWidgetItem(item);
+            child->setText(TransitionColumn, text);
+            child->setToolTip(TransitionColumn, text);
+            child->setFirstColumnSpanned(true);
+        }
+    }
 }
 
 void SimulationDock::refreshReplay()

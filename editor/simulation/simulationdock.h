@@ -19,6 +19,11 @@ class QToolButton;
 class QTreeWidget;
 class QWidget;
 
+namespace core {
+class NestedEngine;
+struct NestedExplanation;
+} // namespace core
+
 namespace editor {
 
 class Document;
@@ -29,7 +34,8 @@ class TraceTableModel;
 // inputs (BOOL variables as toggles with a momentary Press button for push
 // buttons, numbers as spin boxes in their IEC range); Complete of each
 // nested step, automatic or manual; why the active step's transitions do or
-// do not fire; the trace; recording and replaying scenario files. The
+// do not fire, and for a step with a nested GRAFCET its state and why its
+// transitions do or do not fire; the trace; recording and replaying scenario files. The
 // session lives in the window; a change of language rewords the dock in
 // place, the running simulation included.
 class SimulationDock : public QDockWidget {
@@ -101,6 +107,7 @@ private:
     void syncCompletes();
     void refreshStatus();
     void refreshExplanation();
+    void addNestedExplanation(const core::NestedEngine& engine, const core::NestedExplanation& nested);
     void refreshReplay();
     void setNumber(int index, double value);
 

@@ -148,7 +148,7 @@ void SimulationSession::clearSession()
     m_pendingReleases.clear();
     m_pressedAt.assign(m_simulator->variableNames().size(), -1);
     m_changes.clear();
-    m_firings.clear();
+    m_recorded.clear();
     // Manual settings kept across the reset are recorded at scan 1: a
     // scenario starts with every Complete automatic.
     m_completeSettings.assign(m_simulator->nestedSteps().size(), std::nullopt);
@@ -215,11 +215,13 @@ void SimulationSession::afterScan(core::ScanRecord&& record)
     if (!changes.inputs.empty() || !changes.completes.empty())
         m_changes.push_back(std::move(changes));
 
-    if (!record.fired.empty()) {
+    if (!record.fired.empty())
         m_lastFired = QString::fromStdString(record.fired);
-        if (m_firings.size() < static_cast<std::size_t>(kRecordedFiringCapacity))
-            m_firings.push_back(record);
-    }
+    // The scans a recording writes expectations for: firings, outputs that
+    // changed, nested situations and Unstable that changed.
+    if (m_recorded.size() < static_cast<std::size_t>(kRecordedScanCapacity)
+        && core::recordWorthKeeping(record, m_trace.empty() ? nullptr : &m_trace.back()))
+        m_recorded.push_back(record);
     m_trace.push_back(std::move(record));
     if (m_trace.size() > static_cast<std::size_t>(kTraceCapacity))
         m_trace.pop_front();
@@ -304,11 +306,12 @@ core::ScenarioRecording SimulationSession::recording() const
     recording.title = "GG Studio simulation of " + (name.empty() ? std::string("an untitled model") : name) + ", "
                     + std::to_string(m_simulator->scanCount()) + " scans, recorded "
                     + QDateTime::currentDateTime().toString(Qt::ISODate).toStdString();
-    if (m_firings.size() >= static_cast<std::size_t>(kRecordedFiringCapacity))
-        recording.title += "\nExpectations only for the first " + std::to_string(kRecordedFiringCapacity)
-                         + " firings.";
+    if (m_recorded.size() >= static_cast<std::size_t>(kRecordedScanCapacity))
+        recording.title += "\nExpectations only for the first " + std::to_string(kRecordedScanCapacity)
+                         + " scans that fired or changed an output or a nested situation.";
     recording.changes = m_changes;
-    recording.records = m_firings;
+    recording.records = m_recorded;
+    recording.nestedSteps = m_simulator->nestedSteps();
     return recording;
 }
 

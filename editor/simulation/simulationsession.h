@@ -31,7 +31,8 @@ class Document;
 //
 // Everything the user does is kept from the last reset, so the session can
 // be saved as a scenario file (the inputs and Complete settings of each
-// scan, plus an expectation for every transition that fired), and a
+// scan, plus expectations for every transition that fired, every output
+// that changed, every nested situation and Unstable that changed), and a
 // scenario file can be replayed scan by scan, its expectations checked.
 class SimulationSession : public QObject {
     Q_OBJECT
@@ -42,9 +43,10 @@ public:
     static constexpr int kDefaultSpeed = 10;
     static constexpr int kTickMs = 16;
     static constexpr int kTraceCapacity = 10000; // the trace keeps the latest scans
-    // Expectations written for at most this many firings: a session at
-    // 10,000 scans/s that fires on most scans would otherwise grow without end.
-    static constexpr int kRecordedFiringCapacity = 100000;
+    // Expectations written for at most this many scans (firings, changed
+    // outputs or nested situations): a session at 10,000 scans/s that fires
+    // on most scans would otherwise grow without end.
+    static constexpr int kRecordedScanCapacity = 100000;
 
     enum class ReplayState { None, Running, Finished };
 
@@ -148,7 +150,7 @@ private:
 
     // Recording since reset.
     std::vector<core::RecordedScan> m_changes;
-    std::vector<core::ScanRecord> m_firings;
+    std::vector<core::ScanRecord> m_recorded; // the scans expectations are written for
     std::vector<std::optional<bool>> m_completeSettings; // last recorded, by nestedSteps() index
 
     // Replay.

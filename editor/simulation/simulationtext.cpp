@@ -217,6 +217,34 @@ QString explanationReasonText(const core::ExplanationReason& reason)
         //: a transition of higher priority whose condition holds
         return SimulationText::tr("%1 fires first").arg(transitionLabel(fromStd(reason.subject)));
     case Kind::Unusable: return unusableText(reason);
+    case Kind::StepsInactive: {
+        QStringList steps;
+        for (int step : reason.steps)
+            steps << QString::number(step);
+        if (steps.size() == 1)
+            //: an upstream step of a nested GRAFCET's transition
+            return SimulationText::tr("step %1 is not active").arg(steps.front());
+        //: the upstream steps of a nested GRAFCET's transition ("2, 3")
+        return SimulationText::tr("steps %1 are not active").arg(steps.join(QStringLiteral(", ")));
+    }
+    case Kind::NoRisingEdge:
+        //: %1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan
+        return SimulationText::tr("no rising edge of %1 this scan (%1 = %2, at the end of the previous scan %3)")
+            .arg(fromStd(reason.subject), fromStd(reason.value), fromStd(reason.previous));
+    case Kind::NoFallingEdge:
+        //: %1: a BOOL variable; %2: its value now; %3: its value at the end of the previous scan
+        return SimulationText::tr("no falling edge of %1 this scan (%1 = %2, at the end of the previous scan %3)")
+            .arg(fromStd(reason.subject), fromStd(reason.value), fromStd(reason.previous));
+    case Kind::TimerNotElapsed:
+        //: %1: a time-dependent receptivity ("5s/X2"); %2: its step; %3 of %4: elapsed and set time in ms
+        return SimulationText::tr("%1 is FALSE: step %2 active for %3 ms of %4 ms")
+            .arg(fromStd(reason.subject), reason.steps.empty() ? QString() : QString::number(reason.steps.front()))
+            .arg(reason.elapsedMs)
+            .arg(reason.durationMs);
+    case Kind::NotCalled:
+        //: a macro-step or enclosing step
+        return SimulationText::tr("%1 is not the active step: its GRAFCET does not evolve in the next scan")
+            .arg(fromStd(reason.subject));
     }
     return {};
 }

@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -206,4 +208,99 @@ TEST_CASE("The shipped example runs a production cycle", "[simulation][nested-si
     CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{3, 5}); // drill and mark in parallel
     CHECK(simulator.variable("Spindle") == cond::Value{true});
     CHECK(simulator.variable("Marker") == cond::Value{true});
+}
+
+namespace {
+
+// Plays `sets` (scan -> variable -> value) as the editor's session records
+// it: the inputs of each scan, and the scans a recording keeps.
+ScenarioRecording recordSession(Simulator& simulator, std::int64_t scans,
+                                const std::map<std::int64_t, std::vector<std::pair<std::string, bool>>>& sets)
+{
+    ScenarioRecording recording;
+    recording.title = "recorded";
+    recording.nestedSteps = simulator.nestedSteps();
+    std::optional<ScanRecord> previous;
+    for (std::int64_t scan = 1; scan <= scans; ++scan) {
+        if (auto found = sets.find(scan); found != sets.end()) {
+            for (const auto& [name, value] : found->second)
+                REQUIRE(simulator.setVariable(name, value));
+        }
+        ScanRecord record = simulator.step();
+        if (!record.changedInputs.empty())
+            recording.changes.push_back(RecordedScan{record.scan, record.changedInputs, {}});
+        if (recordWorthKeeping(record, previous ? &*previous : nullptr))
+            recording.records.push_back(record);
+        previous = std::move(record);
+    }
+    return recording;
+}
+
+} // namespace
+
+TEST_CASE("A recorded session writes nested expectations and outputs, and replays", "[simulation][nested-simulation][scenario][example]")
+{
+    const auto loaded = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(loaded.model);
+    Simulator simulator(*loaded.model);
+    // The inputs of examples/drilling-cell-start.scenario, then the part drilled.
+    const ScenarioRecording recording = recordSession(
+        simulator, 1400,
+        {{1, {{"DrillHigh", true}, {"Unclamped", true}, {"StartButton", true}}},
+         {3, {{"StartButton", false}}},
+         {1010, {{"PartPresent", true}}},
+         {1012, {{"Unclamped", false}, {"Clamped", true}}},
+         {1020, {{"DrillHigh", false}}},
+         {1030, {{"DrillLow", true}}},
+         {1040, {{"DrillLow", false}}},
+         {1050, {{"DrillHigh", true}}}});
+    const std::string text = writeScenario(recording);
+    INFO(text);
+    CHECK(text.find("at 1: expect fired A1->F2\n") != std::string::npos);
+    CHECK(text.find("at 2: expect nested F2 steps 3\n") != std::string::npos);
+    CHECK(text.find("at 2: expect variable Spindle = TRUE\n") != std::string::npos);
+    CHECK(text.find("at 1003: expect fired F2->F1\n") != std::string::npos);
+    CHECK(text.find("at 1004: expect nested F1 steps 1\n") != std::string::npos); // F1's entry scan
+    // Inputs set before scan 1010 are read by it.
+    CHECK(text.find("at 1010: expect nested F1 steps 2\n") != std::string::npos);
+    CHECK(text.find("at 1010: expect variable ClampOut = TRUE\n") != std::string::npos);
+    CHECK(text.find("at 1012: expect nested F1 steps 3, 5\n") != std::string::npos);
+    CHECK(text.find("at 1012: expect variable Marker = TRUE\n") != std::string::npos);
+    CHECK(text.find("unstable") == std::string::npos); // one evolution per scan: never Unstable
+    // Written once per change: 3, 5 stay active until 1030, one line for them.
+    const std::size_t first = text.find("expect nested F1 steps 3, 5\n");
+    CHECK(text.find("expect nested F1 steps 3, 5\n", first + 1) == std::string::npos);
+    CHECK(text.find("at 1011: expect") == std::string::npos); // nothing changed in scan 1011
+
+    const ScenarioParseResult parsed = parseScenario(text, "recorded.scenario");
+    REQUIRE(parsed.ok());
+    Simulator replay(*loaded.model);
+    REQUIRE(validateScenario(parsed.scenario, replay).empty());
+    const ScenarioRunResult result = runScenario(parsed.scenario, replay);
+    for (const ScenarioFailure& failure : result.failures)
+        FAIL_CHECK(toText(failure));
+    CHECK(result.passed());
+}
+
+TEST_CASE("A recorded session writes Unstable when it changes", "[simulation][nested-simulation][scenario]")
+{
+    Model model;
+    REQUIRE(model.addVariable(variable("A", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.setInitialStep("F1"));
+    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
+    REQUIRE(model.addGrafcetStep("F1", {2, false, "", {}}));
+    REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2}, "A"}));
+    REQUIRE(model.addGrafcetTransition("F1", {2, {2}, {1}, "A"}));
+    model.setEvolutionRule(EvolutionRule::UntilStable);
+    Simulator simulator(model);
+    const ScenarioRecording recording = recordSession(simulator, 6, {{3, {{"A", true}}}, {5, {{"A", false}}}});
+    const std::string text = writeScenario(recording);
+    INFO(text);
+    CHECK(text.find("at 1: expect nested F1 steps 1\n") != std::string::npos);
+    CHECK(text.find("at 3: expect nested F1 unstable = TRUE\n") != std::string::npos);
+    CHECK(text.find("at 5: expect nested F1 unstable = FALSE\n") != std::string::npos);
+    const ScenarioParseResult parsed = parseScenario(text);
+    REQUIRE(parsed.ok());
+    Simulator replay(model);
+    CHECK(runScenario(parsed.scenario, replay).passed());
 }

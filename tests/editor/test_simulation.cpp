@@ -22,6 +22,7 @@
 #include "editor/statusindicators.h"
 
 #include "core/condition/conditionevaluator.h"
+#include "core/formats/modelfiles.h"
 #include "core/simulation/scenario.h"
 
 #include <QAbstractButton>
@@ -43,6 +44,7 @@
 #include <QTreeWidget>
 #include <QUndoStack>
 
+#include <functional>
 #include <memory>
 #include <set>
 
@@ -67,6 +69,21 @@ QStringList explanationTexts(const QTreeWidget& view)
         for (int j = 0; j < item->childCount(); ++j)
             texts << item->child(j)->text(0);
     }
+    return texts;
+}
+
+// Every text of the explanation view at any depth (a nested GRAFCET's
+// reasons are two levels down), "text | status" where there is a status.
+QStringList allExplanationTexts(const QTreeWidget& view)
+{
+    QStringList texts;
+    const std::function<void(const QTreeWidgetItem*)> walk = [&](const QTreeWidgetItem* item) {
+        texts << (item->text(1).isEmpty() ? item->text(0) : item->text(0) + QStringLiteral(" | ") + item->text(1));
+        for (int i = 0; i < item->childCount(); ++i)
+            walk(item->child(i));
+    };
+    for (int i = 0; i < view.topLevelItemCount(); ++i)
+        walk(view.topLevelItem(i));
     return texts;
 }
 
@@ -97,18 +114,22 @@ private slots:
     void manualCompleteHoldsAMacroStep();
     void explanationNamesTheReasons();
     void explanationIsInTheUiLanguage();
+    void nestedExplanationShowsTheGrafcet();
+    void nestedExplanationIsInTheUiLanguage();
     void replayFailuresAreInTheUiLanguage();
     void scenarioErrorsAreInTheUiLanguage();
     void unusableConditionIsInTheUiLanguage();
     void traceTableHasOneRowPerScan();
     void recordedSessionReplaysWithEveryExpectationMet();
     void recordingNeverReplacesAFifo();
+    void recordedNestedSessionReplays();
     void replayShowsFailedExpectations();
     void thousandScansPerSecondRunInBatches();
     void languageChangeKeepsTheSimulation();
 
 private:
     void startOnRealisticModel();
+    void startOnDrillingCell();
     void openWindow();
     void reopenInFrench();
     void click(const QString& variable);
@@ -161,6 +182,17 @@ void TestSimulation::startOnRealisticModel()
     m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
     QVERIFY(m_session->isActive());
     QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A6"));
+}
+
+// The shipped example with nested GRAFCETs (A1 initial; F2 warms up, F1 drills).
+void TestSimulation::startOnDrillingCell()
+{
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    QVERIFY(loaded.model);
+    m_window->document()->replaceModel(*loaded.model, QString(), core::ModelFormat::Native);
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(m_session->isActive());
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
 }
 
 // A new window in French, as if the user had started GG Studio in French.
@@ -427,6 +459,56 @@ void TestSimulation::explanationIsInTheUiLanguage()
     QVERIFY2(!anyContains(texts, QStringLiteral(" is FALSE")), qPrintable(texts.join('\n')));
 }
 
+void TestSimulation::nestedExplanationShowsTheGrafcet()
+{
+    startOnDrillingCell();
+    QTreeWidget* view = m_dock->explanationView();
+    // A1 has no GRAFCET: nothing nested is shown.
+    QVERIFY(!anyContains(allExplanationTexts(*view), QStringLiteral("GRAFCET of")));
+
+    click(QStringLiteral("DrillHigh"));
+    click(QStringLiteral("Unclamped"));
+    click(QStringLiteral("StartButton"));
+    scan(); // A1 -> F2: the next scan is F2's entry scan
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("F2"));
+    QStringList texts = allExplanationTexts(*view);
+    QVERIFY2(texts.contains(QStringLiteral("GRAFCET of F2: no step active | initialised again in the next scan (steps 1)")),
+             qPrintable(texts.join('\n')));
+    // Predicted on the initial situation: 1 -> 3 on DrillHigh fires, 1 -> 2 on NOT DrillHigh does not.
+    QVERIFY2(texts.contains(QStringLiteral("T2 (1 → 3) | fires in the next scan")), qPrintable(texts.join('\n')));
+    QVERIFY(texts.contains(QStringLiteral("T1 (1 → 2) | receptivity FALSE")));
+    QVERIFY(texts.contains(QStringLiteral("DrillHigh = TRUE")));
+    QVERIFY(texts.contains(QStringLiteral("T4 (3 → 4) | upstream step not active")));
+    QVERIFY(texts.contains(QStringLiteral("step 3 is not active")));
+
+    scan(2); // the entry scan (1 -> 3), then one scan in step 3
+    texts = allExplanationTexts(*view);
+    QVERIFY2(texts.contains(QStringLiteral("GRAFCET of F2: steps 3")), qPrintable(texts.join('\n')));
+    // Its state: the timer, the outputs it drives.
+    QVERIFY2(texts.contains(QStringLiteral("GG_T3_10000ms (step 3): 0 ms of 10000 ms")), qPrintable(texts.join('\n')));
+    QVERIFY(anyContains(texts, QStringLiteral("Outputs: ")));
+    QVERIFY(anyContains(texts, QStringLiteral("Spindle = TRUE")));
+    QVERIFY2(texts.contains(QStringLiteral("10s/X3 is FALSE: step 3 active for 10 ms of 10000 ms")),
+             qPrintable(texts.join('\n')));
+}
+
+void TestSimulation::nestedExplanationIsInTheUiLanguage()
+{
+    reopenInFrench();
+    startOnDrillingCell();
+    click(QStringLiteral("DrillHigh"));
+    click(QStringLiteral("Unclamped"));
+    click(QStringLiteral("StartButton"));
+    scan(3);
+    const QStringList texts = allExplanationTexts(*m_dock->explanationView());
+    QVERIFY2(texts.contains(QStringLiteral("GRAFCET de F2 : étapes 3")), qPrintable(texts.join('\n')));
+    QVERIFY2(texts.contains(QStringLiteral("10s/X3 est FALSE : étape 3 active depuis 10 ms sur 10000 ms")),
+             qPrintable(texts.join('\n')));
+    QVERIFY2(texts.contains(QStringLiteral("l'étape 1 n'est pas active")), qPrintable(texts.join('\n')));
+    QVERIFY2(!anyContains(texts, QStringLiteral("not active")), qPrintable(texts.join('\n')));
+    QVERIFY2(!anyContains(texts, QStringLiteral("receptivity")), qPrintable(texts.join('\n')));
+}
+
 void TestSimulation::replayFailuresAreInTheUiLanguage()
 {
     reopenInFrench();
@@ -594,6 +676,47 @@ void TestSimulation::recordedSessionReplaysWithEveryExpectationMet()
     QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A2"));
     QVERIFY(m_dock->findChild<QWidget*>(QStringLiteral("inputsPanel"))->isEnabled());
     QVERIFY(replay.size() >= 2);
+}
+
+// Outputs and nested situations that changed are written back, and the file replays.
+void TestSimulation::recordedNestedSessionReplays()
+{
+    startOnDrillingCell();
+    for (const char* name : {"DrillHigh", "Unclamped", "StartButton"})
+        click(QString::fromLatin1(name));
+    scan(3);
+    click(QStringLiteral("StartButton"));
+    m_session->advance(1000); // F2's 10 s warm-up at 10 ms
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("F1"));
+    click(QStringLiteral("PartPresent"));
+    scan(2);
+    click(QStringLiteral("Unclamped"));
+    click(QStringLiteral("Clamped"));
+    scan(2);
+    QCOMPARE(m_session->simulator()->activeNestedSteps("F1"), (std::vector<int>{3, 5}));
+    const std::int64_t scans = m_session->simulator()->scanCount();
+
+    const QString path = m_files.filePath(QStringLiteral("nested.scenario"));
+    QString error;
+    QVERIFY2(m_session->saveRecording(path, &error), qPrintable(error));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(file.readAll());
+    QVERIFY2(text.contains(QStringLiteral("at 2: expect nested F2 steps 3\n")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("at 2: expect variable Spindle = TRUE\n")), qPrintable(text));
+    // PartPresent was set before F1's entry scan: it starts in 1 and evolves to 2 in that scan.
+    QVERIFY2(text.contains(QStringLiteral("expect nested F1 steps 2\n")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("expect nested F1 steps 3, 5\n")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("expect variable Marker = TRUE\n")), qPrintable(text));
+
+    QVERIFY2(m_session->startReplay(path, &error), qPrintable(error));
+    m_session->advance(5000);
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QCOMPARE(m_session->simulator()->scanCount(), scans);
+    for (const core::ScenarioFailure& failure : m_session->replayFailures())
+        qWarning("%s", core::toText(failure).c_str());
+    QVERIFY(m_session->replayFailures().empty());
+    QVERIFY(m_session->replayExpectationCount() >= 15);
 }
 
 void TestSimulation::recordingNeverReplacesAFifo()
