@@ -112,10 +112,6 @@
         <translation>unerwartetes Zeichen &apos;%1&apos;</translation>
     </message>
     <message>
-        <source>empty condition: write TRUE for a transition that is always ready</source>
-        <translation>leere Bedingung: Für eine stets schaltbereite Transition TRUE eintragen</translation>
-    </message>
-    <message>
         <source>condition too complex: operators nested more than %1 levels deep</source>
         <translation>Bedingung zu komplex: Operatoren über mehr als %1 Ebenen verschachtelt</translation>
     </message>
@@ -234,6 +230,10 @@
     <message>
         <source>unexpected &apos;%1&apos; after a complete action</source>
         <translation>unerwartetes „%1“ nach einer vollständigen Aktion</translation>
+    </message>
+    <message>
+        <source>empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it</source>
+        <translation>leere Bedingung: schreiben Sie, wann die Transition schaltet (TRUE, wenn sie immer bereit ist), oder blenden Sie die Transition aus, wenn die Maschine sie nicht braucht</translation>
     </message>
 </context>
 <context>
@@ -361,10 +361,6 @@
     <message>
         <source>Step %1 has no visible incoming transition: it can never become active.</source>
         <translation>Schritt %1 hat keine sichtbare eingehende Transition: Er kann nie aktiv werden.</translation>
-    </message>
-    <message>
-        <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
-        <translation>Die Bedingung von %1 ist leer: Für eine stets schaltbereite Transition TRUE eintragen.</translation>
     </message>
     <message>
         <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
@@ -521,6 +517,10 @@
         <source>The nested GRAFCET of %1 is kept but not used: %1 is a simple step.</source>
         <translation>Der eingebettete GRAFCET von %1 bleibt erhalten, wird aber nicht verwendet: %1 ist ein einfacher Schritt.</translation>
     </message>
+    <message>
+        <source>The condition of %1 is empty: write when it fires (TRUE if it is always ready), or hide the transition if your machine does not need it.</source>
+        <translation>Die Bedingung von %1 ist leer: Schreiben Sie, wann sie schaltet (TRUE, wenn sie immer bereit ist), oder blenden Sie die Transition aus, wenn Ihre Maschine sie nicht braucht.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -556,6 +556,29 @@
     <message>
         <source>target %1 hidden</source>
         <translation>Zielschritt %1 ausgeblendet</translation>
+    </message>
+</context>
+<context>
+    <name>ExampleModels</name>
+    <message>
+        <source>Drilling Cell</source>
+        <translation>Bohrzelle</translation>
+    </message>
+    <message>
+        <source>A machine that clamps, drills and marks parts: GEMMA states with four nested GRAFCETs, ready to simulate</source>
+        <translation>Eine Maschine, die Teile spannt, bohrt und markiert: GEMMA-Zustände mit vier eingebetteten GRAFCETs, bereit zur Simulation</translation>
+    </message>
+    <message>
+        <source>Drilling Cell with Mistakes</source>
+        <translation>Bohrzelle mit Fehlern</translation>
+    </message>
+    <message>
+        <source>The same machine with one mistake for each check of the nested GRAFCETs, to see what the Problems panel reports</source>
+        <translation>Dieselbe Maschine mit einem Fehler für jede Prüfung der eingebetteten GRAFCETs, um zu sehen, was das Fenster „Probleme“ meldet</translation>
+    </message>
+    <message>
+        <source>The example %1 is missing from this build.</source>
+        <translation>Das Beispiel %1 fehlt in diesem Build.</translation>
     </message>
 </context>
 <context>
@@ -1361,6 +1384,30 @@
         <source>Could not write %1.</source>
         <translation>%1 konnte nicht geschrieben werden.</translation>
     </message>
+    <message>
+        <source>untitled</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCETs of %1: GG-Generator has no place for nested behaviour.</source>
+        <translation>Die eingebetteten GRAFCETs von %1: GG-Generator kann kein eingebettetes Verhalten aufnehmen.</translation>
+    </message>
+    <message>
+        <source>The variable kinds (output, internal): GG-Generator reads every variable as an input.</source>
+        <translation>Die Variablenarten (Ausgang, intern): GG-Generator liest jede Variable als Eingang.</translation>
+    </message>
+    <message>
+        <source>The until-stable evolution rule: GG-Generator knows one evolution per scan only.</source>
+        <translation>Die Entwicklungsregel „bis stabil“: GG-Generator kennt nur eine Entwicklung pro Zyklus.</translation>
+    </message>
+    <message>
+        <source>Export to GG-Generator</source>
+        <translation>Nach GG-Generator exportieren</translation>
+    </message>
+    <message>
+        <source>The GG-Generator file will leave out part of this model. Your model and its own file keep everything.</source>
+        <translation>Die GG-Generator-Datei lässt einen Teil dieses Modells weg. Ihr Modell und seine eigene Datei behalten alles.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -1706,6 +1753,38 @@
     <message>
         <source>Verification cancelled: the model or the Complete settings changed</source>
         <translation>Verifikation abgebrochen: Das Modell oder die Complete-Einstellungen wurden geändert</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>&amp;Beispiele</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>&amp;Anordnung zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Put the panels and the toolbar back where they were at the first start</source>
+        <translation>Fenster und Werkzeugleiste dorthin zurücksetzen, wo sie beim ersten Start waren</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Hauptwerkzeugleiste</translation>
+    </message>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>PLCopen XML exportieren</translation>
+    </message>
+    <message>
+        <source>Open Example</source>
+        <translation>Beispiel öffnen</translation>
+    </message>
+    <message>
+        <source>Could not open the example “%1”.</source>
+        <translation>Das Beispiel „%1“ konnte nicht geöffnet werden.</translation>
+    </message>
+    <message>
+        <source>Opened the example “%1” as an untitled copy: Save As keeps your changes</source>
+        <translation>Beispiel „%1“ als unbenannte Kopie geöffnet: „Speichern unter“ behält Ihre Änderungen</translation>
     </message>
 </context>
 <context>

@@ -112,10 +112,6 @@
         <translation>carácter &apos;%1&apos; inesperado</translation>
     </message>
     <message>
-        <source>empty condition: write TRUE for a transition that is always ready</source>
-        <translation>condición vacía: escriba TRUE para una transición siempre franqueable</translation>
-    </message>
-    <message>
         <source>condition too complex: operators nested more than %1 levels deep</source>
         <translation>condición demasiado compleja: operadores anidados en más de %1 niveles</translation>
     </message>
@@ -234,6 +230,10 @@
     <message>
         <source>unexpected &apos;%1&apos; after a complete action</source>
         <translation>«%1» inesperado tras una acción completa</translation>
+    </message>
+    <message>
+        <source>empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it</source>
+        <translation>condición vacía: escriba cuándo se franquea la transición (TRUE si siempre está lista), u oculte la transición si la máquina no la necesita</translation>
     </message>
 </context>
 <context>
@@ -361,10 +361,6 @@
     <message>
         <source>Step %1 has no visible incoming transition: it can never become active.</source>
         <translation>La etapa %1 no tiene ninguna transición de entrada visible: nunca puede activarse.</translation>
-    </message>
-    <message>
-        <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
-        <translation>La condición de %1 está vacía: escriba TRUE para una transición siempre franqueable.</translation>
     </message>
     <message>
         <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
@@ -521,6 +517,10 @@
         <source>The nested GRAFCET of %1 is kept but not used: %1 is a simple step.</source>
         <translation>El GRAFCET anidado de %1 se conserva pero no se usa: %1 es una etapa simple.</translation>
     </message>
+    <message>
+        <source>The condition of %1 is empty: write when it fires (TRUE if it is always ready), or hide the transition if your machine does not need it.</source>
+        <translation>La condición de %1 está vacía: escriba cuándo se franquea (TRUE si siempre está lista), u oculte la transición si su máquina no la necesita.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -556,6 +556,29 @@
     <message>
         <source>target %1 hidden</source>
         <translation>etapa de destino %1 oculta</translation>
+    </message>
+</context>
+<context>
+    <name>ExampleModels</name>
+    <message>
+        <source>Drilling Cell</source>
+        <translation>Célula de taladrado</translation>
+    </message>
+    <message>
+        <source>A machine that clamps, drills and marks parts: GEMMA states with four nested GRAFCETs, ready to simulate</source>
+        <translation>Una máquina que sujeta, taladra y marca piezas: estados GEMMA con cuatro GRAFCET anidados, lista para simular</translation>
+    </message>
+    <message>
+        <source>Drilling Cell with Mistakes</source>
+        <translation>Célula de taladrado con errores</translation>
+    </message>
+    <message>
+        <source>The same machine with one mistake for each check of the nested GRAFCETs, to see what the Problems panel reports</source>
+        <translation>La misma máquina con un error para cada comprobación de los GRAFCET anidados, para ver lo que indica el panel Problemas</translation>
+    </message>
+    <message>
+        <source>The example %1 is missing from this build.</source>
+        <translation>El ejemplo %1 no está incluido en esta compilación.</translation>
     </message>
 </context>
 <context>
@@ -1361,6 +1384,30 @@
         <source>Could not write %1.</source>
         <translation>No se ha podido escribir %1.</translation>
     </message>
+    <message>
+        <source>untitled</source>
+        <translation>sin título</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCETs of %1: GG-Generator has no place for nested behaviour.</source>
+        <translation>Los GRAFCET anidados de %1: GG-Generator no tiene lugar para el comportamiento anidado.</translation>
+    </message>
+    <message>
+        <source>The variable kinds (output, internal): GG-Generator reads every variable as an input.</source>
+        <translation>Los tipos de variable (salida, interna): GG-Generator lee todas las variables como entradas.</translation>
+    </message>
+    <message>
+        <source>The until-stable evolution rule: GG-Generator knows one evolution per scan only.</source>
+        <translation>La regla de evolución «hasta la estabilidad»: GG-Generator solo conoce una evolución por ciclo.</translation>
+    </message>
+    <message>
+        <source>Export to GG-Generator</source>
+        <translation>Exportar a GG-Generator</translation>
+    </message>
+    <message>
+        <source>The GG-Generator file will leave out part of this model. Your model and its own file keep everything.</source>
+        <translation>El archivo de GG-Generator dejará fuera parte de este modelo. Su modelo y su propio archivo lo conservan todo.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -1706,6 +1753,38 @@
     <message>
         <source>Verification cancelled: the model or the Complete settings changed</source>
         <translation>Verificación cancelada: el modelo o los ajustes de Complete han cambiado</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>E&amp;jemplos</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>&amp;Restablecer la disposición</translation>
+    </message>
+    <message>
+        <source>Put the panels and the toolbar back where they were at the first start</source>
+        <translation>Devolver los paneles y la barra de herramientas adonde estaban en el primer inicio</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Barra de herramientas principal</translation>
+    </message>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Exportar a PLCopen XML</translation>
+    </message>
+    <message>
+        <source>Open Example</source>
+        <translation>Abrir un ejemplo</translation>
+    </message>
+    <message>
+        <source>Could not open the example “%1”.</source>
+        <translation>No se ha podido abrir el ejemplo «%1».</translation>
+    </message>
+    <message>
+        <source>Opened the example “%1” as an untitled copy: Save As keeps your changes</source>
+        <translation>Se ha abierto el ejemplo «%1» como copia sin título: «Guardar como» conserva sus cambios</translation>
     </message>
 </context>
 <context>

@@ -112,10 +112,6 @@
         <translation>caractère &apos;%1&apos; inattendu</translation>
     </message>
     <message>
-        <source>empty condition: write TRUE for a transition that is always ready</source>
-        <translation>réceptivité vide&#xa0;: écrivez TRUE pour une transition toujours franchissable</translation>
-    </message>
-    <message>
         <source>condition too complex: operators nested more than %1 levels deep</source>
         <translation>réceptivité trop complexe&#xa0;: opérateurs imbriqués sur plus de %1 niveaux</translation>
     </message>
@@ -234,6 +230,10 @@
     <message>
         <source>unexpected &apos;%1&apos; after a complete action</source>
         <translation>« %1 » inattendu après une action complète</translation>
+    </message>
+    <message>
+        <source>empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it</source>
+        <translation>réceptivité vide&#xa0;: écrivez quand la transition est franchie (TRUE si elle est toujours prête), ou masquez la transition si la machine n&apos;en a pas besoin</translation>
     </message>
 </context>
 <context>
@@ -361,10 +361,6 @@
     <message>
         <source>Step %1 has no visible incoming transition: it can never become active.</source>
         <translation>L&apos;étape %1 n&apos;a aucune transition d&apos;entrée visible&#xa0;: elle ne peut jamais devenir active.</translation>
-    </message>
-    <message>
-        <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
-        <translation>La réceptivité de %1 est vide&#xa0;: écrivez TRUE pour une transition toujours franchissable.</translation>
     </message>
     <message>
         <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
@@ -521,6 +517,10 @@
         <source>The nested GRAFCET of %1 is kept but not used: %1 is a simple step.</source>
         <translation>Le GRAFCET de %1 est conservé mais inutilisé : %1 est une étape simple.</translation>
     </message>
+    <message>
+        <source>The condition of %1 is empty: write when it fires (TRUE if it is always ready), or hide the transition if your machine does not need it.</source>
+        <translation>La réceptivité de %1 est vide&#xa0;: écrivez quand elle est franchie (TRUE si elle est toujours prête), ou masquez la transition si votre machine n&apos;en a pas besoin.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -556,6 +556,29 @@
     <message>
         <source>target %1 hidden</source>
         <translation>étape cible %1 masquée</translation>
+    </message>
+</context>
+<context>
+    <name>ExampleModels</name>
+    <message>
+        <source>Drilling Cell</source>
+        <translation>Cellule de perçage</translation>
+    </message>
+    <message>
+        <source>A machine that clamps, drills and marks parts: GEMMA states with four nested GRAFCETs, ready to simulate</source>
+        <translation>Une machine qui bride, perce et marque des pièces&#xa0;: des états GEMMA avec quatre GRAFCET imbriqués, prête à simuler</translation>
+    </message>
+    <message>
+        <source>Drilling Cell with Mistakes</source>
+        <translation>Cellule de perçage avec erreurs</translation>
+    </message>
+    <message>
+        <source>The same machine with one mistake for each check of the nested GRAFCETs, to see what the Problems panel reports</source>
+        <translation>La même machine avec une erreur pour chaque vérification des GRAFCET imbriqués, pour voir ce que signale le panneau Problèmes</translation>
+    </message>
+    <message>
+        <source>The example %1 is missing from this build.</source>
+        <translation>L&apos;exemple %1 est absent de cette version.</translation>
     </message>
 </context>
 <context>
@@ -1361,6 +1384,30 @@
         <source>Could not write %1.</source>
         <translation>Impossible d&apos;écrire %1.</translation>
     </message>
+    <message>
+        <source>untitled</source>
+        <translation>sans titre</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCETs of %1: GG-Generator has no place for nested behaviour.</source>
+        <translation>Les GRAFCET imbriqués de %1&#xa0;: GG-Generator n&apos;a pas de place pour le comportement imbriqué.</translation>
+    </message>
+    <message>
+        <source>The variable kinds (output, internal): GG-Generator reads every variable as an input.</source>
+        <translation>Les genres des variables (sortie, interne)&#xa0;: GG-Generator lit chaque variable comme une entrée.</translation>
+    </message>
+    <message>
+        <source>The until-stable evolution rule: GG-Generator knows one evolution per scan only.</source>
+        <translation>La règle d&apos;évolution «&#xa0;jusqu&apos;à stabilité&#xa0;»&#xa0;: GG-Generator ne connaît qu&apos;une évolution par cycle.</translation>
+    </message>
+    <message>
+        <source>Export to GG-Generator</source>
+        <translation>Exporter vers GG-Generator</translation>
+    </message>
+    <message>
+        <source>The GG-Generator file will leave out part of this model. Your model and its own file keep everything.</source>
+        <translation>Le fichier GG-Generator laissera de côté une partie de ce modèle. Votre modèle et son propre fichier conservent tout.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -1706,6 +1753,38 @@
     <message>
         <source>Verification cancelled: the model or the Complete settings changed</source>
         <translation>Vérification annulée&#xa0;: le modèle ou les réglages de Complete ont changé</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>E&amp;xemples</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>&amp;Réinitialiser la disposition</translation>
+    </message>
+    <message>
+        <source>Put the panels and the toolbar back where they were at the first start</source>
+        <translation>Remettre les panneaux et la barre d&apos;outils là où ils étaient au premier démarrage</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Barre d&apos;outils principale</translation>
+    </message>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Exporter en PLCopen XML</translation>
+    </message>
+    <message>
+        <source>Open Example</source>
+        <translation>Ouvrir un exemple</translation>
+    </message>
+    <message>
+        <source>Could not open the example “%1”.</source>
+        <translation>Impossible d&apos;ouvrir l&apos;exemple «&#xa0;%1&#xa0;».</translation>
+    </message>
+    <message>
+        <source>Opened the example “%1” as an untitled copy: Save As keeps your changes</source>
+        <translation>Exemple «&#xa0;%1&#xa0;» ouvert comme copie sans titre&#xa0;: «&#xa0;Enregistrer sous&#xa0;» conserve vos modifications</translation>
     </message>
 </context>
 <context>

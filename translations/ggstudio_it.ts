@@ -112,10 +112,6 @@
         <translation>carattere &apos;%1&apos; inatteso</translation>
     </message>
     <message>
-        <source>empty condition: write TRUE for a transition that is always ready</source>
-        <translation>condizione vuota: scrivere TRUE per una transizione sempre pronta</translation>
-    </message>
-    <message>
         <source>condition too complex: operators nested more than %1 levels deep</source>
         <translation>condizione troppo complessa: operatori annidati su più di %1 livelli</translation>
     </message>
@@ -234,6 +230,10 @@
     <message>
         <source>unexpected &apos;%1&apos; after a complete action</source>
         <translation>«%1» inatteso dopo un&apos;azione completa</translation>
+    </message>
+    <message>
+        <source>empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it</source>
+        <translation>condizione vuota: scrivere quando la transizione scatta (TRUE se è sempre pronta), oppure nascondere la transizione se la macchina non ne ha bisogno</translation>
     </message>
 </context>
 <context>
@@ -361,10 +361,6 @@
     <message>
         <source>Step %1 has no visible incoming transition: it can never become active.</source>
         <translation>La tappa %1 non ha transizioni entranti visibili: non può mai diventare attiva.</translation>
-    </message>
-    <message>
-        <source>The condition of %1 is empty: write TRUE for a transition that is always ready.</source>
-        <translation>La condizione di %1 è vuota: scrivere TRUE per una transizione sempre pronta.</translation>
     </message>
     <message>
         <source>The family transition %1 is negated, which has no effect: family transitions never wait for Complete.</source>
@@ -521,6 +517,10 @@
         <source>The nested GRAFCET of %1 is kept but not used: %1 is a simple step.</source>
         <translation>Il GRAFCET annidato di %1 è conservato ma non usato: %1 è una tappa semplice.</translation>
     </message>
+    <message>
+        <source>The condition of %1 is empty: write when it fires (TRUE if it is always ready), or hide the transition if your machine does not need it.</source>
+        <translation>La condizione di %1 è vuota: scrivere quando scatta (TRUE se è sempre pronta), oppure nascondere la transizione se la macchina non ne ha bisogno.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -556,6 +556,29 @@
     <message>
         <source>target %1 hidden</source>
         <translation>tappa di destinazione %1 nascosta</translation>
+    </message>
+</context>
+<context>
+    <name>ExampleModels</name>
+    <message>
+        <source>Drilling Cell</source>
+        <translation>Cella di foratura</translation>
+    </message>
+    <message>
+        <source>A machine that clamps, drills and marks parts: GEMMA states with four nested GRAFCETs, ready to simulate</source>
+        <translation>Una macchina che blocca, fora e marca i pezzi: stati GEMMA con quattro GRAFCET annidati, pronta da simulare</translation>
+    </message>
+    <message>
+        <source>Drilling Cell with Mistakes</source>
+        <translation>Cella di foratura con errori</translation>
+    </message>
+    <message>
+        <source>The same machine with one mistake for each check of the nested GRAFCETs, to see what the Problems panel reports</source>
+        <translation>La stessa macchina con un errore per ogni controllo dei GRAFCET annidati, per vedere che cosa segnala il pannello Problemi</translation>
+    </message>
+    <message>
+        <source>The example %1 is missing from this build.</source>
+        <translation>L&apos;esempio %1 manca in questa build.</translation>
     </message>
 </context>
 <context>
@@ -1361,6 +1384,30 @@
         <source>Could not write %1.</source>
         <translation>Impossibile scrivere %1.</translation>
     </message>
+    <message>
+        <source>untitled</source>
+        <translation>senza titolo</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCETs of %1: GG-Generator has no place for nested behaviour.</source>
+        <translation>I GRAFCET annidati di %1: GG-Generator non ha posto per il comportamento annidato.</translation>
+    </message>
+    <message>
+        <source>The variable kinds (output, internal): GG-Generator reads every variable as an input.</source>
+        <translation>I generi delle variabili (uscita, interna): GG-Generator legge ogni variabile come ingresso.</translation>
+    </message>
+    <message>
+        <source>The until-stable evolution rule: GG-Generator knows one evolution per scan only.</source>
+        <translation>La regola di evoluzione «fino alla stabilità»: GG-Generator conosce solo un&apos;evoluzione per ciclo.</translation>
+    </message>
+    <message>
+        <source>Export to GG-Generator</source>
+        <translation>Esporta per GG-Generator</translation>
+    </message>
+    <message>
+        <source>The GG-Generator file will leave out part of this model. Your model and its own file keep everything.</source>
+        <translation>Il file GG-Generator tralascerà una parte di questo modello. Il modello e il suo file conservano tutto.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -1706,6 +1753,38 @@
     <message>
         <source>Verification cancelled: the model or the Complete settings changed</source>
         <translation>Verifica annullata: il modello o le impostazioni di Complete sono cambiati</translation>
+    </message>
+    <message>
+        <source>E&amp;xamples</source>
+        <translation>Ese&amp;mpi</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>&amp;Ripristina la disposizione</translation>
+    </message>
+    <message>
+        <source>Put the panels and the toolbar back where they were at the first start</source>
+        <translation>Riportare i pannelli e la barra degli strumenti dove erano al primo avvio</translation>
+    </message>
+    <message>
+        <source>Main Toolbar</source>
+        <translation>Barra degli strumenti principale</translation>
+    </message>
+    <message>
+        <source>Export PLCopen XML</source>
+        <translation>Esporta PLCopen XML</translation>
+    </message>
+    <message>
+        <source>Open Example</source>
+        <translation>Apri esempio</translation>
+    </message>
+    <message>
+        <source>Could not open the example “%1”.</source>
+        <translation>Impossibile aprire l&apos;esempio «%1».</translation>
+    </message>
+    <message>
+        <source>Opened the example “%1” as an untitled copy: Save As keeps your changes</source>
+        <translation>Aperto l&apos;esempio «%1» come copia senza titolo: «Salva con nome» conserva le modifiche</translation>
     </message>
 </context>
 <context>
