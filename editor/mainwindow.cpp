@@ -505,6 +505,7 @@ void MainWindow::resetLayout()
 void MainWindow::createStatusBar()
 {
     m_problemCounter = new ProblemCounter(*m_document, this);
+    m_problemCounter->setVerification(m_verification);
     connect(m_problemCounter, &ProblemCounter::clicked, this, [this] {
         ensureDocksReady();
         m_problemsDock->show();

@@ -3,6 +3,7 @@
 #include "editor/diagnostictext.h"
 #include "editor/document.h"
 #include "editor/severityicon.h"
+#include "editor/verificationrunner.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -53,6 +54,15 @@ void ProblemCounter::changeEvent(QEvent* event)
     QWidget::changeEvent(event);
 }
 
+void ProblemCounter::setVerification(const VerificationRunner* runner)
+{
+    m_verification = runner;
+    for (auto signal : {&VerificationRunner::finished, &VerificationRunner::started})
+        connect(runner, signal, this, &ProblemCounter::recount);
+    connect(runner, &VerificationRunner::staleChanged, this, &ProblemCounter::recount);
+    recount();
+}
+
 void ProblemCounter::recount()
 {
     m_errors = 0;
@@ -63,24 +73,42 @@ void ProblemCounter::recount()
         else if (diagnostic.severity == core::Severity::Warning)
             ++m_warnings;
     }
+    m_findings = 0;
+    m_findingErrors = 0;
+    m_findingsStale = false;
+    if (m_verification && m_verification->hasResult()) {
+        for (const core::VerificationFinding& finding : m_verification->result().findings) {
+            ++m_findings;
+            m_findingErrors += finding.severity == core::Severity::Error ? 1 : 0;
+        }
+        m_findingsStale = m_verification->isStale();
+    }
     retranslate();
 }
 
 void ProblemCounter::retranslate()
 {
     // The icon of the worst severity present; no icon when all is well.
-    if (m_errors > 0)
+    if (m_errors > 0 || m_findingErrors > 0)
         m_button->setIcon(severityIcon(core::Severity::Error));
-    else if (m_warnings > 0)
+    else if (m_warnings > 0 || m_findings > 0)
         m_button->setIcon(severityIcon(core::Severity::Warning));
     else
         m_button->setIcon(QIcon());
 
+    QString text;
     if (m_errors == 0 && m_warnings == 0)
-        m_button->setText(tr("No problems"));
+        text = tr("No problems");
     else
-        m_button->setText(tr("%n error(s)", nullptr, m_errors) + QStringLiteral(", ") +
-                          tr("%n warning(s)", nullptr, m_warnings));
+        text = tr("%n error(s)", nullptr, m_errors) + QStringLiteral(", ") +
+               tr("%n warning(s)", nullptr, m_warnings);
+    if (m_findings > 0) {
+        //: the verification's findings after the checks' problems in the status bar
+        text += QStringLiteral(" · ") + (m_findingsStale
+                                             ? tr("Verification (outdated): %n finding(s)", nullptr, m_findings)
+                                             : tr("Verification: %n finding(s)", nullptr, m_findings));
+    }
+    m_button->setText(text);
     m_button->setToolTip(tr("Show the Problems panel"));
 }
 

@@ -8,6 +8,7 @@ class QToolButton;
 namespace editor {
 
 class Document;
+class VerificationRunner;
 
 // The status bar's permanent fields: how many errors and warnings the model
 // has (a click asks for the Problems dock), and the chart's zoom.
@@ -19,6 +20,11 @@ public:
 
     int errorCount() const { return m_errors; }
     int warningCount() const { return m_warnings; }
+    // The last verification's findings count too, said apart from the
+    // checks' problems ("… · Verification: 1 warning"), "outdated" once
+    // the model changed after it.
+    void setVerification(const VerificationRunner* runner);
+    int findingCount() const { return m_findings; }
 
 signals:
     void clicked();
@@ -31,9 +37,13 @@ private:
     void retranslate();
 
     Document& m_document;
+    const VerificationRunner* m_verification = nullptr;
     QToolButton* m_button;
     int m_errors = 0;
     int m_warnings = 0;
+    int m_findings = 0;
+    int m_findingErrors = 0;
+    bool m_findingsStale = false;
 };
 
 class ZoomIndicator : public QWidget {

@@ -3,6 +3,7 @@
 #include "editor/docks/dockreveal.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
+#include "editor/secondarytext.h"
 #include "editor/selection.h"
 
 #include "core/model/model.h"
@@ -28,7 +29,7 @@ void PropertyDock::setPages(QWidget* form)
     m_placeholder = new WrappingLabel(m_pages);
     m_placeholder->setObjectName(QStringLiteral("placeholder"));
     m_placeholder->setAlignment(Qt::AlignCenter);
-    m_placeholder->setEnabled(false);
+    useSecondaryText(m_placeholder); // read, not greyed out as disabled text would be
     m_placeholder->setMargin(12);
     m_pages->addWidget(m_placeholder);
     m_pages->addWidget(form);

@@ -2,6 +2,7 @@
 
 #include "editor/docks/elementlabels.h"
 #include "editor/document.h"
+#include "editor/secondarytext.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
@@ -470,7 +471,7 @@ void SimulationDock::buildInputRows()
     }
     if (simulator->variableNames().empty()) {
         auto* none = new QLabel(tr("The model declares no variables."), m_inputsWidget);
-        none->setForegroundRole(QPalette::PlaceholderText);
+        useSecondaryText(none);
         m_inputsLayout->addWidget(none, row++, 0, 1, 2);
     }
     if (!simulator->nestedSteps().empty()) {

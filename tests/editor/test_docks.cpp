@@ -942,6 +942,14 @@ void TestDocks::secondaryTextIsReadable()
     auto* names = child<QLabel>(&dock, "namesLabel");
     QVERIFY(contrastRatio(names->palette().color(QPalette::WindowText), names->palette().color(QPalette::Window))
             >= kMinimumTextContrast);
+    // And the Step dock's "Select a step..." when nothing is selected.
+    StepDock steps(&document, &selection);
+    selection.clear();
+    auto* placeholder = child<QLabel>(&steps, "placeholder");
+    QVERIFY(placeholder->isEnabled());
+    QVERIFY(contrastRatio(placeholder->palette().color(QPalette::WindowText),
+                          placeholder->palette().color(QPalette::Window))
+            >= kMinimumTextContrast);
 }
 
 void TestDocks::diagnosticTextTranslatesByCode()

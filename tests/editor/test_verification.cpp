@@ -9,6 +9,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/statusindicators.h"
 #include "editor/secondarytext.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/diagnostictext.h"
@@ -22,6 +23,7 @@
 #include "editor/simulation/simulationsession.h"
 #include "editor/verificationrunner.h"
 
+#include <QToolButton>
 #include <QAction>
 #include <QComboBox>
 #include <QLabel>
@@ -90,6 +92,7 @@ private slots:
     void showOnChartSelectsTheElement();
     void replayReachesTheCounterexampleState();
     void modelEditMarksResultsStale();
+    void statusBarCountsTheFindings();
     void modelEditCancelsARunningVerification();
     void languageChangeKeepsTheFindings();
     void simulationCompleteModesAreAssumed();
@@ -262,6 +265,24 @@ void TestVerification::replayReachesTheCounterexampleState()
     QVERIFY(!m_runner->isStale());
     QCOMPARE(panel->view()->currentItem(), row(QStringLiteral("GV106"), QStringLiteral("D2")));
     QVERIFY(panel->replayAction()->isEnabled());
+}
+
+void TestVerification::statusBarCountsTheFindings()
+{
+    auto* counter = m_window->findChild<ProblemCounter*>();
+    QVERIFY(counter);
+    auto* button = counter->findChild<QToolButton*>(QStringLiteral("problemCountButton"));
+    QVERIFY(!button->text().contains(QStringLiteral("Verification")));
+    verifyAndWait();
+    const int findings = int(m_runner->result().findings.size());
+    QVERIFY(findings > 0);
+    QCOMPARE(counter->findingCount(), findings);
+    QVERIFY2(button->text().contains(QStringLiteral("Verification: %1 finding").arg(findings)),
+             qPrintable(button->text()));
+    // An edit makes them outdated, and the counter says so.
+    Document* document = m_window->document();
+    QVERIFY(document->push(new SetConditionCommand(*document, QStringLiteral("A6->A1"), QStringLiteral("HomePosition"))));
+    QVERIFY2(button->text().contains(QStringLiteral("Verification (outdated)")), qPrintable(button->text()));
 }
 
 void TestVerification::modelEditMarksResultsStale()
