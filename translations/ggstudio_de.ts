@@ -1862,6 +1862,21 @@
         <source>No problems</source>
         <translation>Keine Probleme</translation>
     </message>
+    <message numerus="yes">
+        <source>Verification (outdated): %n finding(s)</source>
+        <extracomment>the verification&apos;s findings after the checks&apos; problems in the status bar</extracomment>
+        <translation>
+            <numerusform>Verifikation (veraltet): %n Befund</numerusform>
+            <numerusform>Verifikation (veraltet): %n Befunde</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Verification: %n finding(s)</source>
+        <translation>
+            <numerusform>Verifikation: %n Befund</numerusform>
+            <numerusform>Verifikation: %n Befunde</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemsDock</name>

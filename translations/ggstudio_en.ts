@@ -44,6 +44,21 @@
             <numerusform>%n warnings</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Verification (outdated): %n finding(s)</source>
+        <extracomment>the verification&apos;s findings after the checks&apos; problems in the status bar</extracomment>
+        <translation>
+            <numerusform>Verification (outdated): %n finding</numerusform>
+            <numerusform>Verification (outdated): %n findings</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Verification: %n finding(s)</source>
+        <translation>
+            <numerusform>Verification: %n finding</numerusform>
+            <numerusform>Verification: %n findings</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemsDock</name>

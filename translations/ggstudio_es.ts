@@ -1862,6 +1862,21 @@
         <source>No problems</source>
         <translation>Ningún problema</translation>
     </message>
+    <message numerus="yes">
+        <source>Verification (outdated): %n finding(s)</source>
+        <extracomment>the verification&apos;s findings after the checks&apos; problems in the status bar</extracomment>
+        <translation>
+            <numerusform>Verificación (desactualizada): %n hallazgo</numerusform>
+            <numerusform>Verificación (desactualizada): %n hallazgos</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Verification: %n finding(s)</source>
+        <translation>
+            <numerusform>Verificación: %n hallazgo</numerusform>
+            <numerusform>Verificación: %n hallazgos</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemsDock</name>

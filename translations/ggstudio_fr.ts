@@ -1862,6 +1862,21 @@
         <source>No problems</source>
         <translation>Aucun problème</translation>
     </message>
+    <message numerus="yes">
+        <source>Verification (outdated): %n finding(s)</source>
+        <extracomment>the verification&apos;s findings after the checks&apos; problems in the status bar</extracomment>
+        <translation>
+            <numerusform>Vérification (périmée)&#xa0;: %n constat</numerusform>
+            <numerusform>Vérification (périmée)&#xa0;: %n constats</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Verification: %n finding(s)</source>
+        <translation>
+            <numerusform>Vérification&#xa0;: %n constat</numerusform>
+            <numerusform>Vérification&#xa0;: %n constats</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemsDock</name>

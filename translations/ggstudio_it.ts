@@ -1862,6 +1862,21 @@
         <source>No problems</source>
         <translation>Nessun problema</translation>
     </message>
+    <message numerus="yes">
+        <source>Verification (outdated): %n finding(s)</source>
+        <extracomment>the verification&apos;s findings after the checks&apos; problems in the status bar</extracomment>
+        <translation>
+            <numerusform>Verifica (non aggiornata): %n risultato</numerusform>
+            <numerusform>Verifica (non aggiornata): %n risultati</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Verification: %n finding(s)</source>
+        <translation>
+            <numerusform>Verifica: %n risultato</numerusform>
+            <numerusform>Verifica: %n risultati</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemsDock</name>
