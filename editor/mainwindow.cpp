@@ -1,6 +1,7 @@
 #include "editor/mainwindow.h"
 
 #include "editor/autosave.h"
+#include "editor/chart/chartcontextmenu.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
 #include "editor/commands/resetmodelcommand.h"
@@ -36,6 +37,7 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
+#include <QShortcut>
 #include <QStyle>
 #include <QToolBar>
 #include <QSignalBlocker>
@@ -171,6 +173,11 @@ void MainWindow::createDocks()
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
     m_simulationDock = new SimulationDock(m_session, m_document, this);
     arrangeDocks(docks());
+    // Esc in a property dock goes back to the chart (Enter or F2 there came in).
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock}) {
+        auto* back = new QShortcut(QKeySequence(Qt::Key_Escape), dock, [this] { m_view->setFocus(Qt::ShortcutFocusReason); });
+        back->setContext(Qt::WidgetWithChildrenShortcut);
+    }
 }
 
 namespace {
@@ -404,6 +411,10 @@ void MainWindow::createActions()
     m_recentFiles = new RecentFiles(*m_settings, this);
     connect(m_recentFiles, &RecentFiles::openRequested, this, &MainWindow::openFile);
     m_exportActions = new ExportActions(*m_document, *m_scene, *m_settings, this);
+    m_chartContextMenu = new ChartContextMenu(
+        *m_document, *m_selection,
+        ChartContextMenu::SheetActions{m_showHiddenAction, m_fitAction, m_exportActions->chartAction()}, this);
+    connect(m_view, &ChartView::contextMenuRequested, this, &MainWindow::showChartContextMenu);
     connect(m_exportActions, &ExportActions::exported, this,
             [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
 }
@@ -487,6 +498,21 @@ void MainWindow::createToolBar()
     add(m_verifyAction, QStyle::SP_DialogApplyButton);
     m_mainToolBar->addSeparator();
     add(m_exportActions->plcOpenAction(), QStyle::SP_ComputerIcon);
+}
+
+void MainWindow::showChartContextMenu(const ElementRef& element, const QPoint& globalPos)
+{
+    ensureDocksReady();
+    QMenu menu(this);
+    menu.setObjectName(QStringLiteral("chartContextMenu"));
+    m_chartContextMenu->populate(&menu, element);
+    if (m_session->isActive()) { // simulation locks editing: only the sheet's view entries stay
+        for (QAction* action : menu.actions()) {
+            if (action != m_showHiddenAction && action != m_fitAction && action != m_exportActions->chartAction())
+                action->setEnabled(false);
+        }
+    }
+    menu.exec(globalPos);
 }
 
 void MainWindow::resetLayout()

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "editor/elementref.h"
+
 #include "core/model/model.h"
 
 #include <QMainWindow>
@@ -15,6 +17,7 @@ class QToolBar;
 namespace editor {
 
 class Autosave;
+class ChartContextMenu;
 class ChartScene;
 class ChartView;
 class Document;
@@ -103,6 +106,7 @@ private:
     void createActions();
     void createMenus();
     void createToolBar();
+    void showChartContextMenu(const ElementRef& element, const QPoint& globalPos);
     void createStatusBar();
     void applyDefaultLayout();
     void restoreLayout();
@@ -180,6 +184,7 @@ private:
     QAction* m_modelSettingsAction = nullptr;
     QAction* m_resetLayoutAction = nullptr;
     QToolBar* m_mainToolBar = nullptr;
+    ChartContextMenu* m_chartContextMenu = nullptr;
     QAction* m_showHiddenAction = nullptr;
     QAction* m_fitAction = nullptr;
     QAction* m_actualSizeAction = nullptr;

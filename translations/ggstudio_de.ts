@@ -1242,6 +1242,49 @@
     </message>
 </context>
 <context>
+    <name>editor::ChartContextMenu</name>
+    <message>
+        <source>&amp;Show %1</source>
+        <translation>%1 &amp;einblenden</translation>
+    </message>
+    <message>
+        <source>&amp;Hide %1</source>
+        <translation>%1 &amp;ausblenden</translation>
+    </message>
+    <message>
+        <source>Step &amp;Type</source>
+        <translation>Schritt&amp;typ</translation>
+    </message>
+    <message>
+        <source>Make &amp;Initial Step</source>
+        <translation>Zum &amp;Anfangsschritt machen</translation>
+    </message>
+    <message>
+        <source>Edit &amp;Comment…</source>
+        <translation>&amp;Kommentar bearbeiten…</translation>
+    </message>
+    <message>
+        <source>Edit &amp;Condition…</source>
+        <translation>&amp;Bedingung bearbeiten…</translation>
+    </message>
+    <message>
+        <source>&amp;Negated</source>
+        <translation>&amp;Negiert</translation>
+    </message>
+    <message>
+        <source>Flips whether this transition waits for Complete of its source&apos;s nested behaviour</source>
+        <translation>Kehrt um, ob diese Transition auf Complete des eingebetteten Verhaltens ihres Quellschritts wartet</translation>
+    </message>
+    <message>
+        <source>Priority &amp;Up</source>
+        <translation>Priorität &amp;erhöhen</translation>
+    </message>
+    <message>
+        <source>Priority &amp;Down</source>
+        <translation>Priorität &amp;senken</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>

@@ -1242,6 +1242,49 @@
     </message>
 </context>
 <context>
+    <name>editor::ChartContextMenu</name>
+    <message>
+        <source>&amp;Show %1</source>
+        <translation>&amp;Mostrar %1</translation>
+    </message>
+    <message>
+        <source>&amp;Hide %1</source>
+        <translation>&amp;Ocultar %1</translation>
+    </message>
+    <message>
+        <source>Step &amp;Type</source>
+        <translation>&amp;Tipo de etapa</translation>
+    </message>
+    <message>
+        <source>Make &amp;Initial Step</source>
+        <translation>Convertir en etapa &amp;inicial</translation>
+    </message>
+    <message>
+        <source>Edit &amp;Comment…</source>
+        <translation>Editar el &amp;comentario…</translation>
+    </message>
+    <message>
+        <source>Edit &amp;Condition…</source>
+        <translation>Editar la &amp;condición…</translation>
+    </message>
+    <message>
+        <source>&amp;Negated</source>
+        <translation>&amp;Negada</translation>
+    </message>
+    <message>
+        <source>Flips whether this transition waits for Complete of its source&apos;s nested behaviour</source>
+        <translation>Invierte si esta transición espera Complete del comportamiento anidado de su etapa de origen</translation>
+    </message>
+    <message>
+        <source>Priority &amp;Up</source>
+        <translation>&amp;Subir la prioridad</translation>
+    </message>
+    <message>
+        <source>Priority &amp;Down</source>
+        <translation>&amp;Bajar la prioridad</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>

@@ -1242,6 +1242,49 @@
     </message>
 </context>
 <context>
+    <name>editor::ChartContextMenu</name>
+    <message>
+        <source>&amp;Show %1</source>
+        <translation>&amp;Afficher %1</translation>
+    </message>
+    <message>
+        <source>&amp;Hide %1</source>
+        <translation>&amp;Masquer %1</translation>
+    </message>
+    <message>
+        <source>Step &amp;Type</source>
+        <translation>&amp;Type d&apos;étape</translation>
+    </message>
+    <message>
+        <source>Make &amp;Initial Step</source>
+        <translation>Faire l&apos;étape &amp;initiale</translation>
+    </message>
+    <message>
+        <source>Edit &amp;Comment…</source>
+        <translation>Modifier le &amp;commentaire…</translation>
+    </message>
+    <message>
+        <source>Edit &amp;Condition…</source>
+        <translation>Modifier la &amp;réceptivité…</translation>
+    </message>
+    <message>
+        <source>&amp;Negated</source>
+        <translation>&amp;Niée</translation>
+    </message>
+    <message>
+        <source>Flips whether this transition waits for Complete of its source&apos;s nested behaviour</source>
+        <translation>Inverse l&apos;attente par cette transition de Complete du comportement imbriqué de son étape source</translation>
+    </message>
+    <message>
+        <source>Priority &amp;Up</source>
+        <translation>&amp;Monter la priorité</translation>
+    </message>
+    <message>
+        <source>Priority &amp;Down</source>
+        <translation>&amp;Baisser la priorité</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>

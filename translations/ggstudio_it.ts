@@ -1242,6 +1242,49 @@
     </message>
 </context>
 <context>
+    <name>editor::ChartContextMenu</name>
+    <message>
+        <source>&amp;Show %1</source>
+        <translation>&amp;Mostra %1</translation>
+    </message>
+    <message>
+        <source>&amp;Hide %1</source>
+        <translation>&amp;Nascondi %1</translation>
+    </message>
+    <message>
+        <source>Step &amp;Type</source>
+        <translation>&amp;Tipo di tappa</translation>
+    </message>
+    <message>
+        <source>Make &amp;Initial Step</source>
+        <translation>Rendi tappa &amp;iniziale</translation>
+    </message>
+    <message>
+        <source>Edit &amp;Comment…</source>
+        <translation>Modifica il &amp;commento…</translation>
+    </message>
+    <message>
+        <source>Edit &amp;Condition…</source>
+        <translation>Modifica la &amp;condizione…</translation>
+    </message>
+    <message>
+        <source>&amp;Negated</source>
+        <translation>&amp;Negata</translation>
+    </message>
+    <message>
+        <source>Flips whether this transition waits for Complete of its source&apos;s nested behaviour</source>
+        <translation>Inverte l&apos;attesa da parte di questa transizione di Complete del comportamento annidato della sua tappa di origine</translation>
+    </message>
+    <message>
+        <source>Priority &amp;Up</source>
+        <translation>&amp;Alza la priorità</translation>
+    </message>
+    <message>
+        <source>Priority &amp;Down</source>
+        <translation>&amp;Abbassa la priorità</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>

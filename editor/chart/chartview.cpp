@@ -3,6 +3,7 @@
 #include "editor/chart/chartscene.h"
 #include "editor/selection.h"
 
+#include <QContextMenuEvent>
 #include <QGraphicsItem>
 #include <QKeyEvent>
 #include <QScrollBar>
@@ -160,12 +161,36 @@ bool ChartView::focusNextPrevChild(bool next)
 
 void ChartView::keyPressEvent(QKeyEvent* event)
 {
+    const bool edit = event->key() == Qt::Key_F2 || event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter;
+    if (edit && event->modifiers() == Qt::NoModifier && !m_scene->selection()->current().isNull()) {
+        // The docks reveal themselves and focus their main field.
+        m_scene->selection()->select(m_scene->selection()->current(), QStringLiteral("main"));
+        event->accept();
+        return;
+    }
     if (event->key() == Qt::Key_Escape && !m_scene->selectedItems().isEmpty()) {
         m_scene->clearSelection();
         event->accept();
         return;
     }
     QGraphicsView::keyPressEvent(event);
+}
+
+void ChartView::contextMenuEvent(QContextMenuEvent* event)
+{
+    ElementRef element;
+    if (event->reason() == QContextMenuEvent::Mouse) {
+        for (QGraphicsItem* item = itemAt(event->pos()); item && element.isNull(); item = item->parentItem())
+            element = ChartScene::elementOf(item);
+        if (!element.isNull())
+            m_scene->selection()->select(element);
+    } else {
+        element = m_scene->selection()->current(); // the menu key: the selected element
+    }
+    if (element.kind != ElementRef::Kind::Step && element.kind != ElementRef::Kind::Transition)
+        element = {};
+    emit contextMenuRequested(element, event->globalPos());
+    event->accept();
 }
 
 void ChartView::revealSelection()

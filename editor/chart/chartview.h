@@ -1,5 +1,7 @@
 #pragma once
 
+#include "editor/elementref.h"
+
 #include <QGraphicsView>
 
 namespace editor {
@@ -10,7 +12,9 @@ class ChartScene;
 // first frame on), zoomed with Ctrl+wheel (about the point under the mouse)
 // or the zoom slots.
 // Tab / Shift+Tab walk through the visible elements (ChartScene::tabOrder)
-// and leave the view past either end. The sheet stays fitted to the view
+// and leave the view past either end; Enter or F2 puts the focus in the
+// selected element's main field in its dock (a step's type, a
+// transition's condition), Esc clears the selection. The sheet stays fitted to the view
 // when it is resized until the user picks another zoom.
 class ChartView : public QGraphicsView {
     Q_OBJECT
@@ -33,11 +37,15 @@ public slots:
 
 signals:
     void zoomChanged(double zoom);
+    // A right click or the menu key: on `element`, already selected, or on
+    // the empty sheet (a null element); `globalPos` is where the menu opens.
+    void contextMenuRequested(const editor::ElementRef& element, const QPoint& globalPos);
 
 protected:
     void changeEvent(QEvent* event) override;
     bool focusNextPrevChild(bool next) override;
     void keyPressEvent(QKeyEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     bool viewportEvent(QEvent* event) override;

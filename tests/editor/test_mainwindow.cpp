@@ -5,6 +5,7 @@
 #include "editortestsupport.h"
 
 #include "editor/autosave.h"
+#include "editor/chart/chartcontextmenu.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
 #include "editor/chart/stepitem.h"
@@ -35,6 +36,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QCommonStyle>
+#include <QContextMenuEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
@@ -246,6 +248,10 @@ private slots:
     void opensOnTheTemplate();
     void docksAreAroundTheChart();
     void toolbarHoldsTheMainCommands();
+    void rightClickOnAStepOffersItsCommands();
+    void transitionMenuMovesPriorityAndEditsTheCondition();
+    void sheetMenuOffersTheViewCommands();
+    void enterEditsTheSelectionAndEscReturnsToTheChart();
     void resetLayoutPutsEveryPanelBack();
     void windowFitsTheScreen();
     void exportNamesFollowTheModelFile();
@@ -371,6 +377,129 @@ void TestMainWindow::toolbarHoldsTheMainCommands()
     QVERIFY(saveAs->shortcuts().contains(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)));
     auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
     QVERIFY(viewMenu->actions().contains(toolbar->toggleViewAction()));
+}
+
+namespace {
+
+// Opens the context menu the chart view shows at `viewPos` and hands it to
+// `use` while it is open; closes it afterwards.
+void withChartMenu(ChartView* view, const QPoint& viewPos, const std::function<void(QMenu*)>& use)
+{
+    bool seen = false;
+    std::function<void()> poll;
+    poll = [&] {
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        if (!menu) {
+            QTimer::singleShot(10, poll);
+            return;
+        }
+        seen = true;
+        use(menu);
+        menu->close();
+    };
+    QTimer::singleShot(0, poll);
+    QContextMenuEvent event(QContextMenuEvent::Mouse, viewPos, view->viewport()->mapToGlobal(viewPos));
+    QApplication::sendEvent(view->viewport(), &event);
+    QVERIFY(seen);
+}
+
+QStringList actionNames(const QMenu* menu)
+{
+    QStringList names;
+    for (const QAction* action : menu->actions()) {
+        if (!action->isSeparator())
+            names << (action->menu() ? action->menu()->objectName() : action->objectName());
+    }
+    return names;
+}
+
+} // namespace
+
+void TestMainWindow::rightClickOnAStepOffersItsCommands()
+{
+    ChartView* view = m_window->chartView();
+    const QPoint f1 = view->mapFromScene(m_window->chartScene()->stepItem(QStringLiteral("F1"))->sceneBoundingRect().center());
+    QStringList names;
+    withChartMenu(view, f1, [&](QMenu* menu) {
+        names = actionNames(menu);
+        menu->findChild<QAction*>(QStringLiteral("hideElementAction"))->trigger();
+    });
+    QCOMPARE(names, QStringList({"hideElementAction", "stepTypeMenu", "makeInitialAction", "editCommentAction"}));
+    // The right click selected F1, and Hide is one undoable command.
+    QCOMPARE(m_window->selection()->current(), ElementRef::step(QStringLiteral("F1")));
+    QVERIFY(m_window->document()->model().step("F1")->hidden);
+    m_window->document()->undoStack()->undo();
+    QVERIFY(!m_window->document()->model().step("F1")->hidden);
+
+    // The type submenu checks the current type and changes it.
+    withChartMenu(view, f1, [&](QMenu* menu) {
+        auto* types = menu->findChild<QMenu*>(QStringLiteral("stepTypeMenu"));
+        QVERIFY(types);
+        QAction* macro = types->findChild<QAction*>(QStringLiteral("stepType_%1").arg(int(core::StepType::Macro)));
+        QVERIFY(macro && macro->isChecked()); // F1 is a macro-step in the template
+        types->findChild<QAction*>(QStringLiteral("stepType_%1").arg(int(core::StepType::Enclosing)))->trigger();
+    });
+    QCOMPARE(m_window->document()->model().step("F1")->type, core::StepType::Enclosing);
+}
+
+void TestMainWindow::transitionMenuMovesPriorityAndEditsTheCondition()
+{
+    auto* contextMenu = m_window->findChild<ChartContextMenu*>();
+    QVERIFY(contextMenu);
+    const core::Model& model = m_window->document()->model();
+    const std::vector<const core::Transition*> outgoing = model.effectiveOutgoing("F1");
+    QVERIFY(outgoing.size() > 2);
+    const QString first = QString::fromStdString(outgoing[0]->id);
+    const QString second = QString::fromStdString(outgoing[1]->id);
+    {
+        QMenu menu;
+        contextMenu->populate(&menu, ElementRef::transition(first));
+        QVERIFY(!menu.findChild<QAction*>(QStringLiteral("priorityUpAction"))->isEnabled());
+        QAction* down = menu.findChild<QAction*>(QStringLiteral("priorityDownAction"));
+        QVERIFY(down->isEnabled());
+        down->trigger();
+    }
+    QCOMPARE(model.priority(first.toStdString()), 2);
+    QCOMPARE(model.priority(second.toStdString()), 1);
+    {
+        QMenu menu;
+        contextMenu->populate(&menu, ElementRef::transition(QStringLiteral("A1->F1")));
+        QAction* negate = menu.findChild<QAction*>(QStringLiteral("negateAction"));
+        QVERIFY(negate && !negate->isChecked());
+        negate->trigger();
+        QVERIFY(model.transition("A1->F1")->negated);
+        menu.findChild<QAction*>(QStringLiteral("editConditionAction"))->trigger();
+    }
+    // Edit Condition selects the transition and puts the focus in its condition.
+    QCOMPARE(m_window->selection()->current(), ElementRef::transition(QStringLiteral("A1->F1")));
+    QVERIFY(QApplication::focusWidget());
+    QCOMPARE(QApplication::focusWidget()->objectName(), QStringLiteral("conditionEdit"));
+}
+
+void TestMainWindow::sheetMenuOffersTheViewCommands()
+{
+    ChartView* view = m_window->chartView();
+    const QPoint empty = view->mapFromScene(QPointF(40, 300));
+    QStringList names;
+    withChartMenu(view, empty, [&](QMenu* menu) { names = actionNames(menu); });
+    QCOMPARE(names, QStringList({"showHiddenAction", "fitAction", "exportChartAction"}));
+}
+
+void TestMainWindow::enterEditsTheSelectionAndEscReturnsToTheChart()
+{
+    ChartView* view = m_window->chartView();
+    m_window->selection()->select(ElementRef::transition(QStringLiteral("A1->F4")));
+    view->setFocus();
+    QTest::keyClick(view, Qt::Key_F2);
+    QVERIFY(QApplication::focusWidget());
+    QCOMPARE(QApplication::focusWidget()->objectName(), QStringLiteral("conditionEdit"));
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Escape);
+    QCOMPARE(QApplication::focusWidget(), static_cast<QWidget*>(view));
+    // A step: Enter goes to its type.
+    m_window->selection()->select(ElementRef::step(QStringLiteral("F1")));
+    QTest::keyClick(view, Qt::Key_Return);
+    QVERIFY(QApplication::focusWidget());
+    QCOMPARE(QApplication::focusWidget()->objectName(), QStringLiteral("typeCombo"));
 }
 
 void TestMainWindow::resetLayoutPutsEveryPanelBack()
