@@ -5,6 +5,7 @@
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
 #include "editor/commands/resetmodelcommand.h"
+#include "editor/commands/setelementshiddencommand.h"
 #include "editor/docks/problemsdock.h"
 #include "editor/docks/verificationpanel.h"
 #include "editor/docks/stepdock.h"
@@ -357,6 +358,15 @@ void MainWindow::createActions()
     connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::retranslate);
     m_modelSettingsAction = action("modelSettingsAction", &MainWindow::editModelSettings);
     m_resetLayoutAction = action("resetLayoutAction", &MainWindow::resetLayout);
+    // Nothing of the fixed template is deleted: Delete hides. Only while the
+    // chart has the focus, so Delete keeps its meaning in text fields and tables.
+    m_hideSelectionAction = action("hideSelectionAction", [this] { setSelectionHidden(true); }, QKeySequence::Delete);
+    m_hideSelectionAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_view->addAction(m_hideSelectionAction);
+    m_showSelectionAction = action("showSelectionAction", [this] { setSelectionHidden(false); },
+                                   Qt::SHIFT | Qt::Key_Delete);
+    m_showSelectionAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_view->addAction(m_showSelectionAction);
 
     m_showHiddenAction = new QAction(this);
     m_showHiddenAction->setObjectName("showHiddenAction");
@@ -446,6 +456,8 @@ void MainWindow::createMenus()
     m_editMenu->setObjectName("editMenu");
     m_editMenu->addActions({m_undoAction, m_redoAction});
     m_editMenu->addSeparator();
+    m_editMenu->addActions({m_hideSelectionAction, m_showSelectionAction});
+    m_editMenu->addSeparator();
     m_editMenu->addAction(m_modelSettingsAction);
 
     m_viewMenu = menuBar()->addMenu(QString());
@@ -498,6 +510,17 @@ void MainWindow::createToolBar()
     add(m_verifyAction, QStyle::SP_DialogApplyButton);
     m_mainToolBar->addSeparator();
     add(m_exportActions->plcOpenAction(), QStyle::SP_ComputerIcon);
+}
+
+void MainWindow::setSelectionHidden(bool hidden)
+{
+    QList<ElementRef> elements;
+    for (const ElementRef& element : m_selection->elements()) {
+        if (element.kind == ElementRef::Kind::Step || element.kind == ElementRef::Kind::Transition)
+            elements << element;
+    }
+    if (!elements.isEmpty())
+        m_document->push(new SetElementsHiddenCommand(*m_document, elements, hidden));
 }
 
 void MainWindow::showChartContextMenu(const ElementRef& element, const QPoint& globalPos)
@@ -666,6 +689,10 @@ void MainWindow::retranslate()
 
     m_showHiddenAction->setText(tr("Show &Hidden Elements"));
     m_showHiddenAction->setStatusTip(tr("Draw the hidden states and transitions faded, so they can be selected"));
+    m_hideSelectionAction->setText(tr("&Hide Selected Elements"));
+    m_hideSelectionAction->setStatusTip(tr("Hide the selected states and transitions: the machine does not need them"));
+    m_showSelectionAction->setText(tr("Sho&w Selected Elements"));
+    m_showSelectionAction->setStatusTip(tr("Show the selected hidden states and transitions again"));
     m_resetLayoutAction->setText(tr("&Reset Layout"));
     m_resetLayoutAction->setStatusTip(tr("Put the panels and the toolbar back where they were at the first start"));
     m_mainToolBar->setWindowTitle(tr("Main Toolbar"));
@@ -1000,6 +1027,8 @@ void MainWindow::applyEditingLock()
     m_redoAction->setEnabled(!locked && stack->canRedo());
     m_modelSettingsAction->setEnabled(!locked);
     m_resetAction->setEnabled(!locked);
+    m_hideSelectionAction->setEnabled(!locked);
+    m_showSelectionAction->setEnabled(!locked);
     if (!docksReady())
         return; // the docks are built with the lock applied
     for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock, m_variablesDock})

@@ -107,6 +107,8 @@ private:
     void createMenus();
     void createToolBar();
     void showChartContextMenu(const ElementRef& element, const QPoint& globalPos);
+    // Edit > Hide / Show Selected Elements: one undoable command for all.
+    void setSelectionHidden(bool hidden);
     void createStatusBar();
     void applyDefaultLayout();
     void restoreLayout();
@@ -183,6 +185,8 @@ private:
     QAction* m_redoAction = nullptr;
     QAction* m_modelSettingsAction = nullptr;
     QAction* m_resetLayoutAction = nullptr;
+    QAction* m_hideSelectionAction = nullptr;
+    QAction* m_showSelectionAction = nullptr;
     QToolBar* m_mainToolBar = nullptr;
     ChartContextMenu* m_chartContextMenu = nullptr;
     QAction* m_showHiddenAction = nullptr;

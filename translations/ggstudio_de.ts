@@ -716,6 +716,23 @@
     </message>
 </context>
 <context>
+    <name>SetElementsHiddenCommand</name>
+    <message numerus="yes">
+        <source>Hide %n element(s)</source>
+        <translation>
+            <numerusform>%n Element ausblenden</numerusform>
+            <numerusform>%n Elemente ausblenden</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show %n element(s)</source>
+        <translation>
+            <numerusform>%n Element einblenden</numerusform>
+            <numerusform>%n Elemente einblenden</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -1283,6 +1300,20 @@
         <source>Priority &amp;Down</source>
         <translation>Priorität &amp;senken</translation>
     </message>
+    <message numerus="yes">
+        <source>Hide the %n Selected Elements</source>
+        <translation>
+            <numerusform>Das ausgewählte Element ausblenden</numerusform>
+            <numerusform>Die %n ausgewählten Elemente ausblenden</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show the %n Selected Elements</source>
+        <translation>
+            <numerusform>Das ausgewählte Element einblenden</numerusform>
+            <numerusform>Die %n ausgewählten Elemente einblenden</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::Document</name>
@@ -1828,6 +1859,22 @@
     <message>
         <source>Opened the example “%1” as an untitled copy: Save As keeps your changes</source>
         <translation>Beispiel „%1“ als unbenannte Kopie geöffnet: „Speichern unter“ behält Ihre Änderungen</translation>
+    </message>
+    <message>
+        <source>&amp;Hide Selected Elements</source>
+        <translation>Ausgewählte Elemente &amp;ausblenden</translation>
+    </message>
+    <message>
+        <source>Hide the selected states and transitions: the machine does not need them</source>
+        <translation>Die ausgewählten Zustände und Transitionen ausblenden: Die Maschine braucht sie nicht</translation>
+    </message>
+    <message>
+        <source>Sho&amp;w Selected Elements</source>
+        <translation>Ausgewählte Elemente &amp;einblenden</translation>
+    </message>
+    <message>
+        <source>Show the selected hidden states and transitions again</source>
+        <translation>Die ausgewählten ausgeblendeten Zustände und Transitionen wieder einblenden</translation>
     </message>
 </context>
 <context>

@@ -12,6 +12,40 @@
     </message>
 </context>
 <context>
+    <name>SetElementsHiddenCommand</name>
+    <message numerus="yes">
+        <source>Hide %n element(s)</source>
+        <translation>
+            <numerusform>Hide %n element</numerusform>
+            <numerusform>Hide %n elements</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show %n element(s)</source>
+        <translation>
+            <numerusform>Show %n element</numerusform>
+            <numerusform>Show %n elements</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>editor::ChartContextMenu</name>
+    <message numerus="yes">
+        <source>Hide the %n Selected Elements</source>
+        <translation>
+            <numerusform>Hide the Selected Element</numerusform>
+            <numerusform>Hide the %n Selected Elements</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show the %n Selected Elements</source>
+        <translation>
+            <numerusform>Show the Selected Element</numerusform>
+            <numerusform>Show the %n Selected Elements</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>editor::ExportActions</name>
     <message numerus="yes">
         <source>… and %n more</source>

@@ -716,6 +716,23 @@
     </message>
 </context>
 <context>
+    <name>SetElementsHiddenCommand</name>
+    <message numerus="yes">
+        <source>Hide %n element(s)</source>
+        <translation>
+            <numerusform>Ocultar %n elemento</numerusform>
+            <numerusform>Ocultar %n elementos</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show %n element(s)</source>
+        <translation>
+            <numerusform>Mostrar %n elemento</numerusform>
+            <numerusform>Mostrar %n elementos</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -1283,6 +1300,20 @@
         <source>Priority &amp;Down</source>
         <translation>&amp;Bajar la prioridad</translation>
     </message>
+    <message numerus="yes">
+        <source>Hide the %n Selected Elements</source>
+        <translation>
+            <numerusform>Ocultar el elemento seleccionado</numerusform>
+            <numerusform>Ocultar los %n elementos seleccionados</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show the %n Selected Elements</source>
+        <translation>
+            <numerusform>Mostrar el elemento seleccionado</numerusform>
+            <numerusform>Mostrar los %n elementos seleccionados</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::Document</name>
@@ -1828,6 +1859,22 @@
     <message>
         <source>Opened the example “%1” as an untitled copy: Save As keeps your changes</source>
         <translation>Se ha abierto el ejemplo «%1» como copia sin título: «Guardar como» conserva sus cambios</translation>
+    </message>
+    <message>
+        <source>&amp;Hide Selected Elements</source>
+        <translation>&amp;Ocultar los elementos seleccionados</translation>
+    </message>
+    <message>
+        <source>Hide the selected states and transitions: the machine does not need them</source>
+        <translation>Ocultar los estados y transiciones seleccionados: la máquina no los necesita</translation>
+    </message>
+    <message>
+        <source>Sho&amp;w Selected Elements</source>
+        <translation>&amp;Mostrar los elementos seleccionados</translation>
+    </message>
+    <message>
+        <source>Show the selected hidden states and transitions again</source>
+        <translation>Volver a mostrar los estados y transiciones ocultos seleccionados</translation>
     </message>
 </context>
 <context>

@@ -716,6 +716,23 @@
     </message>
 </context>
 <context>
+    <name>SetElementsHiddenCommand</name>
+    <message numerus="yes">
+        <source>Hide %n element(s)</source>
+        <translation>
+            <numerusform>Masquer %n élément</numerusform>
+            <numerusform>Masquer %n éléments</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show %n element(s)</source>
+        <translation>
+            <numerusform>Afficher %n élément</numerusform>
+            <numerusform>Afficher %n éléments</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -1283,6 +1300,20 @@
         <source>Priority &amp;Down</source>
         <translation>&amp;Baisser la priorité</translation>
     </message>
+    <message numerus="yes">
+        <source>Hide the %n Selected Elements</source>
+        <translation>
+            <numerusform>Masquer l&apos;élément sélectionné</numerusform>
+            <numerusform>Masquer les %n éléments sélectionnés</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show the %n Selected Elements</source>
+        <translation>
+            <numerusform>Afficher l&apos;élément sélectionné</numerusform>
+            <numerusform>Afficher les %n éléments sélectionnés</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::Document</name>
@@ -1828,6 +1859,22 @@
     <message>
         <source>Opened the example “%1” as an untitled copy: Save As keeps your changes</source>
         <translation>Exemple «&#xa0;%1&#xa0;» ouvert comme copie sans titre&#xa0;: «&#xa0;Enregistrer sous&#xa0;» conserve vos modifications</translation>
+    </message>
+    <message>
+        <source>&amp;Hide Selected Elements</source>
+        <translation>&amp;Masquer les éléments sélectionnés</translation>
+    </message>
+    <message>
+        <source>Hide the selected states and transitions: the machine does not need them</source>
+        <translation>Masquer les états et transitions sélectionnés&#xa0;: la machine n&apos;en a pas besoin</translation>
+    </message>
+    <message>
+        <source>Sho&amp;w Selected Elements</source>
+        <translation>A&amp;fficher les éléments sélectionnés</translation>
+    </message>
+    <message>
+        <source>Show the selected hidden states and transitions again</source>
+        <translation>Afficher de nouveau les états et transitions masqués sélectionnés</translation>
     </message>
 </context>
 <context>

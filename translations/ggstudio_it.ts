@@ -716,6 +716,23 @@
     </message>
 </context>
 <context>
+    <name>SetElementsHiddenCommand</name>
+    <message numerus="yes">
+        <source>Hide %n element(s)</source>
+        <translation>
+            <numerusform>Nascondi %n elemento</numerusform>
+            <numerusform>Nascondi %n elementi</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show %n element(s)</source>
+        <translation>
+            <numerusform>Mostra %n elemento</numerusform>
+            <numerusform>Mostra %n elementi</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -1283,6 +1300,20 @@
         <source>Priority &amp;Down</source>
         <translation>&amp;Abbassa la priorità</translation>
     </message>
+    <message numerus="yes">
+        <source>Hide the %n Selected Elements</source>
+        <translation>
+            <numerusform>Nascondi l&apos;elemento selezionato</numerusform>
+            <numerusform>Nascondi i %n elementi selezionati</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Show the %n Selected Elements</source>
+        <translation>
+            <numerusform>Mostra l&apos;elemento selezionato</numerusform>
+            <numerusform>Mostra gli %n elementi selezionati</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::Document</name>
@@ -1828,6 +1859,22 @@
     <message>
         <source>Opened the example “%1” as an untitled copy: Save As keeps your changes</source>
         <translation>Aperto l&apos;esempio «%1» come copia senza titolo: «Salva con nome» conserva le modifiche</translation>
+    </message>
+    <message>
+        <source>&amp;Hide Selected Elements</source>
+        <translation>&amp;Nascondi gli elementi selezionati</translation>
+    </message>
+    <message>
+        <source>Hide the selected states and transitions: the machine does not need them</source>
+        <translation>Nascondere gli stati e le transizioni selezionati: la macchina non ne ha bisogno</translation>
+    </message>
+    <message>
+        <source>Sho&amp;w Selected Elements</source>
+        <translation>&amp;Mostra gli elementi selezionati</translation>
+    </message>
+    <message>
+        <source>Show the selected hidden states and transitions again</source>
+        <translation>Mostrare di nuovo gli stati e le transizioni nascosti selezionati</translation>
     </message>
 </context>
 <context>

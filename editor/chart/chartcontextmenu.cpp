@@ -1,5 +1,6 @@
 #include "editor/chart/chartcontextmenu.h"
 
+#include "editor/commands/setelementshiddencommand.h"
 #include "editor/commands/setinitialstepcommand.h"
 #include "editor/commands/setnegatedcommand.h"
 #include "editor/commands/setprioritycommand.h"
@@ -38,6 +39,11 @@ ChartContextMenu::ChartContextMenu(Document& document, Selection& selection, She
 
 void ChartContextMenu::populate(QMenu* menu, const ElementRef& element)
 {
+    const QList<ElementRef>& selected = m_selection.elements();
+    if (selected.size() > 1 && selected.contains(element)) {
+        addSelectionEntries(menu, selected);
+        menu->addSeparator();
+    }
     switch (element.kind) {
     case ElementRef::Kind::Step:
         addStepEntries(menu, element.id);
@@ -132,6 +138,17 @@ void ChartContextMenu::addTransitionEntries(QMenu* menu, const QString& transiti
     connect(down, &QAction::triggered, this, [this, transitionId, priority] {
         m_document.push(new SetPriorityCommand(m_document, transitionId, priority + 1));
     });
+}
+
+void ChartContextMenu::addSelectionEntries(QMenu* menu, const QList<ElementRef>& elements)
+{
+    const int count = int(elements.size());
+    QAction* hide = addNamed(menu, "hideSelectionAction", tr("Hide the %n Selected Elements", nullptr, count));
+    connect(hide, &QAction::triggered, this,
+            [this, elements] { m_document.push(new SetElementsHiddenCommand(m_document, elements, true)); });
+    QAction* show = addNamed(menu, "showSelectionAction", tr("Show the %n Selected Elements", nullptr, count));
+    connect(show, &QAction::triggered, this,
+            [this, elements] { m_document.push(new SetElementsHiddenCommand(m_document, elements, false)); });
 }
 
 void ChartContextMenu::addSheetEntries(QMenu* menu)

@@ -9,6 +9,7 @@
 
 #include "editor/elementref.h"
 
+#include <QList>
 #include <QObject>
 
 class QAction;
@@ -40,6 +41,8 @@ private:
     void addStepEntries(QMenu* menu, const QString& stepId);
     void addTransitionEntries(QMenu* menu, const QString& transitionId);
     void addSheetEntries(QMenu* menu);
+    // Right-click on one of several selected elements: Hide or Show them all.
+    void addSelectionEntries(QMenu* menu, const QList<ElementRef>& elements);
 
     Document& m_document;
     Selection& m_selection;

@@ -30,6 +30,7 @@ ChartScene::ChartScene(Document* document, Selection* selection, QObject* parent
     connect(m_document, &Document::modelReset, this, &ChartScene::onModelReset);
     connect(m_document, &Document::diagnosticsChanged, this, &ChartScene::onDiagnosticsChanged);
     connect(m_selection, &Selection::changed, this, &ChartScene::onSelectionChanged);
+    connect(m_selection, &Selection::elementsChanged, this, &ChartScene::selectFromSelection);
     connect(this, &QGraphicsScene::selectionChanged, this, &ChartScene::onSceneSelectionChanged);
 
     onModelReset();
@@ -273,20 +274,23 @@ void ChartScene::onSceneSelectionChanged()
             m_selection->clear();
         return;
     }
-    // One element at a time: when a modifier click adds one, it wins.
-    QGraphicsItem* chosen = selected.first();
-    if (selected.size() > 1) {
-        for (QGraphicsItem* item : selected) {
-            if (elementOf(item) != m_selection->current())
-                chosen = item;
-        }
-        const QScopedValueRollback<bool> guard(m_syncingSelection, true);
-        for (QGraphicsItem* item : selected) {
-            if (item != chosen)
-                item->setSelected(false);
-        }
+    // Several with Ctrl+click or the rubber band: the docks show the one
+    // just added, or keep showing the current one while it stays selected.
+    QList<ElementRef> elements;
+    for (QGraphicsItem* item : selected) {
+        const ElementRef element = elementOf(item);
+        if (!element.isNull())
+            elements << element;
     }
-    m_selection->select(elementOf(chosen));
+    if (elements.isEmpty())
+        return;
+    ElementRef current = elements.contains(m_selection->current()) ? m_selection->current() : elements.first();
+    const QList<ElementRef>& before = m_selection->elements();
+    for (const ElementRef& element : elements) {
+        if (!before.contains(element))
+            current = element;
+    }
+    m_selection->selectMany(elements, current);
 }
 
 void ChartScene::onSelectionChanged(const ElementRef&)
@@ -296,14 +300,19 @@ void ChartScene::onSelectionChanged(const ElementRef&)
 
 void ChartScene::selectFromSelection()
 {
-    QGraphicsItem* wanted = itemFor(m_selection->current());
+    QSet<QGraphicsItem*> wanted;
+    for (const ElementRef& element : m_selection->elements()) {
+        QGraphicsItem* item = itemFor(element);
+        if (item && item->isVisible())
+            wanted.insert(item);
+    }
     const QList<QGraphicsItem*> selected = selectedItems();
-    if (selected.size() == 1 && selected.first() == wanted)
+    if (QSet<QGraphicsItem*>(selected.begin(), selected.end()) == wanted)
         return;
     const QScopedValueRollback<bool> guard(m_syncingSelection, true);
     clearSelection();
-    if (wanted && wanted->isVisible())
-        wanted->setSelected(true);
+    for (QGraphicsItem* item : wanted)
+        item->setSelected(true);
 }
 
 } // namespace editor

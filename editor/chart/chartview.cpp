@@ -6,6 +6,7 @@
 #include <QContextMenuEvent>
 #include <QGraphicsItem>
 #include <QKeyEvent>
+#include <QMouseEvent>
 #include <QScrollBar>
 #include <QWheelEvent>
 
@@ -176,13 +177,42 @@ void ChartView::keyPressEvent(QKeyEvent* event)
     QGraphicsView::keyPressEvent(event);
 }
 
+ElementRef ChartView::elementAt(const QPoint& viewPos) const
+{
+    for (QGraphicsItem* item : items(viewPos)) {
+        for (QGraphicsItem* candidate = item; candidate; candidate = candidate->parentItem()) {
+            const ElementRef element = ChartScene::elementOf(candidate);
+            if (!element.isNull())
+                return element;
+        }
+    }
+    return {};
+}
+
+// A plain drag on the sheet pans; with Shift or Ctrl it selects what the
+// rubber band covers (Ctrl adds to the selection).
+void ChartView::mousePressEvent(QMouseEvent* event)
+{
+    const bool modifier = event->modifiers() & (Qt::ShiftModifier | Qt::ControlModifier);
+    if (event->button() == Qt::LeftButton && modifier && elementAt(event->position().toPoint()).isNull())
+        setDragMode(RubberBandDrag);
+    QGraphicsView::mousePressEvent(event);
+}
+
+void ChartView::mouseReleaseEvent(QMouseEvent* event)
+{
+    QGraphicsView::mouseReleaseEvent(event);
+    if (dragMode() == RubberBandDrag)
+        setDragMode(m_panningSetUp ? ScrollHandDrag : NoDrag);
+}
+
 void ChartView::contextMenuEvent(QContextMenuEvent* event)
 {
     ElementRef element;
     if (event->reason() == QContextMenuEvent::Mouse) {
-        for (QGraphicsItem* item = itemAt(event->pos()); item && element.isNull(); item = item->parentItem())
-            element = ChartScene::elementOf(item);
-        if (!element.isNull())
+        element = elementAt(event->pos());
+        // On one of several selected elements the menu acts on all of them.
+        if (!element.isNull() && !m_scene->selection()->elements().contains(element))
             m_scene->selection()->select(element);
     } else {
         element = m_scene->selection()->current(); // the menu key: the selected element

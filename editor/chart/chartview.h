@@ -12,7 +12,8 @@ class ChartScene;
 // first frame on), zoomed with Ctrl+wheel (about the point under the mouse)
 // or the zoom slots.
 // Tab / Shift+Tab walk through the visible elements (ChartScene::tabOrder)
-// and leave the view past either end; Enter or F2 puts the focus in the
+// and leave the view past either end; Ctrl+click adds to the selection and
+// Shift or Ctrl with a drag on the sheet draws a rubber band; Enter or F2 puts the focus in the
 // selected element's main field in its dock (a step's type, a
 // transition's condition), Esc clears the selection. The sheet stays fitted to the view
 // when it is resized until the user picks another zoom.
@@ -46,6 +47,8 @@ protected:
     bool focusNextPrevChild(bool next) override;
     void keyPressEvent(QKeyEvent* event) override;
     void contextMenuEvent(QContextMenuEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     bool viewportEvent(QEvent* event) override;
@@ -55,6 +58,8 @@ private:
     // Scales about viewPoint, which keeps showing the same scene point.
     void zoomBy(double factor, QPointF viewPoint);
     void revealSelection();
+    // The step or transition drawn at the point, or none.
+    ElementRef elementAt(const QPoint& viewPos) const;
 
     ChartScene* m_scene;
     bool m_fitted = true;

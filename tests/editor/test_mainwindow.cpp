@@ -252,6 +252,8 @@ private slots:
     void transitionMenuMovesPriorityAndEditsTheCondition();
     void sheetMenuOffersTheViewCommands();
     void enterEditsTheSelectionAndEscReturnsToTheChart();
+    void ctrlClickSelectsSeveralAndDeleteHidesThemInOneStep();
+    void rubberBandSelectsWhatItCovers();
     void resetLayoutPutsEveryPanelBack();
     void windowFitsTheScreen();
     void exportNamesFollowTheModelFile();
@@ -500,6 +502,73 @@ void TestMainWindow::enterEditsTheSelectionAndEscReturnsToTheChart()
     QTest::keyClick(view, Qt::Key_Return);
     QVERIFY(QApplication::focusWidget());
     QCOMPARE(QApplication::focusWidget()->objectName(), QStringLiteral("typeCombo"));
+}
+
+void TestMainWindow::ctrlClickSelectsSeveralAndDeleteHidesThemInOneStep()
+{
+    ChartView* view = m_window->chartView();
+    ChartScene* scene = m_window->chartScene();
+    const auto centre = [&](QGraphicsItem* item) { return view->mapFromScene(item->sceneBoundingRect().center()); };
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, centre(scene->stepItem(QStringLiteral("F4"))));
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::ControlModifier,
+                      centre(scene->stepItem(QStringLiteral("F5"))));
+    const QList<ElementRef> both{ElementRef::step(QStringLiteral("F4")), ElementRef::step(QStringLiteral("F5"))};
+    QCOMPARE(m_window->selection()->elements().size(), 2);
+    for (const ElementRef& element : both)
+        QVERIFY(m_window->selection()->elements().contains(element));
+    // The docks show the one added last.
+    QCOMPARE(m_window->selection()->current(), ElementRef::step(QStringLiteral("F5")));
+    QVERIFY(scene->stepItem(QStringLiteral("F4"))->isSelected() && scene->stepItem(QStringLiteral("F5"))->isSelected());
+
+    // Right-click on one of them offers to hide both.
+    QStringList names;
+    withChartMenu(view, centre(scene->stepItem(QStringLiteral("F4"))), [&](QMenu* menu) { names = actionNames(menu); });
+    QVERIFY2(names.mid(0, 2) == QStringList({"hideSelectionAction", "showSelectionAction"}),
+             qPrintable(names.join(QLatin1Char(' '))));
+    QCOMPARE(m_window->selection()->elements().size(), 2); // the right click kept both
+
+    // Delete on the chart hides both, as one undoable step.
+    const int before = m_window->document()->undoStack()->count();
+    m_window->activateWindow(); // the menu took the activation
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    view->setFocus();
+    QTest::keyClick(view, Qt::Key_Delete);
+    const core::Model& model = m_window->document()->model();
+    QVERIFY(model.step("F4")->hidden && model.step("F5")->hidden);
+    QCOMPARE(m_window->document()->undoStack()->count(), before + 1);
+    QCOMPARE(m_window->document()->undoStack()->undoText(), QStringLiteral("Hide 2 elements"));
+    m_window->document()->undoStack()->undo();
+    QVERIFY(!model.step("F4")->hidden && !model.step("F5")->hidden);
+
+    // A plain click selects one again.
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, centre(scene->stepItem(QStringLiteral("F4"))));
+    QCOMPARE(m_window->selection()->elements(), QList<ElementRef>{ElementRef::step(QStringLiteral("F4"))});
+}
+
+void TestMainWindow::rubberBandSelectsWhatItCovers()
+{
+    ChartView* view = m_window->chartView();
+    ChartScene* scene = m_window->chartScene();
+    // A band around A5 and A6 (left column of the A frame), from empty sheet.
+    const QRectF a5 = scene->stepItem(QStringLiteral("A5"))->sceneBoundingRect();
+    const QRectF a6 = scene->stepItem(QStringLiteral("A6"))->sceneBoundingRect();
+    const QRectF band = a5.united(a6).adjusted(-6, -6, 6, 6);
+    const QPoint from = view->mapFromScene(band.topLeft());
+    const QPoint to = view->mapFromScene(band.bottomRight());
+    QWidget* viewport = view->viewport();
+    const auto send = [&](QEvent::Type type, const QPoint& pos, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent event(type, pos, viewport->mapToGlobal(pos), button, buttons, Qt::ShiftModifier);
+        QApplication::sendEvent(viewport, &event);
+    };
+    send(QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);
+    send(QEvent::MouseMove, (from + to) / 2, Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseMove, to, Qt::NoButton, Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
+    QList<ElementRef> selected = m_window->selection()->elements();
+    QVERIFY2(selected.contains(ElementRef::step(QStringLiteral("A5"))) && selected.contains(ElementRef::step(QStringLiteral("A6"))),
+             qPrintable(QString::number(selected.size())));
+    // Dragging without a modifier still pans: the drag mode is back.
+    QCOMPARE(view->dragMode(), QGraphicsView::ScrollHandDrag);
 }
 
 void TestMainWindow::resetLayoutPutsEveryPanelBack()
