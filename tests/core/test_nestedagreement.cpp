@@ -1,0 +1,300 @@
+#include <catch2/catch.hpp>
+
+#include "core/checks/checks.h"
+#include "core/codegen/stgenerator.h"
+#include "core/formats/fileio.h"
+#include "core/formats/modelfiles.h"
+#include "core/model/model.h"
+#include "core/simulation/simulator.h"
+#include "samplemodels.h"
+#include "stinterpreter.h"
+
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace core;
+
+// Issue #16: the simulator runs exactly the code the PLC runs, nested
+// GRAFCETs included. Under each evolution rule, random models with random
+// nested GRAFCETs (and the drilling-cell example) are run by the simulator
+// and by the generated Structured Text (the GEMMA program and every
+// FUNCTION_BLOCK), interpreted statement by statement, with the same random
+// inputs; after every scan State, Entry, the tokens, every Complete, every
+// nested step X<n>, Unstable, every continuous output of every FB, every TON
+// (Q, ET) and every variable must agree.
+
+namespace {
+
+struct Generated {
+    std::string program;
+    std::string globals;
+    std::vector<std::string> functionBlocks;
+
+    std::string all() const
+    {
+        std::string text = globals + "\n" + program;
+        for (const std::string& fb : functionBlocks)
+            text += "\n" + fb;
+        return text;
+    }
+};
+
+Generated generate(const Model& model)
+{
+    const PlcProject project = buildPlcProject(model, Dialect::Iec);
+    Generated generated;
+    generated.globals = formatGlobals(project);
+    for (const PlcPou& pou : project.pous) {
+        if (pou.kind == PouKind::Program)
+            generated.program = formatPou(pou, Dialect::Iec);
+        else
+            generated.functionBlocks.push_back(formatPou(pou, Dialect::Iec));
+    }
+    return generated;
+}
+
+cond::Value randomValue(std::mt19937& random, IecType type)
+{
+    if (type == IecType::Bool)
+        return random() % 2 == 0;
+    if (isRealType(type))
+        return static_cast<double>(random() % 9) / 2.0 - 1.0;
+    return static_cast<std::int64_t>(random() % 101); // fits every integer type
+}
+
+std::string text(const cond::Value& value)
+{
+    return cond::formatValue(value);
+}
+
+// The first difference between the simulator and the interpreted code, empty when none.
+std::string difference(const Simulator& sim, const sttest::StInterpreter& plc)
+{
+    std::ostringstream out;
+    if (!plc.runtimeError().empty())
+        return "interpreter: " + plc.runtimeError();
+    if (sim.activeStepNumber() != plc.state())
+        out << "State: simulator " << sim.activeStepNumber() << ", code " << plc.state();
+    else if (sim.entry() != plc.entry())
+        out << "Entry: simulator " << sim.entry() << ", code " << plc.entry();
+    if (!out.str().empty())
+        return out.str();
+    const std::vector<bool> tokens = sim.tokenValues();
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        if (tokens[i] != cond::isTrue(plc.value(sim.tokenNames()[i])))
+            return "token " + sim.tokenNames()[i] + ": simulator " + (tokens[i] ? "TRUE" : "FALSE");
+    }
+    for (const std::string& step : sim.nestedSteps()) {
+        if (sim.complete(step) != plc.complete(step))
+            return step + ".Complete: simulator " + (sim.complete(step) ? "TRUE" : "FALSE");
+        const NestedEngine* engine = sim.grafcetEngine(step);
+        if (!engine)
+            continue;
+        if (!plc.runsBody(step))
+            return step + ": the code has no FUNCTION_BLOCK body for it";
+        for (const NestedStep& nested : engine->grafcet().steps) {
+            const std::string x = stepActivityName(nested.number);
+            const std::optional<cond::Value> value = plc.member(step, x);
+            if (!value)
+                return step + "." + x + " is not declared";
+            if (engine->active(nested.number) != cond::isTrue(*value))
+                return step + "." + x + ": simulator " + (engine->active(nested.number) ? "TRUE" : "FALSE");
+        }
+        if (engine->grafcet().rule == EvolutionRule::UntilStable) {
+            const std::optional<cond::Value> unstable = plc.member(step, kUnstableName);
+            if (!unstable || engine->unstable() != cond::isTrue(*unstable))
+                return step + ".Unstable: simulator " + (engine->unstable() ? "TRUE" : "FALSE");
+        } else if (plc.member(step, kUnstableName)) {
+            return step + " declares Unstable under one evolution per scan";
+        }
+        for (std::size_t o = 0; o < engine->outputNames().size(); ++o) {
+            const std::optional<cond::Value> value = plc.member(step, engine->outputNames()[o]);
+            if (!value || engine->output(o) != cond::isTrue(*value))
+                return step + "." + engine->outputNames()[o] + ": simulator " + (engine->output(o) ? "TRUE" : "FALSE");
+        }
+        for (const NestedTimerState& timer : engine->timers()) {
+            const auto ton = plc.timer(step, timer.name);
+            if (!ton)
+                return step + "." + timer.name + " is not declared";
+            if (ton->q != timer.done || ton->etMs != timer.elapsedMs)
+                return step + "." + timer.name + ": simulator Q " + (timer.done ? "TRUE" : "FALSE") + " ET "
+                    + std::to_string(timer.elapsedMs) + ", code Q " + (ton->q ? "TRUE" : "FALSE") + " ET "
+                    + std::to_string(ton->etMs);
+        }
+    }
+    for (std::size_t i = 0; i < sim.variableNames().size(); ++i) {
+        const cond::Value simulated = sim.variableValue(i);
+        const cond::Value interpreted = plc.value(sim.variableNames()[i]);
+        if (simulated != interpreted)
+            return "variable " + sim.variableNames()[i] + ": simulator " + text(simulated) + ", code " + text(interpreted);
+    }
+    return {};
+}
+
+// What a run exercised, so the test cannot pass by idling.
+struct Coverage {
+    int models = 0;
+    int grafcets = 0;
+    int nestedScans = 0;      // scans that call a nested GRAFCET's FB, not entering it
+    int nestedEvolutions = 0; // scans in which some nested GRAFCET changed its situation without Initialization
+    // In the scans that call a nested GRAFCET's FB:
+    int unstable = 0;         // calls ending Unstable
+    int timersDone = 0;       // its TONs with Q, summed
+    int completes = 0;        // calls ending with Complete TRUE
+};
+
+void runBoth(const Model& model, std::uint32_t seed, int scans, Coverage& coverage)
+{
+    const Generated code = generate(model);
+    sttest::StInterpreter plc(code.program, code.globals, code.functionBlocks);
+    const std::string rule = model.settings().evolution == EvolutionRule::UntilStable ? "until stable"
+                                                                                      : "one evolution per scan";
+    INFO("seed " << seed << ", " << rule);
+    if (!plc.error().empty())
+        FAIL("the interpreter cannot read the generated code: " << plc.error() << "\n" << code.all());
+    Simulator sim(model);
+    REQUIRE(sim.tokenNames() == plc.tokenNames());
+    REQUIRE(sim.nestedSteps() == plc.instances());
+    ++coverage.models;
+    for (const std::string& step : sim.nestedSteps())
+        coverage.grafcets += sim.hasGrafcet(step) ? 1 : 0;
+
+    // Inputs only. The GEMMA layer's change less often, so that the nested
+    // GRAFCETs have scans to evolve in; those only they read change often.
+    std::vector<std::pair<std::size_t, unsigned>> inputs; // index, 1 / probability of a change in a scan
+    for (std::size_t i = 0; i < sim.variableNames().size(); ++i) {
+        if (sim.variableKind(i) == VariableKind::Input)
+            inputs.emplace_back(i, sim.variableNames()[i].rfind("Nested", 0) == 0 ? 2u : 8u);
+    }
+    std::mt19937 random(seed * 7919u + 17u);
+    const auto check = [&](int scan) {
+        const std::string different = difference(sim, plc);
+        if (!different.empty())
+            FAIL("scan " << scan << " (" << sim.simulatedTimeMs() << " ms): " << different << "\nReproduce: seed "
+                         << seed << ", " << rule << ". The generated code:\n"
+                         << code.all());
+    };
+    check(0);
+    std::vector<std::vector<int>> before(sim.nestedSteps().size());
+    for (int scan = 1; scan <= scans; ++scan) {
+        for (const auto& [i, odds] : inputs) {
+            if (random() % odds != 0)
+                continue;
+            const cond::Value value = randomValue(random, sim.variableType(i));
+            REQUIRE(sim.setVariableAt(i, value));
+            plc.setInput(sim.variableNames()[i], value);
+        }
+        const int stateBefore = sim.activeStepNumber();
+        const bool entryBefore = sim.entry();
+        for (std::size_t n = 0; n < before.size(); ++n)
+            before[n] = sim.activeNestedSteps(sim.nestedSteps()[n]);
+        sim.step();
+        plc.advanceTime(sim.cycleTimeMs());
+        plc.scan();
+        check(scan);
+        bool evolved = false;
+        for (std::size_t n = 0; n < before.size(); ++n) {
+            const std::string& step = sim.nestedSteps()[n];
+            const NestedEngine* engine = sim.grafcetEngine(step);
+            if (!engine)
+                continue;
+            if (sim.program().step(step)->number != stateBefore)
+                continue; // not called in this scan
+            if (!entryBefore) {
+                ++coverage.nestedScans;
+                if (before[n] != engine->activeSteps())
+                    evolved = true;
+            }
+            coverage.unstable += engine->unstable() ? 1 : 0;
+            coverage.completes += engine->complete() ? 1 : 0;
+            for (const NestedTimerState& timer : engine->timers())
+                coverage.timersDone += timer.done ? 1 : 0;
+        }
+        coverage.nestedEvolutions += evolved ? 1 : 0;
+    }
+}
+
+Model withRule(const Model& model, EvolutionRule rule)
+{
+    Model copy(model);
+    copy.setEvolutionRule(rule);
+    return copy;
+}
+
+} // namespace
+
+TEST_CASE("Nested GRAFCETs: the simulator agrees with the generated code on random models", "[simulation][nested]")
+{
+    Coverage coverage[2];
+    int withoutGrafcet = 0;
+    for (std::uint32_t seed = 1; seed <= 200; ++seed) {
+        Model model = samples::randomModel(seed);
+        std::mt19937 random(seed);
+        if (samples::addValidRandomNestedGrafcets(model, random) == 0)
+            ++withoutGrafcet;
+        REQUIRE_FALSE(hasErrors(checkModel(model)));
+        int r = 0;
+        for (EvolutionRule rule : {EvolutionRule::OneEvolutionPerScan, EvolutionRule::UntilStable})
+            runBoth(withRule(model, rule), seed, 150, coverage[r++]);
+    }
+    for (const Coverage& c : coverage) {
+        INFO("nested scans " << c.nestedScans << ", models " << c.models << ", GRAFCETs " << c.grafcets << ", nested evolutions " << c.nestedEvolutions
+                       << ", Unstable " << c.unstable << ", TONs done " << c.timersDone << ", Complete "
+                       << c.completes);
+        CHECK(c.grafcets > 300);
+        CHECK(c.nestedScans > 10000);
+        CHECK(c.nestedEvolutions > 2000);
+        CHECK(c.timersDone > 200);
+        CHECK(c.completes > 2000);
+    }
+    CHECK(coverage[1].unstable > 500);
+    CHECK(coverage[0].unstable == 0);
+    CHECK(withoutGrafcet < 20);
+}
+
+TEST_CASE("Nested GRAFCETs: the simulator agrees with the generated code on the drilling cell", "[simulation][nested]")
+{
+    const LoadedModel example = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(example.model);
+    Coverage coverage;
+    for (EvolutionRule rule : {EvolutionRule::OneEvolutionPerScan, EvolutionRule::UntilStable}) {
+        for (std::uint32_t seed = 1; seed <= 4; ++seed)
+            runBoth(withRule(*example.model, rule), seed, 500, coverage);
+    }
+    INFO("nested evolutions " << coverage.nestedEvolutions << ", TONs done " << coverage.timersDone);
+    CHECK(coverage.nestedEvolutions > 100);
+}
+
+TEST_CASE("The ST interpreter runs the function blocks the generator writes", "[simulation][nested]")
+{
+    const LoadedModel example = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(example.model);
+    const Generated code = generate(*example.model);
+    sttest::StInterpreter plc(code.program, code.globals, code.functionBlocks);
+    REQUIRE(plc.error().empty());
+    REQUIRE(plc.runsBody("F1"));
+    CHECK(plc.member("F1", "X1"));
+    CHECK(plc.timer("F1", "GG_T5_2000ms"));
+    const std::int64_t before = plc.statementsRun();
+    plc.scan();
+    CHECK(plc.statementsRun() > before);
+    CHECK(plc.runtimeError().empty());
+
+    // What it cannot read is an error, not a silent no-op.
+    const auto refused = [&](const std::string& from, const std::string& to) {
+        std::vector<std::string> blocks = code.functionBlocks;
+        for (std::string& fb : blocks) {
+            const std::size_t at = fb.find(from);
+            if (at != std::string::npos)
+                fb.replace(at, from.size(), to);
+        }
+        return !sttest::StInterpreter(code.program, code.globals, blocks).error().empty();
+    };
+    CHECK(refused("GG_T5_2000ms(IN := X5, PT := T#2s);", "WHILE X5 DO X5 := FALSE; END_WHILE;"));
+    CHECK(refused("GG_Fire1 := X1", "GG_Fire1 := Undeclared"));
+    CHECK(refused("PT := T#2s", "PT := T#2x"));
+    CHECK(refused("    PartPresent : BOOL;\n", ""));  // read without VAR_EXTERNAL
+    CHECK(refused("GG_T5_2000ms.Q", "GG_T5_2000ms.R"));
+}
