@@ -420,7 +420,13 @@ private:
         switch (pick(14)) {
         case 0:
         case 12: return input();
-        case 13: return chance(2) ? "TRUE" : input() + " OR " + input();
+        case 13:
+            switch (pick(4)) {
+            case 0: return "TRUE";
+            case 1: return input() + " OR " + input();
+            case 2: return (chance(2) ? "RE " : "FE ") + any(m_stored);     // written by stored actions in the call
+            default: return (chance(2) ? "RE " : "FE ") + any(m_continuous); // maybe the FB's own VAR_OUTPUT
+            }
         case 1: return "NOT " + input();
         case 2: return "RE " + input();
         case 3: return "FE " + input() + (chance(2) ? " OR " + input() : "");

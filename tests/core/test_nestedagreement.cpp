@@ -246,7 +246,7 @@ TEST_CASE("Nested GRAFCETs: the simulator agrees with the generated code on rand
         CHECK(c.grafcets > 300);
         CHECK(c.nestedScans > 10000);
         CHECK(c.nestedEvolutions > 2000);
-        CHECK(c.timersDone > 200);
+        CHECK(c.timersDone > 100);
         CHECK(c.completes > 2000);
     }
     CHECK(coverage[1].unstable > 500);
