@@ -1010,6 +1010,26 @@ std::optional<Value> StInterpreter::member(std::string_view instance, std::strin
     return i.values[static_cast<std::size_t>(slot->second)];
 }
 
+int StInterpreter::globalIndex(std::string_view name) const
+{
+    const auto found = m_globalSlot.find(upper(name));
+    return found == m_globalSlot.end() ? -1 : found->second;
+}
+
+int StInterpreter::memberIndex(int instance, std::string_view name) const
+{
+    if (instance < 0 || static_cast<std::size_t>(instance) >= m_instances.size())
+        return -1;
+    const Pou& pou = *m_instances[static_cast<std::size_t>(instance)].pou;
+    const auto slot = pou.slotOf.find(upper(name));
+    return slot == pou.slotOf.end() ? -1 : slot->second;
+}
+
+const Value& StInterpreter::memberAt(int instance, int member) const
+{
+    return m_instances[static_cast<std::size_t>(instance)].values[static_cast<std::size_t>(member)];
+}
+
 std::optional<StInterpreter::TonOutputs> StInterpreter::timer(std::string_view instance, std::string_view name) const
 {
     const int index = instanceIndex(instance);

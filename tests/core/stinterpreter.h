@@ -99,6 +99,12 @@ public:
     // A variable of an FB instance (input, output or local): X3, Unstable,
     // Complete, a continuous output. nullopt when it has none of that name.
     std::optional<core::cond::Value> member(std::string_view instance, std::string_view name) const;
+    // The same by index, for tight loops: -1 when unknown.
+    int globalIndex(std::string_view name) const;
+    const core::cond::Value& globalAt(int index) const { return m_globals[static_cast<std::size_t>(index)]; }
+    int instanceIndex(std::string_view name) const;
+    int memberIndex(int instance, std::string_view name) const;
+    const core::cond::Value& memberAt(int instance, int member) const;
     // A TON of an FB instance: its Q and ET (ms). nullopt when it has none of that name.
     struct TonOutputs {
         bool q = false;
@@ -121,7 +127,6 @@ private:
     core::cond::Value evaluate(const StExpression& expression);
     core::cond::Value read(const StReference& reference) const;
     void assign(const StReference& reference, const core::cond::Value& value);
-    int instanceIndex(std::string_view name) const;
 
     std::vector<core::cond::Value> m_globals;    // the VAR_GLOBALs, then the program's own variables
     std::vector<core::IecType> m_globalTypes;

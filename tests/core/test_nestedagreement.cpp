@@ -10,7 +10,6 @@
 #include "stinterpreter.h"
 
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -64,71 +63,114 @@ cond::Value randomValue(std::mt19937& random, IecType type)
     return static_cast<std::int64_t>(random() % 101); // fits every integer type
 }
 
-std::string text(const cond::Value& value)
+// Where the interpreter keeps what the simulator shows, looked up once per model.
+struct Probe {
+    std::vector<int> tokens;    // global slots, in Simulator::tokenNames() order
+    std::vector<int> variables; // global slots, in Simulator::variableNames() order
+    struct Fb {
+        std::string step;
+        int instance = -1;
+        int complete = -1;
+        const NestedEngine* engine = nullptr;  // nullptr without a GRAFCET
+        std::vector<std::pair<int, int>> steps; // nested step number, X<n> slot
+        int unstable = -1;
+        std::vector<int> outputs;               // in NestedEngine::outputNames() order
+    };
+    std::vector<Fb> fbs;
+    std::string problem; // what the code does not declare
+
+    Probe(const Simulator& sim, const sttest::StInterpreter& plc)
+    {
+        const auto require = [&](int index, const std::string& what) {
+            if (index < 0 && problem.empty())
+                problem = what + " is not declared in the generated code";
+            return index;
+        };
+        for (const std::string& token : sim.tokenNames())
+            tokens.push_back(require(plc.globalIndex(token), token));
+        for (const std::string& variable : sim.variableNames())
+            variables.push_back(require(plc.globalIndex(variable), variable));
+        for (const std::string& step : sim.nestedSteps()) {
+            Fb fb;
+            fb.step = step;
+            fb.instance = require(plc.instanceIndex(step), step);
+            fb.complete = require(plc.memberIndex(fb.instance, "Complete"), step + ".Complete");
+            fb.engine = sim.grafcetEngine(step);
+            if (fb.engine) {
+                if (!plc.runsBody(step) && problem.empty())
+                    problem = "the code has no FUNCTION_BLOCK body for " + step;
+                for (const NestedStep& nested : fb.engine->grafcet().steps) {
+                    const std::string x = stepActivityName(nested.number);
+                    fb.steps.emplace_back(nested.number, require(plc.memberIndex(fb.instance, x), step + "." + x));
+                }
+                const int unstable = plc.memberIndex(fb.instance, kUnstableName);
+                if (fb.engine->grafcet().rule == EvolutionRule::UntilStable)
+                    fb.unstable = require(unstable, step + ".Unstable");
+                else if (unstable >= 0 && problem.empty())
+                    problem = step + " declares Unstable under one evolution per scan";
+                for (const std::string& output : fb.engine->outputNames())
+                    fb.outputs.push_back(require(plc.memberIndex(fb.instance, output), step + "." + output));
+                for (const NestedTimerState& timer : fb.engine->timers()) {
+                    if (!plc.timer(step, timer.name) && problem.empty())
+                        problem = step + "." + timer.name + " is not declared in the generated code";
+                }
+            }
+            fbs.push_back(std::move(fb));
+        }
+    }
+};
+
+std::string boolText(bool value)
 {
-    return cond::formatValue(value);
+    return value ? "TRUE" : "FALSE";
 }
 
 // The first difference between the simulator and the interpreted code, empty when none.
-std::string difference(const Simulator& sim, const sttest::StInterpreter& plc)
+std::string difference(const Simulator& sim, const sttest::StInterpreter& plc, const Probe& probe)
 {
-    std::ostringstream out;
+    if (!probe.problem.empty())
+        return probe.problem;
     if (!plc.runtimeError().empty())
         return "interpreter: " + plc.runtimeError();
     if (sim.activeStepNumber() != plc.state())
-        out << "State: simulator " << sim.activeStepNumber() << ", code " << plc.state();
-    else if (sim.entry() != plc.entry())
-        out << "Entry: simulator " << sim.entry() << ", code " << plc.entry();
-    if (!out.str().empty())
-        return out.str();
+        return "State: simulator " + std::to_string(sim.activeStepNumber()) + ", code " + std::to_string(plc.state());
+    if (sim.entry() != plc.entry())
+        return "Entry: simulator " + boolText(sim.entry());
     const std::vector<bool> tokens = sim.tokenValues();
     for (std::size_t i = 0; i < tokens.size(); ++i) {
-        if (tokens[i] != cond::isTrue(plc.value(sim.tokenNames()[i])))
-            return "token " + sim.tokenNames()[i] + ": simulator " + (tokens[i] ? "TRUE" : "FALSE");
+        if (tokens[i] != cond::isTrue(plc.globalAt(probe.tokens[i])))
+            return "token " + sim.tokenNames()[i] + ": simulator " + boolText(tokens[i]);
     }
-    for (const std::string& step : sim.nestedSteps()) {
-        if (sim.complete(step) != plc.complete(step))
-            return step + ".Complete: simulator " + (sim.complete(step) ? "TRUE" : "FALSE");
-        const NestedEngine* engine = sim.grafcetEngine(step);
-        if (!engine)
+    for (const Probe::Fb& fb : probe.fbs) {
+        const bool complete = sim.complete(fb.step);
+        if (complete != cond::isTrue(plc.memberAt(fb.instance, fb.complete)))
+            return fb.step + ".Complete: simulator " + boolText(complete);
+        if (!fb.engine)
             continue;
-        if (!plc.runsBody(step))
-            return step + ": the code has no FUNCTION_BLOCK body for it";
-        for (const NestedStep& nested : engine->grafcet().steps) {
-            const std::string x = stepActivityName(nested.number);
-            const std::optional<cond::Value> value = plc.member(step, x);
-            if (!value)
-                return step + "." + x + " is not declared";
-            if (engine->active(nested.number) != cond::isTrue(*value))
-                return step + "." + x + ": simulator " + (engine->active(nested.number) ? "TRUE" : "FALSE");
+        for (const auto& [number, slot] : fb.steps) {
+            if (fb.engine->active(number) != cond::isTrue(plc.memberAt(fb.instance, slot)))
+                return fb.step + ".X" + std::to_string(number) + ": simulator " + boolText(fb.engine->active(number));
         }
-        if (engine->grafcet().rule == EvolutionRule::UntilStable) {
-            const std::optional<cond::Value> unstable = plc.member(step, kUnstableName);
-            if (!unstable || engine->unstable() != cond::isTrue(*unstable))
-                return step + ".Unstable: simulator " + (engine->unstable() ? "TRUE" : "FALSE");
-        } else if (plc.member(step, kUnstableName)) {
-            return step + " declares Unstable under one evolution per scan";
+        if (fb.unstable >= 0 && fb.engine->unstable() != cond::isTrue(plc.memberAt(fb.instance, fb.unstable)))
+            return fb.step + ".Unstable: simulator " + boolText(fb.engine->unstable());
+        for (std::size_t o = 0; o < fb.outputs.size(); ++o) {
+            if (fb.engine->output(o) != cond::isTrue(plc.memberAt(fb.instance, fb.outputs[o])))
+                return fb.step + "." + fb.engine->outputNames()[o] + ": simulator " + boolText(fb.engine->output(o));
         }
-        for (std::size_t o = 0; o < engine->outputNames().size(); ++o) {
-            const std::optional<cond::Value> value = plc.member(step, engine->outputNames()[o]);
-            if (!value || engine->output(o) != cond::isTrue(*value))
-                return step + "." + engine->outputNames()[o] + ": simulator " + (engine->output(o) ? "TRUE" : "FALSE");
-        }
-        for (const NestedTimerState& timer : engine->timers()) {
-            const auto ton = plc.timer(step, timer.name);
-            if (!ton)
-                return step + "." + timer.name + " is not declared";
+        for (const NestedTimerState& timer : fb.engine->timers()) {
+            const auto ton = plc.timer(fb.step, timer.name);
             if (ton->q != timer.done || ton->etMs != timer.elapsedMs)
-                return step + "." + timer.name + ": simulator Q " + (timer.done ? "TRUE" : "FALSE") + " ET "
-                    + std::to_string(timer.elapsedMs) + ", code Q " + (ton->q ? "TRUE" : "FALSE") + " ET "
+                return fb.step + "." + timer.name + ": simulator Q " + boolText(timer.done) + " ET "
+                    + std::to_string(timer.elapsedMs) + ", code Q " + boolText(ton->q) + " ET "
                     + std::to_string(ton->etMs);
         }
     }
-    for (std::size_t i = 0; i < sim.variableNames().size(); ++i) {
+    for (std::size_t i = 0; i < probe.variables.size(); ++i) {
         const cond::Value simulated = sim.variableValue(i);
-        const cond::Value interpreted = plc.value(sim.variableNames()[i]);
+        const cond::Value& interpreted = plc.globalAt(probe.variables[i]);
         if (simulated != interpreted)
-            return "variable " + sim.variableNames()[i] + ": simulator " + text(simulated) + ", code " + text(interpreted);
+            return "variable " + sim.variableNames()[i] + ": simulator " + cond::formatValue(simulated) + ", code "
+                + cond::formatValue(interpreted);
     }
     return {};
 }
@@ -169,8 +211,9 @@ void runBoth(const Model& model, std::uint32_t seed, int scans, Coverage& covera
             inputs.emplace_back(i, sim.variableNames()[i].rfind("Nested", 0) == 0 ? 2u : 8u);
     }
     std::mt19937 random(seed * 7919u + 17u);
+    const Probe probe(sim, plc);
     const auto check = [&](int scan) {
-        const std::string different = difference(sim, plc);
+        const std::string different = difference(sim, plc, probe);
         if (!different.empty())
             FAIL("scan " << scan << " (" << sim.simulatedTimeMs() << " ms): " << different << "\nReproduce: seed "
                          << seed << ", " << rule << ". The generated code:\n"
