@@ -392,6 +392,8 @@ private:
                 m_gemmaInputs.push_back(variable.name);
             else if (core::isIntegerType(variable.type))
                 m_numbers.push_back(variable.name);
+            else if (core::isRealType(variable.type))
+                m_reals.push_back(variable.name);
         }
         for (int i = 0; i < 4; ++i) {
             core::Variable output{"NestedOut" + std::to_string(i), core::IecType::Bool, "", "continuous actions"};
@@ -433,6 +435,8 @@ private:
         case 4: return std::to_string(any(std::vector<int>{1, 5, 10, 20, 40, 100, 250, 1500})) + "ms/X" + std::to_string(from);
         case 5: return input() + " AND " + activity();
         case 6:
+            if (!m_reals.empty() && chance(4))
+                return any(m_reals) + (chance(2) ? " > " : " <= ") + std::to_string(pick(5)) + ".5";
             if (!m_numbers.empty() && chance(2))
                 return any(m_numbers) + (chance(2) ? " > " : " <= ") + std::to_string(pick(101));
             return input() + " OR " + input();
@@ -605,7 +609,8 @@ private:
     std::mt19937& m_random;
     std::vector<std::string> m_inputs;      // NestedIn0-2
     std::vector<std::string> m_gemmaInputs; // the model's other BOOL inputs
-    std::vector<std::string> m_numbers;
+    std::vector<std::string> m_numbers; // integer inputs
+    std::vector<std::string> m_reals;   // REAL and LREAL inputs
     std::vector<std::string> m_continuous;
     std::vector<std::string> m_stored;
     std::vector<core::GrafcetStep> m_steps;
