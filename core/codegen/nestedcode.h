@@ -4,7 +4,7 @@
 // §4.2): the Initialization call, the evolution (one per call, or repeated
 // until stable), the actions, the TONs of the time-dependent receptivities and
 // the continuous outputs. core/simulation runs the same NestedGrafcet with the
-// same semantics; tests/core/test_simulation_agreement.cpp holds them together.
+// same semantics; tests/core/test_nestedagreement.cpp holds them together.
 
 #include "core/codegen/plcproject.h"
 

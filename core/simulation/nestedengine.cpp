@@ -42,6 +42,15 @@ int NestedEngine::slot(std::string_view name) const
     return m_slotOf(name);
 }
 
+int NestedEngine::ownOutput(std::string_view name) const
+{
+    for (std::size_t i = 0; i < m_outputNames.size(); ++i) {
+        if (equalsIgnoreCase(m_outputNames[i], name))
+            return static_cast<int>(i);
+    }
+    return -1;
+}
+
 int NestedEngine::stepIndex(int number) const
 {
     const auto found = std::lower_bound(m_stepNumbers.begin(), m_stepNumbers.end(), number);
@@ -104,20 +113,23 @@ cond::Value NestedEngine::atom(const cond::Expression& expression, int node, con
     case cond::NodeKind::Complete: return m_complete;
     case cond::NodeKind::Variable: {
         // The FB's own continuous outputs are its VAR_OUTPUTs: the previous call's values.
-        for (std::size_t i = 0; i < m_outputNames.size(); ++i) {
-            if (equalsIgnoreCase(m_outputNames[i], n.text))
-                return m_outputs[i] != 0;
-        }
+        if (const int own = ownOutput(n.text); own >= 0)
+            return m_outputs[static_cast<std::size_t>(own)] != 0;
         const int s = slot(n.text);
         return s >= 0 ? globals.read(s) : cond::Value{false};
     }
     case cond::NodeKind::Unary: { // an edge, true in the first evolution of a call only
         if (!firstEvolution)
             return false;
-        const int s = slot(expression.at(n.operand).text);
+        const std::string& name = expression.at(n.operand).text;
+        const int s = slot(name);
         if (s < 0)
             return false;
-        const bool now = cond::isTrue(globals.read(s));
+        // Now: the variable as the receptivity reads it (an own continuous
+        // output is the VAR_OUTPUT, spec §4.2 (4)); before: <V>_PREV, the
+        // global at the end of the previous scan (§4.4).
+        const int own = ownOutput(name);
+        const bool now = own >= 0 ? m_outputs[static_cast<std::size_t>(own)] != 0 : cond::isTrue(globals.read(s));
         const bool before = globals.previous(s);
         return n.unaryOp == cond::UnaryOp::RisingEdge ? now && !before : !now && before;
     }
@@ -369,7 +381,11 @@ void NestedEngine::explainNode(const cond::Expression& expression, int node, con
             const int s = slot(operand.text);
             const bool value = cond::isTrue(atom(expression, node, &timers, globals, true));
             const std::string name = declaredName(operand.text);
-            const std::string now = s >= 0 ? cond::formatValue(globals.read(s)) : std::string("FALSE");
+            // What the edge compares, as atom() reads it: an own continuous output is the VAR_OUTPUT.
+            const int own = ownOutput(operand.text);
+            const std::string now = own >= 0 ? cond::formatValue(cond::Value{m_outputs[std::size_t(own)] != 0})
+                                  : s >= 0   ? cond::formatValue(globals.read(s))
+                                             : std::string("FALSE");
             if (!value) {
                 reason.kind = n.unaryOp == cond::UnaryOp::RisingEdge ? ExplanationReason::Kind::NoRisingEdge
                                                                      : ExplanationReason::Kind::NoFallingEdge;

@@ -349,3 +349,291 @@ void addRandomNestedGrafcets(core::Model& model, std::uint32_t seed)
 }
 
 } // namespace samples
+
+namespace samples {
+
+namespace {
+
+class ValidNestedBuilder {
+public:
+    ValidNestedBuilder(core::Model& model, std::mt19937& random) : m_model(model), m_random(random) {}
+
+    int build()
+    {
+        declareVariables();
+        int added = 0;
+        for (const core::Step& step : std::vector<core::Step>(m_model.steps())) {
+            if (step.hidden || step.type == core::StepType::Simple || pick(4) == 0)
+                continue;
+            buildGrafcet(step.id);
+            ++added;
+        }
+        return added;
+    }
+
+private:
+    int pick(int count) { return static_cast<int>(m_random() % static_cast<unsigned>(count)); }
+    bool chance(int in) { return pick(in) == 0; } // probability 1/in
+    template <typename T> const T& any(const std::vector<T>& values)
+    {
+        return values[static_cast<std::size_t>(pick(static_cast<int>(values.size())))];
+    }
+
+    void declareVariables()
+    {
+        for (const char* name : {"NestedIn0", "NestedIn1", "NestedIn2"}) {
+            require(m_model.addVariable(core::Variable{name, core::IecType::Bool, "", "input of the nested GRAFCETs"}));
+            m_inputs.push_back(name);
+        }
+        for (const core::Variable& variable : m_model.variables()) {
+            if (variable.kind != core::VariableKind::Input || variable.name.rfind("NestedIn", 0) == 0)
+                continue;
+            if (variable.type == core::IecType::Bool)
+                m_gemmaInputs.push_back(variable.name);
+            else if (core::isIntegerType(variable.type))
+                m_numbers.push_back(variable.name);
+            else if (core::isRealType(variable.type))
+                m_reals.push_back(variable.name);
+        }
+        for (int i = 0; i < 4; ++i) {
+            core::Variable output{"NestedOut" + std::to_string(i), core::IecType::Bool, "", "continuous actions"};
+            output.kind = core::VariableKind::Output;
+            require(m_model.addVariable(output));
+            m_continuous.push_back(output.name);
+        }
+        for (int i = 0; i < 2; ++i) {
+            core::Variable memory{"NestedMem" + std::to_string(i), core::IecType::Bool, i == 0 ? "" : "TRUE",
+                                  "stored actions"};
+            memory.kind = i == 0 ? core::VariableKind::Output : core::VariableKind::Internal;
+            require(m_model.addVariable(memory));
+            m_stored.push_back(memory.name);
+        }
+        core::Variable counter{"NestedCount", core::IecType::Int, "", "counted by nested GRAFCETs"};
+        counter.kind = core::VariableKind::Internal;
+        require(m_model.addVariable(counter));
+    }
+
+    // Mostly the nested GRAFCETs' own inputs, sometimes one the GEMMA layer reads.
+    std::string input() { return m_gemmaInputs.empty() || !chance(4) ? any(m_inputs) : any(m_gemmaInputs); }
+    std::string activity() { return "X" + std::to_string(any(m_numbersSoFar)); }
+
+    std::string receptivity(int from)
+    {
+        switch (pick(14)) {
+        case 0:
+        case 12: return input();
+        case 13:
+            switch (pick(4)) {
+            case 0: return "TRUE";
+            case 1: return input() + " OR " + input();
+            case 2: return (chance(2) ? "RE " : "FE ") + any(m_stored);     // written by stored actions in the call
+            default: return (chance(2) ? "RE " : "FE ") + any(m_continuous); // maybe the FB's own VAR_OUTPUT
+            }
+        case 1: return "NOT " + input();
+        case 2: return "RE " + input();
+        case 3: return "FE " + input() + (chance(2) ? " OR " + input() : "");
+        case 4: return std::to_string(any(std::vector<int>{1, 5, 10, 20, 40, 100, 250, 1500})) + "ms/X" + std::to_string(from);
+        case 5: return input() + " AND " + activity();
+        case 6:
+            if (!m_reals.empty() && chance(4))
+                return any(m_reals) + (chance(2) ? " > " : " <= ") + std::to_string(pick(5)) + ".5";
+            if (!m_numbers.empty() && chance(2))
+                return any(m_numbers) + (chance(2) ? " > " : " <= ") + std::to_string(pick(101));
+            return input() + " OR " + input();
+        case 7: return "TRUE";
+        case 8: // the FB's VAR_OUTPUT, or a global
+            return chance(2) ? any(m_continuous) + " OR " + input() : "NOT " + any(m_continuous);
+        case 9: return chance(2) ? any(m_stored) : "NestedCount >= " + std::to_string(pick(4));
+        case 10: return chance(2) ? "Complete" : "NOT Complete AND " + input();
+        default: return "(" + input() + " OR RE " + input() + ") AND NOT " + activity();
+        }
+    }
+
+    // No continuous output of the FB in an action's condition (GG421).
+    std::string actionCondition()
+    {
+        switch (pick(4)) {
+        case 0: return input();
+        case 1: return "NOT " + input();
+        case 2: return activity() + " AND " + any(m_stored);
+        default: return "NestedCount > " + std::to_string(pick(3));
+        }
+    }
+
+    core::GrafcetAction storedAction(core::ActionTiming timing)
+    {
+        switch (pick(5)) {
+        case 0: return {timing, "S " + any(m_stored)};
+        case 1: return {timing, "R " + any(m_stored)};
+        case 2: return {timing, "NestedCount := NestedCount + " + std::to_string(1 + pick(2))};
+        case 3: return {timing, any(m_stored) + " := " + input() + (chance(2) ? " AND " + activity() : "")};
+        default: return {timing, "NestedCount := 0"};
+        }
+    }
+
+    std::vector<core::GrafcetAction> actions(bool exit)
+    {
+        std::vector<core::GrafcetAction> list;
+        for (int a = pick(4); a > 0; --a) {
+            switch (pick(5)) {
+            case 0: list.push_back({core::ActionTiming::Continuous, (chance(2) ? "N " : "") + any(m_continuous)}); break;
+            case 1: list.push_back({core::ActionTiming::Continuous, any(m_continuous) + " IF " + actionCondition()}); break;
+            case 2: list.push_back(storedAction(core::ActionTiming::OnActivation)); break;
+            case 3: list.push_back(storedAction(core::ActionTiming::OnDeactivation)); break;
+            default: list.push_back(completeAction(chance(3))); break;
+            }
+        }
+        if (exit)
+            list.push_back(completeAction(true));
+        return list;
+    }
+
+    // Complete, in the GRAFCET's one style (GG415 refuses mixing them).
+    core::GrafcetAction completeAction(bool set)
+    {
+        switch (m_completeStyle) {
+        case 0: return {core::ActionTiming::Continuous, set ? "Complete" : "Complete IF " + actionCondition()};
+        case 1: return {core::ActionTiming::OnActivation, set ? "S Complete" : "R Complete"};
+        default: return {core::ActionTiming::OnActivation, set ? "Complete := TRUE" : "Complete := " + input()};
+        }
+    }
+
+    int newStep()
+    {
+        m_next += chance(4) ? 1 + pick(3) : 1;
+        m_numbersSoFar.push_back(m_next);
+        m_steps.push_back({m_next, false, "", actions(false)});
+        return m_next;
+    }
+
+    void transition(std::vector<int> upstream, std::vector<int> downstream, std::string text)
+    {
+        m_transitions.push_back({m_transitionNumber++, std::move(upstream), std::move(downstream), std::move(text)});
+    }
+
+    // A piece of sequence from step `from`; returns the step it ends on.
+    int block(int from, int depth)
+    {
+        switch (depth > 1 ? 0 : pick(5)) {
+        case 1: { // selection divergence and convergence
+            const int a = newStep();
+            const int b = newStep();
+            const std::string r = receptivity(from);
+            transition({from}, {a}, r);
+            transition({from}, {b}, chance(4) ? receptivity(from) : "NOT (" + r + ")");
+            const int aEnd = chance(2) ? block(a, depth + 1) : a;
+            const int bEnd = chance(2) ? block(b, depth + 1) : b;
+            const int join = newStep();
+            transition({aEnd}, {join}, receptivity(aEnd));
+            transition({bEnd}, {join}, receptivity(bEnd));
+            return join;
+        }
+        case 2: { // simultaneous divergence and convergence
+            const int a = newStep();
+            const int b = newStep();
+            std::vector<int> branches{a, b};
+            if (chance(3))
+                branches.push_back(newStep());
+            transition({from}, branches, receptivity(from));
+            std::vector<int> ends;
+            for (int branch : branches)
+                ends.push_back(chance(2) ? block(branch, depth + 1) : branch);
+            const int join = newStep();
+            transition(ends, {join}, chance(2) ? "TRUE" : receptivity(ends.front()));
+            return join;
+        }
+        case 3: { // a loop back to `from`
+            const int body = newStep();
+            transition({from}, {body}, receptivity(from));
+            const int after = newStep();
+            const std::string r = receptivity(body);
+            transition({body}, {from}, r);
+            transition({body}, {after}, chance(4) ? receptivity(body) : "NOT (" + r + ")");
+            return after;
+        }
+        default: { // sequence
+            const int next = newStep();
+            transition({from}, {next}, receptivity(from));
+            return next;
+        }
+        }
+    }
+
+    void buildGrafcet(const std::string& stepId)
+    {
+        m_steps.clear();
+        m_transitions.clear();
+        m_numbersSoFar.clear();
+        m_next = pick(3);
+        m_transitionNumber = 1 + pick(2);
+        m_completeStyle = pick(3);
+        const int initial = newStep();
+        m_steps.back().initial = true;
+        if (m_completeStyle == 1 && chance(2))
+            m_steps.back().actions.push_back(completeAction(false));
+        int at = initial;
+        for (int blocks = 1 + pick(3); blocks > 0; --blocks)
+            at = block(at, 0);
+        if (chance(4)) // an exit step with no way out: it sets Complete (no GG418)
+            m_steps[m_steps.size() - 1].actions.push_back(completeAction(true));
+        else {
+            for (core::GrafcetStep& step : m_steps) {
+                if (step.number == at)
+                    step.actions.push_back(completeAction(true));
+            }
+            transition({at}, {initial}, receptivity(at));
+        }
+        if (chance(4)) { // a second initial step with its own loop
+            const int other = newStep();
+            m_steps.back().initial = true;
+            const int second = newStep();
+            transition({other}, {second}, receptivity(other));
+            transition({second}, {other}, receptivity(second));
+        }
+        if (chance(4)) { // anything: a jump, a non-exclusive selection, a convergence never enabled
+            std::vector<int> upstream{any(m_numbersSoFar)};
+            std::vector<int> downstream{any(m_numbersSoFar)};
+            if (chance(3) && upstream[0] != m_numbersSoFar.back())
+                upstream.push_back(m_numbersSoFar.back());
+            if (chance(3) && downstream[0] != initial)
+                downstream.push_back(initial);
+            transition(upstream, downstream, receptivity(upstream[0]));
+        }
+        for (const core::GrafcetStep& step : m_steps)
+            require(m_model.addGrafcetStep(stepId, step));
+        for (const core::GrafcetTransition& t : m_transitions)
+            require(m_model.addGrafcetTransition(stepId, t));
+    }
+
+    core::Model& m_model;
+    std::mt19937& m_random;
+    std::vector<std::string> m_inputs;      // NestedIn0-2
+    std::vector<std::string> m_gemmaInputs; // the model's other BOOL inputs
+    std::vector<std::string> m_numbers; // integer inputs
+    std::vector<std::string> m_reals;   // REAL and LREAL inputs
+    std::vector<std::string> m_continuous;
+    std::vector<std::string> m_stored;
+    std::vector<core::GrafcetStep> m_steps;
+    std::vector<core::GrafcetTransition> m_transitions;
+    std::vector<int> m_numbersSoFar;
+    int m_next = 0;
+    int m_transitionNumber = 1;
+    int m_completeStyle = 0;
+};
+
+} // namespace
+
+int addValidRandomNestedGrafcets(core::Model& model, std::mt19937& random)
+{
+    for (int attempt = 0; attempt < 20; ++attempt) {
+        core::Model candidate(model);
+        const int added = ValidNestedBuilder(candidate, random).build();
+        if (!core::hasErrors(core::checkModel(candidate))) {
+            model.assign(candidate);
+            return added;
+        }
+    }
+    return 0;
+}
+
+} // namespace samples

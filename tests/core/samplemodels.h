@@ -7,6 +7,7 @@
 #include "core/model/model.h"
 
 #include <cstdint>
+#include <random>
 
 namespace samples {
 
@@ -29,5 +30,19 @@ core::Model randomModel(std::uint32_t seed);
 // Not every such model is free of errors: the code generated from it must
 // still be valid.
 void addRandomNestedGrafcets(core::Model& model, std::uint32_t seed);
+
+// Gives every visible macro-step and enclosing step of the model, with
+// probability 3/4, a random nested GRAFCET the checks accept without error:
+// sequences, selections (mostly exclusive, sometimes not), simultaneous
+// divergences and convergences, loops, sometimes a second initial step and a
+// random extra transition; receptivities with edges, durations, step
+// activities, numeric comparisons, Complete and the FB's own continuous
+// outputs; continuous (some conditional) actions on NestedOut0-3, stored
+// actions (S, R, assignments) on NestedMem0-1, NestedCount and Complete.
+// Declares the variables it uses (NestedIn0-2 inputs, outputs, NestedCount
+// internal). Draws again while the checks find an error; leaves the model
+// without nested GRAFCETs when 20 draws all have one. Returns the number of
+// GRAFCETs added. The model's evolution rule is left as it is.
+int addValidRandomNestedGrafcets(core::Model& model, std::mt19937& random);
 
 } // namespace samples

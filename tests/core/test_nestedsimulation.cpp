@@ -92,6 +92,32 @@ TEST_CASE("Leaving the GEMMA state drops its continuous outputs in the same scan
     CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2}); // the FB is no longer called
 }
 
+TEST_CASE("An edge on an FB's own continuous output reads its VAR_OUTPUT, as the generated code does",
+          "[simulation][nested-simulation]")
+{
+    // Step 1 drives Lamp; T1 waits for RE Lamp. The generated code compares
+    // the VAR_OUTPUT Lamp (TRUE since the Initialization call of the entry
+    // scan) with Lamp_PREV (FALSE, the global at the end of the previous
+    // scan): T1 fires in the entry scan. The global Lamp, written after
+    // END_CASE, was FALSE there: reading it, the edge would never be seen.
+    Model model;
+    REQUIRE(model.addVariable(variable("Lamp", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.setInitialStep("F1"));
+    REQUIRE(model.setCondition("F1->A2", "FALSE")); // F1 stays
+    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {{ActionTiming::Continuous, "N Lamp"}}}));
+    REQUIRE(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::OnActivation, "S Complete"}}}));
+    REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2}, "RE Lamp"}));
+    REQUIRE(model.addGrafcetTransition("F1", {2, {2}, {1}, "FE Lamp"}));
+    Simulator simulator(model);
+    simulator.step();
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2});
+    CHECK(simulator.variable("Lamp") == cond::Value{false});
+    // Scan 2: the VAR_OUTPUT is FALSE (step 2), Lamp_PREV FALSE: no falling edge.
+    simulator.step();
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2});
+    CHECK(simulator.activeStepId() == "F1");
+}
+
 TEST_CASE("Simultaneous divergence and convergence; a step both left and entered stays", "[simulation][nested-simulation]")
 {
     Model model;
