@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <set>
 
 namespace core {
@@ -48,6 +49,16 @@ public:
         , m_edgeMemory(edgeMemory)
         , m_untilStable(program.evolution == EvolutionRule::UntilStable)
     {
+        // Which usable transitions deactivate and activate each step, once:
+        // every step asks for both.
+        for (const NestedTransition& t : m_grafcet.transitions) {
+            if (!t.usable)
+                continue;
+            for (int step : t.upstream)
+                m_deactivatedBy[step].push_back(t.number);
+            for (int step : t.downstream)
+                m_activatedBy[step].push_back(t.number);
+        }
     }
 
     NestedCode run()
@@ -136,19 +147,14 @@ private:
 
     // ---- the structure ----
 
-    std::vector<int> usableFires(bool upstream, int step) const
-    {
-        std::vector<int> fires;
-        for (const NestedTransition& t : m_grafcet.transitions) {
-            const auto& set = upstream ? t.upstream : t.downstream;
-            if (t.usable && std::find(set.begin(), set.end(), step) != set.end())
-                fires.push_back(t.number);
-        }
-        return fires;
-    }
+    std::vector<int> deactivatedBy(int step) const { return firesOf(m_deactivatedBy, step); }
+    std::vector<int> activatedBy(int step) const { return firesOf(m_activatedBy, step); }
 
-    std::vector<int> deactivatedBy(int step) const { return usableFires(true, step); }
-    std::vector<int> activatedBy(int step) const { return usableFires(false, step); }
+    static std::vector<int> firesOf(const std::map<int, std::vector<int>>& fires, int step)
+    {
+        const auto found = fires.find(step);
+        return found == fires.end() ? std::vector<int>{} : found->second;
+    }
 
     static std::string anyOf(const std::vector<int>& transitions)
     {
@@ -359,6 +365,8 @@ private:
     const std::function<std::string(std::string_view)>& m_global;
     const std::function<std::string(std::string_view)>& m_edgeMemory;
     bool m_untilStable;
+    std::map<int, std::vector<int>> m_deactivatedBy; // step -> usable transitions, in transition order
+    std::map<int, std::vector<int>> m_activatedBy;
     NestedCode m_code;
 };
 

@@ -274,7 +274,7 @@ private:
         const auto rank = [&](const ContinuousOutput& o) -> std::size_t {
             if (o.isComplete)
                 return m_model.variables().size();
-            return static_cast<std::size_t>(m_model.variableIndex(o.variable));
+            return indexOf(o.variable);
         };
         std::sort(outputs.begin(), outputs.end(), [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
         m_result.outputs = std::move(outputs);
@@ -367,14 +367,23 @@ private:
 
     // ---- what the FB reads and writes ----
 
+    // The declaration index of a variable (the symbol table's lookup, not
+    // the model's linear one: the builder asks for every operand), or the
+    // number of variables when none has this name.
+    std::size_t indexOf(std::string_view name) const
+    {
+        const Variable* variable = m_symbols.find(name);
+        return variable ? static_cast<std::size_t>(variable - m_model.variables().data()) : m_model.variables().size();
+    }
+
     void collectVariables()
     {
         std::vector<bool> read(m_model.variables().size(), false);
         std::vector<bool> stored(m_model.variables().size(), false);
         const auto markRead = [&](const cond::Expression& expression) {
             for (int node : cond::variableNodes(expression)) {
-                if (const int index = m_model.variableIndex(expression.at(node).text); index >= 0)
-                    read[static_cast<std::size_t>(index)] = true;
+                if (const std::size_t index = indexOf(expression.at(node).text); index < read.size())
+                    read[index] = true;
             }
         };
         for (const NestedTransition& t : m_result.transitions) {
@@ -390,7 +399,8 @@ private:
                     markRead(action.parsed.action.value);
                     m_result.writesComplete = m_result.writesComplete || action.targetIsComplete;
                     if (action.timing != ActionTiming::Continuous && !action.targetIsComplete)
-                        stored[static_cast<std::size_t>(m_model.variableIndex(action.target))] = true;
+                        if (const std::size_t index = indexOf(action.target); index < stored.size())
+                            stored[index] = true;
                 }
             }
         }
