@@ -5,6 +5,7 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/model/model.h"
 #include "core/codegen/stgenerator.h"
+#include "core/formats/modelfiles.h"
 #include "hostilemodels.h"
 #include "modelfactory.h"
 #include "samplemodels.h"
@@ -14,6 +15,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <fstream>
+#include <random>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -467,14 +469,19 @@ void checkDeclarationLines(const std::string& code)
             REQUIRE(std::regex_match(line, match, declaration));
             CHECK_FALSE(isIecKeyword(match[1].str()));
             const std::string type = match[2].str();
-            CHECK((parseIecType(type) || (type.size() > 3 && type.substr(type.size() - 3) == "_FB")));
+            // An elementary type, a generated function block, or the standard TON.
+            CHECK((parseIecType(type) || (type.size() > 3 && type.substr(type.size() - 3) == "_FB") || type == "TON"));
         }
     }
     CHECK_FALSE(inBlock);
 }
 
-// One name, one thing: within a POU and among the globals (the IEC
-// VAR_EXTERNAL repeats a global, which is what it is for).
+// One name, one thing: within a POU (its externals included) and among the
+// globals (the IEC VAR_EXTERNAL repeats a global, which is what it is for).
+// A POU's inputs and locals never repeat a global; a nested function
+// block's continuous outputs are named after the global the GEMMA program
+// writes from them (spec grafcet-layer.md §4.3), which IEC allows since the
+// block does not see that global: it is not among its externals.
 void checkUniqueNames(const PlcProject& project)
 {
     auto checkUnique = [](const std::vector<const std::vector<PlcVariable>*>& lists, std::set<std::string> seen) {
@@ -491,8 +498,8 @@ void checkUniqueNames(const PlcProject& project)
         globals.insert(upper(variable.name));
     for (const PlcPou& pou : project.pous) {
         INFO(pou.name);
-        checkUnique({&pou.inputs, &pou.outputs, &pou.locals}, globals);
-        checkUnique({&pou.externals}, {});
+        checkUnique({&pou.inputs, &pou.locals}, globals);
+        checkUnique({&pou.inputs, &pou.outputs, &pou.locals, &pou.externals}, {});
         for (const PlcVariable& external : pou.externals)
             CHECK(globals.count(upper(external.name)) == 1);
     }
@@ -603,6 +610,28 @@ TEST_CASE("generated code keeps the rules IEC compilers enforce", "[stgen]")
     for (std::uint32_t seed = 1; seed <= 20; ++seed) {
         INFO("random model " << seed);
         checkIecRules(buildPlcProject(samples::randomModel(seed), Dialect::Iec));
+    }
+    // The function blocks of nested GRAFCETs: the shipped example, random
+    // valid ones (TONs, REPEAT, edges, stored and continuous actions) and
+    // random ones with mistakes (commented out, never generated).
+    const LoadedModel example = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(example.ok());
+    checkIecRules(buildPlcProject(*example.model, Dialect::Iec));
+    for (std::uint32_t seed = 1; seed <= 20; ++seed) {
+        INFO("random model with valid nested GRAFCETs " << seed);
+        Model model = samples::randomModel(seed);
+        std::mt19937 random(seed);
+        samples::addValidRandomNestedGrafcets(model, random);
+        if (seed % 2 == 0)
+            model.setEvolutionRule(EvolutionRule::UntilStable);
+        REQUIRE_FALSE(model.grafcets().empty());
+        checkIecRules(buildPlcProject(model, Dialect::Iec));
+    }
+    for (std::uint32_t seed = 1; seed <= 10; ++seed) {
+        INFO("random model with random nested GRAFCETs " << seed);
+        Model model = samples::randomModel(seed);
+        samples::addRandomNestedGrafcets(model, seed);
+        checkIecRules(buildPlcProject(model, Dialect::Iec));
     }
 }
 
