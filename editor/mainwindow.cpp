@@ -25,6 +25,7 @@
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/statusindicators.h"
+#include "editor/userguide.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>
@@ -402,6 +403,7 @@ void MainWindow::createActions()
     m_verifyAction = action("verifyAction", &MainWindow::verify, Qt::Key_F7);
     m_verifyAction->setShortcuts({QKeySequence(Qt::Key_F7), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V)});
 
+    m_userGuideAction = action("userGuideAction", &MainWindow::showUserGuide, QKeySequence::HelpContents);
     m_aboutAction = action("aboutAction", &MainWindow::about);
     m_aboutAction->setMenuRole(QAction::AboutRole);
     m_aboutQtAction = action("aboutQtAction", &QApplication::aboutQt);
@@ -484,6 +486,8 @@ void MainWindow::createMenus()
 
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName("helpMenu");
+    m_helpMenu->addAction(m_userGuideAction);
+    m_helpMenu->addSeparator();
     m_helpMenu->addActions({m_aboutAction, m_aboutQtAction});
 }
 
@@ -713,6 +717,9 @@ void MainWindow::retranslate()
     m_verifyAction->setStatusTip(tr("Prove what the GEMMA layer can and cannot do for every input sequence; "
                                     "the findings go to the Problems dock"));
 
+    m_userGuideAction->setText(tr("&User Guide"));
+    m_userGuideAction->setStatusTip(tr("How to build a model, simulate, verify and export, offline; F1 opens it "
+                                       "at the part about the panel you are in"));
     m_aboutAction->setText(tr("&About GG Studio"));
     m_aboutQtAction->setText(tr("About &Qt"));
 
@@ -933,6 +940,35 @@ void MainWindow::setLanguage(const QString& code)
     // The translators send QEvent::LanguageChange to every widget.
     m_translators.setLanguage(code);
     m_settings->setLanguage(code);
+}
+
+// The guide's part about the panel that has the focus.
+UserGuide::Topic MainWindow::helpTopic() const
+{
+    const std::pair<const QWidget*, UserGuide::Topic> places[] = {
+        {m_view, UserGuide::Topic::Chart},
+        {m_stepDock, UserGuide::Topic::StepPanel},
+        {m_transitionDock, UserGuide::Topic::TransitionPanel},
+        {m_variablesDock, UserGuide::Topic::VariablesPanel},
+        {m_problemsDock, UserGuide::Topic::ProblemsPanel},
+        {m_stPreviewDock, UserGuide::Topic::StructuredTextPanel},
+        {m_simulationDock, UserGuide::Topic::Simulation},
+    };
+    for (const QWidget* widget = QApplication::focusWidget(); widget; widget = widget->parentWidget()) {
+        for (const auto& [place, topic] : places) {
+            if (place && widget == place)
+                return topic;
+        }
+    }
+    return UserGuide::Topic::GettingStarted;
+}
+
+void MainWindow::showUserGuide()
+{
+    const UserGuide::Topic topic = helpTopic();
+    if (!m_userGuide)
+        m_userGuide = new UserGuide(this);
+    m_userGuide->showTopic(topic);
 }
 
 void MainWindow::about()

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "editor/elementref.h"
+#include "editor/userguide.h"
 
 #include "core/model/model.h"
 
@@ -126,6 +127,9 @@ private:
     void setShowHidden(bool show);
     void setLanguage(const QString& code);
     void about();
+    // Help > User Guide (F1), at the part about the focused panel.
+    void showUserGuide();
+    UserGuide::Topic helpTopic() const;
 
     // Save / Discard / Cancel for unsaved changes; true when the caller may go on.
     bool maybeSave();
@@ -199,6 +203,8 @@ private:
     QAction* m_scanAction = nullptr;
     QAction* m_resetSimulationAction = nullptr;
     QAction* m_verifyAction = nullptr;
+    QAction* m_userGuideAction = nullptr;
+    UserGuide* m_userGuide = nullptr; // made on first use
     QAction* m_aboutAction = nullptr;
     QAction* m_aboutQtAction = nullptr;
     QActionGroup* m_languageGroup = nullptr;

@@ -1876,6 +1876,14 @@
         <source>Show the selected hidden states and transitions again</source>
         <translation>Die ausgewählten ausgeblendeten Zustände und Transitionen wieder einblenden</translation>
     </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>How to build a model, simulate, verify and export, offline; F1 opens it at the part about the panel you are in</source>
+        <translation>Wie man ein Modell erstellt, simuliert, verifiziert und exportiert, offline (auf Englisch); F1 öffnet es bei dem Teil über das Fenster, in dem Sie sind</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2789,6 +2797,25 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>Tokens: %1</source>
         <translation>Merker: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::UserGuide</name>
+    <message>
+        <source>GG Studio User Guide</source>
+        <translation>GG Studio – Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Vor</translation>
+    </message>
+    <message>
+        <source>Getting Started</source>
+        <translation>Erste Schritte</translation>
     </message>
 </context>
 <context>

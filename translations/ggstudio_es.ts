@@ -1876,6 +1876,14 @@
         <source>Show the selected hidden states and transitions again</source>
         <translation>Volver a mostrar los estados y transiciones ocultos seleccionados</translation>
     </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Guía del usuario</translation>
+    </message>
+    <message>
+        <source>How to build a model, simulate, verify and export, offline; F1 opens it at the part about the panel you are in</source>
+        <translation>Cómo crear un modelo, simularlo, verificarlo y exportarlo, sin conexión (en inglés); F1 la abre en la parte del panel en el que está</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2789,6 +2797,25 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>Tokens: %1</source>
         <translation>Memorias: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::UserGuide</name>
+    <message>
+        <source>GG Studio User Guide</source>
+        <translation>Guía del usuario de GG Studio</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Atrás</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Adelante</translation>
+    </message>
+    <message>
+        <source>Getting Started</source>
+        <translation>Primeros pasos</translation>
     </message>
 </context>
 <context>

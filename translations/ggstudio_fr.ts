@@ -1876,6 +1876,14 @@
         <source>Show the selected hidden states and transitions again</source>
         <translation>Afficher de nouveau les états et transitions masqués sélectionnés</translation>
     </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Guide de l&apos;utilisateur</translation>
+    </message>
+    <message>
+        <source>How to build a model, simulate, verify and export, offline; F1 opens it at the part about the panel you are in</source>
+        <translation>Comment construire un modèle, le simuler, le vérifier et l&apos;exporter, hors ligne (en anglais)&#xa0;; F1 l&apos;ouvre à la partie sur le panneau où vous êtes</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2789,6 +2797,25 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>Tokens: %1</source>
         <translation>Mémoires&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::UserGuide</name>
+    <message>
+        <source>GG Studio User Guide</source>
+        <translation>Guide de l&apos;utilisateur de GG Studio</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Précédent</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Suivant</translation>
+    </message>
+    <message>
+        <source>Getting Started</source>
+        <translation>Premiers pas</translation>
     </message>
 </context>
 <context>

@@ -1876,6 +1876,14 @@
         <source>Show the selected hidden states and transitions again</source>
         <translation>Mostrare di nuovo gli stati e le transizioni nascosti selezionati</translation>
     </message>
+    <message>
+        <source>&amp;User Guide</source>
+        <translation>&amp;Guida utente</translation>
+    </message>
+    <message>
+        <source>How to build a model, simulate, verify and export, offline; F1 opens it at the part about the panel you are in</source>
+        <translation>Come costruire un modello, simularlo, verificarlo ed esportarlo, offline (in inglese); F1 la apre alla parte sul pannello in cui si trova</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2789,6 +2797,25 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>Tokens: %1</source>
         <translation>Memorie: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::UserGuide</name>
+    <message>
+        <source>GG Studio User Guide</source>
+        <translation>Guida utente di GG Studio</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Indietro</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Avanti</translation>
+    </message>
+    <message>
+        <source>Getting Started</source>
+        <translation>Primi passi</translation>
     </message>
 </context>
 <context>

@@ -26,6 +26,7 @@
 #include "editor/simulation/simulationsession.h"
 #include "editor/recentfiles.h"
 #include "editor/statusindicators.h"
+#include "editor/userguide.h"
 #include "editor/windowbuttonstyle.h"
 
 #include "core/formats/modelfiles.h"
@@ -63,6 +64,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextDocumentFragment>
+#include <QTextBlock>
+#include <QTextBrowser>
+#include <QUrl>
 #include <QTimer>
 #include <QTranslator>
 #include <QUndoStack>
@@ -248,6 +252,7 @@ private slots:
     void opensOnTheTemplate();
     void docksAreAroundTheChart();
     void toolbarHoldsTheMainCommands();
+    void userGuideOpensAtTheFocusedPanel();
     void rightClickOnAStepOffersItsCommands();
     void transitionMenuMovesPriorityAndEditsTheCondition();
     void sheetMenuOffersTheViewCommands();
@@ -569,6 +574,44 @@ void TestMainWindow::rubberBandSelectsWhatItCovers()
              qPrintable(QString::number(selected.size())));
     // Dragging without a modifier still pans: the drag mode is back.
     QCOMPARE(view->dragMode(), QGraphicsView::ScrollHandDrag);
+}
+
+void TestMainWindow::userGuideOpensAtTheFocusedPanel()
+{
+    auto* help = m_window->findChild<QAction*>(QStringLiteral("userGuideAction"));
+    QVERIFY(help);
+    QVERIFY(help->shortcuts().contains(QKeySequence(Qt::Key_F1)));
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+
+    // Every topic is a heading of the guide, so renaming one in docs/ fails here.
+    UserGuide guide;
+    for (int i = 0; i < UserGuide::kTopicCount; ++i) {
+        const auto topic = static_cast<UserGuide::Topic>(i);
+        guide.showTopic(topic);
+        QCOMPARE(guide.currentHeading(), UserGuide::heading(topic));
+        QCOMPARE(guide.browser()->textCursor().block().text(), UserGuide::heading(topic));
+    }
+    // The guide shows its picture, and its links open the reference pages offline.
+    QVERIFY(guide.browser()->toHtml().contains(QStringLiteral("main-window-template.png")));
+    guide.browser()->setSource(QUrl(QStringLiteral("diagnostics.md")));
+    QVERIFY2(guide.browser()->toPlainText().contains(QStringLiteral("GG202")),
+             qPrintable(guide.browser()->source().toString()));
+    guide.close();
+
+    // F1 in the Variables panel, then on the chart.
+    auto* table = m_window->findChild<QDockWidget*>(QStringLiteral("variablesDock"))->findChild<QTableView*>();
+    QVERIFY(table);
+    table->setFocus();
+    help->trigger();
+    auto* shown = m_window->findChild<UserGuide*>();
+    QVERIFY(shown && shown->isVisible());
+    QCOMPARE(shown->currentHeading(), QStringLiteral("The Variables panel"));
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    m_window->chartView()->setFocus();
+    help->trigger();
+    QCOMPARE(shown->currentHeading(), QStringLiteral("The chart"));
 }
 
 void TestMainWindow::resetLayoutPutsEveryPanelBack()
