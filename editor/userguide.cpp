@@ -6,6 +6,8 @@
 #include <QScrollBar>
 #include <QStyle>
 #include <QTextBlock>
+#include <QTextCursor>
+#include <QTextDocumentFragment>
 #include <QTextBrowser>
 #include <QToolBar>
 #include <QUrl>
@@ -78,8 +80,10 @@ QString UserGuide::heading(Topic topic)
 
 void UserGuide::showTopic(Topic topic)
 {
-    if (m_browser->source() != guideUrl())
+    if (m_browser->source() != guideUrl()) {
         m_browser->setSource(guideUrl(), QTextDocument::MarkdownResource);
+        fitPictures();
+    }
     show();
     raise();
     activateWindow();
@@ -96,6 +100,26 @@ void UserGuide::showTopic(Topic topic)
     }
     m_browser->verticalScrollBar()->setValue(0);
     m_currentHeading.clear();
+}
+
+// The screenshots are as wide as the screens they show: drawn at most the
+// width of the text, the height following.
+void UserGuide::fitPictures()
+{
+    constexpr double kPictureWidth = 760;
+    for (QTextBlock block = m_browser->document()->begin(); block.isValid(); block = block.next()) {
+        for (auto fragment = block.begin(); !fragment.atEnd(); ++fragment) {
+            QTextCharFormat format = fragment.fragment().charFormat();
+            if (!format.isImageFormat())
+                continue;
+            QTextImageFormat image = format.toImageFormat();
+            image.setWidth(kPictureWidth);
+            QTextCursor cursor(m_browser->document());
+            cursor.setPosition(fragment.fragment().position());
+            cursor.setPosition(fragment.fragment().position() + fragment.fragment().length(), QTextCursor::KeepAnchor);
+            cursor.setCharFormat(image);
+        }
+    }
 }
 
 QString UserGuide::currentHeading() const

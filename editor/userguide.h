@@ -49,6 +49,7 @@ protected:
 
 private:
     void retranslate();
+    void fitPictures();
 
     QTextBrowser* m_browser;
     QString m_currentHeading;

@@ -47,8 +47,8 @@ int usage()
     return 2;
 }
 
-// Triggers the action and saves the first modal dialog it opens; closes
-// every dialog after it, so the action returns.
+// Triggers the action and saves the first modal dialog it opens (or the
+// window it shows); closes every dialog after it, so the action returns.
 int grabDialog(QWidget& window, const QString& actionName, const QString& out)
 {
     auto* action = window.findChild<QAction*>(actionName);
@@ -73,6 +73,14 @@ int grabDialog(QWidget& window, const QString& actionName, const QString& out)
     poll.start();
     action->trigger();
     poll.stop();
+    // An action that opens a window of its own (Help > User Guide): that window.
+    for (QWidget* top : QApplication::topLevelWidgets()) {
+        if (!grabbed && top != &window && top->isVisible() && top->isWindow() && !top->inherits("QMenu")) {
+            grabbed = true;
+            QApplication::processEvents();
+            saved = top->grab().save(out);
+        }
+    }
     if (!grabbed)
         std::fprintf(stderr, "ggstudio_screenshot: %s opened no dialog\n", qPrintable(actionName));
     else if (!saved)
