@@ -2538,6 +2538,11 @@ Einschließender Schritt: Seine Transitionen schalten unabhängig davon, was der
         <source>Not effective (%1): generates no code.</source>
         <translation>Nicht wirksam (%1): erzeugt keinen Code.</translation>
     </message>
+    <message>
+        <source>%1 (negated)</source>
+        <extracomment>a negated transition in the Step dock&apos;s lists: the entry, then the mark</extracomment>
+        <translation>%1 (negiert)</translation>
+    </message>
 </context>
 <context>
     <name>editor::StepItem</name>

@@ -2538,6 +2538,11 @@ Etapa encapsulante: sus transiciones se franquean haga lo que haga el comportami
         <source>Not effective (%1): generates no code.</source>
         <translation>No efectiva (%1): no genera código.</translation>
     </message>
+    <message>
+        <source>%1 (negated)</source>
+        <extracomment>a negated transition in the Step dock&apos;s lists: the entry, then the mark</extracomment>
+        <translation>%1 (negada)</translation>
+    </message>
 </context>
 <context>
     <name>editor::StepItem</name>

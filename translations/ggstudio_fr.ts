@@ -2538,6 +2538,11 @@ Macro-étape&#xa0;: ses transitions attendent que le comportement imbriqué soit
         <source>Not effective (%1): generates no code.</source>
         <translation>Non effective (%1)&#xa0;: ne génère aucun code.</translation>
     </message>
+    <message>
+        <source>%1 (negated)</source>
+        <extracomment>a negated transition in the Step dock&apos;s lists: the entry, then the mark</extracomment>
+        <translation>%1 (niée)</translation>
+    </message>
 </context>
 <context>
     <name>editor::StepItem</name>

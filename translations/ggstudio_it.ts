@@ -2538,6 +2538,11 @@ Tappa incapsulante: le sue transizioni scattano qualunque cosa stia facendo il c
         <source>Not effective (%1): generates no code.</source>
         <translation>Non effettiva (%1): non genera codice.</translation>
     </message>
+    <message>
+        <source>%1 (negated)</source>
+        <extracomment>a negated transition in the Step dock&apos;s lists: the entry, then the mark</extracomment>
+        <translation>%1 (negata)</translation>
+    </message>
 </context>
 <context>
     <name>editor::StepItem</name>

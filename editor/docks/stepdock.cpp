@@ -289,6 +289,10 @@ QTreeWidgetItem* StepDock::transitionItem(const core::Transition& transition, bo
         //: an outgoing transition: priority, arrow, target ("1: → F4"); – when it has none
         text = tr("%1: → %2").arg(priority > 0 ? QString::number(priority) : tr("–"), fromStd(transition.target));
     }
+    if (transition.negated && !transition.isFamilyTransition()) {
+        //: a negated transition in the Step dock's lists: the entry, then the mark
+        text = tr("%1 (negated)").arg(text);
+    }
     auto* item = new QTreeWidgetItem({ text, fromStd(transition.condition) });
     item->setData(0, kTransitionIdRole, id);
 

@@ -231,6 +231,15 @@ void TestDocks::stepDockListsTransitionsByPriority()
     QCOMPARE(outgoing->topLevelItem(0)->data(0, Qt::UserRole).toString(), QString("F->D1"));
     auto* incoming = child<QTreeWidget>(&dock, "incomingList");
     QCOMPARE(incoming->topLevelItemCount(), static_cast<int>(document.model().incoming("F1").size()));
+    // F1 -> D1 is negated in the template: the list says so.
+    for (int i = 0; i < outgoing->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = outgoing->topLevelItem(i);
+        const QString id = item->data(0, Qt::UserRole).toString();
+        QCOMPARE(item->text(0).endsWith(QStringLiteral(" (negated)")),
+                 document.model().transition(id.toStdString())->negated);
+        if (id == QLatin1String("F1->D1"))
+            QCOMPARE(item->text(0), QStringLiteral("%1: \u2192 D1 (negated)").arg(document.model().priority("F1->D1")));
+    }
 
     // A link selects its transition.
     outgoing->setCurrentItem(outgoing->topLevelItem(1));
