@@ -2378,6 +2378,14 @@
         <extracomment>a transition of a nested GRAFCET: its number, upstream and downstream steps</extracomment>
         <translation>T%1 (%2 → %3)</translation>
     </message>
+    <message>
+        <source>Outputs and internal variables</source>
+        <translation>Ausgänge und interne Variablen</translation>
+    </message>
+    <message>
+        <source>Written by the program: %1 is not an input</source>
+        <translation>Vom Programm geschrieben: %1 ist kein Eingang</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>

@@ -2378,6 +2378,14 @@
         <extracomment>a transition of a nested GRAFCET: its number, upstream and downstream steps</extracomment>
         <translation>T%1 (%2 → %3)</translation>
     </message>
+    <message>
+        <source>Outputs and internal variables</source>
+        <translation>Sorties et variables internes</translation>
+    </message>
+    <message>
+        <source>Written by the program: %1 is not an input</source>
+        <translation>Écrite par le programme&#xa0;: %1 n&apos;est pas une entrée</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>

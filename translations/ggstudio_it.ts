@@ -2378,6 +2378,14 @@
         <extracomment>a transition of a nested GRAFCET: its number, upstream and downstream steps</extracomment>
         <translation>T%1 (%2 → %3)</translation>
     </message>
+    <message>
+        <source>Outputs and internal variables</source>
+        <translation>Uscite e variabili interne</translation>
+    </message>
+    <message>
+        <source>Written by the program: %1 is not an input</source>
+        <translation>Scritta dal programma: %1 non è un ingresso</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>

@@ -4,6 +4,7 @@
 #include "editor/document.h"
 #include "editor/secondarytext.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/simulation/valuecolours.h"
 #include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
 #include "editor/statenames.h"
@@ -463,11 +464,29 @@ void SimulationDock::buildInputRows()
         return;
     int row = 0;
     m_inputsLayout->addWidget(sectionLabel(tr("Inputs"), m_inputsWidget), row++, 0, 1, 2);
-    for (int i = 0; i < static_cast<int>(simulator->variableNames().size()); ++i) {
+    const int count = static_cast<int>(simulator->variableNames().size());
+    const auto isInput = [simulator](int i) {
+        return simulator->variableKind(static_cast<std::size_t>(i)) == core::VariableKind::Input;
+    };
+    for (int i = 0; i < count; ++i) {
+        if (!isInput(i))
+            continue;
         if (simulator->variableType(static_cast<std::size_t>(i)) == core::IecType::Bool)
             addBoolRow(i, row++);
         else
             addNumberRow(i, row++);
+    }
+    // What the program writes is shown, not set (a scenario may not set it either).
+    bool outputsTitled = false;
+    for (int i = 0; i < count; ++i) {
+        if (isInput(i))
+            continue;
+        if (!outputsTitled) {
+            m_inputsLayout->addWidget(sectionLabel(tr("Outputs and internal variables"), m_inputsWidget), row++, 0, 1,
+                                      2);
+            outputsTitled = true;
+        }
+        addValueRow(i, row++);
     }
     if (simulator->variableNames().empty()) {
         auto* none = new QLabel(tr("The model declares no variables."), m_inputsWidget);
@@ -492,6 +511,7 @@ void SimulationDock::addBoolRow(int index, int row)
 {
     const core::Simulator* simulator = m_session->simulator();
     InputRow input;
+    input.variable = index;
     input.name = QString::fromStdString(simulator->variableNames()[static_cast<std::size_t>(index)]);
     auto* label = new QLabel(input.name, m_inputsWidget);
     if (const core::Variable* variable = m_document->model().variable(input.name.toStdString()))
@@ -529,11 +549,36 @@ void SimulationDock::addBoolRow(int index, int row)
     m_inputRows << input;
 }
 
+void SimulationDock::addValueRow(int index, int row)
+{
+    const core::Simulator* simulator = m_session->simulator();
+    InputRow output;
+    output.variable = index;
+    output.name = QString::fromStdString(simulator->variableNames()[static_cast<std::size_t>(index)]);
+    auto* label = new QLabel(output.name, m_inputsWidget);
+    if (const core::Variable* variable = m_document->model().variable(output.name.toStdString()))
+        label->setToolTip(QString::fromStdString(variable->comment));
+    output.shown = new QLabel(m_inputsWidget);
+    output.shown->setObjectName(QStringLiteral("shown_") + output.name);
+    output.shown->setAlignment(Qt::AlignCenter);
+    output.shown->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("FALSE")) + 18);
+    output.shown->setToolTip(tr("Written by the program: %1 is not an input").arg(output.name));
+    auto* cell = new QWidget(m_inputsWidget);
+    auto* layout = new QHBoxLayout(cell);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(output.shown);
+    layout->addStretch();
+    m_inputsLayout->addWidget(label, row, 0);
+    m_inputsLayout->addWidget(cell, row, 1);
+    m_inputRows << output;
+}
+
 void SimulationDock::addNumberRow(int index, int row)
 {
     const core::Simulator* simulator = m_session->simulator();
     const core::IecType type = simulator->variableType(static_cast<std::size_t>(index));
     InputRow input;
+    input.variable = index;
     input.name = QString::fromStdString(simulator->variableNames()[static_cast<std::size_t>(index)]);
     auto* label = new QLabel(input.name, m_inputsWidget);
     QString toolTip = QString::fromUtf8(core::iecTypeName(type).data(), static_cast<qsizetype>(core::iecTypeName(type).size()));
@@ -697,6 +742,7 @@ void SimulationDock::onStepped()
         return;
     refreshStatus();
     syncCompletes();
+    syncOutputs();
     refreshExplanation();
 
     // Follow the new scans only when the user is looking at the latest ones.
@@ -716,18 +762,42 @@ void SimulationDock::refreshStatus()
                                     QLocale().toString(seconds, 'f', 2)));
 }
 
+void SimulationDock::syncOutputs()
+{
+    const core::Simulator* simulator = m_session->simulator();
+    if (!simulator)
+        return;
+    for (const InputRow& row : std::as_const(m_inputRows)) {
+        if (!row.shown)
+            continue;
+        const core::cond::Value value = simulator->variableValue(static_cast<std::size_t>(row.variable));
+        const bool isBool = simulator->variableType(static_cast<std::size_t>(row.variable)) == core::IecType::Bool;
+        const QString text = isBool ? boolText(boolOf(value)) : QString::fromStdString(core::cond::formatValue(value));
+        if (row.shown->text() == text)
+            continue; // a style sheet costs a restyle: only when the value changes
+        row.shown->setText(text);
+        row.shown->setStyleSheet(isBool ? valueStyleSheet("QLabel", boolOf(value)) : QString());
+    }
+}
+
 void SimulationDock::syncInputs()
 {
     const core::Simulator* simulator = m_session->simulator();
     if (!simulator)
         return;
-    for (int i = 0; i < m_inputRows.size(); ++i) {
-        const InputRow& row = m_inputRows[i];
-        const core::cond::Value value = simulator->variableValue(static_cast<std::size_t>(i));
+    syncOutputs();
+    for (const InputRow& row : std::as_const(m_inputRows)) {
+        const core::cond::Value value = simulator->variableValue(static_cast<std::size_t>(row.variable));
         if (row.toggle) {
             const QSignalBlocker blocker(row.toggle);
-            row.toggle->setChecked(boolOf(value));
-            row.toggle->setText(boolText(boolOf(value)));
+            const bool on = boolOf(value);
+            row.toggle->setChecked(on);
+            row.toggle->setText(boolText(on));
+            // A style sheet costs a restyle: only when the value changes.
+            if (const QVariant shown = row.toggle->property("value"); !shown.isValid() || shown.toBool() != on) {
+                row.toggle->setProperty("value", on);
+                row.toggle->setStyleSheet(valueStyleSheet("QToolButton", on));
+            }
         } else if (auto* spin = qobject_cast<QSpinBox*>(row.editor)) {
             const QSignalBlocker blocker(spin);
             spin->setValue(static_cast<int>(numberOf(value)));
@@ -765,9 +835,7 @@ void SimulationDock::syncCompletes()
         row.output->setProperty("complete", output);
         row.output->setToolTip(tr("%1.Complete = %2 (after the last call of its function block)")
                                    .arg(row.stepId, boolText(output)));
-        row.output->setStyleSheet(QStringLiteral("QLabel { color: white; font-weight: bold; border-radius: 3px; "
-                                                 "background: %1; }")
-                                      .arg(output ? QStringLiteral("#1e9e3e") : QStringLiteral("#9aa1ab")));
+        row.output->setStyleSheet(valueStyleSheet("QLabel", output));
     }
 }
 

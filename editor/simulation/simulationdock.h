@@ -75,10 +75,12 @@ private:
 
     // The widgets of one input row, by Simulator::variableNames() index.
     struct InputRow {
+        int variable = -1; // index among the simulator's variables
         QString name;
         QAbstractButton* toggle = nullptr;
         QAbstractButton* press = nullptr;
         QWidget* editor = nullptr;
+        QLabel* shown = nullptr; // an output or internal variable: its value, read only
     };
     struct CompleteRow {
         QString stepId;
@@ -98,12 +100,16 @@ private:
     void buildInputRows();
     void addBoolRow(int index, int row);
     void addNumberRow(int index, int row);
+    // An output or internal variable: the program writes it, the user watches it.
+    void addValueRow(int index, int row);
     void addCompleteRow(const QString& stepId, int row);
 
     void onActiveChanged(bool active);
     void onRunningChanged(bool running);
     void onStepped();
     void syncInputs();
+    // The values of the outputs and internal variables, after each scan.
+    void syncOutputs();
     void syncCompletes();
     void refreshStatus();
     void refreshExplanation();

@@ -7,6 +7,8 @@
 
 #include "editortestsupport.h"
 
+#include "editor/secondarytext.h"
+#include "editor/simulation/valuecolours.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/stepitem.h"
 #include "editor/chart/transitionitem.h"
@@ -40,6 +42,7 @@
 #include <QStandardPaths>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QRegularExpression>
 #include <QTest>
 #include <QTreeWidget>
 #include <QUndoStack>
@@ -111,6 +114,8 @@ private slots:
     void changingTheModelEndsTheSimulation();
     void inputsMoveTheActiveStepOnTheChart();
     void momentaryPressIsTrueThenFalse();
+    void trueAndFalseAreToldApartByColour();
+    void outputsAreShownNotSet();
     void manualCompleteHoldsAMacroStep();
     void explanationNamesTheReasons();
     void explanationIsInTheUiLanguage();
@@ -326,6 +331,65 @@ void TestSimulation::inputsMoveTheActiveStepOnTheChart()
     count->setValue(42);
     QCOMPARE(m_session->simulator()->variable("BottleCount"), core::cond::Value(std::int64_t{42}));
     QVERIFY(m_dock->statusLabel()->text().contains(QStringLiteral("Scan 3")));
+}
+
+void TestSimulation::trueAndFalseAreToldApartByColour()
+{
+    for (bool value : {true, false}) {
+        const ValueColours colours = valueColours(value);
+        QVERIFY(contrastRatio(colours.text, colours.background) >= kMinimumTextContrast);
+    }
+    QVERIFY(valueColours(true).background != valueColours(false).background);
+
+    startOnRealisticModel();
+    QAbstractButton* toggle = m_dock->toggleButton(QStringLiteral("Stop"));
+    QVERIFY(toggle);
+    const QString falseBackground = valueColours(false).background.name();
+    const QString trueBackground = valueColours(true).background.name();
+    QCOMPARE(toggle->text(), QStringLiteral("FALSE"));
+    QVERIFY2(toggle->styleSheet().contains(falseBackground), qPrintable(toggle->styleSheet()));
+    QTest::mouseClick(toggle, Qt::LeftButton);
+    QCOMPARE(toggle->text(), QStringLiteral("TRUE"));
+    QVERIFY2(toggle->styleSheet().contains(trueBackground), qPrintable(toggle->styleSheet()));
+    // Drawn so: the button's middle has the TRUE colour.
+    const QImage picture = toggle->grab().toImage();
+    QCOMPARE(QColor(picture.pixel(picture.width() / 2, 2)).name(), trueBackground);
+}
+
+void TestSimulation::outputsAreShownNotSet()
+{
+    startOnDrillingCell();
+    const core::Model& model = m_window->document()->model();
+    int outputs = 0;
+    for (const core::Variable& variable : model.variables()) {
+        const QString name = QString::fromStdString(variable.name);
+        auto* shown = m_dock->findChild<QLabel*>(QStringLiteral("shown_") + name);
+        if (variable.kind == core::VariableKind::Input) {
+            QVERIFY2(!shown, qPrintable(name));
+            QVERIFY2(m_dock->toggleButton(name) || m_dock->valueEditor(name), qPrintable(name));
+            continue;
+        }
+        ++outputs;
+        // What the program writes has no toggle: it is shown, with its value.
+        QVERIFY2(shown, qPrintable(name));
+        QVERIFY(!m_dock->toggleButton(name) && !m_dock->pressButton(name) && !m_dock->valueEditor(name));
+        QCOMPARE(shown->text(), QString::fromStdString(core::cond::formatValue(
+                                    m_session->simulator()->variable(variable.name))));
+    }
+    QVERIFY(outputs >= 3);
+    // The values follow the scans: start the machine; each scan the labels
+    // read what the simulator holds, and some output becomes TRUE.
+    QTest::mouseClick(m_dock->toggleButton(QStringLiteral("StartButton")), Qt::LeftButton);
+    bool sawTrue = false;
+    for (int i = 0; i < 40; ++i) {
+        scan();
+        for (QLabel* label : m_dock->findChildren<QLabel*>(QRegularExpression(QStringLiteral("^shown_")))) {
+            const std::string name = label->objectName().mid(6).toStdString();
+            QCOMPARE(label->text(), QString::fromStdString(core::cond::formatValue(m_session->simulator()->variable(name))));
+            sawTrue = sawTrue || label->text() == QLatin1String("TRUE");
+        }
+    }
+    QVERIFY(sawTrue);
 }
 
 void TestSimulation::momentaryPressIsTrueThenFalse()
