@@ -153,11 +153,17 @@ bool ExportActions::confirmErrors(QWidget* parent, const std::vector<core::Diagn
     if (int(errors.size()) > listed)
         lines << tr("… and %n more", nullptr, int(errors.size()) - listed);
 
-    QMessageBox box(QMessageBox::Warning, tr("Export a Model with Errors"),
-                    tr("The model has %n error(s). The generated code marks each one with a comment, "
-                       "but it may not compile or may not behave as intended.",
-                       nullptr, int(errors.size())),
-                    QMessageBox::Cancel, parent);
+    return askExportAnyway(parent, tr("Export a Model with Errors"),
+                           tr("The model has %n error(s). The generated code marks each one with a comment, "
+                              "but it may not compile or may not behave as intended.",
+                              nullptr, int(errors.size())),
+                           lines);
+}
+
+bool ExportActions::askExportAnyway(QWidget* parent, const QString& title, const QString& text,
+                                    const QStringList& lines)
+{
+    QMessageBox box(QMessageBox::Warning, title, text, QMessageBox::Cancel, parent);
     box.setInformativeText(lines.join('\n'));
     QPushButton* exportButton = box.addButton(tr("&Export Anyway"), QMessageBox::AcceptRole);
     box.setDefaultButton(QMessageBox::Cancel);
@@ -197,15 +203,10 @@ bool ExportActions::confirmGGGeneratorLosses(QWidget* parent, const core::Model&
     QStringList lines;
     for (const QString& loss : losses)
         lines << QStringLiteral("• ") + loss;
-    QMessageBox box(QMessageBox::Warning, tr("Export to GG-Generator"),
-                    tr("The GG-Generator file will leave out part of this model. Your model and its own file "
-                       "keep everything."),
-                    QMessageBox::Cancel, parent);
-    box.setInformativeText(lines.join('\n'));
-    QPushButton* exportButton = box.addButton(tr("&Export Anyway"), QMessageBox::AcceptRole);
-    box.setDefaultButton(QMessageBox::Cancel);
-    box.exec();
-    return box.clickedButton() == exportButton;
+    return askExportAnyway(parent, tr("Export to GG-Generator"),
+                           tr("The GG-Generator file will leave out part of this model. Your model and its own "
+                              "file keep everything."),
+                           lines);
 }
 
 void ExportActions::exportPlcOpen()

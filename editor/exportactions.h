@@ -5,6 +5,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <vector>
 
@@ -67,6 +68,8 @@ private:
     void exportChart();
     void print();
 
+    // A warning with the lines as its details, Cancel by default; true for Export Anyway.
+    static bool askExportAnyway(QWidget* parent, const QString& title, const QString& text, const QStringList& lines);
     // The dialect of the last export, or the model's before the first.
     core::Dialect lastDialect() const;
     // The file dialog for a new file, starting in the last export folder

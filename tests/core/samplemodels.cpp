@@ -10,6 +10,13 @@
 
 namespace samples {
 
+core::Variable variable(std::string name, core::IecType type, core::VariableKind kind)
+{
+    core::Variable v{std::move(name), type, "", ""};
+    v.kind = kind;
+    return v;
+}
+
 namespace {
 
 void require(const core::Status& status)

@@ -8,8 +8,12 @@
 
 #include <cstdint>
 #include <random>
+#include <string>
 
 namespace samples {
+
+// A variable with no default value and no comment, of the given kind.
+core::Variable variable(std::string name, core::IecType type, core::VariableKind kind);
 
 // The filling-and-capping machine of the GG-Generator paper: F1-F5 and D3
 // with nested behaviour, F6 hidden, tokens on F1 -> A2 (NOT Stop) and F1 -> F3.

@@ -19,20 +19,13 @@ using namespace core;
 
 namespace {
 
-Variable variable(std::string name, IecType type, VariableKind kind)
-{
-    Variable v{std::move(name), type, "", ""};
-    v.kind = kind;
-    return v;
-}
-
 // F1: 1 --RE Start--> 2 (N Lamp, Count := Count + 1) --5s/X2--> 3 (S Complete).
 Model smallModel()
 {
     Model model;
-    REQUIRE(model.addVariable(variable("Start", IecType::Bool, VariableKind::Input)));
-    REQUIRE(model.addVariable(variable("Lamp", IecType::Bool, VariableKind::Output)));
-    REQUIRE(model.addVariable(variable("Count", IecType::Int, VariableKind::Internal)));
+    REQUIRE(model.addVariable(samples::variable("Start", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Lamp", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.addVariable(samples::variable("Count", IecType::Int, VariableKind::Internal)));
     REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
     REQUIRE(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::Continuous, "N Lamp"},
                                                        {ActionTiming::OnActivation, "Count := Count + 1"}}}));
@@ -109,7 +102,7 @@ TEST_CASE("The intermediate form of a nested GRAFCET", "[nested-program]")
 TEST_CASE("Unusable receptivities and actions are reported with their place", "[nested-program]")
 {
     Model model = smallModel();
-    REQUIRE(model.addVariable(variable("Level", IecType::Int, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Level", IecType::Int, VariableKind::Input)));
     const std::vector<std::pair<std::string, std::string>> actions = {
         {"S Start", "GG413"},            // an input
         {"N Count", "GG414"},            // continuous on INT
@@ -158,7 +151,7 @@ TEST_CASE("Unusable receptivities and actions are reported with their place", "[
 TEST_CASE("A continuous condition may not read the FB's own continuous outputs", "[nested-program]")
 {
     Model model = smallModel();
-    REQUIRE(model.addVariable(variable("Horn", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.addVariable(samples::variable("Horn", IecType::Bool, VariableKind::Output)));
     REQUIRE(model.addGrafcetAction("F1", 3, {ActionTiming::Continuous, "Horn IF NOT Lamp"}));
     const GemmaProgram program = buildGemmaProgram(model);
     CHECK(codes(program) == std::vector<std::string>{"GG421"});

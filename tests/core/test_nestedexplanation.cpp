@@ -5,6 +5,7 @@
 #include "core/formats/modelfiles.h"
 #include "core/model/model.h"
 #include "core/simulation/simulator.h"
+#include "samplemodels.h"
 
 #include <catch2/catch.hpp>
 
@@ -21,20 +22,13 @@ namespace {
 using Kind = ExplanationReason::Kind;
 using NS = NestedTransitionStatus;
 
-Variable variable(std::string name, IecType type, VariableKind kind)
-{
-    Variable v{std::move(name), type, "", ""};
-    v.kind = kind;
-    return v;
-}
-
 // F1 is the initial step. Its GRAFCET: 1 --RE Start--> 2 (N Lamp) --5s/X2--> 3 (S Complete).
 Model timedModel()
 {
     Model model;
-    REQUIRE(model.addVariable(variable("Start", IecType::Bool, VariableKind::Input)));
-    REQUIRE(model.addVariable(variable("Stop", IecType::Bool, VariableKind::Input)));
-    REQUIRE(model.addVariable(variable("Lamp", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.addVariable(samples::variable("Start", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Stop", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Lamp", IecType::Bool, VariableKind::Output)));
     REQUIRE(model.setInitialStep("F1"));
     REQUIRE(model.setCondition("F1->A2", "TRUE"));
     REQUIRE(model.setCondition("F->D1", "Stop"));
@@ -52,8 +46,8 @@ Model timedModel()
 Model readingModel()
 {
     Model model;
-    REQUIRE(model.addVariable(variable("A", IecType::Bool, VariableKind::Input)));
-    REQUIRE(model.addVariable(variable("Speed", IecType::Int, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("A", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Speed", IecType::Int, VariableKind::Input)));
     REQUIRE(model.setInitialStep("F1"));
     REQUIRE(model.setCondition("F1->A2", "TRUE"));
     REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
@@ -252,7 +246,7 @@ TEST_CASE("Nested explanation: a step that is not active does not call its GRAFC
 TEST_CASE("Nested explanation: until stable explains the first evolution", "[simulation][nested-explanation]")
 {
     Model model;
-    REQUIRE(model.addVariable(variable("A", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("A", IecType::Bool, VariableKind::Input)));
     REQUIRE(model.setInitialStep("F1"));
     REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
     REQUIRE(model.addGrafcetStep("F1", {2, false, "", {}}));

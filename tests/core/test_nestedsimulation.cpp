@@ -4,6 +4,7 @@
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
+#include "samplemodels.h"
 
 #include <catch2/catch.hpp>
 
@@ -16,23 +17,16 @@ using namespace core;
 
 namespace {
 
-Variable variable(std::string name, IecType type, VariableKind kind)
-{
-    Variable v{std::move(name), type, "", ""};
-    v.kind = kind;
-    return v;
-}
-
 // F1 is the initial step. Its GRAFCET: 1 --RE Start--> 2 (N Lamp,
 // Count := Count + 1) --5s/X2--> 3 (S Complete). F1 -> A2 waits for Complete;
 // F -> D1 on Stop.
 Model timedModel()
 {
     Model model;
-    REQUIRE(model.addVariable(variable("Start", IecType::Bool, VariableKind::Input)));
-    REQUIRE(model.addVariable(variable("Stop", IecType::Bool, VariableKind::Input)));
-    REQUIRE(model.addVariable(variable("Lamp", IecType::Bool, VariableKind::Output)));
-    REQUIRE(model.addVariable(variable("Count", IecType::Int, VariableKind::Internal)));
+    REQUIRE(model.addVariable(samples::variable("Start", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Stop", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Lamp", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.addVariable(samples::variable("Count", IecType::Int, VariableKind::Internal)));
     REQUIRE(model.setInitialStep("F1"));
     REQUIRE(model.setCondition("F1->A2", "TRUE"));
     REQUIRE(model.setCondition("F->D1", "Stop"));
@@ -101,7 +95,7 @@ TEST_CASE("An edge on an FB's own continuous output reads its VAR_OUTPUT, as the
     // scan): T1 fires in the entry scan. The global Lamp, written after
     // END_CASE, was FALSE there: reading it, the edge would never be seen.
     Model model;
-    REQUIRE(model.addVariable(variable("Lamp", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.addVariable(samples::variable("Lamp", IecType::Bool, VariableKind::Output)));
     REQUIRE(model.setInitialStep("F1"));
     REQUIRE(model.setCondition("F1->A2", "FALSE")); // F1 stays
     REQUIRE(model.addGrafcetStep("F1", {1, true, "", {{ActionTiming::Continuous, "N Lamp"}}}));
@@ -121,8 +115,8 @@ TEST_CASE("An edge on an FB's own continuous output reads its VAR_OUTPUT, as the
 TEST_CASE("Simultaneous divergence and convergence; a step both left and entered stays", "[simulation][nested-simulation]")
 {
     Model model;
-    REQUIRE(model.addVariable(variable("Go", IecType::Bool, VariableKind::Input)));
-    REQUIRE(model.addVariable(variable("Count", IecType::Int, VariableKind::Internal)));
+    REQUIRE(model.addVariable(samples::variable("Go", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Count", IecType::Int, VariableKind::Internal)));
     REQUIRE(model.setInitialStep("F1"));
     REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
     REQUIRE(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::OnActivation, "Count := Count + 1"}}}));
@@ -148,7 +142,7 @@ TEST_CASE("Simultaneous divergence and convergence; a step both left and entered
 TEST_CASE("Until stable: the search goes on, bounded, and reports Unstable", "[simulation][nested-simulation]")
 {
     Model model;
-    REQUIRE(model.addVariable(variable("A", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("A", IecType::Bool, VariableKind::Input)));
     REQUIRE(model.setInitialStep("F1"));
     REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
     REQUIRE(model.addGrafcetStep("F1", {2, false, "", {}}));
@@ -311,7 +305,7 @@ TEST_CASE("A recorded session writes nested expectations and outputs, and replay
 TEST_CASE("A recorded session writes Unstable when it changes", "[simulation][nested-simulation][scenario]")
 {
     Model model;
-    REQUIRE(model.addVariable(variable("A", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("A", IecType::Bool, VariableKind::Input)));
     REQUIRE(model.setInitialStep("F1"));
     REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
     REQUIRE(model.addGrafcetStep("F1", {2, false, "", {}}));
