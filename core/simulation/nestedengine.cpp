@@ -441,6 +441,36 @@ void NestedEngine::explainNode(const cond::Expression& expression, int node, con
     reasons.push_back(std::move(reason));
 }
 
+namespace {
+
+// The transition's identity in an explanation; status and reasons to come.
+NestedTransitionExplanation explanationOf(const NestedTransition& transition)
+{
+    NestedTransitionExplanation explanation;
+    explanation.number = transition.number;
+    explanation.upstream = transition.upstream;
+    explanation.downstream = transition.downstream;
+    explanation.receptivity = transition.text;
+    return explanation;
+}
+
+} // namespace
+
+std::vector<NestedTransitionExplanation> NestedEngine::explainNotCalled(const std::string& stepId) const
+{
+    ExplanationReason notCalled;
+    notCalled.kind = ExplanationReason::Kind::NotCalled;
+    notCalled.subject = stepId;
+    std::vector<NestedTransitionExplanation> result;
+    for (const NestedTransition& transition : m_grafcet->transitions) {
+        NestedTransitionExplanation explanation = explanationOf(transition);
+        explanation.status = NestedTransitionStatus::NotCalled;
+        explanation.reasons.push_back(notCalled);
+        result.push_back(std::move(explanation));
+    }
+    return result;
+}
+
 std::vector<NestedTransitionExplanation> NestedEngine::explainNextCall(bool initialization, std::int64_t nowMs,
                                                                        NestedGlobals& globals,
                                                                        std::vector<int>* situation) const
@@ -456,11 +486,7 @@ std::vector<NestedTransitionExplanation> NestedEngine::explainNextCall(bool init
 
     std::vector<NestedTransitionExplanation> result;
     for (const NestedTransition& transition : m_grafcet->transitions) {
-        NestedTransitionExplanation explanation;
-        explanation.number = transition.number;
-        explanation.upstream = transition.upstream;
-        explanation.downstream = transition.downstream;
-        explanation.receptivity = transition.text;
+        NestedTransitionExplanation explanation = explanationOf(transition);
         ExplanationReason inactive;
         inactive.kind = ExplanationReason::Kind::StepsInactive;
         for (int step : transition.upstream) {

@@ -99,6 +99,9 @@ public:
     // active steps the evolution starts from.
     std::vector<NestedTransitionExplanation> explainNextCall(bool initialization, std::int64_t nowMs,
                                                              NestedGlobals& globals, std::vector<int>* situation) const;
+    // Every transition NotCalled: the GEMMA step `stepId` is not active, so
+    // its function block does not run next scan.
+    std::vector<NestedTransitionExplanation> explainNotCalled(const std::string& stepId) const;
 
 private:
     struct Timer {

@@ -247,24 +247,27 @@ struct Simulator::Impl {
     void callFunctionBlock(const CompiledStep& step, bool initialization);
     void writeContinuousOutputs();
     void updateEdgeMemories();
-    bool evaluate(const CompiledTransition& transition, const std::vector<char>& tokenState) const;
-    cond::Value nodeReading(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
+    // What a condition reads: the tokens and the variables. A scan reads its
+    // own; explain() those it predicts for the next scan (the entry block's
+    // reset tokens, what a nested GRAFCET's stored actions write first).
+    struct ConditionInputs {
+        const std::vector<char>& tokens;
+        const std::vector<Cell>& values;
+    };
+    bool evaluate(const CompiledTransition& transition, const ConditionInputs& inputs) const;
+    cond::Value nodeReading(const CompiledTransition& transition, int node, const ConditionInputs& inputs) const;
     bool fbComplete(int nestedIndex) const;
     bool predictNestedCall(const CompiledStep& step, std::vector<Cell>& scratch) const;
-    // explain(): the values the next scan's conditions read, when they differ
-    // from `values` (a nested GRAFCET's stored actions run before them).
-    mutable const std::vector<Cell>* explainValues = nullptr;
-    const std::vector<Cell>& readValues() const { return explainValues ? *explainValues : values; }
     int activeIndexFor(int number) const;
     void scan(ScanRecord* record);
     void fillRecordAfter(ScanRecord& record, const std::vector<Cell>& outputsBefore) const;
     void collectChanges(ScanRecord* record);
     int stepIndexOfNested(std::string_view stepId) const;
     std::vector<ExplanationReason> explainFalse(const CompiledTransition& transition,
-                                                const std::vector<char>& tokenState) const;
-    void explainNode(const CompiledTransition& transition, const std::vector<char>& tokenState, int node,
+                                                const ConditionInputs& inputs) const;
+    void explainNode(const CompiledTransition& transition, const ConditionInputs& inputs, int node,
                      std::vector<ExplanationReason>& reasons) const;
-    ConditionReading reading(const CompiledTransition& transition, int node, const std::vector<char>& tokenState) const;
+    ConditionReading reading(const CompiledTransition& transition, int node, const ConditionInputs& inputs) const;
 };
 
 CompiledProgram::CompiledProgram(const Model& model)
@@ -629,23 +632,23 @@ std::int64_t safeMod(std::int64_t a, std::int64_t b)
 
 } // namespace
 
-bool Simulator::Impl::evaluate(const CompiledTransition& transition, const std::vector<char>& tokenState) const
+bool Simulator::Impl::evaluate(const CompiledTransition& transition, const ConditionInputs& inputs) const
 {
     const CompiledCondition& condition = transition.condition;
     if (condition.alwaysFalse)
         return false;
     if (condition.fallback) {
         return cond::isTrue(cond::evaluate(transition.readable, [&](int node) {
-            return nodeReading(transition, node, tokenState);
+            return nodeReading(transition, node, inputs);
         }));
     }
     // `next` is the first free cell; the top of the stack is next[-1].
     Cell* next = stack.data();
-    const Cell* vars = readValues().data();
+    const Cell* vars = inputs.values.data();
     for (const Instruction& in : condition.code) {
         switch (in.op) {
         case Op::PushVariable: *next++ = vars[in.slot]; break;
-        case Op::PushToken: (next++)->i = tokenState[static_cast<std::size_t>(in.slot)]; break;
+        case Op::PushToken: (next++)->i = inputs.tokens[static_cast<std::size_t>(in.slot)]; break;
         case Op::PushConstant: *next++ = in.constant; break;
         case Op::IntToReal: next[-1].r = static_cast<double>(next[-1].i); break;
         case Op::Not: next[-1].i = !next[-1].i; break;
@@ -689,14 +692,14 @@ bool Simulator::Impl::evaluate(const CompiledTransition& transition, const std::
 }
 
 cond::Value Simulator::Impl::nodeReading(const CompiledTransition& transition, int node,
-                                         const std::vector<char>& tokenState) const
+                                         const ConditionInputs& inputs) const
 {
     const auto index = static_cast<std::size_t>(node);
     if (index < transition.nodeToken.size() && transition.nodeToken[index] >= 0)
-        return tokenState[static_cast<std::size_t>(transition.nodeToken[index])] != 0;
+        return inputs.tokens[static_cast<std::size_t>(transition.nodeToken[index])] != 0;
     if (index < transition.nodeVariable.size() && transition.nodeVariable[index] >= 0) {
         const auto slot = static_cast<std::size_t>(transition.nodeVariable[index]);
-        return toValue(readValues()[slot], variableKinds[slot]);
+        return toValue(inputs.values[slot], variableKinds[slot]);
     }
     return false;
 }
@@ -803,7 +806,7 @@ void Simulator::Impl::scan(ScanRecord* record)
             complete = completeOutput[nested] != 0;
         }
         for (const CompiledTransition& transition : step.transitions) {
-            if (evaluate(transition, tokenValues) && (!transition.waitsForComplete || complete)) {
+            if (evaluate(transition, {tokenValues, values}) && (!transition.waitsForComplete || complete)) {
                 state = transition.targetNumber;
                 active = activeIndexFor(state);
                 entry = true;
@@ -865,11 +868,11 @@ int Simulator::Impl::stepIndexOfNested(std::string_view stepId) const
 
 // Speed reads 3; Stop_F1_3_MEM reads FALSE and stores NOT Stop.
 ConditionReading Simulator::Impl::reading(const CompiledTransition& transition, int node,
-                                          const std::vector<char>& tokenState) const
+                                          const ConditionInputs& inputs) const
 {
     const auto index = static_cast<std::size_t>(node);
     ConditionReading result;
-    result.value = cond::formatValue(nodeReading(transition, node, tokenState));
+    result.value = cond::formatValue(nodeReading(transition, node, inputs));
     const int token = transition.nodeToken[index];
     if (token >= 0) {
         const CompiledToken& t = tokens[static_cast<std::size_t>(token)];
@@ -887,7 +890,7 @@ ConditionReading Simulator::Impl::reading(const CompiledTransition& transition, 
 // Why the subtree at `node` has the value it has: logical operators descend
 // to the operands that decide the result, everything else is explained by
 // its text, its value and the values it reads.
-void Simulator::Impl::explainNode(const CompiledTransition& transition, const std::vector<char>& tokenState, int node,
+void Simulator::Impl::explainNode(const CompiledTransition& transition, const ConditionInputs& inputs, int node,
                                   std::vector<ExplanationReason>& reasons) const
 {
     const cond::Expression& expression = transition.readable;
@@ -895,12 +898,12 @@ void Simulator::Impl::explainNode(const CompiledTransition& transition, const st
     auto valueOf = [&](int at) {
         cond::Expression sub = expression;
         sub.root = at;
-        return cond::isTrue(cond::evaluate(sub, [&](int v) { return nodeReading(transition, v, tokenState); }));
+        return cond::isTrue(cond::evaluate(sub, [&](int v) { return nodeReading(transition, v, inputs); }));
     };
     ExplanationReason reason;
     if (n.kind == cond::NodeKind::Variable) {
         reason.kind = ExplanationReason::Kind::Reading;
-        reason.readings.push_back(reading(transition, node, tokenState));
+        reason.readings.push_back(reading(transition, node, inputs));
         reasons.push_back(std::move(reason));
         return;
     }
@@ -911,7 +914,7 @@ void Simulator::Impl::explainNode(const CompiledTransition& transition, const st
         return;
     }
     if (n.kind == cond::NodeKind::Unary && n.unaryOp == cond::UnaryOp::Not) {
-        explainNode(transition, tokenState, n.operand, reasons);
+        explainNode(transition, inputs, n.operand, reasons);
         return;
     }
     if (n.kind == cond::NodeKind::Binary
@@ -922,13 +925,13 @@ void Simulator::Impl::explainNode(const CompiledTransition& transition, const st
         const bool onlyDeciding = value == deciding;
         for (int operand : {n.left, n.right}) {
             if (!onlyDeciding || valueOf(operand) == deciding)
-                explainNode(transition, tokenState, operand, reasons);
+                explainNode(transition, inputs, operand, reasons);
         }
         return;
     }
     if (n.kind == cond::NodeKind::Binary && n.binaryOp == cond::BinaryOp::Xor) {
-        explainNode(transition, tokenState, n.left, reasons);
-        explainNode(transition, tokenState, n.right, reasons);
+        explainNode(transition, inputs, n.left, reasons);
+        explainNode(transition, inputs, n.right, reasons);
         return;
     }
     // A comparison (or anything else): "Speed > 10 is FALSE (Speed = 3)".
@@ -943,9 +946,9 @@ void Simulator::Impl::explainNode(const CompiledTransition& transition, const st
     };
     reason.kind = ExplanationReason::Kind::Expression;
     reason.subject = cond::print(sub, options);
-    reason.value = cond::formatValue(cond::evaluate(sub, [&](int v) { return nodeReading(transition, v, tokenState); }));
+    reason.value = cond::formatValue(cond::evaluate(sub, [&](int v) { return nodeReading(transition, v, inputs); }));
     for (int v : cond::variableNodes(sub)) { // walks the subtree only
-        ConditionReading operand = reading(transition, v, tokenState);
+        ConditionReading operand = reading(transition, v, inputs);
         if (std::find(reason.readings.begin(), reason.readings.end(), operand) == reason.readings.end())
             reason.readings.push_back(std::move(operand));
     }
@@ -953,11 +956,11 @@ void Simulator::Impl::explainNode(const CompiledTransition& transition, const st
 }
 
 std::vector<ExplanationReason> Simulator::Impl::explainFalse(const CompiledTransition& transition,
-                                                             const std::vector<char>& tokenState) const
+                                                             const ConditionInputs& inputs) const
 {
     std::vector<ExplanationReason> reasons;
     if (!transition.readable.empty())
-        explainNode(transition, tokenState, transition.readable.root, reasons);
+        explainNode(transition, inputs, transition.readable.root, reasons);
     return reasons;
 }
 
@@ -1302,23 +1305,16 @@ std::vector<TransitionExplanation> Simulator::explain() const
     const CompiledStep& step = impl.steps[static_cast<std::size_t>(impl.active)];
     // The next scan as it will start: the entry block resets the tokens, the FB yields Complete.
     std::vector<char> tokenState = impl.tokenValues;
+    std::vector<Cell> nextValues = impl.values;
     bool complete = false;
-    std::vector<Cell> afterCall;
-    struct ReadingGuard {
-        const Impl& impl;
-        ~ReadingGuard() { impl.explainValues = nullptr; }
-    } guard{impl};
     if (step.nestedIndex >= 0) {
         if (impl.entry)
             std::fill_n(tokenState.begin() + step.firstToken, step.tokenCount, 0);
         // A nested GRAFCET runs first: Complete is what it yields, the
         // conditions read what its stored actions wrote.
-        if (impl.engines[static_cast<std::size_t>(step.nestedIndex)]) {
-            afterCall = impl.values;
-            impl.explainValues = &afterCall;
-        }
-        complete = impl.predictNestedCall(step, afterCall);
+        complete = impl.predictNestedCall(step, nextValues);
     }
+    const Impl::ConditionInputs inputs{tokenState, nextValues};
     ExplanationReason completeFalse;
     completeFalse.kind = ExplanationReason::Kind::CompleteFalse;
     completeFalse.subject = step.source->id;
@@ -1334,9 +1330,9 @@ std::vector<TransitionExplanation> Simulator::explain() const
         if (!source.conditionUsable) {
             explanation.status = TransitionStatus::Unusable;
             explanation.reasons = unusableReasons(source);
-        } else if (!impl.evaluate(transition, tokenState)) {
+        } else if (!impl.evaluate(transition, inputs)) {
             explanation.status = TransitionStatus::ConditionFalse;
-            explanation.reasons = impl.explainFalse(transition, tokenState);
+            explanation.reasons = impl.explainFalse(transition, inputs);
             if (transition.waitsForComplete && !complete)
                 explanation.reasons.push_back(completeFalse);
         } else if (transition.waitsForComplete && !complete) {
@@ -1371,19 +1367,7 @@ NestedExplanation Simulator::explainNested(std::string_view stepId) const
     result.called = impl.active >= 0 && impl.steps[static_cast<std::size_t>(impl.active)].nestedIndex == index;
     if (!result.called) {
         result.situation = engine.activeSteps();
-        ExplanationReason notCalled;
-        notCalled.kind = ExplanationReason::Kind::NotCalled;
-        notCalled.subject = result.stepId;
-        for (const NestedTransition& transition : engine.grafcet().transitions) {
-            NestedTransitionExplanation explanation;
-            explanation.number = transition.number;
-            explanation.upstream = transition.upstream;
-            explanation.downstream = transition.downstream;
-            explanation.receptivity = transition.text;
-            explanation.status = NestedTransitionStatus::NotCalled;
-            explanation.reasons.push_back(notCalled);
-            result.transitions.push_back(std::move(explanation));
-        }
+        result.transitions = engine.explainNotCalled(result.stepId);
         return result;
     }
     result.initialization = impl.entry;
