@@ -1271,13 +1271,15 @@ std::string Simulator::lastFired() const
 
 namespace {
 
-// The errors that make a condition unusable, with what the editor needs to
-// word them as the checks' diagnostics of the same code.
-std::vector<ExplanationReason> unusableReasons(const GemmaTransition& transition)
+// The errors among `problems` that `concerns` picks, which make a condition
+// or receptivity unusable, with what the editor needs to word them as the
+// checks' diagnostics of the same code.
+template <typename Concerns>
+std::vector<ExplanationReason> unusableReasons(const std::vector<GemmaProblem>& problems, Concerns concerns)
 {
     std::vector<ExplanationReason> reasons;
-    for (const GemmaProblem& problem : transition.problems) {
-        if (problem.kind != GemmaProblem::Kind::Error)
+    for (const GemmaProblem& problem : problems) {
+        if (problem.kind != GemmaProblem::Kind::Error || !concerns(problem))
             continue;
         ExplanationReason reason;
         reason.kind = ExplanationReason::Kind::Unusable;
@@ -1286,7 +1288,7 @@ std::vector<ExplanationReason> unusableReasons(const GemmaTransition& transition
         reason.message = problem.message;
         reasons.push_back(std::move(reason));
     }
-    if (reasons.empty()) { // not expected: an unusable condition has an error
+    if (reasons.empty()) { // not expected: an unusable text has an error
         ExplanationReason unknown;
         unknown.kind = ExplanationReason::Kind::Unusable;
         reasons.push_back(std::move(unknown));
@@ -1329,7 +1331,7 @@ std::vector<TransitionExplanation> Simulator::explain() const
         explanation.waitsForComplete = source.waitsForComplete;
         if (!source.conditionUsable) {
             explanation.status = TransitionStatus::Unusable;
-            explanation.reasons = unusableReasons(source);
+            explanation.reasons = unusableReasons(source.problems, [](const GemmaProblem&) { return true; });
         } else if (!impl.evaluate(transition, inputs)) {
             explanation.status = TransitionStatus::ConditionFalse;
             explanation.reasons = impl.explainFalse(transition, inputs);
@@ -1379,22 +1381,9 @@ NestedExplanation Simulator::explainNested(std::string_view stepId) const
     for (NestedTransitionExplanation& explanation : result.transitions) {
         if (explanation.status != NestedTransitionStatus::Unusable)
             continue;
-        for (const GemmaProblem& problem : impl.program.problems) {
-            if (problem.kind != GemmaProblem::Kind::Error || problem.nestedTransition != explanation.number
-                || !equalsIgnoreCase(problem.element, result.stepId))
-                continue;
-            ExplanationReason reason;
-            reason.kind = ExplanationReason::Kind::Unusable;
-            reason.code = problem.code;
-            reason.arguments = problem.arguments;
-            reason.message = problem.message;
-            explanation.reasons.push_back(std::move(reason));
-        }
-        if (explanation.reasons.empty()) { // not expected: an unusable receptivity has an error
-            ExplanationReason unknown;
-            unknown.kind = ExplanationReason::Kind::Unusable;
-            explanation.reasons.push_back(std::move(unknown));
-        }
+        explanation.reasons = unusableReasons(impl.program.problems, [&](const GemmaProblem& problem) {
+            return problem.nestedTransition == explanation.number && equalsIgnoreCase(problem.element, result.stepId);
+        });
     }
     return result;
 }
