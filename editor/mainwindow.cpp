@@ -185,37 +185,41 @@ void MainWindow::createDocks()
 namespace {
 
 // The docks by object name, in the order of MainWindow::docks(), with their
-// titles and where the default layout puts them: Step, Transition,
-// Simulation on the right, tabbed; Variables, Problems, Structured Text
-// below, tabbed, each group with its first dock in front.
+// titles and where the default layout puts them. The GEMMA sheet is wider
+// than high, but less so than a screen: a dock below the chart takes height
+// the fitted chart needs, while the side has width to spare. So every dock
+// goes in one column on the right: Step, Transition and Simulation tabbed
+// above, Variables, Problems and Structured Text tabbed below, each group
+// with its first dock in front.
+enum class DockGroup { Upper, Lower };
 struct DockPlace {
     const char* name;
     QString (*title)();
-    Qt::DockWidgetArea area;
+    DockGroup group;
 };
 constexpr DockPlace kDockPlaces[] = {
-    {"stepDock", &StepDock::title, Qt::RightDockWidgetArea},
-    {"transitionDock", &TransitionDock::title, Qt::RightDockWidgetArea},
-    {"simulationDock", &SimulationDock::title, Qt::RightDockWidgetArea},
-    {"variablesDock", &VariablesDock::title, Qt::BottomDockWidgetArea},
-    {"problemsDock", &ProblemsDock::title, Qt::BottomDockWidgetArea},
-    {"stPreviewDock", &StPreviewDock::title, Qt::BottomDockWidgetArea},
+    {"stepDock", &StepDock::title, DockGroup::Upper},
+    {"transitionDock", &TransitionDock::title, DockGroup::Upper},
+    {"simulationDock", &SimulationDock::title, DockGroup::Upper},
+    {"variablesDock", &VariablesDock::title, DockGroup::Lower},
+    {"problemsDock", &ProblemsDock::title, DockGroup::Lower},
+    {"stPreviewDock", &StPreviewDock::title, DockGroup::Lower},
 };
 
-Qt::DockWidgetArea defaultArea(const QDockWidget* dock)
+DockGroup defaultGroup(const QDockWidget* dock)
 {
     for (const DockPlace& place : kDockPlaces) {
         if (dock->objectName() == QLatin1String(place.name))
-            return place.area;
+            return place.group;
     }
-    return Qt::RightDockWidgetArea;
+    return DockGroup::Upper;
 }
 
-// The first dock of its area in the default layout.
+// The first dock of its group in the default layout.
 bool isDefaultFront(const DockPlace& place)
 {
     return &place == std::find_if(std::cbegin(kDockPlaces), std::cend(kDockPlaces),
-                                  [&place](const DockPlace& candidate) { return candidate.area == place.area; });
+                                  [&place](const DockPlace& candidate) { return candidate.group == place.group; });
 }
 
 } // namespace
@@ -243,19 +247,27 @@ void MainWindow::createDockFrames()
     arrangeDocks(m_dockFrames);
 }
 
-// The docks of each area tabbed behind its first (`docks` in the order of
-// docks(); the frames may be fewer).
+// The docks of each group tabbed behind its first, the lower group's front
+// split below the upper one's (`docks` in the order of docks(); the frames
+// may be fewer). The fronts are split before anything is tabbed: Qt adds a
+// dock split from a tabbed one as one more tab.
 void MainWindow::arrangeDocks(const QList<QDockWidget*>& docks)
 {
-    std::map<Qt::DockWidgetArea, QDockWidget*> fronts;
-    for (QDockWidget* dock : docks) {
-        const Qt::DockWidgetArea area = defaultArea(dock);
-        addDockWidget(area, dock);
-        const auto [front, first] = fronts.try_emplace(area, dock);
-        if (!first)
-            tabifyDockWidget(front->second, dock);
+    std::map<DockGroup, QDockWidget*> fronts;
+    for (QDockWidget* dock : docks)
+        fronts.try_emplace(defaultGroup(dock), dock);
+    const auto upper = fronts.find(DockGroup::Upper);
+    for (const auto& [group, front] : fronts) {
+        addDockWidget(Qt::RightDockWidgetArea, front);
+        if (group == DockGroup::Lower && upper != fronts.end())
+            splitDockWidget(upper->second, front, Qt::Vertical);
     }
-    for (const auto& [area, front] : fronts)
+    for (QDockWidget* dock : docks) {
+        QDockWidget* front = fronts.at(defaultGroup(dock));
+        if (dock != front)
+            tabifyDockWidget(front, dock);
+    }
+    for (const auto& [group, front] : fronts)
         front->raise();
 }
 
@@ -305,15 +317,15 @@ void MainWindow::replaceDockFrames()
     const QByteArray savedLayout = std::exchange(m_framesLayout, {});
     const QDockWidget* stepFrame = dockNamed(QStringLiteral("stepDock"));
     const QDockWidget* variablesFrame = dockNamed(QStringLiteral("variablesDock"));
-    const int rightWidth = stepFrame ? stepFrame->width() : 0;
-    const int bottomHeight = variablesFrame ? variablesFrame->height() : 0;
+    const int columnWidth = stepFrame ? stepFrame->width() : 0;
+    const int lowerHeight = variablesFrame ? variablesFrame->height() : 0;
     for (QDockWidget* dock : docks())
         m_viewMenu->removeAction(dock->toggleViewAction());
     deleteDocks();
     createDocks();
     if (savedLayout.isEmpty() || !restoreState(savedLayout)) {
-        resizeDocks({m_stepDock}, {rightWidth}, Qt::Horizontal);
-        resizeDocks({m_variablesDock}, {bottomHeight}, Qt::Vertical);
+        resizeDocks({m_stepDock}, {columnWidth}, Qt::Horizontal);
+        resizeDocks({m_variablesDock}, {lowerHeight}, Qt::Vertical);
     }
     applyEditingLock();
     m_viewMenu->insertActions(m_dockActionsEnd, toggleViewActions());
@@ -575,18 +587,17 @@ void MainWindow::createStatusBar()
     statusBar()->addPermanentWidget(m_zoomIndicator);
 }
 
-// Docks sized for the screen: the chart sheet is wider than high, so on a
-// 1366 x 768 laptop the height is what limits it: the bottom docks start
-// low (they are tabbed and can be raised by dragging).
+// The dock column sized for the screen: the fitted chart is limited by its
+// height, which the column leaves whole, so the column takes the width the
+// chart cannot use (about 28 %), and its lower group a little less than half
+// of it.
 void MainWindow::applyDefaultLayout()
 {
     const QSize window = size();
-    const int rightWidth = std::clamp(window.width() * 26 / 100, 320, 440);
-    // At least what the Problems dock needs below its tab bar, so that the
-    // docks filling in after the first frame (DockContents) do not push the chart.
-    const int bottomHeight = std::clamp(window.height() * 21 / 100, 180, 320);
-    resizeDocks({dockNamed(QStringLiteral("stepDock"))}, {rightWidth}, Qt::Horizontal);
-    resizeDocks({dockNamed(QStringLiteral("variablesDock"))}, {bottomHeight}, Qt::Vertical);
+    const int columnWidth = std::clamp(window.width() * 28 / 100, 340, 540);
+    const int lowerHeight = std::clamp(window.height() * 42 / 100, 200, 480);
+    resizeDocks({dockNamed(QStringLiteral("stepDock"))}, {columnWidth}, Qt::Horizontal);
+    resizeDocks({dockNamed(QStringLiteral("variablesDock"))}, {lowerHeight}, Qt::Vertical);
 }
 
 void MainWindow::restoreLayout()

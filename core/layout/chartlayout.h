@@ -81,7 +81,7 @@ struct ChartLayout {
 inline constexpr double kTransitionBarLength = 20;
 inline constexpr double kMinTransitionLabelWidth = 160;
 inline constexpr double kMaxTransitionLabelWidth = 240;
-inline constexpr double kTransitionLabelHeight = 16;
+inline constexpr double kTransitionLabelHeight = 18;
 
 // The layout of the fixed template, built on first use.
 const ChartLayout& templateLayout();

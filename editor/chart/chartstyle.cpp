@@ -40,7 +40,7 @@ QColor frameBorderColor(core::Family family)
 // Built once, at the first use (a QApplication exists by then).
 const QFont& font()
 {
-    static const QFont font = makeFont(12);
+    static const QFont font = makeFont(kFontSize);
     return font;
 }
 
@@ -59,7 +59,7 @@ double advance(const QString& text)
 
 double stepIdScale(double boxSize)
 {
-    return boxSize >= 60 ? 22.0 / 12.0 : 15.0 / 12.0;
+    return (boxSize >= 60 ? 22.0 : 15.0) / kFontSize;
 }
 
 void drawText(QPainter* painter, const QRectF& rect, int flags, const QString& text, double scale)

@@ -9,9 +9,9 @@
 class QPainter;
 
 // Colours, pen widths and fonts of the chart, in one place so the items
-// agree. Sizes are in scene units: the template sheet is 1500 x 960, so a
-// 12-unit font still reads at about 9 px when the sheet is fitted on a
-// 1366 x 768 screen.
+// agree. Sizes are in scene units: the template sheet is 1500 x 960, fitted
+// at about 60 % on a 1366 x 768 screen (the docks beside it, none below), so
+// the 14-unit labels read at 8 px or more there.
 namespace editor::chartstyle {
 
 inline constexpr double kStrokeWidth = 1.6;
@@ -27,6 +27,7 @@ inline constexpr double kEnclosingMark = 8; // leg length of an enclosing step's
 inline constexpr double kBadgeRadius = 7;
 inline constexpr double kOverlineWidth = 1.4; // the overline on a negated transition's priority
 inline constexpr double kOverlineGap = 1.6;
+inline constexpr double kNegatedBadgePadding = 3; // around a negated transition's priority and its overline
 inline constexpr double kFiredWidth = 3.2;     // the route of the transition that fired last (simulation)
 inline constexpr double kTokenRadius = 3.6;    // a token's dot on its transition bar (simulation)
 inline constexpr double kCompleteBadgeSize = 14; // the "C" badge of a nested step (simulation)
@@ -48,7 +49,7 @@ inline QColor falseMarkColor() { return QColor(0x9a, 0xa1, 0xab); }
 QColor frameFillColor(core::Family family);
 QColor frameBorderColor(core::Family family);
 
-// All the chart's text is one font, the window's own face at 12 units:
+// All the chart's text is one font, the window's own face at kFontSize units:
 // the transition labels at that size, step ids, badges and family titles
 // drawn larger (or smaller) by scaling. Another size or weight would be a
 // font engine of its own, and a bold one another face too: fontconfig
@@ -57,12 +58,13 @@ QColor frameBorderColor(core::Family family);
 // callgrind). The chart is drawn scaled anyway, so scaled text looks as a
 // bigger font would; emphasis comes from size and colour, and step numbers
 // are regular, as in the figures of IEC 60848.
+inline constexpr int kFontSize = 14;
 const QFont& font();
 // Scales of font() for a step's id (larger in the big hub steps), a badge's
 // letter and a family frame's title.
 double stepIdScale(double boxSize);
-inline constexpr double kBadgeScale = 11.0 / 12.0;
-inline constexpr double kTitleScale = 15.0 / 12.0;
+inline constexpr double kBadgeScale = 11.0 / kFontSize;
+inline constexpr double kTitleScale = 15.0 / kFontSize;
 // The advance of `text` in font(). The short texts every label repeats
 // ("2", "2: ") are measured once: each measurement shapes its text anew,
 // and the template's 34 labels are mostly a priority alone.

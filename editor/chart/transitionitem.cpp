@@ -130,15 +130,17 @@ void TransitionItem::updateLabel()
     // Each measurement shapes its text anew: none twice for the same text (a
     // label is often its priority alone).
     const QString prefix = m_priorityText + m_separator;
-    const double prefixWidth = prefix.isEmpty() ? 0.0 : chartstyle::advance(prefix);
+    const double badgePadding = priorityOverlined() ? 2 * chartstyle::kNegatedBadgePadding : 0.0;
+    const double prefixWidth = (prefix.isEmpty() ? 0.0 : chartstyle::advance(prefix)) + badgePadding;
     m_elidedCondition.clear();
     if (!m_conditionText.isEmpty()) {
         const QFontMetricsF metrics(chartstyle::font());
         m_elidedCondition =
             metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, m_labelRect.width() - prefixWidth));
     }
-    m_priorityWidth = m_separator.isEmpty() ? prefixWidth : chartstyle::advance(m_priorityText);
-    m_shownWidth = m_elidedCondition.isEmpty() ? prefixWidth : chartstyle::advance(prefix + m_elidedCondition);
+    m_priorityWidth = m_separator.isEmpty() ? prefixWidth - badgePadding : chartstyle::advance(m_priorityText);
+    m_shownWidth = m_elidedCondition.isEmpty() ? prefixWidth
+                                               : chartstyle::advance(prefix + m_elidedCondition) + badgePadding;
 }
 
 QString TransitionItem::labelText() const
@@ -155,6 +157,21 @@ QRectF TransitionItem::labelTextRect() const
     else if (m_labelAlignment == Qt::AlignHCenter)
         x = m_labelRect.center().x() - width / 2;
     return {x, m_labelRect.top(), width, m_labelRect.height()};
+}
+
+QRectF TransitionItem::priorityRect() const
+{
+    if (!priorityShown())
+        return {};
+    const QFontMetricsF metrics(chartstyle::font());
+    const QRectF text = labelTextRect();
+    const double baseline = text.center().y() + (metrics.ascent() - metrics.descent()) / 2;
+    if (!priorityOverlined())
+        return {text.left(), baseline - metrics.ascent(), m_priorityWidth, metrics.height()};
+    const double padding = chartstyle::kNegatedBadgePadding;
+    const double top = baseline - metrics.capHeight() - chartstyle::kOverlineGap - chartstyle::kOverlineWidth - padding;
+    const double bottom = baseline + padding;
+    return {text.left(), top, m_priorityWidth + 2 * padding, bottom - top};
 }
 
 QLineF TransitionItem::barLine() const
@@ -286,18 +303,27 @@ void TransitionItem::paintLabel(QPainter* painter) const
     const QColor color = m_problem ? chartstyle::problemColor() : chartstyle::labelColor();
     painter->setPen(color);
     painter->setFont(chartstyle::font());
-    if (!m_priorityText.isEmpty()) {
+    if (priorityOverlined()) {
+        // Light on a dark badge, overline included: a negated transition
+        // stands out at fitted zoom, where a plain overline is a stray pixel.
+        const QRectF badge = priorityRect();
+        painter->setPen(Qt::NoPen);
+        painter->setBrush(color);
+        painter->drawRoundedRect(badge, 2.5, 2.5);
+        const QColor light = chartstyle::stepFillColor();
+        const double x = badge.left() + chartstyle::kNegatedBadgePadding;
+        painter->setPen(light);
+        painter->drawText(QPointF(x, baseline), m_priorityText);
+        // Drawn rather than QFont::setOverline: the font's overline is a
+        // hairline that vanishes when the sheet is fitted to a screen.
+        const double y = baseline - metrics.capHeight() - chartstyle::kOverlineGap;
+        painter->setPen(QPen(light, chartstyle::kOverlineWidth, Qt::SolidLine, Qt::FlatCap));
+        painter->drawLine(QLineF(x, y, x + m_priorityWidth, y));
+        painter->setPen(color);
+        at.rx() = badge.right();
+    } else if (!m_priorityText.isEmpty()) {
         painter->drawText(at, m_priorityText);
-        const double width = m_priorityWidth;
-        if (m_overlined) {
-            // Drawn rather than QFont::setOverline: the font's overline is
-            // a hairline that vanishes when the sheet is fitted to a screen.
-            const double y = baseline - metrics.capHeight() - chartstyle::kOverlineGap;
-            painter->setPen(QPen(color, chartstyle::kOverlineWidth, Qt::SolidLine, Qt::FlatCap));
-            painter->drawLine(QLineF(at.x(), y, at.x() + width, y));
-            painter->setPen(color);
-        }
-        at.rx() += width;
+        at.rx() += m_priorityWidth;
     }
     painter->drawText(at, m_separator + m_elidedCondition);
 }

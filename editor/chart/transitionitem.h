@@ -17,7 +17,8 @@ class Document;
 // A GRAFCET transition: the orthogonal route from core::templateLayout()
 // with an arrowhead at the target, the transition bar, and the label
 // "p: condition" (the priority only when the source has a choice to make,
-// overlined when the transition is negated).
+// overlined when the transition is negated, and then drawn light on a dark
+// badge so that a negated transition stands out at a glance).
 class TransitionItem : public QGraphicsItem {
     Q_DECLARE_TR_FUNCTIONS(editor::TransitionItem)
 
@@ -51,6 +52,8 @@ public:
     const QString& displayedCondition() const { return m_elidedCondition; }
     bool priorityShown() const { return !m_priorityText.isEmpty(); }
     bool priorityOverlined() const { return m_overlined && priorityShown(); }
+    // Where the priority is drawn: its badge when the transition is negated.
+    QRectF priorityRect() const;
 
     // Set by the scene from Document::hasProblems.
     bool hasProblemMark() const { return m_problem; }

@@ -23,6 +23,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalBlocker>
 #include <QStyle>
@@ -67,8 +68,15 @@ StepDock::StepDock(Document* document, Selection* selection, QWidget* parent)
     : PropertyDock(ElementRef::Kind::Step, title(), document, selection, parent)
 {
     setObjectName(QStringLiteral("stepDock"));
-    // No scroll area: the transition lists take the height there is.
-    setPages(createForm());
+    // In a scroll area that gives the form the height there is: the
+    // transition lists grow with the dock, and a dock shorter than the form
+    // (it shares its column with the Variables dock) scrolls instead of
+    // making the window taller than a laptop screen.
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(createForm());
+    setPages(scroll);
     retranslate();
 }
 

@@ -391,7 +391,7 @@ TEST_CASE("Transition labels are beside their bar and overlap nothing", "[layout
 TEST_CASE("Every transition label is wide enough for a real condition", "[layout]")
 {
     // 120 units cut "Stop OR BottleCount_Max" after a dozen characters; 160
-    // holds about 24 characters of the 12-unit label font.
+    // holds about 20 characters of the 14-unit label font.
     STATIC_REQUIRE(kMinTransitionLabelWidth >= 160);
     const ChartLayout& layout = templateLayout();
     double total = 0;

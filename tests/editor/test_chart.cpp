@@ -73,6 +73,7 @@ private slots:
     void labelShowsPriorityAndCondition();
     void labelWithoutChoiceHasNoPriority();
     void negatedPriorityIsOverlined();
+    void negatedPriorityStandsOut();
     void longConditionIsElided();
     void undeclaredVariableMarksTheTransition();
     void hiddenInitialStepIsMarked();
@@ -342,6 +343,25 @@ void TestChart::negatedPriorityIsOverlined()
     QVERIFY(!item->priorityOverlined());
 }
 
+namespace {
+double darkShare(const TransitionItem* item, const QRectF& rect);
+} // namespace
+
+// At a glance: a negated transition's priority sits on a dark badge (most
+// of its rectangle is ink), a plain priority is a digit on white.
+void TestChart::negatedPriorityStandsOut()
+{
+    const TransitionItem* negated = m_scene->transitionItem("F1->D1");
+    QVERIFY(darkShare(negated, negated->priorityRect()) > 0.5);
+    TransitionItem* item = m_scene->transitionItem("F1->A2");
+    QVERIFY(item->priorityShown());
+    QVERIFY(darkShare(item, item->priorityRect()) < 0.35);
+    m_document->push(new SetNegatedCommand(*m_document, "F1->A2", true));
+    QVERIFY(darkShare(item, item->priorityRect()) > 0.5);
+    // The condition keeps its place beside the badge, inside the label.
+    QVERIFY(item->labelTextRect().contains(item->priorityRect().adjusted(0, 4, 0, -4)));
+}
+
 void TestChart::longConditionIsElided()
 {
     const QString condition = "Start AND NOT Stop AND Door_Closed AND Pressure_OK AND Air_OK AND Guard_Locked";
@@ -558,6 +578,26 @@ QRect idInk(StepItem* step)
     painter.end();
     const int inset = qRound(-bounds.left()) + 10; // the item's box starts at (0, 0)
     return inkBounds(image, QRect(QPoint(0, 0), image.size()).adjusted(inset, inset, -inset, -inset));
+}
+
+// The share of the pixels of `rect` (scene units, painted at 100 %) darker
+// than mid-grey when `item` alone is painted on white.
+double darkShare(const TransitionItem* item, const QRectF& rect)
+{
+    const QRect area = rect.toAlignedRect();
+    QImage image(area.size(), QImage::Format_RGB32);
+    image.fill(Qt::white);
+    QPainter painter(&image);
+    painter.translate(-area.topLeft());
+    QStyleOptionGraphicsItem option;
+    const_cast<TransitionItem*>(item)->paint(&painter, &option, nullptr);
+    painter.end();
+    int dark = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x)
+            dark += qGray(image.pixel(x, y)) < 128 ? 1 : 0;
+    }
+    return static_cast<double>(dark) / (image.width() * image.height());
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include "editor/autosave.h"
 #include "editor/chart/chartcontextmenu.h"
 #include "editor/chart/chartscene.h"
+#include "editor/chart/chartstyle.h"
 #include "editor/chart/chartview.h"
 #include "editor/chart/stepitem.h"
 #include "editor/chart/transitionitem.h"
@@ -261,6 +262,7 @@ private slots:
     void rubberBandSelectsWhatItCovers();
     void resetLayoutPutsEveryPanelBack();
     void windowFitsTheScreen();
+    void fittedChartLabelsReadOnALaptop();
     void exportNamesFollowTheModelFile();
     void opensANativeFile();
     void examplesOpenAsUntitledCopies();
@@ -344,20 +346,21 @@ void TestMainWindow::opensOnTheTemplate()
 void TestMainWindow::docksAreAroundTheChart()
 {
     const auto dock = [this](const char* name) { return m_window->findChild<QDockWidget*>(QLatin1String(name)); };
-    for (const char* name : {"stepDock", "transitionDock"}) {
+    // One column on the right: Step and Transition above, Variables,
+    // Problems and Structured Text below; nothing under the chart.
+    for (const char* name : {"stepDock", "transitionDock", "variablesDock", "problemsDock", "stPreviewDock"}) {
         QVERIFY2(dock(name), name);
         QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::RightDockWidgetArea);
     }
-    for (const char* name : {"variablesDock", "problemsDock", "stPreviewDock"}) {
-        QVERIFY2(dock(name), name);
-        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::BottomDockWidgetArea);
-    }
+    QVERIFY(dock("variablesDock")->geometry().top() >= dock("stepDock")->geometry().bottom());
+    QCOMPARE(dock("variablesDock")->geometry().left(), dock("stepDock")->geometry().left());
     // Tabbed, not squeezed side by side.
     QVERIFY(m_window->tabifiedDockWidgets(dock("stepDock")).contains(dock("transitionDock")));
     QCOMPARE(m_window->tabifiedDockWidgets(dock("variablesDock")).size(), 2);
     // The chart keeps most of the window.
     const QSize chart = m_window->chartView()->size();
     QVERIFY2(chart.width() > m_window->width() / 2, qPrintable(QString::number(chart.width())));
+    QVERIFY2(chart.height() > m_window->height() - 120, qPrintable(QString::number(chart.height())));
     QVERIFY2(chart.height() > m_window->height() / 2, qPrintable(QString::number(chart.height())));
     // Every dock can be shown again from the View menu.
     auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
@@ -631,10 +634,35 @@ void TestMainWindow::resetLayoutPutsEveryPanelBack()
     }
     for (const char* name : {"variablesDock", "problemsDock", "stPreviewDock"}) {
         QVERIFY2(!dock(name)->isHidden(), name);
-        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::BottomDockWidgetArea);
+        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::RightDockWidgetArea);
     }
+    QVERIFY(dock("variablesDock")->geometry().top() >= dock("stepDock")->geometry().bottom());
     QVERIFY(m_window->tabifiedDockWidgets(dock("variablesDock")).contains(dock("problemsDock")));
     QVERIFY(!toolbar->isHidden());
+}
+
+// The window the first start opens on a 1366 x 768 screen (its available
+// area less the title bar and frame allowance) and on 1920 x 1080, in the
+// default layout: the fitted sheet draws the transition labels and
+// priorities at least 8 px high.
+void TestMainWindow::fittedChartLabelsReadOnALaptop()
+{
+    auto* reset = m_window->findChild<QAction*>(QStringLiteral("resetLayoutAction"));
+    QVERIFY(reset);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    for (const QSize& window : {QSize(1366 - 16, 768 - 48), QSize(1920 - 16, 1080 - 48)}) {
+        m_window->resize(window);
+        reset->trigger();
+        QApplication::processEvents();
+        m_window->chartView()->zoomToFit();
+        const double labelPixels = chartstyle::kFontSize * m_window->chartView()->zoom();
+        QVERIFY2(labelPixels >= 8.0, qPrintable(QStringLiteral("%1 px at %2 x %3 (zoom %4)")
+                                                    .arg(labelPixels)
+                                                    .arg(window.width())
+                                                    .arg(window.height())
+                                                    .arg(m_window->chartView()->zoom())));
+    }
 }
 
 void TestMainWindow::windowFitsTheScreen()
@@ -1016,13 +1044,13 @@ void TestMainWindow::modelSettingsAreOneUndoStep()
 void TestMainWindow::layoutIsRestored()
 {
     auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
-    m_window->addDockWidget(Qt::RightDockWidgetArea, problems);
+    m_window->addDockWidget(Qt::BottomDockWidgetArea, problems);
     m_window->resize(1000, 700);
     QVERIFY(m_window->close()); // unmodified: closes without asking, saves the layout
 
     MainWindow again(*m_translators);
     problems = again.findChild<QDockWidget*>(QStringLiteral("problemsDock"));
-    QCOMPARE(again.dockWidgetArea(problems), Qt::RightDockWidgetArea);
+    QCOMPARE(again.dockWidgetArea(problems), Qt::BottomDockWidgetArea);
     QCOMPARE(again.size(), QSize(1000, 700));
     QSettings().clear(); // the other tests start from the default layout
 }
@@ -1194,7 +1222,7 @@ void TestMainWindow::deferredDocksSaveTheirLayoutWhenClosedEarly()
     }
     MainWindow again(*m_translators);
     auto* problems = again.findChild<QDockWidget*>(QStringLiteral("problemsDock"));
-    QCOMPARE(again.dockWidgetArea(problems), Qt::BottomDockWidgetArea);
+    QCOMPARE(again.dockWidgetArea(problems), Qt::RightDockWidgetArea);
     QCOMPARE(again.tabifiedDockWidgets(problems).size(), 2);
     QCOMPARE(again.tabifiedDockWidgets(again.findChild<QDockWidget*>(QStringLiteral("stepDock"))).size(), 2);
     QSettings().clear(); // the other tests start from the default layout
@@ -1282,10 +1310,10 @@ void TestMainWindow::languageChangeRetranslatesMenus()
     QVERIFY(fileMenu && openAction);
     QCOMPARE(fileMenu->title(), QStringLiteral("&File"));
 
-    // The user moved the Problems dock to the right.
+    // The user moved the Problems dock to the left.
     auto* problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
     QVERIFY(problems);
-    m_window->addDockWidget(Qt::RightDockWidgetArea, problems);
+    m_window->addDockWidget(Qt::LeftDockWidgetArea, problems);
 
     BracketTranslator translator;
     QCoreApplication::installTranslator(&translator);
@@ -1297,7 +1325,7 @@ void TestMainWindow::languageChangeRetranslatesMenus()
     QTRY_COMPARE(m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"))->windowTitle(),
                  QStringLiteral("[Problems]"));
     problems = m_window->findChild<QDockWidget*>(QStringLiteral("problemsDock"));
-    QCOMPARE(m_window->dockWidgetArea(problems), Qt::RightDockWidgetArea);
+    QCOMPARE(m_window->dockWidgetArea(problems), Qt::LeftDockWidgetArea);
     auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
     QVERIFY(viewMenu->actions().contains(problems->toggleViewAction()));
     QCOMPARE(m_window->findChildren<QDockWidget*>().size(), 6); // with the Simulation dock
