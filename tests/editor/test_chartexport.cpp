@@ -251,7 +251,17 @@ void TestChartExport::svgOfShortConditionsIsUnchanged()
     QVERIFY(!svg.contains("[1]"));
     // As large as the sheet with its margin, nothing more.
     const QRectF paper = m_scene->sceneRect().adjusted(-12, -12, 12, 12);
-    QVERIFY2(svg.contains(QStringLiteral("height=\"%1").arg(qRound(paper.height()))), qPrintable(svg.left(600)));
+    const QString viewBox = QStringLiteral("viewBox=\"0 0 %1 %2\"").arg(paper.width()).arg(paper.height());
+    QVERIFY2(svg.contains(viewBox), qPrintable(svg.left(400)));
+
+    // A long condition makes the picture taller, not wider.
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", kLong));
+    const QString taller = QString::fromUtf8(readAll(exportTo("long.svg")));
+    static const QRegularExpression box(QStringLiteral("viewBox=\"0 0 ([0-9.]+) ([0-9.]+)\""));
+    const QRegularExpressionMatch match = box.match(taller);
+    QVERIFY(match.hasMatch());
+    QCOMPARE(match.captured(1).toDouble(), paper.width());
+    QVERIFY(match.captured(2).toDouble() > paper.height() + 30);
 }
 
 void TestChartExport::pngGrowsByTheList()
