@@ -1,6 +1,9 @@
 #include "editor/chartexport.h"
 
 #include "editor/chart/chartscene.h"
+#include "editor/chart/frameitem.h"
+#include "editor/chart/transitionitem.h"
+#include "editor/conditionnotes.h"
 
 #include "core/formats/fileio.h"
 
@@ -9,6 +12,7 @@
 #include <QFileInfo>
 #include <QGraphicsItem>
 #include <QImage>
+#include <QPagedPaintDevice>
 #include <QPainter>
 #include <QPdfWriter>
 #include <QPrinter>
@@ -48,6 +52,37 @@ private:
     QList<QGraphicsItem*> m_selected;
 };
 
+// Numbers the conditions the labels cut short for the time of a rendering
+// (TransitionItem::setNoteNumber), and gives the labels back their
+// on-screen text afterwards.
+class ExportNotes {
+public:
+    explicit ExportNotes(ChartScene& scene)
+        : m_scene(scene)
+        , m_notes(conditionNotes(scene))
+    {
+        for (const ConditionNote& note : std::as_const(m_notes)) {
+            if (TransitionItem* item = m_scene.transitionItem(note.transitionId))
+                item->setNoteNumber(note.number);
+        }
+    }
+    ~ExportNotes()
+    {
+        for (const ConditionNote& note : std::as_const(m_notes)) {
+            if (TransitionItem* item = m_scene.transitionItem(note.transitionId))
+                item->setNoteNumber(0);
+        }
+    }
+    ExportNotes(const ExportNotes&) = delete;
+    ExportNotes& operator=(const ExportNotes&) = delete;
+
+    const QList<ConditionNote>& notes() const { return m_notes; }
+
+private:
+    ChartScene& m_scene;
+    QList<ConditionNote> m_notes;
+};
+
 QRectF paperRect(const ChartScene& scene)
 {
     return scene.sceneRect().adjusted(-kMargin, -kMargin, kMargin, kMargin);
@@ -59,6 +94,82 @@ void render(ChartScene& scene, QPainter& painter, const QRectF& target)
     painter.setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing | QPainter::SmoothPixmapTransform);
     painter.fillRect(target, Qt::white);
     scene.render(&painter, target, paperRect(scene), Qt::KeepAspectRatio);
+}
+
+// Where the list under the sheet stands, in the picture's units from its
+// left: under the family frames, as wide as they are together.
+struct ListColumn {
+    double left = kMargin;
+    double width = 0;
+};
+
+ListColumn listColumn(const ChartScene& scene)
+{
+    const QRectF paper = paperRect(scene);
+    QRectF frames;
+    for (const FrameItem* frame : scene.frames())
+        frames |= frame->sceneBoundingRect();
+    if (frames.isEmpty())
+        return {kMargin, paper.width() - 2 * kMargin};
+    return {frames.left() - paper.left(), frames.width()};
+}
+
+ConditionList listUnder(const ChartScene& scene, const QList<ConditionNote>& notes)
+{
+    return ConditionList(notes, listColumn(scene).width);
+}
+
+// The sheet with its list under it, at `scale` device units per scene unit,
+// the top left at the painter's origin.
+void renderPicture(ChartScene& scene, QPainter& painter, const ConditionList& list, double scale)
+{
+    const QRectF paper = paperRect(scene);
+    painter.fillRect(QRectF(0, 0, paper.width() * scale, (paper.height() + list.height()) * scale), Qt::white);
+    render(scene, painter, QRectF(0, 0, paper.width() * scale, paper.height() * scale));
+    if (list.isEmpty())
+        return;
+    painter.save();
+    painter.scale(scale, scale);
+    list.paint(painter, QPointF(listColumn(scene).left, paper.height() + ConditionList::kTopGap), 0, list.lineCount());
+    painter.restore();
+}
+
+// PDF and print: the chart fitted to the page, and its list under it, or on
+// the following pages when sharing the page would shrink the chart too much
+// (planPages). The list is drawn at the chart's scale, so it reads as the
+// labels do.
+void renderPages(ChartScene& scene, QPainter& painter, QPagedPaintDevice& device, const QSizeF& page,
+                 const QList<ConditionNote>& notes)
+{
+    const QRectF paper = paperRect(scene);
+    if (notes.isEmpty()) {
+        render(scene, painter, QRectF(QPointF(0, 0), page));
+        return;
+    }
+    const ConditionList below = listUnder(scene, notes);
+    const PagePlan plan = planPages(paper.size(), below.height(), page);
+    const double scale = plan.scale;
+    const double left = (page.width() - paper.width() * scale) / 2;
+    painter.save();
+    painter.translate(left, 0);
+    if (plan.listBelowChart) {
+        renderPicture(scene, painter, below, scale);
+        painter.restore();
+        return;
+    }
+    render(scene, painter, QRectF(0, 0, paper.width() * scale, paper.height() * scale));
+    painter.restore();
+
+    const QSizeF room = page / scale; // a page in scene units
+    const ConditionList after(notes, room.width() - 2 * kMargin);
+    const QList<int> starts = pageBreaks(after.lineHeights(), room.height() - 2 * kMargin);
+    for (qsizetype i = 0; i < starts.size(); ++i) {
+        device.newPage();
+        painter.save();
+        painter.scale(scale, scale);
+        after.paint(painter, QPointF(kMargin, kMargin), starts[i], i + 1 < starts.size() ? starts[i + 1] : after.lineCount());
+        painter.restore();
+    }
 }
 
 // Writes through core's atomic writer, so a failed export never leaves half
@@ -108,15 +219,18 @@ bool ChartExport::write(const QString& path, Format format, QString* errorMessag
 
 bool ChartExport::writeSvg(const QString& path, QString* errorMessage) const
 {
+    const ExportNotes notes(m_scene);
     const QRectF paper = paperRect(m_scene);
+    const ConditionList list = listUnder(m_scene, notes.notes());
+    const QSizeF picture(paper.width(), paper.height() + list.height());
     QBuffer buffer;
     buffer.open(QIODevice::WriteOnly);
     QSvgGenerator generator;
     generator.setOutputDevice(&buffer);
     generator.setTitle(m_title);
     generator.setDescription(tr("GEMMA-GRAFCET chart drawn by GG Studio"));
-    generator.setSize(paper.size().toSize());
-    generator.setViewBox(QRectF(QPointF(0, 0), paper.size()));
+    generator.setSize(QSize(int(std::ceil(picture.width())), int(std::ceil(picture.height()))));
+    generator.setViewBox(QRectF(QPointF(0, 0), picture));
     {
         QPainter painter;
         if (!painter.begin(&generator)) {
@@ -124,14 +238,17 @@ bool ChartExport::writeSvg(const QString& path, QString* errorMessage) const
                 *errorMessage = tr("The SVG picture could not be drawn.");
             return false;
         }
-        render(m_scene, painter, QRectF(QPointF(0, 0), paper.size()));
+        renderPicture(m_scene, painter, list, 1.0);
     }
     return writeBytes(path, buffer.data(), errorMessage);
 }
 
 bool ChartExport::writePng(const QString& path, QString* errorMessage, double scale) const
 {
-    const QSizeF paper = paperRect(m_scene).size() * scale;
+    const ExportNotes notes(m_scene);
+    const QRectF sheet = paperRect(m_scene);
+    const ConditionList list = listUnder(m_scene, notes.notes());
+    const QSizeF paper = QSizeF(sheet.width(), sheet.height() + list.height()) * scale;
     QImage image(QSize(int(std::ceil(paper.width())), int(std::ceil(paper.height()))), QImage::Format_ARGB32);
     if (image.isNull()) {
         if (errorMessage)
@@ -143,7 +260,7 @@ bool ChartExport::writePng(const QString& path, QString* errorMessage, double sc
     image.fill(Qt::white);
     {
         QPainter painter(&image);
-        render(m_scene, painter, QRectF(QPointF(0, 0), paper));
+        renderPicture(m_scene, painter, list, scale);
     }
     QBuffer buffer;
     buffer.open(QIODevice::WriteOnly);
@@ -172,7 +289,8 @@ bool ChartExport::writePdf(const QString& path, QString* errorMessage) const
                 *errorMessage = tr("The PDF document could not be drawn.");
             return false;
         }
-        render(m_scene, painter, QRectF(QPointF(0, 0), QSizeF(writer.width(), writer.height())));
+        const ExportNotes notes(m_scene);
+        renderPages(m_scene, painter, writer, QSizeF(writer.width(), writer.height()), notes.notes());
     }
     return writeBytes(path, buffer.data(), errorMessage);
 }
@@ -184,7 +302,8 @@ bool ChartExport::print(QPrinter& printer) const
     if (!painter.begin(&printer))
         return false;
     // The painter's origin is the top left of the printable area.
-    render(m_scene, painter, QRectF(0, 0, printer.width(), printer.height()));
+    const ExportNotes notes(m_scene);
+    renderPages(m_scene, painter, printer, QSizeF(printer.width(), printer.height()), notes.notes());
     return true;
 }
 

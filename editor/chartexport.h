@@ -11,6 +11,9 @@ class ChartScene;
 
 // Pictures of the chart as the window shows it (hidden elements included
 // when they are shown), on white paper, without the selection highlight.
+// No condition is cut short: one that does not fit its label ends there in a
+// note marker, "[1]", and a "Conditions" list under the chart gives it in
+// full (editor/conditionnotes.h); the picture grows downwards to hold it.
 // Each writer returns false with a message for the user when the file
 // cannot be written; a failed write leaves no partial file behind.
 class ChartExport {
@@ -32,8 +35,9 @@ public:
     bool writePdf(const QString& path, QString* errorMessage) const;
 
     // Fitted to the printable area of the printer's page (the caller sets
-    // the orientation: landscape suits the chart). False when the printer
-    // cannot start.
+    // the orientation: landscape suits the chart), the Conditions list
+    // under the chart or on the following pages, as the PDF. False when the
+    // printer cannot start.
     bool print(QPrinter& printer) const;
 
     // The title written into SVG and PDF metadata.

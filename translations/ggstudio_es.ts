@@ -1316,6 +1316,18 @@
     </message>
 </context>
 <context>
+    <name>editor::ConditionList</name>
+    <message>
+        <source>[%1] %2: %3</source>
+        <extracomment>an entry of the Conditions list under an exported chart: note number, transition, its condition in full</extracomment>
+        <translation>[%1] %2: %3</translation>
+    </message>
+    <message>
+        <source>Conditions</source>
+        <translation>Condiciones</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>

@@ -110,6 +110,14 @@ void TransitionItem::setTokenMarks(const QList<bool>& tokens)
     update();
 }
 
+void TransitionItem::setNoteNumber(int number)
+{
+    if (m_noteNumber == number)
+        return;
+    m_noteNumber = number;
+    refresh();
+}
+
 void TransitionItem::updateLabel()
 {
     const core::Model& model = m_document.model();
@@ -135,8 +143,18 @@ void TransitionItem::updateLabel()
     m_elidedCondition.clear();
     if (!m_conditionText.isEmpty()) {
         const QFontMetricsF metrics(chartstyle::font());
-        m_elidedCondition =
-            metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, m_labelRect.width() - prefixWidth));
+        const double room = std::max(0.0, m_labelRect.width() - prefixWidth);
+        m_elidedCondition = metrics.elidedText(m_conditionText, Qt::ElideRight, room);
+        m_conditionCut = m_elidedCondition != m_conditionText;
+        if (m_conditionCut && m_noteNumber > 0) {
+            const QString marker = QStringLiteral("[%1]").arg(m_noteNumber);
+            const QString start =
+                metrics.elidedText(m_conditionText, Qt::ElideRight, std::max(0.0, room - metrics.horizontalAdvance(marker)));
+            // An ellipsis alone says nothing: then the marker stands for the whole condition.
+            m_elidedCondition = (start.size() > 1 ? start : QString()) + marker;
+        }
+    } else {
+        m_conditionCut = false;
     }
     m_priorityWidth = m_separator.isEmpty() ? prefixWidth - badgePadding : chartstyle::advance(m_priorityText);
     m_shownWidth = m_elidedCondition.isEmpty() ? prefixWidth

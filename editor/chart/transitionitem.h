@@ -48,8 +48,18 @@ public:
     // What the label says, before eliding: "3: NOT Stop".
     QString labelText() const;
     QRectF labelTextRect() const; // the part of the label rectangle the shown text covers
+    // The condition in full, on one line ("NOT Stop").
+    const QString& conditionText() const { return m_conditionText; }
     // The condition as drawn: elided to the label width.
     const QString& displayedCondition() const { return m_elidedCondition; }
+    // Whether the condition is cut short on screen (it does not fit the label).
+    bool conditionCut() const { return m_conditionCut; }
+    // For the chart exports only (ChartExport): with a number above 0, a
+    // condition cut short ends in its note marker ("Start AND…[1]", or
+    // "3: [1]" when no part of it fits), the full text being listed under
+    // the chart. 0, the default, is the on-screen label.
+    int noteNumber() const { return m_noteNumber; }
+    void setNoteNumber(int number);
     bool priorityShown() const { return !m_priorityText.isEmpty(); }
     bool priorityOverlined() const { return m_overlined && priorityShown(); }
     // Where the priority is drawn: its badge when the transition is negated.
@@ -103,6 +113,8 @@ private:
     // Measured once per label change rather than at every paint.
     double m_priorityWidth = 0;  // of m_priorityText
     double m_shownWidth = 0;     // of the whole label as shown
+    bool m_conditionCut = false;
+    int m_noteNumber = 0;
     bool m_overlined = false;
     bool m_problem = false;
     bool m_fired = false;

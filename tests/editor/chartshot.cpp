@@ -1,13 +1,17 @@
 // chart_screenshot OUT.png [WIDTH HEIGHT] [--template] [--show-hidden] [--select ID] [--hide ID]...
+//                  [--model FILE] [--export]
 //
 // Renders the chart as the editor shows it, fitted into a WIDTH x HEIGHT view
 // (default 1366 x 768), to look at the drawing without a display
 // (QT_QPA_PLATFORM=offscreen). By default the chart shows the realistic
 // bottle-filling model of the test support; --template shows the bare
-// template (every condition empty, so every transition is marked).
+// template (every condition empty, so every transition is marked); --model
+// shows a model file. --export writes OUT through the chart export instead
+// (SVG, PNG or PDF after its extension; WIDTH and HEIGHT do not apply).
 
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
+#include "editor/chartexport.h"
 #include "editor/document.h"
 #include "editor/selection.h"
 
@@ -24,7 +28,8 @@ namespace {
 
 int usage()
 {
-    std::fputs("usage: chart_screenshot OUT.png [WIDTH HEIGHT] [--template] [--show-hidden] [--select ID] [--hide ID]...\n",
+    std::fputs("usage: chart_screenshot OUT.png [WIDTH HEIGHT] [--template] [--show-hidden] [--select ID] [--hide ID]...\n"
+               "                        [--model FILE] [--export]\n",
                stderr);
     return 2;
 }
@@ -38,6 +43,8 @@ int main(int argc, char* argv[])
 
     bool bareTemplate = false;
     bool showHidden = false;
+    bool exportChart = false;
+    QString modelFile;
     QString selected;
     QStringList hiddenSteps;
     QStringList positional;
@@ -50,6 +57,10 @@ int main(int argc, char* argv[])
             selected = args[++i];
         else if (args[i] == "--hide" && i + 1 < args.size())
             hiddenSteps << args[++i];
+        else if (args[i] == "--model" && i + 1 < args.size())
+            modelFile = args[++i];
+        else if (args[i] == "--export")
+            exportChart = true;
         else if (args[i].startsWith("--"))
             return usage();
         else
@@ -71,8 +82,15 @@ int main(int argc, char* argv[])
     }
 
     editor::Document document;
-    if (!bareTemplate)
+    if (!modelFile.isEmpty()) {
+        QString error;
+        if (!document.load(modelFile, &error)) {
+            std::fprintf(stderr, "chart_screenshot: %s\n", qPrintable(error));
+            return 1;
+        }
+    } else if (!bareTemplate) {
         document.replaceModel(factory::realisticModel(), QString(), core::ModelFormat::Native);
+    }
     for (const QString& step : hiddenSteps) {
         if (!document.modelForCommands().setStepHidden(step.toStdString(), true))
             std::fprintf(stderr, "chart_screenshot: no step %s to hide\n", qPrintable(step));
@@ -84,13 +102,23 @@ int main(int argc, char* argv[])
         selection.select(selected.contains("->") ? editor::ElementRef::transition(selected)
                                                  : editor::ElementRef::step(selected));
 
+    const QString out = positional[0];
+    if (exportChart) {
+        editor::ChartExport::Format format;
+        QString error;
+        if (!editor::ChartExport::formatForPath(out, &format) || !editor::ChartExport(scene).write(out, format, &error)) {
+            std::fprintf(stderr, "chart_screenshot: cannot write %s %s\n", qPrintable(out), qPrintable(error));
+            return 1;
+        }
+        return 0;
+    }
+
     editor::ChartView view(&scene);
     view.resize(width, height);
     view.show();
     view.zoomToFit();
     QApplication::processEvents();
 
-    const QString out = positional[0];
     if (!view.grab().save(out)) {
         std::fprintf(stderr, "chart_screenshot: cannot write %s\n", qPrintable(out));
         return 1;

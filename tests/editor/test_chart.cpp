@@ -75,6 +75,7 @@ private slots:
     void negatedPriorityIsOverlined();
     void negatedPriorityStandsOut();
     void longConditionIsElided();
+    void exportNoteEndsACutCondition();
     void undeclaredVariableMarksTheTransition();
     void hiddenInitialStepIsMarked();
     void stepTypeChangeRepaintsOnlyThatStep();
@@ -371,6 +372,37 @@ void TestChart::longConditionIsElided()
     QVERIFY(item->displayedCondition().size() < condition.size());
     QVERIFY(item->displayedCondition().endsWith(QChar(0x2026)));
     QVERIFY(item->toolTipText().contains(condition));
+}
+
+void TestChart::exportNoteEndsACutCondition()
+{
+    const QString condition = "Start AND NOT Stop AND Door_Closed AND Pressure_OK AND Air_OK AND Guard_Locked";
+    m_document->push(new SetConditionCommand(*m_document, "F1->A2", condition));
+    m_document->push(new SetConditionCommand(*m_document, "F1->F4", "NOT Stop"));
+    TransitionItem* cut = m_scene->transitionItem("F1->A2");
+    TransitionItem* whole = m_scene->transitionItem("F1->F4");
+    QVERIFY(cut->conditionCut());
+    QVERIFY(!whole->conditionCut());
+    QCOMPARE(cut->conditionText(), condition);
+    const QString onScreen = cut->displayedCondition();
+    const double width = cut->labelTextRect().width();
+
+    // During an export: the start of the condition, then its note number, in the same room.
+    cut->setNoteNumber(2);
+    QVERIFY2(cut->displayedCondition().endsWith(QStringLiteral("\u2026[2]")), qPrintable(cut->displayedCondition()));
+    QVERIFY(condition.startsWith(cut->displayedCondition().chopped(4)));
+    QVERIFY(cut->labelTextRect().width() <= width + 0.01);
+    QVERIFY(cut->conditionCut());
+    QCOMPARE(cut->labelText(), "3: " + condition);
+    // A condition that fits stays as it is.
+    whole->setNoteNumber(1);
+    QCOMPARE(whole->displayedCondition(), QString("NOT Stop"));
+
+    // Back to the screen's label.
+    cut->setNoteNumber(0);
+    whole->setNoteNumber(0);
+    QCOMPARE(cut->displayedCondition(), onScreen);
+    QCOMPARE(cut->labelTextRect().width(), width);
 }
 
 void TestChart::undeclaredVariableMarksTheTransition()
