@@ -32,6 +32,15 @@ inline constexpr double kFiredWidth = 3.2;     // the route of the transition th
 inline constexpr double kTokenRadius = 3.6;    // a token's dot on its transition bar (simulation)
 inline constexpr double kCompleteBadgeSize = 14; // the "C" badge of a nested step (simulation)
 
+// Stacking: frames at the bottom, then transitions, then steps. A selected
+// element goes below every other transition and step, so that its halo
+// never covers their marks (an arrowhead, the green route of the transition
+// that fired, a token).
+inline constexpr double kFrameZ = 0;
+inline constexpr double kSelectedZ = 0.5;
+inline constexpr double kTransitionZ = 1;
+inline constexpr double kStepZ = 2;
+
 inline QColor inkColor() { return QColor(0x20, 0x24, 0x2a); }
 inline QColor stepFillColor() { return QColor(0xff, 0xff, 0xff); }
 inline QColor activeFillColor() { return QColor(0xff, 0xd8, 0x4d); }

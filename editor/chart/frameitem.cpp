@@ -18,7 +18,7 @@ FrameItem::FrameItem(const core::FrameLayout& layout, QGraphicsItem* parent)
     , m_rect(toQRectF(layout.rect))
     , m_titleRect(toQRectF(layout.titleRect))
 {
-    setZValue(0);
+    setZValue(chartstyle::kFrameZ);
 }
 
 QString FrameItem::title() const

@@ -22,8 +22,15 @@ StepItem::StepItem(const Document& document, const core::StepLayout& layout, QGr
 {
     setPos(layout.box.x, layout.box.y);
     setFlag(ItemIsSelectable);
-    setZValue(2);
+    setZValue(chartstyle::kStepZ);
     setAcceptHoverEvents(false);
+}
+
+QVariant StepItem::itemChange(GraphicsItemChange change, const QVariant& value)
+{
+    if (change == ItemSelectedHasChanged)
+        setZValue(value.toBool() ? chartstyle::kSelectedZ : chartstyle::kStepZ);
+    return QGraphicsItem::itemChange(change, value);
 }
 
 const core::Step* StepItem::step() const

@@ -57,6 +57,10 @@ public:
     QPainterPath shape() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
+protected:
+    // A selected step goes below the others (chartstyle::kSelectedZ).
+    QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
+
 private:
     const core::Step* step() const;
     void paintSymbol(QPainter* painter, const core::Step& step) const;

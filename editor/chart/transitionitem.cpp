@@ -58,7 +58,7 @@ TransitionItem::TransitionItem(const Document& document, const core::TransitionL
     , m_labelRect(toQRectF(layout.labelRect))
 {
     setFlag(ItemIsSelectable);
-    setZValue(1);
+    setZValue(chartstyle::kTransitionZ);
 
     for (const core::Point& point : layout.route)
         m_line << toQPointF(point);
@@ -72,6 +72,13 @@ TransitionItem::TransitionItem(const Document& document, const core::TransitionL
     const double margin = chartstyle::kHaloWidth + chartstyle::kBarWidth;
     m_bounds = (m_line.boundingRect() | m_arrow.boundingRect() | m_labelRect)
                    .adjusted(-margin, -margin, margin, margin);
+}
+
+QVariant TransitionItem::itemChange(GraphicsItemChange change, const QVariant& value)
+{
+    if (change == ItemSelectedHasChanged)
+        setZValue(value.toBool() ? chartstyle::kSelectedZ : chartstyle::kTransitionZ);
+    return QGraphicsItem::itemChange(change, value);
 }
 
 bool TransitionItem::isHiddenInModel() const

@@ -81,6 +81,10 @@ public:
     QPainterPath shape() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
+protected:
+    // A selected transition goes below the others (chartstyle::kSelectedZ).
+    QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
+
 private:
     void updateLabel();
     QPainterPath buildShape() const;

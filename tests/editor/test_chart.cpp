@@ -18,6 +18,7 @@
 #include "editor/selection.h"
 #include "editor/statenames.h"
 
+#include "core/layout/chartlayout.h"
 #include "core/model/gemmatemplate.h"
 
 #include <QApplication>
@@ -74,6 +75,7 @@ private slots:
     void labelWithoutChoiceHasNoPriority();
     void negatedPriorityIsOverlined();
     void negatedPriorityStandsOut();
+    void selectionHaloStaysBelowTheMarks();
     void longConditionIsElided();
     void exportNoteEndsACutCondition();
     void undeclaredVariableMarksTheTransition();
@@ -361,6 +363,39 @@ void TestChart::negatedPriorityStandsOut()
     QVERIFY(darkShare(item, item->priorityRect()) > 0.5);
     // The condition keeps its place beside the badge, inside the label.
     QVERIFY(item->labelTextRect().contains(item->priorityRect().adjusted(0, 4, 0, -4)));
+}
+
+// A selected element's halo reaches past its outline; drawn below every
+// other element, it never covers an arrowhead, a fired route or a token.
+void TestChart::selectionHaloStaysBelowTheMarks()
+{
+    const core::TransitionLayout* layout = core::templateLayout().transition("A1->F2");
+    QVERIFY(layout);
+    // Inside the arrowhead, 2 units before its tip on F2's border: where the
+    // step's halo reaches.
+    const QPointF end(layout->route.back().x, layout->route.back().y);
+    const QPointF before(layout->route[layout->route.size() - 2].x, layout->route[layout->route.size() - 2].y);
+    const QPointF tip = end + (before - end) / QLineF(before, end).length() * 2;
+    StepItem* step = m_scene->stepItem("F2");
+    TransitionItem* transition = m_scene->transitionItem("A1->F2");
+    // Painted last of the two where the halo reaches the arrowhead.
+    const auto stepOnTop = [&] {
+        const QList<QGraphicsItem*> items =
+            m_scene->items(tip, Qt::IntersectsItemBoundingRect, Qt::DescendingOrder);
+        return items.contains(step) && items.contains(transition)
+            && items.indexOf(step) < items.indexOf(transition);
+    };
+    QVERIFY(stepOnTop());
+    step->setSelected(true);
+    QVERIFY(!stepOnTop());
+    QVERIFY(m_scene->items(tip, Qt::IntersectsItemBoundingRect).contains(step));
+    step->setSelected(false);
+    QVERIFY(stepOnTop());
+    // A selected transition goes below the transitions that cross it.
+    transition->setSelected(true);
+    QVERIFY(transition->zValue() < m_scene->transitionItem("A1->F1")->zValue());
+    transition->setSelected(false);
+    QCOMPARE(transition->zValue(), m_scene->transitionItem("A1->F1")->zValue());
 }
 
 void TestChart::longConditionIsElided()
