@@ -2,6 +2,7 @@
 
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/docks/wrappinglabel.h"
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
@@ -64,8 +65,8 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     , m_runner(runner)
     , m_selection(selection)
     , m_view(new QTreeWidget(this))
-    , m_statusLabel(new QLabel(this))
-    , m_assumptionsLabel(new QLabel(this))
+    , m_statusLabel(new WrappingLabel(this))
+    , m_assumptionsLabel(new WrappingLabel(this))
     , m_verifyAction(new QAction(this))
     , m_showAction(new QAction(this))
     , m_replayAction(new QAction(this))
@@ -89,18 +90,21 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     auto* verifyButton = toolButton(m_verifyAction, this);
     verifyButton->setObjectName(QStringLiteral("verifyButton"));
     bar->addWidget(verifyButton);
-    m_statusLabel->setObjectName(QStringLiteral("verificationStatus"));
-    m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    // A long status must not widen the dock: it is cut, and the tooltip has it whole.
-    m_statusLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    bar->addWidget(m_statusLabel, 3);
-    m_assumptionsLabel->setObjectName(QStringLiteral("verificationAssumptions"));
-    m_assumptionsLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_assumptionsLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    bar->addWidget(m_assumptionsLabel, 2);
+    bar->addStretch(1);
     bar->addWidget(toolButton(m_showAction, this));
     bar->addWidget(toolButton(m_replayAction, this));
     layout->addLayout(bar);
+    // The status and the assumptions on lines of their own, wrapped: in the
+    // dock column a status such as "Model changed since verification:
+    // verify again…" is wider than the dock, and it must never be cut.
+    m_statusLabel->setObjectName(QStringLiteral("verificationStatus"));
+    m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_statusLabel->setContentsMargins(6, 0, 6, 2);
+    layout->addWidget(m_statusLabel);
+    m_assumptionsLabel->setObjectName(QStringLiteral("verificationAssumptions"));
+    m_assumptionsLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_assumptionsLabel->setContentsMargins(6, 0, 6, 2);
+    layout->addWidget(m_assumptionsLabel);
 
     m_view->setObjectName(QStringLiteral("verificationView"));
     m_view->setColumnCount(4);
@@ -223,7 +227,6 @@ void VerificationPanel::refreshStatus()
             text = tr("Every property holds (%1 configurations explored).").arg(configurations);
     }
     m_statusLabel->setText(text);
-    m_statusLabel->setToolTip(text);
     refreshAssumptions();
 }
 

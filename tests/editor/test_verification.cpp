@@ -26,6 +26,7 @@
 #include <QToolButton>
 #include <QAction>
 #include <QComboBox>
+#include <QApplication>
 #include <QLabel>
 #include <QSettings>
 #include <QStatusBar>
@@ -306,6 +307,17 @@ void TestVerification::modelEditMarksResultsStale()
     QVERIFY(normal != grey);
     QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("Model changed since verification")));
     QCOMPARE(m_dock->tabs()->tabText(1), QStringLiteral("Verification (outdated)"));
+    // In a narrow dock the status wraps: its label is as high as its lines
+    // need and as wide as the panel, never cut.
+    panel->resize(280, 400);
+    panel->show();
+    QApplication::processEvents();
+    QLabel* status = panel->statusLabel();
+    QVERIFY(status->wordWrap());
+    QVERIFY(status->width() <= panel->width());
+    QVERIFY2(status->height() >= status->heightForWidth(status->width()),
+             qPrintable(QStringLiteral("%1 < %2").arg(status->height()).arg(status->heightForWidth(status->width()))));
+    QVERIFY(status->heightForWidth(status->width()) > status->fontMetrics().height() * 3 / 2); // more than one line
     panel->view()->setCurrentItem(stuck);
     QVERIFY(!panel->replayAction()->isEnabled());
     QVERIFY(panel->showOnChartAction()->isEnabled());
