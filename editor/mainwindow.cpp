@@ -8,6 +8,7 @@
 #include "editor/commands/setelementshiddencommand.h"
 #include "editor/docks/problemsdock.h"
 #include "editor/docks/verificationpanel.h"
+#include "editor/docks/startguide.h"
 #include "editor/docks/stepdock.h"
 #include "editor/docks/stpreviewdock.h"
 #include "editor/docks/transitiondock.h"
@@ -172,6 +173,8 @@ void MainWindow::createDocks()
     m_problemsDock = new ProblemsDock(m_document, m_selection, m_verification, this);
     connect(m_problemsDock->verificationPanel(), &VerificationPanel::replayRequested, this,
             &MainWindow::replayCounterexample);
+    connect(m_stepDock->startGuide(), &StartGuide::exampleRequested, this, [this] { openExample(0); });
+    connect(m_stepDock->startGuide(), &StartGuide::userGuideRequested, this, &MainWindow::showUserGuide);
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
     m_simulationDock = new SimulationDock(m_session, m_document, this);
     arrangeDocks(docks());

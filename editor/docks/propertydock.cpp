@@ -49,6 +49,13 @@ void PropertyDock::setPlaceholder(const QString& text)
     m_placeholder->setText(text);
 }
 
+void PropertyDock::setIdlePage(QWidget* page)
+{
+    m_idlePage = page;
+    m_pages->addWidget(page);
+    refresh();
+}
+
 void PropertyDock::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange && m_pages) {
@@ -61,7 +68,12 @@ void PropertyDock::changeEvent(QEvent* event)
 void PropertyDock::refresh()
 {
     const bool shown = exists(m_elementId);
-    m_pages->setCurrentIndex(shown ? 1 : 0);
+    if (shown)
+        m_pages->setCurrentIndex(1);
+    else if (m_idlePage && m_selection->current().isNull())
+        m_pages->setCurrentWidget(m_idlePage);
+    else
+        m_pages->setCurrentWidget(m_placeholder);
     if (shown)
         refreshForm();
 }

@@ -30,6 +30,9 @@ protected:
     void setPages(QWidget* form);
     // What the dock says while no element of its kind is selected.
     void setPlaceholder(const QString& text);
+    // Shown instead of the placeholder while nothing at all is selected
+    // (after setPages()); none by default.
+    void setIdlePage(QWidget* page);
 
     void changeEvent(QEvent* event) override;
 
@@ -61,6 +64,7 @@ private:
     QString m_elementId;
     QStackedWidget* m_pages = nullptr;
     WrappingLabel* m_placeholder = nullptr;
+    QWidget* m_idlePage = nullptr;
 };
 
 } // namespace editor

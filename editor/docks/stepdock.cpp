@@ -7,6 +7,7 @@
 #include "editor/diagnostictext.h"
 #include "editor/docks/diagnosticlist.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/docks/startguide.h"
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
@@ -77,6 +78,12 @@ StepDock::StepDock(Document* document, Selection* selection, QWidget* parent)
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(createForm());
     setPages(scroll);
+    auto* guideScroll = new QScrollArea;
+    guideScroll->setWidgetResizable(true);
+    guideScroll->setFrameShape(QFrame::NoFrame);
+    m_startGuide = new StartGuide;
+    guideScroll->setWidget(m_startGuide);
+    setIdlePage(guideScroll);
     retranslate();
 }
 

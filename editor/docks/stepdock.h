@@ -18,10 +18,12 @@ namespace editor {
 class DiagnosticList;
 class Document;
 class Selection;
+class StartGuide;
 
 // Properties of the selected step: its official name, type, initial and
 // hidden flags, comment, and the transitions in and out of it as links.
-// Edits are commands pushed on the Document.
+// Edits are commands pushed on the Document. While nothing is selected it
+// shows the StartGuide.
 class StepDock : public PropertyDock {
     Q_OBJECT
 
@@ -32,6 +34,7 @@ public:
 
     // The step shown; empty when the selection is not a step.
     QString stepId() const { return elementId(); }
+    StartGuide* startGuide() const { return m_startGuide; }
 
 private:
     QWidget* createForm();
@@ -50,6 +53,7 @@ private:
     void onCommentEdited();
     void onTransitionClicked(QTreeWidgetItem* item);
 
+    StartGuide* m_startGuide = nullptr;
     QLabel* m_idLabel = nullptr;
     QLabel* m_nameLabel = nullptr;
     QLabel* m_familyLabel = nullptr;

@@ -13,6 +13,7 @@
 #include "editor/chart/transitionitem.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/docks/problemsdock.h"
+#include "editor/docks/startguide.h"
 #include "editor/docks/stepdock.h"
 #include "editor/document.h"
 #include "editor/examplemodels.h"
@@ -46,6 +47,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QMenu>
 #include <QScreen>
 #include <QToolBar>
@@ -266,6 +268,7 @@ private slots:
     void exportNamesFollowTheModelFile();
     void opensANativeFile();
     void examplesOpenAsUntitledCopies();
+    void startGuideShowsWhileNothingIsSelected();
     void brokenFileLeavesTheModelUntouched();
     void editsMarkTheTitleModified();
     void undoActionNamesTheCommand();
@@ -730,6 +733,38 @@ void TestMainWindow::examplesOpenAsUntitledCopies()
     menu->actions().first()->trigger();
     QVERIFY(m_window->document()->model().grafcet("F1"));
     QVERIFY(m_window->document()->diagnostics().empty());
+}
+
+// The first start explains itself in the dock column: the start guide while
+// nothing is selected, the element's properties once something is; its
+// buttons open the first example and the user guide.
+void TestMainWindow::startGuideShowsWhileNothingIsSelected()
+{
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    auto* guide = m_window->findChild<StartGuide*>(QStringLiteral("startGuide"));
+    QVERIFY(guide);
+    QVERIFY(guide->isVisible());
+    QVERIFY(guide->findChild<QLabel*>(QStringLiteral("startGuideText"))->text().contains(QStringLiteral("Delete")));
+
+    Selection* selection = m_window->selection();
+    selection->select(ElementRef::step(QStringLiteral("A1")));
+    QVERIFY(!guide->isVisible());
+    auto* stepDock = m_window->findChild<StepDock*>(QStringLiteral("stepDock"));
+    QCOMPARE(stepDock->stepId(), QStringLiteral("A1"));
+    // A transition selected: the Step dock says what it is for, no guide.
+    selection->select(ElementRef::transition(QStringLiteral("A1->F1")));
+    QVERIFY(!guide->isVisibleTo(stepDock));
+    selection->clear();
+    QVERIFY(guide->isVisibleTo(stepDock));
+
+    guide->exampleButton()->click();
+    QVERIFY(m_window->document()->model().grafcet("F1")); // the drilling cell
+    QVERIFY(m_window->document()->filePath().isEmpty());
+    guide->userGuideButton()->click();
+    auto* shown = m_window->findChild<UserGuide*>();
+    QVERIFY(shown && shown->isVisible());
+    shown->close();
 }
 
 void TestMainWindow::brokenFileLeavesTheModelUntouched()
