@@ -194,6 +194,17 @@ QString SimulationDock::title()
     return tr("Simulation");
 }
 
+// Next to F10 (Single Scan): Shift goes back, Ctrl forward again.
+QKeySequence SimulationDock::stepBackShortcut()
+{
+    return QKeySequence(Qt::SHIFT | Qt::Key_F10);
+}
+
+QKeySequence SimulationDock::stepForwardShortcut()
+{
+    return QKeySequence(Qt::CTRL | Qt::Key_F10);
+}
+
 SimulationDock::SimulationDock(SimulationSession* session, Document* document, QWidget* parent)
     : QDockWidget(title(), parent)
     , m_session(session)
@@ -215,6 +226,7 @@ SimulationDock::SimulationDock(SimulationSession* session, Document* document, Q
     });
     connect(m_session, &SimulationSession::wasReset, m_traceModel, &TraceTableModel::reload);
     connect(m_session, &SimulationSession::replayChanged, this, &SimulationDock::refreshReplay);
+    connect(m_session, &SimulationSession::historyMoved, this, &SimulationDock::onHistoryMoved);
     connect(m_session, &SimulationSession::speedChanged, this, [this](int speed) {
         const QSignalBlocker blocker(m_speedSpin);
         m_speedSpin->setValue(speed);
@@ -260,6 +272,13 @@ void SimulationDock::setFixedTexts()
     m_runButton->setToolTip(tr("Run scans at the chosen speed; press again to pause"));
     m_stepButton->setText(tr("Scan"));
     m_stepButton->setToolTip(tr("Run a single scan"));
+    m_backButton->setText(tr("Back"));
+    m_backButton->setToolTip(tr("Show the previous scan of the history (%1); a scan or Run from a past scan "
+                                "continues from it and drops the later scans")
+                                 .arg(QKeySequence(stepBackShortcut()).toString(QKeySequence::NativeText)));
+    m_forwardButton->setText(tr("Forward"));
+    m_forwardButton->setToolTip(tr("Show the next scan of the history (%1)")
+                                    .arg(QKeySequence(stepForwardShortcut()).toString(QKeySequence::NativeText)));
     m_resetButton->setText(tr("Reset"));
     m_resetButton->setToolTip(tr("Back to the initial step, the inputs to their defaults; clears the trace"));
     m_endButton->setText(tr("End"));
@@ -348,12 +367,18 @@ QWidget* SimulationDock::createControls()
     });
     m_stepButton = toolButton(controls, QStringLiteral("stepButton"), QStyle::SP_MediaSkipForward);
     connect(m_stepButton, &QToolButton::clicked, m_session, &SimulationSession::stepOnce);
+    m_backButton = toolButton(controls, QStringLiteral("stepBackButton"), QStyle::SP_ArrowBack);
+    connect(m_backButton, &QToolButton::clicked, m_session, &SimulationSession::stepBack);
+    m_forwardButton = toolButton(controls, QStringLiteral("stepForwardButton"), QStyle::SP_ArrowForward);
+    connect(m_forwardButton, &QToolButton::clicked, m_session, &SimulationSession::stepForward);
     m_resetButton = toolButton(controls, QStringLiteral("resetButton"), QStyle::SP_MediaSkipBackward);
     connect(m_resetButton, &QToolButton::clicked, m_session, &SimulationSession::reset);
     m_endButton = toolButton(controls, QStringLiteral("endButton"), QStyle::SP_MediaStop);
     connect(m_endButton, &QToolButton::clicked, this, [this] { m_session->setActive(false); });
     buttons->addWidget(m_runButton);
     buttons->addWidget(m_stepButton);
+    buttons->addWidget(m_backButton);
+    buttons->addWidget(m_forwardButton);
     buttons->addWidget(m_resetButton);
     buttons->addStretch();
     buttons->addWidget(m_endButton);
@@ -421,6 +446,9 @@ QWidget* SimulationDock::createTraceTab()
     m_traceView->setColumnWidth(TraceTableModel::FiredColumn, digit * 10);
     m_traceView->setColumnWidth(TraceTableModel::EntryColumn, digit * 7);
     m_traceView->setColumnWidth(TraceTableModel::TokensColumn, digit * 14);
+    // A row clicked is a scan to look at again.
+    connect(m_traceView, &QTableView::clicked, this, &SimulationDock::showTraceRow);
+    connect(m_traceView, &QTableView::activated, this, &SimulationDock::showTraceRow);
     return m_traceView;
 }
 
@@ -728,6 +756,51 @@ void SimulationDock::onActiveChanged(bool active)
     refreshReplay();
 }
 
+void SimulationDock::onHistoryMoved()
+{
+    m_traceModel->sync();
+    refreshStatus();
+    refreshHistoryButtons();
+    selectViewedScan();
+}
+
+void SimulationDock::refreshHistoryButtons()
+{
+    m_backButton->setEnabled(m_session->canStepBack());
+    m_forwardButton->setEnabled(m_session->canStepForward());
+}
+
+void SimulationDock::selectViewedScan()
+{
+    if (!m_session->isViewingHistory()) {
+        if (m_traceView->selectionModel()->hasSelection() && m_traceView->property("historySelection").toBool())
+            m_traceView->clearSelection();
+        m_traceView->setProperty("historySelection", false);
+        return;
+    }
+    const std::deque<core::ScanRecord>& trace = m_session->trace();
+    if (trace.empty())
+        return;
+    const std::int64_t row = m_session->viewedScan() - trace.front().scan;
+    if (row < 0 || row >= m_traceModel->rowCount()) {
+        m_traceView->clearSelection(); // scan 0 has no row
+    } else {
+        const QModelIndex index = m_traceModel->index(static_cast<int>(row), TraceTableModel::ScanColumn);
+        m_traceView->selectionModel()->setCurrentIndex(
+            index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+        m_traceView->scrollTo(index);
+    }
+    m_traceView->setProperty("historySelection", true);
+}
+
+void SimulationDock::showTraceRow(const QModelIndex& index)
+{
+    const std::deque<core::ScanRecord>& trace = m_session->trace();
+    if (!index.isValid() || static_cast<std::size_t>(index.row()) >= trace.size())
+        return;
+    m_session->showScan(trace[static_cast<std::size_t>(index.row())].scan);
+}
+
 void SimulationDock::onRunningChanged(bool running)
 {
     const QSignalBlocker blocker(m_runButton);
@@ -741,6 +814,8 @@ void SimulationDock::onStepped()
     if (!m_session->isActive())
         return;
     refreshStatus();
+    refreshHistoryButtons();
+
     syncCompletes();
     syncOutputs();
     refreshExplanation();
@@ -749,7 +824,9 @@ void SimulationDock::onStepped()
     QScrollBar* bar = m_traceView->verticalScrollBar();
     const bool atBottom = bar->value() >= bar->maximum();
     m_traceModel->sync();
-    if (atBottom && m_traceView->isVisible())
+    if (m_session->isViewingHistory())
+        selectViewedScan();
+    else if (atBottom && m_traceView->isVisible())
         m_traceView->scrollToBottom();
 }
 
@@ -757,9 +834,15 @@ void SimulationDock::refreshStatus()
 {
     const core::Simulator* simulator = m_session->simulator();
     const double seconds = static_cast<double>(simulator->simulatedTimeMs()) / 1000.0;
-    m_statusLabel->setText(tr("Scan %1 · %2 s")
-                               .arg(QLocale().toString(static_cast<qlonglong>(simulator->scanCount())),
-                                    QLocale().toString(seconds, 'f', 2)));
+    const QString scan = QLocale().toString(static_cast<qlonglong>(simulator->scanCount()));
+    const QString time = QLocale().toString(seconds, 'f', 2);
+    if (m_session->isViewingHistory())
+        //: %1 of %2: the past scan shown and the latest scan run; %3: its simulated time in seconds
+        m_statusLabel->setText(tr("Scan %1 of %2 (history) · %3 s")
+                                   .arg(scan, QLocale().toString(static_cast<qlonglong>(m_session->latestScan())),
+                                        time));
+    else
+        m_statusLabel->setText(tr("Scan %1 · %2 s").arg(scan, time));
 }
 
 void SimulationDock::syncOutputs()
