@@ -1067,10 +1067,10 @@ void MainWindow::replayCounterexample(int findingIndex)
         box.exec();
         return;
     }
+    // Paused at scan 0, like a replay from the Simulation dock: F10 steps, Run plays the rest.
     ensureDocksReady();
     m_simulationDock->show();
     m_simulationDock->raise();
-    m_session->run();
 }
 
 // Editing widgets are disabled rather than left to fail: the Document

@@ -475,7 +475,10 @@ QWidget* SimulationDock::createScenarioTab()
     m_failureList->setWordWrap(true);
     layout->addLayout(buttons);
     layout->addWidget(m_replayLabel);
+    // Shown only when an expectation failed: an empty list would be a large empty box.
     layout->addWidget(m_failureList, 1);
+    m_failureList->hide();
+    layout->addStretch();
     return m_scenarioTab;
 }
 
@@ -807,6 +810,7 @@ void SimulationDock::onRunningChanged(bool running)
     m_runButton->setChecked(running);
     m_runButton->setText(running ? tr("Pause") : tr("Run"));
     m_runButton->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    refreshReplayLabel(); // paused or playing
 }
 
 void SimulationDock::onStepped()
@@ -815,7 +819,9 @@ void SimulationDock::onStepped()
         return;
     refreshStatus();
     refreshHistoryButtons();
-
+    refreshReplayLabel();
+    if (m_session->replayFailures().size() != static_cast<std::size_t>(m_failureList->count()))
+        refreshFailureList();
     syncCompletes();
     syncOutputs();
     refreshExplanation();
@@ -1061,35 +1067,56 @@ void SimulationDock::addNestedExplanation(const core::NestedEngine& engine, cons
 
 void SimulationDock::refreshReplay()
 {
-    m_failureList->clear();
-    const SimulationSession::ReplayState state = m_session->replayState();
-    const std::vector<core::ScenarioFailure>& failures = m_session->replayFailures();
-    switch (state) {
+    refreshReplayLabel();
+    refreshFailureList();
+    m_recordButton->setEnabled(m_session->isActive() && !m_session->isReplaying());
+    syncInputs();
+}
+
+void SimulationDock::refreshReplayLabel()
+{
+    const std::size_t failures = m_session->replayFailures().size();
+    const QString file = m_session->replayFileName();
+    QString text;
+    switch (m_session->replayState()) {
     case SimulationSession::ReplayState::None:
-        m_replayLabel->setText(tr("Record this session as a scenario file, or replay one."));
+        text = tr("Record this session as a scenario file, or replay one.");
         break;
-    case SimulationSession::ReplayState::Running:
-        m_replayLabel->setText(tr("Replaying %1: %2 scans.").arg(m_session->replayFileName()).arg(m_session->replayLength()));
+    case SimulationSession::ReplayState::Running: {
+        const QString scan = QString::number(m_session->latestScan());
+        const QString length = QString::number(m_session->replayLength());
+        if (m_session->isRunning())
+            //: %1: the scenario file; %2 of %3: the scan reached and the scenario's last scan
+            text = tr("Replaying %1: scan %2 of %3.").arg(file, scan, length);
+        else
+            //: %1: the scenario file; %2 of %3: the scan reached and the scenario's last scan; %4: a key (F10)
+            text = tr("Replay of %1: paused at scan %2 of %3. Press %4 to step, or Run to play the rest.")
+                       .arg(file, scan, length,
+                            QKeySequence(Qt::Key_F10).toString(QKeySequence::NativeText));
         break;
+    }
     case SimulationSession::ReplayState::Finished: {
         const int expectations = m_session->replayExpectationCount();
-        if (failures.empty())
-            m_replayLabel->setText(tr("%1: every expectation met (%2).").arg(m_session->replayFileName()).arg(expectations));
+        if (failures == 0)
+            text = tr("%1: every expectation met (%2).").arg(file).arg(expectations);
         else
-            m_replayLabel->setText(tr("%1: %2 of %3 expectations failed.")
-                                       .arg(m_session->replayFileName())
-                                       .arg(failures.size())
-                                       .arg(expectations));
+            text = tr("%1: %2 of %3 expectations failed.").arg(file).arg(failures).arg(expectations);
         break;
     }
     }
-    for (const core::ScenarioFailure& failure : failures) {
+    if (m_replayLabel->text() != text)
+        m_replayLabel->setText(text);
+}
+
+void SimulationDock::refreshFailureList()
+{
+    m_failureList->clear();
+    for (const core::ScenarioFailure& failure : m_session->replayFailures()) {
         auto* item = new QListWidgetItem(tr("Line %1: %2").arg(failure.line).arg(scenarioFailureText(failure)),
                                          m_failureList);
         item->setForeground(QColor(0xc6, 0x28, 0x28));
     }
-    m_recordButton->setEnabled(m_session->isActive() && !m_session->isReplaying());
-    syncInputs();
+    m_failureList->setVisible(m_failureList->count() > 0);
 }
 
 void SimulationDock::recordScenario()
@@ -1133,8 +1160,8 @@ void SimulationDock::replayScenario()
         box.exec();
         return;
     }
+    // Paused at scan 0: F10 steps through it, Run plays the rest.
     m_tabs->setCurrentIndex(ScenarioTab);
-    m_session->run();
 }
 
 } // namespace editor

@@ -122,6 +122,8 @@ private:
     void refreshExplanation();
     void addNestedExplanation(const core::NestedEngine& engine, const core::NestedExplanation& nested);
     void refreshReplay();
+    void refreshReplayLabel();
+    void refreshFailureList();
     void refreshHistoryButtons();
     // The trace row of the scan shown while stepping through the history.
     void selectViewedScan();
