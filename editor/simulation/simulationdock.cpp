@@ -276,9 +276,11 @@ void SimulationDock::setFixedTexts()
     m_backButton->setToolTip(tr("Show the previous scan of the history (%1); a scan or Run from a past scan "
                                 "continues from it and drops the later scans")
                                  .arg(QKeySequence(stepBackShortcut()).toString(QKeySequence::NativeText)));
+    m_backButton->setAccessibleName(m_backButton->text());
     m_forwardButton->setText(tr("Forward"));
     m_forwardButton->setToolTip(tr("Show the next scan of the history (%1)")
                                     .arg(QKeySequence(stepForwardShortcut()).toString(QKeySequence::NativeText)));
+    m_forwardButton->setAccessibleName(m_forwardButton->text());
     m_resetButton->setText(tr("Reset"));
     m_resetButton->setToolTip(tr("Back to the initial step, the inputs to their defaults; clears the trace"));
     m_endButton->setText(tr("End"));
@@ -371,6 +373,10 @@ QWidget* SimulationDock::createControls()
     connect(m_backButton, &QToolButton::clicked, m_session, &SimulationSession::stepBack);
     m_forwardButton = toolButton(controls, QStringLiteral("stepForwardButton"), QStyle::SP_ArrowForward);
     connect(m_forwardButton, &QToolButton::clicked, m_session, &SimulationSession::stepForward);
+    // Arrows alone (their text is the tooltip's and the screen reader's): with
+    // words the row would widen the dock column beyond its 1366 x 768 width.
+    for (QToolButton* button : {m_backButton, m_forwardButton})
+        button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     m_resetButton = toolButton(controls, QStringLiteral("resetButton"), QStyle::SP_MediaSkipBackward);
     connect(m_resetButton, &QToolButton::clicked, m_session, &SimulationSession::reset);
     m_endButton = toolButton(controls, QStringLiteral("endButton"), QStyle::SP_MediaStop);
