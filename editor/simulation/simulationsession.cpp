@@ -318,8 +318,9 @@ void SimulationSession::showScan(std::int64_t scan)
 
 // Like an edit after an undo: the scans after the one shown are dropped
 // from the history, the trace and the recording, and the simulator goes
-// back to that scan. A replay goes on from there, its later failures dropped.
-void SimulationSession::continueFromViewedScan()
+// back to that scan. Played on, a replay goes on from there, its later
+// failures dropped; an input changed there ends it: the user plays from then.
+void SimulationSession::continueFromViewedScan(Continuation how)
 {
     if (!m_viewed)
         return;
@@ -334,7 +335,9 @@ void SimulationSession::continueFromViewedScan()
     dropRecordingAfter(scan);
     m_pendingReleases.clear();
     std::fill(m_pressedAt.begin(), m_pressedAt.end(), -1);
-    if (m_scenario) {
+    if (m_scenario && how == Continuation::Edit) {
+        stopReplay();
+    } else if (m_scenario) {
         std::erase_if(m_replayFailures, [scan](const core::ScenarioFailure& f) { return f.scan > scan; });
         if (scan < m_scenario->lastScan()) {
             m_runner = std::make_unique<core::ScenarioRunner>(*m_scenario, *m_simulator);
@@ -386,7 +389,7 @@ bool SimulationSession::setVariable(int index, const core::cond::Value& value, Q
 {
     if (!isActive())
         return false;
-    continueFromViewedScan();
+    continueFromViewedScan(Continuation::Edit);
     const core::Status status = m_simulator->setVariableAt(static_cast<std::size_t>(index), value);
     if (!status) {
         if (error)
@@ -401,7 +404,7 @@ void SimulationSession::press(int index)
 {
     if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size())
         return;
-    continueFromViewedScan();
+    continueFromViewedScan(Continuation::Edit);
     m_pendingReleases.erase(std::remove(m_pendingReleases.begin(), m_pendingReleases.end(), index),
                             m_pendingReleases.end());
     m_pressedAt[static_cast<std::size_t>(index)] = m_simulator->scanCount();
@@ -412,7 +415,7 @@ void SimulationSession::release(int index)
 {
     if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size())
         return;
-    continueFromViewedScan();
+    continueFromViewedScan(Continuation::Edit);
     std::int64_t& pressedAt = m_pressedAt[static_cast<std::size_t>(index)];
     const bool scanned = pressedAt < 0 || m_simulator->scanCount() > pressedAt;
     pressedAt = -1;
@@ -426,7 +429,7 @@ void SimulationSession::setCompleteMode(const QString& stepId, core::CompleteMod
 {
     if (!isActive())
         return;
-    continueFromViewedScan();
+    continueFromViewedScan(Continuation::Edit);
     if (m_simulator->setCompleteMode(stepId.toStdString(), mode))
         emit inputsChanged();
 }
@@ -435,7 +438,7 @@ void SimulationSession::setManualComplete(const QString& stepId, bool complete)
 {
     if (!isActive())
         return;
-    continueFromViewedScan();
+    continueFromViewedScan(Continuation::Edit);
     if (m_simulator->setComplete(stepId.toStdString(), complete))
         emit inputsChanged();
 }

@@ -43,7 +43,8 @@ class Document;
 // trace selection all show that scan. Playing from a past scan (a scan, Run,
 // or an input changed) continues from it, like editing after an undo: the
 // later history, trace and recording are dropped, so a saved scenario stays
-// what was played.
+// what was played. A replay played on from a past scan replays from there;
+// an input changed there ends it.
 class SimulationSession : public QObject {
     Q_OBJECT
 
@@ -163,8 +164,10 @@ private:
     void clearSession();
     void afterScan(core::ScanRecord&& record);
     void keepSnapshot();
-    // Before anything plays from a past scan: it becomes the latest.
-    void continueFromViewedScan();
+    // Before anything plays from a past scan or changes an input there: it
+    // becomes the latest.
+    enum class Continuation { Play, Edit };
+    void continueFromViewedScan(Continuation how = Continuation::Play);
     void dropRecordingAfter(std::int64_t scan);
     void recordCompleteSettings(core::RecordedScan& changes);
     void finishReplay();

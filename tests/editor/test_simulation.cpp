@@ -1131,8 +1131,8 @@ void TestSimulation::replayStartsPausedAtScanZero()
     QVERIFY(m_session->replayFailures().empty());
 }
 
-// Stepping back is allowed in a paused replay; playing again replays the
-// scenario from the scan shown, each failure counted once.
+// Stepping back is allowed in a replay; playing again replays the scenario
+// from the scan shown, each failure counted once.
 void TestSimulation::steppingBackInAReplayReplaysFromThere()
 {
     startOnRealisticModel();
@@ -1160,6 +1160,18 @@ void TestSimulation::steppingBackInAReplayReplaysFromThere()
     QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
     QCOMPARE(m_session->replayFailures().size(), std::size_t{1});
     QCOMPARE(m_dock->failureList()->count(), 1);
+
+    // An input changed at a past scan ends the replay: the user plays on from there.
+    clickButton("stepBackButton", 2);
+    QVERIFY(m_dock->findChild<QWidget*>(QStringLiteral("inputsPanel"))->isEnabled());
+    click(QStringLiteral("AirPressureOk"));
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::None);
+    QCOMPARE(m_session->latestScan(), std::int64_t{2});
+    QVERIFY(m_dock->failureList()->isHidden());
+    scan();
+    QCOMPARE(m_session->latestScan(), std::int64_t{3});
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
+    QCOMPARE(m_session->recording().changes.back().scan, std::int64_t{3});
 }
 
 // The failures list shows only when an expectation failed.
