@@ -398,7 +398,7 @@ void MainWindow::createActions()
         const QSignalBlocker blocker(m_runAction);
         m_runAction->setChecked(running);
     });
-    m_scanAction = action("singleScanAction", [this] { m_session->stepOnce(); }, Qt::Key_F10);
+    m_scanAction = action("singleScanAction", [this] { m_session->stepOnce(); }, SimulationDock::singleScanShortcut());
     m_resetSimulationAction = action("resetSimulationAction", [this] { m_session->reset(); });
     m_stepBackAction = action("stepBackAction", [this] { m_session->stepBack(); },
                               SimulationDock::stepBackShortcut());

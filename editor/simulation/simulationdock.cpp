@@ -194,6 +194,11 @@ QString SimulationDock::title()
     return tr("Simulation");
 }
 
+QKeySequence SimulationDock::singleScanShortcut()
+{
+    return QKeySequence(Qt::Key_F10);
+}
+
 // Next to F10 (Single Scan): Shift goes back, Ctrl forward again.
 QKeySequence SimulationDock::stepBackShortcut()
 {
@@ -1098,7 +1103,7 @@ void SimulationDock::refreshReplayLabel()
             //: %1: the scenario file; %2 of %3: the scan reached and the scenario's last scan; %4: a key (F10)
             text = tr("Replay of %1: paused at scan %2 of %3. Press %4 to step, or Run to play the rest.")
                        .arg(file, scan, length,
-                            QKeySequence(Qt::Key_F10).toString(QKeySequence::NativeText));
+                            singleScanShortcut().toString(QKeySequence::NativeText));
         break;
     }
     case SimulationSession::ReplayState::Finished: {

@@ -46,7 +46,8 @@ class SimulationDock : public QDockWidget {
 public:
     // Also the title of the empty frame that stands for the dock at start-up.
     static QString title();
-    // Simulation > Step Back and Step Forward, shown in the dock's tooltips.
+    // Simulation > Single Scan, Step Back and Step Forward, named in the dock's texts.
+    static QKeySequence singleScanShortcut();
     static QKeySequence stepBackShortcut();
     static QKeySequence stepForwardShortcut();
     enum ExplanationColumn { TransitionColumn, StatusColumn };
