@@ -280,11 +280,11 @@ void SimulationDock::setFixedTexts()
     m_backButton->setText(tr("Back"));
     m_backButton->setToolTip(tr("Show the previous scan of the history (%1); a scan or Run from a past scan "
                                 "continues from it and drops the later scans")
-                                 .arg(QKeySequence(stepBackShortcut()).toString(QKeySequence::NativeText)));
+                                 .arg(stepBackShortcut().toString(QKeySequence::NativeText)));
     m_backButton->setAccessibleName(m_backButton->text());
     m_forwardButton->setText(tr("Forward"));
     m_forwardButton->setToolTip(tr("Show the next scan of the history (%1)")
-                                    .arg(QKeySequence(stepForwardShortcut()).toString(QKeySequence::NativeText)));
+                                    .arg(stepForwardShortcut().toString(QKeySequence::NativeText)));
     m_forwardButton->setAccessibleName(m_forwardButton->text());
     m_resetButton->setText(tr("Reset"));
     m_resetButton->setToolTip(tr("Back to the initial step, the inputs to their defaults; clears the trace"));
@@ -821,7 +821,8 @@ void SimulationDock::onRunningChanged(bool running)
     m_runButton->setChecked(running);
     m_runButton->setText(running ? tr("Pause") : tr("Run"));
     m_runButton->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-    refreshReplayLabel(); // paused or playing
+    if (m_session->isReplaying())
+        refreshReplayLabel(); // paused or playing
 }
 
 void SimulationDock::onStepped()
@@ -830,7 +831,8 @@ void SimulationDock::onStepped()
         return;
     refreshStatus();
     refreshHistoryButtons();
-    refreshReplayLabel();
+    if (m_session->isReplaying())
+        refreshReplayLabel(); // the scan reached, or the end of the replay
     if (m_session->replayFailures().size() != static_cast<std::size_t>(m_failureList->count()))
         refreshFailureList();
     syncCompletes();
