@@ -29,13 +29,16 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileDialog>
 #include <QLabel>
 #include <QListWidget>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -46,6 +49,7 @@
 #include <QTemporaryDir>
 #include <QRegularExpression>
 #include <QTest>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -136,6 +140,7 @@ private slots:
     void playingFromAPastScanDropsTheLaterHistory();
     void historyIsBoundedAndCheap();
     void replayStartsPausedAtScanZero();
+    void replayFromTheDockStartsPaused();
     void steppingBackInAReplayReplaysFromThere();
     void scenarioTabHasNoEmptyFailureBox();
     void languageChangeKeepsTheSimulation();
@@ -1129,6 +1134,31 @@ void TestSimulation::replayStartsPausedAtScanZero()
     QVERIFY(!m_session->isRunning());
     QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{4});
     QVERIFY(m_session->replayFailures().empty());
+}
+
+// Re&play Scenario… opens the file dialog, then leaves the replay paused at scan 0.
+void TestSimulation::replayFromTheDockStartsPaused()
+{
+    startOnRealisticModel();
+    const QString path = writeScenario("dock.scenario", "at 1: set HomePosition = TRUE, AirPressureOk = TRUE\n"
+                                                        "at 3: expect step A1\n");
+    bool answered = false;
+    QTimer::singleShot(0, this, [&] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog)
+            return;
+        dialog->selectFile(path);
+        static_cast<QDialog*>(dialog)->accept(); // public there
+        answered = true;
+    });
+    QTest::mouseClick(m_dock->findChild<QPushButton*>(QStringLiteral("replayButton")), Qt::LeftButton);
+    QVERIFY(answered);
+    QVERIFY(m_session->isReplaying());
+    QVERIFY(!m_session->isRunning());
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{0});
+    QVERIFY2(m_dock->replayLabel()->text().contains(QStringLiteral("paused at scan 0 of 3")),
+             qPrintable(m_dock->replayLabel()->text()));
+    QVERIFY(m_dock->replayLabel()->isVisible()); // the Scenario tab is in front
 }
 
 // Stepping back is allowed in a replay; playing again replays the scenario
