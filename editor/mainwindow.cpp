@@ -413,8 +413,20 @@ void MainWindow::createActions()
         const QSignalBlocker blocker(m_runAction);
         m_runAction->setChecked(running);
     });
-    m_scanAction = action("singleScanAction", [this] { m_session->stepOnce(); }, Qt::Key_F10);
+    m_scanAction = action("singleScanAction", [this] { m_session->stepOnce(); }, SimulationDock::singleScanShortcut());
     m_resetSimulationAction = action("resetSimulationAction", [this] { m_session->reset(); });
+    m_stepBackAction = action("stepBackAction", [this] { m_session->stepBack(); },
+                              SimulationDock::stepBackShortcut());
+    m_stepForwardAction = action("stepForwardAction", [this] { m_session->stepForward(); },
+                                 SimulationDock::stepForwardShortcut());
+    // Enabled where the history has a scan to go to.
+    const auto updateHistoryActions = [this] {
+        m_stepBackAction->setEnabled(m_session->canStepBack());
+        m_stepForwardAction->setEnabled(m_session->canStepForward());
+    };
+    connect(m_session, &SimulationSession::stepped, this, updateHistoryActions);
+    connect(m_session, &SimulationSession::historyMoved, this, updateHistoryActions);
+    connect(m_session, &SimulationSession::activeChanged, this, updateHistoryActions);
     m_verifyAction = action("verifyAction", &MainWindow::verify, Qt::Key_F7);
     m_verifyAction->setShortcuts({QKeySequence(Qt::Key_F7), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V)});
 
@@ -495,7 +507,8 @@ void MainWindow::createMenus()
     m_simulationMenu->setObjectName("simulationMenu");
     m_simulationMenu->addAction(m_simulateAction);
     m_simulationMenu->addSeparator();
-    m_simulationMenu->addActions({m_runAction, m_scanAction, m_resetSimulationAction});
+    m_simulationMenu->addActions({m_runAction, m_scanAction, m_stepBackAction, m_stepForwardAction,
+                                  m_resetSimulationAction});
     m_simulationMenu->addSeparator();
     m_simulationMenu->addAction(m_verifyAction);
 
@@ -726,6 +739,11 @@ void MainWindow::retranslate()
     m_runAction->setStatusTip(tr("Run scans at the speed set in the Simulation dock, or pause them"));
     m_scanAction->setText(tr("Single S&can"));
     m_resetSimulationAction->setText(tr("R&eset Simulation"));
+    m_stepBackAction->setText(tr("Step &Back"));
+    m_stepBackAction->setStatusTip(tr("Show the previous scan of the run; a scan or Run from there continues "
+                                      "from it and drops the later scans"));
+    m_stepForwardAction->setText(tr("Step &Forward"));
+    m_stepForwardAction->setStatusTip(tr("Show the next scan of the run's history"));
     m_simulationIndicator->setText(tr("Simulation: editing locked"));
     m_verifyAction->setText(tr("&Verify"));
     m_verifyAction->setStatusTip(tr("Prove what the GEMMA layer can and cannot do for every input sequence; "
@@ -1010,6 +1028,8 @@ void MainWindow::onSimulationActiveChanged(bool active)
     m_runAction->setEnabled(active);
     m_scanAction->setEnabled(active);
     m_resetSimulationAction->setEnabled(active);
+    m_stepBackAction->setEnabled(m_session->canStepBack());
+    m_stepForwardAction->setEnabled(m_session->canStepForward());
     m_simulationIndicator->setVisible(active);
     applyEditingLock();
     if (active) {
@@ -1061,10 +1081,10 @@ void MainWindow::replayCounterexample(int findingIndex)
         box.exec();
         return;
     }
+    // Paused at scan 0, like a replay from the Simulation dock: F10 steps, Run plays the rest.
     ensureDocksReady();
     m_simulationDock->show();
     m_simulationDock->raise();
-    m_session->run();
 }
 
 // Editing widgets are disabled rather than left to fail: the Document

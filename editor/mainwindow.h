@@ -202,6 +202,8 @@ private:
     QAction* m_runAction = nullptr;
     QAction* m_scanAction = nullptr;
     QAction* m_resetSimulationAction = nullptr;
+    QAction* m_stepBackAction = nullptr;
+    QAction* m_stepForwardAction = nullptr;
     QAction* m_verifyAction = nullptr;
     QAction* m_userGuideAction = nullptr;
     UserGuide* m_userGuide = nullptr; // made on first use

@@ -124,7 +124,8 @@ void VerificationRunner::onModelChanged()
 QStringList VerificationRunner::sessionAutomaticSteps() const
 {
     QStringList steps;
-    const core::Simulator* simulator = m_session ? m_session->simulator() : nullptr;
+    // The settings the user plays with, not those of a past scan looked at.
+    const core::Simulator* simulator = m_session ? m_session->liveSimulator() : nullptr;
     if (!simulator)
         return steps;
     for (const std::string& step : simulator->nestedSteps()) {

@@ -1896,6 +1896,22 @@
         <source>How to build a model, simulate, verify and export, offline; F1 opens it at the part about the panel you are in</source>
         <translation>Wie man ein Modell erstellt, simuliert, verifiziert und exportiert, offline (auf Englisch); F1 öffnet es bei dem Teil über das Fenster, in dem Sie sind</translation>
     </message>
+    <message>
+        <source>Step &amp;Back</source>
+        <translation>Zyklus zu&amp;rück</translation>
+    </message>
+    <message>
+        <source>Show the previous scan of the run; a scan or Run from there continues from it and drops the later scans</source>
+        <translation>Den vorherigen Zyklus des Laufs zeigen; ein Zyklus oder Ausführen von dort setzt bei ihm fort und verwirft die späteren Zyklen</translation>
+    </message>
+    <message>
+        <source>Step &amp;Forward</source>
+        <translation>Zyklus vor&amp;wärts</translation>
+    </message>
+    <message>
+        <source>Show the next scan of the run&apos;s history</source>
+        <translation>Den nächsten Zyklus im Verlauf des Laufs zeigen</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2288,10 +2304,6 @@
         <translation>Diese Sitzung als Szenariodatei aufzeichnen oder eine abspielen.</translation>
     </message>
     <message>
-        <source>Replaying %1: %2 scans.</source>
-        <translation>%1 wird abgespielt: %2 Zyklen.</translation>
-    </message>
-    <message>
         <source>%1: every expectation met (%2).</source>
         <translation>%1: alle Erwartungen erfüllt (%2).</translation>
     </message>
@@ -2397,6 +2409,37 @@
     <message>
         <source>Written by the program: %1 is not an input</source>
         <translation>Vom Programm geschrieben: %1 ist kein Eingang</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zurück</translation>
+    </message>
+    <message>
+        <source>Show the previous scan of the history (%1); a scan or Run from a past scan continues from it and drops the later scans</source>
+        <translation>Den vorherigen Zyklus des Verlaufs zeigen (%1); ein Zyklus oder Ausführen ab einem vergangenen Zyklus setzt bei ihm fort und verwirft die späteren Zyklen</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Vor</translation>
+    </message>
+    <message>
+        <source>Show the next scan of the history (%1)</source>
+        <translation>Den nächsten Zyklus des Verlaufs zeigen (%1)</translation>
+    </message>
+    <message>
+        <source>Scan %1 of %2 (history) · %3 s</source>
+        <extracomment>%1 of %2: the past scan shown and the latest scan run; %3: its simulated time in seconds</extracomment>
+        <translation>Zyklus %1 von %2 (Verlauf) · %3 s</translation>
+    </message>
+    <message>
+        <source>Replaying %1: scan %2 of %3.</source>
+        <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan</extracomment>
+        <translation>%1 wird abgespielt: Zyklus %2 von %3.</translation>
+    </message>
+    <message>
+        <source>Replay of %1: paused at scan %2 of %3. Press %4 to step, or Run to play the rest.</source>
+        <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
+        <translation>Abspielen von %1: angehalten bei Zyklus %2 von %3. %4 spielt einen Zyklus, Ausführen den Rest.</translation>
     </message>
 </context>
 <context>

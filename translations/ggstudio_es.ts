@@ -1896,6 +1896,22 @@
         <source>How to build a model, simulate, verify and export, offline; F1 opens it at the part about the panel you are in</source>
         <translation>Cómo crear un modelo, simularlo, verificarlo y exportarlo, sin conexión (en inglés); F1 la abre en la parte del panel en el que está</translation>
     </message>
+    <message>
+        <source>Step &amp;Back</source>
+        <translation>Ciclo &amp;anterior</translation>
+    </message>
+    <message>
+        <source>Show the previous scan of the run; a scan or Run from there continues from it and drops the later scans</source>
+        <translation>Mostrar el ciclo anterior de la ejecución; un ciclo o Ejecutar desde ahí continúa a partir de él y descarta los ciclos posteriores</translation>
+    </message>
+    <message>
+        <source>Step &amp;Forward</source>
+        <translation>Ciclo si&amp;guiente</translation>
+    </message>
+    <message>
+        <source>Show the next scan of the run&apos;s history</source>
+        <translation>Mostrar el ciclo siguiente del historial de la ejecución</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2288,10 +2304,6 @@
         <translation>Grabe esta sesión como archivo de escenario, o reproduzca uno.</translation>
     </message>
     <message>
-        <source>Replaying %1: %2 scans.</source>
-        <translation>Reproduciendo %1: %2 ciclos.</translation>
-    </message>
-    <message>
         <source>%1: every expectation met (%2).</source>
         <translation>%1: se cumplen todas las expectativas (%2).</translation>
     </message>
@@ -2397,6 +2409,37 @@
     <message>
         <source>Written by the program: %1 is not an input</source>
         <translation>Escrita por el programa: %1 no es una entrada</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Atrás</translation>
+    </message>
+    <message>
+        <source>Show the previous scan of the history (%1); a scan or Run from a past scan continues from it and drops the later scans</source>
+        <translation>Mostrar el ciclo anterior del historial (%1); un ciclo o Ejecutar desde un ciclo pasado continúa a partir de él y descarta los ciclos posteriores</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Adelante</translation>
+    </message>
+    <message>
+        <source>Show the next scan of the history (%1)</source>
+        <translation>Mostrar el ciclo siguiente del historial (%1)</translation>
+    </message>
+    <message>
+        <source>Scan %1 of %2 (history) · %3 s</source>
+        <extracomment>%1 of %2: the past scan shown and the latest scan run; %3: its simulated time in seconds</extracomment>
+        <translation>Ciclo %1 de %2 (historial) · %3 s</translation>
+    </message>
+    <message>
+        <source>Replaying %1: scan %2 of %3.</source>
+        <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan</extracomment>
+        <translation>Reproduciendo %1: ciclo %2 de %3.</translation>
+    </message>
+    <message>
+        <source>Replay of %1: paused at scan %2 of %3. Press %4 to step, or Run to play the rest.</source>
+        <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
+        <translation>Reproducción de %1: en pausa en el ciclo %2 de %3. Pulse %4 para avanzar un ciclo, o Ejecutar para reproducir el resto.</translation>
     </message>
 </context>
 <context>

@@ -1896,6 +1896,22 @@
         <source>How to build a model, simulate, verify and export, offline; F1 opens it at the part about the panel you are in</source>
         <translation>Comment construire un modèle, le simuler, le vérifier et l&apos;exporter, hors ligne (en anglais)&#xa0;; F1 l&apos;ouvre à la partie sur le panneau où vous êtes</translation>
     </message>
+    <message>
+        <source>Step &amp;Back</source>
+        <translation>Cycle &amp;précédent</translation>
+    </message>
+    <message>
+        <source>Show the previous scan of the run; a scan or Run from there continues from it and drops the later scans</source>
+        <translation>Afficher le cycle précédent de l&apos;exécution&#xa0;; un cycle ou Exécuter à partir de là repart de ce cycle et abandonne les cycles suivants</translation>
+    </message>
+    <message>
+        <source>Step &amp;Forward</source>
+        <translation>Cycle suiva&amp;nt</translation>
+    </message>
+    <message>
+        <source>Show the next scan of the run&apos;s history</source>
+        <translation>Afficher le cycle suivant de l&apos;historique de l&apos;exécution</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2288,10 +2304,6 @@
         <translation>Enregistrez cette session comme fichier de scénario, ou rejouez-en un.</translation>
     </message>
     <message>
-        <source>Replaying %1: %2 scans.</source>
-        <translation>Relecture de %1&#xa0;: %2 cycles.</translation>
-    </message>
-    <message>
         <source>%1: every expectation met (%2).</source>
         <translation>%1&#xa0;: toutes les attentes sont satisfaites (%2).</translation>
     </message>
@@ -2397,6 +2409,37 @@
     <message>
         <source>Written by the program: %1 is not an input</source>
         <translation>Écrite par le programme&#xa0;: %1 n&apos;est pas une entrée</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Précédent</translation>
+    </message>
+    <message>
+        <source>Show the previous scan of the history (%1); a scan or Run from a past scan continues from it and drops the later scans</source>
+        <translation>Afficher le cycle précédent de l&apos;historique (%1)&#xa0;; un cycle ou Exécuter depuis un cycle passé repart de celui-ci et abandonne les cycles suivants</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Suivant</translation>
+    </message>
+    <message>
+        <source>Show the next scan of the history (%1)</source>
+        <translation>Afficher le cycle suivant de l&apos;historique (%1)</translation>
+    </message>
+    <message>
+        <source>Scan %1 of %2 (history) · %3 s</source>
+        <extracomment>%1 of %2: the past scan shown and the latest scan run; %3: its simulated time in seconds</extracomment>
+        <translation>Cycle %1 sur %2 (historique) · %3 s</translation>
+    </message>
+    <message>
+        <source>Replaying %1: scan %2 of %3.</source>
+        <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan</extracomment>
+        <translation>Relecture de %1&#xa0;: cycle %2 sur %3.</translation>
+    </message>
+    <message>
+        <source>Replay of %1: paused at scan %2 of %3. Press %4 to step, or Run to play the rest.</source>
+        <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
+        <translation>Relecture de %1&#xa0;: en pause au cycle %2 sur %3. Appuyez sur %4 pour avancer d&apos;un cycle, ou sur Exécuter pour jouer la suite.</translation>
     </message>
 </context>
 <context>

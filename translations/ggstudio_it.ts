@@ -1896,6 +1896,22 @@
         <source>How to build a model, simulate, verify and export, offline; F1 opens it at the part about the panel you are in</source>
         <translation>Come costruire un modello, simularlo, verificarlo ed esportarlo, offline (in inglese); F1 la apre alla parte sul pannello in cui si trova</translation>
     </message>
+    <message>
+        <source>Step &amp;Back</source>
+        <translation>Ciclo &amp;precedente</translation>
+    </message>
+    <message>
+        <source>Show the previous scan of the run; a scan or Run from there continues from it and drops the later scans</source>
+        <translation>Mostra il ciclo precedente dell&apos;esecuzione; un ciclo o Esegui da lì riprende da quel ciclo e scarta i cicli successivi</translation>
+    </message>
+    <message>
+        <source>Step &amp;Forward</source>
+        <translation>Ciclo su&amp;ccessivo</translation>
+    </message>
+    <message>
+        <source>Show the next scan of the run&apos;s history</source>
+        <translation>Mostra il ciclo successivo della cronologia dell&apos;esecuzione</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2288,10 +2304,6 @@
         <translation>Registra questa sessione come file di scenario, o riproducine uno.</translation>
     </message>
     <message>
-        <source>Replaying %1: %2 scans.</source>
-        <translation>Riproduzione di %1: %2 cicli.</translation>
-    </message>
-    <message>
         <source>%1: every expectation met (%2).</source>
         <translation>%1: tutte le attese soddisfatte (%2).</translation>
     </message>
@@ -2397,6 +2409,37 @@
     <message>
         <source>Written by the program: %1 is not an input</source>
         <translation>Scritta dal programma: %1 non è un ingresso</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Indietro</translation>
+    </message>
+    <message>
+        <source>Show the previous scan of the history (%1); a scan or Run from a past scan continues from it and drops the later scans</source>
+        <translation>Mostra il ciclo precedente della cronologia (%1); un ciclo o Esegui da un ciclo passato riprende da lì e scarta i cicli successivi</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Avanti</translation>
+    </message>
+    <message>
+        <source>Show the next scan of the history (%1)</source>
+        <translation>Mostra il ciclo successivo della cronologia (%1)</translation>
+    </message>
+    <message>
+        <source>Scan %1 of %2 (history) · %3 s</source>
+        <extracomment>%1 of %2: the past scan shown and the latest scan run; %3: its simulated time in seconds</extracomment>
+        <translation>Ciclo %1 di %2 (cronologia) · %3 s</translation>
+    </message>
+    <message>
+        <source>Replaying %1: scan %2 of %3.</source>
+        <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan</extracomment>
+        <translation>Riproduzione di %1: ciclo %2 di %3.</translation>
+    </message>
+    <message>
+        <source>Replay of %1: paused at scan %2 of %3. Press %4 to step, or Run to play the rest.</source>
+        <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
+        <translation>Riproduzione di %1: in pausa al ciclo %2 di %3. Premi %4 per avanzare di un ciclo, o Esegui per riprodurre il resto.</translation>
     </message>
 </context>
 <context>

@@ -194,6 +194,22 @@ QString SimulationDock::title()
     return tr("Simulation");
 }
 
+QKeySequence SimulationDock::singleScanShortcut()
+{
+    return QKeySequence(Qt::Key_F10);
+}
+
+// Next to F10 (Single Scan): Shift goes back, Ctrl forward again.
+QKeySequence SimulationDock::stepBackShortcut()
+{
+    return QKeySequence(Qt::SHIFT | Qt::Key_F10);
+}
+
+QKeySequence SimulationDock::stepForwardShortcut()
+{
+    return QKeySequence(Qt::CTRL | Qt::Key_F10);
+}
+
 SimulationDock::SimulationDock(SimulationSession* session, Document* document, QWidget* parent)
     : QDockWidget(title(), parent)
     , m_session(session)
@@ -215,6 +231,7 @@ SimulationDock::SimulationDock(SimulationSession* session, Document* document, Q
     });
     connect(m_session, &SimulationSession::wasReset, m_traceModel, &TraceTableModel::reload);
     connect(m_session, &SimulationSession::replayChanged, this, &SimulationDock::refreshReplay);
+    connect(m_session, &SimulationSession::historyMoved, this, &SimulationDock::onHistoryMoved);
     connect(m_session, &SimulationSession::speedChanged, this, [this](int speed) {
         const QSignalBlocker blocker(m_speedSpin);
         m_speedSpin->setValue(speed);
@@ -260,6 +277,15 @@ void SimulationDock::setFixedTexts()
     m_runButton->setToolTip(tr("Run scans at the chosen speed; press again to pause"));
     m_stepButton->setText(tr("Scan"));
     m_stepButton->setToolTip(tr("Run a single scan"));
+    m_backButton->setText(tr("Back"));
+    m_backButton->setToolTip(tr("Show the previous scan of the history (%1); a scan or Run from a past scan "
+                                "continues from it and drops the later scans")
+                                 .arg(stepBackShortcut().toString(QKeySequence::NativeText)));
+    m_backButton->setAccessibleName(m_backButton->text());
+    m_forwardButton->setText(tr("Forward"));
+    m_forwardButton->setToolTip(tr("Show the next scan of the history (%1)")
+                                    .arg(stepForwardShortcut().toString(QKeySequence::NativeText)));
+    m_forwardButton->setAccessibleName(m_forwardButton->text());
     m_resetButton->setText(tr("Reset"));
     m_resetButton->setToolTip(tr("Back to the initial step, the inputs to their defaults; clears the trace"));
     m_endButton->setText(tr("End"));
@@ -348,12 +374,22 @@ QWidget* SimulationDock::createControls()
     });
     m_stepButton = toolButton(controls, QStringLiteral("stepButton"), QStyle::SP_MediaSkipForward);
     connect(m_stepButton, &QToolButton::clicked, m_session, &SimulationSession::stepOnce);
+    m_backButton = toolButton(controls, QStringLiteral("stepBackButton"), QStyle::SP_ArrowBack);
+    connect(m_backButton, &QToolButton::clicked, m_session, &SimulationSession::stepBack);
+    m_forwardButton = toolButton(controls, QStringLiteral("stepForwardButton"), QStyle::SP_ArrowForward);
+    connect(m_forwardButton, &QToolButton::clicked, m_session, &SimulationSession::stepForward);
+    // Arrows alone (their text is the tooltip's and the screen reader's): with
+    // words the row would widen the dock column beyond its 1366 x 768 width.
+    for (QToolButton* button : {m_backButton, m_forwardButton})
+        button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     m_resetButton = toolButton(controls, QStringLiteral("resetButton"), QStyle::SP_MediaSkipBackward);
     connect(m_resetButton, &QToolButton::clicked, m_session, &SimulationSession::reset);
     m_endButton = toolButton(controls, QStringLiteral("endButton"), QStyle::SP_MediaStop);
     connect(m_endButton, &QToolButton::clicked, this, [this] { m_session->setActive(false); });
     buttons->addWidget(m_runButton);
     buttons->addWidget(m_stepButton);
+    buttons->addWidget(m_backButton);
+    buttons->addWidget(m_forwardButton);
     buttons->addWidget(m_resetButton);
     buttons->addStretch();
     buttons->addWidget(m_endButton);
@@ -421,6 +457,9 @@ QWidget* SimulationDock::createTraceTab()
     m_traceView->setColumnWidth(TraceTableModel::FiredColumn, digit * 10);
     m_traceView->setColumnWidth(TraceTableModel::EntryColumn, digit * 7);
     m_traceView->setColumnWidth(TraceTableModel::TokensColumn, digit * 14);
+    // A row clicked is a scan to look at again.
+    connect(m_traceView, &QTableView::clicked, this, &SimulationDock::showTraceRow);
+    connect(m_traceView, &QTableView::activated, this, &SimulationDock::showTraceRow);
     return m_traceView;
 }
 
@@ -447,7 +486,10 @@ QWidget* SimulationDock::createScenarioTab()
     m_failureList->setWordWrap(true);
     layout->addLayout(buttons);
     layout->addWidget(m_replayLabel);
+    // Shown only when an expectation failed: an empty list would be a large empty box.
     layout->addWidget(m_failureList, 1);
+    m_failureList->hide();
+    layout->addStretch();
     return m_scenarioTab;
 }
 
@@ -728,12 +770,59 @@ void SimulationDock::onActiveChanged(bool active)
     refreshReplay();
 }
 
+void SimulationDock::onHistoryMoved()
+{
+    m_traceModel->sync();
+    refreshStatus();
+    refreshHistoryButtons();
+    selectViewedScan();
+}
+
+void SimulationDock::refreshHistoryButtons()
+{
+    m_backButton->setEnabled(m_session->canStepBack());
+    m_forwardButton->setEnabled(m_session->canStepForward());
+}
+
+void SimulationDock::selectViewedScan()
+{
+    if (!m_session->isViewingHistory()) {
+        if (m_traceView->selectionModel()->hasSelection() && m_traceView->property("historySelection").toBool())
+            m_traceView->clearSelection();
+        m_traceView->setProperty("historySelection", false);
+        return;
+    }
+    const std::deque<core::ScanRecord>& trace = m_session->trace();
+    if (trace.empty())
+        return;
+    const std::int64_t row = m_session->viewedScan() - trace.front().scan;
+    if (row < 0 || row >= m_traceModel->rowCount()) {
+        m_traceView->clearSelection(); // scan 0 has no row
+    } else {
+        const QModelIndex index = m_traceModel->index(static_cast<int>(row), TraceTableModel::ScanColumn);
+        m_traceView->selectionModel()->setCurrentIndex(
+            index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+        m_traceView->scrollTo(index);
+    }
+    m_traceView->setProperty("historySelection", true);
+}
+
+void SimulationDock::showTraceRow(const QModelIndex& index)
+{
+    const std::deque<core::ScanRecord>& trace = m_session->trace();
+    if (!index.isValid() || static_cast<std::size_t>(index.row()) >= trace.size())
+        return;
+    m_session->showScan(trace[static_cast<std::size_t>(index.row())].scan);
+}
+
 void SimulationDock::onRunningChanged(bool running)
 {
     const QSignalBlocker blocker(m_runButton);
     m_runButton->setChecked(running);
     m_runButton->setText(running ? tr("Pause") : tr("Run"));
     m_runButton->setIcon(style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    if (m_session->isReplaying())
+        refreshReplayLabel(); // paused or playing
 }
 
 void SimulationDock::onStepped()
@@ -741,6 +830,11 @@ void SimulationDock::onStepped()
     if (!m_session->isActive())
         return;
     refreshStatus();
+    refreshHistoryButtons();
+    if (m_session->isReplaying())
+        refreshReplayLabel(); // the scan reached, or the end of the replay
+    if (m_session->replayFailures().size() != static_cast<std::size_t>(m_failureList->count()))
+        refreshFailureList();
     syncCompletes();
     syncOutputs();
     refreshExplanation();
@@ -749,7 +843,9 @@ void SimulationDock::onStepped()
     QScrollBar* bar = m_traceView->verticalScrollBar();
     const bool atBottom = bar->value() >= bar->maximum();
     m_traceModel->sync();
-    if (atBottom && m_traceView->isVisible())
+    if (m_session->isViewingHistory())
+        selectViewedScan();
+    else if (atBottom && m_traceView->isVisible())
         m_traceView->scrollToBottom();
 }
 
@@ -757,9 +853,15 @@ void SimulationDock::refreshStatus()
 {
     const core::Simulator* simulator = m_session->simulator();
     const double seconds = static_cast<double>(simulator->simulatedTimeMs()) / 1000.0;
-    m_statusLabel->setText(tr("Scan %1 · %2 s")
-                               .arg(QLocale().toString(static_cast<qlonglong>(simulator->scanCount())),
-                                    QLocale().toString(seconds, 'f', 2)));
+    const QString scan = QLocale().toString(static_cast<qlonglong>(simulator->scanCount()));
+    const QString time = QLocale().toString(seconds, 'f', 2);
+    if (m_session->isViewingHistory())
+        //: %1 of %2: the past scan shown and the latest scan run; %3: its simulated time in seconds
+        m_statusLabel->setText(tr("Scan %1 of %2 (history) · %3 s")
+                                   .arg(scan, QLocale().toString(static_cast<qlonglong>(m_session->latestScan())),
+                                        time));
+    else
+        m_statusLabel->setText(tr("Scan %1 · %2 s").arg(scan, time));
 }
 
 void SimulationDock::syncOutputs()
@@ -978,35 +1080,56 @@ void SimulationDock::addNestedExplanation(const core::NestedEngine& engine, cons
 
 void SimulationDock::refreshReplay()
 {
-    m_failureList->clear();
-    const SimulationSession::ReplayState state = m_session->replayState();
-    const std::vector<core::ScenarioFailure>& failures = m_session->replayFailures();
-    switch (state) {
+    refreshReplayLabel();
+    refreshFailureList();
+    m_recordButton->setEnabled(m_session->isActive() && !m_session->isReplaying());
+    syncInputs();
+}
+
+void SimulationDock::refreshReplayLabel()
+{
+    const std::size_t failures = m_session->replayFailures().size();
+    const QString file = m_session->replayFileName();
+    QString text;
+    switch (m_session->replayState()) {
     case SimulationSession::ReplayState::None:
-        m_replayLabel->setText(tr("Record this session as a scenario file, or replay one."));
+        text = tr("Record this session as a scenario file, or replay one.");
         break;
-    case SimulationSession::ReplayState::Running:
-        m_replayLabel->setText(tr("Replaying %1: %2 scans.").arg(m_session->replayFileName()).arg(m_session->replayLength()));
+    case SimulationSession::ReplayState::Running: {
+        const QString scan = QString::number(m_session->latestScan());
+        const QString length = QString::number(m_session->replayLength());
+        if (m_session->isRunning())
+            //: %1: the scenario file; %2 of %3: the scan reached and the scenario's last scan
+            text = tr("Replaying %1: scan %2 of %3.").arg(file, scan, length);
+        else
+            //: %1: the scenario file; %2 of %3: the scan reached and the scenario's last scan; %4: a key (F10)
+            text = tr("Replay of %1: paused at scan %2 of %3. Press %4 to step, or Run to play the rest.")
+                       .arg(file, scan, length,
+                            singleScanShortcut().toString(QKeySequence::NativeText));
         break;
+    }
     case SimulationSession::ReplayState::Finished: {
         const int expectations = m_session->replayExpectationCount();
-        if (failures.empty())
-            m_replayLabel->setText(tr("%1: every expectation met (%2).").arg(m_session->replayFileName()).arg(expectations));
+        if (failures == 0)
+            text = tr("%1: every expectation met (%2).").arg(file).arg(expectations);
         else
-            m_replayLabel->setText(tr("%1: %2 of %3 expectations failed.")
-                                       .arg(m_session->replayFileName())
-                                       .arg(failures.size())
-                                       .arg(expectations));
+            text = tr("%1: %2 of %3 expectations failed.").arg(file).arg(failures).arg(expectations);
         break;
     }
     }
-    for (const core::ScenarioFailure& failure : failures) {
+    if (m_replayLabel->text() != text)
+        m_replayLabel->setText(text);
+}
+
+void SimulationDock::refreshFailureList()
+{
+    m_failureList->clear();
+    for (const core::ScenarioFailure& failure : m_session->replayFailures()) {
         auto* item = new QListWidgetItem(tr("Line %1: %2").arg(failure.line).arg(scenarioFailureText(failure)),
                                          m_failureList);
         item->setForeground(QColor(0xc6, 0x28, 0x28));
     }
-    m_recordButton->setEnabled(m_session->isActive() && !m_session->isReplaying());
-    syncInputs();
+    m_failureList->setVisible(m_failureList->count() > 0);
 }
 
 void SimulationDock::recordScenario()
@@ -1050,8 +1173,8 @@ void SimulationDock::replayScenario()
         box.exec();
         return;
     }
+    // Paused at scan 0: F10 steps through it, Run plays the rest.
     m_tabs->setCurrentIndex(ScenarioTab);
-    m_session->run();
 }
 
 } // namespace editor

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QDockWidget>
+#include <QKeySequence>
 #include <QList>
 #include <QStringList>
 
@@ -10,6 +11,7 @@ class QComboBox;
 class QGridLayout;
 class QLabel;
 class QListWidget;
+class QModelIndex;
 class QPushButton;
 class QSpinBox;
 class QStackedWidget;
@@ -44,6 +46,10 @@ class SimulationDock : public QDockWidget {
 public:
     // Also the title of the empty frame that stands for the dock at start-up.
     static QString title();
+    // Simulation > Single Scan, Step Back and Step Forward, named in the dock's texts.
+    static QKeySequence singleScanShortcut();
+    static QKeySequence stepBackShortcut();
+    static QKeySequence stepForwardShortcut();
     enum ExplanationColumn { TransitionColumn, StatusColumn };
 
     SimulationDock(SimulationSession* session, Document* document, QWidget* parent = nullptr);
@@ -55,6 +61,8 @@ public:
     QListWidget* failureList() const { return m_failureList; }
     QLabel* replayLabel() const { return m_replayLabel; }
     QLabel* statusLabel() const { return m_statusLabel; }
+    QToolButton* stepBackButton() const { return m_backButton; }
+    QToolButton* stepForwardButton() const { return m_forwardButton; }
 
     // The input widgets of a variable or nested step; nullptr when none.
     QAbstractButton* toggleButton(const QString& variable) const;
@@ -115,6 +123,13 @@ private:
     void refreshExplanation();
     void addNestedExplanation(const core::NestedEngine& engine, const core::NestedExplanation& nested);
     void refreshReplay();
+    void refreshReplayLabel();
+    void refreshFailureList();
+    void refreshHistoryButtons();
+    // The trace row of the scan shown while stepping through the history.
+    void selectViewedScan();
+    void showTraceRow(const QModelIndex& index);
+    void onHistoryMoved();
     void setNumber(int index, double value);
 
     SimulationSession* m_session;
@@ -125,6 +140,8 @@ private:
     QToolButton* m_runButton = nullptr;
     QToolButton* m_stepButton = nullptr;
     QToolButton* m_resetButton = nullptr;
+    QToolButton* m_backButton = nullptr;
+    QToolButton* m_forwardButton = nullptr;
     QToolButton* m_endButton = nullptr;
     QLabel* m_speedLabel = nullptr;
     QSpinBox* m_speedSpin = nullptr;

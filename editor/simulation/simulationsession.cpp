@@ -89,6 +89,8 @@ void SimulationSession::setActive(bool active)
         m_simulator.reset();
         m_trace.clear();
         m_lastFired.clear();
+        m_history.clear();
+        m_viewed.reset();
         m_document->setReadOnly(false);
     }
     emit activeChanged(active);
@@ -104,10 +106,18 @@ bool SimulationSession::isRunning() const
     return m_timer->isActive();
 }
 
+const core::Simulator* SimulationSession::simulator() const
+{
+    if (m_viewed)
+        return &m_history[*m_viewed].simulator;
+    return m_simulator.get();
+}
+
 void SimulationSession::run()
 {
     if (!isActive() || isRunning())
         return;
+    continueFromViewedScan();
     // The first scan comes with the first tick rather than a whole period later.
     m_owedScans = 1;
     m_clock.start();
@@ -152,6 +162,12 @@ void SimulationSession::clearSession()
     // Manual settings kept across the reset are recorded at scan 1: a
     // scenario starts with every Complete automatic.
     m_completeSettings.assign(m_simulator->nestedSteps().size(), std::nullopt);
+    const bool wasViewingHistory = isViewingHistory();
+    m_viewed.reset();
+    m_history.clear();
+    keepSnapshot(); // scan 0: the start state
+    if (wasViewingHistory)
+        emit historyMoved();
 }
 
 void SimulationSession::setSpeed(int scansPerSecond)
@@ -177,6 +193,7 @@ void SimulationSession::advance(std::int64_t scans)
 {
     if (!isActive() || scans <= 0)
         return;
+    continueFromViewedScan();
     const bool hadPendingReleases = !m_pendingReleases.empty();
     std::int64_t ran = 0;
     for (; ran < scans; ++ran) {
@@ -225,6 +242,126 @@ void SimulationSession::afterScan(core::ScanRecord&& record)
     m_trace.push_back(std::move(record));
     if (m_trace.size() > static_cast<std::size_t>(kTraceCapacity))
         m_trace.pop_front();
+    keepSnapshot();
+}
+
+// After the releases: a snapshot is the simulator as a pause after that
+// scan leaves it, so continuing from it plays exactly as continuing then.
+void SimulationSession::keepSnapshot()
+{
+    m_history.push_back({*m_simulator, m_lastFired});
+    // The oldest entry is the scan the first step back of the kept ones lands on.
+    if (m_history.size() > static_cast<std::size_t>(kHistoryCapacity) + 1)
+        m_history.pop_front();
+}
+
+QString SimulationSession::lastFiredTransition() const
+{
+    return m_viewed ? m_history[*m_viewed].lastFired : m_lastFired;
+}
+
+std::int64_t SimulationSession::viewedScan() const
+{
+    const core::Simulator* shown = simulator();
+    return shown ? shown->scanCount() : 0;
+}
+
+std::int64_t SimulationSession::latestScan() const
+{
+    return m_simulator ? m_simulator->scanCount() : 0;
+}
+
+std::int64_t SimulationSession::firstKeptScan() const
+{
+    return m_history.empty() ? latestScan() : m_history.front().simulator.scanCount();
+}
+
+bool SimulationSession::canStepBack() const
+{
+    return isActive() && viewedScan() > firstKeptScan();
+}
+
+bool SimulationSession::canStepForward() const
+{
+    return isActive() && isViewingHistory();
+}
+
+void SimulationSession::stepBack()
+{
+    if (canStepBack())
+        showScan(viewedScan() - 1);
+}
+
+void SimulationSession::stepForward()
+{
+    if (canStepForward())
+        showScan(viewedScan() + 1);
+}
+
+void SimulationSession::showScan(std::int64_t scan)
+{
+    if (!isActive() || m_history.empty())
+        return;
+    pause();
+    const std::int64_t first = firstKeptScan();
+    const std::int64_t target = std::clamp(scan, first, latestScan());
+    std::optional<std::size_t> viewed;
+    if (target < latestScan())
+        viewed = static_cast<std::size_t>(target - first);
+    if (viewed == m_viewed)
+        return;
+    m_viewed = viewed;
+    emit historyMoved();
+    emit inputsChanged();
+    emit stepped();
+}
+
+// Like an edit after an undo: the scans after the one shown are dropped
+// from the history, the trace and the recording, and the simulator goes
+// back to that scan. Played on, a replay goes on from there, its later
+// failures dropped; an input changed there ends it: the user plays from then.
+void SimulationSession::continueFromViewedScan(Continuation how)
+{
+    if (!m_viewed)
+        return;
+    m_history.erase(m_history.begin() + static_cast<std::ptrdiff_t>(*m_viewed) + 1, m_history.end());
+    m_viewed.reset();
+    // Assigned, not replaced: the replay's runner refers to this simulator.
+    *m_simulator = m_history.back().simulator;
+    m_lastFired = m_history.back().lastFired;
+    const std::int64_t scan = m_simulator->scanCount();
+    while (!m_trace.empty() && m_trace.back().scan > scan)
+        m_trace.pop_back();
+    dropRecordingAfter(scan);
+    m_pendingReleases.clear();
+    std::fill(m_pressedAt.begin(), m_pressedAt.end(), -1);
+    if (m_scenario && how == Continuation::Edit) {
+        stopReplay();
+    } else if (m_scenario) {
+        std::erase_if(m_replayFailures, [scan](const core::ScenarioFailure& f) { return f.scan > scan; });
+        if (scan < m_scenario->lastScan()) {
+            m_runner = std::make_unique<core::ScenarioRunner>(*m_scenario, *m_simulator);
+            m_replayState = ReplayState::Running;
+        }
+        emit replayChanged();
+    }
+    emit historyMoved();
+}
+
+void SimulationSession::dropRecordingAfter(std::int64_t scan)
+{
+    std::erase_if(m_changes, [scan](const core::RecordedScan& changes) { return changes.scan > scan; });
+    std::erase_if(m_recorded, [scan](const core::ScanRecord& record) { return record.scan > scan; });
+    // The Complete settings last recorded, as they stood after that scan.
+    const std::vector<std::string>& steps = m_simulator->nestedSteps();
+    m_completeSettings.assign(steps.size(), std::nullopt);
+    for (const core::RecordedScan& changes : m_changes) {
+        for (const core::RecordedScan::CompleteSetting& setting : changes.completes) {
+            const auto step = std::find(steps.begin(), steps.end(), setting.stepId);
+            if (step != steps.end())
+                m_completeSettings[static_cast<std::size_t>(step - steps.begin())] = setting.manualValue;
+        }
+    }
 }
 
 std::optional<bool> SimulationSession::completeSetting(const std::string& stepId) const
@@ -252,6 +389,7 @@ bool SimulationSession::setVariable(int index, const core::cond::Value& value, Q
 {
     if (!isActive())
         return false;
+    continueFromViewedScan(Continuation::Edit);
     const core::Status status = m_simulator->setVariableAt(static_cast<std::size_t>(index), value);
     if (!status) {
         if (error)
@@ -266,6 +404,7 @@ void SimulationSession::press(int index)
 {
     if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size())
         return;
+    continueFromViewedScan(Continuation::Edit);
     m_pendingReleases.erase(std::remove(m_pendingReleases.begin(), m_pendingReleases.end(), index),
                             m_pendingReleases.end());
     m_pressedAt[static_cast<std::size_t>(index)] = m_simulator->scanCount();
@@ -276,6 +415,7 @@ void SimulationSession::release(int index)
 {
     if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size())
         return;
+    continueFromViewedScan(Continuation::Edit);
     std::int64_t& pressedAt = m_pressedAt[static_cast<std::size_t>(index)];
     const bool scanned = pressedAt < 0 || m_simulator->scanCount() > pressedAt;
     pressedAt = -1;
@@ -287,13 +427,19 @@ void SimulationSession::release(int index)
 
 void SimulationSession::setCompleteMode(const QString& stepId, core::CompleteMode mode)
 {
-    if (isActive() && m_simulator->setCompleteMode(stepId.toStdString(), mode))
+    if (!isActive())
+        return;
+    continueFromViewedScan(Continuation::Edit);
+    if (m_simulator->setCompleteMode(stepId.toStdString(), mode))
         emit inputsChanged();
 }
 
 void SimulationSession::setManualComplete(const QString& stepId, bool complete)
 {
-    if (isActive() && m_simulator->setComplete(stepId.toStdString(), complete))
+    if (!isActive())
+        return;
+    continueFromViewedScan(Continuation::Edit);
+    if (m_simulator->setComplete(stepId.toStdString(), complete))
         emit inputsChanged();
 }
 

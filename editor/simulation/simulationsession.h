@@ -34,6 +34,17 @@ class Document;
 // scan, plus expectations for every transition that fired, every output
 // that changed, every nested situation and Unstable that changed), and a
 // scenario file can be replayed scan by scan, its expectations checked.
+//
+// The session also keeps the history of the run: a copy of the simulator
+// after each of the latest kHistoryCapacity scans since reset (a copy shares
+// the compiled program, so it is a few small vectors). stepBack() and
+// stepForward() move the view through it: simulator() then returns the past
+// scan's copy, so the chart, the dock's inputs, outputs, explanation and
+// trace selection all show that scan. Playing from a past scan (a scan, Run,
+// or an input changed) continues from it, like editing after an undo: the
+// later history, trace and recording are dropped, so a saved scenario stays
+// what was played. A replay played on from a past scan replays from there;
+// an input changed there ends it.
 class SimulationSession : public QObject {
     Q_OBJECT
 
@@ -47,6 +58,9 @@ public:
     // outputs or nested situations): a session at 10,000 scans/s that fires
     // on most scans would otherwise grow without end.
     static constexpr int kRecordedScanCapacity = 100000;
+    // Scans one can step back through (1,000 at 10,000 scans/s is a tenth
+    // of a second; at 10 scans/s, 100 s).
+    static constexpr int kHistoryCapacity = 1000;
 
     enum class ReplayState { None, Running, Finished };
 
@@ -56,8 +70,11 @@ public:
     // The simulation mode: building the simulator and locking the Document.
     bool isActive() const { return m_simulator != nullptr; }
     void setActive(bool active);
-    // nullptr while inactive.
-    const core::Simulator* simulator() const { return m_simulator.get(); }
+    // The scan the user looks at: a past one while stepping through the
+    // history, else the running simulator. nullptr while inactive.
+    const core::Simulator* simulator() const;
+    // The running simulator, whatever scan the view shows (nullptr while inactive).
+    const core::Simulator* liveSimulator() const { return m_simulator.get(); }
 
     bool isRunning() const;
     void run();
@@ -69,6 +86,20 @@ public:
     // Runs up to `scans` scans as one batch and emits stepped() once when
     // any ran (a replay stops at its last scan). The timer calls it.
     void advance(std::int64_t scans);
+
+    // History. The view shows a past scan until it is back at the latest.
+    bool isViewingHistory() const { return m_viewed.has_value(); }
+    std::int64_t viewedScan() const;         // scan number the view shows
+    std::int64_t latestScan() const;         // scans run since reset
+    std::int64_t firstKeptScan() const;      // the oldest scan one can go back to
+    bool canStepBack() const;
+    bool canStepForward() const;
+    // Moves the view one scan back or ahead through the kept history;
+    // pauses a run. Nothing happens at either end.
+    void stepBack();
+    void stepForward();
+    // Shows the given scan, clamped to the kept history; pauses a run.
+    void showScan(std::int64_t scan);
 
     int speed() const { return m_speed; }
     void setSpeed(int scansPerSecond); // clamped to kMinSpeed..kMaxSpeed
@@ -85,8 +116,8 @@ public:
 
     // The latest scans since reset, oldest first (at most kTraceCapacity).
     const std::deque<core::ScanRecord>& trace() const { return m_trace; }
-    // The transition that fired last since reset; empty when none has.
-    QString lastFiredTransition() const { return m_lastFired; }
+    // The transition that fired last up to the scan shown; empty when none has.
+    QString lastFiredTransition() const;
     // Which token (Simulator::tokenNames() index) belongs to which transition.
     const std::vector<std::string>& tokenTransitions() const { return m_tokenTransitions; }
 
@@ -124,12 +155,20 @@ signals:
     // Back to the start state: the trace was cleared.
     void wasReset();
     void replayChanged();
+    // The view moved through the history, or came back to the latest scan.
+    void historyMoved();
 
 private:
     void onTick();
     void onModelChanged();
     void clearSession();
     void afterScan(core::ScanRecord&& record);
+    void keepSnapshot();
+    // Before anything plays from a past scan or changes an input there: it
+    // becomes the latest.
+    enum class Continuation { Play, Edit };
+    void continueFromViewedScan(Continuation how = Continuation::Play);
+    void dropRecordingAfter(std::int64_t scan);
     void recordCompleteSettings(core::RecordedScan& changes);
     void finishReplay();
     void stopReplay();
@@ -152,6 +191,15 @@ private:
     std::vector<core::RecordedScan> m_changes;
     std::vector<core::ScanRecord> m_recorded; // the scans expectations are written for
     std::vector<std::optional<bool>> m_completeSettings; // last recorded, by nestedSteps() index
+
+    // History: the simulator after each kept scan, oldest first (the first
+    // entry after a reset is scan 0); the last one is the latest scan.
+    struct Snapshot {
+        core::Simulator simulator;
+        QString lastFired; // since reset, up to this scan
+    };
+    std::deque<Snapshot> m_history;
+    std::optional<std::size_t> m_viewed; // index into m_history of a past scan shown; empty: the latest
 
     // Replay.
     ReplayState m_replayState = ReplayState::None;

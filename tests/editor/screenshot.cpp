@@ -1,6 +1,7 @@
 // ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... [--show-hidden] [--language CODE]
 //                     [--export-chart FILE.svg|png|pdf] [--dialog ACTION]
-//                     [--simulate] [--input NAME=VALUE]... [--scans N] [--simulation-tab INDEX] [--verify]
+//                     [--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE]
+//                     [--replay-scans N] [--simulation-tab INDEX] [--verify]
 //
 // Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
 // with a step or transition selected, a dock brought to the front) and
@@ -10,7 +11,9 @@
 // chart as File > Export Chart does. --dialog triggers the window's action
 // of that object name ("modelSettingsAction", "exportPlcOpenAction"...) and
 // saves a picture of the first dialog it opens instead of the window. --simulate starts the simulation
-// mode, sets the --input values (before the first scan) and runs N scans. Settings go to a temporary folder,
+// mode, sets the --input values (before the first scan) and runs N scans; --back N then steps back N
+// scans through the history; --replay FILE then starts that scenario's replay (paused at scan 0) and
+// plays its first --replay-scans N scans. Settings go to a temporary folder,
 // so the picture shows the default layout whatever the user's settings.
 // --verify runs Simulation > Verify and waits for its findings.
 
@@ -42,7 +45,8 @@ int usage()
 {
     std::fputs("usage: ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... "
                "[--show-hidden] [--language CODE] [--export-chart FILE] [--dialog ACTION] "
-               "[--simulate] [--input NAME=VALUE]... [--scans N] [--simulation-tab INDEX] [--verify]\n",
+               "[--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE] [--replay-scans N] "
+               "[--simulation-tab INDEX] [--verify]\n",
                stderr);
     return 2;
 }
@@ -112,6 +116,9 @@ int main(int argc, char* argv[])
     bool verify = false;
     QStringList inputs;
     int scans = 0;
+    int back = 0;
+    QString replay;
+    int replayScans = 0;
     int simulationTab = 0;
     const QStringList args = app.arguments().mid(1);
     for (qsizetype i = 0; i < args.size(); ++i) {
@@ -135,6 +142,12 @@ int main(int argc, char* argv[])
             inputs << args[++i];
         else if (args[i] == QLatin1String("--scans") && i + 1 < args.size())
             scans = args[++i].toInt();
+        else if (args[i] == QLatin1String("--back") && i + 1 < args.size())
+            back = args[++i].toInt();
+        else if (args[i] == QLatin1String("--replay") && i + 1 < args.size())
+            replay = args[++i];
+        else if (args[i] == QLatin1String("--replay-scans") && i + 1 < args.size())
+            replayScans = args[++i].toInt();
         else if (args[i] == QLatin1String("--simulation-tab") && i + 1 < args.size())
             simulationTab = args[++i].toInt();
         else if (args[i].startsWith(QLatin1String("--")))
@@ -204,6 +217,16 @@ int main(int argc, char* argv[])
                                                                                  Qt::CaseInsensitive) == 0);
         }
         session->advance(scans);
+        for (int i = 0; i < back; ++i)
+            session->stepBack();
+        if (!replay.isEmpty()) {
+            QString error;
+            if (!session->startReplay(replay, &error)) {
+                std::fprintf(stderr, "ggstudio_screenshot: --replay %s: %s\n", qPrintable(replay), qPrintable(error));
+                return 2;
+            }
+            session->advance(replayScans);
+        }
         if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("simulationTabs")))
             tabs->setCurrentIndex(simulationTab);
     }

@@ -29,21 +29,27 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QFileDialog>
 #include <QLabel>
 #include <QListWidget>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QTabWidget>
+#include <QToolButton>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QRegularExpression>
 #include <QTest>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -130,6 +136,13 @@ private slots:
     void recordedNestedSessionReplays();
     void replayShowsFailedExpectations();
     void thousandScansPerSecondRunInBatches();
+    void stepBackShowsThePastScan();
+    void playingFromAPastScanDropsTheLaterHistory();
+    void historyIsBoundedAndCheap();
+    void replayStartsPausedAtScanZero();
+    void replayFromTheDockStartsPaused();
+    void steppingBackInAReplayReplaysFromThere();
+    void scenarioTabHasNoEmptyFailureBox();
     void languageChangeKeepsTheSimulation();
 
 private:
@@ -139,6 +152,8 @@ private:
     void reopenInFrench();
     void click(const QString& variable);
     void scan(int count = 1);
+    void clickButton(const char* objectName, int times = 1);
+    QString writeScenario(const char* name, const char* text);
 
     QTemporaryDir m_settingsDir;
     QTemporaryDir m_files;
@@ -222,6 +237,24 @@ void TestSimulation::scan(int count)
     QVERIFY(button);
     for (int i = 0; i < count; ++i)
         QTest::mouseClick(button, Qt::LeftButton);
+}
+
+void TestSimulation::clickButton(const char* objectName, int times)
+{
+    auto* button = m_dock->findChild<QAbstractButton*>(QLatin1String(objectName));
+    QVERIFY2(button, objectName);
+    for (int i = 0; i < times; ++i)
+        QTest::mouseClick(button, Qt::LeftButton);
+}
+
+QString TestSimulation::writeScenario(const char* name, const char* text)
+{
+    const QString path = m_files.filePath(QLatin1String(name));
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        return {};
+    file.write(text);
+    return path;
 }
 
 void TestSimulation::simulationLocksEditing()
@@ -879,6 +912,319 @@ void TestSimulation::languageChangeKeepsTheSimulation()
     QVERIFY(!m_window->findChild<QDockWidget*>(QStringLiteral("stepDock"))->widget()->isEnabled());
     scan();
     QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{3});
+}
+
+namespace {
+
+// What the chart and the dock show of one scan, to compare a past scan
+// shown again with the scan when it ran.
+struct ShownScan {
+    QString activeStep;
+    QString fired;
+    QList<bool> tokensOfF1A2;
+    QStringList inputTexts;
+    QString activeLabel;
+    QStringList explanation;
+
+    bool operator==(const ShownScan&) const = default;
+};
+
+ShownScan shownScan(const MainWindow& window, const SimulationDock& dock)
+{
+    ShownScan shown;
+    ChartScene* scene = window.chartScene();
+    shown.activeStep = scene->activeStep();
+    shown.fired = scene->firedTransition();
+    shown.tokensOfF1A2 = scene->transitionItem(QStringLiteral("F1->A2"))->tokenMarks();
+    for (const char* name : {"HomePosition", "AirPressureOk", "Start", "PreparationDone", "DoorClosed"})
+        shown.inputTexts << dock.toggleButton(QString::fromLatin1(name))->text();
+    shown.activeLabel = dock.findChild<QLabel*>(QStringLiteral("activeStepLabel"))->text();
+    shown.explanation = explanationTexts(*dock.explanationView());
+    return shown;
+}
+
+} // namespace
+
+namespace QTest {
+template<> char* toString(const ShownScan& shown)
+{
+    const QStringList parts{shown.activeStep, shown.fired, shown.inputTexts.join(QLatin1Char(',')), shown.activeLabel,
+                            shown.explanation.join(QLatin1Char('/'))};
+    return qstrdup(parts.join(QStringLiteral(" | ")).toUtf8().constData());
+}
+} // namespace QTest
+
+// Five scans with inputs changed; three back is scan 2 as it was shown then,
+// forward again goes through the kept scans to the latest.
+void TestSimulation::stepBackShowsThePastScan()
+{
+    startOnRealisticModel();
+    QAbstractButton* back = m_dock->stepBackButton();
+    QAbstractButton* forward = m_dock->stepForwardButton();
+    QVERIFY(!back->isEnabled());
+    QVERIFY(!forward->isEnabled());
+    scan();
+    click(QStringLiteral("HomePosition"));
+    click(QStringLiteral("AirPressureOk"));
+    scan(); // scan 2: A6 -> A1
+    const ShownScan scan2 = shownScan(*m_window, *m_dock);
+    QCOMPARE(scan2.activeStep, QStringLiteral("A1"));
+    for (const char* name : {"Start", "PreparationDone", "DoorClosed"})
+        click(QString::fromLatin1(name));
+    scan(); // scan 3: A1 -> F1
+    const ShownScan scan3 = shownScan(*m_window, *m_dock);
+    QCOMPARE(scan3.activeStep, QStringLiteral("F1"));
+    click(QStringLiteral("DoorClosed"));
+    scan(2);
+    const ShownScan scan5 = shownScan(*m_window, *m_dock);
+    QVERIFY(back->isEnabled());
+    QVERIFY(!forward->isEnabled());
+
+    clickButton("stepBackButton", 3);
+    QVERIFY(m_session->isViewingHistory());
+    QCOMPARE(m_session->viewedScan(), std::int64_t{2});
+    QCOMPARE(m_session->liveSimulator()->scanCount(), std::int64_t{5}); // nothing ran
+    QCOMPARE(shownScan(*m_window, *m_dock), scan2);
+    QVERIFY2(m_dock->statusLabel()->text().startsWith(QStringLiteral("Scan 2 of 5 (history)")),
+             qPrintable(m_dock->statusLabel()->text()));
+    // The trace shows which scan it is.
+    const QModelIndexList selected = m_dock->traceView()->selectionModel()->selectedRows();
+    QCOMPARE(selected.size(), 1);
+    QCOMPARE(selected.first().row(), 1);
+    QVERIFY(forward->isEnabled());
+
+    // Forward, by the Simulation menu's shortcut.
+    auto* stepForward = m_window->findChild<QAction*>(QStringLiteral("stepForwardAction"));
+    QVERIFY(stepForward && stepForward->isEnabled());
+    QCOMPARE(stepForward->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_F10));
+    stepForward->trigger();
+    QCOMPARE(m_session->viewedScan(), std::int64_t{3});
+    QCOMPARE(shownScan(*m_window, *m_dock), scan3);
+    clickButton("stepForwardButton", 2);
+    QVERIFY(!m_session->isViewingHistory());
+    QCOMPARE(shownScan(*m_window, *m_dock), scan5);
+    QVERIFY(m_dock->statusLabel()->text().startsWith(QStringLiteral("Scan 5 ·")));
+    QVERIFY(m_dock->traceView()->selectionModel()->selectedRows().isEmpty());
+    QVERIFY(!forward->isEnabled());
+
+    // Back to the start state, by Shift+F10; no further.
+    auto* stepBack = m_window->findChild<QAction*>(QStringLiteral("stepBackAction"));
+    QCOMPARE(stepBack->shortcut(), QKeySequence(Qt::SHIFT | Qt::Key_F10));
+    for (int i = 0; i < 6; ++i)
+        QTest::keyClick(m_window.get(), Qt::Key_F10, Qt::ShiftModifier);
+    QCOMPARE(m_session->viewedScan(), std::int64_t{0});
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A6"));
+    QCOMPARE(m_dock->toggleButton(QStringLiteral("HomePosition"))->text(), QStringLiteral("FALSE"));
+    QVERIFY(!back->isEnabled());
+    QVERIFY(!stepBack->isEnabled());
+    // A trace row clicked shows its scan.
+    const QModelIndex row4 = m_dock->traceModel()->index(3, TraceTableModel::ScanColumn);
+    QTest::mouseClick(m_dock->traceView()->viewport(), Qt::LeftButton, {},
+                      m_dock->traceView()->visualRect(row4).center());
+    QCOMPARE(m_session->viewedScan(), std::int64_t{4});
+}
+
+// Like an edit after an undo: a scan from a past scan drops the later ones
+// from the history, the trace and the recording; the saved scenario replays.
+void TestSimulation::playingFromAPastScanDropsTheLaterHistory()
+{
+    startOnRealisticModel();
+    click(QStringLiteral("HomePosition"));
+    click(QStringLiteral("AirPressureOk"));
+    scan(2);
+    for (const char* name : {"Start", "PreparationDone", "DoorClosed"})
+        click(QString::fromLatin1(name));
+    scan(3); // A1 -> F1 at scan 3, then on
+    QVERIFY(m_session->recording().records.back().scan >= 3);
+    clickButton("stepBackButton", 4); // scan 1: A1, the start inputs set
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
+
+    // Another future: DoorClosed alone is not enough to start.
+    click(QStringLiteral("DoorClosed"));
+    QVERIFY(!m_session->isViewingHistory()); // changing an input continues from scan 1
+    QCOMPARE(m_session->latestScan(), std::int64_t{1});
+    QCOMPARE(m_dock->traceModel()->rowCount(), 1);
+    scan(2);
+    QCOMPARE(m_session->latestScan(), std::int64_t{3});
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
+    QVERIFY(!m_dock->stepForwardButton()->isEnabled());
+    QCOMPARE(m_dock->traceModel()->rowCount(), 3);
+    QCOMPARE(m_dock->traceModel()->index(2, TraceTableModel::StepColumn).data().toString(), QStringLiteral("A1"));
+    const core::ScenarioRecording recording = m_session->recording();
+    QCOMPARE(recording.changes.size(), std::size_t{2}); // scan 1's and DoorClosed at scan 2
+    QCOMPARE(recording.changes.back().scan, std::int64_t{2});
+    QCOMPARE(recording.records.size(), std::size_t{1}); // A6 -> A1 only
+    QVERIFY(m_session->trace().back().scan == 3);
+
+    // Run from a past scan continues from it too.
+    clickButton("stepBackButton");
+    QTest::mouseClick(m_dock->findChild<QAbstractButton*>(QStringLiteral("runButton")), Qt::LeftButton);
+    QVERIFY(m_session->isRunning());
+    QVERIFY(!m_session->isViewingHistory());
+    QCOMPARE(m_session->latestScan(), std::int64_t{2});
+    m_session->pause();
+
+    const QString path = m_files.filePath(QStringLiteral("branched.scenario"));
+    QString error;
+    QVERIFY2(m_session->saveRecording(path, &error), qPrintable(error));
+    const std::int64_t scans = m_session->latestScan();
+    QVERIFY2(m_session->startReplay(path, &error), qPrintable(error));
+    m_session->run();
+    QTRY_COMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QCOMPARE(m_session->latestScan(), scans);
+    QVERIFY(m_session->replayFailures().empty());
+}
+
+// The latest kHistoryCapacity scans are kept, and keeping them does not
+// slow a run at the highest speed.
+void TestSimulation::historyIsBoundedAndCheap()
+{
+    startOnDrillingCell(); // four nested GRAFCETs: the largest copies
+    for (const char* name : {"DrillHigh", "Unclamped", "StartButton"})
+        click(QString::fromLatin1(name));
+    QElapsedTimer clock;
+    clock.start();
+    const std::int64_t scans = SimulationSession::kMaxSpeed;
+    m_session->advance(scans);
+    const double seconds = static_cast<double>(clock.nsecsElapsed()) / 1e9;
+    qInfo("%lld scans with history in %.3f s (%.2f us per scan)", static_cast<long long>(scans), seconds,
+          seconds * 1e6 / static_cast<double>(scans));
+    // A second of the fastest run in well under a second: room for the UI.
+    QVERIFY2(seconds < 1.0, qPrintable(QString::number(seconds)));
+
+    QCOMPARE(m_session->firstKeptScan(), scans - SimulationSession::kHistoryCapacity);
+    m_session->showScan(0);
+    QCOMPARE(m_session->viewedScan(), scans - SimulationSession::kHistoryCapacity);
+    QVERIFY(!m_session->canStepBack());
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("F1"));
+    m_session->reset();
+    QVERIFY(!m_session->isViewingHistory());
+    QCOMPARE(m_session->firstKeptScan(), std::int64_t{0});
+    QVERIFY(!m_session->canStepBack());
+}
+
+// A replay starts paused at scan 0: F10 plays one scan, Run the rest.
+void TestSimulation::replayStartsPausedAtScanZero()
+{
+    startOnRealisticModel();
+    const QString path = writeScenario("paused.scenario", "at 1: set HomePosition = TRUE, AirPressureOk = TRUE\n"
+                                                          "at 1: expect step A1\n"
+                                                          "at 4: expect step A1\n");
+    QString error;
+    QVERIFY2(m_session->startReplay(path, &error), qPrintable(error));
+    QVERIFY(m_session->isReplaying());
+    QVERIFY(!m_session->isRunning());
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{0});
+    QVERIFY2(m_dock->replayLabel()->text().contains(QStringLiteral("paused at scan 0 of 4")),
+             qPrintable(m_dock->replayLabel()->text()));
+    QVERIFY(m_dock->replayLabel()->text().contains(QStringLiteral("F10")));
+
+    auto* singleScan = m_window->findChild<QAction*>(QStringLiteral("singleScanAction"));
+    QCOMPARE(singleScan->shortcut(), QKeySequence(Qt::Key_F10));
+    QTest::keyClick(m_window.get(), Qt::Key_F10);
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{1});
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
+    QVERIFY(m_session->isReplaying());
+    QVERIFY2(m_dock->replayLabel()->text().contains(QStringLiteral("paused at scan 1 of 4")),
+             qPrintable(m_dock->replayLabel()->text()));
+
+    QTest::mouseClick(m_dock->findChild<QAbstractButton*>(QStringLiteral("runButton")), Qt::LeftButton);
+    QVERIFY(m_session->isRunning());
+    QTRY_COMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QVERIFY(!m_session->isRunning());
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{4});
+    QVERIFY(m_session->replayFailures().empty());
+}
+
+// Re&play Scenario… opens the file dialog, then leaves the replay paused at scan 0.
+void TestSimulation::replayFromTheDockStartsPaused()
+{
+    startOnRealisticModel();
+    const QString path = writeScenario("dock.scenario", "at 1: set HomePosition = TRUE, AirPressureOk = TRUE\n"
+                                                        "at 3: expect step A1\n");
+    bool answered = false;
+    QTimer::singleShot(0, this, [&] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog)
+            return;
+        dialog->selectFile(path);
+        static_cast<QDialog*>(dialog)->accept(); // public there
+        answered = true;
+    });
+    QTest::mouseClick(m_dock->findChild<QPushButton*>(QStringLiteral("replayButton")), Qt::LeftButton);
+    QVERIFY(answered);
+    QVERIFY(m_session->isReplaying());
+    QVERIFY(!m_session->isRunning());
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{0});
+    QVERIFY2(m_dock->replayLabel()->text().contains(QStringLiteral("paused at scan 0 of 3")),
+             qPrintable(m_dock->replayLabel()->text()));
+    QVERIFY(m_dock->replayLabel()->isVisible()); // the Scenario tab is in front
+}
+
+// Stepping back is allowed in a replay; playing again replays the scenario
+// from the scan shown, each failure counted once.
+void TestSimulation::steppingBackInAReplayReplaysFromThere()
+{
+    startOnRealisticModel();
+    const QString path = writeScenario("back.scenario", "at 1: set HomePosition = TRUE\n"
+                                                        "at 2: expect step A1\n"
+                                                        "at 3: set AirPressureOk = TRUE\n"
+                                                        "at 4: expect step A1\n");
+    QString error;
+    QVERIFY2(m_session->startReplay(path, &error), qPrintable(error));
+    scan(4);
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QCOMPARE(m_session->replayFailures().size(), std::size_t{1}); // scan 2: A6 needs the air pressure
+    QCOMPARE(m_dock->failureList()->count(), 1);
+
+    clickButton("stepBackButton", 3);
+    QCOMPARE(m_session->viewedScan(), std::int64_t{1});
+    QCOMPARE(m_dock->toggleButton(QStringLiteral("AirPressureOk"))->text(), QStringLiteral("FALSE"));
+    scan();
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Running);
+    QCOMPARE(m_session->latestScan(), std::int64_t{2});
+    QCOMPARE(m_session->replayFailures().size(), std::size_t{1});
+    scan(2);
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QCOMPARE(m_session->latestScan(), std::int64_t{4});
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
+    QCOMPARE(m_session->replayFailures().size(), std::size_t{1});
+    QCOMPARE(m_dock->failureList()->count(), 1);
+
+    // An input changed at a past scan ends the replay: the user plays on from there.
+    clickButton("stepBackButton", 2);
+    QVERIFY(m_dock->findChild<QWidget*>(QStringLiteral("inputsPanel"))->isEnabled());
+    click(QStringLiteral("AirPressureOk"));
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::None);
+    QCOMPARE(m_session->latestScan(), std::int64_t{2});
+    QVERIFY(m_dock->failureList()->isHidden());
+    scan();
+    QCOMPARE(m_session->latestScan(), std::int64_t{3});
+    QCOMPARE(m_window->chartScene()->activeStep(), QStringLiteral("A1"));
+    QCOMPARE(m_session->recording().changes.back().scan, std::int64_t{3});
+}
+
+// The failures list shows only when an expectation failed.
+void TestSimulation::scenarioTabHasNoEmptyFailureBox()
+{
+    startOnRealisticModel();
+    auto* tabs = m_dock->findChild<QTabWidget*>(QStringLiteral("simulationTabs"));
+    tabs->setCurrentIndex(2);
+    QVERIFY(m_dock->failureList()->isHidden());
+    // The buttons and the text at the top, nothing stretched between them.
+    QVERIFY(m_dock->replayLabel()->geometry().bottom() < tabs->currentWidget()->height() / 2);
+
+    const QString path = writeScenario("fails.scenario", "at 1: set HomePosition = TRUE\n"
+                                                         "at 2: expect step A1\n");
+    QString error;
+    QVERIFY2(m_session->startReplay(path, &error), qPrintable(error));
+    QVERIFY(m_dock->failureList()->isHidden());
+    m_session->run();
+    QTRY_COMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QVERIFY(!m_dock->failureList()->isHidden());
+    QCOMPARE(m_dock->failureList()->count(), 1);
+    m_session->reset();
+    QVERIFY(m_dock->failureList()->isHidden());
 }
 
 QTEST_MAIN(TestSimulation)

@@ -257,6 +257,11 @@ void TestVerification::replayReachesTheCounterexampleState()
     auto* simulationDock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));
     QVERIFY(simulationDock && simulationDock->isVisible());
     QVERIFY(session->replayFileName().contains(QStringLiteral("GV106")));
+    // Paused at scan 0 so the user can step through it; Run plays the rest.
+    QVERIFY(session->isReplaying());
+    QVERIFY(!session->isRunning());
+    QCOMPARE(session->simulator()->scanCount(), std::int64_t{0});
+    m_window->findChild<QAction*>(QStringLiteral("runSimulationAction"))->trigger();
     QTRY_COMPARE_WITH_TIMEOUT(session->replayState(), SimulationSession::ReplayState::Finished, 20000);
     QVERIFY(session->replayFailures().empty());
     QCOMPARE(session->simulator()->scanCount(), finding->counterexample->scans);
