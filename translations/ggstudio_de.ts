@@ -2489,6 +2489,53 @@
     </message>
 </context>
 <context>
+    <name>editor::StartGuide</name>
+    <message>
+        <source>Getting started</source>
+        <translation>Erste Schritte</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Hide&lt;/b&gt; what your machine does not need: select states or transitions and press Delete (Shift+Delete shows them again).</source>
+        <translation>&lt;b&gt;Ausblenden&lt;/b&gt;, was Ihre Maschine nicht braucht: Zustände oder Transitionen auswählen und Entf drücken (Umschalt+Entf blendet sie wieder ein).</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Declare&lt;/b&gt; the buttons, sensors and actuators in the Variables panel below.</source>
+        <translation>&lt;b&gt;Deklarieren&lt;/b&gt; Sie Taster, Sensoren und Aktoren im Bereich Variablen darunter.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Write&lt;/b&gt; each transition&apos;s condition: select the transition and press Enter. Red marks what is not finished yet.</source>
+        <translation>&lt;b&gt;Schreiben&lt;/b&gt; Sie die Bedingung jeder Transition: Transition auswählen und Eingabe drücken. Rot markiert, was noch nicht fertig ist.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Simulate&lt;/b&gt; with F5, &lt;b&gt;verify&lt;/b&gt; with F7, then export PLCopen XML for your PLC.</source>
+        <translation>&lt;b&gt;Simulieren&lt;/b&gt; mit F5, &lt;b&gt;verifizieren&lt;/b&gt; mit F7, dann PLCopen XML für Ihre SPS exportieren.</translation>
+    </message>
+    <message>
+        <source>The chart is the GEMMA sheet: the ways your machine stops (A), works (F) and fails (D), and the transitions between them.</source>
+        <translation>Das Diagramm ist das GEMMA-Blatt: wie Ihre Maschine anhält (A), arbeitet (F) und ausfällt (D), und die Transitionen dazwischen.</translation>
+    </message>
+    <message>
+        <source>Select a step or a transition to edit it here.</source>
+        <translation>Wählen Sie einen Schritt oder eine Transition, um sie hier zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>Open an Example</source>
+        <translation>Beispiel öffnen</translation>
+    </message>
+    <message>
+        <source>A finished model to look at and simulate, opened as an untitled copy</source>
+        <translation>Ein fertiges Modell zum Ansehen und Simulieren, als unbenannte Kopie geöffnet</translation>
+    </message>
+    <message>
+        <source>User Guide</source>
+        <translation>Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>How to build a model step by step (F1)</source>
+        <translation>Wie man Schritt für Schritt ein Modell erstellt (F1)</translation>
+    </message>
+</context>
+<context>
     <name>editor::StepDock</name>
     <message>
         <source>Step</source>

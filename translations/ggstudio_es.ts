@@ -2489,6 +2489,53 @@
     </message>
 </context>
 <context>
+    <name>editor::StartGuide</name>
+    <message>
+        <source>Getting started</source>
+        <translation>Primeros pasos</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Hide&lt;/b&gt; what your machine does not need: select states or transitions and press Delete (Shift+Delete shows them again).</source>
+        <translation>&lt;b&gt;Oculte&lt;/b&gt; lo que su máquina no necesita: seleccione estados o transiciones y pulse Supr (Mayús+Supr los vuelve a mostrar).</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Declare&lt;/b&gt; the buttons, sensors and actuators in the Variables panel below.</source>
+        <translation>&lt;b&gt;Declare&lt;/b&gt; los pulsadores, sensores y actuadores en el panel Variables de abajo.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Write&lt;/b&gt; each transition&apos;s condition: select the transition and press Enter. Red marks what is not finished yet.</source>
+        <translation>&lt;b&gt;Escriba&lt;/b&gt; la condición de cada transición: seleccione la transición y pulse Intro. En rojo, lo que aún no está terminado.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Simulate&lt;/b&gt; with F5, &lt;b&gt;verify&lt;/b&gt; with F7, then export PLCopen XML for your PLC.</source>
+        <translation>&lt;b&gt;Simule&lt;/b&gt; con F5, &lt;b&gt;verifique&lt;/b&gt; con F7 y exporte PLCopen XML para su PLC.</translation>
+    </message>
+    <message>
+        <source>The chart is the GEMMA sheet: the ways your machine stops (A), works (F) and fails (D), and the transitions between them.</source>
+        <translation>El diagrama es la hoja GEMMA: cómo se para (A), funciona (F) y falla (D) su máquina, y las transiciones entre ellos.</translation>
+    </message>
+    <message>
+        <source>Select a step or a transition to edit it here.</source>
+        <translation>Seleccione una etapa o una transición para editarla aquí.</translation>
+    </message>
+    <message>
+        <source>Open an Example</source>
+        <translation>Abrir un ejemplo</translation>
+    </message>
+    <message>
+        <source>A finished model to look at and simulate, opened as an untitled copy</source>
+        <translation>Un modelo terminado para ver y simular, abierto como copia sin título</translation>
+    </message>
+    <message>
+        <source>User Guide</source>
+        <translation>Guía del usuario</translation>
+    </message>
+    <message>
+        <source>How to build a model step by step (F1)</source>
+        <translation>Cómo construir un modelo paso a paso (F1)</translation>
+    </message>
+</context>
+<context>
     <name>editor::StepDock</name>
     <message>
         <source>Step</source>

@@ -2489,6 +2489,53 @@
     </message>
 </context>
 <context>
+    <name>editor::StartGuide</name>
+    <message>
+        <source>Getting started</source>
+        <translation>Pour commencer</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Hide&lt;/b&gt; what your machine does not need: select states or transitions and press Delete (Shift+Delete shows them again).</source>
+        <translation>&lt;b&gt;Masquez&lt;/b&gt; ce dont votre machine n’a pas besoin : sélectionnez des états ou des transitions et appuyez sur Suppr (Maj+Suppr les réaffiche).</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Declare&lt;/b&gt; the buttons, sensors and actuators in the Variables panel below.</source>
+        <translation>&lt;b&gt;Déclarez&lt;/b&gt; les boutons, capteurs et actionneurs dans le panneau Variables ci-dessous.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Write&lt;/b&gt; each transition&apos;s condition: select the transition and press Enter. Red marks what is not finished yet.</source>
+        <translation>&lt;b&gt;Écrivez&lt;/b&gt; la condition de chaque transition : sélectionnez la transition et appuyez sur Entrée. Le rouge signale ce qui n’est pas encore fini.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Simulate&lt;/b&gt; with F5, &lt;b&gt;verify&lt;/b&gt; with F7, then export PLCopen XML for your PLC.</source>
+        <translation>&lt;b&gt;Simulez&lt;/b&gt; avec F5, &lt;b&gt;vérifiez&lt;/b&gt; avec F7, puis exportez le PLCopen XML pour votre automate.</translation>
+    </message>
+    <message>
+        <source>The chart is the GEMMA sheet: the ways your machine stops (A), works (F) and fails (D), and the transitions between them.</source>
+        <translation>Le diagramme est la feuille GEMMA : comment votre machine s’arrête (A), fonctionne (F) et défaille (D), et les transitions entre ces états.</translation>
+    </message>
+    <message>
+        <source>Select a step or a transition to edit it here.</source>
+        <translation>Sélectionnez une étape ou une transition pour la modifier ici.</translation>
+    </message>
+    <message>
+        <source>Open an Example</source>
+        <translation>Ouvrir un exemple</translation>
+    </message>
+    <message>
+        <source>A finished model to look at and simulate, opened as an untitled copy</source>
+        <translation>Un modèle terminé à regarder et à simuler, ouvert comme copie sans titre</translation>
+    </message>
+    <message>
+        <source>User Guide</source>
+        <translation>Guide de l’utilisateur</translation>
+    </message>
+    <message>
+        <source>How to build a model step by step (F1)</source>
+        <translation>Comment construire un modèle pas à pas (F1)</translation>
+    </message>
+</context>
+<context>
     <name>editor::StepDock</name>
     <message>
         <source>Step</source>

@@ -2489,6 +2489,53 @@
     </message>
 </context>
 <context>
+    <name>editor::StartGuide</name>
+    <message>
+        <source>Getting started</source>
+        <translation>Per iniziare</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Hide&lt;/b&gt; what your machine does not need: select states or transitions and press Delete (Shift+Delete shows them again).</source>
+        <translation>&lt;b&gt;Nascondete&lt;/b&gt; ciò che la vostra macchina non usa: selezionate stati o transizioni e premete Canc (Maiusc+Canc li mostra di nuovo).</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Declare&lt;/b&gt; the buttons, sensors and actuators in the Variables panel below.</source>
+        <translation>&lt;b&gt;Dichiarate&lt;/b&gt; pulsanti, sensori e attuatori nel pannello Variabili qui sotto.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Write&lt;/b&gt; each transition&apos;s condition: select the transition and press Enter. Red marks what is not finished yet.</source>
+        <translation>&lt;b&gt;Scrivete&lt;/b&gt; la condizione di ogni transizione: selezionate la transizione e premete Invio. Il rosso segna ciò che non è ancora finito.</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Simulate&lt;/b&gt; with F5, &lt;b&gt;verify&lt;/b&gt; with F7, then export PLCopen XML for your PLC.</source>
+        <translation>&lt;b&gt;Simulate&lt;/b&gt; con F5, &lt;b&gt;verificate&lt;/b&gt; con F7, poi esportate il PLCopen XML per il vostro PLC.</translation>
+    </message>
+    <message>
+        <source>The chart is the GEMMA sheet: the ways your machine stops (A), works (F) and fails (D), and the transitions between them.</source>
+        <translation>Il diagramma è il foglio GEMMA: come la vostra macchina si ferma (A), funziona (F) e si guasta (D), e le transizioni tra questi stati.</translation>
+    </message>
+    <message>
+        <source>Select a step or a transition to edit it here.</source>
+        <translation>Selezionate una tappa o una transizione per modificarla qui.</translation>
+    </message>
+    <message>
+        <source>Open an Example</source>
+        <translation>Apri un esempio</translation>
+    </message>
+    <message>
+        <source>A finished model to look at and simulate, opened as an untitled copy</source>
+        <translation>Un modello finito da guardare e simulare, aperto come copia senza titolo</translation>
+    </message>
+    <message>
+        <source>User Guide</source>
+        <translation>Guida utente</translation>
+    </message>
+    <message>
+        <source>How to build a model step by step (F1)</source>
+        <translation>Come costruire un modello passo per passo (F1)</translation>
+    </message>
+</context>
+<context>
     <name>editor::StepDock</name>
     <message>
         <source>Step</source>
