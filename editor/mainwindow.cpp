@@ -1037,6 +1037,31 @@ void MainWindow::onSimulationActiveChanged(bool active)
         m_simulationDock->show();
         m_simulationDock->raise();
     }
+    giveSimulationTheColumn(active);
+}
+
+void MainWindow::giveSimulationTheColumn(bool simulating)
+{
+    if (!docksReady())
+        return;
+    // Only when the two share the column, one above the other (the default
+    // layout); a layout the user made is left as it is.
+    const Qt::DockWidgetArea area = dockWidgetArea(m_simulationDock);
+    const bool stacked = !m_simulationDock->isFloating() && !m_variablesDock->isFloating()
+                      && area == dockWidgetArea(m_variablesDock) && area != Qt::NoDockWidgetArea
+                      && !tabifiedDockWidgets(m_simulationDock).contains(m_variablesDock)
+                      && m_simulationDock->isVisible() && m_variablesDock->isVisible()
+                      && m_simulationDock->x() == m_variablesDock->x();
+    const QList<QDockWidget*> column{m_simulationDock, m_variablesDock};
+    if (simulating && stacked) {
+        m_columnBeforeSimulation = {m_simulationDock->height(), m_variablesDock->height()};
+        const int total = m_columnBeforeSimulation[0] + m_columnBeforeSimulation[1];
+        resizeDocks(column, {total * 3 / 4, total - total * 3 / 4}, Qt::Vertical);
+    } else if (!simulating && stacked && !m_columnBeforeSimulation.isEmpty()) {
+        resizeDocks(column, m_columnBeforeSimulation, Qt::Vertical);
+    }
+    if (!simulating)
+        m_columnBeforeSimulation.clear();
 }
 
 void MainWindow::verify()

@@ -142,6 +142,9 @@ private:
     void showEditFailure(const QString& message);
     // Simulation mode: locks the editing actions and docks, shows the dock.
     void onSimulationActiveChanged(bool active);
+    // While simulating, the Simulation dock takes most of the dock column
+    // from the docks below it (locked then), and gives it back at the end.
+    void giveSimulationTheColumn(bool simulating);
     void applyEditingLock();
     // Verify: runs the verifier and shows its findings in the Problems dock.
     void verify();
@@ -168,6 +171,7 @@ private:
     SimulationSession* m_session = nullptr;
     SimulationChartMarks* m_chartMarks = nullptr;
     SimulationDock* m_simulationDock = nullptr;
+    QList<int> m_columnBeforeSimulation; // the Simulation dock's and the lower docks' heights
     StatusBadge* m_simulationIndicator = nullptr;
     VerificationRunner* m_verification = nullptr;
 

@@ -265,6 +265,7 @@ private slots:
     void resetLayoutPutsEveryPanelBack();
     void windowFitsTheScreen();
     void fittedChartLabelsReadOnALaptop();
+    void simulationTakesTheColumnWhileItRuns();
     void exportNamesFollowTheModelFile();
     void opensANativeFile();
     void examplesOpenAsUntitledCopies();
@@ -666,6 +667,30 @@ void TestMainWindow::fittedChartLabelsReadOnALaptop()
                                                     .arg(window.height())
                                                     .arg(m_window->chartView()->zoom())));
     }
+}
+
+// Simulating, the Simulation dock gets most of the dock column (the docks
+// below are locked then); ending gives the column back as it was.
+void TestMainWindow::simulationTakesTheColumnWhileItRuns()
+{
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window->resize(1366 - 16, 768 - 48);
+    m_window->findChild<QAction*>(QStringLiteral("resetLayoutAction"))->trigger();
+    QApplication::processEvents();
+    auto* simulation = m_window->findChild<QDockWidget*>(QStringLiteral("simulationDock"));
+    auto* variables = m_window->findChild<QDockWidget*>(QStringLiteral("variablesDock"));
+    const int lowerBefore = variables->height();
+    auto* simulate = m_window->findChild<QAction*>(QStringLiteral("simulateAction"));
+    simulate->setChecked(true);
+    QApplication::processEvents();
+    QVERIFY(simulation->isVisible());
+    QVERIFY2(simulation->height() >= 2 * variables->height(),
+             qPrintable(QStringLiteral("%1 over %2").arg(simulation->height()).arg(variables->height())));
+    simulate->setChecked(false);
+    QApplication::processEvents();
+    QVERIFY2(qAbs(variables->height() - lowerBefore) <= 2,
+             qPrintable(QStringLiteral("%1, was %2").arg(variables->height()).arg(lowerBefore)));
 }
 
 void TestMainWindow::windowFitsTheScreen()
