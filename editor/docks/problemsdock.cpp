@@ -3,6 +3,7 @@
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/docks/verificationpanel.h"
+#include "editor/docks/wrappingitemdelegate.h"
 #include "editor/document.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
@@ -128,13 +129,15 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
     m_view->setObjectName(QStringLiteral("problemsView"));
     m_view->setColumnCount(3);
     m_view->setRootIsDecorated(false);
-    m_view->setUniformRowHeights(true);
+    // The messages wrap: in the dock column beside the chart a message is
+    // wider than its column, and a cut message says too little.
+    new WrappingItemDelegate(m_view, MessageColumn);
     m_view->setAllColumnsShowFocus(true);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->setTextElideMode(Qt::ElideRight);
     m_view->header()->setStretchLastSection(true);
     m_view->header()->resizeSection(CodeColumn, 80);
-    m_view->header()->resizeSection(ElementColumn, 110);
+    m_view->header()->resizeSection(ElementColumn, 90);
     m_view->setToolTip(QString());
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
     m_copyAction = new QAction(m_view);

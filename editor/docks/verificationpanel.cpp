@@ -2,6 +2,7 @@
 
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/docks/wrappingitemdelegate.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
@@ -109,7 +110,7 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     m_view->setObjectName(QStringLiteral("verificationView"));
     m_view->setColumnCount(4);
     m_view->setRootIsDecorated(false);
-    m_view->setUniformRowHeights(true);
+    new WrappingItemDelegate(m_view, MessageColumn); // the messages wrap, never cut
     m_view->setAllColumnsShowFocus(true);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->header()->setStretchLastSection(true);

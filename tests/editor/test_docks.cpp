@@ -35,6 +35,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QCompleter>
+#include <QHeaderView>
 #include <QHelpEvent>
 #include <QLabel>
 #include <QPlainTextEdit>
@@ -125,6 +126,7 @@ private slots:
     void sortByNameIsOneUndoStep();
     void selectingRowSelectsVariable();
     void doubleClickingProblemSelectsElement();
+    void problemMessagesWrapInANarrowDock();
     void problemFiltersCountAndHide();
     void problemFocusesConditionSpan();
     void stPreviewShowsProgramAndHighlightsStep();
@@ -757,6 +759,27 @@ void TestDocks::doubleClickingProblemSelectsElement()
     QCOMPARE(selection.current(), ElementRef::transition("A1->F4"));
     QCOMPARE(focus.count(), 1);
     QCOMPARE(focus.front().at(1).toString(), QString("condition"));
+}
+
+// In the narrow dock column a message wraps over the lines it needs, and
+// the row grows with it; widened, the row shrinks back to one line.
+void TestDocks::problemMessagesWrapInANarrowDock()
+{
+    Document document;
+    Selection selection;
+    ProblemsDock dock(&document, &selection);
+    dock.resize(340, 400);
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    QTreeWidget* view = dock.view();
+    QTreeWidgetItem* item = problemItem(view, "GG202", "A1 → F4");
+    QVERIFY(item);
+    const int line = view->fontMetrics().height();
+    const QString message = item->text(ProblemsDock::MessageColumn);
+    QVERIFY(view->fontMetrics().horizontalAdvance(message) > 2 * view->header()->sectionSize(ProblemsDock::MessageColumn));
+    QTRY_VERIFY(view->visualItemRect(item).height() >= 3 * line);
+    dock.resize(3000, 400);
+    QTRY_VERIFY(view->visualItemRect(item).height() < 2 * line);
 }
 
 void TestDocks::problemFiltersCountAndHide()
