@@ -573,6 +573,9 @@ void MainWindow::showChartContextMenu(const ElementRef& element, const QPoint& g
 void MainWindow::resetLayout()
 {
     ensureDocksReady();
+    // While the docks are moved, some stand side by side for a moment and
+    // the window grows to their minimum sizes: it gets its size back after.
+    const QSize before = size();
     for (QDockWidget* dock : docks()) {
         dock->setFloating(false);
         dock->show();
@@ -580,6 +583,8 @@ void MainWindow::resetLayout()
     arrangeDocks(docks());
     m_mainToolBar->show();
     addToolBar(Qt::TopToolBarArea, m_mainToolBar);
+    if (!isMaximized() && !isFullScreen())
+        resize(before);
     applyDefaultLayout();
 }
 
@@ -605,12 +610,14 @@ void MainWindow::createStatusBar()
 
 // The dock column sized for the screen: the fitted chart is limited by its
 // height, which the column leaves whole, so the column takes the width the
-// chart cannot use (about 28 %), and its lower group a little less than half
-// of it.
+// chart cannot use (within 340 px and 40 % of the window), and its lower
+// group a little less than half of its height.
 void MainWindow::applyDefaultLayout()
 {
     const QSize window = size();
-    const int columnWidth = std::clamp(window.width() * 28 / 100, 340, 540);
+    const int separator = style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, this);
+    const int spare = window.width() - m_view->widthToFitHeight() - separator;
+    const int columnWidth = std::clamp(spare, 340, std::max(340, window.width() * 40 / 100));
     const int lowerHeight = std::clamp(window.height() * 42 / 100, 200, 480);
     resizeDocks({dockNamed(QStringLiteral("stepDock"))}, {columnWidth}, Qt::Horizontal);
     resizeDocks({dockNamed(QStringLiteral("variablesDock"))}, {lowerHeight}, Qt::Vertical);

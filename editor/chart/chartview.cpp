@@ -58,6 +58,13 @@ void ChartView::zoomOut()
     zoomBy(1 / kZoomStep, viewport()->rect().center());
 }
 
+int ChartView::widthToFitHeight() const
+{
+    const QRectF sheet = sceneRect().adjusted(-kFitMargin, -kFitMargin, kFitMargin, kFitMargin);
+    const double viewportWidth = viewport()->height() * sheet.width() / sheet.height();
+    return static_cast<int>(std::ceil(viewportWidth)) + width() - viewport()->width();
+}
+
 void ChartView::zoomToFit()
 {
     m_fitted = true;

@@ -25,6 +25,9 @@ public:
 
     ChartScene* chartScene() const { return m_scene; }
     double zoom() const; // 1.0 is 100 %
+    // The width at which the fitted sheet fills the view's present height:
+    // what the view needs beside the dock column, and no more.
+    int widthToFitHeight() const;
 
     // The parts of `area` outside `inner` (above, below, left and right),
     // which tile it together with `inner & area`.

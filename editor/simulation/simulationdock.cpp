@@ -347,7 +347,7 @@ QWidget* SimulationDock::createOnPage()
     splitter->addWidget(scroll);
     splitter->addWidget(m_tabs);
     // The sizes are proportions: the inputs get the larger part.
-    scroll->setMinimumHeight(fontMetrics().height() * 6);
+    scroll->setMinimumHeight(fontMetrics().height() * 3);
     splitter->setStretchFactor(0, 3);
     splitter->setStretchFactor(1, 2);
     splitter->setSizes({3000, 2000});
