@@ -332,11 +332,12 @@ bool unconfirmed(const core::VerificationFinding& f)
 
 } // namespace
 
+// Transitions named as everywhere else in the editor ("F1 → A2").
 QString verificationText(const core::VerificationFinding& finding)
 {
-    QString text = translatedFinding(finding);
+    QString text = withTransitionLabels(translatedFinding(finding));
     if (text.isEmpty()) {
-        text = fromStd(finding.message);
+        text = withTransitionLabels(fromStd(finding.message));
         if (!text.isEmpty())
             text[0] = text[0].toUpper();
         return text;
