@@ -114,9 +114,10 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     m_view->setAllColumnsShowFocus(true);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->header()->setStretchLastSection(true);
-    m_view->header()->resizeSection(CodeColumn, 80);
-    m_view->header()->resizeSection(ElementColumn, 110);
-    m_view->header()->resizeSection(ScansColumn, 50);
+    // Narrow enough to leave the message most of the dock column.
+    m_view->header()->resizeSection(CodeColumn, 72);
+    m_view->header()->resizeSection(ElementColumn, 100);
+    m_view->header()->resizeSection(ScansColumn, 46);
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
     auto* separator = new QAction(m_view);
     separator->setSeparator(true);

@@ -43,6 +43,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QImage>
 #include <QGroupBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -601,6 +602,19 @@ void TestMainWindow::userGuideOpensAtTheFocusedPanel()
     }
     // The guide shows its picture, and its links open the reference pages offline.
     QVERIFY(guide.browser()->toHtml().contains(QStringLiteral("main-window-template.png")));
+    // Every picture the guide shows is embedded with it.
+    QFile page(QStringLiteral(":/docs/user-guide.md"));
+    QVERIFY(page.open(QIODevice::ReadOnly));
+    const QString markdown = QString::fromUtf8(page.readAll());
+    QRegularExpressionMatchIterator pictures =
+        QRegularExpression(QStringLiteral(R"(!\[[^\]]*\]\((images/[^)]+)\))")).globalMatch(markdown);
+    int pictureCount = 0;
+    while (pictures.hasNext()) {
+        const QString path = QStringLiteral(":/docs/") + pictures.next().captured(1);
+        QVERIFY2(QImage(path).width() > 0, qPrintable(path));
+        ++pictureCount;
+    }
+    QVERIFY(pictureCount >= 5);
     guide.browser()->setSource(QUrl(QStringLiteral("diagnostics.md")));
     QVERIFY2(guide.browser()->toPlainText().contains(QStringLiteral("GG202")),
              qPrintable(guide.browser()->source().toString()));

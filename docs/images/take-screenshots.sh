@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Retakes the pictures of the README and the user guide from the real
+# program (tests/editor/screenshot.cpp), on the shipped examples, offscreen.
+# Usage: docs/images/take-screenshots.sh [BUILD_DIR]   (default: build)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+shot="${1:-build}/tests/editor/ggstudio_screenshot"
+export QT_QPA_PLATFORM=offscreen
+images=docs/images
+example=examples/drilling-cell.ggstudio.json
+
+# The first start: the template and the start guide.
+"$shot" "$images/main-window-template.png" 1366 768
+# A transition being edited.
+"$shot" "$images/main-window-transition.png" 1366 768 "$example" --select "A1->F2" --raise transitionDock
+# The faulty example: the Problems dock and a step with problems.
+"$shot" "$images/main-window-problem.png" 1920 1080 examples/drilling-cell-faulty.ggstudio.json \
+    --select A7 --raise problemsDock
+# The start scenario replayed up to the first part being drilled.
+"$shot" "$images/simulation.png" 1366 768 "$example" --simulate \
+    --replay examples/drilling-cell-start.scenario --replay-scans 1013 --raise simulationDock
+# Verify and its findings.
+"$shot" "$images/verification.png" 1366 768 "$example" --verify --raise problemsDock
