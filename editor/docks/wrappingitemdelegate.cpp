@@ -38,6 +38,15 @@ QSize WrappingItemDelegate::sizeHint(const QStyleOptionViewItem& option, const Q
     const int width = m_view->header()->sectionSize(m_column);
     if (index.column() != m_column || width <= 0)
         return QStyledItemDelegate::sizeHint(option, index);
+    constexpr qsizetype kRememberedTexts = 1000; // a long session types many messages
+    if (width != m_measuredWidth || m_heights.size() >= kRememberedTexts) {
+        m_heights.clear();
+        m_measuredWidth = width;
+    }
+    const QString text = index.data(Qt::DisplayRole).toString();
+    const auto known = m_heights.constFind(text);
+    if (known != m_heights.constEnd())
+        return {width, *known};
     QStyleOptionViewItem wrapped = option;
     initStyleOption(&wrapped, index);
     // The style lays the text out at the width of the rectangle it is given
@@ -46,7 +55,9 @@ QSize WrappingItemDelegate::sizeHint(const QStyleOptionViewItem& option, const Q
     const QStyle* style = wrapped.widget ? wrapped.widget->style() : QApplication::style();
     const QSize size = style->sizeFromContents(QStyle::CT_ItemViewItem, &wrapped, QSize(), wrapped.widget);
     constexpr int kRowGap = 3; // wrapped rows apart, so that each message reads as one
-    return {width, size.height() + kRowGap};
+    const int height = size.height() + kRowGap;
+    m_heights.insert(text, height);
+    return {width, height};
 }
 
 } // namespace editor

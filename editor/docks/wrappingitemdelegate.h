@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QHash>
 #include <QStyledItemDelegate>
 
 class QTreeView;
@@ -25,6 +26,11 @@ public:
 private:
     QTreeView* m_view;
     int m_column;
+    // Heights by text at m_measuredWidth: the list is rebuilt at every
+    // keystroke with mostly the same messages, and laying a message out
+    // anew each time was most of that rebuild.
+    mutable QHash<QString, int> m_heights;
+    mutable int m_measuredWidth = -1;
 };
 
 } // namespace editor
