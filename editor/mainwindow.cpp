@@ -616,7 +616,12 @@ void MainWindow::applyDefaultLayout()
 {
     const QSize window = size();
     const int separator = style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent, nullptr, this);
-    const int spare = window.width() - m_view->widthToFitHeight() - separator;
+    // From the window's height, not the view's: at the first start the
+    // window is not laid out yet.
+    int chartHeight = window.height() - menuBar()->sizeHint().height() - statusBar()->sizeHint().height();
+    if (toolBarArea(m_mainToolBar) == Qt::TopToolBarArea && !m_mainToolBar->isHidden())
+        chartHeight -= m_mainToolBar->sizeHint().height();
+    const int spare = window.width() - m_view->widthToFitHeight(chartHeight) - separator;
     const int columnWidth = std::clamp(spare, 340, std::max(340, window.width() * 40 / 100));
     const int lowerHeight = std::clamp(window.height() * 42 / 100, 200, 480);
     resizeDocks({dockNamed(QStringLiteral("stepDock"))}, {columnWidth}, Qt::Horizontal);

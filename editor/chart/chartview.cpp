@@ -58,11 +58,11 @@ void ChartView::zoomOut()
     zoomBy(1 / kZoomStep, viewport()->rect().center());
 }
 
-int ChartView::widthToFitHeight() const
+int ChartView::widthToFitHeight(int height) const
 {
     const QRectF sheet = sceneRect().adjusted(-kFitMargin, -kFitMargin, kFitMargin, kFitMargin);
-    const double viewportWidth = viewport()->height() * sheet.width() / sheet.height();
-    return static_cast<int>(std::ceil(viewportWidth)) + width() - viewport()->width();
+    const int frame = 2 * frameWidth(); // the view has none; a style may add one
+    return static_cast<int>(std::ceil((height - frame) * sheet.width() / sheet.height())) + frame;
 }
 
 void ChartView::zoomToFit()

@@ -25,9 +25,9 @@ public:
 
     ChartScene* chartScene() const { return m_scene; }
     double zoom() const; // 1.0 is 100 %
-    // The width at which the fitted sheet fills the view's present height:
+    // The width at which the fitted sheet fills a view `height` pixels high:
     // what the view needs beside the dock column, and no more.
-    int widthToFitHeight() const;
+    int widthToFitHeight(int height) const;
 
     // The parts of `area` outside `inner` (above, below, left and right),
     // which tile it together with `inner & area`.

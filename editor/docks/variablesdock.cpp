@@ -113,9 +113,10 @@ VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* 
     QHeaderView* header = m_view->horizontalHeader();
     header->setHighlightSections(false);
     header->setStretchLastSection(true);
-    header->resizeSection(VariablesTableModel::NameColumn, 130);
-    header->resizeSection(VariablesTableModel::TypeColumn, 70);
-    header->resizeSection(VariablesTableModel::DefaultColumn, 70);
+    // Narrow enough that the comment shows in the dock column beside the chart.
+    header->resizeSection(VariablesTableModel::NameColumn, 116);
+    header->resizeSection(VariablesTableModel::TypeColumn, 60);
+    header->resizeSection(VariablesTableModel::DefaultColumn, 60);
     m_view->installEventFilter(this);
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
     const auto separator = [this]() {
