@@ -1,5 +1,7 @@
 #include "core/simulation/nestedengine.h"
 
+#include "core/simulation/decidingoperands.h"
+
 #include "core/condition/conditionanalysis.h"
 #include "core/model/model.h"
 
@@ -320,9 +322,22 @@ std::string NestedEngine::declaredName(const std::string& written) const
 
 // Why the subtree at `node` has the value it has, as Simulator::explain()
 // words a GEMMA condition: logical operators descend to the operands that
-// decide, an edge or a time-dependent receptivity says what it compared,
-// everything else gives its text, its value and the variables it reads.
+// decide (visitDecidingOperands), an edge or a time-dependent receptivity
+// says what it compared, everything else gives its text, its value and the
+// variables it reads.
 void NestedEngine::explainNode(const cond::Expression& expression, int node, const std::map<int, int>& timers,
+                               const NestedGlobals& globals, std::vector<ExplanationReason>& reasons) const
+{
+    const auto isTrueAt = [&](int at) {
+        cond::Expression sub = expression;
+        sub.root = at;
+        return cond::isTrue(evaluate(sub, &timers, globals, true));
+    };
+    visitDecidingOperands(expression, node, isTrueAt,
+                          [&](int leaf) { explainLeaf(expression, leaf, timers, globals, reasons); });
+}
+
+void NestedEngine::explainLeaf(const cond::Expression& expression, int node, const std::map<int, int>& timers,
                                const NestedGlobals& globals, std::vector<ExplanationReason>& reasons) const
 {
     const cond::Node& n = expression.at(node);
@@ -372,10 +387,6 @@ void NestedEngine::explainNode(const cond::Expression& expression, int node, con
         return;
     }
     case cond::NodeKind::Unary: {
-        if (n.unaryOp == cond::UnaryOp::Not) {
-            explainNode(expression, n.operand, timers, globals, reasons);
-            return;
-        }
         if (n.unaryOp == cond::UnaryOp::RisingEdge || n.unaryOp == cond::UnaryOp::FallingEdge) {
             const cond::Node& operand = expression.at(n.operand);
             const int s = slot(operand.text);
@@ -399,25 +410,6 @@ void NestedEngine::explainNode(const cond::Expression& expression, int node, con
                 reason.readings.push_back({name, now, {}});
             }
             reasons.push_back(std::move(reason));
-            return;
-        }
-        break;
-    }
-    case cond::NodeKind::Binary: {
-        if (n.binaryOp == cond::BinaryOp::And || n.binaryOp == cond::BinaryOp::Or) {
-            const bool value = cond::isTrue(valueAt(node));
-            // AND FALSE: its FALSE operands; OR TRUE: its TRUE operands; otherwise all of them decide.
-            const bool deciding = n.binaryOp == cond::BinaryOp::Or;
-            const bool onlyDeciding = value == deciding;
-            for (int operand : {n.left, n.right}) {
-                if (!onlyDeciding || cond::isTrue(valueAt(operand)) == deciding)
-                    explainNode(expression, operand, timers, globals, reasons);
-            }
-            return;
-        }
-        if (n.binaryOp == cond::BinaryOp::Xor) {
-            explainNode(expression, n.left, timers, globals, reasons);
-            explainNode(expression, n.right, timers, globals, reasons);
             return;
         }
         break;

@@ -118,6 +118,9 @@ private:
     int stepIndex(int number) const;
     void explainNode(const cond::Expression& expression, int node, const std::map<int, int>& timers,
                      const NestedGlobals& globals, std::vector<ExplanationReason>& reasons) const;
+    // A node that is no NOT, AND, OR or XOR.
+    void explainLeaf(const cond::Expression& expression, int node, const std::map<int, int>& timers,
+                     const NestedGlobals& globals, std::vector<ExplanationReason>& reasons) const;
     std::string declaredName(const std::string& written) const;
     int ownOutput(std::string_view name) const; // index into m_outputNames, -1 when not one
     void runTon(std::size_t timer, bool in, std::int64_t nowMs);

@@ -1,5 +1,6 @@
 #include "core/simulation/simulator.h"
 
+#include "core/simulation/decidingoperands.h"
 #include "core/simulation/nestedengine.h"
 
 #include "core/condition/conditionanalysis.h"
@@ -266,6 +267,9 @@ struct Simulator::Impl {
     std::vector<ExplanationReason> explainFalse(const CompiledTransition& transition,
                                                 const ConditionInputs& inputs) const;
     void explainNode(const CompiledTransition& transition, const ConditionInputs& inputs, int node,
+                     std::vector<ExplanationReason>& reasons) const;
+    // A node that is no NOT, AND, OR or XOR.
+    void explainLeaf(const CompiledTransition& transition, const ConditionInputs& inputs, int node,
                      std::vector<ExplanationReason>& reasons) const;
     ConditionReading reading(const CompiledTransition& transition, int node, const ConditionInputs& inputs) const;
 };
@@ -888,18 +892,26 @@ ConditionReading Simulator::Impl::reading(const CompiledTransition& transition, 
 }
 
 // Why the subtree at `node` has the value it has: logical operators descend
-// to the operands that decide the result, everything else is explained by
-// its text, its value and the values it reads.
+// to the operands that decide the result (visitDecidingOperands), everything
+// else is explained by its text, its value and the values it reads.
 void Simulator::Impl::explainNode(const CompiledTransition& transition, const ConditionInputs& inputs, int node,
                                   std::vector<ExplanationReason>& reasons) const
 {
     const cond::Expression& expression = transition.readable;
-    const cond::Node& n = expression.at(node);
-    auto valueOf = [&](int at) {
+    const auto isTrueAt = [&](int at) {
         cond::Expression sub = expression;
         sub.root = at;
         return cond::isTrue(cond::evaluate(sub, [&](int v) { return nodeReading(transition, v, inputs); }));
     };
+    visitDecidingOperands(expression, node, isTrueAt,
+                          [&](int leaf) { explainLeaf(transition, inputs, leaf, reasons); });
+}
+
+void Simulator::Impl::explainLeaf(const CompiledTransition& transition, const ConditionInputs& inputs, int node,
+                                  std::vector<ExplanationReason>& reasons) const
+{
+    const cond::Expression& expression = transition.readable;
+    const cond::Node& n = expression.at(node);
     ExplanationReason reason;
     if (n.kind == cond::NodeKind::Variable) {
         reason.kind = ExplanationReason::Kind::Reading;
@@ -911,27 +923,6 @@ void Simulator::Impl::explainNode(const CompiledTransition& transition, const Co
         reason.kind = ExplanationReason::Kind::Literal;
         reason.value = toUpperAscii(n.text);
         reasons.push_back(std::move(reason));
-        return;
-    }
-    if (n.kind == cond::NodeKind::Unary && n.unaryOp == cond::UnaryOp::Not) {
-        explainNode(transition, inputs, n.operand, reasons);
-        return;
-    }
-    if (n.kind == cond::NodeKind::Binary
-        && (n.binaryOp == cond::BinaryOp::And || n.binaryOp == cond::BinaryOp::Or)) {
-        const bool value = valueOf(node);
-        // AND FALSE: its FALSE operands; OR TRUE: its TRUE operands; otherwise all of them decide.
-        const bool deciding = n.binaryOp == cond::BinaryOp::And ? false : true;
-        const bool onlyDeciding = value == deciding;
-        for (int operand : {n.left, n.right}) {
-            if (!onlyDeciding || valueOf(operand) == deciding)
-                explainNode(transition, inputs, operand, reasons);
-        }
-        return;
-    }
-    if (n.kind == cond::NodeKind::Binary && n.binaryOp == cond::BinaryOp::Xor) {
-        explainNode(transition, inputs, n.left, reasons);
-        explainNode(transition, inputs, n.right, reasons);
         return;
     }
     // A comparison (or anything else): "Speed > 10 is FALSE (Speed = 3)".
