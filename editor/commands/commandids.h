@@ -26,6 +26,7 @@ enum CommandId : int {
     SetCycleTimeId, // merges spin box steps
     SetDialectId,
     PasteVariablesId,
+    SetVariableKindId,
 };
 
 } // namespace editor

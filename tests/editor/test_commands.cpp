@@ -21,6 +21,7 @@
 #include "editor/commands/settransitionhiddencommand.h"
 #include "editor/commands/setvariablecommentcommand.h"
 #include "editor/commands/setvariabledefaultcommand.h"
+#include "editor/commands/setvariablekindcommand.h"
 #include "editor/commands/setvariabletypecommand.h"
 #include "editor/document.h"
 
@@ -97,6 +98,7 @@ private slots:
     void removeVariableRestoresPosition();
     void renameVariableUndoRestoresExactTexts();
     void setVariableType();
+    void setVariableKind();
     void setVariableDefaultAndCommentMerge();
     void moveVariable();
     void resetModel();
@@ -448,6 +450,30 @@ void TestCommands::setVariableType()
     QCOMPARE(ids(changed), QStringList{"Speed"});
     document.undoStack()->undo();
     QCOMPARE(document.model().variable("Speed")->type, core::IecType::Bool);
+}
+
+void TestCommands::setVariableKind()
+{
+    Document document;
+    addVariables(document, {"Valve", "Count"});
+    QSignalSpy changed(&document, &Document::variableChanged);
+    QVERIFY(document.push(new SetVariableKindCommand(document, "valve", core::VariableKind::Output)));
+    QCOMPARE(document.undoStack()->undoText(), QString("Set kind of valve to output"));
+    QCOMPARE(document.model().variable("Valve")->kind, core::VariableKind::Output);
+    QCOMPARE(ids(changed), QStringList{"Valve"});
+    QVERIFY(document.push(new SetVariableKindCommand(document, "Count", core::VariableKind::Internal)));
+    QCOMPARE(document.undoStack()->undoText(), QString("Set kind of Count to internal"));
+    QCOMPARE(document.undoStack()->count(), 2); // no merging: each is its own step
+
+    document.undoStack()->undo();
+    QCOMPARE(document.model().variable("Count")->kind, core::VariableKind::Input);
+    document.undoStack()->undo();
+    QCOMPARE(document.model().variable("Valve")->kind, core::VariableKind::Input);
+
+    // The same kind again changes nothing and is dropped; an unknown name fails.
+    QVERIFY(document.push(new SetVariableKindCommand(document, "Valve", core::VariableKind::Input)));
+    QCOMPARE(document.undoStack()->index(), 0);
+    QVERIFY(!document.push(new SetVariableKindCommand(document, "Nothing", core::VariableKind::Output)));
 }
 
 void TestCommands::setVariableDefaultAndCommentMerge()
