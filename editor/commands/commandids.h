@@ -27,6 +27,7 @@ enum CommandId : int {
     SetDialectId,
     PasteVariablesId,
     SetVariableKindId,
+    SetEvolutionRuleId,
 };
 
 } // namespace editor

@@ -10,6 +10,7 @@
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setcycletimecommand.h"
 #include "editor/commands/setdialectcommand.h"
+#include "editor/commands/setevolutionrulecommand.h"
 #include "editor/commands/setinitialstepcommand.h"
 #include "editor/commands/setmodelnamecommand.h"
 #include "editor/commands/setnegatedcommand.h"
@@ -103,6 +104,7 @@ private slots:
     void moveVariable();
     void resetModel();
     void settings();
+    void setEvolutionRule();
     void pasteVariables();
 };
 
@@ -559,6 +561,22 @@ void TestCommands::settings()
     document.undoStack()->undo();
     document.undoStack()->undo();
     QVERIFY(document.model().settings() == core::ModelSettings());
+}
+
+void TestCommands::setEvolutionRule()
+{
+    Document document;
+    QSignalSpy changed(&document, &Document::settingsChanged);
+    QVERIFY(document.push(new SetEvolutionRuleCommand(document, core::EvolutionRule::UntilStable)));
+    QCOMPARE(document.undoStack()->undoText(), QString("Set evolution rule to until stable"));
+    QCOMPARE(document.model().settings().evolution, core::EvolutionRule::UntilStable);
+    QCOMPARE(changed.count(), 1);
+    document.undoStack()->undo();
+    QCOMPARE(document.model().settings().evolution, core::EvolutionRule::OneEvolutionPerScan);
+    QVERIFY(document.model().settings() == core::ModelSettings());
+    document.undoStack()->redo();
+    QVERIFY(document.push(new SetEvolutionRuleCommand(document, core::EvolutionRule::OneEvolutionPerScan)));
+    QCOMPARE(document.undoStack()->undoText(), QString("Set evolution rule to one evolution per scan"));
 }
 
 void TestCommands::pasteVariables()
