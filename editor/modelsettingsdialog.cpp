@@ -2,15 +2,18 @@
 
 #include "editor/commands/setcycletimecommand.h"
 #include "editor/commands/setdialectcommand.h"
+#include "editor/commands/setevolutionrulecommand.h"
 #include "editor/commands/setmodelnamecommand.h"
 #include "editor/document.h"
 #include "editor/exportoptionsdialog.h"
+#include "editor/secondarytext.h"
 #include "editor/settings.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
 #include <QUndoStack>
@@ -27,6 +30,8 @@ ModelSettingsDialog::ModelSettingsDialog(Document& document, Settings& settings,
     , m_nameEdit(new QLineEdit(this))
     , m_cycleTimeSpin(new QSpinBox(this))
     , m_dialectCombo(new QComboBox(this))
+    , m_evolutionCombo(new QComboBox(this))
+    , m_evolutionDescription(new QLabel(this))
     , m_defaultsCheck(new QCheckBox(this))
 {
     setObjectName("modelSettingsDialog");
@@ -49,6 +54,17 @@ ModelSettingsDialog::ModelSettingsDialog(Document& document, Settings& settings,
     m_dialectCombo->setCurrentIndex(m_dialectCombo->findData(static_cast<int>(current.dialect)));
     m_dialectCombo->setToolTip(tr("The flavour of the generated Structured Text and its preview"));
 
+    m_evolutionCombo->setObjectName("evolutionCombo");
+    m_evolutionCombo->addItem(tr("One evolution per scan"), static_cast<int>(core::EvolutionRule::OneEvolutionPerScan));
+    m_evolutionCombo->addItem(tr("Until stable"), static_cast<int>(core::EvolutionRule::UntilStable));
+    m_evolutionCombo->setCurrentIndex(m_evolutionCombo->findData(static_cast<int>(current.evolution)));
+    m_evolutionCombo->setToolTip(tr("How a nested GRAFCET evolves in one call of its function block"));
+    m_evolutionDescription->setObjectName("evolutionDescription");
+    m_evolutionDescription->setWordWrap(true);
+    useSecondaryText(m_evolutionDescription);
+    connect(m_evolutionCombo, &QComboBox::currentIndexChanged, this, &ModelSettingsDialog::updateEvolutionDescription);
+    updateEvolutionDescription();
+
     m_defaultsCheck->setObjectName("defaultsCheck");
     m_defaultsCheck->setText(tr("Use the cycle time and dialect for &new models"));
 
@@ -56,6 +72,8 @@ ModelSettingsDialog::ModelSettingsDialog(Document& document, Settings& settings,
     form->addRow(tr("&Name:"), m_nameEdit);
     form->addRow(tr("PLC &cycle time:"), m_cycleTimeSpin);
     form->addRow(tr("&Dialect:"), m_dialectCombo);
+    form->addRow(tr("&Evolution rule:"), m_evolutionCombo);
+    form->addRow(QString(), m_evolutionDescription);
 
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -66,6 +84,21 @@ ModelSettingsDialog::ModelSettingsDialog(Document& document, Settings& settings,
     layout->addWidget(m_defaultsCheck);
     layout->addWidget(buttons);
     setMinimumWidth(fontMetrics().averageCharWidth() * 60);
+}
+
+QString ModelSettingsDialog::evolutionRuleDescription(core::EvolutionRule rule)
+{
+    if (rule == core::EvolutionRule::UntilStable)
+        return tr("Each scan repeats evolutions until no transition can fire (IEC 60848's search for stability), at "
+                  "most one more than the GRAFCET has transitions; if the last one still fires, the function block "
+                  "reports Unstable.");
+    return tr("Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.");
+}
+
+void ModelSettingsDialog::updateEvolutionDescription()
+{
+    const auto rule = static_cast<core::EvolutionRule>(m_evolutionCombo->currentData().toInt());
+    m_evolutionDescription->setText(evolutionRuleDescription(rule));
 }
 
 void ModelSettingsDialog::accept()
@@ -80,6 +113,7 @@ void ModelSettingsDialog::apply()
     const std::string name = m_nameEdit->text().trimmed().toStdString();
     const int cycleTime = m_cycleTimeSpin->value();
     const auto dialect = static_cast<core::Dialect>(m_dialectCombo->currentData().toInt());
+    const auto evolution = static_cast<core::EvolutionRule>(m_evolutionCombo->currentData().toInt());
 
     std::vector<QUndoCommand*> commands;
     if (!name.empty() && name != current.name)
@@ -88,6 +122,8 @@ void ModelSettingsDialog::apply()
         commands.push_back(new SetCycleTimeCommand(m_document, cycleTime));
     if (dialect != current.dialect)
         commands.push_back(new SetDialectCommand(m_document, dialect));
+    if (evolution != current.evolution)
+        commands.push_back(new SetEvolutionRuleCommand(m_document, evolution));
 
     // One undo step for the whole dialog.
     QUndoStack* stack = m_document.undoStack();

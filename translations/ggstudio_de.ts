@@ -733,6 +733,17 @@
     </message>
 </context>
 <context>
+    <name>SetEvolutionRuleCommand</name>
+    <message>
+        <source>Set evolution rule to until stable</source>
+        <translation>Entwicklungsregel auf „bis stabil“ setzen</translation>
+    </message>
+    <message>
+        <source>Set evolution rule to one evolution per scan</source>
+        <translation>Entwicklungsregel auf „eine Entwicklung pro Zyklus“ setzen</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -831,6 +842,21 @@
     <message>
         <source>Set default of %1</source>
         <translation>Anfangswert von %1 festlegen</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableKindCommand</name>
+    <message>
+        <source>Set kind of %1 to output</source>
+        <translation>Art von %1 auf Ausgang setzen</translation>
+    </message>
+    <message>
+        <source>Set kind of %1 to internal</source>
+        <translation>Art von %1 auf intern setzen</translation>
+    </message>
+    <message>
+        <source>Set kind of %1 to input</source>
+        <translation>Art von %1 auf Eingang setzen</translation>
     </message>
 </context>
 <context>
@@ -1963,6 +1989,30 @@
         <source>Change model settings</source>
         <translation>Modelleinstellungen ändern</translation>
     </message>
+    <message>
+        <source>One evolution per scan</source>
+        <translation>Eine Entwicklung pro Zyklus</translation>
+    </message>
+    <message>
+        <source>Until stable</source>
+        <translation>Bis stabil</translation>
+    </message>
+    <message>
+        <source>How a nested GRAFCET evolves in one call of its function block</source>
+        <translation>Wie sich ein eingebetteter GRAFCET in einem Aufruf seines Funktionsbausteins entwickelt</translation>
+    </message>
+    <message>
+        <source>&amp;Evolution rule:</source>
+        <translation>&amp;Entwicklungsregel:</translation>
+    </message>
+    <message>
+        <source>Each scan repeats evolutions until no transition can fire (IEC 60848&apos;s search for stability), at most one more than the GRAFCET has transitions; if the last one still fires, the function block reports Unstable.</source>
+        <translation>Jeder Zyklus wiederholt Entwicklungen, bis keine Transition mehr schalten kann (die Suche nach Stabilität der IEC 60848), höchstens eine mehr, als der GRAFCET Transitionen hat; schaltet die letzte noch, meldet der Funktionsbaustein Unstable.</translation>
+    </message>
+    <message>
+        <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
+        <translation>Jeder Zyklus schaltet die zu seinem Beginn freigegebenen Transitionen einmal, wie SFC-Laufzeitsysteme wie CODESYS.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemCounter</name>
@@ -2676,6 +2726,13 @@ Einschließender Schritt: Seine Transitionen schalten unabhängig davon, was der
         <source>%1, hidden</source>
         <translation>%1, ausgeblendet</translation>
     </message>
+    <message numerus="yes">
+        <source>Has a nested GRAFCET (%n steps)</source>
+        <translation>
+            <numerusform>Hat einen eingebetteten GRAFCET (%n Schritt)</numerusform>
+            <numerusform>Hat einen eingebetteten GRAFCET (%n Schritte)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::TraceTableModel</name>
@@ -2944,10 +3001,6 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
         <translation>Filter</translation>
     </message>
     <message>
-        <source>Show only the variables whose name, type, default or comment contains this text</source>
-        <translation>Nur die Variablen anzeigen, deren Name, Typ, Anfangswert oder Kommentar diesen Text enthält</translation>
-    </message>
-    <message>
         <source>Add</source>
         <translation>Hinzufügen</translation>
     </message>
@@ -3023,8 +3076,12 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
         <translation>Die ausgewählten Variablen als tabulatorgetrennte Zeilen kopieren</translation>
     </message>
     <message>
-        <source>Paste rows from a spreadsheet: name, type, default and comment</source>
-        <translation>Zeilen aus einer Tabellenkalkulation einfügen: Name, Typ, Anfangswert und Kommentar</translation>
+        <source>Paste rows from a spreadsheet: name, type, default, comment and kind</source>
+        <translation>Zeilen aus einer Tabellenkalkulation einfügen: Name, Typ, Anfangswert, Kommentar und Art</translation>
+    </message>
+    <message>
+        <source>Show only the variables whose name, type, kind, default or comment contains this text</source>
+        <translation>Nur die Variablen zeigen, deren Name, Typ, Art, Anfangswert oder Kommentar diesen Text enthält</translation>
     </message>
 </context>
 <context>
@@ -3080,6 +3137,34 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
         <translation>Es gibt keine Variablen zum Einfügen: Kopieren Sie Zeilen mit Name, Typ, Anfangswert und Kommentar, getrennt durch Tabulatoren.</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Ausgang</translation>
+    </message>
+    <message>
+        <source>Internal</source>
+        <translation>Intern</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>Eingang</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a kind: use %2, %3 or %4.</source>
+        <translation>&apos;%1&apos; ist keine Art: Verwenden Sie %2, %3 oder %4.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Input: read from the machine. Output: written by the actions of nested GRAFCETs. Internal: a memory the program writes and reads.</source>
+        <translation>Eingang: von der Maschine gelesen. Ausgang: von den Aktionen eingebetteter GRAFCETs geschrieben. Intern: ein Speicher, den das Programm schreibt und liest.</translation>
+    </message>
+    <message>
+        <source>Line %1: &apos;%2&apos; is not a kind: use input, output or internal.</source>
+        <translation>Zeile %1: &apos;%2&apos; ist keine Art: Verwenden Sie Eingang, Ausgang oder Intern.</translation>
     </message>
 </context>
 <context>

@@ -119,6 +119,16 @@
     </message>
 </context>
 <context>
+    <name>editor::StepItem</name>
+    <message numerus="yes">
+        <source>Has a nested GRAFCET (%n steps)</source>
+        <translation>
+            <numerusform>Has a nested GRAFCET (%n step)</numerusform>
+            <numerusform>Has a nested GRAFCET (%n steps)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>editor::VariablesDock</name>
     <message numerus="yes">
         <source>Remove %n variables</source>

@@ -733,6 +733,17 @@
     </message>
 </context>
 <context>
+    <name>SetEvolutionRuleCommand</name>
+    <message>
+        <source>Set evolution rule to until stable</source>
+        <translation>Cambiar la regla de evolución a «hasta la estabilidad»</translation>
+    </message>
+    <message>
+        <source>Set evolution rule to one evolution per scan</source>
+        <translation>Cambiar la regla de evolución a «una evolución por ciclo»</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -831,6 +842,21 @@
     <message>
         <source>Set default of %1</source>
         <translation>Cambiar el valor inicial de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableKindCommand</name>
+    <message>
+        <source>Set kind of %1 to output</source>
+        <translation>Cambiar la clase de %1 a salida</translation>
+    </message>
+    <message>
+        <source>Set kind of %1 to internal</source>
+        <translation>Cambiar la clase de %1 a interna</translation>
+    </message>
+    <message>
+        <source>Set kind of %1 to input</source>
+        <translation>Cambiar la clase de %1 a entrada</translation>
     </message>
 </context>
 <context>
@@ -1963,6 +1989,30 @@
         <source>Change model settings</source>
         <translation>Cambiar los ajustes del modelo</translation>
     </message>
+    <message>
+        <source>One evolution per scan</source>
+        <translation>Una evolución por ciclo</translation>
+    </message>
+    <message>
+        <source>Until stable</source>
+        <translation>Hasta la estabilidad</translation>
+    </message>
+    <message>
+        <source>How a nested GRAFCET evolves in one call of its function block</source>
+        <translation>Cómo evoluciona un GRAFCET anidado en una llamada de su bloque de función</translation>
+    </message>
+    <message>
+        <source>&amp;Evolution rule:</source>
+        <translation>Regla de &amp;evolución:</translation>
+    </message>
+    <message>
+        <source>Each scan repeats evolutions until no transition can fire (IEC 60848&apos;s search for stability), at most one more than the GRAFCET has transitions; if the last one still fires, the function block reports Unstable.</source>
+        <translation>Cada ciclo repite evoluciones hasta que ninguna transición puede franquearse (la búsqueda de estabilidad de IEC 60848), como mucho una más de las transiciones que tiene el GRAFCET; si la última aún franquea, el bloque de función indica Unstable.</translation>
+    </message>
+    <message>
+        <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
+        <translation>Cada ciclo franquea una vez las transiciones validadas al empezar, como hacen los entornos SFC como CODESYS.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemCounter</name>
@@ -2676,6 +2726,13 @@ Etapa encapsulante: sus transiciones se franquean haga lo que haga el comportami
         <source>%1, hidden</source>
         <translation>%1, oculta</translation>
     </message>
+    <message numerus="yes">
+        <source>Has a nested GRAFCET (%n steps)</source>
+        <translation>
+            <numerusform>Tiene un GRAFCET anidado (%n etapa)</numerusform>
+            <numerusform>Tiene un GRAFCET anidado (%n etapas)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::TraceTableModel</name>
@@ -2944,10 +3001,6 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
         <translation>Filtrar</translation>
     </message>
     <message>
-        <source>Show only the variables whose name, type, default or comment contains this text</source>
-        <translation>Mostrar solo las variables cuyo nombre, tipo, valor inicial o comentario contiene este texto</translation>
-    </message>
-    <message>
         <source>Add</source>
         <translation>Añadir</translation>
     </message>
@@ -3023,8 +3076,12 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
         <translation>Copiar las variables seleccionadas como filas separadas por tabuladores</translation>
     </message>
     <message>
-        <source>Paste rows from a spreadsheet: name, type, default and comment</source>
-        <translation>Pegar filas de una hoja de cálculo: nombre, tipo, valor inicial y comentario</translation>
+        <source>Paste rows from a spreadsheet: name, type, default, comment and kind</source>
+        <translation>Pegar filas de una hoja de cálculo: nombre, tipo, valor inicial, comentario y clase</translation>
+    </message>
+    <message>
+        <source>Show only the variables whose name, type, kind, default or comment contains this text</source>
+        <translation>Mostrar solo las variables cuyo nombre, tipo, clase, valor inicial o comentario contiene este texto</translation>
     </message>
 </context>
 <context>
@@ -3080,6 +3137,34 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
         <translation>No hay variables que pegar: copie filas de nombre, tipo, valor inicial y comentario, separados por tabuladores.</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Salida</translation>
+    </message>
+    <message>
+        <source>Internal</source>
+        <translation>Interna</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>Entrada</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a kind: use %2, %3 or %4.</source>
+        <translation>&apos;%1&apos; no es una clase: use %2, %3 o %4.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Clase</translation>
+    </message>
+    <message>
+        <source>Input: read from the machine. Output: written by the actions of nested GRAFCETs. Internal: a memory the program writes and reads.</source>
+        <translation>Entrada: leída de la máquina. Salida: escrita por las acciones de los GRAFCET anidados. Interna: una memoria que el programa escribe y lee.</translation>
+    </message>
+    <message>
+        <source>Line %1: &apos;%2&apos; is not a kind: use input, output or internal.</source>
+        <translation>Línea %1: &apos;%2&apos; no es una clase: use entrada, salida o interna.</translation>
     </message>
 </context>
 <context>

@@ -733,6 +733,17 @@
     </message>
 </context>
 <context>
+    <name>SetEvolutionRuleCommand</name>
+    <message>
+        <source>Set evolution rule to until stable</source>
+        <translation>Changer la règle d&apos;évolution en «&#xa0;jusqu&apos;à stabilité&#xa0;»</translation>
+    </message>
+    <message>
+        <source>Set evolution rule to one evolution per scan</source>
+        <translation>Changer la règle d&apos;évolution en «&#xa0;une évolution par cycle&#xa0;»</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -831,6 +842,21 @@
     <message>
         <source>Set default of %1</source>
         <translation>Modifier la valeur initiale de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableKindCommand</name>
+    <message>
+        <source>Set kind of %1 to output</source>
+        <translation>Changer la nature de %1 en sortie</translation>
+    </message>
+    <message>
+        <source>Set kind of %1 to internal</source>
+        <translation>Changer la nature de %1 en interne</translation>
+    </message>
+    <message>
+        <source>Set kind of %1 to input</source>
+        <translation>Changer la nature de %1 en entrée</translation>
     </message>
 </context>
 <context>
@@ -1963,6 +1989,30 @@
         <source>Change model settings</source>
         <translation>Modifier les paramètres du modèle</translation>
     </message>
+    <message>
+        <source>One evolution per scan</source>
+        <translation>Une évolution par cycle</translation>
+    </message>
+    <message>
+        <source>Until stable</source>
+        <translation>Jusqu&apos;à stabilité</translation>
+    </message>
+    <message>
+        <source>How a nested GRAFCET evolves in one call of its function block</source>
+        <translation>Comment un GRAFCET imbriqué évolue en un appel de son bloc fonctionnel</translation>
+    </message>
+    <message>
+        <source>&amp;Evolution rule:</source>
+        <translation>&amp;Règle d&apos;évolution&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Each scan repeats evolutions until no transition can fire (IEC 60848&apos;s search for stability), at most one more than the GRAFCET has transitions; if the last one still fires, the function block reports Unstable.</source>
+        <translation>Chaque cycle répète les évolutions jusqu&apos;à ce qu&apos;aucune transition ne puisse être franchie (la recherche de stabilité de l&apos;IEC 60848), au plus une de plus que le GRAFCET n&apos;a de transitions&#xa0;; si la dernière franchit encore, le bloc fonctionnel signale Unstable.</translation>
+    </message>
+    <message>
+        <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
+        <translation>Chaque cycle franchit une fois les transitions validées à son début, comme le font les exécutifs SFC tels que CODESYS.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemCounter</name>
@@ -2676,6 +2726,13 @@ Macro-étape&#xa0;: ses transitions attendent que le comportement imbriqué soit
         <source>%1, hidden</source>
         <translation>%1, masquée</translation>
     </message>
+    <message numerus="yes">
+        <source>Has a nested GRAFCET (%n steps)</source>
+        <translation>
+            <numerusform>A un GRAFCET imbriqué (%n étape)</numerusform>
+            <numerusform>A un GRAFCET imbriqué (%n étapes)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::TraceTableModel</name>
@@ -2944,10 +3001,6 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
         <translation>Filtrer</translation>
     </message>
     <message>
-        <source>Show only the variables whose name, type, default or comment contains this text</source>
-        <translation>N&apos;afficher que les variables dont le nom, le type, la valeur initiale ou le commentaire contient ce texte</translation>
-    </message>
-    <message>
         <source>Add</source>
         <translation>Ajouter</translation>
     </message>
@@ -3023,8 +3076,12 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
         <translation>Copier les variables sélectionnées en lignes séparées par des tabulations</translation>
     </message>
     <message>
-        <source>Paste rows from a spreadsheet: name, type, default and comment</source>
-        <translation>Coller des lignes d&apos;un tableur&#xa0;: nom, type, valeur initiale et commentaire</translation>
+        <source>Paste rows from a spreadsheet: name, type, default, comment and kind</source>
+        <translation>Coller des lignes d&apos;un tableur&#xa0;: nom, type, valeur initiale, commentaire et nature</translation>
+    </message>
+    <message>
+        <source>Show only the variables whose name, type, kind, default or comment contains this text</source>
+        <translation>N&apos;afficher que les variables dont le nom, le type, la nature, la valeur initiale ou le commentaire contient ce texte</translation>
     </message>
 </context>
 <context>
@@ -3080,6 +3137,34 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
         <translation>Il n&apos;y a aucune variable à coller&#xa0;: copiez des lignes de nom, type, valeur initiale et commentaire, séparés par des tabulations.</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Sortie</translation>
+    </message>
+    <message>
+        <source>Internal</source>
+        <translation>Interne</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>Entrée</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a kind: use %2, %3 or %4.</source>
+        <translation>&apos;%1&apos; n&apos;est pas une nature&#xa0;: utilisez %2, %3 ou %4.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Nature</translation>
+    </message>
+    <message>
+        <source>Input: read from the machine. Output: written by the actions of nested GRAFCETs. Internal: a memory the program writes and reads.</source>
+        <translation>Entrée&#xa0;: lue sur la machine. Sortie&#xa0;: écrite par les actions des GRAFCET imbriqués. Interne&#xa0;: une mémoire que le programme écrit et lit.</translation>
+    </message>
+    <message>
+        <source>Line %1: &apos;%2&apos; is not a kind: use input, output or internal.</source>
+        <translation>Ligne %1&#xa0;: &apos;%2&apos; n&apos;est pas une nature&#xa0;: utilisez entrée, sortie ou interne.</translation>
     </message>
 </context>
 <context>

@@ -733,6 +733,17 @@
     </message>
 </context>
 <context>
+    <name>SetEvolutionRuleCommand</name>
+    <message>
+        <source>Set evolution rule to until stable</source>
+        <translation>Imposta la regola di evoluzione a «fino alla stabilità»</translation>
+    </message>
+    <message>
+        <source>Set evolution rule to one evolution per scan</source>
+        <translation>Imposta la regola di evoluzione a «un&apos;evoluzione per ciclo»</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -831,6 +842,21 @@
     <message>
         <source>Set default of %1</source>
         <translation>Imposta il valore iniziale di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetVariableKindCommand</name>
+    <message>
+        <source>Set kind of %1 to output</source>
+        <translation>Imposta la natura di %1 a uscita</translation>
+    </message>
+    <message>
+        <source>Set kind of %1 to internal</source>
+        <translation>Imposta la natura di %1 a interna</translation>
+    </message>
+    <message>
+        <source>Set kind of %1 to input</source>
+        <translation>Imposta la natura di %1 a ingresso</translation>
     </message>
 </context>
 <context>
@@ -1963,6 +1989,30 @@
         <source>Change model settings</source>
         <translation>Modifica le impostazioni del modello</translation>
     </message>
+    <message>
+        <source>One evolution per scan</source>
+        <translation>Un&apos;evoluzione per ciclo</translation>
+    </message>
+    <message>
+        <source>Until stable</source>
+        <translation>Fino alla stabilità</translation>
+    </message>
+    <message>
+        <source>How a nested GRAFCET evolves in one call of its function block</source>
+        <translation>Come evolve un GRAFCET annidato in una chiamata del suo blocco funzione</translation>
+    </message>
+    <message>
+        <source>&amp;Evolution rule:</source>
+        <translation>Regola di &amp;evoluzione:</translation>
+    </message>
+    <message>
+        <source>Each scan repeats evolutions until no transition can fire (IEC 60848&apos;s search for stability), at most one more than the GRAFCET has transitions; if the last one still fires, the function block reports Unstable.</source>
+        <translation>Ogni ciclo ripete le evoluzioni finché nessuna transizione può scattare (la ricerca della stabilità della IEC 60848), al massimo una in più delle transizioni del GRAFCET; se l&apos;ultima scatta ancora, il blocco funzione segnala Unstable.</translation>
+    </message>
+    <message>
+        <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
+        <translation>Ogni ciclo fa scattare una volta le transizioni abilitate al suo inizio, come fanno i runtime SFC quali CODESYS.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemCounter</name>
@@ -2676,6 +2726,13 @@ Tappa incapsulante: le sue transizioni scattano qualunque cosa stia facendo il c
         <source>%1, hidden</source>
         <translation>%1, nascosta</translation>
     </message>
+    <message numerus="yes">
+        <source>Has a nested GRAFCET (%n steps)</source>
+        <translation>
+            <numerusform>Ha un GRAFCET annidato (%n tappa)</numerusform>
+            <numerusform>Ha un GRAFCET annidato (%n tappe)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::TraceTableModel</name>
@@ -2944,10 +3001,6 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
         <translation>Filtro</translation>
     </message>
     <message>
-        <source>Show only the variables whose name, type, default or comment contains this text</source>
-        <translation>Mostra solo le variabili il cui nome, tipo, valore iniziale o commento contiene questo testo</translation>
-    </message>
-    <message>
         <source>Add</source>
         <translation>Aggiungi</translation>
     </message>
@@ -3023,8 +3076,12 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
         <translation>Copia le variabili selezionate come righe separate da tabulazioni</translation>
     </message>
     <message>
-        <source>Paste rows from a spreadsheet: name, type, default and comment</source>
-        <translation>Incolla righe da un foglio di calcolo: nome, tipo, valore iniziale e commento</translation>
+        <source>Paste rows from a spreadsheet: name, type, default, comment and kind</source>
+        <translation>Incolla righe da un foglio di calcolo: nome, tipo, valore iniziale, commento e natura</translation>
+    </message>
+    <message>
+        <source>Show only the variables whose name, type, kind, default or comment contains this text</source>
+        <translation>Mostra solo le variabili il cui nome, tipo, natura, valore iniziale o commento contiene questo testo</translation>
     </message>
 </context>
 <context>
@@ -3080,6 +3137,34 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>There are no variables to paste: copy rows of name, type, default and comment, separated by tabs.</source>
         <translation>Non ci sono variabili da incollare: copia righe con nome, tipo, valore iniziale e commento, separati da tabulazioni.</translation>
+    </message>
+    <message>
+        <source>Output</source>
+        <translation>Uscita</translation>
+    </message>
+    <message>
+        <source>Internal</source>
+        <translation>Interna</translation>
+    </message>
+    <message>
+        <source>Input</source>
+        <translation>Ingresso</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a kind: use %2, %3 or %4.</source>
+        <translation>&apos;%1&apos; non è una natura: usa %2, %3 o %4.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Natura</translation>
+    </message>
+    <message>
+        <source>Input: read from the machine. Output: written by the actions of nested GRAFCETs. Internal: a memory the program writes and reads.</source>
+        <translation>Ingresso: letto dalla macchina. Uscita: scritta dalle azioni dei GRAFCET annidati. Interna: una memoria che il programma scrive e legge.</translation>
+    </message>
+    <message>
+        <source>Line %1: &apos;%2&apos; is not a kind: use input, output or internal.</source>
+        <translation>Riga %1: &apos;%2&apos; non è una natura: usa ingresso, uscita o interna.</translation>
     </message>
 </context>
 <context>

@@ -28,6 +28,11 @@ ChartScene::ChartScene(Document* document, Selection* selection, QObject* parent
     connect(m_document, &Document::stepChanged, this, &ChartScene::onStepChanged);
     connect(m_document, &Document::transitionChanged, this, &ChartScene::onTransitionChanged);
     connect(m_document, &Document::modelReset, this, &ChartScene::onModelReset);
+    // A nested GRAFCET gained or lost its steps: the step's mark follows.
+    connect(m_document, &Document::grafcetChanged, this, [this](const QString& stepId) {
+        if (StepItem* item = stepItem(stepId))
+            item->refresh();
+    });
     connect(m_document, &Document::diagnosticsChanged, this, &ChartScene::onDiagnosticsChanged);
     connect(m_selection, &Selection::changed, this, &ChartScene::onSelectionChanged);
     connect(m_selection, &Selection::elementsChanged, this, &ChartScene::selectFromSelection);

@@ -31,6 +31,7 @@ inline constexpr double kNegatedBadgePadding = 3; // around a negated transition
 inline constexpr double kFiredWidth = 3.2;     // the route of the transition that fired last (simulation)
 inline constexpr double kTokenRadius = 3.6;    // a token's dot on its transition bar (simulation)
 inline constexpr double kCompleteBadgeSize = 14; // the "C" badge of a nested step (simulation)
+inline constexpr double kNestedMarkSize = 15;    // the GRAFCET mark of a step with a nested GRAFCET
 
 // Stacking: frames at the bottom, then transitions, then steps. A selected
 // element goes below every other transition and step, so that its halo
@@ -52,6 +53,9 @@ inline QColor labelColor() { return QColor(0x1d, 0x2f, 0x4a); }
 inline QColor firedColor() { return QColor(0x1e, 0x9e, 0x3e); }
 inline QColor trueMarkColor() { return QColor(0x1e, 0x9e, 0x3e); }
 inline QColor falseMarkColor() { return QColor(0x9a, 0xa1, 0xab); }
+// The GRAFCET mark of a step with a nested GRAFCET: the label colour, so it
+// reads as part of the drawing rather than as a warning.
+inline QColor nestedMarkColor() { return labelColor(); }
 
 // Soft tints after the classic GEMMA sheet: stops blue, operation green,
 // failures red-orange.

@@ -24,6 +24,7 @@ StepItem::StepItem(const Document& document, const core::StepLayout& layout, QGr
     setFlag(ItemIsSelectable);
     setZValue(chartstyle::kStepZ);
     setAcceptHoverEvents(false);
+    m_nestedSteps = readNestedMark();
 }
 
 QVariant StepItem::itemChange(GraphicsItemChange change, const QVariant& value)
@@ -44,8 +45,20 @@ bool StepItem::isHiddenInModel() const
     return !s || s->hidden;
 }
 
+std::optional<int> StepItem::readNestedMark() const
+{
+    const core::Step* s = step();
+    if (!s || s->type == core::StepType::Simple)
+        return std::nullopt;
+    const core::Grafcet* grafcet = m_document.model().grafcet(m_modelId);
+    if (!grafcet || grafcet->steps().empty())
+        return std::nullopt;
+    return static_cast<int>(grafcet->steps().size());
+}
+
 void StepItem::refresh()
 {
+    m_nestedSteps = readNestedMark();
     update();
 }
 
@@ -93,6 +106,9 @@ QString StepItem::toolTipText() const
     QString text = QStringLiteral("<b>%1</b> %2<br/><i>%3</i>")
                        .arg(m_id, officialStateName(m_id).toHtmlEscaped(), kind.toHtmlEscaped());
     const QString comment = QString::fromStdString(step.comment).trimmed();
+    if (m_nestedSteps)
+        text
+            += QStringLiteral("<br/>") + tr("Has a nested GRAFCET (%n steps)", nullptr, *m_nestedSteps).toHtmlEscaped();
     if (!comment.isEmpty())
         text += QStringLiteral("<br/>") + comment.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br/>"));
     return text;
@@ -100,8 +116,9 @@ QString StepItem::toolTipText() const
 
 QRectF StepItem::boundingRect() const
 {
-    const double margin =
-        std::max({chartstyle::kHaloWidth, chartstyle::kBadgeRadius, chartstyle::kCompleteBadgeSize / 2}) + 1;
+    const double margin = std::max({ chartstyle::kHaloWidth, chartstyle::kBadgeRadius,
+                              chartstyle::kCompleteBadgeSize / 2, chartstyle::kNestedMarkSize / 2 })
+        + 1;
     return m_box.adjusted(-margin, -margin, margin, margin);
 }
 
@@ -125,6 +142,8 @@ void StepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, 
         painter->drawRoundedRect(m_box.adjusted(-gap, -gap, gap, gap), gap, gap);
     }
     paintSymbol(painter, *s);
+    if (m_nestedSteps)
+        paintNestedMark(painter);
     if (m_problem)
         paintBadge(painter);
     if (m_complete)
@@ -187,6 +206,32 @@ void StepItem::paintCompleteBadge(QPainter* painter) const
     painter->setBrush(*m_complete ? chartstyle::trueMarkColor() : chartstyle::falseMarkColor());
     painter->drawRoundedRect(badge, 3, 3);
     chartstyle::drawCentredText(painter, badge, QStringLiteral("C"), chartstyle::kBadgeScale);
+}
+
+// On the top-left corner, clear of the problem badge (top right) and the
+// Complete badge (bottom right): a tab with a tiny GRAFCET, a step above a
+// transition bar with its links.
+void StepItem::paintNestedMark(QPainter* painter) const
+{
+    const double size = chartstyle::kNestedMarkSize;
+    const QRectF tab(m_box.left() - size / 2, m_box.top() - size / 2, size, size);
+    painter->setPen(QPen(Qt::white, 1));
+    painter->setBrush(chartstyle::nestedMarkColor());
+    painter->drawRoundedRect(tab, 3, 3);
+
+    const double unit = size / 15;
+    const QPointF centre = tab.center();
+    QPen glyph(Qt::white, 1.4 * unit);
+    glyph.setCapStyle(Qt::FlatCap);
+    glyph.setJoinStyle(Qt::MiterJoin);
+    painter->setPen(glyph);
+    painter->setBrush(Qt::NoBrush);
+    const QRectF square(centre.x() - 3 * unit, tab.top() + 2.5 * unit, 6 * unit, 5 * unit);
+    painter->drawRect(square);
+    const double barY = square.bottom() + 3 * unit;
+    painter->drawLine(QPointF(centre.x(), square.bottom()), QPointF(centre.x(), tab.bottom() - 1.5 * unit));
+    painter->setPen(QPen(Qt::white, 2 * unit, Qt::SolidLine, Qt::FlatCap));
+    painter->drawLine(QPointF(centre.x() - 3 * unit, barY), QPointF(centre.x() + 3 * unit, barY));
 }
 
 } // namespace editor

@@ -31,7 +31,7 @@ public:
     int type() const override { return Type; }
     const QString& id() const { return m_id; }
 
-    // Repaints with the model as it is now.
+    // Repaints with the model as it is now (its type, its nested GRAFCET).
     void refresh();
     bool isHiddenInModel() const;
     // The official GEMMA name in the UI language, the type and the user's
@@ -53,6 +53,13 @@ public:
     std::optional<bool> completeMark() const { return m_complete; }
     void setCompleteMark(std::optional<bool> complete);
 
+    // A macro-step or an enclosing step whose model has a nested GRAFCET
+    // with steps carries a small GRAFCET mark on its top-left corner (clear
+    // of the problem badge, top right, and the Complete badge, bottom
+    // right); the number of its steps, nullopt for no mark. Read from the
+    // model by refresh().
+    std::optional<int> nestedMark() const { return m_nestedSteps; }
+
     QRectF boundingRect() const override;
     QPainterPath shape() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -66,6 +73,8 @@ private:
     void paintSymbol(QPainter* painter, const core::Step& step) const;
     void paintBadge(QPainter* painter) const;
     void paintCompleteBadge(QPainter* painter) const;
+    void paintNestedMark(QPainter* painter) const;
+    std::optional<int> readNestedMark() const;
 
     const Document& m_document;
     QString m_id;
@@ -74,6 +83,7 @@ private:
     bool m_problem = false;
     bool m_active = false;
     std::optional<bool> m_complete;
+    std::optional<int> m_nestedSteps;
 };
 
 } // namespace editor

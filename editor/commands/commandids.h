@@ -26,6 +26,8 @@ enum CommandId : int {
     SetCycleTimeId, // merges spin box steps
     SetDialectId,
     PasteVariablesId,
+    SetVariableKindId,
+    SetEvolutionRuleId,
 };
 
 } // namespace editor

@@ -6,6 +6,7 @@
 #include "editor/commands/removevariablecommand.h"
 #include "editor/docks/dockreveal.h"
 #include "editor/docks/toolicons.h"
+#include "editor/docks/variablekinddelegate.h"
 #include "editor/docks/variablestablemodel.h"
 #include "editor/docks/variabletypedelegate.h"
 #include "editor/document.h"
@@ -101,6 +102,7 @@ VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* 
     m_view->setObjectName(QStringLiteral("variablesView"));
     m_view->setModel(m_proxy);
     m_view->setItemDelegateForColumn(VariablesTableModel::TypeColumn, new VariableTypeDelegate(m_view));
+    m_view->setItemDelegateForColumn(VariablesTableModel::KindColumn, new VariableKindDelegate(m_view));
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
@@ -114,9 +116,12 @@ VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* 
     header->setHighlightSections(false);
     header->setStretchLastSection(true);
     // Narrow enough that the comment shows in the dock column beside the chart.
-    header->resizeSection(VariablesTableModel::NameColumn, 116);
-    header->resizeSection(VariablesTableModel::TypeColumn, 60);
-    header->resizeSection(VariablesTableModel::DefaultColumn, 60);
+    // Names such as EmergencyOk, types such as LREAL and kinds such as
+    // Internal still show whole.
+    header->resizeSection(VariablesTableModel::NameColumn, 96);
+    header->resizeSection(VariablesTableModel::TypeColumn, 46);
+    header->resizeSection(VariablesTableModel::KindColumn, 58);
+    header->resizeSection(VariablesTableModel::DefaultColumn, 52);
     m_view->installEventFilter(this);
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);
     const auto separator = [this]() {
@@ -193,15 +198,16 @@ void VariablesDock::retranslate()
     name(m_downAction, tr("Move Down"), tr("Move the current variable down (declaration order)"));
     name(m_sortAction, tr("Sort by Name"), tr("Sort the declarations by name (one undo step)"));
     name(m_copyAction, tr("Copy"), tr("Copy the selected variables as tab-separated rows"));
-    name(m_pasteAction, tr("Paste"), tr("Paste rows from a spreadsheet: name, type, default and comment"));
+    name(m_pasteAction, tr("Paste"), tr("Paste rows from a spreadsheet: name, type, default, comment and kind"));
     m_filterEdit->setPlaceholderText(tr("Filter"));
-    m_filterEdit->setToolTip(tr("Show only the variables whose name, type, default or comment contains this text"));
+    m_filterEdit->setToolTip(
+        tr("Show only the variables whose name, type, kind, default or comment contains this text"));
     m_model->retranslate();
     // A header may be longer in this language than the column is wide:
     // widen it, never narrow what the user chose.
     QHeaderView* header = m_view->horizontalHeader();
-    for (int column : {VariablesTableModel::NameColumn, VariablesTableModel::TypeColumn,
-                       VariablesTableModel::DefaultColumn})
+    for (int column : { VariablesTableModel::NameColumn, VariablesTableModel::TypeColumn,
+             VariablesTableModel::KindColumn, VariablesTableModel::DefaultColumn })
         header->resizeSection(column, std::max(header->sectionSize(column), header->sectionSizeHint(column)));
 }
 

@@ -3,6 +3,7 @@
 #include "editor/commands/renamevariablecommand.h"
 #include "editor/commands/setvariablecommentcommand.h"
 #include "editor/commands/setvariabledefaultcommand.h"
+#include "editor/commands/setvariablekindcommand.h"
 #include "editor/commands/setvariabletypecommand.h"
 #include "editor/diagnostictext.h"
 #include "editor/document.h"
@@ -31,6 +32,8 @@ QString fieldOfColumn(int column)
         return QStringLiteral("name");
     case VariablesTableModel::TypeColumn:
         return QStringLiteral("type");
+    case VariablesTableModel::KindColumn:
+        return QStringLiteral("kind");
     case VariablesTableModel::DefaultColumn:
         return QStringLiteral("default");
     case VariablesTableModel::CommentColumn:
@@ -57,6 +60,14 @@ QString cellText(const std::string& text)
             c = u' ';
     }
     return cell;
+}
+
+constexpr core::VariableKind kKinds[]
+    = { core::VariableKind::Input, core::VariableKind::Output, core::VariableKind::Internal };
+
+QString kindFileName(core::VariableKind kind)
+{
+    return fromStd(std::string(core::variableKindName(kind)));
 }
 
 } // namespace
@@ -102,6 +113,30 @@ int VariablesTableModel::rowOf(const QString& name) const
     return index < m_rowCount ? index : -1;
 }
 
+QString VariablesTableModel::kindText(core::VariableKind kind)
+{
+    switch (kind) {
+    case core::VariableKind::Output:
+        return tr("Output");
+    case core::VariableKind::Internal:
+        return tr("Internal");
+    case core::VariableKind::Input:
+        break;
+    }
+    return tr("Input");
+}
+
+std::optional<core::VariableKind> VariablesTableModel::parseKind(const QString& text)
+{
+    const QString trimmed = text.trimmed();
+    for (core::VariableKind kind : kKinds) {
+        if (trimmed.compare(kindFileName(kind), Qt::CaseInsensitive) == 0
+            || trimmed.compare(kindText(kind), Qt::CaseInsensitive) == 0)
+            return kind;
+    }
+    return std::nullopt;
+}
+
 int VariablesTableModel::columnOfField(const QString& field)
 {
     for (int column = 0; column < ColumnCount; ++column) {
@@ -134,6 +169,8 @@ QVariant VariablesTableModel::data(const QModelIndex& index, int role) const
     case Qt::EditRole:
         if (column == TypeColumn)
             return fromStd(std::string(core::iecTypeName(variable->type)));
+        if (column == KindColumn)
+            return kindFileName(variable->kind);
         if (column == DefaultColumn)
             return fromStd(variable->defaultValue);
         return displayData(*variable, column);
@@ -166,6 +203,8 @@ QVariant VariablesTableModel::displayData(const core::Variable& variable, int co
         return fromStd(variable.name);
     case TypeColumn:
         return fromStd(std::string(core::iecTypeName(variable.type)));
+    case KindColumn:
+        return kindText(variable.kind);
     case DefaultColumn:
         // An empty default shows what the PLC starts with, greyed.
         return variable.defaultValue.empty() ? fromStd(std::string(core::implicitDefault(variable.type)))
@@ -217,6 +256,19 @@ bool VariablesTableModel::setData(const QModelIndex& index, const QVariant& valu
         }
         return pushEdit(index, new SetVariableTypeCommand(*m_document, name, *type));
     }
+    case KindColumn: {
+        const std::optional<core::VariableKind> kind = parseKind(text);
+        if (!kind) {
+            emit editRefused(index,
+                tr("'%1' is not a kind: use %2, %3 or %4.")
+                    .arg(text, kindText(core::VariableKind::Input), kindText(core::VariableKind::Output),
+                        kindText(core::VariableKind::Internal)));
+            return false;
+        }
+        if (*kind == variable->kind)
+            return true;
+        return pushEdit(index, new SetVariableKindCommand(*m_document, name, *kind));
+    }
     case DefaultColumn:
         return pushEdit(index, new SetVariableDefaultCommand(*m_document, name, text.trimmed()));
     case CommentColumn:
@@ -249,7 +301,7 @@ void VariablesTableModel::retranslate()
 {
     emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
     if (rowCount() > 0)
-        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), {Qt::ToolTipRole});
+        emit dataChanged(index(0, 0), index(rowCount() - 1, ColumnCount - 1), { Qt::DisplayRole, Qt::ToolTipRole });
 }
 
 QVariant VariablesTableModel::headerData(int section, Qt::Orientation orientation, int role) const
@@ -262,6 +314,8 @@ QVariant VariablesTableModel::headerData(int section, Qt::Orientation orientatio
             return tr("Name");
         case TypeColumn:
             return tr("Type");
+        case KindColumn:
+            return tr("Kind");
         case DefaultColumn:
             return tr("Default");
         case CommentColumn:
@@ -276,6 +330,9 @@ QVariant VariablesTableModel::headerData(int section, Qt::Orientation orientatio
             return tr("IEC 61131-3 identifier, unique ignoring case. Renaming updates every condition.");
         case TypeColumn:
             return tr("Elementary IEC 61131-3 type");
+        case KindColumn:
+            return tr("Input: read from the machine. Output: written by the actions of nested GRAFCETs. Internal: a "
+                      "memory the program writes and reads.");
         case DefaultColumn:
             return tr("Initial value, a literal of the type; empty for the type's implicit default");
         case CommentColumn:
@@ -320,6 +377,7 @@ bool VariablesTableModel::parseRows(const QString& text, std::vector<core::Varia
     variables->clear();
     const QStringList lines = text.split(QLatin1Char('\n'));
     bool first = true;
+    bool kindDeclared = false; // the header names the fifth column "Kind"
     for (qsizetype i = 0; i < lines.size(); ++i) {
         QString line = lines[i];
         if (line.endsWith(QLatin1Char('\r')))
@@ -332,8 +390,12 @@ bool VariablesTableModel::parseRows(const QString& text, std::vector<core::Varia
             && (name.compare(QLatin1String("Name"), Qt::CaseInsensitive) == 0
                 || name.compare(tr("Name"), Qt::CaseInsensitive) == 0);
         first = false;
-        if (header)
+        if (header) {
+            const QString kindHeader = cells.value(4).trimmed();
+            kindDeclared = kindHeader.compare(QLatin1String("Kind"), Qt::CaseInsensitive) == 0
+                || kindHeader.compare(tr("Kind"), Qt::CaseInsensitive) == 0;
             continue;
+        }
         const int lineNumber = static_cast<int>(i) + 1;
         if (name.isEmpty()) {
             *error = tr("Line %1: the name is empty.").arg(lineNumber);
@@ -353,8 +415,22 @@ bool VariablesTableModel::parseRows(const QString& text, std::vector<core::Varia
             variable.type = *type;
         }
         variable.defaultValue = cells.value(2).trimmed().toStdString();
-        // Cells beyond the comment are ignored: spreadsheets often add some.
         variable.comment = cells.value(3).trimmed().toStdString();
+        // The kind comes after the comment, so that rows without one still
+        // read. Without a header saying "Kind", a fifth cell that names no
+        // kind is one of the spreadsheet's own.
+        const QString kindName = cells.value(4).trimmed();
+        if (!kindName.isEmpty()) {
+            const std::optional<core::VariableKind> kind = parseKind(kindName);
+            if (kind) {
+                variable.kind = *kind;
+            } else if (kindDeclared) {
+                *error
+                    = tr("Line %1: '%2' is not a kind: use input, output or internal.").arg(lineNumber).arg(kindName);
+                return false;
+            }
+        }
+        // Cells beyond these are ignored: spreadsheets often add some.
         variables->push_back(std::move(variable));
     }
     if (variables->empty()) {
@@ -367,11 +443,11 @@ bool VariablesTableModel::parseRows(const QString& text, std::vector<core::Varia
 
 QString VariablesTableModel::formatRows(const std::vector<core::Variable>& variables)
 {
-    QString text = QStringLiteral("Name\tType\tDefault\tComment\n");
+    QString text = QStringLiteral("Name\tType\tDefault\tComment\tKind\n");
     for (const core::Variable& variable : variables) {
         text += cellText(variable.name) + QLatin1Char('\t') + fromStd(std::string(core::iecTypeName(variable.type)))
             + QLatin1Char('\t') + cellText(variable.defaultValue) + QLatin1Char('\t') + cellText(variable.comment)
-            + QLatin1Char('\n');
+            + QLatin1Char('\t') + kindFileName(variable.kind) + QLatin1Char('\n');
     }
     return text;
 }

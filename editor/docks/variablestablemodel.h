@@ -5,6 +5,7 @@
 
 #include <QAbstractTableModel>
 
+#include <optional>
 #include <vector>
 
 class QUndoCommand;
@@ -13,7 +14,7 @@ namespace editor {
 
 class Document;
 
-// The Document's variables as a table (name, type, default, comment).
+// The Document's variables as a table (name, type, kind, default, comment).
 // Editing a cell pushes the matching command: renaming rewrites every
 // condition that uses the variable. Cells the checks object to are red,
 // with the problem as tooltip. A refused edit (a duplicate name) leaves the
@@ -22,7 +23,7 @@ class VariablesTableModel : public QAbstractTableModel {
     Q_OBJECT
 
 public:
-    enum Column { NameColumn, TypeColumn, DefaultColumn, CommentColumn, ColumnCount };
+    enum Column { NameColumn, TypeColumn, KindColumn, DefaultColumn, CommentColumn, ColumnCount };
 
     explicit VariablesTableModel(Document* document, QObject* parent = nullptr);
 
@@ -38,13 +39,19 @@ public:
     QString variableName(int row) const;
     int rowOf(const QString& name) const; // case-insensitive; -1 when absent
 
+    // "Input", "Output", "Internal" in the UI language: what the Kind column shows.
+    static QString kindText(core::VariableKind kind);
+    // A kind by its file name ("output") or its kindText(), ignoring case.
+    static std::optional<core::VariableKind> parseKind(const QString& text);
+
     // The column of a diagnostic field ("name", "default"...); -1 for none.
     static int columnOfField(const QString& field);
 
     // Rows copied from a spreadsheet, one variable a line:
-    // name[TAB]type[TAB]default[TAB]comment. A first line whose first cell
-    // says "Name" is a header; blank lines are skipped; a missing type is
-    // BOOL. False with a message naming the line on bad input.
+    // name[TAB]type[TAB]default[TAB]comment[TAB]kind. A first line whose
+    // first cell says "Name" is a header; blank lines are skipped; a missing
+    // type is BOOL, a missing kind input. A fifth cell that names no kind
+    // is ignored unless the header calls that column "Kind". False with a message naming the line on bad input.
     static bool parseRows(const QString& text, std::vector<core::Variable>* variables, QString* error);
     // The same format, header line included, for the clipboard.
     static QString formatRows(const std::vector<core::Variable>& variables);

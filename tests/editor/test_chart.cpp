@@ -81,6 +81,7 @@ private slots:
     void undeclaredVariableMarksTheTransition();
     void hiddenInitialStepIsMarked();
     void stepTypeChangeRepaintsOnlyThatStep();
+    void stepWithANestedGrafcetIsMarked();
     void activeStepIsMarked();
     void zoomSlots();
     void ctrlWheelZoomsAboutTheMouse();
@@ -457,6 +458,51 @@ void TestChart::hiddenInitialStepIsMarked()
     QVERIFY(m_scene->stepItem("A6")->hasProblemMark());
     m_document->undoStack()->undo();
     QVERIFY(!m_scene->stepItem("A6")->hasProblemMark());
+}
+
+void TestChart::stepWithANestedGrafcetIsMarked()
+{
+    StepItem* f1 = m_scene->stepItem(QStringLiteral("F1")); // a macro-step of the template
+    StepItem* f2 = m_scene->stepItem(QStringLiteral("F2"));
+    QVERIFY(f1 && f2);
+    QCOMPARE(f1->nestedMark(), std::nullopt);
+
+    core::Model& model = m_document->modelForCommands();
+    QVERIFY(model.addGrafcetStep("F1", core::GrafcetStep{1, true, {}, {}}).ok);
+    QVERIFY(model.addGrafcetStep("F1", core::GrafcetStep{2, false, {}, {}}).ok);
+    QCOMPARE(f1->nestedMark(), std::optional<int>(2));
+    QVERIFY(f1->toolTipText().contains(QStringLiteral("Has a nested GRAFCET (2 steps)")));
+    QCOMPARE(f2->nestedMark(), std::nullopt); // a macro-step without one
+    QVERIFY(!f2->toolTipText().contains(QStringLiteral("nested GRAFCET")));
+
+    // Drawn on the top-left corner, in its own colour.
+    const QRectF corner = f1->mapRectToScene(QRectF(-4, -4, 4, 4));
+    QImage image(40, 40, QImage::Format_ARGB32);
+    const auto markPixels = [&]() {
+        image.fill(Qt::transparent);
+        QPainter painter(&image);
+        m_scene->render(&painter, QRectF(0, 0, 40, 40), corner.adjusted(-8, -8, 8, 8));
+        painter.end();
+        int count = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x)
+                count += QColor(image.pixel(x, y)) == chartstyle::nestedMarkColor() ? 1 : 0;
+        }
+        return count;
+    };
+    QVERIFY(markPixels() > 20);
+
+    // A simple step runs no GRAFCET: no mark, until the type comes back.
+    QVERIFY(m_document->push(new SetStepTypeCommand(*m_document, QStringLiteral("F1"), core::StepType::Simple)));
+    QCOMPARE(f1->nestedMark(), std::nullopt);
+    QCOMPARE(markPixels(), 0);
+    m_document->undoStack()->undo();
+    QCOMPARE(f1->nestedMark(), std::optional<int>(2));
+    QVERIFY(markPixels() > 20);
+
+    // The GRAFCET itself removed: the mark goes.
+    QVERIFY(model.removeGrafcet("F1").ok);
+    QCOMPARE(f1->nestedMark(), std::nullopt);
 }
 
 void TestChart::stepTypeChangeRepaintsOnlyThatStep()

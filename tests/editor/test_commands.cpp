@@ -10,6 +10,7 @@
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setcycletimecommand.h"
 #include "editor/commands/setdialectcommand.h"
+#include "editor/commands/setevolutionrulecommand.h"
 #include "editor/commands/setinitialstepcommand.h"
 #include "editor/commands/setmodelnamecommand.h"
 #include "editor/commands/setnegatedcommand.h"
@@ -21,6 +22,7 @@
 #include "editor/commands/settransitionhiddencommand.h"
 #include "editor/commands/setvariablecommentcommand.h"
 #include "editor/commands/setvariabledefaultcommand.h"
+#include "editor/commands/setvariablekindcommand.h"
 #include "editor/commands/setvariabletypecommand.h"
 #include "editor/document.h"
 
@@ -97,10 +99,12 @@ private slots:
     void removeVariableRestoresPosition();
     void renameVariableUndoRestoresExactTexts();
     void setVariableType();
+    void setVariableKind();
     void setVariableDefaultAndCommentMerge();
     void moveVariable();
     void resetModel();
     void settings();
+    void setEvolutionRule();
     void pasteVariables();
 };
 
@@ -450,6 +454,30 @@ void TestCommands::setVariableType()
     QCOMPARE(document.model().variable("Speed")->type, core::IecType::Bool);
 }
 
+void TestCommands::setVariableKind()
+{
+    Document document;
+    addVariables(document, {"Valve", "Count"});
+    QSignalSpy changed(&document, &Document::variableChanged);
+    QVERIFY(document.push(new SetVariableKindCommand(document, "valve", core::VariableKind::Output)));
+    QCOMPARE(document.undoStack()->undoText(), QString("Set kind of valve to output"));
+    QCOMPARE(document.model().variable("Valve")->kind, core::VariableKind::Output);
+    QCOMPARE(ids(changed), QStringList{"Valve"});
+    QVERIFY(document.push(new SetVariableKindCommand(document, "Count", core::VariableKind::Internal)));
+    QCOMPARE(document.undoStack()->undoText(), QString("Set kind of Count to internal"));
+    QCOMPARE(document.undoStack()->count(), 2); // no merging: each is its own step
+
+    document.undoStack()->undo();
+    QCOMPARE(document.model().variable("Count")->kind, core::VariableKind::Input);
+    document.undoStack()->undo();
+    QCOMPARE(document.model().variable("Valve")->kind, core::VariableKind::Input);
+
+    // The same kind again changes nothing and is dropped; an unknown name fails.
+    QVERIFY(document.push(new SetVariableKindCommand(document, "Valve", core::VariableKind::Input)));
+    QCOMPARE(document.undoStack()->index(), 0);
+    QVERIFY(!document.push(new SetVariableKindCommand(document, "Nothing", core::VariableKind::Output)));
+}
+
 void TestCommands::setVariableDefaultAndCommentMerge()
 {
     Document document;
@@ -533,6 +561,22 @@ void TestCommands::settings()
     document.undoStack()->undo();
     document.undoStack()->undo();
     QVERIFY(document.model().settings() == core::ModelSettings());
+}
+
+void TestCommands::setEvolutionRule()
+{
+    Document document;
+    QSignalSpy changed(&document, &Document::settingsChanged);
+    QVERIFY(document.push(new SetEvolutionRuleCommand(document, core::EvolutionRule::UntilStable)));
+    QCOMPARE(document.undoStack()->undoText(), QString("Set evolution rule to until stable"));
+    QCOMPARE(document.model().settings().evolution, core::EvolutionRule::UntilStable);
+    QCOMPARE(changed.count(), 1);
+    document.undoStack()->undo();
+    QCOMPARE(document.model().settings().evolution, core::EvolutionRule::OneEvolutionPerScan);
+    QVERIFY(document.model().settings() == core::ModelSettings());
+    document.undoStack()->redo();
+    QVERIFY(document.push(new SetEvolutionRuleCommand(document, core::EvolutionRule::OneEvolutionPerScan)));
+    QCOMPARE(document.undoStack()->undoText(), QString("Set evolution rule to one evolution per scan"));
 }
 
 void TestCommands::pasteVariables()

@@ -38,6 +38,7 @@
 #include <QHeaderView>
 #include <QHelpEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QScrollBar>
 #include <QSignalSpy>
@@ -118,6 +119,7 @@ private slots:
     void familyTransitionHeader();
     void variablesModelRenameRewritesConditions();
     void variablesModelRefusesDuplicateName();
+    void variablesKindColumnEditsTheKind();
     void variablesModelRefusesInvalidNameKeepingConditions();
     void variablesMessageGoesAtTheNextEdit();
     void invalidDefaultIsRedWithTooltip();
@@ -530,6 +532,82 @@ void TestDocks::variablesModelRenameRewritesConditions()
     QCOMPARE(document.model().variables().front().comment, std::string("Stop button"));
 }
 
+void TestDocks::variablesKindColumnEditsTheKind()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Valve");
+    declare(document, "Start");
+    document.undoStack()->clear();
+    VariablesDock dock(&document, &selection);
+    QTableView* view = dock.view();
+    QAbstractItemModel* shown = view->model();
+    QCOMPARE(shown->headerData(VariablesTableModel::KindColumn, Qt::Horizontal).toString(), QString("Kind"));
+    QCOMPARE(shown->headerData(VariablesTableModel::TypeColumn + 1, Qt::Horizontal).toString(), QString("Kind"));
+    const QModelIndex valveKind = shown->index(0, VariablesTableModel::KindColumn);
+    QCOMPARE(valveKind.data().toString(), QString("Input"));
+    // Narrow, for the dock column beside the chart.
+    QVERIFY(view->horizontalHeader()->sectionSize(VariablesTableModel::KindColumn) <= 80);
+
+    // The delegate's combo box commits the choice at once, as one command.
+    view->setCurrentIndex(valveKind);
+    view->edit(valveKind);
+    auto* combo = view->findChild<QComboBox*>("kindCombo");
+    QVERIFY(combo);
+    QCOMPARE(combo->count(), 3);
+    QCOMPARE(combo->currentText(), QString("Input"));
+    QCOMPARE(combo->itemText(1), QString("Output"));
+    combo->setCurrentIndex(combo->findData(QString("output")));
+    emit combo->activated(combo->currentIndex());
+    QCOMPARE(document.model().variable("Valve")->kind, core::VariableKind::Output);
+    QCOMPARE(document.undoStack()->count(), 1);
+    QCOMPARE(document.undoStack()->undoText(), QString("Set kind of Valve to output"));
+    QCOMPARE(valveKind.data().toString(), QString("Output"));
+    document.undoStack()->undo();
+    QCOMPARE(document.model().variable("Valve")->kind, core::VariableKind::Input);
+    QCOMPARE(valveKind.data().toString(), QString("Input"));
+    document.undoStack()->redo();
+
+    // Typed names: the file's and the shown one; anything else is refused.
+    VariablesTableModel* model = dock.tableModel();
+    QVERIFY(model->setData(model->index(1, VariablesTableModel::KindColumn), "internal"));
+    QCOMPARE(document.model().variable("Start")->kind, core::VariableKind::Internal);
+    QVERIFY(model->setData(model->index(1, VariablesTableModel::KindColumn), "Input"));
+    QCOMPARE(document.model().variable("Start")->kind, core::VariableKind::Input);
+    QVERIFY(!model->setData(model->index(1, VariablesTableModel::KindColumn), "sensor"));
+    QCOMPARE(document.undoStack()->count(), 3);
+
+    // The filter matches the shown kind.
+    auto* filter = child<QLineEdit>(&dock, "filterEdit");
+    filter->setText("outp");
+    QCOMPARE(shown->rowCount(), 1);
+    QCOMPARE(shown->index(0, VariablesTableModel::NameColumn).data().toString(), QString("Valve"));
+    filter->clear();
+
+    // Copy and paste carry the kind; rows without one are inputs.
+    view->selectAll();
+    QCOMPARE(dock.copiedText(), QString("Name\tType\tDefault\tComment\tKind\nValve\tBOOL\t\t\toutput\n"
+                                        "Start\tBOOL\t\t\tinput\n"));
+    std::vector<core::Variable> rows;
+    QString error;
+    QVERIFY(VariablesTableModel::parseRows("A\tBOOL\t\t\tOutput\nB\tINT\t\t\tinternal\nC\tBOOL", &rows, &error));
+    QCOMPARE(rows.size(), std::size_t(3));
+    QCOMPARE(rows[0].kind, core::VariableKind::Output);
+    QCOMPARE(rows[1].kind, core::VariableKind::Internal);
+    QCOMPARE(rows[2].kind, core::VariableKind::Input);
+    QVERIFY(!VariablesTableModel::parseRows("Name\tType\tDefault\tComment\tKind\nA\tBOOL\t\t\tsensor", &rows, &error));
+    QVERIFY2(error.startsWith("Line 2: 'sensor' is not a kind"), qPrintable(error));
+
+    // In the UI language.
+    Translators translators;
+    QVERIFY(translators.setLanguage("fr"));
+    QCOMPARE(valveKind.data().toString(), QString("Sortie"));
+    QCOMPARE(shown->headerData(VariablesTableModel::KindColumn, Qt::Horizontal).toString(), QString("Nature"));
+    QVERIFY(model->setData(model->index(1, VariablesTableModel::KindColumn), QString("Interne")));
+    QCOMPARE(document.model().variable("Start")->kind, core::VariableKind::Internal);
+    QVERIFY(translators.setLanguage("en"));
+}
+
 void TestDocks::variablesModelRefusesDuplicateName()
 {
     Document document;
@@ -669,7 +747,7 @@ void TestDocks::pasteAddsVariablesInOneUndoStep()
     // Copy gives the same format back.
     QVERIFY(dock.pasteVariables("A\tBOOL\t\tcomment\n"));
     dock.view()->selectAll();
-    QCOMPARE(dock.copiedText(), QString("Name\tType\tDefault\tComment\nA\tBOOL\t\tcomment\n"));
+    QCOMPARE(dock.copiedText(), QString("Name\tType\tDefault\tComment\tKind\nA\tBOOL\t\tcomment\tinput\n"));
 }
 
 void TestDocks::pasteRejectsBadRows()

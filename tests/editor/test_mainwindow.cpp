@@ -285,6 +285,7 @@ private slots:
     void autosaveNeverReplacesAFifo();
     void unsavedChangesAskBeforeOpening();
     void modelSettingsAreOneUndoStep();
+    void modelSettingsOfferTheEvolutionRule();
     void layoutIsRestored();
     void deferredDocksFillInAfterTheFirstFrame();
     void deferredDocksKeepTheSavedLayout();
@@ -1126,6 +1127,36 @@ void TestMainWindow::modelSettingsAreOneUndoStep()
     QVERIFY(document.model().sameContent(core::Model()));
     // Defaults for new models change only when asked.
     QCOMPARE(settings.defaultCycleTimeMs(), core::Model().settings().cycleTimeMs);
+}
+
+void TestMainWindow::modelSettingsOfferTheEvolutionRule()
+{
+    Document& document = *m_window->document();
+    Settings settings;
+    ModelSettingsDialog dialog(document, settings, m_window.get());
+    auto* rule = dialog.findChild<QComboBox*>(QStringLiteral("evolutionCombo"));
+    auto* description = dialog.findChild<QLabel*>(QStringLiteral("evolutionDescription"));
+    QVERIFY(rule && description);
+    QCOMPARE(rule->currentData().toInt(), static_cast<int>(core::EvolutionRule::OneEvolutionPerScan));
+    QCOMPARE(description->text(),
+        ModelSettingsDialog::evolutionRuleDescription(core::EvolutionRule::OneEvolutionPerScan));
+    // The sentence follows the choice before anything is applied.
+    rule->setCurrentIndex(rule->findData(static_cast<int>(core::EvolutionRule::UntilStable)));
+    QCOMPARE(description->text(), ModelSettingsDialog::evolutionRuleDescription(core::EvolutionRule::UntilStable));
+    QCOMPARE(document.model().settings().evolution, core::EvolutionRule::OneEvolutionPerScan);
+    dialog.accept();
+
+    QCOMPARE(document.model().settings().evolution, core::EvolutionRule::UntilStable);
+    QCOMPARE(document.undoStack()->count(), 1);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Set evolution rule to until stable"));
+    document.undoStack()->undo();
+    QCOMPARE(document.model().settings().evolution, core::EvolutionRule::OneEvolutionPerScan);
+
+    // A dialog opened on the new rule starts on it.
+    document.undoStack()->redo();
+    ModelSettingsDialog again(document, settings, m_window.get());
+    QCOMPARE(again.findChild<QComboBox*>(QStringLiteral("evolutionCombo"))->currentData().toInt(),
+        static_cast<int>(core::EvolutionRule::UntilStable));
 }
 
 void TestMainWindow::layoutIsRestored()
