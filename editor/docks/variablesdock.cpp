@@ -4,11 +4,10 @@
 #include "editor/commands/movevariablecommand.h"
 #include "editor/commands/pastevariablescommand.h"
 #include "editor/commands/removevariablecommand.h"
+#include "editor/docks/choicedelegate.h"
 #include "editor/docks/dockreveal.h"
 #include "editor/docks/toolicons.h"
-#include "editor/docks/variablekinddelegate.h"
 #include "editor/docks/variablestablemodel.h"
-#include "editor/docks/variabletypedelegate.h"
 #include "editor/document.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
@@ -39,6 +38,29 @@
 namespace editor {
 
 namespace {
+
+QString fromView(std::string_view text)
+{
+    return QString::fromLatin1(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+// The IEC types, as written in the code.
+QList<ChoiceDelegate::Choice> typeChoices()
+{
+    QList<ChoiceDelegate::Choice> choices;
+    for (core::IecType type : core::allIecTypes())
+        choices.push_back({fromView(core::iecTypeName(type)), fromView(core::iecTypeName(type))});
+    return choices;
+}
+
+// The kinds in the UI language, with their file names as values.
+QList<ChoiceDelegate::Choice> kindChoices()
+{
+    QList<ChoiceDelegate::Choice> choices;
+    for (core::VariableKind kind : {core::VariableKind::Input, core::VariableKind::Output, core::VariableKind::Internal})
+        choices.push_back({VariablesTableModel::kindText(kind), fromView(core::variableKindName(kind))});
+    return choices;
+}
 
 QString fromStd(const std::string& text)
 {
@@ -101,8 +123,10 @@ VariablesDock::VariablesDock(Document* document, Selection* selection, QWidget* 
     m_view->setParent(content);
     m_view->setObjectName(QStringLiteral("variablesView"));
     m_view->setModel(m_proxy);
-    m_view->setItemDelegateForColumn(VariablesTableModel::TypeColumn, new VariableTypeDelegate(m_view));
-    m_view->setItemDelegateForColumn(VariablesTableModel::KindColumn, new VariableKindDelegate(m_view));
+    m_view->setItemDelegateForColumn(VariablesTableModel::TypeColumn,
+                                     new ChoiceDelegate(&typeChoices, QStringLiteral("typeCombo"), m_view));
+    m_view->setItemDelegateForColumn(VariablesTableModel::KindColumn,
+                                     new ChoiceDelegate(&kindChoices, QStringLiteral("kindCombo"), m_view));
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
