@@ -117,6 +117,13 @@
             <numerusform>%n infos</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Nested GRAFCET of %1: %n problems</source>
+        <translation>
+            <numerusform>Nested GRAFCET of %1: %n problem</numerusform>
+            <numerusform>Nested GRAFCET of %1: %n problems</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::StepItem</name>

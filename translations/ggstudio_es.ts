@@ -2151,6 +2151,22 @@
         <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
         <translation>%1 T%2</translation>
     </message>
+    <message>
+        <source>%1 GRAFCET</source>
+        <extracomment>The row that holds the problems of a GEMMA step&apos;s nested GRAFCET: &quot;F1 GRAFCET&quot;</extracomment>
+        <translation>GRAFCET de %1</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1: 1 problem</source>
+        <translation>GRAFCET anidado de %1: 1 problema</translation>
+    </message>
+    <message numerus="yes">
+        <source>Nested GRAFCET of %1: %n problems</source>
+        <translation>
+            <numerusform>GRAFCET anidado de %1: %n problema</numerusform>
+            <numerusform>GRAFCET anidado de %1: %n problemas</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::RecentFiles</name>

@@ -20,6 +20,7 @@
 #include <QTabWidget>
 #include <QToolButton>
 #include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -33,7 +34,8 @@ enum Role {
     KindRole,
     IdRole,
     FieldRole,
-    KeyRole, // identifies the problem across refreshes
+    KeyRole,   // identifies the problem across refreshes
+    GroupRole, // on the row of a nested GRAFCET's problems: its GEMMA step id
 };
 
 QString fromStd(const std::string& text)
@@ -128,7 +130,14 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
     m_view->setParent(content);
     m_view->setObjectName(QStringLiteral("problemsView"));
     m_view->setColumnCount(3);
-    m_view->setRootIsDecorated(false);
+    // Decorated: the problems of a nested GRAFCET open and close under its row.
+    m_view->setRootIsDecorated(true);
+    connect(m_view, &QTreeWidget::itemCollapsed, this, [this](QTreeWidgetItem* item) {
+        m_collapsedGroups.insert(item->data(0, GroupRole).toString());
+    });
+    connect(m_view, &QTreeWidget::itemExpanded, this, [this](QTreeWidgetItem* item) {
+        m_collapsedGroups.remove(item->data(0, GroupRole).toString());
+    });
     // The messages wrap: in the dock column beside the chart a message is
     // wider than its column, and a cut message says too little.
     new WrappingItemDelegate(m_view, MessageColumn);
@@ -215,7 +224,8 @@ void ProblemsDock::refresh()
     const int scroll = m_view->verticalScrollBar()->value();
 
     m_view->clear();
-    QList<QTreeWidgetItem*> items;
+    QList<QTreeWidgetItem*> topLevel;
+    QHash<QString, QTreeWidgetItem*> groups;
     QTreeWidgetItem* newCurrent = nullptr;
     for (const core::Diagnostic& diagnostic : m_document->diagnostics()) {
         const QString message = diagnosticText(diagnostic);
@@ -230,14 +240,60 @@ void ProblemsDock::refresh()
         item->setData(0, KeyRole, keyOf(diagnostic));
         if (!newCurrent && !currentKey.isEmpty() && item->data(0, KeyRole).toString() == currentKey)
             newCurrent = item;
-        items << item;
+        const bool nested = diagnostic.target == core::Diagnostic::Target::GrafcetStep
+                         || diagnostic.target == core::Diagnostic::Target::GrafcetTransition;
+        if (nested)
+            grafcetGroup(fromStd(diagnostic.element), topLevel, groups)->addChild(item);
+        else
+            topLevel << item;
     }
-    m_view->addTopLevelItems(items);
+    m_view->addTopLevelItems(topLevel);
+    for (auto it = groups.cbegin(); it != groups.cend(); ++it)
+        it.value()->setExpanded(!m_collapsedGroups.contains(it.key()));
+    updateGroupTexts();
     if (newCurrent)
         m_view->setCurrentItem(newCurrent);
     applyFilter();
     updateFilterButtons();
     m_view->verticalScrollBar()->setValue(scroll);
+}
+
+QTreeWidgetItem* ProblemsDock::grafcetGroup(const QString& stepId, QList<QTreeWidgetItem*>& topLevel,
+                                            QHash<QString, QTreeWidgetItem*>& groups) const
+{
+    QTreeWidgetItem*& group = groups[stepId];
+    if (!group) {
+        group = new QTreeWidgetItem;
+        group->setData(0, GroupRole, stepId);
+        // Activating the group selects its GEMMA step.
+        group->setData(0, KindRole, static_cast<int>(ElementRef::Kind::Step));
+        group->setData(0, IdRole, stepId);
+        group->setData(0, KeyRole, QStringLiteral("group|") + stepId);
+        topLevel << group;
+    }
+    return group;
+}
+
+// "F1 GRAFCET: 3 problems", with the worst severity's icon.
+void ProblemsDock::updateGroupTexts()
+{
+    for (int i = 0; i < m_view->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* group = m_view->topLevelItem(i);
+        const QString stepId = group->data(0, GroupRole).toString();
+        if (stepId.isEmpty())
+            continue;
+        auto worst = core::Severity::Info;
+        for (int c = 0; c < group->childCount(); ++c)
+            worst = std::min(worst, static_cast<core::Severity>(group->child(c)->data(0, SeverityRole).toInt()));
+        group->setData(0, SeverityRole, static_cast<int>(worst));
+        group->setIcon(CodeColumn, severityIcon(worst));
+        //: The row that holds the problems of a GEMMA step's nested GRAFCET: "F1 GRAFCET"
+        group->setText(ElementColumn, tr("%1 GRAFCET").arg(stepId));
+        // A singular text of its own, as the filter buttons: English has no "%n" form for one.
+        const int count = group->childCount();
+        group->setText(MessageColumn, count == 1 ? tr("Nested GRAFCET of %1: 1 problem").arg(stepId)
+                                                 : tr("Nested GRAFCET of %1: %n problems", nullptr, count).arg(stepId));
+    }
 }
 
 void ProblemsDock::updateFilterButtons()
@@ -292,7 +348,19 @@ void ProblemsDock::applyFilter()
 {
     for (int i = 0; i < m_view->topLevelItemCount(); ++i) {
         QTreeWidgetItem* item = m_view->topLevelItem(i);
-        item->setHidden(!isShown(static_cast<core::Severity>(item->data(0, SeverityRole).toInt())));
+        if (item->childCount() == 0) {
+            item->setHidden(!isShown(static_cast<core::Severity>(item->data(0, SeverityRole).toInt())));
+            continue;
+        }
+        // A GRAFCET group: its shown problems, and itself while it has one.
+        bool anyShown = false;
+        for (int c = 0; c < item->childCount(); ++c) {
+            QTreeWidgetItem* child = item->child(c);
+            const bool shown = isShown(static_cast<core::Severity>(child->data(0, SeverityRole).toInt()));
+            child->setHidden(!shown);
+            anyShown = anyShown || shown;
+        }
+        item->setHidden(!anyShown);
     }
 }
 
@@ -309,11 +377,12 @@ void ProblemsDock::activate(QTreeWidgetItem* item)
 void ProblemsDock::copySelected()
 {
     QStringList lines;
-    for (int i = 0; i < m_view->topLevelItemCount(); ++i) {
-        const QTreeWidgetItem* item = m_view->topLevelItem(i);
-        if (item->isSelected() && !item->isHidden())
+    for (QTreeWidgetItemIterator it(m_view); *it; ++it) {
+        const QTreeWidgetItem* item = *it;
+        const bool problem = item->data(0, GroupRole).toString().isEmpty();
+        if (problem && (item->isSelected() || (item->parent() && item->parent()->isSelected())) && !item->isHidden())
             lines << QStringLiteral("%1\t%2\t%3")
-                         .arg(item->text(CodeColumn), item->data(0, IdRole).toString(), item->text(MessageColumn));
+                         .arg(item->text(CodeColumn), item->text(ElementColumn), item->text(MessageColumn));
     }
     if (!lines.isEmpty())
         QGuiApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));

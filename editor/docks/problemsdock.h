@@ -3,6 +3,8 @@
 #include "core/checks/diagnostic.h"
 
 #include <QDockWidget>
+#include <QHash>
+#include <QSet>
 
 class QTabWidget;
 class QToolButton;
@@ -50,6 +52,11 @@ private:
     void retranslate();
     QToolButton* createFilterButton(core::Severity severity, const QString& objectName);
     void refresh();
+    // The row of a problem of a nested GRAFCET's element goes under the row
+    // that stands for that GRAFCET (one per GEMMA step, made on first use).
+    QTreeWidgetItem* grafcetGroup(const QString& stepId, QList<QTreeWidgetItem*>& topLevel,
+                                  QHash<QString, QTreeWidgetItem*>& groups) const;
+    void updateGroupTexts();
     void updateFilterButtons();
     void updateTabTexts();
     void applyFilter();
@@ -66,6 +73,7 @@ private:
     VerificationRunner* m_verification = nullptr;
     VerificationPanel* m_verificationPanel = nullptr;
     QTabWidget* m_tabs = nullptr;
+    QSet<QString> m_collapsedGroups; // GEMMA step ids whose GRAFCET group the user closed
 };
 
 } // namespace editor

@@ -6,6 +6,7 @@
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setdialectcommand.h"
 #include "editor/commands/setstephiddencommand.h"
+#include "editor/commands/setstepcommentcommand.h"
 #include "editor/commands/settokenscommand.h"
 #include "editor/conditionerrortext.h"
 #include "editor/conditiontypeerrortext.h"
@@ -29,6 +30,7 @@
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
 #include "core/condition/symboltable.h"
+#include "core/formats/modelfiles.h"
 
 #include <QAbstractItemView>
 #include <QApplication>
@@ -129,6 +131,7 @@ private slots:
     void selectingRowSelectsVariable();
     void doubleClickingProblemSelectsElement();
     void problemMessagesWrapInANarrowDock();
+    void nestedProblemsStandUnderTheirGemmaStep();
     void problemFiltersCountAndHide();
     void problemFocusesConditionSpan();
     void stPreviewShowsProgramAndHighlightsStep();
@@ -858,6 +861,61 @@ void TestDocks::problemMessagesWrapInANarrowDock()
     QTRY_VERIFY(view->visualItemRect(item).height() >= 3 * line);
     dock.resize(3000, 400);
     QTRY_VERIFY(view->visualItemRect(item).height() < 2 * line);
+}
+
+// The problems of a nested GRAFCET's steps and transitions are listed under
+// one row for that GRAFCET, per GEMMA step; the filters and the selection
+// reach them there, and a closed group stays closed through a refresh.
+void TestDocks::nestedProblemsStandUnderTheirGemmaStep()
+{
+    const core::LoadedModel faulty =
+        core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-faulty.ggstudio.json");
+    QVERIFY2(faulty.ok(), faulty.error.toString().c_str());
+    Document document;
+    document.replaceModel(*faulty.model, QString(), core::ModelFormat::Native);
+    Selection selection;
+    ProblemsDock dock(&document, &selection);
+    QTreeWidget* view = dock.view();
+
+    int nestedInF1 = 0;
+    for (const core::Diagnostic& diagnostic : document.diagnostics()) {
+        const bool nested = diagnostic.target == core::Diagnostic::Target::GrafcetStep
+                         || diagnostic.target == core::Diagnostic::Target::GrafcetTransition;
+        nestedInF1 += nested && diagnostic.element == "F1" ? 1 : 0;
+    }
+    QVERIFY(nestedInF1 >= 2);
+    QTreeWidgetItem* group = problemItem(view, QString(), QStringLiteral("F1 GRAFCET"));
+    QVERIFY(group);
+    QCOMPARE(group->childCount(), nestedInF1);
+    QVERIFY(group->isExpanded());
+    QCOMPARE(group->text(ProblemsDock::MessageColumn), QStringLiteral("Nested GRAFCET of F1: %1 problems").arg(nestedInF1));
+    for (int c = 0; c < group->childCount(); ++c)
+        QVERIFY2(group->child(c)->text(ProblemsDock::ElementColumn).startsWith(QStringLiteral("F1 ")),
+                 qPrintable(group->child(c)->text(ProblemsDock::ElementColumn)));
+    // A GEMMA-level problem stays at the top level.
+    QVERIFY(problemItem(view, QStringLiteral("GG101"), QStringLiteral("A7")));
+    QVERIFY(!problemItem(view, QStringLiteral("GG101"), QStringLiteral("A7"))->parent());
+
+    // Activating a nested problem selects its GEMMA step (until the GRAFCET view opens it).
+    dock.activate(group->child(0));
+    QCOMPARE(selection.current(), ElementRef::step(QStringLiteral("F1")));
+
+    // F1's nested problems are errors: hiding the errors hides them and the group.
+    child<QToolButton>(&dock, "errorsButton")->click();
+    bool anyErrorShown = false;
+    for (int c = 0; c < group->childCount(); ++c)
+        anyErrorShown = anyErrorShown || !group->child(c)->isHidden();
+    QVERIFY(!anyErrorShown);
+    QVERIFY(group->isHidden());
+    child<QToolButton>(&dock, "errorsButton")->click();
+    QVERIFY(!group->isHidden());
+
+    // Closed by the user, the group stays closed when the list is rebuilt.
+    group->setExpanded(false);
+    QVERIFY(document.push(new SetStepCommentCommand(document, QStringLiteral("A1"), QStringLiteral("Home"))));
+    group = problemItem(view, QString(), QStringLiteral("F1 GRAFCET"));
+    QVERIFY(group);
+    QVERIFY(!group->isExpanded());
 }
 
 void TestDocks::problemFiltersCountAndHide()
