@@ -368,6 +368,7 @@ private:
                 if (placed(d) || stops(context, d)) {
                     Item back = makeItem(ItemKind::Back, d);
                     back.transition = transition.number;
+                    back.forceJump = !placed(d); // an outer join, placed below: only a jump
                     addItem(seq, std::move(back));
                     m_backs.emplace_back(seq, static_cast<int>(sequence(seq).items.size()) - 1);
                     return std::nullopt;
