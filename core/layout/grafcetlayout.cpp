@@ -334,6 +334,7 @@ private:
             if (context.join != 0)
                 inner.stops.push_back(context.join);
             inner.join = findJoin(owned, inner.stops);
+            inner.inParallel = context.inParallel;
             Item selection = makeItem(ItemKind::Selection, step);
             selection.closing = inner.join;
             bool joined = false;
@@ -383,7 +384,7 @@ private:
             inner.inParallel = true;
             Item parallel = makeItem(ItemKind::Parallel);
             parallel.transition = transition.number;
-            std::vector<int> ends; // the last step of each branch (0: none)
+            std::vector<int> ends; // the steps that end the branches
             for (int d : transition.downstream) {
                 const int branch = newSequence();
                 parallel.branches.push_back(branch);
@@ -392,18 +393,16 @@ private:
                     back.transition = transition.number;
                     back.forceJump = true;
                     sequence(branch).items.push_back(std::move(back));
-                    ends.push_back(0);
                     continue;
                 }
                 parseSteps(branch, d, inner);
-                const Item& last = sequence(branch).items.back();
-                ends.push_back(last.kind == ItemKind::Step ? last.number : 0);
+                branchEnds(branch, ends);
             }
             // The convergence: a transition from the last steps of some of the branches.
             int closing = -1;
             for (int end : ends) {
-                if (end == 0 || closing >= 0)
-                    continue;
+                if (closing >= 0)
+                    break;
                 for (int c : m_outgoing[static_cast<std::size_t>(stepIndex(end))]) {
                     const GrafcetTransition& candidate = transitionAt(c);
                     if (m_drawn[static_cast<std::size_t>(c)] || candidate.upstream.size() < 2)
@@ -423,6 +422,30 @@ private:
                 return std::nullopt;
             t = closing;
         }
+    }
+
+    // The steps whose links leave the bottom of the sequence: its last step,
+    // or those ending the branches of a last selection that has no
+    // convergence (nothing is below them: their links go down freely).
+    void branchEnds(int seqIndex, std::vector<int>& ends) const
+    {
+        const Sequence& seq = m_sequences[static_cast<std::size_t>(seqIndex)];
+        if (seq.items.empty())
+            return;
+        const Item& last = seq.items.back();
+        if (last.kind == ItemKind::Step) {
+            ends.push_back(last.number);
+        } else if (last.kind == ItemKind::Selection && !joined(last)) {
+            for (int branch : last.branches)
+                branchEnds(branch, ends);
+        }
+    }
+
+    bool joined(const Item& selection) const
+    {
+        return selection.closing != 0
+            && std::any_of(selection.branches.begin(), selection.branches.end(),
+                           [&](int b) { return m_sequences[static_cast<std::size_t>(b)].joins; });
     }
 
     // Where the branches of a selection meet: the step most of them reach
@@ -842,6 +865,7 @@ private:
         convergence.right = axis;
         convergence.step = item.closing;
         std::vector<End> result;
+        std::vector<End> passing; // the last steps of branches that do not converge
         for (std::size_t b = 0; b < item.branches.size(); ++b) {
             const double branchAxis = axis + item.branchAxis[b];
             std::vector<End> into;
@@ -858,8 +882,13 @@ private:
                 divergence.branches.push_back(branch.items.front().number);
             const bool joins = branch.joins && item.closing != 0;
             std::vector<End> out = place(item.branches[b], branchAxis, lineY, std::move(into));
-            if (!joins)
+            if (!joins) {
+                for (End& end : out) {
+                    if (end.isStep)
+                        passing.push_back(std::move(end));
+                }
                 continue;
+            }
             for (End& end : out) {
                 if (end.isStep)
                     continue;
@@ -872,8 +901,9 @@ private:
             }
         }
         m_layout->lines.push_back(std::move(divergence));
-        if (!convergence.branches.empty())
-            m_layout->lines.push_back(std::move(convergence));
+        if (convergence.branches.empty())
+            return passing; // a parallel section's convergence may take them
+        m_layout->lines.push_back(std::move(convergence));
         return result;
     }
 
@@ -923,11 +953,12 @@ private:
             for (End& end : out) {
                 if (!end.isStep || std::find(closingUpstream.begin(), closingUpstream.end(), end.number) == closingUpstream.end())
                     continue;
-                extend(end.path, {branchAxis, closeY});
+                const double x = end.path.back().x; // a step of a selection's branch, or the branch's own
+                extend(end.path, {x, closeY});
                 extend(end.path, {axis, closeY});
                 extend(end.path, {axis, closeY + kDoubleLineGap});
-                convergence.left = std::min(convergence.left, branchAxis);
-                convergence.right = std::max(convergence.right, branchAxis);
+                convergence.left = std::min(convergence.left, x);
+                convergence.right = std::max(convergence.right, x);
                 convergence.branches.push_back(end.number);
                 result.push_back(std::move(end));
             }
