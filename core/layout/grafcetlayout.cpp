@@ -319,7 +319,14 @@ private:
                 else
                     convergence = true;
             }
-            if (owned.empty() || (convergence && context.inParallel))
+            // In a parallel branch, a step with a transition to a convergence
+            // ends the branch unless the sequence goes on to new steps (then
+            // that transition is detached).
+            const bool goesOn = std::any_of(owned.begin(), owned.end(), [&](int t) {
+                return std::any_of(transitionAt(t).downstream.begin(), transitionAt(t).downstream.end(),
+                                   [&](int d) { return !placed(d) && !stops(context, d) && d != context.join; });
+            });
+            if (owned.empty() || (convergence && context.inParallel && !goesOn))
                 return; // the end of a branch of a parallel section, or of the sequence
             if (owned.size() == 1) {
                 const auto next = afterTransition(seq, owned.front(), context);
