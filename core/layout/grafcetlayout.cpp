@@ -52,6 +52,8 @@ struct Item {
     int closing = 0;    // Parallel: the closing transition (0: none); Selection: the join step (0: none)
     std::vector<int> branches; // Selection, Parallel: sequence indices, in branch order
     bool loop = false;         // Back: drawn as a loop line (else a jump)
+    int channel = 0;           // Back drawn as a loop: 1 for the channel nearest the column, 2 the next...
+    int mainBranch = -1;       // Selection: the branch the sequence goes on with below it (-1: none)
     bool forceJump = false;
     // Measured, relative to the column's axis.
     double left = 0;
@@ -76,6 +78,7 @@ struct Sequence {
     int parentItem = -1;
     int parentBranch = -1;
     bool hasLoop = false;  // a loop line goes up beside it
+    int channels = 0;      // loop channels beside it
     bool crossed = false;  // a loop line to an outer column passes through it
     double contentLeft = 0;
     double left = 0;
@@ -344,13 +347,38 @@ private:
             inner.inParallel = context.inParallel;
             Item selection = makeItem(ItemKind::Selection, step);
             selection.closing = inner.join;
+            // Without a convergence the sequence goes on below the
+            // selection with the last branch that leads to new steps; its
+            // first transition stands with the other branches.
+            if (inner.join == 0) {
+                for (std::size_t b = 0; b < owned.size(); ++b) {
+                    const auto& down = transitionAt(owned[b]).downstream;
+                    if (std::any_of(down.begin(), down.end(), [&](int d) { return !placed(d) && !stops(inner, d); }))
+                        selection.mainBranch = static_cast<int>(b);
+                }
+            }
             bool joined = false;
-            for (int t : owned) {
+            int mainBar = -1;
+            for (std::size_t b = 0; b < owned.size(); ++b) {
                 const int branch = newSequence();
                 selection.branches.push_back(branch);
-                if (const auto next = afterTransition(branch, t, inner))
+                if (static_cast<int>(b) == selection.mainBranch) {
+                    mainBar = branch;
+                    continue; // after the other branches: they take the steps they reach first
+                }
+                if (const auto next = afterTransition(branch, owned[b], inner))
                     parseSteps(branch, *next, inner);
                 joined = joined || sequence(branch).joins;
+            }
+            if (mainBar >= 0) {
+                // The main branch holds its bar; what follows is the sequence's.
+                addItem(seq, std::move(selection));
+                const auto next = afterTransition(seq, owned[static_cast<std::size_t>(sequence(seq).items.back().mainBranch)],
+                                                  context, mainBar);
+                if (!next)
+                    return;
+                step = *next;
+                continue;
             }
             addItem(seq, std::move(selection));
             if (!joined || inner.join == 0 || placed(inner.join))
@@ -360,13 +388,15 @@ private:
     }
 
     // Draws the transition (and the parallel sections it opens) in the
-    // sequence; returns the step the sequence goes on with, if any.
-    std::optional<int> afterTransition(int seq, int t, const Context& context)
+    // sequence; returns the step the sequence goes on with, if any. The
+    // first bar goes to barSeq when given (the main branch of a selection).
+    std::optional<int> afterTransition(int seq, int t, const Context& context, int barSeq = -1)
     {
         while (true) {
             m_drawn[static_cast<std::size_t>(t)] = true;
             const GrafcetTransition& transition = transitionAt(t);
-            addItem(seq, makeItem(ItemKind::Transition, transition.number));
+            addItem(barSeq >= 0 ? barSeq : seq, makeItem(ItemKind::Transition, transition.number));
+            barSeq = -1;
             if (transition.downstream.size() == 1) {
                 const int d = transition.downstream.front();
                 if (context.join != 0 && d == context.join) {
@@ -560,10 +590,17 @@ private:
 
     // A transition back to a placed step is a loop line when the target is
     // in a column the transition's branch reaches through first branches of
-    // selections only, that column has no other loop and no line crosses
-    // it; otherwise a jump.
+    // selections only, and its line neither interleaves with another loop
+    // line of that column nor passes a column that has loop lines of its
+    // own; otherwise a jump. Nested loop lines get channels further out.
     void resolveLoops()
     {
+        struct Accepted {
+            int start = 0; // the target step's item in the column
+            int end = 0;   // the item holding the transition
+            Item* back = nullptr;
+        };
+        std::map<int, std::vector<Accepted>> accepted; // by column
         for (const auto& [seqIndex, itemIndex] : m_backs) {
             Item& back = sequence(seqIndex).items[static_cast<std::size_t>(itemIndex)];
             if (back.forceJump)
@@ -574,6 +611,7 @@ private:
             const int target = place->second.first;
             std::vector<int> crossed;
             int current = seqIndex;
+            int sourceItem = itemIndex;
             bool ok = true;
             while (current != target) {
                 const Sequence& seq = sequence(current);
@@ -583,16 +621,42 @@ private:
                     break;
                 }
                 crossed.push_back(current);
+                sourceItem = seq.parentItem;
                 current = seq.parent;
             }
-            if (!ok || sequence(target).hasLoop || sequence(target).crossed)
+            if (!ok || sequence(target).crossed)
                 continue;
             if (std::any_of(crossed.begin(), crossed.end(), [&](int s) { return sequence(s).hasLoop; }))
                 continue;
+            const int start = place->second.second;
+            const int end = sourceItem;
+            auto& lines = accepted[target];
+            const bool interleaves = std::any_of(lines.begin(), lines.end(), [&](const Accepted& a) {
+                return (a.start < start && start < a.end && a.end < end) || (start < a.start && a.start < end && end < a.end);
+            });
+            if (interleaves)
+                continue;
+            lines.push_back({start, end, &back});
             sequence(target).hasLoop = true;
             for (int s : crossed)
                 sequence(s).crossed = true;
             back.loop = true;
+        }
+        for (auto& [target, lines] : accepted) {
+            std::sort(lines.begin(), lines.end(), [](const Accepted& a, const Accepted& b) {
+                return a.end - a.start < b.end - b.start;
+            });
+            int channels = 0;
+            for (std::size_t i = 0; i < lines.size(); ++i) {
+                int level = 1;
+                for (std::size_t j = 0; j < i; ++j) {
+                    if (lines[j].start >= lines[i].start && lines[j].end <= lines[i].end)
+                        level = std::max(level, lines[j].back->channel + 1);
+                }
+                lines[i].back->channel = level;
+                channels = std::max(channels, level);
+            }
+            sequence(target).channels = channels;
         }
     }
 
@@ -686,7 +750,17 @@ private:
                     item.branchHeight = std::max(item.branchHeight, branch.height);
                     anyJoin = anyJoin || branch.joins;
                 }
-                item.left = item.branches.empty() ? kMinHalfWidth : sequence(item.branches.front()).left;
+                // A selection without convergence goes on with its main
+                // branch: that one stands under the column's axis, so the
+                // sequence stays straight (a loop branch beside it).
+                if (item.kind == ItemKind::Selection && item.mainBranch >= 0) {
+                    const double offset = item.branchAxis[static_cast<std::size_t>(item.mainBranch)];
+                    for (double& x : item.branchAxis)
+                        x -= offset;
+                    axis -= offset;
+                }
+                item.left = item.branches.empty() ? kMinHalfWidth
+                                                  : sequence(item.branches.front()).left - item.branchAxis.front();
                 item.right = axis + previousRight;
                 if (item.kind == ItemKind::Selection) {
                     item.height = kLineMargin + item.branchHeight + (anyJoin && item.closing != 0 ? kLineMargin : 0);
@@ -703,7 +777,7 @@ private:
         }
         Sequence& seq = sequence(seqIndex);
         seq.contentLeft = contentLeft;
-        seq.left = contentLeft + (seq.hasLoop ? kLoopChannel : 0);
+        seq.left = contentLeft + seq.channels * kLoopChannel;
         seq.right = right;
         seq.height = height;
     }
@@ -767,7 +841,8 @@ private:
                         const auto [targetSeq, targetItem] = m_stepPlace.at(item.number);
                         (void)targetItem;
                         const double targetAxis = sequence(targetSeq).axis;
-                        const double targetChannel = targetAxis - sequence(targetSeq).contentLeft - kLoopChannel / 2;
+                        const double targetChannel = targetAxis - sequence(targetSeq).contentLeft
+                                                   - kLoopChannel * (item.channel - 0.5);
                         const Rect box = m_layout->steps[static_cast<std::size_t>(stepIndex(item.number))].box;
                         const double turn = y + kLoopDrop;
                         const double arrive = box.top() - kStepTopGap / 2;
@@ -873,6 +948,7 @@ private:
         convergence.step = item.closing;
         std::vector<End> result;
         std::vector<End> passing; // the last steps of branches that do not converge
+        std::vector<End> mainEnds; // the bar of the branch the sequence goes on with
         for (std::size_t b = 0; b < item.branches.size(); ++b) {
             const double branchAxis = axis + item.branchAxis[b];
             std::vector<End> into;
@@ -889,6 +965,13 @@ private:
                 divergence.branches.push_back(branch.items.front().number);
             const bool joins = branch.joins && item.closing != 0;
             std::vector<End> out = place(item.branches[b], branchAxis, lineY, std::move(into));
+            if (static_cast<int>(b) == item.mainBranch) {
+                for (End& end : out) {
+                    if (!end.isStep)
+                        mainEnds.push_back(std::move(end));
+                }
+                continue;
+            }
             if (!joins) {
                 for (End& end : out) {
                     if (end.isStep)
@@ -908,6 +991,8 @@ private:
             }
         }
         m_layout->lines.push_back(std::move(divergence));
+        if (item.mainBranch >= 0)
+            return mainEnds;
         if (convergence.branches.empty())
             return passing; // a parallel section's convergence may take them
         m_layout->lines.push_back(std::move(convergence));

@@ -808,3 +808,58 @@ TEST_CASE("GRAFCET layout: random GRAFCETs with errors, and odd shapes", "[layou
     CHECK(emptyLayout.steps.empty());
     CHECK(emptyLayout.boundingRect.width > 0);
 }
+
+TEST_CASE("GRAFCET layout: a large structured GRAFCET", "[layout][grafcet-layout]")
+{
+    // Blocks from the initial step: a three-way selection whose second branch
+    // is a parallel section (one of its sequences holding a selection with a
+    // loop), converging on a step; then a step that repeats (a loop) or goes
+    // on. The end loops back to step 1.
+    Grafcet g;
+    int transition = 1;
+    const auto step = [&](int number) {
+        GrafcetStep s = makeStep(number, {"Out" + std::to_string(number % 5) + (number % 4 == 0 ? " IF In1" : "")}, number == 1);
+        REQUIRE(g.addStep(std::move(s)).ok);
+        return number;
+    };
+    const auto link = [&](std::vector<int> up, std::vector<int> down) {
+        add(g, transition, std::move(up), std::move(down), "In" + std::to_string(transition % 9));
+        ++transition;
+    };
+    int at = step(1);
+    int next = 2;
+    for (int block = 0; block < 12; ++block) {
+        const int a1 = step(next++), a2 = step(next++);
+        const int b1 = step(next++), b2 = step(next++), b3 = step(next++), c1 = step(next++);
+        const int d1 = step(next++), join = step(next++), body = step(next++), after = step(next++);
+        link({at}, {a1});
+        link({a1}, {a2});
+        link({a2}, {join});
+        link({at}, {b1, c1});
+        link({b1}, {b2}); // b2 repeats back to b1 or goes on to b3
+        link({b2}, {b1});
+        link({b2}, {b3});
+        link({b3, c1}, {join});
+        link({at}, {d1});
+        link({d1}, {join});
+        link({join}, {body});
+        link({body}, {join});
+        link({body}, {after});
+        at = after;
+    }
+    link({at}, {1});
+    REQUIRE(g.steps().size() == 121);
+    checkLayout(g, "large");
+    const GrafcetLayout layout = layoutGrafcet(g, kMeasure);
+    int loops = 0;
+    for (const GrafcetTransitionLayout& t : layout.transitions)
+        CHECK_FALSE(t.detached);
+    for (const GrafcetLinkLayout& link : layout.links)
+        loops += link.ending == GrafcetLinkLayout::Ending::Loop ? 1 : 0;
+    CHECK(loops >= 12); // the repeating steps and the end; the loops in parallel branches too
+    // The main path goes straight down: every join under the initial step.
+    for (const GrafcetStepLayout& s : layout.steps) {
+        if (s.number % 10 == 9) // the joins
+            CHECK(s.box.center().x == layout.step(1)->box.center().x);
+    }
+}
