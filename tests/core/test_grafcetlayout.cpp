@@ -852,11 +852,17 @@ TEST_CASE("GRAFCET layout: a large structured GRAFCET", "[layout][grafcet-layout
     checkLayout(g, "large");
     const GrafcetLayout layout = layoutGrafcet(g, kMeasure);
     int loops = 0;
+    int jumps = 0;
     for (const GrafcetTransitionLayout& t : layout.transitions)
         CHECK_FALSE(t.detached);
-    for (const GrafcetLinkLayout& link : layout.links)
+    for (const GrafcetLinkLayout& link : layout.links) {
         loops += link.ending == GrafcetLinkLayout::Ending::Loop ? 1 : 0;
-    CHECK(loops >= 12); // the repeating steps and the end; the loops in parallel branches too
+        jumps += link.ending == GrafcetLinkLayout::Ending::Jump ? 1 : 0;
+    }
+    // Every way back is a loop line: the repeating steps, the loops in the
+    // parallel branches, the end around all of them.
+    CHECK(loops == 25);
+    CHECK(jumps == 0);
     // The main path goes straight down: every join under the initial step.
     for (const GrafcetStepLayout& s : layout.steps) {
         if (s.number % 10 == 9) // the joins
