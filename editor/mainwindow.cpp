@@ -16,6 +16,8 @@
 #include "editor/document.h"
 #include "editor/examplemodels.h"
 #include "editor/exportactions.h"
+#include "editor/grafcet/grafcetscene.h"
+#include "editor/grafcet/grafcetview.h"
 #include "editor/languages.h"
 #include "editor/modelsettingsdialog.h"
 #include "editor/recentfiles.h"
@@ -25,6 +27,7 @@
 #include "editor/simulation/simulationchartmarks.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/statenames.h"
 #include "editor/statusindicators.h"
 #include "editor/userguide.h"
 #include "editor/verificationrunner.h"
@@ -42,6 +45,8 @@
 #include <QScreen>
 #include <QShortcut>
 #include <QStyle>
+#include <QTabBar>
+#include <QTabWidget>
 #include <QToolBar>
 #include <QSignalBlocker>
 #include <QStatusBar>
@@ -91,12 +96,27 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     , m_autosave(new Autosave(*m_document, m_document))
     , m_scene(new ChartScene(m_document, m_selection, this))
     , m_view(new ChartView(m_scene, this))
+    , m_centralTabs(new QTabWidget(this))
 {
     setObjectName("mainWindow");
     // The window icon is the application's: editor::runApplication sets it
     // once, after the first frame.
     m_view->setObjectName("chartView");
-    setCentralWidget(m_view);
+    // The tab bar shows once a nested GRAFCET is open: until then the chart
+    // has the whole area.
+    m_centralTabs->setObjectName("centralTabs");
+    m_centralTabs->setDocumentMode(true);
+    m_centralTabs->setTabBarAutoHide(true);
+    m_centralTabs->setTabsClosable(true);
+    m_centralTabs->addTab(m_view, QString());
+    // The GEMMA chart's tab has no close button (the bar only hides the one it takes away).
+    for (QTabBar::ButtonPosition side : {QTabBar::LeftSide, QTabBar::RightSide}) {
+        QWidget* close = m_centralTabs->tabBar()->tabButton(0, side);
+        m_centralTabs->tabBar()->setTabButton(0, side, nullptr);
+        delete close;
+    }
+    connect(m_centralTabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeGrafcetTab);
+    setCentralWidget(m_centralTabs);
 
     // The right column runs the full height: the property docks are tall forms.
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
@@ -175,6 +195,7 @@ void MainWindow::createDocks()
             &MainWindow::replayCounterexample);
     connect(m_stepDock->startGuide(), &StartGuide::exampleRequested, this, [this] { openExample(0); });
     connect(m_stepDock->startGuide(), &StartGuide::userGuideRequested, this, &MainWindow::showUserGuide);
+    connect(m_stepDock, &StepDock::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
     m_simulationDock = new SimulationDock(m_session, m_document, this);
     arrangeDocks(docks());
@@ -454,6 +475,9 @@ void MainWindow::createActions()
         *m_document, *m_selection,
         ChartContextMenu::SheetActions{m_showHiddenAction, m_fitAction, m_exportActions->chartAction()}, this);
     connect(m_view, &ChartView::contextMenuRequested, this, &MainWindow::showChartContextMenu);
+    connect(m_chartContextMenu, &ChartContextMenu::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
+    connect(m_view, &ChartView::stepDoubleClicked, this, &MainWindow::openNestedGrafcet);
+    connect(m_document, &Document::modelReset, this, &MainWindow::closeStaleGrafcetTabs);
     connect(m_exportActions, &ExportActions::exported, this,
             [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
 }
@@ -568,6 +592,66 @@ void MainWindow::showChartContextMenu(const ElementRef& element, const QPoint& g
         }
     }
     menu.exec(globalPos);
+}
+
+GrafcetView* MainWindow::grafcetView(const QString& stepId) const
+{
+    for (int i = 1; i < m_centralTabs->count(); ++i) {
+        auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i));
+        if (view && view->grafcetScene()->stepId() == stepId)
+            return view;
+    }
+    return nullptr;
+}
+
+bool MainWindow::openNestedGrafcet(const QString& stepId)
+{
+    if (!m_document->model().grafcet(stepId.toStdString()))
+        return false;
+    GrafcetView* view = grafcetView(stepId);
+    if (!view) {
+        auto* scene = new GrafcetScene(m_document, stepId);
+        view = new GrafcetView(scene);
+        scene->setParent(view);
+        view->setObjectName(QStringLiteral("grafcetView_") + stepId);
+        m_centralTabs->addTab(view, QString());
+        retitleGrafcetTabs();
+    }
+    m_centralTabs->setCurrentWidget(view);
+    return true;
+}
+
+void MainWindow::closeGrafcetTab(int index)
+{
+    if (index <= 0) // the GEMMA chart
+        return;
+    QWidget* view = m_centralTabs->widget(index);
+    m_centralTabs->removeTab(index);
+    delete view;
+}
+
+void MainWindow::closeStaleGrafcetTabs()
+{
+    for (int i = m_centralTabs->count() - 1; i > 0; --i) {
+        auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i));
+        if (view && !m_document->model().grafcet(view->grafcetScene()->stepId().toStdString()))
+            closeGrafcetTab(i);
+    }
+    retitleGrafcetTabs();
+}
+
+// "F1 Normal production": the step and its official name, as the chart's tooltips name it.
+void MainWindow::retitleGrafcetTabs()
+{
+    m_centralTabs->setTabText(0, tr("GEMMA Chart"));
+    for (int i = 1; i < m_centralTabs->count(); ++i) {
+        auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i));
+        if (!view)
+            continue;
+        const QString stepId = view->grafcetScene()->stepId();
+        m_centralTabs->setTabText(i, QStringLiteral("%1 %2").arg(stepId, officialStateName(stepId)));
+        m_centralTabs->setTabToolTip(i, tr("The nested GRAFCET of %1").arg(stepId));
+    }
 }
 
 void MainWindow::resetLayout()
@@ -700,6 +784,7 @@ void MainWindow::changeEvent(QEvent* event)
 
 void MainWindow::retranslate()
 {
+    retitleGrafcetTabs();
     m_fileMenu->setTitle(tr("&File"));
     m_editMenu->setTitle(tr("&Edit"));
     m_viewMenu->setTitle(tr("&View"));

@@ -13,6 +13,7 @@ class QAction;
 class QActionGroup;
 class QDockWidget;
 class QMenu;
+class QTabWidget;
 class QToolBar;
 
 namespace editor {
@@ -21,6 +22,7 @@ class Autosave;
 class ChartContextMenu;
 class ChartScene;
 class ChartView;
+class GrafcetView;
 class Document;
 class ExportActions;
 class ProblemCounter;
@@ -62,6 +64,10 @@ public:
     Selection* selection() const { return m_selection; }
     ChartScene* chartScene() const { return m_scene; }
     ChartView* chartView() const { return m_view; }
+    // The central area: the GEMMA chart first, then a tab per open nested GRAFCET.
+    QTabWidget* centralTabs() const { return m_centralTabs; }
+    // The tab of `stepId`'s nested GRAFCET; nullptr when it is not open.
+    GrafcetView* grafcetView(const QString& stepId) const;
     ExportActions* exportActions() const { return m_exportActions; }
     SimulationSession* simulationSession() const { return m_session; }
     VerificationRunner* verificationRunner() const { return m_verification; }
@@ -84,6 +90,9 @@ public slots:
     bool exportPlcOpen(const QString& path, core::Dialect dialect);
     // The models autosave kept from a session that ended without saving.
     void offerRecovery();
+    // Opens (or brings to the front) the tab of `stepId`'s nested GRAFCET;
+    // false when the step has none.
+    bool openNestedGrafcet(const QString& stepId);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -145,6 +154,10 @@ private:
     // While simulating, the Simulation dock takes most of the dock column
     // from the docks below it (locked then), and gives it back at the end.
     void giveSimulationTheColumn(bool simulating);
+    void closeGrafcetTab(int index);
+    // After a new model: the tabs of steps that have no GRAFCET any more close.
+    void closeStaleGrafcetTabs();
+    void retitleGrafcetTabs();
     void applyEditingLock();
     // Verify: runs the verifier and shows its findings in the Problems dock.
     void verify();
@@ -159,6 +172,7 @@ private:
     Autosave* m_autosave;
     ChartScene* m_scene;
     ChartView* m_view;
+    QTabWidget* m_centralTabs;
     StepDock* m_stepDock = nullptr;
     TransitionDock* m_transitionDock = nullptr;
     VariablesDock* m_variablesDock = nullptr;

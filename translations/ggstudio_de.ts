@@ -1340,6 +1340,10 @@
             <numerusform>Die %n ausgewählten Elemente einblenden</numerusform>
         </translation>
     </message>
+    <message>
+        <source>&amp;Open Nested GRAFCET</source>
+        <translation>Eingebetteten GRAFCET ö&amp;ffnen</translation>
+    </message>
 </context>
 <context>
     <name>editor::ConditionList</name>
@@ -1938,6 +1942,14 @@
         <source>Show the next scan of the run&apos;s history</source>
         <translation>Den nächsten Zyklus im Verlauf des Laufs zeigen</translation>
     </message>
+    <message>
+        <source>GEMMA Chart</source>
+        <translation>GEMMA-Diagramm</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1</source>
+        <translation>Der eingebettete GRAFCET von %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -2158,13 +2170,13 @@
     </message>
     <message>
         <source>Nested GRAFCET of %1: 1 problem</source>
-        <translation>Unter-GRAFCET von %1: 1 Problem</translation>
+        <translation>Eingebetteter GRAFCET von %1: 1 Problem</translation>
     </message>
     <message numerus="yes">
         <source>Nested GRAFCET of %1: %n problems</source>
         <translation>
-            <numerusform>Unter-GRAFCET von %1: %n Problem</numerusform>
-            <numerusform>Unter-GRAFCET von %1: %n Probleme</numerusform>
+            <numerusform>Eingebetteter GRAFCET von %1: %n Problem</numerusform>
+            <numerusform>Eingebetteter GRAFCET von %1: %n Probleme</numerusform>
         </translation>
     </message>
 </context>
@@ -2718,6 +2730,14 @@ Einschließender Schritt: Seine Transitionen schalten unabhängig davon, was der
         <source>%1 (negated)</source>
         <extracomment>a negated transition in the Step dock&apos;s lists: the entry, then the mark</extracomment>
         <translation>%1 (negiert)</translation>
+    </message>
+    <message>
+        <source>Open Nested GRAFCET</source>
+        <translation>Eingebetteten GRAFCET öffnen</translation>
+    </message>
+    <message>
+        <source>Show the nested GRAFCET of this step in a tab beside the GEMMA chart (double-click the step on the chart does the same)</source>
+        <translation>Den eingebetteten GRAFCET dieses Schritts in einem Reiter neben dem GEMMA-Diagramm zeigen (ein Doppelklick auf den Schritt im Diagramm tut dasselbe)</translation>
     </message>
 </context>
 <context>

@@ -1340,6 +1340,10 @@
             <numerusform>Mostrar los %n elementos seleccionados</numerusform>
         </translation>
     </message>
+    <message>
+        <source>&amp;Open Nested GRAFCET</source>
+        <translation>&amp;Abrir el GRAFCET anidado</translation>
+    </message>
 </context>
 <context>
     <name>editor::ConditionList</name>
@@ -1937,6 +1941,14 @@
     <message>
         <source>Show the next scan of the run&apos;s history</source>
         <translation>Mostrar el ciclo siguiente del historial de la ejecución</translation>
+    </message>
+    <message>
+        <source>GEMMA Chart</source>
+        <translation>Diagrama GEMMA</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1</source>
+        <translation>El GRAFCET anidado de %1</translation>
     </message>
 </context>
 <context>
@@ -2718,6 +2730,14 @@ Etapa encapsulante: sus transiciones se franquean haga lo que haga el comportami
         <source>%1 (negated)</source>
         <extracomment>a negated transition in the Step dock&apos;s lists: the entry, then the mark</extracomment>
         <translation>%1 (negada)</translation>
+    </message>
+    <message>
+        <source>Open Nested GRAFCET</source>
+        <translation>Abrir el GRAFCET anidado</translation>
+    </message>
+    <message>
+        <source>Show the nested GRAFCET of this step in a tab beside the GEMMA chart (double-click the step on the chart does the same)</source>
+        <translation>Mostrar el GRAFCET anidado de esta etapa en una pestaña junto al diagrama GEMMA (un doble clic en la etapa del diagrama hace lo mismo)</translation>
     </message>
 </context>
 <context>

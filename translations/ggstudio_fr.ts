@@ -1340,6 +1340,10 @@
             <numerusform>Afficher les %n éléments sélectionnés</numerusform>
         </translation>
     </message>
+    <message>
+        <source>&amp;Open Nested GRAFCET</source>
+        <translation>&amp;Ouvrir le GRAFCET imbriqué</translation>
+    </message>
 </context>
 <context>
     <name>editor::ConditionList</name>
@@ -1937,6 +1941,14 @@
     <message>
         <source>Show the next scan of the run&apos;s history</source>
         <translation>Afficher le cycle suivant de l&apos;historique de l&apos;exécution</translation>
+    </message>
+    <message>
+        <source>GEMMA Chart</source>
+        <translation>Diagramme GEMMA</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1</source>
+        <translation>Le GRAFCET imbriqué de %1</translation>
     </message>
 </context>
 <context>
@@ -2718,6 +2730,14 @@ Macro-étape&#xa0;: ses transitions attendent que le comportement imbriqué soit
         <source>%1 (negated)</source>
         <extracomment>a negated transition in the Step dock&apos;s lists: the entry, then the mark</extracomment>
         <translation>%1 (niée)</translation>
+    </message>
+    <message>
+        <source>Open Nested GRAFCET</source>
+        <translation>Ouvrir le GRAFCET imbriqué</translation>
+    </message>
+    <message>
+        <source>Show the nested GRAFCET of this step in a tab beside the GEMMA chart (double-click the step on the chart does the same)</source>
+        <translation>Afficher le GRAFCET imbriqué de cette étape dans un onglet à côté du diagramme GEMMA (un double-clic sur l’étape du diagramme fait de même)</translation>
     </message>
 </context>
 <context>

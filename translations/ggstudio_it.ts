@@ -1340,6 +1340,10 @@
             <numerusform>Mostra gli %n elementi selezionati</numerusform>
         </translation>
     </message>
+    <message>
+        <source>&amp;Open Nested GRAFCET</source>
+        <translation>&amp;Apri il GRAFCET annidato</translation>
+    </message>
 </context>
 <context>
     <name>editor::ConditionList</name>
@@ -1937,6 +1941,14 @@
     <message>
         <source>Show the next scan of the run&apos;s history</source>
         <translation>Mostra il ciclo successivo della cronologia dell&apos;esecuzione</translation>
+    </message>
+    <message>
+        <source>GEMMA Chart</source>
+        <translation>Diagramma GEMMA</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1</source>
+        <translation>Il GRAFCET annidato di %1</translation>
     </message>
 </context>
 <context>
@@ -2718,6 +2730,14 @@ Tappa incapsulante: le sue transizioni scattano qualunque cosa stia facendo il c
         <source>%1 (negated)</source>
         <extracomment>a negated transition in the Step dock&apos;s lists: the entry, then the mark</extracomment>
         <translation>%1 (negata)</translation>
+    </message>
+    <message>
+        <source>Open Nested GRAFCET</source>
+        <translation>Apri il GRAFCET annidato</translation>
+    </message>
+    <message>
+        <source>Show the nested GRAFCET of this step in a tab beside the GEMMA chart (double-click the step on the chart does the same)</source>
+        <translation>Mostra il GRAFCET annidato di questa tappa in una scheda accanto al diagramma GEMMA (un doppio clic sulla tappa nel diagramma fa lo stesso)</translation>
     </message>
 </context>
 <context>

@@ -19,5 +19,7 @@ example=examples/drilling-cell.ggstudio.json
 # The start scenario replayed up to the first part being drilled.
 "$shot" "$images/simulation.png" 1366 768 "$example" --simulate \
     --replay examples/drilling-cell-start.scenario --replay-scans 1013 --raise simulationDock
+# The nested GRAFCET of F1 in its tab.
+"$shot" "$images/grafcet-tab.png" 1366 768 "$example" --grafcet F1 --select F1
 # Verify and its findings.
 "$shot" "$images/verification.png" 1366 768 "$example" --verify --raise problemsDock

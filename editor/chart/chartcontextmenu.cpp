@@ -62,6 +62,11 @@ void ChartContextMenu::addStepEntries(QMenu* menu, const QString& stepId)
     const core::Step* step = m_document.model().step(stepId.toStdString());
     if (!step)
         return;
+    if (m_document.model().grafcet(stepId.toStdString())) {
+        QAction* open = addNamed(menu, "openGrafcetAction", tr("&Open Nested GRAFCET"));
+        connect(open, &QAction::triggered, this, [this, stepId] { emit openGrafcetRequested(stepId); });
+        menu->addSeparator();
+    }
     const bool hidden = step->hidden;
     QAction* hide = addNamed(menu, hidden ? "showElementAction" : "hideElementAction",
                              hidden ? tr("&Show %1").arg(stepId) : tr("&Hide %1").arg(stepId));

@@ -37,6 +37,10 @@ public:
     // entries are named (objectName) for tests and scripts.
     void populate(QMenu* menu, const ElementRef& element);
 
+signals:
+    // "Open Nested GRAFCET" on a step that has one.
+    void openGrafcetRequested(const QString& stepId);
+
 private:
     void addStepEntries(QMenu* menu, const QString& stepId);
     void addTransitionEntries(QMenu* menu, const QString& transitionId);

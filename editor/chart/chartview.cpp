@@ -213,6 +213,17 @@ void ChartView::mouseReleaseEvent(QMouseEvent* event)
         setDragMode(m_panningSetUp ? ScrollHandDrag : NoDrag);
 }
 
+void ChartView::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    const ElementRef element = elementAt(event->pos());
+    if (element.kind == ElementRef::Kind::Step) {
+        emit stepDoubleClicked(element.id);
+        event->accept();
+        return;
+    }
+    QGraphicsView::mouseDoubleClickEvent(event);
+}
+
 void ChartView::contextMenuEvent(QContextMenuEvent* event)
 {
     ElementRef element;

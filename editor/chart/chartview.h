@@ -44,6 +44,8 @@ signals:
     // A right click or the menu key: on `element`, already selected, or on
     // the empty sheet (a null element); `globalPos` is where the menu opens.
     void contextMenuRequested(const editor::ElementRef& element, const QPoint& globalPos);
+    // A double click on a step.
+    void stepDoubleClicked(const QString& stepId);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -52,6 +54,7 @@ protected:
     void contextMenuEvent(QContextMenuEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     bool viewportEvent(QEvent* event) override;

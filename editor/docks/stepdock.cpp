@@ -24,6 +24,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalBlocker>
@@ -91,6 +92,9 @@ void StepDock::retranslate()
 {
     setWindowTitle(title());
     setPlaceholder(tr("Select a step in the chart to see and edit its properties."));
+    m_openGrafcetButton->setText(tr("Open Nested GRAFCET"));
+    m_openGrafcetButton->setToolTip(tr("Show the nested GRAFCET of this step in a tab beside the GEMMA chart "
+                                       "(double-click the step on the chart does the same)"));
     for (int i = 0; i < m_typeCombo->count(); ++i)
         m_typeCombo->setItemText(i, stepTypeText(static_cast<core::StepType>(m_typeCombo->itemData(i).toInt())));
     m_typeCombo->setToolTip(tr("Simple step: no nested behaviour.\n"
@@ -157,6 +161,11 @@ QWidget* StepDock::createForm()
     flags->addWidget(m_hiddenCheck);
     flags->addStretch();
     fields->addRow(flags);
+
+    m_openGrafcetButton = new QPushButton(form);
+    m_openGrafcetButton->setObjectName(QStringLiteral("openGrafcetButton"));
+    connect(m_openGrafcetButton, &QPushButton::clicked, this, [this] { emit openGrafcetRequested(stepId()); });
+    fields->addRow(m_openGrafcetButton);
 
     m_commentEdit = new QPlainTextEdit(form);
     m_commentEdit->setObjectName(QStringLiteral("commentEdit"));
@@ -242,6 +251,8 @@ void StepDock::refreshForm()
         const QSignalBlocker blocker(m_hiddenCheck);
         m_hiddenCheck->setChecked(step->hidden);
     }
+    // Only a step that has a nested GRAFCET opens one (the GRAFCET editor to come creates them).
+    m_openGrafcetButton->setVisible(document()->model().grafcet(stepId().toStdString()) != nullptr);
     const QString comment = fromStd(step->comment);
     if (m_commentEdit->toPlainText() != comment) {
         // Only when it differs: rewriting the text under the user's cursor

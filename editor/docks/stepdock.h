@@ -6,6 +6,7 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QPlainTextEdit;
+class QPushButton;
 class QTreeWidget;
 class QTreeWidgetItem;
 
@@ -36,6 +37,10 @@ public:
     QString stepId() const { return elementId(); }
     StartGuide* startGuide() const { return m_startGuide; }
 
+signals:
+    // "Open Nested GRAFCET" on a step that has one.
+    void openGrafcetRequested(const QString& stepId);
+
 private:
     QWidget* createForm();
     QTreeWidget* createTransitionList(const QString& objectName);
@@ -61,6 +66,7 @@ private:
     QComboBox* m_typeCombo = nullptr;
     QCheckBox* m_initialCheck = nullptr;
     QCheckBox* m_hiddenCheck = nullptr;
+    QPushButton* m_openGrafcetButton = nullptr;
     QLabel* m_commentLabel = nullptr;
     QPlainTextEdit* m_commentEdit = nullptr;
     QLabel* m_incomingHeading = nullptr;

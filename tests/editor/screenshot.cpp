@@ -1,7 +1,7 @@
 // ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... [--show-hidden] [--language CODE]
 //                     [--export-chart FILE.svg|png|pdf] [--dialog ACTION]
 //                     [--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE]
-//                     [--replay-scans N] [--simulation-tab INDEX] [--verify]
+//                     [--replay-scans N] [--simulation-tab INDEX] [--verify] [--grafcet STEP]
 //
 // Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
 // with a step or transition selected, a dock brought to the front) and
@@ -46,7 +46,7 @@ int usage()
     std::fputs("usage: ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... "
                "[--show-hidden] [--language CODE] [--export-chart FILE] [--dialog ACTION] "
                "[--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE] [--replay-scans N] "
-               "[--simulation-tab INDEX] [--verify]\n",
+               "[--simulation-tab INDEX] [--verify] [--grafcet STEP]\n",
                stderr);
     return 2;
 }
@@ -120,6 +120,7 @@ int main(int argc, char* argv[])
     QString replay;
     int replayScans = 0;
     int simulationTab = 0;
+    QString grafcet; // the GEMMA step whose nested GRAFCET's tab is shown
     const QStringList args = app.arguments().mid(1);
     for (qsizetype i = 0; i < args.size(); ++i) {
         if (args[i] == QLatin1String("--select") && i + 1 < args.size())
@@ -150,6 +151,8 @@ int main(int argc, char* argv[])
             replayScans = args[++i].toInt();
         else if (args[i] == QLatin1String("--simulation-tab") && i + 1 < args.size())
             simulationTab = args[++i].toInt();
+        else if (args[i] == QLatin1String("--grafcet") && i + 1 < args.size())
+            grafcet = args[++i];
         else if (args[i].startsWith(QLatin1String("--")))
             return usage();
         else
@@ -180,6 +183,10 @@ int main(int argc, char* argv[])
         return 1;
     if (showHidden)
         window.findChild<QAction*>(QStringLiteral("showHiddenAction"))->setChecked(true);
+    if (!grafcet.isEmpty() && !window.openNestedGrafcet(grafcet)) {
+        std::fprintf(stderr, "ggstudio_screenshot: %s has no nested GRAFCET\n", qPrintable(grafcet));
+        return 2;
+    }
     if (!selected.isEmpty())
         window.selection()->select(selected.contains(QLatin1String("->")) ? editor::ElementRef::transition(selected)
                                                                           : editor::ElementRef::step(selected));

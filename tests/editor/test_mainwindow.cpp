@@ -17,6 +17,9 @@
 #include "editor/docks/stepdock.h"
 #include "editor/document.h"
 #include "editor/examplemodels.h"
+#include "editor/grafcet/grafcetscene.h"
+#include "editor/grafcet/grafcettransitionitem.h"
+#include "editor/grafcet/grafcetview.h"
 #include "editor/exportactions.h"
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
@@ -64,6 +67,7 @@
 #include <QStandardPaths>
 #include <QStyleFactory>
 #include <QTabBar>
+#include <QTabWidget>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
@@ -271,6 +275,7 @@ private slots:
     void opensANativeFile();
     void examplesOpenAsUntitledCopies();
     void startGuideShowsWhileNothingIsSelected();
+    void nestedGrafcetOpensInATab();
     void brokenFileLeavesTheModelUntouched();
     void editsMarkTheTitleModified();
     void undoActionNamesTheCommand();
@@ -818,6 +823,78 @@ void TestMainWindow::startGuideShowsWhileNothingIsSelected()
     auto* shown = m_window->findChild<UserGuide*>();
     QVERIFY(shown && shown->isVisible());
     shown->close();
+}
+
+// A step's nested GRAFCET opens in a tab beside the GEMMA chart, drawn from
+// its computed layout, from the Step dock, the chart's context menu or a
+// double-click; one tab per GRAFCET; the chart's tab stays; a new model
+// closes the tabs of GRAFCETs it does not have.
+void TestMainWindow::nestedGrafcetOpensInATab()
+{
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window->findChild<QAction*>(QStringLiteral("example_0"))->trigger(); // the drilling cell
+    const core::Grafcet* f1 = m_window->document()->model().grafcet("F1");
+    QVERIFY(f1);
+    QTabWidget* tabs = m_window->centralTabs();
+    QCOMPARE(tabs->count(), 1);
+    QVERIFY(!tabs->tabBar()->isVisible()); // the chart alone: no tab bar
+
+    // From the Step dock: its button shows for a step with a GRAFCET only.
+    m_window->selection()->select(ElementRef::step(QStringLiteral("A1")));
+    auto* button = m_window->findChild<QPushButton*>(QStringLiteral("openGrafcetButton"));
+    QVERIFY(button);
+    QVERIFY(!button->isVisibleTo(button->window()));
+    m_window->selection()->select(ElementRef::step(QStringLiteral("F1")));
+    QVERIFY(button->isVisibleTo(button->window()));
+    button->click();
+    QCOMPARE(tabs->count(), 2);
+    QVERIFY(tabs->tabBar()->isVisible());
+    QCOMPARE(tabs->tabText(1), QStringLiteral("F1 Normal production"));
+    GrafcetView* view = m_window->grafcetView(QStringLiteral("F1"));
+    QVERIFY(view);
+    QCOMPARE(tabs->currentWidget(), static_cast<QWidget*>(view));
+    GrafcetScene* scene = view->grafcetScene();
+    for (const core::GrafcetStep& step : f1->steps())
+        QVERIFY2(scene->stepItem(step.number), qPrintable(QString::number(step.number)));
+    bool edgeDrawn = false;
+    for (const core::GrafcetTransition& transition : f1->transitions()) {
+        GrafcetTransitionItem* item = scene->transitionItem(transition.number);
+        QVERIFY(item);
+        edgeDrawn = edgeDrawn || item->labelText().contains(QStringLiteral("↓"));
+    }
+    QVERIFY(edgeDrawn); // F1's FE PartPresent is drawn ↓PartPresent
+    QVERIFY(view->zoom() == 1.0); // readable at the chart's label size
+
+    // Again from the chart: the same tab, not a second one.
+    tabs->setCurrentIndex(0);
+    const QPoint f1OnChart =
+        m_window->chartView()->mapFromScene(m_window->chartScene()->stepItem(QStringLiteral("F1"))->sceneBoundingRect().center());
+    QTest::mouseDClick(m_window->chartView()->viewport(), Qt::LeftButton, {}, f1OnChart);
+    QCOMPARE(tabs->count(), 2);
+    QCOMPARE(tabs->currentWidget(), static_cast<QWidget*>(view));
+    QVERIFY(!m_window->openNestedGrafcet(QStringLiteral("A1"))); // A1 has none
+    QVERIFY(m_window->openNestedGrafcet(QStringLiteral("F2")));
+    QCOMPARE(tabs->count(), 3);
+
+    // Closing: a GRAFCET's tab closes, the chart's does not.
+    emit tabs->tabCloseRequested(0);
+    QCOMPARE(tabs->widget(0), static_cast<QWidget*>(m_window->chartView()));
+    emit tabs->tabCloseRequested(tabs->indexOf(m_window->grafcetView(QStringLiteral("F2"))));
+    QCOMPARE(tabs->count(), 2);
+
+    // A new model: F1 keeps its GRAFCET (the tab redraws it), F2 loses it.
+    core::Model changed = m_window->document()->model();
+    core::Grafcet grown = *f1;
+    core::GrafcetStep extra;
+    extra.number = 99;
+    QVERIFY(grown.addStep(extra).ok);
+    QVERIFY(changed.setGrafcet("F1", grown).ok);
+    m_window->document()->replaceModel(changed, QString(), core::ModelFormat::Native);
+    QVERIFY(m_window->grafcetView(QStringLiteral("F1")));
+    QVERIFY(m_window->grafcetView(QStringLiteral("F1"))->grafcetScene()->stepItem(99));
+    m_window->document()->replaceModel(core::Model(), QString(), core::ModelFormat::Native);
+    QCOMPARE(tabs->count(), 1);
 }
 
 void TestMainWindow::brokenFileLeavesTheModelUntouched()

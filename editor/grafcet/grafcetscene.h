@@ -1,0 +1,45 @@
+#pragma once
+
+#include "core/layout/grafcetlayout.h"
+
+#include <QGraphicsScene>
+#include <QHash>
+#include <QString>
+
+namespace editor {
+
+class Document;
+class GrafcetStepItem;
+class GrafcetTransitionItem;
+
+// The drawing of the nested GRAFCET of one GEMMA step, as IEC 60848 draws
+// it, from core::layoutGrafcet(): the step boxes with their actions, the
+// transition bars with their receptivities, and the links and branch lines
+// between them. It observes the Document and lays the drawing out again
+// whenever that GRAFCET changes; a GEMMA step without a GRAFCET shows an
+// empty scene.
+class GrafcetScene : public QGraphicsScene {
+    Q_OBJECT
+
+public:
+    GrafcetScene(Document* document, const QString& stepId, QObject* parent = nullptr);
+
+    const QString& stepId() const { return m_stepId; }
+    const core::GrafcetLayout& layout() const { return m_layout; }
+    GrafcetStepItem* stepItem(int number) const { return m_steps.value(number); }
+    GrafcetTransitionItem* transitionItem(int number) const { return m_transitions.value(number); }
+
+    // The width of `text` in the drawing's font, in scene units.
+    static double textWidth(std::string_view text);
+
+private:
+    void rebuild();
+
+    Document* m_document;
+    QString m_stepId;
+    core::GrafcetLayout m_layout;
+    QHash<int, GrafcetStepItem*> m_steps;
+    QHash<int, GrafcetTransitionItem*> m_transitions;
+};
+
+} // namespace editor

@@ -1,0 +1,51 @@
+#include "editor/grafcet/grafcettransitionitem.h"
+
+#include "editor/chart/chartstyle.h"
+#include "editor/chart/layoutconversion.h"
+
+#include <QPainter>
+#include <QRegularExpression>
+
+namespace editor {
+
+GrafcetTransitionItem::GrafcetTransitionItem(const core::GrafcetTransitionLayout& layout,
+                                             const std::string& receptivity, QGraphicsItem* parent)
+    : QGraphicsItem(parent)
+    , m_layout(layout)
+    , m_label(drawnReceptivity(QString::fromStdString(receptivity)))
+{
+    setZValue(chartstyle::kTransitionZ);
+    const QPointF bar = toQPointF(layout.barCenter);
+    const double half = core::kGrafcetBarLength / 2;
+    m_bounds = QRectF(bar.x() - half, bar.y() - chartstyle::kBarWidth, 2 * half, 2 * chartstyle::kBarWidth)
+                   .united(toQRectF(layout.labelRect))
+                   .adjusted(-2, -2, 2, 2);
+}
+
+QString GrafcetTransitionItem::drawnReceptivity(const QString& receptivity)
+{
+    static const QRegularExpression rising(QStringLiteral(R"(\bRE\s+)"));
+    static const QRegularExpression falling(QStringLiteral(R"(\bFE\s+)"));
+    QString text = receptivity.simplified();
+    text.replace(rising, QStringLiteral("↑"));
+    text.replace(falling, QStringLiteral("↓"));
+    return text;
+}
+
+QRectF GrafcetTransitionItem::boundingRect() const
+{
+    return m_bounds;
+}
+
+void GrafcetTransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
+{
+    painter->setRenderHint(QPainter::Antialiasing);
+    const QPointF bar = toQPointF(m_layout.barCenter);
+    const double half = core::kGrafcetBarLength / 2;
+    painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kBarWidth, Qt::SolidLine, Qt::FlatCap));
+    painter->drawLine(QLineF(bar.x() - half, bar.y(), bar.x() + half, bar.y()));
+    painter->setPen(chartstyle::labelColor());
+    chartstyle::drawText(painter, toQRectF(m_layout.labelRect), Qt::AlignLeft | Qt::AlignVCenter, m_label);
+}
+
+} // namespace editor

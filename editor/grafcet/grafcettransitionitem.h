@@ -1,0 +1,35 @@
+#pragma once
+
+#include "core/layout/grafcetlayout.h"
+
+#include <QGraphicsItem>
+#include <QString>
+
+namespace editor {
+
+// A transition of a nested GRAFCET: its bar across the link and its
+// receptivity to the right, edges written ↑ and ↓ as IEC 60848 draws them.
+class GrafcetTransitionItem : public QGraphicsItem {
+public:
+    enum { Type = QGraphicsItem::UserType + 11 };
+
+    GrafcetTransitionItem(const core::GrafcetTransitionLayout& layout, const std::string& receptivity,
+                          QGraphicsItem* parent = nullptr);
+
+    int type() const override { return Type; }
+    int number() const { return m_layout.number; }
+    // The receptivity as drawn: "↑PartPresent AND NOT X3".
+    const QString& labelText() const { return m_label; }
+    // "RE a" and "FE a" as ↑a and ↓a; the rest as written.
+    static QString drawnReceptivity(const QString& receptivity);
+
+    QRectF boundingRect() const override;
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+
+private:
+    core::GrafcetTransitionLayout m_layout;
+    QString m_label;
+    QRectF m_bounds;
+};
+
+} // namespace editor

@@ -1,0 +1,58 @@
+#include "editor/grafcet/grafcetview.h"
+
+#include "editor/grafcet/grafcetscene.h"
+
+#include <QScrollBar>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <utility>
+
+namespace editor {
+
+namespace {
+
+constexpr double kZoomStep = 1.25;
+constexpr double kMinZoom = 0.25;
+constexpr double kMaxZoom = 4.0;
+
+} // namespace
+
+GrafcetView::GrafcetView(GrafcetScene* scene, QWidget* parent)
+    : QGraphicsView(scene, parent)
+    , m_scene(scene)
+{
+    setRenderHint(QPainter::Antialiasing);
+    setFrameShape(QFrame::NoFrame);
+    setAlignment(Qt::AlignHCenter | Qt::AlignTop);
+    setBackgroundBrush(Qt::white);
+    setDragMode(QGraphicsView::ScrollHandDrag);
+    setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+}
+
+double GrafcetView::zoom() const
+{
+    return transform().m11();
+}
+
+void GrafcetView::showEvent(QShowEvent* event)
+{
+    QGraphicsView::showEvent(event);
+    if (std::exchange(m_shown, true))
+        return;
+    verticalScrollBar()->setValue(verticalScrollBar()->minimum());
+}
+
+void GrafcetView::wheelEvent(QWheelEvent* event)
+{
+    if (!(event->modifiers() & Qt::ControlModifier)) {
+        QGraphicsView::wheelEvent(event);
+        return;
+    }
+    const double factor = event->angleDelta().y() > 0 ? kZoomStep : 1 / kZoomStep;
+    const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
+    scale(target / zoom(), target / zoom());
+    event->accept();
+}
+
+} // namespace editor
