@@ -4,11 +4,9 @@
 #include "editor/chart/frameitem.h"
 #include "editor/chart/transitionitem.h"
 #include "editor/conditionnotes.h"
-
-#include "core/formats/fileio.h"
+#include "editor/exportfile.h"
 
 #include <QBuffer>
-#include <QFile>
 #include <QFileInfo>
 #include <QGraphicsItem>
 #include <QImage>
@@ -172,17 +170,6 @@ void renderPages(ChartScene& scene, QPainter& painter, QPagedPaintDevice& device
     }
 }
 
-// Writes through core's atomic writer, so a failed export never leaves half
-// a file in place of a good one.
-bool writeBytes(const QString& path, const QByteArray& bytes, QString* errorMessage)
-{
-    const core::Status status = core::writeFileAtomically(QFile::encodeName(path).toStdString(),
-                                                          std::string_view(bytes.constData(), bytes.size()));
-    if (!status && errorMessage)
-        *errorMessage = QString::fromStdString(status.message);
-    return status.ok;
-}
-
 } // namespace
 
 ChartExport::ChartExport(ChartScene& scene)
@@ -240,7 +227,7 @@ bool ChartExport::writeSvg(const QString& path, QString* errorMessage) const
         }
         renderPicture(m_scene, painter, list, 1.0);
     }
-    return writeBytes(path, buffer.data(), errorMessage);
+    return writeExportFile(path, buffer.data(), errorMessage);
 }
 
 bool ChartExport::writePng(const QString& path, QString* errorMessage, double scale) const
@@ -269,7 +256,7 @@ bool ChartExport::writePng(const QString& path, QString* errorMessage, double sc
             *errorMessage = tr("The PNG picture could not be encoded.");
         return false;
     }
-    return writeBytes(path, buffer.data(), errorMessage);
+    return writeExportFile(path, buffer.data(), errorMessage);
 }
 
 bool ChartExport::writePdf(const QString& path, QString* errorMessage) const
@@ -292,7 +279,7 @@ bool ChartExport::writePdf(const QString& path, QString* errorMessage) const
         const ExportNotes notes(m_scene);
         renderPages(m_scene, painter, writer, QSizeF(writer.width(), writer.height()), notes.notes());
     }
-    return writeBytes(path, buffer.data(), errorMessage);
+    return writeExportFile(path, buffer.data(), errorMessage);
 }
 
 bool ChartExport::print(QPrinter& printer) const

@@ -5,6 +5,8 @@
 #include "editor/diagnostictext.h"
 #include "editor/document.h"
 #include "editor/exportoptionsdialog.h"
+#include "editor/grafcet/grafcetexport.h"
+#include "editor/grafcet/grafcetscene.h"
 #include "editor/settings.h"
 
 #include "core/formats/fileio.h"
@@ -287,24 +289,46 @@ void ExportActions::exportChart()
         path += '.' + suffix;
         ChartExport::formatForPath(path, &format);
     }
-    ChartExport chart(m_scene);
-    chart.setTitle(QString::fromStdString(m_document.model().settings().name));
     QString error;
-    const bool ok = chart.write(path, format, &error);
+    const bool ok = writeChart(path, format, &error);
     reportResult(ok, path, error);
+}
+
+bool ExportActions::writeChart(const QString& path, ChartExport::Format format, QString* errorMessage) const
+{
+    const QString title = QString::fromStdString(m_document.model().settings().name);
+    if (GrafcetScene* grafcet = m_grafcetInFront ? m_grafcetInFront() : nullptr) {
+        GrafcetExport picture(*grafcet);
+        picture.setTitle(tr("%1, nested GRAFCET of %2").arg(title, grafcet->stepId()));
+        return picture.write(path, format, errorMessage);
+    }
+    ChartExport chart(m_scene);
+    chart.setTitle(title);
+    return chart.write(path, format, errorMessage);
 }
 
 void ExportActions::print()
 {
+    GrafcetScene* grafcet = m_grafcetInFront ? m_grafcetInFront() : nullptr;
     QPrinter printer(QPrinter::HighResolution);
-    printer.setPageOrientation(QPageLayout::Landscape);
+    // The GEMMA sheet is wider than high; a GRAFCET goes down.
+    printer.setPageOrientation(grafcet ? QPageLayout::Portrait : QPageLayout::Landscape);
     QPrintDialog dialog(&printer, m_window);
     dialog.setWindowTitle(tr("Print Chart"));
     if (dialog.exec() != QDialog::Accepted)
         return;
-    ChartExport chart(m_scene);
-    chart.setTitle(QString::fromStdString(m_document.model().settings().name));
-    if (!chart.print(printer))
+    const QString title = QString::fromStdString(m_document.model().settings().name);
+    bool printed = false;
+    if (grafcet) {
+        GrafcetExport picture(*grafcet);
+        picture.setTitle(tr("%1, nested GRAFCET of %2").arg(title, grafcet->stepId()));
+        printed = picture.print(printer);
+    } else {
+        ChartExport chart(m_scene);
+        chart.setTitle(title);
+        printed = chart.print(printer);
+    }
+    if (!printed)
         QMessageBox::critical(m_window, tr("Print Chart"), tr("The printer could not be started."));
 }
 

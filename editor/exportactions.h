@@ -1,9 +1,13 @@
 #pragma once
 
+#include "editor/chartexport.h"
+
 #include "core/checks/diagnostic.h"
 #include "core/model/model.h"
 
 #include <QObject>
+
+#include <functional>
 #include <QString>
 #include <QStringList>
 
@@ -15,6 +19,7 @@ class QWidget;
 namespace editor {
 
 class ChartScene;
+class GrafcetScene;
 class Document;
 class Settings;
 
@@ -42,6 +47,12 @@ public:
     bool writeGGGenerator(const QString& path, QString* errorMessage) const;
 
     void retranslate();
+
+    // Export Chart and Print take the nested GRAFCET in front when there is
+    // one (the window says which), the GEMMA chart otherwise.
+    void setGrafcetInFront(std::function<GrafcetScene*()> grafcetInFront) { m_grafcetInFront = std::move(grafcetInFront); }
+    // Writes the picture in front; Export Chart's work after its dialog.
+    bool writeChart(const QString& path, ChartExport::Format format, QString* errorMessage) const;
 
     // The question asked before exporting code from a model with errors:
     // their count and the first few. True when there are none or the user
@@ -79,6 +90,7 @@ private:
 
     Document& m_document;
     ChartScene& m_scene;
+    std::function<GrafcetScene*()> m_grafcetInFront;
     Settings& m_settings;
     QWidget* m_window;
     QAction* m_plcOpen;

@@ -471,6 +471,10 @@ void MainWindow::createActions()
     m_recentFiles = new RecentFiles(*m_settings, this);
     connect(m_recentFiles, &RecentFiles::openRequested, this, &MainWindow::openFile);
     m_exportActions = new ExportActions(*m_document, *m_scene, *m_settings, this);
+    m_exportActions->setGrafcetInFront([this]() -> GrafcetScene* {
+        auto* view = qobject_cast<GrafcetView*>(m_centralTabs->currentWidget());
+        return view ? view->grafcetScene() : nullptr;
+    });
     m_chartContextMenu = new ChartContextMenu(
         *m_document, *m_selection,
         ChartContextMenu::SheetActions{m_showHiddenAction, m_fitAction, m_exportActions->chartAction()}, this);

@@ -582,6 +582,29 @@
     </message>
 </context>
 <context>
+    <name>GrafcetExport</name>
+    <message>
+        <source>Nested GRAFCET drawn by GG Studio</source>
+        <translation>Eingebetteter GRAFCET, gezeichnet mit GG Studio</translation>
+    </message>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>Das SVG-Bild konnte nicht gezeichnet werden.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Nicht genug Speicher für ein Bild mit %1 × %2 Pixeln.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>Das PNG-Bild konnte nicht kodiert werden.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Das PDF-Dokument konnte nicht gezeichnet werden.</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -1523,6 +1546,10 @@
     <message>
         <source>The GG-Generator file will leave out part of this model. Your model and its own file keep everything.</source>
         <translation>Die GG-Generator-Datei lässt einen Teil dieses Modells weg. Ihr Modell und seine eigene Datei behalten alles.</translation>
+    </message>
+    <message>
+        <source>%1, nested GRAFCET of %2</source>
+        <translation>%1, eingebetteter GRAFCET von %2</translation>
     </message>
 </context>
 <context>

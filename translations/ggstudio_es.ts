@@ -582,6 +582,29 @@
     </message>
 </context>
 <context>
+    <name>GrafcetExport</name>
+    <message>
+        <source>Nested GRAFCET drawn by GG Studio</source>
+        <translation>GRAFCET anidado dibujado con GG Studio</translation>
+    </message>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>No se ha podido dibujar la imagen SVG.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>No hay memoria suficiente para una imagen de %1 × %2 píxeles.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>No se ha podido codificar la imagen PNG.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>No se ha podido dibujar el documento PDF.</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -1523,6 +1546,10 @@
     <message>
         <source>The GG-Generator file will leave out part of this model. Your model and its own file keep everything.</source>
         <translation>El archivo de GG-Generator dejará fuera parte de este modelo. Su modelo y su propio archivo lo conservan todo.</translation>
+    </message>
+    <message>
+        <source>%1, nested GRAFCET of %2</source>
+        <translation>%1, GRAFCET anidado de %2</translation>
     </message>
 </context>
 <context>

@@ -582,6 +582,29 @@
     </message>
 </context>
 <context>
+    <name>GrafcetExport</name>
+    <message>
+        <source>Nested GRAFCET drawn by GG Studio</source>
+        <translation>GRAFCET imbriqué dessiné avec GG Studio</translation>
+    </message>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>L&apos;image SVG n&apos;a pas pu être dessinée.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Mémoire insuffisante pour une image de %1 × %2 pixels.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>L&apos;image PNG n&apos;a pas pu être encodée.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Le document PDF n&apos;a pas pu être dessiné.</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -1523,6 +1546,10 @@
     <message>
         <source>The GG-Generator file will leave out part of this model. Your model and its own file keep everything.</source>
         <translation>Le fichier GG-Generator laissera de côté une partie de ce modèle. Votre modèle et son propre fichier conservent tout.</translation>
+    </message>
+    <message>
+        <source>%1, nested GRAFCET of %2</source>
+        <translation>%1, GRAFCET imbriqué de %2</translation>
     </message>
 </context>
 <context>

@@ -582,6 +582,29 @@
     </message>
 </context>
 <context>
+    <name>GrafcetExport</name>
+    <message>
+        <source>Nested GRAFCET drawn by GG Studio</source>
+        <translation>GRAFCET annidato disegnato con GG Studio</translation>
+    </message>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>Impossibile disegnare l&apos;immagine SVG.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Memoria insufficiente per un&apos;immagine di %1 × %2 pixel.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>Impossibile codificare l&apos;immagine PNG.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Impossibile disegnare il documento PDF.</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -1523,6 +1546,10 @@
     <message>
         <source>The GG-Generator file will leave out part of this model. Your model and its own file keep everything.</source>
         <translation>Il file GG-Generator tralascerà una parte di questo modello. Il modello e il suo file conservano tutto.</translation>
+    </message>
+    <message>
+        <source>%1, nested GRAFCET of %2</source>
+        <translation>%1, GRAFCET annidato di %2</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 // The chart exports (SVG, PNG, PDF, print) never cut a condition short: the
 // numbering of the conditions that need a note, the wrapping and paging of
-// the Conditions list, and the files written.
+// the Conditions list, and the files written. A nested GRAFCET exports too,
+// over as many pages as it needs.
 
 #include "editor/chart/chartscene.h"
 #include "editor/chart/transitionitem.h"
@@ -9,7 +10,11 @@
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/conditionnotes.h"
 #include "editor/document.h"
+#include "editor/grafcet/grafcetexport.h"
+#include "editor/grafcet/grafcetscene.h"
 #include "editor/selection.h"
+
+#include "core/formats/modelfiles.h"
 
 #include <QFile>
 #include <QImage>
@@ -19,6 +24,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QtMath>
 
 using namespace editor;
 
@@ -69,6 +75,10 @@ private slots:
     void listSharesThePageUnlessTheChartShrinksTooMuch();
     void sceneNotesFollowVisibility();
 
+    void grafcetPagesBreakBetweenElements();
+    void grafcetExportsAsSvgPngAndPdf();
+    void longGrafcetGoesOverSeveralReadablePages();
+
     void svgListsALongConditionInFull();
     void svgOfShortConditionsIsUnchanged();
     void pngGrowsByTheList();
@@ -97,6 +107,98 @@ void TestChartExport::cleanup()
     delete m_scene;
     delete m_selection;
     delete m_document;
+}
+
+namespace {
+
+// A sequence of `steps` steps, each with an action, that loops back to step 1.
+core::Grafcet longSequence(int steps)
+{
+    core::Grafcet grafcet;
+    for (int n = 1; n <= steps; ++n) {
+        core::GrafcetStep step;
+        step.number = n;
+        step.initial = n == 1;
+        step.actions.push_back({core::ActionTiming::Continuous, QStringLiteral("Out%1").arg(n).toStdString()});
+        (void)grafcet.addStep(step);
+    }
+    for (int n = 1; n <= steps; ++n) {
+        core::GrafcetTransition transition;
+        transition.number = n;
+        transition.upstream = {n};
+        transition.downstream = {n < steps ? n + 1 : 1};
+        transition.receptivity = QStringLiteral("Go%1").arg(n).toStdString();
+        (void)grafcet.addTransition(transition);
+    }
+    return grafcet;
+}
+
+int pdfPages(const QString& text)
+{
+    return int(text.count(QLatin1Char('\f'))) + (text.endsWith(QLatin1Char('\f')) ? 0 : 1);
+}
+
+} // namespace
+
+void TestChartExport::grafcetPagesBreakBetweenElements()
+{
+    // A page 100 high would cut the element from 90 to 130: it starts the next page.
+    QCOMPARE(GrafcetExport::pageStarts({{90, 130}}, 300, 100), (QList<double>{0, 89, 189, 289}));
+    // An element taller than half a page is cut rather than looped on.
+    QCOMPARE(GrafcetExport::pageStarts({{10, 200}}, 250, 100), (QList<double>{0, 100, 200}));
+    QCOMPARE(GrafcetExport::pageStarts({}, 80, 100), (QList<double>{0}));
+}
+
+void TestChartExport::grafcetExportsAsSvgPngAndPdf()
+{
+    const core::LoadedModel example = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    QVERIFY(example.ok());
+    m_document->replaceModel(*example.model, QString(), core::ModelFormat::Native);
+    GrafcetScene scene(m_document, QStringLiteral("F1"));
+    GrafcetExport picture(scene);
+    QString error;
+    const QString svg = m_files.filePath(QStringLiteral("f1.svg"));
+    QVERIFY2(picture.write(svg, ChartExport::Format::Svg, &error), qPrintable(error));
+    const QByteArray svgText = readAll(svg);
+    QVERIFY(svgText.contains("DrillLow"));
+    QVERIFY(svgText.contains("PartPresent AND Unclamped"));
+    QVERIFY(!svgText.contains("Stop procedures")); // the GRAFCET, not the GEMMA sheet
+
+    const QString png = m_files.filePath(QStringLiteral("f1.png"));
+    QVERIFY2(picture.write(png, ChartExport::Format::Png, &error), qPrintable(error));
+    const QImage image(png);
+    QCOMPARE(image.height(), qCeil(scene.sceneRect().height() * 2));
+
+    const QString pdf = m_files.filePath(QStringLiteral("f1.pdf"));
+    QVERIFY2(picture.write(pdf, ChartExport::Format::Pdf, &error), qPrintable(error));
+    const QString text = pdfText(pdf);
+    if (text.isEmpty())
+        QSKIP("pdftotext is not installed");
+    QVERIFY(text.contains(QStringLiteral("DrillLow")));
+    QCOMPARE(pdfPages(text), 1);
+}
+
+void TestChartExport::longGrafcetGoesOverSeveralReadablePages()
+{
+    core::Model model = m_document->model();
+    QVERIFY(model.setStepType("F1", core::StepType::Macro).ok);
+    QVERIFY(model.setGrafcet("F1", longSequence(60)).ok);
+    m_document->replaceModel(model, QString(), core::ModelFormat::Native);
+    GrafcetScene scene(m_document, QStringLiteral("F1"));
+    QCOMPARE(scene.layout().steps.size(), std::size_t(60));
+    const QString pdf = m_files.filePath(QStringLiteral("long.pdf"));
+    QString error;
+    QVERIFY2(GrafcetExport(scene).write(pdf, ChartExport::Format::Pdf, &error), qPrintable(error));
+    const QString text = pdfText(pdf);
+    if (text.isEmpty())
+        QSKIP("pdftotext is not installed");
+    QVERIFY2(pdfPages(text) >= 3, qPrintable(QString::number(pdfPages(text))));
+    // Nothing lost across the page breaks, and no step cut by one: every
+    // receptivity and every action is there once.
+    for (int n = 1; n <= 60; ++n) {
+        QCOMPARE(text.count(QRegularExpression(QStringLiteral("\\bGo%1\\b").arg(n))), 1);
+        QCOMPARE(text.count(QRegularExpression(QStringLiteral("\\bOut%1\\b").arg(n))), 1);
+    }
 }
 
 QString TestChartExport::exportTo(const QString& name)

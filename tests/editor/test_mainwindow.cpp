@@ -866,6 +866,23 @@ void TestMainWindow::nestedGrafcetOpensInATab()
     QVERIFY(edgeDrawn); // F1's FE PartPresent is drawn ↓PartPresent
     QVERIFY(view->zoom() == 1.0); // readable at the chart's label size
 
+    // Export Chart writes the picture in front: this GRAFCET, then the GEMMA sheet.
+    QTemporaryDir pictures;
+    QString error;
+    const QString grafcetSvg = pictures.filePath(QStringLiteral("f1.svg"));
+    QVERIFY2(m_window->exportActions()->writeChart(grafcetSvg, ChartExport::Format::Svg, &error), qPrintable(error));
+    QFile grafcetFile(grafcetSvg);
+    QVERIFY(grafcetFile.open(QIODevice::ReadOnly));
+    const QByteArray grafcetPicture = grafcetFile.readAll();
+    QVERIFY(grafcetPicture.contains("DrillLow") && !grafcetPicture.contains("Stop procedures"));
+    tabs->setCurrentIndex(0);
+    const QString chartSvg = pictures.filePath(QStringLiteral("chart.svg"));
+    QVERIFY2(m_window->exportActions()->writeChart(chartSvg, ChartExport::Format::Svg, &error), qPrintable(error));
+    QFile chartFile(chartSvg);
+    QVERIFY(chartFile.open(QIODevice::ReadOnly));
+    QVERIFY(chartFile.readAll().contains("Stop procedures"));
+    tabs->setCurrentWidget(view);
+
     // Again from the chart: the same tab, not a second one.
     tabs->setCurrentIndex(0);
     const QPoint f1OnChart =

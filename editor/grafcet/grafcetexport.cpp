@@ -1,0 +1,208 @@
+#include "editor/grafcet/grafcetexport.h"
+
+#include "editor/chart/chartstyle.h"
+#include "editor/exportfile.h"
+#include "editor/grafcet/grafcetscene.h"
+#include "editor/grafcet/grafcetstepitem.h"
+#include "editor/grafcet/grafcettransitionitem.h"
+
+#include <QBuffer>
+#include <QImage>
+#include <QPagedPaintDevice>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QPrinter>
+#include <QSvgGenerator>
+
+#include <algorithm>
+#include <cmath>
+
+namespace editor {
+
+namespace {
+
+constexpr double kMinimumTextPoints = 8; // the labels on paper
+
+QRectF drawingRect(const GrafcetScene& scene)
+{
+    return scene.sceneRect();
+}
+
+// The drawing's part `source` into `target`, on white.
+void render(GrafcetScene& scene, QPainter& painter, const QRectF& target, const QRectF& source)
+{
+    painter.setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing | QPainter::SmoothPixmapTransform);
+    painter.fillRect(target, Qt::white);
+    scene.render(&painter, target, source, Qt::KeepAspectRatio);
+}
+
+// The vertical extent of every step (with its actions) and transition (with
+// its receptivity), as their items paint them, in the drawing's coordinates
+// from its top: where a page must not break. An item that reaches into a
+// page is drawn on it, clipped: its text would be on both pages.
+QList<QPair<double, double>> elementExtents(const GrafcetScene& scene)
+{
+    QList<QPair<double, double>> extents;
+    const double top = drawingRect(scene).top();
+    for (const core::GrafcetStepLayout& step : scene.layout().steps) {
+        const QRectF painted = scene.stepItem(step.number)->sceneBoundingRect();
+        extents.push_back({painted.top() - top, painted.bottom() - top});
+    }
+    for (const core::GrafcetTransitionLayout& transition : scene.layout().transitions) {
+        if (const GrafcetTransitionItem* item = scene.transitionItem(transition.number)) {
+            const QRectF painted = item->sceneBoundingRect();
+            extents.push_back({painted.top() - top, painted.bottom() - top});
+        }
+    }
+    return extents;
+}
+
+} // namespace
+
+GrafcetExport::GrafcetExport(GrafcetScene& scene)
+    : m_scene(scene)
+{
+}
+
+bool GrafcetExport::write(const QString& path, ChartExport::Format format, QString* errorMessage) const
+{
+    switch (format) {
+    case ChartExport::Format::Svg:
+        return writeSvg(path, errorMessage);
+    case ChartExport::Format::Png:
+        return writePng(path, errorMessage);
+    case ChartExport::Format::Pdf:
+        return writePdf(path, errorMessage);
+    }
+    return false;
+}
+
+bool GrafcetExport::writeSvg(const QString& path, QString* errorMessage) const
+{
+    const QRectF drawing = drawingRect(m_scene);
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    QSvgGenerator generator;
+    generator.setOutputDevice(&buffer);
+    generator.setTitle(m_title);
+    generator.setDescription(tr("Nested GRAFCET drawn by GG Studio"));
+    generator.setSize(QSize(int(std::ceil(drawing.width())), int(std::ceil(drawing.height()))));
+    generator.setViewBox(QRectF(QPointF(0, 0), drawing.size()));
+    {
+        QPainter painter;
+        if (!painter.begin(&generator)) {
+            if (errorMessage)
+                *errorMessage = tr("The SVG picture could not be drawn.");
+            return false;
+        }
+        render(m_scene, painter, QRectF(QPointF(0, 0), drawing.size()), drawing);
+    }
+    return writeExportFile(path, buffer.data(), errorMessage);
+}
+
+bool GrafcetExport::writePng(const QString& path, QString* errorMessage, double scale) const
+{
+    const QRectF drawing = drawingRect(m_scene);
+    const QSizeF size = drawing.size() * scale;
+    QImage image(QSize(int(std::ceil(size.width())), int(std::ceil(size.height()))), QImage::Format_ARGB32);
+    if (image.isNull()) {
+        if (errorMessage)
+            *errorMessage = tr("Not enough memory for a picture of %1 × %2 pixels.")
+                                .arg(int(size.width()))
+                                .arg(int(size.height()));
+        return false;
+    }
+    image.fill(Qt::white);
+    {
+        QPainter painter(&image);
+        render(m_scene, painter, QRectF(QPointF(0, 0), size), drawing);
+    }
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    if (!image.save(&buffer, "PNG")) {
+        if (errorMessage)
+            *errorMessage = tr("The PNG picture could not be encoded.");
+        return false;
+    }
+    return writeExportFile(path, buffer.data(), errorMessage);
+}
+
+bool GrafcetExport::writePdf(const QString& path, QString* errorMessage) const
+{
+    QBuffer buffer;
+    buffer.open(QIODevice::WriteOnly);
+    {
+        QPdfWriter writer(&buffer);
+        writer.setTitle(m_title);
+        writer.setCreator(QStringLiteral("GG Studio"));
+        writer.setPageSize(QPageSize(QPageSize::A4));
+        writer.setPageOrientation(QPageLayout::Portrait);
+        writer.setPageMargins(QMarginsF(10, 10, 10, 10), QPageLayout::Millimeter);
+        QPainter painter;
+        if (!painter.begin(&writer)) {
+            if (errorMessage)
+                *errorMessage = tr("The PDF document could not be drawn.");
+            return false;
+        }
+        renderPages(painter, writer, QSizeF(writer.width(), writer.height()), writer.resolution() / 72.0);
+    }
+    return writeExportFile(path, buffer.data(), errorMessage);
+}
+
+bool GrafcetExport::print(QPrinter& printer) const
+{
+    printer.setDocName(m_title);
+    QPainter painter;
+    if (!painter.begin(&printer))
+        return false;
+    renderPages(painter, printer, QSizeF(printer.width(), printer.height()), printer.resolution() / 72.0);
+    return true;
+}
+
+QList<double> GrafcetExport::pageStarts(const QList<QPair<double, double>>& elements, double drawingHeight,
+                                        double pageHeight)
+{
+    QList<double> starts{0};
+    while (starts.back() + pageHeight < drawingHeight) {
+        const double start = starts.back();
+        double end = start + pageHeight;
+        // Up above every element the break would cut, but never above half
+        // the page: an element taller than that is cut rather than looped on.
+        for (bool moved = true; moved;) {
+            moved = false;
+            for (const auto& [top, bottom] : elements) {
+                if (top < end && end < bottom && top - 1 > start + pageHeight / 2) {
+                    end = top - 1;
+                    moved = true;
+                }
+            }
+        }
+        starts.push_back(end);
+    }
+    return starts;
+}
+
+void GrafcetExport::renderPages(QPainter& painter, QPagedPaintDevice& device, const QSizeF& page,
+                                double dotsPerPoint) const
+{
+    const QRectF drawing = drawingRect(m_scene);
+    const double fitPage = std::min(page.width() / drawing.width(), page.height() / drawing.height());
+    const double fitWidth = page.width() / drawing.width();
+    const double readable = kMinimumTextPoints * dotsPerPoint / chartstyle::kFontSize;
+    // One page when it stays readable; else the readable size (or the
+    // page's width when even that is too wide) over several pages.
+    const double scale = fitPage >= readable ? fitPage : std::min(readable, fitWidth);
+    const QList<double> starts = pageStarts(elementExtents(m_scene), drawing.height(), page.height() / scale);
+    for (qsizetype i = 0; i < starts.size(); ++i) {
+        if (i > 0)
+            device.newPage();
+        const double top = starts[i];
+        const double bottom = i + 1 < starts.size() ? starts[i + 1] : drawing.height();
+        const QRectF source(drawing.left(), drawing.top() + top, drawing.width(), bottom - top);
+        const QRectF target((page.width() - drawing.width() * scale) / 2, 0, drawing.width() * scale,
+                            (bottom - top) * scale);
+        render(m_scene, painter, target, source);
+    }
+}
+
+} // namespace editor
