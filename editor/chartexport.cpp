@@ -6,18 +6,15 @@
 #include "editor/conditionnotes.h"
 #include "editor/exportfile.h"
 
-#include <QBuffer>
 #include <QFileInfo>
 #include <QGraphicsItem>
-#include <QImage>
 #include <QPagedPaintDevice>
 #include <QPainter>
-#include <QPdfWriter>
 #include <QPrinter>
 #include <QSignalBlocker>
-#include <QSvgGenerator>
 
-#include <cmath>
+#include <utility>
+
 
 namespace editor {
 
@@ -209,25 +206,10 @@ bool ChartExport::writeSvg(const QString& path, QString* errorMessage) const
     const ExportNotes notes(m_scene);
     const QRectF paper = paperRect(m_scene);
     const ConditionList list = listUnder(m_scene, notes.notes());
-    const QSizeF picture(paper.width(), paper.height() + list.height());
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    QSvgGenerator generator;
-    generator.setOutputDevice(&buffer);
-    generator.setTitle(m_title);
-    generator.setDescription(tr("GEMMA-GRAFCET chart drawn by GG Studio"));
-    generator.setSize(QSize(int(std::ceil(picture.width())), int(std::ceil(picture.height()))));
-    generator.setViewBox(QRectF(QPointF(0, 0), picture));
-    {
-        QPainter painter;
-        if (!painter.begin(&generator)) {
-            if (errorMessage)
-                *errorMessage = tr("The SVG picture could not be drawn.");
-            return false;
-        }
-        renderPicture(m_scene, painter, list, 1.0);
-    }
-    return writeExportFile(path, buffer.data(), errorMessage);
+    return PictureFile::writeSvg(
+        path, QSizeF(paper.width(), paper.height() + list.height()), m_title,
+        tr("GEMMA-GRAFCET chart drawn by GG Studio"),
+        [&](QPainter& painter) { renderPicture(m_scene, painter, list, 1.0); }, errorMessage);
 }
 
 bool ChartExport::writePng(const QString& path, QString* errorMessage, double scale) const
@@ -235,51 +217,20 @@ bool ChartExport::writePng(const QString& path, QString* errorMessage, double sc
     const ExportNotes notes(m_scene);
     const QRectF sheet = paperRect(m_scene);
     const ConditionList list = listUnder(m_scene, notes.notes());
-    const QSizeF paper = QSizeF(sheet.width(), sheet.height() + list.height()) * scale;
-    QImage image(QSize(int(std::ceil(paper.width())), int(std::ceil(paper.height()))), QImage::Format_ARGB32);
-    if (image.isNull()) {
-        if (errorMessage)
-            *errorMessage = tr("Not enough memory for a picture of %1 × %2 pixels.")
-                                .arg(int(paper.width()))
-                                .arg(int(paper.height()));
-        return false;
-    }
-    image.fill(Qt::white);
-    {
-        QPainter painter(&image);
-        renderPicture(m_scene, painter, list, scale);
-    }
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    if (!image.save(&buffer, "PNG")) {
-        if (errorMessage)
-            *errorMessage = tr("The PNG picture could not be encoded.");
-        return false;
-    }
-    return writeExportFile(path, buffer.data(), errorMessage);
+    return PictureFile::writePng(
+        path, QSizeF(sheet.width(), sheet.height() + list.height()) * scale,
+        [&](QPainter& painter) { renderPicture(m_scene, painter, list, scale); }, errorMessage);
 }
 
 bool ChartExport::writePdf(const QString& path, QString* errorMessage) const
 {
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    {
-        QPdfWriter writer(&buffer);
-        writer.setTitle(m_title);
-        writer.setCreator(QStringLiteral("GG Studio"));
-        writer.setPageSize(QPageSize(QPageSize::A4));
-        writer.setPageOrientation(QPageLayout::Landscape);
-        writer.setPageMargins(QMarginsF(10, 10, 10, 10), QPageLayout::Millimeter);
-        QPainter painter;
-        if (!painter.begin(&writer)) {
-            if (errorMessage)
-                *errorMessage = tr("The PDF document could not be drawn.");
-            return false;
-        }
-        const ExportNotes notes(m_scene);
-        renderPages(m_scene, painter, writer, QSizeF(writer.width(), writer.height()), notes.notes());
-    }
-    return writeExportFile(path, buffer.data(), errorMessage);
+    return PictureFile::writePdf(
+        path, m_title, QPageLayout::Landscape,
+        [this](QPainter& painter, QPagedPaintDevice& device, const QSizeF& page, double) {
+            const ExportNotes notes(m_scene);
+            renderPages(m_scene, painter, device, page, notes.notes());
+        },
+        errorMessage);
 }
 
 bool ChartExport::print(QPrinter& printer) const

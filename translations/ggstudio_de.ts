@@ -14,22 +14,6 @@
         <source>GEMMA-GRAFCET chart drawn by GG Studio</source>
         <translation>GEMMA-GRAFCET-Diagramm, gezeichnet mit GG Studio</translation>
     </message>
-    <message>
-        <source>The SVG picture could not be drawn.</source>
-        <translation>Das SVG-Bild konnte nicht gezeichnet werden.</translation>
-    </message>
-    <message>
-        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
-        <translation>Nicht genug Speicher für ein Bild mit %1 × %2 Pixeln.</translation>
-    </message>
-    <message>
-        <source>The PNG picture could not be encoded.</source>
-        <translation>Das PNG-Bild konnte nicht kodiert werden.</translation>
-    </message>
-    <message>
-        <source>The PDF document could not be drawn.</source>
-        <translation>Das PDF-Dokument konnte nicht gezeichnet werden.</translation>
-    </message>
 </context>
 <context>
     <name>ConditionErrorText</name>
@@ -587,22 +571,6 @@
         <source>Nested GRAFCET drawn by GG Studio</source>
         <translation>Eingebetteter GRAFCET, gezeichnet mit GG Studio</translation>
     </message>
-    <message>
-        <source>The SVG picture could not be drawn.</source>
-        <translation>Das SVG-Bild konnte nicht gezeichnet werden.</translation>
-    </message>
-    <message>
-        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
-        <translation>Nicht genug Speicher für ein Bild mit %1 × %2 Pixeln.</translation>
-    </message>
-    <message>
-        <source>The PNG picture could not be encoded.</source>
-        <translation>Das PNG-Bild konnte nicht kodiert werden.</translation>
-    </message>
-    <message>
-        <source>The PDF document could not be drawn.</source>
-        <translation>Das PDF-Dokument konnte nicht gezeichnet werden.</translation>
-    </message>
 </context>
 <context>
     <name>MoveVariableCommand</name>
@@ -623,6 +591,25 @@
             <numerusform>%n Variable einfügen</numerusform>
             <numerusform>%n Variablen einfügen</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>PictureFile</name>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>Das SVG-Bild konnte nicht gezeichnet werden.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Nicht genug Speicher für ein Bild mit %1 × %2 Pixeln.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>Das PNG-Bild konnte nicht kodiert werden.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Das PDF-Dokument konnte nicht gezeichnet werden.</translation>
     </message>
 </context>
 <context>

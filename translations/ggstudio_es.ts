@@ -14,22 +14,6 @@
         <source>GEMMA-GRAFCET chart drawn by GG Studio</source>
         <translation>Diagrama GEMMA-GRAFCET dibujado con GG Studio</translation>
     </message>
-    <message>
-        <source>The SVG picture could not be drawn.</source>
-        <translation>No se ha podido dibujar la imagen SVG.</translation>
-    </message>
-    <message>
-        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
-        <translation>No hay memoria suficiente para una imagen de %1 × %2 píxeles.</translation>
-    </message>
-    <message>
-        <source>The PNG picture could not be encoded.</source>
-        <translation>No se ha podido codificar la imagen PNG.</translation>
-    </message>
-    <message>
-        <source>The PDF document could not be drawn.</source>
-        <translation>No se ha podido dibujar el documento PDF.</translation>
-    </message>
 </context>
 <context>
     <name>ConditionErrorText</name>
@@ -587,22 +571,6 @@
         <source>Nested GRAFCET drawn by GG Studio</source>
         <translation>GRAFCET anidado dibujado con GG Studio</translation>
     </message>
-    <message>
-        <source>The SVG picture could not be drawn.</source>
-        <translation>No se ha podido dibujar la imagen SVG.</translation>
-    </message>
-    <message>
-        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
-        <translation>No hay memoria suficiente para una imagen de %1 × %2 píxeles.</translation>
-    </message>
-    <message>
-        <source>The PNG picture could not be encoded.</source>
-        <translation>No se ha podido codificar la imagen PNG.</translation>
-    </message>
-    <message>
-        <source>The PDF document could not be drawn.</source>
-        <translation>No se ha podido dibujar el documento PDF.</translation>
-    </message>
 </context>
 <context>
     <name>MoveVariableCommand</name>
@@ -623,6 +591,25 @@
             <numerusform>Pegar %n variable</numerusform>
             <numerusform>Pegar %n variables</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>PictureFile</name>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>No se ha podido dibujar la imagen SVG.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>No hay memoria suficiente para una imagen de %1 × %2 píxeles.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>No se ha podido codificar la imagen PNG.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>No se ha podido dibujar el documento PDF.</translation>
     </message>
 </context>
 <context>

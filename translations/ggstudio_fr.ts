@@ -14,22 +14,6 @@
         <source>GEMMA-GRAFCET chart drawn by GG Studio</source>
         <translation>Diagramme GEMMA-GRAFCET dessiné par GG Studio</translation>
     </message>
-    <message>
-        <source>The SVG picture could not be drawn.</source>
-        <translation>L&apos;image SVG n&apos;a pas pu être dessinée.</translation>
-    </message>
-    <message>
-        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
-        <translation>Mémoire insuffisante pour une image de %1 × %2 pixels.</translation>
-    </message>
-    <message>
-        <source>The PNG picture could not be encoded.</source>
-        <translation>L&apos;image PNG n&apos;a pas pu être encodée.</translation>
-    </message>
-    <message>
-        <source>The PDF document could not be drawn.</source>
-        <translation>Le document PDF n&apos;a pas pu être dessiné.</translation>
-    </message>
 </context>
 <context>
     <name>ConditionErrorText</name>
@@ -587,22 +571,6 @@
         <source>Nested GRAFCET drawn by GG Studio</source>
         <translation>GRAFCET imbriqué dessiné avec GG Studio</translation>
     </message>
-    <message>
-        <source>The SVG picture could not be drawn.</source>
-        <translation>L&apos;image SVG n&apos;a pas pu être dessinée.</translation>
-    </message>
-    <message>
-        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
-        <translation>Mémoire insuffisante pour une image de %1 × %2 pixels.</translation>
-    </message>
-    <message>
-        <source>The PNG picture could not be encoded.</source>
-        <translation>L&apos;image PNG n&apos;a pas pu être encodée.</translation>
-    </message>
-    <message>
-        <source>The PDF document could not be drawn.</source>
-        <translation>Le document PDF n&apos;a pas pu être dessiné.</translation>
-    </message>
 </context>
 <context>
     <name>MoveVariableCommand</name>
@@ -623,6 +591,25 @@
             <numerusform>Coller %n variable</numerusform>
             <numerusform>Coller %n variables</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>PictureFile</name>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>L&apos;image SVG n&apos;a pas pu être dessinée.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Mémoire insuffisante pour une image de %1 × %2 pixels.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>L&apos;image PNG n&apos;a pas pu être encodée.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Le document PDF n&apos;a pas pu être dessiné.</translation>
     </message>
 </context>
 <context>

@@ -14,22 +14,6 @@
         <source>GEMMA-GRAFCET chart drawn by GG Studio</source>
         <translation>Diagramma GEMMA-GRAFCET disegnato con GG Studio</translation>
     </message>
-    <message>
-        <source>The SVG picture could not be drawn.</source>
-        <translation>Impossibile disegnare l&apos;immagine SVG.</translation>
-    </message>
-    <message>
-        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
-        <translation>Memoria insufficiente per un&apos;immagine di %1 × %2 pixel.</translation>
-    </message>
-    <message>
-        <source>The PNG picture could not be encoded.</source>
-        <translation>Impossibile codificare l&apos;immagine PNG.</translation>
-    </message>
-    <message>
-        <source>The PDF document could not be drawn.</source>
-        <translation>Impossibile disegnare il documento PDF.</translation>
-    </message>
 </context>
 <context>
     <name>ConditionErrorText</name>
@@ -587,22 +571,6 @@
         <source>Nested GRAFCET drawn by GG Studio</source>
         <translation>GRAFCET annidato disegnato con GG Studio</translation>
     </message>
-    <message>
-        <source>The SVG picture could not be drawn.</source>
-        <translation>Impossibile disegnare l&apos;immagine SVG.</translation>
-    </message>
-    <message>
-        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
-        <translation>Memoria insufficiente per un&apos;immagine di %1 × %2 pixel.</translation>
-    </message>
-    <message>
-        <source>The PNG picture could not be encoded.</source>
-        <translation>Impossibile codificare l&apos;immagine PNG.</translation>
-    </message>
-    <message>
-        <source>The PDF document could not be drawn.</source>
-        <translation>Impossibile disegnare il documento PDF.</translation>
-    </message>
 </context>
 <context>
     <name>MoveVariableCommand</name>
@@ -623,6 +591,25 @@
             <numerusform>Incolla %n variabile</numerusform>
             <numerusform>Incolla %n variabili</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>PictureFile</name>
+    <message>
+        <source>The SVG picture could not be drawn.</source>
+        <translation>Impossibile disegnare l&apos;immagine SVG.</translation>
+    </message>
+    <message>
+        <source>Not enough memory for a picture of %1 × %2 pixels.</source>
+        <translation>Memoria insufficiente per un&apos;immagine di %1 × %2 pixel.</translation>
+    </message>
+    <message>
+        <source>The PNG picture could not be encoded.</source>
+        <translation>Impossibile codificare l&apos;immagine PNG.</translation>
+    </message>
+    <message>
+        <source>The PDF document could not be drawn.</source>
+        <translation>Impossibile disegnare il documento PDF.</translation>
     </message>
 </context>
 <context>

@@ -6,16 +6,11 @@
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 
-#include <QBuffer>
-#include <QImage>
 #include <QPagedPaintDevice>
 #include <QPainter>
-#include <QPdfWriter>
 #include <QPrinter>
-#include <QSvgGenerator>
 
 #include <algorithm>
-#include <cmath>
 
 namespace editor {
 
@@ -80,73 +75,29 @@ bool GrafcetExport::write(const QString& path, ChartExport::Format format, QStri
 bool GrafcetExport::writeSvg(const QString& path, QString* errorMessage) const
 {
     const QRectF drawing = drawingRect(m_scene);
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    QSvgGenerator generator;
-    generator.setOutputDevice(&buffer);
-    generator.setTitle(m_title);
-    generator.setDescription(tr("Nested GRAFCET drawn by GG Studio"));
-    generator.setSize(QSize(int(std::ceil(drawing.width())), int(std::ceil(drawing.height()))));
-    generator.setViewBox(QRectF(QPointF(0, 0), drawing.size()));
-    {
-        QPainter painter;
-        if (!painter.begin(&generator)) {
-            if (errorMessage)
-                *errorMessage = tr("The SVG picture could not be drawn.");
-            return false;
-        }
-        render(m_scene, painter, QRectF(QPointF(0, 0), drawing.size()), drawing);
-    }
-    return writeExportFile(path, buffer.data(), errorMessage);
+    return PictureFile::writeSvg(
+        path, drawing.size(), m_title, tr("Nested GRAFCET drawn by GG Studio"),
+        [&](QPainter& painter) { render(m_scene, painter, QRectF(QPointF(0, 0), drawing.size()), drawing); },
+        errorMessage);
 }
 
 bool GrafcetExport::writePng(const QString& path, QString* errorMessage, double scale) const
 {
     const QRectF drawing = drawingRect(m_scene);
-    const QSizeF size = drawing.size() * scale;
-    QImage image(QSize(int(std::ceil(size.width())), int(std::ceil(size.height()))), QImage::Format_ARGB32);
-    if (image.isNull()) {
-        if (errorMessage)
-            *errorMessage = tr("Not enough memory for a picture of %1 × %2 pixels.")
-                                .arg(int(size.width()))
-                                .arg(int(size.height()));
-        return false;
-    }
-    image.fill(Qt::white);
-    {
-        QPainter painter(&image);
-        render(m_scene, painter, QRectF(QPointF(0, 0), size), drawing);
-    }
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    if (!image.save(&buffer, "PNG")) {
-        if (errorMessage)
-            *errorMessage = tr("The PNG picture could not be encoded.");
-        return false;
-    }
-    return writeExportFile(path, buffer.data(), errorMessage);
+    return PictureFile::writePng(
+        path, drawing.size() * scale,
+        [&](QPainter& painter) { render(m_scene, painter, QRectF(QPointF(0, 0), drawing.size() * scale), drawing); },
+        errorMessage);
 }
 
 bool GrafcetExport::writePdf(const QString& path, QString* errorMessage) const
 {
-    QBuffer buffer;
-    buffer.open(QIODevice::WriteOnly);
-    {
-        QPdfWriter writer(&buffer);
-        writer.setTitle(m_title);
-        writer.setCreator(QStringLiteral("GG Studio"));
-        writer.setPageSize(QPageSize(QPageSize::A4));
-        writer.setPageOrientation(QPageLayout::Portrait);
-        writer.setPageMargins(QMarginsF(10, 10, 10, 10), QPageLayout::Millimeter);
-        QPainter painter;
-        if (!painter.begin(&writer)) {
-            if (errorMessage)
-                *errorMessage = tr("The PDF document could not be drawn.");
-            return false;
-        }
-        renderPages(painter, writer, QSizeF(writer.width(), writer.height()), writer.resolution() / 72.0);
-    }
-    return writeExportFile(path, buffer.data(), errorMessage);
+    return PictureFile::writePdf(
+        path, m_title, QPageLayout::Portrait,
+        [this](QPainter& painter, QPagedPaintDevice& device, const QSizeF& page, double dotsPerPoint) {
+            renderPages(painter, device, page, dotsPerPoint);
+        },
+        errorMessage);
 }
 
 bool GrafcetExport::print(QPrinter& printer) const
