@@ -116,6 +116,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
         delete close;
     }
     connect(m_centralTabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeGrafcetTab);
+    connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::rememberGrafcetTabs);
     setCentralWidget(m_centralTabs);
 
     // The right column runs the full height: the property docks are tall forms.
@@ -140,6 +141,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     onSimulationActiveChanged(m_session->isActive());
 
     connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &Document::filePathChanged, this, &MainWindow::rememberGrafcetTabs); // Save As
     connect(m_document, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::editFailed, this, &MainWindow::showEditFailure);
     connect(m_session, &SimulationSession::activeChanged, this, &MainWindow::onSimulationActiveChanged);
@@ -166,6 +168,7 @@ MainWindow::~MainWindow()
     m_document->disconnect(this);
     m_session->disconnect(this);
     m_verification->disconnect(this);
+    m_centralTabs->disconnect(this); // its tabs go with it: not the user's closing them
     delete m_chartMarks;
     delete m_problemCounter;
     deleteDocks();
@@ -622,6 +625,7 @@ bool MainWindow::openNestedGrafcet(const QString& stepId)
         retitleGrafcetTabs();
     }
     m_centralTabs->setCurrentWidget(view);
+    rememberGrafcetTabs();
     return true;
 }
 
@@ -632,6 +636,45 @@ void MainWindow::closeGrafcetTab(int index)
     QWidget* view = m_centralTabs->widget(index);
     m_centralTabs->removeTab(index);
     delete view;
+    rememberGrafcetTabs();
+}
+
+void MainWindow::closeGrafcetTabs()
+{
+    for (int i = m_centralTabs->count() - 1; i > 0; --i) {
+        QWidget* view = m_centralTabs->widget(i);
+        m_centralTabs->removeTab(i);
+        delete view;
+    }
+}
+
+void MainWindow::rememberGrafcetTabs()
+{
+    if (m_switchingFile || m_document->filePath().isEmpty())
+        return;
+    Settings::GrafcetTabs tabs;
+    for (int i = 1; i < m_centralTabs->count(); ++i) {
+        if (auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i)))
+            tabs.steps << view->grafcetScene()->stepId();
+    }
+    if (auto* front = qobject_cast<GrafcetView*>(m_centralTabs->currentWidget()))
+        tabs.current = front->grafcetScene()->stepId();
+    m_settings->setGrafcetTabs(m_document->filePath(), tabs);
+}
+
+// The tabs of GRAFCETs the file no longer has (edited elsewhere) stay closed.
+void MainWindow::restoreGrafcetTabs()
+{
+    const Settings::GrafcetTabs tabs = m_settings->grafcetTabs(m_document->filePath());
+    m_switchingFile = true;
+    for (const QString& stepId : tabs.steps)
+        openNestedGrafcet(stepId);
+    if (GrafcetView* front = grafcetView(tabs.current))
+        m_centralTabs->setCurrentWidget(front);
+    else
+        m_centralTabs->setCurrentIndex(0);
+    m_switchingFile = false;
+    rememberGrafcetTabs();
 }
 
 void MainWindow::closeStaleGrafcetTabs()
@@ -894,7 +937,11 @@ void MainWindow::newModel()
 {
     if (!maybeSave())
         return;
+    rememberGrafcetTabs();
+    m_switchingFile = true;
+    closeGrafcetTabs();
     m_document->replaceModel(newTemplate(*m_settings), QString(), core::ModelFormat::Native);
+    m_switchingFile = false;
     m_selection->clear();
     updateTitle();
 }
@@ -924,8 +971,11 @@ bool MainWindow::openFile(const QString& path)
 bool MainWindow::loadFile(const QString& path)
 {
     QString error;
+    rememberGrafcetTabs();
     QApplication::setOverrideCursor(Qt::WaitCursor);
+    m_switchingFile = true;
     const bool loaded = m_document->load(path, &error);
+    m_switchingFile = false;
     QApplication::restoreOverrideCursor();
     if (!loaded) {
         QMessageBox box(QMessageBox::Critical, tr("Open Model"),
@@ -939,6 +989,10 @@ bool MainWindow::loadFile(const QString& path)
     }
     m_selection->clear();
     m_recentFiles->add(path);
+    m_switchingFile = true;
+    closeGrafcetTabs();
+    m_switchingFile = false;
+    restoreGrafcetTabs();
     m_settings->setLastModelDirectory(QFileInfo(path).absolutePath());
     updateTitle();
     switch (m_document->fileFormat()) {
@@ -1237,6 +1291,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
+    rememberGrafcetTabs();
     saveLayout();
     event->accept();
 }

@@ -158,6 +158,11 @@ private:
     // After a new model: the tabs of steps that have no GRAFCET any more close.
     void closeStaleGrafcetTabs();
     void retitleGrafcetTabs();
+    // The open GRAFCET tabs of the file are kept in the settings, and come
+    // back when the file is opened again.
+    void rememberGrafcetTabs();
+    void restoreGrafcetTabs();
+    void closeGrafcetTabs();
     void applyEditingLock();
     // Verify: runs the verifier and shows its findings in the Problems dock.
     void verify();
@@ -173,6 +178,7 @@ private:
     ChartScene* m_scene;
     ChartView* m_view;
     QTabWidget* m_centralTabs;
+    bool m_switchingFile = false; // tabs change with the file: not the user's choice to remember
     StepDock* m_stepDock = nullptr;
     TransitionDock* m_transitionDock = nullptr;
     VariablesDock* m_variablesDock = nullptr;

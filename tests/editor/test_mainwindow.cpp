@@ -276,6 +276,7 @@ private slots:
     void examplesOpenAsUntitledCopies();
     void startGuideShowsWhileNothingIsSelected();
     void nestedGrafcetOpensInATab();
+    void grafcetTabsComeBackWithTheirFile();
     void brokenFileLeavesTheModelUntouched();
     void editsMarkTheTitleModified();
     void undoActionNamesTheCommand();
@@ -912,6 +913,42 @@ void TestMainWindow::nestedGrafcetOpensInATab()
     QVERIFY(m_window->grafcetView(QStringLiteral("F1"))->grafcetScene()->stepItem(99));
     m_window->document()->replaceModel(core::Model(), QString(), core::ModelFormat::Native);
     QCOMPARE(tabs->count(), 1);
+}
+
+void TestMainWindow::grafcetTabsComeBackWithTheirFile()
+{
+    m_window->findChild<QAction*>(QStringLiteral("example_0"))->trigger(); // the drilling cell
+    const QString cell = m_files.filePath(QStringLiteral("tabs-cell.json"));
+    QVERIFY(m_window->saveFile(cell));
+    QTabWidget* tabs = m_window->centralTabs();
+    QVERIFY(m_window->openNestedGrafcet(QStringLiteral("F2")));
+    QVERIFY(m_window->openNestedGrafcet(QStringLiteral("F1")));
+    tabs->setCurrentWidget(m_window->grafcetView(QStringLiteral("F2")));
+
+    // Another file: its own tabs (none), not the cell's.
+    m_window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QCOMPARE(tabs->count(), 1);
+    const QString other = m_files.filePath(QStringLiteral("tabs-other.json"));
+    QVERIFY(m_window->saveFile(other));
+    QVERIFY(m_window->openFile(cell));
+    QCOMPARE(tabs->count(), 3);
+    QCOMPARE(tabs->widget(1), static_cast<QWidget*>(m_window->grafcetView(QStringLiteral("F2"))));
+    QCOMPARE(tabs->widget(2), static_cast<QWidget*>(m_window->grafcetView(QStringLiteral("F1"))));
+    QCOMPARE(tabs->currentWidget(), static_cast<QWidget*>(m_window->grafcetView(QStringLiteral("F2"))));
+    QVERIFY(m_window->openFile(other));
+    QCOMPARE(tabs->count(), 1);
+
+    // Closing a tab and choosing the chart are remembered too, through a new window.
+    QVERIFY(m_window->openFile(cell));
+    emit tabs->tabCloseRequested(tabs->indexOf(m_window->grafcetView(QStringLiteral("F2"))));
+    tabs->setCurrentIndex(0);
+    m_window->close();
+    m_window = editortest::showMainWindow(*m_translators);
+    QVERIFY(m_window->openFile(cell));
+    tabs = m_window->centralTabs();
+    QCOMPARE(tabs->count(), 2);
+    QVERIFY(m_window->grafcetView(QStringLiteral("F1")));
+    QCOMPARE(tabs->currentIndex(), 0);
 }
 
 void TestMainWindow::brokenFileLeavesTheModelUntouched()
