@@ -369,6 +369,35 @@ TEST_CASE("GRAFCET layout: random valid GRAFCETs", "[layout][grafcet-layout][ran
     CHECK(parallelInSelection >= 10);
 }
 
+// Found by structured editing's random edits: 6 opens a selection inside the
+// first branch of 3's; its first branch loops back to 1, its main branch to 3.
+// Both lines come out of the same block of the column, so which leaves lower
+// is unknown when channels are given: one of them is a jump.
+TEST_CASE("GRAFCET layout: two loops out of one selection of a column", "[layout][grafcet-layout]")
+{
+    Grafcet g;
+    for (int n : {1, 3, 6, 7, 9, 8, 10, 13, 12, 2, 4, 14})
+        add(g, makeStep(n, {}, n == 1));
+    add(g, 4, {3}, {6}, "a");
+    add(g, 19, {13}, {3}, "b");
+    add(g, 8, {14}, {7}, "c");
+    add(g, 12, {8}, {9}, "d");
+    add(g, 10, {7}, {8}, "e");
+    add(g, 14, {9}, {10}, "f");
+    add(g, 15, {10}, {1}, "g");
+    add(g, 18, {12}, {13}, "h");
+    add(g, 2, {1}, {2}, "i");
+    add(g, 3, {2}, {3}, "j");
+    add(g, 5, {3}, {4}, "k");
+    add(g, 20, {6}, {14}, "l");
+    add(g, 23, {6}, {12}, "m");
+    checkLayout(g, "two-loops-one-selection");
+    int loops = 0;
+    for (const GrafcetLinkLayout& link : layoutGrafcet(g, kMeasure).links)
+        loops += link.ending == GrafcetLinkLayout::Ending::Loop ? 1 : 0;
+    CHECK(loops == 1);
+}
+
 TEST_CASE("GRAFCET layout: random GRAFCETs with errors, and odd shapes", "[layout][grafcet-layout][random]")
 {
     for (std::uint32_t seed = 1; seed <= 40; ++seed) {
