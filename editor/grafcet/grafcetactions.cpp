@@ -126,6 +126,7 @@ void GrafcetActions::createEmptyLink()
     m_emptyLink->setTextFormat(Qt::RichText);
     m_emptyLink->setAlignment(Qt::AlignCenter);
     m_emptyLink->setWordWrap(true);
+    m_emptyLink->setMinimumWidth(360); // two lines, not a narrow column
     connect(m_emptyLink, &QLabel::linkActivated, this, [this] { m_createUsual->trigger(); });
     auto* layout = new QVBoxLayout(m_view.viewport());
     layout->addWidget(m_emptyLink, 0, Qt::AlignCenter);
