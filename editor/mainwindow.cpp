@@ -16,8 +16,10 @@
 #include "editor/document.h"
 #include "editor/examplemodels.h"
 #include "editor/exportactions.h"
+#include "editor/grafcet/grafcetactions.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetview.h"
+#include "editor/grafcet/nestedgrafcetavailable.h"
 #include "editor/languages.h"
 #include "editor/modelsettingsdialog.h"
 #include "editor/recentfiles.h"
@@ -613,13 +615,14 @@ GrafcetView* MainWindow::grafcetView(const QString& stepId) const
 
 bool MainWindow::openNestedGrafcet(const QString& stepId)
 {
-    if (!m_document->model().grafcet(stepId.toStdString()))
+    if (!canOpenNestedGrafcet(m_document->model(), stepId))
         return false;
     GrafcetView* view = grafcetView(stepId);
     if (!view) {
         auto* scene = new GrafcetScene(m_document, stepId);
         view = new GrafcetView(scene);
         scene->setParent(view);
+        new GrafcetActions(*m_document, *view);
         view->setObjectName(QStringLiteral("grafcetView_") + stepId);
         m_centralTabs->addTab(view, QString());
         retitleGrafcetTabs();

@@ -90,8 +90,10 @@ public slots:
     bool exportPlcOpen(const QString& path, core::Dialect dialect);
     // The models autosave kept from a session that ended without saving.
     void offerRecovery();
-    // Opens (or brings to the front) the tab of `stepId`'s nested GRAFCET;
-    // false when the step has none.
+    // Opens (or brings to the front) the tab of `stepId`'s nested GRAFCET,
+    // with its structured editing (GrafcetActions); false when the step has
+    // none and is a simple step (a macro-step or an enclosing step without
+    // one opens on an empty drawing that offers to create it).
     bool openNestedGrafcet(const QString& stepId);
 
 protected:
