@@ -28,6 +28,14 @@ enum CommandId : int {
     PasteVariablesId,
     SetVariableKindId,
     SetEvolutionRuleId,
+    SetReceptivityId,         // merges typing in the same nested transition's receptivity
+    SetGrafcetStepCommentId,  // merges typing in the same nested step's comment
+    SetGrafcetStepInitialId,
+    RenumberGrafcetStepId,
+    SetGrafcetActionId,       // merges typing in the same action of the same nested step
+    AddGrafcetActionId,
+    RemoveGrafcetActionId,
+    MoveGrafcetActionId,
 };
 
 } // namespace editor
