@@ -22,6 +22,8 @@ class Autosave;
 class ChartContextMenu;
 class ChartScene;
 class ChartView;
+class GrafcetStepDock;
+class GrafcetTransitionDock;
 class GrafcetView;
 class Document;
 class ExportActions;
@@ -112,6 +114,9 @@ private:
     // Builds the docks' contents now if they were deferred.
     void ensureDocksReady();
     bool eventFilter(QObject* watched, QEvent* event) override;
+    // The dock groups' tab bars show whole titles and scroll: the upper group
+    // has five docks, more than a laptop's column holds once elided ("S…").
+    void childEvent(QChildEvent* event) override;
     void stopWatchingFirstFrame();
     void createActions();
     void createMenus();
@@ -158,6 +163,10 @@ private:
     // After a new model: the tabs of steps that have no GRAFCET any more close.
     void closeStaleGrafcetTabs();
     void retitleGrafcetTabs();
+    // A nested element selected (the Problems dock, a link) shows its GRAFCET's tab.
+    void onSelectionChanged(const ElementRef& element);
+    // The Structured Text dock shows the function block of the GRAFCET in front.
+    void onCentralTabChanged();
     void applyEditingLock();
     // Verify: runs the verifier and shows its findings in the Problems dock.
     void verify();
@@ -175,6 +184,8 @@ private:
     QTabWidget* m_centralTabs;
     StepDock* m_stepDock = nullptr;
     TransitionDock* m_transitionDock = nullptr;
+    GrafcetStepDock* m_grafcetStepDock = nullptr;
+    GrafcetTransitionDock* m_grafcetTransitionDock = nullptr;
     VariablesDock* m_variablesDock = nullptr;
     ProblemsDock* m_problemsDock = nullptr;
     StPreviewDock* m_stPreviewDock = nullptr;
