@@ -23,6 +23,7 @@ class GrafcetScene : public QGraphicsScene {
 
 public:
     GrafcetScene(Document* document, const QString& stepId, QObject* parent = nullptr);
+    ~GrafcetScene() override;
 
     const QString& stepId() const { return m_stepId; }
     const core::GrafcetLayout& layout() const { return m_layout; }
@@ -32,6 +33,14 @@ public:
     // The width of `text` in the drawing's font, in scene units.
     static double textWidth(std::string_view text);
 
+    // True while the items are deleted and made again: the selection they
+    // lose then is not the user's doing.
+    bool isRebuilding() const { return m_rebuilding; }
+
+signals:
+    // The items were made again from the model (after a change of the GRAFCET).
+    void rebuilt();
+
 private:
     void rebuild();
 
@@ -40,6 +49,7 @@ private:
     core::GrafcetLayout m_layout;
     QHash<int, GrafcetStepItem*> m_steps;
     QHash<int, GrafcetTransitionItem*> m_transitions;
+    bool m_rebuilding = false;
 };
 
 } // namespace editor

@@ -24,6 +24,7 @@ public:
     static QString drawnReceptivity(const QString& receptivity);
 
     QRectF boundingRect() const override;
+    QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
