@@ -843,11 +843,13 @@ void TestMainWindow::nestedGrafcetOpensInATab()
     QCOMPARE(tabs->count(), 1);
     QVERIFY(!tabs->tabBar()->isVisible()); // the chart alone: no tab bar
 
-    // From the Step dock: its button shows for a step with a GRAFCET only.
+    // From the Step dock: its button shows for a step that has or may have a GRAFCET.
     m_window->selection()->select(ElementRef::step(QStringLiteral("A1")));
     auto* button = m_window->findChild<QPushButton*>(QStringLiteral("openGrafcetButton"));
     QVERIFY(button);
     QVERIFY(!button->isVisibleTo(button->window()));
+    m_window->selection()->select(ElementRef::step(QStringLiteral("A7"))); // a macro-step without one yet
+    QVERIFY(button->isVisibleTo(button->window()));
     m_window->selection()->select(ElementRef::step(QStringLiteral("F1")));
     QVERIFY(button->isVisibleTo(button->window()));
     button->click();
