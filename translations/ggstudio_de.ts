@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>AddGrafcetActionCommand</name>
+    <message>
+        <source>Add action %1 to %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aktion %1 zu Schritt %3 von %2 hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -573,6 +581,18 @@
     </message>
 </context>
 <context>
+    <name>MoveGrafcetActionCommand</name>
+    <message>
+        <source>Move action %1 of %2 step %3 up</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aktion %1 von Schritt %3 von %2 nach oben</translation>
+    </message>
+    <message>
+        <source>Move action %1 of %2 step %3 down</source>
+        <translation>Aktion %1 von Schritt %3 von %2 nach unten</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -672,6 +692,14 @@
     </message>
 </context>
 <context>
+    <name>RemoveGrafcetActionCommand</name>
+    <message>
+        <source>Remove action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aktion %1 von Schritt %3 von %2 entfernen</translation>
+    </message>
+</context>
+<context>
     <name>RemoveVariableCommand</name>
     <message>
         <source>Remove variable %1</source>
@@ -687,6 +715,14 @@
     <message>
         <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
         <translation>eine Variable namens „%1“ ist bereits vorhanden (IEC-Namen unterscheiden keine Groß- und Kleinschreibung)</translation>
+    </message>
+</context>
+<context>
+    <name>RenumberGrafcetStepCommand</name>
+    <message>
+        <source>Renumber %1 step %2 to %3</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number</extracomment>
+        <translation>Schritt %2 von %1 in %3 umnummerieren</translation>
     </message>
 </context>
 <context>
@@ -754,6 +790,34 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetActionCommand</name>
+    <message>
+        <source>Set action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aktion %1 von Schritt %3 von %2 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1 step %2</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET: &quot;Edit comment of F1 step 3&quot;</extracomment>
+        <translation>Kommentar von Schritt %2 von %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepInitialCommand</name>
+    <message>
+        <source>Make %1 step %2 initial</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET</extracomment>
+        <translation>Schritt %2 von %1 zum Anfangsschritt machen</translation>
+    </message>
+    <message>
+        <source>Make %1 step %2 not initial</source>
+        <translation>Schritt %2 von %1 nicht mehr Anfangsschritt</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -783,6 +847,14 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Priorität von %1 auf %2 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetReceptivityCommand</name>
+    <message>
+        <source>Set receptivity of %1 T%2</source>
+        <extracomment>%1 is the GEMMA step, %2 the transition number of its nested GRAFCET: &quot;Set receptivity of F1 T3&quot;</extracomment>
+        <translation>Weiterschaltbedingung von %1 T%2 ändern</translation>
     </message>
 </context>
 <context>
@@ -1368,6 +1440,26 @@
     </message>
 </context>
 <context>
+    <name>editor::ConnectTransitionDialog</name>
+    <message>
+        <source>Connect T%1 of %2</source>
+        <extracomment>%1 the transition&apos;s number, %2 the GEMMA step whose GRAFCET it is in</extracomment>
+        <translation>T%1 von %2 verbinden</translation>
+    </message>
+    <message>
+        <source>Upstream steps (it leaves them)</source>
+        <translation>Vorgängerschritte (sie deaktiviert sie)</translation>
+    </message>
+    <message>
+        <source>Downstream steps (it activates them)</source>
+        <translation>Nachfolgerschritte (sie aktiviert sie)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
@@ -1592,6 +1684,307 @@
         <source>%1 — %2</source>
         <extracomment>Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name</extracomment>
         <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActions</name>
+    <message>
+        <source>Insert Step &amp;After</source>
+        <translation>Schritt &amp;danach einfügen</translation>
+    </message>
+    <message>
+        <source>Insert Step &amp;Before</source>
+        <translation>Schritt da&amp;vor einfügen</translation>
+    </message>
+    <message>
+        <source>Add &amp;Selection Branch</source>
+        <translation>Alternativ&amp;zweig hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add &amp;Parallel Branch</source>
+        <translation>&amp;Parallelzweig hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove Bra&amp;nch</source>
+        <translation>&amp;Zweig entfernen</translation>
+    </message>
+    <message>
+        <source>Ren&amp;umber Steps and Transitions</source>
+        <translation>Schritte und Transitionen &amp;umnummerieren</translation>
+    </message>
+    <message>
+        <source>&amp;Connect Directly…</source>
+        <translation>Direkt &amp;verbinden…</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Steps</source>
+        <translation>Schritte &amp;kopieren</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Steps</source>
+        <translation>Schritte ein&amp;fügen</translation>
+    </message>
+    <message>
+        <source>Create the &amp;Usual Shape</source>
+        <translation>Übliche &amp;Form erstellen</translation>
+    </message>
+    <message>
+        <source>Initial step 1, then step 2, then step 3, which sets Complete</source>
+        <translation>Anfangsschritt 1, dann Schritt 2, dann Schritt 3, der Complete setzt</translation>
+    </message>
+    <message>
+        <source>%1 has no GRAFCET yet.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Create the usual shape&lt;/a&gt;: initial step 1, step 2, and step 3, which sets Complete.</source>
+        <extracomment>%1 the GEMMA step; the link creates its GRAFCET</extracomment>
+        <translation>%1 hat noch keinen GRAFCET.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Übliche Form erstellen&lt;/a&gt;: Anfangsschritt 1, Schritt 2 und Schritt 3, der Complete setzt.</translation>
+    </message>
+    <message>
+        <source>Add Loop or &amp;Jump To</source>
+        <translation>Schleife oder &amp;Sprung hinzufügen zu</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>Add step %1 to %2</source>
+        <translation>Schritt %1 zu %2 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add selection branch to %1</source>
+        <translation>Alternativzweig zu %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add parallel branch to %1</source>
+        <translation>Parallelzweig zu %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add jump from step %1 to step %2 in %3</source>
+        <extracomment>%1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Sprung von Schritt %1 zu Schritt %2 in %3 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove step %1 from %2</source>
+        <translation>Schritt %1 aus %2 entfernen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>%n Schritt aus %1 entfernen</numerusform>
+            <numerusform>%n Schritte aus %1 entfernen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove branch from %1</source>
+        <translation>Zweig aus %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Renumber %1</source>
+        <translation>%1 umnummerieren</translation>
+    </message>
+    <message>
+        <source>Connect %1 T%2</source>
+        <extracomment>%1 the GEMMA step, %2 the transition&apos;s number</extracomment>
+        <translation>%1 T%2 verbinden</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>%n Schritt in %1 einfügen</numerusform>
+            <numerusform>%n Schritte in %1 einfügen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Create GRAFCET of %1</source>
+        <translation>GRAFCET von %1 erstellen</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActionsModel</name>
+    <message>
+        <source>When</source>
+        <translation>Wann</translation>
+    </message>
+    <message>
+        <source>Qual.</source>
+        <extracomment>short: the column is narrow; its tooltip says &quot;qualifier&quot; in full</extracomment>
+        <translation>Best.</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>IF / value</source>
+        <extracomment>the condition after IF of an N action, or the value of a := action; short: the column is narrow</extracomment>
+        <translation>IF / Wert</translation>
+    </message>
+    <message>
+        <source>While the step is active (N), or once when it is activated or deactivated (S, R, :=)</source>
+        <translation>Solange der Schritt aktiv ist (N), oder einmal bei seiner Aktivierung oder Deaktivierung (S, R, :=)</translation>
+    </message>
+    <message>
+        <source>Qualifier. N: the variable is TRUE while the step is active
+S, R: set it TRUE or FALSE
+:=: assign it the value</source>
+        <translation>Bestimmungszeichen. N: die Variable ist TRUE, solange der Schritt aktiv ist
+S, R: auf TRUE oder FALSE setzen
+:=: ihr den Wert zuweisen</translation>
+    </message>
+    <message>
+        <source>An output or internal variable, or Complete</source>
+        <translation>Eine Ausgangs- oder interne Variable, oder Complete</translation>
+    </message>
+    <message>
+        <source>N: only IF this condition holds (may be empty)
+:=: the value assigned</source>
+        <translation>N: nur IF diese Bedingung gilt (darf leer sein)
+:=: der zugewiesene Wert</translation>
+    </message>
+    <message>
+        <source>While active</source>
+        <translation>Solange aktiv</translation>
+    </message>
+    <message>
+        <source>On activation</source>
+        <translation>Bei Aktivierung</translation>
+    </message>
+    <message>
+        <source>On deactivation</source>
+        <translation>Bei Deaktivierung</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetStepDock</name>
+    <message>
+        <source>Nested Step</source>
+        <translation>Eingebetteter Schritt</translation>
+    </message>
+    <message>
+        <source>Select a step in a nested GRAFCET&apos;s tab to see and edit its number, comment and actions.</source>
+        <translation>Wählen Sie einen Schritt im Tab eines eingebetteten GRAFCET, um seine Nummer, seinen Kommentar und seine Aktionen zu sehen und zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>&amp;Number:</source>
+        <translation>&amp;Nummer:</translation>
+    </message>
+    <message>
+        <source>Unique in this GRAFCET; its activity is X&lt;number&gt;. The transitions and the X&lt;number&gt; of the receptivities and actions follow a new number.</source>
+        <translation>Eindeutig in diesem GRAFCET; seine Aktivität ist X&lt;Nummer&gt;. Die Transitionen und die X&lt;Nummer&gt; der Weiterschaltbedingungen und Aktionen folgen einer neuen Nummer.</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Anfangsschritt</translation>
+    </message>
+    <message>
+        <source>Active when the GEMMA state is entered (a GRAFCET needs at least one)</source>
+        <translation>Aktiv, wenn der GEMMA-Zustand betreten wird (ein GRAFCET braucht mindestens einen)</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>What the machine does in this step</source>
+        <translation>Was die Maschine in diesem Schritt tut</translation>
+    </message>
+    <message>
+        <source>&amp;Actions:</source>
+        <translation>A&amp;ktionen:</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add an action after the current one</source>
+        <translation>Eine Aktion nach der aktuellen hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the current action</source>
+        <translation>Die aktuelle Aktion entfernen</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Auf</translation>
+    </message>
+    <message>
+        <source>Run the current action earlier</source>
+        <translation>Die aktuelle Aktion früher ausführen</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Ab</translation>
+    </message>
+    <message>
+        <source>Run the current action later</source>
+        <translation>Die aktuelle Aktion später ausführen</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 Schritt %2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Im eingebetteten GRAFCET von %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 already has a step %2: choose another number.</source>
+        <translation>%1 hat schon einen Schritt %2: wählen Sie eine andere Nummer.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTransitionDock</name>
+    <message>
+        <source>Nested Transition</source>
+        <translation>Eingebettete Transition</translation>
+    </message>
+    <message>
+        <source>Select a transition in a nested GRAFCET&apos;s tab to see and edit its receptivity.</source>
+        <translation>Wählen Sie eine Transition im Tab eines eingebetteten GRAFCET, um ihre Weiterschaltbedingung zu sehen und zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>From steps:</source>
+        <translation>Von den Schritten:</translation>
+    </message>
+    <message>
+        <source>To steps:</source>
+        <translation>Zu den Schritten:</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Klicken Sie auf einen Schritt, um ihn auszuwählen</translation>
+    </message>
+    <message>
+        <source>&amp;Receptivity:</source>
+        <translation>&amp;Weiterschaltbedingung:</translation>
+    </message>
+    <message>
+        <source>e.g. PartPresent AND X3, ↑Start, 5s/X2</source>
+        <translation>z. B. PartPresent AND X3, ↑Start, 5s/X2</translation>
+    </message>
+    <message>
+        <source>Structured Text as in GEMMA conditions, plus X3 (step 3 is active), ↑a or RE a (rising edge), ↓a or FE a (falling edge), 5s/X3 (step 3 active for 5 s) and Complete.
+Ctrl+Space completes a name.</source>
+        <translation>Strukturierter Text wie in den GEMMA-Bedingungen, dazu X3 (Schritt 3 ist aktiv), ↑a oder RE a (steigende Flanke), ↓a oder FE a (fallende Flanke), 5s/X3 (Schritt 3 seit 5 s aktiv) und Complete.
+Strg+Leertaste vervollständigt einen Namen.</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Im eingebetteten GRAFCET von %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2578,6 +2971,15 @@
     <message>
         <source>This transition is not effective: it generates no code.</source>
         <translation>Diese Transition ist nicht wirksam: Es wird kein Code generiert.</translation>
+    </message>
+    <message>
+        <source>%1 generates no function block: only a visible macro-step or enclosing step does.</source>
+        <translation>%1 erzeugt keinen Funktionsbaustein: das tut nur ein sichtbarer Makroschritt oder einschließender Schritt.</translation>
+    </message>
+    <message>
+        <source>%1_FB (the nested GRAFCET of %1)</source>
+        <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
+        <translation>%1_FB (der eingebettete GRAFCET von %1)</translation>
     </message>
 </context>
 <context>

@@ -63,6 +63,23 @@
     </message>
 </context>
 <context>
+    <name>editor::GrafcetActions</name>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>Remove %n step from %1</numerusform>
+            <numerusform>Remove %n steps from %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>Paste %n step into %1</numerusform>
+            <numerusform>Paste %n steps into %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>editor::ProblemCounter</name>
     <message numerus="yes">
         <source>%n error(s)</source>

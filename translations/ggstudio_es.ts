@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es_ES">
 <context>
+    <name>AddGrafcetActionCommand</name>
+    <message>
+        <source>Add action %1 to %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Añadir la acción %1 a la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -573,6 +581,18 @@
     </message>
 </context>
 <context>
+    <name>MoveGrafcetActionCommand</name>
+    <message>
+        <source>Move action %1 of %2 step %3 up</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Subir la acción %1 de la etapa %3 de %2</translation>
+    </message>
+    <message>
+        <source>Move action %1 of %2 step %3 down</source>
+        <translation>Bajar la acción %1 de la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -672,6 +692,14 @@
     </message>
 </context>
 <context>
+    <name>RemoveGrafcetActionCommand</name>
+    <message>
+        <source>Remove action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Quitar la acción %1 de la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>RemoveVariableCommand</name>
     <message>
         <source>Remove variable %1</source>
@@ -687,6 +715,14 @@
     <message>
         <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
         <translation>ya existe una variable llamada &apos;%1&apos; (los nombres IEC no distinguen mayúsculas y minúsculas)</translation>
+    </message>
+</context>
+<context>
+    <name>RenumberGrafcetStepCommand</name>
+    <message>
+        <source>Renumber %1 step %2 to %3</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number</extracomment>
+        <translation>Renumerar la etapa %2 de %1 como %3</translation>
     </message>
 </context>
 <context>
@@ -754,6 +790,34 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetActionCommand</name>
+    <message>
+        <source>Set action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Cambiar la acción %1 de la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1 step %2</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET: &quot;Edit comment of F1 step 3&quot;</extracomment>
+        <translation>Editar el comentario de la etapa %2 de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepInitialCommand</name>
+    <message>
+        <source>Make %1 step %2 initial</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET</extracomment>
+        <translation>Hacer inicial la etapa %2 de %1</translation>
+    </message>
+    <message>
+        <source>Make %1 step %2 not initial</source>
+        <translation>Hacer no inicial la etapa %2 de %1</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -783,6 +847,14 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Fijar la prioridad de %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetReceptivityCommand</name>
+    <message>
+        <source>Set receptivity of %1 T%2</source>
+        <extracomment>%1 is the GEMMA step, %2 the transition number of its nested GRAFCET: &quot;Set receptivity of F1 T3&quot;</extracomment>
+        <translation>Cambiar la receptividad de %1 T%2</translation>
     </message>
 </context>
 <context>
@@ -1368,6 +1440,26 @@
     </message>
 </context>
 <context>
+    <name>editor::ConnectTransitionDialog</name>
+    <message>
+        <source>Connect T%1 of %2</source>
+        <extracomment>%1 the transition&apos;s number, %2 the GEMMA step whose GRAFCET it is in</extracomment>
+        <translation>Conectar T%1 de %2</translation>
+    </message>
+    <message>
+        <source>Upstream steps (it leaves them)</source>
+        <translation>Etapas anteriores (las desactiva)</translation>
+    </message>
+    <message>
+        <source>Downstream steps (it activates them)</source>
+        <translation>Etapas siguientes (las activa)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Etapa %1</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
@@ -1592,6 +1684,307 @@
         <source>%1 — %2</source>
         <extracomment>Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name</extracomment>
         <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActions</name>
+    <message>
+        <source>Insert Step &amp;After</source>
+        <translation>Insertar etapa &amp;después</translation>
+    </message>
+    <message>
+        <source>Insert Step &amp;Before</source>
+        <translation>Insertar etapa &amp;antes</translation>
+    </message>
+    <message>
+        <source>Add &amp;Selection Branch</source>
+        <translation>Añadir rama de &amp;selección</translation>
+    </message>
+    <message>
+        <source>Add &amp;Parallel Branch</source>
+        <translation>Añadir rama &amp;paralela</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Quitar</translation>
+    </message>
+    <message>
+        <source>Remove Bra&amp;nch</source>
+        <translation>Quitar ra&amp;ma</translation>
+    </message>
+    <message>
+        <source>Ren&amp;umber Steps and Transitions</source>
+        <translation>Ren&amp;umerar etapas y transiciones</translation>
+    </message>
+    <message>
+        <source>&amp;Connect Directly…</source>
+        <translation>&amp;Conectar directamente…</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Steps</source>
+        <translation>&amp;Copiar etapas</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Steps</source>
+        <translation>&amp;Pegar etapas</translation>
+    </message>
+    <message>
+        <source>Create the &amp;Usual Shape</source>
+        <translation>Crear la forma &amp;habitual</translation>
+    </message>
+    <message>
+        <source>Initial step 1, then step 2, then step 3, which sets Complete</source>
+        <translation>Etapa inicial 1, luego etapa 2, luego etapa 3, que activa Complete</translation>
+    </message>
+    <message>
+        <source>%1 has no GRAFCET yet.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Create the usual shape&lt;/a&gt;: initial step 1, step 2, and step 3, which sets Complete.</source>
+        <extracomment>%1 the GEMMA step; the link creates its GRAFCET</extracomment>
+        <translation>%1 aún no tiene GRAFCET.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Crear la forma habitual&lt;/a&gt;: etapa inicial 1, etapa 2 y etapa 3, que activa Complete.</translation>
+    </message>
+    <message>
+        <source>Add Loop or &amp;Jump To</source>
+        <translation>Añadir bucle o &amp;salto a</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Etapa %1</translation>
+    </message>
+    <message>
+        <source>Add step %1 to %2</source>
+        <translation>Añadir la etapa %1 a %2</translation>
+    </message>
+    <message>
+        <source>Add selection branch to %1</source>
+        <translation>Añadir rama de selección a %1</translation>
+    </message>
+    <message>
+        <source>Add parallel branch to %1</source>
+        <translation>Añadir rama paralela a %1</translation>
+    </message>
+    <message>
+        <source>Add jump from step %1 to step %2 in %3</source>
+        <extracomment>%1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Añadir salto de la etapa %1 a la etapa %2 en %3</translation>
+    </message>
+    <message>
+        <source>Remove step %1 from %2</source>
+        <translation>Quitar la etapa %1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>Quitar %n etapa de %1</numerusform>
+            <numerusform>Quitar %n etapas de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove branch from %1</source>
+        <translation>Quitar una rama de %1</translation>
+    </message>
+    <message>
+        <source>Renumber %1</source>
+        <translation>Renumerar %1</translation>
+    </message>
+    <message>
+        <source>Connect %1 T%2</source>
+        <extracomment>%1 the GEMMA step, %2 the transition&apos;s number</extracomment>
+        <translation>Conectar %1 T%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>Pegar %n etapa en %1</numerusform>
+            <numerusform>Pegar %n etapas en %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Create GRAFCET of %1</source>
+        <translation>Crear el GRAFCET de %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActionsModel</name>
+    <message>
+        <source>When</source>
+        <translation>Cuándo</translation>
+    </message>
+    <message>
+        <source>Qual.</source>
+        <extracomment>short: the column is narrow; its tooltip says &quot;qualifier&quot; in full</extracomment>
+        <translation>Cal.</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>IF / value</source>
+        <extracomment>the condition after IF of an N action, or the value of a := action; short: the column is narrow</extracomment>
+        <translation>IF / valor</translation>
+    </message>
+    <message>
+        <source>While the step is active (N), or once when it is activated or deactivated (S, R, :=)</source>
+        <translation>Mientras la etapa está activa (N), o una vez al activarse o desactivarse (S, R, :=)</translation>
+    </message>
+    <message>
+        <source>Qualifier. N: the variable is TRUE while the step is active
+S, R: set it TRUE or FALSE
+:=: assign it the value</source>
+        <translation>Calificador. N: la variable es TRUE mientras la etapa está activa
+S, R: ponerla a TRUE o FALSE
+:=: asignarle el valor</translation>
+    </message>
+    <message>
+        <source>An output or internal variable, or Complete</source>
+        <translation>Una variable de salida o interna, o Complete</translation>
+    </message>
+    <message>
+        <source>N: only IF this condition holds (may be empty)
+:=: the value assigned</source>
+        <translation>N: solo SI se cumple esta condición (puede estar vacía)
+:=: el valor asignado</translation>
+    </message>
+    <message>
+        <source>While active</source>
+        <translation>Mientras activa</translation>
+    </message>
+    <message>
+        <source>On activation</source>
+        <translation>Al activarse</translation>
+    </message>
+    <message>
+        <source>On deactivation</source>
+        <translation>Al desactivarse</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetStepDock</name>
+    <message>
+        <source>Nested Step</source>
+        <translation>Etapa anidada</translation>
+    </message>
+    <message>
+        <source>Select a step in a nested GRAFCET&apos;s tab to see and edit its number, comment and actions.</source>
+        <translation>Seleccione una etapa en la pestaña de un GRAFCET anidado para ver y editar su número, comentario y acciones.</translation>
+    </message>
+    <message>
+        <source>&amp;Number:</source>
+        <translation>&amp;Número:</translation>
+    </message>
+    <message>
+        <source>Unique in this GRAFCET; its activity is X&lt;number&gt;. The transitions and the X&lt;number&gt; of the receptivities and actions follow a new number.</source>
+        <translation>Único en este GRAFCET; su actividad es X&lt;número&gt;. Las transiciones y los X&lt;número&gt; de las receptividades y acciones siguen a un número nuevo.</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Inicial</translation>
+    </message>
+    <message>
+        <source>Active when the GEMMA state is entered (a GRAFCET needs at least one)</source>
+        <translation>Activa al entrar en el estado GEMMA (un GRAFCET necesita al menos una)</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Comentario:</translation>
+    </message>
+    <message>
+        <source>What the machine does in this step</source>
+        <translation>Lo que hace la máquina en esta etapa</translation>
+    </message>
+    <message>
+        <source>&amp;Actions:</source>
+        <translation>&amp;Acciones:</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
+    </message>
+    <message>
+        <source>Add an action after the current one</source>
+        <translation>Añadir una acción después de la actual</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Quitar</translation>
+    </message>
+    <message>
+        <source>Remove the current action</source>
+        <translation>Quitar la acción actual</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Subir</translation>
+    </message>
+    <message>
+        <source>Run the current action earlier</source>
+        <translation>Ejecutar antes la acción actual</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Bajar</translation>
+    </message>
+    <message>
+        <source>Run the current action later</source>
+        <translation>Ejecutar después la acción actual</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 etapa %2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>En el GRAFCET anidado de %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 already has a step %2: choose another number.</source>
+        <translation>%1 ya tiene una etapa %2: elija otro número.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTransitionDock</name>
+    <message>
+        <source>Nested Transition</source>
+        <translation>Transición anidada</translation>
+    </message>
+    <message>
+        <source>Select a transition in a nested GRAFCET&apos;s tab to see and edit its receptivity.</source>
+        <translation>Seleccione una transición en la pestaña de un GRAFCET anidado para ver y editar su receptividad.</translation>
+    </message>
+    <message>
+        <source>From steps:</source>
+        <translation>Desde las etapas:</translation>
+    </message>
+    <message>
+        <source>To steps:</source>
+        <translation>Hacia las etapas:</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Haga clic en una etapa para seleccionarla</translation>
+    </message>
+    <message>
+        <source>&amp;Receptivity:</source>
+        <translation>&amp;Receptividad:</translation>
+    </message>
+    <message>
+        <source>e.g. PartPresent AND X3, ↑Start, 5s/X2</source>
+        <translation>p. ej. PartPresent AND X3, ↑Start, 5s/X2</translation>
+    </message>
+    <message>
+        <source>Structured Text as in GEMMA conditions, plus X3 (step 3 is active), ↑a or RE a (rising edge), ↓a or FE a (falling edge), 5s/X3 (step 3 active for 5 s) and Complete.
+Ctrl+Space completes a name.</source>
+        <translation>Texto estructurado como en las condiciones GEMMA, más X3 (la etapa 3 está activa), ↑a o RE a (flanco ascendente), ↓a o FE a (flanco descendente), 5s/X3 (la etapa 3 lleva 5 s activa) y Complete.
+Ctrl+Espacio completa un nombre.</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>En el GRAFCET anidado de %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2578,6 +2971,15 @@
     <message>
         <source>This transition is not effective: it generates no code.</source>
         <translation>Esta transición no es efectiva: no genera código.</translation>
+    </message>
+    <message>
+        <source>%1 generates no function block: only a visible macro-step or enclosing step does.</source>
+        <translation>%1 no genera ningún bloque de función: solo lo hace una macroetapa o una etapa encapsulante visible.</translation>
+    </message>
+    <message>
+        <source>%1_FB (the nested GRAFCET of %1)</source>
+        <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
+        <translation>%1_FB (el GRAFCET anidado de %1)</translation>
     </message>
 </context>
 <context>

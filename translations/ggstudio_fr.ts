@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR">
 <context>
+    <name>AddGrafcetActionCommand</name>
+    <message>
+        <source>Add action %1 to %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Ajouter l’action %1 à l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -573,6 +581,18 @@
     </message>
 </context>
 <context>
+    <name>MoveGrafcetActionCommand</name>
+    <message>
+        <source>Move action %1 of %2 step %3 up</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Monter l’action %1 de l’étape %3 de %2</translation>
+    </message>
+    <message>
+        <source>Move action %1 of %2 step %3 down</source>
+        <translation>Descendre l’action %1 de l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -672,6 +692,14 @@
     </message>
 </context>
 <context>
+    <name>RemoveGrafcetActionCommand</name>
+    <message>
+        <source>Remove action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Supprimer l’action %1 de l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>RemoveVariableCommand</name>
     <message>
         <source>Remove variable %1</source>
@@ -687,6 +715,14 @@
     <message>
         <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
         <translation>une variable nommée «&#xa0;%1&#xa0;» existe déjà (les noms IEC ignorent la casse)</translation>
+    </message>
+</context>
+<context>
+    <name>RenumberGrafcetStepCommand</name>
+    <message>
+        <source>Renumber %1 step %2 to %3</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number</extracomment>
+        <translation>Renuméroter l’étape %2 de %1 en %3</translation>
     </message>
 </context>
 <context>
@@ -754,6 +790,34 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetActionCommand</name>
+    <message>
+        <source>Set action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Modifier l’action %1 de l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1 step %2</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET: &quot;Edit comment of F1 step 3&quot;</extracomment>
+        <translation>Modifier le commentaire de l’étape %2 de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepInitialCommand</name>
+    <message>
+        <source>Make %1 step %2 initial</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET</extracomment>
+        <translation>Rendre initiale l’étape %2 de %1</translation>
+    </message>
+    <message>
+        <source>Make %1 step %2 not initial</source>
+        <translation>Rendre non initiale l’étape %2 de %1</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -783,6 +847,14 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Régler la priorité de %1 à %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetReceptivityCommand</name>
+    <message>
+        <source>Set receptivity of %1 T%2</source>
+        <extracomment>%1 is the GEMMA step, %2 the transition number of its nested GRAFCET: &quot;Set receptivity of F1 T3&quot;</extracomment>
+        <translation>Modifier la réceptivité de %1 T%2</translation>
     </message>
 </context>
 <context>
@@ -1368,6 +1440,26 @@
     </message>
 </context>
 <context>
+    <name>editor::ConnectTransitionDialog</name>
+    <message>
+        <source>Connect T%1 of %2</source>
+        <extracomment>%1 the transition&apos;s number, %2 the GEMMA step whose GRAFCET it is in</extracomment>
+        <translation>Relier T%1 de %2</translation>
+    </message>
+    <message>
+        <source>Upstream steps (it leaves them)</source>
+        <translation>Étapes amont (elle les désactive)</translation>
+    </message>
+    <message>
+        <source>Downstream steps (it activates them)</source>
+        <translation>Étapes aval (elle les active)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Étape %1</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
@@ -1592,6 +1684,307 @@
         <source>%1 — %2</source>
         <extracomment>Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name</extracomment>
         <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActions</name>
+    <message>
+        <source>Insert Step &amp;After</source>
+        <translation>Insérer une étape &amp;après</translation>
+    </message>
+    <message>
+        <source>Insert Step &amp;Before</source>
+        <translation>Insérer une étape &amp;avant</translation>
+    </message>
+    <message>
+        <source>Add &amp;Selection Branch</source>
+        <translation>Ajouter une branche de &amp;sélection</translation>
+    </message>
+    <message>
+        <source>Add &amp;Parallel Branch</source>
+        <translation>Ajouter une branche &amp;parallèle</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <source>Remove Bra&amp;nch</source>
+        <translation>Supprimer la bra&amp;nche</translation>
+    </message>
+    <message>
+        <source>Ren&amp;umber Steps and Transitions</source>
+        <translation>Ren&amp;uméroter étapes et transitions</translation>
+    </message>
+    <message>
+        <source>&amp;Connect Directly…</source>
+        <translation>&amp;Relier directement…</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Steps</source>
+        <translation>&amp;Copier les étapes</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Steps</source>
+        <translation>C&amp;oller les étapes</translation>
+    </message>
+    <message>
+        <source>Create the &amp;Usual Shape</source>
+        <translation>Créer la forme &amp;usuelle</translation>
+    </message>
+    <message>
+        <source>Initial step 1, then step 2, then step 3, which sets Complete</source>
+        <translation>Étape initiale 1, puis étape 2, puis étape 3, qui met Complete à TRUE</translation>
+    </message>
+    <message>
+        <source>%1 has no GRAFCET yet.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Create the usual shape&lt;/a&gt;: initial step 1, step 2, and step 3, which sets Complete.</source>
+        <extracomment>%1 the GEMMA step; the link creates its GRAFCET</extracomment>
+        <translation>%1 n’a pas encore de GRAFCET.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Créer la forme usuelle&lt;/a&gt;&#xa0;: étape initiale 1, étape 2 et étape 3, qui met Complete à TRUE.</translation>
+    </message>
+    <message>
+        <source>Add Loop or &amp;Jump To</source>
+        <translation>Ajouter une boucle ou un &amp;saut vers</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Étape %1</translation>
+    </message>
+    <message>
+        <source>Add step %1 to %2</source>
+        <translation>Ajouter l’étape %1 à %2</translation>
+    </message>
+    <message>
+        <source>Add selection branch to %1</source>
+        <translation>Ajouter une branche de sélection à %1</translation>
+    </message>
+    <message>
+        <source>Add parallel branch to %1</source>
+        <translation>Ajouter une branche parallèle à %1</translation>
+    </message>
+    <message>
+        <source>Add jump from step %1 to step %2 in %3</source>
+        <extracomment>%1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Ajouter un saut de l’étape %1 à l’étape %2 dans %3</translation>
+    </message>
+    <message>
+        <source>Remove step %1 from %2</source>
+        <translation>Supprimer l’étape %1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>Supprimer %n étape de %1</numerusform>
+            <numerusform>Supprimer %n étapes de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove branch from %1</source>
+        <translation>Supprimer une branche de %1</translation>
+    </message>
+    <message>
+        <source>Renumber %1</source>
+        <translation>Renuméroter %1</translation>
+    </message>
+    <message>
+        <source>Connect %1 T%2</source>
+        <extracomment>%1 the GEMMA step, %2 the transition&apos;s number</extracomment>
+        <translation>Relier %1 T%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>Coller %n étape dans %1</numerusform>
+            <numerusform>Coller %n étapes dans %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Create GRAFCET of %1</source>
+        <translation>Créer le GRAFCET de %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActionsModel</name>
+    <message>
+        <source>When</source>
+        <translation>Quand</translation>
+    </message>
+    <message>
+        <source>Qual.</source>
+        <extracomment>short: the column is narrow; its tooltip says &quot;qualifier&quot; in full</extracomment>
+        <translation>Qual.</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>IF / value</source>
+        <extracomment>the condition after IF of an N action, or the value of a := action; short: the column is narrow</extracomment>
+        <translation>IF / valeur</translation>
+    </message>
+    <message>
+        <source>While the step is active (N), or once when it is activated or deactivated (S, R, :=)</source>
+        <translation>Tant que l’étape est active (N), ou une fois à son activation ou à sa désactivation (S, R, :=)</translation>
+    </message>
+    <message>
+        <source>Qualifier. N: the variable is TRUE while the step is active
+S, R: set it TRUE or FALSE
+:=: assign it the value</source>
+        <translation>Qualificatif. N&#xa0;: la variable est TRUE tant que l’étape est active
+S, R&#xa0;: la mettre à TRUE ou à FALSE
+:=&#xa0;: lui affecter la valeur</translation>
+    </message>
+    <message>
+        <source>An output or internal variable, or Complete</source>
+        <translation>Une variable de sortie ou interne, ou Complete</translation>
+    </message>
+    <message>
+        <source>N: only IF this condition holds (may be empty)
+:=: the value assigned</source>
+        <translation>N&#xa0;: seulement SI cette condition est vraie (peut être vide)
+:=&#xa0;: la valeur affectée</translation>
+    </message>
+    <message>
+        <source>While active</source>
+        <translation>Tant qu’active</translation>
+    </message>
+    <message>
+        <source>On activation</source>
+        <translation>À l’activation</translation>
+    </message>
+    <message>
+        <source>On deactivation</source>
+        <translation>À la désactivation</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetStepDock</name>
+    <message>
+        <source>Nested Step</source>
+        <translation>Étape imbriquée</translation>
+    </message>
+    <message>
+        <source>Select a step in a nested GRAFCET&apos;s tab to see and edit its number, comment and actions.</source>
+        <translation>Sélectionnez une étape dans l’onglet d’un GRAFCET imbriqué pour voir et modifier son numéro, son commentaire et ses actions.</translation>
+    </message>
+    <message>
+        <source>&amp;Number:</source>
+        <translation>&amp;Numéro&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Unique in this GRAFCET; its activity is X&lt;number&gt;. The transitions and the X&lt;number&gt; of the receptivities and actions follow a new number.</source>
+        <translation>Unique dans ce GRAFCET&#xa0;; son activité est X&lt;numéro&gt;. Les transitions et les X&lt;numéro&gt; des réceptivités et des actions suivent un nouveau numéro.</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Initiale</translation>
+    </message>
+    <message>
+        <source>Active when the GEMMA state is entered (a GRAFCET needs at least one)</source>
+        <translation>Active à l’entrée dans l’état GEMMA (un GRAFCET en demande au moins une)</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Commentaire&#xa0;:</translation>
+    </message>
+    <message>
+        <source>What the machine does in this step</source>
+        <translation>Ce que fait la machine dans cette étape</translation>
+    </message>
+    <message>
+        <source>&amp;Actions:</source>
+        <translation>&amp;Actions&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Add an action after the current one</source>
+        <translation>Ajouter une action après l’action courante</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Remove the current action</source>
+        <translation>Supprimer l’action courante</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Monter</translation>
+    </message>
+    <message>
+        <source>Run the current action earlier</source>
+        <translation>Exécuter l’action courante plus tôt</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Descendre</translation>
+    </message>
+    <message>
+        <source>Run the current action later</source>
+        <translation>Exécuter l’action courante plus tard</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 étape %2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Dans le GRAFCET imbriqué de %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 already has a step %2: choose another number.</source>
+        <translation>%1 a déjà une étape %2&#xa0;: choisissez un autre numéro.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTransitionDock</name>
+    <message>
+        <source>Nested Transition</source>
+        <translation>Transition imbriquée</translation>
+    </message>
+    <message>
+        <source>Select a transition in a nested GRAFCET&apos;s tab to see and edit its receptivity.</source>
+        <translation>Sélectionnez une transition dans l’onglet d’un GRAFCET imbriqué pour voir et modifier sa réceptivité.</translation>
+    </message>
+    <message>
+        <source>From steps:</source>
+        <translation>Depuis les étapes&#xa0;:</translation>
+    </message>
+    <message>
+        <source>To steps:</source>
+        <translation>Vers les étapes&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Cliquez sur une étape pour la sélectionner</translation>
+    </message>
+    <message>
+        <source>&amp;Receptivity:</source>
+        <translation>&amp;Réceptivité&#xa0;:</translation>
+    </message>
+    <message>
+        <source>e.g. PartPresent AND X3, ↑Start, 5s/X2</source>
+        <translation>p. ex. PartPresent AND X3, ↑Start, 5s/X2</translation>
+    </message>
+    <message>
+        <source>Structured Text as in GEMMA conditions, plus X3 (step 3 is active), ↑a or RE a (rising edge), ↓a or FE a (falling edge), 5s/X3 (step 3 active for 5 s) and Complete.
+Ctrl+Space completes a name.</source>
+        <translation>Texte structuré comme dans les conditions GEMMA, plus X3 (l’étape 3 est active), ↑a ou RE a (front montant), ↓a ou FE a (front descendant), 5s/X3 (l’étape 3 est active depuis 5 s) et Complete.
+Ctrl+Espace complète un nom.</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Dans le GRAFCET imbriqué de %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2578,6 +2971,15 @@
     <message>
         <source>This transition is not effective: it generates no code.</source>
         <translation>Cette transition n&apos;est pas effective&#xa0;: elle ne génère aucun code.</translation>
+    </message>
+    <message>
+        <source>%1 generates no function block: only a visible macro-step or enclosing step does.</source>
+        <translation>%1 ne génère aucun bloc fonctionnel&#xa0;: seule une macro-étape ou une étape encapsulante visible en génère un.</translation>
+    </message>
+    <message>
+        <source>%1_FB (the nested GRAFCET of %1)</source>
+        <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
+        <translation>%1_FB (le GRAFCET imbriqué de %1)</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="it_IT">
 <context>
+    <name>AddGrafcetActionCommand</name>
+    <message>
+        <source>Add action %1 to %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aggiungi l’azione %1 alla tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -573,6 +581,18 @@
     </message>
 </context>
 <context>
+    <name>MoveGrafcetActionCommand</name>
+    <message>
+        <source>Move action %1 of %2 step %3 up</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Sposta su l’azione %1 della tappa %3 di %2</translation>
+    </message>
+    <message>
+        <source>Move action %1 of %2 step %3 down</source>
+        <translation>Sposta giù l’azione %1 della tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -672,6 +692,14 @@
     </message>
 </context>
 <context>
+    <name>RemoveGrafcetActionCommand</name>
+    <message>
+        <source>Remove action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Rimuovi l’azione %1 della tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
     <name>RemoveVariableCommand</name>
     <message>
         <source>Remove variable %1</source>
@@ -687,6 +715,14 @@
     <message>
         <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
         <translation>esiste già una variabile di nome &apos;%1&apos; (i nomi IEC non distinguono maiuscole e minuscole)</translation>
+    </message>
+</context>
+<context>
+    <name>RenumberGrafcetStepCommand</name>
+    <message>
+        <source>Renumber %1 step %2 to %3</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number</extracomment>
+        <translation>Rinumera la tappa %2 di %1 in %3</translation>
     </message>
 </context>
 <context>
@@ -754,6 +790,34 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetActionCommand</name>
+    <message>
+        <source>Set action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Modifica l’azione %1 della tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1 step %2</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET: &quot;Edit comment of F1 step 3&quot;</extracomment>
+        <translation>Modifica il commento della tappa %2 di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepInitialCommand</name>
+    <message>
+        <source>Make %1 step %2 initial</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET</extracomment>
+        <translation>Rendi iniziale la tappa %2 di %1</translation>
+    </message>
+    <message>
+        <source>Make %1 step %2 not initial</source>
+        <translation>Rendi non iniziale la tappa %2 di %1</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -783,6 +847,14 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Imposta la priorità di %1 a %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetReceptivityCommand</name>
+    <message>
+        <source>Set receptivity of %1 T%2</source>
+        <extracomment>%1 is the GEMMA step, %2 the transition number of its nested GRAFCET: &quot;Set receptivity of F1 T3&quot;</extracomment>
+        <translation>Modifica la ricettività di %1 T%2</translation>
     </message>
 </context>
 <context>
@@ -1368,6 +1440,26 @@
     </message>
 </context>
 <context>
+    <name>editor::ConnectTransitionDialog</name>
+    <message>
+        <source>Connect T%1 of %2</source>
+        <extracomment>%1 the transition&apos;s number, %2 the GEMMA step whose GRAFCET it is in</extracomment>
+        <translation>Collega T%1 di %2</translation>
+    </message>
+    <message>
+        <source>Upstream steps (it leaves them)</source>
+        <translation>Tappe a monte (le disattiva)</translation>
+    </message>
+    <message>
+        <source>Downstream steps (it activates them)</source>
+        <translation>Tappe a valle (le attiva)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Tappa %1</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
@@ -1592,6 +1684,307 @@
         <source>%1 — %2</source>
         <extracomment>Title of a GEMMA family frame: %1 is the letter (A, F, D), %2 the family name</extracomment>
         <translation>%1 — %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActions</name>
+    <message>
+        <source>Insert Step &amp;After</source>
+        <translation>Inserisci tappa &amp;dopo</translation>
+    </message>
+    <message>
+        <source>Insert Step &amp;Before</source>
+        <translation>Inserisci tappa &amp;prima</translation>
+    </message>
+    <message>
+        <source>Add &amp;Selection Branch</source>
+        <translation>Aggiungi ramo di &amp;selezione</translation>
+    </message>
+    <message>
+        <source>Add &amp;Parallel Branch</source>
+        <translation>Aggiungi ramo p&amp;arallelo</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Rimuovi</translation>
+    </message>
+    <message>
+        <source>Remove Bra&amp;nch</source>
+        <translation>Rimuovi ra&amp;mo</translation>
+    </message>
+    <message>
+        <source>Ren&amp;umber Steps and Transitions</source>
+        <translation>Ri&amp;numera tappe e transizioni</translation>
+    </message>
+    <message>
+        <source>&amp;Connect Directly…</source>
+        <translation>&amp;Collega direttamente…</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Steps</source>
+        <translation>C&amp;opia tappe</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Steps</source>
+        <translation>Incoll&amp;a tappe</translation>
+    </message>
+    <message>
+        <source>Create the &amp;Usual Shape</source>
+        <translation>Crea la forma &amp;usuale</translation>
+    </message>
+    <message>
+        <source>Initial step 1, then step 2, then step 3, which sets Complete</source>
+        <translation>Tappa iniziale 1, poi tappa 2, poi tappa 3, che imposta Complete</translation>
+    </message>
+    <message>
+        <source>%1 has no GRAFCET yet.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Create the usual shape&lt;/a&gt;: initial step 1, step 2, and step 3, which sets Complete.</source>
+        <extracomment>%1 the GEMMA step; the link creates its GRAFCET</extracomment>
+        <translation>%1 non ha ancora un GRAFCET.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Crea la forma usuale&lt;/a&gt;: tappa iniziale 1, tappa 2 e tappa 3, che imposta Complete.</translation>
+    </message>
+    <message>
+        <source>Add Loop or &amp;Jump To</source>
+        <translation>Aggiungi ciclo o &amp;salto verso</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Tappa %1</translation>
+    </message>
+    <message>
+        <source>Add step %1 to %2</source>
+        <translation>Aggiungi la tappa %1 a %2</translation>
+    </message>
+    <message>
+        <source>Add selection branch to %1</source>
+        <translation>Aggiungi un ramo di selezione a %1</translation>
+    </message>
+    <message>
+        <source>Add parallel branch to %1</source>
+        <translation>Aggiungi un ramo parallelo a %1</translation>
+    </message>
+    <message>
+        <source>Add jump from step %1 to step %2 in %3</source>
+        <extracomment>%1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Aggiungi un salto dalla tappa %1 alla tappa %2 in %3</translation>
+    </message>
+    <message>
+        <source>Remove step %1 from %2</source>
+        <translation>Rimuovi la tappa %1 da %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>Rimuovi %n tappa da %1</numerusform>
+            <numerusform>Rimuovi %n tappe da %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove branch from %1</source>
+        <translation>Rimuovi un ramo da %1</translation>
+    </message>
+    <message>
+        <source>Renumber %1</source>
+        <translation>Rinumera %1</translation>
+    </message>
+    <message>
+        <source>Connect %1 T%2</source>
+        <extracomment>%1 the GEMMA step, %2 the transition&apos;s number</extracomment>
+        <translation>Collega %1 T%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>Incolla %n tappa in %1</numerusform>
+            <numerusform>Incolla %n tappe in %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Create GRAFCET of %1</source>
+        <translation>Crea il GRAFCET di %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActionsModel</name>
+    <message>
+        <source>When</source>
+        <translation>Quando</translation>
+    </message>
+    <message>
+        <source>Qual.</source>
+        <extracomment>short: the column is narrow; its tooltip says &quot;qualifier&quot; in full</extracomment>
+        <translation>Qual.</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variabile</translation>
+    </message>
+    <message>
+        <source>IF / value</source>
+        <extracomment>the condition after IF of an N action, or the value of a := action; short: the column is narrow</extracomment>
+        <translation>IF / valore</translation>
+    </message>
+    <message>
+        <source>While the step is active (N), or once when it is activated or deactivated (S, R, :=)</source>
+        <translation>Finché la tappa è attiva (N), o una volta alla sua attivazione o disattivazione (S, R, :=)</translation>
+    </message>
+    <message>
+        <source>Qualifier. N: the variable is TRUE while the step is active
+S, R: set it TRUE or FALSE
+:=: assign it the value</source>
+        <translation>Qualificatore. N: la variabile è TRUE finché la tappa è attiva
+S, R: impostarla a TRUE o FALSE
+:=: assegnarle il valore</translation>
+    </message>
+    <message>
+        <source>An output or internal variable, or Complete</source>
+        <translation>Una variabile di uscita o interna, o Complete</translation>
+    </message>
+    <message>
+        <source>N: only IF this condition holds (may be empty)
+:=: the value assigned</source>
+        <translation>N: solo IF questa condizione è vera (può essere vuota)
+:=: il valore assegnato</translation>
+    </message>
+    <message>
+        <source>While active</source>
+        <translation>Finché attiva</translation>
+    </message>
+    <message>
+        <source>On activation</source>
+        <translation>All’attivazione</translation>
+    </message>
+    <message>
+        <source>On deactivation</source>
+        <translation>Alla disattivazione</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetStepDock</name>
+    <message>
+        <source>Nested Step</source>
+        <translation>Tappa annidata</translation>
+    </message>
+    <message>
+        <source>Select a step in a nested GRAFCET&apos;s tab to see and edit its number, comment and actions.</source>
+        <translation>Selezionare una tappa nella scheda di un GRAFCET annidato per vederne e modificarne numero, commento e azioni.</translation>
+    </message>
+    <message>
+        <source>&amp;Number:</source>
+        <translation>&amp;Numero:</translation>
+    </message>
+    <message>
+        <source>Unique in this GRAFCET; its activity is X&lt;number&gt;. The transitions and the X&lt;number&gt; of the receptivities and actions follow a new number.</source>
+        <translation>Unico in questo GRAFCET; la sua attività è X&lt;numero&gt;. Le transizioni e gli X&lt;numero&gt; delle ricettività e delle azioni seguono un nuovo numero.</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Iniziale</translation>
+    </message>
+    <message>
+        <source>Active when the GEMMA state is entered (a GRAFCET needs at least one)</source>
+        <translation>Attiva all’ingresso nello stato GEMMA (un GRAFCET ne richiede almeno una)</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Commento:</translation>
+    </message>
+    <message>
+        <source>What the machine does in this step</source>
+        <translation>Ciò che la macchina fa in questa tappa</translation>
+    </message>
+    <message>
+        <source>&amp;Actions:</source>
+        <translation>&amp;Azioni:</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Aggiungi</translation>
+    </message>
+    <message>
+        <source>Add an action after the current one</source>
+        <translation>Aggiungi un’azione dopo quella corrente</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <source>Remove the current action</source>
+        <translation>Rimuovi l’azione corrente</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Su</translation>
+    </message>
+    <message>
+        <source>Run the current action earlier</source>
+        <translation>Esegui prima l’azione corrente</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Giù</translation>
+    </message>
+    <message>
+        <source>Run the current action later</source>
+        <translation>Esegui dopo l’azione corrente</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 tappa %2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Nel GRAFCET annidato di %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 already has a step %2: choose another number.</source>
+        <translation>%1 ha già una tappa %2: scegliere un altro numero.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTransitionDock</name>
+    <message>
+        <source>Nested Transition</source>
+        <translation>Transizione annidata</translation>
+    </message>
+    <message>
+        <source>Select a transition in a nested GRAFCET&apos;s tab to see and edit its receptivity.</source>
+        <translation>Selezionare una transizione nella scheda di un GRAFCET annidato per vederne e modificarne la ricettività.</translation>
+    </message>
+    <message>
+        <source>From steps:</source>
+        <translation>Dalle tappe:</translation>
+    </message>
+    <message>
+        <source>To steps:</source>
+        <translation>Alle tappe:</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Fare clic su una tappa per selezionarla</translation>
+    </message>
+    <message>
+        <source>&amp;Receptivity:</source>
+        <translation>&amp;Ricettività:</translation>
+    </message>
+    <message>
+        <source>e.g. PartPresent AND X3, ↑Start, 5s/X2</source>
+        <translation>es. PartPresent AND X3, ↑Start, 5s/X2</translation>
+    </message>
+    <message>
+        <source>Structured Text as in GEMMA conditions, plus X3 (step 3 is active), ↑a or RE a (rising edge), ↓a or FE a (falling edge), 5s/X3 (step 3 active for 5 s) and Complete.
+Ctrl+Space completes a name.</source>
+        <translation>Testo strutturato come nelle condizioni GEMMA, più X3 (la tappa 3 è attiva), ↑a o RE a (fronte di salita), ↓a o FE a (fronte di discesa), 5s/X3 (la tappa 3 è attiva da 5 s) e Complete.
+Ctrl+Spazio completa un nome.</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Nel GRAFCET annidato di %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2578,6 +2971,15 @@
     <message>
         <source>This transition is not effective: it generates no code.</source>
         <translation>Questa transizione non è effettiva: non genera codice.</translation>
+    </message>
+    <message>
+        <source>%1 generates no function block: only a visible macro-step or enclosing step does.</source>
+        <translation>%1 non genera alcun blocco funzione: solo una macro-tappa o una tappa incapsulante visibile lo fa.</translation>
+    </message>
+    <message>
+        <source>%1_FB (the nested GRAFCET of %1)</source>
+        <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
+        <translation>%1_FB (il GRAFCET annidato di %1)</translation>
     </message>
 </context>
 <context>
