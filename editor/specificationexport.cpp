@@ -507,6 +507,10 @@ private:
     void planStates();
     void planTransitions();
     void planVariables();
+    // A section of the tables: its heading, what it lists, the table (or
+    // `empty` when it has no row).
+    void planTable(Entry entry, const QString& heading, const QString& intro, const Table& table,
+                   const QString& empty);
     void planGrafcet(qsizetype index);
     void planCode();
 
@@ -686,9 +690,7 @@ void SpecificationPages::planChart()
 
 void SpecificationPages::planStates()
 {
-    Flow& flow = *m_flow;
-    flow.newPage(QPageLayout::Portrait, m_tablesSection);
-    startsHere(StatesEntry);
+    m_flow->newPage(QPageLayout::Portrait, m_tablesSection);
     Table states(m_style,
                  {{tr("State"), 38}, {tr("Name"), 118}, {tr("Type"), 84}, {tr("GRAFCET"), 52}, {tr("Comment"), 0}},
                  m_width);
@@ -704,19 +706,29 @@ void SpecificationPages::planStates()
             grafcet = tr("%n step(s)", nullptr, int(nested->steps().size()));
         states.addRow({id, officialStateName(id), type, orDash(grafcet), orDash(fromStd(step.comment))});
     }
-    addHeading(flow, m_style, TextStyle::Heading, tr("States"), 0);
-    addText(flow, m_style, TextStyle::Body,
-            tr("The visible states of the GEMMA chart, in state order. A macro-step or an enclosing "
-               "step runs its nested GRAFCET while it is active."),
-            states.startHeight() + m_style.pt(6));
+    planTable(StatesEntry, tr("States"),
+              tr("The visible states of the GEMMA chart, in state order. A macro-step or an enclosing "
+                 "step runs its nested GRAFCET while it is active."),
+              states, QString());
+}
+
+void SpecificationPages::planTable(Entry entry, const QString& heading, const QString& intro, const Table& table,
+                                   const QString& empty)
+{
+    Flow& flow = *m_flow;
+    addHeading(flow, m_style, TextStyle::Heading, heading, 0);
+    startsHere(entry);
+    addText(flow, m_style, TextStyle::Body, intro, table.startHeight() + m_style.pt(6));
     flow.space(m_style.pt(6));
-    states.flowInto(flow);
+    if (table.isEmpty())
+        addText(flow, m_style, TextStyle::Body, empty);
+    else
+        table.flowInto(flow);
 }
 
 // The transitions that take part, by source and priority.
 void SpecificationPages::planTransitions()
 {
-    Flow& flow = *m_flow;
     Table transitions(m_style,
                       {{tr("Transition"), 92}, {tr("Priority"), 58}, {tr("Condition"), 0}, {tr("Tokens"), 96}},
                       m_width);
@@ -732,23 +744,15 @@ void SpecificationPages::planTransitions()
         transitions.addRow({transitionLabel(transition), priority, orDash(fromStd(transition.condition)),
                             orDash(tokens.join(QStringLiteral(", ")))});
     }
-    addHeading(flow, m_style, TextStyle::Heading, tr("Transitions"), 0);
-    startsHere(TransitionsEntry);
-    addText(flow, m_style, TextStyle::Body,
-            tr("The transitions that take part: visible, between visible states. A state evaluates "
-               "its transitions by priority, 1 first; a negated transition fires when its condition "
-               "is FALSE."),
-            transitions.startHeight() + m_style.pt(6));
-    flow.space(m_style.pt(6));
-    if (transitions.isEmpty())
-        addText(flow, m_style, TextStyle::Body, tr("No transition takes part."));
-    else
-        transitions.flowInto(flow);
+    planTable(TransitionsEntry, tr("Transitions"),
+              tr("The transitions that take part: visible, between visible states. A state evaluates "
+                 "its transitions by priority, 1 first; a negated transition fires when its condition "
+                 "is FALSE."),
+              transitions, tr("No transition takes part."));
 }
 
 void SpecificationPages::planVariables()
 {
-    Flow& flow = *m_flow;
     Table variables(
         m_style,
         {{tr("Name"), 104}, {tr("Kind"), 54}, {tr("Type"), 44}, {tr("Default"), 58}, {tr("Comment"), 0}},
@@ -758,18 +762,11 @@ void SpecificationPages::planVariables()
                           fromStd(std::string(core::iecTypeName(variable.type))),
                           orDash(fromStd(variable.defaultValue)), orDash(fromStd(variable.comment))});
     }
-    addHeading(flow, m_style, TextStyle::Heading, tr("Variables"), 0);
-    startsHere(VariablesEntry);
-    addText(flow, m_style, TextStyle::Body,
-            tr("The declared variables, in declaration order. Inputs are read from the machine, "
-               "outputs written by the actions of the nested GRAFCETs, internal variables are the "
-               "program's memory. A variable without a default starts at its type's (FALSE, 0)."),
-            variables.startHeight() + m_style.pt(6));
-    flow.space(m_style.pt(6));
-    if (variables.isEmpty())
-        addText(flow, m_style, TextStyle::Body, tr("No variables are declared."));
-    else
-        variables.flowInto(flow);
+    planTable(VariablesEntry, tr("Variables"),
+              tr("The declared variables, in declaration order. Inputs are read from the machine, "
+                 "outputs written by the actions of the nested GRAFCETs, internal variables are the "
+                 "program's memory. A variable without a default starts at its type's (FALSE, 0)."),
+              variables, tr("No variables are declared."));
 }
 
 // A nested GRAFCET from a new page: its heading, its drawing (over as many

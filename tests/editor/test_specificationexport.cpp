@@ -7,6 +7,8 @@
 // the file on disk as it was.
 
 #include "editortestsupport.h"
+#include "modelfactory.h"
+#include "readonlyfolder.h"
 
 #include "editor/document.h"
 #include "editor/exportactions.h"
@@ -34,12 +36,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-
-#ifndef _WIN32
-#include <sys/stat.h>
-#include <unistd.h>
-#endif
 
 using namespace editor;
 
@@ -131,28 +127,6 @@ QList<PageWords> pageWords(const QString& path)
     return pages;
 }
 
-// A sequence of `steps` steps, each with an action, that loops back to step 1.
-core::Grafcet longSequence(int steps)
-{
-    core::Grafcet grafcet;
-    for (int n = 1; n <= steps; ++n) {
-        core::GrafcetStep step;
-        step.number = n;
-        step.initial = n == 1;
-        step.actions.push_back({core::ActionTiming::Continuous, QStringLiteral("Out%1").arg(n).toStdString()});
-        (void)grafcet.addStep(step);
-    }
-    for (int n = 1; n <= steps; ++n) {
-        core::GrafcetTransition transition;
-        transition.number = n;
-        transition.upstream = {n};
-        transition.downstream = {n < steps ? n + 1 : 1};
-        transition.receptivity = QStringLiteral("Go%1").arg(n).toStdString();
-        (void)grafcet.addTransition(transition);
-    }
-    return grafcet;
-}
-
 // The numbers of the words "<prefix><n>" in the order they come.
 QList<int> numberedWords(const QString& text, const QString& prefix)
 {
@@ -199,45 +173,6 @@ QByteArray readAll(const QString& path)
     QFile file(path);
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
-
-#ifndef _WIN32
-// Makes a folder refuse new files, also for root (who ignores permission
-// bits): chmod for ordinary users, the immutable attribute for root.
-class ReadOnlyFolder {
-public:
-    explicit ReadOnlyFolder(const QString& path)
-        : m_path(path)
-    {
-        if (::geteuid() == 0)
-            m_immutable = std::system(qPrintable(QStringLiteral("chattr +i '%1' 2>/dev/null").arg(path))) == 0;
-        else
-            ::chmod(QFile::encodeName(path).constData(), 0555);
-    }
-    ~ReadOnlyFolder()
-    {
-        if (m_immutable)
-            (void)std::system(qPrintable(QStringLiteral("chattr -i '%1'").arg(m_path)));
-        ::chmod(QFile::encodeName(m_path).constData(), 0755);
-    }
-    ReadOnlyFolder(const ReadOnlyFolder&) = delete;
-    ReadOnlyFolder& operator=(const ReadOnlyFolder&) = delete;
-
-    // The precondition of the test: can nothing be created in the folder?
-    bool effective() const
-    {
-        QFile probe(m_path + QStringLiteral("/probe"));
-        if (!probe.open(QIODevice::WriteOnly))
-            return true;
-        probe.close();
-        probe.remove();
-        return false;
-    }
-
-private:
-    QString m_path;
-    bool m_immutable = false;
-};
-#endif
 
 } // namespace
 
@@ -488,7 +423,7 @@ void TestSpecificationExport::longGrafcetSpansSeveralPages()
 {
     core::Model model;
     QVERIFY(model.setStepType("F1", core::StepType::Macro).ok);
-    QVERIFY(model.setGrafcet("F1", longSequence(60)).ok);
+    QVERIFY(model.setGrafcet("F1", factory::loopedSequence(60)).ok);
     const QString path = exportModel(model, QStringLiteral("long.pdf"));
     QVERIFY(!path.isEmpty());
     if (!havePoppler())
@@ -659,7 +594,7 @@ void TestSpecificationExport::failedWriteLeavesTheFileUntouched()
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write("the old specification");
     }
-    ReadOnlyFolder readOnly(folder);
+    const testsupport::ReadOnlyFolder readOnly(QFile::encodeName(folder).toStdString());
     if (!readOnly.effective())
         QSKIP("cannot make a folder read-only here");
     error.clear();

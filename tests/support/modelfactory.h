@@ -43,6 +43,12 @@ core::Model comparisonVerificationModel(int operands, bool mixed);
 // Speed0 < 5`): that GV102 must be found whatever happens to the huge ones.
 core::Model hugeConditionVerificationModel();
 
+// A nested GRAFCET of `steps` steps in one sequence that loops back to step
+// 1 (the initial one): step n with the continuous action "Out<n>", after it
+// transition n with the receptivity "Go<n>". A tall drawing for the page
+// breaking of the exports.
+core::Grafcet loopedSequence(int steps);
+
 // Applies `count` random operations (valid and invalid ones: the model must
 // refuse the latter) and returns how many the model accepted.
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count);
