@@ -1238,6 +1238,321 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message>
+        <source>%1 specification</source>
+        <extracomment>the specification&apos;s title and the file name it is saved under; %1 is the model&apos;s name</extracomment>
+        <translation>%1 Spezifikation</translation>
+    </message>
+    <message>
+        <source>GEMMA chart</source>
+        <translation>GEMMA-Diagramm</translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Zustände</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Transitionen</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variablen</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs</source>
+        <translation>Eingebettete GRAFCETs</translation>
+    </message>
+    <message>
+        <source>Generated code</source>
+        <translation>Erzeugter Code</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Spezifikation</translation>
+    </message>
+    <message>
+        <source>GEMMA-GRAFCET specification</source>
+        <translation>GEMMA-GRAFCET-Spezifikation</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n Fehler</numerusform>
+            <numerusform>%n Fehler</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n Warnung</numerusform>
+            <numerusform>%n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>noch nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>Anfangszustand</translation>
+    </message>
+    <message>
+        <source>PLC task cycle</source>
+        <translation>Zyklus der SPS-Task</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Code dialect</source>
+        <translation>Code-Dialekt</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET evolution</source>
+        <translation>Entwicklung der eingebetteten GRAFCETs</translation>
+    </message>
+    <message>
+        <source>Until stable, in one call of its function block</source>
+        <translation>Bis stabil, in einem Aufruf seines Funktionsbausteins</translation>
+    </message>
+    <message>
+        <source>One evolution per PLC scan</source>
+        <translation>Eine Entwicklung pro SPS-Zyklus</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Prüfungen</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>Keine Probleme gefunden</translation>
+    </message>
+    <message>
+        <source>Written by</source>
+        <translation>Erstellt mit</translation>
+    </message>
+    <message>
+        <source>GG Studio %1</source>
+        <translation>GG Studio %1</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Inhalt</translation>
+    </message>
+    <message>
+        <source>GEMMA chart, continued</source>
+        <translation>GEMMA-Diagramm, Fortsetzung</translation>
+    </message>
+    <message>
+        <source>States, transitions and variables</source>
+        <translation>Zustände, Transitionen und Variablen</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>GRAFCET</source>
+        <translation>GRAFCET</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Kommentar</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, Anfangsschritt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n Schritt</numerusform>
+            <numerusform>%n Schritte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The visible states of the GEMMA chart, in state order. A macro-step or an enclosing step runs its nested GRAFCET while it is active.</source>
+        <translation>Die sichtbaren Zustände des GEMMA-Diagramms in der Reihenfolge der Zustände. Ein Makroschritt oder ein einschließender Schritt führt seinen eingebetteten GRAFCET aus, solange er aktiv ist.</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Priorität</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Bedingung</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Merker</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negiert</translation>
+    </message>
+    <message>
+        <source>The transitions that take part: visible, between visible states. A state evaluates its transitions by priority, 1 first; a negated transition fires when its condition is FALSE.</source>
+        <translation>Die wirksamen Transitionen: sichtbar, zwischen sichtbaren Zuständen. Ein Zustand wertet seine Transitionen nach Priorität aus, 1 zuerst; eine negierte Transition schaltet, wenn ihre Bedingung FALSE ist.</translation>
+    </message>
+    <message>
+        <source>No transition takes part.</source>
+        <translation>Keine Transition ist wirksam.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Anfangswert</translation>
+    </message>
+    <message>
+        <source>The declared variables, in declaration order. Inputs are read from the machine, outputs written by the actions of the nested GRAFCETs, internal variables are the program&apos;s memory. A variable without a default starts at its type&apos;s (FALSE, 0).</source>
+        <translation>Die deklarierten Variablen in der Reihenfolge ihrer Deklaration. Eingänge werden von der Maschine gelesen, Ausgänge von den Aktionen der eingebetteten GRAFCETs geschrieben, interne Variablen sind der Speicher des Programms. Eine Variable ohne Anfangswert beginnt mit dem ihres Typs (FALSE, 0).</translation>
+    </message>
+    <message>
+        <source>No variables are declared.</source>
+        <translation>Es sind keine Variablen deklariert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n Transition</numerusform>
+            <numerusform>%n Transitionen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>function block %1</source>
+        <translation>Funktionsbaustein %1</translation>
+    </message>
+    <message>
+        <source>This GRAFCET has no steps yet.</source>
+        <translation>Dieser GRAFCET hat noch keine Schritte.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1, continued</source>
+        <translation>Eingebetteter GRAFCET von %1, Fortsetzung</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Steps of %1</source>
+        <translation>Schritte von %1</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the Hierarchical Design Pattern: the program %1 holds the active GEMMA state and evaluates its transitions by priority, and each visible macro-step or enclosing step is a function block that %1 calls while that state is active. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio erzeugt das SPS-Programm als Structured Text nach IEC 61131-3 nach dem Hierarchical Design Pattern: Das Programm %1 hält den aktiven GEMMA-Zustand und wertet dessen Transitionen nach Priorität aus, und jeder sichtbare Makroschritt oder einschließende Schritt ist ein Funktionsbaustein, den %1 aufruft, solange dieser Zustand aktiv ist. Diese Übersicht nennt die Programmorganisationseinheiten und ihre Schnittstellen; Datei &gt; Strukturierten Text (ST) exportieren und PLCopen XML exportieren schreiben den Code selbst.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>Das Modell hat %n Fehler: Der erzeugte Code markiert ihn mit einem Kommentar.</numerusform>
+            <numerusform>Das Modell hat %n Fehler: Der erzeugte Code markiert jeden mit einem Kommentar.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Konfiguration</translation>
+    </message>
+    <message>
+        <source>Resource</source>
+        <translation>Ressource</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Task</translation>
+    </message>
+    <message>
+        <source>%1: cyclic, every %2, priority %3</source>
+        <translation>%1: zyklisch, alle %2, Priorität %3</translation>
+    </message>
+    <message>
+        <source>Program instance</source>
+        <translation>Programminstanz</translation>
+    </message>
+    <message>
+        <source>Global variable list</source>
+        <translation>Globale Variablenliste</translation>
+    </message>
+    <message>
+        <source>The GEMMA layer: it holds the active state in State, evaluates that state&apos;s transitions by priority and calls the function block of a state with nested behaviour while that state is active.</source>
+        <translation>Die GEMMA-Ebene: Sie hält den aktiven Zustand in State, wertet die Transitionen dieses Zustands nach Priorität aus und ruft den Funktionsbaustein eines Zustands mit eingebettetem Verhalten auf, solange dieser Zustand aktiv ist.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 (page %2). %3 calls it through its instance %4 while %4 is active.</source>
+        <translation>Der eingebettete GRAFCET von %1 (Seite %2). %3 ruft ihn über seine Instanz %4 auf, solange %4 aktiv ist.</translation>
+    </message>
+    <message>
+        <source>The nested behaviour of %1, not written yet: until it is, the function block completes at once. %2 calls it through its instance %3.</source>
+        <translation>Das eingebettete Verhalten von %1, noch nicht geschrieben: Bis dahin meldet der Funktionsbaustein sofort Complete. %2 ruft ihn über seine Instanz %3 auf.</translation>
+    </message>
+    <message>
+        <source>Declaration</source>
+        <translation>Deklaration</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Anfangswert</translation>
+    </message>
+    <message>
+        <source>Global variables it reads (VAR_EXTERNAL): %1.</source>
+        <translation>Globale Variablen, die er liest (VAR_EXTERNAL): %1.</translation>
+    </message>
+    <message>
+        <source>Its own variables (VAR): %1.</source>
+        <translation>Eigene Variablen (VAR): %1.</translation>
+    </message>
+    <message>
+        <source>Global variables</source>
+        <translation>Globale Variablen</translation>
+    </message>
+    <message>
+        <source>in the VAR_GLOBAL of the configuration %1</source>
+        <translation>im VAR_GLOBAL der Konfiguration %1</translation>
+    </message>
+    <message>
+        <source>in the global variable list %1</source>
+        <translation>in der globalen Variablenliste %1</translation>
+    </message>
+    <message>
+        <source>The declared variables (page %1) are the program&apos;s global variables, %2.</source>
+        <translation>Die deklarierten Variablen (Seite %1) sind die globalen Variablen des Programms, %2.</translation>
+    </message>
+    <message>
+        <source>The generator adds these:</source>
+        <translation>Der Generator fügt diese hinzu:</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -1629,6 +1944,18 @@
     <message>
         <source>%1, nested GRAFCET of %2</source>
         <translation>%1, eingebetteter GRAFCET von %2</translation>
+    </message>
+    <message>
+        <source>Export Speci&amp;fication…</source>
+        <translation>Spezifi&amp;kation exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the whole model as one PDF document: the chart, the states, the variables, every nested GRAFCET and the outline of the generated code</source>
+        <translation>Das ganze Modell als ein PDF-Dokument schreiben: das Diagramm, die Zustände, die Variablen, jeden eingebetteten GRAFCET und die Übersicht des erzeugten Codes</translation>
+    </message>
+    <message>
+        <source>Export Specification</source>
+        <translation>Spezifikation exportieren</translation>
     </message>
 </context>
 <context>

@@ -1238,6 +1238,321 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message>
+        <source>%1 specification</source>
+        <extracomment>the specification&apos;s title and the file name it is saved under; %1 is the model&apos;s name</extracomment>
+        <translation>Especificación %1</translation>
+    </message>
+    <message>
+        <source>GEMMA chart</source>
+        <translation>Diagrama GEMMA</translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Estados</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Transiciones</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variables</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs</source>
+        <translation>GRAFCET anidados</translation>
+    </message>
+    <message>
+        <source>Generated code</source>
+        <translation>Código generado</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Especificación</translation>
+    </message>
+    <message>
+        <source>GEMMA-GRAFCET specification</source>
+        <translation>Especificación GEMMA-GRAFCET</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errores</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n advertencia</numerusform>
+            <numerusform>%n advertencias</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Archivo</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>aún sin guardar</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Fecha</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>Estado inicial</translation>
+    </message>
+    <message>
+        <source>PLC task cycle</source>
+        <translation>Ciclo de la tarea del PLC</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Code dialect</source>
+        <translation>Dialecto del código</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET evolution</source>
+        <translation>Evolución de los GRAFCET anidados</translation>
+    </message>
+    <message>
+        <source>Until stable, in one call of its function block</source>
+        <translation>Hasta la estabilidad, en una llamada de su bloque de función</translation>
+    </message>
+    <message>
+        <source>One evolution per PLC scan</source>
+        <translation>Una evolución por ciclo del PLC</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Comprobaciones</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>No se ha encontrado ningún problema</translation>
+    </message>
+    <message>
+        <source>Written by</source>
+        <translation>Escrito con</translation>
+    </message>
+    <message>
+        <source>GG Studio %1</source>
+        <translation>GG Studio %1</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Contenido</translation>
+    </message>
+    <message>
+        <source>GEMMA chart, continued</source>
+        <translation>Diagrama GEMMA, continuación</translation>
+    </message>
+    <message>
+        <source>States, transitions and variables</source>
+        <translation>Estados, transiciones y variables</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>GRAFCET</source>
+        <translation>GRAFCET</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Comentario</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, inicial</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n etapa</numerusform>
+            <numerusform>%n etapas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The visible states of the GEMMA chart, in state order. A macro-step or an enclosing step runs its nested GRAFCET while it is active.</source>
+        <translation>Los estados visibles del diagrama GEMMA, en el orden de los estados. Una macroetapa o una etapa encapsulante ejecuta su GRAFCET anidado mientras está activa.</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transición</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Prioridad</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Condición</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Memorias</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negada</translation>
+    </message>
+    <message>
+        <source>The transitions that take part: visible, between visible states. A state evaluates its transitions by priority, 1 first; a negated transition fires when its condition is FALSE.</source>
+        <translation>Las transiciones que intervienen: visibles, entre estados visibles. Un estado evalúa sus transiciones por prioridad, la 1 primero; una transición negada se franquea cuando su condición es FALSE.</translation>
+    </message>
+    <message>
+        <source>No transition takes part.</source>
+        <translation>Ninguna transición interviene.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Clase</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valor inicial</translation>
+    </message>
+    <message>
+        <source>The declared variables, in declaration order. Inputs are read from the machine, outputs written by the actions of the nested GRAFCETs, internal variables are the program&apos;s memory. A variable without a default starts at its type&apos;s (FALSE, 0).</source>
+        <translation>Las variables declaradas, en el orden de su declaración. Las entradas se leen de la máquina, las salidas las escriben las acciones de los GRAFCET anidados, las variables internas son la memoria del programa. Una variable sin valor inicial empieza con el de su tipo (FALSE, 0).</translation>
+    </message>
+    <message>
+        <source>No variables are declared.</source>
+        <translation>No hay variables declaradas.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n transición</numerusform>
+            <numerusform>%n transiciones</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>function block %1</source>
+        <translation>bloque de función %1</translation>
+    </message>
+    <message>
+        <source>This GRAFCET has no steps yet.</source>
+        <translation>Este GRAFCET aún no tiene etapas.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1, continued</source>
+        <translation>GRAFCET anidado de %1, continuación</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Etapa</translation>
+    </message>
+    <message>
+        <source>Steps of %1</source>
+        <translation>Etapas de %1</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the Hierarchical Design Pattern: the program %1 holds the active GEMMA state and evaluates its transitions by priority, and each visible macro-step or enclosing step is a function block that %1 calls while that state is active. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio genera el programa del PLC como Structured Text IEC 61131-3 según el Hierarchical Design Pattern: el programa %1 guarda el estado GEMMA activo y evalúa sus transiciones por prioridad, y cada macroetapa o etapa encapsulante visible es un bloque de función que %1 llama mientras ese estado está activo. Este esquema da las unidades de organización de programa y sus interfaces; Archivo &gt; Exportar a texto estructurado (ST) y Exportar a PLCopen XML escriben el código en sí.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>El modelo tiene %n error: el código generado lo marca con un comentario.</numerusform>
+            <numerusform>El modelo tiene %n errores: el código generado marca cada uno con un comentario.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuración</translation>
+    </message>
+    <message>
+        <source>Resource</source>
+        <translation>Recurso</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Tarea</translation>
+    </message>
+    <message>
+        <source>%1: cyclic, every %2, priority %3</source>
+        <translation>%1: cíclica, cada %2, prioridad %3</translation>
+    </message>
+    <message>
+        <source>Program instance</source>
+        <translation>Instancia del programa</translation>
+    </message>
+    <message>
+        <source>Global variable list</source>
+        <translation>Lista de variables globales</translation>
+    </message>
+    <message>
+        <source>The GEMMA layer: it holds the active state in State, evaluates that state&apos;s transitions by priority and calls the function block of a state with nested behaviour while that state is active.</source>
+        <translation>La capa GEMMA: guarda el estado activo en State, evalúa las transiciones de ese estado por prioridad y llama al bloque de función de un estado con comportamiento anidado mientras ese estado está activo.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 (page %2). %3 calls it through its instance %4 while %4 is active.</source>
+        <translation>El GRAFCET anidado de %1 (página %2). %3 lo llama mediante su instancia %4 mientras %4 está activa.</translation>
+    </message>
+    <message>
+        <source>The nested behaviour of %1, not written yet: until it is, the function block completes at once. %2 calls it through its instance %3.</source>
+        <translation>El comportamiento anidado de %1, aún sin escribir: mientras tanto, el bloque de función termina enseguida. %2 lo llama mediante su instancia %3.</translation>
+    </message>
+    <message>
+        <source>Declaration</source>
+        <translation>Declaración</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Valor inicial</translation>
+    </message>
+    <message>
+        <source>Global variables it reads (VAR_EXTERNAL): %1.</source>
+        <translation>Variables globales que lee (VAR_EXTERNAL): %1.</translation>
+    </message>
+    <message>
+        <source>Its own variables (VAR): %1.</source>
+        <translation>Sus propias variables (VAR): %1.</translation>
+    </message>
+    <message>
+        <source>Global variables</source>
+        <translation>Variables globales</translation>
+    </message>
+    <message>
+        <source>in the VAR_GLOBAL of the configuration %1</source>
+        <translation>en el VAR_GLOBAL de la configuración %1</translation>
+    </message>
+    <message>
+        <source>in the global variable list %1</source>
+        <translation>en la lista de variables globales %1</translation>
+    </message>
+    <message>
+        <source>The declared variables (page %1) are the program&apos;s global variables, %2.</source>
+        <translation>Las variables declaradas (página %1) son las variables globales del programa, %2.</translation>
+    </message>
+    <message>
+        <source>The generator adds these:</source>
+        <translation>El generador añade estas:</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Página %1 de %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -1629,6 +1944,18 @@
     <message>
         <source>%1, nested GRAFCET of %2</source>
         <translation>%1, GRAFCET anidado de %2</translation>
+    </message>
+    <message>
+        <source>Export Speci&amp;fication…</source>
+        <translation>Exportar la especi&amp;ficación…</translation>
+    </message>
+    <message>
+        <source>Write the whole model as one PDF document: the chart, the states, the variables, every nested GRAFCET and the outline of the generated code</source>
+        <translation>Escribir todo el modelo como un único documento PDF: el diagrama, los estados, las variables, cada GRAFCET anidado y el esquema del código generado</translation>
+    </message>
+    <message>
+        <source>Export Specification</source>
+        <translation>Exportar la especificación</translation>
     </message>
 </context>
 <context>

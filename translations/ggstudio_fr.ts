@@ -1238,6 +1238,321 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message>
+        <source>%1 specification</source>
+        <extracomment>the specification&apos;s title and the file name it is saved under; %1 is the model&apos;s name</extracomment>
+        <translation>Spécification %1</translation>
+    </message>
+    <message>
+        <source>GEMMA chart</source>
+        <translation>Diagramme GEMMA</translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>États</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Transitions</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variables</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs</source>
+        <translation>GRAFCET imbriqués</translation>
+    </message>
+    <message>
+        <source>Generated code</source>
+        <translation>Code généré</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Spécification</translation>
+    </message>
+    <message>
+        <source>GEMMA-GRAFCET specification</source>
+        <translation>Spécification GEMMA-GRAFCET</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n erreur</numerusform>
+            <numerusform>%n erreurs</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n avertissement</numerusform>
+            <numerusform>%n avertissements</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Fichier</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>pas encore enregistré</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Date</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>État initial</translation>
+    </message>
+    <message>
+        <source>PLC task cycle</source>
+        <translation>Cycle de la tâche automate</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1&#xa0;ms</translation>
+    </message>
+    <message>
+        <source>Code dialect</source>
+        <translation>Dialecte du code</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET evolution</source>
+        <translation>Évolution des GRAFCET imbriqués</translation>
+    </message>
+    <message>
+        <source>Until stable, in one call of its function block</source>
+        <translation>Jusqu&apos;à stabilité, en un appel de son bloc fonctionnel</translation>
+    </message>
+    <message>
+        <source>One evolution per PLC scan</source>
+        <translation>Une évolution par cycle automate</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Vérifications</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>Aucun problème trouvé</translation>
+    </message>
+    <message>
+        <source>Written by</source>
+        <translation>Écrit par</translation>
+    </message>
+    <message>
+        <source>GG Studio %1</source>
+        <translation>GG Studio %1</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Sommaire</translation>
+    </message>
+    <message>
+        <source>GEMMA chart, continued</source>
+        <translation>Diagramme GEMMA, suite</translation>
+    </message>
+    <message>
+        <source>States, transitions and variables</source>
+        <translation>États, transitions et variables</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>État</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>GRAFCET</source>
+        <translation>GRAFCET</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commentaire</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, initiale</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n étape</numerusform>
+            <numerusform>%n étapes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The visible states of the GEMMA chart, in state order. A macro-step or an enclosing step runs its nested GRAFCET while it is active.</source>
+        <translation>Les états visibles du diagramme GEMMA, dans l&apos;ordre des états. Une macro-étape ou une étape encapsulante exécute son GRAFCET imbriqué tant qu&apos;elle est active.</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Priorité</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Réceptivité</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Mémoires</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, niée</translation>
+    </message>
+    <message>
+        <source>The transitions that take part: visible, between visible states. A state evaluates its transitions by priority, 1 first; a negated transition fires when its condition is FALSE.</source>
+        <translation>Les transitions qui comptent&#xa0;: visibles, entre des états visibles. Un état évalue ses transitions par priorité, 1 d&apos;abord&#xa0;; une transition niée est franchie quand sa réceptivité est FALSE.</translation>
+    </message>
+    <message>
+        <source>No transition takes part.</source>
+        <translation>Aucune transition ne compte.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Nature</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valeur initiale</translation>
+    </message>
+    <message>
+        <source>The declared variables, in declaration order. Inputs are read from the machine, outputs written by the actions of the nested GRAFCETs, internal variables are the program&apos;s memory. A variable without a default starts at its type&apos;s (FALSE, 0).</source>
+        <translation>Les variables déclarées, dans l&apos;ordre de leur déclaration. Les entrées sont lues sur la machine, les sorties écrites par les actions des GRAFCET imbriqués, les variables internes sont la mémoire du programme. Une variable sans valeur initiale démarre à celle de son type (FALSE, 0).</translation>
+    </message>
+    <message>
+        <source>No variables are declared.</source>
+        <translation>Aucune variable n&apos;est déclarée.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n transition</numerusform>
+            <numerusform>%n transitions</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>function block %1</source>
+        <translation>bloc fonctionnel %1</translation>
+    </message>
+    <message>
+        <source>This GRAFCET has no steps yet.</source>
+        <translation>Ce GRAFCET n&apos;a pas encore d&apos;étapes.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1, continued</source>
+        <translation>GRAFCET imbriqué de %1, suite</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Étape</translation>
+    </message>
+    <message>
+        <source>Steps of %1</source>
+        <translation>Étapes de %1</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the Hierarchical Design Pattern: the program %1 holds the active GEMMA state and evaluates its transitions by priority, and each visible macro-step or enclosing step is a function block that %1 calls while that state is active. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio génère le programme automate en Structured Text IEC 61131-3 selon le Hierarchical Design Pattern&#xa0;: le programme %1 tient l&apos;état GEMMA actif et évalue ses transitions par priorité, et chaque macro-étape ou étape encapsulante visible est un bloc fonctionnel que %1 appelle tant que cet état est actif. Ce plan donne les unités d&apos;organisation de programme et leurs interfaces&#xa0;; Fichier &gt; Exporter en texte structuré (ST) et Exporter en PLCopen XML écrivent le code lui-même.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>Le modèle a %n erreur&#xa0;: le code généré la signale par un commentaire.</numerusform>
+            <numerusform>Le modèle a %n erreurs&#xa0;: le code généré signale chacune par un commentaire.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuration</translation>
+    </message>
+    <message>
+        <source>Resource</source>
+        <translation>Ressource</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Tâche</translation>
+    </message>
+    <message>
+        <source>%1: cyclic, every %2, priority %3</source>
+        <translation>%1&#xa0;: cyclique, toutes les %2, priorité %3</translation>
+    </message>
+    <message>
+        <source>Program instance</source>
+        <translation>Instance du programme</translation>
+    </message>
+    <message>
+        <source>Global variable list</source>
+        <translation>Liste de variables globales</translation>
+    </message>
+    <message>
+        <source>The GEMMA layer: it holds the active state in State, evaluates that state&apos;s transitions by priority and calls the function block of a state with nested behaviour while that state is active.</source>
+        <translation>La couche GEMMA&#xa0;: elle tient l&apos;état actif dans State, évalue les transitions de cet état par priorité et appelle le bloc fonctionnel d&apos;un état au comportement imbriqué tant que cet état est actif.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 (page %2). %3 calls it through its instance %4 while %4 is active.</source>
+        <translation>Le GRAFCET imbriqué de %1 (page %2). %3 l&apos;appelle par son instance %4 tant que %4 est active.</translation>
+    </message>
+    <message>
+        <source>The nested behaviour of %1, not written yet: until it is, the function block completes at once. %2 calls it through its instance %3.</source>
+        <translation>Le comportement imbriqué de %1, pas encore écrit&#xa0;: en attendant, le bloc fonctionnel se termine aussitôt. %2 l&apos;appelle par son instance %3.</translation>
+    </message>
+    <message>
+        <source>Declaration</source>
+        <translation>Déclaration</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Valeur initiale</translation>
+    </message>
+    <message>
+        <source>Global variables it reads (VAR_EXTERNAL): %1.</source>
+        <translation>Variables globales qu&apos;il lit (VAR_EXTERNAL)&#xa0;: %1.</translation>
+    </message>
+    <message>
+        <source>Its own variables (VAR): %1.</source>
+        <translation>Ses propres variables (VAR)&#xa0;: %1.</translation>
+    </message>
+    <message>
+        <source>Global variables</source>
+        <translation>Variables globales</translation>
+    </message>
+    <message>
+        <source>in the VAR_GLOBAL of the configuration %1</source>
+        <translation>dans le VAR_GLOBAL de la configuration %1</translation>
+    </message>
+    <message>
+        <source>in the global variable list %1</source>
+        <translation>dans la liste de variables globales %1</translation>
+    </message>
+    <message>
+        <source>The declared variables (page %1) are the program&apos;s global variables, %2.</source>
+        <translation>Les variables déclarées (page %1) sont les variables globales du programme, %2.</translation>
+    </message>
+    <message>
+        <source>The generator adds these:</source>
+        <translation>Le générateur ajoute celles-ci&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Page %1 sur %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -1629,6 +1944,18 @@
     <message>
         <source>%1, nested GRAFCET of %2</source>
         <translation>%1, GRAFCET imbriqué de %2</translation>
+    </message>
+    <message>
+        <source>Export Speci&amp;fication…</source>
+        <translation>Exporter la spé&amp;cification…</translation>
+    </message>
+    <message>
+        <source>Write the whole model as one PDF document: the chart, the states, the variables, every nested GRAFCET and the outline of the generated code</source>
+        <translation>Écrire tout le modèle dans un seul document PDF&#xa0;: le diagramme, les états, les variables, chaque GRAFCET imbriqué et le plan du code généré</translation>
+    </message>
+    <message>
+        <source>Export Specification</source>
+        <translation>Exporter la spécification</translation>
     </message>
 </context>
 <context>

@@ -1238,6 +1238,321 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message>
+        <source>%1 specification</source>
+        <extracomment>the specification&apos;s title and the file name it is saved under; %1 is the model&apos;s name</extracomment>
+        <translation>Specifica %1</translation>
+    </message>
+    <message>
+        <source>GEMMA chart</source>
+        <translation>Diagramma GEMMA</translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Stati</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Transizioni</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variabili</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs</source>
+        <translation>GRAFCET annidati</translation>
+    </message>
+    <message>
+        <source>Generated code</source>
+        <translation>Codice generato</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Specifica</translation>
+    </message>
+    <message>
+        <source>GEMMA-GRAFCET specification</source>
+        <translation>Specifica GEMMA-GRAFCET</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n errore</numerusform>
+            <numerusform>%n errori</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n avviso</numerusform>
+            <numerusform>%n avvisi</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>File</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>non ancora salvato</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Data</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>Stato iniziale</translation>
+    </message>
+    <message>
+        <source>PLC task cycle</source>
+        <translation>Ciclo del task PLC</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Code dialect</source>
+        <translation>Dialetto del codice</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET evolution</source>
+        <translation>Evoluzione dei GRAFCET annidati</translation>
+    </message>
+    <message>
+        <source>Until stable, in one call of its function block</source>
+        <translation>Fino alla stabilità, in una chiamata del suo blocco funzione</translation>
+    </message>
+    <message>
+        <source>One evolution per PLC scan</source>
+        <translation>Un&apos;evoluzione per ciclo PLC</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Controlli</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>Nessun problema trovato</translation>
+    </message>
+    <message>
+        <source>Written by</source>
+        <translation>Scritto con</translation>
+    </message>
+    <message>
+        <source>GG Studio %1</source>
+        <translation>GG Studio %1</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Indice</translation>
+    </message>
+    <message>
+        <source>GEMMA chart, continued</source>
+        <translation>Diagramma GEMMA, continuazione</translation>
+    </message>
+    <message>
+        <source>States, transitions and variables</source>
+        <translation>Stati, transizioni e variabili</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stato</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>GRAFCET</source>
+        <translation>GRAFCET</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commento</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, iniziale</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n tappa</numerusform>
+            <numerusform>%n tappe</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The visible states of the GEMMA chart, in state order. A macro-step or an enclosing step runs its nested GRAFCET while it is active.</source>
+        <translation>Gli stati visibili del diagramma GEMMA, nell&apos;ordine degli stati. Una macro-tappa o una tappa incapsulante esegue il suo GRAFCET annidato finché è attiva.</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transizione</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Priorità</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Condizione</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Memorie</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negata</translation>
+    </message>
+    <message>
+        <source>The transitions that take part: visible, between visible states. A state evaluates its transitions by priority, 1 first; a negated transition fires when its condition is FALSE.</source>
+        <translation>Le transizioni che contano: visibili, tra stati visibili. Uno stato valuta le sue transizioni per priorità, prima la 1; una transizione negata scatta quando la sua condizione è FALSE.</translation>
+    </message>
+    <message>
+        <source>No transition takes part.</source>
+        <translation>Nessuna transizione conta.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Natura</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valore iniziale</translation>
+    </message>
+    <message>
+        <source>The declared variables, in declaration order. Inputs are read from the machine, outputs written by the actions of the nested GRAFCETs, internal variables are the program&apos;s memory. A variable without a default starts at its type&apos;s (FALSE, 0).</source>
+        <translation>Le variabili dichiarate, nell&apos;ordine di dichiarazione. Gli ingressi sono letti dalla macchina, le uscite scritte dalle azioni dei GRAFCET annidati, le variabili interne sono la memoria del programma. Una variabile senza valore iniziale parte da quello del suo tipo (FALSE, 0).</translation>
+    </message>
+    <message>
+        <source>No variables are declared.</source>
+        <translation>Nessuna variabile è dichiarata.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n transizione</numerusform>
+            <numerusform>%n transizioni</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>function block %1</source>
+        <translation>blocco funzione %1</translation>
+    </message>
+    <message>
+        <source>This GRAFCET has no steps yet.</source>
+        <translation>Questo GRAFCET non ha ancora tappe.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1, continued</source>
+        <translation>GRAFCET annidato di %1, continuazione</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Tappa</translation>
+    </message>
+    <message>
+        <source>Steps of %1</source>
+        <translation>Tappe di %1</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the Hierarchical Design Pattern: the program %1 holds the active GEMMA state and evaluates its transitions by priority, and each visible macro-step or enclosing step is a function block that %1 calls while that state is active. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio genera il programma PLC in Structured Text IEC 61131-3 secondo l&apos;Hierarchical Design Pattern: il programma %1 tiene lo stato GEMMA attivo e ne valuta le transizioni per priorità, e ogni macro-tappa o tappa incapsulante visibile è un blocco funzione che %1 chiama finché quello stato è attivo. Questo schema riporta le unità di organizzazione del programma e le loro interfacce; File &gt; Esporta Testo strutturato (ST) ed Esporta PLCopen XML scrivono il codice stesso.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>Il modello ha %n errore: il codice generato lo segnala con un commento.</numerusform>
+            <numerusform>Il modello ha %n errori: il codice generato segnala ciascuno con un commento.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configurazione</translation>
+    </message>
+    <message>
+        <source>Resource</source>
+        <translation>Risorsa</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Task</translation>
+    </message>
+    <message>
+        <source>%1: cyclic, every %2, priority %3</source>
+        <translation>%1: ciclico, ogni %2, priorità %3</translation>
+    </message>
+    <message>
+        <source>Program instance</source>
+        <translation>Istanza del programma</translation>
+    </message>
+    <message>
+        <source>Global variable list</source>
+        <translation>Lista delle variabili globali</translation>
+    </message>
+    <message>
+        <source>The GEMMA layer: it holds the active state in State, evaluates that state&apos;s transitions by priority and calls the function block of a state with nested behaviour while that state is active.</source>
+        <translation>Il livello GEMMA: tiene lo stato attivo in State, valuta le transizioni di quello stato per priorità e chiama il blocco funzione di uno stato con comportamento annidato finché quello stato è attivo.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 (page %2). %3 calls it through its instance %4 while %4 is active.</source>
+        <translation>Il GRAFCET annidato di %1 (pagina %2). %3 lo chiama tramite la sua istanza %4 finché %4 è attiva.</translation>
+    </message>
+    <message>
+        <source>The nested behaviour of %1, not written yet: until it is, the function block completes at once. %2 calls it through its instance %3.</source>
+        <translation>Il comportamento annidato di %1, non ancora scritto: nel frattempo il blocco funzione termina subito. %2 lo chiama tramite la sua istanza %3.</translation>
+    </message>
+    <message>
+        <source>Declaration</source>
+        <translation>Dichiarazione</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Valore iniziale</translation>
+    </message>
+    <message>
+        <source>Global variables it reads (VAR_EXTERNAL): %1.</source>
+        <translation>Variabili globali che legge (VAR_EXTERNAL): %1.</translation>
+    </message>
+    <message>
+        <source>Its own variables (VAR): %1.</source>
+        <translation>Le sue variabili (VAR): %1.</translation>
+    </message>
+    <message>
+        <source>Global variables</source>
+        <translation>Variabili globali</translation>
+    </message>
+    <message>
+        <source>in the VAR_GLOBAL of the configuration %1</source>
+        <translation>nel VAR_GLOBAL della configurazione %1</translation>
+    </message>
+    <message>
+        <source>in the global variable list %1</source>
+        <translation>nella lista delle variabili globali %1</translation>
+    </message>
+    <message>
+        <source>The declared variables (page %1) are the program&apos;s global variables, %2.</source>
+        <translation>Le variabili dichiarate (pagina %1) sono le variabili globali del programma, %2.</translation>
+    </message>
+    <message>
+        <source>The generator adds these:</source>
+        <translation>Il generatore aggiunge queste:</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Pagina %1 di %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -1629,6 +1944,18 @@
     <message>
         <source>%1, nested GRAFCET of %2</source>
         <translation>%1, GRAFCET annidato di %2</translation>
+    </message>
+    <message>
+        <source>Export Speci&amp;fication…</source>
+        <translation>Esporta la speci&amp;fica…</translation>
+    </message>
+    <message>
+        <source>Write the whole model as one PDF document: the chart, the states, the variables, every nested GRAFCET and the outline of the generated code</source>
+        <translation>Scrivere l&apos;intero modello come un unico documento PDF: il diagramma, gli stati, le variabili, ogni GRAFCET annidato e lo schema del codice generato</translation>
+    </message>
+    <message>
+        <source>Export Specification</source>
+        <translation>Esporta la specifica</translation>
     </message>
 </context>
 <context>
