@@ -89,14 +89,9 @@ GrafcetStepDock::GrafcetStepDock(Document* document, Selection* selection, QWidg
     : PropertyDock(ElementRef::Kind::GrafcetStep, title(), document, selection, parent)
 {
     setObjectName(QStringLiteral("grafcetStepDock"));
-    auto* scroll = new QScrollArea;
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(createForm());
     // The actions' checks and completion depend on the declared variables.
-    connect(document, &Document::variableChanged, this, &GrafcetStepDock::refresh);
-    connect(document, &Document::variablesChanged, this, &GrafcetStepDock::refresh);
-    setPages(scroll);
+    refreshOnVariableChanges();
+    setPages(scrolling(createForm()));
     retranslate();
 }
 

@@ -55,14 +55,9 @@ GrafcetTransitionDock::GrafcetTransitionDock(Document* document, Selection* sele
     : PropertyDock(ElementRef::Kind::GrafcetTransition, title(), document, selection, parent)
 {
     setObjectName(QStringLiteral("grafcetTransitionDock"));
-    auto* scroll = new QScrollArea;
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(createForm());
     // The receptivity's checks and completion depend on the declared variables.
-    connect(document, &Document::variableChanged, this, &GrafcetTransitionDock::refresh);
-    connect(document, &Document::variablesChanged, this, &GrafcetTransitionDock::refresh);
-    setPages(scroll);
+    refreshOnVariableChanges();
+    setPages(scrolling(createForm()));
     retranslate();
 }
 

@@ -10,6 +10,7 @@
 
 #include <QEvent>
 #include <QLabel>
+#include <QScrollArea>
 #include <QStackedWidget>
 
 namespace editor {
@@ -43,6 +44,21 @@ void PropertyDock::setPages(QWidget* form)
     connect(m_selection, &Selection::changed, this, &PropertyDock::onSelectionChanged);
     connect(m_selection, &Selection::focusFieldRequested, this, &PropertyDock::onFocusFieldRequested);
     onSelectionChanged(m_selection->current());
+}
+
+QScrollArea* PropertyDock::scrolling(QWidget* content)
+{
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+    return scroll;
+}
+
+void PropertyDock::refreshOnVariableChanges()
+{
+    connect(m_document, &Document::variableChanged, this, &PropertyDock::refresh);
+    connect(m_document, &Document::variablesChanged, this, &PropertyDock::refresh);
 }
 
 void PropertyDock::setPlaceholder(const QString& text)

@@ -4,6 +4,7 @@
 
 #include <QDockWidget>
 
+class QScrollArea;
 class QStackedWidget;
 
 namespace editor {
@@ -33,6 +34,12 @@ protected:
     // Shown instead of the placeholder while nothing at all is selected
     // (after setPages()); none by default.
     void setIdlePage(QWidget* page);
+    // `content` in a frameless scroll area: a dock shorter than its form
+    // (docks share their column) scrolls instead of making the window taller.
+    static QScrollArea* scrolling(QWidget* content);
+    // Refreshes on every change of the declared variables too, for a dock
+    // whose checks or completion depend on them.
+    void refreshOnVariableChanges();
 
     void changeEvent(QEvent* event) override;
 

@@ -75,17 +75,9 @@ StepDock::StepDock(Document* document, Selection* selection, QWidget* parent)
     // transition lists grow with the dock, and a dock shorter than the form
     // (it shares its column with the Variables dock) scrolls instead of
     // making the window taller than a laptop screen.
-    auto* scroll = new QScrollArea;
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(createForm());
-    setPages(scroll);
-    auto* guideScroll = new QScrollArea;
-    guideScroll->setWidgetResizable(true);
-    guideScroll->setFrameShape(QFrame::NoFrame);
+    setPages(scrolling(createForm()));
     m_startGuide = new StartGuide;
-    guideScroll->setWidget(m_startGuide);
-    setIdlePage(guideScroll);
+    setIdlePage(scrolling(m_startGuide));
     retranslate();
 }
 

@@ -108,14 +108,9 @@ TransitionDock::TransitionDock(Document* document, Selection* selection, QWidget
     : PropertyDock(ElementRef::Kind::Transition, title(), document, selection, parent)
 {
     setObjectName(QStringLiteral("transitionDock"));
-    auto* scroll = new QScrollArea;
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(createForm());
     // The condition checks and the tokens depend on the declared variables.
-    connect(document, &Document::variableChanged, this, &TransitionDock::refresh);
-    connect(document, &Document::variablesChanged, this, &TransitionDock::refresh);
-    setPages(scroll);
+    refreshOnVariableChanges();
+    setPages(scrolling(createForm()));
     retranslate();
 }
 

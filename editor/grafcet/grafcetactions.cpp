@@ -318,27 +318,25 @@ bool GrafcetActions::edit(const QString& text, const Edit& operation)
 
 void GrafcetActions::insertAfter()
 {
-    const int step = singleStep();
-    const int transition = singleTransition();
-    if (!grafcet() || (step == 0 && transition == 0))
-        return;
-    edit(tr("Add step %1 to %2").arg(grafcet()->nextStepNumber()).arg(m_stepId),
-         [step, transition](core::Grafcet& g, core::GrafcetCreated& created) {
-             return step != 0 ? core::insertStepAfterStep(g, step, &created)
-                              : core::insertStepAfterTransition(g, transition, &created);
-         });
+    insertStep(core::insertStepAfterStep, core::insertStepAfterTransition);
 }
 
 void GrafcetActions::insertBefore()
+{
+    insertStep(core::insertStepBeforeStep, core::insertStepBeforeTransition);
+}
+
+// A step and a transition at the selected step or transition, by the core
+// operation for each.
+void GrafcetActions::insertStep(InsertOperation atStep, InsertOperation atTransition)
 {
     const int step = singleStep();
     const int transition = singleTransition();
     if (!grafcet() || (step == 0 && transition == 0))
         return;
     edit(tr("Add step %1 to %2").arg(grafcet()->nextStepNumber()).arg(m_stepId),
-         [step, transition](core::Grafcet& g, core::GrafcetCreated& created) {
-             return step != 0 ? core::insertStepBeforeStep(g, step, &created)
-                              : core::insertStepBeforeTransition(g, transition, &created);
+         [=](core::Grafcet& g, core::GrafcetCreated& created) {
+             return step != 0 ? atStep(g, step, &created) : atTransition(g, transition, &created);
          });
 }
 

@@ -80,6 +80,8 @@ private:
 
     void insertAfter();
     void insertBefore();
+    using InsertOperation = core::Status (*)(core::Grafcet&, int, core::GrafcetCreated*);
+    void insertStep(InsertOperation atStep, InsertOperation atTransition);
     void addSelectionBranch();
     void addParallelBranch();
     void addJumpTo(int target);
