@@ -18,11 +18,6 @@ namespace {
 
 constexpr double kMinimumTextPoints = 8; // the labels on paper
 
-QRectF drawingRect(const GrafcetScene& scene)
-{
-    return scene.sceneRect();
-}
-
 // The drawing's part `source` into `target`, on white.
 void render(GrafcetScene& scene, QPainter& painter, const QRectF& target, const QRectF& source)
 {
@@ -38,7 +33,7 @@ void render(GrafcetScene& scene, QPainter& painter, const QRectF& target, const 
 QList<QPair<double, double>> elementExtents(const GrafcetScene& scene)
 {
     QList<QPair<double, double>> extents;
-    const double top = drawingRect(scene).top();
+    const double top = scene.drawingRect().top();
     for (const core::GrafcetStepLayout& step : scene.layout().steps) {
         const QRectF painted = scene.stepItem(step.number)->sceneBoundingRect();
         extents.push_back({painted.top() - top, painted.bottom() - top});
@@ -74,7 +69,7 @@ bool GrafcetExport::write(const QString& path, ChartExport::Format format, QStri
 
 bool GrafcetExport::writeSvg(const QString& path, QString* errorMessage) const
 {
-    const QRectF drawing = drawingRect(m_scene);
+    const QRectF drawing = m_scene.drawingRect();
     return PictureFile::writeSvg(
         path, drawing.size(), m_title, tr("Nested GRAFCET drawn by GG Studio"),
         [&](QPainter& painter) { render(m_scene, painter, QRectF(QPointF(0, 0), drawing.size()), drawing); },
@@ -83,7 +78,7 @@ bool GrafcetExport::writeSvg(const QString& path, QString* errorMessage) const
 
 bool GrafcetExport::writePng(const QString& path, QString* errorMessage, double scale) const
 {
-    const QRectF drawing = drawingRect(m_scene);
+    const QRectF drawing = m_scene.drawingRect();
     return PictureFile::writePng(
         path, drawing.size() * scale,
         [&](QPainter& painter) { render(m_scene, painter, QRectF(QPointF(0, 0), drawing.size() * scale), drawing); },
@@ -136,7 +131,7 @@ QList<double> GrafcetExport::pageStarts(const QList<QPair<double, double>>& elem
 void GrafcetExport::renderPages(QPainter& painter, QPagedPaintDevice& device, const QSizeF& page,
                                 double dotsPerPoint) const
 {
-    const QRectF drawing = drawingRect(m_scene);
+    const QRectF drawing = m_scene.drawingRect();
     const double fitPage = std::min(page.width() / drawing.width(), page.height() / drawing.height());
     const double fitWidth = page.width() / drawing.width();
     const double readable = kMinimumTextPoints * dotsPerPoint / chartstyle::kFontSize;

@@ -32,6 +32,14 @@ QString GrafcetTransitionItem::drawnReceptivity(const QString& receptivity)
     return text;
 }
 
+void GrafcetTransitionItem::setFired(bool fired)
+{
+    if (m_fired == fired)
+        return;
+    m_fired = fired;
+    update();
+}
+
 QRectF GrafcetTransitionItem::boundingRect() const
 {
     return m_bounds;
@@ -42,7 +50,8 @@ void GrafcetTransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsI
     painter->setRenderHint(QPainter::Antialiasing);
     const QPointF bar = toQPointF(m_layout.barCenter);
     const double half = core::kGrafcetBarLength / 2;
-    painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kBarWidth, Qt::SolidLine, Qt::FlatCap));
+    painter->setPen(QPen(m_fired ? chartstyle::firedColor() : chartstyle::inkColor(), chartstyle::kBarWidth,
+                         Qt::SolidLine, Qt::FlatCap));
     painter->drawLine(QLineF(bar.x() - half, bar.y(), bar.x() + half, bar.y()));
     painter->setPen(chartstyle::labelColor());
     chartstyle::drawText(painter, toQRectF(m_layout.labelRect), Qt::AlignLeft | Qt::AlignVCenter, m_label);

@@ -1,6 +1,7 @@
 #include "editor/simulation/simulationchartmarks.h"
 
 #include "editor/chart/chartscene.h"
+#include "editor/simulation/grafcetsimulationmarks.h"
 #include "editor/simulation/simulationsession.h"
 
 #include <QHash>
@@ -27,8 +28,18 @@ void SimulationChartMarks::update()
     }
     m_scene->setActiveStep(QString::fromStdString(simulator->activeStepId()));
     m_scene->setFiredTransition(m_session->lastFiredTransition());
-    for (const std::string& step : simulator->nestedSteps())
-        m_scene->setCompleteMark(QString::fromStdString(step), simulator->complete(step));
+    for (const std::string& step : simulator->nestedSteps()) {
+        const QString id = QString::fromStdString(step);
+        m_scene->setCompleteMark(id, simulator->complete(step));
+        std::optional<QString> running;
+        if (grafcetRuns(*simulator, step)) {
+            QStringList active;
+            for (int number : simulator->activeNestedSteps(step))
+                active << QString::number(number);
+            running = active.join(QStringLiteral(", "));
+        }
+        m_scene->setNestedRunning(id, running);
+    }
 
     // Tokens grouped by transition, in tokenNames() order.
     QHash<QString, QList<bool>> tokens;
