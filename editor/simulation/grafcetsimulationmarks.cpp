@@ -6,6 +6,7 @@
 #include "editor/grafcet/grafcetwiringitem.h"
 #include "editor/simulation/grafcetmarklabelitem.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/simulation/simulationtext.h"
 
 #include "core/layout/grafcetlayout.h"
 #include "core/simulation/simulator.h"
@@ -30,14 +31,6 @@ QString secondsText(std::int64_t ms, int minDecimals)
     while (decimals < 3 && ms % kUnit[decimals] != 0)
         ++decimals;
     return QLocale().toString(static_cast<double>(ms) / 1000.0, 'f', decimals);
-}
-
-QString stepsText(const std::vector<int>& steps)
-{
-    QStringList list;
-    for (int step : steps)
-        list << QString::number(step);
-    return list.join(QStringLiteral(", "));
 }
 
 } // namespace
@@ -105,7 +98,7 @@ void GrafcetSimulationMarks::update()
     const std::string stepId = id.toStdString();
     const core::NestedEngine* engine = simulator ? simulator->grafcetEngine(stepId) : nullptr;
     if (!engine) { // no simulation, or a step the simulator runs no GRAFCET for (hidden)
-        if (m_state != State::Off || m_caption)
+        if (m_state != State::Off)
             clear();
         return;
     }
@@ -147,20 +140,19 @@ void GrafcetSimulationMarks::update()
     showTimers(*engine);
 
     // The caption above the drawing.
-    const QString step = id;
     if (runs && engine->unstable())
         setCaption(tr("%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation")
-                       .arg(step),
+                       .arg(id),
                    true);
     else if (runs)
-        setCaption(tr("%1 is active: its GRAFCET runs (steps %2)").arg(step, stepsText(engine->activeSteps())),
+        setCaption(tr("%1 is active: its GRAFCET runs (steps %2)").arg(id, stepNumbersText(engine->activeSteps())),
                    false);
     else if (simulator->activeStepId() == stepId)
         setCaption(tr("%1 has just been entered: its GRAFCET starts from its initial steps in the next scan")
-                       .arg(step),
+                       .arg(id),
                    false);
     else
-        setCaption(tr("%1 is not active: its GRAFCET is shown greyed, as it was left").arg(step), false);
+        setCaption(tr("%1 is not active: its GRAFCET is shown greyed, as it was left").arg(id), false);
 }
 
 // Under each receptivity that reads a timer of an active step, the timer's

@@ -3,6 +3,7 @@
 #include "editor/chart/chartscene.h"
 #include "editor/simulation/grafcetsimulationmarks.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/simulation/simulationtext.h"
 
 #include <QHash>
 
@@ -31,14 +32,9 @@ void SimulationChartMarks::update()
     for (const std::string& step : simulator->nestedSteps()) {
         const QString id = QString::fromStdString(step);
         m_scene->setCompleteMark(id, simulator->complete(step));
-        std::optional<QString> running;
-        if (grafcetRuns(*simulator, step)) {
-            QStringList active;
-            for (int number : simulator->activeNestedSteps(step))
-                active << QString::number(number);
-            running = active.join(QStringLiteral(", "));
-        }
-        m_scene->setNestedRunning(id, running);
+        m_scene->setNestedRunning(id, grafcetRuns(*simulator, step)
+                                          ? std::optional<QString>(stepNumbersText(simulator->activeNestedSteps(step)))
+                                          : std::nullopt);
     }
 
     // Tokens grouped by transition, in tokenNames() order.

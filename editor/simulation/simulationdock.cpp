@@ -149,14 +149,6 @@ QColor nestedStatusColor(core::NestedTransitionStatus status)
     return {};
 }
 
-QString stepNumbersText(const std::vector<int>& numbers)
-{
-    QStringList list;
-    for (int number : numbers)
-        list << QString::number(number);
-    return list.join(QStringLiteral(", "));
-}
-
 QColor statusColor(core::TransitionStatus status)
 {
     switch (status) {
