@@ -33,6 +33,7 @@
 #include <QImage>
 #include <QLabel>
 #include <QPainter>
+#include <QScrollBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -165,6 +166,7 @@ private slots:
     void tabsShowTheSimulationOfBothLayers();
     void marksFollowTheHistoryAndTheReplay();
     void marksGoWhenTheSimulationEnds();
+    void captionIsInSight();
     void outputsAreReadOnlyLamps();
     void unstableIsShown();
 
@@ -471,6 +473,33 @@ void TestGrafcetSimulation::marksGoWhenTheSimulationEnds()
     m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
     QCOMPARE(f2->stepItem(3)->simulationMark(), Mark::None);
     QCOMPARE(labels(*f2, GrafcetMarkLabelItem::Kind::Caption).size(), 1);
+}
+
+// F1's drawing is taller than its tab: shown from its top, it stays at the
+// top when the caption comes above it, so the caption is in sight.
+void TestGrafcetSimulation::captionIsInSight()
+{
+    startOnDrillingCell();
+    GrafcetScene* f1 = openGrafcet("F1");
+    QVERIFY(f1);
+    GrafcetView* view = m_window->grafcetView(QStringLiteral("F1"));
+    QVERIFY(QTest::qWaitForWindowExposed(view));
+    QScrollBar* bar = view->verticalScrollBar();
+    QVERIFY(bar->maximum() > bar->minimum());
+    QCOMPARE(bar->value(), bar->minimum());
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    const QList<GrafcetMarkLabelItem*> captions = labels(*f1, GrafcetMarkLabelItem::Kind::Caption);
+    QCOMPARE(captions.size(), 1);
+    const QRectF caption = captions.front()->sceneBoundingRect();
+    QVERIFY(view->viewport()->rect().contains(view->mapFromScene(caption.topLeft())));
+    QVERIFY(caption.bottom() <= f1->drawingRect().top() + core::kGrafcetMargin); // above the drawing
+    // Scrolled down by the user, the view stays where it is.
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    bar->setValue(bar->maximum());
+    const int scrolled = bar->value();
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(std::abs(bar->value() - scrolled) <= 30);
+    QVERIFY(bar->value() > bar->minimum());
 }
 
 void TestGrafcetSimulation::outputsAreReadOnlyLamps()
