@@ -16,8 +16,10 @@
 #include "editor/document.h"
 #include "editor/examplemodels.h"
 #include "editor/exportactions.h"
+#include "editor/grafcet/grafcetactions.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetview.h"
+#include "editor/grafcet/nestedgrafcetavailable.h"
 #include "editor/languages.h"
 #include "editor/modelsettingsdialog.h"
 #include "editor/recentfiles.h"
@@ -117,6 +119,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
         delete close;
     }
     connect(m_centralTabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeGrafcetTab);
+    connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::rememberGrafcetTabs);
     setCentralWidget(m_centralTabs);
 
     // The right column runs the full height: the property docks are tall forms.
@@ -141,6 +144,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     onSimulationActiveChanged(m_session->isActive());
 
     connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &Document::filePathChanged, this, &MainWindow::rememberGrafcetTabs); // Save As
     connect(m_document, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::editFailed, this, &MainWindow::showEditFailure);
     connect(m_session, &SimulationSession::activeChanged, this, &MainWindow::onSimulationActiveChanged);
@@ -167,6 +171,7 @@ MainWindow::~MainWindow()
     m_document->disconnect(this);
     m_session->disconnect(this);
     m_verification->disconnect(this);
+    m_centralTabs->disconnect(this); // its tabs go with it: not the user's closing them
     delete m_chartMarks;
     delete m_problemCounter;
     deleteDocks();
@@ -611,7 +616,7 @@ GrafcetView* MainWindow::grafcetView(const QString& stepId) const
 
 bool MainWindow::openNestedGrafcet(const QString& stepId)
 {
-    if (!m_document->model().grafcet(stepId.toStdString()))
+    if (!canOpenNestedGrafcet(m_document->model(), stepId))
         return false;
     GrafcetView* view = grafcetView(stepId);
     if (!view) {
@@ -619,11 +624,13 @@ bool MainWindow::openNestedGrafcet(const QString& stepId)
         new GrafcetSimulationMarks(m_session, scene, scene); // marked at once when opened during a simulation
         view = new GrafcetView(scene);
         scene->setParent(view);
+        new GrafcetActions(*m_document, *view);
         view->setObjectName(QStringLiteral("grafcetView_") + stepId);
         m_centralTabs->addTab(view, QString());
         retitleGrafcetTabs();
     }
     m_centralTabs->setCurrentWidget(view);
+    rememberGrafcetTabs();
     return true;
 }
 
@@ -634,6 +641,45 @@ void MainWindow::closeGrafcetTab(int index)
     QWidget* view = m_centralTabs->widget(index);
     m_centralTabs->removeTab(index);
     delete view;
+    rememberGrafcetTabs();
+}
+
+void MainWindow::closeGrafcetTabs()
+{
+    for (int i = m_centralTabs->count() - 1; i > 0; --i) {
+        QWidget* view = m_centralTabs->widget(i);
+        m_centralTabs->removeTab(i);
+        delete view;
+    }
+}
+
+void MainWindow::rememberGrafcetTabs()
+{
+    if (m_switchingFile || m_document->filePath().isEmpty())
+        return;
+    Settings::GrafcetTabs tabs;
+    for (int i = 1; i < m_centralTabs->count(); ++i) {
+        if (auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i)))
+            tabs.steps << view->grafcetScene()->stepId();
+    }
+    if (auto* front = qobject_cast<GrafcetView*>(m_centralTabs->currentWidget()))
+        tabs.current = front->grafcetScene()->stepId();
+    m_settings->setGrafcetTabs(m_document->filePath(), tabs);
+}
+
+// The tabs of GRAFCETs the file no longer has (edited elsewhere) stay closed.
+void MainWindow::restoreGrafcetTabs()
+{
+    const Settings::GrafcetTabs tabs = m_settings->grafcetTabs(m_document->filePath());
+    m_switchingFile = true;
+    for (const QString& stepId : tabs.steps)
+        openNestedGrafcet(stepId);
+    if (GrafcetView* front = grafcetView(tabs.current))
+        m_centralTabs->setCurrentWidget(front);
+    else
+        m_centralTabs->setCurrentIndex(0);
+    m_switchingFile = false;
+    rememberGrafcetTabs();
 }
 
 void MainWindow::closeStaleGrafcetTabs()
@@ -896,7 +942,11 @@ void MainWindow::newModel()
 {
     if (!maybeSave())
         return;
+    rememberGrafcetTabs();
+    m_switchingFile = true;
+    closeGrafcetTabs();
     m_document->replaceModel(newTemplate(*m_settings), QString(), core::ModelFormat::Native);
+    m_switchingFile = false;
     m_selection->clear();
     updateTitle();
 }
@@ -926,8 +976,11 @@ bool MainWindow::openFile(const QString& path)
 bool MainWindow::loadFile(const QString& path)
 {
     QString error;
+    rememberGrafcetTabs();
     QApplication::setOverrideCursor(Qt::WaitCursor);
+    m_switchingFile = true;
     const bool loaded = m_document->load(path, &error);
+    m_switchingFile = false;
     QApplication::restoreOverrideCursor();
     if (!loaded) {
         QMessageBox box(QMessageBox::Critical, tr("Open Model"),
@@ -941,6 +994,10 @@ bool MainWindow::loadFile(const QString& path)
     }
     m_selection->clear();
     m_recentFiles->add(path);
+    m_switchingFile = true;
+    closeGrafcetTabs();
+    m_switchingFile = false;
+    restoreGrafcetTabs();
     m_settings->setLastModelDirectory(QFileInfo(path).absolutePath());
     updateTitle();
     switch (m_document->fileFormat()) {
@@ -1239,6 +1296,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
+    rememberGrafcetTabs();
     saveLayout();
     event->accept();
 }

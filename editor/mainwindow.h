@@ -90,8 +90,10 @@ public slots:
     bool exportPlcOpen(const QString& path, core::Dialect dialect);
     // The models autosave kept from a session that ended without saving.
     void offerRecovery();
-    // Opens (or brings to the front) the tab of `stepId`'s nested GRAFCET;
-    // false when the step has none.
+    // Opens (or brings to the front) the tab of `stepId`'s nested GRAFCET,
+    // with its structured editing (GrafcetActions); false when the step has
+    // none and is a simple step (a macro-step or an enclosing step without
+    // one opens on an empty drawing that offers to create it).
     bool openNestedGrafcet(const QString& stepId);
 
 protected:
@@ -158,6 +160,11 @@ private:
     // After a new model: the tabs of steps that have no GRAFCET any more close.
     void closeStaleGrafcetTabs();
     void retitleGrafcetTabs();
+    // The open GRAFCET tabs of the file are kept in the settings, and come
+    // back when the file is opened again.
+    void rememberGrafcetTabs();
+    void restoreGrafcetTabs();
+    void closeGrafcetTabs();
     void applyEditingLock();
     // Verify: runs the verifier and shows its findings in the Problems dock.
     void verify();
@@ -173,6 +180,7 @@ private:
     ChartScene* m_scene;
     ChartView* m_view;
     QTabWidget* m_centralTabs;
+    bool m_switchingFile = false; // tabs change with the file: not the user's choice to remember
     StepDock* m_stepDock = nullptr;
     TransitionDock* m_transitionDock = nullptr;
     VariablesDock* m_variablesDock = nullptr;

@@ -1,6 +1,8 @@
 #include "editor/settings.h"
 
 #include <QDir>
+#include <QFileInfo>
+#include <QVariantMap>
 
 #include <string>
 
@@ -96,6 +98,39 @@ QStringList Settings::recentFiles() const
 void Settings::setRecentFiles(const QStringList& files)
 {
     m_settings.setValue("files/recent", files.mid(0, kMaxRecentFiles));
+}
+
+// One map from absolute file path to its tabs: QSettings keys cannot hold
+// the slashes of a path.
+Settings::GrafcetTabs Settings::grafcetTabs(const QString& filePath) const
+{
+    const QVariantMap files = m_settings.value("session/grafcetTabs").toMap();
+    const QVariantMap entry = files.value(QDir::cleanPath(QFileInfo(filePath).absoluteFilePath())).toMap();
+    GrafcetTabs tabs{entry.value("steps").toStringList(), entry.value("current").toString()};
+    tabs.steps.removeAll(QString());
+    tabs.steps.removeDuplicates();
+    if (!tabs.steps.contains(tabs.current))
+        tabs.current.clear();
+    return tabs;
+}
+
+void Settings::setGrafcetTabs(const QString& filePath, const GrafcetTabs& tabs)
+{
+    QVariantMap files = m_settings.value("session/grafcetTabs").toMap();
+    const QString key = QDir::cleanPath(QFileInfo(filePath).absoluteFilePath());
+    if (tabs.steps.isEmpty())
+        files.remove(key);
+    else
+        files.insert(key, QVariantMap{{"steps", tabs.steps}, {"current", tabs.current}});
+    // Files no longer among the recent ones are forgotten, so the map stays small.
+    const QStringList recent = recentFiles();
+    for (auto it = files.begin(); it != files.end();) {
+        if (it.key() != key && !recent.contains(it.key()))
+            it = files.erase(it);
+        else
+            ++it;
+    }
+    m_settings.setValue("session/grafcetTabs", files);
 }
 
 core::Dialect Settings::lastExportDialect(core::Dialect fallback) const

@@ -45,6 +45,16 @@ public:
     QStringList recentFiles() const;
     void setRecentFiles(const QStringList& files);
 
+    // The nested GRAFCET tabs a model file had open (GEMMA step ids, in tab
+    // order) and the one in front ("" for the GEMMA chart), so that opening
+    // the file again brings its tabs back. Kept for the recent files only.
+    struct GrafcetTabs {
+        QStringList steps;
+        QString current;
+    };
+    GrafcetTabs grafcetTabs(const QString& filePath) const;
+    void setGrafcetTabs(const QString& filePath, const GrafcetTabs& tabs);
+
     // The fallback (the model's own dialect) until the user has exported once.
     core::Dialect lastExportDialect(core::Dialect fallback) const;
     void setLastExportDialect(core::Dialect dialect);

@@ -631,8 +631,13 @@ private:
             const int start = place->second.second;
             const int end = sourceItem;
             auto& lines = accepted[target];
+            // Two lines from inside the same block of the column (branches of
+            // one selection) could nest either way round: which one leaves
+            // lower is not known yet, and the wrong one outside would cross
+            // the other. Only one of them is a loop line.
             const bool interleaves = std::any_of(lines.begin(), lines.end(), [&](const Accepted& a) {
-                return (a.start < start && start < a.end && a.end < end) || (start < a.start && a.start < end && end < a.end);
+                return (a.start < start && start < a.end && a.end < end) || (start < a.start && a.start < end && end < a.end)
+                    || a.end == end;
             });
             if (interleaves)
                 continue;

@@ -9,6 +9,7 @@
 #include "editor/commands/settransitionhiddencommand.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/document.h"
+#include "editor/grafcet/nestedgrafcetavailable.h"
 #include "editor/selection.h"
 
 #include "core/model/model.h"
@@ -62,7 +63,7 @@ void ChartContextMenu::addStepEntries(QMenu* menu, const QString& stepId)
     const core::Step* step = m_document.model().step(stepId.toStdString());
     if (!step)
         return;
-    if (m_document.model().grafcet(stepId.toStdString())) {
+    if (canOpenNestedGrafcet(m_document.model(), stepId)) {
         QAction* open = addNamed(menu, "openGrafcetAction", tr("&Open Nested GRAFCET"));
         connect(open, &QAction::triggered, this, [this, stepId] { emit openGrafcetRequested(stepId); });
         menu->addSeparator();

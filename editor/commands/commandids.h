@@ -28,6 +28,7 @@ enum CommandId : int {
     PasteVariablesId,
     SetVariableKindId,
     SetEvolutionRuleId,
+    EditGrafcetId,
 };
 
 } // namespace editor

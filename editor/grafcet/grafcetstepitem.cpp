@@ -21,10 +21,12 @@ GrafcetStepItem::GrafcetStepItem(const core::GrafcetStepLayout& layout, QGraphic
     , m_layout(layout)
 {
     setZValue(chartstyle::kStepZ);
+    setFlag(ItemIsSelectable); // the GRAFCET tab's editing acts on the selected steps
     m_bounds = toQRectF(layout.box);
     for (const core::GrafcetActionLayout& action : layout.actions)
         m_bounds |= toQRectF(action.box) | toQRectF(action.conditionRect);
-    m_bounds.adjust(-2, -2, 2, 2);
+    const double margin = chartstyle::kHaloWidth;
+    m_bounds.adjust(-margin, -margin, margin, margin);
 }
 
 void GrafcetStepItem::setSimulationMark(SimulationMark mark)
@@ -64,6 +66,12 @@ void GrafcetStepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, 
 {
     painter->setRenderHint(QPainter::Antialiasing);
     const QRectF box = toQRectF(m_layout.box);
+    if (isSelected()) {
+        const double gap = chartstyle::kHaloWidth / 2;
+        painter->setPen(QPen(chartstyle::haloColor(), chartstyle::kHaloWidth));
+        painter->setBrush(Qt::NoBrush);
+        painter->drawRect(box.adjusted(-gap, -gap, gap, gap));
+    }
     painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kStrokeWidth));
     painter->setBrush(m_mark == SimulationMark::Active   ? chartstyle::activeFillColor()
                       : m_mark == SimulationMark::Frozen ? chartstyle::frozenFillColor()

@@ -15,11 +15,13 @@ GrafcetTransitionItem::GrafcetTransitionItem(const core::GrafcetTransitionLayout
     , m_label(drawnReceptivity(QString::fromStdString(receptivity)))
 {
     setZValue(chartstyle::kTransitionZ);
+    setFlag(ItemIsSelectable); // the GRAFCET tab's editing acts on the selected transition
     const QPointF bar = toQPointF(layout.barCenter);
     const double half = core::kGrafcetBarLength / 2;
+    const double margin = chartstyle::kHaloWidth;
     m_bounds = QRectF(bar.x() - half, bar.y() - chartstyle::kBarWidth, 2 * half, 2 * chartstyle::kBarWidth)
                    .united(toQRectF(layout.labelRect))
-                   .adjusted(-2, -2, 2, 2);
+                   .adjusted(-margin, -margin, margin, margin);
 }
 
 QString GrafcetTransitionItem::drawnReceptivity(const QString& receptivity)
@@ -50,6 +52,11 @@ void GrafcetTransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsI
     painter->setRenderHint(QPainter::Antialiasing);
     const QPointF bar = toQPointF(m_layout.barCenter);
     const double half = core::kGrafcetBarLength / 2;
+    if (isSelected()) {
+        painter->setPen(QPen(chartstyle::haloColor(), chartstyle::kBarWidth + chartstyle::kHaloWidth, Qt::SolidLine,
+                             Qt::RoundCap));
+        painter->drawLine(QLineF(bar.x() - half, bar.y(), bar.x() + half, bar.y()));
+    }
     painter->setPen(QPen(m_fired ? chartstyle::firedColor() : chartstyle::inkColor(), chartstyle::kBarWidth,
                          Qt::SolidLine, Qt::FlatCap));
     painter->drawLine(QLineF(bar.x() - half, bar.y(), bar.x() + half, bar.y()));

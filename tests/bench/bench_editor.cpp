@@ -5,6 +5,7 @@
 //  - one frame of simulation at 1,000 scans/s: the batch of scans one
 //    16 ms timer tick runs, the chart marks and Simulation dock refresh,
 //    and the repaint of the chart and the dock;
+//  - opening the tab of a 60-step nested GRAFCET, until it is painted;
 //  - the cold start to the first shown chart against a bare Qt window
 //    (tests/bench/startupprobe.cpp), both started here alternately, on the
 //    platform this process runs on.
@@ -26,6 +27,8 @@
 #include "editor/docks/stpreviewdock.h"
 #include "editor/docks/transitiondock.h"
 #include "editor/document.h"
+#include "editor/grafcet/grafcetscene.h"
+#include "editor/grafcet/grafcetview.h"
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
@@ -324,6 +327,50 @@ int startupRuns()
 }
 
 } // namespace
+
+TEST_CASE("opening the tab of a 60-step GRAFCET", "[editorbench]")
+{
+    editor::Translators translators;
+    REQUIRE(translators.setLanguage(QStringLiteral("en")));
+    editor::MainWindow window{translators};
+    window.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&window));
+    window.document()->replaceModel(factory::longGrafcetModel(60), QString(), core::ModelFormat::Native);
+    QTabWidget* tabs = window.centralTabs();
+    const QString f1 = QStringLiteral("F1");
+
+    // Opened, laid out and painted once; then closed for the next opening.
+    const auto openAndPaint = [&] {
+        REQUIRE(window.openNestedGrafcet(f1));
+        editor::GrafcetView* view = window.grafcetView(f1);
+        view->viewport()->repaint();
+        return view;
+    };
+    const auto close = [&](editor::GrafcetView* view) { emit tabs->tabCloseRequested(tabs->indexOf(view)); };
+    editor::GrafcetView* first = openAndPaint();
+    REQUIRE(first->grafcetScene()->layout().steps.size() == 60);
+    close(first);
+    REQUIRE(!window.grafcetView(f1));
+
+    BENCHMARK("open, lay out and paint the tab, then close it")
+    {
+        close(openAndPaint());
+    };
+
+    std::vector<double> openings;
+    for (int i = 0; i < 30; ++i) {
+        QElapsedTimer timer;
+        timer.start();
+        editor::GrafcetView* view = openAndPaint();
+        openings.push_back(static_cast<double>(timer.nsecsElapsed()) / 1e6);
+        close(view);
+        QCoreApplication::processEvents();
+    }
+    std::sort(openings.begin(), openings.end());
+    std::printf("\nopening the tab of a 60-step GRAFCET until painted, 30 openings: median %.2f ms, max %.2f ms\n",
+                median(openings), openings.back());
+    std::fflush(stdout);
+}
 
 TEST_CASE("cold start to the first shown chart", "[editorbench]")
 {

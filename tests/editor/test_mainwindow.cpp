@@ -276,6 +276,7 @@ private slots:
     void examplesOpenAsUntitledCopies();
     void startGuideShowsWhileNothingIsSelected();
     void nestedGrafcetOpensInATab();
+    void grafcetTabsComeBackWithTheirFile();
     void brokenFileLeavesTheModelUntouched();
     void editsMarkTheTitleModified();
     void undoActionNamesTheCommand();
@@ -445,7 +446,9 @@ void TestMainWindow::rightClickOnAStepOffersItsCommands()
         names = actionNames(menu);
         menu->findChild<QAction*>(QStringLiteral("hideElementAction"))->trigger();
     });
-    QCOMPARE(names, QStringList({"hideElementAction", "stepTypeMenu", "makeInitialAction", "editCommentAction"}));
+    // F1, a macro-step of the template, has no GRAFCET yet: its tab opens on an empty drawing.
+    QCOMPARE(names, QStringList({"openGrafcetAction", "hideElementAction", "stepTypeMenu", "makeInitialAction",
+                                 "editCommentAction"}));
     // The right click selected F1, and Hide is one undoable command.
     QCOMPARE(m_window->selection()->current(), ElementRef::step(QStringLiteral("F1")));
     QVERIFY(m_window->document()->model().step("F1")->hidden);
@@ -912,6 +915,42 @@ void TestMainWindow::nestedGrafcetOpensInATab()
     QVERIFY(m_window->grafcetView(QStringLiteral("F1"))->grafcetScene()->stepItem(99));
     m_window->document()->replaceModel(core::Model(), QString(), core::ModelFormat::Native);
     QCOMPARE(tabs->count(), 1);
+}
+
+void TestMainWindow::grafcetTabsComeBackWithTheirFile()
+{
+    m_window->findChild<QAction*>(QStringLiteral("example_0"))->trigger(); // the drilling cell
+    const QString cell = m_files.filePath(QStringLiteral("tabs-cell.json"));
+    QVERIFY(m_window->saveFile(cell));
+    QTabWidget* tabs = m_window->centralTabs();
+    QVERIFY(m_window->openNestedGrafcet(QStringLiteral("F2")));
+    QVERIFY(m_window->openNestedGrafcet(QStringLiteral("F1")));
+    tabs->setCurrentWidget(m_window->grafcetView(QStringLiteral("F2")));
+
+    // Another file: its own tabs (none), not the cell's.
+    m_window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    QCOMPARE(tabs->count(), 1);
+    const QString other = m_files.filePath(QStringLiteral("tabs-other.json"));
+    QVERIFY(m_window->saveFile(other));
+    QVERIFY(m_window->openFile(cell));
+    QCOMPARE(tabs->count(), 3);
+    QCOMPARE(tabs->widget(1), static_cast<QWidget*>(m_window->grafcetView(QStringLiteral("F2"))));
+    QCOMPARE(tabs->widget(2), static_cast<QWidget*>(m_window->grafcetView(QStringLiteral("F1"))));
+    QCOMPARE(tabs->currentWidget(), static_cast<QWidget*>(m_window->grafcetView(QStringLiteral("F2"))));
+    QVERIFY(m_window->openFile(other));
+    QCOMPARE(tabs->count(), 1);
+
+    // Closing a tab and choosing the chart are remembered too, through a new window.
+    QVERIFY(m_window->openFile(cell));
+    emit tabs->tabCloseRequested(tabs->indexOf(m_window->grafcetView(QStringLiteral("F2"))));
+    tabs->setCurrentIndex(0);
+    m_window->close();
+    m_window = editortest::showMainWindow(*m_translators);
+    QVERIFY(m_window->openFile(cell));
+    tabs = m_window->centralTabs();
+    QCOMPARE(tabs->count(), 2);
+    QVERIFY(m_window->grafcetView(QStringLiteral("F1")));
+    QCOMPARE(tabs->currentIndex(), 0);
 }
 
 void TestMainWindow::brokenFileLeavesTheModelUntouched()

@@ -43,6 +43,12 @@ core::Model comparisonVerificationModel(int operands, bool mixed);
 // Speed0 < 5`): that GV102 must be found whatever happens to the huge ones.
 core::Model hugeConditionVerificationModel();
 
+// The realistic model whose F1 has a nested GRAFCET of `steps` steps in
+// one sequence looping back to its initial step 1, each step with a
+// continuous action `Out<n>`, each transition with the receptivity `Go<n>`
+// (undeclared names: drawing and opening do not need them declared).
+core::Model longGrafcetModel(int steps);
+
 // Applies `count` random operations (valid and invalid ones: the model must
 // refuse the latter) and returns how many the model accepted.
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count);
