@@ -40,6 +40,7 @@ GrafcetMarkLabelItem::GrafcetMarkLabelItem(Kind kind, QGraphicsItem* parent)
     , m_kind(kind)
 {
     setZValue(kLabelZ);
+    setAcceptedMouseButtons(Qt::NoButton); // a click goes to the step or transition under it
 }
 
 double GrafcetMarkLabelItem::scale() const
