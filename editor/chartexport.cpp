@@ -5,16 +5,15 @@
 #include "editor/chart/transitionitem.h"
 #include "editor/conditionnotes.h"
 #include "editor/exportfile.h"
+#include "editor/hiddenselection.h"
 
 #include <QFileInfo>
 #include <QGraphicsItem>
 #include <QPagedPaintDevice>
 #include <QPainter>
 #include <QPrinter>
-#include <QSignalBlocker>
 
 #include <utility>
-
 
 namespace editor {
 
@@ -22,30 +21,6 @@ namespace {
 
 // White margin around the sheet, in scene units.
 constexpr double kMargin = 12;
-
-// Unselects the scene's items for the time of a rendering, without telling
-// the shared Selection (its signals are blocked), and selects them again.
-class HiddenSelection {
-public:
-    explicit HiddenSelection(QGraphicsScene& scene)
-        : m_blocker(&scene)
-        , m_selected(scene.selectedItems())
-    {
-        for (QGraphicsItem* item : m_selected)
-            item->setSelected(false);
-    }
-    ~HiddenSelection()
-    {
-        for (QGraphicsItem* item : m_selected)
-            item->setSelected(true);
-    }
-    HiddenSelection(const HiddenSelection&) = delete;
-    HiddenSelection& operator=(const HiddenSelection&) = delete;
-
-private:
-    QSignalBlocker m_blocker;
-    QList<QGraphicsItem*> m_selected;
-};
 
 // Numbers the conditions the labels cut short for the time of a rendering
 // (TransitionItem::setNoteNumber), and gives the labels back their

@@ -25,6 +25,10 @@ core::Diagnostic::Target diagnosticTarget(ElementRef::Kind kind)
         return core::Diagnostic::Target::Transition;
     case ElementRef::Kind::Variable:
         return core::Diagnostic::Target::Variable;
+    case ElementRef::Kind::GrafcetStep:
+        return core::Diagnostic::Target::GrafcetStep;
+    case ElementRef::Kind::GrafcetTransition:
+        return core::Diagnostic::Target::GrafcetTransition;
     case ElementRef::Kind::Model:
     case ElementRef::Kind::None:
         break;
@@ -39,6 +43,8 @@ bool concerns(const core::Diagnostic& diagnostic, const ElementRef& element)
     if (element.kind == ElementRef::Kind::Model)
         return true;
     const std::string id = element.id.toStdString();
+    if (element.isNested())
+        return diagnostic.element == id && diagnostic.nestedNumber == element.number;
     // IEC names ignore case, so "start" and "Start" are the same variable.
     return element.kind == ElementRef::Kind::Variable ? core::equalsIgnoreCase(diagnostic.element, id)
                                                       : diagnostic.element == id;

@@ -6,6 +6,8 @@
 #include "editor/chart/chartview.h"
 #include "editor/commands/resetmodelcommand.h"
 #include "editor/commands/setelementshiddencommand.h"
+#include "editor/docks/grafcetstepdock.h"
+#include "editor/docks/grafcettransitiondock.h"
 #include "editor/docks/problemsdock.h"
 #include "editor/docks/verificationpanel.h"
 #include "editor/docks/startguide.h"
@@ -18,6 +20,7 @@
 #include "editor/exportactions.h"
 #include "editor/grafcet/grafcetactions.h"
 #include "editor/grafcet/grafcetscene.h"
+#include "editor/grafcet/grafcetselectionsync.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/grafcet/nestedgrafcetavailable.h"
 #include "editor/languages.h"
@@ -48,6 +51,7 @@
 #include <QScreen>
 #include <QShortcut>
 #include <QStyle>
+#include <QChildEvent>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QToolBar>
@@ -120,6 +124,8 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     }
     connect(m_centralTabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeGrafcetTab);
     connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::rememberGrafcetTabs);
+    connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::onCentralTabChanged);
+    connect(m_selection, &Selection::changed, this, &MainWindow::onSelectionChanged);
     setCentralWidget(m_centralTabs);
 
     // The right column runs the full height: the property docks are tall forms.
@@ -183,7 +189,8 @@ QList<QDockWidget*> MainWindow::docks() const
 {
     if (!m_dockFrames.isEmpty())
         return m_dockFrames;
-    return {m_stepDock, m_transitionDock, m_simulationDock, m_variablesDock, m_problemsDock, m_stPreviewDock};
+    return {m_stepDock,      m_transitionDock, m_grafcetStepDock, m_grafcetTransitionDock,
+            m_simulationDock, m_variablesDock, m_problemsDock,    m_stPreviewDock};
 }
 
 QDockWidget* MainWindow::dockNamed(const QString& objectName) const
@@ -195,6 +202,8 @@ void MainWindow::createDocks()
 {
     m_stepDock = new StepDock(m_document, m_selection, this);
     m_transitionDock = new TransitionDock(m_document, m_selection, this);
+    m_grafcetStepDock = new GrafcetStepDock(m_document, m_selection, this);
+    m_grafcetTransitionDock = new GrafcetTransitionDock(m_document, m_selection, this);
     m_variablesDock = new VariablesDock(m_document, m_selection, this);
     m_problemsDock = new ProblemsDock(m_document, m_selection, m_verification, this);
     connect(m_problemsDock->verificationPanel(), &VerificationPanel::replayRequested, this,
@@ -203,11 +212,14 @@ void MainWindow::createDocks()
     connect(m_stepDock->startGuide(), &StartGuide::userGuideRequested, this, &MainWindow::showUserGuide);
     connect(m_stepDock, &StepDock::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
+    onCentralTabChanged();
     m_simulationDock = new SimulationDock(m_session, m_document, this);
     arrangeDocks(docks());
-    // Esc in a property dock goes back to the chart (Enter or F2 there came in).
-    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock}) {
-        auto* back = new QShortcut(QKeySequence(Qt::Key_Escape), dock, [this] { m_view->setFocus(Qt::ShortcutFocusReason); });
+    // Esc in a property dock goes back to the chart or GRAFCET in front (Enter or F2 there came in).
+    for (QDockWidget* dock :
+         std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock, m_grafcetStepDock, m_grafcetTransitionDock}) {
+        auto* back = new QShortcut(QKeySequence(Qt::Key_Escape), dock,
+                                   [this] { m_centralTabs->currentWidget()->setFocus(Qt::ShortcutFocusReason); });
         back->setContext(Qt::WidgetWithChildrenShortcut);
     }
 }
@@ -230,6 +242,8 @@ struct DockPlace {
 constexpr DockPlace kDockPlaces[] = {
     {"stepDock", &StepDock::title, DockGroup::Upper},
     {"transitionDock", &TransitionDock::title, DockGroup::Upper},
+    {"grafcetStepDock", &GrafcetStepDock::title, DockGroup::Upper},
+    {"grafcetTransitionDock", &GrafcetTransitionDock::title, DockGroup::Upper},
     {"simulationDock", &SimulationDock::title, DockGroup::Upper},
     {"variablesDock", &VariablesDock::title, DockGroup::Lower},
     {"problemsDock", &ProblemsDock::title, DockGroup::Lower},
@@ -312,6 +326,18 @@ bool MainWindow::eventFilter(QObject* watched, QEvent* event)
     return QMainWindow::eventFilter(watched, event);
 }
 
+void MainWindow::childEvent(QChildEvent* event)
+{
+    // Polished once QMainWindow has set the bar up (it elides by default).
+    if (event->type() == QEvent::ChildPolished) {
+        if (auto* bar = qobject_cast<QTabBar*>(event->child())) {
+            bar->setElideMode(Qt::ElideNone);
+            bar->setUsesScrollButtons(true);
+        }
+    }
+    QMainWindow::childEvent(event);
+}
+
 void MainWindow::stopWatchingFirstFrame()
 {
     if (m_firstFrameWatched)
@@ -333,6 +359,8 @@ void MainWindow::deleteDocks()
     }
     m_stepDock = nullptr;
     m_transitionDock = nullptr;
+    m_grafcetStepDock = nullptr;
+    m_grafcetTransitionDock = nullptr;
     m_variablesDock = nullptr;
     m_problemsDock = nullptr;
     m_stPreviewDock = nullptr;
@@ -628,10 +656,27 @@ bool MainWindow::openNestedGrafcet(const QString& stepId)
         view->setObjectName(QStringLiteral("grafcetView_") + stepId);
         m_centralTabs->addTab(view, QString());
         retitleGrafcetTabs();
+        m_centralTabs->setCurrentWidget(view);
+        // Once shown, so that the view scrolls to a selected element after its first placing.
+        new GrafcetSelectionSync(view, m_selection);
     }
     m_centralTabs->setCurrentWidget(view);
     rememberGrafcetTabs();
     return true;
+}
+
+void MainWindow::onSelectionChanged(const ElementRef& element)
+{
+    if (element.isNested())
+        openNestedGrafcet(element.id);
+}
+
+void MainWindow::onCentralTabChanged()
+{
+    if (!m_stPreviewDock)
+        return;
+    auto* view = qobject_cast<GrafcetView*>(m_centralTabs->currentWidget());
+    m_stPreviewDock->setGrafcetInFront(view ? view->grafcetScene()->stepId() : QString());
 }
 
 void MainWindow::closeGrafcetTab(int index)
@@ -1141,6 +1186,8 @@ UserGuide::Topic MainWindow::helpTopic() const
         {m_view, UserGuide::Topic::Chart},
         {m_stepDock, UserGuide::Topic::StepPanel},
         {m_transitionDock, UserGuide::Topic::TransitionPanel},
+        {m_grafcetStepDock, UserGuide::Topic::StepPanel},
+        {m_grafcetTransitionDock, UserGuide::Topic::TransitionPanel},
         {m_variablesDock, UserGuide::Topic::VariablesPanel},
         {m_problemsDock, UserGuide::Topic::ProblemsPanel},
         {m_stPreviewDock, UserGuide::Topic::StructuredTextPanel},
@@ -1286,7 +1333,8 @@ void MainWindow::applyEditingLock()
     m_showSelectionAction->setEnabled(!locked);
     if (!docksReady())
         return; // the docks are built with the lock applied
-    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock, m_variablesDock})
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock, m_grafcetStepDock,
+                                                                 m_grafcetTransitionDock, m_variablesDock})
         dock->widget()->setEnabled(!locked);
 }
 

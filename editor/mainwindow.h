@@ -22,6 +22,8 @@ class Autosave;
 class ChartContextMenu;
 class ChartScene;
 class ChartView;
+class GrafcetStepDock;
+class GrafcetTransitionDock;
 class GrafcetView;
 class Document;
 class ExportActions;
@@ -114,6 +116,9 @@ private:
     // Builds the docks' contents now if they were deferred.
     void ensureDocksReady();
     bool eventFilter(QObject* watched, QEvent* event) override;
+    // The dock groups' tab bars show whole titles and scroll: the upper group
+    // has five docks, more than a laptop's column holds once elided ("S…").
+    void childEvent(QChildEvent* event) override;
     void stopWatchingFirstFrame();
     void createActions();
     void createMenus();
@@ -165,6 +170,10 @@ private:
     void rememberGrafcetTabs();
     void restoreGrafcetTabs();
     void closeGrafcetTabs();
+    // A nested element selected (the Problems dock, a link) shows its GRAFCET's tab.
+    void onSelectionChanged(const ElementRef& element);
+    // The Structured Text dock shows the function block of the GRAFCET in front.
+    void onCentralTabChanged();
     void applyEditingLock();
     // Verify: runs the verifier and shows its findings in the Problems dock.
     void verify();
@@ -183,6 +192,8 @@ private:
     bool m_switchingFile = false; // tabs change with the file: not the user's choice to remember
     StepDock* m_stepDock = nullptr;
     TransitionDock* m_transitionDock = nullptr;
+    GrafcetStepDock* m_grafcetStepDock = nullptr;
+    GrafcetTransitionDock* m_grafcetTransitionDock = nullptr;
     VariablesDock* m_variablesDock = nullptr;
     ProblemsDock* m_problemsDock = nullptr;
     StPreviewDock* m_stPreviewDock = nullptr;

@@ -29,6 +29,14 @@ enum CommandId : int {
     SetVariableKindId,
     SetEvolutionRuleId,
     EditGrafcetId,
+    SetReceptivityId,         // merges typing in the same nested transition's receptivity
+    SetGrafcetStepCommentId,  // merges typing in the same nested step's comment
+    SetGrafcetStepInitialId,
+    RenumberGrafcetStepId,
+    SetGrafcetActionId,       // merges typing in the same action of the same nested step
+    AddGrafcetActionId,
+    RemoveGrafcetActionId,
+    MoveGrafcetActionId,
 };
 
 } // namespace editor

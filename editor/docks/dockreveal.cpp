@@ -18,7 +18,8 @@ void raiseOverPropertySibling(QDockWidget* dock)
         return;
     for (QDockWidget* sibling : window->tabifiedDockWidgets(dock)) {
         const QString name = sibling->objectName();
-        if (name == QLatin1String("stepDock") || name == QLatin1String("transitionDock")) {
+        if (name == QLatin1String("stepDock") || name == QLatin1String("transitionDock")
+            || name == QLatin1String("grafcetStepDock") || name == QLatin1String("grafcetTransitionDock")) {
             dock->raise();
             return;
         }

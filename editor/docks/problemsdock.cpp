@@ -36,6 +36,7 @@ enum Role {
     FieldRole,
     KeyRole,   // identifies the problem across refreshes
     GroupRole, // on the row of a nested GRAFCET's problems: its GEMMA step id
+    NumberRole, // a nested step or transition number
 };
 
 QString fromStd(const std::string& text)
@@ -47,10 +48,11 @@ ElementRef::Kind kindOf(core::Diagnostic::Target target)
 {
     switch (target) {
     case core::Diagnostic::Target::Step:
-    case core::Diagnostic::Target::GrafcetStep:
-    case core::Diagnostic::Target::GrafcetTransition:
-        // Until the GRAFCET view exists, a nested element selects its GEMMA step.
         return ElementRef::Kind::Step;
+    case core::Diagnostic::Target::GrafcetStep:
+        return ElementRef::Kind::GrafcetStep;
+    case core::Diagnostic::Target::GrafcetTransition:
+        return ElementRef::Kind::GrafcetTransition;
     case core::Diagnostic::Target::Transition:
         return ElementRef::Kind::Transition;
     case core::Diagnostic::Target::Variable:
@@ -78,6 +80,15 @@ QString elementText(const core::Diagnostic& diagnostic)
     default:
         return element;
     }
+}
+
+// The field a dock focuses: an action's field names its index ("action:2").
+QString fieldOf(const core::Diagnostic& diagnostic)
+{
+    const QString field = fromStd(diagnostic.field);
+    if (field == QLatin1String("action") && diagnostic.actionIndex >= 0)
+        return field + QLatin1Char(':') + QString::number(diagnostic.actionIndex);
+    return field;
 }
 
 QString keyOf(const core::Diagnostic& diagnostic)
@@ -236,7 +247,8 @@ void ProblemsDock::refresh()
         item->setData(0, SeverityRole, static_cast<int>(diagnostic.severity));
         item->setData(0, KindRole, static_cast<int>(kindOf(diagnostic.target)));
         item->setData(0, IdRole, fromStd(diagnostic.element));
-        item->setData(0, FieldRole, fromStd(diagnostic.field));
+        item->setData(0, FieldRole, fieldOf(diagnostic));
+        item->setData(0, NumberRole, diagnostic.nestedNumber);
         item->setData(0, KeyRole, keyOf(diagnostic));
         if (!newCurrent && !currentKey.isEmpty() && item->data(0, KeyRole).toString() == currentKey)
             newCurrent = item;
@@ -371,6 +383,8 @@ void ProblemsDock::activate(QTreeWidgetItem* item)
     ElementRef element;
     element.kind = static_cast<ElementRef::Kind>(item->data(0, KindRole).toInt());
     element.id = item->data(0, IdRole).toString();
+    if (element.isNested())
+        element.number = item->data(0, NumberRole).toInt();
     m_selection->select(element, item->data(0, FieldRole).toString());
 }
 

@@ -21,7 +21,9 @@ class VerificationRunner;
 // Every diagnostic of the model (severity, code, element, message), with a
 // filter button per severity that shows its count. Double-clicking (or
 // Enter on) a problem selects its element and asks for the field at fault,
-// which the Step, Transition and Variables docks focus. Given a
+// which the Step, Transition and Variables docks focus; a problem of a
+// nested GRAFCET's step or transition selects it (its tab opens) and the
+// Nested Step or Nested Transition dock focuses the field. Given a
 // VerificationRunner, the live checks and the verification findings are two
 // categories, each on its own tab (VerificationPanel).
 class ProblemsDock : public QDockWidget {

@@ -38,6 +38,7 @@ void PropertyDock::setPages(QWidget* form)
     connect(m_document, &Document::stepChanged, this, &PropertyDock::refresh);
     connect(m_document, &Document::transitionChanged, this, &PropertyDock::refresh);
     connect(m_document, &Document::modelReset, this, &PropertyDock::refresh);
+    connect(m_document, &Document::grafcetChanged, this, &PropertyDock::refresh);
     connect(m_document, &Document::diagnosticsChanged, this, &PropertyDock::refresh);
     connect(m_selection, &Selection::changed, this, &PropertyDock::onSelectionChanged);
     connect(m_selection, &Selection::focusFieldRequested, this, &PropertyDock::onFocusFieldRequested);
@@ -67,7 +68,7 @@ void PropertyDock::changeEvent(QEvent* event)
 
 void PropertyDock::refresh()
 {
-    const bool shown = exists(m_elementId);
+    const bool shown = exists(element());
     if (shown)
         m_pages->setCurrentIndex(1);
     else if (m_idlePage && m_selection->current().isNull())
@@ -78,21 +79,29 @@ void PropertyDock::refresh()
         refreshForm();
 }
 
-bool PropertyDock::exists(const QString& id) const
+bool PropertyDock::exists(const ElementRef& element) const
 {
     const core::Model& model = m_document->model();
-    const std::string key = id.toStdString();
-    if (m_kind == ElementRef::Kind::Step)
-        return model.step(key) != nullptr;
-    return m_kind == ElementRef::Kind::Transition && model.transition(key) != nullptr;
+    const std::string key = element.id.toStdString();
+    switch (element.kind) {
+    case ElementRef::Kind::Step: return model.step(key) != nullptr;
+    case ElementRef::Kind::Transition: return model.transition(key) != nullptr;
+    case ElementRef::Kind::GrafcetStep:
+        return model.grafcet(key) && model.grafcet(key)->step(element.number) != nullptr;
+    case ElementRef::Kind::GrafcetTransition:
+        return model.grafcet(key) && model.grafcet(key)->transition(element.number) != nullptr;
+    default: return false;
+    }
 }
 
 void PropertyDock::onSelectionChanged(const ElementRef& element)
 {
-    const QString id = element.kind == m_kind ? element.id : QString();
-    if (id == m_elementId && !id.isEmpty())
+    const bool ofKind = element.kind == m_kind && !element.id.isEmpty();
+    if (ofKind && element.id == m_elementId && element.number == m_number)
         return;
-    m_elementId = exists(id) ? id : QString();
+    const bool shown = ofKind && exists(element);
+    m_elementId = shown ? element.id : QString();
+    m_number = shown ? element.number : 0;
     refresh();
     if (!m_elementId.isEmpty())
         raiseOverPropertySibling(this);
@@ -100,7 +109,7 @@ void PropertyDock::onSelectionChanged(const ElementRef& element)
 
 void PropertyDock::onFocusFieldRequested(const ElementRef& element, const QString& field)
 {
-    if (element.kind != m_kind || element.id != m_elementId || m_elementId.isEmpty())
+    if (element.kind != m_kind || element.id != m_elementId || element.number != m_number || m_elementId.isEmpty())
         return;
     revealDock(this);
     focusField(field);

@@ -13,7 +13,7 @@ class Selection;
 class WrappingLabel;
 
 // A dock for the properties of the selected element of one kind (a step, a
-// transition): a placeholder while the selection is something else, the
+// transition, a step or transition of a nested GRAFCET): a placeholder while the selection is something else, the
 // dock's form otherwise. It follows the selection, refreshes as the document
 // changes, reveals itself to focus a field on Selection::focusFieldRequested
 // and follows a change of language; each dock supplies its form, how it
@@ -40,7 +40,9 @@ protected:
     Selection* selection() const { return m_selection; }
     // Empty when the selection is not of the dock's kind.
     QString elementId() const { return m_elementId; }
-    ElementRef element() const { return {m_kind, m_elementId}; }
+    // The nested step or transition number (nested kinds; 0 otherwise).
+    int elementNumber() const { return m_number; }
+    ElementRef element() const { return {m_kind, m_elementId, m_number}; }
 
     // The form while the element exists, filled again; else the placeholder.
     void refresh();
@@ -54,7 +56,7 @@ private:
     // `field` as Selection::focusFieldRequested names it; the dock is revealed.
     virtual void focusField(const QString& field) = 0;
 
-    bool exists(const QString& id) const;
+    bool exists(const ElementRef& element) const;
     void onSelectionChanged(const ElementRef& element);
     void onFocusFieldRequested(const ElementRef& element, const QString& field);
 
@@ -62,6 +64,7 @@ private:
     Document* m_document;
     Selection* m_selection;
     QString m_elementId;
+    int m_number = 0;
     QStackedWidget* m_pages = nullptr;
     WrappingLabel* m_placeholder = nullptr;
     QWidget* m_idlePage = nullptr;

@@ -11,6 +11,7 @@
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
+#include "editor/grafcet/nestedgrafcetavailable.h"
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
@@ -251,8 +252,8 @@ void StepDock::refreshForm()
         const QSignalBlocker blocker(m_hiddenCheck);
         m_hiddenCheck->setChecked(step->hidden);
     }
-    // Only a step that has a nested GRAFCET opens one (the GRAFCET editor to come creates them).
-    m_openGrafcetButton->setVisible(document()->model().grafcet(stepId().toStdString()) != nullptr);
+    // A macro or enclosing step without one yet opens on the offer to create its usual shape.
+    m_openGrafcetButton->setVisible(canOpenNestedGrafcet(document()->model(), stepId()));
     const QString comment = fromStd(step->comment);
     if (m_commentEdit->toPlainText() != comment) {
         // Only when it differs: rewriting the text under the user's cursor

@@ -6,6 +6,7 @@
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 
+#include "core/codegen/nestedpreview.h"
 #include "core/model/model.h"
 
 #include <QComboBox>
@@ -132,6 +133,7 @@ StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* 
     connect(m_document, &Document::variablesChanged, this, &StPreviewDock::scheduleUpdate);
     connect(m_document, &Document::settingsChanged, this, &StPreviewDock::scheduleUpdate);
     connect(m_document, &Document::modelReset, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::grafcetChanged, this, &StPreviewDock::scheduleUpdate);
     connect(m_document, &Document::settingsChanged, this, &StPreviewDock::refreshDialect);
     connect(m_document, &Document::modelReset, this, &StPreviewDock::refreshDialect);
     connect(m_selection, &Selection::changed, this, &StPreviewDock::onSelectionChanged);
@@ -187,7 +189,9 @@ void StPreviewDock::updatePreview()
     m_updateTimer->stop();
     m_stale = false;
     const core::Model& model = m_document->model();
-    m_preview = core::previewGemmaProgram(model, model.settings().dialect);
+    m_preview = m_grafcetStepId.isEmpty()
+        ? core::previewGemmaProgram(model, model.settings().dialect)
+        : core::previewNestedFunctionBlock(model, m_grafcetStepId.toStdString(), model.settings().dialect);
     const QString text = fromStd(m_preview.text);
     if (text != m_editor->toPlainText()) {
         QScrollBar* vertical = m_editor->verticalScrollBar();
@@ -199,6 +203,20 @@ void StPreviewDock::updatePreview()
         horizontal->setValue(left);
     }
     highlightSelection(false);
+}
+
+void StPreviewDock::setGrafcetInFront(const QString& stepId)
+{
+    if (stepId == m_grafcetStepId)
+        return;
+    m_grafcetStepId = stepId;
+    // Another text altogether: from its top, or at the selection's code.
+    m_editor->clear();
+    if (isOnScreen())
+        updatePreview();
+    else
+        scheduleUpdate();
+    highlightSelection(true);
 }
 
 void StPreviewDock::refreshDialect()
@@ -227,6 +245,8 @@ void StPreviewDock::onSelectionChanged()
 std::vector<core::LineRange> StPreviewDock::rangesFor(const ElementRef& element) const
 {
     std::vector<core::LineRange> ranges;
+    if (!m_grafcetStepId.isEmpty())
+        return nestedRangesFor(element);
     if (element.kind != ElementRef::Kind::Step && element.kind != ElementRef::Kind::Transition)
         return ranges;
     const std::string key = element.id.toStdString();
@@ -238,6 +258,28 @@ std::vector<core::LineRange> StPreviewDock::rangesFor(const ElementRef& element)
     }
     std::sort(ranges.begin(), ranges.end(),
         [](const core::LineRange& a, const core::LineRange& b) { return a.first < b.first; });
+    return ranges;
+}
+
+// The code of a step or transition of the GRAFCET in front: "X3", "T2" and
+// their further runs "X3@2"... (core::previewNestedFunctionBlock).
+std::vector<core::LineRange> StPreviewDock::nestedRangesFor(const ElementRef& element) const
+{
+    std::vector<core::LineRange> ranges;
+    if (!element.isNested() || element.id != m_grafcetStepId)
+        return ranges;
+    const char prefix = element.kind == ElementRef::Kind::GrafcetStep ? 'X' : 'T';
+    const std::string key = prefix + std::to_string(element.number);
+    for (const auto& [name, range] : m_preview.ranges) {
+        if (name == key || name.rfind(key + "@", 0) == 0)
+            ranges.push_back(range);
+    }
+    std::sort(ranges.begin(), ranges.end(),
+        [](const core::LineRange& a, const core::LineRange& b) { return a.first < b.first; });
+    // The first run is the declaration: the view scrolls to the code that
+    // evolves or acts, the first one after it.
+    if (ranges.size() > 1)
+        std::rotate(ranges.begin(), ranges.begin() + 1, ranges.end());
     return ranges;
 }
 
@@ -288,6 +330,13 @@ void StPreviewDock::scrollToLines(const core::LineRange& range, bool onlyIfHidde
 QString StPreviewDock::noCodeReason(const ElementRef& element) const
 {
     const core::Model& model = m_document->model();
+    if (!m_grafcetStepId.isEmpty()) {
+        if (!model.effectiveGrafcet(m_grafcetStepId.toStdString()))
+            return tr("%1 generates no function block: only a visible macro-step or enclosing step does.")
+                .arg(m_grafcetStepId);
+        //: the function block shown: "F1_FB (the nested GRAFCET of F1)"
+        return tr("%1_FB (the nested GRAFCET of %1)").arg(m_grafcetStepId);
+    }
     if (element.kind == ElementRef::Kind::Step) {
         const core::Step* step = model.step(element.id.toStdString());
         if (step && step->hidden)

@@ -20,9 +20,11 @@ class Selection;
 class StHighlighter;
 
 // The PROGRAM GEMMA the model generates, live and read-only, in the chosen
-// dialect (a model setting, so choosing it is an undoable edit). The code
-// of the selected step or transition is highlighted and scrolled to; with
-// nothing selected, updates keep the scroll position.
+// dialect (a model setting, so choosing it is an undoable edit); while a
+// nested GRAFCET's tab is in front, the function block that GRAFCET
+// generates instead. The code of the selected step or transition (of the
+// chart, or of that GRAFCET) is highlighted and scrolled to; with nothing
+// selected, updates keep the scroll position.
 class StPreviewDock : public QDockWidget {
     Q_OBJECT
 
@@ -36,6 +38,10 @@ public:
     void updatePreview();
     // The 1-based line ranges highlighted for the selection.
     const std::vector<core::LineRange>& highlightedRanges() const { return m_highlighted; }
+    // The GEMMA step whose nested GRAFCET's function block is shown; empty
+    // for the GEMMA program.
+    void setGrafcetInFront(const QString& stepId);
+    const QString& grafcetInFront() const { return m_grafcetStepId; }
 
 protected:
     void showEvent(QShowEvent* event) override;
@@ -50,6 +56,7 @@ private:
     void onSelectionChanged();
     void highlightSelection(bool scrollToIt);
     std::vector<core::LineRange> rangesFor(const ElementRef& element) const;
+    std::vector<core::LineRange> nestedRangesFor(const ElementRef& element) const;
     void scrollToLines(const core::LineRange& range, bool onlyIfHidden);
     QString noCodeReason(const ElementRef& element) const;
 
@@ -62,6 +69,7 @@ private:
     StHighlighter* m_highlighter;
     QTimer* m_updateTimer;
     core::StPreview m_preview;
+    QString m_grafcetStepId;
     std::vector<core::LineRange> m_highlighted;
     bool m_stale = true;
 };

@@ -5,6 +5,7 @@
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
+#include "editor/hiddenselection.h"
 
 #include <QPagedPaintDevice>
 #include <QPainter>
@@ -23,6 +24,7 @@ void render(GrafcetScene& scene, QPainter& painter, const QRectF& target, const 
 {
     painter.setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing | QPainter::SmoothPixmapTransform);
     painter.fillRect(target, Qt::white);
+    const HiddenSelection hidden(scene);
     scene.render(&painter, target, source, Qt::KeepAspectRatio);
 }
 
@@ -131,6 +133,7 @@ QList<double> GrafcetExport::pageStarts(const QList<QPair<double, double>>& elem
 void GrafcetExport::renderPages(QPainter& painter, QPagedPaintDevice& device, const QSizeF& page,
                                 double dotsPerPoint) const
 {
+    const HiddenSelection hidden(m_scene); // the page breaks come from the unselected extents
     const QRectF drawing = m_scene.drawingRect();
     const double fitPage = std::min(page.width() / drawing.width(), page.height() / drawing.height());
     const double fitWidth = page.width() / drawing.width();

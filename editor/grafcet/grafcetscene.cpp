@@ -25,6 +25,13 @@ GrafcetScene::GrafcetScene(Document* document, const QString& stepId, QObject* p
     rebuild();
 }
 
+GrafcetScene::~GrafcetScene()
+{
+    // ~QGraphicsScene deselects the items it deletes: that is no user's
+    // choice, and whoever follows the selection may be gone already.
+    disconnect(this, &QGraphicsScene::selectionChanged, nullptr, nullptr);
+}
+
 double GrafcetScene::textWidth(std::string_view text)
 {
     static const QFontMetricsF metrics(chartstyle::font());
@@ -33,6 +40,7 @@ double GrafcetScene::textWidth(std::string_view text)
 
 void GrafcetScene::rebuild()
 {
+    m_rebuilding = true;
     clear();
     m_steps.clear();
     m_transitions.clear();
@@ -54,6 +62,7 @@ void GrafcetScene::rebuild()
         }
     }
     setSceneRect(drawingRect());
+    m_rebuilding = false;
     emit rebuilt();
 }
 

@@ -24,6 +24,7 @@ class GrafcetScene : public QGraphicsScene {
 
 public:
     GrafcetScene(Document* document, const QString& stepId, QObject* parent = nullptr);
+    ~GrafcetScene() override;
 
     const QString& stepId() const { return m_stepId; }
     const core::GrafcetLayout& layout() const { return m_layout; }
@@ -37,9 +38,13 @@ public:
     // The width of `text` in the drawing's font, in scene units.
     static double textWidth(std::string_view text);
 
+    // True while the items are deleted and made again: the selection they
+    // lose then is not the user's doing.
+    bool isRebuilding() const { return m_rebuilding; }
+
 signals:
-    // The items were built again (the GRAFCET changed): every item pointer
-    // taken before is gone.
+    // The items were made again from the model (after a change of the
+    // GRAFCET): every item pointer taken before is gone.
     void rebuilt();
 
 private:
@@ -51,6 +56,7 @@ private:
     QHash<int, GrafcetStepItem*> m_steps;
     QHash<int, GrafcetTransitionItem*> m_transitions;
     GrafcetWiringItem* m_wiring = nullptr;
+    bool m_rebuilding = false;
 };
 
 } // namespace editor

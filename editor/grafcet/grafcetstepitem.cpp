@@ -4,6 +4,7 @@
 #include "editor/chart/layoutconversion.h"
 
 #include <QPainter>
+#include <QStyleOptionGraphicsItem>
 
 namespace editor {
 
@@ -20,13 +21,12 @@ GrafcetStepItem::GrafcetStepItem(const core::GrafcetStepLayout& layout, QGraphic
     : QGraphicsItem(parent)
     , m_layout(layout)
 {
+    setFlag(ItemIsSelectable); // the docks and the GRAFCET tab's editing follow the selected steps
     setZValue(chartstyle::kStepZ);
-    setFlag(ItemIsSelectable); // the GRAFCET tab's editing acts on the selected steps
     m_bounds = toQRectF(layout.box);
     for (const core::GrafcetActionLayout& action : layout.actions)
         m_bounds |= toQRectF(action.box) | toQRectF(action.conditionRect);
-    const double margin = chartstyle::kHaloWidth;
-    m_bounds.adjust(-margin, -margin, margin, margin);
+    m_bounds.adjust(-2, -2, 2, 2);
 }
 
 void GrafcetStepItem::setSimulationMark(SimulationMark mark)
@@ -59,18 +59,29 @@ QRectF GrafcetStepItem::tokenRect() const
 
 QRectF GrafcetStepItem::boundingRect() const
 {
-    return m_bounds;
+    // The halo reaches beyond the drawing only while selected: pictures,
+    // which unselect, keep the extents their page breaks are made from.
+    const double halo = isSelected() ? chartstyle::kHaloWidth : 0;
+    return m_bounds.adjusted(-halo, -halo, halo, halo);
 }
 
-void GrafcetStepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
+QVariant GrafcetStepItem::itemChange(GraphicsItemChange change, const QVariant& value)
+{
+    if (change == ItemSelectedChange)
+        prepareGeometryChange();
+    return QGraphicsItem::itemChange(change, value);
+}
+
+void GrafcetStepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget*)
 {
     painter->setRenderHint(QPainter::Antialiasing);
     const QRectF box = toQRectF(m_layout.box);
-    if (isSelected()) {
-        const double gap = chartstyle::kHaloWidth / 2;
+    // The halo of the GEMMA chart's selection, around the step's square.
+    if (option->state & QStyle::State_Selected) {
         painter->setPen(QPen(chartstyle::haloColor(), chartstyle::kHaloWidth));
         painter->setBrush(Qt::NoBrush);
-        painter->drawRect(box.adjusted(-gap, -gap, gap, gap));
+        const double gap = chartstyle::kHaloWidth / 2;
+        painter->drawRoundedRect(box.adjusted(-gap, -gap, gap, gap), gap, gap);
     }
     painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kStrokeWidth));
     painter->setBrush(m_mark == SimulationMark::Active   ? chartstyle::activeFillColor()

@@ -35,6 +35,7 @@ public:
     void setLitActions(const QList<int>& actions);
 
     QRectF boundingRect() const override;
+    QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:

@@ -5,6 +5,7 @@
 
 #include <QPainter>
 #include <QRegularExpression>
+#include <QStyleOptionGraphicsItem>
 
 namespace editor {
 
@@ -14,14 +15,13 @@ GrafcetTransitionItem::GrafcetTransitionItem(const core::GrafcetTransitionLayout
     , m_layout(layout)
     , m_label(drawnReceptivity(QString::fromStdString(receptivity)))
 {
+    setFlag(ItemIsSelectable); // the docks and the GRAFCET tab's editing follow the selected transition
     setZValue(chartstyle::kTransitionZ);
-    setFlag(ItemIsSelectable); // the GRAFCET tab's editing acts on the selected transition
     const QPointF bar = toQPointF(layout.barCenter);
     const double half = core::kGrafcetBarLength / 2;
-    const double margin = chartstyle::kHaloWidth;
     m_bounds = QRectF(bar.x() - half, bar.y() - chartstyle::kBarWidth, 2 * half, 2 * chartstyle::kBarWidth)
                    .united(toQRectF(layout.labelRect))
-                   .adjusted(-margin, -margin, margin, margin);
+                   .adjusted(-2, -2, 2, 2);
 }
 
 QString GrafcetTransitionItem::drawnReceptivity(const QString& receptivity)
@@ -44,18 +44,31 @@ void GrafcetTransitionItem::setFired(bool fired)
 
 QRectF GrafcetTransitionItem::boundingRect() const
 {
-    return m_bounds;
+    // The halo reaches beyond the drawing only while selected: pictures,
+    // which unselect, keep the extents their page breaks are made from.
+    const double halo = isSelected() ? chartstyle::kHaloWidth : 0;
+    return m_bounds.adjusted(-halo, -halo, halo, halo);
 }
 
-void GrafcetTransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
+QVariant GrafcetTransitionItem::itemChange(GraphicsItemChange change, const QVariant& value)
+{
+    if (change == ItemSelectedChange)
+        prepareGeometryChange();
+    return QGraphicsItem::itemChange(change, value);
+}
+
+void GrafcetTransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget*)
 {
     painter->setRenderHint(QPainter::Antialiasing);
     const QPointF bar = toQPointF(m_layout.barCenter);
     const double half = core::kGrafcetBarLength / 2;
-    if (isSelected()) {
-        painter->setPen(QPen(chartstyle::haloColor(), chartstyle::kBarWidth + chartstyle::kHaloWidth, Qt::SolidLine,
-                             Qt::RoundCap));
+    // The halo of the GEMMA chart's selection, along the bar and around the receptivity.
+    if (option->state & QStyle::State_Selected) {
+        painter->setPen(QPen(chartstyle::haloColor(), chartstyle::kHaloWidth, Qt::SolidLine, Qt::RoundCap));
+        painter->setBrush(Qt::NoBrush);
         painter->drawLine(QLineF(bar.x() - half, bar.y(), bar.x() + half, bar.y()));
+        if (!m_label.isEmpty())
+            painter->drawRoundedRect(toQRectF(m_layout.labelRect).adjusted(-2, -1, 2, 1), 3, 3);
     }
     painter->setPen(QPen(m_fired ? chartstyle::firedColor() : chartstyle::inkColor(), chartstyle::kBarWidth,
                          Qt::SolidLine, Qt::FlatCap));

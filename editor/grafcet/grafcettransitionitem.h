@@ -30,6 +30,7 @@ public:
     const core::GrafcetTransitionLayout& layout() const { return m_layout; }
 
     QRectF boundingRect() const override;
+    QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:

@@ -6,7 +6,9 @@
 // Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
 // with a step or transition selected, a dock brought to the front) and
 // saves a picture of it: to look at the layout without a display
-// (QT_QPA_PLATFORM=offscreen). The selection can also come from the
+// (QT_QPA_PLATFORM=offscreen). --select takes a step ("F1"), a transition
+// ("F1->A2"), or a nested GRAFCET's step ("F1/3") or transition ("F1/T2"),
+// which opens that GRAFCET's tab. The selection can also come from the
 // GGSTUDIO_SELECT environment variable; --export-chart also writes the
 // chart as File > Export Chart does. --dialog triggers the window's action
 // of that object name ("modelSettingsAction", "exportPlcOpenAction"...) and
@@ -93,6 +95,19 @@ int grabDialog(QWidget& window, const QString& actionName, const QString& out)
     else if (!saved)
         std::fprintf(stderr, "ggstudio_screenshot: cannot write %s\n", qPrintable(out));
     return grabbed && saved ? 0 : 1;
+}
+
+// "F1", "F1->A2", or a nested element: "F1/3" (step 3 of F1's GRAFCET), "F1/T2" (its transition 2).
+editor::ElementRef selectionOf(const QString& text)
+{
+    if (text.contains(QLatin1Char('/'))) {
+        const QString stepId = text.section(QLatin1Char('/'), 0, 0);
+        const QString nested = text.section(QLatin1Char('/'), 1);
+        if (nested.startsWith(QLatin1Char('T'), Qt::CaseInsensitive))
+            return editor::ElementRef::grafcetTransition(stepId, nested.mid(1).toInt());
+        return editor::ElementRef::grafcetStep(stepId, nested.toInt());
+    }
+    return text.contains(QLatin1String("->")) ? editor::ElementRef::transition(text) : editor::ElementRef::step(text);
 }
 
 } // namespace
@@ -198,8 +213,7 @@ int main(int argc, char* argv[])
         }
     }
     if (!selected.isEmpty())
-        window.selection()->select(selected.contains(QLatin1String("->")) ? editor::ElementRef::transition(selected)
-                                                                          : editor::ElementRef::step(selected));
+        window.selection()->select(selectionOf(selected));
     for (const QString& name : docks) {
         auto* dock = window.findChild<QDockWidget*>(name);
         if (!dock) {

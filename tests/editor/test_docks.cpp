@@ -896,9 +896,14 @@ void TestDocks::nestedProblemsStandUnderTheirGemmaStep()
     QVERIFY(problemItem(view, QStringLiteral("GG101"), QStringLiteral("A7")));
     QVERIFY(!problemItem(view, QStringLiteral("GG101"), QStringLiteral("A7"))->parent());
 
-    // Activating a nested problem selects its GEMMA step (until the GRAFCET view opens it).
+    // Activating a nested problem selects that step or transition of the GRAFCET ("F1 step 7", "F1 T2").
     dock.activate(group->child(0));
-    QCOMPARE(selection.current(), ElementRef::step(QStringLiteral("F1")));
+    QVERIFY(selection.current().isNested());
+    QCOMPARE(selection.current().id, QStringLiteral("F1"));
+    const QString nestedLabel = group->child(0)->text(ProblemsDock::ElementColumn);
+    QCOMPARE(nestedLabel, selection.current().kind == ElementRef::Kind::GrafcetStep
+                              ? QStringLiteral("F1 step %1").arg(selection.current().number)
+                              : QStringLiteral("F1 T%1").arg(selection.current().number));
 
     // F1's nested problems are errors: hiding the errors hides them and the group.
     child<QToolButton>(&dock, "errorsButton")->click();

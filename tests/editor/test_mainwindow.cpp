@@ -843,11 +843,13 @@ void TestMainWindow::nestedGrafcetOpensInATab()
     QCOMPARE(tabs->count(), 1);
     QVERIFY(!tabs->tabBar()->isVisible()); // the chart alone: no tab bar
 
-    // From the Step dock: its button shows for a step with a GRAFCET only.
+    // From the Step dock: its button shows for a step that has or may have a GRAFCET.
     m_window->selection()->select(ElementRef::step(QStringLiteral("A1")));
     auto* button = m_window->findChild<QPushButton*>(QStringLiteral("openGrafcetButton"));
     QVERIFY(button);
     QVERIFY(!button->isVisibleTo(button->window()));
+    m_window->selection()->select(ElementRef::step(QStringLiteral("A7"))); // a macro-step without one yet
+    QVERIFY(button->isVisibleTo(button->window()));
     m_window->selection()->select(ElementRef::step(QStringLiteral("F1")));
     QVERIFY(button->isVisibleTo(button->window()));
     button->click();
@@ -1387,14 +1389,14 @@ void TestMainWindow::deferredDocksFillInAfterTheFirstFrame()
     // showed the front frame of each group alone.
     QCOMPARE(firstFrame.visibleDocks, (QStringList{"Step", "Variables"}));
     QCOMPARE(firstFrame.visibleTabs, QStringList());
-    QCOMPARE(tabsShownIn(&window), (QStringList{"Problems", "Simulation", "Step", "Structured Text", "Transition",
-                                                "Variables"}));
+    QCOMPARE(tabsShownIn(&window), (QStringList{"Nested Step", "Nested Transition", "Problems", "Simulation", "Step",
+                                                "Structured Text", "Transition", "Variables"}));
     // The real docks, one of each, where the frames were, working.
-    QCOMPARE(window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly).size(), 6);
+    QCOMPARE(window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly).size(), 8);
     auto* stepDock = window.findChild<StepDock*>(QStringLiteral("stepDock"));
     QVERIFY(stepDock);
     QCOMPARE(window.dockWidgetArea(stepDock), Qt::RightDockWidgetArea);
-    QCOMPARE(window.tabifiedDockWidgets(stepDock).size(), 2);
+    QCOMPARE(window.tabifiedDockWidgets(stepDock).size(), 4);
     window.selection()->select(ElementRef::step(QStringLiteral("F1")));
     auto* idLabel = stepDock->findChild<QLabel*>(QStringLiteral("idLabel"));
     QVERIFY(idLabel);
@@ -1433,7 +1435,8 @@ void TestMainWindow::deferredDocksKeepTheSavedLayout()
     // no tab bar; the docks have them.
     QCOMPARE(firstFrame.visibleDocks, (QStringList{"Problems", "Step", "Structured Text"}));
     QCOMPARE(firstFrame.visibleTabs, QStringList());
-    QCOMPARE(tabsShownIn(&again), (QStringList{"Simulation", "Step", "Structured Text", "Transition", "Variables"}));
+    QCOMPARE(tabsShownIn(&again), (QStringList{"Nested Step", "Nested Transition", "Simulation", "Step",
+                                               "Structured Text", "Transition", "Variables"}));
     QVERIFY(!again.findChild<QDockWidget*>(QStringLiteral("stPreviewDock"))->visibleRegion().isEmpty());
     QVERIFY(again.findChild<QDockWidget*>(QStringLiteral("variablesDock"))->visibleRegion().isEmpty());
     QSettings().clear(); // the other tests start from the default layout
@@ -1450,7 +1453,8 @@ void TestMainWindow::framesTabbedBehindNeedTheScreenAndKeepAFrame()
     }
     QVERIFY(QSettings().value(QStringLiteral("window/tabbedBehind")).toStringList().isEmpty());
     QSettings().setValue(QStringLiteral("window/tabbedBehind"),
-                         QStringList{"stepDock", "transitionDock", "simulationDock", "variablesDock"});
+                         QStringList{"stepDock", "transitionDock", "grafcetStepDock", "grafcetTransitionDock",
+                                     "simulationDock", "variablesDock"});
     MainWindow window(*m_translators, MainWindow::DockContents::AfterFirstFrame);
     QStringList shown;
     for (const QDockWidget* frame : window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly)) {
@@ -1458,7 +1462,8 @@ void TestMainWindow::framesTabbedBehindNeedTheScreenAndKeepAFrame()
             shown << frame->objectName();
     }
     shown.sort();
-    QCOMPARE(shown, (QStringList{"problemsDock", "simulationDock", "stPreviewDock", "stepDock", "transitionDock"}));
+    QCOMPARE(shown, (QStringList{"grafcetStepDock", "grafcetTransitionDock", "problemsDock", "simulationDock",
+                                 "stPreviewDock", "stepDock", "transitionDock"}));
     QSettings().clear(); // the other tests start from the default layout
 }
 
@@ -1475,7 +1480,7 @@ void TestMainWindow::deferredDocksSaveTheirLayoutWhenClosedEarly()
     auto* problems = again.findChild<QDockWidget*>(QStringLiteral("problemsDock"));
     QCOMPARE(again.dockWidgetArea(problems), Qt::RightDockWidgetArea);
     QCOMPARE(again.tabifiedDockWidgets(problems).size(), 2);
-    QCOMPARE(again.tabifiedDockWidgets(again.findChild<QDockWidget*>(QStringLiteral("stepDock"))).size(), 2);
+    QCOMPARE(again.tabifiedDockWidgets(again.findChild<QDockWidget*>(QStringLiteral("stepDock"))).size(), 4);
     QSettings().clear(); // the other tests start from the default layout
 }
 
@@ -1579,7 +1584,7 @@ void TestMainWindow::languageChangeRetranslatesMenus()
     QCOMPARE(m_window->dockWidgetArea(problems), Qt::LeftDockWidgetArea);
     auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
     QVERIFY(viewMenu->actions().contains(problems->toggleViewAction()));
-    QCOMPARE(m_window->findChildren<QDockWidget*>().size(), 6); // with the Simulation dock
+    QCOMPARE(m_window->findChildren<QDockWidget*>().size(), 8); // with the Simulation and nested GRAFCET docks
 
     QCoreApplication::removeTranslator(&translator);
     QCoreApplication::processEvents();
