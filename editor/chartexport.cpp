@@ -13,6 +13,8 @@
 #include <QPainter>
 #include <QPrinter>
 
+#include <optional>
+
 #include <utility>
 
 namespace editor {
@@ -104,41 +106,14 @@ void renderPicture(ChartScene& scene, QPainter& painter, const ConditionList& li
     painter.restore();
 }
 
-// PDF and print: the chart fitted to the page, and its list under it, or on
-// the following pages when sharing the page would shrink the chart too much
-// (planPages). The list is drawn at the chart's scale, so it reads as the
-// labels do.
-void renderPages(ChartScene& scene, QPainter& painter, QPagedPaintDevice& device, const QSizeF& page,
-                 const QList<ConditionNote>& notes)
+// PDF and print: every page of ChartExport::Pages.
+void renderPages(ChartScene& scene, QPainter& painter, QPagedPaintDevice& device, const QSizeF& page)
 {
-    const QRectF paper = paperRect(scene);
-    if (notes.isEmpty()) {
-        render(scene, painter, QRectF(QPointF(0, 0), page));
-        return;
-    }
-    const ConditionList below = listUnder(scene, notes);
-    const PagePlan plan = planPages(paper.size(), below.height(), page);
-    const double scale = plan.scale;
-    const double left = (page.width() - paper.width() * scale) / 2;
-    painter.save();
-    painter.translate(left, 0);
-    if (plan.listBelowChart) {
-        renderPicture(scene, painter, below, scale);
-        painter.restore();
-        return;
-    }
-    render(scene, painter, QRectF(0, 0, paper.width() * scale, paper.height() * scale));
-    painter.restore();
-
-    const QSizeF room = page / scale; // a page in scene units
-    const ConditionList after(notes, room.width() - 2 * kMargin);
-    const QList<int> starts = pageBreaks(after.lineHeights(), room.height() - 2 * kMargin);
-    for (qsizetype i = 0; i < starts.size(); ++i) {
-        device.newPage();
-        painter.save();
-        painter.scale(scale, scale);
-        after.paint(painter, QPointF(kMargin, kMargin), starts[i], i + 1 < starts.size() ? starts[i + 1] : after.lineCount());
-        painter.restore();
+    const ChartExport::Pages pages(scene, page);
+    for (qsizetype i = 0; i < pages.count(); ++i) {
+        if (i > 0)
+            device.newPage();
+        pages.paint(painter, i);
     }
 }
 
@@ -147,6 +122,80 @@ void renderPages(ChartScene& scene, QPainter& painter, QPagedPaintDevice& device
 ChartExport::ChartExport(ChartScene& scene)
     : m_scene(scene)
 {
+}
+
+// The chart fitted to the page, and its list under it, or on the following
+// pages when sharing the page would shrink the chart too much (planPages).
+// The list is drawn at the chart's scale, so it reads as the labels do.
+struct ChartExport::Pages::Plan {
+    Plan(ChartScene& chart, const QSizeF& size)
+        : scene(chart)
+        , page(size)
+        , notes(chart)
+    {
+    }
+
+    ChartScene& scene;
+    QSizeF page;
+    ExportNotes notes;
+    double scale = 1;
+    std::optional<ConditionList> below; // under the chart on its page
+    std::optional<ConditionList> after; // on the following pages
+    QList<int> starts;                  // of the following pages, in `after`'s lines
+};
+
+ChartExport::Pages::Pages(ChartScene& scene, const QSizeF& page)
+    : m_plan(std::make_unique<Plan>(scene, page))
+{
+    Plan& plan = *m_plan;
+    const QList<ConditionNote>& notes = plan.notes.notes();
+    if (notes.isEmpty())
+        return;
+    const ConditionList below = listUnder(scene, notes);
+    const PagePlan pagePlan = planPages(paperRect(scene).size(), below.height(), page);
+    plan.scale = pagePlan.scale;
+    if (pagePlan.listBelowChart) {
+        plan.below = below;
+        return;
+    }
+    const QSizeF room = page / plan.scale; // a page in scene units
+    plan.after.emplace(notes, room.width() - 2 * kMargin);
+    plan.starts = pageBreaks(plan.after->lineHeights(), room.height() - 2 * kMargin);
+}
+
+ChartExport::Pages::~Pages() = default;
+
+qsizetype ChartExport::Pages::count() const
+{
+    return 1 + m_plan->starts.size();
+}
+
+void ChartExport::Pages::paint(QPainter& painter, qsizetype index) const
+{
+    const Plan& plan = *m_plan;
+    if (index == 0) {
+        if (plan.notes.notes().isEmpty()) {
+            render(plan.scene, painter, QRectF(QPointF(0, 0), plan.page));
+            return;
+        }
+        const QRectF paper = paperRect(plan.scene);
+        painter.save();
+        painter.translate((plan.page.width() - paper.width() * plan.scale) / 2, 0);
+        if (plan.below)
+            renderPicture(plan.scene, painter, *plan.below, plan.scale);
+        else
+            render(plan.scene, painter, QRectF(0, 0, paper.width() * plan.scale, paper.height() * plan.scale));
+        painter.restore();
+        return;
+    }
+    const qsizetype i = index - 1;
+    if (!plan.after || i >= plan.starts.size())
+        return;
+    painter.save();
+    painter.scale(plan.scale, plan.scale);
+    plan.after->paint(painter, QPointF(kMargin, kMargin), plan.starts[i],
+                      i + 1 < plan.starts.size() ? plan.starts[i + 1] : plan.after->lineCount());
+    painter.restore();
 }
 
 bool ChartExport::formatForPath(const QString& path, Format* format)
@@ -202,8 +251,7 @@ bool ChartExport::writePdf(const QString& path, QString* errorMessage) const
     return PictureFile::writePdf(
         path, m_title, QPageLayout::Landscape,
         [this](QPainter& painter, QPagedPaintDevice& device, const QSizeF& page, double) {
-            const ExportNotes notes(m_scene);
-            renderPages(m_scene, painter, device, page, notes.notes());
+            renderPages(m_scene, painter, device, page);
         },
         errorMessage);
 }
@@ -215,8 +263,7 @@ bool ChartExport::print(QPrinter& printer) const
     if (!painter.begin(&printer))
         return false;
     // The painter's origin is the top left of the printable area.
-    const ExportNotes notes(m_scene);
-    renderPages(m_scene, painter, printer, QSizeF(printer.width(), printer.height()), notes.notes());
+    renderPages(m_scene, painter, printer, QSizeF(printer.width(), printer.height()));
     return true;
 }
 

@@ -1,8 +1,12 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QSizeF>
 #include <QString>
 
+#include <memory>
+
+class QPainter;
 class QPrinter;
 
 namespace editor {
@@ -42,6 +46,27 @@ public:
 
     // The title written into SVG and PDF metadata.
     void setTitle(const QString& title) { m_title = title; }
+
+    // The pages a PDF or a print (or the specification, editor/
+    // specificationexport.h) puts the chart on, `page` device units each:
+    // the chart fitted to the first, its Conditions list under it or on the
+    // following pages (planPages). While it exists, the labels of the
+    // conditions that do not fit end in their note markers.
+    class Pages {
+    public:
+        Pages(ChartScene& scene, const QSizeF& page);
+        ~Pages();
+        Pages(const Pages&) = delete;
+        Pages& operator=(const Pages&) = delete;
+
+        qsizetype count() const;
+        // Page `index` (from 0), its top left at the painter's origin.
+        void paint(QPainter& painter, qsizetype index) const;
+
+    private:
+        struct Plan;
+        std::unique_ptr<Plan> m_plan;
+    };
 
 private:
     ChartScene& m_scene;

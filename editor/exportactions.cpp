@@ -8,6 +8,7 @@
 #include "editor/grafcet/grafcetexport.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/settings.h"
+#include "editor/specificationexport.h"
 
 #include "core/formats/fileio.h"
 #include "core/formats/gggeneratorformat.h"
@@ -61,6 +62,15 @@ QString ExportActions::suggestedBaseName(const QString& modelPath, const core::M
     return name.isEmpty() ? tr("untitled") : name;
 }
 
+QString ExportActions::suggestedSpecificationName(const QString& modelPath, const core::Model& model)
+{
+    QString name = QString::fromStdString(model.settings().name).simplified();
+    name.replace(QRegularExpression(QStringLiteral(R"([\\/:*?"<>|\x00-\x1f])")), QStringLiteral("_"));
+    if (name.isEmpty())
+        name = suggestedBaseName(modelPath, model);
+    return SpecificationExport::suggestedFileName(name);
+}
+
 namespace {
 
 QString withSuffix(QString path, const QString& suffix)
@@ -82,12 +92,14 @@ ExportActions::ExportActions(Document& document, ChartScene& scene, Settings& se
     , m_structuredText(new QAction(this))
     , m_ggGenerator(new QAction(this))
     , m_chart(new QAction(this))
+    , m_specification(new QAction(this))
     , m_print(new QAction(this))
 {
     m_plcOpen->setObjectName("exportPlcOpenAction");
     m_structuredText->setObjectName("exportStructuredTextAction");
     m_ggGenerator->setObjectName("exportGGGeneratorAction");
     m_chart->setObjectName("exportChartAction");
+    m_specification->setObjectName("exportSpecificationAction");
     m_print->setObjectName("printAction");
     m_plcOpen->setShortcut(Qt::CTRL | Qt::Key_E);
     m_print->setShortcut(QKeySequence::Print);
@@ -95,6 +107,7 @@ ExportActions::ExportActions(Document& document, ChartScene& scene, Settings& se
     connect(m_structuredText, &QAction::triggered, this, &ExportActions::exportStructuredText);
     connect(m_ggGenerator, &QAction::triggered, this, &ExportActions::exportGGGenerator);
     connect(m_chart, &QAction::triggered, this, &ExportActions::exportChart);
+    connect(m_specification, &QAction::triggered, this, &ExportActions::exportSpecification);
     connect(m_print, &QAction::triggered, this, &ExportActions::print);
     retranslate();
 }
@@ -109,6 +122,9 @@ void ExportActions::retranslate()
     m_ggGenerator->setStatusTip(tr("Save the model in the format of the GG-Generator web tool"));
     m_chart->setText(tr("Export &Chart…"));
     m_chart->setStatusTip(tr("Save the chart as an SVG, PNG or PDF picture"));
+    m_specification->setText(tr("Export Speci&fication…"));
+    m_specification->setStatusTip(tr("Write the whole model as one PDF document: the chart, the states, the "
+                                     "variables, every nested GRAFCET and the outline of the generated code"));
     m_print->setText(tr("&Print…"));
     m_print->setStatusTip(tr("Print the chart"));
 }
@@ -307,6 +323,23 @@ bool ExportActions::writeChart(const QString& path, ChartExport::Format format, 
     return chart.write(path, format, errorMessage);
 }
 
+bool ExportActions::writeSpecification(const QString& path, QString* errorMessage) const
+{
+    return SpecificationExport(m_document).writePdf(path, errorMessage);
+}
+
+void ExportActions::exportSpecification()
+{
+    const QString path =
+        askSavePath(tr("Export Specification"), QStringLiteral("pdf"), tr("PDF document (*.pdf)"), nullptr,
+                    suggestedSpecificationName(m_document.filePath(), m_document.model()));
+    if (path.isEmpty())
+        return;
+    QString error;
+    const bool ok = writeSpecification(path, &error);
+    reportResult(ok, path, error);
+}
+
 void ExportActions::print()
 {
     GrafcetScene* grafcet = m_grafcetInFront ? m_grafcetInFront() : nullptr;
@@ -338,11 +371,14 @@ core::Dialect ExportActions::lastDialect() const
 }
 
 QString ExportActions::askSavePath(const QString& title, const QString& suffix, const QString& filters,
-                                   QString* selectedFilter)
+                                   QString* selectedFilter, const QString& givenName)
 {
-    QString name = suggestedBaseName(m_document.filePath(), m_document.model());
-    if (!suffix.isEmpty())
-        name += '.' + suffix;
+    QString name = givenName;
+    if (name.isEmpty()) {
+        name = suggestedBaseName(m_document.filePath(), m_document.model());
+        if (!suffix.isEmpty())
+            name += '.' + suffix;
+    }
     const QString start = QDir(m_settings.lastExportDirectory()).filePath(name);
     QString path = QFileDialog::getSaveFileName(m_window, title, start, filters, selectedFilter);
     if (path.isEmpty())

@@ -24,10 +24,10 @@ class Document;
 class Settings;
 
 // The exports of the File menu: PLCopen XML, Structured Text, GG-Generator
-// JSON, pictures of the chart and printing. Each action asks what it needs
-// (options, file name), asks before exporting a model with errors, writes
-// the file and reports. The write* functions do the writing alone, for the
-// window's own callers and the tests.
+// JSON, pictures of the chart, the specification PDF and printing. Each
+// action asks what it needs (options, file name), asks before exporting code
+// from a model with errors, writes the file and reports. The write*
+// functions do the writing alone, for the window's own callers and the tests.
 class ExportActions : public QObject {
     Q_OBJECT
 
@@ -38,6 +38,7 @@ public:
     QAction* structuredTextAction() const { return m_structuredText; }
     QAction* ggGeneratorAction() const { return m_ggGenerator; }
     QAction* chartAction() const { return m_chart; }
+    QAction* specificationAction() const { return m_specification; }
     QAction* printAction() const { return m_print; }
 
     // False with a message for the user when the file cannot be written.
@@ -45,6 +46,8 @@ public:
     bool writeStFolder(const QString& folder, core::Dialect dialect, QString* errorMessage) const;
     bool writeStSingleFile(const QString& path, QString* errorMessage) const;
     bool writeGGGenerator(const QString& path, QString* errorMessage) const;
+    // The whole model as one PDF (editor/specificationexport.h).
+    bool writeSpecification(const QString& path, QString* errorMessage) const;
 
     void retranslate();
 
@@ -61,6 +64,9 @@ public:
     // The name an export file starts with: the model file's ("press" for
     // press.json), else the model's name (its PLC program's), else "untitled".
     static QString suggestedBaseName(const QString& modelPath, const core::Model& model);
+    // The file Export Specification suggests: "<model name> specification.pdf"
+    // (the model's name, else the file's, as a file system takes it).
+    static QString suggestedSpecificationName(const QString& modelPath, const core::Model& model);
     // The question asked before a GG-Generator export that leaves part of
     // the model out (nested GRAFCETs, variable kinds, the evolution rule).
     // True when nothing is lost or the user goes on.
@@ -77,6 +83,7 @@ private:
     void exportStructuredText();
     void exportGGGenerator();
     void exportChart();
+    void exportSpecification();
     void print();
 
     // A warning with the lines as its details, Cancel by default; true for Export Anyway.
@@ -84,8 +91,10 @@ private:
     // The dialect of the last export, or the model's before the first.
     core::Dialect lastDialect() const;
     // The file dialog for a new file, starting in the last export folder
-    // with a name made from the model name; empty when cancelled.
-    QString askSavePath(const QString& title, const QString& suffix, const QString& filters, QString* selectedFilter = nullptr);
+    // with a name made from the model name (or `name` when given); empty
+    // when cancelled.
+    QString askSavePath(const QString& title, const QString& suffix, const QString& filters,
+                        QString* selectedFilter = nullptr, const QString& name = QString());
     void reportResult(bool ok, const QString& path, const QString& errorMessage);
 
     Document& m_document;
@@ -97,6 +106,7 @@ private:
     QAction* m_structuredText;
     QAction* m_ggGenerator;
     QAction* m_chart;
+    QAction* m_specification;
     QAction* m_print;
 };
 

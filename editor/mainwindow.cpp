@@ -536,7 +536,8 @@ void MainWindow::createMenus()
     m_fileMenu->addActions({m_saveAction, m_saveAsAction});
     m_fileMenu->addSeparator();
     m_fileMenu->addActions({m_exportActions->plcOpenAction(), m_exportActions->structuredTextAction(),
-                            m_exportActions->ggGeneratorAction(), m_exportActions->chartAction()});
+                            m_exportActions->ggGeneratorAction(), m_exportActions->chartAction(),
+                            m_exportActions->specificationAction()});
     m_fileMenu->addAction(m_exportActions->printAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_resetAction);

@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de_DE">
 <context>
+    <name>AddGrafcetActionCommand</name>
+    <message>
+        <source>Add action %1 to %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aktion %1 zu Schritt %3 von %2 hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -573,6 +581,18 @@
     </message>
 </context>
 <context>
+    <name>MoveGrafcetActionCommand</name>
+    <message>
+        <source>Move action %1 of %2 step %3 up</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aktion %1 von Schritt %3 von %2 nach oben</translation>
+    </message>
+    <message>
+        <source>Move action %1 of %2 step %3 down</source>
+        <translation>Aktion %1 von Schritt %3 von %2 nach unten</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -672,6 +692,14 @@
     </message>
 </context>
 <context>
+    <name>RemoveGrafcetActionCommand</name>
+    <message>
+        <source>Remove action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aktion %1 von Schritt %3 von %2 entfernen</translation>
+    </message>
+</context>
+<context>
     <name>RemoveVariableCommand</name>
     <message>
         <source>Remove variable %1</source>
@@ -687,6 +715,14 @@
     <message>
         <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
         <translation>eine Variable namens „%1“ ist bereits vorhanden (IEC-Namen unterscheiden keine Groß- und Kleinschreibung)</translation>
+    </message>
+</context>
+<context>
+    <name>RenumberGrafcetStepCommand</name>
+    <message>
+        <source>Renumber %1 step %2 to %3</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number</extracomment>
+        <translation>Schritt %2 von %1 in %3 umnummerieren</translation>
     </message>
 </context>
 <context>
@@ -754,6 +790,34 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetActionCommand</name>
+    <message>
+        <source>Set action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aktion %1 von Schritt %3 von %2 ändern</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1 step %2</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET: &quot;Edit comment of F1 step 3&quot;</extracomment>
+        <translation>Kommentar von Schritt %2 von %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepInitialCommand</name>
+    <message>
+        <source>Make %1 step %2 initial</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET</extracomment>
+        <translation>Schritt %2 von %1 zum Anfangsschritt machen</translation>
+    </message>
+    <message>
+        <source>Make %1 step %2 not initial</source>
+        <translation>Schritt %2 von %1 nicht mehr Anfangsschritt</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -783,6 +847,14 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Priorität von %1 auf %2 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetReceptivityCommand</name>
+    <message>
+        <source>Set receptivity of %1 T%2</source>
+        <extracomment>%1 is the GEMMA step, %2 the transition number of its nested GRAFCET: &quot;Set receptivity of F1 T3&quot;</extracomment>
+        <translation>Weiterschaltbedingung von %1 T%2 ändern</translation>
     </message>
 </context>
 <context>
@@ -1166,6 +1238,321 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message>
+        <source>%1 specification</source>
+        <extracomment>the specification&apos;s title and the file name it is saved under; %1 is the model&apos;s name</extracomment>
+        <translation>%1 Spezifikation</translation>
+    </message>
+    <message>
+        <source>GEMMA chart</source>
+        <translation>GEMMA-Diagramm</translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Zustände</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Transitionen</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variablen</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs</source>
+        <translation>Eingebettete GRAFCETs</translation>
+    </message>
+    <message>
+        <source>Generated code</source>
+        <translation>Erzeugter Code</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Spezifikation</translation>
+    </message>
+    <message>
+        <source>GEMMA-GRAFCET specification</source>
+        <translation>GEMMA-GRAFCET-Spezifikation</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n Fehler</numerusform>
+            <numerusform>%n Fehler</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n Warnung</numerusform>
+            <numerusform>%n Warnungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Datei</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>noch nicht gespeichert</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>Anfangszustand</translation>
+    </message>
+    <message>
+        <source>PLC task cycle</source>
+        <translation>Zyklus der SPS-Task</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Code dialect</source>
+        <translation>Code-Dialekt</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET evolution</source>
+        <translation>Entwicklung der eingebetteten GRAFCETs</translation>
+    </message>
+    <message>
+        <source>Until stable, in one call of its function block</source>
+        <translation>Bis stabil, in einem Aufruf seines Funktionsbausteins</translation>
+    </message>
+    <message>
+        <source>One evolution per PLC scan</source>
+        <translation>Eine Entwicklung pro SPS-Zyklus</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Prüfungen</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>Keine Probleme gefunden</translation>
+    </message>
+    <message>
+        <source>Written by</source>
+        <translation>Erstellt mit</translation>
+    </message>
+    <message>
+        <source>GG Studio %1</source>
+        <translation>GG Studio %1</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Inhalt</translation>
+    </message>
+    <message>
+        <source>GEMMA chart, continued</source>
+        <translation>GEMMA-Diagramm, Fortsetzung</translation>
+    </message>
+    <message>
+        <source>States, transitions and variables</source>
+        <translation>Zustände, Transitionen und Variablen</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>GRAFCET</source>
+        <translation>GRAFCET</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Kommentar</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, Anfangsschritt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n Schritt</numerusform>
+            <numerusform>%n Schritte</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The visible states of the GEMMA chart, in state order. A macro-step or an enclosing step runs its nested GRAFCET while it is active.</source>
+        <translation>Die sichtbaren Zustände des GEMMA-Diagramms in der Reihenfolge der Zustände. Ein Makroschritt oder ein einschließender Schritt führt seinen eingebetteten GRAFCET aus, solange er aktiv ist.</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Priorität</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Bedingung</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Merker</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negiert</translation>
+    </message>
+    <message>
+        <source>The transitions that take part: visible, between visible states. A state evaluates its transitions by priority, 1 first; a negated transition fires when its condition is FALSE.</source>
+        <translation>Die wirksamen Transitionen: sichtbar, zwischen sichtbaren Zuständen. Ein Zustand wertet seine Transitionen nach Priorität aus, 1 zuerst; eine negierte Transition schaltet, wenn ihre Bedingung FALSE ist.</translation>
+    </message>
+    <message>
+        <source>No transition takes part.</source>
+        <translation>Keine Transition ist wirksam.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Anfangswert</translation>
+    </message>
+    <message>
+        <source>The declared variables, in declaration order. Inputs are read from the machine, outputs written by the actions of the nested GRAFCETs, internal variables are the program&apos;s memory. A variable without a default starts at its type&apos;s (FALSE, 0).</source>
+        <translation>Die deklarierten Variablen in der Reihenfolge ihrer Deklaration. Eingänge werden von der Maschine gelesen, Ausgänge von den Aktionen der eingebetteten GRAFCETs geschrieben, interne Variablen sind der Speicher des Programms. Eine Variable ohne Anfangswert beginnt mit dem ihres Typs (FALSE, 0).</translation>
+    </message>
+    <message>
+        <source>No variables are declared.</source>
+        <translation>Es sind keine Variablen deklariert.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n Transition</numerusform>
+            <numerusform>%n Transitionen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>function block %1</source>
+        <translation>Funktionsbaustein %1</translation>
+    </message>
+    <message>
+        <source>This GRAFCET has no steps yet.</source>
+        <translation>Dieser GRAFCET hat noch keine Schritte.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1, continued</source>
+        <translation>Eingebetteter GRAFCET von %1, Fortsetzung</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Steps of %1</source>
+        <translation>Schritte von %1</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the Hierarchical Design Pattern: the program %1 holds the active GEMMA state and evaluates its transitions by priority, and each visible macro-step or enclosing step is a function block that %1 calls while that state is active. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio erzeugt das SPS-Programm als Structured Text nach IEC 61131-3 nach dem Hierarchical Design Pattern: Das Programm %1 hält den aktiven GEMMA-Zustand und wertet dessen Transitionen nach Priorität aus, und jeder sichtbare Makroschritt oder einschließende Schritt ist ein Funktionsbaustein, den %1 aufruft, solange dieser Zustand aktiv ist. Diese Übersicht nennt die Programmorganisationseinheiten und ihre Schnittstellen; Datei &gt; Strukturierten Text (ST) exportieren und PLCopen XML exportieren schreiben den Code selbst.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>Das Modell hat %n Fehler: Der erzeugte Code markiert ihn mit einem Kommentar.</numerusform>
+            <numerusform>Das Modell hat %n Fehler: Der erzeugte Code markiert jeden mit einem Kommentar.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Konfiguration</translation>
+    </message>
+    <message>
+        <source>Resource</source>
+        <translation>Ressource</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Task</translation>
+    </message>
+    <message>
+        <source>%1: cyclic, every %2, priority %3</source>
+        <translation>%1: zyklisch, alle %2, Priorität %3</translation>
+    </message>
+    <message>
+        <source>Program instance</source>
+        <translation>Programminstanz</translation>
+    </message>
+    <message>
+        <source>Global variable list</source>
+        <translation>Globale Variablenliste</translation>
+    </message>
+    <message>
+        <source>The GEMMA layer: it holds the active state in State, evaluates that state&apos;s transitions by priority and calls the function block of a state with nested behaviour while that state is active.</source>
+        <translation>Die GEMMA-Ebene: Sie hält den aktiven Zustand in State, wertet die Transitionen dieses Zustands nach Priorität aus und ruft den Funktionsbaustein eines Zustands mit eingebettetem Verhalten auf, solange dieser Zustand aktiv ist.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 (page %2). %3 calls it through its instance %4 while %4 is active.</source>
+        <translation>Der eingebettete GRAFCET von %1 (Seite %2). %3 ruft ihn über seine Instanz %4 auf, solange %4 aktiv ist.</translation>
+    </message>
+    <message>
+        <source>The nested behaviour of %1, not written yet: until it is, the function block completes at once. %2 calls it through its instance %3.</source>
+        <translation>Das eingebettete Verhalten von %1, noch nicht geschrieben: Bis dahin meldet der Funktionsbaustein sofort Complete. %2 ruft ihn über seine Instanz %3 auf.</translation>
+    </message>
+    <message>
+        <source>Declaration</source>
+        <translation>Deklaration</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Anfangswert</translation>
+    </message>
+    <message>
+        <source>Global variables it reads (VAR_EXTERNAL): %1.</source>
+        <translation>Globale Variablen, die er liest (VAR_EXTERNAL): %1.</translation>
+    </message>
+    <message>
+        <source>Its own variables (VAR): %1.</source>
+        <translation>Eigene Variablen (VAR): %1.</translation>
+    </message>
+    <message>
+        <source>Global variables</source>
+        <translation>Globale Variablen</translation>
+    </message>
+    <message>
+        <source>in the VAR_GLOBAL of the configuration %1</source>
+        <translation>im VAR_GLOBAL der Konfiguration %1</translation>
+    </message>
+    <message>
+        <source>in the global variable list %1</source>
+        <translation>in der globalen Variablenliste %1</translation>
+    </message>
+    <message>
+        <source>The declared variables (page %1) are the program&apos;s global variables, %2.</source>
+        <translation>Die deklarierten Variablen (Seite %1) sind die globalen Variablen des Programms, %2.</translation>
+    </message>
+    <message>
+        <source>The generator adds these:</source>
+        <translation>Der Generator fügt diese hinzu:</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -1368,6 +1755,26 @@
     </message>
 </context>
 <context>
+    <name>editor::ConnectTransitionDialog</name>
+    <message>
+        <source>Connect T%1 of %2</source>
+        <extracomment>%1 the transition&apos;s number, %2 the GEMMA step whose GRAFCET it is in</extracomment>
+        <translation>T%1 von %2 verbinden</translation>
+    </message>
+    <message>
+        <source>Upstream steps (it leaves them)</source>
+        <translation>Vorgängerschritte (sie deaktiviert sie)</translation>
+    </message>
+    <message>
+        <source>Downstream steps (it activates them)</source>
+        <translation>Nachfolgerschritte (sie aktiviert sie)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
@@ -1538,6 +1945,18 @@
         <source>%1, nested GRAFCET of %2</source>
         <translation>%1, eingebetteter GRAFCET von %2</translation>
     </message>
+    <message>
+        <source>Export Speci&amp;fication…</source>
+        <translation>Spezifi&amp;kation exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the whole model as one PDF document: the chart, the states, the variables, every nested GRAFCET and the outline of the generated code</source>
+        <translation>Das ganze Modell als ein PDF-Dokument schreiben: das Diagramm, die Zustände, die Variablen, jeden eingebetteten GRAFCET und die Übersicht des erzeugten Codes</translation>
+    </message>
+    <message>
+        <source>Export Specification</source>
+        <translation>Spezifikation exportieren</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -1595,22 +2014,304 @@
     </message>
 </context>
 <context>
-    <name>editor::GrafcetSimulationMarks</name>
+    <name>editor::GrafcetActions</name>
     <message>
-        <source>%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation</source>
-        <translation>%1 ist aktiv: sein GRAFCET läuft. Unstable: der letzte Zyklus endete ohne stabile Situation</translation>
+        <source>Insert Step &amp;After</source>
+        <translation>Schritt &amp;danach einfügen</translation>
     </message>
     <message>
-        <source>%1 is active: its GRAFCET runs (steps %2)</source>
-        <translation>%1 ist aktiv: sein GRAFCET läuft (Schritte %2)</translation>
+        <source>Insert Step &amp;Before</source>
+        <translation>Schritt da&amp;vor einfügen</translation>
     </message>
     <message>
-        <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
-        <translation>%1 wurde gerade aktiviert: sein GRAFCET beginnt im nächsten Zyklus mit seinen Anfangsschritten</translation>
+        <source>Add &amp;Selection Branch</source>
+        <translation>Alternativ&amp;zweig hinzufügen</translation>
     </message>
     <message>
-        <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
-        <translation>%1 ist nicht aktiv: sein GRAFCET wird grau gezeigt, so wie er verlassen wurde</translation>
+        <source>Add &amp;Parallel Branch</source>
+        <translation>&amp;Parallelzweig hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove Bra&amp;nch</source>
+        <translation>&amp;Zweig entfernen</translation>
+    </message>
+    <message>
+        <source>Ren&amp;umber Steps and Transitions</source>
+        <translation>Schritte und Transitionen &amp;umnummerieren</translation>
+    </message>
+    <message>
+        <source>&amp;Connect Directly…</source>
+        <translation>Direkt &amp;verbinden…</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Steps</source>
+        <translation>Schritte &amp;kopieren</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Steps</source>
+        <translation>Schritte ein&amp;fügen</translation>
+    </message>
+    <message>
+        <source>Create the &amp;Usual Shape</source>
+        <translation>Übliche &amp;Form erstellen</translation>
+    </message>
+    <message>
+        <source>Initial step 1, then step 2, then step 3, which sets Complete</source>
+        <translation>Anfangsschritt 1, dann Schritt 2, dann Schritt 3, der Complete setzt</translation>
+    </message>
+    <message>
+        <source>%1 has no GRAFCET yet.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Create the usual shape&lt;/a&gt;: initial step 1, step 2, and step 3, which sets Complete.</source>
+        <extracomment>%1 the GEMMA step; the link creates its GRAFCET</extracomment>
+        <translation>%1 hat noch keinen GRAFCET.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Übliche Form erstellen&lt;/a&gt;: Anfangsschritt 1, Schritt 2 und Schritt 3, der Complete setzt.</translation>
+    </message>
+    <message>
+        <source>Add Loop or &amp;Jump To</source>
+        <translation>Schleife oder &amp;Sprung hinzufügen zu</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>Add step %1 to %2</source>
+        <translation>Schritt %1 zu %2 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add selection branch to %1</source>
+        <translation>Alternativzweig zu %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add parallel branch to %1</source>
+        <translation>Parallelzweig zu %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add jump from step %1 to step %2 in %3</source>
+        <extracomment>%1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Sprung von Schritt %1 zu Schritt %2 in %3 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove step %1 from %2</source>
+        <translation>Schritt %1 aus %2 entfernen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>%n Schritt aus %1 entfernen</numerusform>
+            <numerusform>%n Schritte aus %1 entfernen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove branch from %1</source>
+        <translation>Zweig aus %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Renumber %1</source>
+        <translation>%1 umnummerieren</translation>
+    </message>
+    <message>
+        <source>Connect %1 T%2</source>
+        <extracomment>%1 the GEMMA step, %2 the transition&apos;s number</extracomment>
+        <translation>%1 T%2 verbinden</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>%n Schritt in %1 einfügen</numerusform>
+            <numerusform>%n Schritte in %1 einfügen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Create GRAFCET of %1</source>
+        <translation>GRAFCET von %1 erstellen</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActionsModel</name>
+    <message>
+        <source>When</source>
+        <translation>Wann</translation>
+    </message>
+    <message>
+        <source>Qual.</source>
+        <extracomment>short: the column is narrow; its tooltip says &quot;qualifier&quot; in full</extracomment>
+        <translation>Best.</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>IF / value</source>
+        <extracomment>the condition after IF of an N action, or the value of a := action; short: the column is narrow</extracomment>
+        <translation>IF / Wert</translation>
+    </message>
+    <message>
+        <source>While the step is active (N), or once when it is activated or deactivated (S, R, :=)</source>
+        <translation>Solange der Schritt aktiv ist (N), oder einmal bei seiner Aktivierung oder Deaktivierung (S, R, :=)</translation>
+    </message>
+    <message>
+        <source>Qualifier. N: the variable is TRUE while the step is active
+S, R: set it TRUE or FALSE
+:=: assign it the value</source>
+        <translation>Bestimmungszeichen. N: die Variable ist TRUE, solange der Schritt aktiv ist
+S, R: auf TRUE oder FALSE setzen
+:=: ihr den Wert zuweisen</translation>
+    </message>
+    <message>
+        <source>An output or internal variable, or Complete</source>
+        <translation>Eine Ausgangs- oder interne Variable, oder Complete</translation>
+    </message>
+    <message>
+        <source>N: only IF this condition holds (may be empty)
+:=: the value assigned</source>
+        <translation>N: nur IF diese Bedingung gilt (darf leer sein)
+:=: der zugewiesene Wert</translation>
+    </message>
+    <message>
+        <source>While active</source>
+        <translation>Solange aktiv</translation>
+    </message>
+    <message>
+        <source>On activation</source>
+        <translation>Bei Aktivierung</translation>
+    </message>
+    <message>
+        <source>On deactivation</source>
+        <translation>Bei Deaktivierung</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetStepDock</name>
+    <message>
+        <source>Nested Step</source>
+        <translation>Eingebetteter Schritt</translation>
+    </message>
+    <message>
+        <source>Select a step in a nested GRAFCET&apos;s tab to see and edit its number, comment and actions.</source>
+        <translation>Wählen Sie einen Schritt im Tab eines eingebetteten GRAFCET, um seine Nummer, seinen Kommentar und seine Aktionen zu sehen und zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>&amp;Number:</source>
+        <translation>&amp;Nummer:</translation>
+    </message>
+    <message>
+        <source>Unique in this GRAFCET; its activity is X&lt;number&gt;. The transitions and the X&lt;number&gt; of the receptivities and actions follow a new number.</source>
+        <translation>Eindeutig in diesem GRAFCET; seine Aktivität ist X&lt;Nummer&gt;. Die Transitionen und die X&lt;Nummer&gt; der Weiterschaltbedingungen und Aktionen folgen einer neuen Nummer.</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Anfangsschritt</translation>
+    </message>
+    <message>
+        <source>Active when the GEMMA state is entered (a GRAFCET needs at least one)</source>
+        <translation>Aktiv, wenn der GEMMA-Zustand betreten wird (ein GRAFCET braucht mindestens einen)</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Kommentar:</translation>
+    </message>
+    <message>
+        <source>What the machine does in this step</source>
+        <translation>Was die Maschine in diesem Schritt tut</translation>
+    </message>
+    <message>
+        <source>&amp;Actions:</source>
+        <translation>A&amp;ktionen:</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add an action after the current one</source>
+        <translation>Eine Aktion nach der aktuellen hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the current action</source>
+        <translation>Die aktuelle Aktion entfernen</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Auf</translation>
+    </message>
+    <message>
+        <source>Run the current action earlier</source>
+        <translation>Die aktuelle Aktion früher ausführen</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Ab</translation>
+    </message>
+    <message>
+        <source>Run the current action later</source>
+        <translation>Die aktuelle Aktion später ausführen</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 Schritt %2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Im eingebetteten GRAFCET von %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 already has a step %2: choose another number.</source>
+        <translation>%1 hat schon einen Schritt %2: wählen Sie eine andere Nummer.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTransitionDock</name>
+    <message>
+        <source>Nested Transition</source>
+        <translation>Eingebettete Transition</translation>
+    </message>
+    <message>
+        <source>Select a transition in a nested GRAFCET&apos;s tab to see and edit its receptivity.</source>
+        <translation>Wählen Sie eine Transition im Tab eines eingebetteten GRAFCET, um ihre Weiterschaltbedingung zu sehen und zu bearbeiten.</translation>
+    </message>
+    <message>
+        <source>From steps:</source>
+        <translation>Von den Schritten:</translation>
+    </message>
+    <message>
+        <source>To steps:</source>
+        <translation>Zu den Schritten:</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Klicken Sie auf einen Schritt, um ihn auszuwählen</translation>
+    </message>
+    <message>
+        <source>&amp;Receptivity:</source>
+        <translation>&amp;Weiterschaltbedingung:</translation>
+    </message>
+    <message>
+        <source>e.g. PartPresent AND X3, ↑Start, 5s/X2</source>
+        <translation>z. B. PartPresent AND X3, ↑Start, 5s/X2</translation>
+    </message>
+    <message>
+        <source>Structured Text as in GEMMA conditions, plus X3 (step 3 is active), ↑a or RE a (rising edge), ↓a or FE a (falling edge), 5s/X3 (step 3 active for 5 s) and Complete.
+Ctrl+Space completes a name.</source>
+        <translation>Strukturierter Text wie in den GEMMA-Bedingungen, dazu X3 (Schritt 3 ist aktiv), ↑a oder RE a (steigende Flanke), ↓a oder FE a (fallende Flanke), 5s/X3 (Schritt 3 seit 5 s aktiv) und Complete.
+Strg+Leertaste vervollständigt einen Namen.</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Im eingebetteten GRAFCET von %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2552,11 +3253,6 @@
         <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
         <translation>Abspielen von %1: angehalten bei Zyklus %2 von %3. %4 spielt einen Zyklus, Ausführen den Rest.</translation>
     </message>
-    <message>
-        <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
-        <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
-        <translation>Unstable: der GRAFCET von %1 hat in diesem Zyklus keine stabile Situation erreicht; seine letzte Entwicklung hat noch geschaltet.</translation>
-    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -2602,6 +3298,15 @@
     <message>
         <source>This transition is not effective: it generates no code.</source>
         <translation>Diese Transition ist nicht wirksam: Es wird kein Code generiert.</translation>
+    </message>
+    <message>
+        <source>%1 generates no function block: only a visible macro-step or enclosing step does.</source>
+        <translation>%1 erzeugt keinen Funktionsbaustein: das tut nur ein sichtbarer Makroschritt oder einschließender Schritt.</translation>
+    </message>
+    <message>
+        <source>%1_FB (the nested GRAFCET of %1)</source>
+        <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
+        <translation>%1_FB (der eingebettete GRAFCET von %1)</translation>
     </message>
 </context>
 <context>
@@ -2806,11 +3511,6 @@ Einschließender Schritt: Seine Transitionen schalten unabhängig davon, was der
             <numerusform>Hat einen eingebetteten GRAFCET (%n Schritt)</numerusform>
             <numerusform>Hat einen eingebetteten GRAFCET (%n Schritte)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Its GRAFCET runs: steps %1 active</source>
-        <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
-        <translation>Sein GRAFCET läuft: Schritte %1 aktiv</translation>
     </message>
 </context>
 <context>

@@ -29,6 +29,44 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errors</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n warning</numerusform>
+            <numerusform>%n warnings</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n step</numerusform>
+            <numerusform>%n steps</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n transition</numerusform>
+            <numerusform>%n transitions</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>The model has %n error: the generated code marks it with a comment.</numerusform>
+            <numerusform>The model has %n errors: the generated code marks each one with a comment.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>editor::ChartContextMenu</name>
     <message numerus="yes">
         <source>Hide the %n Selected Elements</source>
@@ -59,6 +97,23 @@
         <translation>
             <numerusform>The model has %n error. The generated code marks each one with a comment, but it may not compile or may not behave as intended.</numerusform>
             <numerusform>The model has %n errors. The generated code marks each one with a comment, but it may not compile or may not behave as intended.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActions</name>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>Remove %n step from %1</numerusform>
+            <numerusform>Remove %n steps from %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>Paste %n step into %1</numerusform>
+            <numerusform>Paste %n steps into %1</numerusform>
         </translation>
     </message>
 </context>

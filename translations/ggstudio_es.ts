@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es_ES">
 <context>
+    <name>AddGrafcetActionCommand</name>
+    <message>
+        <source>Add action %1 to %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Añadir la acción %1 a la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -573,6 +581,18 @@
     </message>
 </context>
 <context>
+    <name>MoveGrafcetActionCommand</name>
+    <message>
+        <source>Move action %1 of %2 step %3 up</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Subir la acción %1 de la etapa %3 de %2</translation>
+    </message>
+    <message>
+        <source>Move action %1 of %2 step %3 down</source>
+        <translation>Bajar la acción %1 de la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -672,6 +692,14 @@
     </message>
 </context>
 <context>
+    <name>RemoveGrafcetActionCommand</name>
+    <message>
+        <source>Remove action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Quitar la acción %1 de la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>RemoveVariableCommand</name>
     <message>
         <source>Remove variable %1</source>
@@ -687,6 +715,14 @@
     <message>
         <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
         <translation>ya existe una variable llamada &apos;%1&apos; (los nombres IEC no distinguen mayúsculas y minúsculas)</translation>
+    </message>
+</context>
+<context>
+    <name>RenumberGrafcetStepCommand</name>
+    <message>
+        <source>Renumber %1 step %2 to %3</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number</extracomment>
+        <translation>Renumerar la etapa %2 de %1 como %3</translation>
     </message>
 </context>
 <context>
@@ -754,6 +790,34 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetActionCommand</name>
+    <message>
+        <source>Set action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Cambiar la acción %1 de la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1 step %2</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET: &quot;Edit comment of F1 step 3&quot;</extracomment>
+        <translation>Editar el comentario de la etapa %2 de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepInitialCommand</name>
+    <message>
+        <source>Make %1 step %2 initial</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET</extracomment>
+        <translation>Hacer inicial la etapa %2 de %1</translation>
+    </message>
+    <message>
+        <source>Make %1 step %2 not initial</source>
+        <translation>Hacer no inicial la etapa %2 de %1</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -783,6 +847,14 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Fijar la prioridad de %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetReceptivityCommand</name>
+    <message>
+        <source>Set receptivity of %1 T%2</source>
+        <extracomment>%1 is the GEMMA step, %2 the transition number of its nested GRAFCET: &quot;Set receptivity of F1 T3&quot;</extracomment>
+        <translation>Cambiar la receptividad de %1 T%2</translation>
     </message>
 </context>
 <context>
@@ -1166,6 +1238,321 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message>
+        <source>%1 specification</source>
+        <extracomment>the specification&apos;s title and the file name it is saved under; %1 is the model&apos;s name</extracomment>
+        <translation>Especificación %1</translation>
+    </message>
+    <message>
+        <source>GEMMA chart</source>
+        <translation>Diagrama GEMMA</translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Estados</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Transiciones</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variables</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs</source>
+        <translation>GRAFCET anidados</translation>
+    </message>
+    <message>
+        <source>Generated code</source>
+        <translation>Código generado</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Especificación</translation>
+    </message>
+    <message>
+        <source>GEMMA-GRAFCET specification</source>
+        <translation>Especificación GEMMA-GRAFCET</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errores</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n advertencia</numerusform>
+            <numerusform>%n advertencias</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Archivo</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>aún sin guardar</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Fecha</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>Estado inicial</translation>
+    </message>
+    <message>
+        <source>PLC task cycle</source>
+        <translation>Ciclo de la tarea del PLC</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Code dialect</source>
+        <translation>Dialecto del código</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET evolution</source>
+        <translation>Evolución de los GRAFCET anidados</translation>
+    </message>
+    <message>
+        <source>Until stable, in one call of its function block</source>
+        <translation>Hasta la estabilidad, en una llamada de su bloque de función</translation>
+    </message>
+    <message>
+        <source>One evolution per PLC scan</source>
+        <translation>Una evolución por ciclo del PLC</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Comprobaciones</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>No se ha encontrado ningún problema</translation>
+    </message>
+    <message>
+        <source>Written by</source>
+        <translation>Escrito con</translation>
+    </message>
+    <message>
+        <source>GG Studio %1</source>
+        <translation>GG Studio %1</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Contenido</translation>
+    </message>
+    <message>
+        <source>GEMMA chart, continued</source>
+        <translation>Diagrama GEMMA, continuación</translation>
+    </message>
+    <message>
+        <source>States, transitions and variables</source>
+        <translation>Estados, transiciones y variables</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>GRAFCET</source>
+        <translation>GRAFCET</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Comentario</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, inicial</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n etapa</numerusform>
+            <numerusform>%n etapas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The visible states of the GEMMA chart, in state order. A macro-step or an enclosing step runs its nested GRAFCET while it is active.</source>
+        <translation>Los estados visibles del diagrama GEMMA, en el orden de los estados. Una macroetapa o una etapa encapsulante ejecuta su GRAFCET anidado mientras está activa.</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transición</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Prioridad</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Condición</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Memorias</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negada</translation>
+    </message>
+    <message>
+        <source>The transitions that take part: visible, between visible states. A state evaluates its transitions by priority, 1 first; a negated transition fires when its condition is FALSE.</source>
+        <translation>Las transiciones que intervienen: visibles, entre estados visibles. Un estado evalúa sus transiciones por prioridad, la 1 primero; una transición negada se franquea cuando su condición es FALSE.</translation>
+    </message>
+    <message>
+        <source>No transition takes part.</source>
+        <translation>Ninguna transición interviene.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Clase</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valor inicial</translation>
+    </message>
+    <message>
+        <source>The declared variables, in declaration order. Inputs are read from the machine, outputs written by the actions of the nested GRAFCETs, internal variables are the program&apos;s memory. A variable without a default starts at its type&apos;s (FALSE, 0).</source>
+        <translation>Las variables declaradas, en el orden de su declaración. Las entradas se leen de la máquina, las salidas las escriben las acciones de los GRAFCET anidados, las variables internas son la memoria del programa. Una variable sin valor inicial empieza con el de su tipo (FALSE, 0).</translation>
+    </message>
+    <message>
+        <source>No variables are declared.</source>
+        <translation>No hay variables declaradas.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n transición</numerusform>
+            <numerusform>%n transiciones</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>function block %1</source>
+        <translation>bloque de función %1</translation>
+    </message>
+    <message>
+        <source>This GRAFCET has no steps yet.</source>
+        <translation>Este GRAFCET aún no tiene etapas.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1, continued</source>
+        <translation>GRAFCET anidado de %1, continuación</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Etapa</translation>
+    </message>
+    <message>
+        <source>Steps of %1</source>
+        <translation>Etapas de %1</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the Hierarchical Design Pattern: the program %1 holds the active GEMMA state and evaluates its transitions by priority, and each visible macro-step or enclosing step is a function block that %1 calls while that state is active. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio genera el programa del PLC como Structured Text IEC 61131-3 según el Hierarchical Design Pattern: el programa %1 guarda el estado GEMMA activo y evalúa sus transiciones por prioridad, y cada macroetapa o etapa encapsulante visible es un bloque de función que %1 llama mientras ese estado está activo. Este esquema da las unidades de organización de programa y sus interfaces; Archivo &gt; Exportar a texto estructurado (ST) y Exportar a PLCopen XML escriben el código en sí.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>El modelo tiene %n error: el código generado lo marca con un comentario.</numerusform>
+            <numerusform>El modelo tiene %n errores: el código generado marca cada uno con un comentario.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuración</translation>
+    </message>
+    <message>
+        <source>Resource</source>
+        <translation>Recurso</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Tarea</translation>
+    </message>
+    <message>
+        <source>%1: cyclic, every %2, priority %3</source>
+        <translation>%1: cíclica, cada %2, prioridad %3</translation>
+    </message>
+    <message>
+        <source>Program instance</source>
+        <translation>Instancia del programa</translation>
+    </message>
+    <message>
+        <source>Global variable list</source>
+        <translation>Lista de variables globales</translation>
+    </message>
+    <message>
+        <source>The GEMMA layer: it holds the active state in State, evaluates that state&apos;s transitions by priority and calls the function block of a state with nested behaviour while that state is active.</source>
+        <translation>La capa GEMMA: guarda el estado activo en State, evalúa las transiciones de ese estado por prioridad y llama al bloque de función de un estado con comportamiento anidado mientras ese estado está activo.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 (page %2). %3 calls it through its instance %4 while %4 is active.</source>
+        <translation>El GRAFCET anidado de %1 (página %2). %3 lo llama mediante su instancia %4 mientras %4 está activa.</translation>
+    </message>
+    <message>
+        <source>The nested behaviour of %1, not written yet: until it is, the function block completes at once. %2 calls it through its instance %3.</source>
+        <translation>El comportamiento anidado de %1, aún sin escribir: mientras tanto, el bloque de función termina enseguida. %2 lo llama mediante su instancia %3.</translation>
+    </message>
+    <message>
+        <source>Declaration</source>
+        <translation>Declaración</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Valor inicial</translation>
+    </message>
+    <message>
+        <source>Global variables it reads (VAR_EXTERNAL): %1.</source>
+        <translation>Variables globales que lee (VAR_EXTERNAL): %1.</translation>
+    </message>
+    <message>
+        <source>Its own variables (VAR): %1.</source>
+        <translation>Sus propias variables (VAR): %1.</translation>
+    </message>
+    <message>
+        <source>Global variables</source>
+        <translation>Variables globales</translation>
+    </message>
+    <message>
+        <source>in the VAR_GLOBAL of the configuration %1</source>
+        <translation>en el VAR_GLOBAL de la configuración %1</translation>
+    </message>
+    <message>
+        <source>in the global variable list %1</source>
+        <translation>en la lista de variables globales %1</translation>
+    </message>
+    <message>
+        <source>The declared variables (page %1) are the program&apos;s global variables, %2.</source>
+        <translation>Las variables declaradas (página %1) son las variables globales del programa, %2.</translation>
+    </message>
+    <message>
+        <source>The generator adds these:</source>
+        <translation>El generador añade estas:</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Página %1 de %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -1368,6 +1755,26 @@
     </message>
 </context>
 <context>
+    <name>editor::ConnectTransitionDialog</name>
+    <message>
+        <source>Connect T%1 of %2</source>
+        <extracomment>%1 the transition&apos;s number, %2 the GEMMA step whose GRAFCET it is in</extracomment>
+        <translation>Conectar T%1 de %2</translation>
+    </message>
+    <message>
+        <source>Upstream steps (it leaves them)</source>
+        <translation>Etapas anteriores (las desactiva)</translation>
+    </message>
+    <message>
+        <source>Downstream steps (it activates them)</source>
+        <translation>Etapas siguientes (las activa)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Etapa %1</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
@@ -1538,6 +1945,18 @@
         <source>%1, nested GRAFCET of %2</source>
         <translation>%1, GRAFCET anidado de %2</translation>
     </message>
+    <message>
+        <source>Export Speci&amp;fication…</source>
+        <translation>Exportar la especi&amp;ficación…</translation>
+    </message>
+    <message>
+        <source>Write the whole model as one PDF document: the chart, the states, the variables, every nested GRAFCET and the outline of the generated code</source>
+        <translation>Escribir todo el modelo como un único documento PDF: el diagrama, los estados, las variables, cada GRAFCET anidado y el esquema del código generado</translation>
+    </message>
+    <message>
+        <source>Export Specification</source>
+        <translation>Exportar la especificación</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -1595,22 +2014,304 @@
     </message>
 </context>
 <context>
-    <name>editor::GrafcetSimulationMarks</name>
+    <name>editor::GrafcetActions</name>
     <message>
-        <source>%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation</source>
-        <translation>%1 está activa: su GRAFCET evoluciona. Unstable: el último ciclo terminó sin una situación estable</translation>
+        <source>Insert Step &amp;After</source>
+        <translation>Insertar etapa &amp;después</translation>
     </message>
     <message>
-        <source>%1 is active: its GRAFCET runs (steps %2)</source>
-        <translation>%1 está activa: su GRAFCET evoluciona (etapas %2)</translation>
+        <source>Insert Step &amp;Before</source>
+        <translation>Insertar etapa &amp;antes</translation>
     </message>
     <message>
-        <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
-        <translation>%1 acaba de activarse: su GRAFCET empieza en sus etapas iniciales en el próximo ciclo</translation>
+        <source>Add &amp;Selection Branch</source>
+        <translation>Añadir rama de &amp;selección</translation>
     </message>
     <message>
-        <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
-        <translation>%1 no está activa: su GRAFCET se muestra en gris, tal como quedó</translation>
+        <source>Add &amp;Parallel Branch</source>
+        <translation>Añadir rama &amp;paralela</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Quitar</translation>
+    </message>
+    <message>
+        <source>Remove Bra&amp;nch</source>
+        <translation>Quitar ra&amp;ma</translation>
+    </message>
+    <message>
+        <source>Ren&amp;umber Steps and Transitions</source>
+        <translation>Ren&amp;umerar etapas y transiciones</translation>
+    </message>
+    <message>
+        <source>&amp;Connect Directly…</source>
+        <translation>&amp;Conectar directamente…</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Steps</source>
+        <translation>&amp;Copiar etapas</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Steps</source>
+        <translation>&amp;Pegar etapas</translation>
+    </message>
+    <message>
+        <source>Create the &amp;Usual Shape</source>
+        <translation>Crear la forma &amp;habitual</translation>
+    </message>
+    <message>
+        <source>Initial step 1, then step 2, then step 3, which sets Complete</source>
+        <translation>Etapa inicial 1, luego etapa 2, luego etapa 3, que activa Complete</translation>
+    </message>
+    <message>
+        <source>%1 has no GRAFCET yet.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Create the usual shape&lt;/a&gt;: initial step 1, step 2, and step 3, which sets Complete.</source>
+        <extracomment>%1 the GEMMA step; the link creates its GRAFCET</extracomment>
+        <translation>%1 aún no tiene GRAFCET.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Crear la forma habitual&lt;/a&gt;: etapa inicial 1, etapa 2 y etapa 3, que activa Complete.</translation>
+    </message>
+    <message>
+        <source>Add Loop or &amp;Jump To</source>
+        <translation>Añadir bucle o &amp;salto a</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Etapa %1</translation>
+    </message>
+    <message>
+        <source>Add step %1 to %2</source>
+        <translation>Añadir la etapa %1 a %2</translation>
+    </message>
+    <message>
+        <source>Add selection branch to %1</source>
+        <translation>Añadir rama de selección a %1</translation>
+    </message>
+    <message>
+        <source>Add parallel branch to %1</source>
+        <translation>Añadir rama paralela a %1</translation>
+    </message>
+    <message>
+        <source>Add jump from step %1 to step %2 in %3</source>
+        <extracomment>%1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Añadir salto de la etapa %1 a la etapa %2 en %3</translation>
+    </message>
+    <message>
+        <source>Remove step %1 from %2</source>
+        <translation>Quitar la etapa %1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>Quitar %n etapa de %1</numerusform>
+            <numerusform>Quitar %n etapas de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove branch from %1</source>
+        <translation>Quitar una rama de %1</translation>
+    </message>
+    <message>
+        <source>Renumber %1</source>
+        <translation>Renumerar %1</translation>
+    </message>
+    <message>
+        <source>Connect %1 T%2</source>
+        <extracomment>%1 the GEMMA step, %2 the transition&apos;s number</extracomment>
+        <translation>Conectar %1 T%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>Pegar %n etapa en %1</numerusform>
+            <numerusform>Pegar %n etapas en %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Create GRAFCET of %1</source>
+        <translation>Crear el GRAFCET de %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActionsModel</name>
+    <message>
+        <source>When</source>
+        <translation>Cuándo</translation>
+    </message>
+    <message>
+        <source>Qual.</source>
+        <extracomment>short: the column is narrow; its tooltip says &quot;qualifier&quot; in full</extracomment>
+        <translation>Cal.</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>IF / value</source>
+        <extracomment>the condition after IF of an N action, or the value of a := action; short: the column is narrow</extracomment>
+        <translation>IF / valor</translation>
+    </message>
+    <message>
+        <source>While the step is active (N), or once when it is activated or deactivated (S, R, :=)</source>
+        <translation>Mientras la etapa está activa (N), o una vez al activarse o desactivarse (S, R, :=)</translation>
+    </message>
+    <message>
+        <source>Qualifier. N: the variable is TRUE while the step is active
+S, R: set it TRUE or FALSE
+:=: assign it the value</source>
+        <translation>Calificador. N: la variable es TRUE mientras la etapa está activa
+S, R: ponerla a TRUE o FALSE
+:=: asignarle el valor</translation>
+    </message>
+    <message>
+        <source>An output or internal variable, or Complete</source>
+        <translation>Una variable de salida o interna, o Complete</translation>
+    </message>
+    <message>
+        <source>N: only IF this condition holds (may be empty)
+:=: the value assigned</source>
+        <translation>N: solo SI se cumple esta condición (puede estar vacía)
+:=: el valor asignado</translation>
+    </message>
+    <message>
+        <source>While active</source>
+        <translation>Mientras activa</translation>
+    </message>
+    <message>
+        <source>On activation</source>
+        <translation>Al activarse</translation>
+    </message>
+    <message>
+        <source>On deactivation</source>
+        <translation>Al desactivarse</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetStepDock</name>
+    <message>
+        <source>Nested Step</source>
+        <translation>Etapa anidada</translation>
+    </message>
+    <message>
+        <source>Select a step in a nested GRAFCET&apos;s tab to see and edit its number, comment and actions.</source>
+        <translation>Seleccione una etapa en la pestaña de un GRAFCET anidado para ver y editar su número, comentario y acciones.</translation>
+    </message>
+    <message>
+        <source>&amp;Number:</source>
+        <translation>&amp;Número:</translation>
+    </message>
+    <message>
+        <source>Unique in this GRAFCET; its activity is X&lt;number&gt;. The transitions and the X&lt;number&gt; of the receptivities and actions follow a new number.</source>
+        <translation>Único en este GRAFCET; su actividad es X&lt;número&gt;. Las transiciones y los X&lt;número&gt; de las receptividades y acciones siguen a un número nuevo.</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Inicial</translation>
+    </message>
+    <message>
+        <source>Active when the GEMMA state is entered (a GRAFCET needs at least one)</source>
+        <translation>Activa al entrar en el estado GEMMA (un GRAFCET necesita al menos una)</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Comentario:</translation>
+    </message>
+    <message>
+        <source>What the machine does in this step</source>
+        <translation>Lo que hace la máquina en esta etapa</translation>
+    </message>
+    <message>
+        <source>&amp;Actions:</source>
+        <translation>&amp;Acciones:</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
+    </message>
+    <message>
+        <source>Add an action after the current one</source>
+        <translation>Añadir una acción después de la actual</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Quitar</translation>
+    </message>
+    <message>
+        <source>Remove the current action</source>
+        <translation>Quitar la acción actual</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Subir</translation>
+    </message>
+    <message>
+        <source>Run the current action earlier</source>
+        <translation>Ejecutar antes la acción actual</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Bajar</translation>
+    </message>
+    <message>
+        <source>Run the current action later</source>
+        <translation>Ejecutar después la acción actual</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 etapa %2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>En el GRAFCET anidado de %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 already has a step %2: choose another number.</source>
+        <translation>%1 ya tiene una etapa %2: elija otro número.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTransitionDock</name>
+    <message>
+        <source>Nested Transition</source>
+        <translation>Transición anidada</translation>
+    </message>
+    <message>
+        <source>Select a transition in a nested GRAFCET&apos;s tab to see and edit its receptivity.</source>
+        <translation>Seleccione una transición en la pestaña de un GRAFCET anidado para ver y editar su receptividad.</translation>
+    </message>
+    <message>
+        <source>From steps:</source>
+        <translation>Desde las etapas:</translation>
+    </message>
+    <message>
+        <source>To steps:</source>
+        <translation>Hacia las etapas:</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Haga clic en una etapa para seleccionarla</translation>
+    </message>
+    <message>
+        <source>&amp;Receptivity:</source>
+        <translation>&amp;Receptividad:</translation>
+    </message>
+    <message>
+        <source>e.g. PartPresent AND X3, ↑Start, 5s/X2</source>
+        <translation>p. ej. PartPresent AND X3, ↑Start, 5s/X2</translation>
+    </message>
+    <message>
+        <source>Structured Text as in GEMMA conditions, plus X3 (step 3 is active), ↑a or RE a (rising edge), ↓a or FE a (falling edge), 5s/X3 (step 3 active for 5 s) and Complete.
+Ctrl+Space completes a name.</source>
+        <translation>Texto estructurado como en las condiciones GEMMA, más X3 (la etapa 3 está activa), ↑a o RE a (flanco ascendente), ↓a o FE a (flanco descendente), 5s/X3 (la etapa 3 lleva 5 s activa) y Complete.
+Ctrl+Espacio completa un nombre.</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>En el GRAFCET anidado de %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2552,11 +3253,6 @@
         <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
         <translation>Reproducción de %1: en pausa en el ciclo %2 de %3. Pulse %4 para avanzar un ciclo, o Ejecutar para reproducir el resto.</translation>
     </message>
-    <message>
-        <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
-        <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
-        <translation>Unstable: el GRAFCET de %1 no encontró una situación estable en este ciclo; su última evolución aún franqueó una transición.</translation>
-    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -2602,6 +3298,15 @@
     <message>
         <source>This transition is not effective: it generates no code.</source>
         <translation>Esta transición no es efectiva: no genera código.</translation>
+    </message>
+    <message>
+        <source>%1 generates no function block: only a visible macro-step or enclosing step does.</source>
+        <translation>%1 no genera ningún bloque de función: solo lo hace una macroetapa o una etapa encapsulante visible.</translation>
+    </message>
+    <message>
+        <source>%1_FB (the nested GRAFCET of %1)</source>
+        <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
+        <translation>%1_FB (el GRAFCET anidado de %1)</translation>
     </message>
 </context>
 <context>
@@ -2806,11 +3511,6 @@ Etapa encapsulante: sus transiciones se franquean haga lo que haga el comportami
             <numerusform>Tiene un GRAFCET anidado (%n etapa)</numerusform>
             <numerusform>Tiene un GRAFCET anidado (%n etapas)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Its GRAFCET runs: steps %1 active</source>
-        <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
-        <translation>Su GRAFCET evoluciona: etapas %1 activas</translation>
     </message>
 </context>
 <context>

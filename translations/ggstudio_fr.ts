@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr_FR">
 <context>
+    <name>AddGrafcetActionCommand</name>
+    <message>
+        <source>Add action %1 to %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Ajouter l’action %1 à l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -573,6 +581,18 @@
     </message>
 </context>
 <context>
+    <name>MoveGrafcetActionCommand</name>
+    <message>
+        <source>Move action %1 of %2 step %3 up</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Monter l’action %1 de l’étape %3 de %2</translation>
+    </message>
+    <message>
+        <source>Move action %1 of %2 step %3 down</source>
+        <translation>Descendre l’action %1 de l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -672,6 +692,14 @@
     </message>
 </context>
 <context>
+    <name>RemoveGrafcetActionCommand</name>
+    <message>
+        <source>Remove action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Supprimer l’action %1 de l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
     <name>RemoveVariableCommand</name>
     <message>
         <source>Remove variable %1</source>
@@ -687,6 +715,14 @@
     <message>
         <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
         <translation>une variable nommée «&#xa0;%1&#xa0;» existe déjà (les noms IEC ignorent la casse)</translation>
+    </message>
+</context>
+<context>
+    <name>RenumberGrafcetStepCommand</name>
+    <message>
+        <source>Renumber %1 step %2 to %3</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number</extracomment>
+        <translation>Renuméroter l’étape %2 de %1 en %3</translation>
     </message>
 </context>
 <context>
@@ -754,6 +790,34 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetActionCommand</name>
+    <message>
+        <source>Set action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Modifier l’action %1 de l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1 step %2</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET: &quot;Edit comment of F1 step 3&quot;</extracomment>
+        <translation>Modifier le commentaire de l’étape %2 de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepInitialCommand</name>
+    <message>
+        <source>Make %1 step %2 initial</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET</extracomment>
+        <translation>Rendre initiale l’étape %2 de %1</translation>
+    </message>
+    <message>
+        <source>Make %1 step %2 not initial</source>
+        <translation>Rendre non initiale l’étape %2 de %1</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -783,6 +847,14 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Régler la priorité de %1 à %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetReceptivityCommand</name>
+    <message>
+        <source>Set receptivity of %1 T%2</source>
+        <extracomment>%1 is the GEMMA step, %2 the transition number of its nested GRAFCET: &quot;Set receptivity of F1 T3&quot;</extracomment>
+        <translation>Modifier la réceptivité de %1 T%2</translation>
     </message>
 </context>
 <context>
@@ -1166,6 +1238,321 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message>
+        <source>%1 specification</source>
+        <extracomment>the specification&apos;s title and the file name it is saved under; %1 is the model&apos;s name</extracomment>
+        <translation>Spécification %1</translation>
+    </message>
+    <message>
+        <source>GEMMA chart</source>
+        <translation>Diagramme GEMMA</translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>États</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Transitions</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variables</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs</source>
+        <translation>GRAFCET imbriqués</translation>
+    </message>
+    <message>
+        <source>Generated code</source>
+        <translation>Code généré</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Spécification</translation>
+    </message>
+    <message>
+        <source>GEMMA-GRAFCET specification</source>
+        <translation>Spécification GEMMA-GRAFCET</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n erreur</numerusform>
+            <numerusform>%n erreurs</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n avertissement</numerusform>
+            <numerusform>%n avertissements</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Fichier</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>pas encore enregistré</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Date</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>État initial</translation>
+    </message>
+    <message>
+        <source>PLC task cycle</source>
+        <translation>Cycle de la tâche automate</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1&#xa0;ms</translation>
+    </message>
+    <message>
+        <source>Code dialect</source>
+        <translation>Dialecte du code</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET evolution</source>
+        <translation>Évolution des GRAFCET imbriqués</translation>
+    </message>
+    <message>
+        <source>Until stable, in one call of its function block</source>
+        <translation>Jusqu&apos;à stabilité, en un appel de son bloc fonctionnel</translation>
+    </message>
+    <message>
+        <source>One evolution per PLC scan</source>
+        <translation>Une évolution par cycle automate</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Vérifications</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>Aucun problème trouvé</translation>
+    </message>
+    <message>
+        <source>Written by</source>
+        <translation>Écrit par</translation>
+    </message>
+    <message>
+        <source>GG Studio %1</source>
+        <translation>GG Studio %1</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Sommaire</translation>
+    </message>
+    <message>
+        <source>GEMMA chart, continued</source>
+        <translation>Diagramme GEMMA, suite</translation>
+    </message>
+    <message>
+        <source>States, transitions and variables</source>
+        <translation>États, transitions et variables</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>État</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>GRAFCET</source>
+        <translation>GRAFCET</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commentaire</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, initiale</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n étape</numerusform>
+            <numerusform>%n étapes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The visible states of the GEMMA chart, in state order. A macro-step or an enclosing step runs its nested GRAFCET while it is active.</source>
+        <translation>Les états visibles du diagramme GEMMA, dans l&apos;ordre des états. Une macro-étape ou une étape encapsulante exécute son GRAFCET imbriqué tant qu&apos;elle est active.</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transition</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Priorité</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Réceptivité</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Mémoires</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, niée</translation>
+    </message>
+    <message>
+        <source>The transitions that take part: visible, between visible states. A state evaluates its transitions by priority, 1 first; a negated transition fires when its condition is FALSE.</source>
+        <translation>Les transitions qui comptent&#xa0;: visibles, entre des états visibles. Un état évalue ses transitions par priorité, 1 d&apos;abord&#xa0;; une transition niée est franchie quand sa réceptivité est FALSE.</translation>
+    </message>
+    <message>
+        <source>No transition takes part.</source>
+        <translation>Aucune transition ne compte.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Nature</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valeur initiale</translation>
+    </message>
+    <message>
+        <source>The declared variables, in declaration order. Inputs are read from the machine, outputs written by the actions of the nested GRAFCETs, internal variables are the program&apos;s memory. A variable without a default starts at its type&apos;s (FALSE, 0).</source>
+        <translation>Les variables déclarées, dans l&apos;ordre de leur déclaration. Les entrées sont lues sur la machine, les sorties écrites par les actions des GRAFCET imbriqués, les variables internes sont la mémoire du programme. Une variable sans valeur initiale démarre à celle de son type (FALSE, 0).</translation>
+    </message>
+    <message>
+        <source>No variables are declared.</source>
+        <translation>Aucune variable n&apos;est déclarée.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n transition</numerusform>
+            <numerusform>%n transitions</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>function block %1</source>
+        <translation>bloc fonctionnel %1</translation>
+    </message>
+    <message>
+        <source>This GRAFCET has no steps yet.</source>
+        <translation>Ce GRAFCET n&apos;a pas encore d&apos;étapes.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1, continued</source>
+        <translation>GRAFCET imbriqué de %1, suite</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Étape</translation>
+    </message>
+    <message>
+        <source>Steps of %1</source>
+        <translation>Étapes de %1</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the Hierarchical Design Pattern: the program %1 holds the active GEMMA state and evaluates its transitions by priority, and each visible macro-step or enclosing step is a function block that %1 calls while that state is active. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio génère le programme automate en Structured Text IEC 61131-3 selon le Hierarchical Design Pattern&#xa0;: le programme %1 tient l&apos;état GEMMA actif et évalue ses transitions par priorité, et chaque macro-étape ou étape encapsulante visible est un bloc fonctionnel que %1 appelle tant que cet état est actif. Ce plan donne les unités d&apos;organisation de programme et leurs interfaces&#xa0;; Fichier &gt; Exporter en texte structuré (ST) et Exporter en PLCopen XML écrivent le code lui-même.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>Le modèle a %n erreur&#xa0;: le code généré la signale par un commentaire.</numerusform>
+            <numerusform>Le modèle a %n erreurs&#xa0;: le code généré signale chacune par un commentaire.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configuration</translation>
+    </message>
+    <message>
+        <source>Resource</source>
+        <translation>Ressource</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Tâche</translation>
+    </message>
+    <message>
+        <source>%1: cyclic, every %2, priority %3</source>
+        <translation>%1&#xa0;: cyclique, toutes les %2, priorité %3</translation>
+    </message>
+    <message>
+        <source>Program instance</source>
+        <translation>Instance du programme</translation>
+    </message>
+    <message>
+        <source>Global variable list</source>
+        <translation>Liste de variables globales</translation>
+    </message>
+    <message>
+        <source>The GEMMA layer: it holds the active state in State, evaluates that state&apos;s transitions by priority and calls the function block of a state with nested behaviour while that state is active.</source>
+        <translation>La couche GEMMA&#xa0;: elle tient l&apos;état actif dans State, évalue les transitions de cet état par priorité et appelle le bloc fonctionnel d&apos;un état au comportement imbriqué tant que cet état est actif.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 (page %2). %3 calls it through its instance %4 while %4 is active.</source>
+        <translation>Le GRAFCET imbriqué de %1 (page %2). %3 l&apos;appelle par son instance %4 tant que %4 est active.</translation>
+    </message>
+    <message>
+        <source>The nested behaviour of %1, not written yet: until it is, the function block completes at once. %2 calls it through its instance %3.</source>
+        <translation>Le comportement imbriqué de %1, pas encore écrit&#xa0;: en attendant, le bloc fonctionnel se termine aussitôt. %2 l&apos;appelle par son instance %3.</translation>
+    </message>
+    <message>
+        <source>Declaration</source>
+        <translation>Déclaration</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Valeur initiale</translation>
+    </message>
+    <message>
+        <source>Global variables it reads (VAR_EXTERNAL): %1.</source>
+        <translation>Variables globales qu&apos;il lit (VAR_EXTERNAL)&#xa0;: %1.</translation>
+    </message>
+    <message>
+        <source>Its own variables (VAR): %1.</source>
+        <translation>Ses propres variables (VAR)&#xa0;: %1.</translation>
+    </message>
+    <message>
+        <source>Global variables</source>
+        <translation>Variables globales</translation>
+    </message>
+    <message>
+        <source>in the VAR_GLOBAL of the configuration %1</source>
+        <translation>dans le VAR_GLOBAL de la configuration %1</translation>
+    </message>
+    <message>
+        <source>in the global variable list %1</source>
+        <translation>dans la liste de variables globales %1</translation>
+    </message>
+    <message>
+        <source>The declared variables (page %1) are the program&apos;s global variables, %2.</source>
+        <translation>Les variables déclarées (page %1) sont les variables globales du programme, %2.</translation>
+    </message>
+    <message>
+        <source>The generator adds these:</source>
+        <translation>Le générateur ajoute celles-ci&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Page %1 sur %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -1368,6 +1755,26 @@
     </message>
 </context>
 <context>
+    <name>editor::ConnectTransitionDialog</name>
+    <message>
+        <source>Connect T%1 of %2</source>
+        <extracomment>%1 the transition&apos;s number, %2 the GEMMA step whose GRAFCET it is in</extracomment>
+        <translation>Relier T%1 de %2</translation>
+    </message>
+    <message>
+        <source>Upstream steps (it leaves them)</source>
+        <translation>Étapes amont (elle les désactive)</translation>
+    </message>
+    <message>
+        <source>Downstream steps (it activates them)</source>
+        <translation>Étapes aval (elle les active)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Étape %1</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
@@ -1538,6 +1945,18 @@
         <source>%1, nested GRAFCET of %2</source>
         <translation>%1, GRAFCET imbriqué de %2</translation>
     </message>
+    <message>
+        <source>Export Speci&amp;fication…</source>
+        <translation>Exporter la spé&amp;cification…</translation>
+    </message>
+    <message>
+        <source>Write the whole model as one PDF document: the chart, the states, the variables, every nested GRAFCET and the outline of the generated code</source>
+        <translation>Écrire tout le modèle dans un seul document PDF&#xa0;: le diagramme, les états, les variables, chaque GRAFCET imbriqué et le plan du code généré</translation>
+    </message>
+    <message>
+        <source>Export Specification</source>
+        <translation>Exporter la spécification</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -1595,22 +2014,304 @@
     </message>
 </context>
 <context>
-    <name>editor::GrafcetSimulationMarks</name>
+    <name>editor::GrafcetActions</name>
     <message>
-        <source>%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation</source>
-        <translation>%1 est active&#xa0;: son GRAFCET évolue. Unstable&#xa0;: le dernier cycle s&apos;est terminé sans situation stable</translation>
+        <source>Insert Step &amp;After</source>
+        <translation>Insérer une étape &amp;après</translation>
     </message>
     <message>
-        <source>%1 is active: its GRAFCET runs (steps %2)</source>
-        <translation>%1 est active&#xa0;: son GRAFCET évolue (étapes %2)</translation>
+        <source>Insert Step &amp;Before</source>
+        <translation>Insérer une étape &amp;avant</translation>
     </message>
     <message>
-        <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
-        <translation>%1 vient d&apos;être activée&#xa0;: son GRAFCET part de ses étapes initiales au prochain cycle</translation>
+        <source>Add &amp;Selection Branch</source>
+        <translation>Ajouter une branche de &amp;sélection</translation>
     </message>
     <message>
-        <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
-        <translation>%1 n&apos;est pas active&#xa0;: son GRAFCET est grisé, tel qu&apos;il a été laissé</translation>
+        <source>Add &amp;Parallel Branch</source>
+        <translation>Ajouter une branche &amp;parallèle</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <source>Remove Bra&amp;nch</source>
+        <translation>Supprimer la bra&amp;nche</translation>
+    </message>
+    <message>
+        <source>Ren&amp;umber Steps and Transitions</source>
+        <translation>Ren&amp;uméroter étapes et transitions</translation>
+    </message>
+    <message>
+        <source>&amp;Connect Directly…</source>
+        <translation>&amp;Relier directement…</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Steps</source>
+        <translation>&amp;Copier les étapes</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Steps</source>
+        <translation>C&amp;oller les étapes</translation>
+    </message>
+    <message>
+        <source>Create the &amp;Usual Shape</source>
+        <translation>Créer la forme &amp;usuelle</translation>
+    </message>
+    <message>
+        <source>Initial step 1, then step 2, then step 3, which sets Complete</source>
+        <translation>Étape initiale 1, puis étape 2, puis étape 3, qui met Complete à TRUE</translation>
+    </message>
+    <message>
+        <source>%1 has no GRAFCET yet.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Create the usual shape&lt;/a&gt;: initial step 1, step 2, and step 3, which sets Complete.</source>
+        <extracomment>%1 the GEMMA step; the link creates its GRAFCET</extracomment>
+        <translation>%1 n’a pas encore de GRAFCET.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Créer la forme usuelle&lt;/a&gt;&#xa0;: étape initiale 1, étape 2 et étape 3, qui met Complete à TRUE.</translation>
+    </message>
+    <message>
+        <source>Add Loop or &amp;Jump To</source>
+        <translation>Ajouter une boucle ou un &amp;saut vers</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Étape %1</translation>
+    </message>
+    <message>
+        <source>Add step %1 to %2</source>
+        <translation>Ajouter l’étape %1 à %2</translation>
+    </message>
+    <message>
+        <source>Add selection branch to %1</source>
+        <translation>Ajouter une branche de sélection à %1</translation>
+    </message>
+    <message>
+        <source>Add parallel branch to %1</source>
+        <translation>Ajouter une branche parallèle à %1</translation>
+    </message>
+    <message>
+        <source>Add jump from step %1 to step %2 in %3</source>
+        <extracomment>%1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Ajouter un saut de l’étape %1 à l’étape %2 dans %3</translation>
+    </message>
+    <message>
+        <source>Remove step %1 from %2</source>
+        <translation>Supprimer l’étape %1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>Supprimer %n étape de %1</numerusform>
+            <numerusform>Supprimer %n étapes de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove branch from %1</source>
+        <translation>Supprimer une branche de %1</translation>
+    </message>
+    <message>
+        <source>Renumber %1</source>
+        <translation>Renuméroter %1</translation>
+    </message>
+    <message>
+        <source>Connect %1 T%2</source>
+        <extracomment>%1 the GEMMA step, %2 the transition&apos;s number</extracomment>
+        <translation>Relier %1 T%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>Coller %n étape dans %1</numerusform>
+            <numerusform>Coller %n étapes dans %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Create GRAFCET of %1</source>
+        <translation>Créer le GRAFCET de %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActionsModel</name>
+    <message>
+        <source>When</source>
+        <translation>Quand</translation>
+    </message>
+    <message>
+        <source>Qual.</source>
+        <extracomment>short: the column is narrow; its tooltip says &quot;qualifier&quot; in full</extracomment>
+        <translation>Qual.</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>IF / value</source>
+        <extracomment>the condition after IF of an N action, or the value of a := action; short: the column is narrow</extracomment>
+        <translation>IF / valeur</translation>
+    </message>
+    <message>
+        <source>While the step is active (N), or once when it is activated or deactivated (S, R, :=)</source>
+        <translation>Tant que l’étape est active (N), ou une fois à son activation ou à sa désactivation (S, R, :=)</translation>
+    </message>
+    <message>
+        <source>Qualifier. N: the variable is TRUE while the step is active
+S, R: set it TRUE or FALSE
+:=: assign it the value</source>
+        <translation>Qualificatif. N&#xa0;: la variable est TRUE tant que l’étape est active
+S, R&#xa0;: la mettre à TRUE ou à FALSE
+:=&#xa0;: lui affecter la valeur</translation>
+    </message>
+    <message>
+        <source>An output or internal variable, or Complete</source>
+        <translation>Une variable de sortie ou interne, ou Complete</translation>
+    </message>
+    <message>
+        <source>N: only IF this condition holds (may be empty)
+:=: the value assigned</source>
+        <translation>N&#xa0;: seulement SI cette condition est vraie (peut être vide)
+:=&#xa0;: la valeur affectée</translation>
+    </message>
+    <message>
+        <source>While active</source>
+        <translation>Tant qu’active</translation>
+    </message>
+    <message>
+        <source>On activation</source>
+        <translation>À l’activation</translation>
+    </message>
+    <message>
+        <source>On deactivation</source>
+        <translation>À la désactivation</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetStepDock</name>
+    <message>
+        <source>Nested Step</source>
+        <translation>Étape imbriquée</translation>
+    </message>
+    <message>
+        <source>Select a step in a nested GRAFCET&apos;s tab to see and edit its number, comment and actions.</source>
+        <translation>Sélectionnez une étape dans l’onglet d’un GRAFCET imbriqué pour voir et modifier son numéro, son commentaire et ses actions.</translation>
+    </message>
+    <message>
+        <source>&amp;Number:</source>
+        <translation>&amp;Numéro&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Unique in this GRAFCET; its activity is X&lt;number&gt;. The transitions and the X&lt;number&gt; of the receptivities and actions follow a new number.</source>
+        <translation>Unique dans ce GRAFCET&#xa0;; son activité est X&lt;numéro&gt;. Les transitions et les X&lt;numéro&gt; des réceptivités et des actions suivent un nouveau numéro.</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Initiale</translation>
+    </message>
+    <message>
+        <source>Active when the GEMMA state is entered (a GRAFCET needs at least one)</source>
+        <translation>Active à l’entrée dans l’état GEMMA (un GRAFCET en demande au moins une)</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Commentaire&#xa0;:</translation>
+    </message>
+    <message>
+        <source>What the machine does in this step</source>
+        <translation>Ce que fait la machine dans cette étape</translation>
+    </message>
+    <message>
+        <source>&amp;Actions:</source>
+        <translation>&amp;Actions&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Add an action after the current one</source>
+        <translation>Ajouter une action après l’action courante</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Remove the current action</source>
+        <translation>Supprimer l’action courante</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Monter</translation>
+    </message>
+    <message>
+        <source>Run the current action earlier</source>
+        <translation>Exécuter l’action courante plus tôt</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Descendre</translation>
+    </message>
+    <message>
+        <source>Run the current action later</source>
+        <translation>Exécuter l’action courante plus tard</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 étape %2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Dans le GRAFCET imbriqué de %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 already has a step %2: choose another number.</source>
+        <translation>%1 a déjà une étape %2&#xa0;: choisissez un autre numéro.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTransitionDock</name>
+    <message>
+        <source>Nested Transition</source>
+        <translation>Transition imbriquée</translation>
+    </message>
+    <message>
+        <source>Select a transition in a nested GRAFCET&apos;s tab to see and edit its receptivity.</source>
+        <translation>Sélectionnez une transition dans l’onglet d’un GRAFCET imbriqué pour voir et modifier sa réceptivité.</translation>
+    </message>
+    <message>
+        <source>From steps:</source>
+        <translation>Depuis les étapes&#xa0;:</translation>
+    </message>
+    <message>
+        <source>To steps:</source>
+        <translation>Vers les étapes&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Cliquez sur une étape pour la sélectionner</translation>
+    </message>
+    <message>
+        <source>&amp;Receptivity:</source>
+        <translation>&amp;Réceptivité&#xa0;:</translation>
+    </message>
+    <message>
+        <source>e.g. PartPresent AND X3, ↑Start, 5s/X2</source>
+        <translation>p. ex. PartPresent AND X3, ↑Start, 5s/X2</translation>
+    </message>
+    <message>
+        <source>Structured Text as in GEMMA conditions, plus X3 (step 3 is active), ↑a or RE a (rising edge), ↓a or FE a (falling edge), 5s/X3 (step 3 active for 5 s) and Complete.
+Ctrl+Space completes a name.</source>
+        <translation>Texte structuré comme dans les conditions GEMMA, plus X3 (l’étape 3 est active), ↑a ou RE a (front montant), ↓a ou FE a (front descendant), 5s/X3 (l’étape 3 est active depuis 5 s) et Complete.
+Ctrl+Espace complète un nom.</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Dans le GRAFCET imbriqué de %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2552,11 +3253,6 @@
         <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
         <translation>Relecture de %1&#xa0;: en pause au cycle %2 sur %3. Appuyez sur %4 pour avancer d&apos;un cycle, ou sur Exécuter pour jouer la suite.</translation>
     </message>
-    <message>
-        <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
-        <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
-        <translation>Unstable&#xa0;: le GRAFCET de %1 n&apos;a trouvé aucune situation stable dans ce cycle&#xa0;; sa dernière évolution a encore franchi une transition.</translation>
-    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -2602,6 +3298,15 @@
     <message>
         <source>This transition is not effective: it generates no code.</source>
         <translation>Cette transition n&apos;est pas effective&#xa0;: elle ne génère aucun code.</translation>
+    </message>
+    <message>
+        <source>%1 generates no function block: only a visible macro-step or enclosing step does.</source>
+        <translation>%1 ne génère aucun bloc fonctionnel&#xa0;: seule une macro-étape ou une étape encapsulante visible en génère un.</translation>
+    </message>
+    <message>
+        <source>%1_FB (the nested GRAFCET of %1)</source>
+        <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
+        <translation>%1_FB (le GRAFCET imbriqué de %1)</translation>
     </message>
 </context>
 <context>
@@ -2806,11 +3511,6 @@ Macro-étape&#xa0;: ses transitions attendent que le comportement imbriqué soit
             <numerusform>A un GRAFCET imbriqué (%n étape)</numerusform>
             <numerusform>A un GRAFCET imbriqué (%n étapes)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Its GRAFCET runs: steps %1 active</source>
-        <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
-        <translation>Son GRAFCET évolue&#xa0;: étapes %1 actives</translation>
     </message>
 </context>
 <context>

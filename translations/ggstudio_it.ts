@@ -2,6 +2,14 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="it_IT">
 <context>
+    <name>AddGrafcetActionCommand</name>
+    <message>
+        <source>Add action %1 to %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Aggiungi l’azione %1 alla tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -573,6 +581,18 @@
     </message>
 </context>
 <context>
+    <name>MoveGrafcetActionCommand</name>
+    <message>
+        <source>Move action %1 of %2 step %3 up</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Sposta su l’azione %1 della tappa %3 di %2</translation>
+    </message>
+    <message>
+        <source>Move action %1 of %2 step %3 down</source>
+        <translation>Sposta giù l’azione %1 della tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -672,6 +692,14 @@
     </message>
 </context>
 <context>
+    <name>RemoveGrafcetActionCommand</name>
+    <message>
+        <source>Remove action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Rimuovi l’azione %1 della tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
     <name>RemoveVariableCommand</name>
     <message>
         <source>Remove variable %1</source>
@@ -687,6 +715,14 @@
     <message>
         <source>a variable named &apos;%1&apos; already exists (IEC names ignore case)</source>
         <translation>esiste già una variabile di nome &apos;%1&apos; (i nomi IEC non distinguono maiuscole e minuscole)</translation>
+    </message>
+</context>
+<context>
+    <name>RenumberGrafcetStepCommand</name>
+    <message>
+        <source>Renumber %1 step %2 to %3</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number</extracomment>
+        <translation>Rinumera la tappa %2 di %1 in %3</translation>
     </message>
 </context>
 <context>
@@ -754,6 +790,34 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetActionCommand</name>
+    <message>
+        <source>Set action %1 of %2 step %3</source>
+        <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
+        <translation>Modifica l’azione %1 della tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepCommentCommand</name>
+    <message>
+        <source>Edit comment of %1 step %2</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET: &quot;Edit comment of F1 step 3&quot;</extracomment>
+        <translation>Modifica il commento della tappa %2 di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetGrafcetStepInitialCommand</name>
+    <message>
+        <source>Make %1 step %2 initial</source>
+        <extracomment>%1 is the GEMMA step, %2 a step number of its nested GRAFCET</extracomment>
+        <translation>Rendi iniziale la tappa %2 di %1</translation>
+    </message>
+    <message>
+        <source>Make %1 step %2 not initial</source>
+        <translation>Rendi non iniziale la tappa %2 di %1</translation>
+    </message>
+</context>
+<context>
     <name>SetInitialStepCommand</name>
     <message>
         <source>Make %1 the initial step</source>
@@ -783,6 +847,14 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Imposta la priorità di %1 a %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetReceptivityCommand</name>
+    <message>
+        <source>Set receptivity of %1 T%2</source>
+        <extracomment>%1 is the GEMMA step, %2 the transition number of its nested GRAFCET: &quot;Set receptivity of F1 T3&quot;</extracomment>
+        <translation>Modifica la ricettività di %1 T%2</translation>
     </message>
 </context>
 <context>
@@ -1166,6 +1238,321 @@
     </message>
 </context>
 <context>
+    <name>SpecificationExport</name>
+    <message>
+        <source>%1 specification</source>
+        <extracomment>the specification&apos;s title and the file name it is saved under; %1 is the model&apos;s name</extracomment>
+        <translation>Specifica %1</translation>
+    </message>
+    <message>
+        <source>GEMMA chart</source>
+        <translation>Diagramma GEMMA</translation>
+    </message>
+    <message>
+        <source>States</source>
+        <translation>Stati</translation>
+    </message>
+    <message>
+        <source>Transitions</source>
+        <translation>Transizioni</translation>
+    </message>
+    <message>
+        <source>Variables</source>
+        <translation>Variabili</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs</source>
+        <translation>GRAFCET annidati</translation>
+    </message>
+    <message>
+        <source>Generated code</source>
+        <translation>Codice generato</translation>
+    </message>
+    <message>
+        <source>Specification</source>
+        <translation>Specifica</translation>
+    </message>
+    <message>
+        <source>GEMMA-GRAFCET specification</source>
+        <translation>Specifica GEMMA-GRAFCET</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n errore</numerusform>
+            <numerusform>%n errori</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s)</source>
+        <translation>
+            <numerusform>%n avviso</numerusform>
+            <numerusform>%n avvisi</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>File</translation>
+    </message>
+    <message>
+        <source>not saved yet</source>
+        <translation>non ancora salvato</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Data</translation>
+    </message>
+    <message>
+        <source>Initial state</source>
+        <translation>Stato iniziale</translation>
+    </message>
+    <message>
+        <source>PLC task cycle</source>
+        <translation>Ciclo del task PLC</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Code dialect</source>
+        <translation>Dialetto del codice</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET evolution</source>
+        <translation>Evoluzione dei GRAFCET annidati</translation>
+    </message>
+    <message>
+        <source>Until stable, in one call of its function block</source>
+        <translation>Fino alla stabilità, in una chiamata del suo blocco funzione</translation>
+    </message>
+    <message>
+        <source>One evolution per PLC scan</source>
+        <translation>Un&apos;evoluzione per ciclo PLC</translation>
+    </message>
+    <message>
+        <source>Checks</source>
+        <translation>Controlli</translation>
+    </message>
+    <message>
+        <source>No problems found</source>
+        <translation>Nessun problema trovato</translation>
+    </message>
+    <message>
+        <source>Written by</source>
+        <translation>Scritto con</translation>
+    </message>
+    <message>
+        <source>GG Studio %1</source>
+        <translation>GG Studio %1</translation>
+    </message>
+    <message>
+        <source>Contents</source>
+        <translation>Indice</translation>
+    </message>
+    <message>
+        <source>GEMMA chart, continued</source>
+        <translation>Diagramma GEMMA, continuazione</translation>
+    </message>
+    <message>
+        <source>States, transitions and variables</source>
+        <translation>Stati, transizioni e variabili</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stato</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>GRAFCET</source>
+        <translation>GRAFCET</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commento</translation>
+    </message>
+    <message>
+        <source>%1, initial</source>
+        <translation>%1, iniziale</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n tappa</numerusform>
+            <numerusform>%n tappe</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The visible states of the GEMMA chart, in state order. A macro-step or an enclosing step runs its nested GRAFCET while it is active.</source>
+        <translation>Gli stati visibili del diagramma GEMMA, nell&apos;ordine degli stati. Una macro-tappa o una tappa incapsulante esegue il suo GRAFCET annidato finché è attiva.</translation>
+    </message>
+    <message>
+        <source>Transition</source>
+        <translation>Transizione</translation>
+    </message>
+    <message>
+        <source>Priority</source>
+        <translation>Priorità</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Condizione</translation>
+    </message>
+    <message>
+        <source>Tokens</source>
+        <translation>Memorie</translation>
+    </message>
+    <message>
+        <source>%1, negated</source>
+        <translation>%1, negata</translation>
+    </message>
+    <message>
+        <source>The transitions that take part: visible, between visible states. A state evaluates its transitions by priority, 1 first; a negated transition fires when its condition is FALSE.</source>
+        <translation>Le transizioni che contano: visibili, tra stati visibili. Uno stato valuta le sue transizioni per priorità, prima la 1; una transizione negata scatta quando la sua condizione è FALSE.</translation>
+    </message>
+    <message>
+        <source>No transition takes part.</source>
+        <translation>Nessuna transizione conta.</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Natura</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Valore iniziale</translation>
+    </message>
+    <message>
+        <source>The declared variables, in declaration order. Inputs are read from the machine, outputs written by the actions of the nested GRAFCETs, internal variables are the program&apos;s memory. A variable without a default starts at its type&apos;s (FALSE, 0).</source>
+        <translation>Le variabili dichiarate, nell&apos;ordine di dichiarazione. Gli ingressi sono letti dalla macchina, le uscite scritte dalle azioni dei GRAFCET annidati, le variabili interne sono la memoria del programma. Una variabile senza valore iniziale parte da quello del suo tipo (FALSE, 0).</translation>
+    </message>
+    <message>
+        <source>No variables are declared.</source>
+        <translation>Nessuna variabile è dichiarata.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n transition(s)</source>
+        <translation>
+            <numerusform>%n transizione</numerusform>
+            <numerusform>%n transizioni</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>function block %1</source>
+        <translation>blocco funzione %1</translation>
+    </message>
+    <message>
+        <source>This GRAFCET has no steps yet.</source>
+        <translation>Questo GRAFCET non ha ancora tappe.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET of %1, continued</source>
+        <translation>GRAFCET annidato di %1, continuazione</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Tappa</translation>
+    </message>
+    <message>
+        <source>Steps of %1</source>
+        <translation>Tappe di %1</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the Hierarchical Design Pattern: the program %1 holds the active GEMMA state and evaluates its transitions by priority, and each visible macro-step or enclosing step is a function block that %1 calls while that state is active. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio genera il programma PLC in Structured Text IEC 61131-3 secondo l&apos;Hierarchical Design Pattern: il programma %1 tiene lo stato GEMMA attivo e ne valuta le transizioni per priorità, e ogni macro-tappa o tappa incapsulante visibile è un blocco funzione che %1 chiama finché quello stato è attivo. Questo schema riporta le unità di organizzazione del programma e le loro interfacce; File &gt; Esporta Testo strutturato (ST) ed Esporta PLCopen XML scrivono il codice stesso.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The model has %n error(s): the generated code marks each one with a comment.</source>
+        <translation>
+            <numerusform>Il modello ha %n errore: il codice generato lo segnala con un commento.</numerusform>
+            <numerusform>Il modello ha %n errori: il codice generato segnala ciascuno con un commento.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Configuration</source>
+        <translation>Configurazione</translation>
+    </message>
+    <message>
+        <source>Resource</source>
+        <translation>Risorsa</translation>
+    </message>
+    <message>
+        <source>Task</source>
+        <translation>Task</translation>
+    </message>
+    <message>
+        <source>%1: cyclic, every %2, priority %3</source>
+        <translation>%1: ciclico, ogni %2, priorità %3</translation>
+    </message>
+    <message>
+        <source>Program instance</source>
+        <translation>Istanza del programma</translation>
+    </message>
+    <message>
+        <source>Global variable list</source>
+        <translation>Lista delle variabili globali</translation>
+    </message>
+    <message>
+        <source>The GEMMA layer: it holds the active state in State, evaluates that state&apos;s transitions by priority and calls the function block of a state with nested behaviour while that state is active.</source>
+        <translation>Il livello GEMMA: tiene lo stato attivo in State, valuta le transizioni di quello stato per priorità e chiama il blocco funzione di uno stato con comportamento annidato finché quello stato è attivo.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 (page %2). %3 calls it through its instance %4 while %4 is active.</source>
+        <translation>Il GRAFCET annidato di %1 (pagina %2). %3 lo chiama tramite la sua istanza %4 finché %4 è attiva.</translation>
+    </message>
+    <message>
+        <source>The nested behaviour of %1, not written yet: until it is, the function block completes at once. %2 calls it through its instance %3.</source>
+        <translation>Il comportamento annidato di %1, non ancora scritto: nel frattempo il blocco funzione termina subito. %2 lo chiama tramite la sua istanza %3.</translation>
+    </message>
+    <message>
+        <source>Declaration</source>
+        <translation>Dichiarazione</translation>
+    </message>
+    <message>
+        <source>Initial value</source>
+        <translation>Valore iniziale</translation>
+    </message>
+    <message>
+        <source>Global variables it reads (VAR_EXTERNAL): %1.</source>
+        <translation>Variabili globali che legge (VAR_EXTERNAL): %1.</translation>
+    </message>
+    <message>
+        <source>Its own variables (VAR): %1.</source>
+        <translation>Le sue variabili (VAR): %1.</translation>
+    </message>
+    <message>
+        <source>Global variables</source>
+        <translation>Variabili globali</translation>
+    </message>
+    <message>
+        <source>in the VAR_GLOBAL of the configuration %1</source>
+        <translation>nel VAR_GLOBAL della configurazione %1</translation>
+    </message>
+    <message>
+        <source>in the global variable list %1</source>
+        <translation>nella lista delle variabili globali %1</translation>
+    </message>
+    <message>
+        <source>The declared variables (page %1) are the program&apos;s global variables, %2.</source>
+        <translation>Le variabili dichiarate (pagina %1) sono le variabili globali del programma, %2.</translation>
+    </message>
+    <message>
+        <source>The generator adds these:</source>
+        <translation>Il generatore aggiunge queste:</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Pagina %1 di %2</translation>
+    </message>
+</context>
+<context>
     <name>StateNames</name>
     <message>
         <source>Stop in initial state</source>
@@ -1368,6 +1755,26 @@
     </message>
 </context>
 <context>
+    <name>editor::ConnectTransitionDialog</name>
+    <message>
+        <source>Connect T%1 of %2</source>
+        <extracomment>%1 the transition&apos;s number, %2 the GEMMA step whose GRAFCET it is in</extracomment>
+        <translation>Collega T%1 di %2</translation>
+    </message>
+    <message>
+        <source>Upstream steps (it leaves them)</source>
+        <translation>Tappe a monte (le disattiva)</translation>
+    </message>
+    <message>
+        <source>Downstream steps (it activates them)</source>
+        <translation>Tappe a valle (le attiva)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Tappa %1</translation>
+    </message>
+</context>
+<context>
     <name>editor::Document</name>
     <message>
         <source>%1: %2</source>
@@ -1538,6 +1945,18 @@
         <source>%1, nested GRAFCET of %2</source>
         <translation>%1, GRAFCET annidato di %2</translation>
     </message>
+    <message>
+        <source>Export Speci&amp;fication…</source>
+        <translation>Esporta la speci&amp;fica…</translation>
+    </message>
+    <message>
+        <source>Write the whole model as one PDF document: the chart, the states, the variables, every nested GRAFCET and the outline of the generated code</source>
+        <translation>Scrivere l&apos;intero modello come un unico documento PDF: il diagramma, gli stati, le variabili, ogni GRAFCET annidato e lo schema del codice generato</translation>
+    </message>
+    <message>
+        <source>Export Specification</source>
+        <translation>Esporta la specifica</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -1595,22 +2014,304 @@
     </message>
 </context>
 <context>
-    <name>editor::GrafcetSimulationMarks</name>
+    <name>editor::GrafcetActions</name>
     <message>
-        <source>%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation</source>
-        <translation>%1 è attiva: il suo GRAFCET evolve. Unstable: l&apos;ultimo ciclo è finito senza una situazione stabile</translation>
+        <source>Insert Step &amp;After</source>
+        <translation>Inserisci tappa &amp;dopo</translation>
     </message>
     <message>
-        <source>%1 is active: its GRAFCET runs (steps %2)</source>
-        <translation>%1 è attiva: il suo GRAFCET evolve (tappe %2)</translation>
+        <source>Insert Step &amp;Before</source>
+        <translation>Inserisci tappa &amp;prima</translation>
     </message>
     <message>
-        <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
-        <translation>%1 è appena stata attivata: il suo GRAFCET parte dalle sue tappe iniziali al prossimo ciclo</translation>
+        <source>Add &amp;Selection Branch</source>
+        <translation>Aggiungi ramo di &amp;selezione</translation>
     </message>
     <message>
-        <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
-        <translation>%1 non è attiva: il suo GRAFCET è mostrato in grigio, come è stato lasciato</translation>
+        <source>Add &amp;Parallel Branch</source>
+        <translation>Aggiungi ramo p&amp;arallelo</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Rimuovi</translation>
+    </message>
+    <message>
+        <source>Remove Bra&amp;nch</source>
+        <translation>Rimuovi ra&amp;mo</translation>
+    </message>
+    <message>
+        <source>Ren&amp;umber Steps and Transitions</source>
+        <translation>Ri&amp;numera tappe e transizioni</translation>
+    </message>
+    <message>
+        <source>&amp;Connect Directly…</source>
+        <translation>&amp;Collega direttamente…</translation>
+    </message>
+    <message>
+        <source>&amp;Copy Steps</source>
+        <translation>C&amp;opia tappe</translation>
+    </message>
+    <message>
+        <source>&amp;Paste Steps</source>
+        <translation>Incoll&amp;a tappe</translation>
+    </message>
+    <message>
+        <source>Create the &amp;Usual Shape</source>
+        <translation>Crea la forma &amp;usuale</translation>
+    </message>
+    <message>
+        <source>Initial step 1, then step 2, then step 3, which sets Complete</source>
+        <translation>Tappa iniziale 1, poi tappa 2, poi tappa 3, che imposta Complete</translation>
+    </message>
+    <message>
+        <source>%1 has no GRAFCET yet.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Create the usual shape&lt;/a&gt;: initial step 1, step 2, and step 3, which sets Complete.</source>
+        <extracomment>%1 the GEMMA step; the link creates its GRAFCET</extracomment>
+        <translation>%1 non ha ancora un GRAFCET.&lt;br&gt;&lt;a href=&quot;create&quot;&gt;Crea la forma usuale&lt;/a&gt;: tappa iniziale 1, tappa 2 e tappa 3, che imposta Complete.</translation>
+    </message>
+    <message>
+        <source>Add Loop or &amp;Jump To</source>
+        <translation>Aggiungi ciclo o &amp;salto verso</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Tappa %1</translation>
+    </message>
+    <message>
+        <source>Add step %1 to %2</source>
+        <translation>Aggiungi la tappa %1 a %2</translation>
+    </message>
+    <message>
+        <source>Add selection branch to %1</source>
+        <translation>Aggiungi un ramo di selezione a %1</translation>
+    </message>
+    <message>
+        <source>Add parallel branch to %1</source>
+        <translation>Aggiungi un ramo parallelo a %1</translation>
+    </message>
+    <message>
+        <source>Add jump from step %1 to step %2 in %3</source>
+        <extracomment>%1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Aggiungi un salto dalla tappa %1 alla tappa %2 in %3</translation>
+    </message>
+    <message>
+        <source>Remove step %1 from %2</source>
+        <translation>Rimuovi la tappa %1 da %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n steps from %1</source>
+        <translation>
+            <numerusform>Rimuovi %n tappa da %1</numerusform>
+            <numerusform>Rimuovi %n tappe da %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove branch from %1</source>
+        <translation>Rimuovi un ramo da %1</translation>
+    </message>
+    <message>
+        <source>Renumber %1</source>
+        <translation>Rinumera %1</translation>
+    </message>
+    <message>
+        <source>Connect %1 T%2</source>
+        <extracomment>%1 the GEMMA step, %2 the transition&apos;s number</extracomment>
+        <translation>Collega %1 T%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Paste %n steps into %1</source>
+        <translation>
+            <numerusform>Incolla %n tappa in %1</numerusform>
+            <numerusform>Incolla %n tappe in %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Create GRAFCET of %1</source>
+        <translation>Crea il GRAFCET di %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetActionsModel</name>
+    <message>
+        <source>When</source>
+        <translation>Quando</translation>
+    </message>
+    <message>
+        <source>Qual.</source>
+        <extracomment>short: the column is narrow; its tooltip says &quot;qualifier&quot; in full</extracomment>
+        <translation>Qual.</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variabile</translation>
+    </message>
+    <message>
+        <source>IF / value</source>
+        <extracomment>the condition after IF of an N action, or the value of a := action; short: the column is narrow</extracomment>
+        <translation>IF / valore</translation>
+    </message>
+    <message>
+        <source>While the step is active (N), or once when it is activated or deactivated (S, R, :=)</source>
+        <translation>Finché la tappa è attiva (N), o una volta alla sua attivazione o disattivazione (S, R, :=)</translation>
+    </message>
+    <message>
+        <source>Qualifier. N: the variable is TRUE while the step is active
+S, R: set it TRUE or FALSE
+:=: assign it the value</source>
+        <translation>Qualificatore. N: la variabile è TRUE finché la tappa è attiva
+S, R: impostarla a TRUE o FALSE
+:=: assegnarle il valore</translation>
+    </message>
+    <message>
+        <source>An output or internal variable, or Complete</source>
+        <translation>Una variabile di uscita o interna, o Complete</translation>
+    </message>
+    <message>
+        <source>N: only IF this condition holds (may be empty)
+:=: the value assigned</source>
+        <translation>N: solo IF questa condizione è vera (può essere vuota)
+:=: il valore assegnato</translation>
+    </message>
+    <message>
+        <source>While active</source>
+        <translation>Finché attiva</translation>
+    </message>
+    <message>
+        <source>On activation</source>
+        <translation>All’attivazione</translation>
+    </message>
+    <message>
+        <source>On deactivation</source>
+        <translation>Alla disattivazione</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetStepDock</name>
+    <message>
+        <source>Nested Step</source>
+        <translation>Tappa annidata</translation>
+    </message>
+    <message>
+        <source>Select a step in a nested GRAFCET&apos;s tab to see and edit its number, comment and actions.</source>
+        <translation>Selezionare una tappa nella scheda di un GRAFCET annidato per vederne e modificarne numero, commento e azioni.</translation>
+    </message>
+    <message>
+        <source>&amp;Number:</source>
+        <translation>&amp;Numero:</translation>
+    </message>
+    <message>
+        <source>Unique in this GRAFCET; its activity is X&lt;number&gt;. The transitions and the X&lt;number&gt; of the receptivities and actions follow a new number.</source>
+        <translation>Unico in questo GRAFCET; la sua attività è X&lt;numero&gt;. Le transizioni e gli X&lt;numero&gt; delle ricettività e delle azioni seguono un nuovo numero.</translation>
+    </message>
+    <message>
+        <source>&amp;Initial</source>
+        <translation>&amp;Iniziale</translation>
+    </message>
+    <message>
+        <source>Active when the GEMMA state is entered (a GRAFCET needs at least one)</source>
+        <translation>Attiva all’ingresso nello stato GEMMA (un GRAFCET ne richiede almeno una)</translation>
+    </message>
+    <message>
+        <source>&amp;Comment:</source>
+        <translation>&amp;Commento:</translation>
+    </message>
+    <message>
+        <source>What the machine does in this step</source>
+        <translation>Ciò che la macchina fa in questa tappa</translation>
+    </message>
+    <message>
+        <source>&amp;Actions:</source>
+        <translation>&amp;Azioni:</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Aggiungi</translation>
+    </message>
+    <message>
+        <source>Add an action after the current one</source>
+        <translation>Aggiungi un’azione dopo quella corrente</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <source>Remove the current action</source>
+        <translation>Rimuovi l’azione corrente</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Su</translation>
+    </message>
+    <message>
+        <source>Run the current action earlier</source>
+        <translation>Esegui prima l’azione corrente</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Giù</translation>
+    </message>
+    <message>
+        <source>Run the current action later</source>
+        <translation>Esegui dopo l’azione corrente</translation>
+    </message>
+    <message>
+        <source>%1 step %2</source>
+        <extracomment>A step of the nested GRAFCET of a GEMMA step: &quot;F1 step 3&quot;</extracomment>
+        <translation>%1 tappa %2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Nel GRAFCET annidato di %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 already has a step %2: choose another number.</source>
+        <translation>%1 ha già una tappa %2: scegliere un altro numero.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTransitionDock</name>
+    <message>
+        <source>Nested Transition</source>
+        <translation>Transizione annidata</translation>
+    </message>
+    <message>
+        <source>Select a transition in a nested GRAFCET&apos;s tab to see and edit its receptivity.</source>
+        <translation>Selezionare una transizione nella scheda di un GRAFCET annidato per vederne e modificarne la ricettività.</translation>
+    </message>
+    <message>
+        <source>From steps:</source>
+        <translation>Dalle tappe:</translation>
+    </message>
+    <message>
+        <source>To steps:</source>
+        <translation>Alle tappe:</translation>
+    </message>
+    <message>
+        <source>Click a step to select it</source>
+        <translation>Fare clic su una tappa per selezionarla</translation>
+    </message>
+    <message>
+        <source>&amp;Receptivity:</source>
+        <translation>&amp;Ricettività:</translation>
+    </message>
+    <message>
+        <source>e.g. PartPresent AND X3, ↑Start, 5s/X2</source>
+        <translation>es. PartPresent AND X3, ↑Start, 5s/X2</translation>
+    </message>
+    <message>
+        <source>Structured Text as in GEMMA conditions, plus X3 (step 3 is active), ↑a or RE a (rising edge), ↓a or FE a (falling edge), 5s/X3 (step 3 active for 5 s) and Complete.
+Ctrl+Space completes a name.</source>
+        <translation>Testo strutturato come nelle condizioni GEMMA, più X3 (la tappa 3 è attiva), ↑a o RE a (fronte di salita), ↓a o FE a (fronte di discesa), 5s/X3 (la tappa 3 è attiva da 5 s) e Complete.
+Ctrl+Spazio completa un nome.</translation>
+    </message>
+    <message>
+        <source>%1 T%2</source>
+        <extracomment>A transition of the nested GRAFCET of a GEMMA step: &quot;F1 T2&quot;</extracomment>
+        <translation>%1 T%2</translation>
+    </message>
+    <message>
+        <source>In the nested GRAFCET of %1 %2</source>
+        <translation>Nel GRAFCET annidato di %1 %2</translation>
     </message>
 </context>
 <context>
@@ -2552,11 +3253,6 @@
         <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
         <translation>Riproduzione di %1: in pausa al ciclo %2 di %3. Premi %4 per avanzare di un ciclo, o Esegui per riprodurre il resto.</translation>
     </message>
-    <message>
-        <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
-        <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
-        <translation>Unstable: il GRAFCET di %1 non ha trovato una situazione stabile in questo ciclo; la sua ultima evoluzione ha ancora superato una transizione.</translation>
-    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -2602,6 +3298,15 @@
     <message>
         <source>This transition is not effective: it generates no code.</source>
         <translation>Questa transizione non è effettiva: non genera codice.</translation>
+    </message>
+    <message>
+        <source>%1 generates no function block: only a visible macro-step or enclosing step does.</source>
+        <translation>%1 non genera alcun blocco funzione: solo una macro-tappa o una tappa incapsulante visibile lo fa.</translation>
+    </message>
+    <message>
+        <source>%1_FB (the nested GRAFCET of %1)</source>
+        <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
+        <translation>%1_FB (il GRAFCET annidato di %1)</translation>
     </message>
 </context>
 <context>
@@ -2806,11 +3511,6 @@ Tappa incapsulante: le sue transizioni scattano qualunque cosa stia facendo il c
             <numerusform>Ha un GRAFCET annidato (%n tappa)</numerusform>
             <numerusform>Ha un GRAFCET annidato (%n tappe)</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Its GRAFCET runs: steps %1 active</source>
-        <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
-        <translation>Il suo GRAFCET evolve: tappe %1 attive</translation>
     </message>
 </context>
 <context>

@@ -130,27 +130,59 @@ QList<double> GrafcetExport::pageStarts(const QList<QPair<double, double>>& elem
     return starts;
 }
 
-void GrafcetExport::renderPages(QPainter& painter, QPagedPaintDevice& device, const QSizeF& page,
-                                double dotsPerPoint) const
+GrafcetExport::Pages::Pages(GrafcetScene& scene, const QSizeF& page, double dotsPerPoint, double maxTextPoints)
+    : m_scene(scene)
+    , m_page(page)
+    , m_starts{0}
 {
     const HiddenSelection hidden(m_scene); // the page breaks come from the unselected extents
     const QRectF drawing = m_scene.drawingRect();
+    if (drawing.isEmpty() || page.isEmpty())
+        return;
     const double fitPage = std::min(page.width() / drawing.width(), page.height() / drawing.height());
     const double fitWidth = page.width() / drawing.width();
     const double readable = kMinimumTextPoints * dotsPerPoint / chartstyle::kFontSize;
     // One page when it stays readable; else the readable size (or the
     // page's width when even that is too wide) over several pages.
-    const double scale = fitPage >= readable ? fitPage : std::min(readable, fitWidth);
-    const QList<double> starts = pageStarts(elementExtents(m_scene), drawing.height(), page.height() / scale);
-    for (qsizetype i = 0; i < starts.size(); ++i) {
+    m_scale = fitPage >= readable ? fitPage : std::min(readable, fitWidth);
+    if (maxTextPoints > 0)
+        m_scale = std::min(m_scale, maxTextPoints * dotsPerPoint / chartstyle::kFontSize);
+    m_starts = pageStarts(elementExtents(m_scene), drawing.height(), page.height() / m_scale);
+}
+
+QPair<double, double> GrafcetExport::Pages::slice(qsizetype index) const
+{
+    const double top = m_starts.value(index);
+    const double bottom = index + 1 < m_starts.size() ? m_starts[index + 1] : m_scene.drawingRect().height();
+    return {top, std::max(top, bottom)};
+}
+
+double GrafcetExport::Pages::height(qsizetype index) const
+{
+    const auto [top, bottom] = slice(index);
+    return (bottom - top) * m_scale;
+}
+
+void GrafcetExport::Pages::paint(QPainter& painter, qsizetype index) const
+{
+    const QRectF drawing = m_scene.drawingRect();
+    if (drawing.isEmpty() || index < 0 || index >= m_starts.size())
+        return;
+    const auto [top, bottom] = slice(index);
+    const QRectF source(drawing.left(), drawing.top() + top, drawing.width(), bottom - top);
+    const QRectF target((m_page.width() - drawing.width() * m_scale) / 2, 0, drawing.width() * m_scale,
+                        (bottom - top) * m_scale);
+    render(m_scene, painter, target, source);
+}
+
+void GrafcetExport::renderPages(QPainter& painter, QPagedPaintDevice& device, const QSizeF& page,
+                                double dotsPerPoint) const
+{
+    const Pages pages(m_scene, page, dotsPerPoint);
+    for (qsizetype i = 0; i < pages.count(); ++i) {
         if (i > 0)
             device.newPage();
-        const double top = starts[i];
-        const double bottom = i + 1 < starts.size() ? starts[i + 1] : drawing.height();
-        const QRectF source(drawing.left(), drawing.top() + top, drawing.width(), bottom - top);
-        const QRectF target((page.width() - drawing.width() * scale) / 2, 0, drawing.width() * scale,
-                            (bottom - top) * scale);
-        render(m_scene, painter, target, source);
+        pages.paint(painter, i);
     }
 }
 

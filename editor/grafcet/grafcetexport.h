@@ -38,6 +38,32 @@ public:
     static QList<double> pageStarts(const QList<QPair<double, double>>& elements, double drawingHeight,
                                     double pageHeight);
 
+    // The pages a PDF or a print (or the specification, editor/
+    // specificationexport.h) puts the drawing on, `page` device units each
+    // at `dotsPerPoint` device units a point: one page while its text stays
+    // at 8 pt, else over several, as the class comment says. A positive
+    // `maxTextPoints` keeps a small drawing from growing past that text size
+    // to fill the page.
+    class Pages {
+    public:
+        Pages(GrafcetScene& scene, const QSizeF& page, double dotsPerPoint, double maxTextPoints = 0);
+
+        qsizetype count() const { return m_starts.size(); }
+        // The height the drawing takes on page `index`, in device units.
+        double height(qsizetype index) const;
+        // Page `index` (from 0), horizontally centred, its top at the painter's origin.
+        void paint(QPainter& painter, qsizetype index) const;
+
+    private:
+        // The drawing's rows on page `index`, from its top.
+        QPair<double, double> slice(qsizetype index) const;
+
+        GrafcetScene& m_scene;
+        QSizeF m_page;
+        double m_scale = 1;
+        QList<double> m_starts;
+    };
+
 private:
     void renderPages(QPainter& painter, QPagedPaintDevice& device, const QSizeF& page, double dotsPerPoint) const;
 

@@ -1,4 +1,5 @@
 #include "filetestsupport.h"
+#include "readonlyfolder.h"
 
 #include "core/formats/fileio.h"
 #include "core/formats/modelfiles.h"
@@ -6,61 +7,15 @@
 
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
-#ifndef _WIN32
-#include <sys/stat.h>
-#include <unistd.h>
-#endif
-
 using namespace core;
 using filetests::ScratchFolder;
-namespace fs = std::filesystem;
-
-namespace {
-
 #ifndef _WIN32
-// Makes a folder refuse new files, also for root (who ignores permission
-// bits): chmod for ordinary users, the immutable attribute for root.
-class ReadOnlyFolder {
-public:
-    explicit ReadOnlyFolder(const fs::path& path) : m_path(path)
-    {
-        if (::geteuid() == 0)
-            m_immutable = std::system(("chattr +i '" + path.string() + "' 2>/dev/null").c_str()) == 0;
-        else
-            ::chmod(path.c_str(), 0555);
-    }
-    ~ReadOnlyFolder()
-    {
-        if (m_immutable)
-            std::system(("chattr -i '" + m_path.string() + "'").c_str());
-        ::chmod(m_path.c_str(), 0755);
-    }
-    ReadOnlyFolder(const ReadOnlyFolder&) = delete;
-    ReadOnlyFolder& operator=(const ReadOnlyFolder&) = delete;
-
-    // The precondition of the test: can nothing be created in the folder?
-    bool effective() const
-    {
-        const fs::path probe = m_path / "probe";
-        FILE* file = std::fopen(probe.c_str(), "w");
-        if (!file)
-            return true;
-        std::fclose(file);
-        std::remove(probe.c_str());
-        return false;
-    }
-
-private:
-    fs::path m_path;
-    bool m_immutable = false;
-};
+using testsupport::ReadOnlyFolder;
 #endif
-
-} // namespace
+namespace fs = std::filesystem;
 
 TEST_CASE("Valid UTF-8 passes the check", "[files]")
 {

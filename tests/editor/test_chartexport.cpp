@@ -16,6 +16,8 @@
 
 #include "core/formats/modelfiles.h"
 
+#include "modelfactory.h"
+
 #include <QFile>
 #include <QImage>
 #include <QPrinter>
@@ -111,28 +113,6 @@ void TestChartExport::cleanup()
 
 namespace {
 
-// A sequence of `steps` steps, each with an action, that loops back to step 1.
-core::Grafcet longSequence(int steps)
-{
-    core::Grafcet grafcet;
-    for (int n = 1; n <= steps; ++n) {
-        core::GrafcetStep step;
-        step.number = n;
-        step.initial = n == 1;
-        step.actions.push_back({core::ActionTiming::Continuous, QStringLiteral("Out%1").arg(n).toStdString()});
-        (void)grafcet.addStep(step);
-    }
-    for (int n = 1; n <= steps; ++n) {
-        core::GrafcetTransition transition;
-        transition.number = n;
-        transition.upstream = {n};
-        transition.downstream = {n < steps ? n + 1 : 1};
-        transition.receptivity = QStringLiteral("Go%1").arg(n).toStdString();
-        (void)grafcet.addTransition(transition);
-    }
-    return grafcet;
-}
-
 int pdfPages(const QString& text)
 {
     return int(text.count(QLatin1Char('\f'))) + (text.endsWith(QLatin1Char('\f')) ? 0 : 1);
@@ -182,7 +162,7 @@ void TestChartExport::longGrafcetGoesOverSeveralReadablePages()
 {
     core::Model model = m_document->model();
     QVERIFY(model.setStepType("F1", core::StepType::Macro).ok);
-    QVERIFY(model.setGrafcet("F1", longSequence(60)).ok);
+    QVERIFY(model.setGrafcet("F1", factory::loopedSequence(60)).ok);
     m_document->replaceModel(model, QString(), core::ModelFormat::Native);
     GrafcetScene scene(m_document, QStringLiteral("F1"));
     QCOMPARE(scene.layout().steps.size(), std::size_t(60));

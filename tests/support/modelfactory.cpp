@@ -221,6 +221,27 @@ core::Model hugeConditionVerificationModel()
     return model;
 }
 
+core::Grafcet loopedSequence(int steps)
+{
+    core::Grafcet grafcet;
+    for (int n = 1; n <= steps; ++n) {
+        core::GrafcetStep step;
+        step.number = n;
+        step.initial = n == 1;
+        step.actions.push_back({core::ActionTiming::Continuous, "Out" + std::to_string(n)});
+        require(grafcet.addStep(step));
+    }
+    for (int n = 1; n <= steps; ++n) {
+        core::GrafcetTransition transition;
+        transition.number = n;
+        transition.upstream = {n};
+        transition.downstream = {n < steps ? n + 1 : 1};
+        transition.receptivity = "Go" + std::to_string(n);
+        require(grafcet.addTransition(transition));
+    }
+    return grafcet;
+}
+
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count)
 {
     std::vector<std::string> stepIds;
@@ -271,24 +292,8 @@ int applyRandomEdits(core::Model& model, std::mt19937& random, int count)
 
 core::Model longGrafcetModel(int steps)
 {
-    core::Grafcet grafcet;
-    for (int n = 1; n <= steps; ++n) {
-        core::GrafcetStep step;
-        step.number = n;
-        step.initial = n == 1;
-        step.actions.push_back({core::ActionTiming::Continuous, "Out" + std::to_string(n)});
-        (void)grafcet.addStep(step);
-    }
-    for (int n = 1; n <= steps; ++n) {
-        core::GrafcetTransition transition;
-        transition.number = n;
-        transition.upstream = {n};
-        transition.downstream = {n < steps ? n + 1 : 1};
-        transition.receptivity = "Go" + std::to_string(n);
-        (void)grafcet.addTransition(transition);
-    }
     core::Model model = realisticModel();
-    (void)model.setGrafcet("F1", std::move(grafcet)); // F1 is a macro-step there
+    (void)model.setGrafcet("F1", loopedSequence(steps));
     return model;
 }
 

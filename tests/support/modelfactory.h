@@ -43,10 +43,14 @@ core::Model comparisonVerificationModel(int operands, bool mixed);
 // Speed0 < 5`): that GV102 must be found whatever happens to the huge ones.
 core::Model hugeConditionVerificationModel();
 
-// The realistic model whose F1 has a nested GRAFCET of `steps` steps in
-// one sequence looping back to its initial step 1, each step with a
-// continuous action `Out<n>`, each transition with the receptivity `Go<n>`
-// (undeclared names: drawing and opening do not need them declared).
+// A nested GRAFCET of `steps` steps in one sequence that loops back to step
+// 1 (the initial one): step n with the continuous action "Out<n>", after it
+// transition n with the receptivity "Go<n>". A tall drawing for the page
+// breaking of the exports.
+core::Grafcet loopedSequence(int steps);
+
+// The realistic model whose F1 (a macro-step) has loopedSequence(steps)
+// (its Out<n> and Go<n> undeclared: drawing and opening do not need them).
 core::Model longGrafcetModel(int steps);
 
 // Applies `count` random operations (valid and invalid ones: the model must
