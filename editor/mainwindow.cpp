@@ -29,6 +29,7 @@
 #include "editor/recoveryprompt.h"
 #include "editor/selection.h"
 #include "editor/settings.h"
+#include "editor/simulation/grafcetsimulationmarks.h"
 #include "editor/simulation/simulationchartmarks.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
@@ -649,6 +650,7 @@ bool MainWindow::openNestedGrafcet(const QString& stepId)
     GrafcetView* view = grafcetView(stepId);
     if (!view) {
         auto* scene = new GrafcetScene(m_document, stepId);
+        new GrafcetSimulationMarks(m_session, scene, scene); // marked at once when opened during a simulation
         view = new GrafcetView(scene);
         scene->setParent(view);
         new GrafcetActions(*m_document, *view);

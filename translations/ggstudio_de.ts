@@ -2185,6 +2185,25 @@ S, R: auf TRUE oder FALSE setzen
     </message>
 </context>
 <context>
+    <name>editor::GrafcetSimulationMarks</name>
+    <message>
+        <source>%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation</source>
+        <translation>%1 ist aktiv: sein GRAFCET läuft. Unstable: der letzte Zyklus endete ohne stabile Situation</translation>
+    </message>
+    <message>
+        <source>%1 is active: its GRAFCET runs (steps %2)</source>
+        <translation>%1 ist aktiv: sein GRAFCET läuft (Schritte %2)</translation>
+    </message>
+    <message>
+        <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
+        <translation>%1 wurde gerade aktiviert: sein GRAFCET beginnt im nächsten Zyklus mit seinen Anfangsschritten</translation>
+    </message>
+    <message>
+        <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
+        <translation>%1 ist nicht aktiv: sein GRAFCET wird grau gezeigt, so wie er verlassen wurde</translation>
+    </message>
+</context>
+<context>
     <name>editor::GrafcetStepDock</name>
     <message>
         <source>Nested Step</source>
@@ -3253,6 +3272,11 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
         <translation>Abspielen von %1: angehalten bei Zyklus %2 von %3. %4 spielt einen Zyklus, Ausführen den Rest.</translation>
     </message>
+    <message>
+        <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
+        <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
+        <translation>Unstable: der GRAFCET von %1 hat in diesem Zyklus keine stabile Situation erreicht; seine letzte Entwicklung hat noch geschaltet.</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -3511,6 +3535,11 @@ Einschließender Schritt: Seine Transitionen schalten unabhängig davon, was der
             <numerusform>Hat einen eingebetteten GRAFCET (%n Schritt)</numerusform>
             <numerusform>Hat einen eingebetteten GRAFCET (%n Schritte)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Its GRAFCET runs: steps %1 active</source>
+        <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
+        <translation>Sein GRAFCET läuft: Schritte %1 aktiv</translation>
     </message>
 </context>
 <context>

@@ -2185,6 +2185,25 @@ S, R: ponerla a TRUE o FALSE
     </message>
 </context>
 <context>
+    <name>editor::GrafcetSimulationMarks</name>
+    <message>
+        <source>%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation</source>
+        <translation>%1 está activa: su GRAFCET evoluciona. Unstable: el último ciclo terminó sin una situación estable</translation>
+    </message>
+    <message>
+        <source>%1 is active: its GRAFCET runs (steps %2)</source>
+        <translation>%1 está activa: su GRAFCET evoluciona (etapas %2)</translation>
+    </message>
+    <message>
+        <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
+        <translation>%1 acaba de activarse: su GRAFCET empieza en sus etapas iniciales en el próximo ciclo</translation>
+    </message>
+    <message>
+        <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
+        <translation>%1 no está activa: su GRAFCET se muestra en gris, tal como quedó</translation>
+    </message>
+</context>
+<context>
     <name>editor::GrafcetStepDock</name>
     <message>
         <source>Nested Step</source>
@@ -3253,6 +3272,11 @@ Ctrl+Espacio completa un nombre.</translation>
         <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
         <translation>Reproducción de %1: en pausa en el ciclo %2 de %3. Pulse %4 para avanzar un ciclo, o Ejecutar para reproducir el resto.</translation>
     </message>
+    <message>
+        <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
+        <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
+        <translation>Unstable: el GRAFCET de %1 no encontró una situación estable en este ciclo; su última evolución aún franqueó una transición.</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -3511,6 +3535,11 @@ Etapa encapsulante: sus transiciones se franquean haga lo que haga el comportami
             <numerusform>Tiene un GRAFCET anidado (%n etapa)</numerusform>
             <numerusform>Tiene un GRAFCET anidado (%n etapas)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Its GRAFCET runs: steps %1 active</source>
+        <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
+        <translation>Su GRAFCET evoluciona: etapas %1 activas</translation>
     </message>
 </context>
 <context>

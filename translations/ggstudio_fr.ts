@@ -2185,6 +2185,25 @@ S, R&#xa0;: la mettre à TRUE ou à FALSE
     </message>
 </context>
 <context>
+    <name>editor::GrafcetSimulationMarks</name>
+    <message>
+        <source>%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation</source>
+        <translation>%1 est active&#xa0;: son GRAFCET évolue. Unstable&#xa0;: le dernier cycle s&apos;est terminé sans situation stable</translation>
+    </message>
+    <message>
+        <source>%1 is active: its GRAFCET runs (steps %2)</source>
+        <translation>%1 est active&#xa0;: son GRAFCET évolue (étapes %2)</translation>
+    </message>
+    <message>
+        <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
+        <translation>%1 vient d&apos;être activée&#xa0;: son GRAFCET part de ses étapes initiales au prochain cycle</translation>
+    </message>
+    <message>
+        <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
+        <translation>%1 n&apos;est pas active&#xa0;: son GRAFCET est grisé, tel qu&apos;il a été laissé</translation>
+    </message>
+</context>
+<context>
     <name>editor::GrafcetStepDock</name>
     <message>
         <source>Nested Step</source>
@@ -3253,6 +3272,11 @@ Ctrl+Espace complète un nom.</translation>
         <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
         <translation>Relecture de %1&#xa0;: en pause au cycle %2 sur %3. Appuyez sur %4 pour avancer d&apos;un cycle, ou sur Exécuter pour jouer la suite.</translation>
     </message>
+    <message>
+        <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
+        <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
+        <translation>Unstable&#xa0;: le GRAFCET de %1 n&apos;a trouvé aucune situation stable dans ce cycle&#xa0;; sa dernière évolution a encore franchi une transition.</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -3511,6 +3535,11 @@ Macro-étape&#xa0;: ses transitions attendent que le comportement imbriqué soit
             <numerusform>A un GRAFCET imbriqué (%n étape)</numerusform>
             <numerusform>A un GRAFCET imbriqué (%n étapes)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Its GRAFCET runs: steps %1 active</source>
+        <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
+        <translation>Son GRAFCET évolue&#xa0;: étapes %1 actives</translation>
     </message>
 </context>
 <context>

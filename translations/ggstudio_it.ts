@@ -2185,6 +2185,25 @@ S, R: impostarla a TRUE o FALSE
     </message>
 </context>
 <context>
+    <name>editor::GrafcetSimulationMarks</name>
+    <message>
+        <source>%1 is active: its GRAFCET runs. Unstable: the last scan ended without a stable situation</source>
+        <translation>%1 è attiva: il suo GRAFCET evolve. Unstable: l&apos;ultimo ciclo è finito senza una situazione stabile</translation>
+    </message>
+    <message>
+        <source>%1 is active: its GRAFCET runs (steps %2)</source>
+        <translation>%1 è attiva: il suo GRAFCET evolve (tappe %2)</translation>
+    </message>
+    <message>
+        <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
+        <translation>%1 è appena stata attivata: il suo GRAFCET parte dalle sue tappe iniziali al prossimo ciclo</translation>
+    </message>
+    <message>
+        <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
+        <translation>%1 non è attiva: il suo GRAFCET è mostrato in grigio, come è stato lasciato</translation>
+    </message>
+</context>
+<context>
     <name>editor::GrafcetStepDock</name>
     <message>
         <source>Nested Step</source>
@@ -3253,6 +3272,11 @@ Ctrl+Spazio completa un nome.</translation>
         <extracomment>%1: the scenario file; %2 of %3: the scan reached and the scenario&apos;s last scan; %4: a key (F10)</extracomment>
         <translation>Riproduzione di %1: in pausa al ciclo %2 di %3. Premi %4 per avanzare di un ciclo, o Esegui per riprodurre il resto.</translation>
     </message>
+    <message>
+        <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
+        <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
+        <translation>Unstable: il GRAFCET di %1 non ha trovato una situazione stabile in questo ciclo; la sua ultima evoluzione ha ancora superato una transizione.</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -3511,6 +3535,11 @@ Tappa incapsulante: le sue transizioni scattano qualunque cosa stia facendo il c
             <numerusform>Ha un GRAFCET annidato (%n tappa)</numerusform>
             <numerusform>Ha un GRAFCET annidato (%n tappe)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Its GRAFCET runs: steps %1 active</source>
+        <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
+        <translation>Il suo GRAFCET evolve: tappe %1 attive</translation>
     </message>
 </context>
 <context>

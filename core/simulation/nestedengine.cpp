@@ -16,8 +16,13 @@ NestedEngine::NestedEngine(const NestedGrafcet& grafcet, const std::function<int
     , m_targetTypes(typeOf)
     , m_untilStable(grafcet.rule == EvolutionRule::UntilStable)
 {
-    for (const NestedStep& step : grafcet.steps)
+    std::size_t continuous = 0;
+    for (const NestedStep& step : grafcet.steps) {
         m_stepNumbers.push_back(step.number);
+        m_continuousStart.push_back(continuous);
+        continuous += step.continuous.size();
+    }
+    m_emitting.assign(continuous, 0);
     for (const ContinuousOutput& output : grafcet.outputs) {
         if (output.isComplete) {
             m_outputOf.push_back(-1);
@@ -35,8 +40,10 @@ void NestedEngine::reset()
     m_x.assign(m_stepNumbers.size(), 0);
     m_timers.assign(m_grafcet->timers.size(), Timer{});
     m_outputs.assign(m_outputNames.size(), 0);
+    std::fill(m_emitting.begin(), m_emitting.end(), 0);
     m_complete = false;
     m_unstable = false;
+    m_fired.clear();
 }
 
 int NestedEngine::slot(std::string_view name) const
@@ -63,6 +70,19 @@ bool NestedEngine::active(int stepNumber) const
 {
     const int index = stepIndex(stepNumber);
     return index >= 0 && m_x[static_cast<std::size_t>(index)] != 0;
+}
+
+bool NestedEngine::emitting(int stepNumber, int actionIndex) const
+{
+    const int index = stepIndex(stepNumber);
+    if (index < 0)
+        return false;
+    const std::vector<NestedAction>& continuous = m_grafcet->steps[static_cast<std::size_t>(index)].continuous;
+    for (std::size_t i = 0; i < continuous.size(); ++i) {
+        if (continuous[i].index == actionIndex)
+            return m_emitting[m_continuousStart[static_cast<std::size_t>(index)] + i] != 0;
+    }
+    return false;
 }
 
 std::vector<int> NestedEngine::activeSteps() const
@@ -211,6 +231,10 @@ bool NestedEngine::evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals
     }
     if (!fired)
         return false;
+    for (std::size_t t = 0; t < transitions.size(); ++t) {
+        if (m_fires[t] && std::find(m_fired.begin(), m_fired.end(), transitions[t].number) == m_fired.end())
+            m_fired.push_back(transitions[t].number);
+    }
     m_left.assign(m_x.size(), 0);
     m_entered.assign(m_x.size(), 0);
     std::vector<char> deactivated(m_x.size(), 0), activated(m_x.size(), 0);
@@ -250,11 +274,16 @@ void NestedEngine::computeOutputs(const NestedGlobals& globals)
         const ContinuousOutput& output = m_grafcet->outputs[o];
         bool value = false;
         for (const ContinuousOutput::Driver& driver : output.drivers) {
-            if (value || !active(driver.step))
-                continue;
-            const NestedStep& step = m_grafcet->steps[static_cast<std::size_t>(stepIndex(driver.step))];
-            const cond::Expression& condition = step.continuous[static_cast<std::size_t>(driver.action)].parsed.action.condition;
-            value = condition.empty() || cond::isTrue(evaluate(condition, nullptr, globals, false));
+            // Every driver, not only up to the first that holds: each action's own state is shown.
+            const auto index = static_cast<std::size_t>(stepIndex(driver.step));
+            const auto action = static_cast<std::size_t>(driver.action);
+            bool on = m_x[index] != 0;
+            if (on) {
+                const cond::Expression& condition = m_grafcet->steps[index].continuous[action].parsed.action.condition;
+                on = condition.empty() || cond::isTrue(evaluate(condition, nullptr, globals, false));
+            }
+            m_emitting[m_continuousStart[index] + action] = on;
+            value = value || on;
         }
         if (m_outputOf[o] < 0)
             complete = value;
@@ -267,6 +296,7 @@ void NestedEngine::computeOutputs(const NestedGlobals& globals)
 
 void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& globals)
 {
+    m_fired.clear();
     if (initialization) {
         for (std::size_t i = 0; i < m_x.size(); ++i)
             m_x[i] = m_grafcet->steps[i].initial;
@@ -287,8 +317,10 @@ void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& 
             fired = evolve(evolutions == 0, nowMs, globals);
             ++evolutions;
         } while (m_untilStable && fired && evolutions < m_grafcet->maxEvolutions);
-        if (m_untilStable)
+        if (m_untilStable) {
             m_unstable = fired;
+            std::sort(m_fired.begin(), m_fired.end()); // each evolution added its own in number order
+        }
     }
     computeOutputs(globals);
 }

@@ -88,6 +88,16 @@ public:
     const std::vector<std::string>& outputNames() const { return m_outputNames; }
     const std::vector<int>& outputSlots() const { return m_outputSlots; }
     bool output(std::size_t index) const { return m_outputs[index] != 0; }
+    // Whether the continuous action `actionIndex` (its index in the step's
+    // list of actions, NestedAction::index) of step `stepNumber` emitted its
+    // output in the last call: the step is active in the situation the call
+    // ended with and the action's condition held there. FALSE for any other
+    // action, an unusable one, or an unknown step.
+    bool emitting(int stepNumber, int actionIndex) const;
+    // The transitions that fired in the last call, in number order: under
+    // *until stable* every one that fired in any of its evolutions. Empty
+    // after reset() and after an Initialization call (nothing evolves).
+    const std::vector<int>& firedTransitions() const { return m_fired; }
     std::vector<NestedTimerState> timers() const;
     const NestedGrafcet& grafcet() const { return *m_grafcet; }
 
@@ -142,6 +152,11 @@ private:
     std::vector<char> m_outputs;
     bool m_complete = false;
     bool m_unstable = false;
+    std::vector<int> m_fired;             // transition numbers, see firedTransitions()
+    // By continuous action: m_emitting[m_continuousStart[step index] + i] for
+    // NestedStep::continuous[i].
+    std::vector<std::size_t> m_continuousStart;
+    std::vector<char> m_emitting;
     // Scratch of one evolution.
     std::vector<char> m_fires, m_left, m_entered;
 };

@@ -231,6 +231,7 @@ struct Simulator::Impl {
     std::vector<char> completeOutput;
     std::int64_t scanCount = 0;
     const GemmaTransition* lastFired = nullptr;
+    int calledNested = -1; // the nested index whose FB the last scan called, -1 for none
 
     // Nested GRAFCETs, by nested index (empty for a skeleton FB), and the
     // edge memories by slot.
@@ -728,6 +729,7 @@ void Simulator::Impl::reset()
         previous[slot] = variableKinds[slot] != Kind::Real && values[slot].i != 0;
     scanCount = 0;
     lastFired = nullptr;
+    calledNested = -1;
     trace.clear();
 }
 
@@ -787,6 +789,7 @@ void Simulator::Impl::scan(ScanRecord* record)
         collectChanges(record);
     ++scanCount;
     lastFired = nullptr;
+    calledNested = -1;
     std::vector<Cell> outputsBefore;
     if (record) {
         for (int slot : compiled->outputSlots)
@@ -800,6 +803,7 @@ void Simulator::Impl::scan(ScanRecord* record)
         bool complete = false;
         if (step.nestedIndex >= 0) {
             const auto nested = static_cast<std::size_t>(step.nestedIndex);
+            calledNested = step.nestedIndex;
             if (entry) {
                 // IF Entry THEN S(Initialization := Entry); Entry := FALSE; tokens := FALSE; END_IF;
                 callFunctionBlock(step, true);
@@ -1192,6 +1196,21 @@ bool Simulator::unstable(std::string_view stepId) const
 {
     const NestedEngine* engine = grafcetEngine(stepId);
     return engine && engine->unstable();
+}
+
+bool Simulator::nestedCalled(std::string_view stepId) const
+{
+    const int index = m_impl->stepIndexOfNested(stepId);
+    return index >= 0 && index == m_impl->calledNested;
+}
+
+std::vector<int> Simulator::firedNestedTransitions(std::string_view stepId) const
+{
+    const int index = m_impl->stepIndexOfNested(stepId);
+    if (index < 0 || index != m_impl->calledNested)
+        return {};
+    const std::optional<NestedEngine>& engine = m_impl->engines[static_cast<std::size_t>(index)];
+    return engine ? engine->firedTransitions() : std::vector<int>{};
 }
 
 std::vector<NestedTimerState> Simulator::nestedTimers(std::string_view stepId) const

@@ -205,6 +205,17 @@ public:
     std::vector<NestedTimerState> nestedTimers(std::string_view stepId) const;
     std::vector<std::string> nestedOutputs(std::string_view stepId) const; // the continuous outputs it drives
     const NestedEngine* grafcetEngine(std::string_view stepId) const;      // nullptr without a GRAFCET
+    // The transitions of the step's GRAFCET that fired in the last scan, in
+    // number order (under *until stable*, in any evolution of it). Empty when
+    // the last scan did not call its function block (the step was not the
+    // active one), before the first scan, and for a step without GRAFCET. A
+    // copy of the simulator keeps them: a scan restored from the history
+    // shows its own.
+    std::vector<int> firedNestedTransitions(std::string_view stepId) const;
+    // Whether the last scan called the step's function block (it was the
+    // active step when the scan began): what unstable() and the engine's
+    // other outputs say is about that scan only then.
+    bool nestedCalled(std::string_view stepId) const;
     // Why each transition of the step's GRAFCET fires or not in the next
     // scan; empty transitions (and stepId) for a step without GRAFCET.
     NestedExplanation explainNested(std::string_view stepId) const;

@@ -19,6 +19,9 @@ example=examples/drilling-cell.ggstudio.json
 # The start scenario replayed up to the first part being drilled.
 "$shot" "$images/simulation.png" 1366 768 "$example" --simulate \
     --replay examples/drilling-cell-start.scenario --replay-scans 1013 --raise simulationDock
+# Scan 1,012 of it with F1's GRAFCET in front (F2's greyed in the tab beside it).
+"$shot" "$images/simulation-grafcet.png" 1366 768 "$example" --grafcet F2 --grafcet F1 --simulate \
+    --replay examples/drilling-cell-start.scenario --replay-scans 1012 --raise simulationDock
 # The nested GRAFCET of F1 in its tab.
 "$shot" "$images/grafcet-tab.png" 1366 768 "$example" --grafcet F1 --select F1
 # Verify and its findings.

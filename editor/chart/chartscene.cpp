@@ -131,12 +131,20 @@ void ChartScene::setTokenMarks(const QString& transitionId, const QList<bool>& t
         item->setTokenMarks(tokens);
 }
 
+void ChartScene::setNestedRunning(const QString& stepId, const std::optional<QString>& activeSteps)
+{
+    if (StepItem* item = stepItem(stepId))
+        item->setNestedRunning(activeSteps);
+}
+
 void ChartScene::clearSimulationMarks()
 {
     setActiveStep(QString());
     setFiredTransition(QString());
-    for (StepItem* item : std::as_const(m_steps))
+    for (StepItem* item : std::as_const(m_steps)) {
         item->setCompleteMark(std::nullopt);
+        item->setNestedRunning(std::nullopt);
+    }
     for (TransitionItem* item : std::as_const(m_transitions))
         item->setTokenMarks({});
 }

@@ -45,7 +45,10 @@ public:
     // the tokens of a transition as dots on its bar (empty: none).
     void setCompleteMark(const QString& stepId, std::optional<bool> complete);
     void setTokenMarks(const QString& transitionId, const QList<bool>& tokens);
-    // Removes every simulation mark: active step, fired transition, badges, dots.
+    // A step whose nested GRAFCET runs: its GRAFCET mark highlighted, its
+    // active steps ("3, 5") in the tooltip; nullopt: not running.
+    void setNestedRunning(const QString& stepId, const std::optional<QString>& activeSteps);
+    // Removes every simulation mark: active step, fired transition, badges, dots, running GRAFCETs.
     void clearSimulationMarks();
 
     // Redraws texts that come from the UI language (the frame titles; the

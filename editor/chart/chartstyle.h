@@ -54,8 +54,21 @@ inline QColor firedColor() { return QColor(0x1e, 0x9e, 0x3e); }
 inline QColor trueMarkColor() { return QColor(0x1e, 0x9e, 0x3e); }
 inline QColor falseMarkColor() { return QColor(0x9a, 0xa1, 0xab); }
 // The GRAFCET mark of a step with a nested GRAFCET: the label colour, so it
-// reads as part of the drawing rather than as a warning.
+// reads as part of the drawing rather than as a warning; in the fired
+// colour while that GRAFCET runs (simulation).
 inline QColor nestedMarkColor() { return labelColor(); }
+inline QColor nestedRunningColor() { return firedColor(); }
+
+// Simulation marks of a nested GRAFCET (editor/simulation/grafcetsimulationmarks.h):
+// an active step is filled as the chart's active state with the IEC 60848
+// token in it; a step active when its GRAFCET stopped running is greyed; a
+// continuous action whose output the last call emitted is lit.
+inline constexpr double kGrafcetTokenRadius = 4.5;
+inline QColor tokenColor() { return inkColor(); }
+inline QColor frozenFillColor() { return QColor(0xe4, 0xe7, 0xeb); }
+inline QColor frozenTokenColor() { return falseMarkColor(); }
+inline QColor litActionFillColor() { return QColor(0xc9, 0xef, 0xd3); }
+inline QColor litActionBorderColor() { return firedColor(); }
 
 // Soft tints after the classic GEMMA sheet: stops blue, operation green,
 // failures red-orange.

@@ -13,6 +13,14 @@
 
 namespace editor {
 
+namespace {
+
+// The ring around the GRAFCET mark while that GRAFCET runs: its gap to the mark and its pen.
+constexpr double kRunningRingGap = 2.5;
+constexpr double kRunningRingWidth = 1.5;
+
+} // namespace
+
 StepItem::StepItem(const Document& document, const core::StepLayout& layout, QGraphicsItem* parent)
     : QGraphicsItem(parent)
     , m_document(document)
@@ -86,6 +94,14 @@ void StepItem::setCompleteMark(std::optional<bool> complete)
     update();
 }
 
+void StepItem::setNestedRunning(const std::optional<QString>& activeSteps)
+{
+    if (m_nestedRunning == activeSteps)
+        return;
+    m_nestedRunning = activeSteps;
+    update();
+}
+
 QString StepItem::toolTipText() const
 {
     const core::Step* found = step();
@@ -109,6 +125,10 @@ QString StepItem::toolTipText() const
     if (m_nestedSteps)
         text
             += QStringLiteral("<br/>") + tr("Has a nested GRAFCET (%n steps)", nullptr, *m_nestedSteps).toHtmlEscaped();
+    if (m_nestedSteps && m_nestedRunning)
+        //: simulation; %1: the active steps of the nested GRAFCET ("3, 5")
+        text += QStringLiteral("<br/><b>")
+              + tr("Its GRAFCET runs: steps %1 active").arg(*m_nestedRunning).toHtmlEscaped() + QStringLiteral("</b>");
     if (!comment.isEmpty())
         text += QStringLiteral("<br/>") + comment.toHtmlEscaped().replace(QLatin1Char('\n'), QStringLiteral("<br/>"));
     return text;
@@ -117,7 +137,8 @@ QString StepItem::toolTipText() const
 QRectF StepItem::boundingRect() const
 {
     const double margin = std::max({ chartstyle::kHaloWidth, chartstyle::kBadgeRadius,
-                              chartstyle::kCompleteBadgeSize / 2, chartstyle::kNestedMarkSize / 2 })
+                              chartstyle::kCompleteBadgeSize / 2,
+                              chartstyle::kNestedMarkSize / 2 + kRunningRingGap + kRunningRingWidth / 2 })
         + 1;
     return m_box.adjusted(-margin, -margin, margin, margin);
 }
@@ -215,8 +236,14 @@ void StepItem::paintNestedMark(QPainter* painter) const
 {
     const double size = chartstyle::kNestedMarkSize;
     const QRectF tab(m_box.left() - size / 2, m_box.top() - size / 2, size, size);
+    if (m_nestedRunning) { // a ring around the tab, within the item's margin
+        painter->setPen(QPen(chartstyle::nestedRunningColor(), kRunningRingWidth));
+        painter->setBrush(Qt::NoBrush);
+        const double gap = kRunningRingGap;
+        painter->drawRoundedRect(tab.adjusted(-gap, -gap, gap, gap), 3 + gap, 3 + gap);
+    }
     painter->setPen(QPen(Qt::white, 1));
-    painter->setBrush(chartstyle::nestedMarkColor());
+    painter->setBrush(m_nestedRunning ? chartstyle::nestedRunningColor() : chartstyle::nestedMarkColor());
     painter->drawRoundedRect(tab, 3, 3);
 
     const double unit = size / 15;

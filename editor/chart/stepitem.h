@@ -59,6 +59,11 @@ public:
     // right); the number of its steps, nullopt for no mark. Read from the
     // model by refresh().
     std::optional<int> nestedMark() const { return m_nestedSteps; }
+    // While that GRAFCET runs (simulation): the mark drawn in the running
+    // colour with a ring, and the tooltip names its active steps ("3, 5");
+    // nullopt otherwise.
+    const std::optional<QString>& nestedRunning() const { return m_nestedRunning; }
+    void setNestedRunning(const std::optional<QString>& activeSteps);
 
     QRectF boundingRect() const override;
     QPainterPath shape() const override;
@@ -84,6 +89,7 @@ private:
     bool m_active = false;
     std::optional<bool> m_complete;
     std::optional<int> m_nestedSteps;
+    std::optional<QString> m_nestedRunning;
 };
 
 } // namespace editor

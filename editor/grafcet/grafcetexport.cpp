@@ -19,11 +19,6 @@ namespace {
 
 constexpr double kMinimumTextPoints = 8; // the labels on paper
 
-QRectF drawingRect(const GrafcetScene& scene)
-{
-    return scene.sceneRect();
-}
-
 // The drawing's part `source` into `target`, on white.
 void render(GrafcetScene& scene, QPainter& painter, const QRectF& target, const QRectF& source)
 {
@@ -40,7 +35,7 @@ void render(GrafcetScene& scene, QPainter& painter, const QRectF& target, const 
 QList<QPair<double, double>> elementExtents(const GrafcetScene& scene)
 {
     QList<QPair<double, double>> extents;
-    const double top = drawingRect(scene).top();
+    const double top = scene.drawingRect().top();
     for (const core::GrafcetStepLayout& step : scene.layout().steps) {
         const QRectF painted = scene.stepItem(step.number)->sceneBoundingRect();
         extents.push_back({painted.top() - top, painted.bottom() - top});
@@ -76,7 +71,7 @@ bool GrafcetExport::write(const QString& path, ChartExport::Format format, QStri
 
 bool GrafcetExport::writeSvg(const QString& path, QString* errorMessage) const
 {
-    const QRectF drawing = drawingRect(m_scene);
+    const QRectF drawing = m_scene.drawingRect();
     return PictureFile::writeSvg(
         path, drawing.size(), m_title, tr("Nested GRAFCET drawn by GG Studio"),
         [&](QPainter& painter) { render(m_scene, painter, QRectF(QPointF(0, 0), drawing.size()), drawing); },
@@ -85,7 +80,7 @@ bool GrafcetExport::writeSvg(const QString& path, QString* errorMessage) const
 
 bool GrafcetExport::writePng(const QString& path, QString* errorMessage, double scale) const
 {
-    const QRectF drawing = drawingRect(m_scene);
+    const QRectF drawing = m_scene.drawingRect();
     return PictureFile::writePng(
         path, drawing.size() * scale,
         [&](QPainter& painter) { render(m_scene, painter, QRectF(QPointF(0, 0), drawing.size() * scale), drawing); },
@@ -141,7 +136,7 @@ GrafcetExport::Pages::Pages(GrafcetScene& scene, const QSizeF& page, double dots
     , m_starts{0}
 {
     const HiddenSelection hidden(m_scene); // the page breaks come from the unselected extents
-    const QRectF drawing = drawingRect(m_scene);
+    const QRectF drawing = m_scene.drawingRect();
     if (drawing.isEmpty() || page.isEmpty())
         return;
     const double fitPage = std::min(page.width() / drawing.width(), page.height() / drawing.height());
@@ -158,7 +153,7 @@ GrafcetExport::Pages::Pages(GrafcetScene& scene, const QSizeF& page, double dots
 QPair<double, double> GrafcetExport::Pages::slice(qsizetype index) const
 {
     const double top = m_starts.value(index);
-    const double bottom = index + 1 < m_starts.size() ? m_starts[index + 1] : drawingRect(m_scene).height();
+    const double bottom = index + 1 < m_starts.size() ? m_starts[index + 1] : m_scene.drawingRect().height();
     return {top, std::max(top, bottom)};
 }
 
@@ -170,7 +165,7 @@ double GrafcetExport::Pages::height(qsizetype index) const
 
 void GrafcetExport::Pages::paint(QPainter& painter, qsizetype index) const
 {
-    const QRectF drawing = drawingRect(m_scene);
+    const QRectF drawing = m_scene.drawingRect();
     if (drawing.isEmpty() || index < 0 || index >= m_starts.size())
         return;
     const auto [top, bottom] = slice(index);

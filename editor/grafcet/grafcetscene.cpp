@@ -46,7 +46,8 @@ void GrafcetScene::rebuild()
     m_transitions.clear();
     const core::Grafcet* grafcet = m_document->model().grafcet(m_stepId.toStdString());
     m_layout = grafcet ? core::layoutGrafcet(*grafcet, &GrafcetScene::textWidth) : core::GrafcetLayout{};
-    addItem(new GrafcetWiringItem(m_layout));
+    m_wiring = new GrafcetWiringItem(m_layout);
+    addItem(m_wiring);
     for (const core::GrafcetStepLayout& step : m_layout.steps) {
         auto* item = new GrafcetStepItem(step);
         addItem(item);
@@ -60,10 +61,15 @@ void GrafcetScene::rebuild()
             m_transitions.insert(transition.number, item);
         }
     }
-    const core::Rect& bounds = m_layout.boundingRect;
-    setSceneRect(bounds.x, bounds.y, std::max(bounds.width, 1.0), std::max(bounds.height, 1.0));
+    setSceneRect(drawingRect());
     m_rebuilding = false;
     emit rebuilt();
+}
+
+QRectF GrafcetScene::drawingRect() const
+{
+    const core::Rect& bounds = m_layout.boundingRect;
+    return QRectF(bounds.x, bounds.y, std::max(bounds.width, 1.0), std::max(bounds.height, 1.0));
 }
 
 } // namespace editor

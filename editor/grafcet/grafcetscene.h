@@ -11,6 +11,7 @@ namespace editor {
 class Document;
 class GrafcetStepItem;
 class GrafcetTransitionItem;
+class GrafcetWiringItem;
 
 // The drawing of the nested GRAFCET of one GEMMA step, as IEC 60848 draws
 // it, from core::layoutGrafcet(): the step boxes with their actions, the
@@ -29,6 +30,10 @@ public:
     const core::GrafcetLayout& layout() const { return m_layout; }
     GrafcetStepItem* stepItem(int number) const { return m_steps.value(number); }
     GrafcetTransitionItem* transitionItem(int number) const { return m_transitions.value(number); }
+    GrafcetWiringItem* wiringItem() const { return m_wiring; }
+    // The drawing's rectangle: the layout's bounding rectangle (the scene
+    // rectangle, unless an overlay such as the simulation marks widens it).
+    QRectF drawingRect() const;
 
     // The width of `text` in the drawing's font, in scene units.
     static double textWidth(std::string_view text);
@@ -38,7 +43,8 @@ public:
     bool isRebuilding() const { return m_rebuilding; }
 
 signals:
-    // The items were made again from the model (after a change of the GRAFCET).
+    // The items were made again from the model (after a change of the
+    // GRAFCET): every item pointer taken before is gone.
     void rebuilt();
 
 private:
@@ -49,6 +55,7 @@ private:
     core::GrafcetLayout m_layout;
     QHash<int, GrafcetStepItem*> m_steps;
     QHash<int, GrafcetTransitionItem*> m_transitions;
+    GrafcetWiringItem* m_wiring = nullptr;
     bool m_rebuilding = false;
 };
 

@@ -29,6 +29,34 @@ GrafcetStepItem::GrafcetStepItem(const core::GrafcetStepLayout& layout, QGraphic
     m_bounds.adjust(-2, -2, 2, 2);
 }
 
+void GrafcetStepItem::setSimulationMark(SimulationMark mark)
+{
+    if (m_mark == mark)
+        return;
+    m_mark = mark;
+    update();
+}
+
+void GrafcetStepItem::setLitActions(const QList<int>& actions)
+{
+    if (m_litActions == actions)
+        return;
+    m_litActions = actions;
+    update();
+}
+
+// Centred between the number's baseline and the box's (inner) bottom: a
+// little smaller in the inner square of an initial step.
+QRectF GrafcetStepItem::tokenRect() const
+{
+    const QRectF box = toQRectF(m_layout.box);
+    const double inset = m_layout.initial ? chartstyle::kInitialInset : 0;
+    const double r = chartstyle::kGrafcetTokenRadius - inset / 8;
+    const double baseline = box.center().y() + chartstyle::kFontSize * 0.36;
+    const QPointF centre(box.center().x(), (baseline + box.bottom() - inset) / 2);
+    return QRectF(centre.x() - r, centre.y() - r, 2 * r, 2 * r);
+}
+
 QRectF GrafcetStepItem::boundingRect() const
 {
     // The halo reaches beyond the drawing only while selected: pictures,
@@ -56,7 +84,9 @@ void GrafcetStepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* o
         painter->drawRoundedRect(box.adjusted(-gap, -gap, gap, gap), gap, gap);
     }
     painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kStrokeWidth));
-    painter->setBrush(chartstyle::stepFillColor());
+    painter->setBrush(m_mark == SimulationMark::Active   ? chartstyle::activeFillColor()
+                      : m_mark == SimulationMark::Frozen ? chartstyle::frozenFillColor()
+                                                         : chartstyle::stepFillColor());
     painter->drawRect(box);
     if (m_layout.initial) {
         const double inset = chartstyle::kInitialInset;
@@ -64,6 +94,11 @@ void GrafcetStepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* o
         painter->drawRect(box.adjusted(inset, inset, -inset, -inset));
     }
     chartstyle::drawCentredText(painter, box, QString::number(m_layout.number));
+    if (m_mark != SimulationMark::None) {
+        painter->setPen(Qt::NoPen);
+        painter->setBrush(m_mark == SimulationMark::Active ? chartstyle::tokenColor() : chartstyle::frozenTokenColor());
+        painter->drawEllipse(tokenRect());
+    }
     paintActions(painter);
 }
 
@@ -77,8 +112,14 @@ void GrafcetStepItem::paintActions(QPainter* painter) const
         link << toQPointF(point);
     painter->drawPolyline(link);
     for (const core::GrafcetActionLayout& action : m_layout.actions) {
+        const bool lit = m_litActions.contains(action.index);
+        if (lit) { // the box lit, its outline drawn over by the plain one's
+            painter->setPen(QPen(chartstyle::litActionBorderColor(), 2 * chartstyle::kRouteWidth));
+            painter->setBrush(chartstyle::litActionFillColor());
+            painter->drawRect(toQRectF(action.box));
+        }
         painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kRouteWidth));
-        painter->setBrush(chartstyle::stepFillColor());
+        painter->setBrush(lit ? QBrush(Qt::NoBrush) : QBrush(chartstyle::stepFillColor()));
         painter->drawRect(toQRectF(action.box));
         if (!action.qualifier.empty()) {
             painter->drawRect(toQRectF(action.qualifierCell));

@@ -3,6 +3,7 @@
 #include "core/layout/grafcetlayout.h"
 
 #include <QGraphicsItem>
+#include <QList>
 
 namespace editor {
 
@@ -20,6 +21,19 @@ public:
     int number() const { return m_layout.number; }
     const core::GrafcetStepLayout& layout() const { return m_layout; }
 
+    // Simulation (set by GrafcetSimulationMarks): Active, filled with the
+    // IEC 60848 token in it, while its GRAFCET runs; Frozen, greyed with a
+    // grey token, for a step its GRAFCET was left in.
+    enum class SimulationMark { None, Active, Frozen };
+    SimulationMark simulationMark() const { return m_mark; }
+    void setSimulationMark(SimulationMark mark);
+    // Where the token is drawn, under the number (scene coordinates).
+    QRectF tokenRect() const;
+    // The continuous actions drawn lit (their output emitted in the last
+    // call), by index in the step's list of actions; empty for none.
+    const QList<int>& litActions() const { return m_litActions; }
+    void setLitActions(const QList<int>& actions);
+
     QRectF boundingRect() const override;
     QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -29,6 +43,8 @@ private:
 
     core::GrafcetStepLayout m_layout;
     QRectF m_bounds;
+    SimulationMark m_mark = SimulationMark::None;
+    QList<int> m_litActions;
 };
 
 } // namespace editor

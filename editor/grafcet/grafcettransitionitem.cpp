@@ -34,6 +34,14 @@ QString GrafcetTransitionItem::drawnReceptivity(const QString& receptivity)
     return text;
 }
 
+void GrafcetTransitionItem::setFired(bool fired)
+{
+    if (m_fired == fired)
+        return;
+    m_fired = fired;
+    update();
+}
+
 QRectF GrafcetTransitionItem::boundingRect() const
 {
     // The halo reaches beyond the drawing only while selected: pictures,
@@ -62,7 +70,8 @@ void GrafcetTransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsI
         if (!m_label.isEmpty())
             painter->drawRoundedRect(toQRectF(m_layout.labelRect).adjusted(-2, -1, 2, 1), 3, 3);
     }
-    painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kBarWidth, Qt::SolidLine, Qt::FlatCap));
+    painter->setPen(QPen(m_fired ? chartstyle::firedColor() : chartstyle::inkColor(), chartstyle::kBarWidth,
+                         Qt::SolidLine, Qt::FlatCap));
     painter->drawLine(QLineF(bar.x() - half, bar.y(), bar.x() + half, bar.y()));
     painter->setPen(chartstyle::labelColor());
     chartstyle::drawText(painter, toQRectF(m_layout.labelRect), Qt::AlignLeft | Qt::AlignVCenter, m_label);

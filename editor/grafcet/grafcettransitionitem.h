@@ -23,6 +23,12 @@ public:
     // "RE a" and "FE a" as ↑a and ↓a; the rest as written.
     static QString drawnReceptivity(const QString& receptivity);
 
+    // Simulation (set by GrafcetSimulationMarks): fired in the last scan,
+    // its bar drawn in the chart's fired colour.
+    bool isFired() const { return m_fired; }
+    void setFired(bool fired);
+    const core::GrafcetTransitionLayout& layout() const { return m_layout; }
+
     QRectF boundingRect() const override;
     QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -31,6 +37,7 @@ private:
     core::GrafcetTransitionLayout m_layout;
     QString m_label;
     QRectF m_bounds;
+    bool m_fired = false;
 };
 
 } // namespace editor

@@ -28,6 +28,13 @@ GrafcetView::GrafcetView(GrafcetScene* scene, QWidget* parent)
     setBackgroundBrush(Qt::white);
     setDragMode(QGraphicsView::ScrollHandDrag);
     setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+    connect(verticalScrollBar(), &QScrollBar::valueChanged, this,
+            [this](int value) { m_atTop = value <= verticalScrollBar()->minimum(); });
+    // Runs after the view's own handler: the scroll bar's range is the new one.
+    connect(scene, &QGraphicsScene::sceneRectChanged, this, [this] {
+        if (m_atTop)
+            verticalScrollBar()->setValue(verticalScrollBar()->minimum());
+    });
 }
 
 double GrafcetView::zoom() const

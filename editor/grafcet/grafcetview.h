@@ -26,6 +26,9 @@ protected:
 private:
     GrafcetScene* m_scene;
     bool m_shown = false;
+    // Scrolled to the top: stays there when the scene grows upwards (the
+    // simulation's caption above the drawing).
+    bool m_atTop = true;
 };
 
 } // namespace editor

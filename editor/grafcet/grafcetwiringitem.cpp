@@ -33,23 +33,38 @@ QRectF GrafcetWiringItem::boundingRect() const
     return m_bounds;
 }
 
+void GrafcetWiringItem::setFiredTransitions(const QList<int>& transitions)
+{
+    if (m_fired == transitions)
+        return;
+    m_fired = transitions;
+    update();
+}
+
 void GrafcetWiringItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
     painter->setRenderHint(QPainter::Antialiasing);
     for (const core::GrafcetLinkLayout& link : m_links)
-        paintLink(painter, link);
+        paintLink(painter, link, false);
     for (const core::GrafcetBranchLineLayout& line : m_lines)
         paintLine(painter, line);
+    // Over the lines: a fired divergence's route shows along its line.
+    for (const core::GrafcetLinkLayout& link : m_links) {
+        if (m_fired.contains(link.transition))
+            paintLink(painter, link, true);
+    }
 }
 
-void GrafcetWiringItem::paintLink(QPainter* painter, const core::GrafcetLinkLayout& link) const
+void GrafcetWiringItem::paintLink(QPainter* painter, const core::GrafcetLinkLayout& link, bool fired) const
 {
     QPolygonF route;
     for (const core::Point& point : link.route)
         route << toQPointF(point);
     if (route.size() < 2)
         return;
-    const QPen pen(chartstyle::inkColor(), chartstyle::kRouteWidth, Qt::SolidLine, Qt::FlatCap, Qt::MiterJoin);
+    const QColor colour = fired ? chartstyle::firedColor() : chartstyle::inkColor();
+    const QPen pen(colour, fired ? chartstyle::kFiredWidth : chartstyle::kRouteWidth, Qt::SolidLine, Qt::FlatCap,
+                   Qt::MiterJoin);
     painter->setPen(pen);
     painter->setBrush(Qt::NoBrush);
     const bool arrow = link.ending != core::GrafcetLinkLayout::Ending::Plain;
@@ -57,9 +72,12 @@ void GrafcetWiringItem::paintLink(QPainter* painter, const core::GrafcetLinkLayo
         route.last().ry() -= chartstyle::kArrowLength;
     painter->drawPolyline(route);
     if (arrow) {
-        painter->setBrush(chartstyle::inkColor());
+        painter->setPen(QPen(colour, chartstyle::kRouteWidth));
+        painter->setBrush(colour);
         painter->drawPolygon(arrowDownAt(toQPointF(link.route.back())));
     }
+    if (fired)
+        return; // the texts are drawn once, in ink
     painter->setPen(chartstyle::labelColor());
     if (link.ending == core::GrafcetLinkLayout::Ending::Jump)
         chartstyle::drawCentredText(painter, toQRectF(link.labelRect), QString::number(link.step));

@@ -1,7 +1,9 @@
 #include "editor/simulation/simulationchartmarks.h"
 
 #include "editor/chart/chartscene.h"
+#include "editor/simulation/grafcetsimulationmarks.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/simulation/simulationtext.h"
 
 #include <QHash>
 
@@ -27,8 +29,13 @@ void SimulationChartMarks::update()
     }
     m_scene->setActiveStep(QString::fromStdString(simulator->activeStepId()));
     m_scene->setFiredTransition(m_session->lastFiredTransition());
-    for (const std::string& step : simulator->nestedSteps())
-        m_scene->setCompleteMark(QString::fromStdString(step), simulator->complete(step));
+    for (const std::string& step : simulator->nestedSteps()) {
+        const QString id = QString::fromStdString(step);
+        m_scene->setCompleteMark(id, simulator->complete(step));
+        m_scene->setNestedRunning(id, grafcetRuns(*simulator, step)
+                                          ? std::optional<QString>(stepNumbersText(simulator->activeNestedSteps(step)))
+                                          : std::nullopt);
+    }
 
     // Tokens grouped by transition, in tokenNames() order.
     QHash<QString, QList<bool>> tokens;

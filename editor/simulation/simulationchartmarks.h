@@ -8,8 +8,9 @@ class ChartScene;
 class SimulationSession;
 
 // Shows the simulation on the chart: the active step filled, the transition
-// that fired last in green, the Complete of each nested step as a badge and
-// each token as a dot on its transition's bar. Updated once per batch of
+// that fired last in green, the Complete of each nested step as a badge,
+// each token as a dot on its transition's bar, and the GRAFCET mark of the
+// step whose nested GRAFCET runs highlighted (grafcetRuns()). Updated once per batch of
 // scans; the marks go when the simulation mode ends.
 class SimulationChartMarks : public QObject {
     Q_OBJECT

@@ -3,6 +3,7 @@
 #include "editor/docks/elementlabels.h"
 #include "editor/document.h"
 #include "editor/secondarytext.h"
+#include "editor/simulation/lampindicator.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/simulation/valuecolours.h"
 #include "editor/simulation/simulationtext.h"
@@ -148,14 +149,6 @@ QColor nestedStatusColor(core::NestedTransitionStatus status)
     return {};
 }
 
-QString stepNumbersText(const std::vector<int>& numbers)
-{
-    QStringList list;
-    for (int number : numbers)
-        list << QString::number(number);
-    return list.join(QStringLiteral(", "));
-}
-
 QColor statusColor(core::TransitionStatus status)
 {
     switch (status) {
@@ -257,6 +250,7 @@ void SimulationDock::retranslate()
     if (m_session->isActive()) {
         buildInputRows();
         refreshStatus();
+        refreshUnstable();
         m_shownExplanation.clear();
         refreshExplanation();
     }
@@ -414,6 +408,13 @@ QWidget* SimulationDock::createControls()
     speedRow->addStretch();
     speedRow->addWidget(m_statusLabel);
     layout->addLayout(speedRow);
+    m_unstableLabel = new QLabel(controls);
+    m_unstableLabel->setObjectName(QStringLiteral("unstableLabel"));
+    m_unstableLabel->setWordWrap(true);
+    m_unstableLabel->setContentsMargins(4, 2, 4, 2);
+    m_unstableLabel->setStyleSheet(QStringLiteral("QLabel { color: #b3261e; font-weight: bold; }"));
+    m_unstableLabel->hide();
+    layout->addWidget(m_unstableLabel);
     return controls;
 }
 
@@ -600,14 +601,24 @@ void SimulationDock::addValueRow(int index, int row)
     auto* label = new QLabel(output.name, m_inputsWidget);
     if (const core::Variable* variable = m_document->model().variable(output.name.toStdString()))
         label->setToolTip(QString::fromStdString(variable->comment));
+    const QString toolTip = tr("Written by the program: %1 is not an input").arg(output.name);
     output.shown = new QLabel(m_inputsWidget);
     output.shown->setObjectName(QStringLiteral("shown_") + output.name);
-    output.shown->setAlignment(Qt::AlignCenter);
-    output.shown->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("FALSE")) + 18);
-    output.shown->setToolTip(tr("Written by the program: %1 is not an input").arg(output.name));
+    output.shown->setToolTip(toolTip);
     auto* cell = new QWidget(m_inputsWidget);
     auto* layout = new QHBoxLayout(cell);
     layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(6);
+    // A BOOL as a signal lamp with its value beside it: plain text, not a
+    // button's look, since it cannot be switched.
+    if (simulator->variableType(static_cast<std::size_t>(index)) == core::IecType::Bool) {
+        output.lamp = new LampIndicator(cell);
+        output.lamp->setObjectName(QStringLiteral("lamp_") + output.name);
+        output.lamp->setToolTip(toolTip);
+        // In the column of the toggles' text: the lamp where a button's edge is.
+        layout->addSpacing(4);
+        layout->addWidget(output.lamp);
+    }
     layout->addWidget(output.shown);
     layout->addStretch();
     m_inputsLayout->addWidget(label, row, 0);
@@ -767,6 +778,7 @@ void SimulationDock::onActiveChanged(bool active)
     m_traceModel->reload();
     onRunningChanged(m_session->isRunning());
     onStepped();
+    refreshUnstable(); // hidden when the simulation ends
     refreshReplay();
 }
 
@@ -837,6 +849,7 @@ void SimulationDock::onStepped()
         refreshFailureList();
     syncCompletes();
     syncOutputs();
+    refreshUnstable();
     refreshExplanation();
 
     // Follow the new scans only when the user is looking at the latest ones.
@@ -864,6 +877,33 @@ void SimulationDock::refreshStatus()
         m_statusLabel->setText(tr("Scan %1 · %2 s").arg(scan, time));
 }
 
+// The GRAFCETs whose call in the scan shown ended still evolving (until
+// stable, spec grafcet-layer.md §4.2): in red under the controls, whatever
+// tab is in front.
+void SimulationDock::refreshUnstable()
+{
+    const core::Simulator* simulator = m_session->simulator();
+    QStringList steps;
+    if (simulator) {
+        for (const std::string& step : simulator->nestedSteps()) {
+            if (simulator->nestedCalled(step) && simulator->unstable(step))
+                steps << QString::fromStdString(step);
+        }
+    }
+    if (steps.isEmpty()) {
+        m_unstableLabel->hide();
+        m_unstableLabel->clear();
+        return;
+    }
+    //: Unstable is the name of the function block's output (not translated); %1: macro-steps or enclosing steps
+    const QString text = tr("Unstable: the GRAFCET of %1 found no stable situation in this scan; its last "
+                            "evolution still fired.")
+                             .arg(steps.join(QStringLiteral(", ")));
+    if (m_unstableLabel->text() != text)
+        m_unstableLabel->setText(text);
+    m_unstableLabel->show();
+}
+
 void SimulationDock::syncOutputs()
 {
     const core::Simulator* simulator = m_session->simulator();
@@ -875,10 +915,14 @@ void SimulationDock::syncOutputs()
         const core::cond::Value value = simulator->variableValue(static_cast<std::size_t>(row.variable));
         const bool isBool = simulator->variableType(static_cast<std::size_t>(row.variable)) == core::IecType::Bool;
         const QString text = isBool ? boolText(boolOf(value)) : QString::fromStdString(core::cond::formatValue(value));
+        if (row.lamp)
+            row.lamp->setOn(boolOf(value));
         if (row.shown->text() == text)
             continue; // a style sheet costs a restyle: only when the value changes
         row.shown->setText(text);
-        row.shown->setStyleSheet(isBool ? valueStyleSheet("QLabel", boolOf(value)) : QString());
+        if (isBool) // the lamp's colours in text, bold: the value reads without the lamp too
+            row.shown->setStyleSheet(QStringLiteral("QLabel { color: %1; font-weight: bold; }")
+                                         .arg(boolOf(value) ? QStringLiteral("#14632b") : QStringLiteral("#4a525c")));
     }
 }
 

@@ -29,12 +29,15 @@ struct NestedExplanation;
 namespace editor {
 
 class Document;
+class LampIndicator;
 class SimulationSession;
 class TraceTableModel;
 
 // Plays the simulation: run, pause, single scan, reset and speed; the
 // inputs (BOOL variables as toggles with a momentary Press button for push
-// buttons, numbers as spin boxes in their IEC range); Complete of each
+// buttons, numbers as spin boxes in their IEC range) and, read only, what
+// the program writes (BOOLs as lamps); Unstable when a nested GRAFCET finds
+// no stable situation; Complete of each
 // nested step, automatic or manual; why the active step's transitions do or
 // do not fire, and for a step with a nested GRAFCET its state and why its
 // transitions do or do not fire; the trace; recording and replaying scenario files. The
@@ -61,6 +64,9 @@ public:
     QListWidget* failureList() const { return m_failureList; }
     QLabel* replayLabel() const { return m_replayLabel; }
     QLabel* statusLabel() const { return m_statusLabel; }
+    // "Unstable: ..." while a nested GRAFCET's last call found no stable
+    // situation (until stable); hidden otherwise.
+    QLabel* unstableLabel() const { return m_unstableLabel; }
     QToolButton* stepBackButton() const { return m_backButton; }
     QToolButton* stepForwardButton() const { return m_forwardButton; }
 
@@ -89,6 +95,7 @@ private:
         QAbstractButton* press = nullptr;
         QWidget* editor = nullptr;
         QLabel* shown = nullptr; // an output or internal variable: its value, read only
+        LampIndicator* lamp = nullptr; // beside `shown` for a BOOL
     };
     struct CompleteRow {
         QString stepId;
@@ -120,6 +127,7 @@ private:
     void syncOutputs();
     void syncCompletes();
     void refreshStatus();
+    void refreshUnstable();
     void refreshExplanation();
     void addNestedExplanation(const core::NestedEngine& engine, const core::NestedExplanation& nested);
     void refreshReplay();
@@ -146,6 +154,7 @@ private:
     QLabel* m_speedLabel = nullptr;
     QSpinBox* m_speedSpin = nullptr;
     QLabel* m_statusLabel = nullptr;
+    QLabel* m_unstableLabel = nullptr;
     QWidget* m_inputsWidget = nullptr;
     QGridLayout* m_inputsLayout = nullptr;
     QTabWidget* m_tabs = nullptr;

@@ -249,6 +249,14 @@ QString explanationReasonText(const core::ExplanationReason& reason)
     return {};
 }
 
+QString stepNumbersText(const std::vector<int>& numbers)
+{
+    QStringList list;
+    for (int number : numbers)
+        list << QString::number(number);
+    return list.join(QStringLiteral(", "));
+}
+
 QString scenarioFailureText(const core::ScenarioFailure& failure)
 {
     //: a scan number, then what differed

@@ -5,6 +5,8 @@
 
 #include <QString>
 
+#include <vector>
+
 namespace editor {
 
 // What the core says about a simulation, in the UI language. IEC code
@@ -15,6 +17,9 @@ namespace editor {
 // "A1 → F1 fires first"; an unusable condition as the Problems dock words
 // the diagnostic of the same code.
 QString explanationReasonText(const core::ExplanationReason& reason);
+
+// Step numbers of a nested GRAFCET: "3, 5".
+QString stepNumbersText(const std::vector<int>& numbers);
 
 // "scan 3: expected step F1, active step is A1".
 QString scenarioFailureText(const core::ScenarioFailure& failure);

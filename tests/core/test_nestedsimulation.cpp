@@ -324,3 +324,153 @@ TEST_CASE("A recorded session writes Unstable when it changes", "[simulation][ne
     Simulator replay(model);
     CHECK(runScenario(parsed.scenario, replay).passed());
 }
+
+TEST_CASE("The transitions a scan fired in a nested GRAFCET", "[simulation][nested-simulation][nested-fired]")
+{
+    SECTION("one evolution per scan: the transition of that scan, none in a scan that fires none")
+    {
+        Simulator simulator(timedModel());
+        CHECK(simulator.firedNestedTransitions("F1").empty()); // no scan yet
+        CHECK_FALSE(simulator.nestedCalled("F1"));
+        simulator.step(); // the entry scan: Initialization, then an evolution in which RE Start is FALSE
+        CHECK(simulator.nestedCalled("F1"));
+        CHECK(simulator.firedNestedTransitions("F1").empty());
+        REQUIRE(simulator.setVariable("Start", true));
+        simulator.step();
+        CHECK(simulator.firedNestedTransitions("F1") == std::vector<int>{1});
+        CHECK(simulator.grafcetEngine("F1")->firedTransitions() == std::vector<int>{1});
+        simulator.step(); // Start still TRUE: no edge, 5s/X2 not elapsed
+        CHECK(simulator.firedNestedTransitions("F1").empty());
+        CHECK(simulator.firedNestedTransitions("A1").empty()); // no GRAFCET
+        CHECK(simulator.firedNestedTransitions("nowhere").empty());
+        simulator.reset();
+        CHECK(simulator.firedNestedTransitions("F1").empty());
+    }
+    SECTION("transitions that fire together are all kept")
+    {
+        Model model;
+        REQUIRE(model.addVariable(samples::variable("Go", IecType::Bool, VariableKind::Input)));
+        REQUIRE(model.setInitialStep("F1"));
+        REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
+        REQUIRE(model.addGrafcetStep("F1", {2, false, "", {}}));
+        REQUIRE(model.addGrafcetStep("F1", {3, false, "", {}}));
+        REQUIRE(model.addGrafcetStep("F1", {4, false, "", {}}));
+        REQUIRE(model.addGrafcetStep("F1", {5, false, "", {}}));
+        REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2, 3}, "Go"}));
+        REQUIRE(model.addGrafcetTransition("F1", {2, {2}, {4}, "NOT Go"}));
+        REQUIRE(model.addGrafcetTransition("F1", {3, {3}, {5}, "NOT Go"}));
+        Simulator simulator(model);
+        REQUIRE(simulator.setVariable("Go", true));
+        simulator.step();
+        CHECK(simulator.firedNestedTransitions("F1") == std::vector<int>{1});
+        REQUIRE(simulator.setVariable("Go", false));
+        simulator.step();
+        CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{4, 5});
+        CHECK(simulator.firedNestedTransitions("F1") == std::vector<int>{2, 3});
+    }
+    SECTION("until stable: every transition of every evolution of the scan, in number order")
+    {
+        Model model;
+        REQUIRE(model.addVariable(samples::variable("A", IecType::Bool, VariableKind::Input)));
+        REQUIRE(model.setInitialStep("F1"));
+        model.setEvolutionRule(EvolutionRule::UntilStable);
+        REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
+        REQUIRE(model.addGrafcetStep("F1", {2, false, "", {}}));
+        REQUIRE(model.addGrafcetStep("F1", {3, false, "", {}}));
+        // Numbered against the order they fire in: 1 -> 2 is T3, 2 -> 3 is T1.
+        REQUIRE(model.addGrafcetTransition("F1", {3, {1}, {2}, "A"}));
+        REQUIRE(model.addGrafcetTransition("F1", {1, {2}, {3}, "TRUE"}));
+        REQUIRE(model.addGrafcetTransition("F1", {2, {3}, {1}, "NOT A"}));
+        Simulator simulator(model);
+        REQUIRE(simulator.setVariable("A", true));
+        simulator.step(); // 1 -> 2 -> 3 in one call
+        CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{3});
+        CHECK(simulator.firedNestedTransitions("F1") == std::vector<int>{1, 3});
+        simulator.step(); // stable
+        CHECK(simulator.firedNestedTransitions("F1").empty());
+        REQUIRE(simulator.setVariable("A", false));
+        simulator.step(); // 3 -> 1, then A is FALSE: stable
+        CHECK(simulator.firedNestedTransitions("F1") == std::vector<int>{2});
+
+        Model looping(model);
+        REQUIRE(looping.setReceptivity("F1", 2, "TRUE"));
+        Simulator endless(looping);
+        REQUIRE(endless.setVariable("A", true));
+        endless.step(); // four evolutions, every transition fired at least once, each kept once
+        CHECK(endless.unstable("F1"));
+        CHECK(endless.firedNestedTransitions("F1") == std::vector<int>{1, 2, 3});
+    }
+    SECTION("a scan that does not call the function block fired nothing in its GRAFCET")
+    {
+        Simulator simulator(timedModel());
+        simulator.step();
+        REQUIRE(simulator.setVariable("Start", true));
+        REQUIRE(simulator.setVariable("Stop", true));
+        const ScanRecord leaving = simulator.step(); // F1's FB fires T1, then F -> D1 leaves F1
+        CHECK(leaving.fired == "F->D1");
+        CHECK(simulator.nestedCalled("F1"));
+        CHECK(simulator.firedNestedTransitions("F1") == std::vector<int>{1});
+        simulator.step(); // D1: F1's FB is not called
+        CHECK(simulator.activeStepId() == "D1");
+        CHECK_FALSE(simulator.nestedCalled("F1"));
+        CHECK(simulator.firedNestedTransitions("F1").empty());
+        CHECK(simulator.grafcetEngine("F1")->firedTransitions() == std::vector<int>{1}); // its last call's
+        CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{2}); // the frozen situation
+    }
+    SECTION("a copy keeps the scan's own, as the editor's history restores it")
+    {
+        Simulator simulator(timedModel());
+        simulator.step();
+        REQUIRE(simulator.setVariable("Start", true));
+        simulator.step();
+        const Simulator atScan2(simulator);
+        simulator.step();
+        REQUIRE(simulator.firedNestedTransitions("F1").empty());
+        CHECK(atScan2.firedNestedTransitions("F1") == std::vector<int>{1});
+        simulator = atScan2; // back to scan 2, as a step back then play on does
+        CHECK(simulator.scanCount() == 2);
+        CHECK(simulator.firedNestedTransitions("F1") == std::vector<int>{1});
+    }
+}
+
+TEST_CASE("Which continuous actions emit their output after a call", "[simulation][nested-simulation][nested-fired]")
+{
+    // Step 1 drives Lamp only IF Go, and Horn; step 2 drives Lamp too.
+    Model model;
+    REQUIRE(model.addVariable(samples::variable("Go", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Next", IecType::Bool, VariableKind::Input)));
+    REQUIRE(model.addVariable(samples::variable("Lamp", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.addVariable(samples::variable("Horn", IecType::Bool, VariableKind::Output)));
+    REQUIRE(model.addVariable(samples::variable("Count", IecType::Int, VariableKind::Internal)));
+    REQUIRE(model.setInitialStep("F1"));
+    REQUIRE(model.setCondition("F1->A2", "FALSE")); // F1 stays
+    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {{ActionTiming::OnActivation, "Count := Count + 1"},
+                                                      {ActionTiming::Continuous, "N Lamp IF Go"},
+                                                      {ActionTiming::Continuous, "Horn"}}}));
+    REQUIRE(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::Continuous, "N Lamp"}}}));
+    REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2}, "Next"}));
+    Simulator simulator(model);
+    const NestedEngine* engine = simulator.grafcetEngine("F1");
+    REQUIRE(engine);
+    CHECK_FALSE(engine->emitting(1, 2)); // before any call
+    simulator.step();
+    CHECK_FALSE(engine->emitting(1, 0)); // a stored action
+    CHECK_FALSE(engine->emitting(1, 1)); // Go is FALSE
+    CHECK(engine->emitting(1, 2));
+    CHECK_FALSE(engine->emitting(2, 0));
+    REQUIRE(simulator.setVariable("Go", true));
+    simulator.step();
+    CHECK(engine->emitting(1, 1));
+    CHECK(simulator.variable("Lamp") == cond::Value{true});
+    REQUIRE(simulator.setVariable("Next", true));
+    simulator.step();
+    CHECK_FALSE(engine->emitting(1, 1));
+    CHECK_FALSE(engine->emitting(1, 2));
+    CHECK(engine->emitting(2, 0)); // Lamp from step 2 now
+    CHECK(simulator.variable("Lamp") == cond::Value{true});
+    CHECK(simulator.variable("Horn") == cond::Value{false});
+    CHECK_FALSE(engine->emitting(2, 1)); // no such action
+    CHECK_FALSE(engine->emitting(9, 0)); // no such step
+    simulator.reset();
+    CHECK_FALSE(engine->emitting(2, 0));
+}

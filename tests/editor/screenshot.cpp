@@ -1,7 +1,7 @@
 // ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... [--show-hidden] [--language CODE]
 //                     [--export-chart FILE.svg|png|pdf] [--dialog ACTION]
 //                     [--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE]
-//                     [--replay-scans N] [--simulation-tab INDEX] [--verify] [--grafcet STEP]
+//                     [--replay-scans N] [--simulation-tab INDEX] [--verify] [--grafcet STEP]...
 //
 // Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
 // with a step or transition selected, a dock brought to the front) and
@@ -13,10 +13,13 @@
 // chart as File > Export Chart does. --dialog triggers the window's action
 // of that object name ("modelSettingsAction", "exportPlcOpenAction"...) and
 // saves a picture of the first dialog it opens instead of the window. --simulate starts the simulation
-// mode, sets the --input values (before the first scan) and runs N scans; --back N then steps back N
-// scans through the history; --replay FILE then starts that scenario's replay (paused at scan 0) and
+// mode, then sets the --input values and runs the --scans in the order they are given
+// (`--input A=TRUE --scans 2 --input B=TRUE --scans 5`: A before the first scan, B after the
+// second); --back N then steps back N scans through the history; --replay FILE then starts that scenario's replay (paused at scan 0) and
 // plays its first --replay-scans N scans. Settings go to a temporary folder,
 // so the picture shows the default layout whatever the user's settings.
+// --grafcet STEP opens the tab of that step's nested GRAFCET (several: the
+// last one in front); with --simulate it shows the simulation's marks.
 // --verify runs Simulation > Verify and waits for its findings.
 
 #include "editor/chart/chartscene.h"
@@ -48,7 +51,7 @@ int usage()
     std::fputs("usage: ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... "
                "[--show-hidden] [--language CODE] [--export-chart FILE] [--dialog ACTION] "
                "[--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE] [--replay-scans N] "
-               "[--simulation-tab INDEX] [--verify] [--grafcet STEP]\n",
+               "[--simulation-tab INDEX] [--verify] [--grafcet STEP]...\n",
                stderr);
     return 2;
 }
@@ -129,13 +132,18 @@ int main(int argc, char* argv[])
     bool showHidden = false;
     bool simulate = false;
     bool verify = false;
-    QStringList inputs;
-    int scans = 0;
+    // The --input and --scans of the simulation, in their order: an input
+    // ("NAME=VALUE"), or a number of scans.
+    struct Play {
+        QString input;
+        int scans = 0;
+    };
+    QList<Play> plays;
     int back = 0;
     QString replay;
     int replayScans = 0;
     int simulationTab = 0;
-    QString grafcet; // the GEMMA step whose nested GRAFCET's tab is shown
+    QStringList grafcets; // the GEMMA steps whose nested GRAFCETs' tabs are opened
     const QStringList args = app.arguments().mid(1);
     for (qsizetype i = 0; i < args.size(); ++i) {
         if (args[i] == QLatin1String("--select") && i + 1 < args.size())
@@ -155,9 +163,9 @@ int main(int argc, char* argv[])
         else if (args[i] == QLatin1String("--verify"))
             verify = true;
         else if (args[i] == QLatin1String("--input") && i + 1 < args.size())
-            inputs << args[++i];
+            plays.append({args[++i], 0});
         else if (args[i] == QLatin1String("--scans") && i + 1 < args.size())
-            scans = args[++i].toInt();
+            plays.append({QString(), args[++i].toInt()});
         else if (args[i] == QLatin1String("--back") && i + 1 < args.size())
             back = args[++i].toInt();
         else if (args[i] == QLatin1String("--replay") && i + 1 < args.size())
@@ -167,7 +175,7 @@ int main(int argc, char* argv[])
         else if (args[i] == QLatin1String("--simulation-tab") && i + 1 < args.size())
             simulationTab = args[++i].toInt();
         else if (args[i] == QLatin1String("--grafcet") && i + 1 < args.size())
-            grafcet = args[++i];
+            grafcets << args[++i];
         else if (args[i].startsWith(QLatin1String("--")))
             return usage();
         else
@@ -198,9 +206,11 @@ int main(int argc, char* argv[])
         return 1;
     if (showHidden)
         window.findChild<QAction*>(QStringLiteral("showHiddenAction"))->setChecked(true);
-    if (!grafcet.isEmpty() && !window.openNestedGrafcet(grafcet)) {
-        std::fprintf(stderr, "ggstudio_screenshot: %s has no nested GRAFCET\n", qPrintable(grafcet));
-        return 2;
+    for (const QString& grafcet : grafcets) {
+        if (!window.openNestedGrafcet(grafcet)) {
+            std::fprintf(stderr, "ggstudio_screenshot: %s has no nested GRAFCET\n", qPrintable(grafcet));
+            return 2;
+        }
     }
     if (!selected.isEmpty())
         window.selection()->select(selectionOf(selected));
@@ -224,7 +234,12 @@ int main(int argc, char* argv[])
     if (simulate) {
         window.findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
         editor::SimulationSession* session = window.simulationSession();
-        for (const QString& input : inputs) {
+        for (const Play& play : plays) {
+            if (play.input.isEmpty()) {
+                session->advance(play.scans);
+                continue;
+            }
+            const QString& input = play.input;
             const QString name = input.section(QLatin1Char('='), 0, 0);
             const int index = session->simulator()->variableIndex(name.toStdString());
             const auto status = index < 0 ? core::Status::failure("", "unknown variable")
@@ -240,7 +255,6 @@ int main(int argc, char* argv[])
             session->setVariable(index, input.section(QLatin1Char('='), 1).compare(QLatin1String("TRUE"),
                                                                                  Qt::CaseInsensitive) == 0);
         }
-        session->advance(scans);
         for (int i = 0; i < back; ++i)
             session->stepBack();
         if (!replay.isEmpty()) {
