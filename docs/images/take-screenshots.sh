@@ -22,7 +22,7 @@ example=examples/drilling-cell.ggstudio.json
 # Scan 1,012 of it with F1's GRAFCET in front (F2's greyed in the tab beside it).
 "$shot" "$images/simulation-grafcet.png" 1366 768 "$example" --grafcet F2 --grafcet F1 --simulate \
     --replay examples/drilling-cell-start.scenario --replay-scans 1012 --raise simulationDock
-# The nested GRAFCET of F1 in its tab.
-"$shot" "$images/grafcet-tab.png" 1366 768 "$example" --grafcet F1 --select F1
+# The nested GRAFCET of F1 in its tab, its transition T3 in the Nested Transition dock.
+"$shot" "$images/grafcet-tab.png" 1366 768 "$example" --grafcet F1 --select F1/T3 --raise grafcetTransitionDock
 # Verify and its findings.
 "$shot" "$images/verification.png" 1366 768 "$example" --verify --raise problemsDock
