@@ -138,7 +138,7 @@ private slots:
     void thousandScansPerSecondRunInBatches();
     void stepBackShowsThePastScan();
     void playingFromAPastScanDropsTheLaterHistory();
-    void historyIsBoundedAndCheap();
+    void historyIsBounded();
     void replayStartsPausedAtScanZero();
     void replayFromTheDockStartsPaused();
     void steppingBackInAReplayReplaysFromThere();
@@ -1075,22 +1075,15 @@ void TestSimulation::playingFromAPastScanDropsTheLaterHistory()
     QVERIFY(m_session->replayFailures().empty());
 }
 
-// The latest kHistoryCapacity scans are kept, and keeping them does not
-// slow a run at the highest speed.
-void TestSimulation::historyIsBoundedAndCheap()
+// The latest kHistoryCapacity scans are kept, and no more. What keeping
+// them costs is timed by the simulation frame benchmark, not here.
+void TestSimulation::historyIsBounded()
 {
     startOnDrillingCell(); // four nested GRAFCETs: the largest copies
     for (const char* name : {"DrillHigh", "Unclamped", "StartButton"})
         click(QString::fromLatin1(name));
-    QElapsedTimer clock;
-    clock.start();
     const std::int64_t scans = SimulationSession::kMaxSpeed;
     m_session->advance(scans);
-    const double seconds = static_cast<double>(clock.nsecsElapsed()) / 1e9;
-    qInfo("%lld scans with history in %.3f s (%.2f us per scan)", static_cast<long long>(scans), seconds,
-          seconds * 1e6 / static_cast<double>(scans));
-    // A second of the fastest run in well under a second: room for the UI.
-    QVERIFY2(seconds < 1.0, qPrintable(QString::number(seconds)));
 
     QCOMPARE(m_session->firstKeptScan(), scans - SimulationSession::kHistoryCapacity);
     m_session->showScan(0);
