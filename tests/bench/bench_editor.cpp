@@ -59,6 +59,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <iterator>
 #include <vector>
 
@@ -96,6 +97,40 @@ bool waitFor(const Shown& shown)
         QCoreApplication::processEvents(QEventLoop::AllEvents);
     }
     return true;
+}
+
+// Types x and Backspace in turn into `editor` until `shows(typed)` holds
+// (views updated), then repaints `viewport`: as a Catch BENCHMARK, then
+// timed one by one for the median and the slow tail, which Catch's mean
+// hides on a loaded machine. `shows` must hold for `false` on entry.
+void benchmarkKeystrokes(const char* name, QWidget* editor, QWidget* viewport,
+                         const std::function<bool(bool typed)>& shows)
+{
+    bool typedLast = false;
+    bool allShown = true;
+    BENCHMARK(name)
+    {
+        typedLast = !typedLast;
+        QTest::keyClick(editor, typedLast ? Qt::Key_X : Qt::Key_Backspace);
+        allShown = waitFor([&] { return shows(typedLast); }) && allShown;
+        viewport->repaint();
+    };
+    CHECK(allShown);
+
+    std::vector<double> latencies;
+    for (int i = 0; i < kTimedKeystrokes; ++i) {
+        typedLast = !typedLast;
+        QElapsedTimer timer;
+        timer.start();
+        QTest::keyClick(editor, typedLast ? Qt::Key_X : Qt::Key_Backspace);
+        REQUIRE(waitFor([&] { return shows(typedLast); }));
+        viewport->repaint();
+        latencies.push_back(static_cast<double>(timer.nsecsElapsed()) / 1e6);
+    }
+    std::sort(latencies.begin(), latencies.end());
+    std::printf("\n%s, %d keystrokes: median %.2f ms, 90th percentile %.2f ms, max %.2f ms\n", name,
+                kTimedKeystrokes, median(latencies), latencies[latencies.size() * 9 / 10], latencies.back());
+    std::fflush(stdout);
 }
 
 // The window with the realistic model, F1->A2 in the Transition dock and the
@@ -152,13 +187,7 @@ struct EditingSession {
     // Processes events until the views show the state; false after 5 s.
     bool waitUntilShown(const QString& word, bool shown) const
     {
-        const QDeadlineTimer deadline(5000);
-        while (!showsEverywhere(word, shown)) {
-            if (deadline.hasExpired())
-                return false;
-            QCoreApplication::processEvents(QEventLoop::AllEvents);
-        }
-        return true;
+        return waitFor([&] { return showsEverywhere(word, shown); });
     }
 };
 
@@ -183,34 +212,8 @@ TEST_CASE("keystroke to updated view", "[editorbench]")
     REQUIRE(session.waitUntilShown(typed, false));
     REQUIRE(session.conditionEdit->text() == original);
 
-    bool typedLast = false;
-    bool allShown = true;
-    QWidget* viewport = session.window.chartView()->viewport();
-    BENCHMARK("keystroke to updated view")
-    {
-        typedLast = !typedLast;
-        QTest::keyClick(session.conditionEdit, typedLast ? Qt::Key_X : Qt::Key_Backspace);
-        allShown = session.waitUntilShown(typed, typedLast) && allShown;
-        viewport->repaint();
-    };
-    CHECK(allShown);
-
-    // The same, timed one by one for the median and the slow tail, which
-    // Catch's mean hides on a loaded machine.
-    std::vector<double> latencies;
-    for (int i = 0; i < kTimedKeystrokes; ++i) {
-        typedLast = !typedLast;
-        QElapsedTimer timer;
-        timer.start();
-        QTest::keyClick(session.conditionEdit, typedLast ? Qt::Key_X : Qt::Key_Backspace);
-        REQUIRE(session.waitUntilShown(typed, typedLast));
-        viewport->repaint();
-        latencies.push_back(static_cast<double>(timer.nsecsElapsed()) / 1e6);
-    }
-    std::sort(latencies.begin(), latencies.end());
-    std::printf("\nkeystroke to updated view, %d keystrokes: median %.2f ms, 90th percentile %.2f ms, max %.2f ms\n",
-                kTimedKeystrokes, median(latencies), latencies[latencies.size() * 9 / 10], latencies.back());
-    std::fflush(stdout);
+    benchmarkKeystrokes("keystroke to updated view", session.conditionEdit, session.window.chartView()->viewport(),
+                        [&](bool shown) { return session.showsEverywhere(typed, shown); });
 }
 
 TEST_CASE("keystroke in a nested receptivity to updated view", "[editorbench]")
@@ -260,31 +263,7 @@ TEST_CASE("keystroke in a nested receptivity to updated view", "[editorbench]")
     QTest::keyClick(edit, Qt::Key_Backspace);
     REQUIRE(waitFor([&] { return shows(false); }));
 
-    bool typedLast = false;
-    bool allShown = true;
-    BENCHMARK("keystroke in a nested receptivity to updated view")
-    {
-        typedLast = !typedLast;
-        QTest::keyClick(edit, typedLast ? Qt::Key_X : Qt::Key_Backspace);
-        allShown = waitFor([&] { return shows(typedLast); }) && allShown;
-        view->viewport()->repaint();
-    };
-    CHECK(allShown);
-
-    std::vector<double> latencies;
-    for (int i = 0; i < kTimedKeystrokes; ++i) {
-        typedLast = !typedLast;
-        QElapsedTimer timer;
-        timer.start();
-        QTest::keyClick(edit, typedLast ? Qt::Key_X : Qt::Key_Backspace);
-        REQUIRE(waitFor([&] { return shows(typedLast); }));
-        view->viewport()->repaint();
-        latencies.push_back(static_cast<double>(timer.nsecsElapsed()) / 1e6);
-    }
-    std::sort(latencies.begin(), latencies.end());
-    std::printf("\nkeystroke in a nested receptivity, %d keystrokes: median %.2f ms, 90th percentile %.2f ms, max %.2f ms\n",
-                kTimedKeystrokes, median(latencies), latencies[latencies.size() * 9 / 10], latencies.back());
-    std::fflush(stdout);
+    benchmarkKeystrokes("keystroke in a nested receptivity to updated view", edit, view->viewport(), shows);
 }
 
 TEST_CASE("simulation frame at 1,000 scans/s", "[editorbench]")
