@@ -661,8 +661,7 @@ bool MainWindow::openNestedGrafcet(const QString& stepId)
         // Once shown, so that the view scrolls to a selected element after its first placing.
         new GrafcetSelectionSync(view, m_selection);
     }
-    m_centralTabs->setCurrentWidget(view);
-    rememberGrafcetTabs();
+    m_centralTabs->setCurrentWidget(view); // remembered through currentChanged when it changes
     return true;
 }
 
