@@ -643,4 +643,21 @@ int addValidRandomNestedGrafcets(core::Model& model, std::mt19937& random)
     return 0;
 }
 
+core::Model lampGrafcetModel()
+{
+    using core::ActionTiming;
+    core::Model model;
+    for (const core::Variable& v : {variable("Start", core::IecType::Bool, core::VariableKind::Input),
+                                    variable("Lamp", core::IecType::Bool, core::VariableKind::Output),
+                                    variable("Count", core::IecType::Int, core::VariableKind::Internal)})
+        require(model.addVariable(v));
+    require(model.addGrafcetStep("F1", {1, true, "", {}}));
+    require(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::Continuous, "N Lamp"},
+                                                       {ActionTiming::OnActivation, "Count := Count + 1"}}}));
+    require(model.addGrafcetStep("F1", {3, false, "", {{ActionTiming::OnActivation, "S Complete"}}}));
+    require(model.addGrafcetTransition("F1", {1, {1}, {2}, "RE Start"}));
+    require(model.addGrafcetTransition("F1", {2, {2}, {3}, "5s/X2"}));
+    return model;
+}
+
 } // namespace samples

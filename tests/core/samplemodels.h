@@ -15,6 +15,11 @@ namespace samples {
 // A variable with no default value and no comment, of the given kind.
 core::Variable variable(std::string name, core::IecType type, core::VariableKind kind);
 
+// The template whose F1 has a small nested GRAFCET:
+// 1 --RE Start--> 2 (N Lamp, Count := Count + 1) --5s/X2--> 3 (S Complete),
+// over Start (input), Lamp (output) and Count (internal INT).
+core::Model lampGrafcetModel();
+
 // The filling-and-capping machine of the GG-Generator paper: F1-F5 and D3
 // with nested behaviour, F6 hidden, tokens on F1 -> A2 (NOT Stop) and F1 -> F3.
 core::Model caseStudyModel();

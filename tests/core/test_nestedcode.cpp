@@ -22,17 +22,7 @@ namespace {
 // F1: 1 --RE Start--> 2 (N Lamp, Count := Count + 1) --5s/X2--> 3 (S Complete).
 Model smallModel()
 {
-    Model model;
-    REQUIRE(model.addVariable(samples::variable("Start", IecType::Bool, VariableKind::Input)));
-    REQUIRE(model.addVariable(samples::variable("Lamp", IecType::Bool, VariableKind::Output)));
-    REQUIRE(model.addVariable(samples::variable("Count", IecType::Int, VariableKind::Internal)));
-    REQUIRE(model.addGrafcetStep("F1", {1, true, "", {}}));
-    REQUIRE(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::Continuous, "N Lamp"},
-                                                       {ActionTiming::OnActivation, "Count := Count + 1"}}}));
-    REQUIRE(model.addGrafcetStep("F1", {3, false, "", {{ActionTiming::OnActivation, "S Complete"}}}));
-    REQUIRE(model.addGrafcetTransition("F1", {1, {1}, {2}, "RE Start"}));
-    REQUIRE(model.addGrafcetTransition("F1", {2, {2}, {3}, "5s/X2"}));
-    return model;
+    return samples::lampGrafcetModel();
 }
 
 std::string functionBlock(const Model& model, const std::string& name, Dialect dialect = Dialect::Iec)
