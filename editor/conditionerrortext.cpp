@@ -100,6 +100,12 @@ QString nestedText(const core::cond::ParseError& error, const QString& found)
     case Kind::ConditionMissing: return ConditionErrorText::tr("expected a condition after IF");
     case Kind::EqualsForAssignment: return ConditionErrorText::tr("use := to assign a value; = compares");
     case Kind::AfterAction: return ConditionErrorText::tr("unexpected '%1' after a complete action").arg(found);
+    case Kind::PropertyQuantifier:
+        return found.isEmpty() ? ConditionErrorText::tr("a property starts with never or always")
+                               : ConditionErrorText::tr("a property starts with never or always, not '%1'").arg(found);
+    case Kind::StepAfterIn:
+        return found.isEmpty() ? ConditionErrorText::tr("expected a GEMMA step after 'in'")
+                               : ConditionErrorText::tr("expected a GEMMA step after 'in', found '%1'").arg(found);
     default: return invalidTokenText(error, found);
     }
 }

@@ -25,7 +25,7 @@ bool isRootValid(const Expression& expression)
 
 bool isLogical(BinaryOp op)
 {
-    return op == BinaryOp::And || op == BinaryOp::Or || op == BinaryOp::Xor;
+    return op == BinaryOp::And || op == BinaryOp::Or || op == BinaryOp::Xor || op == BinaryOp::Implies;
 }
 
 bool isArithmetic(BinaryOp op)
@@ -84,7 +84,9 @@ private:
         // shape (and for - / MOD the value) depends on them.
         const int outer = precedence(parent.binaryOp);
         const int inner = precedence(node.binaryOp);
-        return inner < outer || (isRightOperand && inner == outer);
+        // `->` groups to the right: there the left operand keeps them instead.
+        const bool groupsRight = parent.binaryOp == cond::BinaryOp::Implies;
+        return inner < outer || (isRightOperand != groupsRight && inner == outer);
     }
 
     void writeOperand(int child, int parent, bool isRightOperand)
@@ -126,6 +128,8 @@ private:
         case NodeKind::StepActivity: m_out += "X" + std::to_string(node.number); break;
         case NodeKind::StepDuration: m_out += node.text; break;
         case NodeKind::Complete: m_out += "Complete"; break;
+        case NodeKind::InStep: m_out += "in " + node.text; break;
+        case NodeKind::NestedStepActivity: m_out += node.text + ".X" + std::to_string(node.number); break;
         case NodeKind::Binary:
             writeOperand(node.left, index, false);
             m_out += ' ';
@@ -297,7 +301,9 @@ private:
         case NodeKind::Binary: return binaryKind(index, node);
         case NodeKind::StepActivity:
         case NodeKind::StepDuration:
-        case NodeKind::Complete: return ValueKind::Bool;
+        case NodeKind::Complete:
+        case NodeKind::InStep:
+        case NodeKind::NestedStepActivity: return ValueKind::Bool;
         }
         return ValueKind::Unknown;
     }

@@ -123,6 +123,7 @@ Value binary(BinaryOp op, const Value& a, const Value& b)
     case BinaryOp::Or: return isTrue(a) || isTrue(b);
     case BinaryOp::Xor: return isTrue(a) != isTrue(b);
     case BinaryOp::And: return isTrue(a) && isTrue(b);
+    case BinaryOp::Implies: return !isTrue(a) || isTrue(b);
     case BinaryOp::Add:
     case BinaryOp::Subtract:
     case BinaryOp::Multiply:
@@ -158,7 +159,9 @@ public:
         case NodeKind::Variable:
         case NodeKind::StepActivity:
         case NodeKind::StepDuration:
-        case NodeKind::Complete: return m_variableValue ? m_variableValue(index) : Value{false};
+        case NodeKind::Complete:
+        case NodeKind::InStep:
+        case NodeKind::NestedStepActivity: return m_variableValue ? m_variableValue(index) : Value{false};
         case NodeKind::BoolLiteral: return equalsIgnoreCase(node.text, "TRUE");
         case NodeKind::IntegerLiteral: return positiveLiteral(node.text);
         case NodeKind::RealLiteral: {

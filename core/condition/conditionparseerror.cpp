@@ -58,6 +58,8 @@ constexpr EnumName<Kind> kKindNames[] = {
     {Kind::ConditionMissing, "condition-missing"},
     {Kind::EqualsForAssignment, "equals-for-assignment"},
     {Kind::AfterAction, "after-action"},
+    {Kind::PropertyQuantifier, "property-quantifier"},
+    {Kind::StepAfterIn, "step-after-in"},
 };
 
 std::string quoted(std::string_view text)
@@ -132,6 +134,12 @@ std::string nestedText(const ParseError& e)
     case Kind::ConditionMissing: return "expected a condition after IF";
     case Kind::EqualsForAssignment: return "use := to assign a value; = compares";
     case Kind::AfterAction: return "unexpected " + quoted(e.found) + " after a complete action";
+    case Kind::PropertyQuantifier:
+        return e.found.empty() ? "a property starts with never or always"
+                               : "a property starts with never or always, not " + quoted(e.found);
+    case Kind::StepAfterIn:
+        return e.found.empty() ? "expected a GEMMA step after 'in'"
+                               : "expected a GEMMA step after 'in', found " + quoted(e.found);
     default: return {};
     }
 }

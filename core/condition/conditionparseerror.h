@@ -66,6 +66,9 @@ struct ParseError {
         ConditionMissing,   // `V IF` with nothing after it
         EqualsForAssignment, // `V = 1`: found "="
         AfterAction,        // found after a complete action
+        // Verification properties (the Property context).
+        PropertyQuantifier, // found where `never` or `always` should start the property; empty for a blank one
+        StepAfterIn,        // found after `in` instead of a step id; empty at the end
     };
 
     Kind kind = Kind::Empty;

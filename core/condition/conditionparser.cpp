@@ -170,6 +170,23 @@ Token scanNestedToken(std::string_view text, std::size_t begin)
     return token;
 }
 
+// What the Property context adds: `->`, `in`, `S.Xn`.
+Token scanPropertyToken(std::string_view text, std::size_t begin)
+{
+    if (text.substr(begin).starts_with("->"))
+        return makeToken(TokenKind::Implies, text, begin, begin + 2);
+    Token token = scanToken(text, begin);
+    if (token.kind == TokenKind::Identifier && equalsIgnoreCase(token.text, "in"))
+        token.kind = TokenKind::In;
+    else if (token.kind == TokenKind::Invalid) {
+        const std::size_t dot = token.text.find('.');
+        if (dot != std::string_view::npos && dot > 0 && stepActivityNumber(token.text.substr(dot + 1)) > 0
+            && token.text.substr(0, dot).find_first_of("#") == std::string_view::npos)
+            token.kind = TokenKind::NestedStep;
+    }
+    return token;
+}
+
 bool looksLikeDuration(std::string_view text)
 {
     const std::size_t hash = text.find('#');
@@ -321,6 +338,7 @@ std::optional<BinaryOp> binaryOperator(TokenKind kind)
     case TokenKind::Star: return BinaryOp::Multiply;
     case TokenKind::Slash: return BinaryOp::Divide;
     case TokenKind::Mod: return BinaryOp::Modulo;
+    case TokenKind::Implies: return BinaryOp::Implies;
     default: return std::nullopt;
     }
 }
@@ -338,6 +356,8 @@ bool startsOperand(TokenKind kind)
     case TokenKind::RisingEdge:
     case TokenKind::FallingEdge:
     case TokenKind::Duration:
+    case TokenKind::In:
+    case TokenKind::NestedStep:
     case TokenKind::LeftParen: return true;
     default: return false;
     }
@@ -350,6 +370,7 @@ public:
         : m_text(text)
         , m_tokens(std::move(tokens))
         , m_nested(context == Context::Nested)
+        , m_lowestPrecedence(context == Context::Property ? precedence(BinaryOp::Implies) : 1)
     {
     }
 
@@ -361,7 +382,7 @@ public:
             return result;
         }
         m_expression.nodes.reserve(m_tokens.size());
-        const Parsed root = parseExpression(1);
+        const Parsed root = parseExpression(m_lowestPrecedence);
         if (root.node >= 0 && peek().kind != TokenKind::End)
             failAfterCondition();
         if (m_error) {
@@ -434,7 +455,8 @@ private:
                 break;
             const std::size_t operatorToken = m_position;
             advance();
-            const Parsed right = parseExpression(precedence(*op) + 1);
+            // `->` groups to the right: a -> b -> c is a -> (b -> c).
+            const Parsed right = parseExpression(precedence(*op) + (*op == BinaryOp::Implies ? 0 : 1));
             if (right.node < 0)
                 return {};
             const int height = 1 + std::max(left.height, right.height);
@@ -543,8 +565,41 @@ private:
         case TokenKind::True:
         case TokenKind::False: return leaf(NodeKind::BoolLiteral);
         case TokenKind::LeftParen: return parseParenthesised();
+        case TokenKind::In: return parseInStep();
+        case TokenKind::NestedStep: return parseNestedStep();
         default: return failMissingOperand();
         }
+    }
+
+    // in F1: the GEMMA step F1 is the active one.
+    Parsed parseInStep()
+    {
+        const std::size_t inToken = m_position;
+        const Token& in = advance();
+        const Token& step = peek();
+        if (step.kind == TokenKind::Invalid)
+            return failInvalid(step);
+        if (step.kind != TokenKind::Identifier)
+            return fail(ErrorKind::StepAfterIn, step.span, step.kind == TokenKind::End ? std::string_view() : step.text);
+        advance();
+        Node* node = newNode(NodeKind::InStep, Span{in.span.begin, step.span.end}, 1, inToken);
+        if (!node)
+            return {};
+        node->text.assign(step.text);
+        return lastNode(1);
+    }
+
+    // F1.X6: step 6 of F1's nested GRAFCET is active.
+    Parsed parseNestedStep()
+    {
+        const Token& token = advance();
+        Node* node = newNode(NodeKind::NestedStepActivity, token.span, 1, m_position - 1);
+        if (!node)
+            return {};
+        const std::size_t dot = token.text.find('.');
+        node->text.assign(token.text.substr(0, dot));
+        node->number = stepActivityNumber(token.text.substr(dot + 1));
+        return lastNode(1);
     }
 
     Parsed leaf(NodeKind kind)
@@ -561,7 +616,7 @@ private:
         if (!enter(m_parenNesting, ErrorKind::TooDeepParentheses))
             return {};
         advance();
-        Parsed inner = parseExpression(1);
+        Parsed inner = parseExpression(m_lowestPrecedence);
         --m_parenNesting;
         if (inner.node < 0)
             return {};
@@ -621,6 +676,7 @@ private:
     std::string_view m_text;
     std::vector<Token> m_tokens;
     bool m_nested = false;
+    int m_lowestPrecedence = 1;
     std::size_t m_position = 0;
     int m_parenNesting = 0;
     int m_unaryNesting = 0;
@@ -646,7 +702,6 @@ bool isRenamable(const Token& token)
 
 std::vector<Token> tokenize(std::string_view text, const ParseOptions& options)
 {
-    const bool nested = options.context == Context::Nested;
     std::vector<Token> tokens;
     tokens.reserve(text.size() / 4 + 2);
     std::size_t position = 0;
@@ -655,7 +710,11 @@ std::vector<Token> tokenize(std::string_view text, const ParseOptions& options)
             ++position;
         if (position >= text.size())
             break;
-        tokens.push_back(nested ? scanNestedToken(text, position) : scanToken(text, position));
+        switch (options.context) {
+        case Context::Gemma: tokens.push_back(scanToken(text, position)); break;
+        case Context::Nested: tokens.push_back(scanNestedToken(text, position)); break;
+        case Context::Property: tokens.push_back(scanPropertyToken(text, position)); break;
+        }
         position = tokens.back().span.end;
     }
     tokens.push_back(Token{TokenKind::End, Span{text.size(), text.size()}, text.substr(text.size())});

@@ -22,6 +22,10 @@ enum class TokenKind {
     RisingEdge,  // RE, ↑
     FallingEdge, // FE, ↓
     Duration,    // 5s, 200ms, 1m30s, T#5s
+    // Context::Property only.
+    Implies,     // ->
+    In,          // in (before a step id)
+    NestedStep,  // F1.X6
     End,
 };
 
@@ -29,7 +33,10 @@ enum class TokenKind {
 // conditions and values) add step activities X<n>, durations t/X<n>, edges
 // and Complete to the GEMMA condition language; in the Gemma context all of
 // these are what they always were (X3 a variable, T#5s an error).
-enum class Context { Gemma, Nested };
+// Verification properties (core/verification/property.h) read their body in
+// the Property context: the GEMMA language plus `in S` (S is the active GEMMA
+// step), `S.Xn` (step n of S's nested GRAFCET is active) and `->`.
+enum class Context { Gemma, Nested, Property };
 
 struct ParseOptions {
     Context context = Context::Gemma;

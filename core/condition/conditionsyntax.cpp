@@ -5,6 +5,7 @@ namespace core::cond {
 const char* operatorText(BinaryOp op)
 {
     switch (op) {
+    case BinaryOp::Implies: return "->";
     case BinaryOp::Or: return "OR";
     case BinaryOp::Xor: return "XOR";
     case BinaryOp::And: return "AND";
@@ -37,6 +38,7 @@ const char* operatorText(UnaryOp op)
 int precedence(BinaryOp op)
 {
     switch (op) {
+    case BinaryOp::Implies: return 0;
     case BinaryOp::Or: return 1;
     case BinaryOp::Xor: return 2;
     case BinaryOp::And: return 3;

@@ -16,19 +16,26 @@ namespace core::cond {
 // only; their operand is always a Variable node.
 enum class UnaryOp { Not, Negate, RisingEdge, FallingEdge };
 
+// Implies (`->`) exists only in verification properties (Context::Property
+// of conditionparser.h); it binds loosest of all and groups to the right.
 enum class BinaryOp {
     Or, Xor, And,
     Equal, NotEqual,
     Less, Greater, LessEqual, GreaterEqual,
     Add, Subtract,
     Multiply, Divide, Modulo,
+    Implies,
 };
 
 // StepActivity (`X3`), StepDuration (`5s/X3`) and Complete exist only in
 // the texts of nested GRAFCETs (Context::Nested of conditionparser.h).
+// InStep (`in F1`: text is the GEMMA step id as written) and
+// NestedStepActivity (`F1.X6`: text the GEMMA step id, number the nested
+// step) exist only in verification properties (Context::Property).
 enum class NodeKind {
     Variable, BoolLiteral, IntegerLiteral, RealLiteral, Unary, Binary,
     StepActivity, StepDuration, Complete,
+    InStep, NestedStepActivity,
 };
 
 struct Node {
@@ -59,7 +66,7 @@ struct Expression {
 const char* operatorText(BinaryOp op);
 const char* operatorText(UnaryOp op);
 
-// ST precedence, higher binds tighter: OR 1, XOR 2, AND 3, = <> 4, < > <= >= 5,
+// ST precedence, higher binds tighter: -> 0, OR 1, XOR 2, AND 3, = <> 4, < > <= >= 5,
 // + - 6, * / MOD 7, unary 8.
 int precedence(BinaryOp op);
 inline constexpr int kUnaryPrecedence = 8;

@@ -601,6 +601,7 @@ bool CompiledProgram::compileNode(const CompiledTransition& transition, const co
     case cond::BinaryOp::Greater: code = real ? Op::GtReal : Op::GtInt; break;
     case cond::BinaryOp::LessEqual: code = real ? Op::LeReal : Op::LeInt; break;
     case cond::BinaryOp::GreaterEqual: code = real ? Op::GeReal : Op::GeInt; break;
+    case cond::BinaryOp::Implies: return false; // properties only: never in a program's condition
     }
     out.code.push_back(Instruction{code, 0, {}});
     kind = (logical || comparison) ? Kind::Bool : (real ? Kind::Real : Kind::Integer);

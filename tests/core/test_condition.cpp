@@ -29,7 +29,9 @@ std::string shape(const Expression& e, int index)
     case NodeKind::RealLiteral:
     case NodeKind::StepActivity:
     case NodeKind::StepDuration:
-    case NodeKind::Complete: return n.text;
+    case NodeKind::Complete:
+    case NodeKind::InStep:
+    case NodeKind::NestedStepActivity: return n.text;
     case NodeKind::BoolLiteral: return toUpperAscii(n.text);
     case NodeKind::Unary: return std::string("(") + operatorText(n.unaryOp) + " " + shape(e, n.operand) + ")";
     case NodeKind::Binary:

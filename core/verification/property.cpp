@@ -1,0 +1,125 @@
+#include "core/verification/property.h"
+
+#include "core/condition/conditionanalysis.h"
+#include "core/condition/conditionparser.h"
+#include "core/condition/symboltable.h"
+#include "core/model/model.h"
+
+#include <cctype>
+
+namespace core {
+
+namespace {
+
+const cond::ParseOptions kPropertyContext{cond::Context::Property};
+
+std::optional<PropertyKind> quantifier(std::string_view word)
+{
+    auto equals = [word](std::string_view name) {
+        if (word.size() != name.size())
+            return false;
+        for (std::size_t i = 0; i < word.size(); ++i) {
+            if (std::tolower(static_cast<unsigned char>(word[i])) != name[i])
+                return false;
+        }
+        return true;
+    };
+    if (equals("never"))
+        return PropertyKind::Never;
+    if (equals("always"))
+        return PropertyKind::Always;
+    return std::nullopt;
+}
+
+PropertyProblem problem(Span span, const char* code, std::string message, std::vector<std::string> arguments = {})
+{
+    return PropertyProblem{span, code, std::move(message), std::move(arguments), std::nullopt};
+}
+
+void checkStatePredicate(const Model& model, const cond::Node& node, std::vector<PropertyProblem>& problems)
+{
+    const std::string stepId = propertyStepId(model, node.text);
+    if (stepId.empty()) {
+        problems.push_back(problem(node.span, property::kUnknownStep,
+                                   "there is no visible GEMMA step '" + node.text + "'", {node.text}));
+        return;
+    }
+    if (node.kind != cond::NodeKind::NestedStepActivity)
+        return;
+    const Grafcet* grafcet = model.effectiveGrafcet(stepId);
+    if (!grafcet) {
+        problems.push_back(problem(node.span, property::kNoGrafcet,
+                                   "the step " + stepId + " has no nested GRAFCET", {stepId}));
+        return;
+    }
+    for (const GrafcetStep& step : grafcet->steps()) {
+        if (step.number == node.number)
+            return;
+    }
+    const std::string number = std::to_string(node.number);
+    problems.push_back(problem(node.span, property::kUnknownNestedStep,
+                               "the GRAFCET of " + stepId + " has no step " + number, {stepId, number}));
+}
+
+} // namespace
+
+ParsedProperty parseProperty(std::string_view text)
+{
+    ParsedProperty parsed;
+    const std::vector<cond::Token> tokens = cond::tokenize(text, kPropertyContext);
+    const cond::Token& first = tokens.front();
+    const std::optional<PropertyKind> kind
+        = first.kind == cond::TokenKind::Identifier ? quantifier(first.text) : std::nullopt;
+    if (!kind) {
+        const bool blank = first.kind == cond::TokenKind::End;
+        parsed.error = cond::makeParseError(cond::ParseError::Kind::PropertyQuantifier,
+                                            blank ? Span{0, text.size()} : first.span,
+                                            blank ? std::string_view() : first.text);
+        return parsed;
+    }
+    parsed.kind = *kind;
+    cond::ParseResult body = cond::parseTokens(text, tokens, 1, tokens.size() - 1, kPropertyContext);
+    if (!body.ok() && body.error->kind == cond::ParseError::Kind::Empty)
+        body.error = cond::makeParseError(cond::ParseError::Kind::OperandAfter, Span{text.size(), text.size()}, {},
+                                          first.text);
+    parsed.expression = std::move(body.expression);
+    parsed.error = std::move(body.error);
+    return parsed;
+}
+
+std::string propertyStepId(const Model& model, std::string_view written)
+{
+    for (const Step& step : model.steps()) {
+        if (step.hidden || step.id.size() != written.size())
+            continue;
+        bool same = true;
+        for (std::size_t i = 0; i < written.size() && same; ++i)
+            same = std::toupper(static_cast<unsigned char>(written[i])) == step.id[i];
+        if (same)
+            return step.id;
+    }
+    return {};
+}
+
+std::vector<PropertyProblem> checkProperty(const Model& model, std::string_view text)
+{
+    const ParsedProperty parsed = parseProperty(text);
+    if (!parsed.ok()) {
+        PropertyProblem syntax = problem(parsed.error->span, property::kSyntax, parsed.error->message);
+        syntax.syntax = parsed.error;
+        return {syntax};
+    }
+    std::vector<PropertyProblem> problems;
+    for (const cond::Node& node : parsed.expression.nodes) {
+        if (node.kind == cond::NodeKind::InStep || node.kind == cond::NodeKind::NestedStepActivity)
+            checkStatePredicate(model, node, problems);
+    }
+    const SymbolTable symbols(model.variables());
+    for (const cond::TypeIssue& issue : cond::typeCheck(parsed.expression, symbols)) {
+        const bool unknown = issue.code == "GG203";
+        problems.push_back(problem(issue.span, unknown ? property::kUnknownVariable : property::kType, issue.message));
+    }
+    return problems;
+}
+
+} // namespace core
