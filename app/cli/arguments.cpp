@@ -45,9 +45,12 @@ Arguments::Arguments(const std::vector<std::string>& words, const std::vector<st
             m_options[name] = *inlineValue;
         } else if (i + 1 < words.size()) {
             m_options[name] = words[++i];
-        } else if (m_error.empty()) {
-            m_error = name + " needs a value";
+        } else {
+            if (m_error.empty())
+                m_error = name + " needs a value";
+            continue;
         }
+        m_given.emplace_back(name, m_options[name]);
     }
 }
 
@@ -62,6 +65,16 @@ std::optional<std::string> Arguments::value(const std::string& option) const
     if (found == m_options.end())
         return std::nullopt;
     return found->second;
+}
+
+std::vector<std::string> Arguments::values(const std::string& option) const
+{
+    std::vector<std::string> out;
+    for (const auto& [name, value] : m_given) {
+        if (name == option)
+            out.push_back(value);
+    }
+    return out;
 }
 
 std::string Arguments::unknownOptions(const std::vector<std::string>& allowed) const

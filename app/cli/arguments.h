@@ -16,7 +16,8 @@ public:
 
     const std::vector<std::string>& positional() const { return m_positional; }
     bool has(const std::string& option) const;
-    std::optional<std::string> value(const std::string& option) const;
+    std::optional<std::string> value(const std::string& option) const; // the last one given
+    std::vector<std::string> values(const std::string& option) const; // every one given, in order
     // The first problem met while splitting ("--to needs a value"), empty if none.
     const std::string& error() const { return m_error; }
     // Options given that are not in the allowed list, as a message; empty if none.
@@ -25,6 +26,7 @@ public:
 private:
     std::vector<std::string> m_positional;
     std::map<std::string, std::string> m_options;
+    std::vector<std::pair<std::string, std::string>> m_given; // every option, in order
     std::string m_error;
 };
 

@@ -54,12 +54,15 @@ const char* const kUsage =
     "      Runs the scenario's last scan, else 10 scans, or N. Exit 1 when an expectation of\n"
     "      the scenario fails.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
-    "         [--complete-automatic STEP[,STEP...]|all]\n"
-    "      Prove properties of the mode chart (docs/verification.md): print FILE: ELEMENTS:\n"
+    "         [--complete-automatic STEP[,STEP...]|all] [--property \"never P\"]... [--exact-time]\n"
+    "      Prove properties of both layers (docs/verification.md): print FILE: ELEMENTS:\n"
     "      severity: CODE: message lines; with DIR, write each counterexample as a scenario\n"
-    "      file there; with --promela, also write the model for SPIN. Complete of each nested\n"
-    "      step is free (any value at any scan) unless named by --complete-automatic (TRUE\n"
-    "      at every scan, as the skeleton FB). Exit 1 when a finding is an error or a warning.\n"
+    "      file there; with --promela, also write the model for SPIN. The model's own\n"
+    "      properties are checked, and each --property (never P or always P) with them.\n"
+    "      Timers may or may not have elapsed unless --exact-time counts time in scans.\n"
+    "      Complete of a nested step without GRAFCET is free (any value at any scan) unless\n"
+    "      named by --complete-automatic (TRUE at every scan, as the skeleton FB).\n"
+    "      Exit 1 when a finding is an error or a warning (a property violated).\n"
     "\n"
     "Formats: IN is recognised by its content. OUT is GG-Generator JSON when it ends in\n"
     ".gg.json, GG Studio JSON otherwise; --to overrides the extension. OUT - is standard\n"
@@ -545,7 +548,8 @@ const std::map<std::string, Command>& commands()
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
         {"st", {commandSt, {"--dialect", "--step"}, {}}},
         {"simulate", {commandSimulate, {"--scans"}, {"--trace", "--explain"}}},
-        {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic"}, {}}},
+        {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property"},
+                    {"--exact-time"}}},
     };
     return table;
 }

@@ -7,6 +7,7 @@
 #include "core/model/model.h"
 #include "core/formats/modelfiles.h"
 #include "core/verification/promela.h"
+#include "core/verification/property.h"
 #include "core/verification/verification.h"
 
 #include <filesystem>
@@ -145,6 +146,16 @@ int commandVerify(const Arguments& args, Streams streams)
     core::VerificationOptions options;
     for (const std::string& id : automatic)
         options.complete[id] = core::CompleteAssumption::Automatic;
+    options.exactTime = args.has("--exact-time");
+    for (const std::string& property : args.values("--property")) {
+        const std::vector<core::PropertyProblem> problems = core::checkProperty(*loaded.model, property);
+        if (!problems.empty()) {
+            streams.err << "ggstudio-cli: --property '" << property << "': column " << problems.front().span.begin + 1
+                        << ": " << problems.front().message << lineEnd;
+            return UsageError;
+        }
+        options.properties.push_back(property);
+    }
     if (directory) {
         if (core::Status target = core::checkFolderTarget(*directory); !target) {
             streams.err << *directory << ": " << target.message << lineEnd;
@@ -193,9 +204,13 @@ int commandVerify(const Arguments& args, Streams streams)
         }
         streams.out << "    counterexample: " << file << " (" << finding.counterexample->scans << " scans)" << lineEnd;
     }
+    for (const std::string& abstraction : result.abstractions)
+        streams.out << path << ": abstracted: " << abstraction << lineEnd;
     streams.out << path << ": " << result.reachableSteps.size() << " reachable steps, " << result.configurations
-                << " reachable configurations, " << result.findings.size() << " finding(s)"
-                << (result.exhaustive ? "" : " (not exhaustive)");
+                << " reachable configurations, ";
+    if (result.bothLayers)
+        streams.out << result.programStates << " program states (both layers), ";
+    streams.out << result.findings.size() << " finding(s)" << (result.exhaustive ? "" : " (not exhaustive)");
     if (!automatic.empty())
         streams.out << ", Complete automatic: " << joined(automatic);
     streams.out << lineEnd;

@@ -1,5 +1,7 @@
 #include "core/verification/verification.h"
 
+#include "core/verification/bothlayers.h"
+
 #include "core/model/model.h"
 #include "core/simulation/simulator.h"
 #include "core/verification/stepspace.h"
@@ -609,7 +611,7 @@ void Verifier::checkUnreachable()
         if (maybeReached(static_cast<int>(i)))
             continue;
         const std::string& id = m_steps[i].step->id;
-        VerificationFinding finding{code::kUnreachableStep, Severity::Warning, {id}, {}, {}, {}};
+        VerificationFinding finding{code::kUnreachableStep, Severity::Warning, {id}, {}, {}, {}, {}, -1};
         std::vector<std::string> incoming;
         Occurrence nearest;
         for (std::size_t s = 0; s < m_steps.size(); ++s) {
@@ -719,7 +721,7 @@ void Verifier::checkTransition(const std::string& id, const std::vector<Occurren
                         covers.push_back(cover);
                 }
             }
-            VerificationFinding finding{code::kDeadTransition, Severity::Warning, {id}, {}, {}, {}};
+            VerificationFinding finding{code::kDeadTransition, Severity::Warning, {id}, {}, {}, {}, {}, -1};
             finding.elements.insert(finding.elements.end(), covers.begin(), covers.end());
             if (shown.step >= 0) {
                 finding.message = id + " can never fire: whenever its condition holds, " + joined(covers, " or ")
@@ -777,7 +779,7 @@ void Verifier::checkTransition(const std::string& id, const std::vector<Occurren
             }
         }
         if (alwaysTrue && hasLater) {
-            VerificationFinding finding{code::kAlwaysTrue, Severity::Warning, {id}, {}, {}, {}};
+            VerificationFinding finding{code::kAlwaysTrue, Severity::Warning, {id}, {}, {}, {}, {}, -1};
             finding.elements.insert(finding.elements.end(), later.begin(), later.end());
             finding.message = transition.family
                 ? "the condition of " + id + " is always TRUE: no own transition of an F step can ever fire"
@@ -838,7 +840,7 @@ void Verifier::checkOverlaps(int step)
                     continue;
                 const std::string& first = transitions[i].transition->id;
                 const std::string& second = transitions[j].transition->id;
-                VerificationFinding finding{code::kOverlap, Severity::Info, {first, second}, {}, {}, {}};
+                VerificationFinding finding{code::kOverlap, Severity::Info, {first, second}, {}, {}, {}, {}, -1};
                 finding.message = first + " and " + second + " can both be TRUE in the same scan: the priority decides, "
                     + first + " fires";
                 finding.counterexample = counterexampleAt(code::kOverlap + std::string(": ") + finding.message, step,
@@ -875,7 +877,7 @@ void Verifier::checkStuck(int step)
             return;
         m_stuckSteps.insert(step);
         const std::string& id = m_steps[st].step->id;
-        VerificationFinding finding{code::kStuck, Severity::Error, {id}, {}, {}, {}};
+        VerificationFinding finding{code::kStuck, Severity::Error, {id}, {}, {}, {}, {}, -1};
         if (m.conj(stuck, s.zero()) != bdd::kFalse)
             finding.message = "once " + id + " is active, no transition out of it can ever fire, whatever the inputs: "
                 "the machine stays in " + id + " forever";
@@ -945,7 +947,7 @@ void Verifier::checkReturn()
             || bad == bdd::kFalse)
             continue;
         const std::string& id = m_steps[st].step->id;
-        VerificationFinding finding{code::kNoReturn, Severity::Warning, {id}, {}, {}, {}};
+        VerificationFinding finding{code::kNoReturn, Severity::Warning, {id}, {}, {}, {}, {}, -1};
         finding.message = good[st]
             ? "after some scans in " + id + ", its tokens can be such that the initial step " + initial
                   + " can never become active again"
@@ -992,7 +994,7 @@ void Verifier::checkEmergencyStop(int step)
         const Ref bad = m.conj(s.anyConfiguration(), m.negate(s.possible(toStop)));
         if (bad == bdd::kFalse)
             return;
-        VerificationFinding finding{code::kNoEmergencyStop, Severity::Error, {gemma.id}, {}, {}, {}};
+        VerificationFinding finding{code::kNoEmergencyStop, Severity::Error, {gemma.id}, {}, {}, {}, {}, -1};
         finding.elements.insert(finding.elements.end(), ways.begin(), ways.end());
         if (ways.empty())
             finding.message = "the emergency stop D1 can never be entered from " + gemma.id
@@ -1059,7 +1061,7 @@ void Verifier::reportUndecided(VerificationResult& result)
                 codes.push_back(c);
         }
         std::sort(codes.begin(), codes.end());
-        VerificationFinding finding{code::kIncomplete, Severity::Warning, {}, {}, {}, {}};
+        VerificationFinding finding{code::kIncomplete, Severity::Warning, {}, {}, {}, {}, {}, -1};
         if (entry.element != "model")
             finding.elements.push_back(entry.element);
         if (rest) {
@@ -1122,11 +1124,16 @@ bool VerificationResult::violated() const
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options)
 {
     Verifier verifier(model, options);
-    return verifier.run();
+    VerificationResult result = verifier.run();
+    if (!result.cancelled && needsBothLayers(model, options))
+        verifyBothLayers(model, options, result);
+    return result;
 }
 
 std::string verificationElementLabel(const VerificationFinding& finding)
 {
+    if (finding.property >= 0 && !finding.arguments.empty())
+        return "property '" + finding.arguments.front() + "'";
     if (finding.elements.empty())
         return "model";
     std::string label;

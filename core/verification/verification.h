@@ -75,6 +75,17 @@ struct VerificationOptions {
     std::chrono::milliseconds timeLimit{4000};
     // Polled now and then; returning true abandons the run (result.cancelled).
     std::function<bool()> cancelled;
+
+    // Both layers (docs/verification.md, "Both layers"): properties checked
+    // in addition to the model's own (`never P` / `always P`), e.g. from
+    // `ggstudio-cli verify --property`.
+    std::vector<std::string> properties;
+    // Time counted in scans: every TON elapses exactly when the PLC's would,
+    // instead of "may or may not have elapsed" (more states).
+    bool exactTime = false;
+    // Program states (both layers) the exploration may visit (memory: about
+    // 150 bytes each).
+    std::size_t maxProgramStates = 2'000'000;
 };
 
 // A run of the simulator from reset that shows a finding: scenario text the
@@ -99,6 +110,12 @@ struct VerificationFinding {
     std::string message; // English
     std::vector<std::string> arguments; // the values the message names, for translation; first = elements[0]
     std::optional<Counterexample> counterexample;
+    // The GEMMA step whose nested GRAFCET the finding is about (elements
+    // then name its steps "F1/5" and transitions "F1/T3"); empty otherwise.
+    std::string gemmaStep;
+    // GV120-GV122: the property's index (the model's properties, then
+    // VerificationOptions::properties); -1 otherwise.
+    int property = -1;
 };
 
 struct VerificationResult {
@@ -113,6 +130,17 @@ struct VerificationResult {
     std::size_t maxDepth = 0;       // scans from the start to the farthest reachable configuration
     bool exhaustive = true;         // false when the budget left something undecided (GV100)
     bool cancelled = false;
+
+    // Both layers (models with nested GRAFCETs or properties), by GEMMA step id:
+    std::map<std::string, std::vector<int>> reachableNestedSteps;      // active after some evolution or Initialization call, ascending
+    std::map<std::string, std::vector<int>> fireableNestedTransitions; // fire in some reachable call, ascending
+    std::map<std::string, std::vector<int>> unsafeNestedSteps;         // activated while already active
+    std::vector<std::string> unstableSteps;                            // until stable: Unstable reachable
+    std::vector<std::string> properties;  // the texts checked: the model's, then the options'
+    std::vector<bool> propertyHolds;      // per property: proved (FALSE when violated, undecided or not checkable)
+    std::vector<std::string> abstractions; // what the exploration abstracted (English), empty when exact
+    std::size_t programStates = 0;         // explored states of both layers (0: not explored)
+    bool bothLayers = false;               // the exploration of both layers ran
 
     // A finding of severity error or warning: a property does not hold.
     bool violated() const;
@@ -136,6 +164,20 @@ inline constexpr const char* kOverlap = "GV104";          // info
 inline constexpr const char* kNoReturn = "GV105";         // warning
 inline constexpr const char* kStuck = "GV106";            // error
 inline constexpr const char* kNoEmergencyStop = "GV107";  // error
+// Both layers (docs/verification.md lists them).
+inline constexpr const char* kNestedStepNeverActive = "GV110"; // warning
+inline constexpr const char* kNestedTransitionDead = "GV111";  // warning
+inline constexpr const char* kUnsafeNestedStep = "GV112";      // warning
+inline constexpr const char* kUnstableReachable = "GV113";     // warning
+inline constexpr const char* kBranchesTogether = "GV114";      // warning
+inline constexpr const char* kNeverComplete = "GV115";         // error
+inline constexpr const char* kWaitsForNoComplete = "GV116";    // warning
+inline constexpr const char* kStoredRace = "GV117";            // warning
+inline constexpr const char* kOutputOnEmergencyStop = "GV118"; // error: a continuous output
+inline constexpr const char* kStoredOutputOnEmergencyStop = "GV119"; // info: a stored output (a memory)
+inline constexpr const char* kPropertyViolated = "GV120";      // error
+inline constexpr const char* kPropertyHolds = "GV121";         // info
+inline constexpr const char* kPropertyUnusable = "GV122";      // warning
 } // namespace verification
 
 } // namespace core

@@ -1,0 +1,1772 @@
+#include "core/verification/programexplorer.h"
+
+#include "core/codegen/gemmaprogram.h"
+#include "core/condition/conditionanalysis.h"
+#include "core/condition/conditionevaluator.h"
+#include "core/condition/symboltable.h"
+#include "core/model/model.h"
+#include "core/simulation/scenario.h"
+#include "core/simulation/simulator.h"
+#include "core/verification/property.h"
+#include "core/verification/satisfiability.h"
+
+#include <algorithm>
+#include <bit>
+#include <deque>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+namespace core::explore {
+
+namespace {
+
+std::string upper(std::string_view text)
+{
+    std::string out(text);
+    for (char& c : out)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
+}
+
+bool isComparison(cond::BinaryOp op)
+{
+    using B = cond::BinaryOp;
+    return op == B::Less || op == B::Greater || op == B::LessEqual || op == B::GreaterEqual || op == B::Equal
+        || op == B::NotEqual;
+}
+
+// One comparison the explorer cannot decide on values, in a form shared by
+// its equivalents, so that `A < B` and `A >= B` stay each other's negation:
+// a < b, b < a for a > b, NOT (b < a) for a <= b, NOT (a < b) for a >= b,
+// and = / <> with the operands in text order.
+std::string canonicalComparison(const cond::Expression& expression, int index, bool& negated)
+{
+    using B = cond::BinaryOp;
+    const cond::Node& node = expression.at(index);
+    std::string left = cond::print(cond::Expression{expression.nodes, node.left});
+    std::string right = cond::print(cond::Expression{expression.nodes, node.right});
+    negated = node.binaryOp == B::LessEqual || node.binaryOp == B::GreaterEqual || node.binaryOp == B::NotEqual;
+    if (node.binaryOp == B::Equal || node.binaryOp == B::NotEqual) {
+        if (right < left)
+            std::swap(left, right);
+        return "(" + left + ") = (" + right + ")";
+    }
+    if (node.binaryOp == B::Greater || node.binaryOp == B::LessEqual)
+        std::swap(left, right);
+    return "(" + left + ") < (" + right + ")";
+}
+
+// What a variable is to the explorer.
+enum class SlotClass {
+    FreeBool,    // an input: any value at every scan
+    StateBool,   // written by the program (stored or continuous): kept in the state
+    ConstBool,   // neither: its default for ever
+    FreeNumber,  // a numeric input, or a numeric variable the actions write (abstracted)
+    ConstNumber, // a numeric variable nothing writes
+};
+
+struct Slot {
+    std::string name;
+    IecType type = IecType::Bool;
+    VariableKind kind = VariableKind::Input;
+    SlotClass cls = SlotClass::FreeBool;
+    cond::Value initial;
+    std::vector<cond::Value> representatives; // FreeNumber
+    int stateBit = -1;                        // StateBool: index among the state's BOOLs
+    int edge = -1;                            // read under an edge: index of its <V>_PREV
+};
+
+// How the explorer reads one node of an expression.
+enum class NodeRole {
+    Logical,     // NOT, AND, OR, XOR, ->, = and <> between BOOLs: evaluated here, short-circuit
+    Literal,     // TRUE / FALSE
+    BoolRead,    // a BOOL variable
+    Exact,       // a comparison that reads at most one numeric variable: computed on its value
+    Opaque,      // any other comparison: a free BOOL
+    Token,       // a token literal of a GEMMA condition
+    Step,        // Xn
+    Duration,    // t/Xn
+    Complete,    // Complete inside a nested GRAFCET
+    Edge,        // RE / FE
+    InStep,      // in S
+    NestedStep,  // S.Xn
+    Other,       // never reached in a BOOL context
+};
+
+struct NodeInfo {
+    NodeRole role = NodeRole::Other;
+    int slot = -1;        // BoolRead, Edge: the variable; Exact: the numeric variable (-1 for none)
+    int index = -1;       // Token: token index; Duration: timer; Step/NestedStep: nested step number; InStep: step index
+    int step = -1;        // NestedStep: GEMMA step index
+    std::string text;     // Opaque: its canonical text (its identity within a scan)
+    bool negated = false; // Opaque: the node is the negation of that canonical comparison
+    std::shared_ptr<cond::Expression> sub; // Exact: the comparison as an expression of its own
+    // Exact on a free numeric variable: bit i set when its representative i makes it TRUE (computed at first use).
+    mutable std::uint64_t truth = 0;
+    mutable bool truthKnown = false;
+};
+
+struct ExpressionInfo {
+    const cond::Expression* expression = nullptr;
+    std::vector<NodeInfo> nodes;
+};
+
+struct CompiledToken {
+    int slot = -1;
+    bool normallyClosed = false;
+};
+
+struct CompiledTransition {
+    const GemmaTransition* source = nullptr;
+    int globalIndex = 0; // in Impl::transitionIds
+    int target = -1;     // step index, -1 when the target is not visible
+    const ExpressionInfo* condition = nullptr; // nullptr: unusable (FALSE)
+};
+
+struct CompiledNestedTransition {
+    const NestedTransition* source = nullptr;
+    std::vector<int> upstream, downstream; // step indices
+    const ExpressionInfo* receptivity = nullptr;
+};
+
+struct CompiledAction {
+    const NestedAction* source = nullptr;
+    int slot = -1; // -1: Complete, or a numeric target (ignored)
+    bool complete = false;
+    const ExpressionInfo* value = nullptr; // Assign
+};
+
+struct CompiledGrafcet {
+    const NestedGrafcet* source = nullptr;
+    std::vector<int> numbers; // by step index
+    std::vector<bool> initial;
+    std::vector<std::vector<CompiledAction>> onActivation, onDeactivation;
+    std::vector<std::vector<const ExpressionInfo*>> continuous; // by step index, by continuous action: condition (nullptr: none)
+    std::vector<CompiledNestedTransition> transitions;
+    std::vector<int> timerStep; // by timer: step index
+    std::vector<bool> timerShort; // duration <= cycle: elapses at its second run
+    std::vector<int> timerRuns;   // runs with IN TRUE after which Q is TRUE: ceil(duration / cycle) + 1
+    std::vector<std::vector<int>> timersOfStep;
+    std::map<std::string, int> ownOutput; // upper name -> index into source->outputs
+    int completeOutput = -1;              // index into source->outputs of Complete's drivers
+
+    int stepIndex(int number) const
+    {
+        auto it = std::find(numbers.begin(), numbers.end(), number);
+        return it == numbers.end() ? -1 : static_cast<int>(it - numbers.begin());
+    }
+};
+
+struct CompiledStep {
+    const GemmaStep* source = nullptr;
+    bool nested = false;
+    bool freeComplete = true;
+    int grafcet = -1; // index into Impl::grafcets
+    int firstToken = 0;
+    int tokenCount = 0;
+    std::vector<CompiledTransition> transitions;
+};
+
+struct OutputWrite {
+    int slot = -1;
+    struct Driver {
+        int step = -1;   // GEMMA step index
+        int output = -1; // index into its grafcet's outputs
+    };
+    std::vector<Driver> drivers;
+};
+
+// The layout of a state in bytes.
+struct Layout {
+    int tokens = 3;
+    int x = 0, outputs = 0, complete = 0, timers = 0, bools = 0, prev = 0, size = 0;
+};
+
+// One answer the chooser gave, in the order the scan asked.
+struct Decision {
+    // NumberTest: a comparison of a free numeric variable with constants,
+    // decided on the representatives still possible (Impl::numberPossible).
+    enum class Kind { Bool, Number, NumberTest, Opaque, Timer, Complete } kind = Kind::Bool;
+    int slot = -1; // Bool, Number: the variable; Timer: the timer; Complete: the step index
+    int value = 0; // Bool, Opaque, Timer, Complete: 0/1; Number: representative index
+};
+
+class Chooser {
+public:
+    void restart(const std::vector<int>* replay)
+    {
+        m_position = 0;
+        m_replay = replay;
+        decisions.clear();
+    }
+    int choose(int alternatives)
+    {
+        if (m_replay)
+            return m_position < m_replay->size() ? (*m_replay)[m_position++] : 0;
+        if (m_position == m_values.size()) {
+            m_values.push_back(0);
+            m_alternatives.push_back(alternatives);
+        }
+        return m_values[m_position++];
+    }
+    // The next combination of answers; false when every one was tried.
+    bool advance()
+    {
+        m_values.resize(m_position);
+        m_alternatives.resize(m_position);
+        while (!m_values.empty() && m_values.back() + 1 >= m_alternatives.back()) {
+            m_values.pop_back();
+            m_alternatives.pop_back();
+        }
+        if (m_values.empty())
+            return false;
+        ++m_values.back();
+        return true;
+    }
+    void reset()
+    {
+        m_values.clear();
+        m_alternatives.clear();
+    }
+    const std::vector<int>& answers() const { return m_values; }
+
+    std::vector<Decision> decisions;
+
+private:
+    std::vector<int> m_values;
+    std::vector<int> m_alternatives;
+    std::size_t m_position = 0;
+    const std::vector<int>* m_replay = nullptr;
+};
+
+// What one scan did, beyond the state it ends in.
+struct ScanOutcome {
+    int firedTransition = -1; // global index
+    bool completeTrue = false; // the active step's FB yielded Complete TRUE
+    bool entersD1 = false;
+    std::vector<Event> events; // without witnesses
+};
+
+using State = std::string;
+
+} // namespace
+
+struct ProgramExplorer::Impl {
+    Impl(const Model& model, Options options);
+
+    // --- compiling -------------------------------------------------------------------
+    void compileSlots(const Model& model);
+    void compileSteps();
+    void compileGrafcet(CompiledStep& step);
+    void compileProperties(const Model& model);
+    const ExpressionInfo* info(const cond::Expression& expression, const std::map<int, std::string>* substitutions,
+                               const CompiledStep* step, const CompiledGrafcet* grafcet,
+                               const std::map<int, int>* timerOfNode);
+    void collectComparisons(const cond::Expression& expression);
+    int slotOf(std::string_view name) const;
+
+    // --- one scan ----------------------------------------------------------------------
+    State initialState() const;
+    ScanOutcome scan(const State& from, State& to);
+    bool readBool(int slot);
+    cond::Value readNumber(int slot);
+    bool testNumber(const ExpressionInfo& info, const NodeInfo& n);
+    bool choose(Decision::Kind kind, int slot);
+    bool eval(const ExpressionInfo& info, int node);
+    bool evalNode(const ExpressionInfo& info, int node);
+    void initializationCall(const CompiledStep& step);
+    void evolvingCall(const CompiledStep& step, ScanOutcome& outcome);
+    bool evolve(const CompiledStep& step, bool first, ScanOutcome& outcome);
+    void runStored(const CompiledStep& step, int stepIndex, const std::vector<CompiledAction>& actions,
+                   ScanOutcome& outcome);
+    void computeOutputs(const CompiledGrafcet& grafcet);
+    bool timerElapsed(int timer);
+    int timerState(int timer) const;
+    void setTimerState(int timer, int value);
+    void runTimer(const CompiledGrafcet& g, int timer, bool in);
+    void noteActive(const CompiledStep& step);
+
+    // --- exploring ----------------------------------------------------------------------
+    void explore();
+    void addEvent(Event event, std::size_t state, bool gemmaFired);
+    void analyseGraph();
+    bool outOfBudget();
+
+    // --- counterexamples -------------------------------------------------------------------
+    std::vector<std::pair<std::size_t, std::vector<int>>> pathTo(std::size_t state) const;
+    std::vector<int> answersTo(std::size_t from, std::size_t to) const;
+
+    const Model& model;
+    Options options;
+    GemmaProgram program;
+    SymbolTable symbols;
+    std::vector<Slot> slots;
+    std::map<std::string, int> slotByName;
+    std::vector<int> edgeSlots;
+    std::vector<int> stateBoolSlots;
+    std::map<int, std::vector<std::pair<cond::BinaryOp, cond::Value>>> comparisons; // numeric slot -> constants
+    std::vector<std::unique_ptr<ExpressionInfo>> infos;
+    std::vector<CompiledStep> steps;
+    std::vector<CompiledGrafcet> grafcets;
+    std::vector<CompiledToken> tokens;
+    std::vector<std::string> transitionIds;
+    std::vector<const GemmaTransition*> transitionSources;
+    std::vector<OutputWrite> outputWrites;
+    std::vector<int> outputsToCheckOnD1; // BOOL Output slots the program writes
+    int initialStep = -1;
+    int d1Step = -1;
+    Layout layout;
+    int cycleMs = 20;
+    std::vector<ParsedProperty> parsedProperties;
+    std::vector<const ExpressionInfo*> propertyInfos; // nullptr: skipped
+
+    // The scan being run.
+    Chooser chooser;
+    State work;
+    std::vector<int> boolCache;   // by slot: -1 undecided
+    std::vector<int> numberCache; // by slot
+    std::vector<std::uint64_t> numberPossible; // by slot: representatives still possible this scan (0: all)
+    std::map<std::string, bool> opaqueCache;
+    std::vector<int> timerCache;  // by timer of the active GRAFCET
+    const CompiledGrafcet* activeGrafcet = nullptr;
+    const CompiledStep* activeStep = nullptr;
+    bool firstEvolution = false;
+    std::map<int, std::pair<int, bool>> writes; // slot -> (step index, value) within the scan
+    bool propertyPhase = false;
+    int newStep = -1;
+
+    // The explored graph.
+    std::unordered_map<State, std::uint32_t> index;
+    std::vector<const State*> statesByIndex;
+    std::vector<std::uint32_t> parent;
+    std::vector<std::uint32_t> depth;
+    struct Edge {
+        std::uint32_t to = 0;
+        int fired = -1;
+        bool completeTrue = false;
+        bool entersD1 = false;
+    };
+    std::vector<std::vector<Edge>> edges;
+    std::set<std::string> eventKeys;
+    std::map<std::string, std::pair<std::size_t, bool>> eventAt; // key -> (index in events, its scan fired a GEMMA transition)
+    Exploration result;
+    std::chrono::steady_clock::time_point started;
+    std::size_t scansRun = 0;
+};
+
+// ---------------------------------------------------------------------------------------
+// Compiling
+
+ProgramExplorer::Impl::Impl(const Model& m, Options o)
+    : model(m)
+    , options(std::move(o))
+    , program(buildGemmaProgram(m))
+    , symbols(m.variables())
+{
+    cycleMs = m.settings().cycleTimeMs;
+    compileSlots(m);
+    compileSteps();
+    compileProperties(m);
+    for (const auto& [slot, list] : comparisons) {
+        std::vector<sat::Atom> atoms;
+        for (const auto& [op, constant] : list) {
+            sat::Atom atom;
+            atom.kind = sat::Atom::Kind::Comparison;
+            atom.variable = slot;
+            atom.constant = constant;
+            using B = cond::BinaryOp;
+            atom.relation = op == B::Less ? sat::Relation::Less
+                : op == B::LessEqual      ? sat::Relation::LessEqual
+                : op == B::Greater        ? sat::Relation::Greater
+                : op == B::GreaterEqual   ? sat::Relation::GreaterEqual
+                : op == B::Equal          ? sat::Relation::Equal
+                                          : sat::Relation::NotEqual;
+            atoms.push_back(atom);
+        }
+        std::vector<const sat::Atom*> pointers;
+        for (const sat::Atom& atom : atoms)
+            pointers.push_back(&atom);
+        Slot& s = slots[static_cast<std::size_t>(slot)];
+        if (s.cls == SlotClass::FreeNumber)
+            s.representatives = sat::representatives(s.type, pointers);
+    }
+    for (Slot& s : slots) {
+        if (s.cls == SlotClass::FreeNumber && s.representatives.empty())
+            s.representatives = {s.initial};
+    }
+    boolCache.assign(slots.size(), -1);
+    numberCache.assign(slots.size(), -1);
+    numberPossible.assign(slots.size(), 0);
+}
+
+int ProgramExplorer::Impl::slotOf(std::string_view name) const
+{
+    auto it = slotByName.find(upper(name));
+    return it == slotByName.end() ? -1 : it->second;
+}
+
+void ProgramExplorer::Impl::compileSlots(const Model& m)
+{
+    std::set<std::string> written;
+    std::set<std::string> continuousTargets;
+    for (const GemmaStep& step : program.steps) {
+        if (!step.nested)
+            continue;
+        for (const std::string& target : step.nested->storedTargets)
+            written.insert(upper(target));
+        for (const ContinuousOutput& output : step.nested->outputs) {
+            if (!output.isComplete) {
+                written.insert(upper(output.variable));
+                continuousTargets.insert(upper(output.variable));
+            }
+        }
+    }
+    for (const Variable& variable : m.variables()) {
+        Slot slot;
+        slot.name = variable.name;
+        slot.type = variable.type;
+        slot.kind = variable.kind;
+        std::optional<cond::Value> value = cond::parseValue(variable.type, variable.defaultValue);
+        if (!value)
+            value = cond::parseValue(variable.type, "");
+        slot.initial = value.value_or(cond::Value{false});
+        const bool isWritten = written.count(upper(variable.name)) > 0;
+        if (variable.type == IecType::Bool) {
+            slot.cls = variable.kind == VariableKind::Input ? SlotClass::FreeBool
+                : isWritten                                  ? SlotClass::StateBool
+                                                             : SlotClass::ConstBool;
+        } else {
+            slot.cls = variable.kind == VariableKind::Input || isWritten ? SlotClass::FreeNumber : SlotClass::ConstNumber;
+        }
+        if (slot.cls == SlotClass::StateBool) {
+            slot.stateBit = static_cast<int>(stateBoolSlots.size());
+            stateBoolSlots.push_back(static_cast<int>(slots.size()));
+        }
+        if (variable.kind == VariableKind::Output && variable.type == IecType::Bool && isWritten)
+            outputsToCheckOnD1.push_back(static_cast<int>(slots.size()));
+        slotByName.emplace(upper(variable.name), static_cast<int>(slots.size()));
+        slots.push_back(std::move(slot));
+    }
+    for (const std::string& name : program.edgeVariables) {
+        const int s = slotOf(name);
+        if (s < 0)
+            continue;
+        slots[static_cast<std::size_t>(s)].edge = static_cast<int>(edgeSlots.size());
+        edgeSlots.push_back(s);
+    }
+    bool abstractedNumbers = false;
+    for (const Slot& slot : slots) {
+        if (slot.cls == SlotClass::FreeNumber && slot.kind != VariableKind::Input) {
+            if (!abstractedNumbers)
+                result.abstractions.push_back("numeric variables written by actions take any value of their type");
+            abstractedNumbers = true;
+        }
+    }
+}
+
+void ProgramExplorer::Impl::compileSteps()
+{
+    for (std::size_t i = 0; i < program.steps.size(); ++i) {
+        const GemmaStep& g = program.steps[i];
+        if (g.id == program.initialStepId)
+            initialStep = static_cast<int>(i);
+        if (g.id == "D1")
+            d1Step = static_cast<int>(i);
+    }
+    std::map<std::string, int> tokenByName;
+    for (const GemmaStep& g : program.steps) {
+        CompiledStep step;
+        step.source = &g;
+        step.nested = g.hasNestedBehaviour();
+        auto assumption = options.complete.find(g.id);
+        step.freeComplete = assumption == options.complete.end() || assumption->second == CompleteAssumption::Free;
+        step.firstToken = static_cast<int>(tokens.size());
+        step.tokenCount = static_cast<int>(g.tokens.size());
+        for (const GemmaToken& token : g.tokens) {
+            tokenByName.emplace(token.name, static_cast<int>(tokens.size()));
+            tokens.push_back({slotOf(token.variable), token.polarity == TokenPolarity::NormallyClosed});
+        }
+        steps.push_back(std::move(step));
+    }
+    layout.tokens = 3;
+    for (CompiledStep& step : steps) {
+        for (const GemmaTransition& t : step.source->transitions) {
+            auto known = std::find(transitionIds.begin(), transitionIds.end(), t.id);
+            const int global = known == transitionIds.end() ? static_cast<int>(transitionIds.size())
+                                                             : static_cast<int>(known - transitionIds.begin());
+            if (known == transitionIds.end()) {
+                transitionIds.push_back(t.id);
+                transitionSources.push_back(&t);
+            }
+            CompiledTransition compiled;
+            compiled.source = &t;
+            compiled.globalIndex = global;
+            for (std::size_t s = 0; s < program.steps.size(); ++s) {
+                if (program.steps[s].id == t.targetId)
+                    compiled.target = static_cast<int>(s);
+            }
+            if (t.conditionUsable) {
+                std::map<int, std::string> substitutions;
+                for (const auto& [node, name] : t.substitutions) {
+                    auto token = tokenByName.find(name);
+                    if (token != tokenByName.end())
+                        substitutions.emplace(node, std::to_string(token->second));
+                }
+                compiled.condition = info(t.condition.expression, &substitutions, &step, nullptr, nullptr);
+            }
+            step.transitions.push_back(compiled);
+        }
+        if (step.source->nested)
+            compileGrafcet(step);
+    }
+    int maxX = 0, maxOutputs = 0, maxTimers = 0;
+    for (const CompiledGrafcet& g : grafcets) {
+        maxX = std::max(maxX, static_cast<int>(g.numbers.size()));
+        maxOutputs = std::max(maxOutputs, static_cast<int>(g.source->outputs.size()));
+        maxTimers = std::max(maxTimers, static_cast<int>(g.timerStep.size()));
+    }
+    layout.x = layout.tokens + static_cast<int>(tokens.size());
+    layout.outputs = layout.x + maxX;
+    layout.complete = layout.outputs + maxOutputs;
+    layout.timers = layout.complete + 1;
+    layout.bools = layout.timers + 2 * maxTimers;
+    layout.prev = layout.bools + static_cast<int>(stateBoolSlots.size());
+    layout.size = layout.prev + static_cast<int>(edgeSlots.size());
+    timerCache.assign(static_cast<std::size_t>(maxTimers), -1);
+}
+
+void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
+{
+    const NestedGrafcet& nested = *step.source->nested;
+    CompiledGrafcet g;
+    g.source = &nested;
+    for (const NestedStep& s : nested.steps) {
+        g.numbers.push_back(s.number);
+        g.initial.push_back(s.initial);
+    }
+    for (std::size_t o = 0; o < nested.outputs.size(); ++o) {
+        if (nested.outputs[o].isComplete)
+            g.completeOutput = static_cast<int>(o);
+        else
+            g.ownOutput.emplace(upper(nested.outputs[o].variable), static_cast<int>(o));
+    }
+    bool longTimer = false;
+    for (const NestedTimer& timer : nested.timers) {
+        g.timerStep.push_back(g.stepIndex(timer.step));
+        g.timerShort.push_back(timer.durationMs <= cycleMs);
+        const std::int64_t cycle = std::max(1, cycleMs);
+        g.timerRuns.push_back(static_cast<int>(std::min<std::int64_t>((timer.durationMs + cycle - 1) / cycle + 1, 65535)));
+        longTimer = longTimer || timer.durationMs > cycleMs;
+    }
+    if (longTimer && !options.exactTime && std::find(result.abstractions.begin(), result.abstractions.end(),
+                               "timers longer than one cycle may or may not have elapsed")
+                         == result.abstractions.end())
+        result.abstractions.push_back("timers longer than one cycle may or may not have elapsed");
+    g.timersOfStep.resize(g.numbers.size());
+    for (std::size_t t = 0; t < g.timerStep.size(); ++t) {
+        if (g.timerStep[t] >= 0)
+            g.timersOfStep[static_cast<std::size_t>(g.timerStep[t])].push_back(static_cast<int>(t));
+    }
+    grafcets.push_back(std::move(g));
+    step.grafcet = static_cast<int>(grafcets.size()) - 1;
+    CompiledGrafcet& compiled = grafcets.back();
+    auto actions = [&](const std::vector<NestedAction>& list) {
+        std::vector<CompiledAction> out;
+        for (const NestedAction& action : list) {
+            if (!action.usable)
+                continue;
+            CompiledAction a;
+            a.source = &action;
+            a.complete = action.targetIsComplete;
+            if (!a.complete) {
+                const int s = slotOf(action.target);
+                if (s < 0 || slots[static_cast<std::size_t>(s)].cls != SlotClass::StateBool)
+                    continue; // numeric targets are abstracted; inputs stay free
+                a.slot = s;
+            }
+            if (action.parsed.action.form == cond::ActionForm::Assign)
+                a.value = info(action.parsed.action.value, nullptr, &step, &compiled, nullptr);
+            out.push_back(a);
+        }
+        return out;
+    };
+    for (const NestedStep& s : nested.steps) {
+        compiled.onActivation.push_back(actions(s.onActivation));
+        compiled.onDeactivation.push_back(actions(s.onDeactivation));
+        std::vector<const ExpressionInfo*> conditions;
+        for (const NestedAction& action : s.continuous) {
+            const cond::Expression& condition = action.parsed.action.condition;
+            conditions.push_back(condition.empty() || !action.usable
+                                     ? nullptr
+                                     : info(condition, nullptr, &step, &compiled, nullptr));
+        }
+        compiled.continuous.push_back(std::move(conditions));
+    }
+    for (const NestedTransition& t : nested.transitions) {
+        CompiledNestedTransition c;
+        c.source = &t;
+        for (int n : t.upstream)
+            c.upstream.push_back(compiled.stepIndex(n));
+        for (int n : t.downstream)
+            c.downstream.push_back(compiled.stepIndex(n));
+        if (t.usable)
+            c.receptivity = info(t.receptivity.expression, nullptr, &step, &compiled, &t.timerOfNode);
+        compiled.transitions.push_back(std::move(c));
+    }
+    const int stepIndex = static_cast<int>(&step - steps.data());
+    for (std::size_t o = 0; o < nested.outputs.size(); ++o) {
+        if (nested.outputs[o].isComplete)
+            continue;
+        const int s = slotOf(nested.outputs[o].variable);
+        auto found = std::find_if(outputWrites.begin(), outputWrites.end(),
+                                  [s](const OutputWrite& w) { return w.slot == s; });
+        if (found == outputWrites.end()) {
+            outputWrites.push_back({s, {}});
+            found = outputWrites.end() - 1;
+        }
+        found->drivers.push_back({stepIndex, static_cast<int>(o)});
+    }
+}
+
+void ProgramExplorer::Impl::compileProperties(const Model& m)
+{
+    parsedProperties.reserve(options.properties.size()); // the infos point into it
+    for (const std::string& text : options.properties) {
+        parsedProperties.push_back(parseProperty(text));
+        const bool usable = parsedProperties.back().ok() && checkProperty(m, text).empty();
+        result.propertyChecked.push_back(usable);
+        propertyInfos.push_back(usable ? info(parsedProperties.back().expression, nullptr, nullptr, nullptr, nullptr)
+                                       : nullptr);
+    }
+}
+
+void ProgramExplorer::Impl::collectComparisons(const cond::Expression& expression)
+{
+    for (const cond::Node& node : expression.nodes) {
+        if (node.kind != cond::NodeKind::Binary || !isComparison(node.binaryOp))
+            continue;
+        const cond::Node& left = expression.at(node.left);
+        const cond::Node& right = expression.at(node.right);
+        auto constantValue = [&](int n) -> std::optional<cond::Value> {
+            cond::Expression sub{expression.nodes, n};
+            bool reads = false;
+            const cond::Value value = cond::evaluate(sub, [&](int) {
+                reads = true;
+                return cond::Value{false};
+            });
+            if (reads)
+                return std::nullopt;
+            return value;
+        };
+        auto record = [&](const cond::Node& variable, int other, cond::BinaryOp op) {
+            if (variable.kind != cond::NodeKind::Variable)
+                return;
+            const int s = slotOf(variable.text);
+            if (s < 0 || slots[static_cast<std::size_t>(s)].type == IecType::Bool)
+                return;
+            if (std::optional<cond::Value> constant = constantValue(other))
+                comparisons[s].emplace_back(op, *constant);
+        };
+        using B = cond::BinaryOp;
+        const B mirrored = node.binaryOp == B::Less  ? B::Greater
+            : node.binaryOp == B::Greater            ? B::Less
+            : node.binaryOp == B::LessEqual          ? B::GreaterEqual
+            : node.binaryOp == B::GreaterEqual       ? B::LessEqual
+                                                     : node.binaryOp;
+        record(left, node.right, node.binaryOp);
+        record(right, node.left, mirrored);
+    }
+}
+
+const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expression,
+                                                  const std::map<int, std::string>* substitutions,
+                                                  const CompiledStep* step, const CompiledGrafcet* grafcet,
+                                                  const std::map<int, int>* timerOfNode)
+{
+    (void)step;
+    collectComparisons(expression);
+    auto out = std::make_unique<ExpressionInfo>();
+    out->expression = &expression;
+    out->nodes.resize(expression.nodes.size());
+    for (std::size_t i = 0; i < expression.nodes.size(); ++i) {
+        const cond::Node& node = expression.nodes[i];
+        NodeInfo& n = out->nodes[i];
+        const int index = static_cast<int>(i);
+        if (substitutions && substitutions->count(index)) {
+            n.role = NodeRole::Token;
+            n.index = std::stoi(substitutions->at(index));
+            continue;
+        }
+        switch (node.kind) {
+        case cond::NodeKind::BoolLiteral: n.role = NodeRole::Literal; break;
+        case cond::NodeKind::Variable: {
+            n.slot = slotOf(node.text);
+            n.role = NodeRole::BoolRead;
+            break;
+        }
+        case cond::NodeKind::StepActivity:
+            n.role = NodeRole::Step;
+            n.index = node.number;
+            break;
+        case cond::NodeKind::StepDuration: {
+            n.role = NodeRole::Duration;
+            n.index = -1;
+            if (timerOfNode) {
+                auto it = timerOfNode->find(index);
+                if (it != timerOfNode->end())
+                    n.index = it->second;
+            }
+            break;
+        }
+        case cond::NodeKind::Complete: n.role = NodeRole::Complete; break;
+        case cond::NodeKind::InStep: {
+            n.role = NodeRole::InStep;
+            const std::string id = propertyStepId(model, node.text);
+            for (std::size_t s = 0; s < program.steps.size(); ++s) {
+                if (program.steps[s].id == id)
+                    n.index = static_cast<int>(s);
+            }
+            break;
+        }
+        case cond::NodeKind::NestedStepActivity: {
+            n.role = NodeRole::NestedStep;
+            const std::string id = propertyStepId(model, node.text);
+            for (std::size_t s = 0; s < program.steps.size(); ++s) {
+                if (program.steps[s].id == id)
+                    n.step = static_cast<int>(s);
+            }
+            n.index = node.number;
+            break;
+        }
+        case cond::NodeKind::Unary:
+            if (node.unaryOp == cond::UnaryOp::Not) {
+                n.role = NodeRole::Logical;
+            } else if (node.unaryOp == cond::UnaryOp::RisingEdge || node.unaryOp == cond::UnaryOp::FallingEdge) {
+                n.role = NodeRole::Edge;
+                n.slot = slotOf(expression.at(node.operand).text);
+            }
+            break;
+        case cond::NodeKind::Binary: {
+            using B = cond::BinaryOp;
+            const B op = node.binaryOp;
+            const bool boolOperands = cond::valueKind(expression, node.left, symbols) == cond::ValueKind::Bool;
+            if (op == B::And || op == B::Or || op == B::Xor || op == B::Implies
+                || ((op == B::Equal || op == B::NotEqual) && boolOperands)) {
+                n.role = NodeRole::Logical;
+                break;
+            }
+            if (!isComparison(op))
+                break; // arithmetic: read inside a comparison only
+            std::set<int> numeric; // every numeric variable it reads
+            bool other = false;
+            std::vector<int> stack{index};
+            while (!stack.empty()) {
+                const int at = stack.back();
+                stack.pop_back();
+                const cond::Node& sub = expression.at(at);
+                if (sub.kind == cond::NodeKind::Variable) {
+                    const int s = slotOf(sub.text);
+                    if (s >= 0 && slots[static_cast<std::size_t>(s)].type != IecType::Bool)
+                        numeric.insert(s);
+                    else
+                        other = true;
+                } else if (sub.kind == cond::NodeKind::Unary) {
+                    stack.push_back(sub.operand);
+                } else if (sub.kind == cond::NodeKind::Binary) {
+                    stack.push_back(sub.left);
+                    stack.push_back(sub.right);
+                } else if (sub.kind != cond::NodeKind::IntegerLiteral && sub.kind != cond::NodeKind::RealLiteral) {
+                    other = true;
+                }
+            }
+            const bool direct = expression.at(node.left).kind == cond::NodeKind::Variable
+                || expression.at(node.right).kind == cond::NodeKind::Variable;
+            if (!other && numeric.size() <= 1 && (numeric.empty() || direct)) {
+                n.role = NodeRole::Exact;
+                n.slot = numeric.empty() ? -1 : *numeric.begin();
+                n.sub = std::make_shared<cond::Expression>(cond::Expression{expression.nodes, index});
+            } else {
+                n.role = NodeRole::Opaque;
+                n.text = canonicalComparison(expression, index, n.negated);
+                const std::string note
+                    = "comparison read as a free BOOL: " + cond::print(cond::Expression{expression.nodes, index});
+                if (std::find(result.abstractions.begin(), result.abstractions.end(), note) == result.abstractions.end())
+                    result.abstractions.push_back(note);
+            }
+            break;
+        }
+        default: break;
+        }
+    }
+    (void)grafcet;
+    infos.push_back(std::move(out));
+    return infos.back().get();
+}
+
+// ---------------------------------------------------------------------------------------
+// One scan
+
+namespace {
+
+int stepIndexOf(const State& state)
+{
+    const int raw = static_cast<unsigned char>(state[0]) | (static_cast<unsigned char>(state[1]) << 8);
+    return raw - 1;
+}
+
+void setStepIndex(State& state, int index)
+{
+    const int raw = index + 1;
+    state[0] = static_cast<char>(raw & 0xFF);
+    state[1] = static_cast<char>((raw >> 8) & 0xFF);
+}
+
+} // namespace
+
+State ProgramExplorer::Impl::initialState() const
+{
+    State state(static_cast<std::size_t>(layout.size), '\0');
+    setStepIndex(state, initialStep);
+    state[2] = 1; // Entry
+    for (const Slot& slot : slots) {
+        if (slot.stateBit >= 0)
+            state[static_cast<std::size_t>(layout.bools + slot.stateBit)] = cond::isTrue(slot.initial) ? 1 : 0;
+        if (slot.edge >= 0)
+            state[static_cast<std::size_t>(layout.prev + slot.edge)]
+                = slot.type == IecType::Bool && cond::isTrue(slot.initial) ? 1 : 0;
+    }
+    return state;
+}
+
+bool ProgramExplorer::Impl::choose(Decision::Kind kind, int slot)
+{
+    const int value = chooser.choose(2);
+    chooser.decisions.push_back({kind, slot, value});
+    return value != 0;
+}
+
+bool ProgramExplorer::Impl::readBool(int slot)
+{
+    if (slot < 0)
+        return false;
+    const Slot& s = slots[static_cast<std::size_t>(slot)];
+    switch (s.cls) {
+    case SlotClass::StateBool: return work[static_cast<std::size_t>(layout.bools + s.stateBit)] != 0;
+    case SlotClass::ConstBool: return cond::isTrue(s.initial);
+    case SlotClass::FreeBool: {
+        int& cached = boolCache[static_cast<std::size_t>(slot)];
+        if (cached < 0)
+            cached = choose(Decision::Kind::Bool, slot) ? 1 : 0;
+        return cached != 0;
+    }
+    default: return cond::isTrue(readNumber(slot));
+    }
+}
+
+cond::Value ProgramExplorer::Impl::readNumber(int slot)
+{
+    if (slot < 0)
+        return std::int64_t{0};
+    const Slot& s = slots[static_cast<std::size_t>(slot)];
+    if (s.cls != SlotClass::FreeNumber) {
+        if (s.type == IecType::Bool)
+            return readBool(slot);
+        return s.initial;
+    }
+    int& cached = numberCache[static_cast<std::size_t>(slot)];
+    if (cached < 0) {
+        std::uint64_t& possible = numberPossible[static_cast<std::size_t>(slot)];
+        if (possible != 0) {
+            // Comparisons already narrowed it: one of the values left.
+            const int k = chooser.choose(std::popcount(possible));
+            std::uint64_t bits = possible;
+            for (int i = 0; i < k; ++i)
+                bits &= bits - 1;
+            cached = std::countr_zero(bits);
+            possible = std::uint64_t{1} << cached;
+        } else {
+            cached = chooser.choose(static_cast<int>(s.representatives.size()));
+        }
+        chooser.decisions.push_back({Decision::Kind::Number, slot, cached});
+    }
+    return s.representatives[static_cast<std::size_t>(cached)];
+}
+
+// `Speed > 10` on a free Speed: TRUE or FALSE as the values still possible
+// allow, narrowing them, so that a scan branches on the comparisons it
+// evaluates rather than on every value of every variable it reads.
+bool ProgramExplorer::Impl::testNumber(const ExpressionInfo& info, const NodeInfo& n)
+{
+    const Slot& s = slots[static_cast<std::size_t>(n.slot)];
+    const std::uint64_t all = s.representatives.size() == 64 ? ~std::uint64_t{0}
+                                                              : (std::uint64_t{1} << s.representatives.size()) - 1;
+    if (!n.truthKnown) {
+        for (std::size_t i = 0; i < s.representatives.size(); ++i) {
+            const bool holds = cond::isTrue(cond::evaluate(*n.sub, [&](int leaf) -> cond::Value {
+                const int read = slotOf(info.expression->at(leaf).text);
+                return read == n.slot ? s.representatives[i] : readNumber(read);
+            }));
+            if (holds)
+                n.truth |= std::uint64_t{1} << i;
+        }
+        n.truthKnown = true;
+    }
+    std::uint64_t& possible = numberPossible[static_cast<std::size_t>(n.slot)];
+    const int cached = numberCache[static_cast<std::size_t>(n.slot)];
+    if (cached >= 0)
+        return (n.truth >> cached) & 1;
+    const std::uint64_t current = possible == 0 ? all : possible;
+    const std::uint64_t whenTrue = current & n.truth;
+    const std::uint64_t whenFalse = current & ~n.truth;
+    if (whenFalse == 0 || whenTrue == 0)
+        return whenFalse == 0;
+    const bool value = choose(Decision::Kind::NumberTest, n.slot);
+    possible = value ? whenTrue : whenFalse;
+    return value;
+}
+
+bool ProgramExplorer::Impl::eval(const ExpressionInfo& info, int node)
+{
+    if (!info.expression || info.expression->root < 0)
+        return false;
+    return evalNode(info, node < 0 ? info.expression->root : node);
+}
+
+bool ProgramExplorer::Impl::evalNode(const ExpressionInfo& info, int index)
+{
+    const cond::Node& node = info.expression->at(index);
+    const NodeInfo& n = info.nodes[static_cast<std::size_t>(index)];
+    const auto u = [](int i) { return static_cast<std::size_t>(i); };
+    switch (n.role) {
+    case NodeRole::Literal: return upper(node.text) == "TRUE";
+    case NodeRole::BoolRead: {
+        if (activeGrafcet && !propertyPhase) {
+            auto own = activeGrafcet->ownOutput.find(upper(node.text));
+            if (own != activeGrafcet->ownOutput.end())
+                return work[u(layout.outputs + own->second)] != 0;
+        }
+        return readBool(n.slot);
+    }
+    case NodeRole::Token: return work[u(layout.tokens + n.index)] != 0;
+    case NodeRole::Step: {
+        const int i = activeGrafcet ? activeGrafcet->stepIndex(n.index) : -1;
+        return i >= 0 && work[u(layout.x + i)] != 0;
+    }
+    case NodeRole::Duration: {
+        if (!activeGrafcet || n.index < 0)
+            return false;
+        const int i = activeGrafcet->stepIndex(node.number);
+        return i >= 0 && work[u(layout.x + i)] != 0 && timerElapsed(n.index);
+    }
+    case NodeRole::Complete: return work[u(layout.complete)] != 0;
+    case NodeRole::Edge: {
+        if (!firstEvolution || n.slot < 0)
+            return false;
+        const std::string name = upper(info.expression->at(node.operand).text);
+        bool now = false;
+        if (activeGrafcet && activeGrafcet->ownOutput.count(name))
+            now = work[u(layout.outputs + activeGrafcet->ownOutput.at(name))] != 0;
+        else
+            now = readBool(n.slot);
+        const int edge = slots[u(n.slot)].edge;
+        const bool before = edge >= 0 && work[u(layout.prev + edge)] != 0;
+        return node.unaryOp == cond::UnaryOp::RisingEdge ? now && !before : !now && before;
+    }
+    case NodeRole::InStep: return n.index >= 0 && newStep == n.index;
+    case NodeRole::NestedStep: {
+        if (n.step < 0 || newStep != n.step || work[2] != 0)
+            return false;
+        const CompiledStep& step = steps[u(n.step)];
+        if (step.grafcet < 0)
+            return false;
+        const int i = grafcets[u(step.grafcet)].stepIndex(n.index);
+        return i >= 0 && work[u(layout.x + i)] != 0;
+    }
+    case NodeRole::Exact:
+        if (n.slot >= 0 && slots[u(n.slot)].cls == SlotClass::FreeNumber && slots[u(n.slot)].representatives.size() <= 64)
+            return testNumber(info, n);
+        return cond::isTrue(cond::evaluate(*n.sub, [&](int leaf) -> cond::Value {
+            const cond::Node& variable = info.expression->at(leaf);
+            return readNumber(slotOf(variable.text));
+        }));
+    case NodeRole::Opaque: {
+        auto cached = opaqueCache.find(n.text);
+        if (cached != opaqueCache.end())
+            return cached->second != n.negated;
+        const bool value = choose(Decision::Kind::Opaque, -1);
+        opaqueCache.emplace(n.text, value);
+        return value != n.negated;
+    }
+    case NodeRole::Logical: {
+        if (node.kind == cond::NodeKind::Unary)
+            return !evalNode(info, node.operand);
+        using B = cond::BinaryOp;
+        const bool left = evalNode(info, node.left);
+        switch (node.binaryOp) {
+        case B::And: return left && evalNode(info, node.right);
+        case B::Or: return left || evalNode(info, node.right);
+        case B::Implies: return !left || evalNode(info, node.right);
+        case B::Xor:
+        case B::NotEqual: return left != evalNode(info, node.right);
+        case B::Equal: return left == evalNode(info, node.right);
+        default: return false;
+        }
+    }
+    case NodeRole::Other: return false;
+    }
+    return false;
+}
+
+// A TON's state: abstract 0 stopped, 1 running, 2 elapsed; exact: the runs
+// with IN TRUE so far, up to timerRuns.
+int ProgramExplorer::Impl::timerState(int timer) const
+{
+    const auto at = static_cast<std::size_t>(layout.timers + 2 * timer);
+    return static_cast<unsigned char>(work[at]) | (static_cast<unsigned char>(work[at + 1]) << 8);
+}
+
+void ProgramExplorer::Impl::setTimerState(int timer, int value)
+{
+    const auto at = static_cast<std::size_t>(layout.timers + 2 * timer);
+    work[at] = static_cast<char>(value & 0xFF);
+    work[at + 1] = static_cast<char>((value >> 8) & 0xFF);
+}
+
+// The TON run before the first evolution, IN := Xn as the previous call left it.
+void ProgramExplorer::Impl::runTimer(const CompiledGrafcet& g, int timer, bool in)
+{
+    const auto t = static_cast<std::size_t>(timer);
+    const int state = timerState(timer);
+    if (!in)
+        setTimerState(timer, 0);
+    else if (options.exactTime)
+        setTimerState(timer, std::min(state + 1, g.timerRuns[t]));
+    else if (state == 0)
+        setTimerState(timer, 1);
+    else if (state == 1 && g.timerShort[t])
+        setTimerState(timer, 2);
+    timerCache[t] = -1;
+}
+
+bool ProgramExplorer::Impl::timerElapsed(int timer)
+{
+    const auto t = static_cast<std::size_t>(timer);
+    const int state = timerState(timer);
+    if (options.exactTime)
+        return state >= activeGrafcet->timerRuns[t];
+    if (state == 2)
+        return true;
+    if (state != 1 || activeGrafcet->timerShort[t])
+        return false;
+    if (timerCache[t] < 0) {
+        timerCache[t] = choose(Decision::Kind::Timer, timer) ? 1 : 0;
+        if (timerCache[t])
+            setTimerState(timer, 2);
+    }
+    return timerCache[t] != 0;
+}
+
+void ProgramExplorer::Impl::noteActive(const CompiledStep& step)
+{
+    const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
+    std::vector<int>& seen = result.activeNestedSteps[step.source->id];
+    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
+        if (work[static_cast<std::size_t>(layout.x) + i] && std::find(seen.begin(), seen.end(), g.numbers[i]) == seen.end())
+            seen.push_back(g.numbers[i]);
+    }
+}
+
+void ProgramExplorer::Impl::runStored(const CompiledStep& step, int stepIndex, const std::vector<CompiledAction>& actions,
+                                      ScanOutcome& outcome)
+{
+    for (const CompiledAction& action : actions) {
+        const cond::ActionForm form = action.source->parsed.action.form;
+        const bool value = form == cond::ActionForm::Set ? true
+            : form == cond::ActionForm::Reset            ? false
+                                                         : (action.value && eval(*action.value, -1));
+        if (action.complete) {
+            work[static_cast<std::size_t>(layout.complete)] = value ? 1 : 0;
+            continue;
+        }
+        const Slot& slot = slots[static_cast<std::size_t>(action.slot)];
+        auto previous = writes.find(action.slot);
+        if (previous != writes.end() && previous->second.first != stepIndex && previous->second.second != value) {
+            const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
+            Event race;
+            race.kind = EventKind::Race;
+            race.stepId = step.source->id;
+            const int a = g.numbers[static_cast<std::size_t>(previous->second.first)];
+            const int b = g.numbers[static_cast<std::size_t>(stepIndex)];
+            race.numbers = {std::min(a, b), std::max(a, b)};
+            race.variable = slot.name;
+            outcome.events.push_back(race);
+        }
+        writes[action.slot] = {stepIndex, value};
+        work[static_cast<std::size_t>(layout.bools + slot.stateBit)] = value ? 1 : 0;
+    }
+}
+
+void ProgramExplorer::Impl::computeOutputs(const CompiledGrafcet& g)
+{
+    const NestedGrafcet& nested = *g.source;
+    std::vector<char> values(nested.outputs.size(), 0);
+    bool complete = work[static_cast<std::size_t>(layout.complete)] != 0;
+    for (std::size_t o = 0; o < nested.outputs.size(); ++o) {
+        bool value = false;
+        for (const ContinuousOutput::Driver& driver : nested.outputs[o].drivers) {
+            const int i = g.stepIndex(driver.step);
+            if (i < 0 || !work[static_cast<std::size_t>(layout.x + i)])
+                continue;
+            const ExpressionInfo* condition
+                = g.continuous[static_cast<std::size_t>(i)][static_cast<std::size_t>(driver.action)];
+            const NestedAction& action = nested.steps[static_cast<std::size_t>(i)].continuous[static_cast<std::size_t>(driver.action)];
+            if (!action.usable)
+                continue;
+            if (!condition || eval(*condition, -1)) {
+                value = true;
+                break;
+            }
+        }
+        if (nested.outputs[o].isComplete)
+            complete = value;
+        else
+            values[o] = value;
+    }
+    for (std::size_t o = 0; o < values.size(); ++o)
+        work[static_cast<std::size_t>(layout.outputs) + o] = values[o];
+    work[static_cast<std::size_t>(layout.complete)] = complete ? 1 : 0;
+}
+
+void ProgramExplorer::Impl::initializationCall(const CompiledStep& step)
+{
+    const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
+    ScanOutcome ignored;
+    for (std::size_t i = 0; i < g.numbers.size(); ++i)
+        work[static_cast<std::size_t>(layout.x) + i] = g.initial[i] ? 1 : 0;
+    work[static_cast<std::size_t>(layout.complete)] = 0;
+    for (std::size_t t = 0; t < g.timerStep.size(); ++t)
+        setTimerState(static_cast<int>(t), 0);
+    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
+        if (g.initial[i])
+            runStored(step, static_cast<int>(i), g.onActivation[i], ignored);
+    }
+    firstEvolution = false;
+    computeOutputs(g);
+    noteActive(step);
+}
+
+bool ProgramExplorer::Impl::evolve(const CompiledStep& step, bool first, ScanOutcome& outcome)
+{
+    const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
+    const auto u = [](int i) { return static_cast<std::size_t>(i); };
+    firstEvolution = first;
+    std::vector<char> fires(g.transitions.size(), 0);
+    bool fired = false;
+    for (std::size_t t = 0; t < g.transitions.size(); ++t) {
+        const CompiledNestedTransition& transition = g.transitions[t];
+        if (!transition.receptivity)
+            continue;
+        const bool enabled = std::all_of(transition.upstream.begin(), transition.upstream.end(),
+                                         [&](int i) { return i >= 0 && work[u(layout.x + i)] != 0; });
+        if (enabled && eval(*transition.receptivity, -1)) {
+            fires[t] = 1;
+            fired = true;
+        }
+    }
+    if (!fired)
+        return false;
+    std::vector<int>& firedSeen = result.firedNestedTransitions[step.source->id];
+    std::map<int, int> firstFiringFrom; // upstream step index -> transition
+    std::vector<char> deactivated(g.numbers.size(), 0), activated(g.numbers.size(), 0);
+    for (std::size_t t = 0; t < g.transitions.size(); ++t) {
+        if (!fires[t])
+            continue;
+        const int number = g.transitions[t].source->number;
+        if (std::find(firedSeen.begin(), firedSeen.end(), number) == firedSeen.end())
+            firedSeen.push_back(number);
+        for (int i : g.transitions[t].upstream) {
+            auto [it, inserted] = firstFiringFrom.emplace(i, static_cast<int>(t));
+            if (!inserted) {
+                Event together;
+                together.kind = EventKind::SimultaneousBranches;
+                together.stepId = step.source->id;
+                together.numbers = {g.numbers[u(i)], g.transitions[u(it->second)].source->number, number};
+                outcome.events.push_back(together);
+            }
+            deactivated[u(i)] = 1;
+        }
+        for (int i : g.transitions[t].downstream)
+            activated[u(i)] = 1;
+    }
+    std::vector<char> left(g.numbers.size(), 0), entered(g.numbers.size(), 0);
+    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
+        const bool active = work[u(layout.x) + i] != 0;
+        left[i] = deactivated[i] && !activated[i];
+        entered[i] = activated[i] && !active;
+        if (activated[i] && active && !deactivated[i]) {
+            Event unsafe;
+            unsafe.kind = EventKind::UnsafeStep;
+            unsafe.stepId = step.source->id;
+            unsafe.numbers = {g.numbers[i]};
+            outcome.events.push_back(unsafe);
+        }
+    }
+    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
+        char& x = work[u(layout.x) + i];
+        x = ((x && !left[i]) || entered[i]) ? 1 : 0;
+    }
+    noteActive(step);
+    firstEvolution = false;
+    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
+        if (left[i])
+            runStored(step, static_cast<int>(i), g.onDeactivation[i], outcome);
+    }
+    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
+        if (!entered[i])
+            continue;
+        runStored(step, static_cast<int>(i), g.onActivation[i], outcome);
+        for (int timer : g.timersOfStep[i]) {
+            setTimerState(timer, 0);
+            timerCache[u(timer)] = -1;
+        }
+    }
+    return true;
+}
+
+void ProgramExplorer::Impl::evolvingCall(const CompiledStep& step, ScanOutcome& outcome)
+{
+    const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
+    // The TONs run once, before the first evolution, with Xn as the previous call left it.
+    for (std::size_t t = 0; t < g.timerStep.size(); ++t) {
+        const int i = g.timerStep[t];
+        runTimer(g, static_cast<int>(t), i >= 0 && work[static_cast<std::size_t>(layout.x + i)] != 0);
+    }
+    const bool untilStable = g.source->rule == EvolutionRule::UntilStable;
+    int evolutions = 0;
+    bool fired = false;
+    do {
+        fired = evolve(step, evolutions == 0, outcome);
+        ++evolutions;
+    } while (untilStable && fired && evolutions < g.source->maxEvolutions);
+    if (untilStable && fired) {
+        Event unstable;
+        unstable.kind = EventKind::Unstable;
+        unstable.stepId = step.source->id;
+        outcome.events.push_back(unstable);
+    }
+    firstEvolution = false;
+    computeOutputs(g);
+}
+
+ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
+{
+    ScanOutcome outcome;
+    work = from;
+    std::fill(boolCache.begin(), boolCache.end(), -1);
+    std::fill(numberCache.begin(), numberCache.end(), -1);
+    std::fill(numberPossible.begin(), numberPossible.end(), 0);
+    std::fill(timerCache.begin(), timerCache.end(), -1);
+    opaqueCache.clear();
+    writes.clear();
+    propertyPhase = false;
+    activeGrafcet = nullptr;
+    const auto u = [](int i) { return static_cast<std::size_t>(i); };
+    const int active = stepIndexOf(work);
+    newStep = active;
+    if (active >= 0) {
+        const CompiledStep& step = steps[u(active)];
+        activeStep = &step;
+        bool complete = false;
+        if (step.nested) {
+            if (step.grafcet >= 0) {
+                activeGrafcet = &grafcets[u(step.grafcet)];
+                if (work[2]) {
+                    initializationCall(step);
+                    work[2] = 0;
+                    for (int t = 0; t < step.tokenCount; ++t)
+                        work[u(layout.tokens + step.firstToken + t)] = 0;
+                }
+                evolvingCall(step, outcome);
+                complete = work[u(layout.complete)] != 0;
+            } else {
+                if (work[2]) {
+                    work[2] = 0;
+                    for (int t = 0; t < step.tokenCount; ++t)
+                        work[u(layout.tokens + step.firstToken + t)] = 0;
+                }
+                complete = step.freeComplete ? choose(Decision::Kind::Complete, active) : true;
+            }
+            outcome.completeTrue = complete;
+        }
+        firstEvolution = false;
+        activeGrafcet = nullptr; // the GEMMA conditions read the globals, not the FB's outputs
+        for (const CompiledTransition& transition : step.transitions) {
+            if (transition.condition && (!transition.source->waitsForComplete || complete)
+                && eval(*transition.condition, -1)) {
+                newStep = transition.target;
+                setStepIndex(work, newStep);
+                work[2] = 1;
+                outcome.firedTransition = transition.globalIndex;
+                outcome.entersD1 = newStep >= 0 && newStep == d1Step;
+                break;
+            }
+        }
+    }
+    // After END_CASE: the continuous outputs, gated by the state and Entry.
+    const bool entry = work[2] != 0;
+    for (const OutputWrite& write : outputWrites) {
+        bool value = false;
+        for (const OutputWrite::Driver& driver : write.drivers) {
+            if (newStep == driver.step && !entry && newStep == active)
+                value = value || work[u(layout.outputs + driver.output)] != 0;
+        }
+        const Slot& slot = slots[u(write.slot)];
+        if (slot.stateBit >= 0)
+            work[u(layout.bools + slot.stateBit)] = value ? 1 : 0;
+    }
+    // The token updates, with the new State.
+    if (newStep >= 0) {
+        const CompiledStep& step = steps[u(newStep)];
+        for (int t = step.firstToken; t < step.firstToken + step.tokenCount; ++t) {
+            const CompiledToken& token = tokens[u(t)];
+            // A token already captured stays so: its variable need not be read.
+            if (token.slot >= 0 && !work[u(layout.tokens + t)] && readBool(token.slot) != token.normallyClosed)
+                work[u(layout.tokens + t)] = 1;
+        }
+    }
+    // What the user's properties and the D1 rule read: the end of the scan.
+    propertyPhase = true;
+    if (outcome.entersD1) {
+        for (int s : outputsToCheckOnD1) {
+            if (readBool(s)) {
+                Event output;
+                output.kind = EventKind::OutputOnD1;
+                output.variable = slots[u(s)].name;
+                outcome.events.push_back(output);
+            }
+        }
+    }
+    for (std::size_t p = 0; p < propertyInfos.size(); ++p) {
+        if (!propertyInfos[p])
+            continue;
+        const bool holds = eval(*propertyInfos[p], -1);
+        const bool violated = parsedProperties[p].kind == PropertyKind::Never ? holds : !holds;
+        if (violated) {
+            Event event;
+            event.kind = EventKind::PropertyViolated;
+            event.property = static_cast<int>(p);
+            outcome.events.push_back(event);
+        }
+    }
+    // The edge memories: every variable read under an edge, as the scan ends.
+    for (std::size_t e = 0; e < edgeSlots.size(); ++e)
+        work[u(layout.prev) + e] = readBool(edgeSlots[e]) ? 1 : 0;
+    // Normal form: what is never read again is cleared.
+    const bool leftStep = newStep != active;
+    if (leftStep || newStep < 0 || steps[u(newStep)].grafcet < 0) {
+        std::fill(work.begin() + layout.x, work.begin() + layout.bools, '\0');
+    }
+    if (newStep >= 0 && steps[u(newStep)].nested && work[2]) {
+        const CompiledStep& step = steps[u(newStep)];
+        for (int t = 0; t < step.tokenCount; ++t)
+            work[u(layout.tokens + step.firstToken + t)] = 0;
+    }
+    for (const CompiledStep& step : steps) {
+        if (!step.nested || &step == (newStep >= 0 ? &steps[u(newStep)] : nullptr))
+            continue;
+        for (int t = 0; t < step.tokenCount; ++t)
+            work[u(layout.tokens + step.firstToken + t)] = 0;
+    }
+    activeGrafcet = nullptr;
+    propertyPhase = false;
+    to = work;
+    return outcome;
+}
+
+// ---------------------------------------------------------------------------------------
+// Exploring
+
+bool ProgramExplorer::Impl::outOfBudget()
+{
+    if (options.cancelled && options.cancelled()) {
+        result.cancelled = true;
+        return true;
+    }
+    return statesByIndex.size() >= options.maxStates || scansRun >= options.maxScansRun
+        || std::chrono::steady_clock::now() > options.deadline;
+}
+
+namespace {
+
+std::string eventKey(const Event& event)
+{
+    std::string key = std::to_string(static_cast<int>(event.kind)) + "|" + event.stepId + "|" + event.variable + "|"
+        + std::to_string(event.property);
+    for (int n : event.numbers)
+        key += "," + std::to_string(n);
+    return key;
+}
+
+} // namespace
+
+// The first state that shows an event is kept (the shortest run); among its
+// scans, one where the GEMMA layer stays put is preferred, so the replay ends
+// where the event is rather than in the step the scan leaves for.
+void ProgramExplorer::Impl::addEvent(Event event, std::size_t state, bool gemmaFired)
+{
+    const std::string key = eventKey(event);
+    auto known = eventAt.find(key);
+    if (known != eventAt.end()) {
+        Event& kept = result.events[known->second.first];
+        if (kept.witness.state == state && known->second.second && !gemmaFired) {
+            kept.witness.answers = chooser.answers();
+            known->second.second = false;
+        }
+        return;
+    }
+    eventKeys.insert(key);
+    event.witness.state = state;
+    event.witness.answers = chooser.answers();
+    eventAt.emplace(key, std::make_pair(result.events.size(), gemmaFired));
+    result.events.push_back(std::move(event));
+}
+
+void ProgramExplorer::Impl::explore()
+{
+    started = std::chrono::steady_clock::now();
+    const State start = initialState();
+    auto inserted = index.emplace(start, 0);
+    statesByIndex.push_back(&inserted.first->first);
+    parent.push_back(0);
+    depth.push_back(0);
+    edges.emplace_back();
+    std::vector<bool> reached(steps.size(), false);
+    std::vector<bool> fired(transitionIds.size(), false);
+    for (std::size_t next = 0; next < statesByIndex.size(); ++next) {
+        if ((next & 63) == 0 && outOfBudget()) {
+            result.exhaustive = false;
+            break;
+        }
+        const State from = *statesByIndex[next];
+        if (const int s = stepIndexOf(from); s >= 0)
+            reached[static_cast<std::size_t>(s)] = true;
+        chooser.reset();
+        std::size_t leaves = 0;
+        do {
+            ++scansRun;
+            if ((++leaves & 1023) == 0 && outOfBudget())
+                break;
+            chooser.restart(nullptr);
+            State to;
+            ScanOutcome outcome = scan(from, to);
+            auto [it, isNew] = index.emplace(std::move(to), static_cast<std::uint32_t>(statesByIndex.size()));
+            if (isNew) {
+                statesByIndex.push_back(&it->first);
+                parent.push_back(static_cast<std::uint32_t>(next));
+                depth.push_back(depth[next] + 1);
+                edges.emplace_back();
+                result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
+            }
+            if (outcome.firedTransition >= 0)
+                fired[static_cast<std::size_t>(outcome.firedTransition)] = true;
+            const int active = stepIndexOf(from);
+            if (active >= 0 && outcome.completeTrue && steps[static_cast<std::size_t>(active)].grafcet >= 0)
+                result.completeSeen[steps[static_cast<std::size_t>(active)].source->id] = true;
+            Edge edge{it->second, outcome.firedTransition, outcome.completeTrue, outcome.entersD1};
+            std::vector<Edge>& out = edges[next];
+            if (std::none_of(out.begin(), out.end(), [&](const Edge& e) {
+                    return e.to == edge.to && e.fired == edge.fired && e.completeTrue == edge.completeTrue;
+                }))
+                out.push_back(edge);
+            for (Event& event : outcome.events)
+                addEvent(std::move(event), next, outcome.firedTransition >= 0);
+        } while (chooser.advance());
+        if (result.cancelled || ((leaves & 1023) == 0 && leaves > 0 && outOfBudget())) {
+            result.exhaustive = false;
+            break;
+        }
+    }
+    result.states = statesByIndex.size();
+    for (const std::vector<Edge>& out : edges)
+        result.scans += out.size();
+    for (std::size_t s = 0; s < steps.size(); ++s) {
+        if (reached[s])
+            result.reachableSteps.push_back(steps[s].source->id);
+    }
+    for (std::size_t t = 0; t < transitionIds.size(); ++t) {
+        if (fired[t])
+            result.fireableTransitions.push_back(transitionIds[t]);
+    }
+    for (auto& [id, list] : result.activeNestedSteps)
+        std::sort(list.begin(), list.end());
+    for (auto& [id, list] : result.firedNestedTransitions)
+        std::sort(list.begin(), list.end());
+    if (result.exhaustive)
+        analyseGraph();
+}
+
+// The graph properties: from which states of a step something can still happen.
+void ProgramExplorer::Impl::analyseGraph()
+{
+    const std::size_t n = statesByIndex.size();
+    std::vector<std::vector<std::uint32_t>> reverse(n);
+    for (std::size_t s = 0; s < n; ++s) {
+        for (const Edge& e : edges[s])
+            reverse[e.to].push_back(static_cast<std::uint32_t>(s));
+    }
+    auto stepOf = [&](std::size_t s) { return stepIndexOf(*statesByIndex[s]); };
+    // Backward closure from the states with a marked edge, along edges that satisfy `keep`.
+    auto canReach = [&](auto marked, auto keep) {
+        std::vector<char> good(n, 0);
+        std::deque<std::uint32_t> queue;
+        for (std::size_t s = 0; s < n; ++s) {
+            for (const Edge& e : edges[s]) {
+                if (marked(s, e)) {
+                    good[s] = 1;
+                    queue.push_back(static_cast<std::uint32_t>(s));
+                    break;
+                }
+            }
+        }
+        while (!queue.empty()) {
+            const std::uint32_t s = queue.front();
+            queue.pop_front();
+            for (std::uint32_t p : reverse[s]) {
+                if (good[p])
+                    continue;
+                const bool along = std::any_of(edges[p].begin(), edges[p].end(),
+                                               [&](const Edge& e) { return e.to == s && keep(p, e); });
+                if (along) {
+                    good[p] = 1;
+                    queue.push_back(p);
+                }
+            }
+        }
+        return good;
+    };
+    auto staysInStep = [&](std::size_t s, const Edge& e) { return e.fired < 0 && stepOf(e.to) == stepOf(s); };
+    auto report = [&](EventKind kind, std::size_t s) {
+        Event event;
+        event.kind = kind;
+        event.stepId = steps[static_cast<std::size_t>(stepOf(s))].source->id;
+        event.stateOnly = true;
+        if (!eventKeys.insert(eventKey(event)).second)
+            return;
+        event.witness.state = s;
+        result.events.push_back(std::move(event));
+    };
+    const std::vector<char> canLeave
+        = canReach([&](std::size_t s, const Edge& e) { return e.fired >= 0 && stepOf(s) >= 0; }, staysInStep);
+    std::vector<bool> stuckStep(steps.size(), false);
+    for (std::size_t s = 0; s < n; ++s) {
+        if (stepOf(s) >= 0 && !canLeave[s] && !steps[static_cast<std::size_t>(stepOf(s))].transitions.empty()) {
+            stuckStep[static_cast<std::size_t>(stepOf(s))] = true;
+            report(EventKind::Stuck, s);
+        }
+    }
+    const std::vector<char> canComplete = canReach(
+        [&](std::size_t s, const Edge& e) { return e.completeTrue && stepOf(s) >= 0; }, staysInStep);
+    for (std::size_t s = 0; s < n; ++s) {
+        const int step = stepOf(s);
+        if (step < 0 || canComplete[s])
+            continue;
+        const CompiledStep& compiled = steps[static_cast<std::size_t>(step)];
+        const bool waits = std::any_of(compiled.transitions.begin(), compiled.transitions.end(),
+                                       [](const CompiledTransition& t) {
+                                           return t.source->waitsForComplete && t.condition != nullptr;
+                                       });
+        if (compiled.grafcet >= 0 && compiled.source->type == StepType::Macro && waits)
+            report(EventKind::StuckWithoutComplete, s);
+    }
+    const std::vector<char> canReturn = canReach(
+        [&](std::size_t, const Edge& e) { return stepOf(e.to) == initialStep; }, [](std::size_t, const Edge&) { return true; });
+    for (std::size_t s = 0; s < n; ++s) {
+        const int step = stepOf(s);
+        if (step >= 0 && step != initialStep && !canReturn[s] && !stuckStep[static_cast<std::size_t>(step)])
+            report(EventKind::NoReturn, s);
+    }
+    if (d1Step >= 0) {
+        for (std::size_t s = 0; s < n; ++s) {
+            const int step = stepOf(s);
+            if (step < 0 || steps[static_cast<std::size_t>(step)].source->id[0] != 'F')
+                continue;
+            if (std::none_of(edges[s].begin(), edges[s].end(), [](const Edge& e) { return e.entersD1; }))
+                report(EventKind::NoEmergencyStop, s);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Counterexamples
+
+std::vector<int> ProgramExplorer::Impl::answersTo(std::size_t from, std::size_t to) const
+{
+    auto* self = const_cast<Impl*>(this);
+    self->chooser.reset();
+    do {
+        self->chooser.restart(nullptr);
+        State next;
+        self->scan(*statesByIndex[from], next);
+        auto it = index.find(next);
+        if (it != index.end() && it->second == to)
+            return chooser.answers();
+    } while (self->chooser.advance());
+    return {};
+}
+
+std::vector<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::pathTo(std::size_t state) const
+{
+    std::vector<std::size_t> chain;
+    for (std::size_t s = state; s != 0; s = parent[s])
+        chain.push_back(s);
+    std::reverse(chain.begin(), chain.end());
+    std::vector<std::pair<std::size_t, std::vector<int>>> path;
+    std::size_t from = 0;
+    for (std::size_t s : chain) {
+        path.emplace_back(from, answersTo(from, s));
+        from = s;
+    }
+    return path;
+}
+
+namespace {
+
+std::string valueText(const cond::Value& value)
+{
+    if (std::holds_alternative<bool>(value))
+        return std::get<bool>(value) ? "TRUE" : "FALSE";
+    return cond::formatValue(value);
+}
+
+} // namespace
+
+ProgramExplorer::ProgramExplorer(const Model& model, Options options)
+    : m_impl(std::make_unique<Impl>(model, std::move(options)))
+{
+}
+
+ProgramExplorer::~ProgramExplorer() = default;
+
+const Exploration& ProgramExplorer::run()
+{
+    m_impl->explore();
+    return m_impl->result;
+}
+
+const Exploration& ProgramExplorer::result() const
+{
+    return m_impl->result;
+}
+
+Counterexample ProgramExplorer::counterexample(const Event& event, const std::string& title) const
+{
+    Impl& impl = *m_impl;
+    auto path = impl.pathTo(event.witness.state);
+    if (!event.stateOnly)
+        path.emplace_back(event.witness.state, event.witness.answers);
+    std::ostringstream text;
+    text << "# " << title << "\n";
+    std::map<int, std::string> current; // slot -> value text the simulator holds
+    for (std::size_t i = 0; i < impl.slots.size(); ++i)
+        current[static_cast<int>(i)] = valueText(impl.slots[i].initial);
+    std::int64_t scan = 0;
+    State last;
+    for (const auto& [from, answers] : path) {
+        ++scan;
+        impl.chooser.restart(&answers);
+        State next;
+        impl.scan(*impl.statesByIndex[from], next);
+        last = next;
+        std::vector<std::string> sets;
+        std::vector<Decision> decisions = impl.chooser.decisions;
+        for (Decision& d : decisions) {
+            if (d.kind != Decision::Kind::NumberTest)
+                continue;
+            // The value: the first representative the comparisons left.
+            const std::uint64_t possible = impl.numberPossible[static_cast<std::size_t>(d.slot)];
+            d.kind = Decision::Kind::Number;
+            d.value = impl.numberCache[static_cast<std::size_t>(d.slot)] >= 0
+                ? impl.numberCache[static_cast<std::size_t>(d.slot)]
+                : std::countr_zero(possible);
+        }
+        for (const Decision& d : decisions) {
+            if (d.kind == Decision::Kind::Bool || d.kind == Decision::Kind::Number) {
+                const Slot& slot = impl.slots[static_cast<std::size_t>(d.slot)];
+                if (slot.kind != VariableKind::Input)
+                    continue; // abstracted: the replay shows whether the run holds
+                const std::string value = d.kind == Decision::Kind::Bool
+                    ? (d.value ? "TRUE" : "FALSE")
+                    : valueText(slot.representatives[static_cast<std::size_t>(d.value)]);
+                if (current[d.slot] != value) {
+                    current[d.slot] = value;
+                    sets.push_back(slot.name + " = " + value);
+                }
+            } else if (d.kind == Decision::Kind::Complete) {
+                text << "at " << scan << ": set complete " << impl.steps[static_cast<std::size_t>(d.slot)].source->id
+                     << " = " << (d.value ? "TRUE" : "FALSE") << "\n";
+            }
+        }
+        if (!sets.empty()) {
+            text << "at " << scan << ": set ";
+            for (std::size_t i = 0; i < sets.size(); ++i)
+                text << (i ? ", " : "") << sets[i];
+            text << "\n";
+        }
+    }
+    impl.chooser.restart(nullptr);
+    impl.chooser.reset();
+    const State& end = event.stateOnly ? *impl.statesByIndex[event.witness.state] : last;
+    const int step = stepIndexOf(end);
+    if (scan > 0 && step >= 0) {
+        const CompiledStep& compiled = impl.steps[static_cast<std::size_t>(step)];
+        text << "at " << scan << ": expect step " << compiled.source->id << "\n";
+        if (compiled.grafcet >= 0 && end[2] == 0) {
+            const CompiledGrafcet& g = impl.grafcets[static_cast<std::size_t>(compiled.grafcet)];
+            std::string active;
+            for (std::size_t i = 0; i < g.numbers.size(); ++i) {
+                if (end[static_cast<std::size_t>(impl.layout.x) + i])
+                    active += (active.empty() ? "" : ", ") + std::to_string(g.numbers[i]);
+            }
+            text << "at " << scan << ": expect nested " << compiled.source->id << " steps "
+                 << (active.empty() ? "none" : active) << "\n";
+        }
+    }
+    Counterexample out;
+    out.text = text.str();
+    ScenarioParseResult parsed = parseScenario(out.text);
+    out.scenario = parsed.scenario;
+    out.scans = scan;
+    if (!parsed.ok() || scan == 0)
+        return out;
+    Simulator simulator(impl.model);
+    if (!validateScenario(out.scenario, simulator).empty())
+        return out;
+    const ScenarioRunResult run = runScenario(out.scenario, simulator, scan);
+    out.confirmed = run.passed();
+    if (out.confirmed && event.kind == EventKind::PropertyViolated && event.property >= 0) {
+        // The property itself, read on the simulator after the last scan.
+        const ParsedProperty& property = impl.parsedProperties[static_cast<std::size_t>(event.property)];
+        const cond::Expression& body = property.expression;
+        const cond::Value value = cond::evaluate(body, [&](int node) -> cond::Value {
+            const cond::Node& n = body.at(node);
+            switch (n.kind) {
+            case cond::NodeKind::InStep: return simulator.activeStepId() == propertyStepId(impl.model, n.text);
+            case cond::NodeKind::NestedStepActivity: {
+                const std::string id = propertyStepId(impl.model, n.text);
+                if (simulator.activeStepId() != id || simulator.entry())
+                    return false;
+                const std::vector<int> active = simulator.activeNestedSteps(id);
+                return std::find(active.begin(), active.end(), n.number) != active.end();
+            }
+            default: return simulator.variable(n.text);
+            }
+        });
+        const bool holds = cond::isTrue(value);
+        out.confirmed = property.kind == PropertyKind::Never ? holds : !holds;
+    }
+    return out;
+}
+
+} // namespace core::explore

@@ -1,0 +1,132 @@
+#pragma once
+
+// Explores the whole program as generated, both layers at once
+// (docs/verification.md, "Both layers"): the GEMMA state, Entry and the
+// tokens, the situation of the active step's nested GRAFCET with its
+// function block's outputs and its TONs, the stored BOOL variables and the
+// edge memories. Inputs are free at every scan.
+//
+// One scan from a state is run by the same steps the simulator takes
+// (core/simulation/simulator.cpp, nestedengine.cpp), with every value the
+// scan reads and the program does not determine (an input, a numeric
+// variable, a TON that may or may not have elapsed, the Complete of a step
+// without GRAFCET) asked of a chooser. The chooser enumerates its answers
+// depth first, so the scans of a state are exactly the distinct ways its
+// inputs can go, and inputs the scan never reads do not multiply them.
+//
+// What is abstracted (Exploration::abstractions says which apply):
+// - numeric variables the actions write: any value of their type when read;
+// - numeric inputs: one value per combination of the comparisons with
+//   constants on them; any other comparison (A + B > C) is a free BOOL;
+// - a TON whose duration is longer than a cycle may or may not have elapsed
+//   from its second run on; once elapsed it stays so while its step stays.
+// Every abstraction only adds behaviour: a "never" claim is never wrong.
+// Inactive nested GRAFCETs are not kept: the Initialization call of their
+// step's entry scan starts them afresh.
+
+#include "core/verification/verification.h"
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace core {
+
+class Model;
+
+namespace explore {
+
+struct Options {
+    // Complete of the macro/enclosing steps without GRAFCET (Free when not listed).
+    std::map<std::string, CompleteAssumption> complete;
+    // Property texts (core/verification/property.h), checked at the end of
+    // every scan; one that does not pass checkProperty is skipped.
+    std::vector<std::string> properties;
+    // Time counted in scans: each TON elapses exactly when the PLC's would
+    // (more states), instead of "may or may not have elapsed".
+    bool exactTime = false;
+    std::size_t maxStates = 1'000'000;
+    // Scans run (each way the inputs of a state go): a budget of work that,
+    // unlike the deadline, ends at the same point on every machine.
+    std::size_t maxScansRun = SIZE_MAX;
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    std::function<bool()> cancelled;
+};
+
+// A scan that shows something: the state it starts from (an index into the
+// explored states) and the answers of its chooser.
+struct Witness {
+    std::size_t state = 0;
+    std::vector<int> answers;
+};
+
+enum class EventKind {
+    UnsafeStep,           // stepId, numbers: {the nested step}
+    Unstable,             // stepId
+    SimultaneousBranches, // stepId, numbers: {upstream step, transition, transition}
+    Race,                 // stepId, numbers: {step, step}, variable
+    OutputOnD1,           // variable: an output still TRUE in the scan that enters D1
+    PropertyViolated,     // property: its index in Options::properties
+    StuckWithoutComplete, // stepId: from the witness state, Complete never becomes TRUE while the step stays
+    Stuck,                // stepId: from the witness state, no transition out of the step can ever fire
+    NoReturn,             // stepId: from the witness state, the initial step never becomes active again
+    NoEmergencyStop,      // stepId: in the witness state no scan enters D1
+};
+
+struct Event {
+    EventKind kind = EventKind::UnsafeStep;
+    std::string stepId;
+    std::vector<int> numbers;
+    std::string variable;
+    int property = -1;
+    Witness witness;
+    bool stateOnly = false; // the witness is the state itself (graph properties): no scan from it is part of it
+};
+
+struct Exploration {
+    bool exhaustive = true; // false: the state or time budget ran out (or cancelled)
+    bool cancelled = false;
+    std::size_t states = 0;
+    std::size_t scans = 0;   // distinct (state, successor) pairs
+    std::size_t maxDepth = 0;
+    std::vector<std::string> reachableSteps;      // active at the start of some reachable scan, state order
+    std::vector<std::string> fireableTransitions; // fire in some reachable scan, program order
+    std::map<std::string, std::vector<int>> activeNestedSteps;  // active after some evolution or Initialization call
+    std::map<std::string, std::vector<int>> firedNestedTransitions;
+    std::map<std::string, bool> completeSeen;     // per GRAFCET step: Complete TRUE after some call
+    std::vector<Event> events;                    // the first witness of each distinct event
+    std::vector<std::string> abstractions;        // English, one line each
+    std::vector<bool> propertyChecked;            // per Options::properties: it passed checkProperty
+};
+
+// Runs the exploration once, then writes counterexamples of its witnesses.
+class ProgramExplorer {
+public:
+    ProgramExplorer(const Model& model, Options options);
+    ~ProgramExplorer();
+    ProgramExplorer(const ProgramExplorer&) = delete;
+    ProgramExplorer& operator=(const ProgramExplorer&) = delete;
+
+    const Exploration& run();
+    const Exploration& result() const;
+
+    // The run from reset to the witness's state, then its scan (unless
+    // stateOnly), as a scenario: inputs set at the scans that read them,
+    // `expect step` / `expect nested` at the last scan. `title` is the
+    // leading comment. Replayed in the simulator to confirm it; for a
+    // property, the property is also evaluated on the replay's last scan.
+    Counterexample counterexample(const Event& event, const std::string& title) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace explore
+} // namespace core
