@@ -166,8 +166,16 @@ void BothLayers::replaceGemmaFindings()
                                          code::kStuck, code::kNoEmergencyStop};
     std::vector<VerificationFinding> kept;
     for (VerificationFinding& f : m_result.findings) {
-        if (!replaced.count(f.code))
-            kept.push_back(std::move(f));
+        if (replaced.count(f.code))
+            continue;
+        // GV103 and GV104 are still decided on the GEMMA layer, where a
+        // nested GRAFCET's Complete is free: its run may not exist on both.
+        if (f.counterexample && !f.counterexample->confirmed) {
+            if (const std::size_t note = f.message.find(" (not confirmed:"); note != std::string::npos)
+                f.message.erase(note);
+            f.message += " (decided on the GEMMA layer with Complete free: the run does not replay on both layers)";
+        }
+        kept.push_back(std::move(f));
     }
     m_result.findings = std::move(kept);
     m_result.reachableSteps = e.reachableSteps;

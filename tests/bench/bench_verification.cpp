@@ -6,6 +6,7 @@
 // condition, 24 mixed operands per condition, and two conditions of about
 // 5,000 characters (which end with GV100 findings naming them).
 
+#include "core/formats/modelfiles.h"
 #include "core/verification/verification.h"
 
 #include "modelfactory.h"
@@ -34,4 +35,29 @@ TEST_CASE("Verification of comparison-heavy models", "[bench][verification]")
     BENCHMARK("verify 12 INT comparisons per condition") { return core::verifyModel(comparisons).findings.size(); };
     BENCHMARK("verify 24 mixed operands per condition") { return core::verifyModel(mixed).findings.size(); };
     BENCHMARK("verify 5,000-character conditions") { return core::verifyModel(huge).findings.size(); };
+}
+
+// Both layers (issue 19): the shipped example (four nested GRAFCETs, timers
+// abstracted, three properties; target 100 ms) and the stress model of six
+// nested GRAFCETs with three-way parallel sections, 20 stored BOOLs and
+// tokens (target 2 s within 1 GiB).
+TEST_CASE("Verification of both layers", "[bench][verification]")
+{
+    const core::LoadedModel example = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(example.ok());
+    core::VerificationOptions withProperties;
+    withProperties.properties = {"never ClampIn AND ClampOut", "always in D1 -> NOT (Spindle OR DrillDown)",
+                                 "never F1.X3 AND NOT DrillHigh"};
+    const core::Model stress = factory::bothLayersStressModel();
+    core::VerificationOptions unlimited;
+    unlimited.timeLimit = std::chrono::milliseconds(0);
+    const core::VerificationResult stressResult = core::verifyModel(stress, unlimited);
+    REQUIRE(stressResult.exhaustive);
+    REQUIRE(stressResult.programStates > 5000);
+
+    BENCHMARK("verify both layers: shipped example with 3 properties")
+    {
+        return core::verifyModel(*example.model, withProperties).findings.size();
+    };
+    BENCHMARK("verify both layers: stress model") { return core::verifyModel(stress, unlimited).findings.size(); };
 }

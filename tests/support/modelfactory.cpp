@@ -298,3 +298,99 @@ core::Model longGrafcetModel(int steps)
 }
 
 } // namespace factory
+
+namespace factory {
+
+namespace {
+
+// Fork 1 -> three branches of `length` steps -> join -> a Complete step -> back to 1.
+void addParallelGrafcet(core::Model& model, const std::string& stepId, int index, int length,
+                        std::vector<std::string>& memories)
+{
+    const std::string prefix = stepId + "_";
+    auto input = [&](const std::string& name) { return prefix + name; };
+    for (const char* name : {"Go", "Ack"})
+        require(model.addVariable(variable(input(name), core::IecType::Bool, "", "")));
+    for (int branch = 0; branch < 3; ++branch)
+        require(model.addVariable(variable(input("In" + std::to_string(branch)), core::IecType::Bool, "", "")));
+    const std::string output = prefix + "Move";
+    require(model.addVariable(variable(output, core::IecType::Bool, "", "")));
+    require(model.setVariableKind(output, core::VariableKind::Output));
+    require(model.addGrafcetStep(stepId, {1, true, "", {}}));
+    const int join = 2 + 3 * length;
+    std::vector<int> firsts, lasts;
+    for (int branch = 0; branch < 3; ++branch) {
+        for (int k = 0; k < length; ++k) {
+            const int number = 2 + branch * length + k;
+            std::vector<core::GrafcetAction> actions;
+            if (k == 0 && memories.size() < 18) {
+                const std::string memory = "Mem" + std::to_string(memories.size());
+                require(model.addVariable(variable(memory, core::IecType::Bool, "", "")));
+                require(model.setVariableKind(memory, core::VariableKind::Internal));
+                memories.push_back(memory);
+                actions.push_back({core::ActionTiming::OnActivation, "S " + memory});
+            }
+            if (k == length - 1)
+                actions.push_back({core::ActionTiming::Continuous, "N " + output + " IF " + input("Go")});
+            require(model.addGrafcetStep(stepId, {number, false, "", actions}));
+            if (k == 0)
+                firsts.push_back(number);
+            if (k == length - 1)
+                lasts.push_back(number);
+            if (k > 0)
+                require(model.addGrafcetTransition(
+                    stepId, {number - 1 + 100, {number - 1}, {number}, input("In" + std::to_string(branch))
+                                                                             + (k % 2 ? "" : " AND NOT " + input("Go"))}));
+        }
+    }
+    std::vector<core::GrafcetAction> joinActions{{core::ActionTiming::OnActivation, "S Complete"}};
+    for (std::size_t m = memories.size() >= 3 ? memories.size() - 3 : 0; m < memories.size(); ++m)
+        joinActions.push_back({core::ActionTiming::OnActivation, "R " + memories[m]});
+    require(model.addGrafcetStep(stepId, {join, false, "", joinActions}));
+    require(model.addGrafcetStep(stepId, {join + 1, false, "", {{core::ActionTiming::OnActivation, "R Complete"}}}));
+    require(model.addGrafcetTransition(stepId, {1, {1}, firsts, input("Go")}));
+    require(model.addGrafcetTransition(stepId, {2, lasts, {join}, "TRUE"}));
+    require(model.addGrafcetTransition(stepId, {3, {join}, {join + 1}, input("Ack")}));
+    require(model.addGrafcetTransition(stepId, {4, {join + 1}, {1}, "NOT " + input("Ack")}));
+    (void)index;
+}
+
+} // namespace
+
+core::Model bothLayersStressModel(int branchLength)
+{
+    core::Model model;
+    for (const char* name : {"Start", "Stop", "EStop", "Fault", "Test", "Reset"})
+        require(model.addVariable(variable(name, core::IecType::Bool, "", "")));
+    require(model.setInitialStep("A1"));
+    const std::vector<std::pair<std::string, std::string>> conditions{
+        {"A1->F2", "Start"}, {"F2->F1", "NOT Start"}, {"F1->A2", "NOT Stop"}, {"F1->F3", "Fault"},
+        {"F1->F5", "Test"},  {"F1->D3", "Fault AND Test"}, {"F5->F4", "NOT Test"}, {"F4->A6", "Reset"},
+        {"A6->A1", "NOT Reset"}, {"A2->A1", "TRUE"}, {"F3->A1", "Reset"}, {"D3->A2", "Reset"},
+        {"F->D1", "EStop"},  {"D1->A5", "NOT EStop"}, {"A5->A6", "Reset"}};
+    for (const auto& [id, condition] : conditions)
+        require(model.setCondition(id, condition));
+    for (const core::Transition& t : model.transitions()) {
+        if (t.condition.empty())
+            require(model.setTransitionHidden(t.id, true));
+    }
+    for (const char* unused : {"A3", "A4", "A7", "F6", "D2"})
+        require(model.setStepHidden(unused, true));
+    require(model.setTokens("F1->A2", {"Stop"}));
+    require(model.setTokens("F1->F3", {"Fault"}));
+    std::vector<std::string> memories;
+    int index = 0;
+    for (const char* stepId : {"F1", "F2", "F3", "F4", "F5", "D3"})
+        addParallelGrafcet(model, stepId, index++, branchLength, memories);
+    for (const char* name : {"BatchMark", "ServiceMark"}) {
+        require(model.addVariable(variable(name, core::IecType::Bool, "", "")));
+        require(model.setVariableKind(name, core::VariableKind::Internal));
+    }
+    require(model.addGrafcetAction("F1", 1, {core::ActionTiming::OnActivation, "S BatchMark"}));
+    require(model.addGrafcetAction("F2", 1, {core::ActionTiming::OnActivation, "R BatchMark"}));
+    require(model.addGrafcetAction("F5", 1, {core::ActionTiming::OnActivation, "S ServiceMark"}));
+    require(model.addGrafcetAction("F4", 1, {core::ActionTiming::OnActivation, "R ServiceMark"}));
+    return model;
+}
+
+} // namespace factory

@@ -53,6 +53,16 @@ core::Grafcet loopedSequence(int steps);
 // (its Out<n> and Go<n> undeclared: drawing and opening do not need them).
 core::Model longGrafcetModel(int steps);
 
+// For the verification of both layers (issue 19): six nested GRAFCETs (F1,
+// F2, F3, F5 macro-steps, F4 and D3 enclosing steps), each a three-way
+// parallel section of `branchLength` steps per branch between a fork and a
+// join, with a step that sets Complete and one that waits for an
+// acknowledgement; 20 stored BOOL variables (each branch's first step sets
+// one, the join resets them; two more mark the batch), continuous outputs,
+// tokens on F1 -> A2 (NOT Stop) and F1 -> F3, and a reachable path A1 -> F2
+// -> F1 -> F5 -> F4 -> A6 -> A1 with F1 -> D3 and the emergency stop.
+core::Model bothLayersStressModel(int branchLength = 3);
+
 // Applies `count` random operations (valid and invalid ones: the model must
 // refuse the latter) and returns how many the model accepted.
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count);
