@@ -267,6 +267,9 @@ void Document::emitChange(const core::ModelChange& change)
     case core::ModelChange::Kind::Grafcet:
         emit grafcetChanged(id);
         break;
+    case core::ModelChange::Kind::Properties:
+        emit propertiesChanged();
+        break;
     case core::ModelChange::Kind::Reset:
         emit modelReset();
         break;

@@ -79,6 +79,7 @@ signals:
     void variableChanged(const QString& name);
     void variablesChanged(); // added, removed, renamed or moved
     void settingsChanged();
+    void propertiesChanged(); // the verification properties: added, removed, edited or moved
     void grafcetChanged(const QString& stepId); // something in the nested GRAFCET of a GEMMA step
     void modelReset();        // everything may have changed
     void diagnosticsChanged();

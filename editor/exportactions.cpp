@@ -208,6 +208,9 @@ QStringList ExportActions::ggGeneratorLossTexts(const core::Model& model)
         case core::GGGeneratorLoss::Kind::UntilStableRule:
             texts << tr("The until-stable evolution rule: GG-Generator knows one evolution per scan only.");
             break;
+        case core::GGGeneratorLoss::Kind::Properties:
+            texts << tr("The verification properties: GG-Generator has no place for them.");
+            break;
         }
     }
     return texts;

@@ -503,6 +503,8 @@ std::vector<GGGeneratorLoss> ggGeneratorLosses(const Model& model)
         losses.push_back({GGGeneratorLoss::Kind::VariableKinds, {}});
     if (model.settings().evolution != EvolutionRule::OneEvolutionPerScan)
         losses.push_back({GGGeneratorLoss::Kind::UntilStableRule, {}});
+    if (!model.properties().empty())
+        losses.push_back({GGGeneratorLoss::Kind::Properties, {}});
     return losses;
 }
 
@@ -519,6 +521,8 @@ std::string toText(const GGGeneratorLoss& loss)
         return "the variable kinds (output, internal) are left out: GG-Generator reads every variable as an input";
     case GGGeneratorLoss::Kind::UntilStableRule:
         return "the until-stable evolution rule is left out";
+    case GGGeneratorLoss::Kind::Properties:
+        return "the verification properties are left out";
     }
     return {};
 }

@@ -28,6 +28,7 @@ struct GGGeneratorLoss {
         NestedGrafcets,  // steps: the GEMMA steps whose GRAFCET is left out
         VariableKinds,   // output and internal kinds: GG-Generator reads every variable as an input
         UntilStableRule, // the model's evolution rule
+        Properties,      // the engineer's verification properties
     };
     Kind kind = Kind::NestedGrafcets;
     std::vector<std::string> steps;

@@ -46,7 +46,8 @@ ordered_json transitionJson(const Transition& transition)
 bool needsNestedFormat(const Model& model)
 {
     const auto& variables = model.variables();
-    return !model.grafcets().empty() || model.settings().evolution != EvolutionRule::OneEvolutionPerScan
+    return !model.grafcets().empty() || !model.properties().empty()
+        || model.settings().evolution != EvolutionRule::OneEvolutionPerScan
         || std::any_of(variables.begin(), variables.end(),
                        [](const Variable& v) { return v.kind != VariableKind::Input; });
 }
@@ -462,18 +463,46 @@ void readGrafcets(Model& model, const json& root, const KeyRule& keys)
     }
 }
 
+// The engineer's verification properties: [{"text": ..., "comment": ...}], format 2.0.
+void readProperties(Model& model, const json& root, const KeyRule& keys)
+{
+    const json* propertiesValue = findMember(root, "properties");
+    if (!propertiesValue)
+        return;
+    if (!keys.nested())
+        failAt("/properties", "verification properties need format 2.0");
+    const json& list = expectArray(*propertiesValue, "/properties");
+    if (list.size() > kMaxGrafcetElements)
+        failAt("/properties", std::to_string(list.size()) + " properties; a model holds at most "
+            + std::to_string(kMaxGrafcetElements));
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = childPath("/properties", i);
+        const json& object = expectObject(list[i], path);
+        keys.check(object, path, "a property", {"text", "comment"});
+        const json* text = findMember(object, "text");
+        if (!text)
+            failAt(path + "/text", "missing; expected the property, such as \"never A AND B\"");
+        UserProperty property;
+        property.text = readString(*text, path + "/text");
+        if (const json* comment = findMember(object, "comment"))
+            property.comment = readString(*comment, path + "/comment");
+        require(model.addProperty(std::move(property)), path);
+    }
+}
+
 std::unique_ptr<Model> buildModel(const json& root)
 {
     expectObject(root, "");
     const KeyRule keys(checkFormatAndVersion(root));
     keys.check(root, "", "a model file", {"format", "version", "name", "settings", "steps", "transitions", "variables"},
-               {"grafcets"});
+               {"grafcets", "properties"});
     auto model = std::make_unique<Model>();
     readSettings(*model, root, keys);
     readVariables(*model, root, keys);
     readSteps(*model, root, keys);
     readTransitions(*model, root, keys);
     readGrafcets(*model, root, keys);
+    readProperties(*model, root, keys);
     return model;
 }
 
@@ -537,6 +566,17 @@ std::string saveNativeJson(const Model& model)
                 grafcets[step.id] = grafcetJson(*grafcet);
         }
         root["grafcets"] = std::move(grafcets);
+    }
+    if (!model.properties().empty()) {
+        ordered_json properties = ordered_json::array();
+        for (const UserProperty& property : model.properties()) {
+            ordered_json object;
+            object["text"] = property.text;
+            if (!property.comment.empty())
+                object["comment"] = property.comment;
+            properties.push_back(std::move(object));
+        }
+        root["properties"] = std::move(properties);
     }
 
     // Text from elsewhere may hold invalid UTF-8: replace it rather than throw.

@@ -121,6 +121,7 @@ Model::Model(const Model& other)
     , m_variables(other.m_variables)
     , m_grafcets(other.m_grafcets)
     , m_settings(other.m_settings)
+    , m_properties(other.m_properties)
 {
 }
 
@@ -695,6 +696,77 @@ Status Model::setVariableKind(std::string_view name, VariableKind kind)
     return Status::success();
 }
 
+// ---- properties --------------------------------------------------------------
+
+namespace {
+
+Status noProperty(int index, std::size_t count)
+{
+    return Status::failure("unknown-property", "no property " + std::to_string(index + 1) + " (the model has " + std::to_string(count)
+                           + ")");
+}
+
+} // namespace
+
+Status Model::addProperty(UserProperty property, int index)
+{
+    if (index < -1 || index > static_cast<int>(m_properties.size()))
+        return noProperty(index, m_properties.size());
+    const auto at = index < 0 ? m_properties.end() : m_properties.begin() + index;
+    m_properties.insert(at, std::move(property));
+    notify(ModelChange::Kind::Properties);
+    return Status::success();
+}
+
+Status Model::setPropertyText(int index, std::string text)
+{
+    if (index < 0 || index >= static_cast<int>(m_properties.size()))
+        return noProperty(index, m_properties.size());
+    UserProperty& property = m_properties[static_cast<std::size_t>(index)];
+    if (property.text != text) {
+        property.text = std::move(text);
+        notify(ModelChange::Kind::Properties);
+    }
+    return Status::success();
+}
+
+Status Model::setPropertyComment(int index, std::string comment)
+{
+    if (index < 0 || index >= static_cast<int>(m_properties.size()))
+        return noProperty(index, m_properties.size());
+    UserProperty& property = m_properties[static_cast<std::size_t>(index)];
+    if (property.comment != comment) {
+        property.comment = std::move(comment);
+        notify(ModelChange::Kind::Properties);
+    }
+    return Status::success();
+}
+
+Status Model::removeProperty(int index)
+{
+    if (index < 0 || index >= static_cast<int>(m_properties.size()))
+        return noProperty(index, m_properties.size());
+    m_properties.erase(m_properties.begin() + index);
+    notify(ModelChange::Kind::Properties);
+    return Status::success();
+}
+
+Status Model::moveProperty(int from, int to)
+{
+    const int count = static_cast<int>(m_properties.size());
+    if (from < 0 || from >= count)
+        return noProperty(from, m_properties.size());
+    if (to < 0 || to >= count)
+        return noProperty(to, m_properties.size());
+    if (from == to)
+        return Status::success();
+    UserProperty moved = std::move(m_properties[static_cast<std::size_t>(from)]);
+    m_properties.erase(m_properties.begin() + from);
+    m_properties.insert(m_properties.begin() + to, std::move(moved));
+    notify(ModelChange::Kind::Properties);
+    return Status::success();
+}
+
 // ---- settings ----------------------------------------------------------------
 
 Status Model::setName(std::string name)
@@ -749,6 +821,7 @@ void Model::assign(const Model& other)
     m_variables = other.m_variables;
     m_grafcets = other.m_grafcets;
     m_settings = other.m_settings;
+    m_properties = other.m_properties;
     notify(ModelChange::Kind::Reset);
 }
 
@@ -836,7 +909,7 @@ std::vector<std::string> Model::invariantViolations() const
 bool Model::sameContent(const Model& other) const
 {
     return m_steps == other.m_steps && m_transitions == other.m_transitions && m_variables == other.m_variables &&
-           m_settings == other.m_settings &&
+           m_settings == other.m_settings && m_properties == other.m_properties &&
            std::equal(m_grafcets.begin(), m_grafcets.end(), other.m_grafcets.begin(), other.m_grafcets.end(),
                       [](const auto& a, const auto& b) { return a.first == b.first && a.second.sameContent(b.second); });
 }

@@ -4,6 +4,7 @@
 #include "core/model/grafcet.h"
 #include "core/model/iectypes.h"
 #include "core/model/status.h"
+#include "core/model/userproperty.h"
 
 #include <cstdint>
 #include <functional>
@@ -83,7 +84,7 @@ inline constexpr int kMaxCycleTimeMs = 3'600'000;
 
 // What an operation changed, for observers (the editor's Document, caches).
 struct ModelChange {
-    enum class Kind { Step, Transition, Variable, VariableList, Settings, Grafcet, Reset };
+    enum class Kind { Step, Transition, Variable, VariableList, Settings, Grafcet, Properties, Reset };
     Kind kind;
     std::string id; // step id, transition id or variable name; empty for lists, settings, reset
     // Kind::Grafcet (id: the GEMMA step): what changed inside its GRAFCET;
@@ -186,6 +187,15 @@ public:
     Status moveVariable(std::string_view name, int index);
     int variableIndex(std::string_view name) const; // -1 when absent
 
+    // The engineer's verification properties, in list order. An index out of
+    // range fails; text is kept as written (checked by the verifier).
+    const std::vector<UserProperty>& properties() const { return m_properties; }
+    Status addProperty(UserProperty property, int index = -1); // -1: append
+    Status setPropertyText(int index, std::string text);
+    Status setPropertyComment(int index, std::string comment);
+    Status removeProperty(int index);
+    Status moveProperty(int from, int to);
+
     // Settings.
     Status setName(std::string name);
     Status setCycleTimeMs(int cycleTimeMs);
@@ -224,6 +234,7 @@ private:
     std::vector<Variable> m_variables;
     std::map<std::string, Grafcet, std::less<>> m_grafcets;
     ModelSettings m_settings;
+    std::vector<UserProperty> m_properties;
     std::uint64_t m_revision = 0;
     std::map<int, Observer> m_observers;
     int m_nextObserver = 1;

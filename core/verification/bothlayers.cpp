@@ -489,8 +489,9 @@ bool needsBothLayers(const Model& model, const VerificationOptions& options)
 
 std::vector<std::string> propertiesToCheck(const Model& model, const VerificationOptions& options)
 {
-    (void)model;
     std::vector<std::string> texts;
+    for (const UserProperty& property : model.properties())
+        texts.push_back(property.text);
     for (const std::string& text : options.properties)
         texts.push_back(text);
     return texts;

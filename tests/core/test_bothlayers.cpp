@@ -286,6 +286,13 @@ TEST_CASE("Both layers: the engineer's properties are proved or refuted with a c
     REQUIRE(unusable.size() == 1);
     CHECK(unusable[0]->property == 4);
     CHECK(result.violated());
+
+    // The model's own properties come first, then the options'.
+    Model withOwn = soundMachine();
+    require(withOwn.addProperty({"never Lamp", "the lamp is never lit"}));
+    const VerificationResult own = verify(withOwn, {"always TRUE"});
+    CHECK(own.properties == std::vector<std::string>{"never Lamp", "always TRUE"});
+    CHECK(own.propertyHolds == std::vector<bool>{false, true});
 }
 
 TEST_CASE("Both layers: timers are abstracted unless time is counted in scans", "[bothlayers]")

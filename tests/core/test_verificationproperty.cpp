@@ -1,13 +1,21 @@
 #include "samplemodels.h"
 
+#include "core/codegen/plcopenwriter.h"
+#include "core/codegen/stgenerator.h"
 #include "core/condition/conditionanalysis.h"
+#include "core/formats/gggeneratorformat.h"
+#include "core/formats/nativeformat.h"
+#include "core/formats/plcopenreader.h"
 #include "core/condition/conditionparser.h"
 #include "core/model/model.h"
 #include "core/verification/property.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <memory>
 #include <string>
+#include <variant>
 
 using namespace core;
 
@@ -117,4 +125,87 @@ TEST_CASE("Checking a property names unknown variables, steps and nested steps",
     REQUIRE(problems.size() == 1);
     CHECK(problems[0].span.begin == 15);
     CHECK(problems[0].span.end == 20);
+}
+
+TEST_CASE("The model keeps the engineer's properties in order and refuses bad indices", "[verificationproperty]")
+{
+    Model model;
+    int notified = 0;
+    model.addObserver([&](const ModelChange& change) {
+        if (change.kind == ModelChange::Kind::Properties)
+            ++notified;
+    });
+    REQUIRE(model.addProperty({"never A", "first"}).ok);
+    REQUIRE(model.addProperty({"always B", ""}).ok);
+    REQUIRE(model.addProperty({"never C", ""}, 0).ok);
+    CHECK(model.properties()[0].text == "never C");
+    CHECK(model.properties()[1].comment == "first");
+    REQUIRE(model.moveProperty(0, 2).ok);
+    CHECK(model.properties()[2].text == "never C");
+    REQUIRE(model.setPropertyText(1, "always B OR D").ok);
+    REQUIRE(model.setPropertyComment(1, "why").ok);
+    REQUIRE(model.removeProperty(0).ok);
+    CHECK(model.properties().size() == 2);
+    CHECK(model.properties()[0].text == "always B OR D");
+    CHECK(notified == 7);
+
+    const Model before(model);
+    CHECK_FALSE(model.addProperty({"never X", ""}, 5).ok);
+    CHECK_FALSE(model.setPropertyText(2, "never X").ok);
+    CHECK_FALSE(model.removeProperty(-1).ok);
+    CHECK_FALSE(model.moveProperty(0, 9).ok);
+    CHECK(model.sameContent(before));
+    CHECK(notified == 7);
+    CHECK(model.setPropertyText(0, "always B OR D").ok); // unchanged: no notification
+    CHECK(notified == 7);
+}
+
+TEST_CASE("Properties survive the native file and the PLCopen file, and GG-Generator says it drops them",
+          "[verificationproperty]")
+{
+    Model model = samples::lampGrafcetModel();
+    REQUIRE(model.addProperty({"never Lamp AND NOT Start", "the lamp follows the start"}).ok);
+    REQUIRE(model.addProperty({"always in D1 -> NOT Lamp", ""}).ok);
+    const std::string saved = saveNativeJson(model);
+    CHECK(saved.find("\"properties\"") != std::string::npos);
+    auto loaded = loadNativeJson(saved, "lamp.json");
+    REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(loaded));
+    CHECK(std::get<std::unique_ptr<Model>>(loaded)->sameContent(model));
+
+    const std::string xml = writePlcOpenXml(buildPlcProject(model, Dialect::Iec), model);
+    auto fromXml = readPlcOpenModel(xml, "lamp.xml");
+    REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(fromXml));
+    CHECK(std::get<std::unique_ptr<Model>>(fromXml)->properties() == model.properties());
+
+    const std::vector<GGGeneratorLoss> losses = ggGeneratorLosses(model);
+    CHECK(std::any_of(losses.begin(), losses.end(),
+                      [](const GGGeneratorLoss& loss) { return loss.kind == GGGeneratorLoss::Kind::Properties; }));
+
+    // A model with properties only still needs format 2.0: an older build refuses it rather than drop them.
+    Model plain;
+    REQUIRE(plain.addProperty({"never A", ""}).ok);
+    CHECK(saveNativeJson(plain).find("\"version\": \"2.0\"") != std::string::npos);
+}
+
+TEST_CASE("A malformed properties list is refused with where and what", "[verificationproperty]")
+{
+    const Model model = samples::lampGrafcetModel();
+    std::string saved = saveNativeJson(model);
+    const std::string::size_type end = saved.rfind('}');
+    auto withProperties = [&](const std::string& list) {
+        return saved.substr(0, end) + ",\n  \"properties\": " + list + "\n}\n";
+    };
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"{}", "/properties"},
+        {"[1]", "/properties/0"},
+        {"[{\"comment\": \"x\"}]", "/properties/0/text"},
+        {"[{\"text\": 3}]", "/properties/0/text"},
+        {"[{\"text\": \"never A\", \"colour\": \"red\"}]", "/properties/0/colour"},
+    };
+    for (const auto& [list, where] : cases) {
+        INFO(list);
+        auto loaded = loadNativeJson(withProperties(list), "bad.json");
+        REQUIRE(std::holds_alternative<LoadError>(loaded));
+        CHECK(std::get<LoadError>(loaded).toString().find(where) != std::string::npos);
+    }
 }
