@@ -33,7 +33,7 @@ std::optional<PropertyKind> quantifier(std::string_view word)
 
 PropertyProblem problem(Span span, const char* code, std::string message, std::vector<std::string> arguments = {})
 {
-    return PropertyProblem{span, code, std::move(message), std::move(arguments), std::nullopt};
+    return PropertyProblem{span, code, std::move(message), std::move(arguments), std::nullopt, std::nullopt};
 }
 
 void checkStatePredicate(const Model& model, const cond::Node& node, std::vector<PropertyProblem>& problems)
@@ -117,7 +117,16 @@ std::vector<PropertyProblem> checkProperty(const Model& model, std::string_view 
     const SymbolTable symbols(model.variables());
     for (const cond::TypeIssue& issue : cond::typeCheck(parsed.expression, symbols)) {
         const bool unknown = issue.code == "GG203";
-        problems.push_back(problem(issue.span, unknown ? property::kUnknownVariable : property::kType, issue.message));
+        PropertyProblem found = problem(issue.span, unknown ? property::kUnknownVariable : property::kType,
+                                        issue.message);
+        if (unknown) {
+            for (const cond::Node& node : parsed.expression.nodes) {
+                if (node.kind == cond::NodeKind::Variable && node.span == issue.span)
+                    found.arguments = {node.text};
+            }
+        }
+        found.type = issue.error;
+        problems.push_back(std::move(found));
     }
     return problems;
 }

@@ -11,6 +11,7 @@
 // them, the variables as it left them.
 
 #include "core/condition/conditionparseerror.h"
+#include "core/condition/conditiontypeerror.h"
 #include "core/condition/conditionsyntax.h"
 #include "core/model/span.h"
 
@@ -50,6 +51,7 @@ struct PropertyProblem {
     std::string message; // English
     std::vector<std::string> arguments;
     std::optional<cond::ParseError> syntax; // GP001: the error as data, for the UI's wording
+    std::optional<cond::TypeError> type;    // GP006 (and some GP002): the type error as data
 };
 
 // Syntax first (one problem), then names and types against the model.

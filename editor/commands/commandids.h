@@ -37,6 +37,11 @@ enum CommandId : int {
     AddGrafcetActionId,
     RemoveGrafcetActionId,
     MoveGrafcetActionId,
+    AddPropertyId,
+    RemovePropertyId,
+    MovePropertyId,
+    SetPropertyTextId,    // merges typing in the same property
+    SetPropertyCommentId, // merges typing in the same property's comment
 };
 
 } // namespace editor

@@ -2,6 +2,7 @@
 
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/docks/propertiespanel.h"
 #include "editor/docks/verificationpanel.h"
 #include "editor/docks/wrappingitemdelegate.h"
 #include "editor/document.h"
@@ -172,6 +173,10 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
         m_verificationPanel = new VerificationPanel(m_verification, m_selection);
         m_tabs->addTab(content, QString());
         m_tabs->addTab(m_verificationPanel, QString());
+        m_propertiesPanel = new PropertiesPanel(m_document);
+        m_tabs->addTab(m_propertiesPanel, QString());
+        connect(m_document, &Document::propertiesChanged, this, &ProblemsDock::updateTabTexts);
+        connect(m_document, &Document::modelReset, this, &ProblemsDock::updateTabTexts);
         connect(m_verification, &VerificationRunner::finished, this, &ProblemsDock::updateTabTexts);
         connect(m_verification, &VerificationRunner::staleChanged, this, &ProblemsDock::updateTabTexts);
         connect(m_verification, &VerificationRunner::assumptionsChanged, this, &ProblemsDock::updateTabTexts);
@@ -348,6 +353,15 @@ void ProblemsDock::updateTabTexts()
         icon = severityIcon(worst);
     }
     m_tabs->setTabIcon(1, icon);
+    const std::size_t properties = m_document->model().properties().size();
+    m_tabs->setTabText(2, properties == 0 ? PropertiesPanel::title()
+                                          : tr("%1 (%2)").arg(PropertiesPanel::title()).arg(properties));
+}
+
+void ProblemsDock::showProperties()
+{
+    if (m_tabs)
+        m_tabs->setCurrentWidget(m_propertiesPanel);
 }
 
 void ProblemsDock::showVerification()

@@ -15,6 +15,7 @@ namespace editor {
 
 class Document;
 class Selection;
+class PropertiesPanel;
 class VerificationPanel;
 class VerificationRunner;
 
@@ -41,9 +42,11 @@ public:
     QTreeWidget* view() const { return m_view; }
     // nullptr without a VerificationRunner.
     VerificationPanel* verificationPanel() const { return m_verificationPanel; }
+    PropertiesPanel* propertiesPanel() const { return m_propertiesPanel; }
     QTabWidget* tabs() const { return m_tabs; }
     // Brings the Verification tab to the front.
     void showVerification();
+    void showProperties();
     // Selects the element of a problem row and asks to focus its field.
     void activate(QTreeWidgetItem* item);
 
@@ -74,6 +77,7 @@ private:
     QToolButton* m_infoButton = nullptr;
     VerificationRunner* m_verification = nullptr;
     VerificationPanel* m_verificationPanel = nullptr;
+    PropertiesPanel* m_propertiesPanel = nullptr;
     QTabWidget* m_tabs = nullptr;
     QSet<QString> m_collapsedGroups; // GEMMA step ids whose GRAFCET group the user closed
 };

@@ -1,0 +1,106 @@
+#include "editor/docks/propertiestablemodel.h"
+
+#include "editor/commands/propertycommands.h"
+#include "editor/document.h"
+#include "editor/propertyproblemtext.h"
+#include "editor/severityicon.h"
+
+#include "core/model/model.h"
+
+namespace editor {
+
+PropertiesTableModel::PropertiesTableModel(Document* document, QObject* parent)
+    : QAbstractTableModel(parent)
+    , m_document(document)
+{
+    reload();
+}
+
+int PropertiesTableModel::rowCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : static_cast<int>(m_document->model().properties().size());
+}
+
+int PropertiesTableModel::columnCount(const QModelIndex& parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant PropertiesTableModel::data(const QModelIndex& index, int role) const
+{
+    const auto& properties = m_document->model().properties();
+    if (!index.isValid() || index.row() >= static_cast<int>(properties.size()))
+        return {};
+    const core::UserProperty& property = properties[static_cast<std::size_t>(index.row())];
+    const std::vector<core::PropertyProblem>& wrong = problems(index.row());
+    switch (role) {
+    case Qt::DisplayRole:
+    case Qt::EditRole:
+        return QString::fromStdString(index.column() == TextColumn ? property.text : property.comment);
+    case Qt::DecorationRole:
+        if (index.column() == TextColumn && !wrong.empty())
+            return severityIcon(core::Severity::Error);
+        return {};
+    case Qt::ToolTipRole:
+        if (index.column() == TextColumn && !wrong.empty())
+            return propertyProblemText(wrong.front());
+        return {};
+    default: return {};
+    }
+}
+
+QVariant PropertiesTableModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (role != Qt::DisplayRole)
+        return {};
+    if (orientation == Qt::Vertical)
+        return section + 1;
+    return section == TextColumn ? tr("Property") : tr("Comment");
+}
+
+Qt::ItemFlags PropertiesTableModel::flags(const QModelIndex& index) const
+{
+    return QAbstractTableModel::flags(index) | (index.isValid() ? Qt::ItemIsEditable : Qt::NoItemFlags);
+}
+
+bool PropertiesTableModel::setData(const QModelIndex& index, const QVariant& value, int role)
+{
+    if (!index.isValid() || role != Qt::EditRole)
+        return false;
+    const QString text = value.toString();
+    if (index.column() == TextColumn)
+        return m_document->push(new SetPropertyTextCommand(*m_document, index.row(), text));
+    return m_document->push(new SetPropertyCommentCommand(*m_document, index.row(), text));
+}
+
+const std::vector<core::PropertyProblem>& PropertiesTableModel::problems(int row) const
+{
+    static const std::vector<core::PropertyProblem> none;
+    return row >= 0 && row < static_cast<int>(m_problems.size()) ? m_problems[static_cast<std::size_t>(row)] : none;
+}
+
+void PropertiesTableModel::reload()
+{
+    beginResetModel();
+    m_problems.clear();
+    for (const core::UserProperty& property : m_document->model().properties())
+        m_problems.push_back(core::checkProperty(m_document->model(), property.text));
+    endResetModel();
+}
+
+void PropertiesTableModel::recheck()
+{
+    const auto& properties = m_document->model().properties();
+    if (properties.size() != m_problems.size()) {
+        reload();
+        return;
+    }
+    for (std::size_t row = 0; row < properties.size(); ++row) {
+        std::vector<core::PropertyProblem> now = core::checkProperty(m_document->model(), properties[row].text);
+        m_problems[row] = std::move(now);
+    }
+    if (!properties.empty())
+        emit dataChanged(index(0, 0), index(static_cast<int>(properties.size()) - 1, ColumnCount - 1));
+}
+
+} // namespace editor

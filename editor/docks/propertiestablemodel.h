@@ -1,0 +1,43 @@
+#pragma once
+
+#include "core/verification/property.h"
+
+#include <QAbstractTableModel>
+
+#include <vector>
+
+namespace editor {
+
+class Document;
+
+// The Document's verification properties as a table (property, comment).
+// Editing a cell pushes the matching command. A property the verifier
+// cannot check has an error icon, with what is wrong as tooltip.
+class PropertiesTableModel : public QAbstractTableModel {
+    Q_OBJECT
+
+public:
+    enum Column { TextColumn, CommentColumn, ColumnCount };
+
+    explicit PropertiesTableModel(Document* document, QObject* parent = nullptr);
+
+    int rowCount(const QModelIndex& parent = QModelIndex()) const override;
+    int columnCount(const QModelIndex& parent = QModelIndex()) const override;
+    QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+    QVariant headerData(int section, Qt::Orientation orientation, int role = Qt::DisplayRole) const override;
+    Qt::ItemFlags flags(const QModelIndex& index) const override;
+    bool setData(const QModelIndex& index, const QVariant& value, int role = Qt::EditRole) override;
+
+    // What is wrong with the property of `row` (empty when it can be checked).
+    const std::vector<core::PropertyProblem>& problems(int row) const;
+
+    // Re-reads the list (rows added, removed, moved) or only the problems.
+    void reload();
+    void recheck();
+
+private:
+    Document* m_document;
+    std::vector<std::vector<core::PropertyProblem>> m_problems;
+};
+
+} // namespace editor
