@@ -50,10 +50,9 @@ PropertiesPanel::PropertiesPanel(Document* document, QWidget* parent)
     m_view->setModel(m_model);
     m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_view->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_view->horizontalHeader()->setStretchLastSection(true);
+    m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_view->setWordWrap(true);
     m_view->setMinimumHeight(m_view->horizontalHeader()->sizeHint().height() + m_view->verticalHeader()->defaultSectionSize());
-    m_view->horizontalHeader()->setSectionResizeMode(PropertiesTableModel::TextColumn, QHeaderView::Interactive);
-    m_view->setColumnWidth(PropertiesTableModel::TextColumn, 260);
     m_view->addActions({m_addAction, m_removeAction});
     layout->addWidget(m_view, 1);
     m_edit->setObjectName(QStringLiteral("propertyEdit"));
@@ -89,6 +88,7 @@ PropertiesPanel::PropertiesPanel(Document* document, QWidget* parent)
     connect(document, &Document::stepChanged, this, &PropertiesPanel::onOtherChange);
     connect(document, &Document::grafcetChanged, this, &PropertiesPanel::onOtherChange);
     retranslate();
+    setCurrentRow(0);
     updateActions();
 }
 
@@ -182,7 +182,7 @@ void PropertiesPanel::moveCurrent(int delta)
 void PropertiesPanel::onPropertiesChanged()
 {
     const int row = currentRow();
-    if (m_model->rowCount() != static_cast<int>(m_document->model().properties().size())) {
+    if (m_model->loadedRows() != static_cast<int>(m_document->model().properties().size())) {
         m_model->reload();
         setCurrentRow(std::min(row < 0 ? 0 : row, m_model->rowCount() - 1));
     } else {

@@ -31,6 +31,8 @@ public:
     // What is wrong with the property of `row` (empty when it can be checked).
     const std::vector<core::PropertyProblem>& problems(int row) const;
 
+    // The rows as last (re)loaded: the list may have changed since.
+    int loadedRows() const { return static_cast<int>(m_problems.size()); }
     // Re-reads the list (rows added, removed, moved) or only the problems.
     void reload();
     void recheck();

@@ -2,6 +2,7 @@
 //                     [--export-chart FILE.svg|png|pdf] [--dialog ACTION]
 //                     [--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE]
 //                     [--replay-scans N] [--simulation-tab INDEX] [--verify] [--grafcet STEP]...
+//                     [--problems-tab INDEX]
 //
 // Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
 // with a step or transition selected, a dock brought to the front) and
@@ -21,6 +22,7 @@
 // --grafcet STEP opens the tab of that step's nested GRAFCET (several: the
 // last one in front); with --simulate it shows the simulation's marks.
 // --verify runs Simulation > Verify and waits for its findings.
+// --problems-tab shows that tab of the Problems dock (0 checks, 1 verification, 2 properties).
 
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
@@ -143,6 +145,7 @@ int main(int argc, char* argv[])
     QString replay;
     int replayScans = 0;
     int simulationTab = 0;
+    int problemsTab = -1;
     QStringList grafcets; // the GEMMA steps whose nested GRAFCETs' tabs are opened
     const QStringList args = app.arguments().mid(1);
     for (qsizetype i = 0; i < args.size(); ++i) {
@@ -174,6 +177,8 @@ int main(int argc, char* argv[])
             replayScans = args[++i].toInt();
         else if (args[i] == QLatin1String("--simulation-tab") && i + 1 < args.size())
             simulationTab = args[++i].toInt();
+        else if (args[i] == QLatin1String("--problems-tab") && i + 1 < args.size())
+            problemsTab = args[++i].toInt();
         else if (args[i] == QLatin1String("--grafcet") && i + 1 < args.size())
             grafcets << args[++i];
         else if (args[i].startsWith(QLatin1String("--")))
@@ -268,6 +273,8 @@ int main(int argc, char* argv[])
         if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("simulationTabs")))
             tabs->setCurrentIndex(simulationTab);
     }
+    if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("problemsTabs")); tabs && problemsTab >= 0)
+        tabs->setCurrentIndex(problemsTab);
     QTest::qWait(50);
     window.chartView()->zoomToFit();
     QApplication::processEvents();
