@@ -331,8 +331,8 @@ QTreeWidgetItem* VerificationPanel::groupItem(const QString& stepId, core::Sever
 }
 
 // The branches take room from the code column: it grows by their indents,
-// so that the codes of the nested findings are not cut, half of it taken
-// from the elements, so that the messages keep their width in the dock column.
+// so that the codes of the nested findings are not cut, taken from the
+// elements, so that the messages keep their width in the dock column.
 void VerificationPanel::showGrouped(bool grouped)
 {
     if (grouped == m_view->rootIsDecorated())
@@ -340,7 +340,7 @@ void VerificationPanel::showGrouped(bool grouped)
     const int indents = (grouped ? 2 : -2) * m_view->indentation();
     QHeaderView* header = m_view->header();
     header->resizeSection(CodeColumn, header->sectionSize(CodeColumn) + indents);
-    header->resizeSection(ElementColumn, header->sectionSize(ElementColumn) - indents / 2);
+    header->resizeSection(ElementColumn, header->sectionSize(ElementColumn) - indents);
     m_view->setRootIsDecorated(grouped);
 }
 
