@@ -255,14 +255,102 @@ QString translated(const core::Diagnostic& d)
     return {};
 }
 
-// The translated text of a finding, or an empty string when the code has no
-// template for these arguments.
-QString translatedFinding(const core::VerificationFinding& f)
+// The findings about the nested GRAFCETs and the user's properties
+// (core/verification/bothlayers.cpp words them and lists their arguments),
+// or an empty string when the code is none of them or the arguments are not
+// those it promises.
+QString bothLayersFinding(const core::VerificationFinding& f)
 {
     namespace gv = core::verification;
     const std::vector<std::string>& a = f.arguments;
     const std::string& code = f.code;
     const std::size_t n = a.size();
+    const auto arg = [&](std::size_t i) { return argumentText(a[i]); };
+    if (code == gv::kNestedStepNeverActive && n == 2)
+        //: %1: a GEMMA step; %2: the number of a step of its nested GRAFCET
+        return DiagnosticText::tr("Step %2 of the nested GRAFCET of %1 can never become active.").arg(arg(0), arg(1));
+    if (code == gv::kNestedTransitionDead && n == 2)
+        //: %1: a GEMMA step; %2: the number of a transition of its nested GRAFCET
+        return DiagnosticText::tr("Transition T%2 of the nested GRAFCET of %1 can never fire.").arg(arg(0), arg(1));
+    if (code == gv::kUnsafeNestedStep && n == 2)
+        return DiagnosticText::tr("Step %2 of the nested GRAFCET of %1 can be activated while it is already active: "
+                                  "the GRAFCET is not safe.")
+            .arg(arg(0), arg(1));
+    if (code == gv::kUnstableReachable && n == 1)
+        return DiagnosticText::tr("The nested GRAFCET of %1 can be Unstable: its evolutions do not settle within one "
+                                  "scan.")
+            .arg(arg(0));
+    if (code == gv::kBranchesTogether && n == 4)
+        //: %2: a nested step; %3, %4: the numbers of two nested transitions
+        return DiagnosticText::tr("Transitions T%3 and T%4 of the nested GRAFCET of %1 can fire together from step "
+                                  "%2: both branches of the selection start.")
+            .arg(arg(0), arg(1), arg(2), arg(3));
+    if (code == gv::kNeverComplete && n >= 1) {
+        QStringList waiting;
+        for (std::size_t i = 1; i < n; ++i)
+            waiting << arg(i);
+        return waiting.isEmpty()
+            ? DiagnosticText::tr("Once %1 is active, the inputs can lead its nested GRAFCET to a situation from "
+                                 "which Complete never becomes TRUE.")
+                  .arg(arg(0))
+            //: %2: the GEMMA transitions that wait for Complete
+            : DiagnosticText::tr("Once %1 is active, the inputs can lead its nested GRAFCET to a situation from "
+                                 "which Complete never becomes TRUE: %2 can no longer fire.")
+                  .arg(arg(0), waiting.join(QStringLiteral(", ")));
+    }
+    if (code == gv::kWaitsForNoComplete && n == 2)
+        return DiagnosticText::tr("%1 waits for the Complete of %2, which never becomes TRUE: it can never fire.")
+            .arg(arg(0), arg(1));
+    if (code == gv::kStoredRace && n == 4)
+        return DiagnosticText::tr("Steps %2 and %3 of the nested GRAFCET of %1 can write different values to '%4' "
+                                  "in the same scan: the result depends on the order of the actions.")
+            .arg(arg(0), arg(1), arg(2), arg(3));
+    if (code == gv::kOutputOnEmergencyStop && n == 2)
+        return DiagnosticText::tr("The continuous output '%2' can still be TRUE in the scan in which the emergency "
+                                  "stop %1 is entered.")
+            .arg(arg(0), arg(1));
+    if (code == gv::kStoredOutputOnEmergencyStop && n == 2)
+        return DiagnosticText::tr("The stored output '%2' can still be TRUE in the scan in which the emergency stop "
+                                  "%1 is entered: stored actions are memories, only continuous outputs drop with "
+                                  "the state.")
+            .arg(arg(0), arg(1));
+    // The property texts are the user's, shown as written.
+    if (code == gv::kPropertyViolated && n == 1)
+        return DiagnosticText::tr("The property '%1' does not hold.").arg(fromStd(a[0]));
+    if (code == gv::kPropertyHolds && n == 1) {
+        // The core says whether the proof rests on abstractions only in its message.
+        const bool abstracted = f.message.find("abstractions") != std::string::npos;
+        return abstracted ? DiagnosticText::tr("The property '%1' holds in every reachable scan, with "
+                                               "the abstractions the verification lists.")
+                                .arg(fromStd(a[0]))
+                          : DiagnosticText::tr("The property '%1' holds in every reachable scan.")
+                                .arg(fromStd(a[0]));
+    }
+    if (code == gv::kPropertyUnusable && n == 2)
+        return a[1].empty() ? DiagnosticText::tr("The property '%1' cannot be checked: it is empty.")
+                                  .arg(fromStd(a[0]))
+                            //: %2: why, in English (the property checker's message)
+                            : DiagnosticText::tr("The property '%1' cannot be checked: %2.")
+                                  .arg(fromStd(a[0]), fromStd(a[1]));
+    return {};
+}
+
+// The translated text of a finding, or an empty string when the code has no
+// template for these arguments.
+QString translatedFinding(const core::VerificationFinding& f)
+{
+    namespace gv = core::verification;
+    if (const QString text = bothLayersFinding(f); !text.isEmpty())
+        return text;
+    // Some findings of the exploration of both layers leave the arguments
+    // to the elements (core's convention: the first argument is the element).
+    const std::vector<std::string>& a = f.arguments.empty() ? f.elements : f.arguments;
+    const std::string& code = f.code;
+    const std::size_t n = a.size();
+    // The exploration of both layers is undecided as a whole: it names the model.
+    if (code == gv::kIncomplete && n == 1 && a[0] == "model")
+        return DiagnosticText::tr("The exploration of both layers reached its time or size limit: what it found is "
+                                  "reported, but nothing about the nested GRAFCETs or the properties is proved.");
     // The command line's English message names the limit and the codes;
     // here the sentence says what the user may rely on.
     if (code == gv::kIncomplete)
@@ -330,6 +418,16 @@ bool unconfirmed(const core::VerificationFinding& f)
     return needsPath && f.counterexample && !f.counterexample->confirmed;
 }
 
+// The same for the findings only the exploration of both layers makes
+// (GV110 and up): their runs are found under its abstractions (timers,
+// numeric memories, undecidable comparisons), and the core downgrades one
+// that does not replay to information.
+bool unconfirmedOnBothLayers(const core::VerificationFinding& f)
+{
+    return f.code >= std::string("GV110") && f.severity == core::Severity::Info && f.counterexample
+        && !f.counterexample->confirmed;
+}
+
 } // namespace
 
 // Transitions named as everywhere else in the editor ("F1 → A2").
@@ -346,6 +444,10 @@ QString verificationText(const core::VerificationFinding& finding)
         text += QLatin1Char(' ')
                 + DiagnosticText::tr("Not confirmed: a condition uses a comparison the verifier cannot decide, and "
                                      "the counterexample does not replay.");
+    else if (unconfirmedOnBothLayers(finding))
+        text += QLatin1Char(' ')
+                + DiagnosticText::tr("Not confirmed: the run found under the abstractions of the verification does "
+                                     "not replay in the simulator.");
     return text;
 }
 

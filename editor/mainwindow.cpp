@@ -154,6 +154,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     connect(m_document, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::editFailed, this, &MainWindow::showEditFailure);
     connect(m_session, &SimulationSession::activeChanged, this, &MainWindow::onSimulationActiveChanged);
+    connect(m_session, &SimulationSession::replayChanged, this, &MainWindow::onReplayChanged);
     connect(m_verification, &VerificationRunner::started, this, &MainWindow::showVerificationStatus);
     connect(m_verification, &VerificationRunner::finished, this, &MainWindow::showVerificationStatus);
     connect(m_verification, &VerificationRunner::cancelled, this, &MainWindow::showVerificationStatus);
@@ -1317,6 +1318,20 @@ void MainWindow::replayCounterexample(int findingIndex)
     ensureDocksReady();
     m_simulationDock->show();
     m_simulationDock->raise();
+    // A finding about a nested GRAFCET happens on its tab: watched from the
+    // start, and in front again when the replay reaches the situation.
+    m_replayedGrafcet = QString::fromStdString(finding->gemmaStep);
+    if (!m_replayedGrafcet.isEmpty())
+        openNestedGrafcet(m_replayedGrafcet);
+}
+
+void MainWindow::onReplayChanged()
+{
+    if (m_replayedGrafcet.isEmpty() || m_session->isReplaying())
+        return;
+    const QString stepId = std::exchange(m_replayedGrafcet, QString());
+    if (m_session->replayState() == SimulationSession::ReplayState::Finished)
+        openNestedGrafcet(stepId);
 }
 
 // Editing widgets are disabled rather than left to fail: the Document

@@ -180,6 +180,7 @@ private:
     void showVerificationStatus();
     // Starts the simulation on a finding's counterexample and plays it.
     void replayCounterexample(int findingIndex);
+    void onReplayChanged();
 
     Translators& m_translators;
     std::unique_ptr<Settings> m_settings;
@@ -207,6 +208,9 @@ private:
     QList<int> m_columnBeforeSimulation; // the Simulation dock's and the lower docks' heights
     StatusBadge* m_simulationIndicator = nullptr;
     VerificationRunner* m_verification = nullptr;
+    // The GEMMA step whose nested GRAFCET the counterexample being replayed
+    // is about; empty when the replay is none of a nested finding.
+    QString m_replayedGrafcet;
 
     QMenu* m_fileMenu = nullptr;
     QMenu* m_examplesMenu = nullptr;

@@ -14,6 +14,7 @@
 #include <map>
 #include <new>
 #include <string>
+#include <vector>
 
 namespace editor {
 
@@ -21,17 +22,20 @@ namespace editor {
 // `complete` and `cancelled` and writes `result` or `failure`, which the GUI
 // thread reads after the thread finished. `automatic` is the GUI thread's.
 struct VerificationRunner::Job {
-    Job(const core::Model& m, const QStringList& automaticSteps)
+    Job(const core::Model& m, const QStringList& automaticSteps, const QStringList& additionalProperties)
         : model(m)
         , automatic(automaticSteps)
     {
         for (const QString& step : automaticSteps)
             complete[step.toStdString()] = core::CompleteAssumption::Automatic;
+        for (const QString& property : additionalProperties)
+            properties.push_back(property.toStdString());
     }
 
     core::Model model;
     QStringList automatic;
     std::map<std::string, core::CompleteAssumption> complete;
+    std::vector<std::string> properties;
     std::atomic<bool> cancelled{false};
     core::VerificationResult result;
     std::string failure;
@@ -74,7 +78,7 @@ void VerificationRunner::start()
     const bool wasRunning = isRunning();
     if (wasRunning)
         m_current->cancelled = true;
-    auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic);
+    auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic, m_additionalProperties);
     m_current = job;
     m_wasCancelled = false;
     QThread* thread = QThread::create([job] { runJob(job); });
@@ -179,6 +183,7 @@ void VerificationRunner::runJob(const std::shared_ptr<Job>& job)
 {
     core::VerificationOptions options;
     options.complete = job->complete;
+    options.properties = job->properties;
     options.cancelled = [job] { return job->cancelled.load(std::memory_order_relaxed); };
     try {
         job->result = core::verifyModel(job->model, options);

@@ -7,6 +7,7 @@
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
+#include "editor/statenames.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>
@@ -21,33 +22,106 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include <QTreeWidgetItemIterator>
+
 #include <algorithm>
+#include <map>
 #include <numeric>
+#include <optional>
 
 namespace editor {
 
 namespace {
 
 constexpr int kIndexRole = Qt::UserRole;
+// On the row of a GEMMA step that groups the findings about its nested GRAFCET: the step id.
+constexpr int kGroupRole = Qt::UserRole + 1;
+
+// A nested element as the core names it: "F1/5" (step 5 of F1's GRAFCET) or
+// "F1/T3" (its transition 3).
+struct NestedElement {
+    QString stepId;
+    int number = 0;
+    bool transition = false;
+};
+
+std::optional<NestedElement> nestedElement(const std::string& id)
+{
+    const QString text = QString::fromStdString(id);
+    const qsizetype slash = text.lastIndexOf(QLatin1Char('/'));
+    if (slash <= 0)
+        return std::nullopt;
+    NestedElement element{text.left(slash), 0, text.at(slash + 1) == QLatin1Char('T')};
+    bool ok = false;
+    element.number = text.mid(slash + (element.transition ? 2 : 1)).toInt(&ok);
+    if (!ok)
+        return std::nullopt;
+    return element;
+}
+
+// The whole model (GV100 of the exploration of both layers) is no element of a chart.
+bool isModel(const std::string& id)
+{
+    return id == "model";
+}
 
 QString elementText(const std::string& id)
 {
+    if (const std::optional<NestedElement> nested = nestedElement(id))
+        return nested->transition
+            //: A transition of a nested GRAFCET: %1 the GEMMA step, %2 its number
+            ? VerificationPanel::tr("%1: T%2").arg(nested->stepId).arg(nested->number)
+            //: A step of a nested GRAFCET: %1 the GEMMA step, %2 its number
+            : VerificationPanel::tr("%1: step %2").arg(nested->stepId).arg(nested->number);
+    if (isModel(id))
+        return VerificationPanel::tr("Model");
     const QString text = QString::fromStdString(id);
     return text.contains(QLatin1String("->")) ? transitionLabel(text) : text;
 }
 
+// A property finding names no element: the property's text stands for it.
 QString elementsText(const core::VerificationFinding& finding)
 {
+    if (finding.property >= 0 && !finding.arguments.empty())
+        return QString::fromStdString(finding.arguments.front());
     QStringList parts;
     for (const std::string& id : finding.elements)
         parts << elementText(id);
     return parts.join(QStringLiteral(", "));
 }
 
+// What Show on Chart selects for an element id; a null ref for none.
 ElementRef elementRef(const std::string& id)
 {
+    if (const std::optional<NestedElement> nested = nestedElement(id))
+        return nested->transition ? ElementRef::grafcetTransition(nested->stepId, nested->number)
+                                  : ElementRef::grafcetStep(nested->stepId, nested->number);
+    if (isModel(id))
+        return {};
     const QString text = QString::fromStdString(id);
     return text.contains(QLatin1String("->")) ? ElementRef::transition(text) : ElementRef::step(text);
+}
+
+ElementRef firstElementRef(const core::VerificationFinding* finding)
+{
+    return finding && !finding->elements.empty() ? elementRef(finding->elements.front()) : ElementRef{};
+}
+
+QString groupTitle(const QString& stepId)
+{
+    const QString name = officialStateName(stepId);
+    const QString step = name.isEmpty() ? stepId : QStringLiteral("%1 %2").arg(stepId, name);
+    //: The row that groups the findings about the nested GRAFCET of a GEMMA step, e.g. "F1 Normal production"
+    return VerificationPanel::tr("%1: nested GRAFCET").arg(step);
+}
+
+QString copiedLine(const QTreeWidgetItem* item)
+{
+    if (!item->data(0, kGroupRole).toString().isEmpty())
+        return item->text(VerificationPanel::CodeColumn);
+    return QStringLiteral("%1\t%2\t%3")
+        .arg(item->text(VerificationPanel::CodeColumn), item->text(VerificationPanel::ElementColumn),
+             item->text(VerificationPanel::MessageColumn));
 }
 
 QToolButton* toolButton(QAction* action, QWidget* parent)
@@ -109,7 +183,8 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
 
     m_view->setObjectName(QStringLiteral("verificationView"));
     m_view->setColumnCount(4);
-    m_view->setRootIsDecorated(false);
+    m_view->setRootIsDecorated(false); // until findings are grouped under a GEMMA step
+    m_view->setIndentation(10);
     new WrappingItemDelegate(m_view, MessageColumn); // the messages wrap, never cut
     m_view->setAllColumnsShowFocus(true);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
@@ -125,6 +200,14 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     m_view->addActions({m_showAction, m_replayAction, separator, m_copyAction});
     connect(m_view, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem* item) { showOnChart(item); });
     connect(m_view, &QTreeWidget::currentItemChanged, this, &VerificationPanel::updateActions);
+    // A group the user collapsed stays collapsed when the findings are listed again.
+    connect(m_view, &QTreeWidget::itemCollapsed, this, [this](const QTreeWidgetItem* item) {
+        if (const QString group = item->data(0, kGroupRole).toString(); !group.isEmpty())
+            m_collapsedGroups.insert(group);
+    });
+    connect(m_view, &QTreeWidget::itemExpanded, this, [this](const QTreeWidgetItem* item) {
+        m_collapsedGroups.remove(item->data(0, kGroupRole).toString());
+    });
     layout->addWidget(m_view, 1);
 
     connect(m_runner, &VerificationRunner::started, this, &VerificationPanel::refreshStatus);
@@ -163,46 +246,109 @@ int VerificationPanel::findingIndex(const QTreeWidgetItem* item)
 
 void VerificationPanel::refresh()
 {
-    // The same finding stays current: entering the simulation to replay one
-    // refreshes the list (the Complete assumptions change).
-    const int current = findingIndex(m_view->currentItem());
+    // The same finding (or group) stays current: entering the simulation to
+    // replay one refreshes the list (the Complete assumptions change).
+    const QTreeWidgetItem* currentItem = m_view->currentItem();
+    const int current = findingIndex(currentItem);
+    const QString currentGroup = currentItem ? currentItem->data(0, kGroupRole).toString() : QString();
     m_view->clear();
     const std::vector<core::VerificationFinding>& findings = m_runner->result().findings;
     // A stale finding is greyed: it describes the model, or assumptions, as they were.
     const bool stale = m_runner->isStale() || m_runner->assumptionsDiffer();
-    const QBrush grey(secondaryTextColor(palette(), QPalette::Base));
     // Errors first: the core orders by code, and the violations matter most.
     std::vector<std::size_t> order(findings.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return findings[a].severity < findings[b].severity; });
+    // The findings about a nested GRAFCET under their GEMMA step, whose row
+    // takes the place of its worst finding.
     QList<QTreeWidgetItem*> items;
+    std::map<std::string, QTreeWidgetItem*> groups;
     for (std::size_t i : order) {
         const core::VerificationFinding& finding = findings[i];
-        const QString message = verificationText(finding);
-        const QString scans =
-            finding.counterexample ? QString::number(finding.counterexample->scans) : QString();
-        auto* item = new QTreeWidgetItem(
-            {QString::fromStdString(finding.code), elementsText(finding), scans, message});
-        item->setIcon(CodeColumn, severityIcon(finding.severity));
-        item->setToolTip(CodeColumn, severityText(finding.severity));
-        item->setToolTip(ElementColumn, item->text(ElementColumn));
-        item->setToolTip(MessageColumn, message);
-        item->setTextAlignment(ScansColumn, Qt::AlignRight | Qt::AlignVCenter);
-        item->setData(0, kIndexRole, static_cast<int>(i));
-        for (int column = 0; stale && column < m_view->columnCount(); ++column)
-            item->setForeground(column, grey);
-        items << item;
+        QTreeWidgetItem* item = findingItem(finding, static_cast<int>(i), stale);
+        if (finding.gemmaStep.empty()) {
+            items << item;
+            continue;
+        }
+        QTreeWidgetItem*& group = groups[finding.gemmaStep];
+        if (!group) {
+            group = groupItem(QString::fromStdString(finding.gemmaStep), finding.severity, stale);
+            items << group;
+        }
+        group->addChild(item);
     }
+    showGrouped(!groups.empty());
     m_view->addTopLevelItems(items);
-    auto same = std::find_if(items.cbegin(), items.cend(),
-                             [current](const QTreeWidgetItem* item) { return findingIndex(item) == current; });
-    if (same != items.cend())
-        m_view->setCurrentItem(*same, 0, QItemSelectionModel::NoUpdate);
-    else if (!items.isEmpty())
-        m_view->setCurrentItem(items.front(), 0, QItemSelectionModel::NoUpdate);
+    for (const auto& [stepId, group] : groups) {
+        group->setFirstColumnSpanned(true);
+        group->setExpanded(!m_collapsedGroups.contains(QString::fromStdString(stepId)));
+    }
+    QTreeWidgetItem* same = nullptr;
+    for (QTreeWidgetItemIterator it(m_view); *it && !same; ++it) {
+        const QString group = (*it)->data(0, kGroupRole).toString();
+        if (group.isEmpty() ? findingIndex(*it) == current && current >= 0 : group == currentGroup)
+            same = *it;
+    }
+    if (!same && !items.isEmpty())
+        same = items.front();
+    if (same)
+        m_view->setCurrentItem(same, 0, QItemSelectionModel::NoUpdate);
     refreshStatus();
     updateActions();
+}
+
+QTreeWidgetItem* VerificationPanel::findingItem(const core::VerificationFinding& finding, int index, bool stale) const
+{
+    const QString message = verificationText(finding);
+    const QString scans = finding.counterexample ? QString::number(finding.counterexample->scans) : QString();
+    auto* item = new QTreeWidgetItem({QString::fromStdString(finding.code), elementsText(finding), scans, message});
+    item->setIcon(CodeColumn, severityIcon(finding.severity));
+    item->setToolTip(CodeColumn, severityText(finding.severity));
+    item->setToolTip(ElementColumn, item->text(ElementColumn));
+    item->setToolTip(MessageColumn, message);
+    item->setTextAlignment(ScansColumn, Qt::AlignRight | Qt::AlignVCenter);
+    item->setData(0, kIndexRole, index);
+    if (stale)
+        greyOut(item);
+    return item;
+}
+
+// `worst`: the severity of its first finding, errors coming first.
+QTreeWidgetItem* VerificationPanel::groupItem(const QString& stepId, core::Severity worst, bool stale) const
+{
+    auto* item = new QTreeWidgetItem({groupTitle(stepId)});
+    item->setIcon(CodeColumn, severityIcon(worst));
+    item->setToolTip(CodeColumn, tr("The findings about the nested GRAFCET of %1").arg(stepId));
+    item->setData(0, kIndexRole, -1);
+    item->setData(0, kGroupRole, stepId);
+    QFont font = item->font(CodeColumn);
+    font.setBold(true);
+    item->setFont(CodeColumn, font);
+    if (stale)
+        greyOut(item);
+    return item;
+}
+
+// The branches take room from the code column: it grows by their indents,
+// so that the codes of the nested findings are not cut, taken from the
+// elements, so that the messages keep their width in the dock column.
+void VerificationPanel::showGrouped(bool grouped)
+{
+    if (grouped == m_view->rootIsDecorated())
+        return;
+    const int indents = (grouped ? 2 : -2) * m_view->indentation();
+    QHeaderView* header = m_view->header();
+    header->resizeSection(CodeColumn, header->sectionSize(CodeColumn) + indents);
+    header->resizeSection(ElementColumn, header->sectionSize(ElementColumn) - indents);
+    m_view->setRootIsDecorated(grouped);
+}
+
+void VerificationPanel::greyOut(QTreeWidgetItem* item) const
+{
+    const QBrush grey(secondaryTextColor(palette(), QPalette::Base));
+    for (int column = 0; column < m_view->columnCount(); ++column)
+        item->setForeground(column, grey);
 }
 
 void VerificationPanel::refreshStatus()
@@ -221,12 +367,27 @@ void VerificationPanel::refreshStatus()
     } else {
         const core::VerificationResult& result = m_runner->result();
         const QString configurations = QString::number(static_cast<qulonglong>(result.configurations));
-        if (result.violated())
-            text = tr("Some properties do not hold (%1 configurations explored).").arg(configurations);
-        else if (!result.findings.empty())
-            text = tr("Every property holds; see the notes (%1 configurations explored).").arg(configurations);
-        else
-            text = tr("Every property holds (%1 configurations explored).").arg(configurations);
+        const QString states = QString::number(static_cast<qulonglong>(result.programStates));
+        if (!result.bothLayers) {
+            if (result.violated())
+                text = tr("Some properties do not hold (%1 configurations explored).").arg(configurations);
+            else if (!result.findings.empty())
+                text = tr("Every property holds; see the notes (%1 configurations explored).").arg(configurations);
+            else
+                text = tr("Every property holds (%1 configurations explored).").arg(configurations);
+        } else if (result.violated()) {
+            text = tr("Some properties do not hold (%1 configurations of the GEMMA layer and %2 program states of "
+                      "both layers explored).")
+                       .arg(configurations, states);
+        } else if (!result.findings.empty()) {
+            text = tr("Every property holds; see the notes (%1 configurations of the GEMMA layer and %2 program "
+                      "states of both layers explored).")
+                       .arg(configurations, states);
+        } else {
+            text = tr("Every property holds (%1 configurations of the GEMMA layer and %2 program states of both "
+                      "layers explored).")
+                       .arg(configurations, states);
+        }
     }
     m_statusLabel->setText(text);
     refreshAssumptions();
@@ -241,17 +402,24 @@ void VerificationPanel::refreshAssumptions()
         ? tr("All Complete outputs free")
         : tr("Assumed Complete automatic: %1").arg(automatic.join(QStringLiteral(", ")));
     m_assumptionsLabel->setText(text);
-    m_assumptionsLabel->setToolTip(
-        text + QLatin1Char('\n')
+    QString toolTip = text + QLatin1Char('\n')
         + tr("Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at "
              "every scan, as the skeleton function block. Verify assumes automatic the nested steps whose "
-             "Complete is Automatic in the Simulation dock while the simulation runs; all others are free."));
+             "Complete is Automatic in the Simulation dock while the simulation runs; all others are free.");
+    // The core's lines are English, like the command line's "abstracted:" lines.
+    const std::vector<std::string>& abstractions = m_runner->result().abstractions;
+    if (m_runner->hasResult() && !abstractions.empty()) {
+        toolTip += QStringLiteral("\n\n") + tr("The exploration of both layers abstracted:");
+        for (const std::string& line : abstractions)
+            toolTip += QStringLiteral("\n\u2022 ") + QString::fromStdString(line);
+    }
+    m_assumptionsLabel->setToolTip(toolTip);
 }
 
 void VerificationPanel::updateActions()
 {
     const core::VerificationFinding* finding = m_runner->finding(findingIndex(m_view->currentItem()));
-    m_showAction->setEnabled(finding && !finding->elements.empty());
+    m_showAction->setEnabled(!firstElementRef(finding).isNull());
     // A stale counterexample may not fit the model any more.
     m_replayAction->setEnabled(finding && finding->counterexample && !m_runner->isStale());
     m_replayAction->setToolTip(m_runner->isStale()
@@ -261,9 +429,9 @@ void VerificationPanel::updateActions()
 
 void VerificationPanel::showOnChart(const QTreeWidgetItem* item)
 {
-    const core::VerificationFinding* finding = m_runner->finding(findingIndex(item));
-    if (finding && !finding->elements.empty())
-        m_selection->select(elementRef(finding->elements.front()));
+    const ElementRef ref = firstElementRef(m_runner->finding(findingIndex(item)));
+    if (!ref.isNull())
+        m_selection->select(ref); // a nested element opens its GRAFCET's tab (MainWindow)
 }
 
 void VerificationPanel::replay(const QTreeWidgetItem* item)
@@ -274,14 +442,14 @@ void VerificationPanel::replay(const QTreeWidgetItem* item)
         emit replayRequested(index);
 }
 
+// A selected group row copies its title and all its findings.
 void VerificationPanel::copySelected()
 {
     QStringList lines;
-    for (int i = 0; i < m_view->topLevelItemCount(); ++i) {
-        const QTreeWidgetItem* item = m_view->topLevelItem(i);
-        if (item->isSelected())
-            lines << QStringLiteral("%1\t%2\t%3")
-                         .arg(item->text(CodeColumn), item->text(ElementColumn), item->text(MessageColumn));
+    for (QTreeWidgetItemIterator it(m_view); *it; ++it) {
+        const QTreeWidgetItem* item = *it;
+        if (item->isSelected() || (item->parent() && item->parent()->isSelected()))
+            lines << copiedLine(item);
     }
     if (!lines.isEmpty())
         QGuiApplication::clipboard()->setText(lines.join(QLatin1Char('\n')) + QLatin1Char('\n'));

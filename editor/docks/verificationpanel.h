@@ -1,5 +1,9 @@
 #pragma once
 
+#include "core/checks/diagnostic.h"
+
+#include <QSet>
+#include <QString>
 #include <QWidget>
 
 class QAction;
@@ -8,6 +12,10 @@ class QToolButton;
 class QTreeWidget;
 class QTreeWidgetItem;
 
+namespace core {
+struct VerificationFinding;
+}
+
 namespace editor {
 
 class Selection;
@@ -15,9 +23,10 @@ class VerificationRunner;
 
 // The Verification category of the Problems dock: a Verify button, what the
 // last run found (severity, code, elements, counterexample length, message;
-// errors first)
-// and, for the current finding, Show on Chart (selects its first element)
-// and Replay in Simulator (asked of the window through replayRequested()).
+// errors first; the findings about a nested GRAFCET under a row of its
+// GEMMA step) and, for the current finding, Show on Chart (selects its first
+// element, a nested one on its GRAFCET's tab) and Replay in Simulator (asked
+// of the window through replayRequested()).
 // After a change of the model, or of the Complete assumptions (Simulation
 // dock), the findings stay, greyed, with a note, until the next run. A label
 // says which nested steps the shown findings assume Complete automatic.
@@ -36,7 +45,8 @@ public:
     QAction* showOnChartAction() const { return m_showAction; }
     QAction* replayAction() const { return m_replayAction; }
 
-    // The index of the row's finding in the runner's result; -1 for none.
+    // The index of the row's finding in the runner's result; -1 for none
+    // (a GEMMA step's row grouping the findings about its nested GRAFCET).
     static int findingIndex(const QTreeWidgetItem* item);
     void showOnChart(const QTreeWidgetItem* item);
     void replay(const QTreeWidgetItem* item);
@@ -55,6 +65,10 @@ private:
     void refreshAssumptions();
     void updateActions();
     void copySelected();
+    QTreeWidgetItem* findingItem(const core::VerificationFinding& finding, int index, bool stale) const;
+    QTreeWidgetItem* groupItem(const QString& stepId, core::Severity worst, bool stale) const;
+    void greyOut(QTreeWidgetItem* item) const;
+    void showGrouped(bool grouped);
 
     VerificationRunner* m_runner;
     Selection* m_selection;
@@ -65,6 +79,7 @@ private:
     QAction* m_showAction;
     QAction* m_replayAction;
     QAction* m_copyAction;
+    QSet<QString> m_collapsedGroups; // GEMMA step ids
 };
 
 } // namespace editor

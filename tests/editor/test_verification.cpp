@@ -23,11 +23,19 @@
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/verificationrunner.h"
+#include "editor/grafcet/grafcetscene.h"
+#include "editor/grafcet/grafcetstepitem.h"
+#include "editor/grafcet/grafcettransitionitem.h"
+#include "editor/grafcet/grafcetview.h"
+
+#include "core/formats/modelfiles.h"
 
 #include <QToolButton>
 #include <QAction>
 #include <QComboBox>
 #include <QApplication>
+#include <QClipboard>
+#include <QTreeWidgetItemIterator>
 #include <QLabel>
 #include <QSettings>
 #include <QStatusBar>
@@ -101,9 +109,20 @@ private slots:
     void completeSettingChangeCancelsARunningVerification();
     void everyCodeHasATemplate();
 
+    // Both layers, on the shipped faulty example.
+    void nestedFindingsSitUnderTheirGemmaStep();
+    void copyTakesChildRowsAndGroups();
+    void showOnChartOpensTheNestedTabAndSelects();
+    void statusCountsProgramStatesAndListsAbstractions();
+    void propertyFindingsShowTheirText();
+    void replayOfANestedFindingShowsItsGrafcet();
+    void everyBothLayersCodeIsWorded();
+
 private:
     void verifyAndWait();
+    void loadFaultyExample();
     QTreeWidgetItem* row(const QString& code, const QString& element) const;
+    QTreeWidgetItem* groupRow(const QString& stepId) const;
     void setCompleteMode(const QString& step, const QString& mode);
 
     QTemporaryDir m_settingsDir;
@@ -154,17 +173,36 @@ void TestVerification::verifyAndWait()
     QVERIFY(!m_runner->isStale());
 }
 
+// Any row, top-level or under a GEMMA step.
 QTreeWidgetItem* TestVerification::row(const QString& code, const QString& element) const
 {
-    QTreeWidget* view = m_dock->verificationPanel()->view();
-    for (int i = 0; i < view->topLevelItemCount(); ++i) {
-        QTreeWidgetItem* item = view->topLevelItem(i);
+    for (QTreeWidgetItemIterator it(m_dock->verificationPanel()->view()); *it; ++it) {
+        QTreeWidgetItem* item = *it;
         const core::VerificationFinding* finding = m_runner->finding(VerificationPanel::findingIndex(item));
         if (item->text(VerificationPanel::CodeColumn) == code && finding && !finding->elements.empty()
             && QString::fromStdString(finding->elements.front()) == element)
             return item;
     }
     return nullptr;
+}
+
+// The top-level row that groups the findings about the nested GRAFCET of `stepId`.
+QTreeWidgetItem* TestVerification::groupRow(const QString& stepId) const
+{
+    QTreeWidget* view = m_dock->verificationPanel()->view();
+    for (int i = 0; i < view->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = view->topLevelItem(i);
+        if (VerificationPanel::findingIndex(item) < 0 && item->text(VerificationPanel::CodeColumn).startsWith(stepId + ' '))
+            return item;
+    }
+    return nullptr;
+}
+
+void TestVerification::loadFaultyExample()
+{
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-faulty.ggstudio.json");
+    QVERIFY(loaded.model);
+    m_window->document()->replaceModel(*loaded.model, QString(), core::ModelFormat::Native);
 }
 
 // As the user does it: the step's combo box in the Simulation dock.
@@ -528,6 +566,329 @@ void TestVerification::everyCodeHasATemplate()
     unknown.code = "GV999";
     unknown.message = "something new about F1->A2";
     QCOMPARE(verificationText(unknown), QStringLiteral("Something new about F1 → A2"));
+}
+
+// The findings about a nested GRAFCET are children of a row of their GEMMA
+// step, which carries the worst severity, expanded; the others stay at the
+// top; errors come first at each level.
+void TestVerification::nestedFindingsSitUnderTheirGemmaStep()
+{
+    loadFaultyExample();
+    verifyAndWait();
+    const core::VerificationResult& result = m_runner->result();
+    QVERIFY(result.bothLayers);
+    QTreeWidget* view = m_dock->verificationPanel()->view();
+
+    QTreeWidgetItem* f2 = groupRow(QStringLiteral("F2"));
+    QVERIFY2(f2, "a row for F2's nested GRAFCET");
+    QCOMPARE(f2->text(VerificationPanel::CodeColumn), QStringLiteral("F2 Preparation run: nested GRAFCET"));
+    QVERIFY(f2->isExpanded());
+    QVERIFY(f2->isFirstColumnSpanned());
+    QTreeWidgetItem* never = row(QStringLiteral("GV110"), QStringLiteral("F2/4"));
+    QVERIFY(never);
+    QCOMPARE(never->parent(), f2);
+    QCOMPARE(never->text(VerificationPanel::ElementColumn), QStringLiteral("F2: step 4"));
+    QTreeWidgetItem* dead = row(QStringLiteral("GV111"), QStringLiteral("F2/T4"));
+    QVERIFY(dead);
+    QCOMPARE(dead->parent(), f2);
+    QCOMPARE(dead->text(VerificationPanel::ElementColumn), QStringLiteral("F2: T4"));
+    // GV115 of F2 is an error: the group's first child and its icon.
+    QCOMPARE(f2->child(0)->text(VerificationPanel::CodeColumn), QStringLiteral("GV115"));
+    QCOMPARE(f2->icon(VerificationPanel::CodeColumn).cacheKey() == QIcon().cacheKey(), false);
+    QCOMPARE(f2->toolTip(VerificationPanel::CodeColumn).contains(QStringLiteral("F2")), true);
+
+    // Every finding is listed once; those without a GEMMA step at the top.
+    int rows = 0;
+    for (QTreeWidgetItemIterator it(view); *it; ++it) {
+        const int index = VerificationPanel::findingIndex(*it);
+        if (index < 0)
+            continue;
+        ++rows;
+        const core::VerificationFinding& finding = result.findings[static_cast<std::size_t>(index)];
+        if (finding.gemmaStep.empty())
+            QVERIFY(!(*it)->parent());
+        else
+            QVERIFY((*it)->parent() && (*it)->parent() == groupRow(QString::fromStdString(finding.gemmaStep)));
+    }
+    QCOMPARE(rows, static_cast<int>(result.findings.size()));
+    QVERIFY(!row(QStringLiteral("GV106"), QStringLiteral("A6"))->parent());
+    QVERIFY(groupRow(QStringLiteral("A6")));
+
+    // Errors first among the children and among the top-level rows (a group
+    // counts with its worst finding).
+    const auto severityOf = [&](const QTreeWidgetItem* item) {
+        const int index = VerificationPanel::findingIndex(item);
+        return index >= 0 ? result.findings[static_cast<std::size_t>(index)].severity
+                          : result.findings[static_cast<std::size_t>(VerificationPanel::findingIndex(item->child(0)))]
+                                .severity;
+    };
+    for (int i = 1; i < view->topLevelItemCount(); ++i)
+        QVERIFY(severityOf(view->topLevelItem(i - 1)) <= severityOf(view->topLevelItem(i)));
+    for (int i = 1; i < f2->childCount(); ++i)
+        QVERIFY(severityOf(f2->child(i - 1)) <= severityOf(f2->child(i)));
+
+    // A collapsed group stays collapsed when the list is refreshed (a language change).
+    f2->setExpanded(false);
+    m_translators->setLanguage(QStringLiteral("de"));
+    m_translators->setLanguage(QStringLiteral("en"));
+    QVERIFY(groupRow(QStringLiteral("F2")));
+    QVERIFY(!groupRow(QStringLiteral("F2"))->isExpanded());
+    QVERIFY(groupRow(QStringLiteral("A6"))->isExpanded());
+}
+
+// Copy takes a selected child row, and a selected group with its findings;
+// the current child row stays current across a refresh.
+void TestVerification::copyTakesChildRowsAndGroups()
+{
+    loadFaultyExample();
+    verifyAndWait();
+    VerificationPanel* panel = m_dock->verificationPanel();
+    QTreeWidget* view = panel->view();
+    QAction* copyAction = nullptr;
+    for (QAction* action : view->actions()) {
+        if (action->text() == QStringLiteral("&Copy"))
+            copyAction = action;
+    }
+    QVERIFY(copyAction);
+
+    QTreeWidgetItem* never = row(QStringLiteral("GV110"), QStringLiteral("F2/4"));
+    QVERIFY(never);
+    view->setCurrentItem(never);
+    QCOMPARE(view->selectedItems(), QList<QTreeWidgetItem*>{never});
+    copyAction->trigger();
+    const QString line = QApplication::clipboard()->text();
+    QVERIFY2(line.startsWith(QStringLiteral("GV110\tF2: step 4\tStep 4 of the nested GRAFCET of F2")), qPrintable(line));
+    QCOMPARE(line.count(QLatin1Char('\n')), 1);
+
+    QTreeWidgetItem* f2 = groupRow(QStringLiteral("F2"));
+    view->setCurrentItem(f2);
+    copyAction->trigger();
+    const QStringList lines = QApplication::clipboard()->text().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 1 + f2->childCount());
+    QCOMPARE(lines.front(), f2->text(VerificationPanel::CodeColumn));
+    QVERIFY(lines.contains(line.trimmed()));
+
+    // The current child row survives the refresh of a language change.
+    view->setCurrentItem(row(QStringLiteral("GV111"), QStringLiteral("F2/T4")));
+    m_translators->setLanguage(QStringLiteral("de"));
+    QTreeWidgetItem* current = view->currentItem();
+    QVERIFY(current);
+    const core::VerificationFinding* finding = m_runner->finding(VerificationPanel::findingIndex(current));
+    QVERIFY(finding);
+    QCOMPARE(finding->code, std::string("GV111"));
+    QCOMPARE(finding->elements.front(), std::string("F2/T4"));
+    // A group row stays current too.
+    view->setCurrentItem(groupRow(QStringLiteral("A6")));
+    m_translators->setLanguage(QStringLiteral("en"));
+    QCOMPARE(view->currentItem(), groupRow(QStringLiteral("A6")));
+    QVERIFY(!panel->showOnChartAction()->isEnabled()); // a group names no element
+}
+
+// Show on Chart of a nested finding opens the tab of its GRAFCET and
+// selects the nested step or transition there.
+void TestVerification::showOnChartOpensTheNestedTabAndSelects()
+{
+    loadFaultyExample();
+    verifyAndWait();
+    VerificationPanel* panel = m_dock->verificationPanel();
+    QVERIFY(!m_window->grafcetView(QStringLiteral("F2")));
+
+    QTreeWidgetItem* never = row(QStringLiteral("GV110"), QStringLiteral("F2/4"));
+    QVERIFY(never);
+    panel->view()->setCurrentItem(never);
+    QVERIFY(panel->showOnChartAction()->isEnabled());
+    panel->showOnChartAction()->trigger();
+    QCOMPARE(m_window->selection()->current(), ElementRef::grafcetStep(QStringLiteral("F2"), 4));
+    GrafcetView* f2 = m_window->grafcetView(QStringLiteral("F2"));
+    QVERIFY2(f2, "the nested tab of F2 is opened");
+    QCOMPARE(m_window->centralTabs()->currentWidget(), f2);
+    QVERIFY(f2->grafcetScene()->stepItem(4));
+    QTRY_VERIFY(f2->grafcetScene()->stepItem(4)->isSelected());
+
+    // Back on the GEMMA chart, a dead nested transition brings the tab forward again.
+    m_window->centralTabs()->setCurrentIndex(0);
+    QTreeWidgetItem* dead = row(QStringLiteral("GV111"), QStringLiteral("A6/T2"));
+    QVERIFY(dead);
+    emit panel->view()->itemActivated(dead, 0);
+    QCOMPARE(m_window->selection()->current(), ElementRef::grafcetTransition(QStringLiteral("A6"), 2));
+    GrafcetView* a6 = m_window->grafcetView(QStringLiteral("A6"));
+    QVERIFY(a6);
+    QCOMPARE(m_window->centralTabs()->currentWidget(), a6);
+    QVERIFY(a6->grafcetScene()->transitionItem(2));
+    QTRY_VERIFY(a6->grafcetScene()->transitionItem(2)->isSelected());
+    QVERIFY(!f2->grafcetScene()->stepItem(4)->isSelected());
+
+    // A selection of two nested transitions: the first is shown.
+    QTreeWidgetItem* together = row(QStringLiteral("GV114"), QStringLiteral("F2/T1"));
+    QVERIFY(together);
+    QCOMPARE(together->text(VerificationPanel::ElementColumn), QStringLiteral("F2: T1, F2: T2"));
+    panel->showOnChart(together);
+    QCOMPARE(m_window->selection()->current(), ElementRef::grafcetTransition(QStringLiteral("F2"), 1));
+    QCOMPARE(m_window->centralTabs()->currentWidget(), f2);
+}
+
+void TestVerification::statusCountsProgramStatesAndListsAbstractions()
+{
+    loadFaultyExample();
+    verifyAndWait();
+    const core::VerificationResult& result = m_runner->result();
+    QVERIFY(result.programStates > 0);
+    QVERIFY(!result.abstractions.empty());
+    VerificationPanel* panel = m_dock->verificationPanel();
+    const QString status = panel->statusLabel()->text();
+    QVERIFY2(status.contains(QStringLiteral("%1 program states of both layers").arg(result.programStates)),
+             qPrintable(status));
+    QVERIFY2(status.contains(QStringLiteral("%1 configurations").arg(result.configurations)), qPrintable(status));
+    const QString toolTip = panel->assumptionsLabel()->toolTip();
+    QVERIFY(toolTip.contains(QStringLiteral("The exploration of both layers abstracted:")));
+    for (const std::string& line : result.abstractions)
+        QVERIFY2(toolTip.contains(QString::fromStdString(line)), line.c_str());
+
+    // Without nested GRAFCETs only the GEMMA layer is explored, as before.
+    m_window->document()->replaceModel(modelWithStuckStep(), QString(), core::ModelFormat::Native);
+    verifyAndWait();
+    QVERIFY(!m_runner->result().bothLayers);
+    QVERIFY(!panel->statusLabel()->text().contains(QStringLiteral("program states")));
+    QVERIFY(!panel->assumptionsLabel()->toolTip().contains(QStringLiteral("abstracted")));
+}
+
+// A property finding names the property in the element column and has no
+// element to show on the chart.
+void TestVerification::propertyFindingsShowTheirText()
+{
+    loadFaultyExample();
+    const QString violated = QStringLiteral("never in F2 AND Clamped");
+    const QString holds = QStringLiteral("never DrillDown AND DrillUp");
+    const QString unusable = QStringLiteral("never NoSuchInput");
+    m_runner->setAdditionalProperties({violated, holds, unusable});
+    verifyAndWait();
+    VerificationPanel* panel = m_dock->verificationPanel();
+    const std::vector<std::pair<QString, QString>> expected{
+        {QStringLiteral("GV120"), violated}, {QStringLiteral("GV121"), holds}, {QStringLiteral("GV122"), unusable}};
+    for (const auto& [code, text] : expected) {
+        QTreeWidgetItem* found = nullptr;
+        for (QTreeWidgetItemIterator it(panel->view()); *it; ++it) {
+            if ((*it)->text(VerificationPanel::CodeColumn) == code)
+                found = *it;
+        }
+        QVERIFY2(found, qPrintable(code));
+        QVERIFY(!found->parent());
+        QCOMPARE(found->text(VerificationPanel::ElementColumn), text);
+        QVERIFY2(found->text(VerificationPanel::MessageColumn).contains(QStringLiteral("'%1'").arg(text)),
+                 qPrintable(found->text(VerificationPanel::MessageColumn)));
+        panel->view()->setCurrentItem(found);
+        QVERIFY(!panel->showOnChartAction()->isEnabled());
+        const ElementRef before = m_window->selection()->current();
+        panel->showOnChart(found);
+        QCOMPARE(m_window->selection()->current(), before);
+        if (code == QStringLiteral("GV120"))
+            QVERIFY(panel->replayAction()->isEnabled()); // its counterexample
+    }
+}
+
+// Replay in Simulator of a nested finding reaches its situation on both
+// layers and ends with the nested GRAFCET's tab in front.
+void TestVerification::replayOfANestedFindingShowsItsGrafcet()
+{
+    loadFaultyExample();
+    verifyAndWait();
+    VerificationPanel* panel = m_dock->verificationPanel();
+    QTreeWidgetItem* together = row(QStringLiteral("GV114"), QStringLiteral("F2/T1"));
+    QVERIFY(together);
+    const core::VerificationFinding* finding = m_runner->finding(VerificationPanel::findingIndex(together));
+    QVERIFY(finding && finding->counterexample && finding->counterexample->confirmed);
+    QCOMPARE(finding->gemmaStep, std::string("F2"));
+
+    panel->view()->setCurrentItem(together);
+    QVERIFY(panel->replayAction()->isEnabled());
+    panel->replayAction()->trigger();
+    SimulationSession* session = m_window->simulationSession();
+    QVERIFY(session->isReplaying());
+    GrafcetView* f2 = m_window->grafcetView(QStringLiteral("F2"));
+    QVERIFY2(f2, "the replay opens F2's nested GRAFCET");
+    QCOMPARE(m_window->centralTabs()->currentWidget(), f2);
+    // The user looks at the GEMMA chart meanwhile: the end of the replay brings the tab back.
+    m_window->centralTabs()->setCurrentIndex(0);
+    m_window->findChild<QAction*>(QStringLiteral("runSimulationAction"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(session->replayState(), SimulationSession::ReplayState::Finished, 20000);
+    QVERIFY(session->replayFailures().empty()); // the expectations on both layers held
+    QCOMPARE(session->simulator()->scanCount(), finding->counterexample->scans);
+    QCOMPARE(QString::fromStdString(session->simulator()->activeStepId()), QStringLiteral("F2"));
+    QCOMPARE(m_window->centralTabs()->currentWidget(), f2);
+
+    // A GEMMA-layer finding's replay leaves the tabs as they are.
+    QTreeWidgetItem* stuck = row(QStringLiteral("GV106"), QStringLiteral("A6"));
+    QVERIFY(stuck);
+    m_window->centralTabs()->setCurrentIndex(0);
+    panel->view()->setCurrentItem(stuck);
+    panel->replayAction()->trigger();
+    m_window->findChild<QAction*>(QStringLiteral("runSimulationAction"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(session->replayState(), SimulationSession::ReplayState::Finished, 20000);
+    QCOMPARE(m_window->centralTabs()->currentIndex(), 0);
+}
+
+// Each code of the exploration of both layers, with the arguments
+// bothlayers.cpp gives it, is worded in the UI language: not the English
+// fallback, naming its arguments, and an unconfirmed one says so.
+void TestVerification::everyBothLayersCodeIsWorded()
+{
+    namespace gv = core::verification;
+    struct Shape {
+        const char* code;
+        std::vector<std::string> elements;
+        std::vector<std::string> arguments;
+        int property = -1;
+    };
+    const std::vector<Shape> shapes{
+        {gv::kIncomplete, {"model"}, {"model"}},
+        {gv::kUnreachableStep, {"F1", "F2->F1"}, {}}, // the arguments left to the elements
+        {gv::kDeadTransition, {"F2->F1"}, {}},
+        {gv::kNestedStepNeverActive, {"F1/5"}, {"F1", "5"}},
+        {gv::kNestedTransitionDead, {"F1/T3"}, {"F1", "3"}},
+        {gv::kUnsafeNestedStep, {"F1/3"}, {"F1", "3"}},
+        {gv::kUnstableReachable, {"F1"}, {"F1"}},
+        {gv::kBranchesTogether, {"F1/T1", "F1/T2"}, {"F1", "1", "1", "2"}},
+        {gv::kNeverComplete, {"F1", "F1->A2"}, {"F1", "F1->A2"}},
+        {gv::kNeverComplete, {"F1"}, {"F1"}},
+        {gv::kWaitsForNoComplete, {"F1->A2"}, {"F1->A2", "F1"}},
+        {gv::kStoredRace, {"F1/2", "F1/3"}, {"F1", "2", "3", "Counter"}},
+        {gv::kOutputOnEmergencyStop, {"D1"}, {"D1", "DrillDown"}},
+        {gv::kStoredOutputOnEmergencyStop, {"D1"}, {"D1", "Marker"}},
+        {gv::kPropertyViolated, {}, {"never A AND B"}, 0},
+        {gv::kPropertyHolds, {}, {"never A AND B"}, 0},
+        {gv::kPropertyUnusable, {}, {"never A AND", "column 12: expected an operand"}, 0},
+        {gv::kPropertyUnusable, {}, {"", ""}, 0},
+    };
+    for (const Shape& shape : shapes) {
+        core::VerificationFinding finding;
+        finding.code = shape.code;
+        finding.elements = shape.elements;
+        finding.arguments = shape.arguments;
+        finding.property = shape.property;
+        finding.message = "untranslated";
+        const QString text = verificationText(finding);
+        QVERIFY2(!text.isEmpty() && text != QStringLiteral("Untranslated"), shape.code);
+        for (const std::string& argument : shape.arguments.empty() ? shape.elements : shape.arguments) {
+            const QString named = QString::fromStdString(argument).contains(QStringLiteral("->"))
+                ? transitionLabel(QString::fromStdString(argument))
+                : QString::fromStdString(argument);
+            if (shape.code != std::string(gv::kIncomplete))
+                QVERIFY2(text.contains(named), qPrintable(shape.code + QStringLiteral(": ") + text));
+        }
+        QVERIFY2(!text.contains(QStringLiteral("->")), qPrintable(text));
+    }
+    // An unconfirmed nested claim says so.
+    core::VerificationFinding unconfirmed;
+    unconfirmed.code = gv::kUnsafeNestedStep;
+    unconfirmed.severity = core::Severity::Info;
+    unconfirmed.gemmaStep = "F1";
+    unconfirmed.elements = {"F1/3"};
+    unconfirmed.arguments = {"F1", "3"};
+    unconfirmed.counterexample = core::Counterexample{};
+    QVERIFY(verificationText(unconfirmed).contains(QStringLiteral("Not confirmed")));
+    unconfirmed.counterexample->confirmed = true;
+    unconfirmed.severity = core::Severity::Warning;
+    QVERIFY(!verificationText(unconfirmed).contains(QStringLiteral("Not confirmed")));
 }
 
 QTEST_MAIN(TestVerification)
