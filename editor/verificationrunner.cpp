@@ -22,20 +22,17 @@ namespace editor {
 // `complete` and `cancelled` and writes `result` or `failure`, which the GUI
 // thread reads after the thread finished. `automatic` is the GUI thread's.
 struct VerificationRunner::Job {
-    Job(const core::Model& m, const QStringList& automaticSteps, const QStringList& additionalProperties)
+    Job(const core::Model& m, const QStringList& automaticSteps)
         : model(m)
         , automatic(automaticSteps)
     {
         for (const QString& step : automaticSteps)
             complete[step.toStdString()] = core::CompleteAssumption::Automatic;
-        for (const QString& property : additionalProperties)
-            properties.push_back(property.toStdString());
     }
 
     core::Model model;
     QStringList automatic;
     std::map<std::string, core::CompleteAssumption> complete;
-    std::vector<std::string> properties;
     std::atomic<bool> cancelled{false};
     core::VerificationResult result;
     std::string failure;
@@ -78,7 +75,7 @@ void VerificationRunner::start()
     const bool wasRunning = isRunning();
     if (wasRunning)
         m_current->cancelled = true;
-    auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic, m_additionalProperties);
+    auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic);
     m_current = job;
     m_wasCancelled = false;
     QThread* thread = QThread::create([job] { runJob(job); });
@@ -183,7 +180,6 @@ void VerificationRunner::runJob(const std::shared_ptr<Job>& job)
 {
     core::VerificationOptions options;
     options.complete = job->complete;
-    options.properties = job->properties;
     options.cancelled = [job] { return job->cancelled.load(std::memory_order_relaxed); };
     try {
         job->result = core::verifyModel(job->model, options);

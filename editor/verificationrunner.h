@@ -57,11 +57,6 @@ public:
     // The last run was abandoned (a change, not a new start), until the next start.
     bool wasCancelled() const { return m_wasCancelled; }
 
-    // Properties the next runs check in addition to the model's own
-    // (`never P` / `always P`), as `ggstudio-cli verify --property` adds them.
-    void setAdditionalProperties(const QStringList& properties) { m_additionalProperties = properties; }
-    QStringList additionalProperties() const { return m_additionalProperties; }
-
     // The nested steps whose Complete the next run assumes automatic, state order.
     QStringList assumedAutomatic() const { return m_assumedAutomatic; }
     // The same for the last result.
@@ -105,7 +100,6 @@ private:
     bool m_wasCancelled = false;
     QStringList m_assumedAutomatic;
     QStringList m_resultAutomatic;
-    QStringList m_additionalProperties;
 };
 
 } // namespace editor

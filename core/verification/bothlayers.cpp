@@ -136,8 +136,11 @@ void BothLayers::run()
     addNestedFacts();
     addEvents();
     addProperties();
-    for (VerificationFinding& f : m_added)
+    for (VerificationFinding& f : m_added) {
+        if (f.arguments.empty())
+            f.arguments = f.elements; // as the GEMMA-layer findings: what the message names
         m_result.findings.push_back(std::move(f));
+    }
     std::stable_sort(m_result.findings.begin(), m_result.findings.end(),
                      [](const VerificationFinding& a, const VerificationFinding& b) { return a.code < b.code; });
 }

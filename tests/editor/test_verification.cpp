@@ -760,7 +760,8 @@ void TestVerification::propertyFindingsShowTheirText()
     const QString violated = QStringLiteral("never in F2 AND Clamped");
     const QString holds = QStringLiteral("never DrillDown AND DrillUp");
     const QString unusable = QStringLiteral("never NoSuchInput");
-    m_runner->setAdditionalProperties({violated, holds, unusable});
+    for (const QString& text : {violated, holds, unusable})
+        QVERIFY(m_window->document()->modelForCommands().addProperty({text.toStdString(), ""}).ok);
     verifyAndWait();
     VerificationPanel* panel = m_dock->verificationPanel();
     const std::vector<std::pair<QString, QString>> expected{

@@ -1,4 +1,4 @@
-// libFuzzer target: the condition parser (both contexts), the action parser,
+// libFuzzer target: the condition parser (all three contexts), verification properties, the action parser,
 // the type checker and the printer on arbitrary text. Spans must stay inside the text, and printing must be a
 // fixed point: the printed condition parses and prints to itself.
 
@@ -7,6 +7,7 @@
 #include "core/condition/conditionparser.h"
 #include "core/model/model.h"
 #include "core/condition/symboltable.h"
+#include "core/verification/property.h"
 
 #include <cstdint>
 #include <cstdlib>
@@ -87,6 +88,16 @@ void checkAction(std::string_view text)
     }
 }
 
+// A verification property: every problem's span inside the text.
+void checkProperty(std::string_view text)
+{
+    static const core::Model model;
+    for (const core::PropertyProblem& problem : core::checkProperty(model, text)) {
+        expect(spanInside(problem.span, text.size()));
+        expect(!problem.message.empty());
+    }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -94,6 +105,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     checkCondition(text, {});
     checkCondition(text, {core::cond::Context::Nested});
+    checkCondition(text, {core::cond::Context::Property});
     checkAction(text);
+    checkProperty(text);
     return 0;
 }
