@@ -10,6 +10,13 @@
     </message>
 </context>
 <context>
+    <name>AddPropertyCommand</name>
+    <message>
+        <source>Add property</source>
+        <translation>Eigenschaft hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -226,6 +233,22 @@
     <message>
         <source>empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it</source>
         <translation>leere Bedingung: schreiben Sie, wann die Transition schaltet (TRUE, wenn sie immer bereit ist), oder blenden Sie die Transition aus, wenn die Maschine sie nicht braucht</translation>
+    </message>
+    <message>
+        <source>a property starts with never or always</source>
+        <translation>eine Eigenschaft beginnt mit never oder always</translation>
+    </message>
+    <message>
+        <source>a property starts with never or always, not &apos;%1&apos;</source>
+        <translation>eine Eigenschaft beginnt mit never oder always, nicht mit &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>expected a GEMMA step after &apos;in&apos;</source>
+        <translation>nach &apos;in&apos; wird ein GEMMA-Schritt erwartet</translation>
+    </message>
+    <message>
+        <source>expected a GEMMA step after &apos;in&apos;, found &apos;%1&apos;</source>
+        <translation>nach &apos;in&apos; wird ein GEMMA-Schritt erwartet, gefunden: &apos;%1&apos;</translation>
     </message>
 </context>
 <context>
@@ -513,6 +536,83 @@
         <source>The condition of %1 is empty: write when it fires (TRUE if it is always ready), or hide the transition if your machine does not need it.</source>
         <translation>Die Bedingung von %1 ist leer: Schreiben Sie, wann sie schaltet (TRUE, wenn sie immer bereit ist), oder blenden Sie die Transition aus, wenn Ihre Maschine sie nicht braucht.</translation>
     </message>
+    <message>
+        <source>Step %2 of the nested GRAFCET of %1 can never become active.</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a step of its nested GRAFCET</extracomment>
+        <translation>Schritt %2 des eingebetteten GRAFCET von %1 kann nie aktiv werden.</translation>
+    </message>
+    <message>
+        <source>Transition T%2 of the nested GRAFCET of %1 can never fire.</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a transition of its nested GRAFCET</extracomment>
+        <translation>Transition T%2 des eingebetteten GRAFCET von %1 kann nie schalten.</translation>
+    </message>
+    <message>
+        <source>Step %2 of the nested GRAFCET of %1 can be activated while it is already active: the GRAFCET is not safe.</source>
+        <translation>Schritt %2 des eingebetteten GRAFCET von %1 kann aktiviert werden, während er schon aktiv ist: der GRAFCET ist nicht sicher.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 can be Unstable: its evolutions do not settle within one scan.</source>
+        <translation>Der eingebettete GRAFCET von %1 kann instabil sein (Unstable): seine Entwicklungen kommen in einem Zyklus nicht zur Ruhe.</translation>
+    </message>
+    <message>
+        <source>Transitions T%3 and T%4 of the nested GRAFCET of %1 can fire together from step %2: both branches of the selection start.</source>
+        <extracomment>%2: a nested step; %3, %4: the numbers of two nested transitions</extracomment>
+        <translation>Die Transitionen T%3 und T%4 des eingebetteten GRAFCET von %1 können gemeinsam aus Schritt %2 schalten: beide Zweige der Auswahl starten.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead its nested GRAFCET to a situation from which Complete never becomes TRUE.</source>
+        <translation>Ist %1 aktiv, können die Eingänge seinen eingebetteten GRAFCET in eine Situation führen, aus der Complete nie TRUE wird.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead its nested GRAFCET to a situation from which Complete never becomes TRUE: %2 can no longer fire.</source>
+        <extracomment>%2: the GEMMA transitions that wait for Complete</extracomment>
+        <translation>Ist %1 aktiv, können die Eingänge seinen eingebetteten GRAFCET in eine Situation führen, aus der Complete nie TRUE wird: %2 kann nicht mehr schalten.</translation>
+    </message>
+    <message>
+        <source>%1 waits for the Complete of %2, which never becomes TRUE: it can never fire.</source>
+        <translation>%1 wartet auf das Complete von %2, das nie TRUE wird: sie kann nie schalten.</translation>
+    </message>
+    <message>
+        <source>Steps %2 and %3 of the nested GRAFCET of %1 can write different values to &apos;%4&apos; in the same scan: the result depends on the order of the actions.</source>
+        <translation>Die Schritte %2 und %3 des eingebetteten GRAFCET von %1 können im selben Zyklus verschiedene Werte in &apos;%4&apos; schreiben: das Ergebnis hängt von der Reihenfolge der Aktionen ab.</translation>
+    </message>
+    <message>
+        <source>The continuous output &apos;%2&apos; can still be TRUE in the scan in which the emergency stop %1 is entered.</source>
+        <translation>Der kontinuierliche Ausgang &apos;%2&apos; kann in dem Zyklus, in dem der Not-Halt %1 betreten wird, noch TRUE sein.</translation>
+    </message>
+    <message>
+        <source>The stored output &apos;%2&apos; can still be TRUE in the scan in which the emergency stop %1 is entered: stored actions are memories, only continuous outputs drop with the state.</source>
+        <translation>Der gespeicherte Ausgang &apos;%2&apos; kann in dem Zyklus, in dem der Not-Halt %1 betreten wird, noch TRUE sein: gespeicherte Aktionen sind Speicher, nur kontinuierliche Ausgänge fallen mit dem Zustand ab.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; does not hold.</source>
+        <translation>Die Eigenschaft &apos;%1&apos; gilt nicht.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; holds in every reachable scan, with the abstractions the verification lists.</source>
+        <translation>Die Eigenschaft &apos;%1&apos; gilt in jedem erreichbaren Zyklus, mit den Abstraktionen, die die Verifikation nennt.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; holds in every reachable scan.</source>
+        <translation>Die Eigenschaft &apos;%1&apos; gilt in jedem erreichbaren Zyklus.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; cannot be checked: it is empty.</source>
+        <translation>Die Eigenschaft &apos;%1&apos; kann nicht geprüft werden: sie ist leer.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; cannot be checked: %2.</source>
+        <extracomment>%2: why, in English (the property checker&apos;s message)</extracomment>
+        <translation>Die Eigenschaft &apos;%1&apos; kann nicht geprüft werden: %2.</translation>
+    </message>
+    <message>
+        <source>The exploration of both layers reached its time or size limit: what it found is reported, but nothing about the nested GRAFCETs or the properties is proved.</source>
+        <translation>Die Erkundung beider Ebenen hat ihre Zeit- oder Größengrenze erreicht: was sie fand, wird gemeldet, aber über die eingebetteten GRAFCETs und die Eigenschaften ist nichts bewiesen.</translation>
+    </message>
+    <message>
+        <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator.</source>
+        <translation>Nicht bestätigt: der unter den Abstraktionen der Verifikation gefundene Ablauf lässt sich im Simulator nicht nachspielen.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -593,6 +693,13 @@
     </message>
 </context>
 <context>
+    <name>MovePropertyCommand</name>
+    <message>
+        <source>Move property %1</source>
+        <translation>Eigenschaft %1 verschieben</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -630,6 +737,25 @@
     <message>
         <source>The PDF document could not be drawn.</source>
         <translation>Das PDF-Dokument konnte nicht gezeichnet werden.</translation>
+    </message>
+</context>
+<context>
+    <name>PropertyProblemText</name>
+    <message>
+        <source>&apos;%1&apos; is not a declared variable</source>
+        <translation>&apos;%1&apos; ist keine deklarierte Variable</translation>
+    </message>
+    <message>
+        <source>there is no visible GEMMA step &apos;%1&apos;</source>
+        <translation>es gibt keinen sichtbaren GEMMA-Schritt &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the step %1 has no nested GRAFCET</source>
+        <translation>der Schritt %1 hat keinen eingebetteten GRAFCET</translation>
+    </message>
+    <message>
+        <source>the GRAFCET of %1 has no step %2</source>
+        <translation>der GRAFCET von %1 hat keinen Schritt %2</translation>
     </message>
 </context>
 <context>
@@ -697,6 +823,13 @@
         <source>Remove action %1 of %2 step %3</source>
         <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
         <translation>Aktion %1 von Schritt %3 von %2 entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>RemovePropertyCommand</name>
+    <message>
+        <source>Remove property %1</source>
+        <translation>Eigenschaft %1 entfernen</translation>
     </message>
 </context>
 <context>
@@ -847,6 +980,20 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Priorität von %1 auf %2 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetPropertyCommentCommand</name>
+    <message>
+        <source>Edit comment of property %1</source>
+        <translation>Kommentar von Eigenschaft %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetPropertyTextCommand</name>
+    <message>
+        <source>Edit property %1</source>
+        <translation>Eigenschaft %1 bearbeiten</translation>
     </message>
 </context>
 <context>
@@ -1957,6 +2104,10 @@
         <source>Export Specification</source>
         <translation>Spezifikation exportieren</translation>
     </message>
+    <message>
+        <source>The verification properties: GG-Generator has no place for them.</source>
+        <translation>Die Verifikationseigenschaften: GG-Generator hat keinen Platz dafür.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -2931,6 +3082,64 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
             <numerusform>Eingebetteter GRAFCET von %1: %n Problem</numerusform>
             <numerusform>Eingebetteter GRAFCET von %1: %n Probleme</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PropertiesPanel</name>
+    <message>
+        <source>Properties</source>
+        <translation>Eigenschaften</translation>
+    </message>
+    <message>
+        <source>Add Property</source>
+        <translation>Eigenschaft hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a property after the current one (Insert)</source>
+        <translation>Eine Eigenschaft nach der aktuellen hinzufügen (Einfg)</translation>
+    </message>
+    <message>
+        <source>Remove Property</source>
+        <translation>Eigenschaft entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the current property (Delete)</source>
+        <translation>Die aktuelle Eigenschaft entfernen (Entf)</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Nach oben</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Nach unten</translation>
+    </message>
+    <message>
+        <source>&amp;Property:</source>
+        <translation>&amp;Eigenschaft:</translation>
+    </message>
+    <message>
+        <source>never A_Plus AND A_Minus</source>
+        <translation>never A_Plus AND A_Minus</translation>
+    </message>
+    <message>
+        <source>Write never P or always P, where P is a condition over the variables that may also use in S (the GEMMA step S is active), S.Xn (step n of S&apos;s nested GRAFCET is active) and a -&gt; b (if a then b). Verify (F7) proves or refutes each one.</source>
+        <translation>Schreiben Sie never P oder always P, wobei P eine Bedingung über die Variablen ist, die auch in S (der GEMMA-Schritt S ist aktiv), S.Xn (Schritt n des eingebetteten GRAFCET von S ist aktiv) und a -&gt; b (wenn a, dann b) verwenden darf. Verifizieren (F7) beweist oder widerlegt jede.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PropertiesTableModel</name>
+    <message>
+        <source>Property</source>
+        <translation>Eigenschaft</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Kommentar</translation>
     </message>
 </context>
 <context>
@@ -4072,6 +4281,44 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at every scan, as the skeleton function block. Verify assumes automatic the nested steps whose Complete is Automatic in the Simulation dock while the simulation runs; all others are free.</source>
         <translation>Frei: Der untergeordnete Ablauf kann in jedem Zyklus abgeschlossen sein oder nie. Automatisch: Complete ist in jedem Zyklus TRUE, wie beim Gerüst-Funktionsbaustein. Die Verifikation nimmt die Schritte als automatisch an, deren Complete im Simulationsfenster während der Simulation auf Automatisch steht; alle anderen sind frei.</translation>
+    </message>
+    <message>
+        <source>%1: T%2</source>
+        <translation>%1: T%2</translation>
+    </message>
+    <message>
+        <source>%1: step %2</source>
+        <extracomment>A step of a nested GRAFCET: %1 the GEMMA step, %2 its number</extracomment>
+        <translation>%1: Schritt %2</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modell</translation>
+    </message>
+    <message>
+        <source>%1: nested GRAFCET</source>
+        <extracomment>The row that groups the findings about the nested GRAFCET of a GEMMA step, e.g. &quot;F1 Normal production&quot;</extracomment>
+        <translation>%1: eingebetteter GRAFCET</translation>
+    </message>
+    <message>
+        <source>The findings about the nested GRAFCET of %1</source>
+        <translation>Die Befunde zum eingebetteten GRAFCET von %1</translation>
+    </message>
+    <message>
+        <source>Some properties do not hold (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Einige Eigenschaften gelten nicht (%1 Konfigurationen der GEMMA-Ebene und %2 Programmzustände beider Ebenen erkundet).</translation>
+    </message>
+    <message>
+        <source>Every property holds; see the notes (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Alle Eigenschaften gelten; siehe die Hinweise (%1 Konfigurationen der GEMMA-Ebene und %2 Programmzustände beider Ebenen erkundet).</translation>
+    </message>
+    <message>
+        <source>Every property holds (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Alle Eigenschaften gelten (%1 Konfigurationen der GEMMA-Ebene und %2 Programmzustände beider Ebenen erkundet).</translation>
+    </message>
+    <message>
+        <source>The exploration of both layers abstracted:</source>
+        <translation>Die Erkundung beider Ebenen hat abstrahiert:</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,13 @@
     </message>
 </context>
 <context>
+    <name>AddPropertyCommand</name>
+    <message>
+        <source>Add property</source>
+        <translation>Añadir propiedad</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -226,6 +233,22 @@
     <message>
         <source>empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it</source>
         <translation>condición vacía: escriba cuándo se franquea la transición (TRUE si siempre está lista), u oculte la transición si la máquina no la necesita</translation>
+    </message>
+    <message>
+        <source>a property starts with never or always</source>
+        <translation>una propiedad empieza por never o always</translation>
+    </message>
+    <message>
+        <source>a property starts with never or always, not &apos;%1&apos;</source>
+        <translation>una propiedad empieza por never o always, no por &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>expected a GEMMA step after &apos;in&apos;</source>
+        <translation>se esperaba una etapa GEMMA después de &apos;in&apos;</translation>
+    </message>
+    <message>
+        <source>expected a GEMMA step after &apos;in&apos;, found &apos;%1&apos;</source>
+        <translation>se esperaba una etapa GEMMA después de &apos;in&apos;, se encontró &apos;%1&apos;</translation>
     </message>
 </context>
 <context>
@@ -513,6 +536,83 @@
         <source>The condition of %1 is empty: write when it fires (TRUE if it is always ready), or hide the transition if your machine does not need it.</source>
         <translation>La condición de %1 está vacía: escriba cuándo se franquea (TRUE si siempre está lista), u oculte la transición si su máquina no la necesita.</translation>
     </message>
+    <message>
+        <source>Step %2 of the nested GRAFCET of %1 can never become active.</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a step of its nested GRAFCET</extracomment>
+        <translation>La etapa %2 del GRAFCET anidado de %1 nunca puede activarse.</translation>
+    </message>
+    <message>
+        <source>Transition T%2 of the nested GRAFCET of %1 can never fire.</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a transition of its nested GRAFCET</extracomment>
+        <translation>La transición T%2 del GRAFCET anidado de %1 nunca puede franquearse.</translation>
+    </message>
+    <message>
+        <source>Step %2 of the nested GRAFCET of %1 can be activated while it is already active: the GRAFCET is not safe.</source>
+        <translation>La etapa %2 del GRAFCET anidado de %1 puede activarse cuando ya está activa: el GRAFCET no es seguro.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 can be Unstable: its evolutions do not settle within one scan.</source>
+        <translation>El GRAFCET anidado de %1 puede quedar inestable (Unstable): sus evoluciones no se estabilizan en un ciclo.</translation>
+    </message>
+    <message>
+        <source>Transitions T%3 and T%4 of the nested GRAFCET of %1 can fire together from step %2: both branches of the selection start.</source>
+        <extracomment>%2: a nested step; %3, %4: the numbers of two nested transitions</extracomment>
+        <translation>Las transiciones T%3 y T%4 del GRAFCET anidado de %1 pueden franquearse a la vez desde la etapa %2: arrancan las dos ramas de la selección.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead its nested GRAFCET to a situation from which Complete never becomes TRUE.</source>
+        <translation>Una vez activa %1, las entradas pueden llevar su GRAFCET anidado a una situación desde la que Complete nunca llega a TRUE.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead its nested GRAFCET to a situation from which Complete never becomes TRUE: %2 can no longer fire.</source>
+        <extracomment>%2: the GEMMA transitions that wait for Complete</extracomment>
+        <translation>Una vez activa %1, las entradas pueden llevar su GRAFCET anidado a una situación desde la que Complete nunca llega a TRUE: %2 ya no puede franquearse.</translation>
+    </message>
+    <message>
+        <source>%1 waits for the Complete of %2, which never becomes TRUE: it can never fire.</source>
+        <translation>%1 espera el Complete de %2, que nunca llega a TRUE: nunca puede franquearse.</translation>
+    </message>
+    <message>
+        <source>Steps %2 and %3 of the nested GRAFCET of %1 can write different values to &apos;%4&apos; in the same scan: the result depends on the order of the actions.</source>
+        <translation>Las etapas %2 y %3 del GRAFCET anidado de %1 pueden escribir valores distintos en &apos;%4&apos; en el mismo ciclo: el resultado depende del orden de las acciones.</translation>
+    </message>
+    <message>
+        <source>The continuous output &apos;%2&apos; can still be TRUE in the scan in which the emergency stop %1 is entered.</source>
+        <translation>La salida continua &apos;%2&apos; aún puede ser TRUE en el ciclo en que se entra en la parada de emergencia %1.</translation>
+    </message>
+    <message>
+        <source>The stored output &apos;%2&apos; can still be TRUE in the scan in which the emergency stop %1 is entered: stored actions are memories, only continuous outputs drop with the state.</source>
+        <translation>La salida memorizada &apos;%2&apos; aún puede ser TRUE en el ciclo en que se entra en la parada de emergencia %1: las acciones memorizadas son memorias, solo las salidas continuas caen con el estado.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; does not hold.</source>
+        <translation>La propiedad &apos;%1&apos; no se cumple.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; holds in every reachable scan, with the abstractions the verification lists.</source>
+        <translation>La propiedad &apos;%1&apos; se cumple en todo ciclo alcanzable, con las abstracciones que indica la verificación.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; holds in every reachable scan.</source>
+        <translation>La propiedad &apos;%1&apos; se cumple en todo ciclo alcanzable.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; cannot be checked: it is empty.</source>
+        <translation>La propiedad &apos;%1&apos; no se puede comprobar: está vacía.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; cannot be checked: %2.</source>
+        <extracomment>%2: why, in English (the property checker&apos;s message)</extracomment>
+        <translation>La propiedad &apos;%1&apos; no se puede comprobar: %2.</translation>
+    </message>
+    <message>
+        <source>The exploration of both layers reached its time or size limit: what it found is reported, but nothing about the nested GRAFCETs or the properties is proved.</source>
+        <translation>La exploración de los dos niveles alcanzó su límite de tiempo o de tamaño: se informa de lo encontrado, pero no se demuestra nada sobre los GRAFCET anidados ni sobre las propiedades.</translation>
+    </message>
+    <message>
+        <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator.</source>
+        <translation>No confirmado: la ejecución hallada con las abstracciones de la verificación no se reproduce en el simulador.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -593,6 +693,13 @@
     </message>
 </context>
 <context>
+    <name>MovePropertyCommand</name>
+    <message>
+        <source>Move property %1</source>
+        <translation>Mover la propiedad %1</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -630,6 +737,25 @@
     <message>
         <source>The PDF document could not be drawn.</source>
         <translation>No se ha podido dibujar el documento PDF.</translation>
+    </message>
+</context>
+<context>
+    <name>PropertyProblemText</name>
+    <message>
+        <source>&apos;%1&apos; is not a declared variable</source>
+        <translation>&apos;%1&apos; no es una variable declarada</translation>
+    </message>
+    <message>
+        <source>there is no visible GEMMA step &apos;%1&apos;</source>
+        <translation>no hay ninguna etapa GEMMA visible &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the step %1 has no nested GRAFCET</source>
+        <translation>la etapa %1 no tiene GRAFCET anidado</translation>
+    </message>
+    <message>
+        <source>the GRAFCET of %1 has no step %2</source>
+        <translation>el GRAFCET de %1 no tiene etapa %2</translation>
     </message>
 </context>
 <context>
@@ -697,6 +823,13 @@
         <source>Remove action %1 of %2 step %3</source>
         <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
         <translation>Quitar la acción %1 de la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
+    <name>RemovePropertyCommand</name>
+    <message>
+        <source>Remove property %1</source>
+        <translation>Eliminar la propiedad %1</translation>
     </message>
 </context>
 <context>
@@ -847,6 +980,20 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Fijar la prioridad de %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetPropertyCommentCommand</name>
+    <message>
+        <source>Edit comment of property %1</source>
+        <translation>Editar el comentario de la propiedad %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPropertyTextCommand</name>
+    <message>
+        <source>Edit property %1</source>
+        <translation>Editar la propiedad %1</translation>
     </message>
 </context>
 <context>
@@ -1957,6 +2104,10 @@
         <source>Export Specification</source>
         <translation>Exportar la especificación</translation>
     </message>
+    <message>
+        <source>The verification properties: GG-Generator has no place for them.</source>
+        <translation>Las propiedades de verificación: GG-Generator no tiene lugar para ellas.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -2931,6 +3082,64 @@ Ctrl+Espacio completa un nombre.</translation>
             <numerusform>GRAFCET anidado de %1: %n problema</numerusform>
             <numerusform>GRAFCET anidado de %1: %n problemas</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PropertiesPanel</name>
+    <message>
+        <source>Properties</source>
+        <translation>Propiedades</translation>
+    </message>
+    <message>
+        <source>Add Property</source>
+        <translation>Añadir propiedad</translation>
+    </message>
+    <message>
+        <source>Add a property after the current one (Insert)</source>
+        <translation>Añadir una propiedad tras la actual (Insert)</translation>
+    </message>
+    <message>
+        <source>Remove Property</source>
+        <translation>Eliminar propiedad</translation>
+    </message>
+    <message>
+        <source>Remove the current property (Delete)</source>
+        <translation>Eliminar la propiedad actual (Supr)</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Subir</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Bajar</translation>
+    </message>
+    <message>
+        <source>&amp;Property:</source>
+        <translation>&amp;Propiedad:</translation>
+    </message>
+    <message>
+        <source>never A_Plus AND A_Minus</source>
+        <translation>never A_Plus AND A_Minus</translation>
+    </message>
+    <message>
+        <source>Write never P or always P, where P is a condition over the variables that may also use in S (the GEMMA step S is active), S.Xn (step n of S&apos;s nested GRAFCET is active) and a -&gt; b (if a then b). Verify (F7) proves or refutes each one.</source>
+        <translation>Escriba never P o always P, donde P es una condición sobre las variables que también puede usar in S (la etapa GEMMA S está activa), S.Xn (la etapa n del GRAFCET anidado de S está activa) y a -&gt; b (si a entonces b). Verificar (F7) demuestra o refuta cada una.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PropertiesTableModel</name>
+    <message>
+        <source>Property</source>
+        <translation>Propiedad</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Comentario</translation>
     </message>
 </context>
 <context>
@@ -4072,6 +4281,44 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at every scan, as the skeleton function block. Verify assumes automatic the nested steps whose Complete is Automatic in the Simulation dock while the simulation runs; all others are free.</source>
         <translation>Libre: el comportamiento anidado puede terminar en cualquier ciclo, o nunca. Automático: Complete es TRUE en cada ciclo, como en el bloque de función esqueleto. La verificación supone automáticas las etapas anidadas cuyo Complete está en Automático en el panel Simulación mientras la simulación está activa; todas las demás son libres.</translation>
+    </message>
+    <message>
+        <source>%1: T%2</source>
+        <translation>%1: T%2</translation>
+    </message>
+    <message>
+        <source>%1: step %2</source>
+        <extracomment>A step of a nested GRAFCET: %1 the GEMMA step, %2 its number</extracomment>
+        <translation>%1: etapa %2</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modelo</translation>
+    </message>
+    <message>
+        <source>%1: nested GRAFCET</source>
+        <extracomment>The row that groups the findings about the nested GRAFCET of a GEMMA step, e.g. &quot;F1 Normal production&quot;</extracomment>
+        <translation>%1: GRAFCET anidado</translation>
+    </message>
+    <message>
+        <source>The findings about the nested GRAFCET of %1</source>
+        <translation>Los hallazgos sobre el GRAFCET anidado de %1</translation>
+    </message>
+    <message>
+        <source>Some properties do not hold (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Algunas propiedades no se cumplen (%1 configuraciones del nivel GEMMA y %2 estados del programa de los dos niveles explorados).</translation>
+    </message>
+    <message>
+        <source>Every property holds; see the notes (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Todas las propiedades se cumplen; vea las notas (%1 configuraciones del nivel GEMMA y %2 estados del programa de los dos niveles explorados).</translation>
+    </message>
+    <message>
+        <source>Every property holds (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Todas las propiedades se cumplen (%1 configuraciones del nivel GEMMA y %2 estados del programa de los dos niveles explorados).</translation>
+    </message>
+    <message>
+        <source>The exploration of both layers abstracted:</source>
+        <translation>La exploración de los dos niveles abstrajo:</translation>
     </message>
 </context>
 <context>

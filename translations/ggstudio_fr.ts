@@ -10,6 +10,13 @@
     </message>
 </context>
 <context>
+    <name>AddPropertyCommand</name>
+    <message>
+        <source>Add property</source>
+        <translation>Ajouter une propriété</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -226,6 +233,22 @@
     <message>
         <source>empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it</source>
         <translation>réceptivité vide&#xa0;: écrivez quand la transition est franchie (TRUE si elle est toujours prête), ou masquez la transition si la machine n&apos;en a pas besoin</translation>
+    </message>
+    <message>
+        <source>a property starts with never or always</source>
+        <translation>une propriété commence par never ou always</translation>
+    </message>
+    <message>
+        <source>a property starts with never or always, not &apos;%1&apos;</source>
+        <translation>une propriété commence par never ou always, pas par «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>expected a GEMMA step after &apos;in&apos;</source>
+        <translation>une étape GEMMA est attendue après «&#xa0;in&#xa0;»</translation>
+    </message>
+    <message>
+        <source>expected a GEMMA step after &apos;in&apos;, found &apos;%1&apos;</source>
+        <translation>une étape GEMMA est attendue après «&#xa0;in&#xa0;», trouvé «&#xa0;%1&#xa0;»</translation>
     </message>
 </context>
 <context>
@@ -513,6 +536,83 @@
         <source>The condition of %1 is empty: write when it fires (TRUE if it is always ready), or hide the transition if your machine does not need it.</source>
         <translation>La réceptivité de %1 est vide&#xa0;: écrivez quand elle est franchie (TRUE si elle est toujours prête), ou masquez la transition si votre machine n&apos;en a pas besoin.</translation>
     </message>
+    <message>
+        <source>Step %2 of the nested GRAFCET of %1 can never become active.</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a step of its nested GRAFCET</extracomment>
+        <translation>L&apos;étape %2 du GRAFCET imbriqué de %1 ne peut jamais devenir active.</translation>
+    </message>
+    <message>
+        <source>Transition T%2 of the nested GRAFCET of %1 can never fire.</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a transition of its nested GRAFCET</extracomment>
+        <translation>La transition T%2 du GRAFCET imbriqué de %1 ne peut jamais être franchie.</translation>
+    </message>
+    <message>
+        <source>Step %2 of the nested GRAFCET of %1 can be activated while it is already active: the GRAFCET is not safe.</source>
+        <translation>L&apos;étape %2 du GRAFCET imbriqué de %1 peut être activée alors qu&apos;elle est déjà active&#xa0;: le GRAFCET n&apos;est pas sauf.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 can be Unstable: its evolutions do not settle within one scan.</source>
+        <translation>Le GRAFCET imbriqué de %1 peut être instable (Unstable)&#xa0;: ses évolutions ne se stabilisent pas en un cycle.</translation>
+    </message>
+    <message>
+        <source>Transitions T%3 and T%4 of the nested GRAFCET of %1 can fire together from step %2: both branches of the selection start.</source>
+        <extracomment>%2: a nested step; %3, %4: the numbers of two nested transitions</extracomment>
+        <translation>Les transitions T%3 et T%4 du GRAFCET imbriqué de %1 peuvent être franchies ensemble depuis l&apos;étape %2&#xa0;: les deux branches de la sélection démarrent.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead its nested GRAFCET to a situation from which Complete never becomes TRUE.</source>
+        <translation>Une fois %1 active, les entrées peuvent mener son GRAFCET imbriqué à une situation d&apos;où Complete ne devient jamais TRUE.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead its nested GRAFCET to a situation from which Complete never becomes TRUE: %2 can no longer fire.</source>
+        <extracomment>%2: the GEMMA transitions that wait for Complete</extracomment>
+        <translation>Une fois %1 active, les entrées peuvent mener son GRAFCET imbriqué à une situation d&apos;où Complete ne devient jamais TRUE&#xa0;: %2 ne peut plus être franchie.</translation>
+    </message>
+    <message>
+        <source>%1 waits for the Complete of %2, which never becomes TRUE: it can never fire.</source>
+        <translation>%1 attend le Complete de %2, qui ne devient jamais TRUE&#xa0;: elle ne peut jamais être franchie.</translation>
+    </message>
+    <message>
+        <source>Steps %2 and %3 of the nested GRAFCET of %1 can write different values to &apos;%4&apos; in the same scan: the result depends on the order of the actions.</source>
+        <translation>Les étapes %2 et %3 du GRAFCET imbriqué de %1 peuvent écrire des valeurs différentes dans «&#xa0;%4&#xa0;» au même cycle&#xa0;: le résultat dépend de l&apos;ordre des actions.</translation>
+    </message>
+    <message>
+        <source>The continuous output &apos;%2&apos; can still be TRUE in the scan in which the emergency stop %1 is entered.</source>
+        <translation>La sortie continue «&#xa0;%2&#xa0;» peut encore être TRUE au cycle où l&apos;on entre dans l&apos;arrêt d&apos;urgence %1.</translation>
+    </message>
+    <message>
+        <source>The stored output &apos;%2&apos; can still be TRUE in the scan in which the emergency stop %1 is entered: stored actions are memories, only continuous outputs drop with the state.</source>
+        <translation>La sortie mémorisée «&#xa0;%2&#xa0;» peut encore être TRUE au cycle où l&apos;on entre dans l&apos;arrêt d&apos;urgence %1&#xa0;: les actions mémorisées sont des mémoires, seules les sorties continues tombent avec l&apos;état.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; does not hold.</source>
+        <translation>La propriété «&#xa0;%1&#xa0;» n&apos;est pas vérifiée.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; holds in every reachable scan, with the abstractions the verification lists.</source>
+        <translation>La propriété «&#xa0;%1&#xa0;» est vraie à chaque cycle atteignable, avec les abstractions que la vérification indique.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; holds in every reachable scan.</source>
+        <translation>La propriété «&#xa0;%1&#xa0;» est vraie à chaque cycle atteignable.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; cannot be checked: it is empty.</source>
+        <translation>La propriété «&#xa0;%1&#xa0;» ne peut pas être vérifiée&#xa0;: elle est vide.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; cannot be checked: %2.</source>
+        <extracomment>%2: why, in English (the property checker&apos;s message)</extracomment>
+        <translation>La propriété «&#xa0;%1&#xa0;» ne peut pas être vérifiée&#xa0;: %2.</translation>
+    </message>
+    <message>
+        <source>The exploration of both layers reached its time or size limit: what it found is reported, but nothing about the nested GRAFCETs or the properties is proved.</source>
+        <translation>L&apos;exploration des deux niveaux a atteint sa limite de temps ou de taille&#xa0;: ce qu&apos;elle a trouvé est signalé, mais rien n&apos;est prouvé sur les GRAFCET imbriqués ni sur les propriétés.</translation>
+    </message>
+    <message>
+        <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator.</source>
+        <translation>Non confirmé&#xa0;: l&apos;exécution trouvée sous les abstractions de la vérification ne se rejoue pas dans le simulateur.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -593,6 +693,13 @@
     </message>
 </context>
 <context>
+    <name>MovePropertyCommand</name>
+    <message>
+        <source>Move property %1</source>
+        <translation>Déplacer la propriété %1</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -630,6 +737,25 @@
     <message>
         <source>The PDF document could not be drawn.</source>
         <translation>Le document PDF n&apos;a pas pu être dessiné.</translation>
+    </message>
+</context>
+<context>
+    <name>PropertyProblemText</name>
+    <message>
+        <source>&apos;%1&apos; is not a declared variable</source>
+        <translation>«&#xa0;%1&#xa0;» n&apos;est pas une variable déclarée</translation>
+    </message>
+    <message>
+        <source>there is no visible GEMMA step &apos;%1&apos;</source>
+        <translation>il n&apos;y a pas d&apos;étape GEMMA visible «&#xa0;%1&#xa0;»</translation>
+    </message>
+    <message>
+        <source>the step %1 has no nested GRAFCET</source>
+        <translation>l&apos;étape %1 n&apos;a pas de GRAFCET imbriqué</translation>
+    </message>
+    <message>
+        <source>the GRAFCET of %1 has no step %2</source>
+        <translation>le GRAFCET de %1 n&apos;a pas d&apos;étape %2</translation>
     </message>
 </context>
 <context>
@@ -697,6 +823,13 @@
         <source>Remove action %1 of %2 step %3</source>
         <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
         <translation>Supprimer l’action %1 de l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
+    <name>RemovePropertyCommand</name>
+    <message>
+        <source>Remove property %1</source>
+        <translation>Supprimer la propriété %1</translation>
     </message>
 </context>
 <context>
@@ -847,6 +980,20 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Régler la priorité de %1 à %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetPropertyCommentCommand</name>
+    <message>
+        <source>Edit comment of property %1</source>
+        <translation>Modifier le commentaire de la propriété %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPropertyTextCommand</name>
+    <message>
+        <source>Edit property %1</source>
+        <translation>Modifier la propriété %1</translation>
     </message>
 </context>
 <context>
@@ -1957,6 +2104,10 @@
         <source>Export Specification</source>
         <translation>Exporter la spécification</translation>
     </message>
+    <message>
+        <source>The verification properties: GG-Generator has no place for them.</source>
+        <translation>Les propriétés à vérifier&#xa0;: GG-Generator n&apos;a pas de place pour elles.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -2931,6 +3082,64 @@ Ctrl+Espace complète un nom.</translation>
             <numerusform>GRAFCET imbriqué de %1 : %n problème</numerusform>
             <numerusform>GRAFCET imbriqué de %1 : %n problèmes</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PropertiesPanel</name>
+    <message>
+        <source>Properties</source>
+        <translation>Propriétés</translation>
+    </message>
+    <message>
+        <source>Add Property</source>
+        <translation>Ajouter une propriété</translation>
+    </message>
+    <message>
+        <source>Add a property after the current one (Insert)</source>
+        <translation>Ajouter une propriété après la courante (Inser)</translation>
+    </message>
+    <message>
+        <source>Remove Property</source>
+        <translation>Supprimer la propriété</translation>
+    </message>
+    <message>
+        <source>Remove the current property (Delete)</source>
+        <translation>Supprimer la propriété courante (Suppr)</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Monter</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Descendre</translation>
+    </message>
+    <message>
+        <source>&amp;Property:</source>
+        <translation>&amp;Propriété&#xa0;:</translation>
+    </message>
+    <message>
+        <source>never A_Plus AND A_Minus</source>
+        <translation>never A_Plus AND A_Minus</translation>
+    </message>
+    <message>
+        <source>Write never P or always P, where P is a condition over the variables that may also use in S (the GEMMA step S is active), S.Xn (step n of S&apos;s nested GRAFCET is active) and a -&gt; b (if a then b). Verify (F7) proves or refutes each one.</source>
+        <translation>Écrivez never P ou always P, où P est une condition sur les variables qui peut aussi utiliser in S (l&apos;étape GEMMA S est active), S.Xn (l&apos;étape n du GRAFCET imbriqué de S est active) et a -&gt; b (si a alors b). Vérifier (F7) prouve ou réfute chacune.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PropertiesTableModel</name>
+    <message>
+        <source>Property</source>
+        <translation>Propriété</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commentaire</translation>
     </message>
 </context>
 <context>
@@ -4072,6 +4281,44 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at every scan, as the skeleton function block. Verify assumes automatic the nested steps whose Complete is Automatic in the Simulation dock while the simulation runs; all others are free.</source>
         <translation>Libre&#xa0;: le comportement imbriqué peut se terminer à n’importe quel cycle, ou jamais. Automatique&#xa0;: Complete vaut TRUE à chaque cycle, comme dans le bloc fonctionnel squelette. La vérification suppose automatiques les étapes à comportement imbriqué dont le Complete est Automatique dans le panneau Simulation pendant la simulation&#xa0;; toutes les autres sont libres.</translation>
+    </message>
+    <message>
+        <source>%1: T%2</source>
+        <translation>%1&#xa0;: T%2</translation>
+    </message>
+    <message>
+        <source>%1: step %2</source>
+        <extracomment>A step of a nested GRAFCET: %1 the GEMMA step, %2 its number</extracomment>
+        <translation>%1&#xa0;: étape %2</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modèle</translation>
+    </message>
+    <message>
+        <source>%1: nested GRAFCET</source>
+        <extracomment>The row that groups the findings about the nested GRAFCET of a GEMMA step, e.g. &quot;F1 Normal production&quot;</extracomment>
+        <translation>%1&#xa0;: GRAFCET imbriqué</translation>
+    </message>
+    <message>
+        <source>The findings about the nested GRAFCET of %1</source>
+        <translation>Les constats sur le GRAFCET imbriqué de %1</translation>
+    </message>
+    <message>
+        <source>Some properties do not hold (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Certaines propriétés ne sont pas vérifiées (%1 configurations du niveau GEMMA et %2 états du programme des deux niveaux explorés).</translation>
+    </message>
+    <message>
+        <source>Every property holds; see the notes (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Toutes les propriétés sont vérifiées&#xa0;; voir les notes (%1 configurations du niveau GEMMA et %2 états du programme des deux niveaux explorés).</translation>
+    </message>
+    <message>
+        <source>Every property holds (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Toutes les propriétés sont vérifiées (%1 configurations du niveau GEMMA et %2 états du programme des deux niveaux explorés).</translation>
+    </message>
+    <message>
+        <source>The exploration of both layers abstracted:</source>
+        <translation>L&apos;exploration des deux niveaux a abstrait&#xa0;:</translation>
     </message>
 </context>
 <context>

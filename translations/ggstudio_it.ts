@@ -10,6 +10,13 @@
     </message>
 </context>
 <context>
+    <name>AddPropertyCommand</name>
+    <message>
+        <source>Add property</source>
+        <translation>Aggiungi proprietà</translation>
+    </message>
+</context>
+<context>
     <name>AddVariableCommand</name>
     <message>
         <source>Add variable %1</source>
@@ -226,6 +233,22 @@
     <message>
         <source>empty condition: write when the transition fires (TRUE if it is always ready), or hide the transition if the machine does not need it</source>
         <translation>condizione vuota: scrivere quando la transizione scatta (TRUE se è sempre pronta), oppure nascondere la transizione se la macchina non ne ha bisogno</translation>
+    </message>
+    <message>
+        <source>a property starts with never or always</source>
+        <translation>una proprietà inizia con never o always</translation>
+    </message>
+    <message>
+        <source>a property starts with never or always, not &apos;%1&apos;</source>
+        <translation>una proprietà inizia con never o always, non con &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>expected a GEMMA step after &apos;in&apos;</source>
+        <translation>attesa una tappa GEMMA dopo &apos;in&apos;</translation>
+    </message>
+    <message>
+        <source>expected a GEMMA step after &apos;in&apos;, found &apos;%1&apos;</source>
+        <translation>attesa una tappa GEMMA dopo &apos;in&apos;, trovato &apos;%1&apos;</translation>
     </message>
 </context>
 <context>
@@ -513,6 +536,83 @@
         <source>The condition of %1 is empty: write when it fires (TRUE if it is always ready), or hide the transition if your machine does not need it.</source>
         <translation>La condizione di %1 è vuota: scrivere quando scatta (TRUE se è sempre pronta), oppure nascondere la transizione se la macchina non ne ha bisogno.</translation>
     </message>
+    <message>
+        <source>Step %2 of the nested GRAFCET of %1 can never become active.</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a step of its nested GRAFCET</extracomment>
+        <translation>La tappa %2 del GRAFCET annidato di %1 non può mai diventare attiva.</translation>
+    </message>
+    <message>
+        <source>Transition T%2 of the nested GRAFCET of %1 can never fire.</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a transition of its nested GRAFCET</extracomment>
+        <translation>La transizione T%2 del GRAFCET annidato di %1 non può mai scattare.</translation>
+    </message>
+    <message>
+        <source>Step %2 of the nested GRAFCET of %1 can be activated while it is already active: the GRAFCET is not safe.</source>
+        <translation>La tappa %2 del GRAFCET annidato di %1 può essere attivata quando è già attiva: il GRAFCET non è sicuro.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1 can be Unstable: its evolutions do not settle within one scan.</source>
+        <translation>Il GRAFCET annidato di %1 può essere instabile (Unstable): le sue evoluzioni non si stabilizzano in un ciclo.</translation>
+    </message>
+    <message>
+        <source>Transitions T%3 and T%4 of the nested GRAFCET of %1 can fire together from step %2: both branches of the selection start.</source>
+        <extracomment>%2: a nested step; %3, %4: the numbers of two nested transitions</extracomment>
+        <translation>Le transizioni T%3 e T%4 del GRAFCET annidato di %1 possono scattare insieme dalla tappa %2: partono entrambi i rami della selezione.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead its nested GRAFCET to a situation from which Complete never becomes TRUE.</source>
+        <translation>Una volta attiva %1, gli ingressi possono portare il suo GRAFCET annidato in una situazione da cui Complete non diventa mai TRUE.</translation>
+    </message>
+    <message>
+        <source>Once %1 is active, the inputs can lead its nested GRAFCET to a situation from which Complete never becomes TRUE: %2 can no longer fire.</source>
+        <extracomment>%2: the GEMMA transitions that wait for Complete</extracomment>
+        <translation>Una volta attiva %1, gli ingressi possono portare il suo GRAFCET annidato in una situazione da cui Complete non diventa mai TRUE: %2 non può più scattare.</translation>
+    </message>
+    <message>
+        <source>%1 waits for the Complete of %2, which never becomes TRUE: it can never fire.</source>
+        <translation>%1 attende il Complete di %2, che non diventa mai TRUE: non può mai scattare.</translation>
+    </message>
+    <message>
+        <source>Steps %2 and %3 of the nested GRAFCET of %1 can write different values to &apos;%4&apos; in the same scan: the result depends on the order of the actions.</source>
+        <translation>Le tappe %2 e %3 del GRAFCET annidato di %1 possono scrivere valori diversi in &apos;%4&apos; nello stesso ciclo: il risultato dipende dall&apos;ordine delle azioni.</translation>
+    </message>
+    <message>
+        <source>The continuous output &apos;%2&apos; can still be TRUE in the scan in which the emergency stop %1 is entered.</source>
+        <translation>L&apos;uscita continua &apos;%2&apos; può essere ancora TRUE nel ciclo in cui si entra nell&apos;arresto di emergenza %1.</translation>
+    </message>
+    <message>
+        <source>The stored output &apos;%2&apos; can still be TRUE in the scan in which the emergency stop %1 is entered: stored actions are memories, only continuous outputs drop with the state.</source>
+        <translation>L&apos;uscita memorizzata &apos;%2&apos; può essere ancora TRUE nel ciclo in cui si entra nell&apos;arresto di emergenza %1: le azioni memorizzate sono memorie, solo le uscite continue cadono con lo stato.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; does not hold.</source>
+        <translation>La proprietà &apos;%1&apos; non è soddisfatta.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; holds in every reachable scan, with the abstractions the verification lists.</source>
+        <translation>La proprietà &apos;%1&apos; è soddisfatta in ogni ciclo raggiungibile, con le astrazioni indicate dalla verifica.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; holds in every reachable scan.</source>
+        <translation>La proprietà &apos;%1&apos; è soddisfatta in ogni ciclo raggiungibile.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; cannot be checked: it is empty.</source>
+        <translation>La proprietà &apos;%1&apos; non può essere verificata: è vuota.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; cannot be checked: %2.</source>
+        <extracomment>%2: why, in English (the property checker&apos;s message)</extracomment>
+        <translation>La proprietà &apos;%1&apos; non può essere verificata: %2.</translation>
+    </message>
+    <message>
+        <source>The exploration of both layers reached its time or size limit: what it found is reported, but nothing about the nested GRAFCETs or the properties is proved.</source>
+        <translation>L&apos;esplorazione dei due livelli ha raggiunto il suo limite di tempo o di dimensione: quanto trovato è segnalato, ma nulla è dimostrato sui GRAFCET annidati né sulle proprietà.</translation>
+    </message>
+    <message>
+        <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator.</source>
+        <translation>Non confermato: l&apos;esecuzione trovata con le astrazioni della verifica non si riproduce nel simulatore.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -593,6 +693,13 @@
     </message>
 </context>
 <context>
+    <name>MovePropertyCommand</name>
+    <message>
+        <source>Move property %1</source>
+        <translation>Sposta la proprietà %1</translation>
+    </message>
+</context>
+<context>
     <name>MoveVariableCommand</name>
     <message>
         <source>Move variable %1</source>
@@ -630,6 +737,25 @@
     <message>
         <source>The PDF document could not be drawn.</source>
         <translation>Impossibile disegnare il documento PDF.</translation>
+    </message>
+</context>
+<context>
+    <name>PropertyProblemText</name>
+    <message>
+        <source>&apos;%1&apos; is not a declared variable</source>
+        <translation>&apos;%1&apos; non è una variabile dichiarata</translation>
+    </message>
+    <message>
+        <source>there is no visible GEMMA step &apos;%1&apos;</source>
+        <translation>non c&apos;è nessuna tappa GEMMA visibile &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the step %1 has no nested GRAFCET</source>
+        <translation>la tappa %1 non ha un GRAFCET annidato</translation>
+    </message>
+    <message>
+        <source>the GRAFCET of %1 has no step %2</source>
+        <translation>il GRAFCET di %1 non ha la tappa %2</translation>
     </message>
 </context>
 <context>
@@ -697,6 +823,13 @@
         <source>Remove action %1 of %2 step %3</source>
         <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
         <translation>Rimuovi l’azione %1 della tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
+    <name>RemovePropertyCommand</name>
+    <message>
+        <source>Remove property %1</source>
+        <translation>Rimuovi la proprietà %1</translation>
     </message>
 </context>
 <context>
@@ -847,6 +980,20 @@
     <message>
         <source>Set priority of %1 to %2</source>
         <translation>Imposta la priorità di %1 a %2</translation>
+    </message>
+</context>
+<context>
+    <name>SetPropertyCommentCommand</name>
+    <message>
+        <source>Edit comment of property %1</source>
+        <translation>Modifica il commento della proprietà %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPropertyTextCommand</name>
+    <message>
+        <source>Edit property %1</source>
+        <translation>Modifica la proprietà %1</translation>
     </message>
 </context>
 <context>
@@ -1957,6 +2104,10 @@
         <source>Export Specification</source>
         <translation>Esporta la specifica</translation>
     </message>
+    <message>
+        <source>The verification properties: GG-Generator has no place for them.</source>
+        <translation>Le proprietà da verificare: GG-Generator non ha posto per esse.</translation>
+    </message>
 </context>
 <context>
     <name>editor::ExportOptionsDialog</name>
@@ -2931,6 +3082,64 @@ Ctrl+Spazio completa un nome.</translation>
             <numerusform>GRAFCET annidato di %1: %n problema</numerusform>
             <numerusform>GRAFCET annidato di %1: %n problemi</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PropertiesPanel</name>
+    <message>
+        <source>Properties</source>
+        <translation>Proprietà</translation>
+    </message>
+    <message>
+        <source>Add Property</source>
+        <translation>Aggiungi proprietà</translation>
+    </message>
+    <message>
+        <source>Add a property after the current one (Insert)</source>
+        <translation>Aggiungi una proprietà dopo quella corrente (Ins)</translation>
+    </message>
+    <message>
+        <source>Remove Property</source>
+        <translation>Rimuovi proprietà</translation>
+    </message>
+    <message>
+        <source>Remove the current property (Delete)</source>
+        <translation>Rimuovi la proprietà corrente (Canc)</translation>
+    </message>
+    <message>
+        <source>Move Up</source>
+        <translation>Sposta su</translation>
+    </message>
+    <message>
+        <source>Move Down</source>
+        <translation>Sposta giù</translation>
+    </message>
+    <message>
+        <source>&amp;Property:</source>
+        <translation>&amp;Proprietà:</translation>
+    </message>
+    <message>
+        <source>never A_Plus AND A_Minus</source>
+        <translation>never A_Plus AND A_Minus</translation>
+    </message>
+    <message>
+        <source>Write never P or always P, where P is a condition over the variables that may also use in S (the GEMMA step S is active), S.Xn (step n of S&apos;s nested GRAFCET is active) and a -&gt; b (if a then b). Verify (F7) proves or refutes each one.</source>
+        <translation>Scrivi never P o always P, dove P è una condizione sulle variabili che può usare anche in S (la tappa GEMMA S è attiva), S.Xn (la tappa n del GRAFCET annidato di S è attiva) e a -&gt; b (se a allora b). Verifica (F7) dimostra o confuta ciascuna.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PropertiesTableModel</name>
+    <message>
+        <source>Property</source>
+        <translation>Proprietà</translation>
+    </message>
+    <message>
+        <source>Comment</source>
+        <translation>Commento</translation>
     </message>
 </context>
 <context>
@@ -4072,6 +4281,44 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at every scan, as the skeleton function block. Verify assumes automatic the nested steps whose Complete is Automatic in the Simulation dock while the simulation runs; all others are free.</source>
         <translation>Libero: il comportamento interno può completarsi a qualsiasi ciclo, o mai. Automatico: Complete è TRUE a ogni ciclo, come nel blocco funzione scheletro. La verifica assume automatiche le tappe con comportamento interno il cui Complete è Automatico nel pannello Simulazione durante la simulazione; tutte le altre sono libere.</translation>
+    </message>
+    <message>
+        <source>%1: T%2</source>
+        <translation>%1: T%2</translation>
+    </message>
+    <message>
+        <source>%1: step %2</source>
+        <extracomment>A step of a nested GRAFCET: %1 the GEMMA step, %2 its number</extracomment>
+        <translation>%1: tappa %2</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>Modello</translation>
+    </message>
+    <message>
+        <source>%1: nested GRAFCET</source>
+        <extracomment>The row that groups the findings about the nested GRAFCET of a GEMMA step, e.g. &quot;F1 Normal production&quot;</extracomment>
+        <translation>%1: GRAFCET annidato</translation>
+    </message>
+    <message>
+        <source>The findings about the nested GRAFCET of %1</source>
+        <translation>I risultati sul GRAFCET annidato di %1</translation>
+    </message>
+    <message>
+        <source>Some properties do not hold (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Alcune proprietà non sono soddisfatte (%1 configurazioni del livello GEMMA e %2 stati del programma dei due livelli esplorati).</translation>
+    </message>
+    <message>
+        <source>Every property holds; see the notes (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Tutte le proprietà sono soddisfatte; vedi le note (%1 configurazioni del livello GEMMA e %2 stati del programma dei due livelli esplorati).</translation>
+    </message>
+    <message>
+        <source>Every property holds (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Tutte le proprietà sono soddisfatte (%1 configurazioni del livello GEMMA e %2 stati del programma dei due livelli esplorati).</translation>
+    </message>
+    <message>
+        <source>The exploration of both layers abstracted:</source>
+        <translation>L&apos;esplorazione dei due livelli ha astratto:</translation>
     </message>
 </context>
 <context>
