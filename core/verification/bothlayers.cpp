@@ -17,6 +17,7 @@ namespace {
 namespace code = verification;
 using explore::Event;
 using explore::EventKind;
+using explore::eventKey;
 
 std::string nestedStep(const std::string& stepId, int number)
 {
@@ -33,14 +34,6 @@ std::string quoted(const std::string& text)
     return "'" + text + "'";
 }
 
-std::string eventKey(const Event& event)
-{
-    std::string key = std::to_string(static_cast<int>(event.kind)) + "|" + event.stepId + "|" + event.variable + "|"
-        + std::to_string(event.property);
-    for (int n : event.numbers)
-        key += "," + std::to_string(n);
-    return key;
-}
 
 bool hasLongTimers(const GemmaProgram& program, int cycleMs)
 {

@@ -1398,8 +1398,6 @@ bool ProgramExplorer::Impl::outOfBudget()
         || std::chrono::steady_clock::now() > options.deadline;
 }
 
-namespace {
-
 std::string eventKey(const Event& event)
 {
     std::string key = std::to_string(static_cast<int>(event.kind)) + "|" + event.stepId + "|" + event.variable + "|"
@@ -1408,8 +1406,6 @@ std::string eventKey(const Event& event)
         key += "," + std::to_string(n);
     return key;
 }
-
-} // namespace
 
 // The first state that shows an event is kept (the shortest run); among its
 // scans, one where the GEMMA layer stays put is preferred, so the replay ends

@@ -89,6 +89,9 @@ struct Event {
     bool stateOnly = false; // the witness is the state itself (graph properties): no scan from it is part of it
 };
 
+// What tells one event from another (its kind and what it names, not its witness).
+std::string eventKey(const Event& event);
+
 struct Exploration {
     bool exhaustive = true; // false: the state or time budget ran out (or cancelled)
     bool cancelled = false;
