@@ -485,6 +485,10 @@ void MainWindow::createActions()
     connect(m_session, &SimulationSession::activeChanged, this, updateHistoryActions);
     m_verifyAction = action("verifyAction", &MainWindow::verify, Qt::Key_F7);
     m_verifyAction->setShortcuts({QKeySequence(Qt::Key_F7), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V)});
+    m_exactTimeAction = new QAction(this);
+    m_exactTimeAction->setObjectName(QStringLiteral("verifyExactTimeAction"));
+    m_exactTimeAction->setCheckable(true);
+    connect(m_exactTimeAction, &QAction::toggled, this, [this](bool exact) { m_verification->setExactTime(exact); });
 
     m_userGuideAction = action("userGuideAction", &MainWindow::showUserGuide, QKeySequence::HelpContents);
     m_aboutAction = action("aboutAction", &MainWindow::about);
@@ -575,6 +579,7 @@ void MainWindow::createMenus()
                                   m_resetSimulationAction});
     m_simulationMenu->addSeparator();
     m_simulationMenu->addAction(m_verifyAction);
+    m_simulationMenu->addAction(m_exactTimeAction);
 
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName("helpMenu");
@@ -941,8 +946,12 @@ void MainWindow::retranslate()
     m_stepForwardAction->setStatusTip(tr("Show the next scan of the run's history"));
     m_simulationIndicator->setText(tr("Simulation: editing locked"));
     m_verifyAction->setText(tr("&Verify"));
-    m_verifyAction->setStatusTip(tr("Prove what the GEMMA layer can and cannot do for every input sequence; "
-                                    "the findings go to the Problems dock"));
+    m_verifyAction->setStatusTip(tr("Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for "
+                                    "every input sequence, and check your properties; the findings go to the "
+                                    "Problems dock"));
+    m_exactTimeAction->setText(tr("Verify with &Exact Time"));
+    m_exactTimeAction->setStatusTip(tr("Count time in scans when verifying: every timer elapses exactly when the "
+                                       "PLC's would, instead of \"may or may not have elapsed\" (more states)"));
 
     m_userGuideAction->setText(tr("&User Guide"));
     m_userGuideAction->setStatusTip(tr("How to build a model, simulate, verify and export, offline; F1 opens it "

@@ -33,6 +33,7 @@ struct VerificationRunner::Job {
     core::Model model;
     QStringList automatic;
     std::map<std::string, core::CompleteAssumption> complete;
+    bool exactTime = false;
     std::atomic<bool> cancelled{false};
     core::VerificationResult result;
     std::string failure;
@@ -76,6 +77,7 @@ void VerificationRunner::start()
     if (wasRunning)
         m_current->cancelled = true;
     auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic);
+    job->exactTime = m_exactTime;
     m_current = job;
     m_wasCancelled = false;
     QThread* thread = QThread::create([job] { runJob(job); });
@@ -180,6 +182,7 @@ void VerificationRunner::runJob(const std::shared_ptr<Job>& job)
 {
     core::VerificationOptions options;
     options.complete = job->complete;
+    options.exactTime = job->exactTime;
     options.cancelled = [job] { return job->cancelled.load(std::memory_order_relaxed); };
     try {
         job->result = core::verifyModel(job->model, options);

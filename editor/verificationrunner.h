@@ -57,6 +57,11 @@ public:
     // The last run was abandoned (a change, not a new start), until the next start.
     bool wasCancelled() const { return m_wasCancelled; }
 
+    // Whether the next runs count time in scans (every TON elapses exactly when
+    // the PLC's would) instead of "may or may not have elapsed".
+    void setExactTime(bool exact) { m_exactTime = exact; }
+    bool exactTime() const { return m_exactTime; }
+
     // The nested steps whose Complete the next run assumes automatic, state order.
     QStringList assumedAutomatic() const { return m_assumedAutomatic; }
     // The same for the last result.
@@ -99,6 +104,7 @@ private:
     bool m_stale = false;
     bool m_wasCancelled = false;
     QStringList m_assumedAutomatic;
+    bool m_exactTime = false;
     QStringList m_resultAutomatic;
 };
 

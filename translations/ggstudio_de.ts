@@ -2739,10 +2739,6 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <translation>&amp;Verifizieren</translation>
     </message>
     <message>
-        <source>Prove what the GEMMA layer can and cannot do for every input sequence; the findings go to the Problems dock</source>
-        <translation>Beweisen, was die GEMMA-Ebene für jede Eingangsfolge tun kann und was nicht; die Befunde erscheinen im Bereich „Probleme“</translation>
-    </message>
-    <message>
         <source>Verifying…</source>
         <translation>Verifikation läuft…</translation>
     </message>
@@ -2853,6 +2849,18 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>The nested GRAFCET of %1</source>
         <translation>Der eingebettete GRAFCET von %1</translation>
+    </message>
+    <message>
+        <source>Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for every input sequence, and check your properties; the findings go to the Problems dock</source>
+        <translation>Beweisen, was die GEMMA-Ebene und die eingebetteten GRAFCETs für jede Eingangsfolge tun können und was nicht, und Ihre Eigenschaften prüfen; die Befunde kommen in das Fenster Probleme</translation>
+    </message>
+    <message>
+        <source>Verify with &amp;Exact Time</source>
+        <translation>Mit e&amp;xakter Zeit verifizieren</translation>
+    </message>
+    <message>
+        <source>Count time in scans when verifying: every timer elapses exactly when the PLC&apos;s would, instead of &quot;may or may not have elapsed&quot; (more states)</source>
+        <translation>Beim Verifizieren die Zeit in Zyklen zählen: jeder Timer läuft genau dann ab, wenn der der SPS ablaufen würde, statt &quot;kann abgelaufen sein oder nicht&quot; (mehr Zustände)</translation>
     </message>
 </context>
 <context>

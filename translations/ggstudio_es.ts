@@ -2739,10 +2739,6 @@ Ctrl+Espacio completa un nombre.</translation>
         <translation>&amp;Verificar</translation>
     </message>
     <message>
-        <source>Prove what the GEMMA layer can and cannot do for every input sequence; the findings go to the Problems dock</source>
-        <translation>Demostrar lo que la capa GEMMA puede y no puede hacer para cualquier secuencia de entradas; los resultados van al panel Problemas</translation>
-    </message>
-    <message>
         <source>Verifying…</source>
         <translation>Verificando…</translation>
     </message>
@@ -2853,6 +2849,18 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>The nested GRAFCET of %1</source>
         <translation>El GRAFCET anidado de %1</translation>
+    </message>
+    <message>
+        <source>Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for every input sequence, and check your properties; the findings go to the Problems dock</source>
+        <translation>Demostrar lo que el nivel GEMMA y los GRAFCET anidados pueden y no pueden hacer para toda secuencia de entradas, y comprobar sus propiedades; los hallazgos van al panel Problemas</translation>
+    </message>
+    <message>
+        <source>Verify with &amp;Exact Time</source>
+        <translation>Verificar con tiempo e&amp;xacto</translation>
+    </message>
+    <message>
+        <source>Count time in scans when verifying: every timer elapses exactly when the PLC&apos;s would, instead of &quot;may or may not have elapsed&quot; (more states)</source>
+        <translation>Contar el tiempo en ciclos al verificar: cada temporizador vence exactamente cuando vencería el del autómata, en lugar de &quot;puede haber vencido o no&quot; (más estados)</translation>
     </message>
 </context>
 <context>

@@ -2739,10 +2739,6 @@ Ctrl+Espace complète un nom.</translation>
         <translation>&amp;Vérifier</translation>
     </message>
     <message>
-        <source>Prove what the GEMMA layer can and cannot do for every input sequence; the findings go to the Problems dock</source>
-        <translation>Prouver ce que la couche GEMMA peut et ne peut pas faire pour toute séquence d&apos;entrées&#xa0;; les résultats vont dans le panneau Problèmes</translation>
-    </message>
-    <message>
         <source>Verifying…</source>
         <translation>Vérification…</translation>
     </message>
@@ -2853,6 +2849,18 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>The nested GRAFCET of %1</source>
         <translation>Le GRAFCET imbriqué de %1</translation>
+    </message>
+    <message>
+        <source>Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for every input sequence, and check your properties; the findings go to the Problems dock</source>
+        <translation>Prouver ce que le niveau GEMMA et les GRAFCET imbriqués peuvent et ne peuvent pas faire pour toute suite d&apos;entrées, et vérifier vos propriétés&#xa0;; les constats vont dans le panneau Problèmes</translation>
+    </message>
+    <message>
+        <source>Verify with &amp;Exact Time</source>
+        <translation>Vérifier avec le temps e&amp;xact</translation>
+    </message>
+    <message>
+        <source>Count time in scans when verifying: every timer elapses exactly when the PLC&apos;s would, instead of &quot;may or may not have elapsed&quot; (more states)</source>
+        <translation>Compter le temps en cycles pendant la vérification&#xa0;: chaque temporisation s&apos;écoule exactement quand celle de l&apos;automate s&apos;écoulerait, au lieu de «&#xa0;écoulée ou non&#xa0;» (plus d&apos;états)</translation>
     </message>
 </context>
 <context>

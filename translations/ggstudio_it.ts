@@ -2739,10 +2739,6 @@ Ctrl+Spazio completa un nome.</translation>
         <translation>&amp;Verifica</translation>
     </message>
     <message>
-        <source>Prove what the GEMMA layer can and cannot do for every input sequence; the findings go to the Problems dock</source>
-        <translation>Dimostra ciò che il livello GEMMA può e non può fare per ogni sequenza di ingressi; i risultati vanno nel pannello Problemi</translation>
-    </message>
-    <message>
         <source>Verifying…</source>
         <translation>Verifica in corso…</translation>
     </message>
@@ -2853,6 +2849,18 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>The nested GRAFCET of %1</source>
         <translation>Il GRAFCET annidato di %1</translation>
+    </message>
+    <message>
+        <source>Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for every input sequence, and check your properties; the findings go to the Problems dock</source>
+        <translation>Dimostrare ciò che il livello GEMMA e i GRAFCET annidati possono e non possono fare per ogni sequenza di ingressi, e verificare le tue proprietà; i risultati vanno nel pannello Problemi</translation>
+    </message>
+    <message>
+        <source>Verify with &amp;Exact Time</source>
+        <translation>Verifica con tempo e&amp;satto</translation>
+    </message>
+    <message>
+        <source>Count time in scans when verifying: every timer elapses exactly when the PLC&apos;s would, instead of &quot;may or may not have elapsed&quot; (more states)</source>
+        <translation>Contare il tempo in cicli durante la verifica: ogni temporizzatore scade esattamente quando scadrebbe quello del PLC, invece di &quot;può essere scaduto o no&quot; (più stati)</translation>
     </message>
 </context>
 <context>

@@ -93,6 +93,7 @@ class TestVerification : public QObject {
     Q_OBJECT
 
 private slots:
+    void exactTimeFromTheMenu();
     void initTestCase();
     void init();
     void cleanup();
@@ -754,6 +755,30 @@ void TestVerification::statusCountsProgramStatesAndListsAbstractions()
 
 // A property finding names the property in the element column and has no
 // element to show on the chart.
+// Simulation > Verify with Exact Time counts time in scans: the timers are no
+// longer among what the exploration abstracted.
+void TestVerification::exactTimeFromTheMenu()
+{
+    loadFaultyExample();
+    const auto timerAbstracted = [this] {
+        for (const std::string& line : m_runner->result().abstractions) {
+            if (line.find("timers") != std::string::npos)
+                return true;
+        }
+        return false;
+    };
+    verifyAndWait();
+    QVERIFY(timerAbstracted());
+    auto* exact = m_window->findChild<QAction*>(QStringLiteral("verifyExactTimeAction"));
+    QVERIFY(exact && exact->isCheckable());
+    exact->setChecked(true);
+    QVERIFY(m_runner->exactTime());
+    verifyAndWait();
+    QVERIFY(m_runner->result().bothLayers);
+    QVERIFY(!timerAbstracted());
+    exact->setChecked(false);
+}
+
 void TestVerification::propertyFindingsShowTheirText()
 {
     loadFaultyExample();
