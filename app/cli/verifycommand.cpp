@@ -6,7 +6,9 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/model/model.h"
 #include "core/formats/modelfiles.h"
+#include "core/verification/bothlayers.h"
 #include "core/verification/promela.h"
+#include "core/verification/promelaprogram.h"
 #include "core/verification/property.h"
 #include "core/verification/verification.h"
 
@@ -110,6 +112,22 @@ std::optional<std::vector<std::string>> parseCompleteAutomatic(const std::string
     return automatic;
 }
 
+// What --promela writes: both layers when the run explores them (nested
+// GRAFCETs or properties), else the GEMMA layer with its probes.
+std::string promelaText(const core::Model& model, const core::VerificationOptions& options)
+{
+    if (!core::needsBothLayers(model, options)) {
+        core::PromelaOptions gemma;
+        gemma.complete = options.complete;
+        return core::exportPromela(model, gemma);
+    }
+    core::ProgramPromelaOptions program;
+    program.complete = options.complete;
+    program.properties = core::propertiesToCheck(model, options);
+    program.exactTime = options.exactTime;
+    return core::buildProgramPromela(model, program).text;
+}
+
 } // namespace
 
 int commandVerify(const Arguments& args, Streams streams)
@@ -179,11 +197,7 @@ int commandVerify(const Arguments& args, Streams streams)
                         << "Try 'ggstudio-cli --help'." << lineEnd;
             return UsageError;
         }
-        core::PromelaOptions promelaOptions;
-        promelaOptions.complete = options.complete;
-        if (core::Status status =
-                core::writeFileAtomically(*promela, core::exportPromela(*loaded.model, promelaOptions));
-            !status) {
+        if (core::Status status = core::writeFileAtomically(*promela, promelaText(*loaded.model, options)); !status) {
             streams.err << *promela << ": " << status.message << lineEnd;
             return UnreadableInput;
         }

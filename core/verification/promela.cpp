@@ -615,7 +615,13 @@ private:
                 const std::string& comment, std::string transition = {}, std::string other = {})
     {
         const int line = m_out.line(statement + " /* " + commentText(comment) + " */");
-        m_markers.push_back(PromelaMarker{kind, step, std::move(transition), std::move(other), line});
+        PromelaMarker m;
+        m.kind = kind;
+        m.step = step;
+        m.transition = std::move(transition);
+        m.other = std::move(other);
+        m.line = line;
+        m_markers.push_back(std::move(m));
     }
     bool emergencyStopVisible() const { return m_program.step(kEmergencyStop) != nullptr; }
 

@@ -60,6 +60,15 @@ enum class PromelaMarkerKind {
     Overlap,         // transition fires while `other`'s condition also holds (GV104)
     NoFire,          // a reachable configuration of step where no input fires any transition (necessary for GV106)
     NoEmergencyStop, // an F step's reachable configuration where no input leads to D1 in one scan (GV107)
+    // Both layers (core/verification/promelaprogram.h); `step` is the GEMMA step.
+    NestedActive,         // numbers {n}: nested step n is active after some call
+    NestedFire,           // numbers {t}: nested transition t fires in some call
+    UnsafeStep,           // numbers {n}: n is activated while already active
+    SimultaneousBranches, // numbers {upstream step, transition, transition}: both fire from it together
+    Race,                 // numbers {step, step}, variable: stored actions of both write it, opposite values, one scan
+    Unstable,             // until stable: the call ends with a transition still firing
+    OutputOnD1,           // variable: a continuous output TRUE in the scan that enters D1
+    PropertyViolated,     // property: its index in the options' list
 };
 
 struct PromelaMarker {
@@ -68,6 +77,9 @@ struct PromelaMarker {
     std::string transition; // Fire, Holds, Fails, Overlap: the transition
     std::string other;      // Overlap: the later transition
     int line = 0;           // 1-based line of the marker statement in the text
+    std::vector<int> numbers; // both layers: nested steps and transitions, as the kind says
+    std::string variable;     // Race, OutputOnD1
+    int property = -1;        // PropertyViolated
 };
 
 struct PromelaModel {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace samples {
 
@@ -53,5 +54,31 @@ void addRandomNestedGrafcets(core::Model& model, std::uint32_t seed);
 // without nested GRAFCETs when 20 draws all have one. Returns the number of
 // GRAFCETs added. The model's evolution rule is left as it is.
 int addValidRandomNestedGrafcets(core::Model& model, std::mt19937& random);
+
+} // namespace samples
+
+namespace samples {
+
+// For the verification of both layers: A1 --Start--> F1 (a macro-step)
+// --Done AND Complete--> A2 --TRUE--> A1, F -> D1 on EStop; inputs Start,
+// Done, EStop, A, B, C; output Lamp; internal Flag; F1 has no GRAFCET yet.
+core::Model nestedMachine();
+// Adds a step, a transition to F1's GRAFCET (the model must accept them).
+void addMachineStep(core::Model& model, int number, bool initial, std::vector<core::GrafcetAction> actions = {});
+void addMachineTransition(core::Model& model, int number, std::vector<int> up, std::vector<int> down,
+                          std::string receptivity);
+// nestedMachine with 1 --A--> 2 (N Lamp, S Complete) --NOT A--> 1: a sound GRAFCET that completes.
+core::Model soundMachine();
+
+// Models seeded with each defect the verification of both layers finds
+// (a nested step never active, an unsafe step, Unstable, branches that start
+// together, a macro-step stuck without Complete, a race, a stored output on
+// D1, a violated property, a timer), with the properties to check on each.
+struct SeededModel {
+    std::string name;
+    core::Model model;
+    std::vector<std::string> properties;
+};
+std::vector<SeededModel> seededDefectModels();
 
 } // namespace samples

@@ -32,46 +32,6 @@ void require(const Status& status)
     REQUIRE(status.ok);
 }
 
-// A1 --Start--> F1 (a macro-step) --Done AND Complete--> A2 --TRUE--> A1,
-// F -> D1 on EStop; inputs Start, Done, EStop, A, B, C; output Lamp; internal Flag.
-Model machine()
-{
-    Model model;
-    for (const char* name : {"Start", "Done", "EStop", "A", "B", "C"})
-        require(model.addVariable(samples::variable(name, IecType::Bool, VariableKind::Input)));
-    require(model.addVariable(samples::variable("Lamp", IecType::Bool, VariableKind::Output)));
-    require(model.addVariable(samples::variable("Flag", IecType::Bool, VariableKind::Internal)));
-    require(model.setInitialStep("A1"));
-    require(model.setStepType("F1", StepType::Macro));
-    require(model.setCondition("A1->F1", "Start"));
-    require(model.setCondition("F1->A2", "Done"));
-    require(model.setCondition("A2->A1", "TRUE"));
-    require(model.setCondition("F->D1", "EStop"));
-    require(model.setCondition("D1->A5", "NOT EStop"));
-    return model;
-}
-
-void addStep(Model& model, int number, bool initial, std::vector<GrafcetAction> actions = {})
-{
-    require(model.addGrafcetStep("F1", {number, initial, "", std::move(actions)}));
-}
-
-void addTransition(Model& model, int number, std::vector<int> up, std::vector<int> down, std::string receptivity)
-{
-    require(model.addGrafcetTransition("F1", {number, std::move(up), std::move(down), std::move(receptivity)}));
-}
-
-// 1 --A--> 2 (S Complete) --NOT A--> 1: a sound GRAFCET that completes.
-Model soundMachine()
-{
-    Model model = machine();
-    addStep(model, 1, true);
-    addStep(model, 2, false, {{ActionTiming::Continuous, "N Lamp"}, {ActionTiming::OnActivation, "S Complete"}});
-    addTransition(model, 1, {1}, {2}, "A");
-    addTransition(model, 2, {2}, {1}, "NOT A");
-    return model;
-}
-
 std::vector<const VerificationFinding*> findingsWith(const VerificationResult& result, const std::string& findingCode)
 {
     std::vector<const VerificationFinding*> out;
@@ -117,7 +77,7 @@ VerificationResult verify(const Model& model, std::vector<std::string> propertie
 
 TEST_CASE("Both layers: a sound GRAFCET has no nested finding and its facts are exact", "[bothlayers]")
 {
-    const VerificationResult result = verify(soundMachine());
+    const VerificationResult result = verify(samples::soundMachine());
     REQUIRE(result.bothLayers);
     CHECK(result.exhaustive);
     for (const VerificationFinding& finding : result.findings)
@@ -131,9 +91,9 @@ TEST_CASE("Both layers: a sound GRAFCET has no nested finding and its facts are 
 
 TEST_CASE("Both layers: nested steps never active and nested transitions that never fire", "[bothlayers]")
 {
-    Model model = soundMachine();
-    addStep(model, 3, false);
-    addTransition(model, 3, {1}, {3}, "B AND NOT B");
+    Model model = samples::soundMachine();
+    samples::addMachineStep(model, 3, false);
+    samples::addMachineTransition(model, 3, {1}, {3}, "B AND NOT B");
     const VerificationResult result = verify(model);
     const auto never = findingsWith(result, code::kNestedStepNeverActive);
     REQUIRE(never.size() == 1);
@@ -146,15 +106,15 @@ TEST_CASE("Both layers: nested steps never active and nested transitions that ne
 
 TEST_CASE("Both layers: a step activated while it is active is unsafe", "[bothlayers]")
 {
-    Model model = machine();
+    Model model = samples::nestedMachine();
     // 1 forks into 2 and 3; 2 and 3 each lead to 4 without synchronising.
-    addStep(model, 1, true);
-    addStep(model, 2, false);
-    addStep(model, 3, false);
-    addStep(model, 4, false, {{ActionTiming::OnActivation, "S Complete"}});
-    addTransition(model, 1, {1}, {2, 3}, "A");
-    addTransition(model, 2, {2}, {4}, "B");
-    addTransition(model, 3, {3}, {4}, "C");
+    samples::addMachineStep(model, 1, true);
+    samples::addMachineStep(model, 2, false);
+    samples::addMachineStep(model, 3, false);
+    samples::addMachineStep(model, 4, false, {{ActionTiming::OnActivation, "S Complete"}});
+    samples::addMachineTransition(model, 1, {1}, {2, 3}, "A");
+    samples::addMachineTransition(model, 2, {2}, {4}, "B");
+    samples::addMachineTransition(model, 3, {3}, {4}, "C");
     const VerificationResult result = verify(model);
     const VerificationFinding& unsafe = confirmedFinding(result, code::kUnsafeNestedStep);
     CHECK(unsafe.elements == std::vector<std::string>{"F1/4"});
@@ -163,12 +123,12 @@ TEST_CASE("Both layers: a step activated while it is active is unsafe", "[bothla
 
 TEST_CASE("Both layers: Unstable is reachable under until stable", "[bothlayers]")
 {
-    Model model = soundMachine();
-    addStep(model, 3, false);
-    addStep(model, 4, false);
-    addTransition(model, 3, {1}, {3}, "B");
-    addTransition(model, 4, {3}, {4}, "TRUE");
-    addTransition(model, 5, {4}, {3}, "TRUE");
+    Model model = samples::soundMachine();
+    samples::addMachineStep(model, 3, false);
+    samples::addMachineStep(model, 4, false);
+    samples::addMachineTransition(model, 3, {1}, {3}, "B");
+    samples::addMachineTransition(model, 4, {3}, {4}, "TRUE");
+    samples::addMachineTransition(model, 5, {4}, {3}, "TRUE");
     model.setEvolutionRule(EvolutionRule::UntilStable);
     const VerificationResult result = verify(model);
     confirmedFinding(result, code::kUnstableReachable);
@@ -180,12 +140,12 @@ TEST_CASE("Both layers: Unstable is reachable under until stable", "[bothlayers]
 
 TEST_CASE("Both layers: a selection whose branches can start together", "[bothlayers]")
 {
-    Model model = machine();
-    addStep(model, 1, true);
-    addStep(model, 2, false, {{ActionTiming::OnActivation, "S Complete"}});
-    addStep(model, 3, false);
-    addTransition(model, 1, {1}, {2}, "A");
-    addTransition(model, 2, {1}, {3}, "B");
+    Model model = samples::nestedMachine();
+    samples::addMachineStep(model, 1, true);
+    samples::addMachineStep(model, 2, false, {{ActionTiming::OnActivation, "S Complete"}});
+    samples::addMachineStep(model, 3, false);
+    samples::addMachineTransition(model, 1, {1}, {2}, "A");
+    samples::addMachineTransition(model, 2, {1}, {3}, "B");
     const VerificationResult result = verify(model);
     const VerificationFinding& together = confirmedFinding(result, code::kBranchesTogether);
     CHECK(together.elements == std::vector<std::string>{"F1/T1", "F1/T2"});
@@ -198,9 +158,9 @@ TEST_CASE("Both layers: a selection whose branches can start together", "[bothla
 
 TEST_CASE("Both layers: a macro-step that can get stuck without Complete", "[bothlayers]")
 {
-    Model model = soundMachine();
-    addStep(model, 3, false); // a dead end: Complete is never set there
-    addTransition(model, 3, {1}, {3}, "B AND NOT A");
+    Model model = samples::soundMachine();
+    samples::addMachineStep(model, 3, false); // a dead end: Complete is never set there
+    samples::addMachineTransition(model, 3, {1}, {3}, "B AND NOT A");
     const VerificationResult result = verify(model);
     const VerificationFinding& stuck = confirmedFinding(result, code::kNeverComplete);
     CHECK(stuck.elements == std::vector<std::string>{"F1", "F1->A2"});
@@ -211,11 +171,11 @@ TEST_CASE("Both layers: a macro-step that can get stuck without Complete", "[bot
 
 TEST_CASE("Both layers: a GEMMA transition that waits for a Complete never TRUE", "[bothlayers]")
 {
-    Model model = machine();
-    addStep(model, 1, true);
-    addStep(model, 2, false);
-    addTransition(model, 1, {1}, {2}, "A");
-    addTransition(model, 2, {2}, {1}, "B");
+    Model model = samples::nestedMachine();
+    samples::addMachineStep(model, 1, true);
+    samples::addMachineStep(model, 2, false);
+    samples::addMachineTransition(model, 1, {1}, {2}, "A");
+    samples::addMachineTransition(model, 2, {2}, {1}, "B");
     const VerificationResult result = verify(model);
     const auto waits = findingsWith(result, code::kWaitsForNoComplete);
     REQUIRE(waits.size() == 1);
@@ -229,13 +189,13 @@ TEST_CASE("Both layers: a GEMMA transition that waits for a Complete never TRUE"
 
 TEST_CASE("Both layers: stored actions of parallel steps writing the same variable race", "[bothlayers]")
 {
-    Model model = machine();
-    addStep(model, 1, true);
-    addStep(model, 2, false, {{ActionTiming::OnActivation, "S Flag"}});
-    addStep(model, 3, false, {{ActionTiming::OnActivation, "R Flag"}});
-    addStep(model, 4, false, {{ActionTiming::OnActivation, "S Complete"}});
-    addTransition(model, 1, {1}, {2, 3}, "A");
-    addTransition(model, 2, {2, 3}, {4}, "B");
+    Model model = samples::nestedMachine();
+    samples::addMachineStep(model, 1, true);
+    samples::addMachineStep(model, 2, false, {{ActionTiming::OnActivation, "S Flag"}});
+    samples::addMachineStep(model, 3, false, {{ActionTiming::OnActivation, "R Flag"}});
+    samples::addMachineStep(model, 4, false, {{ActionTiming::OnActivation, "S Complete"}});
+    samples::addMachineTransition(model, 1, {1}, {2, 3}, "A");
+    samples::addMachineTransition(model, 2, {2, 3}, {4}, "B");
     const VerificationResult result = verify(model);
     const VerificationFinding& race = confirmedFinding(result, code::kStoredRace);
     CHECK(race.arguments == std::vector<std::string>{"F1", "2", "3", "Flag"});
@@ -247,7 +207,7 @@ TEST_CASE("Both layers: stored actions of parallel steps writing the same variab
 
 TEST_CASE("Both layers: continuous outputs drop when D1 is entered, stored ones may not", "[bothlayers]")
 {
-    Model model = soundMachine();
+    Model model = samples::soundMachine();
     // Continuous outputs drop with the state: Lamp is safe.
     CHECK(findingsWith(verify(model), code::kOutputOnEmergencyStop).empty());
     require(model.addVariable(samples::variable("Horn", IecType::Bool, VariableKind::Output)));
@@ -264,7 +224,7 @@ TEST_CASE("Both layers: continuous outputs drop when D1 is entered, stored ones 
 
 TEST_CASE("Both layers: the engineer's properties are proved or refuted with a counterexample", "[bothlayers]")
 {
-    const Model model = soundMachine();
+    const Model model = samples::soundMachine();
     const VerificationResult result = verify(
         model, {"never Lamp AND NOT A", "always in D1 -> NOT Lamp", "never F1.X2 AND NOT A", "never Lamp", "never ("});
     REQUIRE(result.propertyHolds.size() == 5);
@@ -288,7 +248,7 @@ TEST_CASE("Both layers: the engineer's properties are proved or refuted with a c
     CHECK(result.violated());
 
     // The model's own properties come first, then the options'.
-    Model withOwn = soundMachine();
+    Model withOwn = samples::soundMachine();
     require(withOwn.addProperty({"never Lamp", "the lamp is never lit"}));
     const VerificationResult own = verify(withOwn, {"always TRUE"});
     CHECK(own.properties == std::vector<std::string>{"never Lamp", "always TRUE"});
@@ -297,12 +257,12 @@ TEST_CASE("Both layers: the engineer's properties are proved or refuted with a c
 
 TEST_CASE("Both layers: timers are abstracted unless time is counted in scans", "[bothlayers]")
 {
-    Model model = machine();
-    addStep(model, 1, true);
-    addStep(model, 2, false, {{ActionTiming::Continuous, "N Lamp"}});
-    addStep(model, 3, false, {{ActionTiming::OnActivation, "S Complete"}});
-    addTransition(model, 1, {1}, {2}, "A");
-    addTransition(model, 2, {2}, {3}, "1s/X2");
+    Model model = samples::nestedMachine();
+    samples::addMachineStep(model, 1, true);
+    samples::addMachineStep(model, 2, false, {{ActionTiming::Continuous, "N Lamp"}});
+    samples::addMachineStep(model, 3, false, {{ActionTiming::OnActivation, "S Complete"}});
+    samples::addMachineTransition(model, 1, {1}, {2}, "A");
+    samples::addMachineTransition(model, 2, {2}, {3}, "1s/X2");
     VerificationOptions options;
     options.properties = {"never F1.X3"};
     const VerificationResult abstracted = verifyModel(model, options);

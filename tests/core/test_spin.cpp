@@ -4,6 +4,7 @@
 #include "core/verification/promela.h"
 #include "core/verification/verification.h"
 #include "modelfactory.h"
+#include "spinrunner.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -34,85 +35,9 @@ namespace code = verification;
 using Set = std::set<std::string>;
 using Pair = std::pair<std::string, std::string>;
 
-bool toolAvailable(const std::string& command)
-{
-    return std::system((command + " > /dev/null 2>&1").c_str()) == 0;
-}
-
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-// spin and the C compiler run once per model, in a fresh temporary folder;
-// then pan runs as often as needed, from reset or from given configurations.
-class CompiledPan {
-public:
-    CompiledPan(const PromelaModel& promela, const std::string& name)
-    {
-        REQUIRE(toolAvailable("spin -V")); // Debian package `spin` (CI installs it)
-        REQUIRE(toolAvailable("gcc --version"));
-        std::string pattern = (fs::temp_directory_path() / ("ggstudio-spin-" + name + "-XXXXXX")).string();
-        REQUIRE(::mkdtemp(pattern.data()) != nullptr);
-        m_folder = pattern;
-        {
-            std::ofstream out(m_folder / "model.pml", std::ios::binary);
-            out << promela.text;
-        }
-        // kSpinCompile but -O0: these state spaces take milliseconds,
-        // compiling pan.c with optimisation takes seconds.
-        const std::string command = "cd '" + m_folder.string() + "' && timeout 120 " + kSpinGenerate
-            + " model.pml > spin.log 2>&1 && timeout 120 gcc -O0 -DSAFETY -DMEMLIM=512 -o pan pan.c > cc.log 2>&1";
-        const int status = std::system(command.c_str());
-        INFO("spin: " << readText(m_folder / "spin.log") << "\ncc: " << readText(m_folder / "cc.log"));
-        REQUIRE(status == 0);
-    }
-    CompiledPan(const CompiledPan&) = delete;
-    CompiledPan& operator=(const CompiledPan&) = delete;
-    ~CompiledPan()
-    {
-        std::error_code ignored;
-        fs::remove_all(m_folder, ignored);
-    }
-
-    // pan's output (readSpinReport says whether the search completed);
-    // `environment` is put before the command ("GG_LIST=1").
-    std::string run(const std::string& environment = {}) const
-    {
-        const std::string command = "cd '" + m_folder.string() + "' && " + environment + " timeout 120 " + kSpinRun
-            + " > pan.txt 2>&1";
-        REQUIRE(std::system(command.c_str()) != -1);
-        return readText(m_folder / "pan.txt");
-    }
-
-    // One run per start (GG_START), each stopped when it enters State
-    // `until` (GG_UNTIL), in one shell: pan's outputs, in order. Each run
-    // costs about a millisecond if pan does not allocate kSpinRun's
-    // 200000-deep stack: `depth` is the limit (a search that needs more
-    // says so and is not complete).
-    std::vector<std::string> runFrom(const std::vector<std::string>& starts, int until, long long depth) const
-    {
-        {
-            std::ofstream out(m_folder / "starts.txt", std::ios::binary);
-            for (const std::string& start : starts)
-                out << start << "\n";
-        }
-        const std::string loop = "i=0; while IFS= read -r start; do i=$((i+1)); " + std::string(kSpinStartVariable)
-            + "=\"$start\" " + kSpinUntilVariable + "=" + std::to_string(until) + " ./pan -m" + std::to_string(depth)
-            + " -w14 > from-$i.txt 2>&1; done < starts.txt";
-        const std::string command = "cd '" + m_folder.string() + "' && timeout 300 sh -c '" + loop + "'";
-        REQUIRE(std::system(command.c_str()) != -1); // each run's output says whether it completed
-        std::vector<std::string> outputs;
-        for (std::size_t i = 1; i <= starts.size(); ++i)
-            outputs.push_back(readText(m_folder / ("from-" + std::to_string(i) + ".txt")));
-        return outputs;
-    }
-
-private:
-    fs::path m_folder;
+// spin and the C compiler once per model (tests/support/spinrunner.h).
+struct CompiledPan : spin::CompiledPan {
+    CompiledPan(const PromelaModel& promela, const std::string& name) : spin::CompiledPan(promela.text, name) {}
 };
 
 // What SPIN says about the model, by marker kind.
@@ -206,6 +131,7 @@ SpinFacts spinFacts(const Model& model, const PromelaOptions& options, const std
         case PromelaMarkerKind::Overlap: facts.overlaps.insert({marker.transition, marker.other}); break;
         case PromelaMarkerKind::NoFire: facts.noFire.insert(marker.step); break;
         case PromelaMarkerKind::NoEmergencyStop: facts.noEmergencyStop.insert(marker.step); break;
+        default: break; // both layers' markers: buildPromela writes none
         }
     }
     return facts;
@@ -612,8 +538,8 @@ TEST_CASE("readSpinReport reads pan's verdicts and refuses incomplete searches",
     CHECK(report.complete);
     CHECK(report.statesStored == 2);
     CHECK(report.unreachedLines == std::vector<int>{20, 33});
-    CHECK(!report.reached(PromelaMarker{PromelaMarkerKind::Reach, "A1", "", "", 20}));
-    CHECK(report.reached(PromelaMarker{PromelaMarkerKind::Reach, "A1", "", "", 21}));
+    CHECK(!report.reached(PromelaMarker{PromelaMarkerKind::Reach, "A1", "", "", 20, {}, "", -1}));
+    CHECK(report.reached(PromelaMarker{PromelaMarkerKind::Reach, "A1", "", "", 21, {}, "", -1}));
 
     CHECK(!readSpinReport("pan:1: assertion violated (0) (at depth 3)\nState-vector 20 byte, depth reached 3, "
                           "errors: 1\nunreached in proctype scan\n")

@@ -1,0 +1,50 @@
+#pragma once
+
+// Both layers of the program as a Promela model, so that SPIN can check,
+// independently of core/verification/programexplorer.cpp, what the
+// exploration of both layers claims (docs/verification.md, "SPIN
+// cross-check of both layers").
+//
+// One iteration of the scan process's `do` loop is one PLC scan of the
+// generated program (spec grafcet-layer.md §4), written from
+// core::GemmaProgram and its NestedGrafcets as the spec words it, not from
+// the explorer's code:
+// - the state between scans: State (gState, 0 when no visible step is
+//   active), Entry, the tokens; for each nested GRAFCET its situation (S_Xn),
+//   its function block's outputs (S_o_V) and Complete (S_C) and its TONs
+//   (S_Tk); the stored BOOL variables (v_V) and the edge memories (p_V). A
+//   GRAFCET whose step is not active is all zero: the Initialization call of
+//   the step's entry scan starts it afresh.
+// - inputs are chosen when the scan first reads them (inline rd_V), so that a
+//   scan branches only on what it reads, and forgotten after it; a numeric
+//   variable takes one value per combination of the comparisons with
+//   constants on it (n_V indexes them); any other comparison is a free BOOL
+//   per canonical text (o_k); a TON longer than one cycle may or may not have
+//   elapsed from its second run on, unless time is counted in scans.
+// - each claim of the exploration has a marker line (PromelaMarker): a
+//   statement alone on its line, reached in SPIN's exhaustive search iff the
+//   claim holds somewhere; readSpinReport and SpinReport::reached read them.
+
+#include "core/verification/promela.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace core {
+
+class Model;
+
+struct ProgramPromelaOptions {
+    // Complete of the macro/enclosing steps without nested GRAFCET (Free when not listed).
+    std::map<std::string, CompleteAssumption> complete;
+    // The properties to mark (core/verification/property.h); one that does
+    // not pass checkProperty gets no marker.
+    std::vector<std::string> properties;
+    // TONs elapse in exactly the scan the PLC's would, counted in scans.
+    bool exactTime = false;
+};
+
+PromelaModel buildProgramPromela(const Model& model, const ProgramPromelaOptions& options = {});
+
+} // namespace core
