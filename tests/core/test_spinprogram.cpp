@@ -7,6 +7,7 @@
 // both layers") says which claim maps how.
 
 #include "samplemodels.h"
+#include "modelfactory.h"
 #include "spinrunner.h"
 
 #include "core/codegen/gemmaprogram.h"
@@ -287,4 +288,11 @@ TEST_CASE("SPIN agrees with the exploration of both layers on random models", "[
         requireAgreement(model, properties, false, "random-" + std::to_string(seed));
     }
     CHECK(compared >= 8);
+}
+
+TEST_CASE("SPIN agrees with the exploration of both layers on the benchmark's stress model", "[spin][bothlayers]")
+{
+    REQUIRE(spin::available());
+    const Facts facts = requireAgreement(factory::bothLayersStressModel(), {"never BatchMark AND in A1"}, false, "stress");
+    CHECK(has(facts, "reach D3"));
 }
