@@ -418,14 +418,25 @@ bool unconfirmed(const core::VerificationFinding& f)
     return needsPath && f.counterexample && !f.counterexample->confirmed;
 }
 
-// The same for the findings only the exploration of both layers makes
-// (GV110 and up): their runs are found under its abstractions (timers,
-// numeric memories, undecidable comparisons), and the core downgrades one
-// that does not replay to information.
-bool unconfirmedOnBothLayers(const core::VerificationFinding& f)
+// Why a finding's run does not replay depends on the analysis that found it:
+// an undecidable comparison on the GEMMA layer, Complete free on the GEMMA
+// layer of a model whose both layers were explored, or the abstractions of
+// the exploration of both layers (timers, numeric memories, comparisons),
+// where the core downgrades such a finding to information.
+QString unconfirmedReason(const core::VerificationFinding& f)
 {
-    return f.code >= std::string("GV110") && f.severity == core::Severity::Info && f.counterexample
-        && !f.counterexample->confirmed;
+    using core::FindingOrigin;
+    const bool notReplayed = f.counterexample && !f.counterexample->confirmed;
+    if (f.origin == FindingOrigin::BothLayers && f.severity == core::Severity::Info && notReplayed)
+        return DiagnosticText::tr("Not confirmed: the run found under the abstractions of the verification does "
+                                  "not replay in the simulator.");
+    if (f.origin == FindingOrigin::GemmaLayerKept && notReplayed)
+        return DiagnosticText::tr("Not confirmed: decided on the GEMMA layer with every Complete free, and the run "
+                                  "does not replay with the nested GRAFCETs.");
+    if (f.origin == FindingOrigin::GemmaLayer && unconfirmed(f))
+        return DiagnosticText::tr("Not confirmed: a condition uses a comparison the verifier cannot decide, and the "
+                                  "counterexample does not replay.");
+    return {};
 }
 
 } // namespace
@@ -440,14 +451,8 @@ QString verificationText(const core::VerificationFinding& finding)
             text[0] = text[0].toUpper();
         return text;
     }
-    if (unconfirmed(finding))
-        text += QLatin1Char(' ')
-                + DiagnosticText::tr("Not confirmed: a condition uses a comparison the verifier cannot decide, and "
-                                     "the counterexample does not replay.");
-    else if (unconfirmedOnBothLayers(finding))
-        text += QLatin1Char(' ')
-                + DiagnosticText::tr("Not confirmed: the run found under the abstractions of the verification does "
-                                     "not replay in the simulator.");
+    if (const QString reason = unconfirmedReason(finding); !reason.isEmpty())
+        text += QLatin1Char(' ') + reason;
     return text;
 }
 

@@ -71,6 +71,8 @@ private:
     void add(VerificationFinding finding, const Event* event);
     VerificationFinding finding(const Event& event) const;
     std::vector<std::string> waitingTransitions(const std::string& stepId) const;
+    std::vector<std::string> laterTransitions(const std::string& transitionId) const;
+    bool isFamily(const std::string& transitionId) const;
     bool isContinuousOutput(const std::string& variable) const;
 
     const Model& m_model;
@@ -91,6 +93,7 @@ explore::Options BothLayers::explorationOptions(bool exactTime) const
     options.complete = m_options.complete;
     options.properties = m_properties;
     options.exactTime = exactTime;
+    options.decidePriorities = m_program.hasNestedGrafcets();
     options.maxStates = m_options.maxProgramStates;
     options.cancelled = m_options.cancelled;
     if (m_options.timeLimit.count() > 0)
@@ -130,6 +133,7 @@ void BothLayers::run()
     addEvents();
     addProperties();
     for (VerificationFinding& f : m_added) {
+        f.origin = FindingOrigin::BothLayers;
         if (f.arguments.empty())
             f.arguments = f.elements; // as the GEMMA-layer findings: what the message names
         m_result.findings.push_back(std::move(f));
@@ -158,14 +162,20 @@ void BothLayers::refine()
 void BothLayers::replaceGemmaFindings()
 {
     const explore::Exploration& e = m_explorer->result();
-    const std::set<std::string> replaced{code::kUnreachableStep, code::kDeadTransition, code::kNoReturn,
-                                         code::kStuck, code::kNoEmergencyStop};
+    std::set<std::string> replaced{code::kUnreachableStep, code::kDeadTransition, code::kNoReturn, code::kStuck,
+                                   code::kNoEmergencyStop};
+    if (e.prioritiesDecided) {
+        replaced.insert(code::kAlwaysTrue);
+        replaced.insert(code::kOverlap);
+    }
     std::vector<VerificationFinding> kept;
     for (VerificationFinding& f : m_result.findings) {
         if (replaced.count(f.code))
             continue;
-        // GV103 and GV104 are still decided on the GEMMA layer, where a
-        // nested GRAFCET's Complete is free: its run may not exist on both.
+        f.origin = FindingOrigin::GemmaLayerKept;
+        // Only when the budget ran out while probing both layers: GV103 and
+        // GV104 stay decided on the GEMMA layer, where a nested GRAFCET's
+        // Complete is free, so their runs may not exist on both.
         if (f.counterexample && !f.counterexample->confirmed) {
             if (const std::size_t note = f.message.find(" (not confirmed:"); note != std::string::npos)
                 f.message.erase(note);
@@ -274,6 +284,35 @@ std::vector<std::string> BothLayers::waitingTransitions(const std::string& stepI
     return ids;
 }
 
+// The transitions evaluated after it by the reachable steps that evaluate it.
+std::vector<std::string> BothLayers::laterTransitions(const std::string& transitionId) const
+{
+    const std::vector<std::string>& reachable = m_explorer->result().reachableSteps;
+    std::vector<std::string> later;
+    for (const GemmaStep& step : m_program.steps) {
+        if (std::find(reachable.begin(), reachable.end(), step.id) == reachable.end())
+            continue;
+        bool after = false;
+        for (const GemmaTransition& t : step.transitions) {
+            if (after && std::find(later.begin(), later.end(), t.id) == later.end())
+                later.push_back(t.id);
+            after = after || t.id == transitionId;
+        }
+    }
+    return later;
+}
+
+bool BothLayers::isFamily(const std::string& transitionId) const
+{
+    for (const GemmaStep& step : m_program.steps) {
+        for (const GemmaTransition& t : step.transitions) {
+            if (t.id == transitionId)
+                return t.family;
+        }
+    }
+    return false;
+}
+
 bool BothLayers::isContinuousOutput(const std::string& variable) const
 {
     for (const GemmaStep& step : m_program.steps) {
@@ -372,6 +411,36 @@ VerificationFinding BothLayers::finding(const Event& event) const
         f.message = "once " + s + " is active, the inputs can lead to a situation from which the initial step can "
             + "never become active again";
         break;
+    case EventKind::AlwaysTrue: {
+        f.gemmaStep.clear();
+        f.code = code::kAlwaysTrue;
+        f.elements = {event.transition};
+        const std::vector<std::string> later = laterTransitions(event.transition);
+        if (isFamily(event.transition)) {
+            f.message = "the condition of " + event.transition
+                + " is always TRUE: no own transition of an F step can ever fire";
+            break;
+        }
+        f.elements.insert(f.elements.end(), later.begin(), later.end());
+        std::string named;
+        for (std::size_t i = 0; i < later.size(); ++i)
+            named += (i ? " and " : "") + later[i];
+        f.message = "the condition of " + event.transition + " is always TRUE when " + s + " is active: " + named
+            + " can never fire";
+        break;
+    }
+    case EventKind::Overlap: {
+        f.gemmaStep.clear();
+        f.code = code::kOverlap;
+        f.severity = Severity::Info;
+        const GemmaStep* step = m_program.step(s);
+        const std::string& higher = step->transitions[static_cast<std::size_t>(event.numbers[0])].id;
+        const std::string& lower = step->transitions[static_cast<std::size_t>(event.numbers[1])].id;
+        f.elements = {higher, lower};
+        f.message = higher + " and " + lower + " can both be TRUE in the same scan: the priority decides, " + higher
+            + " fires";
+        break;
+    }
     case EventKind::NoEmergencyStop:
         f.gemmaStep.clear();
         f.code = code::kNoEmergencyStop;
@@ -392,6 +461,13 @@ void BothLayers::add(VerificationFinding f, const Event* event)
         const Event* witness = event;
         Event exactEvent;
         Counterexample counterexample = explorer->counterexample(*event, f.code + " " + f.message);
+        if (event->kind == EventKind::AlwaysTrue) {
+            // A "never FALSE" claim: the run that fires it only illustrates it.
+            if (counterexample.confirmed)
+                f.counterexample = std::move(counterexample);
+            m_added.push_back(std::move(f));
+            return;
+        }
         if (!counterexample.confirmed && m_exact) {
             const std::string key = eventKey(*event);
             for (const Event& candidate : m_exact->result().events) {
@@ -427,6 +503,12 @@ void BothLayers::addEvents()
             && (event.kind == EventKind::Stuck || event.kind == EventKind::NoReturn
                 || event.kind == EventKind::NoEmergencyStop))
             continue; // the GEMMA-layer analysis decides these without nested GRAFCETs
+        if (event.kind == EventKind::AlwaysTrue || event.kind == EventKind::Overlap) {
+            if (!e.exhaustive || !e.prioritiesDecided)
+                continue; // the GEMMA layer's stay (replaceGemmaFindings)
+            if (event.kind == EventKind::AlwaysTrue && laterTransitions(event.transition).empty())
+                continue; // always TRUE, but nothing comes after it to block
+        }
         VerificationFinding f = finding(event);
         if (event.kind == EventKind::UnsafeStep)
             m_result.unsafeNestedSteps[event.stepId].push_back(event.numbers[0]);

@@ -251,6 +251,18 @@ struct ScanOutcome {
 
 using State = std::string;
 
+// What a scan also evaluates before its CASE fires a transition, for GV103
+// and GV104: whether some input makes a transition's gated condition FALSE,
+// or lets a higher transition fire while a lower one's holds. Its reads are
+// the scan's own (cached), so the CASE that follows sees the same values.
+// Evaluates every condition of one step's CASE in the scans of a state, before
+// the CASE runs, to decide GV103 and GV104 on both layers: one enumeration of
+// the inputs those conditions read answers every transition and every pair.
+struct Probe {
+    int step = -1;     // the step index whose scans it probes (-1: plain scans)
+    bool only = false; // stop the scan once the conditions are read (exploring, not replaying)
+};
+
 } // namespace
 
 struct ProgramExplorer::Impl {
@@ -287,11 +299,16 @@ struct ProgramExplorer::Impl {
     void setTimerState(int timer, int value);
     void runTimer(const CompiledGrafcet& g, int timer, bool in);
     void noteActive(const CompiledStep& step);
+    bool gated(const CompiledTransition& transition, bool complete);
+    void runProbe(const CompiledStep& step, bool complete);
 
     // --- exploring ----------------------------------------------------------------------
     void explore();
     void addEvent(Event event, std::size_t state, bool gemmaFired);
     void analyseGraph();
+    void probePriorities();
+    void probeState(std::size_t state, std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound);
+    bool worthProbing(int step, const std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound) const;
     bool outOfBudget();
 
     // --- counterexamples -------------------------------------------------------------------
@@ -336,6 +353,9 @@ struct ProgramExplorer::Impl {
     std::map<int, std::pair<int, bool>> writes; // slot -> (step index, value) within the scan
     bool propertyPhase = false;
     int newStep = -1;
+    Probe probe;                 // the probe the scans run
+    std::vector<char> probeTrue; // by position in the probed step: its gated condition in the last scan
+    std::vector<char> failSeen; // by global transition: its gated condition was FALSE in some scan
 
     // The explored graph.
     std::unordered_map<State, std::uint32_t> index;
@@ -351,6 +371,13 @@ struct ProgramExplorer::Impl {
     std::vector<std::vector<Edge>> edges;
     std::set<std::string> eventKeys;
     std::map<std::string, std::pair<std::size_t, bool>> eventAt; // key -> (index in events, its scan fired a GEMMA transition)
+    std::vector<char> firedGlobal; // by global transition: fires in some reachable scan
+    struct FirstFire {
+        bool seen = false;
+        int step = -1;
+        Witness witness;
+    };
+    std::vector<FirstFire> firstFire; // by global transition: the first (shortest) scan that fires it
     Exploration result;
     std::chrono::steady_clock::time_point started;
     std::size_t scansRun = 0;
@@ -535,6 +562,9 @@ void ProgramExplorer::Impl::compileSteps()
     layout.prev = layout.bools + static_cast<int>(stateBoolSlots.size());
     layout.size = layout.prev + static_cast<int>(edgeSlots.size());
     timerCache.assign(static_cast<std::size_t>(maxTimers), -1);
+    failSeen.assign(transitionIds.size(), 0);
+    firedGlobal.assign(transitionIds.size(), 0);
+    firstFire.assign(transitionIds.size(), FirstFire{});
 }
 
 void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
@@ -1078,6 +1108,25 @@ void ProgramExplorer::Impl::noteActive(const CompiledStep& step)
     }
 }
 
+// A GEMMA transition's condition as the CASE reads it: AND Complete where it
+// waits for it, FALSE when unusable.
+bool ProgramExplorer::Impl::gated(const CompiledTransition& transition, bool complete)
+{
+    return transition.condition && (!transition.source->waitsForComplete || complete)
+        && eval(*transition.condition, -1);
+}
+
+void ProgramExplorer::Impl::runProbe(const CompiledStep& step, bool complete)
+{
+    probeTrue.assign(step.transitions.size(), 0);
+    for (std::size_t k = 0; k < step.transitions.size(); ++k) {
+        const CompiledTransition& transition = step.transitions[k];
+        probeTrue[k] = gated(transition, complete) ? 1 : 0;
+        if (transition.condition && !probeTrue[k])
+            failSeen[static_cast<std::size_t>(transition.globalIndex)] = 1;
+    }
+}
+
 void ProgramExplorer::Impl::runStored(const CompiledStep& step, int stepIndex, const std::vector<CompiledAction>& actions,
                                       ScanOutcome& outcome)
 {
@@ -1302,9 +1351,15 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
         }
         firstEvolution = false;
         activeGrafcet = nullptr; // the GEMMA conditions read the globals, not the FB's outputs
+        if (probe.step >= 0 && probe.step == active) {
+            runProbe(step, complete);
+            if (probe.only) {
+                to = work;
+                return outcome;
+            }
+        }
         for (const CompiledTransition& transition : step.transitions) {
-            if (transition.condition && (!transition.source->waitsForComplete || complete)
-                && eval(*transition.condition, -1)) {
+            if (gated(transition, complete)) {
                 newStep = transition.target;
                 setStepIndex(work, newStep);
                 work[2] = 1;
@@ -1312,6 +1367,8 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
                 outcome.entersD1 = newStep >= 0 && newStep == d1Step;
                 break;
             }
+            if (transition.condition)
+                failSeen[u(transition.globalIndex)] = 1;
         }
     }
     // After END_CASE: the continuous outputs, gated by the state and Entry.
@@ -1400,6 +1457,8 @@ bool ProgramExplorer::Impl::outOfBudget()
 
 std::string eventKey(const Event& event)
 {
+    if (event.kind == EventKind::AlwaysTrue)
+        return std::to_string(static_cast<int>(event.kind)) + "|" + event.transition;
     std::string key = std::to_string(static_cast<int>(event.kind)) + "|" + event.stepId + "|" + event.variable + "|"
         + std::to_string(event.property);
     for (int n : event.numbers)
@@ -1439,7 +1498,6 @@ void ProgramExplorer::Impl::explore()
     depth.push_back(0);
     edges.emplace_back();
     std::vector<bool> reached(steps.size(), false);
-    std::vector<bool> fired(transitionIds.size(), false);
     for (std::size_t next = 0; next < statesByIndex.size(); ++next) {
         if ((next & 63) == 0 && outOfBudget()) {
             result.exhaustive = false;
@@ -1465,9 +1523,13 @@ void ProgramExplorer::Impl::explore()
                 edges.emplace_back();
                 result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
             }
-            if (outcome.firedTransition >= 0)
-                fired[static_cast<std::size_t>(outcome.firedTransition)] = true;
             const int active = stepIndexOf(from);
+            if (outcome.firedTransition >= 0) {
+                const auto g = static_cast<std::size_t>(outcome.firedTransition);
+                firedGlobal[g] = 1;
+                if (!firstFire[g].seen)
+                    firstFire[g] = FirstFire{true, active, Witness{next, chooser.answers()}};
+            }
             if (active >= 0 && outcome.completeTrue && steps[static_cast<std::size_t>(active)].grafcet >= 0)
                 result.completeSeen[steps[static_cast<std::size_t>(active)].source->id] = true;
             Edge edge{it->second, outcome.firedTransition, outcome.completeTrue, outcome.entersD1};
@@ -1492,15 +1554,137 @@ void ProgramExplorer::Impl::explore()
             result.reachableSteps.push_back(steps[s].source->id);
     }
     for (std::size_t t = 0; t < transitionIds.size(); ++t) {
-        if (fired[t])
+        if (firedGlobal[t])
             result.fireableTransitions.push_back(transitionIds[t]);
     }
     for (auto& [id, list] : result.activeNestedSteps)
         std::sort(list.begin(), list.end());
     for (auto& [id, list] : result.firedNestedTransitions)
         std::sort(list.begin(), list.end());
-    if (result.exhaustive)
+    result.scansRun = scansRun;
+    if (result.exhaustive) {
+        if (options.decidePriorities)
+            probePriorities();
+        else
+            result.prioritiesDecided = false;
         analyseGraph();
+    } else {
+        result.prioritiesDecided = false;
+    }
+    result.scansRun = scansRun;
+}
+
+// GV103 and GV104 on both layers. The plain scans already show most
+// conditions FALSE somewhere; a state is probed only while its step has a
+// fired transition never seen FALSE or a pair of fired transitions not yet seen
+// holding together, and one enumeration of its inputs answers them all.
+void ProgramExplorer::Impl::probePriorities()
+{
+    const auto u = [](auto i) { return static_cast<std::size_t>(i); };
+    std::set<std::pair<int, std::pair<std::size_t, std::size_t>>> overlapFound;
+    for (std::size_t s = 0; s < statesByIndex.size() && result.prioritiesDecided; ++s) {
+        const int active = stepIndexOf(*statesByIndex[s]);
+        if (active >= 0 && worthProbing(active, overlapFound))
+            probeState(s, overlapFound);
+    }
+    chooser.reset();
+    if (!result.prioritiesDecided) {
+        result.overlaps.clear();
+        result.events.erase(std::remove_if(result.events.begin(), result.events.end(),
+                                           [](const Event& e) { return e.kind == EventKind::Overlap; }),
+                            result.events.end());
+        return;
+    }
+    for (std::size_t g = 0; g < transitionIds.size(); ++g) {
+        if (!firedGlobal[g] || failSeen[g] || !transitionSources[g]->conditionUsable)
+            continue;
+        result.alwaysTrueTransitions.push_back(transitionIds[g]);
+        const FirstFire& first = firstFire[g];
+        const std::vector<CompiledTransition>& transitions = steps[u(first.step)].transitions;
+        const auto position = std::find_if(transitions.begin(), transitions.end(), [&](const CompiledTransition& t) {
+            return t.globalIndex == static_cast<int>(g);
+        });
+        Event event;
+        event.kind = EventKind::AlwaysTrue;
+        event.stepId = steps[u(first.step)].source->id;
+        event.numbers = {static_cast<int>(position - transitions.begin())};
+        event.transition = transitionIds[g];
+        event.witness = first.witness;
+        eventKeys.insert(eventKey(event));
+        result.events.push_back(std::move(event));
+    }
+}
+
+// A GV104 pair: the higher transition is not the family one (the emergency
+// stop pre-empts by design) and both fire in some reachable scan (else GV102).
+bool ProgramExplorer::Impl::worthProbing(
+    int step, const std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound) const
+{
+    const auto u = [](auto i) { return static_cast<std::size_t>(i); };
+    const std::vector<CompiledTransition>& transitions = steps[u(step)].transitions;
+    const auto fired = [&](const CompiledTransition& t) { return t.condition && firedGlobal[u(t.globalIndex)]; };
+    for (std::size_t i = 0; i < transitions.size(); ++i) {
+        if (!fired(transitions[i]))
+            continue;
+        if (!failSeen[u(transitions[i].globalIndex)])
+            return true;
+        if (transitions[i].source->family)
+            continue;
+        for (std::size_t j = i + 1; j < transitions.size(); ++j) {
+            if (fired(transitions[j]) && !overlapFound.count({step, {i, j}}))
+                return true;
+        }
+    }
+    return false;
+}
+
+// Every scan of the state with the probe on its step; records the pairs that
+// hold together, each with the first scan that shows it.
+void ProgramExplorer::Impl::probeState(std::size_t state,
+                                       std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound)
+{
+    const auto u = [](auto i) { return static_cast<std::size_t>(i); };
+    if (outOfBudget()) {
+        result.prioritiesDecided = false;
+        return;
+    }
+    const int active = stepIndexOf(*statesByIndex[state]);
+    const std::vector<CompiledTransition>& transitions = steps[u(active)].transitions;
+    probe = Probe{active, true};
+    chooser.reset();
+    std::size_t leaves = 0;
+    do {
+        ++scansRun;
+        if ((++leaves & 1023) == 0 && outOfBudget()) {
+            result.prioritiesDecided = false;
+            break;
+        }
+        chooser.restart(nullptr);
+        State ignored;
+        scan(*statesByIndex[state], ignored);
+        const auto first = std::find(probeTrue.begin(), probeTrue.end(), 1);
+        if (first == probeTrue.end())
+            continue;
+        const std::size_t i = u(first - probeTrue.begin());
+        const CompiledTransition& higher = transitions[i];
+        if (higher.source->family || !firedGlobal[u(higher.globalIndex)])
+            continue;
+        for (std::size_t j = i + 1; j < transitions.size(); ++j) {
+            const CompiledTransition& lower = transitions[j];
+            if (!probeTrue[j] || !firedGlobal[u(lower.globalIndex)] || !overlapFound.insert({active, {i, j}}).second)
+                continue;
+            result.overlaps.emplace_back(higher.source->id, lower.source->id);
+            Event event;
+            event.kind = EventKind::Overlap;
+            event.stepId = steps[u(active)].source->id;
+            event.numbers = {static_cast<int>(i), static_cast<int>(j)};
+            event.transition = higher.source->id;
+            event.witness = Witness{state, chooser.answers()};
+            eventKeys.insert(eventKey(event));
+            result.events.push_back(std::move(event));
+        }
+    } while (chooser.advance());
+    probe = Probe{};
 }
 
 // The graph properties: from which states of a step something can still happen.
@@ -1669,12 +1853,21 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
         current[static_cast<int>(i)] = valueText(impl.slots[i].initial);
     std::int64_t scan = 0;
     State last;
-    for (const auto& [from, answers] : path) {
+    std::string firedAtEnd; // the GEMMA transition the last scan must fire (GV103, GV104)
+    for (std::size_t k = 0; k < path.size(); ++k) {
+        const auto& [from, answers] = path[k];
         ++scan;
         impl.chooser.restart(&answers);
+        const bool witnessScan = !event.stateOnly && k + 1 == path.size();
+        if (witnessScan && event.kind == EventKind::Overlap)
+            impl.probe = Probe{stepIndexOf(*impl.statesByIndex[from]), false}; // reads the inputs as the probe did
         State next;
-        impl.scan(*impl.statesByIndex[from], next);
+        const ScanOutcome outcome = impl.scan(*impl.statesByIndex[from], next);
+        impl.probe = Probe{};
         last = next;
+        if (witnessScan && (event.kind == EventKind::Overlap || event.kind == EventKind::AlwaysTrue)
+            && outcome.firedTransition >= 0)
+            firedAtEnd = impl.transitionIds[static_cast<std::size_t>(outcome.firedTransition)];
         std::vector<std::string> sets;
         std::vector<Decision> decisions = impl.chooser.decisions;
         for (Decision& d : decisions) {
@@ -1715,6 +1908,8 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     impl.chooser.reset();
     const State& end = event.stateOnly ? *impl.statesByIndex[event.witness.state] : last;
     const int step = stepIndexOf(end);
+    if (!firedAtEnd.empty())
+        text << "at " << scan << ": expect fired " << firedAtEnd << "\n";
     if (scan > 0 && step >= 0) {
         const CompiledStep& compiled = impl.steps[static_cast<std::size_t>(step)];
         text << "at " << scan << ": expect step " << compiled.source->id << "\n";

@@ -29,11 +29,11 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <cstddef>
 #include <functional>
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace core {
@@ -51,6 +51,8 @@ struct Options {
     // Time counted in scans: each TON elapses exactly when the PLC's would
     // (more states), instead of "may or may not have elapsed".
     bool exactTime = false;
+    // Decide GV103 and GV104 (Exploration::alwaysTrueTransitions, overlaps).
+    bool decidePriorities = true;
     std::size_t maxStates = 1'000'000;
     // Scans run (each way the inputs of a state go): a budget of work that,
     // unlike the deadline, ends at the same point on every machine.
@@ -77,6 +79,9 @@ enum class EventKind {
     Stuck,                // stepId: from the witness state, no transition out of the step can ever fire
     NoReturn,             // stepId: from the witness state, the initial step never becomes active again
     NoEmergencyStop,      // stepId: in the witness state no scan enters D1
+    AlwaysTrue,           // stepId, numbers: {the transition's position in the step}: the witness scan fires it;
+                          // its condition is TRUE in every reachable scan of every step that evaluates it
+    Overlap,              // stepId, numbers: {higher, lower position}: the higher fires while the lower's condition holds
 };
 
 struct Event {
@@ -84,12 +89,15 @@ struct Event {
     std::string stepId;
     std::vector<int> numbers;
     std::string variable;
+    std::string transition; // AlwaysTrue, Overlap: the GEMMA transition (the higher one)
     int property = -1;
     Witness witness;
     bool stateOnly = false; // the witness is the state itself (graph properties): no scan from it is part of it
 };
 
-// What tells one event from another (its kind and what it names, not its witness).
+// What tells one event from another (its kind and what it names, not its
+// witness). AlwaysTrue is told by its transition alone: the family transition
+// is evaluated by every F step.
 std::string eventKey(const Event& event);
 
 struct Exploration {
@@ -97,6 +105,7 @@ struct Exploration {
     bool cancelled = false;
     std::size_t states = 0;
     std::size_t scans = 0;   // distinct (state, successor) pairs
+    std::size_t scansRun = 0; // every scan run, probes included: the work done (Options::maxScansRun)
     std::size_t maxDepth = 0;
     std::vector<std::string> reachableSteps;      // active at the start of some reachable scan, state order
     std::vector<std::string> fireableTransitions; // fire in some reachable scan, program order
@@ -104,6 +113,16 @@ struct Exploration {
     std::map<std::string, std::vector<int>> firedNestedTransitions;
     std::map<std::string, bool> completeSeen;     // per GRAFCET step: Complete TRUE after some call
     std::vector<Event> events;                    // the first witness of each distinct event
+    // GV103 and GV104 with the real Complete. A transition's condition is
+    // "gated": AND Complete where it waits for it, FALSE when unusable.
+    // alwaysTrueTransitions: usable, fire in some reachable scan, gated TRUE in
+    // every reachable scan of every step that evaluates them (program order).
+    // overlaps: (higher, lower) of one step, both usable and firing somewhere,
+    // the higher not the family transition: in some reachable scan the higher
+    // fires while the lower's gated condition holds (state order, then pairs).
+    std::vector<std::string> alwaysTrueTransitions;
+    std::vector<std::pair<std::string, std::string>> overlaps;
+    bool prioritiesDecided = true; // false: the budget ran out while deciding the two above
     std::vector<std::string> abstractions;        // English, one line each
     std::vector<bool> propertyChecked;            // per Options::properties: it passed checkProperty
 };

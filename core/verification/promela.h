@@ -56,7 +56,7 @@ enum class PromelaMarkerKind {
     Reach,           // State = step at the start of some reachable scan (GV101 when never)
     Fire,            // transition fires from step in some reachable scan (GV102 when never, everywhere)
     Holds,           // its condition (AND Complete where it waits) is TRUE for some input, in some reachable configuration of step
-    Fails,           // ... FALSE for some input (GV103 when never, with transitions after it)
+    Fails,           // its condition is FALSE for some input there (GEMMA layer) / read FALSE in some reachable scan (both layers); GV103 when never
     Overlap,         // transition fires while `other`'s condition also holds (GV104)
     NoFire,          // a reachable configuration of step where no input fires any transition (necessary for GV106)
     NoEmergencyStop, // an F step's reachable configuration where no input leads to D1 in one scan (GV107)
@@ -69,6 +69,7 @@ enum class PromelaMarkerKind {
     Unstable,             // until stable: the call ends with a transition still firing
     OutputOnD1,           // variable: a continuous output TRUE in the scan that enters D1
     PropertyViolated,     // property: its index in the options' list
+    CompleteTrue,         // the GRAFCET's Complete is TRUE after some call (GV116 when never)
 };
 
 struct PromelaMarker {

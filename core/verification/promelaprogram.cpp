@@ -173,6 +173,8 @@ private:
     void writeReaders();
     void writeProcess();
     void writeStep(const GemmaStep& step);
+    void writeGated(const GemmaTransition& t);
+    void writeLaterConditions(const GemmaStep& step, std::size_t fired);
     void writeInitialization(const GemmaStep& step);
     void writeEvolvingCall(const GemmaStep& step);
     void writeEvolution(const GemmaStep& step);
@@ -617,6 +619,15 @@ void ProgramPromela::markIf(const std::string& test, PromelaMarker m, const std:
     m_out.line("fi;");
 }
 
+PromelaMarker transitionMarker(PromelaMarkerKind kind, const GemmaStep& step, const GemmaTransition& transition)
+{
+    PromelaMarker m;
+    m.kind = kind;
+    m.step = step.id;
+    m.transition = transition.id;
+    return m;
+}
+
 PromelaMarker nestedMarker(PromelaMarkerKind kind, const GemmaStep& step, std::vector<int> numbers)
 {
     PromelaMarker m;
@@ -821,6 +832,7 @@ void ProgramPromela::writeStep(const GemmaStep& step)
         if (step.nested) {
             writeEvolvingCall(step);
             m_out.line("gComplete = " + completeName(step) + ";");
+            markIf("gComplete", nestedMarker(PromelaMarkerKind::CompleteTrue, step, {}), step.id + " Complete TRUE");
         } else {
             auto assumption = m_options.complete.find(step.id);
             if (assumption == m_options.complete.end() || assumption->second == CompleteAssumption::Free)
@@ -829,41 +841,79 @@ void ProgramPromela::writeStep(const GemmaStep& step)
                 m_out.line("gComplete = 1; /* no GRAFCET: Complete automatic */");
         }
     }
-    for (const GemmaTransition& t : step.transitions) {
+    for (std::size_t i = 0; i < step.transitions.size(); ++i) {
+        const GemmaTransition& t = step.transitions[i];
         m_out.line("/* " + t.id + ": " + commentSafe(t.conditionText) + (t.waitsForComplete ? ", waits for Complete" : "")
                    + (t.conditionUsable ? "" : " (unusable: FALSE)") + " */");
         if (!t.conditionUsable)
             continue;
-        Context context;
-        context.tokens = &t.substitutions;
-        if (t.waitsForComplete) {
-            m_out.line("if");
-            m_out.line(":: gComplete ->");
-            m_out.in();
-            evalRoot(context, t.condition.expression, 0);
-            m_out.out();
-            m_out.line(":: else -> ev[0] = 0;");
-            m_out.line("fi;");
-        } else {
-            evalRoot(context, t.condition.expression, 0);
-        }
+        writeGated(t);
         const GemmaStep* target = m_program.step(t.targetId);
         m_out.line("if");
         m_out.line(":: ev[0] ->");
         m_out.in();
         m_out.line("gState = " + (target ? stateOf(*target) : std::string("0")) + "; gEntry = 1;"
                    + (target && indexOf(*target) == m_d1 ? " gD1 = 1;" : ""));
-        PromelaMarker fire;
-        fire.kind = PromelaMarkerKind::Fire;
-        fire.step = step.id;
-        fire.transition = t.id;
-        marker(fire, "fire " + t.id + " in " + step.id);
+        marker(transitionMarker(PromelaMarkerKind::Fire, step, t), "fire " + t.id + " in " + step.id);
+        writeLaterConditions(step, i);
         m_out.line("goto scanned;");
         m_out.out();
-        m_out.line(":: else -> skip;");
+        m_out.line(":: else ->");
+        m_out.in();
+        marker(transitionMarker(PromelaMarkerKind::Fails, step, t), t.id + " FALSE in " + step.id);
+        m_out.out();
         m_out.line("fi;");
     }
     m_out.out();
+}
+
+// The condition as the CASE reads it (AND Complete where it waits) into ev[0].
+void ProgramPromela::writeGated(const GemmaTransition& t)
+{
+    Context context;
+    context.tokens = &t.substitutions;
+    if (t.waitsForComplete) {
+        m_out.line("if");
+        m_out.line(":: gComplete ->");
+        m_out.in();
+        evalRoot(context, t.condition.expression, 0);
+        m_out.out();
+        m_out.line(":: else -> ev[0] = 0;");
+        m_out.line("fi;");
+    } else {
+        evalRoot(context, t.condition.expression, 0);
+    }
+}
+
+// GV103 and GV104: in the scan where transition `fired` fires, the conditions
+// after it are read too (the generated code does not), so that SPIN sees each
+// FALSE (Fails) and each that holds with it (Overlap; not after the family
+// transition, whose priority is by design).
+void ProgramPromela::writeLaterConditions(const GemmaStep& step, std::size_t fired)
+{
+    const GemmaTransition& higher = step.transitions[fired];
+    for (std::size_t j = fired + 1; j < step.transitions.size(); ++j) {
+        const GemmaTransition& lower = step.transitions[j];
+        if (!lower.conditionUsable)
+            continue;
+        writeGated(lower);
+        m_out.line("if");
+        m_out.line(":: ev[0] ->");
+        m_out.in();
+        if (higher.family) {
+            m_out.line("skip;");
+        } else {
+            PromelaMarker overlap = transitionMarker(PromelaMarkerKind::Overlap, step, higher);
+            overlap.other = lower.id;
+            marker(overlap, higher.id + " fires while " + lower.id + " holds in " + step.id);
+        }
+        m_out.out();
+        m_out.line(":: else ->");
+        m_out.in();
+        marker(transitionMarker(PromelaMarkerKind::Fails, step, lower), lower.id + " FALSE in " + step.id);
+        m_out.out();
+        m_out.line("fi;");
+    }
 }
 
 void ProgramPromela::writeNoteActive(const GemmaStep& step)

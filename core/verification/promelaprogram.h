@@ -24,6 +24,9 @@
 // - each claim of the exploration has a marker line (PromelaMarker): a
 //   statement alone on its line, reached in SPIN's exhaustive search iff the
 //   claim holds somewhere; readSpinReport and SpinReport::reached read them.
+//   For GV103 and GV104 the scan where a GEMMA transition fires also reads
+//   the conditions after it (Fails, Overlap), as the explorer's probe does;
+//   the generated code does not, and nothing read there changes the state.
 
 #include "core/verification/promela.h"
 

@@ -20,6 +20,15 @@ using verify::StepSpace;
 
 namespace {
 
+VerificationFinding gemmaFinding(const char* findingCode, Severity severity, std::vector<std::string> elements)
+{
+    VerificationFinding finding;
+    finding.code = findingCode;
+    finding.severity = severity;
+    finding.elements = std::move(elements);
+    return finding;
+}
+
 namespace code = verification;
 
 constexpr const char* kEmergencyStop = "D1";
@@ -611,7 +620,7 @@ void Verifier::checkUnreachable()
         if (maybeReached(static_cast<int>(i)))
             continue;
         const std::string& id = m_steps[i].step->id;
-        VerificationFinding finding{code::kUnreachableStep, Severity::Warning, {id}, {}, {}, {}, {}, -1};
+        VerificationFinding finding = gemmaFinding(code::kUnreachableStep, Severity::Warning, {id});
         std::vector<std::string> incoming;
         Occurrence nearest;
         for (std::size_t s = 0; s < m_steps.size(); ++s) {
@@ -721,7 +730,7 @@ void Verifier::checkTransition(const std::string& id, const std::vector<Occurren
                         covers.push_back(cover);
                 }
             }
-            VerificationFinding finding{code::kDeadTransition, Severity::Warning, {id}, {}, {}, {}, {}, -1};
+            VerificationFinding finding = gemmaFinding(code::kDeadTransition, Severity::Warning, {id});
             finding.elements.insert(finding.elements.end(), covers.begin(), covers.end());
             if (shown.step >= 0) {
                 finding.message = id + " can never fire: whenever its condition holds, " + joined(covers, " or ")
@@ -779,7 +788,7 @@ void Verifier::checkTransition(const std::string& id, const std::vector<Occurren
             }
         }
         if (alwaysTrue && hasLater) {
-            VerificationFinding finding{code::kAlwaysTrue, Severity::Warning, {id}, {}, {}, {}, {}, -1};
+            VerificationFinding finding = gemmaFinding(code::kAlwaysTrue, Severity::Warning, {id});
             finding.elements.insert(finding.elements.end(), later.begin(), later.end());
             finding.message = transition.family
                 ? "the condition of " + id + " is always TRUE: no own transition of an F step can ever fire"
@@ -840,7 +849,7 @@ void Verifier::checkOverlaps(int step)
                     continue;
                 const std::string& first = transitions[i].transition->id;
                 const std::string& second = transitions[j].transition->id;
-                VerificationFinding finding{code::kOverlap, Severity::Info, {first, second}, {}, {}, {}, {}, -1};
+                VerificationFinding finding = gemmaFinding(code::kOverlap, Severity::Info, {first, second});
                 finding.message = first + " and " + second + " can both be TRUE in the same scan: the priority decides, "
                     + first + " fires";
                 finding.counterexample = counterexampleAt(code::kOverlap + std::string(": ") + finding.message, step,
@@ -877,7 +886,7 @@ void Verifier::checkStuck(int step)
             return;
         m_stuckSteps.insert(step);
         const std::string& id = m_steps[st].step->id;
-        VerificationFinding finding{code::kStuck, Severity::Error, {id}, {}, {}, {}, {}, -1};
+        VerificationFinding finding = gemmaFinding(code::kStuck, Severity::Error, {id});
         if (m.conj(stuck, s.zero()) != bdd::kFalse)
             finding.message = "once " + id + " is active, no transition out of it can ever fire, whatever the inputs: "
                 "the machine stays in " + id + " forever";
@@ -947,7 +956,7 @@ void Verifier::checkReturn()
             || bad == bdd::kFalse)
             continue;
         const std::string& id = m_steps[st].step->id;
-        VerificationFinding finding{code::kNoReturn, Severity::Warning, {id}, {}, {}, {}, {}, -1};
+        VerificationFinding finding = gemmaFinding(code::kNoReturn, Severity::Warning, {id});
         finding.message = good[st]
             ? "after some scans in " + id + ", its tokens can be such that the initial step " + initial
                   + " can never become active again"
@@ -994,7 +1003,7 @@ void Verifier::checkEmergencyStop(int step)
         const Ref bad = m.conj(s.anyConfiguration(), m.negate(s.possible(toStop)));
         if (bad == bdd::kFalse)
             return;
-        VerificationFinding finding{code::kNoEmergencyStop, Severity::Error, {gemma.id}, {}, {}, {}, {}, -1};
+        VerificationFinding finding = gemmaFinding(code::kNoEmergencyStop, Severity::Error, {gemma.id});
         finding.elements.insert(finding.elements.end(), ways.begin(), ways.end());
         if (ways.empty())
             finding.message = "the emergency stop D1 can never be entered from " + gemma.id
@@ -1061,7 +1070,7 @@ void Verifier::reportUndecided(VerificationResult& result)
                 codes.push_back(c);
         }
         std::sort(codes.begin(), codes.end());
-        VerificationFinding finding{code::kIncomplete, Severity::Warning, {}, {}, {}, {}, {}, -1};
+        VerificationFinding finding = gemmaFinding(code::kIncomplete, Severity::Warning, {});
         if (entry.element != "model")
             finding.elements.push_back(entry.element);
         if (rest) {

@@ -101,6 +101,14 @@ struct Counterexample {
 };
 
 // One finding (docs/verification.md lists the codes).
+// Which analysis decided a finding; an unconfirmed one says why its run does
+// not replay accordingly.
+enum class FindingOrigin {
+    GemmaLayer,     // the GEMMA layer alone, Complete free or automatic (verification.cpp)
+    GemmaLayerKept, // the same, kept on a model whose both layers were explored: its run may not exist there
+    BothLayers,     // the exploration of both layers (bothlayers.cpp), under its abstractions
+};
+
 struct VerificationFinding {
     std::string code; // "GV101"
     Severity severity = Severity::Warning;
@@ -116,6 +124,7 @@ struct VerificationFinding {
     // GV120-GV122: the property's index (the model's properties, then
     // VerificationOptions::properties); -1 otherwise.
     int property = -1;
+    FindingOrigin origin = FindingOrigin::GemmaLayer;
 };
 
 struct VerificationResult {

@@ -58,6 +58,44 @@ core::Model soundMachine()
     return model;
 }
 
+core::Model alwaysTrueMachine()
+{
+    core::Model model = soundMachine();
+    require(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "S Flag"}));
+    require(model.setNegated("F1->A2", true));
+    require(model.setCondition("F1->A2", "Flag"));
+    require(model.setCondition("F1->A3", "B"));
+    require(model.setCondition("A3->A4", "TRUE"));
+    require(model.setCondition("A4->F1", "Start"));
+    return model;
+}
+
+core::Model overlapMachine()
+{
+    core::Model model = soundMachine();
+    require(model.setCondition("F1->A3", "B"));
+    require(model.setCondition("A3->A4", "TRUE"));
+    require(model.setCondition("A4->F1", "Start"));
+    return model;
+}
+
+core::Model exclusiveByMemoryMachine()
+{
+    core::Model model = soundMachine();
+    require(model.addVariable(variable("Flag2", core::IecType::Bool, core::VariableKind::Internal)));
+    require(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "S Flag"}));
+    require(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "R Flag2"}));
+    require(model.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "R Flag"}));
+    require(model.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "S Flag2"}));
+    require(model.setNegated("F1->A2", true));
+    require(model.setCondition("F1->A2", "Flag AND B"));
+    require(model.setNegated("F1->A3", true));
+    require(model.setCondition("F1->A3", "Flag2 AND B"));
+    require(model.setCondition("A3->A4", "TRUE"));
+    require(model.setCondition("A4->F1", "Start"));
+    return model;
+}
+
 std::vector<SeededModel> seededDefectModels()
 {
     std::vector<SeededModel> out;
@@ -138,6 +176,9 @@ std::vector<SeededModel> seededDefectModels()
         addMachineTransition(model, 3, {3}, {1}, "NOT A");
         out.push_back({"timer", std::move(model), {"never F1.X3", "never Lamp AND in A2"}});
     }
+    out.push_back({"always-true", alwaysTrueMachine(), {}});
+    out.push_back({"overlap", overlapMachine(), {}});
+    out.push_back({"exclusive-by-memory", exclusiveByMemoryMachine(), {"never Flag AND Flag2"}});
     return out;
 }
 

@@ -69,11 +69,23 @@ void addMachineTransition(core::Model& model, int number, std::vector<int> up, s
                           std::string receptivity);
 // nestedMachine with 1 --A--> 2 (N Lamp, S Complete) --NOT A--> 1: a sound GRAFCET that completes.
 core::Model soundMachine();
+// soundMachine whose step 1 sets Flag on activation, with F1 -> A2 negated
+// (not waiting for Complete) on Flag, and F1 -> A3 on B: F1 -> A2 is always
+// TRUE on both layers, though Flag is free on the GEMMA layer (GV103).
+core::Model alwaysTrueMachine();
+// soundMachine with F1 -> A3 on B: with Done, B and Complete TRUE both hold
+// in the same scan (GV104).
+core::Model overlapMachine();
+// F1's steps 1 and 2 set one of Flag and Flag2 and reset the other, and the
+// negated F1 -> A2 (Flag AND B) and F1 -> A3 (Flag2 AND B) can never hold
+// together, though they can on the GEMMA layer (no GV104 on both layers).
+core::Model exclusiveByMemoryMachine();
 
 // Models seeded with each defect the verification of both layers finds
 // (a nested step never active, an unsafe step, Unstable, branches that start
 // together, a macro-step stuck without Complete, a race, a stored output on
-// D1, a violated property, a timer), with the properties to check on each.
+// D1, a violated property, a timer, a GEMMA transition always TRUE, two that
+// hold together or never do), with the properties to check on each.
 struct SeededModel {
     std::string name;
     core::Model model;

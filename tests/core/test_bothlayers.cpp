@@ -62,7 +62,8 @@ const VerificationFinding& confirmedFinding(const VerificationResult& result, co
     REQUIRE(found[0]->counterexample);
     INFO(found[0]->counterexample->text);
     CHECK(found[0]->counterexample->confirmed);
-    CHECK(found[0]->severity != Severity::Info);
+    // Only GV104 is information; the rest are defects.
+    CHECK((found[0]->severity != Severity::Info) == (findingCode != code::kOverlap));
     return *found[0];
 }
 
@@ -279,6 +280,86 @@ TEST_CASE("Both layers: timers are abstracted unless time is counted in scans", 
     CHECK(exact.abstractions.empty());
     CHECK(exact.programStates > abstracted.programStates);
     CHECK_FALSE(exact.propertyHolds[0]);
+}
+
+TEST_CASE("Both layers: a GEMMA transition always TRUE because of what the GRAFCET stores", "[bothlayers]")
+{
+    const Model model = samples::alwaysTrueMachine();
+    const VerificationResult result = verify(model);
+    const auto alwaysTrue = findingsWith(result, code::kAlwaysTrue);
+    INFO(codes(result));
+    REQUIRE(alwaysTrue.size() == 1);
+    const VerificationFinding& finding = *alwaysTrue[0];
+    REQUIRE_FALSE(finding.elements.empty());
+    CHECK(finding.elements.front() == "F1->A2");
+    CHECK(std::count(finding.elements.begin(), finding.elements.end(), "F1->A3") == 1);
+    CHECK(finding.severity == Severity::Warning);
+    CHECK(finding.origin == FindingOrigin::BothLayers);
+    REQUIRE(finding.counterexample);
+    CHECK(finding.counterexample->confirmed);
+    INFO(finding.counterexample->text);
+    CHECK(finding.counterexample->text.find("expect fired F1->A2") != std::string::npos);
+
+    // On the GEMMA layer alone Flag is free: the condition is not always TRUE.
+    Model gemmaOnly = model;
+    require(gemmaOnly.removeGrafcet("F1"));
+    CHECK(findingsWith(verify(gemmaOnly), code::kAlwaysTrue).empty());
+}
+
+TEST_CASE("Both layers: two GEMMA transitions that can hold in the same scan", "[bothlayers]")
+{
+    const VerificationResult result = verify(samples::overlapMachine());
+    const VerificationFinding& overlap = confirmedFinding(result, code::kOverlap);
+    CHECK(overlap.elements == std::vector<std::string>{"F1->A2", "F1->A3"});
+    CHECK(overlap.origin == FindingOrigin::BothLayers);
+    INFO(overlap.counterexample->text);
+    CHECK(overlap.counterexample->text.find("Done = TRUE, B = TRUE") != std::string::npos);
+    CHECK(overlap.counterexample->text.find("expect fired F1->A2") != std::string::npos);
+}
+
+TEST_CASE("Both layers: transitions the GRAFCET's memories keep apart do not overlap", "[bothlayers]")
+{
+    const Model model = samples::exclusiveByMemoryMachine();
+    const VerificationResult result = verify(model, {"never Flag AND Flag2"});
+    CHECK(result.propertyHolds == std::vector<bool>{true});
+    CHECK(findingsWith(result, code::kOverlap).empty());
+    CHECK(std::count(result.fireableTransitions.begin(), result.fireableTransitions.end(), "F1->A3") == 1);
+
+    // The GEMMA layer alone, where Flag and Flag2 are free, sees them overlap.
+    Model gemmaOnly = model;
+    require(gemmaOnly.removeGrafcet("F1"));
+    const VerificationResult gemmaResult = verify(gemmaOnly);
+    const auto gemma = findingsWith(gemmaResult, code::kOverlap);
+    CHECK(std::any_of(gemma.begin(), gemma.end(), [](const VerificationFinding* f) {
+        return f->elements == std::vector<std::string>{"F1->A2", "F1->A3"};
+    }));
+}
+
+TEST_CASE("Both layers: GV103 and GV104 stay the GEMMA layer's when the budget runs out while probing",
+          "[bothlayers]")
+{
+    const Model model = samples::overlapMachine();
+    explore::Options options;
+    options.decidePriorities = false;
+    explore::ProgramExplorer plain(model, options);
+    const std::size_t exploring = plain.run().scansRun;
+    CHECK_FALSE(plain.result().prioritiesDecided);
+
+    options.decidePriorities = true;
+    options.maxScansRun = exploring; // the exploration fits, no probe does
+    explore::ProgramExplorer cut(model, options);
+    const explore::Exploration& e = cut.run();
+    CHECK(e.exhaustive);
+    CHECK_FALSE(e.prioritiesDecided);
+    CHECK(e.overlaps.empty());
+    CHECK(e.alwaysTrueTransitions.empty());
+
+    options.maxScansRun = SIZE_MAX;
+    explore::ProgramExplorer full(model, options);
+    const explore::Exploration& decided = full.run();
+    CHECK(decided.prioritiesDecided);
+    CHECK(decided.overlaps == std::vector<std::pair<std::string, std::string>>{{"F1->A2", "F1->A3"}});
+    CHECK(decided.scansRun > exploring);
 }
 
 TEST_CASE("Both layers: the exploration contains every run of the simulator on random models", "[bothlayers]")

@@ -41,7 +41,8 @@ std::string joined(const std::vector<int>& numbers)
 }
 
 // "reach F1", "fire F1->A2", "active F1 3", "fires F1 2", "unsafe F1 4",
-// "unstable F1", "together F1 1 1 2", "race F1 2 3 Flag", "d1 Horn", "violated 0".
+// "unstable F1", "together F1 1 1 2", "race F1 2 3 Flag", "d1 Horn", "violated 0",
+// "complete F1"; "fails F1->A2" and "overlap F1->A2 F1->A3" are raw, see spinFacts.
 std::string factOf(const PromelaMarker& m)
 {
     switch (m.kind) {
@@ -55,6 +56,9 @@ std::string factOf(const PromelaMarker& m)
     case PromelaMarkerKind::Race: return "race " + m.step + joined(m.numbers) + " " + m.variable;
     case PromelaMarkerKind::OutputOnD1: return "d1 " + m.variable;
     case PromelaMarkerKind::PropertyViolated: return "violated " + std::to_string(m.property);
+    case PromelaMarkerKind::CompleteTrue: return "complete " + m.step;
+    case PromelaMarkerKind::Fails: return "fails " + m.transition;
+    case PromelaMarkerKind::Overlap: return "overlap " + m.transition + " " + m.other;
     default: return "other";
     }
 }
@@ -74,6 +78,14 @@ Facts explorationFacts(const explore::Exploration& e)
         for (int n : numbers)
             facts.insert("fires " + step + " " + std::to_string(n));
     }
+    for (const std::string& transition : e.alwaysTrueTransitions)
+        facts.insert("alwaystrue " + transition);
+    for (const auto& [higher, lower] : e.overlaps)
+        facts.insert("overlap " + higher + " " + lower);
+    for (const auto& [step, seen] : e.completeSeen) {
+        if (seen)
+            facts.insert("complete " + step);
+    }
     using explore::EventKind;
     for (const explore::Event& event : e.events) {
         switch (event.kind) {
@@ -87,6 +99,11 @@ Facts explorationFacts(const explore::Exploration& e)
         }
     }
     return facts;
+}
+
+bool has(const Facts& facts, const std::string& fact)
+{
+    return facts.count(fact) > 0;
 }
 
 struct SpinRun {
@@ -103,9 +120,29 @@ SpinRun spinFacts(const Model& model, const ProgramPromelaOptions& options, cons
     REQUIRE(report.complete);
     SpinRun run;
     run.states = report.statesStored;
+    Facts raw;
     for (const PromelaMarker& m : promela.markers) {
         if (report.reached(m))
-            run.facts.insert(factOf(m));
+            raw.insert(factOf(m));
+    }
+    // GV103 and GV104 as the exploration states them: always TRUE = fires
+    // somewhere and is never read FALSE; an overlap counts between two
+    // transitions that both fire somewhere.
+    for (const PromelaMarker& m : promela.markers) {
+        if (m.kind == PromelaMarkerKind::Fire && has(raw, "fire " + m.transition) && !has(raw, "fails " + m.transition))
+            raw.insert("alwaystrue " + m.transition);
+    }
+    for (const std::string& fact : raw) {
+        if (fact.rfind("fails ", 0) == 0)
+            continue;
+        if (fact.rfind("overlap ", 0) == 0) {
+            std::istringstream words(fact.substr(8));
+            std::string higher, lower;
+            words >> higher >> lower;
+            if (!has(raw, "fire " + higher) || !has(raw, "fire " + lower))
+                continue;
+        }
+        run.facts.insert(fact);
     }
     return run;
 }
@@ -128,6 +165,7 @@ Facts requireAgreement(const Model& model, const std::vector<std::string>& prope
     explore::ProgramExplorer explorer(model, options);
     const explore::Exploration& e = explorer.run();
     REQUIRE(e.exhaustive);
+    REQUIRE(e.prioritiesDecided);
     ProgramPromelaOptions promelaOptions;
     promelaOptions.properties = properties;
     promelaOptions.exactTime = exactTime;
@@ -143,11 +181,6 @@ Facts requireAgreement(const Model& model, const std::vector<std::string>& prope
     CHECK(onlySpin.empty());
     CHECK(onlyBuilt.empty());
     return spin.facts;
-}
-
-bool has(const Facts& facts, const std::string& fact)
-{
-    return facts.count(fact) > 0;
 }
 
 // verifyModel's facts of both layers are SPIN's (without long timers:
@@ -232,6 +265,14 @@ TEST_CASE("SPIN agrees with the exploration and verifyModel on models seeded wit
             CHECK(has(facts, "violated 0"));
             const Facts exact = requireAgreement(seeded.model, seeded.properties, true, seeded.name);
             CHECK(has(exact, "violated 0"));
+        } else if (seeded.name == "always-true") {
+            CHECK(has(facts, "alwaystrue F1->A2"));
+        } else if (seeded.name == "overlap") {
+            CHECK(has(facts, "overlap F1->A2 F1->A3"));
+        } else if (seeded.name == "exclusive-by-memory") {
+            CHECK_FALSE(has(facts, "overlap F1->A2 F1->A3"));
+            CHECK(has(facts, "fire F1->A2"));
+            CHECK(has(facts, "fire F1->A3"));
         }
     }
 }
