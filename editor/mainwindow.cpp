@@ -1300,7 +1300,7 @@ void MainWindow::showVerificationStatus()
     if (!m_verification->failure().isEmpty())
         message = tr("Verification failed: %1").arg(m_verification->failure());
     else if (m_verification->wasCancelled() || m_verification->isStale() || !m_verification->hasResult())
-        message = tr("Verification cancelled: the model or the Complete settings changed");
+        message = tr("Verification cancelled: the model, the Complete settings or Exact Time changed");
     else if (m_verification->result().violated())
         message = tr("Verification finished: some properties do not hold (see Problems)");
     else

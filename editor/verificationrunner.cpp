@@ -138,6 +138,16 @@ QStringList VerificationRunner::sessionAutomaticSteps() const
     return steps;
 }
 
+void VerificationRunner::setExactTime(bool exact)
+{
+    if (exact == m_exactTime)
+        return;
+    m_exactTime = exact;
+    if (isRunning() && m_current->exactTime != m_exactTime)
+        cancel();
+    emit assumptionsChanged();
+}
+
 // Called for every input the user plays: only a change of the assumptions counts.
 void VerificationRunner::onSessionChanged()
 {
@@ -168,6 +178,7 @@ void VerificationRunner::onThreadFinished(QThread* thread)
     if (job->failure.empty()) {
         m_result = std::move(job->result);
         m_resultAutomatic = job->automatic;
+        m_resultExactTime = job->exactTime;
         m_failure.clear();
         m_stale = false;
     } else {

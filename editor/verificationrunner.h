@@ -29,9 +29,9 @@ class SimulationSession;
 // that step's Complete automatic in the Simulation dock: then it is assumed
 // automatic (TRUE at every scan, as the skeleton FB). A step set to manual
 // stays free, since the user may set Complete at any time. A change of these
-// assumptions, like a change of the model, abandons a run under way; the
-// last result keeps the assumptions it was computed with, so the window can
-// tell that it no longer matches them.
+// assumptions, or of the way time is counted (exact time), like a change of
+// the model, abandons a run under way; the last result keeps the assumptions
+// it was computed with, so the window can tell that it no longer matches them.
 class VerificationRunner : public QObject {
     Q_OBJECT
 
@@ -58,18 +58,24 @@ public:
     bool wasCancelled() const { return m_wasCancelled; }
 
     // Whether the next runs count time in scans (every TON elapses exactly when
-    // the PLC's would) instead of "may or may not have elapsed".
-    void setExactTime(bool exact) { m_exactTime = exact; }
+    // the PLC's would) instead of "may or may not have elapsed". A change
+    // abandons a run under way and emits assumptionsChanged().
+    void setExactTime(bool exact);
     bool exactTime() const { return m_exactTime; }
+    // The same for the last result.
+    bool resultExactTime() const { return m_resultExactTime; }
 
     // The nested steps whose Complete the next run assumes automatic, state order.
     QStringList assumedAutomatic() const { return m_assumedAutomatic; }
     // The same for the last result.
     QStringList resultAssumedAutomatic() const { return m_resultAutomatic; }
-    // The last result was computed with other Complete assumptions than the
-    // next run would use. Its counterexamples still fit the model (they set
-    // Complete themselves), so unlike isStale() this does not stop a replay.
-    bool assumptionsDiffer() const { return hasResult() && m_resultAutomatic != m_assumedAutomatic; }
+    // The last result was computed with other Complete assumptions, or another
+    // way of counting time, than the next run would use. Its counterexamples
+    // still fit the model (each is a run of it, replayed in the simulator), so
+    // unlike isStale() this does not stop a replay.
+    bool assumptionsDiffer() const { return completeAssumptionsDiffer() || timeCountingDiffers(); }
+    bool completeAssumptionsDiffer() const { return hasResult() && m_resultAutomatic != m_assumedAutomatic; }
+    bool timeCountingDiffers() const { return hasResult() && m_resultExactTime != m_exactTime; }
 
 signals:
     void started();
@@ -78,7 +84,7 @@ signals:
     // A run was abandoned: the model changed, or the user started again.
     void cancelled();
     void staleChanged(bool stale);
-    // assumedAutomatic() changed (and with it maybe assumptionsDiffer()).
+    // assumedAutomatic() or exactTime() changed (and with it maybe assumptionsDiffer()).
     void assumptionsChanged();
 
 private:
@@ -106,6 +112,7 @@ private:
     QStringList m_assumedAutomatic;
     bool m_exactTime = false;
     QStringList m_resultAutomatic;
+    bool m_resultExactTime = false;
 };
 
 } // namespace editor

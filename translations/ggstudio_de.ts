@@ -613,6 +613,10 @@
         <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator.</source>
         <translation>Nicht bestätigt: der unter den Abstraktionen der Verifikation gefundene Ablauf lässt sich im Simulator nicht nachspielen.</translation>
     </message>
+    <message>
+        <source>Not confirmed: decided on the GEMMA layer with every Complete free, and the run does not replay with the nested GRAFCETs.</source>
+        <translation>Nicht bestätigt: auf der GEMMA-Ebene mit jedem Complete frei entschieden, und der Ablauf lässt sich mit den verschachtelten GRAFCETs nicht nachspielen.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -2767,10 +2771,6 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <translation>%1 konnte nicht abgespielt werden.</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model or the Complete settings changed</source>
-        <translation>Verifikation abgebrochen: Das Modell oder die Complete-Einstellungen wurden geändert</translation>
-    </message>
-    <message>
         <source>E&amp;xamples</source>
         <translation>&amp;Beispiele</translation>
     </message>
@@ -2861,6 +2861,10 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>Count time in scans when verifying: every timer elapses exactly when the PLC&apos;s would, instead of &quot;may or may not have elapsed&quot; (more states)</source>
         <translation>Beim Verifizieren die Zeit in Zyklen zählen: jeder Timer läuft genau dann ab, wenn der der SPS ablaufen würde, statt &quot;kann abgelaufen sein oder nicht&quot; (mehr Zustände)</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
+        <translation>Verifikation abgebrochen: Das Modell, die Complete-Einstellungen oder die exakte Zeit wurden geändert</translation>
     </message>
 </context>
 <context>
@@ -4327,6 +4331,22 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>The exploration of both layers abstracted:</source>
         <translation>Die Erkundung beider Ebenen hat abstrahiert:</translation>
+    </message>
+    <message>
+        <source>Exact time switched on since verification: verify again to update the findings.</source>
+        <translation>Exakte Zeit seit der Verifikation eingeschaltet: Erneut verifizieren, um die Befunde zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>Exact time switched off since verification: verify again to update the findings.</source>
+        <translation>Exakte Zeit seit der Verifikation ausgeschaltet: Erneut verifizieren, um die Befunde zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>Exact time</source>
+        <translation>Exakte Zeit</translation>
+    </message>
+    <message>
+        <source>Exact time: every timer elapses exactly when the PLC&apos;s would, counted in scans (Simulation &gt; Verify with Exact Time).</source>
+        <translation>Exakte Zeit: Jeder Timer läuft genau dann ab, wenn der der SPS ablaufen würde, in Zyklen gezählt (Simulation &gt; Mit exakter Zeit verifizieren).</translation>
     </message>
 </context>
 <context>

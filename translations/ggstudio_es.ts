@@ -613,6 +613,10 @@
         <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator.</source>
         <translation>No confirmado: la ejecución hallada con las abstracciones de la verificación no se reproduce en el simulador.</translation>
     </message>
+    <message>
+        <source>Not confirmed: decided on the GEMMA layer with every Complete free, and the run does not replay with the nested GRAFCETs.</source>
+        <translation>No confirmado: decidido en la capa GEMMA con cada Complete libre, y la ejecución no se reproduce con los GRAFCET anidados.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -2767,10 +2771,6 @@ Ctrl+Espacio completa un nombre.</translation>
         <translation>No se ha podido reproducir %1.</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model or the Complete settings changed</source>
-        <translation>Verificación cancelada: el modelo o los ajustes de Complete han cambiado</translation>
-    </message>
-    <message>
         <source>E&amp;xamples</source>
         <translation>E&amp;jemplos</translation>
     </message>
@@ -2861,6 +2861,10 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>Count time in scans when verifying: every timer elapses exactly when the PLC&apos;s would, instead of &quot;may or may not have elapsed&quot; (more states)</source>
         <translation>Contar el tiempo en ciclos al verificar: cada temporizador vence exactamente cuando vencería el del autómata, en lugar de &quot;puede haber vencido o no&quot; (más estados)</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
+        <translation>Verificación cancelada: el modelo, los ajustes de Complete o el tiempo exacto han cambiado</translation>
     </message>
 </context>
 <context>
@@ -4327,6 +4331,22 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>The exploration of both layers abstracted:</source>
         <translation>La exploración de los dos niveles abstrajo:</translation>
+    </message>
+    <message>
+        <source>Exact time switched on since verification: verify again to update the findings.</source>
+        <translation>Tiempo exacto activado desde la verificación: vuelva a verificar para actualizar los resultados.</translation>
+    </message>
+    <message>
+        <source>Exact time switched off since verification: verify again to update the findings.</source>
+        <translation>Tiempo exacto desactivado desde la verificación: vuelva a verificar para actualizar los resultados.</translation>
+    </message>
+    <message>
+        <source>Exact time</source>
+        <translation>Tiempo exacto</translation>
+    </message>
+    <message>
+        <source>Exact time: every timer elapses exactly when the PLC&apos;s would, counted in scans (Simulation &gt; Verify with Exact Time).</source>
+        <translation>Tiempo exacto: cada temporizador vence exactamente cuando lo haría el del PLC, contado en ciclos (Simulación &gt; Verificar con tiempo exacto).</translation>
     </message>
 </context>
 <context>

@@ -613,6 +613,10 @@
         <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator.</source>
         <translation>Non confirmé&#xa0;: l&apos;exécution trouvée sous les abstractions de la vérification ne se rejoue pas dans le simulateur.</translation>
     </message>
+    <message>
+        <source>Not confirmed: decided on the GEMMA layer with every Complete free, and the run does not replay with the nested GRAFCETs.</source>
+        <translation>Non confirmé&#xa0;: décidé sur la couche GEMMA avec chaque Complete libre, et l&apos;exécution ne se rejoue pas avec les GRAFCET imbriqués.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -2767,10 +2771,6 @@ Ctrl+Espace complète un nom.</translation>
         <translation>Impossible de rejouer %1.</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model or the Complete settings changed</source>
-        <translation>Vérification annulée&#xa0;: le modèle ou les réglages de Complete ont changé</translation>
-    </message>
-    <message>
         <source>E&amp;xamples</source>
         <translation>E&amp;xemples</translation>
     </message>
@@ -2861,6 +2861,10 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>Count time in scans when verifying: every timer elapses exactly when the PLC&apos;s would, instead of &quot;may or may not have elapsed&quot; (more states)</source>
         <translation>Compter le temps en cycles pendant la vérification&#xa0;: chaque temporisation s&apos;écoule exactement quand celle de l&apos;automate s&apos;écoulerait, au lieu de «&#xa0;écoulée ou non&#xa0;» (plus d&apos;états)</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
+        <translation>Vérification annulée&#xa0;: le modèle, les réglages de Complete ou le temps exact ont changé</translation>
     </message>
 </context>
 <context>
@@ -4327,6 +4331,22 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>The exploration of both layers abstracted:</source>
         <translation>L&apos;exploration des deux niveaux a abstrait&#xa0;:</translation>
+    </message>
+    <message>
+        <source>Exact time switched on since verification: verify again to update the findings.</source>
+        <translation>Temps exact activé depuis la vérification&#xa0;: vérifiez à nouveau pour mettre à jour les résultats.</translation>
+    </message>
+    <message>
+        <source>Exact time switched off since verification: verify again to update the findings.</source>
+        <translation>Temps exact désactivé depuis la vérification&#xa0;: vérifiez à nouveau pour mettre à jour les résultats.</translation>
+    </message>
+    <message>
+        <source>Exact time</source>
+        <translation>Temps exact</translation>
+    </message>
+    <message>
+        <source>Exact time: every timer elapses exactly when the PLC&apos;s would, counted in scans (Simulation &gt; Verify with Exact Time).</source>
+        <translation>Temps exact&#xa0;: chaque temporisation s&apos;écoule exactement quand celle de l&apos;automate le ferait, comptée en cycles (Simulation &gt; Vérifier avec le temps exact).</translation>
     </message>
 </context>
 <context>

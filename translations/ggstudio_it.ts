@@ -613,6 +613,10 @@
         <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator.</source>
         <translation>Non confermato: l&apos;esecuzione trovata con le astrazioni della verifica non si riproduce nel simulatore.</translation>
     </message>
+    <message>
+        <source>Not confirmed: decided on the GEMMA layer with every Complete free, and the run does not replay with the nested GRAFCETs.</source>
+        <translation>Non confermato: deciso sul livello GEMMA con ogni Complete libero, e l&apos;esecuzione non si riproduce con i GRAFCET annidati.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -2767,10 +2771,6 @@ Ctrl+Spazio completa un nome.</translation>
         <translation>Impossibile riprodurre %1.</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model or the Complete settings changed</source>
-        <translation>Verifica annullata: il modello o le impostazioni di Complete sono cambiati</translation>
-    </message>
-    <message>
         <source>E&amp;xamples</source>
         <translation>Ese&amp;mpi</translation>
     </message>
@@ -2861,6 +2861,10 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>Count time in scans when verifying: every timer elapses exactly when the PLC&apos;s would, instead of &quot;may or may not have elapsed&quot; (more states)</source>
         <translation>Contare il tempo in cicli durante la verifica: ogni temporizzatore scade esattamente quando scadrebbe quello del PLC, invece di &quot;può essere scaduto o no&quot; (più stati)</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
+        <translation>Verifica annullata: il modello, le impostazioni di Complete o il tempo esatto sono cambiati</translation>
     </message>
 </context>
 <context>
@@ -4327,6 +4331,22 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>The exploration of both layers abstracted:</source>
         <translation>L&apos;esplorazione dei due livelli ha astratto:</translation>
+    </message>
+    <message>
+        <source>Exact time switched on since verification: verify again to update the findings.</source>
+        <translation>Tempo esatto attivato dalla verifica: verifica di nuovo per aggiornare i risultati.</translation>
+    </message>
+    <message>
+        <source>Exact time switched off since verification: verify again to update the findings.</source>
+        <translation>Tempo esatto disattivato dalla verifica: verifica di nuovo per aggiornare i risultati.</translation>
+    </message>
+    <message>
+        <source>Exact time</source>
+        <translation>Tempo esatto</translation>
+    </message>
+    <message>
+        <source>Exact time: every timer elapses exactly when the PLC&apos;s would, counted in scans (Simulation &gt; Verify with Exact Time).</source>
+        <translation>Tempo esatto: ogni temporizzatore scade esattamente quando scadrebbe quello del PLC, contato in cicli (Simulazione &gt; Verifica con tempo esatto).</translation>
     </message>
 </context>
 <context>

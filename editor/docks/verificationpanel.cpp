@@ -362,8 +362,12 @@ void VerificationPanel::refreshStatus()
         text = tr("Not verified yet.");
     } else if (m_runner->isStale()) {
         text = tr("Model changed since verification: verify again to update the findings.");
-    } else if (m_runner->assumptionsDiffer()) {
+    } else if (m_runner->completeAssumptionsDiffer()) {
         text = tr("Complete settings changed since verification: verify again to update the findings.");
+    } else if (m_runner->timeCountingDiffers()) {
+        text = m_runner->exactTime()
+            ? tr("Exact time switched on since verification: verify again to update the findings.")
+            : tr("Exact time switched off since verification: verify again to update the findings.");
     } else {
         const core::VerificationResult& result = m_runner->result();
         const QString configurations = QString::number(static_cast<qulonglong>(result.configurations));
@@ -398,14 +402,20 @@ void VerificationPanel::refreshAssumptions()
 {
     const QStringList automatic =
         m_runner->hasResult() ? m_runner->resultAssumedAutomatic() : m_runner->assumedAutomatic();
-    const QString text = automatic.isEmpty()
+    const bool exactTime = m_runner->hasResult() ? m_runner->resultExactTime() : m_runner->exactTime();
+    QString text = automatic.isEmpty()
         ? tr("All Complete outputs free")
         : tr("Assumed Complete automatic: %1").arg(automatic.join(QStringLiteral(", ")));
+    if (exactTime)
+        text += QStringLiteral(" \u00b7 ") + tr("Exact time");
     m_assumptionsLabel->setText(text);
     QString toolTip = text + QLatin1Char('\n')
         + tr("Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at "
              "every scan, as the skeleton function block. Verify assumes automatic the nested steps whose "
              "Complete is Automatic in the Simulation dock while the simulation runs; all others are free.");
+    if (exactTime)
+        toolTip += QLatin1Char('\n') + tr("Exact time: every timer elapses exactly when the PLC's would, counted in "
+                                           "scans (Simulation > Verify with Exact Time).");
     // The core's lines are English, like the command line's "abstracted:" lines.
     const std::vector<std::string>& abstractions = m_runner->result().abstractions;
     if (m_runner->hasResult() && !abstractions.empty()) {

@@ -510,7 +510,7 @@ void TestVerification::completeSettingChangeCancelsARunningVerification()
     QVERIFY(!m_runner->isRunning());
     QCOMPARE(cancelled.size(), 1);
     QVERIFY(m_runner->wasCancelled());
-    QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("Complete settings changed")));
+    QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("the Complete settings")));
     QTest::qWait(300);
     QCOMPARE(finished.size(), 1);
     // The last result stays, with what it assumed.
@@ -771,11 +771,38 @@ void TestVerification::exactTimeFromTheMenu()
     QVERIFY(timerAbstracted());
     auto* exact = m_window->findChild<QAction*>(QStringLiteral("verifyExactTimeAction"));
     QVERIFY(exact && exact->isCheckable());
+    VerificationPanel* panel = m_dock->verificationPanel();
+    QSignalSpy assumptionsChanged(m_runner, &VerificationRunner::assumptionsChanged);
     exact->setChecked(true);
     QVERIFY(m_runner->exactTime());
+    QCOMPARE(assumptionsChanged.size(), 1);
+    // The findings were computed with time abstracted: outdated, still replayable.
+    QVERIFY(m_runner->assumptionsDiffer());
+    QVERIFY(!m_runner->isStale());
+    QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("Exact time switched on since verification")));
+    QCOMPARE(m_dock->tabs()->tabText(1), QStringLiteral("Verification (outdated)"));
+    QVERIFY(!panel->assumptionsLabel()->text().contains(QStringLiteral("Exact time"))); // the findings'
     verifyAndWait();
+    QVERIFY(!m_runner->assumptionsDiffer());
     QVERIFY(m_runner->result().bothLayers);
     QVERIFY(!timerAbstracted());
+    QVERIFY(panel->assumptionsLabel()->text().endsWith(QStringLiteral("Exact time")));
+    QCOMPARE(m_dock->tabs()->tabText(1), QStringLiteral("Verification (%1)").arg(m_runner->result().findings.size()));
+
+    // Switched off during a run: the run counted time exactly, it is abandoned.
+    m_runner->start();
+    QVERIFY(m_runner->isRunning());
+    QSignalSpy cancelled(m_runner, &VerificationRunner::cancelled);
+    exact->setChecked(false);
+    QVERIFY(!m_runner->isRunning());
+    QCOMPARE(cancelled.size(), 1);
+    QVERIFY(m_runner->wasCancelled());
+    QVERIFY(m_runner->timeCountingDiffers());
+    QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("Exact time switched off since verification")));
+    QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("Exact Time changed")));
+    // Back as the findings were computed: they match again.
+    exact->setChecked(true);
+    QVERIFY(!m_runner->assumptionsDiffer());
     exact->setChecked(false);
 }
 
@@ -910,11 +937,23 @@ void TestVerification::everyBothLayersCodeIsWorded()
     unconfirmed.gemmaStep = "F1";
     unconfirmed.elements = {"F1/3"};
     unconfirmed.arguments = {"F1", "3"};
+    unconfirmed.origin = core::FindingOrigin::BothLayers;
     unconfirmed.counterexample = core::Counterexample{};
     QVERIFY(verificationText(unconfirmed).contains(QStringLiteral("Not confirmed")));
     unconfirmed.counterexample->confirmed = true;
     unconfirmed.severity = core::Severity::Warning;
     QVERIFY(!verificationText(unconfirmed).contains(QStringLiteral("Not confirmed")));
+    // A GEMMA-layer claim kept when both layers were explored says on which layer.
+    core::VerificationFinding kept;
+    kept.code = gv::kAlwaysTrue;
+    kept.severity = core::Severity::Warning;
+    kept.elements = {"F1->A2", "F1->A3"};
+    kept.arguments = {"F1->A2", "F1->A3"};
+    kept.origin = core::FindingOrigin::GemmaLayerKept;
+    kept.counterexample = core::Counterexample{};
+    QVERIFY(verificationText(kept).contains(QStringLiteral("decided on the GEMMA layer")));
+    kept.counterexample->confirmed = true;
+    QVERIFY(!verificationText(kept).contains(QStringLiteral("Not confirmed")));
 }
 
 QTEST_MAIN(TestVerification)
