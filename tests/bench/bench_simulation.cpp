@@ -1,3 +1,4 @@
+#include "benchrepeats.h"
 #include "modelfactory.h"
 
 #include "core/simulation/simulator.h"
@@ -77,14 +78,15 @@ std::int64_t stepScans(core::Simulator& simulator, const InputScript& script)
 template <typename Run>
 void reportScansPerSecond(const char* what, core::Simulator& simulator, const InputScript& script, Run run)
 {
+    const int runs = benchRepeats(10);
     const auto start = std::chrono::steady_clock::now();
     std::int64_t fired = 0;
-    for (int i = 0; i < 10; ++i)
+    for (int i = 0; i < runs; ++i)
         fired += run(simulator, script);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "simulation, " << what << ": " << static_cast<std::int64_t>(10.0 * kScansPerRun / seconds)
+    std::cout << "simulation, " << what << ": " << static_cast<std::int64_t>(runs * kScansPerRun / seconds)
               << " scans per second on the realistic model (" << fired << " transitions fired in "
-              << 10 * kScansPerRun << " scans)\n";
+              << runs * kScansPerRun << " scans)\n";
 }
 
 } // namespace

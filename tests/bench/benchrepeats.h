@@ -1,0 +1,13 @@
+#pragma once
+
+#include <cstdlib>
+
+// How many times a benchmark repeats the runs whose figure it prints (best
+// of three, ten runs averaged...): `full` normally, once in the test suite's
+// smoke pass (bench.smoke sets GGSTUDIO_BENCH_SMOKE), which checks that the
+// benchmarks build and run, not what they measure, and must stay quick under
+// the sanitizers.
+inline int benchRepeats(int full)
+{
+    return std::getenv("GGSTUDIO_BENCH_SMOKE") ? 1 : full;
+}
