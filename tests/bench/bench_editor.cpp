@@ -16,10 +16,9 @@
 // when there is no display. Nothing here asserts a time: the machine running
 // the tests decides those.
 
-#define CATCH_CONFIG_RUNNER
-#define CATCH_CONFIG_ENABLE_BENCHMARKING
 #include <catch2/catch.hpp>
 
+#include "catchsession.h"
 #include "modelfactory.h"
 
 #include "editor/chart/chartscene.h"
@@ -501,5 +500,5 @@ int main(int argc, char* argv[])
     QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
     QApplication::setOrganizationName(QStringLiteral("GG Studio Benchmarks"));
     QApplication::setApplicationName(QStringLiteral("editor_benchmarks"));
-    return Catch::Session().run(argc, argv);
+    return runCatchSession(argc, argv);
 }

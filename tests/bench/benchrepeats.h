@@ -7,7 +7,12 @@
 // smoke pass (bench.smoke sets GGSTUDIO_BENCH_SMOKE), which checks that the
 // benchmarks build and run, not what they measure, and must stay quick under
 // the sanitizers.
+inline bool benchSmokeRun()
+{
+    return std::getenv("GGSTUDIO_BENCH_SMOKE") != nullptr;
+}
+
 inline int benchRepeats(int full)
 {
-    return std::getenv("GGSTUDIO_BENCH_SMOKE") ? 1 : full;
+    return benchSmokeRun() ? 1 : full;
 }

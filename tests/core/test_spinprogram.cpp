@@ -155,15 +155,11 @@ std::string listed(const Facts& facts)
     return out.str();
 }
 
-// SPIN and the exploration, same options: the same facts. Returns them.
-Facts requireAgreement(const Model& model, const std::vector<std::string>& properties, bool exactTime,
-                       const std::string& name)
+// SPIN and an exploration `e` of `model` run with the same properties and
+// exact-time switch: the same facts. Returns them.
+Facts requireAgreement(const explore::Exploration& e, const Model& model, const std::vector<std::string>& properties,
+                       bool exactTime, const std::string& name)
 {
-    explore::Options options;
-    options.properties = properties;
-    options.exactTime = exactTime;
-    explore::ProgramExplorer explorer(model, options);
-    const explore::Exploration& e = explorer.run();
     REQUIRE(e.exhaustive);
     REQUIRE(e.prioritiesDecided);
     ProgramPromelaOptions promelaOptions;
@@ -181,6 +177,16 @@ Facts requireAgreement(const Model& model, const std::vector<std::string>& prope
     CHECK(onlySpin.empty());
     CHECK(onlyBuilt.empty());
     return spin.facts;
+}
+
+Facts requireAgreement(const Model& model, const std::vector<std::string>& properties, bool exactTime,
+                       const std::string& name)
+{
+    explore::Options options;
+    options.properties = properties;
+    options.exactTime = exactTime;
+    explore::ProgramExplorer explorer(model, options);
+    return requireAgreement(explorer.run(), model, properties, exactTime, name);
 }
 
 // verifyModel's facts of both layers are SPIN's (without long timers:
@@ -323,10 +329,11 @@ TEST_CASE("SPIN agrees with the exploration of both layers on random models", "[
         options.properties = properties;
         options.maxScansRun = 50'000; // the small ones: the same on every machine
         explore::ProgramExplorer explorer(model, options);
-        if (!explorer.run().exhaustive)
+        const explore::Exploration& exploration = explorer.run();
+        if (!exploration.exhaustive)
             continue;
         ++compared;
-        requireAgreement(model, properties, false, "random-" + std::to_string(seed));
+        requireAgreement(exploration, model, properties, false, "random-" + std::to_string(seed));
     }
     CHECK(compared >= 8);
 }
