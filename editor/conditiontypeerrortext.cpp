@@ -1,5 +1,7 @@
 #include "editor/conditiontypeerrortext.h"
 
+#include "editor/stdstring.h"
+
 #include <QCoreApplication>
 
 namespace editor {
@@ -12,11 +14,6 @@ class ConditionTypeErrorText {
 };
 
 using Kind = core::cond::TypeError::Kind;
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 // "'Speed' is INT": a whole clause, so that each language can word a type
 // name and a kind of value differently.

@@ -2,6 +2,7 @@
 
 #include "editor/conditionerrortext.h"
 #include "editor/conditiontypeerrortext.h"
+#include "editor/stdstring.h"
 #include "editor/valueproblemtext.h"
 #include "editor/docks/elementlabels.h"
 
@@ -23,11 +24,6 @@ namespace {
 class DiagnosticText {
     Q_DECLARE_TR_FUNCTIONS(DiagnosticText)
 };
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 // A GEMMA transition id as the chart, the docks and the Problems dock name
 // it ("F1 → A2" for core's "F1->A2"); other text unchanged.

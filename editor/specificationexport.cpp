@@ -12,6 +12,7 @@
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/selection.h"
 #include "editor/statenames.h"
+#include "editor/stdstring.h"
 
 #include "core/checks/diagnostic.h"
 #include "core/codegen/stgenerator.h"
@@ -474,11 +475,6 @@ struct ContentsEntry {
 QString orDash(const QString& text)
 {
     return text.trimmed().isEmpty() ? QStringLiteral("—") : text;
-}
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
 }
 
 QString stateLabel(const QString& id)

@@ -18,6 +18,7 @@
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/statenames.h"
+#include "editor/stdstring.h"
 
 #include "core/model/model.h"
 
@@ -41,11 +42,6 @@ namespace editor {
 namespace {
 
 constexpr int kMaxStepNumber = 9999;
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 int linesHeight(const QWidget* widget, int lines)
 {

@@ -9,6 +9,7 @@
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/statenames.h"
+#include "editor/stdstring.h"
 
 #include "core/model/model.h"
 
@@ -20,11 +21,6 @@
 namespace editor {
 
 namespace {
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 // "2, 3" with each number a link that selects that step.
 QString stepLinks(const std::vector<int>& steps)

@@ -8,6 +8,7 @@
 #include "editor/document.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
+#include "editor/stdstring.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>
@@ -39,11 +40,6 @@ enum Role {
     GroupRole, // on the row of a nested GRAFCET's problems: its GEMMA step id
     NumberRole, // a nested step or transition number
 };
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 ElementRef::Kind kindOf(core::Diagnostic::Target target)
 {

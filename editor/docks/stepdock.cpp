@@ -16,6 +16,7 @@
 #include "editor/selection.h"
 #include "editor/severityicon.h"
 #include "editor/statenames.h"
+#include "editor/stdstring.h"
 
 #include "core/model/model.h"
 
@@ -38,11 +39,6 @@ namespace editor {
 namespace {
 
 constexpr int kTransitionIdRole = Qt::UserRole;
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 QLabel* sectionLabel(QWidget* parent)
 {

@@ -5,6 +5,7 @@
 #include "editor/document.h"
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
+#include "editor/stdstring.h"
 
 #include "core/codegen/nestedpreview.h"
 #include "core/model/model.h"
@@ -30,11 +31,6 @@ namespace {
 
 // Lines kept above the highlighted code when scrolling to it.
 constexpr int kContextLines = 2;
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 // Replaces only what differs between the document's text and `text` (the
 // span between their common beginning and common end), so that an edit of

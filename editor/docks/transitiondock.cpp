@@ -14,6 +14,7 @@
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/statenames.h"
+#include "editor/stdstring.h"
 
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
@@ -33,11 +34,6 @@
 namespace editor {
 
 namespace {
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 QLabel* hintLabel(QWidget* parent)
 {

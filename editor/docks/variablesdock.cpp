@@ -11,6 +11,7 @@
 #include "editor/document.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
+#include "editor/stdstring.h"
 
 #include "core/model/iectypes.h"
 #include "core/model/model.h"
@@ -60,11 +61,6 @@ QList<ChoiceDelegate::Choice> kindChoices()
     for (core::VariableKind kind : {core::VariableKind::Input, core::VariableKind::Output, core::VariableKind::Internal})
         choices.push_back({VariablesTableModel::kindText(kind), fromView(core::variableKindName(kind))});
     return choices;
-}
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
 }
 
 bool lessByName(const std::string& a, const std::string& b)

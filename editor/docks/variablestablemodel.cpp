@@ -7,6 +7,7 @@
 #include "editor/commands/setvariabletypecommand.h"
 #include "editor/diagnostictext.h"
 #include "editor/document.h"
+#include "editor/stdstring.h"
 
 #include "editor/secondarytext.h"
 
@@ -19,11 +20,6 @@
 namespace editor {
 
 namespace {
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 QString fieldOfColumn(int column)
 {

@@ -2,6 +2,7 @@
 
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/layoutconversion.h"
+#include "editor/stdstring.h"
 
 #include <QPainter>
 #include <QStyleOptionGraphicsItem>
@@ -9,11 +10,6 @@
 namespace editor {
 
 namespace {
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 } // namespace
 

@@ -2,6 +2,7 @@
 
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/stdstring.h"
 #include "editor/valueproblemtext.h"
 
 #include "core/checks/diagnostic.h"
@@ -17,11 +18,6 @@ namespace {
 class SimulationText {
     Q_DECLARE_TR_FUNCTIONS(SimulationText)
 };
-
-QString fromStd(const std::string& text)
-{
-    return QString::fromStdString(text);
-}
 
 QString readingText(const core::ConditionReading& reading)
 {
