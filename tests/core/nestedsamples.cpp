@@ -58,24 +58,22 @@ core::Model soundMachine()
     return model;
 }
 
-core::Model alwaysTrueMachine()
-{
-    core::Model model = soundMachine();
-    require(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "S Flag"}));
-    require(model.setNegated("F1->A2", true));
-    require(model.setCondition("F1->A2", "Flag"));
-    require(model.setCondition("F1->A3", "B"));
-    require(model.setCondition("A3->A4", "TRUE"));
-    require(model.setCondition("A4->F1", "Start"));
-    return model;
-}
-
 core::Model overlapMachine()
 {
     core::Model model = soundMachine();
     require(model.setCondition("F1->A3", "B"));
     require(model.setCondition("A3->A4", "TRUE"));
     require(model.setCondition("A4->F1", "Start"));
+    return model;
+}
+
+// The overlap machine with F1->A2 waiting for NOT Flag, which F1 sets as it starts.
+core::Model alwaysTrueMachine()
+{
+    core::Model model = overlapMachine();
+    require(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "S Flag"}));
+    require(model.setNegated("F1->A2", true));
+    require(model.setCondition("F1->A2", "Flag"));
     return model;
 }
 
