@@ -185,9 +185,11 @@ private:
         if (!syntax.condition.empty())
             action.usable = expressionUsable(syntax.condition, source.text, true, where, stepNumber, 0, index)
                 && action.usable;
+        // The value is checked against the target only when the target is one
+        // (an undeclared target has no type to fit: its own problem says so).
         if (!syntax.value.empty())
             action.usable = expressionUsable(syntax.value, source.text, true, where, stepNumber, 0, index, false)
-                && valueFits(action, stepNumber, index, where) && action.usable;
+                && action.usable && valueFits(action, stepNumber, index, where);
         return action;
     }
 
@@ -246,9 +248,31 @@ private:
         if (fits)
             return true;
         const std::string typeName(iecTypeName(type));
-        problem("GG405", "in " + where + ": the value does not fit " + quoted(action.target) + " (" + typeName + ")",
-                {m_step.id, where, action.target, typeName}, stepNumber, 0, index, syntax.value.rootNode().span);
+        const std::string value = excerpt(action.text, syntax.value.rootNode().span);
+        const std::string written = syntax.targetIsComplete ? action.target : quoted(action.target);
+        problem("GG405",
+                "in " + where + ": " + value + " is " + kindText(kind) + ", not " + article(typeName) + " " + typeName
+                    + " value: it cannot be assigned to " + written + " (" + typeName + ")",
+                {m_step.id, where, action.target, typeName, value}, stepNumber, 0, index,
+                syntax.value.rootNode().span);
         return false;
+    }
+
+    static std::string kindText(cond::ValueKind kind)
+    {
+        switch (kind) {
+        case cond::ValueKind::Bool: return "a BOOL value";
+        case cond::ValueKind::Integer: return "an integer";
+        case cond::ValueKind::Real: return "a real number";
+        case cond::ValueKind::Unknown: break;
+        }
+        return "of no known type";
+    }
+
+    // "an INT", "a UINT": as the names are spoken.
+    static std::string article(std::string_view typeName)
+    {
+        return typeName == "INT" || typeName == "SINT" || typeName == "LINT" || typeName == "LREAL" ? "an" : "a";
     }
 
     // ---- continuous outputs ----
