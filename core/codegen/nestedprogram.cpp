@@ -1,6 +1,7 @@
 #include "core/codegen/nestedprogram.h"
 
 #include "core/codegen/gemmaprogram.h"
+#include "core/codegen/stgenerator.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
@@ -114,6 +115,7 @@ private:
                 usable = false;
             }
         }
+        usable = durationsFit(expression, text, where, step, transition, action) && usable;
         if (inAction) {
             std::vector<int> timeOrEdge = cond::edgeNodes(expression);
             for (int node : cond::nodesOfKind(expression, cond::NodeKind::StepDuration))
@@ -135,6 +137,26 @@ private:
             }
         }
         return usable;
+    }
+
+    // A TON preset is an IEC TIME, 32-bit milliseconds: a longer duration
+    // cannot be written, and clamping it would make two different durations
+    // one (both transitions would fire together on the PLC).
+    bool durationsFit(const cond::Expression& expression, const std::string& text, const std::string& where, int step,
+                      int transition, int action)
+    {
+        bool fit = true;
+        for (int node : cond::nodesOfKind(expression, cond::NodeKind::StepDuration)) {
+            const cond::Node& n = expression.at(node);
+            if (n.durationMs <= cond::kMaxTimeMs)
+                continue;
+            const std::string longest = formatDuration(cond::kMaxTimeMs);
+            problem("GG407", "in " + where + ": " + excerpt(text, n.span) + " is longer than " + longest
+                        + ", the longest duration an IEC TIME (a TON preset) holds",
+                    {m_step.id, where, excerpt(text, n.span), longest}, step, transition, action, n.span);
+            fit = false;
+        }
+        return fit;
     }
 
     // ---- steps and actions ----
