@@ -515,6 +515,10 @@ int commandSimulate(const Arguments& args, Streams streams)
     std::size_t failures = 0;
     for (std::int64_t i = 0; i < scans; ++i) {
         const core::ScanRecord record = runner.step();
+        if (const auto& fault = simulator.fault()) {
+            streams.err << files[0] << ": " << core::toText(*fault) << lineEnd;
+            return RunTimeFault;
+        }
         printScan(record, simulator, trace, streams.out);
         for (const core::ScenarioFailure& failure : runner.lastFailures())
             streams.err << files[1] << ":" << failure.line << ": " << core::toText(failure) << lineEnd;

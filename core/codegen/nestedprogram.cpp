@@ -3,6 +3,7 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/codegen/stgenerator.h"
 #include "core/condition/conditionanalysis.h"
+#include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
 
@@ -116,6 +117,8 @@ private:
             }
         }
         usable = durationsFit(expression, text, where, step, transition, action) && usable;
+        if (usable)
+            usable = divisorsNotZero(expression, text, where, step, transition, action);
         if (inAction) {
             std::vector<int> timeOrEdge = cond::edgeNodes(expression);
             for (int node : cond::nodesOfKind(expression, cond::NodeKind::StepDuration))
@@ -157,6 +160,24 @@ private:
             fit = false;
         }
         return fit;
+    }
+
+    // A constant zero divisor (GG408): the receptivity or action is unusable,
+    // as a type error makes it (a divisor that reads a variable is only a
+    // warning of the checks, GG409).
+    bool divisorsNotZero(const cond::Expression& expression, const std::string& text, const std::string& where,
+                         int step, int transition, int action)
+    {
+        bool none = true;
+        for (const cond::DivisionByZeroRisk& risk : cond::divisionsByZero(expression)) {
+            if (!risk.constantZero)
+                continue;
+            problem("GG408", "in " + where + ": " + cond::divisionByZeroMessage(risk, text),
+                    {m_step.id, where, excerpt(text, risk.span), excerpt(text, risk.divisorSpan)}, step, transition,
+                    action, risk.span);
+            none = false;
+        }
+        return none;
     }
 
     // ---- steps and actions ----

@@ -837,7 +837,7 @@ ScanRecord ScenarioRunner::step()
         }
     }
     ScanRecord record = m_simulator.step();
-    if (found != m_byScan.end()) {
+    if (found != m_byScan.end() && !m_simulator.fault()) { // a scan that faulted did not finish
         for (const ScenarioAction* action : found->second) {
             if (action->isExpectation())
                 check(*action, record);
@@ -858,9 +858,10 @@ ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, st
     ScenarioRunResult result;
     ScenarioRunner runner(scenario, simulator);
     const std::int64_t count = scans > 0 ? scans : scenario.lastScan();
-    for (std::int64_t i = 0; i < count; ++i)
+    for (std::int64_t i = 0; i < count && !simulator.fault(); ++i)
         result.records.push_back(runner.step());
     result.failures = runner.failures();
+    result.fault = simulator.fault();
     return result;
 }
 

@@ -144,10 +144,13 @@ private:
 };
 
 struct ScenarioRunResult {
-    std::vector<ScanRecord> records; // one per scan run
+    std::vector<ScanRecord> records; // one per scan run, the one that faulted included
     std::vector<ScenarioFailure> failures;
+    // The run-time fault that stopped the run before its last scan (its
+    // scan's expectations are not checked, no later scan runs).
+    std::optional<SimulationFault> fault;
 
-    bool passed() const { return failures.empty(); }
+    bool passed() const { return failures.empty() && !fault; }
 };
 
 // Resets the simulator and runs `scans` scans (0: the scenario's last scan).
