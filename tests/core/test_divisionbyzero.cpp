@@ -14,6 +14,7 @@
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
+#include "core/verification/verification.h"
 #include "samplemodels.h"
 
 #include <algorithm>
@@ -256,4 +257,22 @@ TEST_CASE("Division by zero: a nested action that divides by zero names the acti
     CHECK(problem->nestedStep == 2);
     CHECK(problem->actionIndex == 2);
     CHECK_FALSE(program.step("F1")->nested->steps[1].onActivation.back().usable);
+}
+
+TEST_CASE("Division by zero: the verifier reads a division by a variable as a free BOOL", "[division][verification]")
+{
+    // Batch is a free input: 100 / Batch may be zero (a fault on the PLC),
+    // and the values of Batch the verifier tried (its initial 0 only: no
+    // comparison with a constant names it) made T1 look dead. With Batch = 11
+    // the PLC fires T1.
+    Model model = lampGrafcetFromF1();
+    REQUIRE(model.setReceptivity("F1", 1, "Batch > 100 / Batch"));
+    const VerificationResult result = verifyModel(model);
+    for (const VerificationFinding& finding : result.findings) {
+        INFO(finding.code << " " << verificationElementLabel(finding) << ": " << finding.message);
+        CHECK(finding.code != verification::kNestedTransitionDead);
+        CHECK(finding.code != verification::kNestedStepNeverActive);
+    }
+    CHECK(std::any_of(result.abstractions.begin(), result.abstractions.end(),
+                      [](const std::string& a) { return a.find("Batch > 100 / Batch") != std::string::npos; }));
 }
