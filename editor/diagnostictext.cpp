@@ -242,6 +242,17 @@ QString translated(const core::Diagnostic& d)
     if (n == 3) {
         if (code == "GG203")
             return DiagnosticText::tr("In the condition of %1: '%2' is not a declared variable.").arg(arg(0), arg(1));
+        if (code == "GG215")
+            //: %2: a division as written (Count / 0)
+            return DiagnosticText::tr("In the condition of %1: '%2' divides by zero: on the PLC an integer division "
+                                      "or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.")
+                .arg(arg(0), arg(1));
+        if (code == "GG216")
+            //: %2: a division as written (Count / Batch)
+            return DiagnosticText::tr("In the condition of %1: the divisor of '%2' can be zero: an integer division or "
+                                      "MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives "
+                                      "INF or NaN.")
+                .arg(arg(0), arg(1));
         if (code == "GG207")
             return DiagnosticText::tr(
                 "The token on '%2' in %1 is invalid: '%2' is %3, and only BOOL variables can have a "

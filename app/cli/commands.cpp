@@ -51,8 +51,8 @@ const char* const kUsage =
     "      scan (--trace adds inputs, Entry, tokens, Complete, the active steps, timers and\n"
     "      Unstable of each nested GRAFCET and the outputs they drive; --explain ends with why\n"
     "      each transition of the active step and of its GRAFCET fires or not in the next scan).\n"
-    "      Runs the scenario's last scan, else 10 scans, or N. Exit 1 when an expectation of\n"
-    "      the scenario fails.\n"
+    "      Runs the scenario's last scan, else 10 scans, or N (at most 10000000, as a scenario).\n"
+    "      Exit 1 when an expectation of the scenario fails.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
     "         [--complete-automatic STEP[,STEP...]|all] [--property \"never P\"]... [--exact-time]\n"
     "      Prove properties of both layers (docs/verification.md): print FILE: ELEMENTS:\n"
@@ -489,6 +489,9 @@ int commandSimulate(const Arguments& args, Streams streams)
         }
         if (used != given->size() || scans < 1)
             return usageError(streams.err, "--scans takes a positive number of scans, not '" + *given + "'");
+        if (scans > core::kMaxScenarioScan)
+            return usageError(streams.err, "--scans takes at most " + std::to_string(core::kMaxScenarioScan)
+                                               + " scans, not " + *given);
     }
     std::unique_ptr<core::Model> model = loadOrReport(files[0], streams.err);
     if (!model)
@@ -512,6 +515,10 @@ int commandSimulate(const Arguments& args, Streams streams)
     std::size_t failures = 0;
     for (std::int64_t i = 0; i < scans; ++i) {
         const core::ScanRecord record = runner.step();
+        if (const auto& fault = simulator.fault()) {
+            streams.err << files[0] << ": " << core::toText(*fault) << lineEnd;
+            return RunTimeFault;
+        }
         printScan(record, simulator, trace, streams.out);
         for (const core::ScenarioFailure& failure : runner.lastFailures())
             streams.err << files[1] << ":" << failure.line << ": " << core::toText(failure) << lineEnd;

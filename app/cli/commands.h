@@ -7,7 +7,8 @@
 namespace cli {
 
 // Exit codes, documented in the README.
-enum ExitCode { Success = 0, ModelHasErrors = 1, UnreadableInput = 2, UsageError = 64 };
+// RunTimeFault: `simulate` stopped on an integer division by zero, as the PLC would.
+enum ExitCode { Success = 0, ModelHasErrors = 1, UnreadableInput = 2, RunTimeFault = 3, UsageError = 64 };
 
 struct Streams {
     std::ostream& out;

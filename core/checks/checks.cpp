@@ -4,6 +4,7 @@
 
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
+#include "core/condition/divisionanalysis.h"
 #include "core/model/iectypes.h"
 #include "core/model/model.h"
 #include "core/condition/symboltable.h"
@@ -353,8 +354,26 @@ private:
             addTransition(issue.code, Severity::Error, id, "condition",
                           "in the condition of " + id + ": " + issue.message, std::move(arguments), issue.span);
         }
-        if (issues.empty())
-            checkConstantCondition(transition, source, parsed->expression);
+        if (!issues.empty())
+            return;
+        checkConstantCondition(transition, source, parsed->expression);
+        checkDivisions(transition, parsed->expression);
+    }
+
+    // A constant zero divisor is an error (the generated code and the
+    // simulator use FALSE for the condition); a divisor that reads a variable
+    // a warning: on the PLC an integer division by zero is a fault.
+    void checkDivisions(const Transition& transition, const cond::Expression& expression)
+    {
+        const std::string& id = transition.id;
+        for (const cond::DivisionByZeroRisk& risk : cond::divisionsByZero(expression)) {
+            const std::string detail = cond::divisionByZeroMessage(risk, transition.condition);
+            addTransition(risk.constantZero ? "GG215" : "GG216",
+                          risk.constantZero ? Severity::Error : Severity::Warning, id, "condition",
+                          "in the condition of " + id + ": " + detail,
+                          {id, excerpt(transition.condition, risk.span), excerpt(transition.condition, risk.divisorSpan)},
+                          risk.span);
+        }
     }
 
     void checkConstantCondition(const Transition& transition, const Step* source,

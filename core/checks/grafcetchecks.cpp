@@ -5,6 +5,7 @@
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
 #include "core/condition/conditionparser.h"
+#include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
 #include "core/verification/satisfiability.h"
@@ -204,6 +205,7 @@ public:
             checkGrafcet(parsed);
             checkSteps(parsed);
             checkSelections(parsed);
+            checkDivisors(parsed);
         }
         return std::move(m_result);
     }
@@ -401,6 +403,66 @@ private:
         m_result.back().target = Diagnostic::Target::GrafcetTransition;
         m_result.back().nestedNumber = number;
         m_result.back().field = "receptivity";
+    }
+
+    // ---- divisors that read variables ----
+
+    // GG409: a divisor that can be zero. A constant zero one makes the text
+    // unusable and is reported with the other such problems (GG408).
+    void checkDivisors(const ParsedGrafcet& parsed)
+    {
+        const std::string& id = parsed.owner.id;
+        for (const GrafcetTransition& t : parsed.grafcet.transitions()) {
+            const cond::ParseResult& receptivity = parsed.receptivities.at(t.number);
+            const std::string where = "the receptivity of " + transitionName(t.number) + " of " + id;
+            for (const cond::DivisionByZeroRisk& risk : variableDivisors(receptivity.ok(), receptivity.expression)) {
+                addNestedTransition("GG409", Severity::Warning, id, t.number,
+                                    divisorMessage(where, risk, t.receptivity),
+                                    divisorArguments(id, where, risk, t.receptivity));
+                m_result.back().span = risk.span;
+            }
+        }
+        for (const GrafcetStep& step : parsed.grafcet.steps()) {
+            const std::vector<cond::ActionParseResult>& actions = parsed.actions.at(step.number);
+            for (std::size_t i = 0; i < actions.size(); ++i) {
+                const std::string where = "action " + std::to_string(i + 1) + " of step " + std::to_string(step.number)
+                    + " of " + id;
+                const std::string& text = step.actions[i].text;
+                for (const cond::Expression* expression : {&actions[i].action.condition, &actions[i].action.value}) {
+                    for (const cond::DivisionByZeroRisk& risk : variableDivisors(actions[i].ok(), *expression)) {
+                        addNestedStep("GG409", Severity::Warning, id, step.number, divisorMessage(where, risk, text),
+                                      divisorArguments(id, where, risk, text));
+                        m_result.back().field = "action";
+                        m_result.back().actionIndex = static_cast<int>(i);
+                        m_result.back().span = risk.span;
+                    }
+                }
+            }
+        }
+    }
+
+    static std::vector<cond::DivisionByZeroRisk> variableDivisors(bool parsed, const cond::Expression& expression)
+    {
+        std::vector<cond::DivisionByZeroRisk> result;
+        if (!parsed || expression.empty())
+            return result;
+        for (const cond::DivisionByZeroRisk& risk : cond::divisionsByZero(expression)) {
+            if (!risk.constantZero)
+                result.push_back(risk);
+        }
+        return result;
+    }
+
+    static std::string divisorMessage(const std::string& where, const cond::DivisionByZeroRisk& risk,
+                                      const std::string& text)
+    {
+        return "in " + where + ": " + cond::divisionByZeroMessage(risk, text);
+    }
+
+    static std::vector<std::string> divisorArguments(const std::string& id, const std::string& where,
+                                                     const cond::DivisionByZeroRisk& risk, const std::string& text)
+    {
+        return {id, where, excerpt(text, risk.span), excerpt(text, risk.divisorSpan)};
     }
 
     const Model& m_model;

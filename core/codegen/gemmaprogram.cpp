@@ -1,6 +1,7 @@
 #include "core/codegen/gemmaprogram.h"
 
 #include "core/condition/conditionanalysis.h"
+#include "core/condition/divisionanalysis.h"
 #include "core/model/model.h"
 #include "core/condition/symboltable.h"
 
@@ -89,6 +90,23 @@ void rejectUndeclarableNames(const BuildContext& context, GemmaTransition& trans
     }
 }
 
+// A constant zero divisor (GG215): the PLC would fault (integer) or compute
+// INF or NaN (REAL) at every evaluation; the condition is unusable, FALSE in
+// the code, the simulator and the verifier alike.
+void rejectConstantZeroDivisors(GemmaTransition& transition)
+{
+    const std::string& id = transition.id;
+    for (const cond::DivisionByZeroRisk& risk : cond::divisionsByZero(transition.condition.expression)) {
+        if (!risk.constantZero)
+            continue;
+        transition.problems.push_back(makeProblem(
+            GemmaProblem::Kind::Error, "GG215", id,
+            "in the condition of " + id + ": " + cond::divisionByZeroMessage(risk, transition.conditionText),
+            {id, excerpt(transition.conditionText, risk.span), excerpt(transition.conditionText, risk.divisorSpan)}));
+        transition.conditionUsable = false;
+    }
+}
+
 // Parses and type-checks the condition; records why it cannot be used.
 void analyseCondition(const BuildContext& context, GemmaTransition& transition)
 {
@@ -120,6 +138,8 @@ void analyseCondition(const BuildContext& context, GemmaTransition& transition)
                                                   std::move(arguments)));
     }
     transition.conditionUsable = issues.empty();
+    if (transition.conditionUsable)
+        rejectConstantZeroDivisors(transition);
     rejectUndeclarableNames(context, transition);
 }
 

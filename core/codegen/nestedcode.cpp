@@ -19,9 +19,10 @@ std::string comment(std::string_view text)
     return "(* " + escapeComment(std::string(text)) + " *)";
 }
 
+// Timers exist for usable receptivities only, whose durations fit TIME (GG407).
 std::string duration(std::int64_t milliseconds)
 {
-    return formatDuration(static_cast<int>(std::min<std::int64_t>(milliseconds, std::numeric_limits<int>::max())));
+    return formatDuration(milliseconds);
 }
 
 std::string leftFlag(int step)

@@ -1,7 +1,9 @@
 #include "core/codegen/nestedprogram.h"
 
 #include "core/codegen/gemmaprogram.h"
+#include "core/codegen/stgenerator.h"
 #include "core/condition/conditionanalysis.h"
+#include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
 
@@ -114,6 +116,9 @@ private:
                 usable = false;
             }
         }
+        usable = durationsFit(expression, text, where, step, transition, action) && usable;
+        if (usable)
+            usable = divisorsNotZero(expression, text, where, step, transition, action);
         if (inAction) {
             std::vector<int> timeOrEdge = cond::edgeNodes(expression);
             for (int node : cond::nodesOfKind(expression, cond::NodeKind::StepDuration))
@@ -135,6 +140,44 @@ private:
             }
         }
         return usable;
+    }
+
+    // A TON preset is an IEC TIME, 32-bit milliseconds: a longer duration
+    // cannot be written, and clamping it would make two different durations
+    // one (both transitions would fire together on the PLC).
+    bool durationsFit(const cond::Expression& expression, const std::string& text, const std::string& where, int step,
+                      int transition, int action)
+    {
+        bool fit = true;
+        for (int node : cond::nodesOfKind(expression, cond::NodeKind::StepDuration)) {
+            const cond::Node& n = expression.at(node);
+            if (n.durationMs <= cond::kMaxTimeMs)
+                continue;
+            const std::string longest = formatDuration(cond::kMaxTimeMs);
+            problem("GG407", "in " + where + ": " + excerpt(text, n.span) + " is longer than " + longest
+                        + ", the longest duration an IEC TIME (a TON preset) holds",
+                    {m_step.id, where, excerpt(text, n.span), longest}, step, transition, action, n.span);
+            fit = false;
+        }
+        return fit;
+    }
+
+    // A constant zero divisor (GG408): the receptivity or action is unusable,
+    // as a type error makes it (a divisor that reads a variable is only a
+    // warning of the checks, GG409).
+    bool divisorsNotZero(const cond::Expression& expression, const std::string& text, const std::string& where,
+                         int step, int transition, int action)
+    {
+        bool none = true;
+        for (const cond::DivisionByZeroRisk& risk : cond::divisionsByZero(expression)) {
+            if (!risk.constantZero)
+                continue;
+            problem("GG408", "in " + where + ": " + cond::divisionByZeroMessage(risk, text),
+                    {m_step.id, where, excerpt(text, risk.span), excerpt(text, risk.divisorSpan)}, step, transition,
+                    action, risk.span);
+            none = false;
+        }
+        return none;
     }
 
     // ---- steps and actions ----
@@ -185,9 +228,11 @@ private:
         if (!syntax.condition.empty())
             action.usable = expressionUsable(syntax.condition, source.text, true, where, stepNumber, 0, index)
                 && action.usable;
+        // The value is checked against the target only when the target is one
+        // (an undeclared target has no type to fit: its own problem says so).
         if (!syntax.value.empty())
             action.usable = expressionUsable(syntax.value, source.text, true, where, stepNumber, 0, index, false)
-                && valueFits(action, stepNumber, index, where) && action.usable;
+                && action.usable && valueFits(action, stepNumber, index, where);
         return action;
     }
 
@@ -246,9 +291,31 @@ private:
         if (fits)
             return true;
         const std::string typeName(iecTypeName(type));
-        problem("GG405", "in " + where + ": the value does not fit " + quoted(action.target) + " (" + typeName + ")",
-                {m_step.id, where, action.target, typeName}, stepNumber, 0, index, syntax.value.rootNode().span);
+        const std::string value = excerpt(action.text, syntax.value.rootNode().span);
+        const std::string written = syntax.targetIsComplete ? action.target : quoted(action.target);
+        problem("GG405",
+                "in " + where + ": " + value + " is " + kindText(kind) + ", not " + article(typeName) + " " + typeName
+                    + " value: it cannot be assigned to " + written + " (" + typeName + ")",
+                {m_step.id, where, action.target, typeName, value}, stepNumber, 0, index,
+                syntax.value.rootNode().span);
         return false;
+    }
+
+    static std::string kindText(cond::ValueKind kind)
+    {
+        switch (kind) {
+        case cond::ValueKind::Bool: return "a BOOL value";
+        case cond::ValueKind::Integer: return "an integer";
+        case cond::ValueKind::Real: return "a real number";
+        case cond::ValueKind::Unknown: break;
+        }
+        return "of no known type";
+    }
+
+    // "an INT", "a UINT": as the names are spoken.
+    static std::string article(std::string_view typeName)
+    {
+        return typeName == "INT" || typeName == "SINT" || typeName == "LINT" || typeName == "LREAL" ? "an" : "a";
     }
 
     // ---- continuous outputs ----

@@ -609,18 +609,18 @@ std::string escapeComment(const std::string& text)
     return out;
 }
 
-std::string formatDuration(int milliseconds)
+std::string formatDuration(std::int64_t milliseconds)
 {
     if (milliseconds <= 0)
         return "T#0ms";
     struct Unit {
-        int ms;
+        std::int64_t ms;
         const char* suffix;
     };
     static constexpr Unit kUnits[] = {{86'400'000, "d"}, {3'600'000, "h"}, {60'000, "m"}, {1'000, "s"}, {1, "ms"}};
     int firstUnit = -1;
     int lastUnit = -1;
-    int rest = milliseconds;
+    std::int64_t rest = milliseconds;
     for (int i = 0; i < 5; ++i) {
         if (rest / kUnits[i].ms > 0) {
             if (firstUnit < 0)
@@ -632,7 +632,7 @@ std::string formatDuration(int milliseconds)
     std::string out = "T#";
     rest = milliseconds;
     for (int i = 0; i < 5; ++i) {
-        const int count = rest / kUnits[i].ms;
+        const std::int64_t count = rest / kUnits[i].ms;
         rest %= kUnits[i].ms;
         if (i >= firstUnit && i <= lastUnit)
             out += std::to_string(count) + kUnits[i].suffix;

@@ -8,6 +8,7 @@
 #include "core/model/model.h"
 #include "core/codegen/plcproject.h"
 
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -37,7 +38,9 @@ std::string formatSingleFileIec(const PlcProject& project);
 
 // T#20ms, T#1s500ms, T#1m0s500ms: the units from the largest to the smallest
 // non-zero one, none skipped in between (IEC 61131-3 duration grammar).
-std::string formatDuration(int milliseconds);
+// Written as given, never clamped: the checks refuse a duration above
+// cond::kMaxTimeMs (GG407), so none reaches the code.
+std::string formatDuration(std::int64_t milliseconds);
 
 // Text made safe inside (* *): no comment delimiter survives, line breaks
 // become spaces, and control characters (core::isControlCharacter: terminal

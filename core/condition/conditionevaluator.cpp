@@ -99,8 +99,8 @@ Value realArithmetic(BinaryOp op, double a, double b)
     case BinaryOp::Add: return a + b;
     case BinaryOp::Subtract: return a - b;
     case BinaryOp::Multiply: return a * b;
-    case BinaryOp::Divide: return b == 0.0 ? 0.0 : a / b;
-    default: return b == 0.0 ? 0.0 : std::fmod(a, b);
+    case BinaryOp::Divide: return realDivision(a, b);
+    default: return std::fmod(a, b); // NaN for a zero divisor (MOD of a REAL is a type error anyway)
     }
 }
 
@@ -115,6 +115,11 @@ bool compare(BinaryOp op, T a, T b)
     case BinaryOp::LessEqual: return a <= b;
     default: return a >= b;
     }
+}
+
+bool dividesIntegersByZero(BinaryOp op, const Value& a, const Value& b)
+{
+    return (op == BinaryOp::Divide || op == BinaryOp::Modulo) && !isReal(a) && !isReal(b) && toInteger(b) == 0;
 }
 
 Value binary(BinaryOp op, const Value& a, const Value& b)
@@ -143,8 +148,8 @@ Value binary(BinaryOp op, const Value& a, const Value& b)
 
 class Evaluator {
 public:
-    Evaluator(const Expression& expression, const std::function<Value(int)>& variableValue)
-        : m_expression(expression), m_variableValue(variableValue)
+    Evaluator(const Expression& expression, const std::function<Value(int)>& variableValue, int* divisionByZero)
+        : m_expression(expression), m_variableValue(variableValue), m_divisionByZero(divisionByZero)
     {
     }
 
@@ -169,7 +174,13 @@ public:
             return value ? *value : std::numeric_limits<double>::infinity();
         }
         case NodeKind::Unary: return unary(index, node);
-        case NodeKind::Binary: return binary(node.binaryOp, eval(node.left, index), eval(node.right, index));
+        case NodeKind::Binary: {
+            const Value left = eval(node.left, index);
+            const Value right = eval(node.right, index);
+            if (m_divisionByZero && *m_divisionByZero < 0 && dividesIntegersByZero(node.binaryOp, left, right))
+                *m_divisionByZero = index;
+            return binary(node.binaryOp, left, right);
+        }
         }
         return false;
     }
@@ -193,6 +204,7 @@ private:
 
     const Expression& m_expression;
     const std::function<Value(int)>& m_variableValue;
+    int* m_divisionByZero; // nullptr: nobody asks
 };
 
 } // namespace
@@ -201,8 +213,31 @@ Value evaluate(const Expression& expression, const std::function<Value(int node)
 {
     if (expression.root < 0 || static_cast<std::size_t>(expression.root) >= expression.nodes.size())
         return false;
-    return Evaluator(expression, variableValue)
+    return Evaluator(expression, variableValue, nullptr)
         .eval(expression.root, static_cast<int>(expression.nodes.size()));
+}
+
+Value evaluate(const Expression& expression, const std::function<Value(int node)>& variableValue,
+               int& integerDivisionByZero)
+{
+    if (expression.root < 0 || static_cast<std::size_t>(expression.root) >= expression.nodes.size())
+        return false;
+    int found = -1;
+    const Value value = Evaluator(expression, variableValue, &found)
+                            .eval(expression.root, static_cast<int>(expression.nodes.size()));
+    if (found >= 0)
+        integerDivisionByZero = found;
+    return value;
+}
+
+double realDivision(double dividend, double divisor)
+{
+    if (divisor != 0.0)
+        return dividend / divisor;
+    if (dividend == 0.0 || std::isnan(dividend))
+        return std::numeric_limits<double>::quiet_NaN();
+    const bool negative = std::signbit(dividend) != std::signbit(divisor);
+    return negative ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
 }
 
 bool isTrue(const Value& value)

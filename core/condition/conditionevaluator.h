@@ -24,13 +24,24 @@ using Value = std::variant<bool, std::int64_t, double>;
 // LREAL; a narrower PLC type differs only where it would overflow):
 // - integer arithmetic wraps around instead of overflowing;
 // - integer / truncates toward zero, MOD takes the sign of the dividend;
-// - division or MOD by zero yields 0 (0.0 for reals): a PLC would stop with
-//   a fault, the simulator keeps running;
+// - an integer division or MOD by zero is a fault on the PLC (the task
+//   stops): evaluate() goes on with 0, the value the verifier's
+//   over-approximation continues with, and reports the node to whoever
+//   asks (the simulator stops the run there);
+// - a REAL division follows IEEE 754 as the PLC does: x / 0.0 is +-INF,
+//   0.0 / 0.0 is NaN, and every comparison with NaN is FALSE except <>;
 // - an integer mixed with a real is converted to a real.
 // The expression should pass typeCheck; otherwise numbers read as BOOL are
 // TRUE when non-zero and BOOLs read as numbers are 1 or 0. An empty
 // expression is FALSE.
 Value evaluate(const Expression& expression, const std::function<Value(int node)>& variableValue);
+// The same; `integerDivisionByZero` receives the index of the first / or MOD
+// node that divided integers by zero, and is left unchanged when none did.
+Value evaluate(const Expression& expression, const std::function<Value(int node)>& variableValue,
+               int& integerDivisionByZero);
+
+// IEEE 754 division, spelled out (a C++ division by zero is undefined).
+double realDivision(double dividend, double divisor);
 
 // TRUE, non-zero.
 bool isTrue(const Value& value);

@@ -746,6 +746,7 @@ std::optional<std::int64_t> parseDurationMs(std::string_view text)
     std::int64_t total = 0;
     int previousRank = -1;
     bool fractionSeen = false;
+    bool saturated = false; // well-formed so far, but beyond 64 bits
     std::size_t pos = 0;
     if (text.empty())
         return std::nullopt;
@@ -755,8 +756,9 @@ std::optional<std::int64_t> parseDurationMs(std::string_view text)
         std::int64_t whole = 0;
         for (; pos < text.size() && isDigit(text[pos]); ++pos) {
             if (whole > (kMax - 9) / 10)
-                return std::nullopt;
-            whole = whole * 10 + (text[pos] - '0');
+                saturated = true;
+            else
+                whole = whole * 10 + (text[pos] - '0');
         }
         double fraction = 0;
         if (pos < text.size() && text[pos] == '.') {
@@ -772,11 +774,13 @@ std::optional<std::int64_t> parseDurationMs(std::string_view text)
         if (!unit || unitRank(unit->name) <= previousRank)
             return std::nullopt;
         previousRank = unitRank(unit->name);
-        if (whole > (kMax - total) / unit->milliseconds - 1)
-            return std::nullopt;
-        total += whole * unit->milliseconds + static_cast<std::int64_t>(fraction * static_cast<double>(unit->milliseconds) + 0.5);
+        if (saturated || whole > (kMax - total) / unit->milliseconds - 1)
+            saturated = true;
+        else
+            total += whole * unit->milliseconds
+                + static_cast<std::int64_t>(fraction * static_cast<double>(unit->milliseconds) + 0.5);
     }
-    return total;
+    return saturated ? kMax : total;
 }
 
 int stepActivityNumber(std::string_view name)

@@ -71,9 +71,15 @@ ParseResult parseTokens(std::string_view text, const std::vector<Token>& tokens,
 
 // A duration literal in milliseconds: 200ms, 5s, 1m30s, 1.5s, T#5s, TIME#1h
 // (units d, h, m, s, ms, largest first, each at most once; only the last may
-// have a fraction). nullopt when malformed or out of range; 0 is returned as
-// 0 (the parser refuses it).
+// have a fraction). nullopt when malformed; a well-formed duration beyond
+// 64 bits gives INT64_MAX, so that it parses and the checks can say it is too
+// long (every duration above kMaxTimeMs is refused by them, GG407); 0 is
+// returned as 0 (the parser refuses it).
 std::optional<std::int64_t> parseDurationMs(std::string_view text);
+
+// The longest duration IEC TIME holds (32-bit milliseconds), the longest TON
+// preset the generated code can write: T#24d20h31m23s647ms.
+inline constexpr std::int64_t kMaxTimeMs = 2'147'483'647;
 
 // "X3" -> 3 in the Nested context: X (any case) and a step number without
 // sign that fits an int; 0 otherwise.

@@ -162,7 +162,41 @@ cond::Value NestedEngine::atom(const cond::Expression& expression, int node, con
 cond::Value NestedEngine::evaluate(const cond::Expression& expression, const std::map<int, int>* timers,
                                    const NestedGlobals& globals, bool firstEvolution) const
 {
-    return cond::evaluate(expression, [&](int node) { return atom(expression, node, timers, globals, firstEvolution); });
+    int divisionByZero = -1;
+    const cond::Value value = cond::evaluate(
+        expression, [&](int node) { return atom(expression, node, timers, globals, firstEvolution); }, divisionByZero);
+    if (divisionByZero >= 0 && !m_divisionFault)
+        noteDivisionByZero(expression, divisionByZero);
+    return value;
+}
+
+// Names the receptivity or action the expression belongs to.
+void NestedEngine::noteDivisionByZero(const cond::Expression& expression, int node) const
+{
+    SimulationFault fault;
+    const std::string& owner = m_grafcet->stepId;
+    for (const NestedTransition& t : m_grafcet->transitions) {
+        if (&t.receptivity.expression != &expression)
+            continue;
+        fault.nestedTransition = t.number;
+        fault.place = "the receptivity of T" + std::to_string(t.number) + " of " + owner;
+        fault.text = t.text;
+    }
+    for (const NestedStep& step : m_grafcet->steps) {
+        for (const auto* list : {&step.onActivation, &step.onDeactivation, &step.continuous}) {
+            for (const NestedAction& action : *list) {
+                if (&action.parsed.action.condition != &expression && &action.parsed.action.value != &expression)
+                    continue;
+                fault.nestedStep = step.number;
+                fault.actionIndex = action.index;
+                fault.place = "action " + std::to_string(action.index + 1) + " of step " + std::to_string(step.number)
+                    + " of " + owner;
+                fault.text = action.text;
+            }
+        }
+    }
+    fault.division = excerpt(fault.text, expression.at(node).span);
+    m_divisionFault = std::move(fault);
 }
 
 namespace {

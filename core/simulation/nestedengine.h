@@ -10,9 +10,11 @@
 #include "core/codegen/nestedprogram.h"
 #include "core/condition/conditionevaluator.h"
 #include "core/simulation/explanationreason.h"
+#include "core/simulation/simulationfault.h"
 #include "core/model/iectypes.h"
 
 #include <map>
+#include <optional>
 
 #include <cstdint>
 #include <functional>
@@ -101,6 +103,13 @@ public:
     std::vector<NestedTimerState> timers() const;
     const NestedGrafcet& grafcet() const { return *m_grafcet; }
 
+    // The first integer division or MOD by zero evaluated since the last
+    // clearDivisionFault() (the call went on with 0 as the quotient): the
+    // PLC would have stopped there. stepId, scan and transitionId are left
+    // for the caller.
+    const std::optional<SimulationFault>& divisionFault() const { return m_divisionFault; }
+    void clearDivisionFault() { m_divisionFault.reset(); }
+
     // Predicts the first evolution of the next evolving call at nowMs without
     // changing the engine: on a copy, the Initialization call first when
     // `initialization` (it may write `globals`: pass scratch globals), then
@@ -123,6 +132,7 @@ private:
 
     cond::Value evaluate(const cond::Expression& expression, const std::map<int, int>* timers,
                          const NestedGlobals& globals, bool firstEvolution) const;
+    void noteDivisionByZero(const cond::Expression& expression, int node) const;
     cond::Value atom(const cond::Expression& expression, int node, const std::map<int, int>* timers,
                      const NestedGlobals& globals, bool firstEvolution) const;
     int stepIndex(int number) const;
@@ -152,6 +162,7 @@ private:
     std::vector<char> m_outputs;
     bool m_complete = false;
     bool m_unstable = false;
+    mutable std::optional<SimulationFault> m_divisionFault; // see divisionFault()
     std::vector<int> m_fired;             // transition numbers, see firedTransitions()
     // By continuous action: m_emitting[m_continuousStart[step index] + i] for
     // NestedStep::continuous[i].

@@ -24,8 +24,6 @@ std::string nestedStepsText(std::vector<int> numbers)
 }
 
 
-constexpr std::int64_t kMaxScan = 1'000'000'000'000;
-
 // A word or one of the punctuation marks , = : of a scenario line.
 struct Word {
     std::string_view text;
@@ -243,11 +241,14 @@ private:
         const std::string_view text = m_words[m_next].text;
         std::int64_t number = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), number);
-        if (error != std::errc() || end != text.data() + text.size() || text.front() == '-' || text.front() == '+')
+        const bool whole = end == text.data() + text.size() && text.front() != '-' && text.front() != '+';
+        if (error == std::errc::result_out_of_range && whole)
+            return fail(ErrorKind::ScanTooLarge, std::string(text));
+        if (error != std::errc() || !whole)
             return fail(ErrorKind::ExpectedScanNumber);
         if (number < 1)
             return fail(ErrorKind::ScanBelowOne);
-        if (number > kMaxScan)
+        if (number > kMaxScenarioScan)
             return fail(ErrorKind::ScanTooLarge, std::string(text));
         m_scan = number;
         ++m_next;
@@ -836,7 +837,7 @@ ScanRecord ScenarioRunner::step()
         }
     }
     ScanRecord record = m_simulator.step();
-    if (found != m_byScan.end()) {
+    if (found != m_byScan.end() && !m_simulator.fault()) { // a scan that faulted did not finish
         for (const ScenarioAction* action : found->second) {
             if (action->isExpectation())
                 check(*action, record);
@@ -857,9 +858,10 @@ ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, st
     ScenarioRunResult result;
     ScenarioRunner runner(scenario, simulator);
     const std::int64_t count = scans > 0 ? scans : scenario.lastScan();
-    for (std::int64_t i = 0; i < count; ++i)
+    for (std::int64_t i = 0; i < count && !simulator.fault(); ++i)
         result.records.push_back(runner.step());
     result.failures = runner.failures();
+    result.fault = simulator.fault();
     return result;
 }
 

@@ -55,6 +55,11 @@ struct ScenarioAction {
     bool isExpectation() const { return kind >= Kind::ExpectStep; }
 };
 
+// The highest scan a scenario may name, and the most scans `simulate --scans`
+// runs: every run is bounded (10,000,000 scans is 55 hours of a 20 ms cycle
+// and takes seconds to simulate; four billion would print gigabytes).
+inline constexpr std::int64_t kMaxScenarioScan = 10'000'000;
+
 struct Scenario {
     std::string fileName; // for messages; may be empty
     std::vector<ScenarioAction> actions; // in file order
@@ -139,10 +144,13 @@ private:
 };
 
 struct ScenarioRunResult {
-    std::vector<ScanRecord> records; // one per scan run
+    std::vector<ScanRecord> records; // one per scan run, the one that faulted included
     std::vector<ScenarioFailure> failures;
+    // The run-time fault that stopped the run before its last scan (its
+    // scan's expectations are not checked, no later scan runs).
+    std::optional<SimulationFault> fault;
 
-    bool passed() const { return failures.empty(); }
+    bool passed() const { return failures.empty() && !fault; }
 };
 
 // Resets the simulator and runs `scans` scans (0: the scenario's last scan).

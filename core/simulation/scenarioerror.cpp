@@ -1,5 +1,7 @@
 #include "core/simulation/scenarioerror.h"
 
+#include "core/simulation/scenario.h"
+
 namespace core {
 
 namespace {
@@ -46,7 +48,9 @@ std::string otherText(const ScenarioError& e)
 {
     switch (e.kind) {
     case Kind::ScanBelowOne: return "scans are numbered from 1";
-    case Kind::ScanTooLarge: return "scan number " + e.subject + " is too large";
+    case Kind::ScanTooLarge:
+        return "scan number " + e.subject + " is too large: a scenario runs at most "
+            + std::to_string(kMaxScenarioScan) + " scans";
     case Kind::UnknownVariable: return "unknown variable " + quote(e.subject);
     case Kind::InvalidValue: return e.subject + " is " + e.type + ": " + e.detail;
     case Kind::HiddenStep: return "step " + e.subject + " is hidden: it does not exist for the simulator";

@@ -83,7 +83,7 @@ enum class Op : std::uint8_t {
 
 struct Instruction {
     Op op = Op::PushConstant;
-    int slot = 0; // variable slot or token index
+    int slot = 0; // variable slot or token index; DivInt, ModInt: the node, to name a division by zero
     Cell constant{};
 };
 
@@ -240,6 +240,11 @@ struct Simulator::Impl {
 
     // Evaluation scratch.
     mutable std::vector<Cell> stack;
+    // The node of the first integer division or MOD by zero of the last
+    // evaluate(), -1 for none.
+    mutable int divisionByZero = -1;
+    // Set by the scan that divided integers by zero: no scan runs after it.
+    std::optional<SimulationFault> fault;
 
     bool traceEnabled = false;
     std::vector<ScanRecord> trace;
@@ -262,6 +267,8 @@ struct Simulator::Impl {
     bool predictNestedCall(const CompiledStep& step, std::vector<Cell>& scratch) const;
     int activeIndexFor(int number) const;
     void scan(ScanRecord* record);
+    bool nestedFaulted(const CompiledStep& step);
+    void transitionFaulted(const CompiledStep& step, const CompiledTransition& transition);
     void fillRecordAfter(ScanRecord& record, const std::vector<Cell>& outputsBefore) const;
     void collectChanges(ScanRecord* record);
     int stepIndexOfNested(std::string_view stepId) const;
@@ -603,7 +610,7 @@ bool CompiledProgram::compileNode(const CompiledTransition& transition, const co
     case cond::BinaryOp::GreaterEqual: code = real ? Op::GeReal : Op::GeInt; break;
     case cond::BinaryOp::Implies: return false; // properties only: never in a program's condition
     }
-    out.code.push_back(Instruction{code, 0, {}});
+    out.code.push_back(Instruction{code, (code == Op::DivInt || code == Op::ModInt) ? node : 0, {}});
     kind = (logical || comparison) ? Kind::Bool : (real ? Kind::Real : Kind::Integer);
     return true;
 }
@@ -612,7 +619,8 @@ namespace {
 
 constexpr std::int64_t kInt64Min = std::numeric_limits<std::int64_t>::min();
 
-// Integer semantics of cond::evaluate: wrap-around, division and MOD by zero give 0.
+// Integer semantics of cond::evaluate: wrap-around; a division or MOD by
+// zero gives 0 and is reported (the scan then stops the run).
 std::int64_t wrapAdd(std::int64_t a, std::int64_t b)
 {
     return static_cast<std::int64_t>(static_cast<std::uint64_t>(a) + static_cast<std::uint64_t>(b));
@@ -644,9 +652,8 @@ bool Simulator::Impl::evaluate(const CompiledTransition& transition, const Condi
     if (condition.alwaysFalse)
         return false;
     if (condition.fallback) {
-        return cond::isTrue(cond::evaluate(transition.readable, [&](int node) {
-            return nodeReading(transition, node, inputs);
-        }));
+        return cond::isTrue(cond::evaluate(
+            transition.readable, [&](int node) { return nodeReading(transition, node, inputs); }, divisionByZero));
     }
     // `next` is the first free cell; the top of the stack is next[-1].
     Cell* next = stack.data();
@@ -670,13 +677,17 @@ bool Simulator::Impl::evaluate(const CompiledTransition& transition, const Condi
             case Op::AddInt: a.i = wrapAdd(a.i, b.i); break;
             case Op::SubInt: a.i = wrapSub(a.i, b.i); break;
             case Op::MulInt: a.i = wrapMul(a.i, b.i); break;
-            case Op::DivInt: a.i = safeDiv(a.i, b.i); break;
-            case Op::ModInt: a.i = safeMod(a.i, b.i); break;
+            case Op::DivInt:
+            case Op::ModInt:
+                if (b.i == 0 && divisionByZero < 0)
+                    divisionByZero = in.slot;
+                a.i = in.op == Op::DivInt ? safeDiv(a.i, b.i) : safeMod(a.i, b.i);
+                break;
             case Op::AddReal: a.r = a.r + b.r; break;
             case Op::SubReal: a.r = a.r - b.r; break;
             case Op::MulReal: a.r = a.r * b.r; break;
-            case Op::DivReal: a.r = b.r == 0.0 ? 0.0 : a.r / b.r; break;
-            case Op::ModReal: a.r = b.r == 0.0 ? 0.0 : std::fmod(a.r, b.r); break;
+            case Op::DivReal: a.r = cond::realDivision(a.r, b.r); break;
+            case Op::ModReal: a.r = std::fmod(a.r, b.r); break;
             case Op::EqInt: a.i = a.i == b.i; break;
             case Op::NeInt: a.i = a.i != b.i; break;
             case Op::LtInt: a.i = a.i < b.i; break;
@@ -731,6 +742,7 @@ void Simulator::Impl::reset()
     scanCount = 0;
     lastFired = nullptr;
     calledNested = -1;
+    fault.reset();
     trace.clear();
 }
 
@@ -805,6 +817,8 @@ void Simulator::Impl::scan(ScanRecord* record)
         if (step.nestedIndex >= 0) {
             const auto nested = static_cast<std::size_t>(step.nestedIndex);
             calledNested = step.nestedIndex;
+            if (std::optional<NestedEngine>& engine = engines[nested])
+                engine->clearDivisionFault(); // explain() may have evaluated on it
             if (entry) {
                 // IF Entry THEN S(Initialization := Entry); Entry := FALSE; tokens := FALSE; END_IF;
                 callFunctionBlock(step, true);
@@ -813,9 +827,22 @@ void Simulator::Impl::scan(ScanRecord* record)
             }
             callFunctionBlock(step, false); // S(Initialization := Entry);
             complete = completeOutput[nested] != 0;
+            if (nestedFaulted(step)) {
+                if (record)
+                    fillRecordAfter(*record, outputsBefore);
+                return;
+            }
         }
         for (const CompiledTransition& transition : step.transitions) {
-            if (evaluate(transition, {tokenValues, values}) && (!transition.waitsForComplete || complete)) {
+            divisionByZero = -1;
+            const bool holds = evaluate(transition, {tokenValues, values});
+            if (divisionByZero >= 0) { // the PLC stops in the middle of the CASE
+                transitionFaulted(step, transition);
+                if (record)
+                    fillRecordAfter(*record, outputsBefore);
+                return;
+            }
+            if (holds && (!transition.waitsForComplete || complete)) {
                 state = transition.targetNumber;
                 active = activeIndexFor(state);
                 entry = true;
@@ -841,6 +868,31 @@ void Simulator::Impl::scan(ScanRecord* record)
     updateEdgeMemories();
     if (record)
         fillRecordAfter(*record, outputsBefore);
+}
+
+// The engine went on with 0 for the quotient to the end of its call; the
+// scan stops after it, before the GEMMA transitions.
+bool Simulator::Impl::nestedFaulted(const CompiledStep& step)
+{
+    const std::optional<NestedEngine>& engine = engines[static_cast<std::size_t>(step.nestedIndex)];
+    if (!engine || !engine->divisionFault())
+        return false;
+    fault = *engine->divisionFault();
+    fault->scan = scanCount;
+    fault->stepId = step.source->id;
+    return true;
+}
+
+void Simulator::Impl::transitionFaulted(const CompiledStep& step, const CompiledTransition& transition)
+{
+    SimulationFault found;
+    found.scan = scanCount;
+    found.stepId = step.source->id;
+    found.transitionId = transition.source->id;
+    found.place = "the condition of " + transition.source->id;
+    found.text = transition.source->conditionText;
+    found.division = excerpt(found.text, transition.readable.at(divisionByZero).span);
+    fault = std::move(found);
 }
 
 void Simulator::Impl::fillRecordAfter(ScanRecord& record, const std::vector<Cell>& outputsBefore) const
@@ -994,6 +1046,10 @@ void Simulator::reset()
 ScanRecord Simulator::step()
 {
     ScanRecord record;
+    if (m_impl->fault) { // the task has stopped
+        record.scan = m_impl->scanCount;
+        return record;
+    }
     m_impl->scan(&record);
     if (m_impl->traceEnabled)
         m_impl->trace.push_back(record);
@@ -1005,7 +1061,7 @@ ScanRecord Simulator::step()
 void Simulator::run(std::int64_t scans)
 {
     const bool records = m_impl->traceEnabled || m_impl->callback;
-    for (std::int64_t i = 0; i < scans; ++i) {
+    for (std::int64_t i = 0; i < scans && !m_impl->fault; ++i) {
         if (records) {
             step();
         } else {
@@ -1258,6 +1314,11 @@ bool Simulator::token(std::string_view tokenName) const
             return m_impl->tokenValues[i] != 0;
     }
     return false;
+}
+
+const std::optional<SimulationFault>& Simulator::fault() const
+{
+    return m_impl->fault;
 }
 
 std::int64_t Simulator::scanCount() const

@@ -42,6 +42,7 @@
 #include "core/condition/conditionevaluator.h"
 #include "core/simulation/explanationreason.h"
 #include "core/simulation/nestedengine.h"
+#include "core/simulation/simulationfault.h"
 #include "core/codegen/gemmaprogram.h"
 #include "core/model/model.h"
 #include "core/model/status.h"
@@ -49,6 +50,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -228,6 +230,13 @@ public:
     std::vector<bool> tokenValues() const;
     bool token(std::string_view tokenName) const;       // FALSE for an unknown name (case-insensitive)
     std::int64_t scanCount() const;
+    // The run-time fault that stopped the run (an integer division or MOD by
+    // zero, as the PLC's task stops on it), nullopt while running. The scan
+    // that faults stops where the PLC does: in a GEMMA condition, before any
+    // transition fires (no token update, no output written after END_CASE);
+    // in a nested GRAFCET, after the FB's call (which went on with 0 as the
+    // quotient). After it step() and run() run no scan; reset() clears it.
+    const std::optional<SimulationFault>& fault() const;
     std::int64_t simulatedTimeMs() const;               // scanCount() x cycle time
     int cycleTimeMs() const;
     // The transition fired by the last scan, empty when none (or no scan yet).

@@ -3,6 +3,7 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
+#include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
@@ -813,6 +814,10 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
             }
             const bool direct = expression.at(node.left).kind == cond::NodeKind::Variable
                 || expression.at(node.right).kind == cond::NodeKind::Variable;
+            // A divisor that reads a variable may be zero: the PLC then faults
+            // (integer) or yields INF / NaN (REAL), which the representatives
+            // of the variable do not cover. A free BOOL over-approximates both.
+            other = other || cond::dividesByVariable(expression, index);
             if (!other && numeric.size() <= 1 && (numeric.empty() || direct)) {
                 n.role = NodeRole::Exact;
                 n.slot = numeric.empty() ? -1 : *numeric.begin();

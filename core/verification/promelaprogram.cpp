@@ -3,6 +3,7 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
+#include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
 #include "core/verification/property.h"
@@ -423,6 +424,7 @@ void ProgramPromela::evalLeafComparison(const cond::Expression& expression, int 
     const cond::Node& node = expression.at(index);
     const bool direct = expression.at(node.left).kind == NodeKind::Variable
         || expression.at(node.right).kind == NodeKind::Variable;
+    other = other || cond::dividesByVariable(expression, index); // as the explorer reads it
     if (other || numeric.size() > 1 || (!numeric.empty() && !direct)) {
         bool negated = false;
         const int k = opaqueIndex(canonicalText(expression, index, negated));

@@ -197,6 +197,12 @@ void SimulationSession::advance(std::int64_t scans)
     const bool hadPendingReleases = !m_pendingReleases.empty();
     std::int64_t ran = 0;
     for (; ran < scans; ++ran) {
+        // An integer division by zero stopped the program, as it stops the
+        // PLC's task (core::Simulator::fault()): no scan runs until a reset.
+        if (m_simulator->fault()) {
+            pause();
+            break;
+        }
         if (m_runner && m_simulator->scanCount() >= m_scenario->lastScan()) {
             finishReplay();
             break;

@@ -6,6 +6,7 @@
 #include "editor/valueproblemtext.h"
 
 #include "core/checks/diagnostic.h"
+#include "core/simulation/scenario.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -166,7 +167,11 @@ QString scenarioErrorMessage(const core::ScenarioError& error)
     const QString subject = fromStd(error.subject);
     switch (error.kind) {
     case Kind::ScanBelowOne: return SimulationText::tr("scans are numbered from 1");
-    case Kind::ScanTooLarge: return SimulationText::tr("scan number %1 is too large").arg(subject);
+    case Kind::ScanTooLarge:
+        //: %2: the highest scan number a scenario may name
+        return SimulationText::tr("scan number %1 is too large: a scenario runs at most %2 scans")
+            .arg(subject)
+            .arg(core::kMaxScenarioScan);
     case Kind::UnknownVariable: return SimulationText::tr("unknown variable '%1'").arg(subject);
     case Kind::InvalidValue:
         //: a variable, its IEC type (INT), then why the value does not fit it

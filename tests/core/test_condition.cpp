@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -880,9 +881,25 @@ TEST_CASE("evaluation follows ST semantics", "[condition]")
     CHECK(show("-7 / 2") == "-3");
     CHECK(show("-7 MOD 3") == "-1");
     CHECK(show("7 MOD -3") == "1");
+    // An integer division by zero is a PLC fault: evaluate() goes on with 0
+    // and names the node to whoever asks (the simulator stops there).
     CHECK(show("7 / 0") == "0");
     CHECK(show("7 MOD 0") == "0");
-    CHECK(show("1.5 / 0") == "0.0");
+    int fault = -1;
+    const Expression divides = parsed("1 + 7 MOD (3 - 3)");
+    evaluate(divides, {}, fault);
+    REQUIRE(fault >= 0);
+    CHECK(divides.at(fault).binaryOp == BinaryOp::Modulo);
+    fault = -1;
+    evaluate(parsed("7 / 2 + 1.5 / 0"), {}, fault);
+    CHECK(fault == -1); // a REAL division is no fault
+    // REAL division is IEEE 754, as on the PLC.
+    CHECK(std::get<double>(evaluateText("1.5 / 0")) == std::numeric_limits<double>::infinity());
+    CHECK(std::get<double>(evaluateText("-1.5 / 0")) == -std::numeric_limits<double>::infinity());
+    CHECK(std::isnan(std::get<double>(evaluateText("0.0 / 0.0"))));
+    CHECK(show("0.0 / 0.0 = 0.0 / 0.0") == "FALSE");
+    CHECK(show("0.0 / 0.0 < 1.0 OR 0.0 / 0.0 >= 1.0") == "FALSE");
+    CHECK(show("0.0 / 0.0 <> 0.0 / 0.0") == "TRUE");
     CHECK(show("1.5 * 2") == "3.0");
     CHECK(show("3 / 2.0") == "1.5");
     CHECK(show("1_000 + 1") == "1001");

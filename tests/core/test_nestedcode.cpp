@@ -278,3 +278,38 @@ TEST_CASE("The faulty copy of the example shows the nested checks", "[nested-cod
                                             "GG410", "GG411", "GG412", "GG413", "GG414", "GG415", "GG416",
                                             "GG417", "GG418", "GG420", "GG421", "GG422"});
 }
+
+TEST_CASE("An assigned value that does not fit names the variable and the value", "[nested-program]")
+{
+    Model model = smallModel();
+    REQUIRE(model.addVariable(samples::variable("S", IecType::Bool, VariableKind::Output)));
+    struct Case {
+        std::string action;
+        std::string message;
+    };
+    const std::vector<Case> cases = {
+        {"S := 3", "in action 2 of step 3 of F1: 3 is an integer, not a BOOL value: it cannot be assigned to 'S' (BOOL)"},
+        {"Count := 1.5",
+         "in action 2 of step 3 of F1: 1.5 is a real number, not an INT value: it cannot be assigned to 'Count' (INT)"},
+        {"Complete := Count + 1", "in action 2 of step 3 of F1: Count + 1 is an integer, not a BOOL value: it cannot "
+                                  "be assigned to Complete (BOOL)"},
+        // An undeclared target has no type: only that is reported (it used to
+        // add "the value does not fit '' (BOOL)").
+        {"Nope := 3", "in action 2 of step 3 of F1: 'Nope' is not a declared variable"},
+    };
+    for (const Case& c : cases) {
+        Model copy(model);
+        REQUIRE(copy.addGrafcetAction("F1", 3, {ActionTiming::OnActivation, c.action}));
+        const GemmaProgram program = buildGemmaProgram(copy);
+        INFO(c.action);
+        REQUIRE(codes(program) == std::vector<std::string>{"GG405"});
+        CHECK(firstNested(program).message == c.message);
+        CHECK(firstNested(program).actionIndex == 1);
+    }
+    Model assigned(model);
+    REQUIRE(assigned.addGrafcetAction("F1", 3, {ActionTiming::OnActivation, "S := 3"}));
+    const GemmaProblem problem = firstNested(buildGemmaProgram(assigned));
+    CHECK(problem.arguments == std::vector<std::string>{"F1", "action 2 of step 3 of F1", "S", "BOOL", "3"});
+    REQUIRE(problem.span.has_value());
+    CHECK(*problem.span == Span{5, 6});
+}

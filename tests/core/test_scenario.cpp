@@ -105,7 +105,16 @@ TEST_CASE("Scenario: malformed lines give file:line:column errors", "[simulation
         {"at 4: expect step F1 F2   # two steps", "s.txt:1:22: expected the end of the line, found 'F2'"},
         {"at 4: expect token T_F1_1_MEM = 1", "s.txt:1:33: expected TRUE or FALSE, found '1'"},
         {"at 4: expect entry TRUE", "s.txt:1:20: expected '=' after 'entry', found 'TRUE'"},
-        {"at 99999999999999: expect entry = TRUE", "s.txt:1:4: scan number 99999999999999 is too large"},
+        {"at 99999999999999: expect entry = TRUE",
+         "s.txt:1:4: scan number 99999999999999 is too large: a scenario runs at most 10000000 scans"},
+        // Every run is bounded: four billion scans would print gigabytes.
+        {"at 4000000000: expect entry = TRUE",
+         "s.txt:1:4: scan number 4000000000 is too large: a scenario runs at most 10000000 scans"},
+        {"at 10000001: expect entry = TRUE",
+         "s.txt:1:4: scan number 10000001 is too large: a scenario runs at most 10000000 scans"},
+        // Beyond 64 bits too, not 'expected a scan number'.
+        {"at  99999999999999999999999: expect entry = TRUE",
+         "s.txt:1:5: scan number 99999999999999999999999 is too large: a scenario runs at most 10000000 scans"},
     };
     for (const Case& c : cases) {
         const ScenarioParseResult parsed = parseScenario(c.line, "s.txt");
@@ -114,6 +123,10 @@ TEST_CASE("Scenario: malformed lines give file:line:column errors", "[simulation
         CHECK(parsed.errors[0].toString() == c.error);
         CHECK(parsed.scenario.actions.empty());
     }
+
+    // The bound itself is a scan like any other.
+    CHECK(parseScenario("at 10000000: expect entry = TRUE", "s.txt").errors.empty());
+    CHECK(parseScenario("at 10000000: expect entry = TRUE", "s.txt").scenario.lastScan() == kMaxScenarioScan);
 
     // Every bad line is reported, the good ones are kept; comments and blank lines are nothing.
     const ScenarioParseResult parsed = parseScenario("# title\n\nat 1: set A = TRUE\nat 2 set\n   \nat 3: expect\n"
@@ -141,7 +154,7 @@ TEST_CASE("Scenario: syntax errors carry their kind and the word found", "[simul
         {"at", Kind::ExpectedScanNumber, "", "", "expected a scan number after 'at', found the end of the line"},
         {"at 0: set A = TRUE", Kind::ScanBelowOne, "0", "", "scans are numbered from 1"},
         {"at 99999999999999: set A = TRUE", Kind::ScanTooLarge, "99999999999999", "99999999999999",
-         "scan number 99999999999999 is too large"},
+         "scan number 99999999999999 is too large: a scenario runs at most 10000000 scans"},
         {"at 3 set", Kind::ExpectedColon, "set", "", "expected ':' after the scan number, found 'set'"},
         {"at 3: put", Kind::ExpectedSetOrExpect, "put", "", "expected 'set' or 'expect', found 'put'"},
         {"at 3: set = 1", Kind::ExpectedSetItem, "=", "", "expected a variable name or 'complete STEP', found '='"},
