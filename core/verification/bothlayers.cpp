@@ -50,10 +50,12 @@ bool hasLongTimers(const GemmaProgram& program, int cycleMs)
 
 class BothLayers {
 public:
-    BothLayers(const Model& model, const VerificationOptions& options, VerificationResult& result)
+    BothLayers(const Model& model, const VerificationOptions& options, VerificationResult& result,
+               std::chrono::steady_clock::time_point deadline)
         : m_model(model)
         , m_options(options)
         , m_result(result)
+        , m_deadline(deadline)
         , m_program(buildGemmaProgram(model))
         , m_properties(propertiesToCheck(model, options))
     {
@@ -78,6 +80,7 @@ private:
     const Model& m_model;
     const VerificationOptions& m_options;
     VerificationResult& m_result;
+    std::chrono::steady_clock::time_point m_deadline; // the whole run's: both explorations share it
     GemmaProgram m_program;
     std::vector<std::string> m_properties;
     std::unique_ptr<explore::ProgramExplorer> m_explorer;
@@ -96,8 +99,7 @@ explore::Options BothLayers::explorationOptions(bool exactTime) const
     options.decidePriorities = m_program.hasNestedGrafcets();
     options.maxStates = m_options.maxProgramStates;
     options.cancelled = m_options.cancelled;
-    if (m_options.timeLimit.count() > 0)
-        options.deadline = std::chrono::steady_clock::now() + m_options.timeLimit;
+    options.deadline = m_deadline;
     return options;
 }
 
@@ -575,9 +577,10 @@ std::vector<std::string> propertiesToCheck(const Model& model, const Verificatio
     return texts;
 }
 
-void verifyBothLayers(const Model& model, const VerificationOptions& options, VerificationResult& result)
+void verifyBothLayers(const Model& model, const VerificationOptions& options, VerificationResult& result,
+                      std::chrono::steady_clock::time_point deadline)
 {
-    BothLayers(model, options, result).run();
+    BothLayers(model, options, result, deadline).run();
 }
 
 } // namespace core

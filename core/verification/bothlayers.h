@@ -8,6 +8,7 @@
 
 #include "core/verification/verification.h"
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -22,7 +23,11 @@ bool needsBothLayers(const Model& model, const VerificationOptions& options);
 // The properties a run checks: the model's, then the options'.
 std::vector<std::string> propertiesToCheck(const Model& model, const VerificationOptions& options);
 
-// Adds to (and, where said above, replaces in) `result`.
-void verifyBothLayers(const Model& model, const VerificationOptions& options, VerificationResult& result);
+// Adds to (and, where said above, replaces in) `result`. `deadline` ends
+// the explorations (the first, and the one with time counted in scans that
+// re-searches what the timer abstraction found): the end of the whole run's
+// time limit, so that the GEMMA layer and both layers share it.
+void verifyBothLayers(const Model& model, const VerificationOptions& options, VerificationResult& result,
+                      std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
 
 } // namespace core

@@ -10,6 +10,7 @@
 #include "core/simulation/simulator.h"
 #include "core/verification/property.h"
 #include "core/verification/satisfiability.h"
+#include "core/verification/tonscans.h"
 
 #include <algorithm>
 #include <bit>
@@ -146,9 +147,16 @@ struct CompiledGrafcet {
     std::vector<std::vector<CompiledAction>> onActivation, onDeactivation;
     std::vector<std::vector<const ExpressionInfo*>> continuous; // by step index, by continuous action: condition (nullptr: none)
     std::vector<CompiledNestedTransition> transitions;
+    // By step index: the usable transitions it is upstream of, the only ones
+    // an evolution reads while it is active; plus those without upstream step.
+    std::vector<std::vector<int>> transitionsFrom;
+    std::vector<int> transitionsWithoutUpstream;
     std::vector<int> timerStep; // by timer: step index
     std::vector<bool> timerShort; // duration <= cycle: elapses at its second run
-    std::vector<int> timerRuns;   // runs with IN TRUE after which Q is TRUE: ceil(duration / cycle) + 1
+    // Exact time: the runs with IN TRUE after which Q is TRUE (tonscans::runsToElapse),
+    // and the count stored, up to Options::maxCountedTimerRuns (past it: chosen).
+    std::vector<std::int64_t> timerRuns;
+    std::vector<std::int64_t> timerCountLimit;
     std::vector<std::vector<int>> timersOfStep;
     std::map<std::string, int> ownOutput; // upper name -> index into source->outputs
     int completeOutput = -1;              // index into source->outputs of Complete's drivers
@@ -183,6 +191,7 @@ struct OutputWrite {
 struct Layout {
     int tokens = 3;
     int x = 0, outputs = 0, complete = 0, timers = 0, bools = 0, prev = 0, size = 0;
+    int timerBytes = 2; // per TON: enough for the largest value stored (little-endian)
 };
 
 // One answer the chooser gave, in the order the scan asked.
@@ -252,6 +261,48 @@ struct ScanOutcome {
 
 using State = std::string;
 
+// What one evolution works with, kept between evolutions so that none
+// allocates or walks the whole GRAFCET: the active steps (sorted step
+// indices, maintained through the call) and lists of what it touches.
+struct EvolutionScratch {
+    static constexpr char kDeactivated = 1, kActivated = 2;
+    std::vector<int> active, candidates, fired, deactivated, activated, left, entered, next;
+    std::vector<char> stepMark;      // by step index, all 0 between evolutions
+
+    void mark(std::vector<int>& list, int step, char flag)
+    {
+        char& m = stepMark[static_cast<std::size_t>(step)];
+        if (!(m & flag))
+            list.push_back(step);
+        m = static_cast<char>(m | flag);
+    }
+    // active := active - left + entered (left are active, entered are not).
+    void updateActive()
+    {
+        next.clear();
+        std::set_difference(active.begin(), active.end(), left.begin(), left.end(), std::back_inserter(next));
+        active.clear();
+        std::merge(next.begin(), next.end(), entered.begin(), entered.end(), std::back_inserter(active));
+    }
+};
+
+// Which elements were seen, by index, with the list of their numbers that
+// Exploration reports: adding is constant time, however many there are.
+struct FlagSet {
+    std::vector<char> seen;
+    void add(int index, int number, std::vector<int>& numbers)
+    {
+        char& flag = seen[static_cast<std::size_t>(index)];
+        if (!flag)
+            numbers.push_back(number);
+        flag = 1;
+    }
+};
+
+// Thrown inside a scan when the time limit passed or the run was cancelled:
+// the scan under way is dropped, what was explored before it is kept.
+struct Interrupted {};
+
 // What a scan also evaluates before its CASE fires a transition, for GV103
 // and GV104: whether some input makes a transition's gated condition FALSE,
 // or lets a higher transition fire while a lower one's holds. Its reads are
@@ -296,19 +347,25 @@ struct ProgramExplorer::Impl {
                    ScanOutcome& outcome);
     void computeOutputs(const CompiledGrafcet& grafcet);
     bool timerElapsed(int timer);
-    int timerState(int timer) const;
-    void setTimerState(int timer, int value);
+    std::int64_t timerState(int timer) const;
+    void setTimerState(int timer, std::int64_t value);
     void runTimer(const CompiledGrafcet& g, int timer, bool in);
     void noteActive(const CompiledStep& step);
+    void noteEntered(const CompiledStep& step, const std::vector<int>& entered);
+    void pollInsideScan();
     bool gated(const CompiledTransition& transition, bool complete);
     void runProbe(const CompiledStep& step, bool complete);
 
     // --- exploring ----------------------------------------------------------------------
     void explore();
+    bool exploreState(std::size_t next, const State& from);
+    void finishExploration(const std::vector<bool>& reached);
     void addEvent(Event event, std::size_t state, bool gemmaFired);
     void analyseGraph();
     void probePriorities();
     void probeState(std::size_t state, std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound);
+    void probeScans(std::size_t state, std::size_t& leaves,
+                    std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound);
     bool worthProbing(int step, const std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound) const;
     bool outOfBudget();
 
@@ -348,6 +405,12 @@ struct ProgramExplorer::Impl {
     std::vector<std::uint64_t> numberPossible; // by slot: representatives still possible this scan (0: all)
     std::map<std::string, bool> opaqueCache;
     std::vector<int> timerCache;  // by timer of the active GRAFCET
+    EvolutionScratch evolution;
+    std::vector<FlagSet> nestedActiveSeen, nestedFiredSeen; // by grafcet: steps, transitions (by index)
+    // Work done inside scans since the last look at the clock and the cancel
+    // callback; looked at only while exploring (not while writing counterexamples).
+    unsigned workSincePoll = 0;
+    bool polling = false;
     const CompiledGrafcet* activeGrafcet = nullptr;
     const CompiledStep* activeStep = nullptr;
     bool firstEvolution = false;
@@ -550,16 +613,23 @@ void ProgramExplorer::Impl::compileSteps()
             compileGrafcet(step);
     }
     int maxX = 0, maxOutputs = 0, maxTimers = 0;
+    std::int64_t maxStored = 2; // abstract time: 0 stopped, 1 running, 2 elapsed
     for (const CompiledGrafcet& g : grafcets) {
         maxX = std::max(maxX, static_cast<int>(g.numbers.size()));
         maxOutputs = std::max(maxOutputs, static_cast<int>(g.source->outputs.size()));
         maxTimers = std::max(maxTimers, static_cast<int>(g.timerStep.size()));
+        if (options.exactTime) {
+            for (std::int64_t limit : g.timerCountLimit)
+                maxStored = std::max(maxStored, limit + 1); // + 1: elapsed, for a TON counted partly
+        }
     }
+    // Two bytes as before whenever they suffice: the states stay as small.
+    layout.timerBytes = maxStored <= 0xFFFF ? 2 : 4;
     layout.x = layout.tokens + static_cast<int>(tokens.size());
     layout.outputs = layout.x + maxX;
     layout.complete = layout.outputs + maxOutputs;
     layout.timers = layout.complete + 1;
-    layout.bools = layout.timers + 2 * maxTimers;
+    layout.bools = layout.timers + layout.timerBytes * maxTimers;
     layout.prev = layout.bools + static_cast<int>(stateBoolSlots.size());
     layout.size = layout.prev + static_cast<int>(edgeSlots.size());
     timerCache.assign(static_cast<std::size_t>(maxTimers), -1);
@@ -583,18 +653,25 @@ void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
         else
             g.ownOutput.emplace(upper(nested.outputs[o].variable), static_cast<int>(o));
     }
-    bool longTimer = false;
+    bool longTimer = false, countedPartly = false;
     for (const NestedTimer& timer : nested.timers) {
         g.timerStep.push_back(g.stepIndex(timer.step));
         g.timerShort.push_back(timer.durationMs <= cycleMs);
-        const std::int64_t cycle = std::max(1, cycleMs);
-        g.timerRuns.push_back(static_cast<int>(std::min<std::int64_t>((timer.durationMs + cycle - 1) / cycle + 1, 65535)));
+        const std::int64_t runs = tonscans::runsToElapse(timer.durationMs, cycleMs);
+        g.timerRuns.push_back(runs);
+        g.timerCountLimit.push_back(tonscans::countLimit(runs, options.maxCountedTimerRuns));
         longTimer = longTimer || timer.durationMs > cycleMs;
+        countedPartly = countedPartly || tonscans::countedPartly(runs, options.maxCountedTimerRuns);
     }
-    if (longTimer && !options.exactTime && std::find(result.abstractions.begin(), result.abstractions.end(),
-                               "timers longer than one cycle may or may not have elapsed")
-                         == result.abstractions.end())
-        result.abstractions.push_back("timers longer than one cycle may or may not have elapsed");
+    const auto note = [&](const std::string& line) {
+        if (std::find(result.abstractions.begin(), result.abstractions.end(), line) == result.abstractions.end())
+            result.abstractions.push_back(line);
+    };
+    if (longTimer && !options.exactTime)
+        note("timers longer than one cycle may or may not have elapsed");
+    if (countedPartly && options.exactTime)
+        note("timers longer than " + std::to_string(options.maxCountedTimerRuns)
+             + " scans are counted up to that many, then may or may not have elapsed");
     g.timersOfStep.resize(g.numbers.size());
     for (std::size_t t = 0; t < g.timerStep.size(); ++t) {
         if (g.timerStep[t] >= 0)
@@ -646,6 +723,20 @@ void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
             c.receptivity = info(t.receptivity.expression, nullptr, &step, &compiled, &t.timerOfNode);
         compiled.transitions.push_back(std::move(c));
     }
+    compiled.transitionsFrom.resize(compiled.numbers.size());
+    for (std::size_t t = 0; t < compiled.transitions.size(); ++t) {
+        const CompiledNestedTransition& c = compiled.transitions[t];
+        if (!c.receptivity)
+            continue; // never fires
+        if (c.upstream.empty())
+            compiled.transitionsWithoutUpstream.push_back(static_cast<int>(t));
+        // One upstream step is enough to find it: it is enabled only when all are active.
+        if (!c.upstream.empty() && c.upstream.front() >= 0)
+            compiled.transitionsFrom[static_cast<std::size_t>(c.upstream.front())].push_back(static_cast<int>(t));
+    }
+    nestedActiveSeen.push_back(FlagSet{std::vector<char>(compiled.numbers.size(), 0)});
+    nestedFiredSeen.push_back(FlagSet{std::vector<char>(compiled.transitions.size(), 0)});
+    evolution.stepMark.resize(std::max(evolution.stepMark.size(), compiled.numbers.size()), 0);
     const int stepIndex = static_cast<int>(&step - steps.data());
     for (std::size_t o = 0; o < nested.outputs.size(); ++o) {
         if (nested.outputs[o].isComplete)
@@ -1055,29 +1146,35 @@ bool ProgramExplorer::Impl::evalNode(const ExpressionInfo& info, int index)
 }
 
 // A TON's state: abstract 0 stopped, 1 running, 2 elapsed; exact: the runs
-// with IN TRUE so far, up to timerRuns.
-int ProgramExplorer::Impl::timerState(int timer) const
+// with IN TRUE so far, up to timerCountLimit, and timerCountLimit + 1 once a
+// TON counted partly was chosen elapsed.
+std::int64_t ProgramExplorer::Impl::timerState(int timer) const
 {
-    const auto at = static_cast<std::size_t>(layout.timers + 2 * timer);
-    return static_cast<unsigned char>(work[at]) | (static_cast<unsigned char>(work[at + 1]) << 8);
+    const auto at = static_cast<std::size_t>(layout.timers + layout.timerBytes * timer);
+    std::int64_t value = 0;
+    for (int b = layout.timerBytes - 1; b >= 0; --b)
+        value = (value << 8) | static_cast<unsigned char>(work[at + static_cast<std::size_t>(b)]);
+    return value;
 }
 
-void ProgramExplorer::Impl::setTimerState(int timer, int value)
+void ProgramExplorer::Impl::setTimerState(int timer, std::int64_t value)
 {
-    const auto at = static_cast<std::size_t>(layout.timers + 2 * timer);
-    work[at] = static_cast<char>(value & 0xFF);
-    work[at + 1] = static_cast<char>((value >> 8) & 0xFF);
+    const auto at = static_cast<std::size_t>(layout.timers + layout.timerBytes * timer);
+    for (int b = 0; b < layout.timerBytes; ++b)
+        work[at + static_cast<std::size_t>(b)] = static_cast<char>((value >> (8 * b)) & 0xFF);
 }
 
 // The TON run before the first evolution, IN := Xn as the previous call left it.
 void ProgramExplorer::Impl::runTimer(const CompiledGrafcet& g, int timer, bool in)
 {
     const auto t = static_cast<std::size_t>(timer);
-    const int state = timerState(timer);
+    const std::int64_t state = timerState(timer);
     if (!in)
         setTimerState(timer, 0);
+    else if (options.exactTime && state < g.timerCountLimit[t])
+        setTimerState(timer, state + 1);
     else if (options.exactTime)
-        setTimerState(timer, std::min(state + 1, g.timerRuns[t]));
+        ; // counted up to its limit, or chosen elapsed: stays
     else if (state == 0)
         setTimerState(timer, 1);
     else if (state == 1 && g.timerShort[t])
@@ -1088,17 +1185,24 @@ void ProgramExplorer::Impl::runTimer(const CompiledGrafcet& g, int timer, bool i
 bool ProgramExplorer::Impl::timerElapsed(int timer)
 {
     const auto t = static_cast<std::size_t>(timer);
-    const int state = timerState(timer);
-    if (options.exactTime)
-        return state >= activeGrafcet->timerRuns[t];
-    if (state == 2)
-        return true;
-    if (state != 1 || activeGrafcet->timerShort[t])
-        return false;
+    const std::int64_t state = timerState(timer);
+    if (options.exactTime) {
+        const std::int64_t limit = activeGrafcet->timerCountLimit[t];
+        if (!tonscans::countedPartly(activeGrafcet->timerRuns[t], limit))
+            return state >= activeGrafcet->timerRuns[t];
+        if (state != limit)
+            return state > limit;
+        // Counted as far as it goes, short of its duration: it may or may not have elapsed.
+    } else {
+        if (state == 2)
+            return true;
+        if (state != 1 || activeGrafcet->timerShort[t])
+            return false;
+    }
     if (timerCache[t] < 0) {
         timerCache[t] = choose(Decision::Kind::Timer, timer) ? 1 : 0;
         if (timerCache[t])
-            setTimerState(timer, 2);
+            setTimerState(timer, options.exactTime ? state + 1 : 2);
     }
     return timerCache[t] != 0;
 }
@@ -1108,9 +1212,35 @@ void ProgramExplorer::Impl::noteActive(const CompiledStep& step)
     const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
     std::vector<int>& seen = result.activeNestedSteps[step.source->id];
     for (std::size_t i = 0; i < g.numbers.size(); ++i) {
-        if (work[static_cast<std::size_t>(layout.x) + i] && std::find(seen.begin(), seen.end(), g.numbers[i]) == seen.end())
-            seen.push_back(g.numbers[i]);
+        if (work[static_cast<std::size_t>(layout.x) + i])
+            nestedActiveSeen[static_cast<std::size_t>(step.grafcet)].add(static_cast<int>(i), g.numbers[i], seen);
     }
+}
+
+// After an evolution: the steps active before it were noted when they entered.
+void ProgramExplorer::Impl::noteEntered(const CompiledStep& step, const std::vector<int>& entered)
+{
+    const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
+    std::vector<int>& seen = result.activeNestedSteps[step.source->id];
+    for (int i : entered)
+        nestedActiveSeen[static_cast<std::size_t>(step.grafcet)].add(i, g.numbers[static_cast<std::size_t>(i)], seen);
+}
+
+// The time limit and the cancel callback, looked at every kPollEvery units of
+// work inside a scan (an evolution), so that even one scan of a GRAFCET of
+// thousands of steps that never settles stops within the limit.
+void ProgramExplorer::Impl::pollInsideScan()
+{
+    constexpr unsigned kPollEvery = 64;
+    if (!polling || ++workSincePoll < kPollEvery)
+        return;
+    workSincePoll = 0;
+    if (options.cancelled && options.cancelled()) {
+        result.cancelled = true;
+        throw Interrupted{};
+    }
+    if (std::chrono::steady_clock::now() > options.deadline)
+        throw Interrupted{};
 }
 
 // A GEMMA transition's condition as the CASE reads it: AND Complete where it
@@ -1211,37 +1341,39 @@ void ProgramExplorer::Impl::initializationCall(const CompiledStep& step)
     noteActive(step);
 }
 
+// One evolution (spec §4.2, rule 2): only the transitions leaving an active
+// step are read, in transition order as the PLC's code reads them, so an
+// evolution costs what is active, not the size of the GRAFCET.
 bool ProgramExplorer::Impl::evolve(const CompiledStep& step, bool first, ScanOutcome& outcome)
 {
     const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
     const auto u = [](int i) { return static_cast<std::size_t>(i); };
+    pollInsideScan();
     firstEvolution = first;
-    std::vector<char> fires(g.transitions.size(), 0);
-    bool fired = false;
-    for (std::size_t t = 0; t < g.transitions.size(); ++t) {
-        const CompiledNestedTransition& transition = g.transitions[t];
-        if (!transition.receptivity)
-            continue;
+    EvolutionScratch& e = evolution;
+    e.candidates = g.transitionsWithoutUpstream;
+    for (int i : e.active)
+        e.candidates.insert(e.candidates.end(), g.transitionsFrom[u(i)].begin(), g.transitionsFrom[u(i)].end());
+    std::sort(e.candidates.begin(), e.candidates.end());
+    e.fired.clear();
+    for (int t : e.candidates) {
+        const CompiledNestedTransition& transition = g.transitions[u(t)];
         const bool enabled = std::all_of(transition.upstream.begin(), transition.upstream.end(),
                                          [&](int i) { return i >= 0 && work[u(layout.x + i)] != 0; });
-        if (enabled && eval(*transition.receptivity, -1)) {
-            fires[t] = 1;
-            fired = true;
-        }
+        if (enabled && eval(*transition.receptivity, -1))
+            e.fired.push_back(t);
     }
-    if (!fired)
+    if (e.fired.empty())
         return false;
-    std::vector<int>& firedSeen = result.firedNestedTransitions[step.source->id];
+    FlagSet& firedSeen = nestedFiredSeen[u(step.grafcet)];
     std::map<int, int> firstFiringFrom; // upstream step index -> transition
-    std::vector<char> deactivated(g.numbers.size(), 0), activated(g.numbers.size(), 0);
-    for (std::size_t t = 0; t < g.transitions.size(); ++t) {
-        if (!fires[t])
-            continue;
-        const int number = g.transitions[t].source->number;
-        if (std::find(firedSeen.begin(), firedSeen.end(), number) == firedSeen.end())
-            firedSeen.push_back(number);
-        for (int i : g.transitions[t].upstream) {
-            auto [it, inserted] = firstFiringFrom.emplace(i, static_cast<int>(t));
+    e.deactivated.clear();
+    e.activated.clear();
+    for (int t : e.fired) {
+        const int number = g.transitions[u(t)].source->number;
+        firedSeen.add(t, number, result.firedNestedTransitions[step.source->id]);
+        for (int i : g.transitions[u(t)].upstream) {
+            auto [it, inserted] = firstFiringFrom.emplace(i, t);
             if (!inserted) {
                 Event together;
                 together.kind = EventKind::SimultaneousBranches;
@@ -1249,39 +1381,48 @@ bool ProgramExplorer::Impl::evolve(const CompiledStep& step, bool first, ScanOut
                 together.numbers = {g.numbers[u(i)], g.transitions[u(it->second)].source->number, number};
                 outcome.events.push_back(together);
             }
-            deactivated[u(i)] = 1;
+            e.mark(e.deactivated, i, EvolutionScratch::kDeactivated);
         }
-        for (int i : g.transitions[t].downstream)
-            activated[u(i)] = 1;
+        for (int i : g.transitions[u(t)].downstream)
+            e.mark(e.activated, i, EvolutionScratch::kActivated);
     }
-    std::vector<char> left(g.numbers.size(), 0), entered(g.numbers.size(), 0);
-    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
-        const bool active = work[u(layout.x) + i] != 0;
-        left[i] = deactivated[i] && !activated[i];
-        entered[i] = activated[i] && !active;
-        if (activated[i] && active && !deactivated[i]) {
+    // Steps in index order, as the actions run: number order.
+    std::sort(e.deactivated.begin(), e.deactivated.end());
+    std::sort(e.activated.begin(), e.activated.end());
+    e.left.clear();
+    e.entered.clear();
+    for (int i : e.deactivated) {
+        if (!(e.stepMark[u(i)] & EvolutionScratch::kActivated))
+            e.left.push_back(i);
+    }
+    for (int i : e.activated) {
+        const bool active = work[u(layout.x + i)] != 0;
+        if (!active)
+            e.entered.push_back(i);
+        if (active && !(e.stepMark[u(i)] & EvolutionScratch::kDeactivated)) {
             Event unsafe;
             unsafe.kind = EventKind::UnsafeStep;
             unsafe.stepId = step.source->id;
-            unsafe.numbers = {g.numbers[i]};
+            unsafe.numbers = {g.numbers[u(i)]};
             outcome.events.push_back(unsafe);
         }
     }
-    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
-        char& x = work[u(layout.x) + i];
-        x = ((x && !left[i]) || entered[i]) ? 1 : 0;
-    }
-    noteActive(step);
+    for (int i : e.deactivated)
+        e.stepMark[u(i)] = 0;
+    for (int i : e.activated)
+        e.stepMark[u(i)] = 0;
+    for (int i : e.left)
+        work[u(layout.x + i)] = 0;
+    for (int i : e.entered)
+        work[u(layout.x + i)] = 1;
+    e.updateActive();
+    noteEntered(step, e.entered);
     firstEvolution = false;
-    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
-        if (left[i])
-            runStored(step, static_cast<int>(i), g.onDeactivation[i], outcome);
-    }
-    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
-        if (!entered[i])
-            continue;
-        runStored(step, static_cast<int>(i), g.onActivation[i], outcome);
-        for (int timer : g.timersOfStep[i]) {
+    for (int i : e.left)
+        runStored(step, i, g.onDeactivation[u(i)], outcome);
+    for (int i : e.entered) {
+        runStored(step, i, g.onActivation[u(i)], outcome);
+        for (int timer : g.timersOfStep[u(i)]) {
             setTimerState(timer, 0);
             timerCache[u(timer)] = -1;
         }
@@ -1296,6 +1437,11 @@ void ProgramExplorer::Impl::evolvingCall(const CompiledStep& step, ScanOutcome& 
     for (std::size_t t = 0; t < g.timerStep.size(); ++t) {
         const int i = g.timerStep[t];
         runTimer(g, static_cast<int>(t), i >= 0 && work[static_cast<std::size_t>(layout.x + i)] != 0);
+    }
+    evolution.active.clear();
+    for (std::size_t i = 0; i < g.numbers.size(); ++i) {
+        if (work[static_cast<std::size_t>(layout.x) + i])
+            evolution.active.push_back(static_cast<int>(i));
     }
     const bool untilStable = g.source->rule == EvolutionRule::UntilStable;
     int evolutions = 0;
@@ -1503,6 +1649,7 @@ void ProgramExplorer::Impl::explore()
     depth.push_back(0);
     edges.emplace_back();
     std::vector<bool> reached(steps.size(), false);
+    polling = true;
     for (std::size_t next = 0; next < statesByIndex.size(); ++next) {
         if ((next & 63) == 0 && outOfBudget()) {
             result.exhaustive = false;
@@ -1511,8 +1658,22 @@ void ProgramExplorer::Impl::explore()
         const State from = *statesByIndex[next];
         if (const int s = stepIndexOf(from); s >= 0)
             reached[static_cast<std::size_t>(s)] = true;
-        chooser.reset();
-        std::size_t leaves = 0;
+        if (!exploreState(next, from)) {
+            result.exhaustive = false;
+            break;
+        }
+    }
+    finishExploration(reached);
+    polling = false;
+}
+
+// Every scan of one state; false when the budget ran out (or the run was
+// cancelled) before they were all run.
+bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
+{
+    chooser.reset();
+    std::size_t leaves = 0;
+    try {
         do {
             ++scansRun;
             if ((++leaves & 1023) == 0 && outOfBudget())
@@ -1546,11 +1707,14 @@ void ProgramExplorer::Impl::explore()
             for (Event& event : outcome.events)
                 addEvent(std::move(event), next, outcome.firedTransition >= 0);
         } while (chooser.advance());
-        if (result.cancelled || ((leaves & 1023) == 0 && leaves > 0 && outOfBudget())) {
-            result.exhaustive = false;
-            break;
-        }
+    } catch (const Interrupted&) {
+        return false;
     }
+    return !(result.cancelled || ((leaves & 1023) == 0 && leaves > 0 && outOfBudget()));
+}
+
+void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
+{
     result.states = statesByIndex.size();
     for (const std::vector<Edge>& out : edges)
         result.scans += out.size();
@@ -1648,16 +1812,27 @@ bool ProgramExplorer::Impl::worthProbing(
 void ProgramExplorer::Impl::probeState(std::size_t state,
                                        std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound)
 {
-    const auto u = [](auto i) { return static_cast<std::size_t>(i); };
     if (outOfBudget()) {
         result.prioritiesDecided = false;
         return;
     }
-    const int active = stepIndexOf(*statesByIndex[state]);
-    const std::vector<CompiledTransition>& transitions = steps[u(active)].transitions;
-    probe = Probe{active, true};
+    probe = Probe{stepIndexOf(*statesByIndex[state]), true};
     chooser.reset();
     std::size_t leaves = 0;
+    try {
+        probeScans(state, leaves, overlapFound);
+    } catch (const Interrupted&) {
+        result.prioritiesDecided = false;
+    }
+    probe = Probe{};
+}
+
+void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
+                                       std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound)
+{
+    const auto u = [](auto i) { return static_cast<std::size_t>(i); };
+    const int active = probe.step;
+    const std::vector<CompiledTransition>& transitions = steps[u(active)].transitions;
     do {
         ++scansRun;
         if ((++leaves & 1023) == 0 && outOfBudget()) {
@@ -1689,7 +1864,6 @@ void ProgramExplorer::Impl::probeState(std::size_t state,
             result.events.push_back(std::move(event));
         }
     } while (chooser.advance());
-    probe = Probe{};
 }
 
 // The graph properties: from which states of a step something can still happen.

@@ -20,10 +20,13 @@
 //   constants on them; any other comparison (A + B > C) is a free BOOL;
 // - a TON whose duration is longer than a cycle may or may not have elapsed
 //   from its second run on; once elapsed it stays so while its step stays.
+//   With exactTime it is counted in scans instead, whatever its duration
+//   (up to Options::maxCountedTimerRuns runs, then chosen as above).
 // Every abstraction only adds behaviour: a "never" claim is never wrong.
 // Inactive nested GRAFCETs are not kept: the Initialization call of their
 // step's entry scan starts them afresh.
 
+#include "core/verification/tonscans.h"
 #include "core/verification/verification.h"
 
 #include <chrono>
@@ -51,6 +54,10 @@ struct Options {
     // Time counted in scans: each TON elapses exactly when the PLC's would
     // (more states), instead of "may or may not have elapsed".
     bool exactTime = false;
+    // Exact time: a TON is counted run by run up to this many runs (every
+    // TON by default: see core/verification/tonscans.h); one that needs more
+    // may or may not have elapsed from then on. Lower only to test that.
+    std::int64_t maxCountedTimerRuns = tonscans::kMaxCountedRuns;
     // Decide GV103 and GV104 (Exploration::alwaysTrueTransitions, overlaps).
     bool decidePriorities = true;
     std::size_t maxStates = 1'000'000;

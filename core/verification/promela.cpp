@@ -3,6 +3,7 @@
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
 #include "core/codegen/gemmaprogram.h"
+#include "core/codegen/stgenerator.h"
 #include "core/model/model.h"
 #include "core/condition/symboltable.h"
 
@@ -36,16 +37,7 @@ constexpr int kNoUntil = 255;
 // Text safe inside a Promela (C preprocessor) comment, on one line.
 std::string commentText(std::string_view text)
 {
-    std::string out;
-    for (char c : text) {
-        const bool lineBreak = c == '\n' || c == '\r' || c == '\t' || c == '\f' || c == '\v';
-        out += lineBreak ? ' ' : c;
-        if (out.size() >= 2 && out[out.size() - 2] == '*' && out.back() == '/')
-            out.insert(out.size() - 1, " ");
-        if (out.size() >= 2 && out[out.size() - 2] == '/' && out.back() == '*')
-            out.insert(out.size() - 1, " ");
-    }
-    return out;
+    return promelaComment(text);
 }
 
 std::string stepKind(StepType type)
@@ -1200,6 +1192,18 @@ SpinReport readSpinReport(std::string_view panOutput)
         report.problem = "pan's output has no \"unreached in proctype scan\" report";
     report.complete = report.problem.empty();
     return report;
+}
+
+std::string promelaComment(std::string_view text)
+{
+    std::string out;
+    for (char c : escapeComment(std::string(text))) {
+        out += c;
+        const std::size_t n = out.size();
+        if (n >= 2 && ((out[n - 2] == '*' && out[n - 1] == '/') || (out[n - 2] == '/' && out[n - 1] == '*')))
+            out.insert(n - 1, " ");
+    }
+    return out;
 }
 
 } // namespace core

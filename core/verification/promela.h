@@ -146,4 +146,9 @@ struct SpinReport {
 
 SpinReport readSpinReport(std::string_view panOutput);
 
+// Text safe inside a Promela comment, on one line: escaped as the ST writer
+// escapes its comments (core::escapeComment: no control character, bidi
+// override or invalid UTF-8 byte survives), then no `/*` or `*/` either.
+std::string promelaComment(std::string_view text);
+
 } // namespace core

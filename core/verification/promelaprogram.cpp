@@ -8,6 +8,7 @@
 #include "core/model/model.h"
 #include "core/verification/property.h"
 #include "core/verification/satisfiability.h"
+#include "core/verification/tonscans.h"
 
 #include <algorithm>
 #include <cctype>
@@ -29,17 +30,9 @@ std::string upperText(std::string_view text)
     return out;
 }
 
-// Text safe inside a Promela (C preprocessor) comment, on one line.
 std::string commentSafe(std::string_view text)
 {
-    std::string out;
-    for (char c : text) {
-        out += (c == '\n' || c == '\r' || c == '\t' || c == '\f' || c == '\v') ? ' ' : c;
-        const std::size_t n = out.size();
-        if (n >= 2 && ((out[n - 2] == '*' && out[n - 1] == '/') || (out[n - 2] == '/' && out[n - 1] == '*')))
-            out.insert(n - 1, " ");
-    }
-    return out;
+    return promelaComment(text);
 }
 
 bool isComparisonOp(BinaryOp op)
@@ -178,6 +171,8 @@ private:
     void writeLaterConditions(const GemmaStep& step, std::size_t fired);
     void writeInitialization(const GemmaStep& step);
     void writeEvolvingCall(const GemmaStep& step);
+    void writeCountedTimerRead(const GemmaStep& step, std::size_t k, const NestedTimer& ton, const std::string& result,
+                               const std::string& text);
     void writeEvolution(const GemmaStep& step);
     void writeOutputs(const GemmaStep& step);
     void writeStored(const GemmaStep& step, int stepNumber, const std::vector<NestedAction>& actions, bool reportRaces);
@@ -205,6 +200,7 @@ private:
     int m_cycleMs = 20;
     int m_maxDepth = 1;
     std::size_t m_maxTransitions = 1, m_maxSteps = 1, m_maxOutputs = 1;
+    int m_maxEvolutions = 1; // gEvolutions counts up to it: a byte holds only 255
     std::vector<std::string> m_storedWritten; // Stored variables some stored action writes
     Writer m_out;
     std::vector<PromelaMarker> m_markers;
@@ -330,6 +326,7 @@ void ProgramPromela::collectAll()
         m_maxTransitions = std::max(m_maxTransitions, g.transitions.size());
         m_maxSteps = std::max(m_maxSteps, g.steps.size());
         m_maxOutputs = std::max(m_maxOutputs, g.outputs.size());
+        m_maxEvolutions = std::max(m_maxEvolutions, g.maxEvolutions);
         for (const NestedTransition& t : g.transitions) {
             if (t.usable)
                 collectComparisons(t.receptivity.expression);
@@ -508,9 +505,7 @@ void ProgramPromela::eval(const Context& context, const cond::Expression& expres
         m_out.line(":: " + xName(*context.step, node.number) + " ->");
         m_out.in();
         if (m_options.exactTime) {
-            const std::int64_t cycle = std::max(1, m_cycleMs);
-            const std::int64_t runs = std::min<std::int64_t>((ton.durationMs + cycle - 1) / cycle + 1, 65535);
-            m_out.line(result + " = (" + t + " >= " + std::to_string(runs) + "); /* " + commentSafe(node.text) + " */");
+            writeCountedTimerRead(*context.step, k, ton, result, node.text);
         } else if (ton.durationMs > m_cycleMs) {
             const std::string chosen = timerChosenName(*context.step, k);
             m_out.line("if /* " + commentSafe(node.text) + ": running, it may or may not have elapsed */");
@@ -761,7 +756,10 @@ void ProgramPromela::writeDeclarations()
     m_out.line("bit ev[" + std::to_string(m_maxDepth) + "]; /* evaluation */");
     m_out.line("bit gFi[" + std::to_string(m_maxTransitions) + "], gLeft[" + std::to_string(m_maxSteps) + "], gEnter["
                + std::to_string(m_maxSteps) + "], gOut[" + std::to_string(m_maxOutputs) + "];");
-    m_out.line("byte gFrom, gEvolutions, mark;");
+    if (m_maxEvolutions <= 255)
+        m_out.line("byte gFrom, gEvolutions, mark;");
+    else
+        m_out.line("byte gFrom, mark; int gEvolutions;");
     m_out.line("bit gComplete, gFirst, gFired, gD1;");
     m_out.line("");
 }
@@ -1159,19 +1157,41 @@ void ProgramPromela::writeEvolution(const GemmaStep& step)
     m_out.line("fi;");
 }
 
+// t/Xn with time counted in scans: TRUE once the TON has run as often as its
+// duration takes; one counted only up to maxCountedTimerRuns may or may not
+// have elapsed from then on (the explorer's tonscans rule).
+void ProgramPromela::writeCountedTimerRead(const GemmaStep& step, std::size_t k, const NestedTimer& ton,
+                                           const std::string& result, const std::string& text)
+{
+    const std::string t = timerName(step, k);
+    const std::int64_t runs = tonscans::runsToElapse(ton.durationMs, m_cycleMs);
+    if (!tonscans::countedPartly(runs, m_options.maxCountedTimerRuns)) {
+        m_out.line(result + " = (" + t + " >= " + std::to_string(runs) + "); /* " + commentSafe(text) + " */");
+        return;
+    }
+    const std::string limit = std::to_string(m_options.maxCountedTimerRuns);
+    const std::string chosen = timerChosenName(step, k);
+    m_out.line("if /* " + commentSafe(text) + ": counted up to " + limit + " runs, it may or may not have elapsed */");
+    m_out.line(":: " + t + " == " + limit + " && !" + chosen + " -> " + chosen + " = 1; if :: " + t + " = "
+               + std::to_string(m_options.maxCountedTimerRuns + 1) + " :: skip fi;");
+    m_out.line(":: else -> skip;");
+    m_out.line("fi;");
+    m_out.line(result + " = (" + t + " > " + limit + ");");
+}
+
 void ProgramPromela::writeEvolvingCall(const GemmaStep& step)
 {
     const NestedGrafcet& g = *step.nested;
     m_out.line("/* the call of " + step.id + "'s FB: its TONs with X as the last call left it */");
-    const std::int64_t cycle = std::max(1, m_cycleMs);
     for (std::size_t k = 0; k < g.timers.size(); ++k) {
         const NestedTimer& ton = g.timers[k];
         const std::string t = timerName(step, k);
         const std::string in = g.step(ton.step) ? xName(step, ton.step) : std::string("0");
         m_out.line(timerChosenName(step, k) + " = 0;");
         if (m_options.exactTime) {
-            const std::int64_t runs = std::min<std::int64_t>((ton.durationMs + cycle - 1) / cycle + 1, 65535);
-            m_out.line("if :: " + in + " && " + t + " < " + std::to_string(runs) + " -> " + t + "++ :: " + in
+            const std::int64_t limit = tonscans::countLimit(tonscans::runsToElapse(ton.durationMs, m_cycleMs),
+                                                            m_options.maxCountedTimerRuns);
+            m_out.line("if :: " + in + " && " + t + " < " + std::to_string(limit) + " -> " + t + "++ :: " + in
                        + " -> skip :: else -> " + t + " = 0 fi;");
         } else if (ton.durationMs <= m_cycleMs) {
             m_out.line("if :: " + in + " && " + t + " < 2 -> " + t + "++ :: " + in + " -> skip :: else -> " + t + " = 0 fi;");

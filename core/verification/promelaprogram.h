@@ -20,7 +20,8 @@
 //   variable takes one value per combination of the comparisons with
 //   constants on it (n_V indexes them); any other comparison is a free BOOL
 //   per canonical text (o_k); a TON longer than one cycle may or may not have
-//   elapsed from its second run on, unless time is counted in scans.
+//   elapsed from its second run on, unless time is counted in scans (an
+//   `int` per TON, whatever its duration: core/verification/tonscans.h).
 // - each claim of the exploration has a marker line (PromelaMarker): a
 //   statement alone on its line, reached in SPIN's exhaustive search iff the
 //   claim holds somewhere; readSpinReport and SpinReport::reached read them.
@@ -29,6 +30,7 @@
 //   the generated code does not, and nothing read there changes the state.
 
 #include "core/verification/promela.h"
+#include "core/verification/tonscans.h"
 
 #include <map>
 #include <string>
@@ -46,6 +48,9 @@ struct ProgramPromelaOptions {
     std::vector<std::string> properties;
     // TONs elapse in exactly the scan the PLC's would, counted in scans.
     bool exactTime = false;
+    // With exactTime: a TON is counted up to this many runs, then may or may
+    // not have elapsed (explore::Options::maxCountedTimerRuns, which it must equal).
+    std::int64_t maxCountedTimerRuns = tonscans::kMaxCountedRuns;
 };
 
 PromelaModel buildProgramPromela(const Model& model, const ProgramPromelaOptions& options = {});

@@ -1132,10 +1132,13 @@ bool VerificationResult::violated() const
 
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options)
 {
+    // One time limit for the whole run, both layers included.
+    const auto deadline = options.timeLimit.count() > 0 ? std::chrono::steady_clock::now() + options.timeLimit
+                                                         : std::chrono::steady_clock::time_point::max();
     Verifier verifier(model, options);
     VerificationResult result = verifier.run();
     if (!result.cancelled && needsBothLayers(model, options))
-        verifyBothLayers(model, options, result);
+        verifyBothLayers(model, options, result, deadline);
     return result;
 }
 

@@ -58,6 +58,17 @@ core::Model soundMachine()
     return model;
 }
 
+core::Model longTimerMachine()
+{
+    core::Model model = nestedMachine();
+    require(model.addVariable(variable("Out1", core::IecType::Bool, core::VariableKind::Output)));
+    addMachineStep(model, 1, true);
+    addMachineStep(model, 2, false, {{ActionTiming::Continuous, "N Out1"}, {ActionTiming::OnActivation, "S Complete"}});
+    addMachineTransition(model, 1, {1}, {2}, "25m/X1 AND NOT 30m/X1");
+    addMachineTransition(model, 2, {2}, {1}, "A");
+    return model;
+}
+
 core::Model overlapMachine()
 {
     core::Model model = soundMachine();

@@ -69,6 +69,10 @@ void addMachineTransition(core::Model& model, int number, std::vector<int> up, s
                           std::string receptivity);
 // nestedMachine with 1 --A--> 2 (N Lamp, S Complete) --NOT A--> 1: a sound GRAFCET that completes.
 core::Model soundMachine();
+// nestedMachine with 1 --25m/X1 AND NOT 30m/X1--> 2 (N Out1, S Complete) --A--> 1
+// and the output Out1, at the 20 ms cycle: step 2 becomes active in scan
+// 75,002 (the 25 minutes are 75,000 cycles, far more than 16 bits count).
+core::Model longTimerMachine();
 // soundMachine whose step 1 sets Flag on activation, with F1 -> A2 negated
 // (not waiting for Complete) on Flag, and F1 -> A3 on B: F1 -> A2 is always
 // TRUE on both layers, though Flag is free on the GEMMA layer (GV103).

@@ -2,6 +2,7 @@
 
 #include "core/model/model.h"
 #include "core/verification/promela.h"
+#include "core/verification/promelaprogram.h"
 #include "hostilemodels.h"
 
 #include <regex>
@@ -54,6 +55,27 @@ TEST_CASE("Promela of models with hostile user text names only identifiers", "[p
             if (match->str().rfind("in_", 0) == 0) // tk_ names are the generator's own: X_F1_2_MEM
                 CHECK(identifierProblem(name) == IdentifierProblem::None);
         }
+    }
+}
+
+// The model name goes into the header comment of both Promela models: no
+// control character, bidi override or comment delimiter may survive there.
+TEST_CASE("Promela headers escape the model name as the ST writer escapes comments", "[promela]")
+{
+    Model model;
+    const std::string hostile = std::string("Cell\0one", 8) + "\x1b[31m red \xE2\x80\xAE evil */ x /* y\nnext";
+    REQUIRE(model.setName(hostile));
+    for (const std::string& text : {exportPromela(model), buildProgramPromela(model).text}) {
+        const std::string header = text.substr(0, text.find("*/", 2) + 2);
+        INFO(header);
+        CHECK(header.find("Cell?one") != std::string::npos);
+        CHECK(header.find('\0') == std::string::npos);
+        CHECK(header.find('\x1b') == std::string::npos);
+        CHECK(header.find("\xE2\x80\xAE") == std::string::npos);
+        CHECK(header.find("evil * / x / * y next") != std::string::npos);
+        promelaCode(text); // every comment closes where it should
+        const std::string code = promelaCode(text);
+        CHECK(code.find("evil") == std::string::npos);
     }
 }
 

@@ -394,3 +394,32 @@ core::Model bothLayersStressModel(int branchLength)
 }
 
 } // namespace factory
+
+namespace factory {
+
+core::Model unstableCycleModel(int steps, int inputs)
+{
+    core::Model model;
+    require(model.addVariable(variable("Start", core::IecType::Bool, "", "")));
+    for (int k = 0; k < inputs; ++k)
+        require(model.addVariable(variable("In" + std::to_string(k), core::IecType::Bool, "", "")));
+    require(model.setInitialStep("A1"));
+    require(model.setStepType("F1", core::StepType::Macro));
+    require(model.setCondition("A1->F1", "Start"));
+    model.setEvolutionRule(core::EvolutionRule::UntilStable);
+    core::Grafcet grafcet;
+    for (int n = 1; n <= steps; ++n)
+        require(grafcet.addStep({n, n == 1, "", {}}));
+    for (int n = 1; n <= steps; ++n) {
+        core::GrafcetTransition transition;
+        transition.number = n;
+        transition.upstream = {n};
+        transition.downstream = {n < steps ? n + 1 : 1};
+        transition.receptivity = inputs == 0 ? "TRUE" : "In" + std::to_string(n % inputs);
+        require(grafcet.addTransition(transition));
+    }
+    require(model.setGrafcet("F1", std::move(grafcet)));
+    return model;
+}
+
+} // namespace factory

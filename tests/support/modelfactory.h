@@ -63,6 +63,14 @@ core::Model longGrafcetModel(int steps);
 // -> F1 -> F5 -> F4 -> A6 -> A1 with F1 -> D3 and the emergency stop.
 core::Model bothLayersStressModel(int branchLength = 3);
 
+// For the verifier's budget inside one scan (issue 32): the template with
+// A1 --Start--> F1, F1 a macro-step whose GRAFCET is a cycle of `steps`
+// steps (1 initial) evolving until stable, transition n from step n to n + 1
+// (the last back to 1) with the receptivity TRUE when `inputs` is 0, else
+// the BOOL input In<n mod inputs>. With TRUE everywhere no scan of F1 ever
+// settles: each runs `steps` + 1 evolutions and ends Unstable.
+core::Model unstableCycleModel(int steps, int inputs);
+
 // Applies `count` random operations (valid and invalid ones: the model must
 // refuse the latter) and returns how many the model accepted.
 int applyRandomEdits(core::Model& model, std::mt19937& random, int count);
