@@ -6,8 +6,9 @@
 
 namespace cli {
 
-// Exit codes, documented in the README.
-enum ExitCode { Success = 0, ModelHasErrors = 1, UnreadableInput = 2, UsageError = 64 };
+// Exit codes, documented in the README (and verify's in docs/verification.md).
+// Undecided: verify decided neither way about something and found nothing violated.
+enum ExitCode { Success = 0, ModelHasErrors = 1, UnreadableInput = 2, Undecided = 3, UsageError = 64 };
 
 struct Streams {
     std::ostream& out;
