@@ -74,6 +74,8 @@ std::vector<cond::Value> inputValues(Simulator probe, std::size_t index, const s
         return {cond::Value{false}, cond::Value{true}};
     std::vector<cond::Value> values{probe.variableValue(index)};
     const auto add = [&](double number) {
+        if (!isRealType(type) && !(number > -9.0e18 && number < 9.0e18))
+            return; // no integer type holds it (and the conversion would be undefined)
         const cond::Value value = isRealType(type) ? cond::Value{number}
                                                    : cond::Value{static_cast<std::int64_t>(number)};
         if (values.size() >= kMaxValuesPerNumber || !probe.setVariableAt(index, value).ok)
