@@ -132,7 +132,8 @@ QStringList VerificationRunner::sessionAutomaticSteps() const
     if (!simulator)
         return steps;
     for (const std::string& step : simulator->nestedSteps()) {
-        if (simulator->completeMode(step) == core::CompleteMode::Automatic)
+        // A step with a nested GRAFCET takes its Complete from it: no assumption applies.
+        if (!simulator->hasGrafcet(step) && simulator->completeMode(step) == core::CompleteMode::Automatic)
             steps << QString::fromStdString(step);
     }
     return steps;

@@ -6,9 +6,11 @@
 
 namespace cli {
 
-// Exit codes, documented in the README.
-// RunTimeFault: `simulate` stopped on an integer division by zero, as the PLC would.
-enum ExitCode { Success = 0, ModelHasErrors = 1, UnreadableInput = 2, RunTimeFault = 3, UsageError = 64 };
+// Exit codes, documented in docs/cli.md (verify's in docs/verification.md).
+// 3 says the command could not conclude: `simulate` stopped on a run-time fault
+// (an integer division by zero, as the PLC would), or `verify` decided neither way
+// about something and found nothing violated.
+enum ExitCode { Success = 0, ModelHasErrors = 1, UnreadableInput = 2, RunTimeFault = 3, Undecided = 3, UsageError = 64 };
 
 struct Streams {
     std::ostream& out;

@@ -56,7 +56,8 @@ std::string joined(const std::vector<std::string>& ids)
 }
 
 // Why `id` cannot be assumed automatic, empty when it can: only a visible
-// macro or enclosing step has a Complete output in the generated program.
+// macro or enclosing step has a Complete output in the generated program,
+// and one with a nested GRAFCET takes it from its GRAFCET.
 std::string notNestedReason(const core::Model& model, const std::string& id)
 {
     const core::Step* step = model.step(id);
@@ -66,15 +67,18 @@ std::string notNestedReason(const core::Model& model, const std::string& id)
         return id + " is a simple step: it has no Complete";
     if (step->hidden)
         return id + " is hidden: it is not in the generated program";
+    if (model.effectiveGrafcet(id))
+        return id + " has a nested GRAFCET: its Complete comes from the GRAFCET, not from an assumption";
     return {};
 }
 
-// The steps that have a Complete output: visible macro and enclosing steps, state order.
+// The steps whose Complete can be assumed: visible macro and enclosing steps
+// without nested GRAFCET, state order.
 std::vector<std::string> nestedSteps(const core::Model& model)
 {
     std::vector<std::string> nested;
     for (const core::GemmaStep& step : core::buildGemmaProgram(model).steps) {
-        if (step.hasNestedBehaviour())
+        if (step.hasNestedBehaviour() && !step.nested)
             nested.push_back(step.id);
     }
     return nested;
@@ -94,7 +98,7 @@ std::optional<std::vector<std::string>> parseCompleteAutomatic(const std::string
         if (id.empty())
             break;
         if (const std::string reason = notNestedReason(model, id); !reason.empty()) {
-            err << "ggstudio-cli: --complete-automatic: " << reason << " (nested steps: "
+            err << "ggstudio-cli: --complete-automatic: " << reason << " (steps it applies to: "
                 << (nested.empty() ? std::string("none") : joined(nested)) << ")" << lineEnd;
             return std::nullopt;
         }
@@ -126,6 +130,48 @@ std::string promelaText(const core::Model& model, const core::VerificationOption
     program.properties = core::propertiesToCheck(model, options);
     program.exactTime = options.exactTime;
     return core::buildProgramPromela(model, program).text;
+}
+
+// Writes a counterexample that replays, and says where; one that does not
+// replay is not written (it would show nothing). False when the write failed,
+// which is reported on `err`.
+bool writeCounterexample(const core::Counterexample& counterexample, const core::VerificationFinding& finding,
+                         const std::string& directory, std::set<std::string>& used, Streams streams)
+{
+    if (!counterexample.confirmed) {
+        streams.out << "    counterexample: not written: its run does not replay in the simulator" << lineEnd;
+        return true;
+    }
+    const std::string file = (std::filesystem::path(directory) / counterexampleName(finding, used)).string();
+    if (core::Status status = core::writeFileAtomically(file, counterexample.text); !status) {
+        streams.err << file << ": " << status.message << lineEnd;
+        streams.out << "    counterexample: not written: " << file << ": " << status.message << lineEnd;
+        return false;
+    }
+    streams.out << "    counterexample: " << file << " (" << counterexample.scans << " scans)" << lineEnd;
+    return true;
+}
+
+const char* outcomeName(core::PropertyOutcome outcome)
+{
+    switch (outcome) {
+    case core::PropertyOutcome::Holds: return "holds";
+    case core::PropertyOutcome::Violated: return "violated";
+    case core::PropertyOutcome::Undecided: return "undecided";
+    }
+    return "undecided";
+}
+
+// "property 2 'never Count > 2': undecided (why)", one line per property.
+void printPropertyVerdicts(const std::string& path, const core::VerificationResult& result, std::ostream& out)
+{
+    for (std::size_t i = 0; i < result.propertyVerdicts.size() && i < result.properties.size(); ++i) {
+        const core::PropertyVerdict& verdict = result.propertyVerdicts[i];
+        out << path << ": property " << i + 1 << " '" << result.properties[i] << "': " << outcomeName(verdict.outcome);
+        if (!verdict.reason.empty())
+            out << " (" << verdict.reason << ")";
+        out << lineEnd;
+    }
 }
 
 } // namespace
@@ -203,23 +249,18 @@ int commandVerify(const Arguments& args, Streams streams)
         }
     }
     const core::VerificationResult result = core::verifyModel(*loaded.model, options);
+    bool writeFailed = false;
     std::set<std::string> used;
     for (const core::VerificationFinding& finding : result.findings) {
         streams.out << path << ": " << core::verificationElementLabel(finding) << ": "
                     << core::severityName(finding.severity) << ": " << finding.code << ": " << finding.message
                     << lineEnd;
-        if (!directory || !finding.counterexample)
-            continue;
-        const std::string file =
-            (std::filesystem::path(*directory) / counterexampleName(finding, used)).string();
-        if (core::Status status = core::writeFileAtomically(file, finding.counterexample->text); !status) {
-            streams.err << file << ": " << status.message << lineEnd;
-            return UnreadableInput;
-        }
-        streams.out << "    counterexample: " << file << " (" << finding.counterexample->scans << " scans)" << lineEnd;
+        if (directory && finding.counterexample)
+            writeFailed |= !writeCounterexample(*finding.counterexample, finding, *directory, used, streams);
     }
     for (const std::string& abstraction : result.abstractions)
         streams.out << path << ": abstracted: " << abstraction << lineEnd;
+    printPropertyVerdicts(path, result, streams.out);
     streams.out << path << ": " << result.reachableSteps.size() << " reachable steps, " << result.configurations
                 << " reachable configurations, ";
     if (result.bothLayers)
@@ -228,7 +269,11 @@ int commandVerify(const Arguments& args, Streams streams)
     if (!automatic.empty())
         streams.out << ", Complete automatic: " << joined(automatic);
     streams.out << lineEnd;
-    return result.violated() ? ModelHasErrors : Success;
+    if (writeFailed)
+        return UnreadableInput; // the output is incomplete: that comes first
+    if (result.violated())
+        return ModelHasErrors;
+    return result.undecided() ? Undecided : Success;
 }
 
 } // namespace cli

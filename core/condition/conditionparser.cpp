@@ -170,6 +170,13 @@ Token scanNestedToken(std::string_view text, std::size_t begin)
     return token;
 }
 
+// X followed by digits, as stepActivityNumber reads them, X0 included.
+bool isStepActivityName(std::string_view name)
+{
+    return name.size() >= 2 && name.size() <= 10 && (name[0] == 'X' || name[0] == 'x')
+        && std::all_of(name.begin() + 1, name.end(), [](char c) { return isDigit(c); });
+}
+
 // What the Property context adds: `->`, `in`, `S.Xn`.
 Token scanPropertyToken(std::string_view text, std::size_t begin)
 {
@@ -179,8 +186,10 @@ Token scanPropertyToken(std::string_view text, std::size_t begin)
     if (token.kind == TokenKind::Identifier && equalsIgnoreCase(token.text, "in"))
         token.kind = TokenKind::In;
     else if (token.kind == TokenKind::Invalid) {
+        // S.Xn with any n, 0 included: a GRAFCET without step n is the
+        // property checker's to name (GP005), not "a qualified name".
         const std::size_t dot = token.text.find('.');
-        if (dot != std::string_view::npos && dot > 0 && stepActivityNumber(token.text.substr(dot + 1)) > 0
+        if (dot != std::string_view::npos && dot > 0 && isStepActivityName(token.text.substr(dot + 1))
             && token.text.substr(0, dot).find_first_of("#") == std::string_view::npos)
             token.kind = TokenKind::NestedStep;
     }

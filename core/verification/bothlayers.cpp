@@ -2,6 +2,7 @@
 
 #include "core/codegen/gemmaprogram.h"
 #include "core/model/model.h"
+#include "core/verification/concretesearch.h"
 #include "core/verification/programexplorer.h"
 #include "core/verification/property.h"
 
@@ -70,6 +71,8 @@ private:
     void addNestedFacts();
     void addEvents();
     void addProperties();
+    bool confirmPropertyViolation(VerificationFinding& f);
+    void addUndecided(std::size_t property, const std::string& reason);
     void add(VerificationFinding finding, const Event* event);
     VerificationFinding finding(const Event& event) const;
     std::vector<std::string> waitingTransitions(const std::string& stepId) const;
@@ -88,6 +91,7 @@ private:
     std::set<std::string> m_exactKeys;
     std::vector<VerificationFinding> m_added;
     std::set<int> m_violated;
+    std::map<int, std::string> m_undecided; // property -> why its abstract violation was not shown real
 };
 
 explore::Options BothLayers::explorationOptions(bool exactTime) const
@@ -487,6 +491,8 @@ void BothLayers::add(VerificationFinding f, const Event* event)
         }
         (void)witness;
         f.counterexample = std::move(counterexample);
+        if (f.code == code::kPropertyViolated && !f.counterexample->confirmed && !confirmPropertyViolation(f))
+            return;
         if (!f.counterexample->confirmed) {
             f.severity = Severity::Info;
             f.message += " (not confirmed: the run found under the abstractions does not replay in the simulator)";
@@ -495,6 +501,42 @@ void BothLayers::add(VerificationFinding f, const Event* event)
     if (f.code == code::kPropertyViolated && f.severity != Severity::Info)
         m_violated.insert(f.property);
     m_added.push_back(std::move(f));
+}
+
+// The exploration's run of a violation does not replay (numeric memories
+// take any value there, ...): the simulator's own runs are searched for a
+// real one. Without it the property is undecided, never violated nor holding.
+bool BothLayers::confirmPropertyViolation(VerificationFinding& f)
+{
+    ConcreteSearchOptions options;
+    options.complete = m_options.complete;
+    options.maxStates = m_options.maxConcreteStates;
+    options.cancelled = m_options.cancelled;
+    if (m_options.timeLimit.count() > 0)
+        options.deadline = std::chrono::steady_clock::now() + m_options.timeLimit;
+    const std::string& text = m_properties[static_cast<std::size_t>(f.property)];
+    ConcreteSearchResult search = searchPropertyViolation(m_model, text, f.code + " " + f.message, options);
+    if (search.counterexample) {
+        f.counterexample = std::move(search.counterexample);
+        return true;
+    }
+    m_undecided[f.property] = "the violation the exploration found rests on its abstractions and does not replay "
+                              "in the simulator; "
+        + search.reason;
+    return false;
+}
+
+void BothLayers::addUndecided(std::size_t property, const std::string& reason)
+{
+    const std::string& text = m_properties[property];
+    m_result.propertyVerdicts[property] = PropertyVerdict{PropertyOutcome::Undecided, reason};
+    VerificationFinding f;
+    f.code = code::kPropertyUndecided;
+    f.severity = Severity::Warning;
+    f.property = static_cast<int>(property);
+    f.arguments = {text, reason};
+    f.message = "the property " + quoted(text) + " is undecided: " + reason;
+    m_added.push_back(f);
 }
 
 void BothLayers::addEvents()
@@ -527,31 +569,40 @@ void BothLayers::addProperties()
 {
     const explore::Exploration& e = m_explorer->result();
     m_result.propertyHolds.assign(m_properties.size(), false);
+    m_result.propertyVerdicts.assign(m_properties.size(), PropertyVerdict{});
     for (std::size_t p = 0; p < m_properties.size(); ++p) {
         const std::string& text = m_properties[p];
+        const int index = static_cast<int>(p);
         if (!e.propertyChecked[p]) {
             const std::vector<PropertyProblem> problems = checkProperty(m_model, text);
+            const std::string why = problems.empty() ? std::string("it is empty") : problems.front().message;
+            m_result.propertyVerdicts[p] = PropertyVerdict{PropertyOutcome::Undecided, "it cannot be checked: " + why};
             VerificationFinding f;
             f.code = code::kPropertyUnusable;
-            f.property = static_cast<int>(p);
+            f.property = index;
             f.arguments = {text, problems.empty() ? std::string() : problems.front().message};
-            f.message = "the property " + quoted(text) + " cannot be checked: "
-                + (problems.empty() ? std::string("it is empty") : problems.front().message);
+            f.message = "the property " + quoted(text) + " cannot be checked: " + why;
             m_added.push_back(f);
             continue;
         }
-        if (m_violated.count(static_cast<int>(p)))
+        if (m_violated.count(index)) {
+            m_result.propertyVerdicts[p] = PropertyVerdict{PropertyOutcome::Violated, {}};
             continue;
-        const bool reported = std::any_of(m_added.begin(), m_added.end(), [&](const VerificationFinding& f) {
-            return f.code == code::kPropertyViolated && f.property == static_cast<int>(p);
-        });
-        if (reported || !e.exhaustive)
+        }
+        if (const auto undecided = m_undecided.find(index); undecided != m_undecided.end()) {
+            addUndecided(p, undecided->second);
             continue;
+        }
+        if (!e.exhaustive) {
+            addUndecided(p, "the exploration of both layers stopped at its time or size limit before deciding it");
+            continue;
+        }
         m_result.propertyHolds[p] = true;
+        m_result.propertyVerdicts[p] = PropertyVerdict{PropertyOutcome::Holds, {}};
         VerificationFinding f;
         f.code = code::kPropertyHolds;
         f.severity = Severity::Info;
-        f.property = static_cast<int>(p);
+        f.property = index;
         f.arguments = {text};
         f.message = "the property " + quoted(text) + " holds in every reachable scan";
         if (!e.abstractions.empty())

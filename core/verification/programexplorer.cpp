@@ -9,6 +9,7 @@
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
 #include "core/verification/property.h"
+#include "core/verification/propertyevaluation.h"
 #include "core/verification/satisfiability.h"
 #include "core/verification/tonscans.h"
 
@@ -2118,23 +2119,7 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     if (out.confirmed && event.kind == EventKind::PropertyViolated && event.property >= 0) {
         // The property itself, read on the simulator after the last scan.
         const ParsedProperty& property = impl.parsedProperties[static_cast<std::size_t>(event.property)];
-        const cond::Expression& body = property.expression;
-        const cond::Value value = cond::evaluate(body, [&](int node) -> cond::Value {
-            const cond::Node& n = body.at(node);
-            switch (n.kind) {
-            case cond::NodeKind::InStep: return simulator.activeStepId() == propertyStepId(impl.model, n.text);
-            case cond::NodeKind::NestedStepActivity: {
-                const std::string id = propertyStepId(impl.model, n.text);
-                if (simulator.activeStepId() != id || simulator.entry())
-                    return false;
-                const std::vector<int> active = simulator.activeNestedSteps(id);
-                return std::find(active.begin(), active.end(), n.number) != active.end();
-            }
-            default: return simulator.variable(n.text);
-            }
-        });
-        const bool holds = cond::isTrue(value);
-        out.confirmed = property.kind == PropertyKind::Never ? holds : !holds;
+        out.confirmed = propertyViolatedOn(impl.model, property, simulator);
     }
     return out;
 }

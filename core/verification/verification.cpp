@@ -1126,8 +1126,17 @@ VerificationResult Verifier::run()
 
 bool VerificationResult::violated() const
 {
-    return std::any_of(findings.begin(), findings.end(),
-                       [](const VerificationFinding& f) { return f.severity != Severity::Info; });
+    return std::any_of(findings.begin(), findings.end(), [](const VerificationFinding& f) {
+        return f.severity != Severity::Info && f.code != verification::kPropertyUndecided;
+    });
+}
+
+bool VerificationResult::undecided() const
+{
+    return std::any_of(findings.begin(), findings.end(), [](const VerificationFinding& f) {
+        return f.code == verification::kPropertyUndecided
+            || (f.severity == Severity::Info && f.counterexample && !f.counterexample->confirmed);
+    });
 }
 
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options)

@@ -69,6 +69,10 @@ struct VerificationOptions {
     // Decision-diagram nodes of all steps together (memory: about 70 bytes
     // each, so the default stays near 300 MB).
     std::size_t maxDiagramNodes = 4'000'000;
+    // Distinct simulator states the search for a real violation of a
+    // property may keep, when the exploration's violation does not replay
+    // (core/verification/concretesearch.h); it also stops at timeLimit.
+    std::size_t maxConcreteStates = 20'000;
     // Wall-clock time of the analysis; zero or less: no limit. With the
     // counterexamples written and replayed after it, a run ends within about
     // one more second.
@@ -127,6 +131,18 @@ struct VerificationFinding {
     FindingOrigin origin = FindingOrigin::GemmaLayer;
 };
 
+// What a run decided about one of the engineer's properties.
+enum class PropertyOutcome {
+    Holds,     // proved for every reachable scan (GV121)
+    Violated,  // a counterexample that replays to the violation (GV120)
+    Undecided, // neither: the reason says why (GV122, GV123)
+};
+
+struct PropertyVerdict {
+    PropertyOutcome outcome = PropertyOutcome::Undecided;
+    std::string reason; // Undecided: why (English), empty otherwise
+};
+
 struct VerificationResult {
     // By code, then by element in state order / program order.
     std::vector<VerificationFinding> findings;
@@ -147,12 +163,17 @@ struct VerificationResult {
     std::vector<std::string> unstableSteps;                            // until stable: Unstable reachable
     std::vector<std::string> properties;  // the texts checked: the model's, then the options'
     std::vector<bool> propertyHolds;      // per property: proved (FALSE when violated, undecided or not checkable)
+    std::vector<PropertyVerdict> propertyVerdicts; // per property: holds, violated or undecided
     std::vector<std::string> abstractions; // what the exploration abstracted (English), empty when exact
     std::size_t programStates = 0;         // explored states of both layers (0: not explored)
     bool bothLayers = false;               // the exploration of both layers ran
 
-    // A finding of severity error or warning: a property does not hold.
+    // A finding of severity error or warning other than GV123: a property
+    // does not hold (or, GV100, the budget ran out).
     bool violated() const;
+    // A property is undecided (GV123), or a claim is reported only as "not
+    // confirmed" because its run does not replay in the simulator.
+    bool undecided() const;
 };
 
 // Verifies the model with the given assumptions. Never throws for any model
@@ -187,6 +208,7 @@ inline constexpr const char* kStoredOutputOnEmergencyStop = "GV119"; // info: a 
 inline constexpr const char* kPropertyViolated = "GV120";      // error
 inline constexpr const char* kPropertyHolds = "GV121";         // info
 inline constexpr const char* kPropertyUnusable = "GV122";      // warning
+inline constexpr const char* kPropertyUndecided = "GV123";     // warning: neither proved nor shown violated
 } // namespace verification
 
 } // namespace core

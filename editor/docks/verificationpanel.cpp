@@ -430,8 +430,10 @@ void VerificationPanel::updateActions()
 {
     const core::VerificationFinding* finding = m_runner->finding(findingIndex(m_view->currentItem()));
     m_showAction->setEnabled(!firstElementRef(finding).isNull());
-    // A stale counterexample may not fit the model any more.
-    m_replayAction->setEnabled(finding && finding->counterexample && !m_runner->isStale());
+    // A stale counterexample may not fit the model any more; one that does
+    // not replay shows nothing.
+    m_replayAction->setEnabled(finding && finding->counterexample && finding->counterexample->confirmed
+                               && !m_runner->isStale());
     m_replayAction->setToolTip(m_runner->isStale()
                                    ? tr("The model changed since verification: verify again to replay")
                                    : tr("Start the simulation and replay the scans that lead to the finding"));
@@ -448,7 +450,7 @@ void VerificationPanel::replay(const QTreeWidgetItem* item)
 {
     const int index = findingIndex(item);
     const core::VerificationFinding* finding = m_runner->finding(index);
-    if (finding && finding->counterexample && !m_runner->isStale())
+    if (finding && finding->counterexample && finding->counterexample->confirmed && !m_runner->isStale())
         emit replayRequested(index);
 }
 

@@ -2,7 +2,7 @@
 # that the command is refused and the target left as it was.
 # -D CLI=path -D WORKDIR=dir -D NAME=test name -D KIND=fifo|device-link -D TARGET=relative path
 # -D ARGS="a|b|@BASE@/x" (words separated by |; @BASE@ is the test's own fresh folder)
-# -D EXIT=n [-D ERR=regex]
+# -D EXIT=n [-D ERR=regex] [-D OUT=regex]
 # KIND fifo makes TARGET a FIFO (its folders created first); device-link makes
 # it a symbolic link to a character device: a private node with /dev/null's
 # numbers where mknod is allowed (as root, who could replace /dev/null
@@ -42,6 +42,9 @@ if(NOT code EQUAL EXIT)
 endif()
 if(ERR AND NOT err MATCHES "${ERR}")
     message(FATAL_ERROR "ggstudio-cli ${ARGS}: stderr does not match '${ERR}':\n${err}")
+endif()
+if(OUT AND NOT out MATCHES "${OUT}")
+    message(FATAL_ERROR "ggstudio-cli ${ARGS}: stdout does not match '${OUT}':\n${out}")
 endif()
 
 if(KIND STREQUAL "fifo")

@@ -209,3 +209,21 @@ TEST_CASE("A malformed properties list is refused with where and what", "[verifi
         CHECK(std::get<LoadError>(loaded).toString().find(where) != std::string::npos);
     }
 }
+
+TEST_CASE("A wrong nested step is named for what is wrong, step 0 included", "[verificationproperty]")
+{
+    const Model model = samples::lampGrafcetModel();
+    const auto firstMessage = [&](const std::string& text) {
+        const std::vector<PropertyProblem> problems = checkProperty(model, text);
+        REQUIRE_FALSE(problems.empty());
+        return problems.front().code + ": " + problems.front().message;
+    };
+    // X0 used to be read as a qualified name ("qualified names are not allowed").
+    CHECK(firstMessage("never F1.X0") == "GP005: the GRAFCET of F1 has no step 0");
+    CHECK(firstMessage("never f1.x0 AND Lamp") == "GP005: the GRAFCET of F1 has no step 0");
+    CHECK(firstMessage("never A1.X0") == "GP004: the step A1 has no nested GRAFCET");
+    CHECK(firstMessage("never Z9.X0") == "GP003: there is no visible GEMMA step 'Z9'");
+    CHECK(firstMessage("never F1.X12") == "GP005: the GRAFCET of F1 has no step 12");
+    // Not a step activity at all: still refused by the parser.
+    CHECK(problemCodes(model, "never F1.Lamp") == property::kSyntax);
+}

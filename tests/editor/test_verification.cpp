@@ -118,6 +118,7 @@ private slots:
     void propertyFindingsShowTheirText();
     void replayOfANestedFindingShowsItsGrafcet();
     void everyBothLayersCodeIsWorded();
+    void stepsWithAGrafcetAreNeverAssumedAutomatic();
 
 private:
     void verifyAndWait();
@@ -911,6 +912,7 @@ void TestVerification::everyBothLayersCodeIsWorded()
         {gv::kPropertyHolds, {}, {"never A AND B"}, 0},
         {gv::kPropertyUnusable, {}, {"never A AND", "column 12: expected an operand"}, 0},
         {gv::kPropertyUnusable, {}, {"", ""}, 0},
+        {gv::kPropertyUndecided, {}, {"never Count > 2", "no violation found in 12 states"}, 0},
     };
     for (const Shape& shape : shapes) {
         core::VerificationFinding finding;
@@ -954,6 +956,21 @@ void TestVerification::everyBothLayersCodeIsWorded()
     QVERIFY(verificationText(kept).contains(QStringLiteral("decided on the GEMMA layer")));
     kept.counterexample->confirmed = true;
     QVERIFY(!verificationText(kept).contains(QStringLiteral("Not confirmed")));
+}
+
+// A step with a nested GRAFCET takes its Complete from it: the verification
+// ignores any assumption about it, so the tab must not claim one.
+void TestVerification::stepsWithAGrafcetAreNeverAssumedAutomatic()
+{
+    loadFaultyExample();
+    SimulationSession* session = m_window->simulationSession();
+    session->setActive(true); // every Complete automatic in the Simulation dock
+    const core::Model& model = m_window->document()->model();
+    QVERIFY(model.effectiveGrafcet("F2"));
+    for (const QString& step : m_runner->assumedAutomatic())
+        QVERIFY2(!model.effectiveGrafcet(step.toStdString()), qPrintable(step));
+    QVERIFY(!m_runner->assumedAutomatic().contains(QStringLiteral("F2")));
+    session->setActive(false);
 }
 
 QTEST_MAIN(TestVerification)

@@ -1,0 +1,329 @@
+#include "core/verification/concretesearch.h"
+
+#include "core/condition/conditionevaluator.h"
+#include "core/condition/conditionparser.h"
+#include "core/model/iectypes.h"
+#include "core/model/model.h"
+#include "core/simulation/scenario.h"
+#include "core/simulation/simulator.h"
+#include "core/verification/property.h"
+#include "core/verification/propertyevaluation.h"
+
+#include <cstdint>
+#include <deque>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+#include <variant>
+#include <vector>
+
+namespace core {
+
+namespace {
+
+// Past this many input combinations per scan the search is not tried: each
+// state would cost more scans than the budget allows for a useful depth.
+constexpr std::size_t kMaxCombinationsPerScan = 4096;
+constexpr std::size_t kMaxValuesPerNumber = 8;
+
+std::string valueText(const cond::Value& value)
+{
+    if (std::holds_alternative<bool>(value))
+        return std::get<bool>(value) ? "TRUE" : "FALSE";
+    return cond::formatValue(value);
+}
+
+// The numeric constants the model's conditions, receptivities, actions and
+// the property are written with: the values where comparisons change.
+std::vector<double> modelConstants(const Model& model, const std::string& property)
+{
+    std::set<double> constants;
+    const auto collect = [&](const std::string& text, cond::Context context) {
+        for (const cond::Token& token : cond::tokenize(text, cond::ParseOptions{context})) {
+            if (token.kind != cond::TokenKind::IntegerLiteral && token.kind != cond::TokenKind::RealLiteral)
+                continue;
+            try {
+                constants.insert(std::stod(std::string(token.text)));
+            } catch (const std::exception&) {
+                // A literal out of double's range compares with nothing the search can set.
+            }
+        }
+    };
+    for (const Transition& transition : model.transitions())
+        collect(transition.condition, cond::Context::Gemma);
+    for (const auto& [id, grafcet] : model.grafcets()) {
+        for (const GrafcetTransition& transition : grafcet.transitions())
+            collect(transition.receptivity, cond::Context::Nested);
+        for (const GrafcetStep& step : grafcet.steps()) {
+            for (const GrafcetAction& action : step.actions)
+                collect(action.text, cond::Context::Nested);
+        }
+    }
+    collect(property, cond::Context::Property);
+    return {constants.begin(), constants.end()};
+}
+
+// The values an input takes at each scan: both for a BOOL; for a number its
+// default, then each constant and its neighbours, those its type accepts.
+std::vector<cond::Value> inputValues(Simulator probe, std::size_t index, const std::vector<double>& constants)
+{
+    const IecType type = probe.variableType(index);
+    if (type == IecType::Bool)
+        return {cond::Value{false}, cond::Value{true}};
+    std::vector<cond::Value> values{probe.variableValue(index)};
+    const auto add = [&](double number) {
+        if (!isRealType(type) && !(number > -9.0e18 && number < 9.0e18))
+            return; // no integer type holds it (and the conversion would be undefined)
+        const cond::Value value = isRealType(type) ? cond::Value{number}
+                                                   : cond::Value{static_cast<std::int64_t>(number)};
+        if (values.size() >= kMaxValuesPerNumber || !probe.setVariableAt(index, value).ok)
+            return;
+        for (const cond::Value& known : values) {
+            if (valueText(known) == valueText(value))
+                return;
+        }
+        values.push_back(value);
+    };
+    for (double constant : constants) {
+        add(constant);
+        add(constant + 1);
+        add(constant - 1);
+    }
+    return values;
+}
+
+// What decides the simulator's future: everything but the scan count.
+std::string stateKey(const Simulator& simulator)
+{
+    std::string key = std::to_string(simulator.activeStepNumber()) + (simulator.entry() ? "E" : "-");
+    for (bool token : simulator.tokenValues())
+        key += token ? '1' : '0';
+    for (const std::string& step : simulator.nestedSteps()) {
+        key += '|';
+        key += simulator.complete(step) ? 'C' : '-';
+        key += simulator.manualComplete(step) ? 'M' : '-';
+        for (int active : simulator.activeNestedSteps(step))
+            key += std::to_string(active) + ',';
+        for (const NestedTimerState& timer : simulator.nestedTimers(step))
+            key += 't' + std::to_string(timer.elapsedMs) + (timer.done ? 'Q' : '-');
+    }
+    for (std::size_t i = 0; i < simulator.variableNames().size(); ++i)
+        key += '|' + valueText(simulator.variableValue(i));
+    return key;
+}
+
+// One scan of a run: the inputs set before it, the Complete chosen for its
+// active step (when free), and the state it started from.
+struct SearchNode {
+    std::size_t parent = SIZE_MAX; // SIZE_MAX: the scan starts from reset
+    std::vector<std::size_t> choice; // per searched input: index into its values
+    std::string freeStep;            // the free step without GRAFCET active in the scan, if any
+    bool complete = false;
+};
+
+class ConcreteSearch {
+public:
+    ConcreteSearch(const Model& model, const std::string& property, const ConcreteSearchOptions& options)
+        : m_model(model)
+        , m_property(parseProperty(property))
+        , m_options(options)
+        , m_start(model)
+    {
+        for (const std::string& step : m_start.nestedSteps()) {
+            if (m_start.hasGrafcet(step))
+                continue;
+            const auto assumed = options.complete.find(step);
+            const bool automatic = assumed != options.complete.end() && assumed->second == CompleteAssumption::Automatic;
+            m_start.setCompleteMode(step, automatic ? CompleteMode::Automatic : CompleteMode::Manual);
+            if (!automatic)
+                m_freeSteps.insert(step);
+        }
+        const std::vector<double> constants = modelConstants(model, property);
+        for (std::size_t i = 0; i < m_start.variableNames().size(); ++i) {
+            if (m_start.variableKind(i) != VariableKind::Input)
+                continue;
+            m_inputs.push_back(i);
+            m_values.push_back(inputValues(m_start, i, constants));
+        }
+    }
+
+    ConcreteSearchResult run(const std::string& title);
+
+private:
+    std::size_t combinations() const;
+    std::string scenarioText(std::size_t last, const std::string& title, std::int64_t& scans) const;
+    std::optional<Counterexample> replayed(std::size_t last, const std::string& title) const;
+    bool outOfTime() const;
+
+    const Model& m_model;
+    ParsedProperty m_property;
+    const ConcreteSearchOptions& m_options;
+    Simulator m_start;
+    std::set<std::string> m_freeSteps;
+    std::vector<std::size_t> m_inputs;             // variable indices of the inputs
+    std::vector<std::vector<cond::Value>> m_values; // per input, the values tried
+    std::vector<SearchNode> m_nodes;
+};
+
+std::size_t ConcreteSearch::combinations() const
+{
+    std::size_t product = 1;
+    for (const std::vector<cond::Value>& values : m_values) {
+        if (product > kMaxCombinationsPerScan)
+            break;
+        product *= values.size();
+    }
+    return product;
+}
+
+bool ConcreteSearch::outOfTime() const
+{
+    return std::chrono::steady_clock::now() >= m_options.deadline
+        || (m_options.cancelled && m_options.cancelled());
+}
+
+ConcreteSearchResult ConcreteSearch::run(const std::string& title)
+{
+    ConcreteSearchResult result;
+    const std::size_t perScan = combinations();
+    if (!m_property.ok()) {
+        result.reason = "the property does not parse";
+        return result;
+    }
+    if (perScan > kMaxCombinationsPerScan) {
+        result.reason = "the simulator's runs were not searched: more than " + std::to_string(kMaxCombinationsPerScan)
+            + " input combinations per scan";
+        return result;
+    }
+    std::unordered_set<std::string> seen{stateKey(m_start)};
+    std::deque<std::pair<std::size_t, Simulator>> frontier; // (node of the scan that led there, state)
+    frontier.emplace_back(SIZE_MAX, m_start);
+    while (!frontier.empty()) {
+        auto [from, state] = std::move(frontier.front());
+        frontier.pop_front();
+        const std::string active = state.activeStepId();
+        const bool chooseComplete = m_freeSteps.count(active) > 0;
+        for (std::size_t combination = 0; combination < perScan; ++combination) {
+            for (int complete = 0; complete <= (chooseComplete ? 1 : 0); ++complete) {
+                if (outOfTime()) {
+                    result.states = seen.size();
+                    result.reason = "no violation found in " + std::to_string(seen.size())
+                        + " states of the simulator's runs before the time limit";
+                    return result;
+                }
+                SearchNode node;
+                node.parent = from;
+                Simulator next = state;
+                std::size_t rest = combination;
+                for (std::size_t i = 0; i < m_inputs.size(); ++i) {
+                    node.choice.push_back(rest % m_values[i].size());
+                    rest /= m_values[i].size();
+                    next.setVariableAt(m_inputs[i], m_values[i][node.choice.back()]);
+                }
+                if (chooseComplete) {
+                    node.freeStep = active;
+                    node.complete = complete != 0;
+                    next.setComplete(active, node.complete);
+                }
+                next.run(1);
+                m_nodes.push_back(std::move(node));
+                const std::size_t index = m_nodes.size() - 1;
+                if (propertyViolatedOn(m_model, m_property, next)) {
+                    result.states = seen.size();
+                    result.counterexample = replayed(index, title);
+                    if (!result.counterexample)
+                        result.reason = "a violating run of the simulator was found but did not replay";
+                    return result;
+                }
+                if (seen.size() < m_options.maxStates && seen.insert(stateKey(next)).second)
+                    frontier.emplace_back(index, std::move(next));
+                else
+                    m_nodes.pop_back(); // nothing will point to it
+            }
+        }
+    }
+    result.states = seen.size();
+    result.reason = seen.size() >= m_options.maxStates
+        ? "no violation found in the first " + std::to_string(seen.size()) + " states of the simulator's runs"
+        : "no violation found in the " + std::to_string(seen.size())
+            + " states of the simulator's runs with the input values tried";
+    return result;
+}
+
+std::string ConcreteSearch::scenarioText(std::size_t last, const std::string& title, std::int64_t& scans) const
+{
+    std::vector<std::size_t> path;
+    for (std::size_t n = last; n != SIZE_MAX; n = m_nodes[n].parent)
+        path.push_back(n);
+    std::ostringstream text;
+    text << "# " << title << "\n";
+    std::vector<std::string> current;
+    for (std::size_t i = 0; i < m_inputs.size(); ++i)
+        current.push_back(valueText(m_start.variableValue(m_inputs[i])));
+    std::map<std::string, std::string> completeSet; // free step -> the value the scenario last set
+    Simulator replay = m_start;
+    scans = 0;
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+        const SearchNode& node = m_nodes[*it];
+        ++scans;
+        std::string sets;
+        for (std::size_t i = 0; i < m_inputs.size(); ++i) {
+            const std::string value = valueText(m_values[i][node.choice[i]]);
+            if (value == current[i])
+                continue;
+            current[i] = value;
+            sets += (sets.empty() ? "" : ", ") + m_start.variableNames()[m_inputs[i]] + " = " + value;
+        }
+        if (!sets.empty())
+            text << "at " << scans << ": set " << sets << "\n";
+        if (!node.freeStep.empty()) {
+            const std::string value = node.complete ? "TRUE" : "FALSE";
+            auto [entry, added] = completeSet.emplace(node.freeStep, value);
+            if (added || entry->second != value) {
+                entry->second = value;
+                text << "at " << scans << ": set complete " << node.freeStep << " = " << value << "\n";
+            }
+        }
+    }
+    return text.str();
+}
+
+std::optional<Counterexample> ConcreteSearch::replayed(std::size_t last, const std::string& title) const
+{
+    Counterexample out;
+    std::int64_t scans = 0;
+    out.text = scenarioText(last, title, scans);
+    // The state the violation is in, as the other counterexamples state it.
+    Simulator check(m_model);
+    ScenarioParseResult first = parseScenario(out.text);
+    if (!first.ok() || !validateScenario(first.scenario, check).empty())
+        return std::nullopt;
+    (void)runScenario(first.scenario, check, scans);
+    if (!check.activeStepId().empty())
+        out.text += "at " + std::to_string(scans) + ": expect step " + check.activeStepId() + "\n";
+    ScenarioParseResult parsed = parseScenario(out.text);
+    if (!parsed.ok())
+        return std::nullopt;
+    out.scenario = std::move(parsed.scenario);
+    out.scans = scans;
+    Simulator simulator(m_model);
+    if (!validateScenario(out.scenario, simulator).empty())
+        return std::nullopt;
+    out.confirmed = runScenario(out.scenario, simulator, scans).passed()
+        && propertyViolatedOn(m_model, m_property, simulator);
+    if (!out.confirmed)
+        return std::nullopt;
+    return out;
+}
+
+} // namespace
+
+ConcreteSearchResult searchPropertyViolation(const Model& model, const std::string& property,
+                                             const std::string& title, const ConcreteSearchOptions& options)
+{
+    return ConcreteSearch(model, property, options).run(title);
+}
+
+} // namespace core
