@@ -60,8 +60,6 @@ NestedEngine::NestedEngine(const NestedGrafcet& grafcet, const std::function<int
         topology->usable.push_back(usable ? 1 : 0);
     }
     m_topology = std::move(topology);
-    m_firedMark.assign(grafcet.transitions.size(), 0);
-    m_touched.assign(grafcet.steps.size(), 0);
     reset();
 }
 
@@ -73,7 +71,7 @@ void NestedEngine::reset()
     std::fill(m_emitting.begin(), m_emitting.end(), 0);
     m_complete = false;
     m_unstable = false;
-    clearFired();
+    m_fired.clear();
     m_enabled.clear();
 }
 
@@ -248,14 +246,6 @@ bool NestedEngine::enabled(std::size_t transition) const
     return std::all_of(upstream.begin(), upstream.end(), [&](std::size_t step) { return m_x[step] != 0; });
 }
 
-void NestedEngine::clearFired()
-{
-    for (std::size_t t : m_firedIndices)
-        m_firedMark[t] = 0;
-    m_firedIndices.clear();
-    m_fired.clear();
-}
-
 // Once per evolving call: the transitions enabled in the situation it starts from.
 void NestedEngine::findEnabled()
 {
@@ -294,33 +284,26 @@ bool NestedEngine::evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals
     if (firing.empty())
         return false;
     constexpr char kDeactivated = 1, kActivated = 2;
-    std::vector<std::size_t> touched;
+    std::vector<std::pair<std::size_t, char>> touched; // step, what the firing does to it
     for (std::size_t t : firing) {
-        if (!m_firedMark[t]) {
-            m_firedMark[t] = 1;
-            m_firedIndices.push_back(t);
-            m_fired.push_back(transitions[t].number);
-        }
-        for (std::size_t step : m_topology->upstream[t]) {
-            if (!m_touched[step])
-                touched.push_back(step);
-            m_touched[step] |= kDeactivated;
-        }
-        for (std::size_t step : m_topology->downstream[t]) {
-            if (!m_touched[step])
-                touched.push_back(step);
-            m_touched[step] |= kActivated;
-        }
+        m_fired.push_back(transitions[t].number);
+        for (std::size_t step : m_topology->upstream[t])
+            touched.emplace_back(step, kDeactivated);
+        for (std::size_t step : m_topology->downstream[t])
+            touched.emplace_back(step, kActivated);
     }
     // Steps in number order, as the actions run (steps are kept by number).
     std::sort(touched.begin(), touched.end());
     std::vector<std::size_t> left, entered;
-    for (std::size_t step : touched) {
-        if (m_touched[step] == kDeactivated)
+    for (std::size_t i = 0; i < touched.size();) {
+        const std::size_t step = touched[i].first;
+        char what = 0;
+        for (; i < touched.size() && touched[i].first == step; ++i)
+            what |= touched[i].second;
+        if (what == kDeactivated)
             left.push_back(step);
-        else if ((m_touched[step] & kActivated) && !m_x[step])
+        else if ((what & kActivated) && !m_x[step])
             entered.push_back(step);
-        m_touched[step] = 0;
     }
     for (std::size_t step : left)
         m_x[step] = 0;
@@ -367,7 +350,7 @@ void NestedEngine::computeOutputs(const NestedGlobals& globals)
 
 void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& globals)
 {
-    clearFired();
+    m_fired.clear();
     if (initialization) {
         for (std::size_t i = 0; i < m_x.size(); ++i)
             m_x[i] = m_grafcet->steps[i].initial;
@@ -391,7 +374,9 @@ void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& 
         } while (m_untilStable && fired && evolutions < m_grafcet->maxEvolutions);
         if (m_untilStable) {
             m_unstable = fired;
-            std::sort(m_fired.begin(), m_fired.end()); // each evolution added its own in number order
+            // Each evolution added its own in number order; a transition may fire in several.
+            std::sort(m_fired.begin(), m_fired.end());
+            m_fired.erase(std::unique(m_fired.begin(), m_fired.end()), m_fired.end());
         }
     }
     computeOutputs(globals);

@@ -138,7 +138,6 @@ private:
     bool evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals& globals);
     bool enabled(std::size_t transition) const;
     void findEnabled();
-    void clearFired();
     void updateEnabled(const std::vector<std::size_t>& entered);
     void runStored(const std::vector<NestedAction>& actions, NestedGlobals& globals);
     void computeOutputs(const NestedGlobals& globals);
@@ -177,10 +176,6 @@ private:
     // are all active, ascending (firing order does not matter: all fire
     // together; the lists keep the number order of the old full pass).
     std::vector<std::size_t> m_enabled;
-    std::vector<char> m_firedMark;           // by transition: in m_fired
-    std::vector<std::size_t> m_firedIndices; // m_fired as indices
-    // Scratch of one evolution, by step: 1 deactivated, 2 activated, 3 both.
-    std::vector<char> m_touched;
 };
 
 } // namespace core
