@@ -25,6 +25,7 @@
 #include <QMessageBox>
 #include <QPrintDialog>
 #include <QPrinter>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QRegularExpression>
 
@@ -36,6 +37,9 @@ namespace {
 
 // How many errors the confirmation lists before "and N more".
 constexpr int kListedErrors = 5;
+
+// A specification written faster than this shows no progress dialog.
+constexpr int kProgressDelayMs = 300;
 
 std::string localPath(const QString& path)
 {
@@ -336,11 +340,37 @@ void ExportActions::exportSpecification()
     const QString path =
         askSavePath(tr("Export Specification"), QStringLiteral("pdf"), tr("PDF document (*.pdf)"), nullptr,
                     suggestedSpecificationName(m_document.filePath(), m_document.model()));
-    if (path.isEmpty())
-        return;
+    if (!path.isEmpty())
+        exportSpecificationTo(path);
+}
+
+// In slices on the GUI thread (the export draws the Document's own scenes):
+// the event loop runs between two sections laid out and between two pages.
+bool ExportActions::exportSpecificationTo(const QString& path)
+{
+    QProgressDialog progress(tr("Writing the specification…"), tr("Cancel"), 0, 1, m_window);
+    progress.setObjectName(QStringLiteral("specificationProgress"));
+    progress.setWindowTitle(tr("Export Specification"));
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setAutoReset(false);
+    progress.setAutoClose(false);
+    progress.setMinimumDuration(kProgressDelayMs);
+    SpecificationExport specification(m_document);
+    specification.setProgress([&progress](int done, int total) {
+        progress.setMaximum(total);
+        progress.setValue(done);
+        QCoreApplication::processEvents();
+        return !progress.wasCanceled();
+    });
     QString error;
-    const bool ok = writeSpecification(path, &error);
-    reportResult(ok, path, error);
+    bool cancelled = false;
+    const bool ok = specification.writePdf(path, &error, &cancelled);
+    progress.hide();
+    if (cancelled)
+        emit exported(tr("Export cancelled: %1 left unchanged").arg(QDir::toNativeSeparators(path)));
+    else
+        reportResult(ok, path, error);
+    return ok;
 }
 
 void ExportActions::print()

@@ -48,6 +48,10 @@ public:
     bool writeGGGenerator(const QString& path, QString* errorMessage) const;
     // The whole model as one PDF (editor/specificationexport.h).
     bool writeSpecification(const QString& path, QString* errorMessage) const;
+    // Export Specification's work after its file dialog: the PDF written
+    // with a progress dialog whose Cancel leaves the file as it was, then
+    // the report. False when it failed or was cancelled.
+    bool exportSpecificationTo(const QString& path);
 
     void retranslate();
 

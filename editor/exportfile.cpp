@@ -72,7 +72,7 @@ bool PictureFile::writePng(const QString& path, const QSizeF& size, const Paint&
 }
 
 bool PictureFile::writePdf(const QString& path, const QString& title, QPageLayout::Orientation orientation,
-                           const PaintPages& paint, QString* errorMessage)
+                           const PaintPages& paint, QString* errorMessage, const std::function<bool()>& cancelled)
 {
     QBuffer buffer;
     buffer.open(QIODevice::WriteOnly);
@@ -91,6 +91,8 @@ bool PictureFile::writePdf(const QString& path, const QString& title, QPageLayou
         }
         paint(painter, writer, QSizeF(writer.width(), writer.height()), writer.resolution() / 72.0);
     }
+    if (cancelled && cancelled())
+        return false;
     return writeExportFile(path, buffer.data(), errorMessage);
 }
 

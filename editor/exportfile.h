@@ -35,9 +35,11 @@ public:
                          const Paint& paint, QString* errorMessage);
     // `size` in pixels, on white.
     static bool writePng(const QString& path, const QSizeF& size, const Paint& paint, QString* errorMessage);
-    // A4 pages with 10 mm margins.
+    // A4 pages with 10 mm margins. When `cancelled` (if given) is TRUE after
+    // `paint`, nothing is written and the file on disk stays as it was.
     static bool writePdf(const QString& path, const QString& title, QPageLayout::Orientation orientation,
-                         const PaintPages& paint, QString* errorMessage);
+                         const PaintPages& paint, QString* errorMessage,
+                         const std::function<bool()>& cancelled = {});
 };
 
 } // namespace editor

@@ -68,6 +68,8 @@ namespace editor {
 namespace {
 
 constexpr int kStatusMessageMs = 6000;
+// How long closing the window waits for a cancelled verification to end.
+constexpr int kQuitWaitMs = 2000;
 
 // What File > New opens: the template with the user's default settings.
 core::Model newTemplate(const Settings& settings)
@@ -1370,6 +1372,12 @@ void MainWindow::closeEvent(QCloseEvent* event)
     }
     rememberGrafcetTabs();
     saveLayout();
+    // Quit ends the long work at once: the simulation stops scanning and
+    // the verification's worker is cancelled and joined, so the process
+    // does not outlive its window (what is left of a run that does not
+    // end in time is waited for when the runner goes).
+    m_session->pause();
+    m_verification->shutdown(kQuitWaitMs);
     event->accept();
 }
 

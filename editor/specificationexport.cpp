@@ -492,9 +492,14 @@ public:
     SpecificationPages(Document& document, const QDateTime& date, QPagedPaintDevice& device, const QSizeF& printable,
                        double dotsPerPoint);
 
-    void paint(QPainter& painter) const;
+    // Lays the sections out, then draws every page, telling `progress`
+    // after each; false when it cancelled.
+    bool write(QPainter& painter, const SpecificationExport::Progress& progress);
 
 private:
+    // Every page; false when `pageDone` returned false after one.
+    bool paint(QPainter& painter, const std::function<bool()>& pageDone) const;
+
     // The contents' entries, in order; then one per GRAFCET and the code's.
     enum Entry { ChartEntry, StatesEntry, TransitionsEntry, VariablesEntry, GrafcetsEntry };
 
@@ -587,15 +592,26 @@ SpecificationPages::SpecificationPages(Document& document, const QDateTime& date
     }
     m_codeEntry = m_contents->size();
     m_contents->push_back({tr("Generated code")});
+}
 
-    planTitlePage();
-    planChart();
-    planStates();
-    planTransitions();
-    planVariables();
+bool SpecificationPages::write(QPainter& painter, const SpecificationExport::Progress& progress)
+{
+    std::vector<std::function<void()>> sections{[this] { planTitlePage(); }, [this] { planChart(); },
+                                                [this] { planStates(); },    [this] { planTransitions(); },
+                                                [this] { planVariables(); }};
     for (qsizetype i = 0; i < m_grafcetSteps.size(); ++i)
-        planGrafcet(i);
-    planCode();
+        sections.push_back([this, i] { planGrafcet(i); });
+    sections.push_back([this] { planCode(); });
+    const int planned = int(sections.size());
+    int done = 0;
+    const auto tell = [&](int total) { return !progress || progress(++done, total); };
+    for (const std::function<void()>& section : sections) {
+        section();
+        if (!tell(planned + 1)) // the pages are one more part until counted
+            return false;
+    }
+    const int pages = int(m_flow->pages().size());
+    return paint(painter, [&] { return tell(planned + pages); });
 }
 
 int SpecificationPages::errorCount() const
@@ -974,7 +990,7 @@ void SpecificationPages::planCode()
 }
 
 // Every page with its running header and foot, then its blocks.
-void SpecificationPages::paint(QPainter& painter) const
+bool SpecificationPages::paint(QPainter& painter, const std::function<bool()>& pageDone) const
 {
     const std::vector<Page>& pages = m_flow->pages();
     const QFont font = m_style.font(TextStyle::Small);
@@ -1008,7 +1024,10 @@ void SpecificationPages::paint(QPainter& painter) const
             block.paint(painter, QPointF(0, m_bodyTop + block.y));
             painter.restore();
         }
+        if (!pageDone())
+            return false;
     }
+    return true;
 }
 
 } // namespace
@@ -1029,17 +1048,21 @@ QString SpecificationExport::suggestedFileName(const QString& baseName)
     return tr("%1 specification").arg(baseName) + QStringLiteral(".pdf");
 }
 
-bool SpecificationExport::writePdf(const QString& path, QString* errorMessage) const
+bool SpecificationExport::writePdf(const QString& path, QString* errorMessage, bool* cancelled) const
 {
+    bool stopped = false;
     const QString title = tr("%1 specification").arg(QString::fromStdString(m_document.model().settings().name));
     const QDateTime date = m_date.isValid() ? m_date : QDateTime::currentDateTime();
-    return PictureFile::writePdf(
+    const bool ok = PictureFile::writePdf(
         path, title, QPageLayout::Portrait,
         [&](QPainter& painter, QPagedPaintDevice& device, const QSizeF& printable, double dotsPerPoint) {
-            const SpecificationPages pages(m_document, date, device, printable, dotsPerPoint);
-            pages.paint(painter);
+            SpecificationPages pages(m_document, date, device, printable, dotsPerPoint);
+            stopped = !pages.write(painter, m_progress);
         },
-        errorMessage);
+        errorMessage, [&stopped] { return stopped; });
+    if (cancelled)
+        *cancelled = stopped;
+    return ok;
 }
 
 } // namespace editor

@@ -4,6 +4,8 @@
 #include <QDateTime>
 #include <QString>
 
+#include <functional>
+
 namespace editor {
 
 class Document;
@@ -38,9 +40,16 @@ public:
     // The date on the title page and the pages' foot; now unless set.
     void setDate(const QDateTime& date) { m_date = date; }
 
-    // Writes the PDF through the atomic writer: a failure leaves the file
-    // as it was. False with a message for the user.
-    bool writePdf(const QString& path, QString* errorMessage) const;
+    // Called between the parts of the work (each section laid out, each
+    // page drawn) with the parts done and their total so far (the pages are
+    // counted once laid out); returning false cancels the export.
+    using Progress = std::function<bool(int done, int total)>;
+    void setProgress(Progress progress) { m_progress = std::move(progress); }
+
+    // Writes the PDF through the atomic writer: a failure or a cancel leaves
+    // the file as it was. False with a message for the user, or with
+    // *cancelled (when given) set and no message when the progress cancelled.
+    bool writePdf(const QString& path, QString* errorMessage, bool* cancelled = nullptr) const;
 
     // The heading of a nested GRAFCET's first page: "F1 Normal production".
     static QString grafcetTitle(const QString& stepId);
@@ -50,6 +59,7 @@ public:
 private:
     Document& m_document;
     QDateTime m_date;
+    Progress m_progress;
 };
 
 } // namespace editor

@@ -6,6 +6,7 @@
 #include "core/model/model.h"
 #include "core/simulation/simulator.h"
 
+#include <QDeadlineTimer>
 #include <QThread>
 
 #include <algorithm>
@@ -62,13 +63,27 @@ VerificationRunner::VerificationRunner(Document* document, SimulationSession* se
 
 VerificationRunner::~VerificationRunner()
 {
-    // The verifier polls `cancelled`, so the threads end soon.
+    // A running QThread must not be destroyed: wait for the rest of the run
+    // after a shutdown() that timed out. The verifier polls `cancelled`
+    // inside its scans, so the thread ends soon. Nobody is told of the
+    // cancel: the listeners may be going too.
+    blockSignals(true);
+    shutdown(-1);
+}
+
+bool VerificationRunner::shutdown(int timeoutMs)
+{
+    cancel();
     for (const Worker& worker : m_workers)
         worker.job->cancelled = true;
-    for (const Worker& worker : m_workers) {
-        worker.thread->wait();
-        delete worker.thread;
+    QDeadlineTimer deadline = timeoutMs < 0 ? QDeadlineTimer(QDeadlineTimer::Forever) : QDeadlineTimer(timeoutMs);
+    for (auto it = m_workers.begin(); it != m_workers.end();) {
+        if (!it->thread->wait(deadline))
+            return false;
+        delete it->thread;
+        it = m_workers.erase(it);
     }
+    return true;
 }
 
 void VerificationRunner::start()
@@ -80,15 +95,28 @@ void VerificationRunner::start()
     job->exactTime = m_exactTime;
     m_current = job;
     m_wasCancelled = false;
+    if (wasRunning)
+        emit cancelled();
+    // A run abandoned before it started is simply dropped; one still ending
+    // is waited for.
+    m_waiting.reset();
+    if (m_workers.empty())
+        launch(job);
+    else
+        m_waiting = job;
+    emit started();
+}
+
+void VerificationRunner::launch(const std::shared_ptr<Job>& job)
+{
     QThread* thread = QThread::create([job] { runJob(job); });
     thread->setObjectName(QStringLiteral("verification"));
     // Queued to this thread: the worker thread emits finished().
-    connect(thread, &QThread::finished, this, [this, thread] { onThreadFinished(thread); });
+    // By its job, which the queued call keeps alive: a thread that
+    // shutdown() already deleted cannot be taken for a new one at its address.
+    connect(thread, &QThread::finished, this, [this, job] { onThreadFinished(job.get()); });
     m_workers.push_back({thread, job});
-    if (wasRunning)
-        emit cancelled();
     thread->start(QThread::LowPriority);
-    emit started();
 }
 
 void VerificationRunner::cancel()
@@ -97,6 +125,7 @@ void VerificationRunner::cancel()
         return;
     m_current->cancelled = true;
     m_current.reset();
+    m_waiting.reset();
     m_wasCancelled = true;
     emit cancelled();
 }
@@ -161,15 +190,20 @@ void VerificationRunner::onSessionChanged()
     emit assumptionsChanged();
 }
 
-void VerificationRunner::onThreadFinished(QThread* thread)
+void VerificationRunner::onThreadFinished(const Job* finishedJob)
 {
     const auto it = std::find_if(m_workers.begin(), m_workers.end(),
-                                 [thread](const Worker& worker) { return worker.thread == thread; });
+                                 [finishedJob](const Worker& worker) { return worker.job.get() == finishedJob; });
     if (it == m_workers.end())
-        return;
+        return; // joined by shutdown()
+    QThread* thread = it->thread;
     const std::shared_ptr<Job> job = it->job;
     m_workers.erase(it);
     thread->deleteLater();
+    if (m_waiting) {
+        launch(m_waiting);
+        m_waiting.reset();
+    }
     if (job != m_current)
         return; // abandoned
     m_current.reset();

@@ -24,6 +24,12 @@ class SimulationSession;
 // under way; a change also marks the last result stale, since it describes
 // a model that no longer is, until the next run.
 //
+// At most one worker computes at a time: a run started while an abandoned
+// one is still ending (the verifier polls its cancel flag) waits for it, and
+// a run started while another waits replaces it, so pressing F7 repeatedly
+// never piles up threads. shutdown() cancels everything and joins the
+// worker within a bounded time, for Quit.
+//
 // A nested step's Complete is assumed free (any value at any scan: it covers
 // whatever the user's nested behaviour does) unless the simulation runs with
 // that step's Complete automatic in the Simulation dock: then it is assumed
@@ -44,6 +50,11 @@ public:
     void start();
     void cancel();
     bool isRunning() const { return m_current != nullptr; }
+    // Threads alive, the abandoned one still ending included: 0 or 1.
+    int workerCount() const { return static_cast<int>(m_workers.size()); }
+    // Cancels the run under way and any waiting one, then waits up to
+    // `timeoutMs` for the worker to end. True when no worker is left.
+    bool shutdown(int timeoutMs);
 
     bool hasResult() const { return m_result.has_value(); }
     // The last result; an empty one before the first run.
@@ -99,12 +110,14 @@ private:
     void onModelChanged();
     void onSessionChanged();
     QStringList sessionAutomaticSteps() const;
-    void onThreadFinished(QThread* thread);
+    void onThreadFinished(const Job* finishedJob);
+    void launch(const std::shared_ptr<Job>& job);
 
     Document* m_document;
     QPointer<SimulationSession> m_session;
     std::shared_ptr<Job> m_current;   // the run whose result is wanted
-    std::vector<Worker> m_workers;    // every thread not yet joined, abandoned ones included
+    std::vector<Worker> m_workers;    // every thread not yet joined, an abandoned one included
+    std::shared_ptr<Job> m_waiting;   // m_current, until the abandoned worker has ended
     std::optional<core::VerificationResult> m_result;
     QString m_failure;
     bool m_stale = false;

@@ -32,6 +32,34 @@ NestedEngine::NestedEngine(const NestedGrafcet& grafcet, const std::function<int
         m_outputNames.push_back(output.variable);
         m_outputSlots.push_back(slotOf(output.variable));
     }
+    auto topology = std::make_shared<Topology>();
+    topology->following.resize(grafcet.steps.size());
+    for (std::size_t t = 0; t < grafcet.transitions.size(); ++t) {
+        const NestedTransition& transition = grafcet.transitions[t];
+        std::vector<std::size_t> upstream, downstream;
+        bool known = true;
+        const auto indices = [&](const std::vector<int>& numbers, std::vector<std::size_t>& into) {
+            for (int number : numbers) {
+                const int index = stepIndex(number);
+                known = known && index >= 0;
+                if (index >= 0)
+                    into.push_back(static_cast<std::size_t>(index));
+            }
+        };
+        indices(transition.upstream, upstream);
+        indices(transition.downstream, downstream);
+        // A transition naming a step that does not exist is never enabled
+        // (its upstream step is never active) and must not be indexed.
+        const bool usable = transition.usable && known;
+        if (usable) {
+            for (std::size_t step : upstream)
+                topology->following[step].push_back(t);
+        }
+        topology->upstream.push_back(std::move(upstream));
+        topology->downstream.push_back(std::move(downstream));
+        topology->usable.push_back(usable ? 1 : 0);
+    }
+    m_topology = std::move(topology);
     reset();
 }
 
@@ -44,6 +72,7 @@ void NestedEngine::reset()
     m_complete = false;
     m_unstable = false;
     m_fired.clear();
+    m_enabled.clear();
 }
 
 int NestedEngine::slot(std::string_view name) const
@@ -245,58 +274,83 @@ void NestedEngine::runStored(const std::vector<NestedAction>& actions, NestedGlo
     }
 }
 
-// IEC 60848 rules 2-5; true when a transition fired.
+bool NestedEngine::enabled(std::size_t transition) const
+{
+    const std::vector<std::size_t>& upstream = m_topology->upstream[transition];
+    return std::all_of(upstream.begin(), upstream.end(), [&](std::size_t step) { return m_x[step] != 0; });
+}
+
+// Once per evolving call: the transitions enabled in the situation it starts from.
+void NestedEngine::findEnabled()
+{
+    m_enabled.clear();
+    for (std::size_t t = 0; t < m_topology->usable.size(); ++t) {
+        if (m_topology->usable[t] && enabled(t))
+            m_enabled.push_back(t);
+    }
+}
+
+// After an evolution only two kinds of transitions can have changed: those
+// enabled before (one of their upstream steps may have left) and those
+// following a step that entered.
+void NestedEngine::updateEnabled(const std::vector<std::size_t>& entered)
+{
+    std::vector<std::size_t> candidates = std::move(m_enabled);
+    for (std::size_t step : entered)
+        candidates.insert(candidates.end(), m_topology->following[step].begin(), m_topology->following[step].end());
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    std::erase_if(candidates, [this](std::size_t t) { return !enabled(t); });
+    m_enabled = std::move(candidates);
+}
+
+// IEC 60848 rules 2-5; true when a transition fired. Only the enabled
+// transitions are evaluated: the others cannot fire, whatever their receptivity.
 bool NestedEngine::evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals& globals)
 {
     const auto& transitions = m_grafcet->transitions;
-    m_fires.assign(transitions.size(), 0);
-    bool fired = false;
-    for (std::size_t t = 0; t < transitions.size(); ++t) {
+    std::vector<std::size_t> firing;
+    for (std::size_t t : m_enabled) {
         const NestedTransition& transition = transitions[t];
-        if (!transition.usable)
-            continue;
-        const bool enabled = std::all_of(transition.upstream.begin(), transition.upstream.end(),
-                                         [&](int n) { return active(n); });
-        if (enabled && cond::isTrue(evaluate(transition.receptivity.expression, &transition.timerOfNode, globals,
-                                             firstEvolution))) {
-            m_fires[t] = 1;
-            fired = true;
-        }
+        if (cond::isTrue(evaluate(transition.receptivity.expression, &transition.timerOfNode, globals, firstEvolution)))
+            firing.push_back(t);
     }
-    if (!fired)
+    if (firing.empty())
         return false;
-    for (std::size_t t = 0; t < transitions.size(); ++t) {
-        if (m_fires[t] && std::find(m_fired.begin(), m_fired.end(), transitions[t].number) == m_fired.end())
-            m_fired.push_back(transitions[t].number);
+    constexpr char kDeactivated = 1, kActivated = 2;
+    std::vector<std::pair<std::size_t, char>> touched; // step, what the firing does to it
+    for (std::size_t t : firing) {
+        m_fired.push_back(transitions[t].number);
+        for (std::size_t step : m_topology->upstream[t])
+            touched.emplace_back(step, kDeactivated);
+        for (std::size_t step : m_topology->downstream[t])
+            touched.emplace_back(step, kActivated);
     }
-    m_left.assign(m_x.size(), 0);
-    m_entered.assign(m_x.size(), 0);
-    std::vector<char> deactivated(m_x.size(), 0), activated(m_x.size(), 0);
-    for (std::size_t t = 0; t < transitions.size(); ++t) {
-        if (!m_fires[t])
-            continue;
-        for (int n : transitions[t].upstream)
-            deactivated[static_cast<std::size_t>(stepIndex(n))] = 1;
-        for (int n : transitions[t].downstream)
-            activated[static_cast<std::size_t>(stepIndex(n))] = 1;
+    // Steps in number order, as the actions run (steps are kept by number).
+    std::sort(touched.begin(), touched.end());
+    std::vector<std::size_t> left, entered;
+    for (std::size_t i = 0; i < touched.size();) {
+        const std::size_t step = touched[i].first;
+        char what = 0;
+        for (; i < touched.size() && touched[i].first == step; ++i)
+            what |= touched[i].second;
+        if (what == kDeactivated)
+            left.push_back(step);
+        else if ((what & kActivated) && !m_x[step])
+            entered.push_back(step);
     }
-    for (std::size_t i = 0; i < m_x.size(); ++i) {
-        m_left[i] = deactivated[i] && !activated[i];
-        m_entered[i] = activated[i] && !m_x[i];
-    }
-    for (std::size_t i = 0; i < m_x.size(); ++i)
-        m_x[i] = (m_x[i] && !m_left[i]) || m_entered[i];
-    for (std::size_t i = 0; i < m_x.size(); ++i) {
-        if (m_left[i])
-            runStored(m_grafcet->steps[i].onDeactivation, globals);
-    }
-    for (std::size_t i = 0; i < m_x.size(); ++i) {
-        if (!m_entered[i])
-            continue;
-        runStored(m_grafcet->steps[i].onActivation, globals);
-        for (int timer : m_grafcet->steps[i].timers)
+    for (std::size_t step : left)
+        m_x[step] = 0;
+    for (std::size_t step : entered)
+        m_x[step] = 1;
+    for (std::size_t step : left)
+        runStored(m_grafcet->steps[step].onDeactivation, globals);
+    for (std::size_t step : entered) {
+        runStored(m_grafcet->steps[step].onActivation, globals);
+        for (int timer : m_grafcet->steps[step].timers)
             runTon(static_cast<std::size_t>(timer), false, nowMs);
     }
+    updateEnabled(entered);
     return true;
 }
 
@@ -345,6 +399,7 @@ void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& 
     } else {
         for (std::size_t t = 0; t < m_timers.size(); ++t)
             runTon(t, active(m_grafcet->timers[t].step), nowMs);
+        findEnabled();
         int evolutions = 0;
         bool fired = false;
         do {
@@ -353,7 +408,9 @@ void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& 
         } while (m_untilStable && fired && evolutions < m_grafcet->maxEvolutions);
         if (m_untilStable) {
             m_unstable = fired;
-            std::sort(m_fired.begin(), m_fired.end()); // each evolution added its own in number order
+            // Each evolution added its own in number order; a transition may fire in several.
+            std::sort(m_fired.begin(), m_fired.end());
+            m_fired.erase(std::unique(m_fired.begin(), m_fired.end()), m_fired.end());
         }
     }
     computeOutputs(globals);

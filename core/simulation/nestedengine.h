@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -145,6 +146,9 @@ private:
     int ownOutput(std::string_view name) const; // index into m_outputNames, -1 when not one
     void runTon(std::size_t timer, bool in, std::int64_t nowMs);
     bool evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals& globals);
+    bool enabled(std::size_t transition) const;
+    void findEnabled();
+    void updateEnabled(const std::vector<std::size_t>& entered);
     void runStored(const std::vector<NestedAction>& actions, NestedGlobals& globals);
     void computeOutputs(const NestedGlobals& globals);
     int slot(std::string_view name) const;
@@ -168,8 +172,21 @@ private:
     // NestedStep::continuous[i].
     std::vector<std::size_t> m_continuousStart;
     std::vector<char> m_emitting;
-    // Scratch of one evolution.
-    std::vector<char> m_fires, m_left, m_entered;
+    // The transitions by index, so that an evolution looks only at the
+    // transitions it can fire (a search for stability makes up to
+    // transitions + 1 evolutions per call). Shared by copies: a simulator's
+    // history keeps one per scan.
+    struct Topology {
+        std::vector<std::vector<std::size_t>> upstream;   // by transition: step indices
+        std::vector<std::vector<std::size_t>> downstream; // by transition: step indices
+        std::vector<std::vector<std::size_t>> following;  // by step: the usable transitions it is upstream of
+        std::vector<char> usable; // by transition: usable, and every step it names exists
+    };
+    std::shared_ptr<const Topology> m_topology;
+    // During an evolving call: the usable transitions whose upstream steps
+    // are all active, ascending (firing order does not matter: all fire
+    // together; the lists keep the number order of the old full pass).
+    std::vector<std::size_t> m_enabled;
 };
 
 } // namespace core

@@ -40,6 +40,7 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <variant>
@@ -178,6 +179,18 @@ QLabel* sectionLabel(const QString& text, QWidget* parent)
     font.setBold(true);
     label->setFont(font);
     return label;
+}
+
+// A GRAFCET of thousands of transitions (issue 32) would fill the
+// explanation with rows saying "upstream step not active", rebuilt at every
+// frame of a run: beyond this many transitions only those whose upstream
+// steps are all active are listed, and the others counted in one row.
+constexpr std::size_t kMaxListedNestedTransitions = 100;
+
+bool isListed(const core::NestedExplanation& nested, const core::NestedTransitionExplanation& transition)
+{
+    return nested.transitions.size() <= kMaxListedNestedTransitions
+        || transition.status != core::NestedTransitionStatus::UpstreamInactive;
 }
 
 } // namespace
@@ -1012,7 +1025,9 @@ void SimulationDock::refreshExplanation()
         for (std::size_t i = 0; i < engine->outputNames().size(); ++i)
             shown << boolText(engine->output(i));
         for (const core::NestedTransitionExplanation& t : nested.transitions) {
-            shown << QString::number(static_cast<int>(t.status));
+            if (!isListed(nested, t))
+                continue;
+            shown << QString::number(t.number) << QString::number(static_cast<int>(t.status));
             for (const core::ExplanationReason& reason : t.reasons)
                 shown << QString::fromStdString(core::toText(reason));
         }
@@ -1101,7 +1116,16 @@ void SimulationDock::addNestedExplanation(const core::NestedEngine& engine, cons
         addState(tr("Outputs: %1").arg(outputs.join(QStringLiteral(", "))));
     if (nested.untilStable)
         addState(QStringLiteral("Unstable = %1").arg(boolText(engine.unstable()))); // code in every language
+    const auto unlisted = std::count_if(nested.transitions.begin(), nested.transitions.end(),
+                                        [&nested](const core::NestedTransitionExplanation& t) {
+                                            return !isListed(nested, t);
+                                        });
+    if (unlisted > 0)
+        //: the transitions of a large nested GRAFCET left out of the explanation
+        addState(tr("%n other transition(s): an upstream step is not active", nullptr, int(unlisted)));
     for (const core::NestedTransitionExplanation& t : nested.transitions) {
+        if (!isListed(nested, t))
+            continue;
         auto* item = new QTreeWidgetItem(grafcet);
         //: a transition of a nested GRAFCET: its number, upstream and downstream steps
         item->setText(TransitionColumn, tr("T%1 (%2 → %3)")

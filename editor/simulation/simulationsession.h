@@ -25,9 +25,12 @@ class Document;
 // While active the Document is read-only; any change of the model (a file
 // opened, a new model) ends the mode, since the simulator ran the old one.
 //
-// A timer drives the scans in batches: every tick (about one frame) runs the
-// scans owed at the chosen speed since the last tick and emits stepped()
-// once, so 1,000 scans per second cost one UI update per frame, not 1,000.
+// A timer drives the scans in batches on the GUI thread: every tick (about
+// one frame) runs the scans owed at the chosen speed since the last tick and
+// emits stepped() once, so 1,000 scans per second cost one UI update per
+// frame, not 1,000. A tick stops its batch after a time budget, so a model
+// whose scans are slow (a big GRAFCET under the search for stability) slows
+// simulated time down instead of freezing the window (docs/design-notes.md).
 //
 // Everything the user does is kept from the last reset, so the session can
 // be saved as a scenario file (the inputs and Complete settings of each
@@ -160,6 +163,9 @@ signals:
 
 private:
     void onTick();
+    // advance(), stopping after the first scan that ends past `budgetNs`
+    // nanoseconds (no limit when negative).
+    void runScans(std::int64_t scans, qint64 budgetNs);
     void onModelChanged();
     void clearSession();
     void afterScan(core::ScanRecord&& record);

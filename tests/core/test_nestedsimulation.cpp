@@ -4,9 +4,11 @@
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
+#include "modelfactory.h"
 #include "samplemodels.h"
 
 #include <catch2/catch.hpp>
+#include <chrono>
 
 #include <map>
 #include <optional>
@@ -170,6 +172,25 @@ TEST_CASE("Until stable: the search goes on, bounded, and reports Unstable", "[s
     REQUIRE(endless.setVariable("A", true));
     endless.step();
     CHECK(endless.unstable("F1")); // four evolutions allowed, the last still fired
+}
+
+// Issue 32: each of the 10,001 evolutions of a scan evaluated all 10,000
+// transitions (over 30 s a scan); only the enabled ones can fire.
+TEST_CASE("Until stable: a scan of a 10,000-step unstable GRAFCET evaluates only enabled transitions",
+          "[simulation][nested-simulation][performance]")
+{
+    Simulator simulator(factory::unstableGrafcetModel(10000));
+    const auto start = std::chrono::steady_clock::now();
+    simulator.step();
+    simulator.step();
+    const auto elapsed = std::chrono::steady_clock::now() - start;
+    // 10,001 evolutions per scan, one step each: the token goes round once and one step on.
+    CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{3});
+    CHECK(simulator.unstable("F1"));
+    CHECK(simulator.firedNestedTransitions("F1").size() == 10000);
+    // Milliseconds now; a bound for a loaded machine under the sanitizers
+    // that the old cost (seconds per scan) cannot meet.
+    CHECK(std::chrono::duration_cast<std::chrono::milliseconds>(elapsed).count() < 4000);
 }
 
 TEST_CASE("Scenarios set inputs only and expect nested steps and Unstable", "[simulation][nested-simulation][scenario]")

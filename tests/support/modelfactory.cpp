@@ -290,6 +290,21 @@ int applyRandomEdits(core::Model& model, std::mt19937& random, int count)
     return accepted;
 }
 
+core::Model unstableGrafcetModel(int steps)
+{
+    core::Grafcet grafcet;
+    for (int n = 1; n <= steps; ++n)
+        require(grafcet.addStep({n, n == 1, "", {}}));
+    for (int n = 1; n <= steps; ++n)
+        require(grafcet.addTransition({n, {n}, {n < steps ? n + 1 : 1}, "TRUE"}));
+    core::Model model;
+    require(model.setName("Unstable GRAFCET"));
+    require(model.setInitialStep("F1"));
+    require(model.setGrafcet("F1", std::move(grafcet)));
+    model.setEvolutionRule(core::EvolutionRule::UntilStable);
+    return model;
+}
+
 core::Model longGrafcetModel(int steps)
 {
     core::Model model = realisticModel();

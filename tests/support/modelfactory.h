@@ -53,6 +53,13 @@ core::Grafcet loopedSequence(int steps);
 // (its Out<n> and Go<n> undeclared: drawing and opening do not need them).
 core::Model longGrafcetModel(int steps);
 
+// Issue 32's unstable GRAFCET: a model whose initial step F1 (a macro-step)
+// holds a cycle of `steps` steps (step 1 initial, transition n from step n
+// to step n + 1, the last back to step 1), every receptivity TRUE, under the
+// evolution rule *until stable*: every scan makes the most evolutions the
+// search for stability allows (steps + 1) and ends Unstable.
+core::Model unstableGrafcetModel(int steps = 10000);
+
 // For the verification of both layers (issue 19): six nested GRAFCETs (F1,
 // F2, F3, F5 macro-steps, F4 and D3 enclosing steps), each a three-way
 // parallel section of `branchLength` steps per branch between a fork and a
