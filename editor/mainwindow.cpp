@@ -1305,6 +1305,8 @@ void MainWindow::showVerificationStatus()
         message = tr("Verification cancelled: the model, the Complete settings or Exact Time changed");
     else if (m_verification->result().violated())
         message = tr("Verification finished: some properties do not hold (see Problems)");
+    else if (m_verification->result().undecided())
+        message = tr("Verification finished: nothing is violated, but some properties are undecided (see Problems)");
     else
         message = tr("Verification finished: every property holds");
     statusBar()->showMessage(message, kStatusMessageMs);

@@ -55,6 +55,7 @@ const char* const kUsage =
     "      Exit 1 when an expectation of the scenario fails.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
     "         [--complete-automatic STEP[,STEP...]|all] [--property \"never P\"]... [--exact-time]\n"
+    "         [--time-limit 4s]\n"
     "      Prove properties of both layers (docs/verification.md): print FILE: ELEMENTS:\n"
     "      severity: CODE: message lines; with DIR, write each counterexample as a scenario\n"
     "      file there; with --promela, also write the model for SPIN. The model's own\n"
@@ -62,6 +63,8 @@ const char* const kUsage =
     "      Timers may or may not have elapsed unless --exact-time counts time in scans.\n"
     "      Complete of a nested step without GRAFCET is free (any value at any scan) unless\n"
     "      named by --complete-automatic (TRUE at every scan, as the skeleton FB).\n"
+    "      The whole run stops after --time-limit (default 4s, at most 1h; what it could not\n"
+    "      decide by then is reported as not exhaustive or undecided).\n"
     "      Each property ends as holds, violated or undecided. Exit 1 when a finding is an\n"
     "      error or a warning (a property violated), else 3 when something is undecided (a\n"
     "      property, or a claim whose run does not replay); 2 when a file cannot be written.\n"
@@ -557,7 +560,7 @@ const std::map<std::string, Command>& commands()
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
         {"st", {commandSt, {"--dialect", "--step"}, {}}},
         {"simulate", {commandSimulate, {"--scans"}, {"--trace", "--explain"}}},
-        {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property"},
+        {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property", "--time-limit"},
                     {"--exact-time"}}},
     };
     return table;

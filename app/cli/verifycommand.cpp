@@ -1,5 +1,6 @@
 #include "verifycommand.h"
 
+#include "cycletime.h"
 #include "terminal.h"
 
 #include "core/formats/fileio.h"
@@ -12,6 +13,7 @@
 #include "core/verification/property.h"
 #include "core/verification/verification.h"
 
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <ostream>
@@ -118,6 +120,17 @@ std::optional<std::vector<std::string>> parseCompleteAutomatic(const std::string
 
 // What --promela writes: both layers when the run explores them (nested
 // GRAFCETs or properties), else the GEMMA layer with its probes.
+// The run's time limit, written as a duration (`30s`, `2m`, `1500ms`): from 1 ms to one
+// hour, so that every run stays bounded.
+std::optional<std::chrono::milliseconds> parseTimeLimit(const std::string& text)
+{
+    constexpr int kMaxMs = 60 * 60 * 1000;
+    const std::optional<int> ms = parseCycleTime(text);
+    if (!ms || *ms < 1 || *ms > kMaxMs)
+        return std::nullopt;
+    return std::chrono::milliseconds(*ms);
+}
+
 std::string promelaText(const core::Model& model, const core::VerificationOptions& options)
 {
     if (!core::needsBothLayers(model, options)) {
@@ -211,6 +224,16 @@ int commandVerify(const Arguments& args, Streams streams)
     for (const std::string& id : automatic)
         options.complete[id] = core::CompleteAssumption::Automatic;
     options.exactTime = args.has("--exact-time");
+    if (const std::optional<std::string> limit = args.value("--time-limit")) {
+        const std::optional<std::chrono::milliseconds> parsed = parseTimeLimit(*limit);
+        if (!parsed) {
+            streams.err << "ggstudio-cli: --time-limit '" << *limit
+                        << "': give a duration from 1ms to 1h, such as 30s or 2m" << lineEnd
+                        << "Try 'ggstudio-cli --help'." << lineEnd;
+            return UsageError;
+        }
+        options.timeLimit = *parsed;
+    }
     for (const std::string& property : args.values("--property")) {
         const std::vector<core::PropertyProblem> problems = core::checkProperty(*loaded.model, property);
         if (!problems.empty()) {

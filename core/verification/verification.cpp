@@ -1127,14 +1127,17 @@ VerificationResult Verifier::run()
 bool VerificationResult::violated() const
 {
     return std::any_of(findings.begin(), findings.end(), [](const VerificationFinding& f) {
-        return f.severity != Severity::Info && f.code != verification::kPropertyUndecided;
+        return f.severity != Severity::Info && f.code != verification::kPropertyUndecided
+            && f.code != verification::kIncomplete;
     });
 }
 
 bool VerificationResult::undecided() const
 {
+    if (!exhaustive)
+        return true;
     return std::any_of(findings.begin(), findings.end(), [](const VerificationFinding& f) {
-        return f.code == verification::kPropertyUndecided
+        return f.code == verification::kPropertyUndecided || f.code == verification::kIncomplete
             || (f.severity == Severity::Info && f.counterexample && !f.counterexample->confirmed);
     });
 }

@@ -168,10 +168,11 @@ struct VerificationResult {
     std::size_t programStates = 0;         // explored states of both layers (0: not explored)
     bool bothLayers = false;               // the exploration of both layers ran
 
-    // A finding of severity error or warning other than GV123: a property
-    // does not hold (or, GV100, the budget ran out).
+    // A finding of severity error or warning other than GV100 and GV123: a
+    // property does not hold.
     bool violated() const;
-    // A property is undecided (GV123), or a claim is reported only as "not
+    // Something was left undecided: the budget ran out (GV100, not exhaustive),
+    // a property is undecided (GV123), or a claim is reported only as "not
     // confirmed" because its run does not replay in the simulator.
     bool undecided() const;
 };

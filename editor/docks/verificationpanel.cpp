@@ -375,6 +375,10 @@ void VerificationPanel::refreshStatus()
         if (!result.bothLayers) {
             if (result.violated())
                 text = tr("Some properties do not hold (%1 configurations explored).").arg(configurations);
+            else if (result.undecided())
+                text = tr("Nothing is violated, but some properties are undecided: see the findings (%1 "
+                          "configurations explored).")
+                           .arg(configurations);
             else if (!result.findings.empty())
                 text = tr("Every property holds; see the notes (%1 configurations explored).").arg(configurations);
             else
@@ -382,6 +386,10 @@ void VerificationPanel::refreshStatus()
         } else if (result.violated()) {
             text = tr("Some properties do not hold (%1 configurations of the GEMMA layer and %2 program states of "
                       "both layers explored).")
+                       .arg(configurations, states);
+        } else if (result.undecided()) {
+            text = tr("Nothing is violated, but some properties are undecided: see the findings (%1 configurations "
+                      "of the GEMMA layer and %2 program states of both layers explored).")
                        .arg(configurations, states);
         } else if (!result.findings.empty()) {
             text = tr("Every property holds; see the notes (%1 configurations of the GEMMA layer and %2 program "

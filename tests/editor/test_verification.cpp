@@ -119,6 +119,7 @@ private slots:
     void replayOfANestedFindingShowsItsGrafcet();
     void everyBothLayersCodeIsWorded();
     void stepsWithAGrafcetAreNeverAssumedAutomatic();
+    void undecidedPropertyIsNeverCalledHolding();
 
 private:
     void verifyAndWait();
@@ -975,3 +976,24 @@ void TestVerification::stepsWithAGrafcetAreNeverAssumedAutomatic()
 
 QTEST_MAIN(TestVerification)
 #include "test_verification.moc"
+
+// PartCount only grows, but numeric memories are abstracted: the verifier can
+// neither prove "never PartCount < 0" nor find a run breaking it. The panel and
+// the status bar say undecided, never that every property holds.
+void TestVerification::undecidedPropertyIsNeverCalledHolding()
+{
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    QVERIFY(loaded.model);
+    m_window->document()->replaceModel(*loaded.model, QString(), core::ModelFormat::Native);
+    QVERIFY(m_window->document()->modelForCommands().addProperty({"never PartCount < 0", ""}).ok);
+    verifyAndWait();
+    const core::VerificationResult& result = m_runner->result();
+    QVERIFY(!result.violated());
+    QVERIFY(result.undecided());
+    QVERIFY(row(QStringLiteral("GV123"), QStringLiteral("never PartCount < 0")));
+    const QString status = m_dock->verificationPanel()->statusLabel()->text();
+    QVERIFY2(status.contains(QStringLiteral("undecided")), qPrintable(status));
+    QVERIFY2(!status.contains(QStringLiteral("Every property holds")), qPrintable(status));
+    const QString bar = m_window->statusBar()->currentMessage();
+    QVERIFY2(bar.contains(QStringLiteral("undecided")), qPrintable(bar));
+}
