@@ -1,5 +1,6 @@
 #include "editor/simulation/simulationdock.h"
 
+#include "editor/chart/chartstyle.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/document.h"
 #include "editor/secondarytext.h"
@@ -126,6 +127,26 @@ QString statusText(const core::TransitionExplanation& explanation)
     case core::TransitionStatus::Unusable: return SimulationDock::tr("condition unusable (always FALSE)");
     }
     return {};
+}
+
+// Where a run-time fault happened, worded from its parts so that it translates.
+QString faultPlaceText(const core::SimulationFault& fault)
+{
+    const QString step = QString::fromStdString(fault.stepId);
+    if (!fault.transitionId.empty())
+        return SimulationDock::tr("the condition of %1").arg(transitionLabel(QString::fromStdString(fault.transitionId)));
+    if (fault.actionIndex < 0)
+        return SimulationDock::tr("the receptivity of T%1 of %2").arg(fault.nestedTransition).arg(step);
+    return SimulationDock::tr("action %1 of step %2 of %3").arg(fault.actionIndex + 1).arg(fault.nestedStep).arg(step);
+}
+
+// The fault that stopped the run, as the dock shows it under the active step.
+QString faultText(const core::SimulationFault& fault)
+{
+    return SimulationDock::tr("Stopped at scan %1: integer division by zero in %2 (%3 in '%4'). On the PLC the task "
+                              "stops with a fault; Reset to run again.")
+        .arg(QString::number(static_cast<qlonglong>(fault.scan)), faultPlaceText(fault),
+             QString::fromStdString(fault.division), QString::fromStdString(fault.text));
 }
 
 QString nestedStatusText(core::NestedTransitionStatus status)
@@ -1010,6 +1031,8 @@ void SimulationDock::refreshExplanation()
     const core::NestedEngine* engine = simulator->grafcetEngine(active.toStdString());
 
     QStringList shown{active, boolText(simulator->entry())};
+    if (const std::optional<core::SimulationFault>& fault = simulator->fault())
+        shown << faultText(*fault);
     for (const core::TransitionExplanation& e : explanations) {
         shown << QString::fromStdString(e.transitionId) << QString::number(static_cast<int>(e.status))
               << QString::fromStdString(e.preemptedBy);
@@ -1036,12 +1059,14 @@ void SimulationDock::refreshExplanation()
         return;
     m_shownExplanation = shown;
 
-    if (active.isEmpty())
-        m_activeLabel->setText(tr("No visible step is active (State = %1).").arg(simulator->activeStepNumber()));
-    else
-        m_activeLabel->setText(tr("Active step: <b>%1</b> %2 · Entry = %3")
-                                   .arg(active, officialStateName(active).toHtmlEscaped(),
-                                        boolText(simulator->entry())));
+    QString activeText = active.isEmpty()
+        ? tr("No visible step is active (State = %1).").arg(simulator->activeStepNumber())
+        : tr("Active step: <b>%1</b> %2 · Entry = %3")
+              .arg(active, officialStateName(active).toHtmlEscaped(), boolText(simulator->entry()));
+    if (const std::optional<core::SimulationFault>& fault = simulator->fault())
+        activeText += QStringLiteral("<br><span style=\"color:%1\">%2</span>")
+                          .arg(chartstyle::problemColor().name(), faultText(*fault).toHtmlEscaped());
+    m_activeLabel->setText(activeText);
 
     m_explanationView->clear();
     for (const core::TransitionExplanation& e : explanations) {
