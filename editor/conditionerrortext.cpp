@@ -1,5 +1,7 @@
 #include "editor/conditionerrortext.h"
 
+#include "editor/displaytext.h"
+
 #include <QCoreApplication>
 
 namespace editor {
@@ -155,7 +157,8 @@ QString structureText(const core::cond::ParseError& error, const QString& found)
 
 QString conditionErrorText(const core::cond::ParseError& error)
 {
-    return structureText(error, QString::fromStdString(error.found));
+    // The user's text quoted: a word of 50,000 letters would widen the panel showing it.
+    return structureText(error, elidedText(QString::fromStdString(error.found)));
 }
 
 } // namespace editor

@@ -19,14 +19,23 @@ namespace {
 constexpr double kHeadingGap = 4;
 
 // How many characters of `word` from the start fit in `width`: at least one
-// (a line holds something), never half of a surrogate pair.
-qsizetype fittingPrefix(const QString& word, double width, const std::function<double(const QString&)>& advance)
+// (a line holds something), never half of a surrogate pair. Measures no
+// more than twice what fits: a font's metrics overflow on a text of a
+// hundred thousand characters, and measuring all of a long word for each of
+// its lines would take quadratic time.
+qsizetype fittingPrefix(QStringView word, double width, const std::function<double(const QString&)>& advance)
 {
     qsizetype low = 1; // fits, or must anyway
-    qsizetype high = word.size();
+    qsizetype high = std::min<qsizetype>(word.size(), 16);
+    while (high < word.size() && advance(word.left(high).toString()) <= width) {
+        low = high;
+        high = std::min(word.size(), 2 * high);
+    }
+    if (high == word.size() && advance(word.toString()) <= width)
+        return high;
     while (low < high) {
         const qsizetype middle = (low + high + 1) / 2;
-        if (advance(word.left(middle)) <= width)
+        if (advance(word.left(middle).toString()) <= width)
             low = middle;
         else
             high = middle - 1;
@@ -77,25 +86,24 @@ QStringList wrapText(const QString& text, double firstWidth, double restWidth,
         current.clear();
         width = restWidth;
     };
-    for (const QString& word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+    const auto fits = [&](QStringView part) { return fittingPrefix(part, width, advance) >= part.size(); };
+    for (QStringView word : QStringView(text).split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
         if (!current.isEmpty()) {
-            const QString longer = current + QLatin1Char(' ') + word;
-            if (advance(longer) <= width) {
+            const QString longer = current + QLatin1Char(' ') + word.toString();
+            if (fits(longer)) {
                 current = longer;
                 continue;
             }
             newLine();
         }
-        QString rest = word;
-        while (rest.size() > 1 && advance(rest) > width) {
-            const qsizetype fitting = fittingPrefix(rest, width, advance);
-            if (fitting >= rest.size())
-                break;
-            current = rest.left(fitting);
+        QStringView rest = word;
+        for (qsizetype fitting = fittingPrefix(rest, width, advance); fitting < rest.size();
+             fitting = fittingPrefix(rest, width, advance)) {
+            current = rest.left(fitting).toString();
             rest = rest.mid(fitting);
             newLine();
         }
-        current = rest;
+        current = rest.toString();
     }
     if (!current.isEmpty())
         lines.append(current);

@@ -1,5 +1,6 @@
 #include "editor/conditiontypeerrortext.h"
 
+#include "editor/displaytext.h"
 #include "editor/stdstring.h"
 
 #include <QCoreApplication>
@@ -20,7 +21,7 @@ using Kind = core::cond::TypeError::Kind;
 QString operandText(const core::cond::TypeError::Operand& operand)
 {
     using core::cond::TypeError;
-    const QString text = fromStd(operand.text);
+    const QString text = elidedText(fromStd(operand.text)); // quoted: never the width of a panel
     if (operand.type == TypeError::kIntegerValue)
         //: %1: a subexpression of the condition
         return ConditionTypeErrorText::tr("'%1' is an integer").arg(text);

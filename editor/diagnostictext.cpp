@@ -2,6 +2,7 @@
 
 #include "editor/conditionerrortext.h"
 #include "editor/conditiontypeerrortext.h"
+#include "editor/displaytext.h"
 #include "editor/stdstring.h"
 #include "editor/valueproblemtext.h"
 #include "editor/docks/elementlabels.h"
@@ -321,17 +322,18 @@ QString bothLayersFinding(const core::VerificationFinding& f)
                                   "%1 is entered: stored actions are memories, only continuous outputs drop with "
                                   "the state.")
             .arg(arg(0), arg(1));
-    // The property texts are the user's, shown as written.
+    // The property texts are the user's, shown as written, cut when too long
+    // for a message (the Properties tab holds them whole).
     if (code == gv::kPropertyViolated && n == 1)
-        return DiagnosticText::tr("The property '%1' does not hold.").arg(fromStd(a[0]));
+        return DiagnosticText::tr("The property '%1' does not hold.").arg(elidedText(fromStd(a[0])));
     if (code == gv::kPropertyHolds && n == 1) {
         // The core says whether the proof rests on abstractions only in its message.
         const bool abstracted = f.message.find("abstractions") != std::string::npos;
         return abstracted ? DiagnosticText::tr("The property '%1' holds in every reachable scan, with "
                                                "the abstractions the verification lists.")
-                                .arg(fromStd(a[0]))
+                                .arg(elidedText(fromStd(a[0])))
                           : DiagnosticText::tr("The property '%1' holds in every reachable scan.")
-                                .arg(fromStd(a[0]));
+                                .arg(elidedText(fromStd(a[0])));
     }
     if (code == gv::kPropertyUndecided && n == 2)
         //: %2: why, in English (the verifier's reason)
@@ -339,10 +341,10 @@ QString bothLayersFinding(const core::VerificationFinding& f)
             .arg(fromStd(a[0]), fromStd(a[1]));
     if (code == gv::kPropertyUnusable && n == 2)
         return a[1].empty() ? DiagnosticText::tr("The property '%1' cannot be checked: it is empty.")
-                                  .arg(fromStd(a[0]))
+                                  .arg(elidedText(fromStd(a[0])))
                             //: %2: why, in English (the property checker's message)
                             : DiagnosticText::tr("The property '%1' cannot be checked: %2.")
-                                  .arg(fromStd(a[0]), fromStd(a[1]));
+                                  .arg(elidedText(fromStd(a[0])), elidedText(fromStd(a[1])));
     return {};
 }
 

@@ -171,6 +171,7 @@ void Document::replaceModel(const core::Model& model, const QString& path, core:
         m_filePath = path;
         emit filePathChanged(m_filePath);
     }
+    emit modelReplaced();
 }
 
 QString Document::displayName() const

@@ -65,6 +65,7 @@ public:
     bool save(const QString& path, QString* errorMessage); // native JSON, atomic
     void newFromTemplate();
     // Replaces the whole model (for recovery and import); clears undo history.
+    // Emits modelReset(), then modelReplaced().
     void replaceModel(const core::Model& model, const QString& path, core::ModelFormat format);
 
     QString filePath() const { return m_filePath; }
@@ -82,6 +83,8 @@ signals:
     void propertiesChanged(); // the verification properties: added, removed, edited or moved
     void grafcetChanged(const QString& stepId); // something in the nested GRAFCET of a GEMMA step
     void modelReset();        // everything may have changed
+    // After modelReset: a new model (New, Open, an example, a recovery), not an edit of this one.
+    void modelReplaced();
     void diagnosticsChanged();
     void filePathChanged(const QString& path);
     void modifiedChanged(bool modified);

@@ -6,10 +6,11 @@ namespace editor {
 
 namespace {
 
-// "V IF condition" at its IF word: {V, condition}; {text, ""} without one.
+// "V IF condition" at its IF word: {V, condition}; "IF condition", written
+// before the variable, is {"", condition}; {text, ""} without one.
 std::pair<QString, QString> splitAtIf(const QString& text)
 {
-    static const QRegularExpression ifWord(QStringLiteral(R"(\s+IF\s+|\s+IF$)"),
+    static const QRegularExpression ifWord(QStringLiteral(R"((^|\s+)IF(\s+|$))"),
                                            QRegularExpression::CaseInsensitiveOption);
     const QRegularExpressionMatch match = ifWord.match(text);
     if (!match.hasMatch())
@@ -29,7 +30,9 @@ GrafcetActionParts GrafcetActionParts::of(const core::GrafcetAction& action)
     GrafcetActionParts parts;
     parts.timing = action.timing;
     const QString text = QString::fromStdString(action.text).trimmed();
-    static const QRegularExpression leadingQualifier(QStringLiteral(R"(^([NSR])\s+(.*)$)"),
+    // As the action parser reads it: N, S or R is a qualifier when a name
+    // follows (`S := 1` assigns a variable S, `N IF c` drives a variable N).
+    static const QRegularExpression leadingQualifier(QStringLiteral(R"(^([NSR])\s+(?!IF\b)([A-Z_].*)$)"),
                                                      QRegularExpression::CaseInsensitiveOption);
     const QRegularExpressionMatch qualified = leadingQualifier.match(text);
     QString rest = text;
@@ -45,12 +48,25 @@ GrafcetActionParts GrafcetActionParts::of(const core::GrafcetAction& action)
         parts.qualifierWritten = text.isEmpty(); // a new action gets the N written
     }
     std::tie(parts.variable, parts.operand) = splitAtIf(rest);
+    // A stored action whose variable is not written yet: its qualifier
+    // cannot be written alone (`S` is an action on a variable S).
+    if (parts.variable.isEmpty() && !qualified.hasMatch() && isStored(parts.timing)) {
+        parts.qualifier = Qualifier::S;
+        parts.qualifierWritten = true;
+    }
     return parts;
 }
 
 core::GrafcetAction GrafcetActionParts::action() const
 {
     QString text;
+    if (variable.isEmpty() && qualifier != Qualifier::Assign) {
+        // A qualifier alone would be read as the variable (a lone `S`
+        // drives a variable S): it waits for the variable, with the table.
+        if (!operand.isEmpty())
+            text = QStringLiteral("IF ") + operand;
+        return {timing, text.toStdString()};
+    }
     switch (qualifier) {
     case Qualifier::N:
         text = (qualifierWritten ? QStringLiteral("N ") : QString()) + variable;

@@ -2,6 +2,7 @@
 
 #include "editor/conditionerrortext.h"
 #include "editor/conditiontypeerrortext.h"
+#include "editor/displaytext.h"
 
 #include "core/verification/property.h"
 
@@ -18,8 +19,9 @@ public:
     static QString text(const core::PropertyProblem& problem)
     {
         namespace code = core::property;
+        // The user's words, quoted: a name of 50,000 letters would widen the panel.
         const auto argument = [&](std::size_t i) {
-            return i < problem.arguments.size() ? QString::fromStdString(problem.arguments[i]) : QString();
+            return i < problem.arguments.size() ? elidedText(QString::fromStdString(problem.arguments[i])) : QString();
         };
         if (problem.syntax)
             return conditionErrorText(*problem.syntax);

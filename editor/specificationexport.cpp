@@ -3,6 +3,7 @@
 #include "editor/chart/chartscene.h"
 #include "editor/chartexport.h"
 #include "editor/conditionnotes.h"
+#include "editor/displaytext.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/docks/variablestablemodel.h"
 #include "editor/document.h"
@@ -45,6 +46,7 @@ constexpr double kCellPadding = 3;      // around a table cell's text
 constexpr double kSectionGap = 14;      // above a heading that does not start its page
 constexpr double kMaxGrafcetText = 10;  // a small GRAFCET grows to fill its page no further
 constexpr double kMeasureSlack = 0.5;   // kept free at a line's end, against rounding
+constexpr qsizetype kLongestMeasuredWord = 1000; // characters: wider than a page
 
 QColor inkColor() { return QColor(0x20, 0x24, 0x2a); }
 QColor mutedColor() { return QColor(0x5b, 0x64, 0x70); }
@@ -75,7 +77,10 @@ public:
 
     // `text` in lines no wider than `width`: its own line breaks kept, the
     // rest broken at spaces, a word wider than a line between its
-    // characters (wrapText). No line for an empty text.
+    // characters (wrapText). No line for an empty text. Every text of the
+    // document comes through here: control and bidirectional formatting
+    // characters are written out (withVisibleControls), so that none
+    // reorders or hides what the reader sees.
     QStringList wrap(TextStyle style, const QString& text, double width) const
     {
         const QFontMetricsF& metrics = this->metrics(style);
@@ -85,6 +90,7 @@ public:
         normalised.replace(QStringLiteral("\r\n"), QStringLiteral("\n"));
         normalised.replace(QLatin1Char('\r'), QLatin1Char('\n'));
         normalised.replace(QLatin1Char('\t'), QLatin1Char(' '));
+        normalised = withVisibleControls(normalised);
         QStringList lines;
         for (const QString& paragraph : normalised.split(QLatin1Char('\n'))) {
             const QStringList wrapped = wrapText(paragraph, room, room, advance);
@@ -349,11 +355,16 @@ private:
             return;
         m_laidOut = true;
         const double padding = 2 * m_style.pt(kCellPadding);
-        const auto widestWord = [this](TextStyle style, const QString& text) {
+        // A word of more characters than a third of the table could hold
+        // is not measured (a font's metrics overflow on a hundred thousand).
+        const double widestWanted = m_width / 3;
+        const auto widestWord = [this, widestWanted](TextStyle style, const QString& text) {
             const QFontMetricsF metrics = m_style.metrics(style);
             double widest = 0;
-            for (const QString& word : text.split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts))
-                widest = std::max(widest, metrics.horizontalAdvance(word));
+            for (const QString& word : text.split(QRegularExpression(QStringLiteral("\\s+")), Qt::SkipEmptyParts)) {
+                widest = std::max(widest, word.size() > kLongestMeasuredWord ? widestWanted
+                                                                             : metrics.horizontalAdvance(word));
+            }
             return widest;
         };
         QList<double> widths;
@@ -1051,7 +1062,8 @@ QString SpecificationExport::suggestedFileName(const QString& baseName)
 bool SpecificationExport::writePdf(const QString& path, QString* errorMessage, bool* cancelled) const
 {
     bool stopped = false;
-    const QString title = tr("%1 specification").arg(QString::fromStdString(m_document.model().settings().name));
+    const QString title
+        = tr("%1 specification").arg(withVisibleControls(QString::fromStdString(m_document.model().settings().name)));
     const QDateTime date = m_date.isValid() ? m_date : QDateTime::currentDateTime();
     const bool ok = PictureFile::writePdf(
         path, title, QPageLayout::Portrait,

@@ -60,6 +60,7 @@ void ProblemCounter::setVerification(const VerificationRunner* runner)
     for (auto signal : {&VerificationRunner::finished, &VerificationRunner::started})
         connect(runner, signal, this, &ProblemCounter::recount);
     connect(runner, &VerificationRunner::staleChanged, this, &ProblemCounter::recount);
+    connect(runner, &VerificationRunner::resultCleared, this, &ProblemCounter::recount);
     recount();
 }
 

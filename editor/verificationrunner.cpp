@@ -47,6 +47,7 @@ VerificationRunner::VerificationRunner(Document* document, SimulationSession* se
 {
     Q_ASSERT(document);
     connect(m_document, &Document::modelReset, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::modelReplaced, this, &VerificationRunner::onModelReplaced);
     connect(m_document, &Document::stepChanged, this, &VerificationRunner::onModelChanged);
     connect(m_document, &Document::transitionChanged, this, &VerificationRunner::onModelChanged);
     connect(m_document, &Document::variableChanged, this, &VerificationRunner::onModelChanged);
@@ -55,8 +56,9 @@ VerificationRunner::VerificationRunner(Document* document, SimulationSession* se
     if (m_session) {
         // Complete modes change with the user's choice, a reset or a replay,
         // each followed by inputsChanged(); they exist while the mode is active.
-        connect(m_session, &SimulationSession::activeChanged, this, &VerificationRunner::onSessionChanged);
-        connect(m_session, &SimulationSession::inputsChanged, this, &VerificationRunner::onSessionChanged);
+        connect(m_session, &SimulationSession::activeChanged, this, [this] { onSessionChanged(); });
+        connect(m_session, &SimulationSession::inputsChanged, this, [this] { onSessionChanged(); });
+        connect(m_session, &SimulationSession::completeModeChosen, this, [this] { onSessionChanged(true); });
     }
     m_assumedAutomatic = sessionAutomaticSteps();
 }
@@ -153,6 +155,25 @@ void VerificationRunner::onModelChanged()
     }
 }
 
+void VerificationRunner::onModelReplaced()
+{
+    cancel();
+    const bool had = m_result.has_value() || !m_failure.isEmpty();
+    m_result.reset();
+    m_failure.clear();
+    m_stale = false;
+    m_wasCancelled = false;
+    m_resultAutomatic.clear();
+    m_currentWithAutomatic.clear();
+    if (had)
+        emit resultCleared();
+}
+
+bool VerificationRunner::completeAssumptionsDiffer() const
+{
+    return hasResult() && m_assumedAutomatic != m_resultAutomatic && m_assumedAutomatic != m_currentWithAutomatic;
+}
+
 QStringList VerificationRunner::sessionAutomaticSteps() const
 {
     QStringList steps;
@@ -178,14 +199,18 @@ void VerificationRunner::setExactTime(bool exact)
     emit assumptionsChanged();
 }
 
-// Called for every input the user plays: only a change of the assumptions counts.
-void VerificationRunner::onSessionChanged()
+// Called for every input the user plays: only a change of the assumptions
+// counts, and only the user's choice makes the last result outdated or
+// abandons a run (which then finishes as current with the new settings).
+void VerificationRunner::onSessionChanged(bool chosen)
 {
     QStringList automatic = sessionAutomaticSteps();
     if (automatic == m_assumedAutomatic)
         return;
+    if (!chosen && !completeAssumptionsDiffer())
+        m_currentWithAutomatic = automatic;
     m_assumedAutomatic = std::move(automatic);
-    if (isRunning() && m_current->automatic != m_assumedAutomatic)
+    if (chosen && isRunning() && m_current->automatic != m_assumedAutomatic)
         cancel();
     emit assumptionsChanged();
 }
@@ -213,6 +238,9 @@ void VerificationRunner::onThreadFinished(const Job* finishedJob)
     if (job->failure.empty()) {
         m_result = std::move(job->result);
         m_resultAutomatic = job->automatic;
+        // No choice of the user came since the run started (it would have
+        // abandoned it): the result is current with today's settings too.
+        m_currentWithAutomatic = m_assumedAutomatic;
         m_resultExactTime = job->exactTime;
         m_failure.clear();
         m_stale = false;

@@ -38,6 +38,10 @@ class SimulationSession;
 // assumptions, or of the way time is counted (exact time), like a change of
 // the model, abandons a run under way; the last result keeps the assumptions
 // it was computed with, so the window can tell that it no longer matches them.
+// Only the user's choice of a Complete mode counts as such a change: the
+// simulation starting or ending, a reset or a replay moves what the next run
+// would assume, but changes none of the user's settings, so findings current
+// before are current after. A new model (New, Open...) starts without result.
 class VerificationRunner : public QObject {
     Q_OBJECT
 
@@ -85,7 +89,7 @@ public:
     // still fit the model (each is a run of it, replayed in the simulator), so
     // unlike isStale() this does not stop a replay.
     bool assumptionsDiffer() const { return completeAssumptionsDiffer() || timeCountingDiffers(); }
-    bool completeAssumptionsDiffer() const { return hasResult() && m_resultAutomatic != m_assumedAutomatic; }
+    bool completeAssumptionsDiffer() const;
     bool timeCountingDiffers() const { return hasResult() && m_resultExactTime != m_exactTime; }
 
 signals:
@@ -95,6 +99,8 @@ signals:
     // A run was abandoned: the model changed, or the user started again.
     void cancelled();
     void staleChanged(bool stale);
+    // The result was dropped with the model it described (New, Open...).
+    void resultCleared();
     // assumedAutomatic() or exactTime() changed (and with it maybe assumptionsDiffer()).
     void assumptionsChanged();
 
@@ -108,7 +114,10 @@ private:
     // In the worker thread.
     static void runJob(const std::shared_ptr<Job>& job);
     void onModelChanged();
-    void onSessionChanged();
+    void onModelReplaced();
+    // `chosen`: the user chose a Complete mode; otherwise the simulation
+    // started, ended or played a replay, which choose nothing.
+    void onSessionChanged(bool chosen = false);
     QStringList sessionAutomaticSteps() const;
     void onThreadFinished(const Job* finishedJob);
     void launch(const std::shared_ptr<Job>& job);
@@ -123,6 +132,9 @@ private:
     bool m_stale = false;
     bool m_wasCancelled = false;
     QStringList m_assumedAutomatic;
+    // The Complete settings under which the last result counts as current:
+    // what it assumed, moved along by the changes the user did not choose.
+    QStringList m_currentWithAutomatic;
     bool m_exactTime = false;
     QStringList m_resultAutomatic;
     bool m_resultExactTime = false;

@@ -1,5 +1,6 @@
 #include "editor/chart/chartcontextmenu.h"
 
+#include "editor/commands/initialsteprule.h"
 #include "editor/commands/setelementshiddencommand.h"
 #include "editor/commands/setinitialstepcommand.h"
 #include "editor/commands/setnegatedcommand.h"
@@ -26,6 +27,17 @@ QAction* addNamed(QMenu* menu, const char* name, const QString& text)
     QAction* action = menu->addAction(text);
     action->setObjectName(QLatin1String(name));
     return action;
+}
+
+// Disabled, with why on hovering it, when `refusal` says why it cannot be done.
+void refuseIf(QMenu* menu, QAction* action, const QString& refusal)
+{
+    if (refusal.isEmpty())
+        return;
+    action->setEnabled(false);
+    action->setToolTip(refusal);
+    action->setStatusTip(refusal);
+    menu->setToolTipsVisible(true);
 }
 
 } // namespace
@@ -73,6 +85,7 @@ void ChartContextMenu::addStepEntries(QMenu* menu, const QString& stepId)
                              hidden ? tr("&Show %1").arg(stepId) : tr("&Hide %1").arg(stepId));
     connect(hide, &QAction::triggered, this,
             [this, stepId, hidden] { m_document.push(new SetStepHiddenCommand(m_document, stepId, !hidden)); });
+    refuseIf(menu, hide, InitialStepRule::hidingRefusal(m_document.model(), stepId));
 
     QMenu* types = menu->addMenu(tr("Step &Type"));
     types->setObjectName(QStringLiteral("stepTypeMenu"));
@@ -91,6 +104,7 @@ void ChartContextMenu::addStepEntries(QMenu* menu, const QString& stepId)
 
     QAction* initial = addNamed(menu, "makeInitialAction", tr("Make &Initial Step"));
     initial->setEnabled(!step->initial);
+    refuseIf(menu, initial, InitialStepRule::initialRefusal(m_document.model(), stepId));
     connect(initial, &QAction::triggered, this,
             [this, stepId] { m_document.push(new SetInitialStepCommand(m_document, stepId)); });
 
@@ -152,6 +166,7 @@ void ChartContextMenu::addSelectionEntries(QMenu* menu, const QList<ElementRef>&
     QAction* hide = addNamed(menu, "hideSelectionAction", tr("Hide the %n Selected Elements", nullptr, count));
     connect(hide, &QAction::triggered, this,
             [this, elements] { m_document.push(new SetElementsHiddenCommand(m_document, elements, true)); });
+    refuseIf(menu, hide, InitialStepRule::hidingRefusal(m_document.model(), elements));
     QAction* show = addNamed(menu, "showSelectionAction", tr("Show the %n Selected Elements", nullptr, count));
     connect(show, &QAction::triggered, this,
             [this, elements] { m_document.push(new SetElementsHiddenCommand(m_document, elements, false)); });

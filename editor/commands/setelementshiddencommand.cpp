@@ -1,5 +1,7 @@
 #include "editor/commands/setelementshiddencommand.h"
 
+#include "editor/commands/initialsteprule.h"
+
 #include "core/model/model.h"
 
 namespace editor {
@@ -35,6 +37,11 @@ core::Status SetElementsHiddenCommand::setHidden(const ElementRef& element, bool
 
 core::Status SetElementsHiddenCommand::apply()
 {
+    if (firstRun() && m_hidden) {
+        // All or nothing: hiding the others alone would not be what was asked.
+        if (const QString refusal = InitialStepRule::hidingRefusal(model(), m_elements); !refusal.isEmpty())
+            return core::Status::failure("initial-step-hidden", toStdString(refusal));
+    }
     if (firstRun()) {
         for (const ElementRef& element : m_elements) {
             const std::string id = toStdString(element.id);

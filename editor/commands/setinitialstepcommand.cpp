@@ -1,6 +1,7 @@
 #include "editor/commands/setinitialstepcommand.h"
 
 #include "editor/commands/commandids.h"
+#include "editor/commands/initialsteprule.h"
 
 #include "core/model/model.h"
 
@@ -19,8 +20,11 @@ int SetInitialStepCommand::id() const
 
 core::Status SetInitialStepCommand::apply()
 {
-    if (firstRun())
+    if (firstRun()) {
+        if (const QString refusal = InitialStepRule::initialRefusal(model(), toQString(m_stepId)); !refusal.isEmpty())
+            return core::Status::failure("initial-step-hidden", toStdString(refusal));
         m_previous = model().initialStep().id;
+    }
     return model().setInitialStep(m_stepId);
 }
 

@@ -1,6 +1,7 @@
 #include "editor/commands/setstephiddencommand.h"
 
 #include "editor/commands/commandids.h"
+#include "editor/commands/initialsteprule.h"
 
 #include "core/model/model.h"
 
@@ -22,6 +23,10 @@ int SetStepHiddenCommand::id() const
 // so the inverse is always the opposite flag.
 core::Status SetStepHiddenCommand::apply()
 {
+    if (firstRun() && m_hidden) {
+        if (const QString refusal = InitialStepRule::hidingRefusal(model(), toQString(m_stepId)); !refusal.isEmpty())
+            return core::Status::failure("initial-step-hidden", toStdString(refusal));
+    }
     return model().setStepHidden(m_stepId, m_hidden);
 }
 

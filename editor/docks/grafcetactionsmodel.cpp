@@ -20,7 +20,10 @@ GrafcetActionsModel::GrafcetActionsModel(Document* document, QObject* parent)
         if (stepId == m_stepId)
             refresh();
     });
-    connect(m_document, &Document::modelReset, this, &GrafcetActionsModel::refresh);
+    connect(m_document, &Document::modelReset, this, [this] {
+        m_setParts.clear();
+        refresh();
+    });
     connect(m_document, &Document::diagnosticsChanged, this, &GrafcetActionsModel::refresh);
 }
 
@@ -75,7 +78,7 @@ QVariant GrafcetActionsModel::data(const QModelIndex& index, int role) const
     if (!shown || !index.isValid() || index.row() >= static_cast<int>(shown->actions.size()))
         return {};
     const core::GrafcetAction& action = shown->actions[static_cast<std::size_t>(index.row())];
-    const GrafcetActionParts parts = GrafcetActionParts::of(action);
+    const GrafcetActionParts parts = this->parts(index.row());
     switch (role) {
     case Qt::DisplayRole:
     case Qt::EditRole:
@@ -101,23 +104,47 @@ bool GrafcetActionsModel::setData(const QModelIndex& index, const QVariant& valu
 {
     if (role != Qt::EditRole || !index.isValid() || index.row() >= m_rowCount)
         return false;
-    const core::GrafcetAction action = editedAction(index.row(), index.column(), value.toString());
+    const GrafcetActionParts parts = editedParts(index.row(), index.column(), value.toString());
+    const core::GrafcetAction action = parts.action();
     QString failure;
     const QMetaObject::Connection connection
         = connect(m_document, &Document::editFailed, this, [&failure](const QString& message) { failure = message; });
     const bool ok = m_document->push(new SetGrafcetActionCommand(*m_document, m_stepId, m_number, index.row(), action));
     disconnect(connection);
-    if (!ok)
+    if (!ok) {
         emit editRefused(failure);
-    return ok;
+        return false;
+    }
+    // Kept even when the action did not change: a qualifier chosen for an
+    // action without variable yet changes no text (maybe not even the timing).
+    m_setParts[{m_stepId, m_number, index.row()}] = parts;
+    emit dataChanged(this->index(index.row(), 0), this->index(index.row(), ColumnCount - 1));
+    return true;
 }
 
-core::GrafcetAction GrafcetActionsModel::editedAction(int row, int column, const QString& value) const
+GrafcetActionParts GrafcetActionsModel::parts(int row) const
 {
     const core::GrafcetStep* shown = step();
     if (!shown || row < 0 || row >= static_cast<int>(shown->actions.size()))
         return {};
-    GrafcetActionParts parts = GrafcetActionParts::of(shown->actions[static_cast<std::size_t>(row)]);
+    const core::GrafcetAction& action = shown->actions[static_cast<std::size_t>(row)];
+    const auto set = m_setParts.find({m_stepId, m_number, row});
+    if (set != m_setParts.end() && set->second.action() == action)
+        return set->second;
+    return GrafcetActionParts::of(action);
+}
+
+core::GrafcetAction GrafcetActionsModel::editedAction(int row, int column, const QString& value) const
+{
+    return editedParts(row, column, value).action();
+}
+
+GrafcetActionParts GrafcetActionsModel::editedParts(int row, int column, const QString& value) const
+{
+    const core::GrafcetStep* shown = step();
+    if (!shown || row < 0 || row >= static_cast<int>(shown->actions.size()))
+        return {};
+    GrafcetActionParts parts = this->parts(row);
     switch (column) {
     case TimingColumn:
         if (core::ActionTiming timing; parseTiming(value, &timing))
@@ -131,7 +158,7 @@ core::GrafcetAction GrafcetActionsModel::editedAction(int row, int column, const
     case OperandColumn: parts.operand = value.trimmed(); break;
     default: break;
     }
-    return parts.action();
+    return parts;
 }
 
 QString GrafcetActionsModel::syntaxProblem(const core::GrafcetAction& action)

@@ -2,8 +2,13 @@
 
 #include "core/model/grafcet.h"
 
+#include "editor/grafcetactionparts.h"
+
 #include <QAbstractTableModel>
 #include <QString>
+
+#include <map>
+#include <tuple>
 
 namespace editor {
 
@@ -14,7 +19,10 @@ class Document;
 // (GrafcetActionParts), in the order they run. Editing a cell pushes one
 // SetGrafcetActionCommand for the whole action; choosing a qualifier or a
 // timing keeps the other consistent. Rows the checks object to are red,
-// with the problem as tooltip.
+// with the problem as tooltip. Each cell edits its own part, in any order:
+// the parts as the user set them are kept for as long as the action is what
+// they made, since a text cannot hold them all (a qualifier chosen before
+// the variable has no spelling of its own).
 class GrafcetActionsModel : public QAbstractTableModel {
     Q_OBJECT
 
@@ -39,6 +47,8 @@ public:
 
     // The action of `row` with the cell of `column` set to `value` (its edit role).
     core::GrafcetAction editedAction(int row, int column, const QString& value) const;
+    // What the cells of `row` show.
+    GrafcetActionParts parts(int row) const;
     // Why an action's text does not parse, in the UI language; empty when it does.
     static QString syntaxProblem(const core::GrafcetAction& action);
     // What the checks say of the action of `row`, one line per problem; empty for none.
@@ -56,6 +66,11 @@ signals:
 private:
     const core::GrafcetStep* step() const;
     void refresh();
+    GrafcetActionParts editedParts(int row, int column, const QString& value) const;
+
+    // The parts of an action as its cells last set them, by GEMMA step, nested step and row.
+    using RowKey = std::tuple<QString, int, int>;
+    std::map<RowKey, GrafcetActionParts> m_setParts;
 
     Document* m_document;
     QString m_stepId;

@@ -175,6 +175,7 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
         connect(m_document, &Document::modelReset, this, &ProblemsDock::updateTabTexts);
         connect(m_verification, &VerificationRunner::finished, this, &ProblemsDock::updateTabTexts);
         connect(m_verification, &VerificationRunner::staleChanged, this, &ProblemsDock::updateTabTexts);
+        connect(m_verification, &VerificationRunner::resultCleared, this, &ProblemsDock::updateTabTexts);
         connect(m_verification, &VerificationRunner::assumptionsChanged, this, &ProblemsDock::updateTabTexts);
         setWidget(m_tabs);
     } else {

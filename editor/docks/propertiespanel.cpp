@@ -4,6 +4,7 @@
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/propertiestablemodel.h"
 #include "editor/docks/toolicons.h"
+#include "editor/displaytext.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/propertyproblemtext.h"
@@ -65,6 +66,10 @@ PropertiesPanel::PropertiesPanel(Document* document, QWidget* parent)
     layout->addLayout(editRow);
     layout->addWidget(m_edit);
     m_problemLabel->setObjectName(QStringLiteral("propertyProblem"));
+    // A word wider than the panel (a name of a thousand letters, quoted) is
+    // cut at the panel's edge, not made the panel's minimum width: the dock
+    // column, and with it the window, would grow past the screen.
+    m_problemLabel->setSizePolicy(QSizePolicy::Ignored, m_problemLabel->sizePolicy().verticalPolicy());
     layout->addWidget(m_problemLabel);
 
     connect(m_edit, &ConditionEdit::textEdited, this, [this](const QString& text) {
@@ -223,6 +228,7 @@ void PropertiesPanel::refreshEditor()
         names << QString::fromStdString(variable.name);
     m_edit->setVariableNames(names);
     m_problemLabel->setText(messages.join(QLatin1Char('\n')));
+    m_problemLabel->setToolTip(boundedToolTip(m_problemLabel->text()));
     m_problemLabel->setVisible(!messages.isEmpty());
 }
 

@@ -1,6 +1,7 @@
 #include "editor/docks/propertiestablemodel.h"
 
 #include "editor/commands/propertycommands.h"
+#include "editor/displaytext.h"
 #include "editor/document.h"
 #include "editor/propertyproblemtext.h"
 #include "editor/severityicon.h"
@@ -35,6 +36,9 @@ QVariant PropertiesTableModel::data(const QModelIndex& index, int role) const
     const std::vector<core::PropertyProblem>& wrong = problems(index.row());
     switch (role) {
     case Qt::DisplayRole:
+        // Cut before the view lays it out: a text of megabytes would freeze
+        // it. The editor under the table holds the whole property.
+        return elidedText(QString::fromStdString(index.column() == TextColumn ? property.text : property.comment));
     case Qt::EditRole:
         return QString::fromStdString(index.column() == TextColumn ? property.text : property.comment);
     case Qt::DecorationRole:
@@ -43,7 +47,7 @@ QVariant PropertiesTableModel::data(const QModelIndex& index, int role) const
         return {};
     case Qt::ToolTipRole:
         if (index.column() == TextColumn && !wrong.empty())
-            return propertyProblemText(wrong.front());
+            return boundedToolTip(propertyProblemText(wrong.front()));
         return {};
     default: return {};
     }

@@ -1,5 +1,6 @@
 #include "editor/docks/stepdock.h"
 
+#include "editor/commands/initialsteprule.h"
 #include "editor/commands/setinitialstepcommand.h"
 #include "editor/commands/setstepcommentcommand.h"
 #include "editor/commands/setstephiddencommand.h"
@@ -56,6 +57,12 @@ int linesHeight(const QWidget* widget, int lines)
         + 8;
 }
 
+QString hiddenToolTip()
+{
+    return StepDock::tr("A hidden step is not part of this machine: it generates no code, and its "
+                        "transitions are not effective.");
+}
+
 } // namespace
 
 QString StepDock::title()
@@ -92,8 +99,7 @@ void StepDock::retranslate()
     m_typeLabel->setText(tr("&Type:"));
     m_initialCheck->setText(tr("&Initial"));
     m_hiddenCheck->setText(tr("&Hidden"));
-    m_hiddenCheck->setToolTip(tr("A hidden step is not part of this machine: it generates no code, and its "
-                                 "transitions are not effective."));
+    m_hiddenCheck->setToolTip(hiddenToolTip());
     m_commentLabel->setText(tr("&Comment:"));
     m_commentEdit->setPlaceholderText(tr("What this state does on this machine"));
     m_incomingHeading->setText(tr("Incoming transitions"));
@@ -228,17 +234,24 @@ void StepDock::refreshForm()
         const QSignalBlocker blocker(m_initialCheck);
         m_initialCheck->setChecked(step->initial);
         // Exactly one step is initial: it changes by making another one initial.
-        m_initialCheck->setEnabled(!step->initial);
+        const QString refusal = InitialStepRule::initialRefusal(document()->model(), stepId());
+        m_initialCheck->setEnabled(!step->initial && refusal.isEmpty());
         m_initialCheck->setToolTip(step->initial
                 ? tr("%1 is the initial step. There is always exactly one initial step: to change it, "
                      "make another step initial.")
                       .arg(stepId())
+                : !refusal.isEmpty()
+                ? refusal
                 : tr("Make %1 the initial step (the PLC starts in it). The current initial step is %2.")
                       .arg(stepId(), fromStd(document()->model().initialStep().id)));
     }
     {
         const QSignalBlocker blocker(m_hiddenCheck);
         m_hiddenCheck->setChecked(step->hidden);
+        // A file may hide its initial step: the box stays enabled to show it.
+        const QString refusal = InitialStepRule::hidingRefusal(document()->model(), stepId());
+        m_hiddenCheck->setEnabled(refusal.isEmpty());
+        m_hiddenCheck->setToolTip(refusal.isEmpty() ? hiddenToolTip() : refusal);
     }
     // A macro or enclosing step without one yet opens on the offer to create its usual shape.
     m_openGrafcetButton->setVisible(canOpenNestedGrafcet(document()->model(), stepId()));

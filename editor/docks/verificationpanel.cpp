@@ -1,6 +1,7 @@
 #include "editor/docks/verificationpanel.h"
 
 #include "editor/diagnostictext.h"
+#include "editor/displaytext.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/docks/wrappingitemdelegate.h"
 #include "editor/docks/wrappinglabel.h"
@@ -79,11 +80,12 @@ QString elementText(const std::string& id)
     return text.contains(QLatin1String("->")) ? transitionLabel(text) : text;
 }
 
-// A property finding names no element: the property's text stands for it.
+// A property finding names no element: the property's text stands for it,
+// cut before the view lays out megabytes of it.
 QString elementsText(const core::VerificationFinding& finding)
 {
     if (finding.property >= 0 && !finding.arguments.empty())
-        return QString::fromStdString(finding.arguments.front());
+        return elidedText(QString::fromStdString(finding.arguments.front()));
     QStringList parts;
     for (const std::string& id : finding.elements)
         parts << elementText(id);
@@ -214,6 +216,7 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     connect(m_runner, &VerificationRunner::cancelled, this, &VerificationPanel::refreshStatus);
     connect(m_runner, &VerificationRunner::finished, this, &VerificationPanel::refresh);
     connect(m_runner, &VerificationRunner::staleChanged, this, &VerificationPanel::refresh);
+    connect(m_runner, &VerificationRunner::resultCleared, this, &VerificationPanel::refresh);
     connect(m_runner, &VerificationRunner::assumptionsChanged, this, &VerificationPanel::refresh);
     retranslate();
 }
@@ -305,8 +308,8 @@ QTreeWidgetItem* VerificationPanel::findingItem(const core::VerificationFinding&
     auto* item = new QTreeWidgetItem({QString::fromStdString(finding.code), elementsText(finding), scans, message});
     item->setIcon(CodeColumn, severityIcon(finding.severity));
     item->setToolTip(CodeColumn, severityText(finding.severity));
-    item->setToolTip(ElementColumn, item->text(ElementColumn));
-    item->setToolTip(MessageColumn, message);
+    item->setToolTip(ElementColumn, boundedToolTip(item->text(ElementColumn)));
+    item->setToolTip(MessageColumn, boundedToolTip(message));
     item->setTextAlignment(ScansColumn, Qt::AlignRight | Qt::AlignVCenter);
     item->setData(0, kIndexRole, index);
     if (stale)

@@ -449,8 +449,10 @@ void SimulationSession::setCompleteMode(const QString& stepId, core::CompleteMod
     if (!isActive())
         return;
     continueFromViewedScan(Continuation::Edit);
-    if (m_simulator->setCompleteMode(stepId.toStdString(), mode))
+    if (m_simulator->setCompleteMode(stepId.toStdString(), mode)) {
+        emit completeModeChosen(stepId);
         emit inputsChanged();
+    }
 }
 
 void SimulationSession::setManualComplete(const QString& stepId, bool complete)

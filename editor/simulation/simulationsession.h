@@ -155,6 +155,8 @@ signals:
     // Variables or Complete settings changed: by the user, a released
     // button, a reset or a replay.
     void inputsChanged();
+    // The user chose a Complete mode (setCompleteMode), just before inputsChanged().
+    void completeModeChosen(const QString& stepId);
     // Back to the start state: the trace was cleared.
     void wasReset();
     void replayChanged();

@@ -5,6 +5,8 @@
 #include "editor/commands/addvariablecommand.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setdialectcommand.h"
+#include "editor/commands/setelementshiddencommand.h"
+#include "editor/commands/setinitialstepcommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/commands/setstepcommentcommand.h"
 #include "editor/commands/settokenscommand.h"
@@ -54,6 +56,7 @@
 #include <QTreeWidget>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <optional>
 #include <set>
 #include <string>
@@ -110,6 +113,7 @@ private slots:
     void stepDockShowsSelectedStep();
     void stepDockTypeComboPushesUndoableCommand();
     void stepDockInitialHiddenAndComment();
+    void initialStepIsNeverHidden();
     void stepDockListsTransitionsByPriority();
     void propertyDocksFollowTheirKindAndFocusFields();
     void transitionDockUnderlinesUndeclaredVariable();
@@ -214,6 +218,58 @@ void TestDocks::stepDockInitialHiddenAndComment()
     QCOMPARE(document.undoStack()->count(), 2); // the hiding, then the typing as one step
     document.undoStack()->undo();
     QCOMPARE(comment->toPlainText(), QString());
+}
+
+// The PLC starts in the initial step: no command hides it or makes a hidden
+// step initial, each refusal says why, and the Step dock's boxes say it
+// before. A file that hides it opens as it is, GG001 saying so, and the box
+// shows it again.
+void TestDocks::initialStepIsNeverHidden()
+{
+    Document document;
+    QCOMPARE(document.model().initialStep().id, std::string("A6"));
+    QSignalSpy refused(&document, &Document::editFailed);
+    QVERIFY(!document.push(new SetStepHiddenCommand(document, "A6", true)));
+    QVERIFY(!document.push(new SetElementsHiddenCommand(
+        document, {ElementRef::step("F4"), ElementRef::step("A6"), ElementRef::transition("A6->A1")}, true)));
+    QCOMPARE(refused.size(), 2);
+    for (const QList<QVariant>& signal : refused)
+        QVERIFY2(signal.front().toString().contains("A6 is the initial step"), qPrintable(signal.front().toString()));
+    QVERIFY(!document.model().step("A6")->hidden);
+    QVERIFY(!document.model().step("F4")->hidden); // all or nothing
+    QVERIFY(!document.model().transition("A6->A1")->hidden);
+    QCOMPARE(document.undoStack()->count(), 0);
+    // A hidden step is not made initial either.
+    QVERIFY(document.push(new SetStepHiddenCommand(document, "A1", true)));
+    QVERIFY(!document.push(new SetInitialStepCommand(document, "A1")));
+    QVERIFY(refused.back().front().toString().contains("A1 is hidden"));
+    QVERIFY(document.model().step("A6")->initial);
+
+    Selection selection;
+    StepDock dock(&document, &selection);
+    auto* initial = child<QCheckBox>(&dock, "initialCheck");
+    auto* hidden = child<QCheckBox>(&dock, "hiddenCheck");
+    selection.select(ElementRef::step("A6"));
+    QVERIFY(!hidden->isEnabled());
+    QVERIFY(hidden->toolTip().contains("A6 is the initial step"));
+    selection.select(ElementRef::step("A1"));
+    QVERIFY(hidden->isEnabled());
+    QVERIFY(!initial->isEnabled());
+    QVERIFY(initial->toolTip().contains("A1 is hidden"));
+
+    // A file that hides its initial step opens as it is; GG001 says so, and
+    // the Hidden box shows the step.
+    core::Model hiding;
+    QVERIFY(hiding.setStepHidden("A6", true));
+    document.replaceModel(hiding, QString(), core::ModelFormat::Native);
+    QVERIFY(document.model().step("A6")->hidden);
+    QVERIFY(std::any_of(document.diagnostics().begin(), document.diagnostics().end(),
+                        [](const core::Diagnostic& d) { return d.code == "GG001"; }));
+    selection.select(ElementRef::step("A6"));
+    QVERIFY(hidden->isChecked());
+    QVERIFY(hidden->isEnabled());
+    hidden->click();
+    QVERIFY(!document.model().step("A6")->hidden);
 }
 
 void TestDocks::stepDockListsTransitionsByPriority()

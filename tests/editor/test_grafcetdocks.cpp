@@ -9,6 +9,7 @@
 #include "editortestsupport.h"
 
 #include "editor/chart/chartstyle.h"
+#include "editor/commands/addgrafcetactioncommand.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/grafcetactionsmodel.h"
 #include "editor/docks/grafcetstepdock.h"
@@ -88,6 +89,7 @@ private slots:
     void stepDockEditsInitialAndComment();
     void renumberingRefusesAUsedNumber();
     void actionCellEditIsOneCommand();
+    void actionCellsEditTheirOwnPartInAnyOrder();
     void actionTypedWrongShowsTheError();
     void actionButtonsAddMoveAndRemove();
     void problemsDockSelectsTheNestedElement();
@@ -415,6 +417,75 @@ void TestGrafcetDocks::actionCellEditIsOneCommand()
     undoStack()->undo();
     QCOMPARE(fromStd(f1().step(3)->actions[2].text), QStringLiteral("N Coolant IF NOT DrillHigh"));
     QCOMPARE(model->index(2, GrafcetActionsModel::OperandColumn).data().toString(), QStringLiteral("NOT DrillHigh"));
+}
+
+// Each cell of a new action edits its own part, whatever the order: a
+// qualifier chosen before the variable is no variable called "S".
+void TestGrafcetDocks::actionCellsEditTheirOwnPartInAnyOrder()
+{
+    QVERIFY(openF1());
+    m_window->selection()->select(ElementRef::grafcetStep(kF1, 3));
+    auto* dock = child<GrafcetStepDock>("grafcetStepDock");
+    GrafcetActionsModel* model = dock->actionsModel();
+    const auto addAction = [&] {
+        const int row = int(f1().step(3)->actions.size());
+        Document* document = m_window->document();
+        const core::GrafcetAction empty{core::ActionTiming::Continuous, ""};
+        return document->push(new AddGrafcetActionCommand(*document, kF1, 3, row, empty)) ? row : -1;
+    };
+    const auto set = [&](int row, int column, const QString& value) {
+        return model->setData(model->index(row, column), value);
+    };
+    const auto cell = [&](int row, int column) { return model->index(row, column).data().toString(); };
+    using M = GrafcetActionsModel;
+
+    // The qualifier first, then the variable.
+    const int first = addAction();
+    QVERIFY(set(first, M::QualifierColumn, QStringLiteral("S")));
+    QCOMPARE(cell(first, M::QualifierColumn), QStringLiteral("S"));
+    QVERIFY(cell(first, M::VariableColumn).isEmpty());
+    QCOMPARE(f1().step(3)->actions[std::size_t(first)].timing, core::ActionTiming::OnActivation);
+    QVERIFY(set(first, M::VariableColumn, QStringLiteral("Marker")));
+    QCOMPARE(fromStd(f1().step(3)->actions[std::size_t(first)].text), QStringLiteral("S Marker"));
+    QCOMPARE(cell(first, M::QualifierColumn), QStringLiteral("S"));
+    QCOMPARE(cell(first, M::VariableColumn), QStringLiteral("Marker"));
+
+    // R, which the timing alone cannot tell from S, and the other order on the next rows.
+    const int reset = addAction();
+    QVERIFY(set(reset, M::QualifierColumn, QStringLiteral("R")));
+    QCOMPARE(cell(reset, M::QualifierColumn), QStringLiteral("R"));
+    QVERIFY(set(reset, M::VariableColumn, QStringLiteral("Marker")));
+    QCOMPARE(fromStd(f1().step(3)->actions[std::size_t(reset)].text), QStringLiteral("R Marker"));
+
+    const int second = addAction();
+    QVERIFY(set(second, M::VariableColumn, QStringLiteral("Marker")));
+    QVERIFY(set(second, M::QualifierColumn, QStringLiteral("S")));
+    QCOMPARE(fromStd(f1().step(3)->actions[std::size_t(second)].text), QStringLiteral("S Marker"));
+    QCOMPARE(f1().step(3)->actions[std::size_t(second)].timing, core::ActionTiming::OnActivation);
+
+    // The condition before the variable: no variable called "IF ...".
+    const int conditional = addAction();
+    QVERIFY(set(conditional, M::OperandColumn, QStringLiteral("NOT DrillHigh")));
+    QVERIFY(cell(conditional, M::VariableColumn).isEmpty());
+    QCOMPARE(cell(conditional, M::OperandColumn), QStringLiteral("NOT DrillHigh"));
+    QVERIFY(set(conditional, M::VariableColumn, QStringLiteral("Marker")));
+    QCOMPARE(fromStd(f1().step(3)->actions[std::size_t(conditional)].text),
+             QStringLiteral("N Marker IF NOT DrillHigh"));
+
+    // An assignment's value before its variable.
+    const int assigned = addAction();
+    QVERIFY(set(assigned, M::QualifierColumn, QStringLiteral(":=")));
+    QVERIFY(set(assigned, M::OperandColumn, QStringLiteral("TRUE")));
+    QVERIFY(set(assigned, M::VariableColumn, QStringLiteral("Marker")));
+    QCOMPARE(fromStd(f1().step(3)->actions[std::size_t(assigned)].text), QStringLiteral("Marker := TRUE"));
+
+    // Texts of a file are read as the action parser reads them: a lone
+    // qualifier letter before IF or := is the variable.
+    for (const char* text : {"N IF Level < 10", "S := 1"}) {
+        const GrafcetActionParts parts = GrafcetActionParts::of({core::ActionTiming::Continuous, text});
+        QCOMPARE(parts.variable, QString(QLatin1Char(text[0])));
+        QCOMPARE(fromStd(parts.action().text), QString::fromLatin1(text));
+    }
 }
 
 // A cell typed wrong says why at once, before anything is committed; a

@@ -65,6 +65,7 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QStyleFactory>
 #include <QTabBar>
 #include <QTabWidget>
@@ -266,6 +267,7 @@ private slots:
     void sheetMenuOffersTheViewCommands();
     void enterEditsTheSelectionAndEscReturnsToTheChart();
     void ctrlClickSelectsSeveralAndDeleteHidesThemInOneStep();
+    void initialStepIsNotHiddenFromTheChart();
     void rubberBandSelectsWhatItCovers();
     void resetLayoutPutsEveryPanelBack();
     void windowFitsTheScreen();
@@ -565,6 +567,49 @@ void TestMainWindow::ctrlClickSelectsSeveralAndDeleteHidesThemInOneStep()
     // A plain click selects one again.
     QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, centre(scene->stepItem(QStringLiteral("F4"))));
     QCOMPARE(m_window->selection()->elements(), QList<ElementRef>{ElementRef::step(QStringLiteral("F4"))});
+}
+
+// The template's initial step A6 on the chart: its Hide entry is disabled
+// with the reason, and Delete is refused with the reason in the status bar.
+void TestMainWindow::initialStepIsNotHiddenFromTheChart()
+{
+    ChartView* view = m_window->chartView();
+    ChartScene* scene = m_window->chartScene();
+    const auto centre = [&](const QString& id) {
+        return view->mapFromScene(scene->stepItem(id)->sceneBoundingRect().center());
+    };
+    const core::Model& model = m_window->document()->model();
+    QVERIFY(model.step("A6")->initial);
+    withChartMenu(view, centre(QStringLiteral("A6")), [&](QMenu* menu) {
+        QAction* hide = menu->findChild<QAction*>(QStringLiteral("hideElementAction"));
+        QVERIFY(hide);
+        QVERIFY(!hide->isEnabled());
+        QVERIFY(hide->toolTip().contains(QStringLiteral("A6 is the initial step")));
+    });
+    m_window->activateWindow(); // the menu took the activation
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, centre(QStringLiteral("A6")));
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::ControlModifier, centre(QStringLiteral("F4")));
+    withChartMenu(view, centre(QStringLiteral("F4")), [&](QMenu* menu) {
+        QAction* hideAll = menu->findChild<QAction*>(QStringLiteral("hideSelectionAction"));
+        QVERIFY(hideAll && !hideAll->isEnabled());
+    });
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    view->setFocus();
+    const int before = m_window->document()->undoStack()->count();
+    QTest::keyClick(view, Qt::Key_Delete);
+    QVERIFY(!model.step("A6")->hidden && !model.step("F4")->hidden);
+    QCOMPARE(m_window->document()->undoStack()->count(), before);
+    QVERIFY2(m_window->statusBar()->currentMessage().contains(QStringLiteral("A6 is the initial step")),
+             qPrintable(m_window->statusBar()->currentMessage()));
+    // A hidden step offers no Make Initial Step.
+    QVERIFY(m_window->document()->push(new SetStepHiddenCommand(*m_window->document(), QStringLiteral("F4"), true)));
+    m_window->findChild<QAction*>(QStringLiteral("showHiddenAction"))->setChecked(true);
+    withChartMenu(view, centre(QStringLiteral("F4")), [&](QMenu* menu) {
+        QAction* initial = menu->findChild<QAction*>(QStringLiteral("makeInitialAction"));
+        QVERIFY(initial && !initial->isEnabled());
+    });
 }
 
 void TestMainWindow::rubberBandSelectsWhatItCovers()

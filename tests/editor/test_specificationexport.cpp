@@ -247,6 +247,8 @@ private slots:
     void longGrafcetSpansSeveralPages();
     void longTableBreaksBetweenRowsAndKeepsEveryWord();
     void longNameAndConditionsWrap();
+    void controlCharactersAreWrittenOut();
+    void wordLongerThanAPageWrapsWhole();
     void modelWithoutGrafcetsOrVariables();
     void failedWriteLeavesTheFileUntouched();
     void fileMenuOffersTheExport();
@@ -546,6 +548,55 @@ void TestSpecificationExport::longNameAndConditionsWrap()
     const QString chart = flat(chartPages);
     for (const QString& condition : std::as_const(conditions))
         QVERIFY2(chart.contains(condition), qPrintable(condition));
+}
+
+// A right-to-left override in the model's name would turn the title around,
+// a control character would vanish: both are written out, where they are.
+void TestSpecificationExport::controlCharactersAreWrittenOut()
+{
+    core::Model model = factory::realisticModel();
+    QVERIFY(model.setName(QStringLiteral("Cell \u202Eevil\u0007 end").toStdString()).ok);
+    const QString path = exportModel(model, QStringLiteral("controls.pdf"));
+    QVERIFY(!path.isEmpty());
+    if (!havePoppler())
+        QSKIP("pdfinfo or pdftotext is not installed (poppler-utils)");
+    const QStringList pages = pageTexts(path, QStringLiteral("-raw"));
+    QVERIFY(!pages.isEmpty());
+    // The title, and the running header of every page.
+    for (const QString& page : pages)
+        QVERIFY2(page.contains(QStringLiteral("Cell <U+202E>evil<U+0007> end")), qPrintable(page.left(300)));
+    QVERIFY(!flat(pages).contains(QChar(0x202E)));
+}
+
+// A word of a million characters (a comment pasted without spaces) wraps,
+// broken between its characters at each line's end: every character is on
+// a page, in order, and no line leaves its page.
+void TestSpecificationExport::wordLongerThanAPageWrapsWhole()
+{
+    core::Model model = factory::realisticModel();
+    QString word;
+    word.reserve(1000000);
+    while (word.size() < 1000000)
+        word += QStringLiteral("жзий");
+    QVERIFY(!model.variables().empty());
+    QVERIFY(model.setVariableComment(model.variables().front().name, word.toStdString()).ok);
+    const QString path = exportModel(model, QStringLiteral("long-word.pdf"));
+    QVERIFY(!path.isEmpty());
+    if (!havePoppler())
+        QSKIP("pdfinfo or pdftotext is not installed (poppler-utils)");
+    // Letters no other text of the document has.
+    static const QRegularExpression pieceOfTheWord(QStringLiteral("^[жзий]+$"));
+    QString found;
+    for (const PageWords& page : pageWords(path)) {
+        const QRectF sheet(QPointF(0, 0), page.size);
+        for (const Word& piece : page.words) {
+            QVERIFY2(sheet.contains(piece.box), qPrintable(piece.text.left(40)));
+            if (pieceOfTheWord.match(piece.text).hasMatch())
+                found += piece.text;
+        }
+    }
+    QCOMPARE(found.size(), word.size());
+    QVERIFY(found == word);
 }
 
 void TestSpecificationExport::modelWithoutGrafcetsOrVariables()

@@ -11,7 +11,12 @@
 
 #include "editor/statusindicators.h"
 #include "editor/secondarytext.h"
+#include "editor/commands/propertycommands.h"
 #include "editor/commands/setconditioncommand.h"
+#include "editor/displaytext.h"
+#include "editor/docks/propertiespanel.h"
+#include "editor/docks/propertiestablemodel.h"
+#include "editor/docks/wrappinglabel.h"
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/docks/problemsdock.h"
@@ -44,6 +49,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTableView>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -107,6 +113,8 @@ private slots:
     void modelEditCancelsARunningVerification();
     void languageChangeKeepsTheFindings();
     void simulationCompleteModesAreAssumed();
+    void simulationAndReplayKeepTheFindingsCurrent();
+    void newOrOpenedModelStartsWithoutFindings();
     void completeSettingChangeCancelsARunningVerification();
     void everyCodeHasATemplate();
 
@@ -116,6 +124,7 @@ private slots:
     void showOnChartOpensTheNestedTabAndSelects();
     void statusCountsProgramStatesAndListsAbstractions();
     void propertyFindingsShowTheirText();
+    void longPropertyIsCutAndNeverWidensTheWindow();
     void replayOfANestedFindingShowsItsGrafcet();
     void everyBothLayersCodeIsWorded();
     void stepsWithAGrafcetAreNeverAssumedAutomatic();
@@ -437,17 +446,23 @@ void TestVerification::simulationCompleteModesAreAssumed()
     QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("All Complete outputs free"));
     const QString freeStatus = panel->statusLabel()->text();
 
-    // The simulation starts with every Complete automatic: the findings no
-    // longer match what Verify would assume, yet their scenarios still replay.
+    // The simulation starts with every Complete automatic: the next Verify
+    // would assume that, but the user changed no setting, so the findings
+    // stay current, with the assumptions they were computed with.
     SimulationSession* session = m_window->simulationSession();
     QSignalSpy assumptionsChanged(m_runner, &VerificationRunner::assumptionsChanged);
     session->setActive(true);
     QCOMPARE(assumptionsChanged.size(), 1);
     QCOMPARE(m_runner->assumedAutomatic(), QStringList({"A7", "F1", "F4"}));
-    QVERIFY(m_runner->assumptionsDiffer());
+    QVERIFY(!m_runner->assumptionsDiffer());
     QVERIFY(!m_runner->isStale());
-    QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("Complete settings changed since verification")));
+    QCOMPARE(panel->statusLabel()->text(), freeStatus);
     QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("All Complete outputs free")); // the findings'
+
+    // A Complete mode the user changes does make them outdated, yet their scenarios still replay.
+    setCompleteMode(QStringLiteral("A7"), QStringLiteral("Manual"));
+    QVERIFY(m_runner->assumptionsDiffer());
+    QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("Complete settings changed since verification")));
     QCOMPARE(m_dock->tabs()->tabText(1), QStringLiteral("Verification (outdated)"));
     QTreeWidgetItem* first = panel->view()->topLevelItem(0);
     QVERIFY(first);
@@ -458,7 +473,7 @@ void TestVerification::simulationCompleteModesAreAssumed()
 
     // Manual everywhere is free everywhere: the findings match again. Playing
     // an input changes no assumption.
-    for (const QString& step : {QStringLiteral("A7"), QStringLiteral("F1"), QStringLiteral("F4")})
+    for (const QString& step : {QStringLiteral("F1"), QStringLiteral("F4")})
         setCompleteMode(step, QStringLiteral("Manual"));
     QVERIFY(m_runner->assumedAutomatic().isEmpty());
     QVERIFY(!m_runner->assumptionsDiffer());
@@ -480,13 +495,102 @@ void TestVerification::simulationCompleteModesAreAssumed()
     QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("Assumed Complete automatic: F1"));
     QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("do not hold")));
 
-    // Leaving the simulation: every Complete free again.
+    // Leaving the simulation: the next Verify assumes every Complete free
+    // again, and the findings stay current with what they assumed.
     session->setActive(false);
     QVERIFY(m_runner->assumedAutomatic().isEmpty());
-    QVERIFY(m_runner->assumptionsDiffer());
+    QVERIFY(!m_runner->assumptionsDiffer());
+    QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("Assumed Complete automatic: F1"));
     verifyAndWait();
     QVERIFY(!deadF1F4());
     QCOMPARE(panel->assumptionsLabel()->text(), QStringLiteral("All Complete outputs free"));
+}
+
+// Starting a simulation, replaying a finding and stopping change none of
+// the user's settings: the findings stay current (issue #32).
+void TestVerification::simulationAndReplayKeepTheFindingsCurrent()
+{
+    verifyAndWait();
+    VerificationPanel* panel = m_dock->verificationPanel();
+    const QString status = panel->statusLabel()->text();
+    const QString tab = m_dock->tabs()->tabText(1);
+    QVERIFY(!tab.contains(QStringLiteral("outdated")));
+    const auto current = [&] {
+        QVERIFY(!m_runner->isStale());
+        QVERIFY(!m_runner->assumptionsDiffer());
+        QCOMPARE(panel->statusLabel()->text(), status);
+        QCOMPARE(m_dock->tabs()->tabText(1), tab);
+        QTreeWidgetItem* stuck = row(QStringLiteral("GV106"), QStringLiteral("D2"));
+        QVERIFY(stuck);
+        QVERIFY(stuck->foreground(VerificationPanel::MessageColumn).color()
+                != secondaryTextColor(panel->palette(), QPalette::Base));
+    };
+
+    SimulationSession* session = m_window->simulationSession();
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(session->isActive());
+    current();
+    QVERIFY(session->setVariable(0, true));
+    m_window->findChild<QAction*>(QStringLiteral("resetSimulationAction"))->trigger();
+    current();
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(!session->isActive());
+    current();
+
+    // Replay in Simulator, played to its end, then the simulation stopped.
+    panel->view()->setCurrentItem(row(QStringLiteral("GV106"), QStringLiteral("D2")));
+    panel->replayAction()->trigger();
+    QVERIFY(session->isReplaying());
+    current();
+    m_window->findChild<QAction*>(QStringLiteral("runSimulationAction"))->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(session->replayState(), SimulationSession::ReplayState::Finished, 20000);
+    current();
+    session->setActive(false);
+    current();
+}
+
+// A new or opened model is another model: the findings of the last one go
+// with it, whichever way it came (New, Open, an example, a recovery).
+void TestVerification::newOrOpenedModelStartsWithoutFindings()
+{
+    VerificationPanel* panel = m_dock->verificationPanel();
+    auto* counter = m_window->findChild<ProblemCounter*>();
+    QVERIFY(counter);
+    const QString notVerified = panel->statusLabel()->text();
+    QCOMPARE(notVerified, QStringLiteral("Not verified yet."));
+    const auto noFindings = [&](const char* how) {
+        QVERIFY2(!m_runner->hasResult(), how);
+        QVERIFY2(!m_runner->isStale(), how);
+        QCOMPARE(panel->view()->topLevelItemCount(), 0);
+        QCOMPARE(panel->statusLabel()->text(), notVerified);
+        QCOMPARE(m_dock->tabs()->tabText(1), QStringLiteral("Verification"));
+        QCOMPARE(counter->findingCount(), 0);
+    };
+    const auto verifyFindsSome = [&] {
+        verifyAndWait();
+        QVERIFY(panel->view()->topLevelItemCount() > 0);
+    };
+
+    verifyFindsSome();
+    m_window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
+    noFindings("New");
+
+    m_window->document()->replaceModel(modelWithStuckStep(), QString(), core::ModelFormat::Native);
+    verifyFindsSome();
+    QVERIFY(m_window->openFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-faulty.ggstudio.json"));
+    noFindings("Open");
+
+    verifyFindsSome();
+    m_window->findChild<QAction*>(QStringLiteral("example_0"))->trigger();
+    noFindings("an example");
+
+    // A verification under way is abandoned with the model it verifies.
+    m_window->findChild<QAction*>(QStringLiteral("verifyAction"))->trigger();
+    QVERIFY(m_runner->isRunning());
+    m_window->document()->replaceModel(modelWithStuckStep(), QString(), core::ModelFormat::Native); // a recovery
+    QVERIFY(!m_runner->isRunning());
+    QTest::qWait(200);
+    noFindings("a recovery");
 }
 
 void TestVerification::completeSettingChangeCancelsARunningVerification()
@@ -974,8 +1078,63 @@ void TestVerification::stepsWithAGrafcetAreNeverAssumedAutomatic()
     session->setActive(false);
 }
 
-QTEST_MAIN(TestVerification)
-#include "test_verification.moc"
+// A property of 50,000 letters, with a comment of five million: the tables,
+// the messages quoting it and their tooltips show a bounded start of it
+// (laying out megabytes froze the window), and no panel grows wider than
+// the window (the problem under the editor was as wide as the name).
+void TestVerification::longPropertyIsCutAndNeverWidensTheWindow()
+{
+    const int windowWidth = m_window->width();
+    Document* document = m_window->document();
+    const QString ghost = QStringLiteral("Ghost") + QString(50000, QLatin1Char('x'));
+    const QString property = QStringLiteral("never ") + ghost;
+    const QString comment(5000000, QLatin1Char('c'));
+    QVERIFY(document->push(new AddPropertyCommand(*document, {property.toStdString(), comment.toStdString()}, 0)));
+    m_dock->show();
+    m_dock->raise();
+    m_dock->showProperties();
+    auto* panel = m_dock->findChild<PropertiesPanel*>(QStringLiteral("propertiesPanel"));
+    QVERIFY(panel);
+    panel->setCurrentRow(0);
+    panel->view()->viewport()->repaint();
+    QApplication::processEvents();
+
+    const auto bounded = [](const QString& text, qsizetype limit) {
+        return text.size() <= limit + 1 && !text.isEmpty();
+    };
+    PropertiesTableModel* table = panel->tableModel();
+    QCOMPARE(table->index(0, PropertiesTableModel::TextColumn).data(Qt::EditRole).toString(), property);
+    QVERIFY(bounded(table->index(0, PropertiesTableModel::TextColumn).data().toString(), kShownTextLimit));
+    QVERIFY(bounded(table->index(0, PropertiesTableModel::CommentColumn).data().toString(), kShownTextLimit));
+    QVERIFY(table->index(0, PropertiesTableModel::TextColumn).data().toString().endsWith(QChar(0x2026)));
+    QVERIFY(bounded(table->index(0, PropertiesTableModel::TextColumn).data(Qt::ToolTipRole).toString(),
+                    kToolTipTextLimit + kToolTipTextLimit / 50));
+    auto* problem = panel->findChild<WrappingLabel*>(QStringLiteral("propertyProblem"));
+    QVERIFY(problem && problem->isVisibleTo(panel));
+    QVERIFY2(bounded(problem->text(), 2 * kShownTextLimit), qPrintable(problem->text().left(100)));
+    QVERIFY(m_window->minimumSizeHint().width() <= windowWidth);
+    QCOMPARE(m_window->width(), windowWidth);
+    QVERIFY(m_dock->width() <= windowWidth);
+
+    // The finding about it quotes its start.
+    verifyAndWait();
+    m_dock->showVerification();
+    QTreeWidgetItem* found = nullptr;
+    for (QTreeWidgetItemIterator it(m_dock->verificationPanel()->view()); *it && !found; ++it) {
+        const core::VerificationFinding* finding = m_runner->finding(VerificationPanel::findingIndex(*it));
+        if (finding && finding->property == 0)
+            found = *it;
+    }
+    QVERIFY(found);
+    for (int column : {int(VerificationPanel::ElementColumn), int(VerificationPanel::MessageColumn)}) {
+        QVERIFY(bounded(found->text(column), 3 * kShownTextLimit)); // quotes the property and why
+        QVERIFY(bounded(found->toolTip(column), kToolTipTextLimit + kToolTipTextLimit / 50));
+    }
+    m_dock->verificationPanel()->view()->viewport()->repaint();
+    QApplication::processEvents();
+    QVERIFY(m_window->minimumSizeHint().width() <= windowWidth);
+    QCOMPARE(m_window->width(), windowWidth);
+}
 
 // PartCount only grows, but numeric memories are abstracted: the verifier can
 // neither prove "never PartCount < 0" nor find a run breaking it. The panel and
@@ -997,3 +1156,7 @@ void TestVerification::undecidedPropertyIsNeverCalledHolding()
     const QString bar = m_window->statusBar()->currentMessage();
     QVERIFY2(bar.contains(QStringLiteral("undecided")), qPrintable(bar));
 }
+
+QTEST_MAIN(TestVerification)
+#include "test_verification.moc"
+
