@@ -46,6 +46,31 @@ std::string documentationText(std::string_view text)
     return out;
 }
 
+// The embedded model must come back exactly. Its JSON already escapes the
+// control characters XML 1.0 cannot carry (as \u0001 ...); the two other
+// characters XML refuses, the noncharacters U+FFFE and U+FFFF, are written
+// as JSON escapes too, which the native reader turns back into them, instead
+// of becoming U+FFFD in the XML. Their UTF-8 bytes only ever occur inside
+// JSON strings, where an escape means the same character.
+std::string escapeXmlNoncharacters(std::string_view json)
+{
+    static constexpr std::string_view fffe = "\xEF\xBF\xBE";
+    static constexpr std::string_view ffff = "\xEF\xBF\xBF";
+    std::string out;
+    out.reserve(json.size());
+    std::string_view rest = json;
+    while (!rest.empty()) {
+        if (rest.starts_with(fffe) || rest.starts_with(ffff)) {
+            out += rest.starts_with(fffe) ? "\\ufffe" : "\\uffff";
+            rest.remove_prefix(fffe.size());
+        } else {
+            out += rest.front();
+            rest.remove_prefix(1);
+        }
+    }
+    return out;
+}
+
 class PlcOpenWriter {
 public:
     PlcOpenWriter(const PlcProject& project, const Model& model, const PlcOpenOptions& options)
@@ -312,7 +337,7 @@ void PlcOpenWriter::writeModel(XMLElement* root)
     attribute(data, "handleUnknown", "discard");
     XMLElement* model = add(data, std::string(kPlcOpenModelElement).c_str());
     attribute(model, "xmlns:ggstudio", kPlcOpenModelDataName);
-    cdata(model, saveNativeJson(m_model));
+    cdata(model, escapeXmlNoncharacters(saveNativeJson(m_model)));
 }
 
 } // namespace

@@ -34,8 +34,10 @@ struct PlcOpenOptions {
 };
 
 // The whole PLCopen XML document (UTF-8, with declaration), in the dialect of
-// the project. User text is escaped or put in CDATA; characters XML 1.0 cannot
-// carry are replaced by U+FFFD.
+// the project. User text is escaped or put in CDATA; in the code and the
+// documentation, characters XML 1.0 cannot carry are replaced by U+FFFD,
+// while the embedded model keeps them as JSON escapes (\u0001, \ufffe), so
+// that it comes back exactly.
 std::string writePlcOpenXml(const PlcProject& project, const Model& model, const PlcOpenOptions& options = {});
 
 // "T#20ms" (IEC task interval) and "PT0.02S" (CODESYS export style).
