@@ -30,22 +30,6 @@ bool isElementaryTypeName(std::string_view name)
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// Documentation is plain text, but tools that import the file may write it
-// into an ST comment (* ... *): as in the generated ST (escapeComment), no
-// "(*" or "*)" of the user's survives, while line breaks do.
-std::string documentationText(std::string_view text)
-{
-    std::string out;
-    out.reserve(text.size());
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        out += text[i];
-        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
-        if ((text[i] == '(' && next == '*') || (text[i] == '*' && next == ')'))
-            out += ' ';
-    }
-    return out;
-}
-
 // The embedded model must come back exactly. Its JSON already escapes the
 // control characters XML 1.0 cannot carry (as \u0001 ...); the two other
 // characters XML refuses, the noncharacters U+FFFE and U+FFFF, are written
@@ -219,7 +203,7 @@ void PlcOpenWriter::writePou(XMLElement* pous, const PlcPou& pou)
     writeInterface(element, pou);
     formattedText(add(add(element, "body"), "ST"), pou.body);
     if (!pou.comment.empty())
-        formattedText(add(element, "documentation"), documentationText(pou.comment));
+        formattedText(add(element, "documentation"), plcOpenDocumentationText(pou.comment));
 }
 
 void PlcOpenWriter::writeInterface(XMLElement* pou, const PlcPou& declarations)
@@ -258,7 +242,7 @@ void PlcOpenWriter::writeVariable(XMLElement* list, const PlcVariable& variable)
     if (!variable.initialValue.empty())
         attribute(add(add(element, "initialValue"), "simpleValue"), "value", variable.initialValue);
     if (!variable.comment.empty())
-        formattedText(add(element, "documentation"), documentationText(variable.comment));
+        formattedText(add(element, "documentation"), plcOpenDocumentationText(variable.comment));
 }
 
 const PlcPou* PlcOpenWriter::program() const
@@ -341,6 +325,22 @@ void PlcOpenWriter::writeModel(XMLElement* root)
 }
 
 } // namespace
+
+// Tools that import the file may write documentation into an ST comment
+// (* ... *): as in the generated ST (escapeComment), no "(*" or "*)" of the
+// user's survives, while line breaks do.
+std::string plcOpenDocumentationText(std::string_view text)
+{
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        out += text[i];
+        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+        if ((text[i] == '(' && next == '*') || (text[i] == '*' && next == ')'))
+            out += ' ';
+    }
+    return out;
+}
 
 std::string currentUtcDateTime()
 {

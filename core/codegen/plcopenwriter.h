@@ -40,6 +40,10 @@ struct PlcOpenOptions {
 // that it comes back exactly.
 std::string writePlcOpenXml(const PlcProject& project, const Model& model, const PlcOpenOptions& options = {});
 
+// The text of a <documentation> element for a comment: "(*" and "*)" are
+// split ("( *", "* )"), since tools may turn documentation into an ST comment.
+std::string plcOpenDocumentationText(std::string_view text);
+
 // "T#20ms" (IEC task interval) and "PT0.02S" (CODESYS export style).
 std::string iecTaskInterval(int cycleTimeMs);
 std::string isoTaskInterval(int cycleTimeMs);

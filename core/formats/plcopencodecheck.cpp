@@ -83,12 +83,22 @@ void appendText(const tinyxml2::XMLNode& node, std::string& text)
     }
 }
 
-std::string fileBody(const XMLElement& pou)
+std::string allText(const XMLElement* element)
 {
     std::string text;
-    if (const XMLElement* st = child(child(&pou, "body"), "ST"))
-        appendText(*st, text);
+    if (element)
+        appendText(*element, text);
     return normalizeLineEnds(text);
+}
+
+std::string fileBody(const XMLElement& pou)
+{
+    return allText(child(child(&pou, "body"), "ST"));
+}
+
+std::string expectedDocumentation(const std::string& comment)
+{
+    return comment.empty() ? std::string() : normalizeLineEnds(xmlSafeText(plcOpenDocumentationText(comment)));
 }
 
 std::string expectedBody(const PlcPou& pou)
@@ -96,9 +106,9 @@ std::string expectedBody(const PlcPou& pou)
     return normalizeLineEnds(xmlSafeText(pou.body));
 }
 
-// Name, type and initial value of one declaration, as a reader sees them in
-// the file (IEC identifiers and type names ignore case).
-using Declaration = std::tuple<std::string, std::string, std::string, std::string>;
+// List, name, type, initial value and documentation of one declaration, as a
+// reader sees them in the file (IEC type names ignore case).
+using Declaration = std::tuple<std::string, std::string, std::string, std::string, std::string>;
 
 std::vector<Declaration> fileDeclarations(const XMLElement* list, std::string_view listName)
 {
@@ -112,7 +122,7 @@ std::vector<Declaration> fileDeclarations(const XMLElement* list, std::string_vi
                                                             : std::string(localName(*typeElement));
         const std::string initial = attribute(child(child(variable, "initialValue"), "simpleValue"), "value");
         declarations.emplace_back(std::string(listName), attribute(variable, "name"), toUpperAscii(typeName),
-                                  initial);
+                                  initial, allText(child(variable, "documentation")));
     }
     return declarations;
 }
@@ -123,7 +133,7 @@ void addExpected(std::vector<Declaration>& declarations, std::string_view listNa
     for (const PlcVariable& variable : variables) {
         declarations.emplace_back(std::string(listName), xmlSafeAttribute(variable.name),
                                   toUpperAscii(xmlSafeAttribute(variable.typeName)),
-                                  xmlSafeAttribute(variable.initialValue));
+                                  xmlSafeAttribute(variable.initialValue), expectedDocumentation(variable.comment));
     }
 }
 
@@ -178,6 +188,7 @@ public:
 
     void comparePous(const XMLElement& project, const PlcProject& expected);
     void compareGlobals(const XMLElement& project, const PlcProject& expected, bool codesys);
+    void compareTask(const XMLElement& project, const PlcProject& expected, bool codesys);
     std::vector<LoadWarning> takeWarnings() { return std::move(m_warnings); }
 
 private:
@@ -207,7 +218,8 @@ void CodeComparison::comparePous(const XMLElement& project, const PlcProject& ex
             continue;
         }
         seen[std::size_t(match - expected.pous.begin())] = true;
-        if (fileBody(*pou) != expectedBody(*match) || fileInterface(*pou) != expectedInterface(*match)) {
+        if (fileBody(*pou) != expectedBody(*match) || fileInterface(*pou) != expectedInterface(*match)
+            || allText(child(pou, "documentation")) != expectedDocumentation(match->comment)) {
             warn(pou, "the code of POU " + name + " differs from the code the embedded model generates: "
                           + std::string(kModelWins));
         }
@@ -237,6 +249,24 @@ void CodeComparison::compareGlobals(const XMLElement& project, const PlcProject&
     }
 }
 
+// The task carries the cycle time: an edited interval is lost as surely as
+// edited code.
+void CodeComparison::compareTask(const XMLElement& project, const PlcProject& expected, bool codesys)
+{
+    const XMLElement* resource =
+        child(child(child(child(&project, "instances"), "configurations"), "configuration"), "resource");
+    const XMLElement* task = child(resource, "task");
+    const std::string name = xmlSafeAttribute(expected.taskName);
+    const std::string interval = codesys ? isoTaskInterval(expected.cycleTimeMs) : iecTaskInterval(expected.cycleTimeMs);
+    const std::string priority = std::to_string(std::clamp(expected.taskPriority, 0, 65535));
+    if (task && attribute(task, "name") == name && attribute(task, "interval") == interval
+        && attribute(task, "priority") == priority)
+        return;
+    warn(task ? task : resource,
+         "the task differs from the one the embedded model generates (" + name + ", interval " + interval
+             + ", priority " + priority + "): " + std::string(kModelWins));
+}
+
 } // namespace
 
 std::vector<LoadWarning> plcOpenCodeDifferences(std::string_view xmlText, const XMLElement& project,
@@ -247,6 +277,7 @@ std::vector<LoadWarning> plcOpenCodeDifferences(std::string_view xmlText, const 
     CodeComparison comparison(xmlText, displayName);
     comparison.comparePous(project, expected);
     comparison.compareGlobals(project, expected, codesys);
+    comparison.compareTask(project, expected, codesys);
     return comparison.takeWarnings();
 }
 

@@ -19,9 +19,10 @@ class XMLElement;
 
 namespace core {
 
-// One warning per POU whose body or declarations differ, per POU that is
-// missing or that the model does not generate, and for the global variables;
-// each with the line and column of its element. The dialect is the file's
+// One warning per POU whose body, declarations or documentation differ, per
+// POU that is missing or that the model does not generate, for the global
+// variables and for the task (name, interval, priority); each with the line
+// and column of its element. The dialect is the file's
 // (the namespace tc6_0200 is CODESYS), not the model's setting, since the
 // export may have chosen another one.
 std::vector<LoadWarning> plcOpenCodeDifferences(std::string_view xmlText, const tinyxml2::XMLElement& project,

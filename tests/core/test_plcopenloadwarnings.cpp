@@ -136,6 +136,11 @@ TEST_CASE("Edited declarations, globals and POUs are named too", "[plcopen][load
     const std::size_t fbEnd = xml.find("</pou>", fb) + std::string("</pou>").size();
     const std::string fbName = xml.substr(fb + 11, xml.find('"', fb + 11) - fb - 11);
     xml.replace(fb, fbEnd - fb, "<pou name=\"Mine\" pouType=\"function\"/>");
+    // The cycle time changed in the task.
+    const std::string interval = "interval=\"" + iecTaskInterval(model.settings().cycleTimeMs) + "\"";
+    const std::size_t task = xml.find(interval);
+    REQUIRE(task != std::string::npos);
+    xml.replace(task, interval.size(), "interval=\"T#1s\"");
     const std::size_t mine = xml.find("<pou name=\"Mine\"");
     const std::size_t pous = xml.find("<pous>");
     const std::size_t globalsNow = xml.find("<globalVars");
@@ -152,7 +157,21 @@ TEST_CASE("Edited declarations, globals and POUs are named too", "[plcopen][load
               "it again",
         "machine.xml: " + positionOf(xml, globalsNow)
             + ": warning: the global variables differ from those the embedded model generates: the embedded model is "
-              "used; the edits to the code are not kept"});
+              "used; the edits to the code are not kept",
+        "machine.xml: " + positionOf(xml, xml.rfind("<task", task))
+            + ": warning: the task differs from the one the embedded model generates (MainTask, interval "
+            + iecTaskInterval(model.settings().cycleTimeMs)
+            + ", priority 1): the embedded model is used; the edits to the code are not kept"});
+
+    // A documentation edited in the interface counts too.
+    std::string documented = exported(model, Dialect::Iec);
+    const std::size_t documentation = documented.find("<documentation>", documented.find("<variable"));
+    REQUIRE(documentation != std::string::npos);
+    const std::size_t text = documented.find("CDATA[", documentation) + 6;
+    documented.insert(text, "edited: ");
+    const LoadedModel edited = loadModelText(documented, "machine.xml");
+    REQUIRE(edited.ok());
+    CHECK(edited.warnings.size() == 1);
 }
 
 TEST_CASE("A PLCopen file with two embedded models is refused where the second is", "[plcopen][loadwarnings]")
