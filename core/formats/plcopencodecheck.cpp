@@ -19,6 +19,7 @@ namespace {
 
 using tinyxml2::XMLElement;
 
+constexpr std::size_t kMaxNamedStrangers = 10;
 constexpr std::string_view kModelWins = "the embedded model is used; the edits to the code are not kept";
 
 std::string_view localName(const XMLElement& element)
@@ -187,6 +188,7 @@ public:
     }
 
     void comparePous(const XMLElement& project, const PlcProject& expected);
+    void warnAboutStrangers(const std::vector<const XMLElement*>& strangers);
     void compareGlobals(const XMLElement& project, const PlcProject& expected, bool codesys);
     void compareTask(const XMLElement& project, const PlcProject& expected, bool codesys);
     std::vector<LoadWarning> takeWarnings() { return std::move(m_warnings); }
@@ -207,14 +209,14 @@ void CodeComparison::comparePous(const XMLElement& project, const PlcProject& ex
 {
     const XMLElement* pous = child(child(&project, "types"), "pous");
     std::vector<bool> seen(expected.pous.size(), false);
+    std::vector<const XMLElement*> strangers; // POUs the model does not generate
     for (const XMLElement* pou : children(pous, "pou")) {
         const std::string name = attribute(pou, "name");
         const auto match = std::find_if(expected.pous.begin(), expected.pous.end(), [&](const PlcPou& candidate) {
             return xmlSafeAttribute(candidate.name) == name;
         });
         if (match == expected.pous.end()) {
-            warn(pou, "the POU " + name + " is not one the embedded model generates: the embedded model is used; "
-                      "this POU is not kept");
+            strangers.push_back(pou);
             continue;
         }
         seen[std::size_t(match - expected.pous.begin())] = true;
@@ -224,12 +226,30 @@ void CodeComparison::comparePous(const XMLElement& project, const PlcProject& ex
                           + std::string(kModelWins));
         }
     }
+    warnAboutStrangers(strangers);
     for (std::size_t i = 0; i < seen.size(); ++i) {
         if (!seen[i]) {
             warn(pous, "the POU " + expected.pous[i].name
                            + " that the embedded model generates is missing from the file: the embedded model is "
                              "used and generates it again");
         }
+    }
+}
+
+// Each position costs a pass over the text: a file with a hundred thousand
+// POUs gets a few warnings, not a quadratic load time.
+void CodeComparison::warnAboutStrangers(const std::vector<const XMLElement*>& strangers)
+{
+    const std::size_t named = std::min(strangers.size(), kMaxNamedStrangers);
+    for (std::size_t i = 0; i < named; ++i) {
+        warn(strangers[i], "the POU " + attribute(strangers[i], "name")
+                               + " is not one the embedded model generates: the embedded model is used; this POU is "
+                                 "not kept");
+    }
+    if (strangers.size() > named) {
+        warn(strangers[named], std::to_string(strangers.size() - named)
+                                   + " more POUs from here on are not ones the embedded model generates: the "
+                                     "embedded model is used; they are not kept");
     }
 }
 

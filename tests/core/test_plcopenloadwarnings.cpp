@@ -230,3 +230,26 @@ TEST_CASE("Every string the model accepts survives the PLCopen round trip", "[pl
         CHECK(loaded.warnings.empty());
     }
 }
+
+TEST_CASE("POUs the model does not generate are named up to ten, then counted", "[plcopen][loadwarnings]")
+{
+    // Each warning's position costs a pass over the text: a file of many
+    // POUs, all on one line, must not take quadratic time.
+    const Model model = samples::caseStudyModel();
+    std::string xml = exported(model, Dialect::Iec);
+    std::string strangers;
+    for (int i = 0; i < 20000; ++i)
+        strangers += "<pou name=\"Extra" + std::to_string(i) + "\" pouType=\"function\"/>";
+    const std::size_t pousEnd = xml.find("</pous>");
+    REQUIRE(pousEnd != std::string::npos);
+    xml.insert(pousEnd, strangers);
+    const LoadedModel loaded = loadModelText(xml, "many.xml");
+    REQUIRE(loaded.ok());
+    REQUIRE(loaded.warnings.size() == 11);
+    CHECK(loaded.warnings[9].message
+          == "the POU Extra9 is not one the embedded model generates: the embedded model is used; this POU is not kept");
+    CHECK(loaded.warnings[10].location == positionOf(xml, xml.find("<pou name=\"Extra10\"")));
+    CHECK(loaded.warnings[10].message
+          == "19990 more POUs from here on are not ones the embedded model generates: the embedded model is used; "
+             "they are not kept");
+}
