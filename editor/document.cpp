@@ -125,7 +125,7 @@ bool Document::hasProblems(const ElementRef& element) const
     });
 }
 
-bool Document::load(const QString& path, QString* errorMessage)
+bool Document::load(const QString& path, QString* errorMessage, QStringList* warnings)
 {
     core::LoadedModel loaded = core::loadModelFile(localPath(path));
     if (!loaded.ok()) {
@@ -134,6 +134,14 @@ bool Document::load(const QString& path, QString* errorMessage)
         if (errorMessage)
             *errorMessage = QString::fromStdString(loaded.error.toString());
         return false;
+    }
+    if (warnings) {
+        warnings->clear();
+        for (core::LoadWarning& warning : loaded.warnings) {
+            if (warning.file.empty() || warning.file == localPath(path))
+                warning.file = path.toStdString();
+            warnings->append(QString::fromStdString(warning.toString()));
+        }
     }
     replaceModel(*loaded.model, path, loaded.format);
     return true;

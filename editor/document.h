@@ -8,6 +8,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <memory>
 #include <vector>
@@ -60,8 +61,11 @@ public:
     bool hasProblems(const ElementRef& element) const; // any error or warning
 
     // Files. A failed load leaves the open model untouched and returns false
-    // with the reason in errorMessage ("FILE: LOCATION: MESSAGE").
-    bool load(const QString& path, QString* errorMessage);
+    // with the reason in errorMessage ("FILE: LOCATION: MESSAGE"). A load that
+    // did not take over everything in the file (a PLCopen file whose code was
+    // edited, GG Studio keys in a GG-Generator file) says what in warnings
+    // ("FILE: LOCATION: warning: MESSAGE", one per entry).
+    bool load(const QString& path, QString* errorMessage, QStringList* warnings = nullptr);
     bool save(const QString& path, QString* errorMessage); // native JSON, atomic
     void newFromTemplate();
     // Replaces the whole model (for recovery and import); clears undo history.

@@ -1033,10 +1033,11 @@ bool MainWindow::openFile(const QString& path)
 bool MainWindow::loadFile(const QString& path)
 {
     QString error;
+    QStringList warnings;
     rememberGrafcetTabs();
     QApplication::setOverrideCursor(Qt::WaitCursor);
     m_switchingFile = true;
-    const bool loaded = m_document->load(path, &error);
+    const bool loaded = m_document->load(path, &error, &warnings);
     m_switchingFile = false;
     QApplication::restoreOverrideCursor();
     if (!loaded) {
@@ -1068,7 +1069,21 @@ bool MainWindow::loadFile(const QString& path)
                                  kStatusMessageMs);
         break;
     }
+    if (!warnings.isEmpty())
+        showLoadWarnings(path, warnings);
     return true;
+}
+
+// The loader's own English words: they name keys, POUs and places in the file.
+void MainWindow::showLoadWarnings(const QString& path, const QStringList& warnings)
+{
+    QMessageBox box(QMessageBox::Warning, tr("Open Model"),
+                    tr("%1 was opened, but not everything in the file was taken over.")
+                        .arg(QDir::toNativeSeparators(path)),
+                    QMessageBox::Ok, this);
+    box.setObjectName("openWarningBox");
+    box.setInformativeText(warnings.join(QLatin1Char('\n')));
+    box.exec();
 }
 
 void MainWindow::openExample(int index)

@@ -150,6 +150,7 @@ private:
     // Save / Discard / Cancel for unsaved changes; true when the caller may go on.
     bool maybeSave();
     bool loadFile(const QString& path);
+    void showLoadWarnings(const QString& path, const QStringList& warnings);
     // File > Examples: the shipped example as an untitled copy.
     void openExample(int index);
     // Whether Save must ask for a name: untitled, or read from another format.

@@ -13,6 +13,7 @@
 #include "core/codegen/stexport.h"
 #include "core/codegen/stgenerator.h"
 #include "cycletime.h"
+#include "loadreport.h"
 #include "terminal.h"
 #include "verifycommand.h"
 
@@ -134,10 +135,7 @@ int save(const core::Model& model, const std::string& path, core::ModelFormat fo
 
 std::unique_ptr<core::Model> loadOrReport(const std::string& path, std::ostream& err)
 {
-    core::LoadedModel loaded = core::loadModelFile(path);
-    if (!loaded.ok())
-        err << loaded.error.toString() << lineEnd;
-    return std::move(loaded.model);
+    return std::move(loadAndReport(path, err).model);
 }
 
 int commandNew(const Arguments& args, Streams streams)
@@ -153,11 +151,9 @@ int commandNew(const Arguments& args, Streams streams)
 
 int validateOne(const std::string& path, Streams streams)
 {
-    core::LoadedModel loaded = core::loadModelFile(path);
-    if (!loaded.ok()) {
-        streams.err << loaded.error.toString() << lineEnd;
+    core::LoadedModel loaded = loadAndReport(path, streams.err);
+    if (!loaded.ok())
         return UnreadableInput;
-    }
     const std::vector<core::Diagnostic> diagnostics = core::checkModel(*loaded.model);
     for (const core::Diagnostic& d : diagnostics) {
         streams.out << path << ": " << core::diagnosticElementLabel(d) << ": " << core::severityName(d.severity)

@@ -1,6 +1,7 @@
 #include "verifycommand.h"
 
 #include "cycletime.h"
+#include "loadreport.h"
 #include "terminal.h"
 
 #include "core/formats/fileio.h"
@@ -208,11 +209,9 @@ int commandVerify(const Arguments& args, Streams streams)
                     << lineEnd << "Try 'ggstudio-cli --help'." << lineEnd;
         return UsageError;
     }
-    core::LoadedModel loaded = core::loadModelFile(path);
-    if (!loaded.ok()) {
-        streams.err << loaded.error.toString() << lineEnd;
+    core::LoadedModel loaded = loadAndReport(path, streams.err);
+    if (!loaded.ok())
         return UnreadableInput;
-    }
     std::vector<std::string> automatic;
     if (const std::optional<std::string> value = args.value("--complete-automatic")) {
         std::optional<std::vector<std::string>> steps = parseCompleteAutomatic(*value, *loaded.model, streams.err);

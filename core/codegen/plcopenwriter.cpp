@@ -30,18 +30,27 @@ bool isElementaryTypeName(std::string_view name)
     return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// Documentation is plain text, but tools that import the file may write it
-// into an ST comment (* ... *): as in the generated ST (escapeComment), no
-// "(*" or "*)" of the user's survives, while line breaks do.
-std::string documentationText(std::string_view text)
+// The embedded model must come back exactly. Its JSON already escapes the
+// control characters XML 1.0 cannot carry (as \u0001 ...); the two other
+// characters XML refuses, the noncharacters U+FFFE and U+FFFF, are written
+// as JSON escapes too, which the native reader turns back into them, instead
+// of becoming U+FFFD in the XML. Their UTF-8 bytes only ever occur inside
+// JSON strings, where an escape means the same character.
+std::string escapeXmlNoncharacters(std::string_view json)
 {
+    static constexpr std::string_view fffe = "\xEF\xBF\xBE";
+    static constexpr std::string_view ffff = "\xEF\xBF\xBF";
     std::string out;
-    out.reserve(text.size());
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        out += text[i];
-        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
-        if ((text[i] == '(' && next == '*') || (text[i] == '*' && next == ')'))
-            out += ' ';
+    out.reserve(json.size());
+    std::string_view rest = json;
+    while (!rest.empty()) {
+        if (rest.starts_with(fffe) || rest.starts_with(ffff)) {
+            out += rest.starts_with(fffe) ? "\\ufffe" : "\\uffff";
+            rest.remove_prefix(fffe.size());
+        } else {
+            out += rest.front();
+            rest.remove_prefix(1);
+        }
     }
     return out;
 }
@@ -194,7 +203,7 @@ void PlcOpenWriter::writePou(XMLElement* pous, const PlcPou& pou)
     writeInterface(element, pou);
     formattedText(add(add(element, "body"), "ST"), pou.body);
     if (!pou.comment.empty())
-        formattedText(add(element, "documentation"), documentationText(pou.comment));
+        formattedText(add(element, "documentation"), plcOpenDocumentationText(pou.comment));
 }
 
 void PlcOpenWriter::writeInterface(XMLElement* pou, const PlcPou& declarations)
@@ -233,7 +242,7 @@ void PlcOpenWriter::writeVariable(XMLElement* list, const PlcVariable& variable)
     if (!variable.initialValue.empty())
         attribute(add(add(element, "initialValue"), "simpleValue"), "value", variable.initialValue);
     if (!variable.comment.empty())
-        formattedText(add(element, "documentation"), documentationText(variable.comment));
+        formattedText(add(element, "documentation"), plcOpenDocumentationText(variable.comment));
 }
 
 const PlcPou* PlcOpenWriter::program() const
@@ -312,10 +321,26 @@ void PlcOpenWriter::writeModel(XMLElement* root)
     attribute(data, "handleUnknown", "discard");
     XMLElement* model = add(data, std::string(kPlcOpenModelElement).c_str());
     attribute(model, "xmlns:ggstudio", kPlcOpenModelDataName);
-    cdata(model, saveNativeJson(m_model));
+    cdata(model, escapeXmlNoncharacters(saveNativeJson(m_model)));
 }
 
 } // namespace
+
+// Tools that import the file may write documentation into an ST comment
+// (* ... *): as in the generated ST (escapeComment), no "(*" or "*)" of the
+// user's survives, while line breaks do.
+std::string plcOpenDocumentationText(std::string_view text)
+{
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        out += text[i];
+        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+        if ((text[i] == '(' && next == '*') || (text[i] == '*' && next == ')'))
+            out += ' ';
+    }
+    return out;
+}
 
 std::string currentUtcDateTime()
 {

@@ -34,9 +34,15 @@ struct PlcOpenOptions {
 };
 
 // The whole PLCopen XML document (UTF-8, with declaration), in the dialect of
-// the project. User text is escaped or put in CDATA; characters XML 1.0 cannot
-// carry are replaced by U+FFFD.
+// the project. User text is escaped or put in CDATA; in the code and the
+// documentation, characters XML 1.0 cannot carry are replaced by U+FFFD,
+// while the embedded model keeps them as JSON escapes (\u0001, \ufffe), so
+// that it comes back exactly.
 std::string writePlcOpenXml(const PlcProject& project, const Model& model, const PlcOpenOptions& options = {});
+
+// The text of a <documentation> element for a comment: "(*" and "*)" are
+// split ("( *", "* )"), since tools may turn documentation into an ST comment.
+std::string plcOpenDocumentationText(std::string_view text);
 
 // "T#20ms" (IEC task interval) and "PT0.02S" (CODESYS export style).
 std::string iecTaskInterval(int cycleTimeMs);

@@ -5,6 +5,7 @@
 #include "core/layout/chartlayout.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
+#include "core/formats/gggeneratordropped.h"
 #include "core/formats/jsonreader.h"
 #include "core/formats/modelloading.h"
 #include "core/condition/symboltable.h"
@@ -476,9 +477,15 @@ std::string saveGGGeneratorJson(const Model& model)
     return root.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
 }
 
-std::variant<std::unique_ptr<Model>, LoadError> loadGGGeneratorJson(std::string_view text, const std::string& displayName)
+std::variant<std::unique_ptr<Model>, LoadError> loadGGGeneratorJson(std::string_view text, const std::string& displayName,
+                                                                    std::vector<LoadWarning>* warnings)
 {
-    return loadModelJson(text, displayName, buildModel);
+    return loadModelJson(text, displayName, [&](const json& root) {
+        std::unique_ptr<Model> model = buildModel(root);
+        if (warnings)
+            *warnings = ggStudioKeysInGGGeneratorFile(root, displayName);
+        return model;
+    });
 }
 
 bool looksLikeGGGeneratorJson(std::string_view text)

@@ -43,8 +43,11 @@ std::string toText(const GGGeneratorLoss& loss);
 // Either a whole model or an error naming the JSON path. Tokens come from
 // data.savedSignalsWithMemory entries with withMemory true that name a
 // declared BOOL variable occurring in the condition; other entries are the
-// web tool's remembered settings and are ignored.
-std::variant<std::unique_ptr<Model>, LoadError> loadGGGeneratorJson(std::string_view text, const std::string& displayName);
+// web tool's remembered settings and are ignored. GG Studio's own keys, which
+// the format has no place for, are not loaded: each is named in `warnings`
+// (core/formats/gggeneratordropped.h) when given.
+std::variant<std::unique_ptr<Model>, LoadError> loadGGGeneratorJson(std::string_view text, const std::string& displayName,
+                                                                    std::vector<LoadWarning>* warnings = nullptr);
 
 // True when the text looks like a GG-Generator file (for format detection).
 bool looksLikeGGGeneratorJson(std::string_view text);

@@ -161,6 +161,33 @@ std::string cut(std::string text, std::size_t maxLength)
     return text + "...";
 }
 
+// Whether the byte at offset lies inside a string of text read as JSON from
+// its start (the text before it need not be valid JSON).
+bool insideJsonString(std::string_view text, std::size_t offset)
+{
+    bool inString = false;
+    for (std::size_t i = 0; i < offset; ++i) {
+        if (!inString) {
+            inString = text[i] == '"';
+        } else if (text[i] == '\\') {
+            ++i; // the escaped character, which may be a quote
+        } else if (text[i] == '"') {
+            inString = false;
+        }
+    }
+    return inString;
+}
+
+// A raw NUL can stand nowhere in JSON; only inside a string does it have a
+// spelling, the escape \u0000.
+JsonReadError nulByteError(std::string_view text, std::size_t offset)
+{
+    const std::string location = describePosition(textPosition(text, offset));
+    if (insideJsonString(text, offset))
+        return {location, "a NUL byte inside a string: JSON text cannot contain one raw", "write it as \\u0000"};
+    return {location, "a NUL byte outside any string: JSON text cannot contain one", {}};
+}
+
 } // namespace
 
 std::optional<json> parseStrictJson(std::string_view text, JsonReadError& error)
@@ -172,8 +199,7 @@ std::optional<json> parseStrictJson(std::string_view text, JsonReadError& error)
     // nlohmann's lexer takes a NUL byte for the end of the input (it also reads
     // C strings): without this check, whatever follows a NUL would be ignored.
     if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
-        error = {describePosition(textPosition(text, nul)),
-            "a NUL byte: JSON text cannot contain one (inside a string, write \\u0000)"};
+        error = nulByteError(text, nul);
         return std::nullopt;
     }
     if (auto offset = findExcessiveNesting(text, kMaxJsonDepth)) {
@@ -201,11 +227,11 @@ std::variant<std::unique_ptr<Model>, LoadError> loadModelJson(
     JsonReadError error;
     const std::optional<json> root = parseStrictJson(text, error);
     if (!root)
-        return LoadError{displayName, error.location, error.message};
+        return LoadError{displayName, error.location, error.message, error.advice};
     try {
         return build(*root);
     } catch (const JsonReadError& failure) {
-        return LoadError{displayName, failure.location, failure.message};
+        return LoadError{displayName, failure.location, failure.message, failure.advice};
     }
 }
 

@@ -29,6 +29,7 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 struct JsonReadError {
     std::string location;
     std::string message;
+    std::string advice = {}; // as LoadError::advice
 };
 
 // Parses the whole text as one JSON value, keeping the keys in file order.

@@ -10,13 +10,15 @@ namespace core {
 
 namespace {
 
-LoadedModel fromResult(std::variant<std::unique_ptr<Model>, LoadError> result, ModelFormat format)
+LoadedModel fromResult(std::variant<std::unique_ptr<Model>, LoadError> result, ModelFormat format,
+                       std::vector<LoadWarning> warnings = {})
 {
     LoadedModel loaded;
     loaded.format = format;
-    if (auto* model = std::get_if<std::unique_ptr<Model>>(&result))
+    if (auto* model = std::get_if<std::unique_ptr<Model>>(&result)) {
         loaded.model = std::move(*model);
-    else
+        loaded.warnings = std::move(warnings);
+    } else
         loaded.error = std::get<LoadError>(std::move(result));
     return loaded;
 }
@@ -41,12 +43,17 @@ LoadedModel loadModelFile(const std::string& path)
 LoadedModel loadModelText(std::string_view text, const std::string& displayName)
 {
     const char first = firstSignificantCharacter(text);
-    if (first == '<')
-        return fromResult(readPlcOpenModel(text, displayName), ModelFormat::PlcOpen);
+    std::vector<LoadWarning> warnings;
+    if (first == '<') {
+        auto result = readPlcOpenModel(text, displayName, &warnings);
+        return fromResult(std::move(result), ModelFormat::PlcOpen, std::move(warnings));
+    }
     if (looksLikeNativeJson(text))
         return fromResult(loadNativeJson(text, displayName), ModelFormat::Native);
-    if (looksLikeGGGeneratorJson(text))
-        return fromResult(loadGGGeneratorJson(text, displayName), ModelFormat::GGGenerator);
+    if (looksLikeGGGeneratorJson(text)) {
+        auto result = loadGGGeneratorJson(text, displayName, &warnings);
+        return fromResult(std::move(result), ModelFormat::GGGenerator, std::move(warnings));
+    }
     // A NUL byte is no blank: such a file is not empty.
     const bool nulFirst = first == '\0' && text.find('\0') != std::string_view::npos;
     if (first == '\0' && !nulFirst)

@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace core {
 
@@ -24,6 +25,10 @@ struct LoadedModel {
     std::unique_ptr<Model> model; // set on success
     ModelFormat format = ModelFormat::Native;
     LoadError error;              // set when model is null
+    // What the model did not take over from the file, though it loaded (a
+    // GG-Generator file's GG Studio keys, a PLCopen file's edited code): the
+    // CLI prints them, the editor shows them on open.
+    std::vector<LoadWarning> warnings;
     bool ok() const { return model != nullptr; }
 };
 

@@ -3,6 +3,8 @@
 #include "core/formats/fileio.h"
 #include "core/formats/nativeformat.h"
 #include "core/codegen/plcopenwriter.h"
+#include "core/formats/plcopencodecheck.h"
+#include "core/formats/xmlelementposition.h"
 #include "core/formats/xmltext.h"
 
 #include <tinyxml2.h>
@@ -53,18 +55,23 @@ std::string textContent(const XMLElement* element)
     return text;
 }
 
-const XMLElement* findModelElement(const XMLElement* project)
+// Every element that carries a model: the children of each addData entry
+// named kPlcOpenModelDataName (the writer puts one, in one entry).
+std::vector<const XMLElement*> findModelElements(const XMLElement* project)
 {
+    std::vector<const XMLElement*> models;
     for (const XMLElement* addData = project->FirstChildElement(); addData; addData = addData->NextSiblingElement()) {
         if (localName(addData) != "addData")
             continue;
         for (const XMLElement* data = addData->FirstChildElement(); data; data = data->NextSiblingElement()) {
             const char* name = data->Attribute("name");
-            if (localName(data) == "data" && name && kPlcOpenModelDataName == name)
-                return data->FirstChildElement();
+            if (localName(data) != "data" || !name || kPlcOpenModelDataName != name)
+                continue;
+            for (const XMLElement* model = data->FirstChildElement(); model; model = model->NextSiblingElement())
+                models.push_back(model);
         }
     }
-    return nullptr;
+    return models;
 }
 
 LoadError embeddedModelError(const LoadError& inner, const std::string& displayName)
@@ -78,7 +85,8 @@ LoadError embeddedModelError(const LoadError& inner, const std::string& displayN
 } // namespace
 
 std::variant<std::unique_ptr<Model>, LoadError> readPlcOpenModel(std::string_view xmlText,
-                                                                 const std::string& displayName)
+                                                                 const std::string& displayName,
+                                                                 std::vector<LoadWarning>* warnings)
 {
     // tinyxml2 accepts too much (a second root, undeclared entities, &#0;) and
     // is quadratic in the attributes of an element: it only sees checked text.
@@ -102,7 +110,13 @@ std::variant<std::unique_ptr<Model>, LoadError> readPlcOpenModel(std::string_vie
                          "not a PLCopen XML file: the root element is <" + std::string(root->Name())
                              + ">, a PLCopen file starts with <project>"};
     }
-    const XMLElement* model = findModelElement(root);
+    const std::vector<const XMLElement*> models = findModelElements(root);
+    if (models.size() > 1) {
+        return LoadError{displayName, describeElementPosition(xmlText, *models[1]),
+                         "a second GG Studio model (the first is at " + describeElementPosition(xmlText, *models[0])
+                             + "): GG Studio cannot tell which one the file means, so it opens neither"};
+    }
+    const XMLElement* model = models.empty() ? nullptr : models.front();
     if (!model) {
         return LoadError{displayName, {},
                          "a PLCopen file without a GG Studio model: GG Studio can only open PLCopen files it "
@@ -112,6 +126,8 @@ std::variant<std::unique_ptr<Model>, LoadError> readPlcOpenModel(std::string_vie
     auto loaded = loadNativeJson(textContent(model), displayName);
     if (auto* failure = std::get_if<LoadError>(&loaded))
         return embeddedModelError(*failure, displayName);
+    if (warnings)
+        *warnings = plcOpenCodeDifferences(xmlText, *root, *std::get<std::unique_ptr<Model>>(loaded), displayName);
     return loaded;
 }
 

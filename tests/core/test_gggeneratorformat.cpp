@@ -322,3 +322,37 @@ TEST_CASE("GG-Generator export says what of the nested layer it leaves out", "[f
     // And indeed nothing of it is in the file.
     CHECK(core::saveGGGeneratorJson(model).find("Initialization") == std::string::npos);
 }
+
+TEST_CASE("GG-Generator import names GG Studio's keys it does not load", "[files][gggenerator]")
+{
+    // Loading used to drop them without a word, with exit code 0.
+    ordered_json file = reference();
+    file["grafcets"] = {{"F1", {{"steps", ordered_json::array()}}}, {"F3", {{"steps", ordered_json::array()}}}};
+    file["properties"] = ordered_json::array({{{"text", "never A1 AND F1"}}});
+    file["settings"] = {{"evolution", "until-stable"}};
+    file["graph"]["data"]["signals"] = ordered_json::array({{{"name", "Done"}, {"type", "bool"}, {"kind", "output"}}});
+    std::vector<LoadWarning> warnings;
+    auto result = loadGGGeneratorJson(file.dump(), "mixed.json", &warnings);
+    REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(result));
+    std::vector<std::string> texts;
+    for (const LoadWarning& warning : warnings)
+        texts.push_back(warning.toString());
+    CHECK(texts == std::vector<std::string>{
+        "mixed.json: /grafcets: warning: the nested GRAFCETs of F1, F3 are not loaded: a GG-Generator file has no "
+        "place for nested behaviour",
+        "mixed.json: /properties: warning: the verification properties (1) are not loaded: a GG-Generator file has "
+        "no place for them",
+        "mixed.json: /settings/evolution: warning: the setting \"evolution\" (\"until-stable\") is not loaded: a "
+        "GG-Generator file has no place for settings",
+        "mixed.json: /graph/data/signals/0/kind: warning: the variable kind \"output\" is not loaded: GG-Generator "
+        "reads every signal as an input",
+    });
+
+    // The tool's own file, and a GG Studio export, carry none.
+    warnings = {{"x", "", "stale"}};
+    REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(loadGGGeneratorJson(referenceText(), "gg.json", &warnings)));
+    CHECK(warnings.empty());
+    REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(
+        loadGGGeneratorJson(saveGGGeneratorJson(filetests::richNativeModel()), "gg.json", &warnings)));
+    CHECK(warnings.empty());
+}

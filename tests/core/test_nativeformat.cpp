@@ -259,7 +259,7 @@ TEST_CASE("Native: a NUL byte is an error at its place, not the end of the file"
     // nlohmann's lexer stops at a NUL: the header alone used to load as the template.
     const std::string headerThenGarbage = nativeFile("") + "\n" + std::string("\0", 1) + "garbage";
     CHECK(loadError(headerThenGarbage).toString()
-        == "test.json: line 2, column 1: a NUL byte: JSON text cannot contain one (inside a string, write \\u0000)");
+        == "test.json: line 2, column 1: a NUL byte outside any string: JSON text cannot contain one");
 
     // Nor may a whole model hide what follows it.
     const std::string modelThenMore = saveNativeJson(Model()) + std::string("\0", 1) + "{\"steps\": 5}";
@@ -267,9 +267,18 @@ TEST_CASE("Native: a NUL byte is an error at its place, not the end of the file"
     CHECK_THAT(error.location, Catch::StartsWith("line "));
     CHECK_THAT(error.message, Catch::StartsWith("a NUL byte"));
 
-    // A raw NUL inside a string is located too (the escape \u0000 is fine).
-    CHECK(loadError(nativeFile("\"name\": \"a" + std::string("\0", 1) + "b\"")).location
-        == "line 1, column " + std::to_string(kHeader.size() + 13));
+    // A raw NUL inside a string is located too, with the escape that writes
+    // it (the advice used to offer the escape for an outside NUL as well).
+    const LoadError inside = loadError(nativeFile("\"name\": \"a" + std::string("\0", 1) + "b\""));
+    CHECK(inside.location == "line 1, column " + std::to_string(kHeader.size() + 13));
+    CHECK(inside.message == "a NUL byte inside a string: JSON text cannot contain one raw");
+    CHECK(inside.advice == "write it as \\u0000");
+    CHECK(inside.toString() == "test.json: " + inside.location
+                                   + ": a NUL byte inside a string: JSON text cannot contain one raw; write it as "
+                                     "\\u0000");
+    // A quote escaped inside a string does not end it.
+    CHECK(loadError(nativeFile("\"name\": \"a\\\"" + std::string("\0", 1) + "\"")).message
+        == "a NUL byte inside a string: JSON text cannot contain one raw");
     CHECK(loadOk(nativeFile(R"("name": "a\u0000b")"))->settings().name == std::string("a\0b", 3));
 }
 

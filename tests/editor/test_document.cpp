@@ -8,6 +8,8 @@
 #include "editor/document.h"
 #include "editor/selection.h"
 
+#include "core/formats/gggeneratorformat.h"
+
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -56,6 +58,7 @@ private slots:
     void modifiedFollowsUndoAndClean();
     void saveAndLoadRoundTrip();
     void failedLoadKeepsModelAndHistory();
+    void loadSaysWhatItDidNotTakeOver();
     void failedSaveKeepsModified();
     void replaceModelClearsHistory();
     void renameToAnInvalidNameIsRefused();
@@ -232,6 +235,30 @@ void TestDocument::saveAndLoadRoundTrip()
     QCOMPARE(opened.filePath(), path);
     QCOMPARE(opened.fileFormat(), core::ModelFormat::Native);
     QCOMPARE(opened.undoStack()->count(), 0);
+}
+
+// A GG-Generator file carrying GG Studio's verification properties used to
+// open without a word, and the properties were gone.
+void TestDocument::loadSaysWhatItDidNotTakeOver()
+{
+    QTemporaryDir directory;
+    QVERIFY(directory.isValid());
+    const QString path = directory.filePath("mixed.json");
+    std::string text = core::saveGGGeneratorJson(core::Model());
+    text.insert(text.rfind('}'), ", \"properties\": [{\"text\": \"never A1 AND F1\"}]");
+    writeText(path, QByteArray::fromStdString(text));
+
+    Document document;
+    QString error;
+    QStringList warnings{"stale"};
+    QVERIFY2(document.load(path, &error, &warnings), qPrintable(error));
+    QCOMPARE(warnings, QStringList{path + ": /properties: warning: the verification properties (1) are not loaded: "
+                                          "a GG-Generator file has no place for them"});
+
+    const QString native = directory.filePath("native.ggs.json");
+    QVERIFY2(document.save(native, &error), qPrintable(error));
+    QVERIFY2(document.load(native, &error, &warnings), qPrintable(error));
+    QVERIFY(warnings.isEmpty());
 }
 
 void TestDocument::failedLoadKeepsModelAndHistory()
