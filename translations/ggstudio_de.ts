@@ -617,6 +617,21 @@
         <source>Not confirmed: decided on the GEMMA layer with every Complete free, and the run does not replay with the nested GRAFCETs.</source>
         <translation>Nicht bestätigt: auf der GEMMA-Ebene mit jedem Complete frei entschieden, und der Ablauf lässt sich mit den verschachtelten GRAFCETs nicht nachspielen.</translation>
     </message>
+    <message>
+        <source>In the condition of %1: &apos;%2&apos; divides by zero: on the PLC an integer division or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / 0)</extracomment>
+        <translation>In der Bedingung von %1: &apos;%2&apos; teilt durch null: in der SPS hält eine ganzzahlige Division oder ein MOD durch null die Task mit einem Fehler an, eine REAL-Division ergibt INF oder NaN.</translation>
+    </message>
+    <message>
+        <source>In the condition of %1: the divisor of &apos;%2&apos; can be zero: an integer division or MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / Batch)</extracomment>
+        <translation>In der Bedingung von %1: der Divisor von &apos;%2&apos; kann null sein: eine ganzzahlige Division oder ein MOD durch null hält die SPS mit einem Fehler an (und die Simulation), eine REAL-Division ergibt INF oder NaN.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; is undecided: neither proved nor shown violated (%2).</source>
+        <extracomment>%2: why, in English (the verifier&apos;s reason)</extracomment>
+        <translation>Die Eigenschaft &apos;%1&apos; ist unentschieden: weder bewiesen noch als verletzt gezeigt (%2).</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -682,6 +697,19 @@
     <message>
         <source>Nested GRAFCET drawn by GG Studio</source>
         <translation>Eingebetteter GRAFCET, gezeichnet mit GG Studio</translation>
+    </message>
+</context>
+<context>
+    <name>InitialStepRule</name>
+    <message>
+        <source>%1 is the initial step, which cannot be hidden; make another step initial first</source>
+        <extracomment>%1 is a GEMMA step, e.g. A1</extracomment>
+        <translation>%1 ist der Anfangsschritt, der nicht ausgeblendet werden kann; machen Sie zuerst einen anderen Schritt zum Anfangsschritt</translation>
+    </message>
+    <message>
+        <source>%1 is hidden and cannot be the initial step; show it first</source>
+        <extracomment>%1 is a GEMMA step, e.g. A3</extracomment>
+        <translation>%1 ist ausgeblendet und kann nicht der Anfangsschritt sein; blenden Sie ihn zuerst ein</translation>
     </message>
 </context>
 <context>
@@ -1264,10 +1292,6 @@
         <translation>Zyklen werden ab 1 gezählt</translation>
     </message>
     <message>
-        <source>scan number %1 is too large</source>
-        <translation>Zyklusnummer %1 ist zu groß</translation>
-    </message>
-    <message>
         <source>%1 is %2: %3</source>
         <extracomment>a variable, its IEC type (INT), then why the value does not fit it</extracomment>
         <translation>%1 ist vom Typ %2: %3</translation>
@@ -1386,6 +1410,11 @@
         <source>%1 is not the active step: its GRAFCET does not evolve in the next scan</source>
         <extracomment>a macro-step or enclosing step</extracomment>
         <translation>%1 ist nicht der aktive Schritt: sein GRAFCET entwickelt sich im nächsten Zyklus nicht</translation>
+    </message>
+    <message>
+        <source>scan number %1 is too large: a scenario runs at most %2 scans</source>
+        <extracomment>%2: the highest scan number a scenario may name</extracomment>
+        <translation>die Zyklusnummer %1 ist zu groß: ein Szenario läuft höchstens %2 Zyklen</translation>
     </message>
 </context>
 <context>
@@ -2111,6 +2140,18 @@
     <message>
         <source>The verification properties: GG-Generator has no place for them.</source>
         <translation>Die Verifikationseigenschaften: GG-Generator hat keinen Platz dafür.</translation>
+    </message>
+    <message>
+        <source>Writing the specification…</source>
+        <translation>Die Spezifikation wird geschrieben…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Export cancelled: %1 left unchanged</source>
+        <translation>Export abgebrochen: %1 bleibt unverändert</translation>
     </message>
 </context>
 <context>
@@ -2866,6 +2907,14 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
         <translation>Verifikation abgebrochen: Das Modell, die Complete-Einstellungen oder die exakte Zeit wurden geändert</translation>
     </message>
+    <message>
+        <source>%1 was opened, but not everything in the file was taken over.</source>
+        <translation>%1 wurde geöffnet, aber nicht alles in der Datei wurde übernommen.</translation>
+    </message>
+    <message>
+        <source>Verification finished: nothing is violated, but some properties are undecided (see Problems)</source>
+        <translation>Verifikation beendet: nichts ist verletzt, aber einige Eigenschaften sind unentschieden (siehe Probleme)</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -3497,6 +3546,30 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
         <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
         <translation>Unstable: der GRAFCET von %1 hat in diesem Zyklus keine stabile Situation erreicht; seine letzte Entwicklung hat noch geschaltet.</translation>
+    </message>
+    <message>
+        <source>the condition of %1</source>
+        <translation>der Bedingung von %1</translation>
+    </message>
+    <message>
+        <source>the receptivity of T%1 of %2</source>
+        <translation>der Weiterschaltbedingung von T%1 von %2</translation>
+    </message>
+    <message>
+        <source>action %1 of step %2 of %3</source>
+        <translation>Aktion %1 von Schritt %2 von %3</translation>
+    </message>
+    <message>
+        <source>Stopped at scan %1: integer division by zero in %2 (%3 in &apos;%4&apos;). On the PLC the task stops with a fault; Reset to run again.</source>
+        <translation>Angehalten in Zyklus %1: ganzzahlige Division durch null in %2 (%3 in &apos;%4&apos;). In der SPS hält die Task mit einem Fehler an; Zurücksetzen, um erneut zu starten.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other transition(s): an upstream step is not active</source>
+        <extracomment>the transitions of a large nested GRAFCET left out of the explanation</extracomment>
+        <translation>
+            <numerusform>%n weiterer Übergang: ein vorgelagerter Schritt ist nicht aktiv</numerusform>
+            <numerusform>%n weitere Übergänge: ein vorgelagerter Schritt ist nicht aktiv</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4347,6 +4420,14 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>Exact time: every timer elapses exactly when the PLC&apos;s would, counted in scans (Simulation &gt; Verify with Exact Time).</source>
         <translation>Exakte Zeit: Jeder Timer läuft genau dann ab, wenn der der SPS ablaufen würde, in Zyklen gezählt (Simulation &gt; Mit exakter Zeit verifizieren).</translation>
+    </message>
+    <message>
+        <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations explored).</source>
+        <translation>Nichts ist verletzt, aber einige Eigenschaften sind unentschieden: siehe die Befunde (%1 Konfigurationen untersucht).</translation>
+    </message>
+    <message>
+        <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Nichts ist verletzt, aber einige Eigenschaften sind unentschieden: siehe die Befunde (%1 Konfigurationen der GEMMA-Ebene und %2 Programmzustände beider Ebenen erkundet).</translation>
     </message>
 </context>
 <context>

@@ -181,6 +181,17 @@
     </message>
 </context>
 <context>
+    <name>editor::SimulationDock</name>
+    <message numerus="yes">
+        <source>%n other transition(s): an upstream step is not active</source>
+        <extracomment>the transitions of a large nested GRAFCET left out of the explanation</extracomment>
+        <translation>
+            <numerusform>%n other transition: an upstream step is not active</numerusform>
+            <numerusform>%n other transitions: an upstream step is not active</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>editor::StepItem</name>
     <message numerus="yes">
         <source>Has a nested GRAFCET (%n steps)</source>

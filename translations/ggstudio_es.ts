@@ -617,6 +617,21 @@
         <source>Not confirmed: decided on the GEMMA layer with every Complete free, and the run does not replay with the nested GRAFCETs.</source>
         <translation>No confirmado: decidido en la capa GEMMA con cada Complete libre, y la ejecución no se reproduce con los GRAFCET anidados.</translation>
     </message>
+    <message>
+        <source>In the condition of %1: &apos;%2&apos; divides by zero: on the PLC an integer division or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / 0)</extracomment>
+        <translation>En la condición de %1: &apos;%2&apos; divide por cero: en el PLC una división entera o un MOD por cero detiene la tarea con un fallo, y una división REAL da INF o NaN.</translation>
+    </message>
+    <message>
+        <source>In the condition of %1: the divisor of &apos;%2&apos; can be zero: an integer division or MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / Batch)</extracomment>
+        <translation>En la condición de %1: el divisor de &apos;%2&apos; puede ser cero: una división entera o un MOD por cero detiene el PLC con un fallo (y la simulación), una división REAL da INF o NaN.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; is undecided: neither proved nor shown violated (%2).</source>
+        <extracomment>%2: why, in English (the verifier&apos;s reason)</extracomment>
+        <translation>La propiedad &apos;%1&apos; está sin decidir: ni demostrada ni mostrada incumplida (%2).</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -682,6 +697,19 @@
     <message>
         <source>Nested GRAFCET drawn by GG Studio</source>
         <translation>GRAFCET anidado dibujado con GG Studio</translation>
+    </message>
+</context>
+<context>
+    <name>InitialStepRule</name>
+    <message>
+        <source>%1 is the initial step, which cannot be hidden; make another step initial first</source>
+        <extracomment>%1 is a GEMMA step, e.g. A1</extracomment>
+        <translation>%1 es la etapa inicial, que no se puede ocultar; haga primero inicial otra etapa</translation>
+    </message>
+    <message>
+        <source>%1 is hidden and cannot be the initial step; show it first</source>
+        <extracomment>%1 is a GEMMA step, e.g. A3</extracomment>
+        <translation>%1 está oculta y no puede ser la etapa inicial; muéstrela primero</translation>
     </message>
 </context>
 <context>
@@ -1264,10 +1292,6 @@
         <translation>los ciclos se numeran a partir de 1</translation>
     </message>
     <message>
-        <source>scan number %1 is too large</source>
-        <translation>el número de ciclo %1 es demasiado grande</translation>
-    </message>
-    <message>
         <source>%1 is %2: %3</source>
         <extracomment>a variable, its IEC type (INT), then why the value does not fit it</extracomment>
         <translation>%1 es de tipo %2: %3</translation>
@@ -1386,6 +1410,11 @@
         <source>%1 is not the active step: its GRAFCET does not evolve in the next scan</source>
         <extracomment>a macro-step or enclosing step</extracomment>
         <translation>%1 no es la etapa activa: su GRAFCET no evoluciona en el próximo ciclo</translation>
+    </message>
+    <message>
+        <source>scan number %1 is too large: a scenario runs at most %2 scans</source>
+        <extracomment>%2: the highest scan number a scenario may name</extracomment>
+        <translation>el número de ciclo %1 es demasiado grande: un escenario dura como máximo %2 ciclos</translation>
     </message>
 </context>
 <context>
@@ -2111,6 +2140,18 @@
     <message>
         <source>The verification properties: GG-Generator has no place for them.</source>
         <translation>Las propiedades de verificación: GG-Generator no tiene lugar para ellas.</translation>
+    </message>
+    <message>
+        <source>Writing the specification…</source>
+        <translation>Escribiendo la especificación…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Export cancelled: %1 left unchanged</source>
+        <translation>Exportación cancelada: %1 no se ha modificado</translation>
     </message>
 </context>
 <context>
@@ -2866,6 +2907,14 @@ Ctrl+Espacio completa un nombre.</translation>
         <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
         <translation>Verificación cancelada: el modelo, los ajustes de Complete o el tiempo exacto han cambiado</translation>
     </message>
+    <message>
+        <source>%1 was opened, but not everything in the file was taken over.</source>
+        <translation>%1 se ha abierto, pero no todo el contenido del archivo se ha incorporado.</translation>
+    </message>
+    <message>
+        <source>Verification finished: nothing is violated, but some properties are undecided (see Problems)</source>
+        <translation>Verificación terminada: nada se incumple, pero algunas propiedades están sin decidir (ver Problemas)</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -3497,6 +3546,30 @@ Ctrl+Espacio completa un nombre.</translation>
         <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
         <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
         <translation>Unstable: el GRAFCET de %1 no encontró una situación estable en este ciclo; su última evolución aún franqueó una transición.</translation>
+    </message>
+    <message>
+        <source>the condition of %1</source>
+        <translation>la condición de %1</translation>
+    </message>
+    <message>
+        <source>the receptivity of T%1 of %2</source>
+        <translation>la receptividad de T%1 de %2</translation>
+    </message>
+    <message>
+        <source>action %1 of step %2 of %3</source>
+        <translation>la acción %1 de la etapa %2 de %3</translation>
+    </message>
+    <message>
+        <source>Stopped at scan %1: integer division by zero in %2 (%3 in &apos;%4&apos;). On the PLC the task stops with a fault; Reset to run again.</source>
+        <translation>Detenido en el ciclo %1: división entera por cero en %2 (%3 en &apos;%4&apos;). En el PLC la tarea se detiene con un fallo; Reiniciar para volver a ejecutar.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other transition(s): an upstream step is not active</source>
+        <extracomment>the transitions of a large nested GRAFCET left out of the explanation</extracomment>
+        <translation>
+            <numerusform>%n transición más: una etapa anterior no está activa</numerusform>
+            <numerusform>%n transiciones más: una etapa anterior no está activa</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4347,6 +4420,14 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>Exact time: every timer elapses exactly when the PLC&apos;s would, counted in scans (Simulation &gt; Verify with Exact Time).</source>
         <translation>Tiempo exacto: cada temporizador vence exactamente cuando lo haría el del PLC, contado en ciclos (Simulación &gt; Verificar con tiempo exacto).</translation>
+    </message>
+    <message>
+        <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations explored).</source>
+        <translation>Nada se incumple, pero algunas propiedades están sin decidir: vea los resultados (%1 configuraciones exploradas).</translation>
+    </message>
+    <message>
+        <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Nada se incumple, pero algunas propiedades están sin decidir: vea los resultados (%1 configuraciones del nivel GEMMA y %2 estados del programa de los dos niveles explorados).</translation>
     </message>
 </context>
 <context>

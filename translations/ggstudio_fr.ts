@@ -617,6 +617,21 @@
         <source>Not confirmed: decided on the GEMMA layer with every Complete free, and the run does not replay with the nested GRAFCETs.</source>
         <translation>Non confirmé&#xa0;: décidé sur la couche GEMMA avec chaque Complete libre, et l&apos;exécution ne se rejoue pas avec les GRAFCET imbriqués.</translation>
     </message>
+    <message>
+        <source>In the condition of %1: &apos;%2&apos; divides by zero: on the PLC an integer division or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / 0)</extracomment>
+        <translation>Dans la réceptivité de %1 : &apos;%2&apos; divise par zéro : sur l&apos;automate, une division entière ou un MOD par zéro arrête la tâche sur un défaut, et une division REAL donne INF ou NaN.</translation>
+    </message>
+    <message>
+        <source>In the condition of %1: the divisor of &apos;%2&apos; can be zero: an integer division or MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / Batch)</extracomment>
+        <translation>Dans la réceptivité de %1 : le diviseur de &apos;%2&apos; peut être nul : une division entière ou un MOD par zéro arrête l&apos;automate sur un défaut (et la simulation), une division REAL donne INF ou NaN.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; is undecided: neither proved nor shown violated (%2).</source>
+        <extracomment>%2: why, in English (the verifier&apos;s reason)</extracomment>
+        <translation>La propriété « %1 » est indécise : ni prouvée ni montrée violée (%2).</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -682,6 +697,19 @@
     <message>
         <source>Nested GRAFCET drawn by GG Studio</source>
         <translation>GRAFCET imbriqué dessiné avec GG Studio</translation>
+    </message>
+</context>
+<context>
+    <name>InitialStepRule</name>
+    <message>
+        <source>%1 is the initial step, which cannot be hidden; make another step initial first</source>
+        <extracomment>%1 is a GEMMA step, e.g. A1</extracomment>
+        <translation>%1 est l&apos;étape initiale, qui ne peut pas être masquée ; rendez d&apos;abord une autre étape initiale</translation>
+    </message>
+    <message>
+        <source>%1 is hidden and cannot be the initial step; show it first</source>
+        <extracomment>%1 is a GEMMA step, e.g. A3</extracomment>
+        <translation>%1 est masquée et ne peut pas être l&apos;étape initiale ; affichez-la d&apos;abord</translation>
     </message>
 </context>
 <context>
@@ -1264,10 +1292,6 @@
         <translation>les cycles sont numérotés à partir de 1</translation>
     </message>
     <message>
-        <source>scan number %1 is too large</source>
-        <translation>le numéro de cycle %1 est trop grand</translation>
-    </message>
-    <message>
         <source>%1 is %2: %3</source>
         <extracomment>a variable, its IEC type (INT), then why the value does not fit it</extracomment>
         <translation>%1 est de type %2&#xa0;: %3</translation>
@@ -1386,6 +1410,11 @@
         <source>%1 is not the active step: its GRAFCET does not evolve in the next scan</source>
         <extracomment>a macro-step or enclosing step</extracomment>
         <translation>%1 n&apos;est pas l&apos;étape active : son GRAFCET n&apos;évolue pas au prochain cycle</translation>
+    </message>
+    <message>
+        <source>scan number %1 is too large: a scenario runs at most %2 scans</source>
+        <extracomment>%2: the highest scan number a scenario may name</extracomment>
+        <translation>le numéro de cycle %1 est trop grand : un scénario dure au plus %2 cycles</translation>
     </message>
 </context>
 <context>
@@ -2111,6 +2140,18 @@
     <message>
         <source>The verification properties: GG-Generator has no place for them.</source>
         <translation>Les propriétés à vérifier&#xa0;: GG-Generator n&apos;a pas de place pour elles.</translation>
+    </message>
+    <message>
+        <source>Writing the specification…</source>
+        <translation>Écriture de la spécification…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Export cancelled: %1 left unchanged</source>
+        <translation>Export annulé : %1 n&apos;a pas été modifié</translation>
     </message>
 </context>
 <context>
@@ -2866,6 +2907,14 @@ Ctrl+Espace complète un nom.</translation>
         <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
         <translation>Vérification annulée&#xa0;: le modèle, les réglages de Complete ou le temps exact ont changé</translation>
     </message>
+    <message>
+        <source>%1 was opened, but not everything in the file was taken over.</source>
+        <translation>%1 a été ouvert, mais tout le contenu du fichier n&apos;a pas été repris.</translation>
+    </message>
+    <message>
+        <source>Verification finished: nothing is violated, but some properties are undecided (see Problems)</source>
+        <translation>Vérification terminée : rien n&apos;est violé, mais certaines propriétés sont indécises (voir Problèmes)</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -3497,6 +3546,30 @@ Ctrl+Espace complète un nom.</translation>
         <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
         <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
         <translation>Unstable&#xa0;: le GRAFCET de %1 n&apos;a trouvé aucune situation stable dans ce cycle&#xa0;; sa dernière évolution a encore franchi une transition.</translation>
+    </message>
+    <message>
+        <source>the condition of %1</source>
+        <translation>la réceptivité de %1</translation>
+    </message>
+    <message>
+        <source>the receptivity of T%1 of %2</source>
+        <translation>la réceptivité de T%1 de %2</translation>
+    </message>
+    <message>
+        <source>action %1 of step %2 of %3</source>
+        <translation>l&apos;action %1 de l&apos;étape %2 de %3</translation>
+    </message>
+    <message>
+        <source>Stopped at scan %1: integer division by zero in %2 (%3 in &apos;%4&apos;). On the PLC the task stops with a fault; Reset to run again.</source>
+        <translation>Arrêt au cycle %1 : division entière par zéro dans %2 (%3 dans &apos;%4&apos;). Sur l&apos;automate, la tâche s&apos;arrête sur un défaut ; Réinitialiser pour relancer.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other transition(s): an upstream step is not active</source>
+        <extracomment>the transitions of a large nested GRAFCET left out of the explanation</extracomment>
+        <translation>
+            <numerusform>%n autre transition : une étape amont n&apos;est pas active</numerusform>
+            <numerusform>%n autres transitions : une étape amont n&apos;est pas active</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4347,6 +4420,14 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>Exact time: every timer elapses exactly when the PLC&apos;s would, counted in scans (Simulation &gt; Verify with Exact Time).</source>
         <translation>Temps exact&#xa0;: chaque temporisation s&apos;écoule exactement quand celle de l&apos;automate le ferait, comptée en cycles (Simulation &gt; Vérifier avec le temps exact).</translation>
+    </message>
+    <message>
+        <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations explored).</source>
+        <translation>Rien n&apos;est violé, mais certaines propriétés sont indécises : voir les résultats (%1 configurations explorées).</translation>
+    </message>
+    <message>
+        <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Rien n&apos;est violé, mais certaines propriétés sont indécises : voir les résultats (%1 configurations du niveau GEMMA et %2 états du programme des deux niveaux explorés).</translation>
     </message>
 </context>
 <context>

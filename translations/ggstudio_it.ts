@@ -617,6 +617,21 @@
         <source>Not confirmed: decided on the GEMMA layer with every Complete free, and the run does not replay with the nested GRAFCETs.</source>
         <translation>Non confermato: deciso sul livello GEMMA con ogni Complete libero, e l&apos;esecuzione non si riproduce con i GRAFCET annidati.</translation>
     </message>
+    <message>
+        <source>In the condition of %1: &apos;%2&apos; divides by zero: on the PLC an integer division or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / 0)</extracomment>
+        <translation>Nella condizione di %1: &apos;%2&apos; divide per zero: sul PLC una divisione intera o un MOD per zero arresta il task con un errore, e una divisione REAL dà INF o NaN.</translation>
+    </message>
+    <message>
+        <source>In the condition of %1: the divisor of &apos;%2&apos; can be zero: an integer division or MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / Batch)</extracomment>
+        <translation>Nella condizione di %1: il divisore di &apos;%2&apos; può essere zero: una divisione intera o un MOD per zero arresta il PLC con un errore (e la simulazione), una divisione REAL dà INF o NaN.</translation>
+    </message>
+    <message>
+        <source>The property &apos;%1&apos; is undecided: neither proved nor shown violated (%2).</source>
+        <extracomment>%2: why, in English (the verifier&apos;s reason)</extracomment>
+        <translation>La proprietà &apos;%1&apos; è indecisa: né dimostrata né mostrata violata (%2).</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -682,6 +697,19 @@
     <message>
         <source>Nested GRAFCET drawn by GG Studio</source>
         <translation>GRAFCET annidato disegnato con GG Studio</translation>
+    </message>
+</context>
+<context>
+    <name>InitialStepRule</name>
+    <message>
+        <source>%1 is the initial step, which cannot be hidden; make another step initial first</source>
+        <extracomment>%1 is a GEMMA step, e.g. A1</extracomment>
+        <translation>%1 è la fase iniziale, che non può essere nascosta; rendere prima iniziale un&apos;altra fase</translation>
+    </message>
+    <message>
+        <source>%1 is hidden and cannot be the initial step; show it first</source>
+        <extracomment>%1 is a GEMMA step, e.g. A3</extracomment>
+        <translation>%1 è nascosta e non può essere la fase iniziale; mostrarla prima</translation>
     </message>
 </context>
 <context>
@@ -1264,10 +1292,6 @@
         <translation>i cicli sono numerati a partire da 1</translation>
     </message>
     <message>
-        <source>scan number %1 is too large</source>
-        <translation>il numero di ciclo %1 è troppo grande</translation>
-    </message>
-    <message>
         <source>%1 is %2: %3</source>
         <extracomment>a variable, its IEC type (INT), then why the value does not fit it</extracomment>
         <translation>%1 è di tipo %2: %3</translation>
@@ -1386,6 +1410,11 @@
         <source>%1 is not the active step: its GRAFCET does not evolve in the next scan</source>
         <extracomment>a macro-step or enclosing step</extracomment>
         <translation>%1 non è la tappa attiva: il suo GRAFCET non evolve al prossimo ciclo</translation>
+    </message>
+    <message>
+        <source>scan number %1 is too large: a scenario runs at most %2 scans</source>
+        <extracomment>%2: the highest scan number a scenario may name</extracomment>
+        <translation>il numero di ciclo %1 è troppo grande: uno scenario dura al massimo %2 cicli</translation>
     </message>
 </context>
 <context>
@@ -2111,6 +2140,18 @@
     <message>
         <source>The verification properties: GG-Generator has no place for them.</source>
         <translation>Le proprietà da verificare: GG-Generator non ha posto per esse.</translation>
+    </message>
+    <message>
+        <source>Writing the specification…</source>
+        <translation>Scrittura della specifica…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annulla</translation>
+    </message>
+    <message>
+        <source>Export cancelled: %1 left unchanged</source>
+        <translation>Esportazione annullata: %1 non è stato modificato</translation>
     </message>
 </context>
 <context>
@@ -2866,6 +2907,14 @@ Ctrl+Spazio completa un nome.</translation>
         <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
         <translation>Verifica annullata: il modello, le impostazioni di Complete o il tempo esatto sono cambiati</translation>
     </message>
+    <message>
+        <source>%1 was opened, but not everything in the file was taken over.</source>
+        <translation>%1 è stato aperto, ma non tutto il contenuto del file è stato ripreso.</translation>
+    </message>
+    <message>
+        <source>Verification finished: nothing is violated, but some properties are undecided (see Problems)</source>
+        <translation>Verifica terminata: nulla è violato, ma alcune proprietà sono indecise (vedi Problemi)</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -3497,6 +3546,30 @@ Ctrl+Spazio completa un nome.</translation>
         <source>Unstable: the GRAFCET of %1 found no stable situation in this scan; its last evolution still fired.</source>
         <extracomment>Unstable is the name of the function block&apos;s output (not translated); %1: macro-steps or enclosing steps</extracomment>
         <translation>Unstable: il GRAFCET di %1 non ha trovato una situazione stabile in questo ciclo; la sua ultima evoluzione ha ancora superato una transizione.</translation>
+    </message>
+    <message>
+        <source>the condition of %1</source>
+        <translation>la condizione di %1</translation>
+    </message>
+    <message>
+        <source>the receptivity of T%1 of %2</source>
+        <translation>la recettività di T%1 di %2</translation>
+    </message>
+    <message>
+        <source>action %1 of step %2 of %3</source>
+        <translation>l&apos;azione %1 della fase %2 di %3</translation>
+    </message>
+    <message>
+        <source>Stopped at scan %1: integer division by zero in %2 (%3 in &apos;%4&apos;). On the PLC the task stops with a fault; Reset to run again.</source>
+        <translation>Fermato al ciclo %1: divisione intera per zero in %2 (%3 in &apos;%4&apos;). Sul PLC il task si arresta con un errore; Reimposta per ripartire.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n other transition(s): an upstream step is not active</source>
+        <extracomment>the transitions of a large nested GRAFCET left out of the explanation</extracomment>
+        <translation>
+            <numerusform>%n altra transizione: una fase a monte non è attiva</numerusform>
+            <numerusform>%n altre transizioni: una fase a monte non è attiva</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4347,6 +4420,14 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>Exact time: every timer elapses exactly when the PLC&apos;s would, counted in scans (Simulation &gt; Verify with Exact Time).</source>
         <translation>Tempo esatto: ogni temporizzatore scade esattamente quando scadrebbe quello del PLC, contato in cicli (Simulazione &gt; Verifica con tempo esatto).</translation>
+    </message>
+    <message>
+        <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations explored).</source>
+        <translation>Nulla è violato, ma alcune proprietà sono indecise: vedi i risultati (%1 configurazioni esplorate).</translation>
+    </message>
+    <message>
+        <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
+        <translation>Nulla è violato, ma alcune proprietà sono indecise: vedi i risultati (%1 configurazioni del livello GEMMA e %2 stati del programma dei due livelli esplorati).</translation>
     </message>
 </context>
 <context>
