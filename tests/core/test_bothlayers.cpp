@@ -4,6 +4,7 @@
 // of the simulator on random models.
 
 #include "samplemodels.h"
+#include "verificationtestsupport.h"
 
 #include "core/formats/modelfiles.h"
 #include "core/model/model.h"
@@ -25,22 +26,8 @@ using namespace core;
 namespace {
 
 namespace code = core::verification;
-
-void require(const Status& status)
-{
-    INFO(status.message);
-    REQUIRE(status.ok);
-}
-
-std::vector<const VerificationFinding*> findingsWith(const VerificationResult& result, const std::string& findingCode)
-{
-    std::vector<const VerificationFinding*> out;
-    for (const VerificationFinding& finding : result.findings) {
-        if (finding.code == findingCode)
-            out.push_back(&finding);
-    }
-    return out;
-}
+using verificationtest::findingsWith;
+using verificationtest::require;
 
 std::string codes(const VerificationResult& result)
 {

@@ -3,6 +3,7 @@
 // violation, or undecided; never "holds" nor a violation that does not replay.
 
 #include "samplemodels.h"
+#include "verificationtestsupport.h"
 
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
@@ -20,12 +21,8 @@ using namespace core;
 namespace {
 
 namespace code = core::verification;
-
-void require(const Status& status)
-{
-    INFO(status.message);
-    REQUIRE(status.ok);
-}
+using verificationtest::findingsWith;
+using verificationtest::require;
 
 // F1's GRAFCET counts its cycles: step 2 adds one to Count each time it is
 // entered (on A), step 1 comes back on NOT A. The exploration takes the
@@ -40,16 +37,6 @@ Model countingMachine()
     samples::addMachineTransition(model, 1, {1}, {2}, "A");
     samples::addMachineTransition(model, 2, {2}, {1}, "NOT A");
     return model;
-}
-
-std::vector<const VerificationFinding*> findingsWith(const VerificationResult& result, const std::string& findingCode)
-{
-    std::vector<const VerificationFinding*> out;
-    for (const VerificationFinding& finding : result.findings) {
-        if (finding.code == findingCode)
-            out.push_back(&finding);
-    }
-    return out;
 }
 
 VerificationResult verify(const Model& model, std::vector<std::string> properties, std::size_t concreteStates = 20'000)

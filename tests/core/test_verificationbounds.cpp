@@ -7,6 +7,7 @@
 
 #include "modelfactory.h"
 #include "samplemodels.h"
+#include "verificationtestsupport.h"
 
 #include "core/model/model.h"
 #include "core/simulation/simulator.h"
@@ -24,18 +25,9 @@ using namespace core;
 namespace {
 
 namespace code = core::verification;
+using verificationtest::findingsWith;
 
 const std::vector<std::string> kLongTimerProperties{"never F1.X2", "never Out1"};
-
-std::vector<const VerificationFinding*> findingsWith(const VerificationResult& result, const std::string& findingCode)
-{
-    std::vector<const VerificationFinding*> out;
-    for (const VerificationFinding& finding : result.findings) {
-        if (finding.code == findingCode)
-            out.push_back(&finding);
-    }
-    return out;
-}
 
 // The scan in which the simulator first has F1's step 2 active and Out1 TRUE
 // (Start pressed from the first scan on), or 0 within `limit` scans.
