@@ -10,9 +10,8 @@
 #include "core/verification/propertyevaluation.h"
 #include "core/verification/scanreads.h"
 
-#include <cstdint>
-#include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <deque>
 #include <set>
 #include <sstream>
@@ -113,12 +112,12 @@ std::string stateKey(const Simulator& simulator, const std::vector<bool>& overwr
     std::string key = std::to_string(simulator.activeStepNumber()) + (simulator.entry() ? "E" : "-");
     for (bool token : simulator.tokenValues())
         key += token ? '1' : '0';
-    const std::string active = simulator.activeStepId();
+    const std::string activeStep = simulator.activeStepId();
     for (const std::string& step : simulator.nestedSteps()) {
         // An inactive function block starts afresh when its step is entered
         // again (its Initialization call), and only the active step's
         // Complete is read: what the others froze does not decide the future.
-        if (step != active)
+        if (step != activeStep)
             continue;
         key += '|';
         key += simulator.complete(step) ? 'C' : '-';
