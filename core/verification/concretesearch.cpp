@@ -8,7 +8,9 @@
 #include "core/simulation/simulator.h"
 #include "core/verification/property.h"
 #include "core/verification/propertyevaluation.h"
+#include "core/verification/scanreads.h"
 
+#include <cctype>
 #include <cstdint>
 #include <deque>
 #include <set>
@@ -23,9 +25,11 @@ namespace core {
 
 namespace {
 
-// Past this many input combinations per scan the search is not tried: each
-// state would cost more scans than the budget allows for a useful depth.
+// Past this many combinations of the inputs a scan reads, the state is not
+// expanded: it would cost more scans than the budget allows for a useful depth.
 constexpr std::size_t kMaxCombinationsPerScan = 4096;
+// A SearchNode::choice for an input the scan does not read: it keeps its value.
+constexpr std::size_t kKept = SIZE_MAX;
 constexpr std::size_t kMaxValuesPerNumber = 8;
 
 std::string valueText(const cond::Value& value)
@@ -94,13 +98,27 @@ std::vector<cond::Value> inputValues(Simulator probe, std::size_t index, const s
     return values;
 }
 
-// What decides the simulator's future: everything but the scan count.
-std::string stateKey(const Simulator& simulator)
+std::string upperName(std::string text)
+{
+    for (char& c : text)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return text;
+}
+
+// What decides the simulator's future: everything but the scan count and the
+// inputs in `overwritten`, which every scan that reads them sets first.
+std::string stateKey(const Simulator& simulator, const std::vector<bool>& overwritten)
 {
     std::string key = std::to_string(simulator.activeStepNumber()) + (simulator.entry() ? "E" : "-");
     for (bool token : simulator.tokenValues())
         key += token ? '1' : '0';
+    const std::string activeStep = simulator.activeStepId();
     for (const std::string& step : simulator.nestedSteps()) {
+        // An inactive function block starts afresh when its step is entered
+        // again (its Initialization call), and only the active step's
+        // Complete is read: what the others froze does not decide the future.
+        if (step != activeStep)
+            continue;
         key += '|';
         key += simulator.complete(step) ? 'C' : '-';
         key += simulator.manualComplete(step) ? 'M' : '-';
@@ -108,9 +126,14 @@ std::string stateKey(const Simulator& simulator)
             key += std::to_string(active) + ',';
         for (const NestedTimerState& timer : simulator.nestedTimers(step))
             key += 't' + std::to_string(timer.elapsedMs) + (timer.done ? 'Q' : '-');
+        // A TON reads its step as the previous call left it: a step that has
+        // just become active has a timer that has not started yet, with ET 0
+        // as one that started in this scan. The transitions that fired tell them apart.
+        for (int fired : simulator.firedNestedTransitions(step))
+            key += 'f' + std::to_string(fired);
     }
     for (std::size_t i = 0; i < simulator.variableNames().size(); ++i)
-        key += '|' + valueText(simulator.variableValue(i));
+        key += overwritten[i] ? std::string("|") : '|' + valueText(simulator.variableValue(i));
     return key;
 }
 
@@ -118,7 +141,7 @@ std::string stateKey(const Simulator& simulator)
 // active step (when free), and the state it started from.
 struct SearchNode {
     std::size_t parent = SIZE_MAX; // SIZE_MAX: the scan starts from reset
-    std::vector<std::size_t> choice; // per searched input: index into its values
+    std::vector<std::size_t> choice; // per searched input: index into its values, or kKept
     std::string freeStep;            // the free step without GRAFCET active in the scan, if any
     bool complete = false;
 };
@@ -141,18 +164,24 @@ public:
                 m_freeSteps.insert(step);
         }
         const std::vector<double> constants = modelConstants(model, property);
+        std::set<std::string> edges;
+        for (const std::string& name : m_start.program().edgeVariables)
+            edges.insert(upperName(name));
+        m_overwritten.assign(m_start.variableNames().size(), false);
         for (std::size_t i = 0; i < m_start.variableNames().size(); ++i) {
             if (m_start.variableKind(i) != VariableKind::Input)
                 continue;
             m_inputs.push_back(i);
             m_values.push_back(inputValues(m_start, i, constants));
+            m_overwritten[i] = edges.count(upperName(m_start.variableNames()[i])) == 0;
         }
     }
 
     ConcreteSearchResult run(const std::string& title);
 
 private:
-    std::size_t combinations() const;
+    std::vector<std::size_t> readInputs(const Simulator& state) const;
+    std::size_t combinations(const std::vector<std::size_t>& read) const;
     std::string scenarioText(std::size_t last, const std::string& title, std::int64_t& scans) const;
     std::optional<Counterexample> replayed(std::size_t last, const std::string& title) const;
     bool outOfTime() const;
@@ -164,16 +193,29 @@ private:
     std::set<std::string> m_freeSteps;
     std::vector<std::size_t> m_inputs;             // variable indices of the inputs
     std::vector<std::vector<cond::Value>> m_values; // per input, the values tried
+    std::vector<bool> m_overwritten;                // per variable: an input not read under an edge
     std::vector<SearchNode> m_nodes;
 };
 
-std::size_t ConcreteSearch::combinations() const
+// Positions in m_inputs of the inputs the next scan may read.
+std::vector<std::size_t> ConcreteSearch::readInputs(const Simulator& state) const
+{
+    const std::set<std::string> reads = scanReads(state, m_property.expression);
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < m_inputs.size(); ++i) {
+        if (reads.count(upperName(state.variableNames()[m_inputs[i]])))
+            out.push_back(i);
+    }
+    return out;
+}
+
+std::size_t ConcreteSearch::combinations(const std::vector<std::size_t>& read) const
 {
     std::size_t product = 1;
-    for (const std::vector<cond::Value>& values : m_values) {
+    for (std::size_t i : read) {
         if (product > kMaxCombinationsPerScan)
             break;
-        product *= values.size();
+        product *= m_values[i].size();
     }
     return product;
 }
@@ -187,17 +229,12 @@ bool ConcreteSearch::outOfTime() const
 ConcreteSearchResult ConcreteSearch::run(const std::string& title)
 {
     ConcreteSearchResult result;
-    const std::size_t perScan = combinations();
     if (!m_property.ok()) {
         result.reason = "the property does not parse";
         return result;
     }
-    if (perScan > kMaxCombinationsPerScan) {
-        result.reason = "the simulator's runs were not searched: more than " + std::to_string(kMaxCombinationsPerScan)
-            + " input combinations per scan";
-        return result;
-    }
-    std::unordered_set<std::string> seen{stateKey(m_start)};
+    std::size_t unexpanded = 0; // states whose scan reads too many inputs
+    std::unordered_set<std::string> seen{stateKey(m_start, m_overwritten)};
     std::deque<std::pair<std::size_t, Simulator>> frontier; // (node of the scan that led there, state)
     frontier.emplace_back(SIZE_MAX, m_start);
     while (!frontier.empty()) {
@@ -205,6 +242,12 @@ ConcreteSearchResult ConcreteSearch::run(const std::string& title)
         frontier.pop_front();
         const std::string active = state.activeStepId();
         const bool chooseComplete = m_freeSteps.count(active) > 0;
+        const std::vector<std::size_t> read = readInputs(state);
+        const std::size_t perScan = combinations(read);
+        if (perScan > kMaxCombinationsPerScan) {
+            ++unexpanded;
+            continue;
+        }
         for (std::size_t combination = 0; combination < perScan; ++combination) {
             for (int complete = 0; complete <= (chooseComplete ? 1 : 0); ++complete) {
                 if (outOfTime()) {
@@ -217,10 +260,11 @@ ConcreteSearchResult ConcreteSearch::run(const std::string& title)
                 node.parent = from;
                 Simulator next = state;
                 std::size_t rest = combination;
-                for (std::size_t i = 0; i < m_inputs.size(); ++i) {
-                    node.choice.push_back(rest % m_values[i].size());
+                node.choice.assign(m_inputs.size(), kKept);
+                for (std::size_t i : read) {
+                    node.choice[i] = rest % m_values[i].size();
                     rest /= m_values[i].size();
-                    next.setVariableAt(m_inputs[i], m_values[i][node.choice.back()]);
+                    next.setVariableAt(m_inputs[i], m_values[i][node.choice[i]]);
                 }
                 if (chooseComplete) {
                     node.freeStep = active;
@@ -237,7 +281,7 @@ ConcreteSearchResult ConcreteSearch::run(const std::string& title)
                         result.reason = "a violating run of the simulator was found but did not replay";
                     return result;
                 }
-                if (seen.size() < m_options.maxStates && seen.insert(stateKey(next)).second)
+                if (seen.size() < m_options.maxStates && seen.insert(stateKey(next, m_overwritten)).second)
                     frontier.emplace_back(index, std::move(next));
                 else
                     m_nodes.pop_back(); // nothing will point to it
@@ -249,6 +293,9 @@ ConcreteSearchResult ConcreteSearch::run(const std::string& title)
         ? "no violation found in the first " + std::to_string(seen.size()) + " states of the simulator's runs"
         : "no violation found in the " + std::to_string(seen.size())
             + " states of the simulator's runs with the input values tried";
+    if (unexpanded > 0)
+        result.reason += " (" + std::to_string(unexpanded) + " of them not searched further: their scan reads more than "
+            + std::to_string(kMaxCombinationsPerScan) + " input combinations)";
     return result;
 }
 
@@ -270,6 +317,8 @@ std::string ConcreteSearch::scenarioText(std::size_t last, const std::string& ti
         ++scans;
         std::string sets;
         for (std::size_t i = 0; i < m_inputs.size(); ++i) {
+            if (node.choice[i] == kKept)
+                continue;
             const std::string value = valueText(m_values[i][node.choice[i]]);
             if (value == current[i])
                 continue;

@@ -4,10 +4,11 @@
 // layers found only an abstract one (docs/verification.md, "Undecided
 // properties"): a breadth-first search of the simulator's own runs, so
 // numeric memories (`Count := Count + 1`) and timers are tracked exactly.
-// At every scan each input takes each of a few values (BOOL: both; numbers:
-// the default and the constants the model's conditions compare with, and
-// their neighbours) and the Complete of a free step without GRAFCET both
-// values. Bounded in states and time: not finding a violation proves
+// At every scan each input the scan may read (core/verification/scanreads.h)
+// takes each of a few values (BOOL: both; numbers: the default and the
+// constants the model's conditions compare with, and their neighbours), the
+// others keep theirs, and the Complete of a free step without GRAFCET takes
+// both values. Bounded in states and time: not finding a violation proves
 // nothing, so the property then stays undecided.
 
 #include "core/verification/verification.h"

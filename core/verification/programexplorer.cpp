@@ -8,6 +8,7 @@
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
+#include "core/verification/comparisonshape.h"
 #include "core/verification/property.h"
 #include "core/verification/propertyevaluation.h"
 #include "core/verification/satisfiability.h"
@@ -86,7 +87,7 @@ enum class NodeRole {
     Logical,     // NOT, AND, OR, XOR, ->, = and <> between BOOLs: evaluated here, short-circuit
     Literal,     // TRUE / FALSE
     BoolRead,    // a BOOL variable
-    Exact,       // a comparison that reads at most one numeric variable: computed on its value
+    Exact,       // constants only, or one numeric variable against constants (`Speed > 10`): computed on its value
     Opaque,      // any other comparison: a free BOOL
     Token,       // a token literal of a GEMMA condition
     Step,        // Xn
@@ -487,6 +488,10 @@ ProgramExplorer::Impl::Impl(const Model& m, Options o)
     for (Slot& s : slots) {
         if (s.cls == SlotClass::FreeNumber && s.representatives.empty())
             s.representatives = {s.initial};
+        if (s.cls == SlotClass::FreeNumber && s.kind != VariableKind::Input && isRealType(s.type)) {
+            const std::vector<cond::Value> beyond = sat::nonFiniteReals();
+            s.representatives.insert(s.representatives.end(), beyond.begin(), beyond.end());
+        }
     }
     boolCache.assign(slots.size(), -1);
     numberCache.assign(slots.size(), -1);
@@ -904,8 +909,7 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
                     other = true;
                 }
             }
-            const bool direct = expression.at(node.left).kind == cond::NodeKind::Variable
-                || expression.at(node.right).kind == cond::NodeKind::Variable;
+            const bool direct = verification::isVariableAgainstConstant(expression, index);
             // A divisor that reads a variable may be zero: the PLC then faults
             // (integer) or yields INF / NaN (REAL), which the representatives
             // of the variable do not cover. A free BOOL over-approximates both.

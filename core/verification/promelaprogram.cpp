@@ -6,6 +6,7 @@
 #include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
+#include "core/verification/comparisonshape.h"
 #include "core/verification/property.h"
 #include "core/verification/satisfiability.h"
 #include "core/verification/tonscans.h"
@@ -368,6 +369,10 @@ void ProgramPromela::computeRepresentatives()
         info.representatives = sat::representatives(info.declared->type, pointers);
         if (info.representatives.empty())
             info.representatives = {info.initial};
+        if (info.declared->kind != VariableKind::Input && isRealType(info.declared->type)) {
+            const std::vector<cond::Value> beyond = sat::nonFiniteReals();
+            info.representatives.insert(info.representatives.end(), beyond.begin(), beyond.end());
+        }
     }
 }
 
@@ -418,9 +423,7 @@ void ProgramPromela::evalLeafComparison(const cond::Expression& expression, int 
             other = true;
         }
     }
-    const cond::Node& node = expression.at(index);
-    const bool direct = expression.at(node.left).kind == NodeKind::Variable
-        || expression.at(node.right).kind == NodeKind::Variable;
+    const bool direct = verification::isVariableAgainstConstant(expression, index);
     other = other || cond::dividesByVariable(expression, index); // as the explorer reads it
     if (other || numeric.size() > 1 || (!numeric.empty() && !direct)) {
         bool negated = false;

@@ -549,6 +549,12 @@ std::vector<cond::Value> representatives(IecType type, const std::vector<const A
     return {cond::Value{false}, cond::Value{true}};
 }
 
+std::vector<cond::Value> nonFiniteReals()
+{
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    return {cond::Value{-infinity}, cond::Value{infinity}, cond::Value{std::numeric_limits<double>::quiet_NaN()}};
+}
+
 // --- Numeric domains -------------------------------------------------------------
 
 namespace {

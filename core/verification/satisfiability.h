@@ -115,6 +115,13 @@ bool holds(const Atom& atom, const cond::Value& value);
 // gives, one of these values gives it.
 std::vector<cond::Value> representatives(IecType type, const std::vector<const Atom*>& comparisons);
 
+// The values beyond every finite one that a REAL or LREAL holds once an action
+// wrote it: -INF and +INF (an overflow, which storing into REAL's float also
+// makes, or a division by 0.0) and NaN (0.0 / 0.0), where every comparison
+// but <> is FALSE. The representatives above cover only the finite values,
+// as an input takes; add these for a real variable the actions write.
+std::vector<cond::Value> nonFiniteReals();
+
 // The comparisons of one numeric variable with constants, as intervals: the
 // values of the type fall into *regions*, each giving one combination of
 // truth values of the comparisons (Speed > 10, Speed <= 200: the regions

@@ -5,6 +5,7 @@
 #include "samplemodels.h"
 #include "verificationtestsupport.h"
 
+#include "core/formats/modelfiles.h"
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
@@ -13,6 +14,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -108,4 +110,33 @@ TEST_CASE("Properties that hold or are violated outright keep their outcome", "[
     CHECK(result.propertyVerdicts[2].outcome == PropertyOutcome::Undecided);
     CHECK(result.propertyVerdicts[2].reason.find("cannot be checked") != std::string::npos);
     CHECK_FALSE(result.undecided());
+}
+
+TEST_CASE("The search of the simulator's runs sets only the inputs a scan reads", "[propertyoutcome]")
+{
+    // The drilling cell has more than 4096 combinations of all its inputs per
+    // scan, so the search used to give up at once; a scan reads a few of them.
+    // Three parts are drilled after the 10 s warm-up and three 2 s markings:
+    // over 1,600 scans, which the search reaches within its bounds.
+    const LoadedModel loaded = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(loaded.model);
+    const Model& model = *loaded.model;
+    VerificationOptions options;
+    options.properties = {"never PartCount > 2", "never PartCount < 0"};
+    options.timeLimit = std::chrono::minutes(1); // about 1.5 s in a debug build; sanitizers are slower
+    const VerificationResult result = verifyModel(model, options);
+    REQUIRE(result.propertyVerdicts.size() == 2);
+    CHECK(result.propertyVerdicts[0].outcome == PropertyOutcome::Violated);
+    const auto violated = findingsWith(result, code::kPropertyViolated);
+    REQUIRE(violated.size() == 1);
+    REQUIRE(violated[0]->counterexample);
+    const Counterexample& counterexample = *violated[0]->counterexample;
+    CHECK(counterexample.confirmed);
+    Simulator simulator(model);
+    REQUIRE(validateScenario(counterexample.scenario, simulator).empty());
+    CHECK(runScenario(counterexample.scenario, simulator, counterexample.scans).passed());
+    CHECK(simulator.variable("PartCount") == cond::Value{std::int64_t{3}});
+
+    // PartCount only grows from 0 (and is reset): never 'holds', never violated.
+    CHECK(result.propertyVerdicts[1].outcome == PropertyOutcome::Undecided);
 }
