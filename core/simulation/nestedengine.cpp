@@ -6,6 +6,9 @@
 #include "core/model/model.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace core {
 
@@ -231,6 +234,29 @@ void NestedEngine::noteDivisionByZero(const cond::Expression& expression, int no
 namespace {
 
 // The value as the target's IEC type stores it: integers wrap around.
+// A double as REAL holds it: out of float's range is INF, as IEEE 754 rounds
+// (a plain cast would be undefined there).
+float toFloat(double real)
+{
+    if (std::isfinite(real) && std::fabs(real) > static_cast<double>(std::numeric_limits<float>::max()))
+        return real > 0 ? std::numeric_limits<float>::infinity() : -std::numeric_limits<float>::infinity();
+    return static_cast<float>(real);
+}
+
+// A double truncated to 64 bits, NaN as 0 and saturated at the ends (a plain
+// cast is undefined there); the type's own range wraps afterwards.
+std::int64_t truncatedToInt64(double real)
+{
+    constexpr double kTwo63 = 9223372036854775808.0;
+    if (std::isnan(real))
+        return 0;
+    if (real >= kTwo63)
+        return std::numeric_limits<std::int64_t>::max();
+    if (real < -kTwo63)
+        return std::numeric_limits<std::int64_t>::min();
+    return static_cast<std::int64_t>(real);
+}
+
 cond::Value storedValue(const cond::Value& value, IecType type)
 {
     if (type == IecType::Bool)
@@ -239,11 +265,11 @@ cond::Value storedValue(const cond::Value& value, IecType type)
         const double real = std::holds_alternative<double>(value) ? std::get<double>(value)
             : static_cast<double>(std::holds_alternative<std::int64_t>(value) ? std::get<std::int64_t>(value)
                                                                                 : std::get<bool>(value));
-        return type == IecType::Real ? static_cast<double>(static_cast<float>(real)) : real;
+        return type == IecType::Real ? static_cast<double>(toFloat(real)) : real;
     }
     std::int64_t integer = std::holds_alternative<std::int64_t>(value) ? std::get<std::int64_t>(value)
         : std::holds_alternative<bool>(value)                         ? std::int64_t{std::get<bool>(value)}
-                                                                      : static_cast<std::int64_t>(std::get<double>(value));
+                                                                      : truncatedToInt64(std::get<double>(value));
     const cond::IntegerRange range = cond::integerRange(type);
     const auto width = static_cast<std::uint64_t>(range.high) - static_cast<std::uint64_t>(range.low) + 1;
     if (width != 0 && (integer < range.low || integer > range.high)) {
