@@ -338,7 +338,7 @@ QString bothLayersFinding(const core::VerificationFinding& f)
     if (code == gv::kPropertyUndecided && n == 2)
         //: %2: why, in English (the verifier's reason)
         return DiagnosticText::tr("The property '%1' is undecided: neither proved nor shown violated (%2).")
-            .arg(fromStd(a[0]), fromStd(a[1]));
+            .arg(elidedText(fromStd(a[0])), elidedText(fromStd(a[1])));
     if (code == gv::kPropertyUnusable && n == 2)
         return a[1].empty() ? DiagnosticText::tr("The property '%1' cannot be checked: it is empty.")
                                   .arg(elidedText(fromStd(a[0])))
