@@ -461,12 +461,16 @@ QWidget* SimulationDock::createExplanationTab()
     m_activeLabel = new QLabel(tab);
     m_activeLabel->setObjectName(QStringLiteral("activeStepLabel"));
     m_activeLabel->setWordWrap(true);
+    m_activeLabel->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
     m_explanationView = new QTreeWidget(tab);
     m_explanationView->setObjectName(QStringLiteral("explanationView"));
     m_explanationView->setColumnCount(2);
     m_explanationView->setUniformRowHeights(true);
     m_explanationView->setSelectionMode(QAbstractItemView::NoSelection);
     m_explanationView->header()->setStretchLastSection(true);
+    // The active step's label wraps (a run-time fault takes four lines): in a
+    // short dock the list gives way down to its header and two rows.
+    m_explanationView->setMinimumHeight(3 * m_explanationView->fontMetrics().height() + 12);
     m_explanationView->header()->resizeSection(TransitionColumn, 130);
     layout->addWidget(m_activeLabel);
     layout->addWidget(m_explanationView, 1);

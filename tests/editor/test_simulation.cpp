@@ -130,6 +130,7 @@ private slots:
     void replayFailuresAreInTheUiLanguage();
     void scenarioErrorsAreInTheUiLanguage();
     void unusableConditionIsInTheUiLanguage();
+    void divisionByZeroStopsTheRunAndSaysWhere();
     void traceTableHasOneRowPerScan();
     void recordedSessionReplaysWithEveryExpectationMet();
     void recordingNeverReplacesAFifo();
@@ -693,6 +694,28 @@ void TestSimulation::unusableConditionIsInTheUiLanguage()
     QVERIFY2(texts.contains(QStringLiteral("Erreur de syntaxe dans la réceptivité de A6 \u2192 A1\u00a0: opérande attendu "
                                            "après 'AND'.")),
              qPrintable(texts.join('\n')));
+}
+
+// FaultCount is 0 at start: the PLC's task stops on the integer division in
+// scan 1, and so does the simulation, saying where, in the UI's language;
+// no later scan runs until Reset.
+void TestSimulation::divisionByZeroStopsTheRunAndSaysWhere()
+{
+    reopenInFrench();
+    core::Model model = factory::realisticModel();
+    QVERIFY(model.setCondition("A6->A1", "HomePosition AND BatchSize / FaultCount > 1"));
+    m_window->document()->replaceModel(std::move(model), QString(), core::ModelFormat::Native);
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(m_session->isActive());
+    scan(3);
+    QVERIFY(m_session->simulator()->fault());
+    QCOMPARE(m_session->simulator()->scanCount(), std::int64_t{1});
+    const QString label = m_dock->findChild<QLabel*>(QStringLiteral("activeStepLabel"))->text();
+    QVERIFY2(label.contains(QStringLiteral("Arrêt au cycle 1 : division entière par zéro dans la réceptivité de "
+                                           "A6 \u2192 A1 (BatchSize / FaultCount")),
+             qPrintable(label));
+    clickButton("resetButton", 1);
+    QVERIFY(!m_session->simulator()->fault());
 }
 
 void TestSimulation::traceTableHasOneRowPerScan()
