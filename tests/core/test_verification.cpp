@@ -6,6 +6,7 @@
 #include "core/verification/verification.h"
 
 #include "modelfactory.h"
+#include "verificationtestsupport.h"
 
 #include <catch2/catch.hpp>
 
@@ -22,22 +23,8 @@ namespace {
 
 namespace code = core::verification;
 
-void require(const core::Status& status)
-{
-    INFO(status.message);
-    REQUIRE(status.ok);
-}
-
-std::vector<const core::VerificationFinding*> findingsWith(const core::VerificationResult& result,
-                                                          const std::string& findingCode)
-{
-    std::vector<const core::VerificationFinding*> out;
-    for (const core::VerificationFinding& finding : result.findings) {
-        if (finding.code == findingCode)
-            out.push_back(&finding);
-    }
-    return out;
-}
+using verificationtest::findingsWith;
+using verificationtest::require;
 
 const core::VerificationFinding* findingFor(const core::VerificationResult& result, const std::string& findingCode,
                                             const std::string& element)
