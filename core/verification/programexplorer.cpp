@@ -3,7 +3,6 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
-#include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
@@ -909,11 +908,10 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
                     other = true;
                 }
             }
+            // Only a bare variable against a constant is decided exactly
+            // (core/verification/comparisonshape.h): a division by a variable
+            // is never one, so its possible fault or INF / NaN stays free.
             const bool direct = verification::isVariableAgainstConstant(expression, index);
-            // A divisor that reads a variable may be zero: the PLC then faults
-            // (integer) or yields INF / NaN (REAL), which the representatives
-            // of the variable do not cover. A free BOOL over-approximates both.
-            other = other || cond::dividesByVariable(expression, index);
             if (!other && numeric.size() <= 1 && (numeric.empty() || direct)) {
                 n.role = NodeRole::Exact;
                 n.slot = numeric.empty() ? -1 : *numeric.begin();

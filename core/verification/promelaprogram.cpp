@@ -3,7 +3,6 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
-#include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
 #include "core/verification/comparisonshape.h"
@@ -423,8 +422,7 @@ void ProgramPromela::evalLeafComparison(const cond::Expression& expression, int 
             other = true;
         }
     }
-    const bool direct = verification::isVariableAgainstConstant(expression, index);
-    other = other || cond::dividesByVariable(expression, index); // as the explorer reads it
+    const bool direct = verification::isVariableAgainstConstant(expression, index); // as the explorer reads it
     if (other || numeric.size() > 1 || (!numeric.empty() && !direct)) {
         bool negated = false;
         const int k = opaqueIndex(canonicalText(expression, index, negated));
