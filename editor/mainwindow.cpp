@@ -19,6 +19,7 @@
 #include "editor/examplemodels.h"
 #include "editor/exportactions.h"
 #include "editor/grafcet/grafcetactions.h"
+#include "editor/grafcet/grafcetkeyboard.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetselectionsync.h"
 #include "editor/grafcet/grafcetview.h"
@@ -219,11 +220,12 @@ void MainWindow::createDocks()
     m_simulationDock = new SimulationDock(m_session, m_document, this);
     arrangeDocks(docks());
     // Esc in a property dock goes back to the chart or GRAFCET in front (Enter or F2 there came in).
-    for (QDockWidget* dock :
-         std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock, m_grafcetStepDock, m_grafcetTransitionDock}) {
-        auto* back = new QShortcut(QKeySequence(Qt::Key_Escape), dock,
-                                   [this] { m_centralTabs->currentWidget()->setFocus(Qt::ShortcutFocusReason); });
+    for (PropertyDock* dock : std::initializer_list<PropertyDock*>{m_stepDock, m_transitionDock, m_grafcetStepDock,
+                                                                  m_grafcetTransitionDock}) {
+        const auto goBack = [this] { m_centralTabs->currentWidget()->setFocus(Qt::ShortcutFocusReason); };
+        auto* back = new QShortcut(QKeySequence(Qt::Key_Escape), dock, goBack);
         back->setContext(Qt::WidgetWithChildrenShortcut);
+        connect(dock, &PropertyDock::leaveRequested, this, goBack);
     }
 }
 
@@ -668,6 +670,7 @@ bool MainWindow::openNestedGrafcet(const QString& stepId)
         m_centralTabs->setCurrentWidget(view);
         // Once shown, so that the view scrolls to a selected element after its first placing.
         new GrafcetSelectionSync(view, m_selection);
+        new GrafcetKeyboard(view, m_selection);
     }
     m_centralTabs->setCurrentWidget(view); // remembered through currentChanged when it changes
     return true;

@@ -9,6 +9,7 @@
 #include "editor/commands/setgrafcetstepinitialcommand.h"
 #include "editor/docks/choicedelegate.h"
 #include "editor/docks/diagnosticlist.h"
+#include "editor/docks/doubleclickedit.h"
 #include "editor/docks/grafcetactiondelegate.h"
 #include "editor/docks/grafcetactionsmodel.h"
 #include "editor/docks/undoshortcutfilter.h"
@@ -30,6 +31,7 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QScrollArea>
+#include <QSet>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QStyle>
@@ -240,6 +242,8 @@ QWidget* GrafcetStepDock::createActionsArea(QWidget* parent)
     connect(textDelegate, &QAbstractItemDelegate::closeEditor, this, [this] { showActionProblem(); });
     m_actionsView->setItemDelegateForColumn(GrafcetActionsModel::VariableColumn, textDelegate);
     m_actionsView->setItemDelegateForColumn(GrafcetActionsModel::OperandColumn, textDelegate);
+    leaveOnCancelledEdit(m_actionsView);
+    DoubleClickEdit::install(m_actionsView);
     connect(m_actionsView->selectionModel(), &QItemSelectionModel::currentRowChanged, this, [this] {
         refreshActionButtons();
         showActionProblem();
@@ -250,6 +254,23 @@ QWidget* GrafcetStepDock::createActionsArea(QWidget* parent)
     m_actionMessage = problemLabel(QStringLiteral("actionMessage"), area);
     layout->addWidget(m_actionMessage);
     return area;
+}
+
+// Esc in a cell's editor cancels the edit (the delegate's doing) and, as Esc
+// in the other fields, goes back to the drawing: one key, not two.
+void GrafcetStepDock::leaveOnCancelledEdit(QAbstractItemView* view)
+{
+    QSet<QAbstractItemDelegate*> delegates; // one delegate may edit several columns
+    for (int column = 0; column < GrafcetActionsModel::ColumnCount; ++column)
+        delegates.insert(view->itemDelegateForColumn(column));
+    delegates.remove(nullptr);
+    for (QAbstractItemDelegate* delegate : std::as_const(delegates)) {
+        connect(delegate, &QAbstractItemDelegate::closeEditor, this,
+                [this](QWidget*, QAbstractItemDelegate::EndEditHint hint) {
+                    if (hint == QAbstractItemDelegate::RevertModelCache)
+                        emit leaveRequested();
+                });
+    }
 }
 
 const core::GrafcetStep* GrafcetStepDock::step() const
@@ -316,7 +337,9 @@ QStringList GrafcetStepDock::writableVariables() const
 
 void GrafcetStepDock::focusField(const QString& field)
 {
-    if (field == QLatin1String("comment")) {
+    if (field == QLatin1String("main")) {
+        focusFirstAction();
+    } else if (field == QLatin1String("comment")) {
         m_commentEdit->setFocus(Qt::OtherFocusReason);
     } else if (field.startsWith(QLatin1String("action"))) {
         // "action:2": the action of index 2.
@@ -328,6 +351,20 @@ void GrafcetStepDock::focusField(const QString& field)
         m_numberSpin->setFocus(Qt::OtherFocusReason);
         m_numberSpin->selectAll();
     }
+}
+
+// What the step does is what Enter on it is for: its first action's
+// variable, open to type over, or the Add button when it has none.
+void GrafcetStepDock::focusFirstAction()
+{
+    if (m_actionsModel->rowCount() == 0) {
+        m_addButton->setFocus(Qt::OtherFocusReason);
+        return;
+    }
+    const QModelIndex cell = m_actionsModel->index(0, GrafcetActionsModel::VariableColumn);
+    m_actionsView->setFocus(Qt::OtherFocusReason);
+    m_actionsView->setCurrentIndex(cell);
+    m_actionsView->edit(cell);
 }
 
 void GrafcetStepDock::onNumberChosen(int number)

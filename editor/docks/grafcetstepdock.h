@@ -2,6 +2,7 @@
 
 #include "editor/docks/propertydock.h"
 
+class QAbstractItemView;
 class QCheckBox;
 class QLabel;
 class QPlainTextEdit;
@@ -41,6 +42,8 @@ private:
     void retranslate() override;
     void refreshForm() override;
     void focusField(const QString& field) override;
+    void focusFirstAction();
+    void leaveOnCancelledEdit(QAbstractItemView* view);
     const core::GrafcetStep* step() const;
     void refreshActionButtons();
     void showActionProblem(const QString& typed = {});

@@ -173,16 +173,21 @@ QStringList GrafcetTransitionDock::completions() const
     return names;
 }
 
-void GrafcetTransitionDock::focusField(const QString& /*field*/)
+void GrafcetTransitionDock::focusField(const QString& field)
 {
-    // The receptivity is the one field: its first error selected, to type over it.
+    const int end = static_cast<int>(m_receptivityEdit->text().size());
+    // Enter on the drawing: the whole receptivity, to type over it (TRUE, as new transitions have).
+    if (field == QLatin1String("main")) {
+        m_receptivityEdit->selectRange(0, end);
+        return;
+    }
+    // A problem: its first error selected, to type over it.
     for (const ConditionEdit::Problem& problem : m_receptivityEdit->problems()) {
         if (problem.error) {
             m_receptivityEdit->selectRange(problem.begin, problem.end);
             return;
         }
     }
-    const int end = static_cast<int>(m_receptivityEdit->text().size());
     m_receptivityEdit->selectRange(end, end);
 }
 

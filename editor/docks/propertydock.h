@@ -22,6 +22,12 @@ class WrappingLabel;
 class PropertyDock : public QDockWidget {
     Q_OBJECT
 
+signals:
+    // Esc in a field that takes the key for itself (a table cell's editor
+    // cancels its edit): the user is done here too, as with Esc elsewhere
+    // in the dock, which the window's shortcut takes back to the drawing.
+    void leaveRequested();
+
 protected:
     PropertyDock(ElementRef::Kind kind, const QString& title, Document* document, Selection* selection,
                  QWidget* parent);
