@@ -455,8 +455,9 @@ void GrafcetActions::createUsualShape()
         return;
     edit(tr("Create GRAFCET of %1").arg(m_stepId), [](core::Grafcet& g, core::GrafcetCreated& created) {
         g = core::usualGrafcet();
-        for (const core::GrafcetStep& step : g.steps())
-            created.steps.push_back(step.number);
+        // One element selected, so that the menu inserts at once: the first
+        // transition, whose receptivity (TRUE) is the first thing to write.
+        created.transitions.push_back(g.transitions().front().number);
         return core::Status::success();
     });
 }
