@@ -31,12 +31,13 @@ struct Placed {
 GrafcetKeyboard::GrafcetKeyboard(GrafcetView* view, Selection* selection)
     : QObject(view)
     , m_view(view)
+    , m_viewport(view->viewport())
     , m_scene(view->grafcetScene())
     , m_selection(selection)
 {
     setObjectName(QStringLiteral("grafcetKeyboard"));
     view->installEventFilter(this);
-    view->viewport()->installEventFilter(this);
+    m_viewport->installEventFilter(this);
 }
 
 QList<ElementRef> GrafcetKeyboard::drawingOrder() const
@@ -61,9 +62,9 @@ QList<ElementRef> GrafcetKeyboard::drawingOrder() const
 
 bool GrafcetKeyboard::eventFilter(QObject* watched, QEvent* event)
 {
-    if (watched == m_view && event->type() == QEvent::KeyPress)
+    if (event->type() == QEvent::KeyPress && watched == m_view)
         return onKeyPress(static_cast<QKeyEvent*>(event));
-    if (watched == m_view->viewport() && event->type() == QEvent::MouseButtonDblClick)
+    if (event->type() == QEvent::MouseButtonDblClick && watched == m_viewport)
         return onDoubleClick(static_cast<QMouseEvent*>(event));
     return QObject::eventFilter(watched, event);
 }

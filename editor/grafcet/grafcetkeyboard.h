@@ -46,6 +46,7 @@ private:
     ElementRef elementAt(const QPoint& viewportPosition) const;
 
     GrafcetView* m_view;
+    QWidget* m_viewport; // compared with, never called: events may come while the view goes
     GrafcetScene* m_scene;
     QPointer<Selection> m_selection; // the window's, which may go before the tab
 };
