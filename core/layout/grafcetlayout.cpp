@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <utility>
@@ -62,6 +63,12 @@ struct Item {
     std::vector<double> branchAxis;
     double branchHeight = 0;
 };
+
+// The room reserved beside a column for a text of this width.
+double reserved(double width)
+{
+    return width <= 0 ? 0 : std::ceil(width / kGrafcetLabelReserve) * kGrafcetLabelReserve;
+}
 
 Item makeItem(ItemKind kind, int number = 0)
 {
@@ -351,9 +358,15 @@ private:
             // selection with the last branch that leads to new steps; its
             // first transition stands with the other branches.
             if (inner.join == 0) {
+                std::vector<int> backs; // by branch, where a plain sequence goes back to (0: not so)
+                for (int t : owned)
+                    backs.push_back(goesBackTo(t));
                 for (std::size_t b = 0; b < owned.size(); ++b) {
                     const auto& down = transitionAt(owned[b]).downstream;
-                    if (std::any_of(down.begin(), down.end(), [&](int d) { return !placed(d) && !stops(inner, d); }))
+                    // A branch going back where another one does ends on their convergence.
+                    const bool sharesBack = backs[b] != 0 && std::count(backs.begin(), backs.end(), backs[b]) > 1;
+                    if (std::any_of(down.begin(), down.end(), [&](int d) { return !placed(d) && !stops(inner, d); })
+                        && !sharesBack)
                         selection.mainBranch = static_cast<int>(b);
                 }
             }
@@ -370,6 +383,24 @@ private:
                     parseSteps(branch, *next, inner);
                 joined = joined || sequence(branch).joins;
             }
+            if (inner.join == 0) {
+                if (const int target = commonBack(selection); target != 0) {
+                    // One convergence, then one link back, instead of one
+                    // jump per branch: the main branch becomes a plain one.
+                    if (mainBar >= 0) {
+                        const int main = selection.mainBranch;
+                        selection.mainBranch = -1;
+                        if (const auto next = afterTransition(mainBar, owned[static_cast<std::size_t>(main)], inner))
+                            parseSteps(mainBar, *next, inner);
+                    }
+                    mergeBacks(selection, target);
+                    addItem(seq, std::move(selection));
+                    Item back = makeItem(ItemKind::Back, target);
+                    addItem(seq, std::move(back));
+                    m_backs.emplace_back(seq, static_cast<int>(sequence(seq).items.size()) - 1);
+                    return;
+                }
+            }
             if (mainBar >= 0) {
                 // The main branch holds its bar; what follows is the sequence's.
                 addItem(seq, std::move(selection));
@@ -385,6 +416,84 @@ private:
                 return;
             step = inner.join;
         }
+    }
+
+    // Where the branch starting with transition t (an index) goes back to
+    // when it is a plain sequence ending on a placed step; 0 otherwise.
+    int goesBackTo(int t) const
+    {
+        for (std::size_t walked = 0; walked <= m_grafcet.steps().size(); ++walked) {
+            const GrafcetTransition& transition = transitionAt(t);
+            if (transition.downstream.size() != 1)
+                return 0;
+            const int d = transition.downstream.front();
+            if (placed(d))
+                return stepIndex(d) >= 0 ? d : 0;
+            const std::vector<int>& next = m_outgoing[static_cast<std::size_t>(stepIndex(d))];
+            if (next.size() != 1 || transitionAt(next.front()).upstream.size() != 1)
+                return 0;
+            t = next.front();
+        }
+        return 0;
+    }
+
+    // The placed step that two or more branches of the selection end by
+    // going back to, side by side: no branch between them goes on below the
+    // selection or ends otherwise than by going back. The one most branches
+    // go back to, the leftmost of those; 0 for none.
+    int commonBack(const Item& selection) const
+    {
+        std::vector<int> targets; // by branch: where it goes back to, 0 when it does not end so
+        for (std::size_t b = 0; b < selection.branches.size(); ++b) {
+            const Sequence& branch = m_sequences[static_cast<std::size_t>(selection.branches[b])];
+            // Not the link back of an inner convergence (no transition of its own): its bars stand elsewhere.
+            const bool back = static_cast<int>(b) != selection.mainBranch && !branch.items.empty()
+                           && branch.items.back().kind == ItemKind::Back && !branch.items.back().forceJump
+                           && branch.items.back().transition != 0;
+            targets.push_back(back ? branch.items.back().number : 0);
+        }
+        int best = 0;
+        std::size_t bestCount = 1;
+        for (int target : targets) {
+            if (target == 0)
+                continue;
+            std::size_t first = targets.size();
+            std::size_t last = 0;
+            for (std::size_t b = 0; b < targets.size(); ++b) {
+                if (targets[b] == target) {
+                    first = std::min(first, b);
+                    last = b;
+                }
+            }
+            bool between = true;
+            for (std::size_t b = first; b <= last; ++b) {
+                const Sequence& branch = m_sequences[static_cast<std::size_t>(selection.branches[b])];
+                between = between && static_cast<int>(b) != selection.mainBranch && !branch.items.empty()
+                       && branch.items.back().kind == ItemKind::Back;
+            }
+            const std::size_t count = static_cast<std::size_t>(std::count(targets.begin(), targets.end(), target));
+            if (between && count > bestCount) {
+                best = target;
+                bestCount = count;
+            }
+        }
+        return best;
+    }
+
+    // The branches going back to `target` end on the selection's convergence instead.
+    void mergeBacks(Item& selection, int target)
+    {
+        for (int b : selection.branches) {
+            Sequence& branch = sequence(b);
+            if (branch.items.empty() || branch.items.back().kind != ItemKind::Back || branch.items.back().number != target
+                || branch.items.back().forceJump || branch.items.back().transition == 0)
+                continue;
+            const std::pair<int, int> place(b, static_cast<int>(branch.items.size()) - 1);
+            m_backs.erase(std::remove(m_backs.begin(), m_backs.end(), place), m_backs.end());
+            branch.items.pop_back();
+            branch.joins = true;
+        }
+        selection.closing = target;
     }
 
     // Draws the transition (and the parallel sections it opens) in the
@@ -714,7 +823,7 @@ private:
                 const double size = stepSize(item.number);
                 const ActionSizes actions = actionSizes(stepOf(item.number));
                 item.left = size / 2;
-                item.right = size / 2 + (actions.parts.empty() ? 0 : kActionGap + actions.total);
+                item.right = size / 2 + (actions.parts.empty() ? 0 : kActionGap + reserved(actions.total));
                 const double below = actions.conditions ? kGrafcetActionHeight / 2 + 2 + kGrafcetConditionHeight
                                                         : kGrafcetActionHeight / 2;
                 item.height = kStepTopGap + size / 2 + std::max(size / 2, below);
@@ -723,7 +832,7 @@ private:
             case ItemKind::Transition:
                 item.left = kGrafcetBarLength / 2;
                 item.right = kGrafcetBarLength / 2 + kLabelGap
-                           + labelWidth(m_grafcet.transitions()[static_cast<std::size_t>(transitionIndex(item.number))].receptivity);
+                           + reserved(labelWidth(m_grafcet.transitions()[static_cast<std::size_t>(transitionIndex(item.number))].receptivity));
                 item.height = kTransitionHeight;
                 break;
             case ItemKind::Back:

@@ -68,7 +68,13 @@ struct Divergence {
 
 Divergence selectionAt(const Grafcet& grafcet, int step)
 {
-    const int join = selectionJoin(grafcet, step);
+    // selectionJoin names a step even when a single branch reaches it: that one is no join.
+    int join = selectionJoin(grafcet, step);
+    int reaching = 0;
+    for (const GrafcetTransition* t : grafcet.transitionsFrom(step))
+        reaching += reachableFrom(grafcet, t->downstream, {step}).count(join) > 0 ? 1 : 0;
+    if (reaching < 2)
+        join = step;
     std::vector<std::set<int>> branches;
     for (const GrafcetTransition* t : grafcet.transitionsFrom(step))
         branches.push_back(reachableFrom(grafcet, t->downstream, {step, join}));
@@ -192,6 +198,48 @@ bool canMoveBranch(const Grafcet& grafcet, int step, int offset)
         return false;
     const int to = place.index + offset;
     return to >= 0 && to < place.count;
+}
+
+namespace {
+
+// The transition's place among the branches of the step it leaves, -1 when it starts no selection branch.
+int selectionIndex(const Grafcet& grafcet, int transition, std::vector<int>& order)
+{
+    const GrafcetTransition* t = grafcet.transition(transition);
+    if (!t || t->upstream.size() != 1)
+        return -1;
+    order.clear();
+    for (const GrafcetTransition* leaving : grafcet.transitionsFrom(t->upstream.front()))
+        order.push_back(leaving->number);
+    const auto found = std::find(order.begin(), order.end(), transition);
+    return order.size() < 2 ? -1 : static_cast<int>(found - order.begin());
+}
+
+} // namespace
+
+bool canMoveSelectionBranch(const Grafcet& grafcet, int transition, int offset)
+{
+    std::vector<int> order;
+    const int index = selectionIndex(grafcet, transition, order);
+    const int to = index + offset;
+    return index >= 0 && offset != 0 && to >= 0 && to < static_cast<int>(order.size());
+}
+
+Status moveSelectionBranch(Grafcet& grafcet, int transition, int offset)
+{
+    if (!canMoveSelectionBranch(grafcet, transition, offset))
+        return Status::failure("cannot-move-branch", "T" + std::to_string(transition)
+                                                         + " starts no selection branch that can move "
+                                                         + std::to_string(offset) + " place(s)");
+    std::vector<int> order;
+    const int index = selectionIndex(grafcet, transition, order);
+    Grafcet work = grafcet;
+    if (Status status = reorderSelection(work, grafcet.transition(transition)->upstream.front(),
+                                         movedTo(order, index, index + offset));
+        !status)
+        return status;
+    grafcet = std::move(work);
+    return Status::success();
 }
 
 Status moveBranch(Grafcet& grafcet, int step, int offset)

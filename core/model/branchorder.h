@@ -41,4 +41,10 @@ bool canMoveBranch(const Grafcet& grafcet, int step, int offset);
 // untouched) when canMoveBranch is false.
 Status moveBranch(Grafcet& grafcet, int step, int offset);
 
+// The same for the selection branch that starts with `transition` (it leaves
+// one step, which has other branches): a branch without steps (a jump back)
+// is named so.
+bool canMoveSelectionBranch(const Grafcet& grafcet, int transition, int offset);
+Status moveSelectionBranch(Grafcet& grafcet, int transition, int offset);
+
 } // namespace core

@@ -129,3 +129,33 @@ TEST_CASE("moveBranch moves the innermost branch holding the step", "[branchorde
     REQUIRE(moveBranch(g, 5, +1).ok); // the selection branch
     CHECK(leaving(g, 2) == std::vector<int>{6, 2});
 }
+
+TEST_CASE("moveSelectionBranch moves a branch named by its first transition, a jump included", "[branchorder]")
+{
+    Grafcet g = threeBranches();
+    add(g, 7, {2}, {1}); // a fourth branch without steps: a jump back to 1
+    CHECK(canMoveSelectionBranch(g, 7, -1));
+    CHECK_FALSE(canMoveSelectionBranch(g, 7, +1));
+    CHECK_FALSE(canMoveSelectionBranch(g, 1, -1)); // leaves a step with one branch
+    CHECK_FALSE(canMoveSelectionBranch(g, 99, -1));
+    REQUIRE(moveSelectionBranch(g, 7, -2).ok);
+    CHECK(leaving(g, 2) == std::vector<int>{2, 7, 4, 6});
+    const Grafcet before = g;
+    CHECK_FALSE(moveSelectionBranch(g, 2, -1).ok);
+    CHECK(g.sameContent(before));
+}
+
+TEST_CASE("moveBranch moves the branches of a selection that never converges either way", "[branchorder]")
+{
+    // 1 -> T1 -> 2 and 1 -> T2 -> 3: two dead ends, no join.
+    Grafcet g;
+    addSteps(g, {1, 2, 3});
+    add(g, 1, {1}, {2});
+    add(g, 2, {1}, {3});
+    REQUIRE(moveBranch(g, 3, -1).ok);
+    CHECK(leaving(g, 1) == std::vector<int>{2, 1});
+    CHECK(canMoveBranch(g, 3, +1));
+    CHECK(canMoveBranch(g, 2, -1));
+    REQUIRE(moveBranch(g, 3, +1).ok);
+    CHECK(leaving(g, 1) == std::vector<int>{1, 2});
+}

@@ -602,6 +602,10 @@ TEST_CASE("Structured editing: random sequences of operations", "[grafcet-editin
                 history += what + "; ";
                 checkClean(g, "seed " + std::to_string(seed) + " GRAFCET " + std::to_string(i) + ": " + history);
             }
+            INFO("seed " << seed << " GRAFCET " << i << ": " << history);
+            for (const std::string& move : grafcetlayoutchecks::labelWidthMoves(g))
+                UNSCOPED_INFO(move);
+            CHECK(grafcetlayoutchecks::labelWidthMoves(g).empty());
         }
     }
     CHECK(applied > 1000);
