@@ -1,7 +1,9 @@
 #include "core/layout/grafcetlayout.h"
 
+#include "core/layout/grafcetactiontext.h"
+
 #include <algorithm>
-#include <cctype>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <utility>
@@ -63,6 +65,12 @@ struct Item {
     double branchHeight = 0;
 };
 
+// The room reserved beside a column for a text of this width.
+double reserved(double width)
+{
+    return width <= 0 ? 0 : std::ceil(width / kGrafcetLabelReserve) * kGrafcetLabelReserve;
+}
+
 Item makeItem(ItemKind kind, int number = 0)
 {
     Item item;
@@ -117,72 +125,6 @@ void extend(std::vector<Point>& path, Point point)
         }
     }
     path.push_back(point);
-}
-
-std::string trimmed(std::string_view text)
-{
-    std::size_t begin = 0;
-    std::size_t end = text.size();
-    while (begin < end && std::isspace(static_cast<unsigned char>(text[begin])))
-        ++begin;
-    while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1])))
-        --end;
-    return std::string(text.substr(begin, end - begin));
-}
-
-bool equalsIgnoringCase(std::string_view a, std::string_view b)
-{
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
-           });
-}
-
-struct ActionParts {
-    std::string qualifier;
-    std::string text;
-    std::string condition;
-};
-
-// Split by words, not parsed: a text that does not parse yet is drawn as written.
-ActionParts splitAction(const GrafcetAction& action)
-{
-    ActionParts parts;
-    std::string body = trimmed(action.text);
-    std::size_t space = 0;
-    while (space < body.size() && !std::isspace(static_cast<unsigned char>(body[space])))
-        ++space;
-    const std::string_view word = std::string_view(body).substr(0, space);
-    const std::string rest = trimmed(std::string_view(body).substr(space));
-    std::string qualifier;
-    if ((equalsIgnoringCase(word, "N") || equalsIgnoringCase(word, "S") || equalsIgnoringCase(word, "R"))
-        && !rest.empty() && rest.rfind(":=", 0) != 0) {
-        qualifier = std::string(1, static_cast<char>(std::toupper(static_cast<unsigned char>(word[0]))));
-        body = rest;
-    }
-    if (action.timing == ActionTiming::Continuous) {
-        // " IF " as a word separates the condition.
-        std::size_t at = 0;
-        while (at < body.size()) {
-            const std::size_t start = body.find_first_not_of(" \t\r\n", at);
-            if (start == std::string::npos)
-                break;
-            std::size_t stop = body.find_first_of(" \t\r\n", start);
-            if (stop == std::string::npos)
-                stop = body.size();
-            if (start > 0 && equalsIgnoringCase(std::string_view(body).substr(start, stop - start), "IF")) {
-                parts.condition = trimmed(std::string_view(body).substr(stop));
-                body = trimmed(std::string_view(body).substr(0, start));
-                break;
-            }
-            at = stop;
-        }
-        parts.qualifier = qualifier == "N" ? "" : qualifier;
-    } else {
-        const char* mark = action.timing == ActionTiming::OnActivation ? "\xE2\x86\x91" : "\xE2\x86\x93"; // ↑ ↓
-        parts.qualifier = std::string(mark) + (qualifier == "N" ? "" : qualifier);
-    }
-    parts.text = body;
-    return parts;
 }
 
 class Builder {
@@ -351,9 +293,15 @@ private:
             // selection with the last branch that leads to new steps; its
             // first transition stands with the other branches.
             if (inner.join == 0) {
+                std::vector<int> backs; // by branch, where a plain sequence goes back to (0: not so)
+                for (int t : owned)
+                    backs.push_back(goesBackTo(t));
                 for (std::size_t b = 0; b < owned.size(); ++b) {
                     const auto& down = transitionAt(owned[b]).downstream;
-                    if (std::any_of(down.begin(), down.end(), [&](int d) { return !placed(d) && !stops(inner, d); }))
+                    // A branch going back where another one does ends on their convergence.
+                    const bool sharesBack = backs[b] != 0 && std::count(backs.begin(), backs.end(), backs[b]) > 1;
+                    if (std::any_of(down.begin(), down.end(), [&](int d) { return !placed(d) && !stops(inner, d); })
+                        && !sharesBack)
                         selection.mainBranch = static_cast<int>(b);
                 }
             }
@@ -370,6 +318,24 @@ private:
                     parseSteps(branch, *next, inner);
                 joined = joined || sequence(branch).joins;
             }
+            if (inner.join == 0) {
+                if (const int target = commonBack(selection); target != 0) {
+                    // One convergence, then one link back, instead of one
+                    // jump per branch: the main branch becomes a plain one.
+                    if (mainBar >= 0) {
+                        const int main = selection.mainBranch;
+                        selection.mainBranch = -1;
+                        if (const auto next = afterTransition(mainBar, owned[static_cast<std::size_t>(main)], inner))
+                            parseSteps(mainBar, *next, inner);
+                    }
+                    mergeBacks(selection, target);
+                    addItem(seq, std::move(selection));
+                    Item back = makeItem(ItemKind::Back, target);
+                    addItem(seq, std::move(back));
+                    m_backs.emplace_back(seq, static_cast<int>(sequence(seq).items.size()) - 1);
+                    return;
+                }
+            }
             if (mainBar >= 0) {
                 // The main branch holds its bar; what follows is the sequence's.
                 addItem(seq, std::move(selection));
@@ -385,6 +351,84 @@ private:
                 return;
             step = inner.join;
         }
+    }
+
+    // Where the branch starting with transition t (an index) goes back to
+    // when it is a plain sequence ending on a placed step; 0 otherwise.
+    int goesBackTo(int t) const
+    {
+        for (std::size_t walked = 0; walked <= m_grafcet.steps().size(); ++walked) {
+            const GrafcetTransition& transition = transitionAt(t);
+            if (transition.downstream.size() != 1)
+                return 0;
+            const int d = transition.downstream.front();
+            if (placed(d))
+                return stepIndex(d) >= 0 ? d : 0;
+            const std::vector<int>& next = m_outgoing[static_cast<std::size_t>(stepIndex(d))];
+            if (next.size() != 1 || transitionAt(next.front()).upstream.size() != 1)
+                return 0;
+            t = next.front();
+        }
+        return 0;
+    }
+
+    // The placed step that two or more branches of the selection end by
+    // going back to, side by side: no branch between them goes on below the
+    // selection or ends otherwise than by going back. The one most branches
+    // go back to, the leftmost of those; 0 for none.
+    int commonBack(const Item& selection) const
+    {
+        std::vector<int> targets; // by branch: where it goes back to, 0 when it does not end so
+        for (std::size_t b = 0; b < selection.branches.size(); ++b) {
+            const Sequence& branch = m_sequences[static_cast<std::size_t>(selection.branches[b])];
+            // Not the link back of an inner convergence (no transition of its own): its bars stand elsewhere.
+            const bool back = static_cast<int>(b) != selection.mainBranch && !branch.items.empty()
+                           && branch.items.back().kind == ItemKind::Back && !branch.items.back().forceJump
+                           && branch.items.back().transition != 0;
+            targets.push_back(back ? branch.items.back().number : 0);
+        }
+        int best = 0;
+        std::size_t bestCount = 1;
+        for (int target : targets) {
+            if (target == 0)
+                continue;
+            std::size_t first = targets.size();
+            std::size_t last = 0;
+            for (std::size_t b = 0; b < targets.size(); ++b) {
+                if (targets[b] == target) {
+                    first = std::min(first, b);
+                    last = b;
+                }
+            }
+            bool between = true;
+            for (std::size_t b = first; b <= last; ++b) {
+                const Sequence& branch = m_sequences[static_cast<std::size_t>(selection.branches[b])];
+                between = between && static_cast<int>(b) != selection.mainBranch && !branch.items.empty()
+                       && branch.items.back().kind == ItemKind::Back;
+            }
+            const std::size_t count = static_cast<std::size_t>(std::count(targets.begin(), targets.end(), target));
+            if (between && count > bestCount) {
+                best = target;
+                bestCount = count;
+            }
+        }
+        return best;
+    }
+
+    // The branches going back to `target` end on the selection's convergence instead.
+    void mergeBacks(Item& selection, int target)
+    {
+        for (int b : selection.branches) {
+            Sequence& branch = sequence(b);
+            if (branch.items.empty() || branch.items.back().kind != ItemKind::Back || branch.items.back().number != target
+                || branch.items.back().forceJump || branch.items.back().transition == 0)
+                continue;
+            const std::pair<int, int> place(b, static_cast<int>(branch.items.size()) - 1);
+            m_backs.erase(std::remove(m_backs.begin(), m_backs.end(), place), m_backs.end());
+            branch.items.pop_back();
+            branch.joins = true;
+        }
+        selection.closing = target;
     }
 
     // Draws the transition (and the parallel sections it opens) in the
@@ -714,7 +758,7 @@ private:
                 const double size = stepSize(item.number);
                 const ActionSizes actions = actionSizes(stepOf(item.number));
                 item.left = size / 2;
-                item.right = size / 2 + (actions.parts.empty() ? 0 : kActionGap + actions.total);
+                item.right = size / 2 + (actions.parts.empty() ? 0 : kActionGap + reserved(actions.total));
                 const double below = actions.conditions ? kGrafcetActionHeight / 2 + 2 + kGrafcetConditionHeight
                                                         : kGrafcetActionHeight / 2;
                 item.height = kStepTopGap + size / 2 + std::max(size / 2, below);
@@ -723,7 +767,7 @@ private:
             case ItemKind::Transition:
                 item.left = kGrafcetBarLength / 2;
                 item.right = kGrafcetBarLength / 2 + kLabelGap
-                           + labelWidth(m_grafcet.transitions()[static_cast<std::size_t>(transitionIndex(item.number))].receptivity);
+                           + reserved(labelWidth(m_grafcet.transitions()[static_cast<std::size_t>(transitionIndex(item.number))].receptivity));
                 item.height = kTransitionHeight;
                 break;
             case ItemKind::Back:

@@ -122,6 +122,10 @@ inline constexpr double kDoubleLineGap = 4;
 inline constexpr double kGrafcetBranchGap = 30;       // between the branches of a divergence
 inline constexpr double kGrafcetColumnGap = 60;       // between independent columns
 inline constexpr double kGrafcetMargin = 20;          // around the drawing
+// The room a receptivity or a step's actions take beside a column is their
+// width rounded up to a multiple of this: a label that grows or shrinks
+// within its room moves nothing (docs/grafcet-layout.md, "Stable drawing").
+inline constexpr double kGrafcetLabelReserve = 60;
 
 // Never fails: any GRAFCET the model can hold, valid or not, is placed
 // without overlaps (see docs/grafcet-layout.md for what is drawn how).

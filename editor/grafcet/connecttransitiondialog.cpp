@@ -39,12 +39,17 @@ ConnectTransitionDialog::ConnectTransitionDialog(const core::Grafcet& grafcet, i
     connect(m_buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 
+    m_reason = new QLabel(this);
+    m_reason->setObjectName(QStringLiteral("reasonLabel"));
+    m_reason->setWordWrap(true);
+
     auto* layout = new QGridLayout(this);
     layout->addWidget(new QLabel(tr("Upstream steps (it leaves them)"), this), 0, 0);
     layout->addWidget(new QLabel(tr("Downstream steps (it activates them)"), this), 0, 1);
     layout->addWidget(m_upstream, 1, 0);
     layout->addWidget(m_downstream, 1, 1);
-    layout->addWidget(m_buttons, 2, 0, 1, 2);
+    layout->addWidget(m_reason, 2, 0, 1, 2);
+    layout->addWidget(m_buttons, 3, 0, 1, 2);
     updateOk();
 }
 
@@ -80,8 +85,17 @@ std::vector<int> ConnectTransitionDialog::downstream() const
 
 void ConnectTransitionDialog::updateOk()
 {
-    if (m_buttons)
-        m_buttons->button(QDialogButtonBox::Ok)->setEnabled(!upstream().empty() && !downstream().empty());
+    if (!m_buttons || !m_reason)
+        return;
+    QString reason;
+    if (upstream().empty())
+        reason = tr("Tick an upstream step: a transition leaves at least one step.");
+    else if (downstream().empty())
+        reason = tr("Tick a downstream step: a transition activates at least one step. To end a branch on a "
+                    "step with no transition after it, use Add Branch Ending on a Step on the step.");
+    m_buttons->button(QDialogButtonBox::Ok)->setEnabled(reason.isEmpty());
+    m_reason->setText(reason);
+    m_reason->setVisible(!reason.isEmpty());
 }
 
 } // namespace editor

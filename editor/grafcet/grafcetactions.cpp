@@ -8,6 +8,7 @@
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
 
+#include "core/model/branchorder.h"
 #include "core/model/model.h"
 
 #include <QAction>
@@ -109,6 +110,11 @@ void GrafcetActions::createActions()
                                QKeySequence(Qt::SHIFT | Qt::Key_Insert));
     m_selectionBranch = addAction("grafcetSelectionBranchAction", &GrafcetActions::addSelectionBranch);
     m_parallelBranch = addAction("grafcetParallelBranchAction", &GrafcetActions::addParallelBranch);
+    m_endingBranch = addAction("grafcetEndingBranchAction", &GrafcetActions::addBranchEndingOnStep);
+    m_moveBranchLeft = addAction("grafcetMoveBranchLeftAction", &GrafcetActions::moveBranchLeft,
+                                 QKeySequence(Qt::ALT | Qt::Key_Left));
+    m_moveBranchRight = addAction("grafcetMoveBranchRightAction", &GrafcetActions::moveBranchRight,
+                                  QKeySequence(Qt::ALT | Qt::Key_Right));
     m_remove = addAction("grafcetRemoveAction", &GrafcetActions::removeSelected, QKeySequence::Delete);
     m_removeBranch = addAction("grafcetRemoveBranchAction", &GrafcetActions::removeBranch);
     m_renumber = addAction("grafcetRenumberAction", &GrafcetActions::renumber);
@@ -138,6 +144,13 @@ void GrafcetActions::retranslate()
     m_insertBefore->setText(tr("Insert Step &Before"));
     m_selectionBranch->setText(tr("Add &Selection Branch"));
     m_parallelBranch->setText(tr("Add &Parallel Branch"));
+    m_endingBranch->setText(tr("Add Branch &Ending on a Step"));
+    m_endingBranch->setToolTip(tr("A new branch from this step to a new step with no transition after it "
+                                  "(an exit step)"));
+    m_moveBranchLeft->setText(tr("Move Branch &Left"));
+    m_moveBranchLeft->setToolTip(tr("Swap the branch holding this step with the one at its left"));
+    m_moveBranchRight->setText(tr("Move Branch Ri&ght"));
+    m_moveBranchRight->setToolTip(tr("Swap the branch holding this step with the one at its right"));
     m_remove->setText(tr("&Remove"));
     m_removeBranch->setText(tr("Remove Bra&nch"));
     m_renumber->setText(tr("Ren&umber Steps and Transitions"));
@@ -217,6 +230,26 @@ bool GrafcetActions::isParallelBranch(int step) const
                        [](const core::GrafcetTransition* t) { return t->downstream.size() >= 2; });
 }
 
+bool GrafcetActions::canMoveBranch(int offset) const
+{
+    const core::Grafcet* g = grafcet();
+    if (!g)
+        return false;
+    if (const int transition = singleTransition(); transition != 0 && core::canMoveSelectionBranch(*g, transition, offset))
+        return true;
+    const int step = branchStep();
+    return step != 0 && core::canMoveBranch(*g, step, offset);
+}
+
+int GrafcetActions::branchStep() const
+{
+    if (const int step = singleStep(); step != 0)
+        return step;
+    const core::Grafcet* g = grafcet();
+    const core::GrafcetTransition* t = g ? g->transition(singleTransition()) : nullptr;
+    return t ? t->downstream.front() : 0;
+}
+
 void GrafcetActions::updateActions()
 {
     const bool editable = !m_document.isReadOnly();
@@ -231,8 +264,10 @@ void GrafcetActions::updateActions()
     m_selectionBranch->setEnabled(editable && ((step != 0 && g && !g->transitionsFrom(step).empty())
                                                || (t && t->upstream.size() == 1)));
     m_parallelBranch->setEnabled(editable && transition != 0);
-    m_remove->setEnabled(editable
-                         && (!selectedSteps().empty() || (transition != 0 && isSelectionBranch(transition))));
+    m_endingBranch->setEnabled(editable && step != 0);
+    m_moveBranchLeft->setEnabled(editable && canMoveBranch(-1));
+    m_moveBranchRight->setEnabled(editable && canMoveBranch(+1));
+    m_remove->setEnabled(editable && !m_scene.selectedItems().isEmpty());
     m_removeBranch->setEnabled(editable && ((transition != 0 && isSelectionBranch(transition))
                                             || (step != 0 && isParallelBranch(step))));
     m_renumber->setEnabled(editable && !empty);
@@ -274,8 +309,11 @@ void GrafcetActions::populate(QMenu* menu)
         menu->addAction(m_selectionBranch);
         if (transition != 0)
             menu->addAction(m_parallelBranch);
-        if (step != 0)
+        if (step != 0) {
+            menu->addAction(m_endingBranch);
             addJumpMenu(menu);
+        }
+        menu->addActions({m_moveBranchLeft, m_moveBranchRight});
         menu->addSeparator();
     }
     if (m_remove->isEnabled())
@@ -363,6 +401,48 @@ void GrafcetActions::addParallelBranch()
     });
 }
 
+void GrafcetActions::addBranchEndingOnStep()
+{
+    const int step = singleStep();
+    if (step == 0)
+        return;
+    //: %1 the step the branch leaves, %2 the GEMMA step whose GRAFCET it is
+    edit(tr("Add branch ending on a step at step %1 in %2").arg(step).arg(m_stepId),
+         [step](core::Grafcet& g, core::GrafcetCreated& created) {
+             return core::addBranchEndingOnStep(g, step, &created);
+         });
+}
+
+void GrafcetActions::moveBranchLeft()
+{
+    moveBranch(-1);
+}
+
+void GrafcetActions::moveBranchRight()
+{
+    moveBranch(+1);
+}
+
+// Moves the branch one place; the selection stays on what it was.
+void GrafcetActions::moveBranch(int offset)
+{
+    if (!canMoveBranch(offset))
+        return;
+    // A selection branch named by its first transition (a jump back has no step to name it by).
+    const int transition = core::canMoveSelectionBranch(*grafcet(), singleTransition(), offset) ? singleTransition() : 0;
+    const int step = branchStep();
+    const std::vector<int> steps = selectedSteps();
+    const std::vector<int> transitions = selectedTransitions();
+    //: %1 the GEMMA step whose GRAFCET it is
+    const QString text = offset < 0 ? tr("Move branch left in %1").arg(m_stepId)
+                                    : tr("Move branch right in %1").arg(m_stepId);
+    edit(text, [transition, step, offset, steps, transitions](core::Grafcet& g, core::GrafcetCreated& created) {
+        created.steps = steps;
+        created.transitions = transitions;
+        return transition != 0 ? core::moveSelectionBranch(g, transition, offset) : core::moveBranch(g, step, offset);
+    });
+}
+
 void GrafcetActions::addJumpTo(int target)
 {
     const int step = singleStep();
@@ -375,18 +455,28 @@ void GrafcetActions::addJumpTo(int target)
          });
 }
 
+// The selected transitions go as they are (what they leave dangling, the
+// checks report), then the selected steps with their sequences repaired.
 void GrafcetActions::removeSelected()
 {
     const std::vector<int> steps = selectedSteps();
-    if (steps.empty()) {
-        const int transition = singleTransition();
-        if (transition != 0 && isSelectionBranch(transition))
-            removeBranch();
+    const std::vector<int> transitions = selectedTransitions();
+    QString text;
+    if (transitions.empty())
+        text = steps.size() == 1 ? tr("Remove step %1 from %2").arg(steps.front()).arg(m_stepId)
+                                 : tr("Remove %n steps from %1", nullptr, int(steps.size())).arg(m_stepId);
+    else if (steps.empty())
+        text = transitions.size() == 1
+                 ? tr("Remove T%1 from %2").arg(transitions.front()).arg(m_stepId)
+                 : tr("Remove %n transitions from %1", nullptr, int(transitions.size())).arg(m_stepId);
+    else
+        text = tr("Remove %n elements from %1", nullptr, int(steps.size() + transitions.size())).arg(m_stepId);
+    if (steps.empty() && transitions.empty())
         return;
-    }
-    const QString text = steps.size() == 1 ? tr("Remove step %1 from %2").arg(steps.front()).arg(m_stepId)
-                                           : tr("Remove %n steps from %1", nullptr, int(steps.size())).arg(m_stepId);
-    edit(text, [steps](core::Grafcet& g, core::GrafcetCreated&) {
+    edit(text, [steps, transitions](core::Grafcet& g, core::GrafcetCreated&) {
+        for (int transition : transitions)
+            if (core::Status status = g.removeTransition(transition); !status)
+                return status;
         for (int step : steps)
             if (core::Status status = core::removeStepWithRepair(g, step); !status)
                 return status;

@@ -2,15 +2,16 @@
 
 // The structured editing of one GRAFCET tab, as SFC editors offer it:
 // insert a step after or before the selected step or transition, add a
-// selection or parallel branch, a loop or jump, remove a step or a branch
-// (what it connected repaired), renumber, connect a transition directly,
+// selection or parallel branch, a branch ending on an exit step, a loop or
+// jump, move a branch left or right, remove a step (what it connected
+// repaired), a transition or a branch, renumber, connect a transition directly,
 // copy and paste steps, and create the usual shape of a new GRAFCET. Each
 // entry is one EditGrafcetCommand running a core/model/grafcetediting.h
 // operation; afterwards the created steps and transitions are selected.
 //
 // It attaches to a GrafcetView: the view's context menu (on a step, a
 // transition or the background), the keyboard shortcuts inside it (Insert,
-// Shift+Insert, Delete, Ctrl+C, Ctrl+V) and, while the GRAFCET has no step,
+// Shift+Insert, Delete, Alt+Left, Alt+Right, Ctrl+C, Ctrl+V) and, while the GRAFCET has no step,
 // a link in the empty view to create the usual shape. The selection it
 // edits is the GrafcetScene's own (its selectable step and transition
 // items). The actions are named (objectName) for tests and scripts.
@@ -73,6 +74,12 @@ private:
     int singleTransition() const;
     bool isSelectionBranch(int transition) const;
     bool isParallelBranch(int step) const;
+    // The step naming the branch to move: the selected step, or the first
+    // downstream step of the selected transition; 0 otherwise.
+    int branchStep() const;
+    // Whether Move Branch Left (-1) or Right (+1) has a branch to move: the
+    // selection branch the selected transition starts, or the branch of branchStep.
+    bool canMoveBranch(int offset) const;
 
     // Pushes one command running `edit`; selects what it created.
     using Edit = std::function<core::Status(core::Grafcet&, core::GrafcetCreated&)>;
@@ -84,6 +91,10 @@ private:
     void insertStep(InsertOperation atStep, InsertOperation atTransition);
     void addSelectionBranch();
     void addParallelBranch();
+    void addBranchEndingOnStep();
+    void moveBranchLeft();
+    void moveBranchRight();
+    void moveBranch(int offset);
     void addJumpTo(int target);
     void removeSelected();
     void removeBranch();
@@ -104,6 +115,9 @@ private:
     QAction* m_insertBefore = nullptr;
     QAction* m_selectionBranch = nullptr;
     QAction* m_parallelBranch = nullptr;
+    QAction* m_endingBranch = nullptr;
+    QAction* m_moveBranchLeft = nullptr;
+    QAction* m_moveBranchRight = nullptr;
     QAction* m_remove = nullptr;
     QAction* m_removeBranch = nullptr;
     QAction* m_renumber = nullptr;

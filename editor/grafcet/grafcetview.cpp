@@ -24,7 +24,10 @@ GrafcetView::GrafcetView(GrafcetScene* scene, QWidget* parent)
 {
     setRenderHint(QPainter::Antialiasing);
     setFrameShape(QFrame::NoFrame);
-    setAlignment(Qt::AlignHCenter | Qt::AlignTop);
+    // Anchored at the top left: a drawing that grows or shrinks at the right
+    // (a longer receptivity, the simulation caption from scan to scan) does
+    // not shift sideways, as a centred one would.
+    setAlignment(Qt::AlignLeft | Qt::AlignTop);
     setBackgroundBrush(Qt::white);
     setDragMode(QGraphicsView::ScrollHandDrag);
     setTransformationAnchor(QGraphicsView::AnchorUnderMouse);

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace core;
@@ -87,6 +88,22 @@ std::string linkName(const GrafcetLinkLayout& link)
 bool lineOwns(const GrafcetBranchLineLayout& line, const GrafcetLinkLayout& link)
 {
     return (line.transition != 0 && link.transition == line.transition) || (line.step != 0 && link.step == line.step);
+}
+
+// A convergence whose branches go on as one link back up (a loop or a jump) to its step.
+bool goesBack(const GrafcetLayout& layout, const GrafcetBranchLineLayout& line)
+{
+    int back = 0;
+    for (const GrafcetLinkLayout& link : layout.links) {
+        const bool ofLine = link.kind == GrafcetLinkLayout::Kind::TransitionToStep && link.step == line.step
+                         && std::find(line.branches.begin(), line.branches.end(), link.transition) != line.branches.end();
+        if (!ofLine)
+            continue;
+        if (link.ending == GrafcetLinkLayout::Ending::Plain)
+            return false;
+        ++back;
+    }
+    return back > 0;
 }
 
 struct Obstacle {
@@ -176,8 +193,10 @@ std::vector<std::string> violations(const Grafcet& grafcet, const GrafcetLayout&
             || t.labelRect.bottom() < t.barCenter.y)
             fail(name + ": label not to the right of the bar");
     }
+    std::set<std::tuple<int, double, double>> sharedJumps; // the branches of a convergence share one arrow
     for (const GrafcetLinkLayout& link : layout.links) {
-        if (link.ending == GrafcetLinkLayout::Ending::Jump)
+        if (link.ending == GrafcetLinkLayout::Ending::Jump
+            && sharedJumps.emplace(link.step, link.labelRect.x, link.labelRect.y).second)
             obstacles.push_back({link.labelRect, linkName(link) + " jump label"});
         if (link.fromReference)
             obstacles.push_back({link.referenceRect, linkName(link) + " reference"});
@@ -352,7 +371,7 @@ std::vector<std::string> violations(const Grafcet& grafcet, const GrafcetLayout&
                 if (bar->barCenter.y >= line.y)
                     fail("selection branch T" + std::to_string(t) + " not above its convergence");
             }
-            if (line.y >= layout.step(line.step)->box.top())
+            if (line.y >= layout.step(line.step)->box.top() && !goesBack(layout, line))
                 fail("selection convergence below its step " + std::to_string(line.step));
             break;
         case GrafcetBranchLineLayout::Kind::SimultaneousDivergence:
@@ -416,6 +435,90 @@ std::vector<std::string> violations(const Grafcet& grafcet, const GrafcetLayout&
             fail("the bar of transition " + std::to_string(t.number) + " outside the bounding rectangle");
     }
     return found;
+}
+
+} // namespace grafcetlayoutchecks
+
+namespace {
+
+double reservedRoom(double width)
+{
+    return std::ceil(width / kGrafcetLabelReserve) * kGrafcetLabelReserve;
+}
+
+// The width of a step's actions, 0 without.
+double actionsWidth(const GrafcetStepLayout& step)
+{
+    return step.actions.empty() ? 0 : step.actions.back().box.right() - step.actions.front().box.left();
+}
+
+// What moved between the two layouts: everything vertically, and sideways unless `sideways` is allowed.
+void compareLayouts(const GrafcetLayout& before, const GrafcetLayout& after, bool sideways, const std::string& what,
+                    std::vector<std::string>& moves)
+{
+    const auto report = [&](const std::string& element, bool horizontal) {
+        if (moves.size() < 20)
+            moves.push_back(what + " moved " + element + (horizontal ? " sideways" : " up or down"));
+    };
+    for (const GrafcetStepLayout& step : before.steps) {
+        const GrafcetStepLayout* moved = after.step(step.number);
+        if (!moved)
+            continue;
+        if (moved->box.y != step.box.y)
+            report("step " + std::to_string(step.number), false);
+        if (!sideways && moved->box.x != step.box.x)
+            report("step " + std::to_string(step.number), true);
+    }
+    for (const GrafcetTransitionLayout& t : before.transitions) {
+        const GrafcetTransitionLayout* moved = after.transition(t.number);
+        if (!moved)
+            continue;
+        if (moved->barCenter.y != t.barCenter.y)
+            report("T" + std::to_string(t.number), false);
+        if (!sideways && moved->barCenter.x != t.barCenter.x)
+            report("T" + std::to_string(t.number), true);
+    }
+    if (before.lines.size() != after.lines.size()) {
+        report("the branch lines", false);
+        return;
+    }
+    for (std::size_t i = 0; i < before.lines.size(); ++i) {
+        if (before.lines[i].y != after.lines[i].y)
+            report("a branch line", false);
+        if (!sideways && (before.lines[i].left != after.lines[i].left || before.lines[i].right != after.lines[i].right))
+            report("a branch line", true);
+    }
+}
+
+} // namespace
+
+namespace grafcetlayoutchecks {
+
+std::vector<std::string> labelWidthMoves(const Grafcet& grafcet)
+{
+    std::vector<std::string> moves;
+    const GrafcetLayout before = layoutGrafcet(grafcet, fixedWidth);
+    for (const GrafcetTransition& t : grafcet.transitions()) {
+        Grafcet wider = grafcet;
+        wider.setReceptivity(t.number, t.receptivity + "x");
+        const GrafcetLayout after = layoutGrafcet(wider, fixedWidth);
+        const bool outgrown = reservedRoom(after.transition(t.number)->labelRect.width)
+                           != reservedRoom(before.transition(t.number)->labelRect.width);
+        compareLayouts(before, after, outgrown, "a longer receptivity of T" + std::to_string(t.number), moves);
+    }
+    for (const GrafcetStep& step : grafcet.steps()) {
+        if (step.actions.empty())
+            continue;
+        Grafcet wider = grafcet;
+        GrafcetAction action = step.actions.back();
+        action.text += "x";
+        wider.setAction(step.number, static_cast<int>(step.actions.size()) - 1, action);
+        const GrafcetLayout after = layoutGrafcet(wider, fixedWidth);
+        const bool outgrown = reservedRoom(actionsWidth(*after.step(step.number)))
+                           != reservedRoom(actionsWidth(*before.step(step.number)));
+        compareLayouts(before, after, outgrown, "a longer action of step " + std::to_string(step.number), moves);
+    }
+    return moves;
 }
 
 } // namespace grafcetlayoutchecks

@@ -22,4 +22,12 @@ double fixedWidth(std::string_view text);
 // Every violated invariant, one line each (at most 20); empty when the layout is clean.
 std::vector<std::string> violations(const core::Grafcet& grafcet, const core::GrafcetLayout& layout);
 
+// The stable drawing (docs/grafcet-layout.md): one character more in a
+// receptivity, or in a step's last action, moves no box, bar or line
+// vertically, and sideways nothing at all while the text stays within its
+// reserved room (core::kGrafcetLabelReserve). Every move found, one line
+// each (at most 20); empty when the drawing is stable. Lays out the
+// GRAFCET once per transition and step.
+std::vector<std::string> labelWidthMoves(const core::Grafcet& grafcet);
+
 } // namespace grafcetlayoutchecks

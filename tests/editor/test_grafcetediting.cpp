@@ -23,9 +23,11 @@
 
 #include <QAction>
 #include <QDialog>
+#include <QDialogButtonBox>
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
+#include <QPushButton>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -103,6 +105,11 @@ private slots:
     void createUsualShapeAndUndo();
     void readOnlyDisablesEditing();
     void windowOpensAnEmptyMacroStep();
+    void branchEndingOnAStep();
+    void deleteRemovesATransition();
+    void moveBranchWithTheKeyboard();
+    void connectDirectlySaysWhyOkIsDisabled();
+    void aLongerReceptivityDoesNotShiftTheDrawing();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -392,6 +399,136 @@ void TestGrafcetEditing::windowOpensAnEmptyMacroStep()
     QVERIFY(!document->model().grafcet("A7"));
     QCOMPARE(window->grafcetView(QStringLiteral("A7")), view); // the tab stays, empty again
     QCOMPARE(editortest::countItems<GrafcetStepItem>(*view->grafcetScene()), 0);
+}
+
+
+void TestGrafcetEditing::branchEndingOnAStep()
+{
+    Document document(drillingCell());
+    Tab tab(document, QStringLiteral("F3")); // 1 -> T1 -> 2
+    tab.actions->select({1}, {});
+    QMenu menu;
+    tab.actions->populate(&menu);
+    QVERIFY(menu.actions().contains(tab.action("grafcetEndingBranchAction")));
+    QVERIFY(tab.action("grafcetEndingBranchAction")->isEnabled());
+    tab.action("grafcetEndingBranchAction")->trigger();
+    const core::Grafcet* g = document.model().grafcet("F3");
+    QCOMPARE(links(g), QStringLiteral("T1 1>2, T2 1>3"));
+    QVERIFY(g->transitionsFrom(3).empty()); // an exit step, in one action
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Add branch ending on a step at step 1 in F3"));
+    QCOMPARE(tab.actions->selectedSteps(), std::vector<int>{3});
+    QCOMPARE(stepItems(*tab.scene), 3);
+    document.undoStack()->undo();
+    QVERIFY(document.model().grafcet("F3")->sameContent(*drillingCell().grafcet("F3")));
+}
+
+void TestGrafcetEditing::deleteRemovesATransition()
+{
+    Document document(drillingCell());
+    Tab tab(document, QStringLiteral("F3"));
+    tab.view->show();
+    QVERIFY(QTest::qWaitForWindowExposed(tab.view.get()));
+    tab.view->activateWindow();
+    tab.view->setFocus();
+    const QPoint bar = tab.view->mapFromScene(tab.scene->transitionItem(1)->sceneBoundingRect().center());
+    QTest::mouseClick(tab.view->viewport(), Qt::LeftButton, {}, bar);
+    QCOMPARE(tab.actions->selectedTransitions(), std::vector<int>{1});
+    QMenu menu;
+    tab.actions->populate(&menu);
+    QVERIFY(menu.actions().contains(tab.action("grafcetRemoveAction")));
+    QTest::keyClick(tab.view.get(), Qt::Key_Delete);
+    QVERIFY(document.model().grafcet("F3")->transitions().empty()); // the lone transition went
+    QCOMPARE(document.model().grafcet("F3")->steps().size(), std::size_t(2)); // its steps stay
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Remove T1 from F3"));
+    QVERIFY(!tab.scene->transitionItem(1));
+    document.undoStack()->undo();
+    QVERIFY(document.model().grafcet("F3")->sameContent(*drillingCell().grafcet("F3")));
+}
+
+void TestGrafcetEditing::moveBranchWithTheKeyboard()
+{
+    Document document(drillingCell());
+    Tab tab(document, QStringLiteral("F3"));
+    tab.actions->select({1}, {});
+    tab.action("grafcetEndingBranchAction")->trigger(); // T2 1>3, right of T1 1>2
+    tab.view->show();
+    QVERIFY(QTest::qWaitForWindowExposed(tab.view.get()));
+    tab.view->activateWindow();
+    tab.view->setFocus();
+    const QPoint box = tab.view->mapFromScene(tab.scene->stepItem(3)->sceneBoundingRect().center());
+    QTest::mouseClick(tab.view->viewport(), Qt::LeftButton, {}, box);
+    QCOMPARE(tab.actions->selectedSteps(), std::vector<int>{3});
+    QVERIFY(!tab.action("grafcetMoveBranchRightAction")->isEnabled()); // already the rightmost
+    QVERIFY(tab.action("grafcetMoveBranchLeftAction")->isEnabled());
+    const double before = tab.scene->stepItem(3)->sceneBoundingRect().center().x();
+    QTest::keyClick(tab.view.get(), Qt::Key_Left, Qt::AltModifier);
+    QCOMPARE(links(document.model().grafcet("F3")), QStringLiteral("T2 1>3, T1 1>2"));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Move branch left in F3"));
+    QVERIFY(tab.scene->stepItem(3)->sceneBoundingRect().center().x() < before); // drawn at the left now
+    QCOMPARE(tab.actions->selectedSteps(), std::vector<int>{3}); // still selected: Alt+Left again is possible
+    QVERIFY(!tab.action("grafcetMoveBranchLeftAction")->isEnabled());
+    {
+        QMenu menu; // gone before the next key, as the context menu is after it closes
+        tab.actions->populate(&menu);
+        QVERIFY(menu.actions().contains(tab.action("grafcetMoveBranchRightAction")));
+    }
+    QVERIFY(tab.action("grafcetMoveBranchRightAction")->isEnabled());
+    QTest::keyClick(tab.view.get(), Qt::Key_Right, Qt::AltModifier);
+    QCOMPARE(links(document.model().grafcet("F3")), QStringLiteral("T1 1>2, T2 1>3"));
+    document.undoStack()->undo();
+    QCOMPARE(links(document.model().grafcet("F3")), QStringLiteral("T2 1>3, T1 1>2"));
+    // On a transition: the selection branch it starts.
+    tab.actions->select({}, {1});
+    QVERIFY(!tab.action("grafcetMoveBranchRightAction")->isEnabled());
+    QVERIFY(tab.action("grafcetMoveBranchLeftAction")->isEnabled());
+    QTest::keyClick(tab.view.get(), Qt::Key_Left, Qt::AltModifier);
+    QCOMPARE(links(document.model().grafcet("F3")), QStringLiteral("T1 1>2, T2 1>3"));
+    QCOMPARE(tab.actions->selectedTransitions(), std::vector<int>{1});
+}
+
+void TestGrafcetEditing::connectDirectlySaysWhyOkIsDisabled()
+{
+    Document document(drillingCell());
+    const core::Grafcet& g = *document.model().grafcet("F3"); // T1 1>2
+    ConnectTransitionDialog dialog(g, 1, QStringLiteral("F3"));
+    QPushButton* ok = dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+    QVERIFY(ok->isEnabled());
+    QVERIFY(dialog.reasonLabel()->isHidden());
+    dialog.downstreamList()->item(0)->setCheckState(Qt::Unchecked); // step 2
+    QVERIFY(!ok->isEnabled());
+    QVERIFY(!dialog.reasonLabel()->isHidden());
+    QVERIFY(dialog.reasonLabel()->text().contains(QStringLiteral("downstream step")));
+    QVERIFY(dialog.reasonLabel()->text().contains(QStringLiteral("Add Branch Ending on a Step")));
+    dialog.upstreamList()->item(0)->setCheckState(Qt::Unchecked); // step 1
+    QVERIFY(dialog.reasonLabel()->text().contains(QStringLiteral("upstream step")));
+    dialog.upstreamList()->item(0)->setCheckState(Qt::Checked);
+    dialog.downstreamList()->item(1)->setCheckState(Qt::Checked); // step 1: a loop on itself
+    QVERIFY(ok->isEnabled());
+    QVERIFY(dialog.reasonLabel()->isHidden());
+}
+
+void TestGrafcetEditing::aLongerReceptivityDoesNotShiftTheDrawing()
+{
+    Document document(drillingCell());
+    Tab tab(document, QStringLiteral("F3"));
+    tab.view->resize(1000, 700); // wider than the drawing, which a centred view would move
+    tab.view->show();
+    QVERIFY(QTest::qWaitForWindowExposed(tab.view.get()));
+    const auto stepOnScreen = [&tab] {
+        return tab.view->mapFromScene(tab.scene->stepItem(1)->sceneBoundingRect().center());
+    };
+    const QPoint before = stepOnScreen();
+    const double width = tab.scene->drawingRect().width();
+    const auto setReceptivity = [&document](const std::string& text) {
+        return document.push(new EditGrafcetCommand(
+            document, QStringLiteral("F3"), [text](core::Grafcet& g) { return g.setReceptivity(1, text); },
+            QStringLiteral("Set receptivity")));
+    };
+    QVERIFY(setReceptivity("PartPresent AND NOT DrillHigh AND NOT DrillLow AND ClampClosed AND SpindleReady"));
+    QVERIFY(tab.scene->drawingRect().width() > width + 100); // the drawing grew at its right
+    QCOMPARE(stepOnScreen(), before);
+    QVERIFY(setReceptivity("a"));
+    QCOMPARE(stepOnScreen(), before);
 }
 
 QTEST_MAIN(TestGrafcetEditing)

@@ -167,6 +167,7 @@ private slots:
     void marksFollowTheHistoryAndTheReplay();
     void marksGoWhenTheSimulationEnds();
     void captionIsInSight();
+    void drawingStaysFromScanToScan();
     void outputsAreReadOnlyLamps();
     void unstableIsShown();
 
@@ -500,6 +501,30 @@ void TestGrafcetSimulation::captionIsInSight()
     m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
     QVERIFY(std::abs(bar->value() - scrolled) <= 30);
     QVERIFY(bar->value() > bar->minimum());
+}
+
+void TestGrafcetSimulation::drawingStaysFromScanToScan()
+{
+    startOnDrillingCell();
+    GrafcetScene* f2 = openGrafcet("F2");
+    QVERIFY(f2);
+    GrafcetView* view = m_window->grafcetView(QStringLiteral("F2"));
+    QVERIFY(QTest::qWaitForWindowExposed(view));
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    const auto stepOnScreen = [view, f2] {
+        return view->mapFromScene(f2->stepItem(1)->sceneBoundingRect().center());
+    };
+    const QPoint before = stepOnScreen();
+    const QString notActive = marksOf(f2)->captionText();
+    set("DrillHigh", true);
+    set("Unclamped", true);
+    set("StartButton", true);
+    for (int i = 0; i < 3; ++i) {
+        scan();
+        QCOMPARE(stepOnScreen(), before);
+    }
+    QVERIFY(marksOf(f2)->captionText() != notActive); // the caption changed, and its width with it
+    QVERIFY(f2->sceneRect().width() < view->viewport()->width()); // nothing scrolls: the alignment decides
 }
 
 void TestGrafcetSimulation::outputsAreReadOnlyLamps()
