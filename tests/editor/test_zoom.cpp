@@ -16,6 +16,7 @@
 #include <QNativeGestureEvent>
 #include <QPinchGesture>
 #include <QPointingDevice>
+#include <QScrollBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -72,6 +73,7 @@ private slots:
     void cleanup();
     void menuEntriesActOnTheFrontTab();
     void wheelAndPinchZoomTheFrontTab();
+    void middleButtonPansAGrafcet();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -166,6 +168,27 @@ void TestZoom::wheelAndPinchZoomTheFrontTab()
     ctrlWheel(*chart, -1);
     QVERIFY(chart->zoom() < fitted * 0.75);
     QCOMPARE(m_indicator->text(), zoomText(chart->zoom()));
+}
+
+// The left button draws the rubber band on the paper: the middle one pans.
+void TestZoom::middleButtonPansAGrafcet()
+{
+    m_f1->zoomIn();
+    m_f1->zoomIn();
+    QScrollBar* vertical = m_f1->verticalScrollBar();
+    QScrollBar* horizontal = m_f1->horizontalScrollBar();
+    QVERIFY(vertical->maximum() > 100 && horizontal->maximum() > 40);
+    vertical->setValue(vertical->maximum());
+    horizontal->setValue(horizontal->maximum());
+    const int top = vertical->value();
+    const int left = horizontal->value();
+    const QPoint from = m_f1->viewport()->rect().center();
+    QTest::mousePress(m_f1->viewport(), Qt::MiddleButton, {}, from);
+    QTest::mouseMove(m_f1->viewport(), from + QPoint(20, 60));
+    QTest::mouseRelease(m_f1->viewport(), Qt::MiddleButton, {}, from + QPoint(20, 60));
+    QCOMPARE(vertical->value(), top - 60);
+    QCOMPARE(horizontal->value(), left - 20);
+    QVERIFY(m_f1->scene()->selectedItems().isEmpty());
 }
 
 QTEST_MAIN(TestZoom)
