@@ -17,6 +17,7 @@
 #include "editor/docks/variablesdock.h"
 #include "editor/document.h"
 #include "editor/examplemodels.h"
+#include "editor/frontzoom.h"
 #include "editor/exportactions.h"
 #include "editor/grafcet/grafcetactions.h"
 #include "editor/grafcet/grafcetkeyboard.h"
@@ -182,6 +183,7 @@ MainWindow::~MainWindow()
     m_session->disconnect(this);
     m_verification->disconnect(this);
     m_centralTabs->disconnect(this); // its tabs go with it: not the user's closing them
+    delete m_frontZoom;               // which follows the tab in front
     delete m_chartMarks;
     delete m_problemCounter;
     deleteDocks();
@@ -449,10 +451,11 @@ void MainWindow::createActions()
     m_showHiddenAction->setShortcut(Qt::CTRL | Qt::Key_H);
     m_showHiddenAction->setCheckable(true);
     connect(m_showHiddenAction, &QAction::toggled, this, &MainWindow::setShowHidden);
-    m_fitAction = action("fitAction", [this] { m_view->zoomToFit(); }, Qt::CTRL | Qt::Key_0);
-    m_actualSizeAction = action("actualSizeAction", [this] { m_view->zoomToActualSize(); }, Qt::CTRL | Qt::Key_1);
-    m_zoomInAction = action("zoomInAction", [this] { m_view->zoomIn(); }, QKeySequence::ZoomIn);
-    m_zoomOutAction = action("zoomOutAction", [this] { m_view->zoomOut(); }, QKeySequence::ZoomOut);
+    // On the tab in front (FrontZoom, made with the status bar).
+    m_fitAction = action("fitAction", [this] { m_frontZoom->zoomToFit(); }, Qt::CTRL | Qt::Key_0);
+    m_actualSizeAction = action("actualSizeAction", [this] { m_frontZoom->zoomToActualSize(); }, Qt::CTRL | Qt::Key_1);
+    m_zoomInAction = action("zoomInAction", [this] { m_frontZoom->zoomIn(); }, QKeySequence::ZoomIn);
+    m_zoomOutAction = action("zoomOutAction", [this] { m_frontZoom->zoomOut(); }, QKeySequence::ZoomOut);
 
     m_simulateAction = new QAction(this);
     m_simulateAction->setObjectName("simulateAction");
@@ -663,7 +666,9 @@ bool MainWindow::openNestedGrafcet(const QString& stepId)
         new GrafcetSimulationMarks(m_session, scene, scene); // marked at once when opened during a simulation
         view = new GrafcetView(scene);
         scene->setParent(view);
-        new GrafcetActions(*m_document, *view);
+        auto* actions = new GrafcetActions(*m_document, *view);
+        connect(actions, &GrafcetActions::statusMessage, this,
+                [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
         view->setObjectName(QStringLiteral("grafcetView_") + stepId);
         m_centralTabs->addTab(view, QString());
         retitleGrafcetTabs();
@@ -790,8 +795,7 @@ void MainWindow::createStatusBar()
         m_problemsDock->raise();
     });
     m_zoomIndicator = new ZoomIndicator(this);
-    m_zoomIndicator->setZoom(m_view->zoom());
-    connect(m_view, &ChartView::zoomChanged, m_zoomIndicator, &ZoomIndicator::setZoom);
+    m_frontZoom = new FrontZoom(*m_centralTabs, *m_zoomIndicator, this);
     m_simulationIndicator = new StatusBadge(this);
     m_simulationIndicator->setObjectName("simulationIndicator");
     m_simulationIndicator->hide();
@@ -933,7 +937,7 @@ void MainWindow::retranslate()
     m_resetLayoutAction->setStatusTip(tr("Put the panels and the toolbar back where they were at the first start"));
     m_mainToolBar->setWindowTitle(tr("Main Toolbar"));
     m_exportActions->plcOpenAction()->setIconText(tr("Export PLCopen XML"));
-    m_fitAction->setText(tr("&Fit Chart"));
+    m_fitAction->setText(tr("&Fit to Window"));
     m_actualSizeAction->setText(tr("&Actual Size (100 %)"));
     m_zoomInAction->setText(tr("Zoom &In"));
     m_zoomOutAction->setText(tr("Zoom &Out"));

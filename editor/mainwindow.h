@@ -43,6 +43,7 @@ class Translators;
 class VariablesDock;
 class VerificationRunner;
 class ZoomIndicator;
+class FrontZoom;
 
 // GG Studio's window: the chart in the middle, the Step and Transition docks
 // on the right, Variables, Problems and the ST preview below. It edits one
@@ -203,6 +204,7 @@ private:
     ExportActions* m_exportActions = nullptr;
     ProblemCounter* m_problemCounter = nullptr;
     ZoomIndicator* m_zoomIndicator = nullptr;
+    FrontZoom* m_frontZoom = nullptr;
     SimulationSession* m_session = nullptr;
     SimulationChartMarks* m_chartMarks = nullptr;
     SimulationDock* m_simulationDock = nullptr;

@@ -148,7 +148,8 @@ void ZoomIndicator::retranslate()
 {
     const int percent = int(std::lround(m_zoom * 100));
     m_label->setText(tr("Zoom: %1 %").arg(locale().toString(percent)));
-    m_label->setToolTip(tr("Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart"));
+    m_label->setToolTip(tr("The zoom of the tab in front. Ctrl+wheel or a pinch zooms about the mouse; "
+                           "Ctrl+0 fits the drawing in the window, Ctrl+1 shows it at its actual size"));
 }
 
 StatusBadge::StatusBadge(QWidget* parent)

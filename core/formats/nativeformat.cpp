@@ -2,6 +2,7 @@
 
 #include "core/formats/jsonreader.h"
 #include "core/formats/modelloading.h"
+#include "core/formats/nativegrafcetjson.h"
 
 #include <nlohmann/json.hpp>
 
@@ -529,6 +530,16 @@ bool hasNativeFormatMember(std::string_view text)
 }
 
 } // namespace
+
+ordered_json nativeGrafcetJson(const Grafcet& grafcet)
+{
+    return grafcetJson(grafcet);
+}
+
+Grafcet readNativeGrafcet(const ordered_json& value, const std::string& path)
+{
+    return readGrafcet(value, path, KeyRule(FormatVersion{kNativeFormatMajor, kNativeFormatMinor}));
+}
 
 std::string saveNativeJson(const Model& model)
 {

@@ -1,6 +1,7 @@
 #include "editor/chart/chartview.h"
 
 #include "editor/chart/chartscene.h"
+#include "editor/pinchzoom.h"
 #include "editor/selection.h"
 
 #include <QContextMenuEvent>
@@ -40,6 +41,7 @@ ChartView::ChartView(ChartScene* scene, QWidget* parent)
     setFocusPolicy(Qt::StrongFocus);
     setTransformationAnchor(AnchorViewCenter);
     setResizeAnchor(AnchorViewCenter);
+    viewport()->grabGesture(Qt::PinchGesture);
     connect(m_scene->selection(), &Selection::changed, this, &ChartView::revealSelection);
 }
 
@@ -253,6 +255,10 @@ void ChartView::revealSelection()
 // a round trip), which the first frame need not wait for.
 bool ChartView::viewportEvent(QEvent* event)
 {
+    if (const std::optional<PinchZoom> pinch = pinchZoom(event, *viewport())) {
+        zoomBy(pinch->factor, pinch->at);
+        return true;
+    }
     if (event->type() == QEvent::Paint && !m_panningSetUp) {
         m_panningSetUp = true;
         QMetaObject::invokeMethod(this, [this] { setDragMode(ScrollHandDrag); }, Qt::QueuedConnection);

@@ -9,8 +9,8 @@ namespace editor {
 class ChartScene;
 
 // Shows the chart: antialiased, panned by dragging the background (from the
-// first frame on), zoomed with Ctrl+wheel (about the point under the mouse)
-// or the zoom slots.
+// first frame on), zoomed with Ctrl+wheel or a pinch (about the point under
+// the mouse) or the zoom slots.
 // Tab / Shift+Tab walk through the visible elements (ChartScene::tabOrder)
 // and leave the view past either end; Ctrl+click adds to the selection and
 // Shift or Ctrl with a drag on the sheet draws a rubber band; Enter or F2 puts the focus in the

@@ -3,6 +3,7 @@
 #include "editor/commands/editgrafcetcommand.h"
 #include "editor/document.h"
 #include "editor/grafcet/connecttransitiondialog.h"
+#include "editor/grafcet/grafcetclipboard.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
@@ -12,7 +13,9 @@
 #include "core/model/model.h"
 
 #include <QAction>
+#include <QClipboard>
 #include <QEvent>
+#include <QGuiApplication>
 #include <QGraphicsItem>
 #include <QLabel>
 #include <QMenu>
@@ -20,16 +23,11 @@
 
 #include <algorithm>
 #include <memory>
+#include <variant>
 
 namespace editor {
 
 namespace {
-
-core::GrafcetFragment& clipboard()
-{
-    static core::GrafcetFragment fragment;
-    return fragment;
-}
 
 // The step or transition item at or above `item`; nullptr for the wiring.
 QGraphicsItem* elementItem(QGraphicsItem* item)
@@ -82,13 +80,9 @@ GrafcetActions::GrafcetActions(Document& document, GrafcetView& view)
     connect(&m_document, &Document::modelReset, this, &GrafcetActions::updateActions);
     connect(&m_document, &Document::stepChanged, this, &GrafcetActions::updateActions);
     connect(&m_document, &Document::readOnlyChanged, this, &GrafcetActions::updateActions);
+    connect(QGuiApplication::clipboard(), &QClipboard::dataChanged, this, &GrafcetActions::updateActions);
     new LanguageWatcher(&m_view, [this] { retranslate(); });
     updateActions();
-}
-
-const core::GrafcetFragment& GrafcetActions::copiedFragment()
-{
-    return clipboard();
 }
 
 QAction* GrafcetActions::addAction(const char* name, void (GrafcetActions::*slot)(), const QKeySequence& shortcut)
@@ -119,6 +113,7 @@ void GrafcetActions::createActions()
     m_removeBranch = addAction("grafcetRemoveBranchAction", &GrafcetActions::removeBranch);
     m_renumber = addAction("grafcetRenumberAction", &GrafcetActions::renumber);
     m_connect = addAction("grafcetConnectAction", &GrafcetActions::connectDirectly);
+    m_cut = addAction("grafcetCutAction", &GrafcetActions::cut, QKeySequence::Cut);
     m_copy = addAction("grafcetCopyAction", &GrafcetActions::copy, QKeySequence::Copy);
     m_paste = addAction("grafcetPasteAction", &GrafcetActions::paste, QKeySequence::Paste);
     m_createUsual = addAction("grafcetCreateUsualAction", &GrafcetActions::createUsualShape);
@@ -155,6 +150,7 @@ void GrafcetActions::retranslate()
     m_removeBranch->setText(tr("Remove Bra&nch"));
     m_renumber->setText(tr("Ren&umber Steps and Transitions"));
     m_connect->setText(tr("&Connect Directly…"));
+    m_cut->setText(tr("Cu&t Steps"));
     m_copy->setText(tr("&Copy Steps"));
     m_paste->setText(tr("&Paste Steps"));
     m_createUsual->setText(tr("Create the &Usual Shape"));
@@ -272,8 +268,10 @@ void GrafcetActions::updateActions()
                                             || (step != 0 && isParallelBranch(step))));
     m_renumber->setEnabled(editable && !empty);
     m_connect->setEnabled(editable && transition != 0);
+    m_cut->setEnabled(editable && !selectedSteps().empty());
     m_copy->setEnabled(!selectedSteps().empty());
-    m_paste->setEnabled(editable && !clipboard().empty() && (step != 0 || m_scene.selectedItems().isEmpty()));
+    m_paste->setEnabled(editable && GrafcetClipboard::holdsFragment()
+                        && (step != 0 || m_scene.selectedItems().isEmpty()));
     m_createUsual->setEnabled(editable && empty);
     m_emptyLink->setVisible(empty);
 }
@@ -323,6 +321,8 @@ void GrafcetActions::populate(QMenu* menu)
     if (transition != 0)
         menu->addAction(m_connect);
     menu->addSeparator();
+    if (m_cut->isEnabled())
+        menu->addAction(m_cut);
     if (m_copy->isEnabled())
         menu->addAction(m_copy);
     menu->addAction(m_paste);
@@ -473,6 +473,14 @@ void GrafcetActions::removeSelected()
         text = tr("Remove %n elements from %1", nullptr, int(steps.size() + transitions.size())).arg(m_stepId);
     if (steps.empty() && transitions.empty())
         return;
+    removeElements(steps, transitions, text);
+}
+
+// The transitions go as they are, then each step with repair (what it
+// connected joined), in one command.
+void GrafcetActions::removeElements(const std::vector<int>& steps, const std::vector<int>& transitions,
+                                    const QString& text)
+{
     edit(text, [steps, transitions](core::Grafcet& g, core::GrafcetCreated&) {
         for (int transition : transitions)
             if (core::Status status = g.removeTransition(transition); !status)
@@ -519,19 +527,33 @@ void GrafcetActions::connectDirectly()
          });
 }
 
+// Copy, then the steps removed as Delete removes them.
+void GrafcetActions::cut()
+{
+    const std::vector<int> steps = selectedSteps();
+    if (steps.empty() || m_document.isReadOnly())
+        return;
+    copy();
+    removeElements(steps, {}, steps.size() == 1 ? tr("Cut step %1 from %2").arg(steps.front()).arg(m_stepId)
+                                         : tr("Cut %n steps from %1", nullptr, int(steps.size())).arg(m_stepId));
+}
+
 void GrafcetActions::copy()
 {
-    if (const core::Grafcet* g = grafcet(); g && !selectedSteps().empty()) {
-        clipboard() = core::copyFragment(*g, selectedSteps());
-        updateActions();
-    }
+    if (const core::Grafcet* g = grafcet(); g && !selectedSteps().empty())
+        GrafcetClipboard::put(core::copyFragment(*g, selectedSteps()));
 }
 
 void GrafcetActions::paste()
 {
-    const core::GrafcetFragment fragment = clipboard();
-    if (fragment.empty() || (singleStep() == 0 && !m_scene.selectedItems().isEmpty()))
+    if (singleStep() == 0 && !m_scene.selectedItems().isEmpty())
         return;
+    auto read = GrafcetClipboard::fragment();
+    if (const QString* problem = std::get_if<QString>(&read)) {
+        emit statusMessage(*problem);
+        return;
+    }
+    const core::GrafcetFragment fragment = std::get<core::GrafcetFragment>(std::move(read));
     const int after = singleStep();
     edit(tr("Paste %n steps into %1", nullptr, int(fragment.steps.size())).arg(m_stepId),
          [fragment, after](core::Grafcet& g, core::GrafcetCreated& created) {

@@ -5,13 +5,15 @@
 // selection or parallel branch, a branch ending on an exit step, a loop or
 // jump, move a branch left or right, remove a step (what it connected
 // repaired), a transition or a branch, renumber, connect a transition directly,
-// copy and paste steps, and create the usual shape of a new GRAFCET. Each
+// cut, copy and paste steps (through the system clipboard,
+// grafcetclipboard.h), and create the usual shape of a new GRAFCET. Each
 // entry is one EditGrafcetCommand running a core/model/grafcetediting.h
 // operation; afterwards the created steps and transitions are selected.
 //
 // It attaches to a GrafcetView: the view's context menu (on a step, a
 // transition or the background), the keyboard shortcuts inside it (Insert,
-// Shift+Insert, Delete, Alt+Left, Alt+Right, Ctrl+C, Ctrl+V) and, while the GRAFCET has no step,
+// Shift+Insert, Delete, Alt+Left, Alt+Right, Ctrl+X, Ctrl+C, Ctrl+V) and,
+// while the GRAFCET has no step,
 // a link in the empty view to create the usual shape. The selection it
 // edits is the GrafcetScene's own (its selectable step and transition
 // items). The actions are named (objectName) for tests and scripts.
@@ -56,8 +58,9 @@ public:
     using DialogRunner = std::function<int(QDialog&)>;
     void setDialogRunner(DialogRunner runner) { m_runDialog = std::move(runner); }
 
-    // What Copy put aside for Paste, shared by every GRAFCET tab.
-    static const core::GrafcetFragment& copiedFragment();
+signals:
+    // For the status bar: why Paste did nothing.
+    void statusMessage(const QString& message);
 
 private:
     QAction* addAction(const char* name, void (GrafcetActions::*slot)(), const QKeySequence& shortcut = {});
@@ -97,9 +100,11 @@ private:
     void moveBranch(int offset);
     void addJumpTo(int target);
     void removeSelected();
+    void removeElements(const std::vector<int>& steps, const std::vector<int>& transitions, const QString& text);
     void removeBranch();
     void renumber();
     void connectDirectly();
+    void cut();
     void copy();
     void paste();
     void createUsualShape();
@@ -122,6 +127,7 @@ private:
     QAction* m_removeBranch = nullptr;
     QAction* m_renumber = nullptr;
     QAction* m_connect = nullptr;
+    QAction* m_cut = nullptr;
     QAction* m_copy = nullptr;
     QAction* m_paste = nullptr;
     QAction* m_createUsual = nullptr;

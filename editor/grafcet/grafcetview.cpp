@@ -1,11 +1,14 @@
 #include "editor/grafcet/grafcetview.h"
 
 #include "editor/grafcet/grafcetscene.h"
+#include "editor/pinchzoom.h"
 
+#include <QMouseEvent>
 #include <QScrollBar>
 #include <QWheelEvent>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 namespace editor {
@@ -15,6 +18,7 @@ namespace {
 constexpr double kZoomStep = 1.25;
 constexpr double kMinZoom = 0.25;
 constexpr double kMaxZoom = 4.0;
+constexpr double kFitMargin = 12; // scene units around the drawing
 
 } // namespace
 
@@ -29,8 +33,9 @@ GrafcetView::GrafcetView(GrafcetScene* scene, QWidget* parent)
     // not shift sideways, as a centred one would.
     setAlignment(Qt::AlignLeft | Qt::AlignTop);
     setBackgroundBrush(Qt::white);
-    setDragMode(QGraphicsView::ScrollHandDrag);
+    setDragMode(QGraphicsView::RubberBandDrag);
     setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+    viewport()->grabGesture(Qt::PinchGesture);
     connect(verticalScrollBar(), &QScrollBar::valueChanged, this,
             [this](int value) { m_atTop = value <= verticalScrollBar()->minimum(); });
     // Runs after the view's own handler: the scroll bar's range is the new one.
@@ -43,6 +48,49 @@ GrafcetView::GrafcetView(GrafcetScene* scene, QWidget* parent)
 double GrafcetView::zoom() const
 {
     return transform().m11();
+}
+
+void GrafcetView::zoomIn()
+{
+    zoomBy(kZoomStep, viewport()->rect().center());
+}
+
+void GrafcetView::zoomOut()
+{
+    zoomBy(1 / kZoomStep, viewport()->rect().center());
+}
+
+// The whole drawing in the tab, however small that makes it (down to the
+// smallest zoom, then scrolled).
+void GrafcetView::zoomToFit()
+{
+    fitInView(sceneRect().adjusted(-kFitMargin, -kFitMargin, kFitMargin, kFitMargin), Qt::KeepAspectRatio);
+    const double bounded = std::clamp(zoom(), kMinZoom, kMaxZoom);
+    if (bounded != zoom())
+        setTransform(QTransform::fromScale(bounded, bounded));
+    emit zoomChanged(zoom());
+}
+
+void GrafcetView::zoomToActualSize()
+{
+    setTransform(QTransform());
+    emit zoomChanged(zoom());
+}
+
+void GrafcetView::zoomBy(double factor, QPointF viewPoint)
+{
+    const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
+    if (qFuzzyCompare(target, zoom()))
+        return;
+    const QPointF anchor = mapToScene(viewPoint.toPoint());
+    const ViewportAnchor previous = transformationAnchor();
+    setTransformationAnchor(NoAnchor);
+    scale(target / zoom(), target / zoom());
+    setTransformationAnchor(previous);
+    const QPointF drift = mapFromScene(anchor) - viewPoint;
+    horizontalScrollBar()->setValue(horizontalScrollBar()->value() + qRound(drift.x()));
+    verticalScrollBar()->setValue(verticalScrollBar()->value() + qRound(drift.y()));
+    emit zoomChanged(zoom());
 }
 
 void GrafcetView::showEvent(QShowEvent* event)
@@ -59,10 +107,60 @@ void GrafcetView::wheelEvent(QWheelEvent* event)
         QGraphicsView::wheelEvent(event);
         return;
     }
-    const double factor = event->angleDelta().y() > 0 ? kZoomStep : 1 / kZoomStep;
-    const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
-    scale(target / zoom(), target / zoom());
+    // 120 units per notch: one notch zooms by about 20 %, a touchpad's small steps smoothly.
+    zoomBy(std::pow(1.0015, event->angleDelta().y()), event->position());
     event->accept();
+}
+
+bool GrafcetView::viewportEvent(QEvent* event)
+{
+    if (const std::optional<PinchZoom> pinch = pinchZoom(event, *viewport())) {
+        zoomBy(pinch->factor, pinch->at);
+        return true;
+    }
+    return QGraphicsView::viewportEvent(event);
+}
+
+// The left button on the background draws the rubber band (RubberBandDrag);
+// the right one leaves the selection alone, for the context menu to act on
+// all the selected elements (the scene would clear it); the middle one pans.
+void GrafcetView::mousePressEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::RightButton) {
+        event->accept();
+        return;
+    }
+    if (event->button() == Qt::MiddleButton) {
+        m_panFrom = event->position().toPoint();
+        viewport()->setCursor(Qt::ClosedHandCursor);
+        event->accept();
+        return;
+    }
+    QGraphicsView::mousePressEvent(event);
+}
+
+void GrafcetView::mouseMoveEvent(QMouseEvent* event)
+{
+    if (!m_panFrom) {
+        QGraphicsView::mouseMoveEvent(event);
+        return;
+    }
+    const QPoint moved = event->position().toPoint() - *m_panFrom;
+    m_panFrom = event->position().toPoint();
+    horizontalScrollBar()->setValue(horizontalScrollBar()->value() - moved.x());
+    verticalScrollBar()->setValue(verticalScrollBar()->value() - moved.y());
+    event->accept();
+}
+
+void GrafcetView::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::MiddleButton && m_panFrom) {
+        m_panFrom.reset();
+        viewport()->unsetCursor();
+        event->accept();
+        return;
+    }
+    QGraphicsView::mouseReleaseEvent(event);
 }
 
 } // namespace editor

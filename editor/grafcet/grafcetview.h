@@ -2,13 +2,19 @@
 
 #include <QGraphicsView>
 
+#include <optional>
+
 namespace editor {
 
 class GrafcetScene;
 
 // A nested GRAFCET in a tab beside the GEMMA chart, at its actual size (its
 // text at the chart's label size) and scrolled when taller than the tab:
-// fitted, a long sequence would shrink to unreadable. Ctrl+wheel zooms.
+// fitted, a long sequence would shrink to unreadable, so fitting is the
+// user's choice (View > Fit). Ctrl+wheel and a pinch zoom about the point
+// under the fingers. A drag on the background selects the steps and
+// transitions the band touches (Ctrl adds to the selection); the middle
+// button pans.
 class GrafcetView : public QGraphicsView {
     Q_OBJECT
 
@@ -16,19 +22,37 @@ public:
     explicit GrafcetView(GrafcetScene* scene, QWidget* parent = nullptr);
 
     GrafcetScene* grafcetScene() const { return m_scene; }
-    double zoom() const;
+    double zoom() const; // 1.0 is 100 %
+
+public slots:
+    void zoomIn();
+    void zoomOut();
+    void zoomToFit();
+    void zoomToActualSize();
+
+signals:
+    void zoomChanged(double zoom);
 
 protected:
     void wheelEvent(QWheelEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    bool viewportEvent(QEvent* event) override;
     // The first time: at the top of the drawing, where its initial step is.
     void showEvent(QShowEvent* event) override;
 
 private:
+    // Scales to zoom() * factor (within bounds) keeping viewPoint on the same scene point.
+    void zoomBy(double factor, QPointF viewPoint);
+
     GrafcetScene* m_scene;
     bool m_shown = false;
     // Scrolled to the top: stays there when the scene grows upwards (the
     // simulation's caption above the drawing).
     bool m_atTop = true;
+    // Where the middle button was last seen while it pans; null otherwise.
+    std::optional<QPoint> m_panFrom;
 };
 
 } // namespace editor

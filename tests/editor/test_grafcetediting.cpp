@@ -10,6 +10,7 @@
 #include "editor/elementref.h"
 #include "editor/grafcet/connecttransitiondialog.h"
 #include "editor/grafcet/grafcetactions.h"
+#include "editor/grafcet/grafcetclipboard.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
@@ -34,6 +35,7 @@
 #include <QUndoStack>
 
 #include <memory>
+#include <variant>
 
 using namespace editor;
 
@@ -264,7 +266,9 @@ void TestGrafcetEditing::copyPasteRenumbers()
     Tab f3(document, QStringLiteral("F3"));
     f3.actions->select({1, 2}, {});
     f3.action("grafcetCopyAction")->trigger();
-    QCOMPARE(GrafcetActions::copiedFragment().steps.size(), std::size_t(2));
+    const auto copied = GrafcetClipboard::fragment();
+    QVERIFY(std::holds_alternative<core::GrafcetFragment>(copied));
+    QCOMPARE(std::get<core::GrafcetFragment>(copied).steps.size(), std::size_t(2));
 
     f3.actions->select({2}, {});
     QVERIFY(f3.action("grafcetPasteAction")->isEnabled());
