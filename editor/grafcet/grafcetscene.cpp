@@ -134,12 +134,17 @@ QString GrafcetScene::toolTipAt(QPointF scenePos) const
     return {};
 }
 
-// Built when one shows, in the UI language of that moment.
+// Built when one shows, in the UI language of that moment; elsewhere the
+// items' own tooltips, as QGraphicsScene shows them.
 void GrafcetScene::helpEvent(QGraphicsSceneHelpEvent* event)
 {
     const QString text = toolTipAt(event->scenePos());
-    QToolTip::showText(text.isEmpty() ? QPoint() : event->screenPos(), text, event->widget());
-    event->setAccepted(!text.isEmpty());
+    if (text.isEmpty()) {
+        QGraphicsScene::helpEvent(event);
+        return;
+    }
+    QToolTip::showText(event->screenPos(), text, event->widget());
+    event->setAccepted(true);
 }
 
 QRectF GrafcetScene::drawingRect() const

@@ -33,11 +33,13 @@
 
 #include <QAction>
 #include <QFile>
+#include <QHelpEvent>
 #include <QLabel>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolButton>
+#include <QToolTip>
 #include <QTranslator>
 #include <QTreeWidget>
 #include <QTreeWidgetItemIterator>
@@ -177,6 +179,15 @@ void TestNestedProblems::nestedTransitionWithAProblemIsRedWithItsMessage()
     QVERIFY(chartF1()->hasProblemMark());
     QVERIFY2(chartF1()->toolTipText().contains(QStringLiteral("Its nested GRAFCET has 1 problem")),
              qPrintable(chartF1()->toolTipText()));
+    // Hovering the bar in the tab shows it.
+    GrafcetView* view = m_window->grafcetView(kF1);
+    view->centerOn(barCenter(1));
+    const QPoint at = view->mapFromScene(barCenter(1));
+    QHelpEvent help(QEvent::ToolTip, at, view->viewport()->mapToGlobal(at));
+    QCoreApplication::sendEvent(view->viewport(), &help);
+    QTRY_VERIFY2(QToolTip::text().contains(QStringLiteral("'Go' is not a declared variable")),
+                 qPrintable(QToolTip::text()));
+    QToolTip::hideText();
 
     setReceptivity(1, QStringLiteral("PartPresent AND Unclamped"));
     QVERIFY(!f1Scene()->transitionItem(1)->hasProblemMark());
