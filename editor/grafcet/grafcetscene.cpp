@@ -1,12 +1,11 @@
 #include "editor/grafcet/grafcetscene.h"
 
 #include "editor/chart/chartstyle.h"
+#include "editor/diagnostictext.h"
 #include "editor/document.h"
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetwiringitem.h"
-
-#include "editor/diagnostictext.h"
 
 #include "core/model/model.h"
 
@@ -16,6 +15,18 @@
 #include <QToolTip>
 
 namespace editor {
+
+namespace {
+
+// The errors and warnings of one nested element: what is marked red.
+std::vector<core::Diagnostic> problemsOf(const Document& document, const ElementRef& element)
+{
+    std::vector<core::Diagnostic> problems = document.diagnosticsFor(element);
+    std::erase_if(problems, [](const core::Diagnostic& d) { return d.severity == core::Severity::Info; });
+    return problems;
+}
+
+} // namespace
 
 GrafcetScene::GrafcetScene(Document* document, const QString& stepId, QObject* parent)
     : QGraphicsScene(parent)
@@ -72,17 +83,6 @@ void GrafcetScene::rebuild()
     m_rebuilding = false;
     emit rebuilt();
 }
-
-namespace {
-
-std::vector<core::Diagnostic> problemsOf(const Document& document, const ElementRef& element)
-{
-    std::vector<core::Diagnostic> problems = document.diagnosticsFor(element);
-    std::erase_if(problems, [](const core::Diagnostic& d) { return d.severity == core::Severity::Info; });
-    return problems;
-}
-
-} // namespace
 
 void GrafcetScene::setProblemMarksShown(bool shown)
 {
