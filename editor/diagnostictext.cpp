@@ -3,6 +3,7 @@
 #include "editor/conditionerrortext.h"
 #include "editor/conditiontypeerrortext.h"
 #include "editor/displaytext.h"
+#include "editor/nestedproblemtext.h"
 #include "editor/stdstring.h"
 #include "editor/valueproblemtext.h"
 #include "editor/docks/elementlabels.h"
@@ -221,6 +222,8 @@ QString translated(const core::Diagnostic& d)
         }
     }
     if (const QString nested = nestedGrafcetText(d); !nested.isEmpty())
+        return nested;
+    if (const QString nested = nestedProblemText(d); !nested.isEmpty())
         return nested;
     if (code == "GG201" && n >= 3) {
         // The parse error's kind and pieces follow the English detail (docs/diagnostics.md).

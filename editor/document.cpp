@@ -125,6 +125,16 @@ bool Document::hasProblems(const ElementRef& element) const
     });
 }
 
+int Document::nestedProblemCount(const QString& stepId) const
+{
+    const std::string id = stepId.toStdString();
+    return static_cast<int>(std::count_if(m_diagnostics.begin(), m_diagnostics.end(), [&](const core::Diagnostic& d) {
+        const bool nested = d.target == core::Diagnostic::Target::GrafcetStep
+                         || d.target == core::Diagnostic::Target::GrafcetTransition;
+        return nested && d.severity != core::Severity::Info && d.element == id;
+    }));
+}
+
 bool Document::load(const QString& path, QString* errorMessage, QStringList* warnings)
 {
     core::LoadedModel loaded = core::loadModelFile(localPath(path));

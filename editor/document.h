@@ -59,6 +59,10 @@ public:
     const std::vector<core::Diagnostic>& diagnostics() const { return m_diagnostics; }
     std::vector<core::Diagnostic> diagnosticsFor(const ElementRef& element) const;
     bool hasProblems(const ElementRef& element) const; // any error or warning
+    // The errors and warnings of the steps and transitions of the nested
+    // GRAFCET of GEMMA step `stepId` (not those of the GRAFCET as a whole,
+    // which are the step's own).
+    int nestedProblemCount(const QString& stepId) const;
 
     // Files. A failed load leaves the open model untouched and returns false
     // with the reason in errorMessage ("FILE: LOCATION: MESSAGE"). A load that

@@ -92,6 +92,20 @@ private:
         return "action " + std::to_string(index + 1) + " of step " + std::to_string(step) + " of " + m_step.id;
     }
 
+    // An undeclared name as an undeclared action target: the GEMMA step, the
+    // place, the name. Otherwise the excerpt and the English message, then
+    // for a type error its data, as GG204 (the editor words it from them).
+    std::vector<std::string> typeIssueArguments(const cond::TypeIssue& issue, const std::string& text,
+                                                const std::string& where) const
+    {
+        if (issue.code == "GG203")
+            return {m_step.id, where, excerpt(text, issue.span)};
+        std::vector<std::string> arguments{m_step.id, where, excerpt(text, issue.span), issue.message};
+        if (issue.error)
+            cond::appendArguments(*issue.error, arguments);
+        return arguments;
+    }
+
     // What is wrong with an expression of the Nested context (type errors,
     // missing steps, undeclarable names, and in actions edges and durations).
     bool expressionUsable(const cond::Expression& expression, const std::string& text, bool inAction,
@@ -101,8 +115,8 @@ private:
         bool usable = true;
         for (cond::TypeIssue& issue : cond::typeCheck(expression, m_symbols, mustBeBool)) {
             const std::string code = issue.code == "GG410" ? "GG410" : typeCode;
-            problem(code, "in " + where + ": " + issue.message, {m_step.id, where, excerpt(text, issue.span), issue.message},
-                    step, transition, action, issue.span);
+            problem(code, "in " + where + ": " + issue.message, typeIssueArguments(issue, text, where), step,
+                    transition, action, issue.span);
             usable = false;
         }
         for (cond::NodeKind kind : {cond::NodeKind::StepActivity, cond::NodeKind::StepDuration}) {

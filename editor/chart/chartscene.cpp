@@ -242,8 +242,11 @@ void ChartScene::retranslate()
 
 void ChartScene::onDiagnosticsChanged()
 {
+    // A step is also marked for the problems of its nested GRAFCET's
+    // elements: from the chart, that is where they are found.
     for (StepItem* item : std::as_const(m_steps))
-        item->setProblemMark(m_document->hasProblems(ElementRef::step(item->id())));
+        item->setProblemMark(m_document->hasProblems(ElementRef::step(item->id()))
+                             || m_document->nestedProblemCount(item->id()) > 0);
     for (TransitionItem* item : std::as_const(m_transitions))
         item->setProblemMark(m_document->hasProblems(ElementRef::transition(item->id())));
 }

@@ -125,6 +125,13 @@ QString StepItem::toolTipText() const
     if (m_nestedSteps)
         text
             += QStringLiteral("<br/>") + tr("Has a nested GRAFCET (%n steps)", nullptr, *m_nestedSteps).toHtmlEscaped();
+    if (const int problems = m_document.nestedProblemCount(m_id); problems > 0)
+        // A singular text of its own: English has no "%n" form for one.
+        text += QStringLiteral("<br/><span style=\"color:%1\">").arg(chartstyle::problemColor().name())
+              + (problems == 1 ? tr("Its nested GRAFCET has 1 problem")
+                               : tr("Its nested GRAFCET has %n problems", nullptr, problems))
+                    .toHtmlEscaped()
+              + QStringLiteral("</span>");
     if (m_nestedSteps && m_nestedRunning)
         //: simulation; %1: the active steps of the nested GRAFCET ("3, 5")
         text += QStringLiteral("<br/><b>")

@@ -34,12 +34,14 @@ public:
     // Repaints with the model as it is now (its type, its nested GRAFCET).
     void refresh();
     bool isHiddenInModel() const;
-    // The official GEMMA name in the UI language, the type and the user's
-    // comment; built when the tooltip shows (ChartScene::helpEvent).
+    // The official GEMMA name in the UI language, the type, how many
+    // problems its nested GRAFCET's elements have, and the user's comment;
+    // built when the tooltip shows (ChartScene::helpEvent).
     QString toolTipText() const;
 
-    // Set by the scene from Document::hasProblems, so the check runs once per
-    // change of the diagnostics rather than on every paint.
+    // Set by the scene from Document::hasProblems and
+    // Document::nestedProblemCount, so the check runs once per change of the
+    // diagnostics rather than on every paint.
     bool hasProblemMark() const { return m_problem; }
     void setProblemMark(bool problem);
 

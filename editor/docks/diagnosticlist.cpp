@@ -1,6 +1,8 @@
 #include "editor/docks/diagnosticlist.h"
 
+#include "editor/declarationfix.h"
 #include "editor/diagnostictext.h"
+#include "editor/document.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/severityicon.h"
 
@@ -8,6 +10,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QStyle>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace editor {
@@ -58,8 +61,28 @@ void DiagnosticList::rebuildRows()
         row->addWidget(icon, 0, Qt::AlignTop);
         row->addWidget(text, 1);
         m_layout->addWidget(rowWidget);
+        addFixButton(diagnostic);
     }
     setVisible(!m_diagnostics.empty());
+}
+
+void DiagnosticList::addFixButton(const core::Diagnostic& diagnostic)
+{
+    const std::optional<DeclarationFix> fix
+        = m_document ? DeclarationFix::of(m_document->model(), diagnostic) : std::nullopt;
+    if (!fix)
+        return;
+    auto* button = new QToolButton(this);
+    button->setObjectName(QStringLiteral("declareVariableButton"));
+    button->setText(fix->text());
+    button->setAutoRaise(true);
+    button->setEnabled(!m_document->isReadOnly());
+    // Queued: the declaration changes the problems, and so these rows, the
+    // button among them.
+    connect(
+        button, &QToolButton::clicked, this, [this, declaration = *fix] { declaration.apply(*m_document); },
+        Qt::QueuedConnection);
+    m_layout->addWidget(button, 0, Qt::AlignLeft);
 }
 
 } // namespace editor

@@ -10,6 +10,8 @@ class QVBoxLayout;
 
 namespace editor {
 
+class Document;
+
 // The problems of one element, one row each (severity icon and message), as
 // the Step and Transition docks show them under their fields. Hidden when
 // there are none.
@@ -19,6 +21,9 @@ class DiagnosticList : public QWidget {
 public:
     explicit DiagnosticList(QWidget* parent = nullptr);
 
+    // Given the document, a problem with a quick fix (an undeclared name:
+    // editor/declarationfix.h) gets a button under its message that applies it.
+    void setDocument(Document* document) { m_document = document; }
     void setDiagnostics(const std::vector<core::Diagnostic>& diagnostics);
     int count() const { return static_cast<int>(m_diagnostics.size()); }
 
@@ -27,8 +32,10 @@ protected:
 
 private:
     void rebuildRows();
+    void addFixButton(const core::Diagnostic& diagnostic);
 
     QVBoxLayout* m_layout;
+    Document* m_document = nullptr;
     std::vector<core::Diagnostic> m_diagnostics;
 };
 

@@ -170,6 +170,7 @@ QWidget* GrafcetStepDock::createForm()
 
     layout->addWidget(createActionsArea(form), 1);
     m_problemList = new DiagnosticList(form);
+    m_problemList->setDocument(document());
     m_problemList->setObjectName(QStringLiteral("problemList"));
     layout->addWidget(m_problemList);
     return form;

@@ -110,6 +110,7 @@ QWidget* GrafcetTransitionDock::createForm()
     connect(m_receptivityEdit, &ConditionEdit::textEdited, this, &GrafcetTransitionDock::onReceptivityEdited);
     layout->addWidget(m_receptivityEdit);
     m_problemList = new DiagnosticList(form);
+    m_problemList->setDocument(document());
     m_problemList->setObjectName(QStringLiteral("problemList"));
     layout->addWidget(m_problemList);
     layout->addStretch();

@@ -1,5 +1,6 @@
 #include "editor/docks/problemsdock.h"
 
+#include "editor/declarationfix.h"
 #include "editor/diagnostictext.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/docks/propertiespanel.h"
@@ -17,6 +18,7 @@
 #include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QKeySequence>
 #include <QScrollBar>
 #include <QStyle>
 #include <QTabWidget>
@@ -39,6 +41,7 @@ enum Role {
     KeyRole,   // identifies the problem across refreshes
     GroupRole, // on the row of a nested GRAFCET's problems: its GEMMA step id
     NumberRole, // a nested step or transition number
+    DiagnosticRole, // a problem's index in Document::diagnostics(), until the next refresh
 };
 
 ElementRef::Kind kindOf(core::Diagnostic::Target target)
@@ -160,6 +163,18 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
     m_copyAction = new QAction(m_view);
     connect(m_copyAction, &QAction::triggered, this, &ProblemsDock::copySelected);
     m_view->addAction(m_copyAction);
+    m_declareAction = new QAction(m_view);
+    m_declareAction->setObjectName(QStringLiteral("declareVariableAction"));
+    m_declareAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Period));
+    m_declareAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_declareAction->setVisible(false);
+    connect(m_declareAction, &QAction::triggered, this, &ProblemsDock::declareCurrent);
+    m_view->addAction(m_declareAction);
+    connect(m_view, &QTreeWidget::currentItemChanged, this, &ProblemsDock::updateDeclareAction);
+    // The guess reads every use of the name: an edit elsewhere may change it.
+    connect(m_document, &Document::grafcetChanged, this, &ProblemsDock::updateDeclareAction);
+    connect(m_document, &Document::transitionChanged, this, &ProblemsDock::updateDeclareAction);
+    connect(m_document, &Document::readOnlyChanged, this, &ProblemsDock::updateDeclareAction);
     connect(m_view, &QTreeWidget::itemActivated, this, &ProblemsDock::activate);
     layout->addWidget(m_view, 1);
     if (m_verification) {
@@ -240,7 +255,9 @@ void ProblemsDock::refresh()
     QList<QTreeWidgetItem*> topLevel;
     QHash<QString, QTreeWidgetItem*> groups;
     QTreeWidgetItem* newCurrent = nullptr;
-    for (const core::Diagnostic& diagnostic : m_document->diagnostics()) {
+    const std::vector<core::Diagnostic>& diagnostics = m_document->diagnostics();
+    for (std::size_t index = 0; index < diagnostics.size(); ++index) {
+        const core::Diagnostic& diagnostic = diagnostics[index];
         const QString message = diagnosticText(diagnostic);
         auto* item = new QTreeWidgetItem({ fromStd(diagnostic.code), elementText(diagnostic), message });
         item->setIcon(CodeColumn, severityIcon(diagnostic.severity));
@@ -252,6 +269,7 @@ void ProblemsDock::refresh()
         item->setData(0, FieldRole, fieldOf(diagnostic));
         item->setData(0, NumberRole, diagnostic.nestedNumber);
         item->setData(0, KeyRole, keyOf(diagnostic));
+        item->setData(0, DiagnosticRole, static_cast<qulonglong>(index));
         if (!newCurrent && !currentKey.isEmpty() && item->data(0, KeyRole).toString() == currentKey)
             newCurrent = item;
         const bool nested = diagnostic.target == core::Diagnostic::Target::GrafcetStep
@@ -269,7 +287,37 @@ void ProblemsDock::refresh()
         m_view->setCurrentItem(newCurrent);
     applyFilter();
     updateFilterButtons();
+    updateDeclareAction();
     m_view->verticalScrollBar()->setValue(scroll);
+}
+
+const core::Diagnostic* ProblemsDock::currentDiagnostic() const
+{
+    const QTreeWidgetItem* item = m_view->currentItem();
+    const QVariant index = item ? item->data(0, DiagnosticRole) : QVariant();
+    const std::vector<core::Diagnostic>& diagnostics = m_document->diagnostics();
+    if (!index.isValid() || index.toULongLong() >= diagnostics.size())
+        return nullptr;
+    return &diagnostics[index.toULongLong()];
+}
+
+void ProblemsDock::updateDeclareAction()
+{
+    const core::Diagnostic* diagnostic = currentDiagnostic();
+    const std::optional<DeclarationFix> fix
+        = diagnostic ? DeclarationFix::of(m_document->model(), *diagnostic) : std::nullopt;
+    m_declareAction->setVisible(fix.has_value());
+    m_declareAction->setEnabled(fix.has_value() && !m_document->isReadOnly());
+    m_declareAction->setText(fix ? fix->text() : QString());
+}
+
+void ProblemsDock::declareCurrent()
+{
+    const core::Diagnostic* diagnostic = currentDiagnostic();
+    if (!diagnostic)
+        return;
+    if (const std::optional<DeclarationFix> fix = DeclarationFix::of(m_document->model(), *diagnostic))
+        fix->apply(*m_document);
 }
 
 QTreeWidgetItem* ProblemsDock::grafcetGroup(const QString& stepId, QList<QTreeWidgetItem*>& topLevel,

@@ -49,6 +49,9 @@ public:
     void showProperties();
     // Selects the element of a problem row and asks to focus its field.
     void activate(QTreeWidgetItem* item);
+    // The quick fix of the current row ("Declare 'start' as INPUT BOOL"), in
+    // the rows' context menu and on Ctrl+.; hidden for a row without one.
+    QAction* declareAction() const { return m_declareAction; }
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -66,12 +69,16 @@ private:
     void updateTabTexts();
     void applyFilter();
     void copySelected();
+    void updateDeclareAction();
+    void declareCurrent();
+    const core::Diagnostic* currentDiagnostic() const;
     bool isShown(core::Severity severity) const;
 
     Document* m_document;
     Selection* m_selection;
     QTreeWidget* m_view;
     QAction* m_copyAction = nullptr;
+    QAction* m_declareAction = nullptr;
     QToolButton* m_errorsButton = nullptr;
     QToolButton* m_warningsButton = nullptr;
     QToolButton* m_infoButton = nullptr;

@@ -160,6 +160,7 @@ QWidget* TransitionDock::createForm()
     connect(m_conditionEdit, &ConditionEdit::textEdited, this, &TransitionDock::onConditionEdited);
     layout->addWidget(m_conditionEdit);
     m_problemList = new DiagnosticList(form);
+    m_problemList->setDocument(document());
     m_problemList->setObjectName(QStringLiteral("problemList"));
     layout->addWidget(m_problemList);
 

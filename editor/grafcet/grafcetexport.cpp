@@ -25,7 +25,11 @@ void render(GrafcetScene& scene, QPainter& painter, const QRectF& target, const 
     painter.setRenderHints(QPainter::Antialiasing | QPainter::TextAntialiasing | QPainter::SmoothPixmapTransform);
     painter.fillRect(target, Qt::white);
     const HiddenSelection hidden(scene);
+    // On paper the drawing is the clean one: the problems are the editor's.
+    const bool problemMarks = scene.problemMarksShown();
+    scene.setProblemMarksShown(false);
     scene.render(&painter, target, source, Qt::KeepAspectRatio);
+    scene.setProblemMarksShown(problemMarks);
 }
 
 // The vertical extent of every step (with its actions) and transition (with

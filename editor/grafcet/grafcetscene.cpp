@@ -1,6 +1,7 @@
 #include "editor/grafcet/grafcetscene.h"
 
 #include "editor/chart/chartstyle.h"
+#include "editor/diagnostictext.h"
 #include "editor/document.h"
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
@@ -9,8 +10,23 @@
 #include "core/model/model.h"
 
 #include <QFontMetricsF>
+#include <QGraphicsSceneHelpEvent>
+#include <QStringList>
+#include <QToolTip>
 
 namespace editor {
+
+namespace {
+
+// The errors and warnings of one nested element: what is marked red.
+std::vector<core::Diagnostic> problemsOf(const Document& document, const ElementRef& element)
+{
+    std::vector<core::Diagnostic> problems = document.diagnosticsFor(element);
+    std::erase_if(problems, [](const core::Diagnostic& d) { return d.severity == core::Severity::Info; });
+    return problems;
+}
+
+} // namespace
 
 GrafcetScene::GrafcetScene(Document* document, const QString& stepId, QObject* parent)
     : QGraphicsScene(parent)
@@ -22,6 +38,7 @@ GrafcetScene::GrafcetScene(Document* document, const QString& stepId, QObject* p
             rebuild();
     });
     connect(document, &Document::modelReset, this, &GrafcetScene::rebuild);
+    connect(document, &Document::diagnosticsChanged, this, &GrafcetScene::applyProblemMarks);
     rebuild();
 }
 
@@ -62,8 +79,72 @@ void GrafcetScene::rebuild()
         }
     }
     setSceneRect(drawingRect());
+    applyProblemMarks();
     m_rebuilding = false;
     emit rebuilt();
+}
+
+void GrafcetScene::setProblemMarksShown(bool shown)
+{
+    if (m_problemMarksShown == shown)
+        return;
+    m_problemMarksShown = shown;
+    applyProblemMarks();
+}
+
+void GrafcetScene::applyProblemMarks()
+{
+    for (GrafcetStepItem* item : std::as_const(m_steps)) {
+        bool ownProblem = false;
+        QList<int> actions;
+        if (m_problemMarksShown) {
+            for (const core::Diagnostic& d : problemsOf(*m_document, ElementRef::grafcetStep(m_stepId, item->number()))) {
+                if (d.actionIndex >= 0)
+                    actions << d.actionIndex;
+                else
+                    ownProblem = true;
+            }
+        }
+        item->setProblemMarks(ownProblem, actions);
+    }
+    for (GrafcetTransitionItem* item : std::as_const(m_transitions))
+        item->setProblemMark(m_problemMarksShown
+                             && !problemsOf(*m_document, ElementRef::grafcetTransition(m_stepId, item->number())).empty());
+}
+
+QString GrafcetScene::problemToolTip(const ElementRef& element) const
+{
+    QStringList lines;
+    for (const core::Diagnostic& d : problemsOf(*m_document, element))
+        lines << diagnosticText(d).toHtmlEscaped();
+    // Rich text, so that a long message wraps.
+    return lines.isEmpty() ? QString() : QStringLiteral("<p>") + lines.join(QStringLiteral("<br/>")) + QStringLiteral("</p>");
+}
+
+QString GrafcetScene::toolTipAt(QPointF scenePos) const
+{
+    if (!m_problemMarksShown)
+        return {};
+    for (const QGraphicsItem* item : items(scenePos, Qt::IntersectsItemShape, Qt::DescendingOrder)) {
+        if (const auto* step = qgraphicsitem_cast<const GrafcetStepItem*>(item))
+            return problemToolTip(ElementRef::grafcetStep(m_stepId, step->number()));
+        if (const auto* transition = qgraphicsitem_cast<const GrafcetTransitionItem*>(item))
+            return problemToolTip(ElementRef::grafcetTransition(m_stepId, transition->number()));
+    }
+    return {};
+}
+
+// Built when one shows, in the UI language of that moment; elsewhere the
+// items' own tooltips, as QGraphicsScene shows them.
+void GrafcetScene::helpEvent(QGraphicsSceneHelpEvent* event)
+{
+    const QString text = toolTipAt(event->scenePos());
+    if (text.isEmpty()) {
+        QGraphicsScene::helpEvent(event);
+        return;
+    }
+    QToolTip::showText(event->screenPos(), text, event->widget());
+    event->setAccepted(true);
 }
 
 QRectF GrafcetScene::drawingRect() const

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "editor/elementref.h"
+
 #include "core/layout/grafcetlayout.h"
 
 #include <QGraphicsScene>
@@ -42,13 +44,28 @@ public:
     // lose then is not the user's doing.
     bool isRebuilding() const { return m_rebuilding; }
 
+    // The steps, actions and transitions with an error or a warning are
+    // drawn in the chart's problem colour, their messages as tooltip, after
+    // every change of the document's checks. Pictures turn the marks off
+    // (GrafcetExport): on paper the drawing is the clean one.
+    bool problemMarksShown() const { return m_problemMarksShown; }
+    void setProblemMarksShown(bool shown);
+    // The messages of the problems of the element at `scenePos`, one a line,
+    // in the UI language; empty where there is none.
+    QString toolTipAt(QPointF scenePos) const;
+
 signals:
     // The items were made again from the model (after a change of the
     // GRAFCET): every item pointer taken before is gone.
     void rebuilt();
 
+protected:
+    void helpEvent(QGraphicsSceneHelpEvent* event) override;
+
 private:
     void rebuild();
+    void applyProblemMarks();
+    QString problemToolTip(const ElementRef& element) const;
 
     Document* m_document;
     QString m_stepId;
@@ -57,6 +74,7 @@ private:
     QHash<int, GrafcetTransitionItem*> m_transitions;
     GrafcetWiringItem* m_wiring = nullptr;
     bool m_rebuilding = false;
+    bool m_problemMarksShown = true;
 };
 
 } // namespace editor

@@ -41,6 +41,15 @@ void GrafcetStepItem::setLitActions(const QList<int>& actions)
     update();
 }
 
+void GrafcetStepItem::setProblemMarks(bool problem, const QList<int>& actions)
+{
+    if (m_problem == problem && m_problemActions == actions)
+        return;
+    m_problem = problem;
+    m_problemActions = actions;
+    update();
+}
+
 // Centred between the number's baseline and the box's (inner) bottom: a
 // little smaller in the inner square of an initial step.
 QRectF GrafcetStepItem::tokenRect() const
@@ -79,7 +88,8 @@ void GrafcetStepItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* o
         const double gap = chartstyle::kHaloWidth / 2;
         painter->drawRoundedRect(box.adjusted(-gap, -gap, gap, gap), gap, gap);
     }
-    painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kStrokeWidth));
+    const QColor ink = m_problem ? chartstyle::problemColor() : chartstyle::inkColor();
+    painter->setPen(QPen(ink, chartstyle::kStrokeWidth));
     painter->setBrush(m_mark == SimulationMark::Active   ? chartstyle::activeFillColor()
                       : m_mark == SimulationMark::Frozen ? chartstyle::frozenFillColor()
                                                          : chartstyle::stepFillColor());
@@ -117,6 +127,12 @@ void GrafcetStepItem::paintActions(QPainter* painter) const
         painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kRouteWidth));
         painter->setBrush(lit ? QBrush(Qt::NoBrush) : QBrush(chartstyle::stepFillColor()));
         painter->drawRect(toQRectF(action.box));
+        if (m_problemActions.contains(action.index)) { // the outline drawn over, as the lit one
+            painter->setPen(QPen(chartstyle::problemColor(), 2 * chartstyle::kRouteWidth));
+            painter->setBrush(Qt::NoBrush);
+            painter->drawRect(toQRectF(action.box));
+            painter->setPen(QPen(chartstyle::inkColor(), chartstyle::kRouteWidth));
+        }
         if (!action.qualifier.empty()) {
             painter->drawRect(toQRectF(action.qualifierCell));
             chartstyle::drawCentredText(painter, toQRectF(action.qualifierCell), fromStd(action.qualifier));

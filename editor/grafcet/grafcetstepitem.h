@@ -34,6 +34,13 @@ public:
     const QList<int>& litActions() const { return m_litActions; }
     void setLitActions(const QList<int>& actions);
 
+    // Problems (set by GrafcetScene from the document's checks): the step's
+    // own, drawn on its square, and those of its actions by index, drawn on
+    // their boxes, in the chart's problem colour.
+    bool hasProblemMark() const { return m_problem; }
+    const QList<int>& problemActions() const { return m_problemActions; }
+    void setProblemMarks(bool problem, const QList<int>& actions);
+
     QRectF boundingRect() const override;
     QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
@@ -45,6 +52,8 @@ private:
     QRectF m_bounds;
     SimulationMark m_mark = SimulationMark::None;
     QList<int> m_litActions;
+    bool m_problem = false;
+    QList<int> m_problemActions;
 };
 
 } // namespace editor

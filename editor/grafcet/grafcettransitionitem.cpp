@@ -42,6 +42,14 @@ void GrafcetTransitionItem::setFired(bool fired)
     update();
 }
 
+void GrafcetTransitionItem::setProblemMark(bool problem)
+{
+    if (m_problem == problem)
+        return;
+    m_problem = problem;
+    update();
+}
+
 QRectF GrafcetTransitionItem::boundingRect() const
 {
     // The halo reaches beyond the drawing only while selected: pictures,
@@ -70,10 +78,10 @@ void GrafcetTransitionItem::paint(QPainter* painter, const QStyleOptionGraphicsI
         if (!m_label.isEmpty())
             painter->drawRoundedRect(toQRectF(m_layout.labelRect).adjusted(-2, -1, 2, 1), 3, 3);
     }
-    painter->setPen(QPen(m_fired ? chartstyle::firedColor() : chartstyle::inkColor(), chartstyle::kBarWidth,
-                         Qt::SolidLine, Qt::FlatCap));
+    const QColor ink = m_problem ? chartstyle::problemColor() : chartstyle::inkColor();
+    painter->setPen(QPen(m_fired ? chartstyle::firedColor() : ink, chartstyle::kBarWidth, Qt::SolidLine, Qt::FlatCap));
     painter->drawLine(QLineF(bar.x() - half, bar.y(), bar.x() + half, bar.y()));
-    painter->setPen(chartstyle::labelColor());
+    painter->setPen(m_problem ? chartstyle::problemColor() : chartstyle::labelColor());
     chartstyle::drawText(painter, toQRectF(m_layout.labelRect), Qt::AlignLeft | Qt::AlignVCenter, m_label);
 }
 

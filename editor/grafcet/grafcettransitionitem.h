@@ -28,6 +28,10 @@ public:
     bool isFired() const { return m_fired; }
     void setFired(bool fired);
     const core::GrafcetTransitionLayout& layout() const { return m_layout; }
+    // A problem (set by GrafcetScene from the document's checks): the bar
+    // and the receptivity drawn in the chart's problem colour.
+    bool hasProblemMark() const { return m_problem; }
+    void setProblemMark(bool problem);
 
     QRectF boundingRect() const override;
     QVariant itemChange(GraphicsItemChange change, const QVariant& value) override;
@@ -38,6 +42,7 @@ private:
     QString m_label;
     QRectF m_bounds;
     bool m_fired = false;
+    bool m_problem = false;
 };
 
 } // namespace editor
