@@ -7,6 +7,7 @@
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
+#include "editor/grafcet/linkdrag.h"
 
 #include "core/model/model.h"
 
@@ -82,6 +83,7 @@ GrafcetActions::GrafcetActions(Document& document, GrafcetView& view)
     connect(&m_document, &Document::stepChanged, this, &GrafcetActions::updateActions);
     connect(&m_document, &Document::readOnlyChanged, this, &GrafcetActions::updateActions);
     new LanguageWatcher(&m_view, [this] { retranslate(); });
+    new LinkDrag(m_document, m_view); // the mouse's linking
     updateActions();
 }
 

@@ -1,10 +1,23 @@
 #pragma once
 
 #include <QGraphicsView>
+#include <QList>
+#include <QPointer>
 
 namespace editor {
 
 class GrafcetScene;
+
+// What a mouse gesture draws over the drawing while it lasts (a rubber
+// line, a highlighted target), in scene coordinates: no scene item, which
+// the scene's rebuild after every edit would delete.
+class GrafcetViewOverlay : public QObject {
+    Q_OBJECT
+
+public:
+    using QObject::QObject;
+    virtual void paintOverlay(QPainter* painter) const = 0;
+};
 
 // A nested GRAFCET in a tab beside the GEMMA chart, at its actual size (its
 // text at the chart's label size) and scrolled when taller than the tab:
@@ -18,7 +31,11 @@ public:
     GrafcetScene* grafcetScene() const { return m_scene; }
     double zoom() const;
 
+    // Painted over the drawing, in the order added, for as long as it lives.
+    void addOverlay(GrafcetViewOverlay* overlay) { m_overlays.append(overlay); }
+
 protected:
+    void drawForeground(QPainter* painter, const QRectF& rect) override;
     void wheelEvent(QWheelEvent* event) override;
     // The first time: at the top of the drawing, where its initial step is.
     void showEvent(QShowEvent* event) override;
@@ -29,6 +46,7 @@ private:
     // Scrolled to the top: stays there when the scene grows upwards (the
     // simulation's caption above the drawing).
     bool m_atTop = true;
+    QList<QPointer<GrafcetViewOverlay>> m_overlays;
 };
 
 } // namespace editor
