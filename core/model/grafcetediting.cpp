@@ -435,6 +435,22 @@ int selectionJoin(const Grafcet& grafcet, int step)
     return best->first;
 }
 
+Status addBranchEndingOnStep(Grafcet& grafcet, int step, GrafcetCreated* created)
+{
+    if (!grafcet.step(step))
+        return unknownStep(step);
+    return onCopy(grafcet, created, [step](Grafcet& g, GrafcetCreated& made) {
+        const int added = addNewStep(g, made);
+        return addNewTransition(g, {step}, {added}, made);
+    });
+}
+
+int simultaneousConvergence(const Grafcet& grafcet, int transition)
+{
+    const GrafcetTransition* t = grafcet.transition(transition);
+    return t ? parallelConvergence(grafcet, *t) : 0;
+}
+
 Status addSelectionBranchAtStep(Grafcet& grafcet, int step, GrafcetCreated* created)
 {
     if (!grafcet.step(step))

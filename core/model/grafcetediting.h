@@ -57,6 +57,11 @@ Status addSelectionBranchAtStep(Grafcet& grafcet, int step, GrafcetCreated* crea
 // The same, beside `transition` (right after it in branch order); the
 // transition must leave exactly one step.
 Status addSelectionBranchAtTransition(Grafcet& grafcet, int transition, GrafcetCreated* created = nullptr);
+// A new branch leaving `step`, to the right of its branches, that ends on
+// a new step with no transition after it (an exit step, IEC 60848 allows
+// it): step → T → N. On a step without outgoing transition, the sequence
+// goes on with N.
+Status addBranchEndingOnStep(Grafcet& grafcet, int step, GrafcetCreated* created = nullptr);
 // Where the selection leaving `step` converges: the step the most of its
 // branches reach going down (not through `step`), the nearest of those;
 // with one branch, the step it leads to. 0 when the step has no outgoing
@@ -70,6 +75,9 @@ int selectionJoin(const Grafcet& grafcet, int step);
 // only outgoing transition when D is its only upstream step). Without a
 // convergence the new branch ends on N.
 Status addParallelBranch(Grafcet& grafcet, int transition, GrafcetCreated* created = nullptr);
+// That convergence of the transition's simultaneous divergence; 0 for none
+// or an unknown transition.
+int simultaneousConvergence(const Grafcet& grafcet, int transition);
 
 // A new transition fromStep → toStep, at the right of fromStep's branches.
 // The layout draws it as a loop line or a jump arrow (grafcetlayout.h).

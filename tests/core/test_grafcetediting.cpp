@@ -1,5 +1,6 @@
 #include "core/formats/modelfiles.h"
 #include "core/layout/grafcetlayout.h"
+#include "core/model/branchorder.h"
 #include "core/model/grafcetediting.h"
 #include "core/model/model.h"
 #include "grafcetlayoutchecks.h"
@@ -208,6 +209,27 @@ TEST_CASE("Structured editing: selection branches", "[grafcet-editing]")
     CHECK(layout.transition(5)->barCenter.x < layout.transition(2)->barCenter.x);
 
     checkRefused(sequence(3), [](Grafcet& e) { return addSelectionBranchAtStep(e, 3); }); // no outgoing transition
+}
+
+TEST_CASE("Structured editing: a branch ending on a step", "[grafcet-editing]")
+{
+    // At a step with branches: a new rightmost branch to a step with no transition after it.
+    Grafcet g = selection();
+    GrafcetCreated created;
+    REQUIRE(addBranchEndingOnStep(g, 1, &created).ok);
+    CHECK(links(g) == "T1 1>2, T2 1>3, T3 2>4, T4 3>4, T5 1>5");
+    CHECK(created.steps == std::vector<int>{5});
+    CHECK(created.transitions == std::vector<int>{5});
+    CHECK(g.transitionsFrom(5).empty());
+    checkClean(g, "exit branch");
+    const GrafcetLayout layout = layoutGrafcet(g, grafcetlayoutchecks::fixedWidth);
+    CHECK(layout.step(5)->box.x > layout.step(3)->box.x); // the rightmost branch
+
+    // At the last step of a sequence: the sequence goes on with the new step.
+    g = sequence(2);
+    REQUIRE(addBranchEndingOnStep(g, 2).ok);
+    CHECK(links(g) == "T1 1>2, T2 2>3");
+    checkRefused(sequence(2), [](Grafcet& e) { return addBranchEndingOnStep(e, 9); });
     checkRefused(parallelLoop(), [](Grafcet& e) { return addSelectionBranchAtTransition(e, 3); }); // two upstream
 }
 
@@ -476,7 +498,7 @@ bool randomEdit(Grafcet& g, std::mt19937& random, std::string& what)
     const int t = pick(transitionNumbers);
     const Grafcet before = g;
     Status status;
-    switch (std::uniform_int_distribution<int>(0, 12)(random)) {
+    switch (std::uniform_int_distribution<int>(0, 16)(random)) {
     case 0: what = "insert after step " + std::to_string(s); status = insertStepAfterStep(g, s); break;
     case 1: what = "insert before step " + std::to_string(s); status = insertStepBeforeStep(g, s); break;
     case 2: what = "insert after T" + std::to_string(t); status = insertStepAfterTransition(g, t); break;
@@ -494,6 +516,10 @@ bool randomEdit(Grafcet& g, std::mt19937& random, std::string& what)
     case 9: what = "remove selection branch T" + std::to_string(t); status = removeSelectionBranch(g, t); break;
     case 10: what = "remove parallel branch " + std::to_string(s); status = removeParallelBranch(g, s); break;
     case 11: what = "renumber"; status = renumberAll(g); break;
+    case 12: what = "branch ending on a step at " + std::to_string(s); status = addBranchEndingOnStep(g, s); break;
+    case 13: what = "move branch of " + std::to_string(s) + " left"; status = moveBranch(g, s, -1); break;
+    case 14: what = "move branch of " + std::to_string(s) + " right"; status = moveBranch(g, s, +1); break;
+    case 15: what = "remove T" + std::to_string(t); status = g.removeTransition(t); break;
     default: {
         const int anchor = pick(stepNumbers);
         what = "paste " + std::to_string(s) + " after " + std::to_string(anchor);
