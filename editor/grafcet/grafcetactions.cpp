@@ -2,6 +2,7 @@
 
 #include "editor/commands/editgrafcetcommand.h"
 #include "editor/document.h"
+#include "editor/grafcet/branchdrag.h"
 #include "editor/grafcet/connecttransitiondialog.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetstepitem.h"
@@ -83,7 +84,11 @@ GrafcetActions::GrafcetActions(Document& document, GrafcetView& view)
     connect(&m_document, &Document::stepChanged, this, &GrafcetActions::updateActions);
     connect(&m_document, &Document::readOnlyChanged, this, &GrafcetActions::updateActions);
     new LanguageWatcher(&m_view, [this] { retranslate(); });
-    new LinkDrag(m_document, m_view); // the mouse's linking
+    // The mouse: a drag from a connection handle links, one from a step's
+    // body moves its branch. LinkDrag's event filter, installed last, runs
+    // first and keeps the drags from a handle to itself.
+    new BranchDrag(m_document, m_view);
+    new LinkDrag(m_document, m_view);
     updateActions();
 }
 

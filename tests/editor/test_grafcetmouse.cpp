@@ -1,12 +1,14 @@
 // Editing a GRAFCET tab with the mouse on the shipped drilling cell, with
 // QTest mouse events on the view's viewport: a drag from a connection
 // handle links (each direction's meaning, the refusals with their reason,
-// one undoable command each), and clicks still select.
+// one undoable command each), a drag from a step's body moves its branch,
+// and clicks still select.
 
 #include "editortestsupport.h"
 
 #include "editor/chart/layoutconversion.h"
 #include "editor/document.h"
+#include "editor/grafcet/branchdrag.h"
 #include "editor/grafcet/grafcetactions.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetstepitem.h"
@@ -47,6 +49,7 @@ struct Tab {
         , view(std::make_unique<GrafcetView>(scene))
         , actions(new GrafcetActions(document, *view))
         , links(view->findChild<LinkDrag*>())
+        , branches(view->findChild<BranchDrag*>())
     {
         scene->setParent(view.get());
         view->resize(700, 700);
@@ -73,7 +76,17 @@ struct Tab {
     std::unique_ptr<GrafcetView> view;
     GrafcetActions* actions;
     LinkDrag* links;
+    BranchDrag* branches;
 };
+
+// The numbers of the transitions leaving `step`, in branch order.
+std::vector<int> leaving(const Document& document, const char* stepId, int step)
+{
+    std::vector<int> numbers;
+    for (const core::GrafcetTransition* t : document.model().grafcet(stepId)->transitionsFrom(step))
+        numbers.push_back(t->number);
+    return numbers;
+}
 
 const core::GrafcetTransition& transition(const Document& document, const char* stepId, int number)
 {
@@ -95,6 +108,9 @@ private slots:
     void dragHighlightsTheTarget();
     void refusedLinksSayWhy();
     void undoAndRedoALink();
+    void stepDraggedSidewaysMovesItsParallelBranch();
+    void stepDraggedSidewaysMovesItsSelectionBranch();
+    void stepOnNoBranchSaysSo();
     void clicksStillSelect();
     void noLinkWhileReadOnly();
 
@@ -229,6 +245,67 @@ void TestGrafcetMouse::undoAndRedoALink()
     tab.drag(tab.transitionHandle(5), tab.stepBox(2));
     QCOMPARE(transition(document, "F2", 5).downstream, steps({1, 2}));
     QCOMPARE(document.undoStack()->count(), 2);
+}
+
+void TestGrafcetMouse::stepDraggedSidewaysMovesItsParallelBranch()
+{
+    Document document(drillingCell());
+    Tab tab(document, QStringLiteral("F1"));
+    QVERIFY(QTest::qWaitForWindowExposed(tab.view.get()));
+    QVERIFY(tab.branches);
+    // F1: T2 opens the parallel branches 3-4 and 5-6, closed by T5.
+    QCOMPARE(transition(document, "F1", 2).downstream, steps({3, 5}));
+    const QPoint from = tab.stepBox(5);
+    const QPoint onto = tab.stepBox(3);
+    QTest::mousePress(tab.viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(tab.viewport(), (from + onto) / 2);
+    QTest::mouseMove(tab.viewport(), onto);
+    QVERIFY(tab.branches->isDragging());
+    QCOMPARE(tab.branches->dropOffset(), -1);
+    QVERIFY(!tab.links->isDragging());
+    QTest::mouseRelease(tab.viewport(), Qt::LeftButton, {}, onto);
+    QCOMPARE(transition(document, "F1", 2).downstream, steps({5, 3}));
+    QCOMPARE(transition(document, "F1", 5).upstream, steps({6, 4}));
+    QCOMPARE(document.undoStack()->count(), 1);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Move the branch of step 5 left in F1"));
+    QCOMPARE(tab.actions->selectedSteps(), std::vector<int>{5});
+    // Drawn in the new order: step 5 now left of step 3.
+    QVERIFY(tab.stepBox(5).x() < tab.stepBox(3).x());
+    document.undoStack()->undo();
+    QCOMPARE(transition(document, "F1", 2).downstream, steps({3, 5}));
+}
+
+void TestGrafcetMouse::stepDraggedSidewaysMovesItsSelectionBranch()
+{
+    Document document(drillingCell());
+    Tab tab(document, QStringLiteral("F2"));
+    QVERIFY(QTest::qWaitForWindowExposed(tab.view.get()));
+    // F2: step 1 chooses between T1 (to step 2) and T2 (straight to step 3).
+    QCOMPARE(leaving(document, "F2", 1), steps({1, 2}));
+    const QPoint from = tab.stepBox(2);
+    const QPoint onto(tab.transitionBar(2).x(), from.y());
+    tab.drag(from, onto);
+    QCOMPARE(leaving(document, "F2", 1), steps({2, 1}));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Move the branch of step 2 right in F2"));
+    // Dropped back where it stands: nothing moves.
+    tab.drag(tab.stepBox(2), tab.stepBox(2) + QPoint(12, 0));
+    QCOMPARE(leaving(document, "F2", 1), steps({2, 1}));
+    QCOMPARE(document.undoStack()->count(), 1);
+}
+
+void TestGrafcetMouse::stepOnNoBranchSaysSo()
+{
+    Document document(drillingCell());
+    Tab tab(document, QStringLiteral("F3"));
+    QVERIFY(QTest::qWaitForWindowExposed(tab.view.get()));
+    const core::Grafcet before = *document.model().grafcet("F3");
+    QSignalSpy refusals(&document, &Document::editFailed);
+    tab.drag(tab.stepBox(2), tab.stepBox(2) + QPoint(60, 0));
+    QCOMPARE(refusals.count(), 1);
+    QCOMPARE(refusals.front().front().toString(),
+             QStringLiteral("Step 2 is on no branch of a divergence: there is no branch to move"));
+    QVERIFY(document.model().grafcet("F3")->sameContent(before));
+    QCOMPARE(document.undoStack()->count(), 0);
 }
 
 void TestGrafcetMouse::clicksStillSelect()
