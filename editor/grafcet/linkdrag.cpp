@@ -14,6 +14,7 @@
 #include <QApplication>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QPainterPath>
 #include <QToolTip>
 
 #include <memory>
@@ -171,8 +172,10 @@ void LinkDrag::drop(const QMouseEvent& event)
 {
     const QPoint pos = event.position().toPoint();
     const std::optional<GrafcetLinkEnd> target = elementAt(pos);
-    if (!target)
-        return; // dropped on the background: nothing meant
+    if (!target) { // dropped on the background: nothing meant
+        QToolTip::hideText();
+        return;
+    }
     if (const core::Status status = check(*target); !status)
         refuse(refusalText(status, *m_source, *target), event.globalPosition().toPoint());
     else
@@ -285,10 +288,14 @@ void LinkDrag::clickElement(GrafcetLinkEnd end, Qt::KeyboardModifiers modifiers)
 void LinkDrag::selectOnly(GrafcetLinkEnd end)
 {
     QGraphicsItem* item = itemOf(end);
-    if (!item)
+    GrafcetScene& scene = *m_view.grafcetScene();
+    if (!item || scene.selectedItems() == QList<QGraphicsItem*>{item})
         return;
-    m_view.grafcetScene()->clearSelection();
-    item->setSelected(true);
+    // One change of selection, not a clear then a select: each one refreshes
+    // the docks that follow the selection.
+    QPainterPath area;
+    area.addRect(item->sceneBoundingRect().adjusted(-1, -1, 1, 1));
+    scene.setSelectionArea(area, Qt::ReplaceSelection, Qt::ContainsItemBoundingRect);
 }
 
 QString LinkDrag::commandText(GrafcetLinkEnd to) const
