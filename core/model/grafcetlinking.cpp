@@ -67,7 +67,8 @@ Status checkLink(const Grafcet& grafcet, GrafcetLinkEnd from, GrafcetLinkEnd to)
         return checkStepTransition(grafcet, from.number, to.number, true);
     if (to.isStep())
         return checkStepTransition(grafcet, to.number, from.number, false);
-    return refuse(kLinkTransitionToTransition, "a transition cannot follow a transition: steps and transitions alternate");
+    return refuse(kLinkTransitionToTransition,
+                  "a transition cannot follow a transition: steps and transitions alternate");
 }
 
 Status link(Grafcet& grafcet, GrafcetLinkEnd from, GrafcetLinkEnd to, GrafcetCreated* created)

@@ -146,7 +146,8 @@ void BranchDrag::moveBranch()
     core::BranchPlace place;
     if (!grafcet || !core::findBranch(*grafcet, m_step, place)) {
         // The status bar shows what Document::editFailed reports.
-        emit m_document.editFailed(tr("Step %1 is on no branch of a divergence: there is no branch to move").arg(m_step));
+        emit m_document.editFailed(
+            tr("Step %1 is on no branch of a divergence: there is no branch to move").arg(m_step));
         return;
     }
     if (m_offset == 0)

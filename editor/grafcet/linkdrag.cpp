@@ -12,6 +12,7 @@
 #include "core/model/model.h"
 
 #include <QApplication>
+#include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -88,6 +89,8 @@ bool LinkDrag::eventFilter(QObject*, QEvent* event)
         return onMove(static_cast<const QMouseEvent&>(*event));
     case QEvent::MouseButtonRelease:
         return onRelease(static_cast<const QMouseEvent&>(*event));
+    case QEvent::ToolTip:
+        return explainHandle(static_cast<const QHelpEvent&>(*event));
     case QEvent::Leave:
         if (!m_source && m_handle) {
             m_handle.reset();
@@ -136,6 +139,15 @@ bool LinkDrag::onRelease(const QMouseEvent& event)
     else
         clickElement(*m_source, event.modifiers());
     finish();
+    return true;
+}
+
+// What a first-time user needs to know of the circle under the cursor.
+bool LinkDrag::explainHandle(const QHelpEvent& event)
+{
+    if (!canEdit() || !handleAt(event.pos()))
+        return false;
+    QToolTip::showText(event.globalPos(), tr("Drag onto a step or a transition to link them"), m_view.viewport());
     return true;
 }
 
@@ -208,7 +220,8 @@ QGraphicsItem* LinkDrag::itemOf(GrafcetLinkEnd end) const
 
 std::optional<GrafcetLinkEnd> LinkDrag::elementAt(QPoint pos) const
 {
-    const QRect reach(pos - QPoint(kTargetReachPx, kTargetReachPx), QSize(2 * kTargetReachPx + 1, 2 * kTargetReachPx + 1));
+    const QRect reach(pos - QPoint(kTargetReachPx, kTargetReachPx),
+                      QSize(2 * kTargetReachPx + 1, 2 * kTargetReachPx + 1));
     const QList<QGraphicsItem*> under = m_view.items(pos) + m_view.items(reach);
     for (QGraphicsItem* item : under) {
         for (; item; item = item->parentItem()) {

@@ -2,7 +2,8 @@
 
 // Linking with the mouse in a GRAFCET tab, as in the web GRAFCET editors:
 // hovering a step shows a small circle, its connection handle, at the
-// bottom of its box; hovering a transition, one under its bar. A drag that
+// bottom of its box; hovering a transition, one under its bar; the
+// handle's tooltip says what it is for. A drag that
 // starts on a handle draws a rubber line to the cursor and highlights the
 // step or transition under it (green when the link can be made, red with
 // the reason as tooltip when not); dropping there makes the link as
@@ -25,6 +26,7 @@
 #include <optional>
 
 class QGraphicsItem;
+class QHelpEvent;
 class QMouseEvent;
 
 namespace editor {
@@ -59,6 +61,7 @@ private:
     bool onPress(const QMouseEvent& event);
     bool onMove(const QMouseEvent& event);
     bool onRelease(const QMouseEvent& event);
+    bool explainHandle(const QHelpEvent& event);
     void hover(QPoint pos);
     void dragTo(const QMouseEvent& event);
     void drop(const QMouseEvent& event);

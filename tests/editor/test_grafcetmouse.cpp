@@ -19,6 +19,8 @@
 #include "core/formats/modelfiles.h"
 #include "core/model/grafcetediting.h"
 
+#include <QApplication>
+#include <QHelpEvent>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -178,6 +180,14 @@ void TestGrafcetMouse::dragHighlightsTheTarget()
     QTest::mouseMove(tab.viewport(), tab.stepBox(4));
     QCOMPARE(tab.links->handleShown(), core::GrafcetLinkEnd::step(4));
     const QPoint from = tab.stepHandle(4);
+    // The handle's tooltip says what it does (shown here without activating
+    // the window, whose deactivation when the tip shows would hide it).
+    tab.view->setAttribute(Qt::WA_AlwaysShowToolTips);
+    QToolTip::hideText();
+    QTRY_VERIFY(!QToolTip::isVisible());
+    QHelpEvent help(QEvent::ToolTip, from, tab.viewport()->mapToGlobal(from));
+    QApplication::sendEvent(tab.viewport(), &help);
+    QCOMPARE(QToolTip::text(), QStringLiteral("Drag onto a step or a transition to link them"));
     QTest::mousePress(tab.viewport(), Qt::LeftButton, {}, from);
     QTest::mouseMove(tab.viewport(), from + QPoint(20, 0));
     QVERIFY(tab.links->isDragging());
