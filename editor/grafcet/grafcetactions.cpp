@@ -2,12 +2,14 @@
 
 #include "editor/commands/editgrafcetcommand.h"
 #include "editor/document.h"
+#include "editor/grafcet/branchdrag.h"
 #include "editor/grafcet/connecttransitiondialog.h"
 #include "editor/grafcet/grafcetclipboard.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
+#include "editor/grafcet/linkdrag.h"
 
 #include "core/model/branchorder.h"
 #include "core/model/model.h"
@@ -82,6 +84,11 @@ GrafcetActions::GrafcetActions(Document& document, GrafcetView& view)
     connect(&m_document, &Document::readOnlyChanged, this, &GrafcetActions::updateActions);
     connect(QGuiApplication::clipboard(), &QClipboard::dataChanged, this, &GrafcetActions::updateActions);
     new LanguageWatcher(&m_view, [this] { retranslate(); });
+    // The mouse: a drag from a connection handle links, one from a step's
+    // body moves its branch. LinkDrag's event filter, installed last, runs
+    // first and keeps the drags from a handle to itself.
+    new BranchDrag(m_document, m_view);
+    new LinkDrag(m_document, m_view);
     updateActions();
 }
 

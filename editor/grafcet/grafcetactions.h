@@ -12,11 +12,12 @@
 //
 // It attaches to a GrafcetView: the view's context menu (on a step, a
 // transition or the background), the keyboard shortcuts inside it (Insert,
-// Shift+Insert, Delete, Alt+Left, Alt+Right, Ctrl+X, Ctrl+C, Ctrl+V) and,
-// while the GRAFCET has no step,
-// a link in the empty view to create the usual shape. The selection it
-// edits is the GrafcetScene's own (its selectable step and transition
-// items). The actions are named (objectName) for tests and scripts.
+// Shift+Insert, Delete, Alt+Left, Alt+Right, Ctrl+X, Ctrl+C, Ctrl+V),
+// linking and moving branches with the mouse (LinkDrag, BranchDrag) and,
+// while the GRAFCET has no step, a link in the empty view to create the
+// usual shape. The selection it edits is the GrafcetScene's own (its
+// selectable step and transition items). The actions are named
+// (objectName) for tests and scripts.
 
 #include "core/model/grafcetediting.h"
 

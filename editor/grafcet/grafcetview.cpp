@@ -101,6 +101,14 @@ void GrafcetView::showEvent(QShowEvent* event)
     verticalScrollBar()->setValue(verticalScrollBar()->minimum());
 }
 
+void GrafcetView::drawForeground(QPainter* painter, const QRectF& rect)
+{
+    QGraphicsView::drawForeground(painter, rect);
+    for (const QPointer<GrafcetViewOverlay>& overlay : std::as_const(m_overlays))
+        if (overlay)
+            overlay->paintOverlay(painter);
+}
+
 void GrafcetView::wheelEvent(QWheelEvent* event)
 {
     if (!(event->modifiers() & Qt::ControlModifier)) {

@@ -1,12 +1,25 @@
 #pragma once
 
 #include <QGraphicsView>
+#include <QList>
+#include <QPointer>
 
 #include <optional>
 
 namespace editor {
 
 class GrafcetScene;
+
+// What a mouse gesture draws over the drawing while it lasts (a rubber
+// line, a highlighted target), in scene coordinates: no scene item, which
+// the scene's rebuild after every edit would delete.
+class GrafcetViewOverlay : public QObject {
+    Q_OBJECT
+
+public:
+    using QObject::QObject;
+    virtual void paintOverlay(QPainter* painter) const = 0;
+};
 
 // A nested GRAFCET in a tab beside the GEMMA chart, at its actual size (its
 // text at the chart's label size) and scrolled when taller than the tab:
@@ -33,7 +46,12 @@ public slots:
 signals:
     void zoomChanged(double zoom);
 
+public:
+    // Painted over the drawing, in the order added, for as long as it lives.
+    void addOverlay(GrafcetViewOverlay* overlay) { m_overlays.append(overlay); }
+
 protected:
+    void drawForeground(QPainter* painter, const QRectF& rect) override;
     void wheelEvent(QWheelEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
@@ -53,6 +71,7 @@ private:
     bool m_atTop = true;
     // Where the middle button was last seen while it pans; null otherwise.
     std::optional<QPoint> m_panFrom;
+    QList<QPointer<GrafcetViewOverlay>> m_overlays;
 };
 
 } // namespace editor

@@ -9,6 +9,8 @@
 //    16 ms timer tick runs, the chart marks and Simulation dock refresh,
 //    and the repaint of the chart and the dock;
 //  - opening the tab of a 60-step nested GRAFCET, until it is painted;
+//  - linking two steps of the drilling cell's F1 by mouse (a drag from a
+//    step's handle to another step), until the tab is repainted;
 //  - the cold start to the first shown chart against a bare Qt window
 //    (tests/bench/startupprobe.cpp), both started here alternately, on the
 //    platform this process runs on.
@@ -18,11 +20,13 @@
 
 #include <catch2/catch.hpp>
 
+#include "benchrepeats.h"
 #include "catchsession.h"
 #include "modelfactory.h"
 
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
+#include "editor/chart/layoutconversion.h"
 #include "editor/chart/transitionitem.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/grafcettransitiondock.h"
@@ -31,8 +35,10 @@
 #include "editor/docks/transitiondock.h"
 #include "editor/document.h"
 #include "editor/grafcet/grafcetscene.h"
+#include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
+#include "editor/grafcet/linkdrag.h"
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
@@ -55,11 +61,14 @@
 #include <QTextCursor>
 #include <QTreeWidget>
 #include <QTreeWidgetItemIterator>
+#include <QUndoStack>
 
 #include <algorithm>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <iterator>
+#include <numeric>
 #include <vector>
 
 namespace {
@@ -83,6 +92,14 @@ bool problemsMention(const editor::ProblemsDock& dock, const QString& word)
             return true;
     }
     return false;
+}
+
+// The CPU time this thread has used, in milliseconds.
+double threadCpuMs()
+{
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) * 1e3 + static_cast<double>(now.tv_nsec) / 1e6;
 }
 
 // Processes events until `shown` holds; false after 5 s.
@@ -440,6 +457,84 @@ TEST_CASE("opening the tab of a 60-step GRAFCET", "[editorbench]")
     std::sort(openings.begin(), openings.end());
     std::printf("\nopening the tab of a 60-step GRAFCET until painted, 30 openings: median %.2f ms, max %.2f ms\n",
                 median(openings), openings.back());
+    std::fflush(stdout);
+}
+
+TEST_CASE("linking two steps by mouse until the tab is repainted", "[editorbench]")
+{
+    editor::Translators translators;
+    REQUIRE(translators.setLanguage(QStringLiteral("en")));
+    editor::MainWindow window{translators};
+    window.resize(1366, 768);
+    window.show();
+    REQUIRE(QTest::qWaitForWindowExposed(&window));
+    QAction* drillingCell = window.findChild<QAction*>(QStringLiteral("example_0"));
+    REQUIRE(drillingCell);
+    drillingCell->trigger();
+    const QString f1 = QStringLiteral("F1");
+    REQUIRE(window.openNestedGrafcet(f1));
+    editor::GrafcetView* view = window.grafcetView(f1);
+    editor::GrafcetScene* scene = view->grafcetScene();
+    QWidget* viewport = view->viewport();
+    QUndoStack* undo = window.document()->undoStack();
+    QTest::qWait(50);
+
+    // Step 6 (the end of the drilling branch) to step 1: a new jump, T9.
+    constexpr int kFrom = 6;
+    constexpr int kTo = 1;
+    constexpr int kNewTransition = 9;
+    const auto linkAndRepaint = [&] {
+        view->ensureVisible(scene->stepItem(kFrom));
+        const QPoint handle = view->mapFromScene(editor::LinkDrag::handlePosition(*scene->stepItem(kFrom)));
+        QTest::mousePress(viewport, Qt::LeftButton, {}, handle);
+        view->ensureVisible(scene->stepItem(kTo));
+        const QPoint target = view->mapFromScene(editor::toQRectF(scene->stepItem(kTo)->layout().box).center());
+        QTest::mouseMove(viewport, target);
+        QTest::mouseRelease(viewport, Qt::LeftButton, {}, target);
+        const bool linked = waitFor([&] { return scene->transitionItem(kNewTransition) != nullptr; });
+        QCoreApplication::processEvents(); // what the edit queued: the checks' results, the docks
+        viewport->repaint();
+        return linked;
+    };
+    const auto undoAndRepaint = [&] {
+        undo->undo();
+        const bool unlinked = waitFor([&] { return scene->transitionItem(kNewTransition) == nullptr; });
+        QCoreApplication::processEvents();
+        viewport->repaint();
+        return unlinked;
+    };
+    REQUIRE(!scene->transitionItem(kNewTransition));
+    REQUIRE(linkAndRepaint());
+    REQUIRE(undoAndRepaint());
+
+    // Catch's mean includes the undo that puts the drawing back for the next link.
+    bool allDone = true;
+    BENCHMARK("link two steps by mouse and repaint, then undo and repaint")
+    {
+        allDone = linkAndRepaint() && undoAndRepaint() && allDone;
+    };
+    CHECK(allDone);
+
+    // The main thread's CPU time beside the wall time: on a loaded machine
+    // the wall time also counts the waits for a core.
+    std::vector<double> links;
+    std::vector<double> cpu;
+    const int timedLinks = benchRepeats(60);
+    for (int i = 0; i < timedLinks; ++i) {
+        QElapsedTimer timer;
+        const double cpuBefore = threadCpuMs();
+        timer.start();
+        REQUIRE(linkAndRepaint());
+        links.push_back(static_cast<double>(timer.nsecsElapsed()) / 1e6);
+        cpu.push_back(threadCpuMs() - cpuBefore);
+        REQUIRE(undoAndRepaint());
+    }
+    const auto mean = [](const std::vector<double>& values) {
+        return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+    };
+    std::printf("\nlinking two steps by mouse until the tab is repainted (drilling cell F1), %d links: "
+                "mean %.2f ms, median %.2f ms, max %.2f ms; main thread's CPU time mean %.2f ms, median %.2f ms\n",
+                timedLinks, mean(links), median(links), *std::max_element(links.begin(), links.end()), mean(cpu), median(cpu));
     std::fflush(stdout);
 }
 
