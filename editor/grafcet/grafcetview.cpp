@@ -98,6 +98,9 @@ void GrafcetView::showEvent(QShowEvent* event)
     QGraphicsView::showEvent(event);
     if (std::exchange(m_shown, true))
         return;
+    // Its left too: a drawing wider than the tab would open scrolled to its
+    // middle, the initial step and the way back cut off.
+    horizontalScrollBar()->setValue(horizontalScrollBar()->minimum());
     verticalScrollBar()->setValue(verticalScrollBar()->minimum());
 }
 

@@ -57,7 +57,7 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     bool viewportEvent(QEvent* event) override;
-    // The first time: at the top of the drawing, where its initial step is.
+    // The first time: at the top left of the drawing, where its initial step is.
     void showEvent(QShowEvent* event) override;
 
 private:

@@ -1,7 +1,8 @@
 // The case study's nested GRAFCETs (spec grafcet-layer.md §6) drawn with the
 // structured editing operations only, as a user draws them, each compared
 // with its figure: structure, branch order, and the drawing's shape (F2 as
-// /work/shared/reference/f2-nested-grafcet.png draws it).
+// the case study's Figure 3, "Nested behaviour of the starting procedure F2
+// mode", draws it: Castillo, Barbieri et al., Machines 2021).
 
 #include "core/layout/grafcetlayout.h"
 #include "core/model/branchorder.h"

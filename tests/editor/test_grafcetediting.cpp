@@ -29,6 +29,7 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
@@ -112,6 +113,7 @@ private slots:
     void moveBranchWithTheKeyboard();
     void connectDirectlySaysWhyOkIsDisabled();
     void aLongerReceptivityDoesNotShiftTheDrawing();
+    void aWideDrawingOpensAtItsLeft();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -533,6 +535,31 @@ void TestGrafcetEditing::aLongerReceptivityDoesNotShiftTheDrawing()
     QCOMPARE(stepOnScreen(), before);
     QVERIFY(setReceptivity("a"));
     QCOMPARE(stepOnScreen(), before);
+}
+
+// A drawing wider than its tab opens at its top left, where the initial
+// step and the way back are, not scrolled to its middle.
+void TestGrafcetEditing::aWideDrawingOpensAtItsLeft()
+{
+    Document document(drillingCell());
+    QVERIFY(document.push(new EditGrafcetCommand(
+        document, QStringLiteral("F3"),
+        [](core::Grafcet& g) {
+            for (int branch = 0; branch < 6; ++branch)
+                if (core::Status status = core::addBranchEndingOnStep(g, 1); !status)
+                    return status;
+            return core::Status::success();
+        },
+        QStringLiteral("Add branches"))));
+    Tab tab(document, QStringLiteral("F3"));
+    tab.view->resize(300, 400);
+    tab.view->show();
+    QVERIFY(QTest::qWaitForWindowExposed(tab.view.get()));
+    QScrollBar* bar = tab.view->horizontalScrollBar();
+    QVERIFY(bar->maximum() > bar->minimum()); // wider than the tab
+    QCOMPARE(bar->value(), bar->minimum());
+    const QRect initialStep = tab.view->mapFromScene(tab.scene->stepItem(1)->sceneBoundingRect()).boundingRect();
+    QVERIFY(tab.view->viewport()->rect().contains(initialStep));
 }
 
 QTEST_MAIN(TestGrafcetEditing)
