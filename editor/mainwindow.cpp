@@ -6,6 +6,7 @@
 #include "editor/chart/chartview.h"
 #include "editor/commands/resetmodelcommand.h"
 #include "editor/commands/setelementshiddencommand.h"
+#include "editor/commands/undohistorywording.h"
 #include "editor/docks/grafcetstepdock.h"
 #include "editor/docks/grafcettransitiondock.h"
 #include "editor/docks/problemsdock.h"
@@ -880,7 +881,9 @@ void MainWindow::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) {
         // The docks retranslate themselves (the event goes on to them); the
-        // chart paints its frame titles in the current language.
+        // chart paints its frame titles in the current language; the undo
+        // history is worded again before the Edit menu shows its last entry.
+        rewordUndoHistory(m_document->undoStack());
         retranslate();
         m_scene->update();
     }

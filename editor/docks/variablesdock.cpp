@@ -4,6 +4,7 @@
 #include "editor/commands/movevariablecommand.h"
 #include "editor/commands/pastevariablescommand.h"
 #include "editor/commands/removevariablecommand.h"
+#include "editor/commands/undohistorywording.h"
 #include "editor/docks/choicedelegate.h"
 #include "editor/docks/dockreveal.h"
 #include "editor/docks/toolicons.h"
@@ -436,7 +437,9 @@ void VariablesDock::removeSelected()
         names << m_model->variableName(row);
     QUndoStack* stack = m_document->undoStack();
     if (names.size() > 1)
-        stack->beginMacro(tr("Remove %n variables", nullptr, static_cast<int>(names.size())));
+        beginWordedMacro(stack, [count = static_cast<int>(names.size())] {
+            return tr("Remove %n variables", nullptr, count);
+        });
     for (const QString& name : std::as_const(names))
         m_document->push(new RemoveVariableCommand(*m_document, name));
     if (names.size() > 1)
@@ -490,7 +493,7 @@ void VariablesDock::sortByName()
             [](const std::string& name, const core::Variable& variable) { return name == variable.name; }))
         return;
     QUndoStack* stack = m_document->undoStack();
-    stack->beginMacro(tr("Sort variables by name"));
+    beginWordedMacro(stack, [] { return tr("Sort variables by name"); });
     for (std::size_t i = 0; i < names.size(); ++i) {
         if (m_document->model().variableIndex(names[i]) != static_cast<int>(i))
             m_document->push(new MoveVariableCommand(*m_document, fromStd(names[i]), static_cast<int>(i)));
