@@ -1277,28 +1277,67 @@ void MainWindow::onSimulationActiveChanged(bool active)
     giveSimulationTheColumn(active);
 }
 
+// While simulating, the Variables and Problems docks are greyed: when they
+// share the column below the Simulation dock (the default layout), they are
+// hidden, so that the inputs, outputs, explanation and trace get the height,
+// and a dock left in their group (Structured Text) keeps its minimum. They
+// come back as they were when the simulation ends. A layout the user made
+// (floating, side by side, tabbed with Simulation) is left as it is.
 void MainWindow::giveSimulationTheColumn(bool simulating)
 {
     if (!docksReady())
         return;
-    // Only when the two share the column, one above the other (the default
-    // layout); a layout the user made is left as it is.
-    const Qt::DockWidgetArea area = dockWidgetArea(m_simulationDock);
-    const bool stacked = !m_simulationDock->isFloating() && !m_variablesDock->isFloating()
-                      && area == dockWidgetArea(m_variablesDock) && area != Qt::NoDockWidgetArea
-                      && !tabifiedDockWidgets(m_simulationDock).contains(m_variablesDock)
-                      && m_simulationDock->isVisible() && m_variablesDock->isVisible()
-                      && m_simulationDock->x() == m_variablesDock->x();
-    const QList<QDockWidget*> column{m_simulationDock, m_variablesDock};
-    if (simulating && stacked) {
-        m_columnBeforeSimulation = {m_simulationDock->height(), m_variablesDock->height()};
-        const int total = m_columnBeforeSimulation[0] + m_columnBeforeSimulation[1];
-        resizeDocks(column, {total * 3 / 4, total - total * 3 / 4}, Qt::Vertical);
-    } else if (!simulating && stacked && !m_columnBeforeSimulation.isEmpty()) {
-        resizeDocks(column, m_columnBeforeSimulation, Qt::Vertical);
+    if (!simulating) {
+        bringBackLockedDocks();
+        return;
     }
-    if (!simulating)
-        m_columnBeforeSimulation.clear();
+    const Qt::DockWidgetArea area = dockWidgetArea(m_simulationDock);
+    const auto belowSimulation = [this, area](QDockWidget* dock) {
+        return dock->toggleViewAction()->isChecked() && !dock->isFloating() && !m_simulationDock->isFloating()
+            && area != Qt::NoDockWidgetArea && dockWidgetArea(dock) == area
+            && !tabifiedDockWidgets(m_simulationDock).contains(dock);
+    };
+    QDockWidget* lowerFront = nullptr;
+    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_variablesDock), static_cast<QDockWidget*>(m_problemsDock),
+                              static_cast<QDockWidget*>(m_stPreviewDock)}) {
+        if (dock->isVisible() && belowSimulation(dock) && dock->x() == m_simulationDock->x())
+            lowerFront = dock;
+    }
+    if (!lowerFront || !m_simulationDock->isVisible())
+        return;
+    m_lowerFrontBeforeSimulation = lowerFront;
+    m_columnBeforeSimulation = {m_simulationDock->height(), lowerFront->height()};
+    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_variablesDock), static_cast<QDockWidget*>(m_problemsDock)}) {
+        if (belowSimulation(dock)) {
+            m_setAsideForSimulation << dock;
+            dock->hide();
+        }
+    }
+    // Once the layout has put the dock left below in their place.
+    if (belowSimulation(m_stPreviewDock)) {
+        QMetaObject::invokeMethod(
+            this,
+            [this, total = m_columnBeforeSimulation[0] + m_columnBeforeSimulation[1]] {
+                if (m_session->isActive() && m_stPreviewDock->isVisible())
+                    resizeDocks({m_simulationDock, m_stPreviewDock}, {total, 1}, Qt::Vertical);
+            },
+            Qt::QueuedConnection);
+    }
+}
+
+void MainWindow::bringBackLockedDocks()
+{
+    for (QDockWidget* dock : std::as_const(m_setAsideForSimulation)) {
+        if (dock)
+            dock->show();
+    }
+    if (m_lowerFrontBeforeSimulation && m_columnBeforeSimulation.size() == 2) {
+        m_lowerFrontBeforeSimulation->raise();
+        resizeDocks({m_simulationDock, m_lowerFrontBeforeSimulation}, m_columnBeforeSimulation, Qt::Vertical);
+    }
+    m_setAsideForSimulation.clear();
+    m_lowerFrontBeforeSimulation = nullptr;
+    m_columnBeforeSimulation.clear();
 }
 
 void MainWindow::verify()
@@ -1391,6 +1430,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         return;
     }
     rememberGrafcetTabs();
+    bringBackLockedDocks(); // the layout saved is the one without simulation
     saveLayout();
     // Quit ends the long work at once: the simulation stops scanning and
     // the verification's worker is cancelled and joined, so the process
