@@ -1278,11 +1278,11 @@ void MainWindow::onSimulationActiveChanged(bool active)
 }
 
 // While simulating, the Variables and Problems docks are greyed: when they
-// share the column below the Simulation dock (the default layout), they are
-// hidden, so that the inputs, outputs, explanation and trace get the height,
-// and a dock left in their group (Structured Text) keeps its minimum. They
-// come back as they were when the simulation ends. A layout the user made
-// (floating, side by side, tabbed with Simulation) is left as it is.
+// share the column below the Simulation dock (the default layout), they and
+// the Structured Text dock of their group are hidden, so that the inputs,
+// outputs, explanation and trace get the column's height. They come back as
+// they were when the simulation ends. A layout the user made (floating,
+// side by side, tabbed with Simulation) is left as it is.
 void MainWindow::giveSimulationTheColumn(bool simulating)
 {
     if (!docksReady())
@@ -1298,8 +1298,8 @@ void MainWindow::giveSimulationTheColumn(bool simulating)
             && !tabifiedDockWidgets(m_simulationDock).contains(dock);
     };
     QDockWidget* lowerFront = nullptr;
-    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_variablesDock), static_cast<QDockWidget*>(m_problemsDock),
-                              static_cast<QDockWidget*>(m_stPreviewDock)}) {
+    const QList<QDockWidget*> lowerDocks{m_variablesDock, m_problemsDock, m_stPreviewDock};
+    for (QDockWidget* dock : lowerDocks) {
         if (dock->isVisible() && belowSimulation(dock) && dock->x() == m_simulationDock->x())
             lowerFront = dock;
     }
@@ -1307,21 +1307,11 @@ void MainWindow::giveSimulationTheColumn(bool simulating)
         return;
     m_lowerFrontBeforeSimulation = lowerFront;
     m_columnBeforeSimulation = {m_simulationDock->height(), lowerFront->height()};
-    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_variablesDock), static_cast<QDockWidget*>(m_problemsDock)}) {
+    for (QDockWidget* dock : lowerDocks) {
         if (belowSimulation(dock)) {
             m_setAsideForSimulation << dock;
             dock->hide();
         }
-    }
-    // Once the layout has put the dock left below in their place.
-    if (belowSimulation(m_stPreviewDock)) {
-        QMetaObject::invokeMethod(
-            this,
-            [this, total = m_columnBeforeSimulation[0] + m_columnBeforeSimulation[1]] {
-                if (m_session->isActive() && m_stPreviewDock->isVisible())
-                    resizeDocks({m_simulationDock, m_stPreviewDock}, {total, 1}, Qt::Vertical);
-            },
-            Qt::QueuedConnection);
     }
 }
 
