@@ -6,6 +6,7 @@
 #include "editor/chart/chartview.h"
 #include "editor/commands/resetmodelcommand.h"
 #include "editor/commands/setelementshiddencommand.h"
+#include "editor/commands/undohistorywording.h"
 #include "editor/docks/grafcetstepdock.h"
 #include "editor/docks/grafcettransitiondock.h"
 #include "editor/docks/problemsdock.h"
@@ -887,7 +888,9 @@ void MainWindow::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) {
         // The docks retranslate themselves (the event goes on to them); the
-        // chart paints its frame titles in the current language.
+        // chart paints its frame titles in the current language; the undo
+        // history is worded again before the Edit menu shows its last entry.
+        rewordUndoHistory(m_document->undoStack());
         retranslate();
         m_scene->update();
     }
@@ -1281,28 +1284,57 @@ void MainWindow::onSimulationActiveChanged(bool active)
     giveSimulationTheColumn(active);
 }
 
+// While simulating, the Variables and Problems docks are greyed: when they
+// share the column below the Simulation dock (the default layout), they and
+// the Structured Text dock of their group are hidden, so that the inputs,
+// outputs, explanation and trace get the column's height. They come back as
+// they were when the simulation ends. A layout the user made (floating,
+// side by side, tabbed with Simulation) is left as it is.
 void MainWindow::giveSimulationTheColumn(bool simulating)
 {
     if (!docksReady())
         return;
-    // Only when the two share the column, one above the other (the default
-    // layout); a layout the user made is left as it is.
-    const Qt::DockWidgetArea area = dockWidgetArea(m_simulationDock);
-    const bool stacked = !m_simulationDock->isFloating() && !m_variablesDock->isFloating()
-                      && area == dockWidgetArea(m_variablesDock) && area != Qt::NoDockWidgetArea
-                      && !tabifiedDockWidgets(m_simulationDock).contains(m_variablesDock)
-                      && m_simulationDock->isVisible() && m_variablesDock->isVisible()
-                      && m_simulationDock->x() == m_variablesDock->x();
-    const QList<QDockWidget*> column{m_simulationDock, m_variablesDock};
-    if (simulating && stacked) {
-        m_columnBeforeSimulation = {m_simulationDock->height(), m_variablesDock->height()};
-        const int total = m_columnBeforeSimulation[0] + m_columnBeforeSimulation[1];
-        resizeDocks(column, {total * 3 / 4, total - total * 3 / 4}, Qt::Vertical);
-    } else if (!simulating && stacked && !m_columnBeforeSimulation.isEmpty()) {
-        resizeDocks(column, m_columnBeforeSimulation, Qt::Vertical);
+    if (!simulating) {
+        bringBackLockedDocks();
+        return;
     }
-    if (!simulating)
-        m_columnBeforeSimulation.clear();
+    const Qt::DockWidgetArea area = dockWidgetArea(m_simulationDock);
+    const auto belowSimulation = [this, area](QDockWidget* dock) {
+        return dock->toggleViewAction()->isChecked() && !dock->isFloating() && !m_simulationDock->isFloating()
+            && area != Qt::NoDockWidgetArea && dockWidgetArea(dock) == area
+            && !tabifiedDockWidgets(m_simulationDock).contains(dock);
+    };
+    QDockWidget* lowerFront = nullptr;
+    const QList<QDockWidget*> lowerDocks{m_variablesDock, m_problemsDock, m_stPreviewDock};
+    for (QDockWidget* dock : lowerDocks) {
+        if (dock->isVisible() && belowSimulation(dock) && dock->x() == m_simulationDock->x())
+            lowerFront = dock;
+    }
+    if (!lowerFront || !m_simulationDock->isVisible())
+        return;
+    m_lowerFrontBeforeSimulation = lowerFront;
+    m_columnBeforeSimulation = {m_simulationDock->height(), lowerFront->height()};
+    for (QDockWidget* dock : lowerDocks) {
+        if (belowSimulation(dock)) {
+            m_setAsideForSimulation << dock;
+            dock->hide();
+        }
+    }
+}
+
+void MainWindow::bringBackLockedDocks()
+{
+    for (QDockWidget* dock : std::as_const(m_setAsideForSimulation)) {
+        if (dock)
+            dock->show();
+    }
+    if (m_lowerFrontBeforeSimulation && m_columnBeforeSimulation.size() == 2) {
+        m_lowerFrontBeforeSimulation->raise();
+        resizeDocks({m_simulationDock, m_lowerFrontBeforeSimulation}, m_columnBeforeSimulation, Qt::Vertical);
+    }
+    m_setAsideForSimulation.clear();
+    m_lowerFrontBeforeSimulation = nullptr;
+    m_columnBeforeSimulation.clear();
 }
 
 void MainWindow::verify()
@@ -1395,6 +1427,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         return;
     }
     rememberGrafcetTabs();
+    bringBackLockedDocks(); // the layout saved is the one without simulation
     saveLayout();
     // Quit ends the long work at once: the simulation stops scanning and
     // the verification's worker is cancelled and joined, so the process

@@ -6,6 +6,7 @@
 #include "core/model/model.h"
 
 #include <QMainWindow>
+#include <QPointer>
 
 #include <memory>
 
@@ -163,6 +164,7 @@ private:
     // While simulating, the Simulation dock takes most of the dock column
     // from the docks below it (locked then), and gives it back at the end.
     void giveSimulationTheColumn(bool simulating);
+    void bringBackLockedDocks();
     void closeGrafcetTab(int index);
     // After a new model: the tabs of steps that have no GRAFCET any more close.
     void closeStaleGrafcetTabs();
@@ -209,6 +211,8 @@ private:
     SimulationChartMarks* m_chartMarks = nullptr;
     SimulationDock* m_simulationDock = nullptr;
     QList<int> m_columnBeforeSimulation; // the Simulation dock's and the lower docks' heights
+    QList<QPointer<QDockWidget>> m_setAsideForSimulation; // hidden while the simulation has their room
+    QPointer<QDockWidget> m_lowerFrontBeforeSimulation;
     StatusBadge* m_simulationIndicator = nullptr;
     VerificationRunner* m_verification = nullptr;
     // The GEMMA step whose nested GRAFCET the counterexample being replayed

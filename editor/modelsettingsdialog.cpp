@@ -4,6 +4,7 @@
 #include "editor/commands/setdialectcommand.h"
 #include "editor/commands/setevolutionrulecommand.h"
 #include "editor/commands/setmodelnamecommand.h"
+#include "editor/commands/undohistorywording.h"
 #include "editor/document.h"
 #include "editor/exportoptionsdialog.h"
 #include "editor/secondarytext.h"
@@ -128,7 +129,7 @@ void ModelSettingsDialog::apply()
     // One undo step for the whole dialog.
     QUndoStack* stack = m_document.undoStack();
     if (commands.size() > 1)
-        stack->beginMacro(tr("Change model settings"));
+        beginWordedMacro(stack, [] { return tr("Change model settings"); });
     for (QUndoCommand* command : commands)
         m_document.push(command);
     if (commands.size() > 1)

@@ -8,10 +8,10 @@
 
 namespace editor {
 
-AddGrafcetActionCommand::AddGrafcetActionCommand(Document& document, const QString& stepId, int step, int index,
-                                                 core::GrafcetAction action)
+AddGrafcetActionCommand::AddGrafcetActionCommand(
+    Document& document, const QString& stepId, int step, int index, core::GrafcetAction action)
     //: %1 is the action's place in the list (from 1), %2 the GEMMA step, %3 the nested step number
-    : ModelCommand(document, tr("Add action %1 to %2 step %3").arg(index + 1).arg(stepId).arg(step))
+    : ModelCommand(document, [=] { return tr("Add action %1 to %2 step %3").arg(index + 1).arg(stepId).arg(step); })
     , m_stepId(toStdString(stepId))
     , m_step(step)
     , m_index(index)

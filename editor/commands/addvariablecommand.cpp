@@ -7,7 +7,7 @@
 namespace editor {
 
 AddVariableCommand::AddVariableCommand(Document& document, core::Variable variable, int index)
-    : ModelCommand(document, tr("Add variable %1").arg(toQString(variable.name)))
+    : ModelCommand(document, [=] { return tr("Add variable %1").arg(toQString(variable.name)); })
     , m_variable(std::move(variable))
     , m_index(index)
 {

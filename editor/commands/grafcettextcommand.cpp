@@ -1,10 +1,12 @@
 #include "editor/commands/grafcettextcommand.h"
 
+#include <utility>
+
 namespace editor {
 
-GrafcetTextCommand::GrafcetTextCommand(Document& document, const QString& text, const QString& stepId, int number,
-                                       const QString& value)
-    : ModelCommand(document, text)
+GrafcetTextCommand::GrafcetTextCommand(
+    Document& document, Wording wording, const QString& stepId, int number, const QString& value)
+    : ModelCommand(document, std::move(wording))
     , m_stepId(toStdString(stepId))
     , m_number(number)
     , m_value(toStdString(value))

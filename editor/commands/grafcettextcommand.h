@@ -14,8 +14,7 @@ public:
     bool mergeWith(const QUndoCommand* other) override;
 
 protected:
-    GrafcetTextCommand(Document& document, const QString& text, const QString& stepId, int number,
-                       const QString& value);
+    GrafcetTextCommand(Document& document, Wording wording, const QString& stepId, int number, const QString& value);
 
     // The field's value before the first edit; empty when there is no such
     // element (writing then fails and says why).

@@ -4,6 +4,8 @@
 
 #include <QCoreApplication>
 
+#include <utility>
+
 namespace editor {
 
 // Holds the Document's signals back until the operation is complete.
@@ -26,6 +28,19 @@ ModelCommand::ModelCommand(Document& document, const QString& text)
     : QUndoCommand(text)
     , m_document(document)
 {
+}
+
+ModelCommand::ModelCommand(Document& document, Wording wording)
+    : QUndoCommand(wording())
+    , m_document(document)
+    , m_wording(std::move(wording))
+{
+}
+
+void ModelCommand::reword()
+{
+    if (m_wording)
+        setText(m_wording());
 }
 
 core::Model& ModelCommand::model()

@@ -5,6 +5,7 @@
 #include <QUndoCommand>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -35,8 +36,18 @@ public:
     bool applyBeforePush();
     bool hasFailed() const { return m_failed; }
 
+    // Words text() again in the current UI language: the history made before
+    // a language switch reads in the new language (rewordUndoHistory).
+    void reword();
+
 protected:
+    // The text in the current UI language, from the command's own data.
+    using Wording = std::function<QString()>;
+
+    // A text that stays as given, in the language it was made in.
     ModelCommand(Document& document, const QString& text);
+    // A text worded again when the UI language changes.
+    ModelCommand(Document& document, Wording wording);
 
     // Called for every redo; firstRun() is true the first time, when a
     // command captures the previous values it will restore.
@@ -52,6 +63,7 @@ private:
     void fail(const core::Status& status);
 
     Document& m_document;
+    Wording m_wording;
     int m_runs = 0;
     bool m_appliedBeforePush = false;
     bool m_failed = false;

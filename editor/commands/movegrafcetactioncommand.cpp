@@ -20,9 +20,9 @@ QString commandText(const QString& stepId, int step, int from, int to)
 
 } // namespace
 
-MoveGrafcetActionCommand::MoveGrafcetActionCommand(Document& document, const QString& stepId, int step, int from,
-                                                   int to)
-    : ModelCommand(document, commandText(stepId, step, from, to))
+MoveGrafcetActionCommand::MoveGrafcetActionCommand(
+    Document& document, const QString& stepId, int step, int from, int to)
+    : ModelCommand(document, [=] { return commandText(stepId, step, from, to); })
     , m_stepId(toStdString(stepId))
     , m_step(step)
     , m_from(from)

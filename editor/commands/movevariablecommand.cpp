@@ -7,7 +7,7 @@
 namespace editor {
 
 MoveVariableCommand::MoveVariableCommand(Document& document, const QString& name, int index)
-    : ModelCommand(document, tr("Move variable %1").arg(name))
+    : ModelCommand(document, [=] { return tr("Move variable %1").arg(name); })
     , m_name(toStdString(name))
     , m_index(index)
 {

@@ -31,7 +31,7 @@ std::string withoutNumberSuffix(const std::string& name)
 } // namespace
 
 PasteVariablesCommand::PasteVariablesCommand(Document& document, std::vector<core::Variable> variables, int index)
-    : ModelCommand(document, describe(variables))
+    : ModelCommand(document, [=] { return describe(variables); })
     , m_variables(std::move(variables))
     , m_index(index)
 {

@@ -29,7 +29,7 @@ const core::UserProperty* propertyAt(const core::Model& model, const std::string
 } // namespace
 
 AddPropertyCommand::AddPropertyCommand(Document& document, core::UserProperty property, int index)
-    : ModelCommand(document, tr("Add property"))
+    : ModelCommand(document, [=] { return tr("Add property"); })
     , m_property(std::move(property))
     , m_index(index)
 {
@@ -52,7 +52,7 @@ core::Status AddPropertyCommand::revert()
 }
 
 RemovePropertyCommand::RemovePropertyCommand(Document& document, int index)
-    : ModelCommand(document, tr("Remove property %1").arg(index + 1))
+    : ModelCommand(document, [=] { return tr("Remove property %1").arg(index + 1); })
     , m_index(index)
 {
 }
@@ -75,7 +75,7 @@ core::Status RemovePropertyCommand::revert()
 }
 
 MovePropertyCommand::MovePropertyCommand(Document& document, int from, int to)
-    : ModelCommand(document, tr("Move property %1").arg(from + 1))
+    : ModelCommand(document, [=] { return tr("Move property %1").arg(from + 1); })
     , m_from(from)
     , m_to(to)
 {
@@ -97,7 +97,8 @@ core::Status MovePropertyCommand::revert()
 }
 
 SetPropertyTextCommand::SetPropertyTextCommand(Document& document, int index, const QString& text)
-    : TextFieldCommand(document, tr("Edit property %1").arg(index + 1), QString::number(index), text)
+    : TextFieldCommand(
+        document, [=] { return tr("Edit property %1").arg(index + 1); }, QString::number(index), text)
 {
 }
 
@@ -118,7 +119,8 @@ core::Status SetPropertyTextCommand::write(const std::string& element, const std
 }
 
 SetPropertyCommentCommand::SetPropertyCommentCommand(Document& document, int index, const QString& comment)
-    : TextFieldCommand(document, tr("Edit comment of property %1").arg(index + 1), QString::number(index), comment)
+    : TextFieldCommand(
+        document, [=] { return tr("Edit comment of property %1").arg(index + 1); }, QString::number(index), comment)
 {
 }
 

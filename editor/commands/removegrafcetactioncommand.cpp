@@ -6,10 +6,9 @@
 
 namespace editor {
 
-RemoveGrafcetActionCommand::RemoveGrafcetActionCommand(Document& document, const QString& stepId, int step,
-                                                       int index)
+RemoveGrafcetActionCommand::RemoveGrafcetActionCommand(Document& document, const QString& stepId, int step, int index)
     //: %1 is the action's place in the list (from 1), %2 the GEMMA step, %3 the nested step number
-    : ModelCommand(document, tr("Remove action %1 of %2 step %3").arg(index + 1).arg(stepId).arg(step))
+    : ModelCommand(document, [=] { return tr("Remove action %1 of %2 step %3").arg(index + 1).arg(stepId).arg(step); })
     , m_stepId(toStdString(stepId))
     , m_step(step)
     , m_index(index)

@@ -5,7 +5,7 @@
 namespace editor {
 
 RemoveVariableCommand::RemoveVariableCommand(Document& document, const QString& name)
-    : ModelCommand(document, tr("Remove variable %1").arg(name))
+    : ModelCommand(document, [=] { return tr("Remove variable %1").arg(name); })
     , m_name(toStdString(name))
 {
 }

@@ -8,7 +8,7 @@
 namespace editor {
 
 RenameVariableCommand::RenameVariableCommand(Document& document, const QString& oldName, const QString& newName)
-    : ModelCommand(document, tr("Rename variable %1 to %2").arg(oldName, newName))
+    : ModelCommand(document, [=] { return tr("Rename variable %1 to %2").arg(oldName, newName); })
     , m_oldName(toStdString(oldName))
     , m_newName(toStdString(newName))
 {

@@ -6,10 +6,10 @@
 
 namespace editor {
 
-RenumberGrafcetStepCommand::RenumberGrafcetStepCommand(Document& document, const QString& stepId, int step,
-                                                       int newNumber)
+RenumberGrafcetStepCommand::RenumberGrafcetStepCommand(
+    Document& document, const QString& stepId, int step, int newNumber)
     //: %1 is the GEMMA step, %2 a step number of its nested GRAFCET, %3 its new number
-    : ModelCommand(document, tr("Renumber %1 step %2 to %3").arg(stepId).arg(step).arg(newNumber))
+    : ModelCommand(document, [=] { return tr("Renumber %1 step %2 to %3").arg(stepId).arg(step).arg(newNumber); })
     , m_stepId(toStdString(stepId))
     , m_step(step)
     , m_newNumber(newNumber)

@@ -5,7 +5,7 @@
 namespace editor {
 
 ResetModelCommand::ResetModelCommand(Document& document)
-    : ModelCommand(document, tr("Reset to template"))
+    : ModelCommand(document, [=] { return tr("Reset to template"); })
 {
 }
 

@@ -1,13 +1,16 @@
 #include "editor/commands/setconditioncommand.h"
 
 #include "editor/commands/commandids.h"
+#include "editor/docks/elementlabels.h"
 
 #include "core/model/model.h"
 
 namespace editor {
 
 SetConditionCommand::SetConditionCommand(Document& document, const QString& transitionId, const QString& condition)
-    : TextFieldCommand(document, tr("Edit condition of %1").arg(transitionId), transitionId, condition)
+    : TextFieldCommand(
+        document, [=] { return tr("Edit condition of %1").arg(transitionLabel(transitionId)); }, transitionId,
+        condition)
 {
 }
 

@@ -16,7 +16,7 @@ QString describe(int cycleTimeMs)
 } // namespace
 
 SetCycleTimeCommand::SetCycleTimeCommand(Document& document, int cycleTimeMs)
-    : ModelCommand(document, describe(cycleTimeMs))
+    : ModelCommand(document, [=] { return describe(cycleTimeMs); })
     , m_cycleTimeMs(cycleTimeMs)
 {
 }

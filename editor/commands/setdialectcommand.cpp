@@ -14,7 +14,7 @@ QString dialectText(core::Dialect dialect)
 } // namespace
 
 SetDialectCommand::SetDialectCommand(Document& document, core::Dialect dialect)
-    : ModelCommand(document, tr("Set dialect to %1").arg(dialectText(dialect)))
+    : ModelCommand(document, [=] { return tr("Set dialect to %1").arg(dialectText(dialect)); })
     , m_dialect(dialect)
 {
 }

@@ -17,9 +17,8 @@ QString commandText(const QList<ElementRef>& elements, bool hidden)
 
 } // namespace
 
-SetElementsHiddenCommand::SetElementsHiddenCommand(Document& document, const QList<ElementRef>& elements,
-                                                   bool hidden)
-    : ModelCommand(document, commandText(elements, hidden))
+SetElementsHiddenCommand::SetElementsHiddenCommand(Document& document, const QList<ElementRef>& elements, bool hidden)
+    : ModelCommand(document, [=] { return commandText(elements, hidden); })
     , m_elements(elements)
     , m_hidden(hidden)
 {

@@ -16,7 +16,7 @@ QString commandText(core::EvolutionRule rule)
 } // namespace
 
 SetEvolutionRuleCommand::SetEvolutionRuleCommand(Document& document, core::EvolutionRule rule)
-    : ModelCommand(document, commandText(rule))
+    : ModelCommand(document, [=] { return commandText(rule); })
     , m_rule(rule)
 {
 }

@@ -6,10 +6,11 @@
 
 namespace editor {
 
-SetGrafcetStepCommentCommand::SetGrafcetStepCommentCommand(Document& document, const QString& stepId, int step,
-                                                           const QString& comment)
+SetGrafcetStepCommentCommand::SetGrafcetStepCommentCommand(
+    Document& document, const QString& stepId, int step, const QString& comment)
     //: %1 is the GEMMA step, %2 a step number of its nested GRAFCET: "Edit comment of F1 step 3"
-    : GrafcetTextCommand(document, tr("Edit comment of %1 step %2").arg(stepId).arg(step), stepId, step, comment)
+    : GrafcetTextCommand(
+        document, [=] { return tr("Edit comment of %1 step %2").arg(stepId).arg(step); }, stepId, step, comment)
 {
 }
 

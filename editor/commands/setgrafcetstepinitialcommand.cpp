@@ -17,9 +17,9 @@ QString commandText(const QString& stepId, int step, bool initial)
 
 } // namespace
 
-SetGrafcetStepInitialCommand::SetGrafcetStepInitialCommand(Document& document, const QString& stepId, int step,
-                                                           bool initial)
-    : ModelCommand(document, commandText(stepId, step, initial))
+SetGrafcetStepInitialCommand::SetGrafcetStepInitialCommand(
+    Document& document, const QString& stepId, int step, bool initial)
+    : ModelCommand(document, [=] { return commandText(stepId, step, initial); })
     , m_stepId(toStdString(stepId))
     , m_step(step)
     , m_initial(initial)

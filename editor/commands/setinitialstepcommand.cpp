@@ -8,7 +8,7 @@
 namespace editor {
 
 SetInitialStepCommand::SetInitialStepCommand(Document& document, const QString& stepId)
-    : ModelCommand(document, tr("Make %1 the initial step").arg(stepId))
+    : ModelCommand(document, [=] { return tr("Make %1 the initial step").arg(stepId); })
     , m_stepId(toStdString(stepId))
 {
 }

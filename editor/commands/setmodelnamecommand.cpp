@@ -7,7 +7,7 @@
 namespace editor {
 
 SetModelNameCommand::SetModelNameCommand(Document& document, const QString& name)
-    : ModelCommand(document, tr("Rename model"))
+    : ModelCommand(document, [=] { return tr("Rename model"); })
     , m_name(toStdString(name))
 {
 }

@@ -1,14 +1,18 @@
 #include "editor/commands/setnegatedcommand.h"
 
 #include "editor/commands/commandids.h"
+#include "editor/docks/elementlabels.h"
 
 #include "core/model/model.h"
 
 namespace editor {
 
 SetNegatedCommand::SetNegatedCommand(Document& document, const QString& transitionId, bool negated)
-    : ModelCommand(document, negated ? tr("Negate %1").arg(transitionId)
-                                     : tr("Remove negation of %1").arg(transitionId))
+    : ModelCommand(document,
+        [=] {
+            return negated ? tr("Negate %1").arg(transitionLabel(transitionId))
+                           : tr("Remove negation of %1").arg(transitionLabel(transitionId));
+        })
     , m_transitionId(toStdString(transitionId))
     , m_negated(negated)
 {

@@ -1,13 +1,15 @@
 #include "editor/commands/setprioritycommand.h"
 
 #include "editor/commands/commandids.h"
+#include "editor/docks/elementlabels.h"
 
 #include "core/model/model.h"
 
 namespace editor {
 
 SetPriorityCommand::SetPriorityCommand(Document& document, const QString& transitionId, int priority)
-    : ModelCommand(document, tr("Set priority of %1 to %2").arg(transitionId).arg(priority))
+    : ModelCommand(
+        document, [=] { return tr("Set priority of %1 to %2").arg(transitionLabel(transitionId)).arg(priority); })
     , m_transitionId(toStdString(transitionId))
     , m_priority(priority)
 {

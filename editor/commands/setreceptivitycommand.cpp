@@ -6,11 +6,12 @@
 
 namespace editor {
 
-SetReceptivityCommand::SetReceptivityCommand(Document& document, const QString& stepId, int transition,
-                                             const QString& receptivity)
+SetReceptivityCommand::SetReceptivityCommand(
+    Document& document, const QString& stepId, int transition, const QString& receptivity)
     //: %1 is the GEMMA step, %2 the transition number of its nested GRAFCET: "Set receptivity of F1 T3"
-    : GrafcetTextCommand(document, tr("Set receptivity of %1 T%2").arg(stepId).arg(transition), stepId, transition,
-                         receptivity)
+    : GrafcetTextCommand(
+        document, [=] { return tr("Set receptivity of %1 T%2").arg(stepId).arg(transition); }, stepId, transition,
+        receptivity)
 {
 }
 

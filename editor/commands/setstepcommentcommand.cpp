@@ -7,7 +7,8 @@
 namespace editor {
 
 SetStepCommentCommand::SetStepCommentCommand(Document& document, const QString& stepId, const QString& comment)
-    : TextFieldCommand(document, tr("Edit comment of %1").arg(stepId), stepId, comment)
+    : TextFieldCommand(
+        document, [=] { return tr("Edit comment of %1").arg(stepId); }, stepId, comment)
 {
 }
 

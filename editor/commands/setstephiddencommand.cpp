@@ -8,7 +8,7 @@
 namespace editor {
 
 SetStepHiddenCommand::SetStepHiddenCommand(Document& document, const QString& stepId, bool hidden)
-    : ModelCommand(document, hidden ? tr("Hide step %1").arg(stepId) : tr("Show step %1").arg(stepId))
+    : ModelCommand(document, [=] { return hidden ? tr("Hide step %1").arg(stepId) : tr("Show step %1").arg(stepId); })
     , m_stepId(toStdString(stepId))
     , m_hidden(hidden)
 {

@@ -24,7 +24,7 @@ QString typeText(core::StepType type)
 } // namespace
 
 SetStepTypeCommand::SetStepTypeCommand(Document& document, const QString& stepId, core::StepType type)
-    : ModelCommand(document, tr("Set %1 to %2").arg(stepId, typeText(type)))
+    : ModelCommand(document, [=] { return tr("Set %1 to %2").arg(stepId, typeText(type)); })
     , m_stepId(toStdString(stepId))
     , m_type(type)
 {

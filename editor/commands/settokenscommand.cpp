@@ -1,13 +1,14 @@
 #include "editor/commands/settokenscommand.h"
 
 #include "editor/commands/commandids.h"
+#include "editor/docks/elementlabels.h"
 
 #include "core/model/model.h"
 
 namespace editor {
 
 SetTokensCommand::SetTokensCommand(Document& document, const QString& transitionId, const QStringList& tokens)
-    : ModelCommand(document, tr("Set tokens of %1").arg(transitionId))
+    : ModelCommand(document, [=] { return tr("Set tokens of %1").arg(transitionLabel(transitionId)); })
     , m_transitionId(toStdString(transitionId))
 {
     for (const QString& token : tokens)

@@ -1,15 +1,18 @@
 #include "editor/commands/settransitionhiddencommand.h"
 
 #include "editor/commands/commandids.h"
+#include "editor/docks/elementlabels.h"
 
 #include "core/model/model.h"
 
 namespace editor {
 
-SetTransitionHiddenCommand::SetTransitionHiddenCommand(Document& document, const QString& transitionId,
-                                                       bool hidden)
-    : ModelCommand(document, hidden ? tr("Hide transition %1").arg(transitionId)
-                                    : tr("Show transition %1").arg(transitionId))
+SetTransitionHiddenCommand::SetTransitionHiddenCommand(Document& document, const QString& transitionId, bool hidden)
+    : ModelCommand(document,
+        [=] {
+            return hidden ? tr("Hide transition %1").arg(transitionLabel(transitionId))
+                          : tr("Show transition %1").arg(transitionLabel(transitionId));
+        })
     , m_transitionId(toStdString(transitionId))
     , m_hidden(hidden)
 {

@@ -7,7 +7,8 @@
 namespace editor {
 
 SetVariableCommentCommand::SetVariableCommentCommand(Document& document, const QString& name, const QString& value)
-    : TextFieldCommand(document, tr("Edit comment of %1").arg(name), name, value, NameCase::Ignored)
+    : TextFieldCommand(
+        document, [=] { return tr("Edit comment of %1").arg(name); }, name, value, NameCase::Ignored)
 {
 }
 

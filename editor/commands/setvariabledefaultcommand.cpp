@@ -7,7 +7,8 @@
 namespace editor {
 
 SetVariableDefaultCommand::SetVariableDefaultCommand(Document& document, const QString& name, const QString& value)
-    : TextFieldCommand(document, tr("Set default of %1").arg(name), name, value, NameCase::Ignored)
+    : TextFieldCommand(
+        document, [=] { return tr("Set default of %1").arg(name); }, name, value, NameCase::Ignored)
 {
 }
 

@@ -23,7 +23,7 @@ QString commandText(const QString& name, core::VariableKind kind)
 } // namespace
 
 SetVariableKindCommand::SetVariableKindCommand(Document& document, const QString& name, core::VariableKind kind)
-    : ModelCommand(document, commandText(name, kind))
+    : ModelCommand(document, [=] { return commandText(name, kind); })
     , m_name(toStdString(name))
     , m_kind(kind)
 {

@@ -7,7 +7,7 @@
 namespace editor {
 
 SetVariableTypeCommand::SetVariableTypeCommand(Document& document, const QString& name, core::IecType type)
-    : ModelCommand(document, tr("Set type of %1 to %2").arg(name, toQString(core::iecTypeName(type))))
+    : ModelCommand(document, [=] { return tr("Set type of %1 to %2").arg(name, toQString(core::iecTypeName(type))); })
     , m_name(toStdString(name))
     , m_type(type)
 {

@@ -2,11 +2,13 @@
 
 #include "core/model/iectypes.h"
 
+#include <utility>
+
 namespace editor {
 
-TextFieldCommand::TextFieldCommand(Document& document, const QString& text, const QString& element,
-                                   const QString& value, NameCase nameCase)
-    : ModelCommand(document, text)
+TextFieldCommand::TextFieldCommand(
+    Document& document, Wording wording, const QString& element, const QString& value, NameCase nameCase)
+    : ModelCommand(document, std::move(wording))
     , m_nameCase(nameCase)
     , m_element(toStdString(element))
     , m_value(toStdString(value))

@@ -18,8 +18,8 @@ protected:
     // How element names compare: variable names ignore case (IEC 61131-3).
     enum class NameCase { Exact, Ignored };
 
-    TextFieldCommand(Document& document, const QString& text, const QString& element, const QString& value,
-                     NameCase nameCase = NameCase::Exact);
+    TextFieldCommand(Document& document, Wording wording, const QString& element, const QString& value,
+        NameCase nameCase = NameCase::Exact);
 
     // The field's value before the first edit; empty when there is no such
     // element (writing then fails and says why).

@@ -12,6 +12,7 @@
 #include "editor/docks/doubleclickedit.h"
 #include "editor/docks/grafcetactiondelegate.h"
 #include "editor/docks/grafcetactionsmodel.h"
+#include "editor/docks/toolicons.h"
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
@@ -68,11 +69,17 @@ void showMessage(WrappingLabel* label, const QString& message)
     label->setVisible(!message.isEmpty());
 }
 
-QToolButton* toolButton(const QString& objectName, QWidget* parent)
+// An icon, as in the Variables panel: four worded buttons beside "Actions:"
+// would widen the dock column in French or German. The words are the
+// tooltip's and the screen reader's.
+QToolButton* toolButton(const QString& objectName, ToolIcon icon, QWidget* parent)
 {
     auto* button = new QToolButton(parent);
     button->setObjectName(objectName);
-    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    button->setIcon(toolIcon(icon, parent));
+    button->setIconSize(QSize(16, 16));
+    button->setAutoRaise(true);
+    button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     return button;
 }
 
@@ -139,8 +146,11 @@ QWidget* GrafcetStepDock::createForm()
     fields->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     m_numberSpin = new QSpinBox(form);
     m_numberSpin->setObjectName(QStringLiteral("numberSpin"));
-    m_numberSpin->setRange(1, kMaxStepNumber);
+    // 0 can be typed, to be refused with the reason: a minimum of 1 would
+    // silently put back the number the user did not want.
+    m_numberSpin->setRange(0, kMaxStepNumber);
     m_numberSpin->setKeyboardTracking(false); // one command per number, not per digit
+    UndoShortcutFilter::installAfterCommit(m_numberSpin);
     connect(m_numberSpin, &QSpinBox::valueChanged, this, &GrafcetStepDock::onNumberChosen);
     m_initialCheck = new QCheckBox(form);
     m_initialCheck->setObjectName(QStringLiteral("nestedInitialCheck"));
@@ -186,10 +196,10 @@ QWidget* GrafcetStepDock::createActionsArea(QWidget* parent)
     m_actionsLabel = new QLabel(area);
     header->addWidget(m_actionsLabel);
     header->addStretch();
-    m_addButton = toolButton(QStringLiteral("addActionButton"), area);
-    m_removeButton = toolButton(QStringLiteral("removeActionButton"), area);
-    m_upButton = toolButton(QStringLiteral("moveActionUpButton"), area);
-    m_downButton = toolButton(QStringLiteral("moveActionDownButton"), area);
+    m_addButton = toolButton(QStringLiteral("addActionButton"), ToolIcon::Add, area);
+    m_removeButton = toolButton(QStringLiteral("removeActionButton"), ToolIcon::Remove, area);
+    m_upButton = toolButton(QStringLiteral("moveActionUpButton"), ToolIcon::MoveUp, area);
+    m_downButton = toolButton(QStringLiteral("moveActionDownButton"), ToolIcon::MoveDown, area);
     for (QToolButton* button : {m_addButton, m_removeButton, m_upButton, m_downButton})
         header->addWidget(button);
     connect(m_addButton, &QToolButton::clicked, this, &GrafcetStepDock::onAddAction);
@@ -375,8 +385,12 @@ void GrafcetStepDock::onNumberChosen(int number)
     if (stepId.isEmpty() || number == current)
         return;
     const core::Grafcet* grafcet = document()->model().grafcet(stepId.toStdString());
-    if (grafcet && grafcet->step(number)) {
-        showMessage(m_numberMessage, tr("%1 already has a step %2: choose another number.").arg(stepId).arg(number));
+    const QString refusal = number < 1 ? tr("Step numbers start at 1: %1 is not a step number.").arg(number)
+        : grafcet && grafcet->step(number)
+        ? tr("%1 already has a step %2: choose another number.").arg(stepId).arg(number)
+        : QString();
+    if (!refusal.isEmpty()) {
+        showMessage(m_numberMessage, refusal);
         const QSignalBlocker blocker(m_numberSpin);
         m_numberSpin->setValue(current);
         return;

@@ -156,7 +156,8 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_view->setTextElideMode(Qt::ElideRight);
     m_view->header()->setStretchLastSection(true);
-    m_view->header()->resizeSection(CodeColumn, 80);
+    // The code whole, with its icon and, under a GRAFCET's row, the indentation.
+    m_view->header()->setSectionResizeMode(CodeColumn, QHeaderView::ResizeToContents);
     m_view->header()->resizeSection(ElementColumn, 90);
     m_view->setToolTip(QString());
     m_view->setContextMenuPolicy(Qt::ActionsContextMenu);

@@ -9,6 +9,7 @@
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/diagnosticlist.h"
 #include "editor/docks/elementlabels.h"
+#include "editor/docks/undoshortcutfilter.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/secondarytext.h"
@@ -169,6 +170,7 @@ QWidget* TransitionDock::createForm()
     m_prioritySpin = new QSpinBox(form);
     m_prioritySpin->setObjectName(QStringLiteral("prioritySpin"));
     m_prioritySpin->setKeyboardTracking(false); // one command per value, not per digit
+    UndoShortcutFilter::installAfterCommit(m_prioritySpin);
     m_prioritySpin->setMinimumWidth(m_prioritySpin->fontMetrics().horizontalAdvance(QStringLiteral("00 of 00")) + 40);
     connect(m_prioritySpin, &QSpinBox::valueChanged, this, &TransitionDock::onPriorityChanged);
     auto* priorityRow = new QHBoxLayout;

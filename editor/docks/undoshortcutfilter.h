@@ -2,6 +2,9 @@
 
 #include <QObject>
 
+#include <functional>
+
+class QSpinBox;
 class QWidget;
 
 namespace editor {
@@ -16,12 +19,18 @@ class UndoShortcutFilter : public QObject {
 public:
     // Installs a filter owned by the widget.
     static void install(QWidget* widget);
+    // For a field that edits the model when its text is committed (a spin
+    // box's Enter or focus loss): while typed text is pending, Ctrl+Z undoes
+    // the typing in the field; once committed, the document's last edit.
+    static void installAfterCommit(QSpinBox* spin);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    using QObject::QObject;
+    UndoShortcutFilter(QObject* parent, std::function<bool()> typingPending);
+
+    std::function<bool()> m_typingPending;
 };
 
 } // namespace editor

@@ -4,6 +4,7 @@
 #include "editor/commands/movevariablecommand.h"
 #include "editor/commands/pastevariablescommand.h"
 #include "editor/commands/removevariablecommand.h"
+#include "editor/commands/undohistorywording.h"
 #include "editor/docks/choicedelegate.h"
 #include "editor/docks/dockreveal.h"
 #include "editor/docks/toolicons.h"
@@ -68,10 +69,16 @@ bool lessByName(const std::string& a, const std::string& b)
     return core::toUpperAscii(a) < core::toUpperAscii(b);
 }
 
-bool isClipboardKey(QKeyEvent* event)
+// Insert adds a row, as in spreadsheets and the IEC editors' declaration tables.
+bool isInsertKey(QKeyEvent* event)
+{
+    return event->key() == Qt::Key_Insert && event->modifiers() == Qt::NoModifier;
+}
+
+bool isTableKey(QKeyEvent* event)
 {
     return event->matches(QKeySequence::Copy) || event->matches(QKeySequence::Paste)
-        || event->matches(QKeySequence::Delete);
+        || event->matches(QKeySequence::Delete) || isInsertKey(event);
 }
 
 } // namespace
@@ -211,14 +218,16 @@ void VariablesDock::retranslate()
         action->setText(text);
         action->setToolTip(tip);
     };
-    name(m_addAction, tr("Add"), tr("Add a BOOL variable after the current one"));
+    name(m_addAction, tr("Add"), tr("Add a BOOL variable after the current one (Insert)"));
     name(m_removeAction, tr("Remove"), tr("Remove the selected variables"));
     name(m_duplicateAction, tr("Duplicate"), tr("Duplicate the selected variables"));
     name(m_upAction, tr("Move Up"), tr("Move the current variable up (declaration order)"));
     name(m_downAction, tr("Move Down"), tr("Move the current variable down (declaration order)"));
     name(m_sortAction, tr("Sort by Name"), tr("Sort the declarations by name (one undo step)"));
     name(m_copyAction, tr("Copy"), tr("Copy the selected variables as tab-separated rows"));
-    name(m_pasteAction, tr("Paste"), tr("Paste rows from a spreadsheet: name, type, default, comment and kind"));
+    name(m_pasteAction, tr("Paste"),
+        tr("Paste rows from a spreadsheet: name, type, default, comment and kind, in this order or in the order "
+           "a first row of column titles gives"));
     m_filterEdit->setPlaceholderText(tr("Filter"));
     m_filterEdit->setToolTip(
         tr("Show only the variables whose name, type, kind, default or comment contains this text"));
@@ -244,10 +253,11 @@ void VariablesDock::createActions()
     m_copyAction = action(QIcon());
     m_pasteAction = action(QIcon());
     // Shown in the context menu; the table's event filter handles the keys.
+    m_addAction->setShortcut(Qt::Key_Insert);
     m_removeAction->setShortcut(QKeySequence::Delete);
     m_copyAction->setShortcut(QKeySequence::Copy);
     m_pasteAction->setShortcut(QKeySequence::Paste);
-    for (QAction* a : { m_removeAction, m_copyAction, m_pasteAction })
+    for (QAction* a : { m_addAction, m_removeAction, m_copyAction, m_pasteAction })
         a->setShortcutContext(Qt::WidgetShortcut);
 
     connect(m_addAction, &QAction::triggered, this, &VariablesDock::addVariable);
@@ -265,7 +275,7 @@ bool VariablesDock::eventFilter(QObject* watched, QEvent* event)
     // The table's own keys win over window-wide shortcuts while it has the
     // focus (a cell editor has the focus to itself while editing).
     if (watched == m_view) {
-        if (event->type() == QEvent::ShortcutOverride && isClipboardKey(static_cast<QKeyEvent*>(event))) {
+        if (event->type() == QEvent::ShortcutOverride && isTableKey(static_cast<QKeyEvent*>(event))) {
             event->accept();
             return true;
         }
@@ -281,6 +291,10 @@ bool VariablesDock::eventFilter(QObject* watched, QEvent* event)
             }
             if (key->matches(QKeySequence::Delete)) {
                 removeSelected();
+                return true;
+            }
+            if (isInsertKey(key)) {
+                addVariable();
                 return true;
             }
         }
@@ -436,7 +450,9 @@ void VariablesDock::removeSelected()
         names << m_model->variableName(row);
     QUndoStack* stack = m_document->undoStack();
     if (names.size() > 1)
-        stack->beginMacro(tr("Remove %n variables", nullptr, static_cast<int>(names.size())));
+        beginWordedMacro(stack, [count = static_cast<int>(names.size())] {
+            return tr("Remove %n variables", nullptr, count);
+        });
     for (const QString& name : std::as_const(names))
         m_document->push(new RemoveVariableCommand(*m_document, name));
     if (names.size() > 1)
@@ -490,7 +506,7 @@ void VariablesDock::sortByName()
             [](const std::string& name, const core::Variable& variable) { return name == variable.name; }))
         return;
     QUndoStack* stack = m_document->undoStack();
-    stack->beginMacro(tr("Sort variables by name"));
+    beginWordedMacro(stack, [] { return tr("Sort variables by name"); });
     for (std::size_t i = 0; i < names.size(); ++i) {
         if (m_document->model().variableIndex(names[i]) != static_cast<int>(i))
             m_document->push(new MoveVariableCommand(*m_document, fromStd(names[i]), static_cast<int>(i)));

@@ -6,6 +6,7 @@
 #include "editor/commands/setvariablekindcommand.h"
 #include "editor/commands/setvariabletypecommand.h"
 #include "editor/diagnostictext.h"
+#include "editor/docks/variablepastecolumns.h"
 #include "editor/document.h"
 #include "editor/stdstring.h"
 
@@ -16,6 +17,9 @@
 #include <QColor>
 #include <QFont>
 #include <QPalette>
+
+#include <optional>
+#include <utility>
 
 namespace editor {
 
@@ -373,7 +377,7 @@ bool VariablesTableModel::parseRows(const QString& text, std::vector<core::Varia
     variables->clear();
     const QStringList lines = text.split(QLatin1Char('\n'));
     bool first = true;
-    bool kindDeclared = false; // the header names the fifth column "Kind"
+    VariablePasteColumns columns;
     for (qsizetype i = 0; i < lines.size(); ++i) {
         QString line = lines[i];
         if (line.endsWith(QLatin1Char('\r')))
@@ -381,17 +385,14 @@ bool VariablesTableModel::parseRows(const QString& text, std::vector<core::Varia
         if (line.trimmed().isEmpty())
             continue;
         const QStringList cells = line.split(QLatin1Char('\t'));
-        const QString name = cells.value(0).trimmed();
-        const bool header = first
-            && (name.compare(QLatin1String("Name"), Qt::CaseInsensitive) == 0
-                || name.compare(tr("Name"), Qt::CaseInsensitive) == 0);
-        first = false;
-        if (header) {
-            const QString kindHeader = cells.value(4).trimmed();
-            kindDeclared = kindHeader.compare(QLatin1String("Kind"), Qt::CaseInsensitive) == 0
-                || kindHeader.compare(tr("Kind"), Qt::CaseInsensitive) == 0;
-            continue;
+        if (std::exchange(first, false)) {
+            if (const std::optional<VariablePasteColumns> header = headerColumns(cells)) {
+                columns = *header;
+                continue;
+            }
         }
+        const auto cell = [&cells](int column) { return column >= 0 ? cells.value(column).trimmed() : QString(); };
+        const QString name = cell(columns.name);
         const int lineNumber = static_cast<int>(i) + 1;
         if (name.isEmpty()) {
             *error = tr("Line %1: the name is empty.").arg(lineNumber);
@@ -399,7 +400,7 @@ bool VariablesTableModel::parseRows(const QString& text, std::vector<core::Varia
         }
         core::Variable variable;
         variable.name = name.toStdString();
-        const QString typeName = cells.value(1).trimmed();
+        const QString typeName = cell(columns.type);
         if (!typeName.isEmpty()) {
             const std::optional<core::IecType> type = core::parseIecType(typeName.toStdString());
             if (!type) {
@@ -410,17 +411,17 @@ bool VariablesTableModel::parseRows(const QString& text, std::vector<core::Varia
             }
             variable.type = *type;
         }
-        variable.defaultValue = cells.value(2).trimmed().toStdString();
-        variable.comment = cells.value(3).trimmed().toStdString();
-        // The kind comes after the comment, so that rows without one still
-        // read. Without a header saying "Kind", a fifth cell that names no
-        // kind is one of the spreadsheet's own.
-        const QString kindName = cells.value(4).trimmed();
+        variable.defaultValue = cell(columns.defaultValue).toStdString();
+        variable.comment = cell(columns.comment).toStdString();
+        // Without a header, the kind comes after the comment, so that rows
+        // without one still read; and without a header saying "Kind", a
+        // fifth cell that names no kind is one of the spreadsheet's own.
+        const QString kindName = cell(columns.kind);
         if (!kindName.isEmpty()) {
             const std::optional<core::VariableKind> kind = parseKind(kindName);
             if (kind) {
                 variable.kind = *kind;
-            } else if (kindDeclared) {
+            } else if (columns.kindDeclared) {
                 *error
                     = tr("Line %1: '%2' is not a kind: use input, output or internal.").arg(lineNumber).arg(kindName);
                 return false;

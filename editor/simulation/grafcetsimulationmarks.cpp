@@ -145,7 +145,9 @@ void GrafcetSimulationMarks::update()
                        .arg(id),
                    true);
     else if (runs)
-        setCaption(tr("%1 is active: its GRAFCET runs (steps %2)").arg(id, stepNumbersText(engine->activeSteps())),
+        setCaption(tr("%1 is active: its GRAFCET runs (step(s) %2)", nullptr,
+                      static_cast<int>(engine->activeSteps().size()))
+                       .arg(id, stepNumbersText(engine->activeSteps())),
                    false);
     else if (simulator->activeStepId() == stepId)
         setCaption(tr("%1 has just been entered: its GRAFCET starts from its initial steps in the next scan")

@@ -315,8 +315,10 @@ void SimulationDock::setFixedTexts()
                                     .arg(stepForwardShortcut().toString(QKeySequence::NativeText)));
     m_forwardButton->setAccessibleName(m_forwardButton->text());
     m_resetButton->setText(tr("Reset"));
+    m_resetButton->setAccessibleName(m_resetButton->text());
     m_resetButton->setToolTip(tr("Back to the initial step, the inputs to their defaults; clears the trace"));
     m_endButton->setText(tr("End"));
+    m_endButton->setAccessibleName(m_endButton->text());
     m_endButton->setToolTip(tr("End the simulation and unlock editing"));
     m_speedLabel->setText(tr("&Speed:"));
     m_speedSpin->setSuffix(tr(" scans/s"));
@@ -406,14 +408,16 @@ QWidget* SimulationDock::createControls()
     connect(m_backButton, &QToolButton::clicked, m_session, &SimulationSession::stepBack);
     m_forwardButton = toolButton(controls, QStringLiteral("stepForwardButton"), QStyle::SP_ArrowForward);
     connect(m_forwardButton, &QToolButton::clicked, m_session, &SimulationSession::stepForward);
-    // Arrows alone (their text is the tooltip's and the screen reader's): with
-    // words the row would widen the dock column beyond its 1366 x 768 width.
-    for (QToolButton* button : {m_backButton, m_forwardButton})
-        button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     m_resetButton = toolButton(controls, QStringLiteral("resetButton"), QStyle::SP_MediaSkipBackward);
     connect(m_resetButton, &QToolButton::clicked, m_session, &SimulationSession::reset);
     m_endButton = toolButton(controls, QStringLiteral("endButton"), QStyle::SP_MediaStop);
     connect(m_endButton, &QToolButton::clicked, this, [this] { m_session->setActive(false); });
+    // Icons alone (their text is the tooltip's and the screen reader's): with
+    // words the row would widen the dock column beyond its 1366 x 768 width
+    // in French or German ("Réinitialiser", "Zurücksetzen"), even before a
+    // simulation, since the dock is as wide as its widest page.
+    for (QToolButton* button : {m_backButton, m_forwardButton, m_resetButton, m_endButton})
+        button->setToolButtonStyle(Qt::ToolButtonIconOnly);
     buttons->addWidget(m_runButton);
     buttons->addWidget(m_stepButton);
     buttons->addWidget(m_backButton);
@@ -435,13 +439,15 @@ QWidget* SimulationDock::createControls()
     connect(m_speedSpin, &QSpinBox::valueChanged, m_session, &SimulationSession::setSpeed);
     m_statusLabel = new QLabel(controls);
     m_statusLabel->setObjectName(QStringLiteral("statusLabel"));
-    m_statusLabel->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     m_statusLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // On a line of its own: "Scan 10 of 12 (history) · 0.10 s" beside the
+    // speed box would not fit the dock column at 1366 x 768.
+    m_statusLabel->setContentsMargins(4, 0, 4, 0);
     speedRow->addWidget(m_speedLabel);
     speedRow->addWidget(m_speedSpin);
     speedRow->addStretch();
-    speedRow->addWidget(m_statusLabel);
     layout->addLayout(speedRow);
+    layout->addWidget(m_statusLabel);
     m_unstableLabel = new QLabel(controls);
     m_unstableLabel->setObjectName(QStringLiteral("unstableLabel"));
     m_unstableLabel->setWordWrap(true);

@@ -187,11 +187,11 @@ void TestCommands::setTransitionHidden()
     Document document;
     QSignalSpy changed(&document, &Document::transitionChanged);
     QVERIFY(document.push(new SetTransitionHiddenCommand(document, "A1->F2", true)));
-    QCOMPARE(document.undoStack()->undoText(), QString("Hide transition A1->F2"));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Hide transition A1 → F2"));
     QVERIFY(document.model().transition("A1->F2")->hidden);
     QCOMPARE(ids(changed), QStringList{"A1->F2"});
     QVERIFY(document.push(new SetTransitionHiddenCommand(document, "A1->F2", false)));
-    QCOMPARE(document.undoStack()->undoText(), QString("Show transition A1->F2"));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Show transition A1 → F2"));
     QVERIFY(!document.model().transition("A1->F2")->hidden);
 
     document.undoStack()->undo();
@@ -210,7 +210,7 @@ void TestCommands::setPriorityRestoresEveryOrder()
 
     QSignalSpy changed(&document, &Document::transitionChanged);
     QVERIFY(document.push(new SetPriorityCommand(document, "A1->F5", 1)));
-    QCOMPARE(document.undoStack()->undoText(), QString("Set priority of A1->F5 to 1"));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Set priority of A1 → F5 to 1"));
     QCOMPARE(document.model().priority("A1->F5"), 1);
     QCOMPARE(document.model().priority("A1->F4"), 2);
     QVERIFY(ids(changed).contains("A1->F5"));
@@ -238,7 +238,7 @@ void TestCommands::setConditionMergesTyping()
     for (const char* text : {"S", "St", "Sta", "Start"})
         QVERIFY(document.push(new SetConditionCommand(document, "F1->A2", text)));
     QCOMPARE(document.undoStack()->count(), 1);
-    QCOMPARE(document.undoStack()->undoText(), QString("Edit condition of F1->A2"));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Edit condition of F1 → A2"));
     QCOMPARE(document.model().transition("F1->A2")->condition, std::string("Start"));
     QCOMPARE(changed.count(), 4);
 
@@ -282,10 +282,10 @@ void TestCommands::setNegated()
 {
     Document document;
     QVERIFY(document.push(new SetNegatedCommand(document, "F1->D1", false)));
-    QCOMPARE(document.undoStack()->undoText(), QString("Remove negation of F1->D1"));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Remove negation of F1 → D1"));
     QVERIFY(!document.model().transition("F1->D1")->negated);
     QVERIFY(document.push(new SetNegatedCommand(document, "F1->A2", true)));
-    QCOMPARE(document.undoStack()->undoText(), QString("Negate F1->A2"));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Negate F1 → A2"));
     QVERIFY(document.model().transition("F1->A2")->negated);
 
     document.undoStack()->undo();
@@ -300,7 +300,7 @@ void TestCommands::setTokens()
     addVariables(document, {"Stop", "Reset"});
     QSignalSpy changed(&document, &Document::transitionChanged);
     QVERIFY(document.push(new SetTokensCommand(document, "F1->A2", {"Stop"})));
-    QCOMPARE(document.undoStack()->undoText(), QString("Set tokens of F1->A2"));
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Set tokens of F1 → A2"));
     QCOMPARE(document.model().transition("F1->A2")->tokens, std::vector<std::string>{"Stop"});
     QCOMPARE(ids(changed), QStringList{"F1->A2"});
     QVERIFY(document.push(new SetTokensCommand(document, "F1->A2", {"Stop", "Reset"})));
@@ -321,7 +321,7 @@ void TestCommands::failingCommandStaysOffTheStack()
 
     QVERIFY(!document.push(new SetTokensCommand(document, "F1->A2", {"Stop", "STOP"})));
     QCOMPARE(failed.count(), 1);
-    QVERIFY(failed.at(0).at(0).toString().startsWith("Set tokens of F1->A2: "));
+    QVERIFY(failed.at(0).at(0).toString().startsWith(QStringLiteral("Set tokens of F1 → A2: ")));
     QVERIFY(!document.push(new SetStepTypeCommand(document, "Z9", core::StepType::Macro)));
     QVERIFY(!document.push(new SetCycleTimeCommand(document, 0)));
     QVERIFY(!document.push(new AddVariableCommand(document, variable("STOP"))));

@@ -286,7 +286,8 @@ void TestGrafcetSimulation::tabsShowTheSimulationOfBothLayers()
     QCOMPARE(f2->stepItem(3)->simulationMark(), Mark::Active);
     QVERIFY(f2->transitionItem(2)->isFired());
     QCOMPARE(f2->wiringItem()->firedTransitions(), QList<int>{2});
-    QVERIFY2(marksOf(f2)->captionText().contains(QLatin1String("runs (steps 3)")),
+    // One active step: singular.
+    QVERIFY2(marksOf(f2)->captionText().contains(QLatin1String("runs (step 3)")),
              qPrintable(marksOf(f2)->captionText()));
     // Step 3 drives Spindle (action 0); its stored PartCount := 0 (action 1) is no output.
     QCOMPARE(f2->stepItem(3)->litActions(), QList<int>{0});
