@@ -316,6 +316,24 @@
     </message>
 </context>
 <context>
+    <name>DeclarationFixText</name>
+    <message>
+        <source>Declare &apos;%1&apos; as OUTPUT %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>&apos;%1&apos; als Ausgang %2 deklarieren</translation>
+    </message>
+    <message>
+        <source>Declare &apos;%1&apos; as INTERNAL %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>&apos;%1&apos; als interne Variable %2 deklarieren</translation>
+    </message>
+    <message>
+        <source>Declare &apos;%1&apos; as INPUT %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>&apos;%1&apos; als Eingang %2 deklarieren</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -693,6 +711,27 @@
     </message>
 </context>
 <context>
+    <name>GrafcetClipboard</name>
+    <message>
+        <source>The clipboard holds no GRAFCET steps</source>
+        <translation>Die Zwischenablage enthält keine GRAFCET-Schritte</translation>
+    </message>
+    <message>
+        <source>Nothing pasted: the GRAFCET steps on the clipboard are damaged (%1)</source>
+        <extracomment>%1 what is wrong in the clipboard&apos;s data (in English), with where when known</extracomment>
+        <translation>Nichts eingefügt: Die GRAFCET-Schritte in der Zwischenablage sind beschädigt (%1)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>T%1 (%2 → %3): %4</source>
+        <extracomment>a transition copied as text: %1 its number, %2 and %3 the steps it links, %4 its receptivity</extracomment>
+        <translation>T%1 (%2 → %3): %4</translation>
+    </message>
+</context>
+<context>
     <name>GrafcetExport</name>
     <message>
         <source>Nested GRAFCET drawn by GG Studio</source>
@@ -736,6 +775,103 @@
     <message>
         <source>Move variable %1</source>
         <translation>Variable %1 verschieben</translation>
+    </message>
+</context>
+<context>
+    <name>NestedProblemText</name>
+    <message>
+        <source>the receptivity of T%2 of %1</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a transition of its nested GRAFCET</extracomment>
+        <translation>der Weiterschaltbedingung von T%2 von %1</translation>
+    </message>
+    <message>
+        <source>action %3 of step %2 of %1</source>
+        <extracomment>%1: a GEMMA step; %2: a nested step&apos;s number; %3: the action&apos;s position in its list, from 1</extracomment>
+        <translation>Aktion %3 von Schritt %2 von %1</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is not a declared variable.</source>
+        <translation>In %1: &apos;%2&apos; ist keine deklarierte Variable.</translation>
+    </message>
+    <message>
+        <source>In %1: a continuous action is N V or V IF &lt;condition&gt;.</source>
+        <translation>In %1: eine kontinuierliche Aktion ist N V oder V IF &lt;Bedingung&gt;.</translation>
+    </message>
+    <message>
+        <source>In %1: a stored action is S V, R V or V := &lt;expression&gt;.</source>
+        <translation>In %1: eine gespeicherte Aktion ist S V, R V oder V := &lt;Ausdruck&gt;.</translation>
+    </message>
+    <message>
+        <source>Syntax error in %1: %2.</source>
+        <translation>Syntaxfehler in %1: %2.</translation>
+    </message>
+    <message>
+        <source>Type error in %1: %2.</source>
+        <translation>Typfehler in %1: %2.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is %3; this action needs a BOOL variable.</source>
+        <extracomment>%3: an IEC type name (INT)</extracomment>
+        <translation>In %1: &apos;%2&apos; ist %3; diese Aktion braucht eine BOOL-Variable.</translation>
+    </message>
+    <message>
+        <source>In %1: %4 does not fit &apos;%2&apos; (%3): it cannot be assigned to it.</source>
+        <extracomment>%2: the target variable; %3: its type; %4: the value as written</extracomment>
+        <translation>In %1: %4 passt nicht zu &apos;%2&apos; (%3): es kann ihr nicht zugewiesen werden.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 names step %3, which the GRAFCET of %4 does not have.</source>
+        <extracomment>%2: a step activity as written (X9); %3: its step number; %4: the GEMMA step</extracomment>
+        <translation>In %1: %2 nennt Schritt %3, den der GRAFCET von %4 nicht hat.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is longer than %3, the longest duration an IEC TIME (a TON preset) holds.</source>
+        <extracomment>%2: a duration as written (25d/X1); %3: the longest IEC TIME</extracomment>
+        <translation>In %1: %2 ist länger als %3, die längste Dauer, die ein IEC-TIME (die Vorgabe eines TON) fasst.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; divides by zero: on the PLC an integer division or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / 0)</extracomment>
+        <translation>In %1: &apos;%2&apos; teilt durch null: auf der SPS hält eine ganzzahlige Division oder MOD durch null die Task mit einem Fehler an, eine REAL-Division ergibt INF oder NaN.</translation>
+    </message>
+    <message>
+        <source>In %1: the divisor of &apos;%2&apos; can be zero: an integer division or MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / Batch)</extracomment>
+        <translation>In %1: der Divisor von &apos;%2&apos; kann null sein: eine ganzzahlige Division oder MOD durch null hält die SPS mit einem Fehler an (und die Simulation), eine REAL-Division ergibt INF oder NaN.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is an edge on a variable that is not BOOL.</source>
+        <extracomment>%2: an edge as written (RE Level)</extracomment>
+        <translation>In %1: %2 ist eine Flanke auf einer Variablen, die nicht BOOL ist.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is for receptivities only: an action cannot read an edge or a step duration.</source>
+        <translation>In %1: %2 gibt es nur in Weiterschaltbedingungen: eine Aktion kann keine Flanke und keine Schrittdauer lesen.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is an input: it is read from the machine, actions never write it.</source>
+        <translation>In %1: &apos;%2&apos; ist ein Eingang: er wird von der Maschine gelesen, Aktionen schreiben ihn nie.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is %3; a continuous action needs a BOOL variable.</source>
+        <extracomment>%3: an IEC type name (INT)</extracomment>
+        <translation>In %1: &apos;%2&apos; ist %3; eine kontinuierliche Aktion braucht eine BOOL-Variable.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is also driven by continuous actions; a variable has either continuous or stored actions (the stored one is not generated).</source>
+        <translation>In %1: &apos;%2&apos; wird auch von kontinuierlichen Aktionen angesteuert; eine Variable hat entweder kontinuierliche oder gespeicherte Aktionen (die gespeicherte wird nicht erzeugt).</translation>
+    </message>
+    <message>
+        <source>In %1: invalid variable name: %2.</source>
+        <translation>In %1: ungültiger Variablenname: %2.</translation>
+    </message>
+    <message>
+        <source>In %1: the condition reads &apos;%2&apos;, a continuous output of the same GRAFCET.</source>
+        <translation>In %1: die Bedingung liest &apos;%2&apos;, einen kontinuierlichen Ausgang desselben GRAFCET.</translation>
+    </message>
+    <message>
+        <source>The receptivity of T%2 of %1 is empty: write TRUE for a transition that is always ready.</source>
+        <translation>Die Weiterschaltbedingung von T%2 von %1 ist leer: schreiben Sie TRUE für eine Transition, die immer bereit ist.</translation>
     </message>
 </context>
 <context>
@@ -1862,6 +1998,21 @@
     </message>
 </context>
 <context>
+    <name>editor::BranchDrag</name>
+    <message>
+        <source>Step %1 is on no branch of a divergence: there is no branch to move</source>
+        <translation>Schritt %1 liegt auf keinem Zweig einer Verzweigung: es gibt keinen Zweig zu verschieben</translation>
+    </message>
+    <message>
+        <source>Move the branch of step %1 left in %2</source>
+        <translation>Zweig von Schritt %1 in %2 nach links verschieben</translation>
+    </message>
+    <message>
+        <source>Move the branch of step %1 right in %2</source>
+        <translation>Zweig von Schritt %1 in %2 nach rechts verschieben</translation>
+    </message>
+</context>
+<context>
     <name>editor::ChartContextMenu</name>
     <message>
         <source>&amp;Show %1</source>
@@ -1952,6 +2103,14 @@
     <message>
         <source>Step %1</source>
         <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>Tick an upstream step: a transition leaves at least one step.</source>
+        <translation>Haken Sie einen vorangehenden Schritt an: eine Transition verlässt mindestens einen Schritt.</translation>
+    </message>
+    <message>
+        <source>Tick a downstream step: a transition activates at least one step. To end a branch on a step with no transition after it, use Add Branch Ending on a Step on the step.</source>
+        <translation>Haken Sie einen nachfolgenden Schritt an: eine Transition aktiviert mindestens einen Schritt. Um einen Zweig auf einem Schritt ohne Transition danach enden zu lassen, verwenden Sie „Zweig mit Endschritt hinzufügen“ auf dem Schritt.</translation>
     </message>
 </context>
 <context>
@@ -2324,6 +2483,77 @@
         <source>Create GRAFCET of %1</source>
         <translation>GRAFCET von %1 erstellen</translation>
     </message>
+    <message>
+        <source>Add Branch &amp;Ending on a Step</source>
+        <translation>Zweig mit &amp;Endschritt hinzufügen</translation>
+    </message>
+    <message>
+        <source>A new branch from this step to a new step with no transition after it (an exit step)</source>
+        <translation>Ein neuer Zweig von diesem Schritt zu einem neuen Schritt ohne Transition danach (ein Endschritt)</translation>
+    </message>
+    <message>
+        <source>Move Branch &amp;Left</source>
+        <translation>Zweig nach &amp;links verschieben</translation>
+    </message>
+    <message>
+        <source>Swap the branch holding this step with the one at its left</source>
+        <translation>Tauscht den Zweig mit diesem Schritt mit dem links daneben</translation>
+    </message>
+    <message>
+        <source>Move Branch Ri&amp;ght</source>
+        <translation>Zweig nach &amp;rechts verschieben</translation>
+    </message>
+    <message>
+        <source>Swap the branch holding this step with the one at its right</source>
+        <translation>Tauscht den Zweig mit diesem Schritt mit dem rechts daneben</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Steps</source>
+        <translation>Schritte &amp;ausschneiden</translation>
+    </message>
+    <message>
+        <source>Add branch ending on a step at step %1 in %2</source>
+        <extracomment>%1 the step the branch leaves, %2 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Zweig mit Endschritt an Schritt %1 in %2 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Move branch left in %1</source>
+        <extracomment>%1 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Zweig in %1 nach links verschieben</translation>
+    </message>
+    <message>
+        <source>Move branch right in %1</source>
+        <translation>Zweig in %1 nach rechts verschieben</translation>
+    </message>
+    <message>
+        <source>Remove T%1 from %2</source>
+        <translation>T%1 aus %2 entfernen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n transitions from %1</source>
+        <translation>
+            <numerusform>%n Transition aus %1 entfernen</numerusform>
+            <numerusform>%n Transitionen aus %1 entfernen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n elements from %1</source>
+        <translation>
+            <numerusform>%n Element aus %1 entfernen</numerusform>
+            <numerusform>%n Elemente aus %1 entfernen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cut step %1 from %2</source>
+        <translation>Schritt %1 aus %2 ausschneiden</translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n steps from %1</source>
+        <translation>
+            <numerusform>%n Schritt aus %1 ausschneiden</numerusform>
+            <numerusform>%n Schritte aus %1 ausschneiden</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetActionsModel</name>
@@ -2387,16 +2617,19 @@ S, R: auf TRUE oder FALSE setzen
         <translation>%1 ist aktiv: sein GRAFCET läuft. Unstable: der letzte Zyklus endete ohne stabile Situation</translation>
     </message>
     <message>
-        <source>%1 is active: its GRAFCET runs (steps %2)</source>
-        <translation>%1 ist aktiv: sein GRAFCET läuft (Schritte %2)</translation>
-    </message>
-    <message>
         <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
         <translation>%1 wurde gerade aktiviert: sein GRAFCET beginnt im nächsten Zyklus mit seinen Anfangsschritten</translation>
     </message>
     <message>
         <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
         <translation>%1 ist nicht aktiv: sein GRAFCET wird grau gezeigt, so wie er verlassen wurde</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 is active: its GRAFCET runs (step(s) %2)</source>
+        <translation>
+            <numerusform>%1 ist aktiv: sein GRAFCET läuft (Schritt %2)</numerusform>
+            <numerusform>%1 ist aktiv: sein GRAFCET läuft (Schritte %2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2482,6 +2715,10 @@ S, R: auf TRUE oder FALSE setzen
         <source>%1 already has a step %2: choose another number.</source>
         <translation>%1 hat schon einen Schritt %2: wählen Sie eine andere Nummer.</translation>
     </message>
+    <message>
+        <source>Step numbers start at 1: %1 is not a step number.</source>
+        <translation>Schrittnummern beginnen bei 1: %1 ist keine Schrittnummer.</translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetTransitionDock</name>
@@ -2527,6 +2764,49 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>In the nested GRAFCET of %1 %2</source>
         <translation>Im eingebetteten GRAFCET von %1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::LinkDrag</name>
+    <message>
+        <source>A transition cannot be linked to a transition: steps and transitions alternate</source>
+        <translation>Eine Transition kann nicht mit einer Transition verbunden werden: Schritte und Transitionen wechseln sich ab</translation>
+    </message>
+    <message>
+        <source>Step %1 already leads to step %2</source>
+        <translation>Schritt %1 führt bereits zu Schritt %2</translation>
+    </message>
+    <message>
+        <source>Step %1 already precedes T%2</source>
+        <translation>Schritt %1 steht bereits vor T%2</translation>
+    </message>
+    <message>
+        <source>Step %1 already follows T%2</source>
+        <translation>Schritt %1 folgt bereits auf T%2</translation>
+    </message>
+    <message>
+        <source>Step %1 cannot be linked to itself through one transition</source>
+        <translation>Schritt %1 kann nicht über eine einzige Transition mit sich selbst verbunden werden</translation>
+    </message>
+    <message>
+        <source>Step %1 would be linked to itself through T%2</source>
+        <translation>Schritt %1 wäre über T%2 mit sich selbst verbunden</translation>
+    </message>
+    <message>
+        <source>Drag onto a step or a transition to link them</source>
+        <translation>Auf einen Schritt oder eine Transition ziehen, um beide zu verbinden</translation>
+    </message>
+    <message>
+        <source>Link step %1 to step %2 in %3</source>
+        <translation>Schritt %1 mit Schritt %2 in %3 verbinden</translation>
+    </message>
+    <message>
+        <source>Link step %1 to T%2 in %3</source>
+        <translation>Schritt %1 mit T%2 in %3 verbinden</translation>
+    </message>
+    <message>
+        <source>Link T%1 to step %2 in %3</source>
+        <translation>T%1 mit Schritt %2 in %3 verbinden</translation>
     </message>
 </context>
 <context>
@@ -2622,10 +2902,6 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>Draw the hidden states and transitions faded, so they can be selected</source>
         <translation>Die ausgeblendeten Zustände und Transitionen blass zeichnen, damit sie ausgewählt werden können</translation>
-    </message>
-    <message>
-        <source>&amp;Fit Chart</source>
-        <translation>Diagramm ein&amp;passen</translation>
     </message>
     <message>
         <source>&amp;Actual Size (100 %)</source>
@@ -2914,6 +3190,10 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>Verification finished: nothing is violated, but some properties are undecided (see Problems)</source>
         <translation>Verifikation beendet: nichts ist verletzt, aber einige Eigenschaften sind unentschieden (siehe Probleme)</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to Window</source>
+        <translation>An &amp;Fenster anpassen</translation>
     </message>
 </context>
 <context>
@@ -3835,6 +4115,17 @@ Einschließender Schritt: Seine Transitionen schalten unabhängig davon, was der
         <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
         <translation>Sein GRAFCET läuft: Schritte %1 aktiv</translation>
     </message>
+    <message>
+        <source>Its nested GRAFCET has 1 problem</source>
+        <translation>Sein eingebetteter GRAFCET hat 1 Problem</translation>
+    </message>
+    <message numerus="yes">
+        <source>Its nested GRAFCET has %n problems</source>
+        <translation>
+            <numerusform>Sein eingebetteter GRAFCET hat %n Problem</numerusform>
+            <numerusform>Sein eingebetteter GRAFCET hat %n Probleme</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::TraceTableModel</name>
@@ -4107,10 +4398,6 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
         <translation>Hinzufügen</translation>
     </message>
     <message>
-        <source>Add a BOOL variable after the current one</source>
-        <translation>Eine BOOL-Variable nach der aktuellen hinzufügen</translation>
-    </message>
-    <message>
         <source>Remove</source>
         <translation>Entfernen</translation>
     </message>
@@ -4178,12 +4465,16 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
         <translation>Die ausgewählten Variablen als tabulatorgetrennte Zeilen kopieren</translation>
     </message>
     <message>
-        <source>Paste rows from a spreadsheet: name, type, default, comment and kind</source>
-        <translation>Zeilen aus einer Tabellenkalkulation einfügen: Name, Typ, Anfangswert, Kommentar und Art</translation>
-    </message>
-    <message>
         <source>Show only the variables whose name, type, kind, default or comment contains this text</source>
         <translation>Nur die Variablen zeigen, deren Name, Typ, Art, Anfangswert oder Kommentar diesen Text enthält</translation>
+    </message>
+    <message>
+        <source>Add a BOOL variable after the current one (Insert)</source>
+        <translation>Eine BOOL-Variable nach der aktuellen hinzufügen (Einfg)</translation>
+    </message>
+    <message>
+        <source>Paste rows from a spreadsheet: name, type, default, comment and kind, in this order or in the order a first row of column titles gives</source>
+        <translation>Zeilen aus einer Tabellenkalkulation einfügen: Name, Typ, Anfangswert, Kommentar und Art, in dieser Reihenfolge oder in der, die eine erste Zeile mit Spaltentiteln angibt</translation>
     </message>
 </context>
 <context>
@@ -4437,8 +4728,8 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
         <translation>Zoom: %1 %</translation>
     </message>
     <message>
-        <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
-        <translation>Strg+Mausrad zoomt um den Mauszeiger; Strg+0 passt das Diagramm ein</translation>
+        <source>The zoom of the tab in front. Ctrl+wheel or a pinch zooms about the mouse; Ctrl+0 fits the drawing in the window, Ctrl+1 shows it at its actual size</source>
+        <translation>Der Zoom des vorderen Tabs. Strg+Mausrad oder eine Zwei-Finger-Geste zoomt um den Mauszeiger; Strg+0 passt die Zeichnung ins Fenster ein, Strg+1 zeigt sie in Originalgröße</translation>
     </message>
 </context>
 <context>

@@ -116,6 +116,37 @@
             <numerusform>Paste %n steps into %1</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Remove %n transitions from %1</source>
+        <translation>
+            <numerusform>Remove %n transition from %1</numerusform>
+            <numerusform>Remove %n transitions from %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n elements from %1</source>
+        <translation>
+            <numerusform>Remove %n element from %1</numerusform>
+            <numerusform>Remove %n elements from %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n steps from %1</source>
+        <translation>
+            <numerusform>Cut %n step from %1</numerusform>
+            <numerusform>Cut %n steps from %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetSimulationMarks</name>
+    <message numerus="yes">
+        <source>%1 is active: its GRAFCET runs (step(s) %2)</source>
+        <translation>
+            <numerusform>%1 is active: its GRAFCET runs (step %2)</numerusform>
+            <numerusform>%1 is active: its GRAFCET runs (steps %2)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::ProblemCounter</name>
@@ -198,6 +229,13 @@
         <translation>
             <numerusform>Has a nested GRAFCET (%n step)</numerusform>
             <numerusform>Has a nested GRAFCET (%n steps)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Its nested GRAFCET has %n problems</source>
+        <translation>
+            <numerusform>Its nested GRAFCET has %n problem</numerusform>
+            <numerusform>Its nested GRAFCET has %n problems</numerusform>
         </translation>
     </message>
 </context>

@@ -316,6 +316,24 @@
     </message>
 </context>
 <context>
+    <name>DeclarationFixText</name>
+    <message>
+        <source>Declare &apos;%1&apos; as OUTPUT %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Declarar &apos;%1&apos; como salida %2</translation>
+    </message>
+    <message>
+        <source>Declare &apos;%1&apos; as INTERNAL %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Declarar &apos;%1&apos; como variable interna %2</translation>
+    </message>
+    <message>
+        <source>Declare &apos;%1&apos; as INPUT %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Declarar &apos;%1&apos; como entrada %2</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -693,6 +711,27 @@
     </message>
 </context>
 <context>
+    <name>GrafcetClipboard</name>
+    <message>
+        <source>The clipboard holds no GRAFCET steps</source>
+        <translation>El portapapeles no contiene etapas de GRAFCET</translation>
+    </message>
+    <message>
+        <source>Nothing pasted: the GRAFCET steps on the clipboard are damaged (%1)</source>
+        <extracomment>%1 what is wrong in the clipboard&apos;s data (in English), with where when known</extracomment>
+        <translation>No se ha pegado nada: las etapas de GRAFCET del portapapeles están dañadas (%1)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Etapa %1</translation>
+    </message>
+    <message>
+        <source>T%1 (%2 → %3): %4</source>
+        <extracomment>a transition copied as text: %1 its number, %2 and %3 the steps it links, %4 its receptivity</extracomment>
+        <translation>T%1 (%2 → %3): %4</translation>
+    </message>
+</context>
+<context>
     <name>GrafcetExport</name>
     <message>
         <source>Nested GRAFCET drawn by GG Studio</source>
@@ -736,6 +775,103 @@
     <message>
         <source>Move variable %1</source>
         <translation>Mover la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>NestedProblemText</name>
+    <message>
+        <source>the receptivity of T%2 of %1</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a transition of its nested GRAFCET</extracomment>
+        <translation>la receptividad de T%2 de %1</translation>
+    </message>
+    <message>
+        <source>action %3 of step %2 of %1</source>
+        <extracomment>%1: a GEMMA step; %2: a nested step&apos;s number; %3: the action&apos;s position in its list, from 1</extracomment>
+        <translation>la acción %3 de la etapa %2 de %1</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is not a declared variable.</source>
+        <translation>En %1: &apos;%2&apos; no es una variable declarada.</translation>
+    </message>
+    <message>
+        <source>In %1: a continuous action is N V or V IF &lt;condition&gt;.</source>
+        <translation>En %1: una acción continua es N V o V IF &lt;condición&gt;.</translation>
+    </message>
+    <message>
+        <source>In %1: a stored action is S V, R V or V := &lt;expression&gt;.</source>
+        <translation>En %1: una acción memorizada es S V, R V o V := &lt;expresión&gt;.</translation>
+    </message>
+    <message>
+        <source>Syntax error in %1: %2.</source>
+        <translation>Error de sintaxis en %1: %2.</translation>
+    </message>
+    <message>
+        <source>Type error in %1: %2.</source>
+        <translation>Error de tipo en %1: %2.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is %3; this action needs a BOOL variable.</source>
+        <extracomment>%3: an IEC type name (INT)</extracomment>
+        <translation>En %1: &apos;%2&apos; es %3; esta acción necesita una variable BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: %4 does not fit &apos;%2&apos; (%3): it cannot be assigned to it.</source>
+        <extracomment>%2: the target variable; %3: its type; %4: the value as written</extracomment>
+        <translation>En %1: %4 no corresponde a &apos;%2&apos; (%3): no se le puede asignar.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 names step %3, which the GRAFCET of %4 does not have.</source>
+        <extracomment>%2: a step activity as written (X9); %3: its step number; %4: the GEMMA step</extracomment>
+        <translation>En %1: %2 nombra la etapa %3, que el GRAFCET de %4 no tiene.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is longer than %3, the longest duration an IEC TIME (a TON preset) holds.</source>
+        <extracomment>%2: a duration as written (25d/X1); %3: the longest IEC TIME</extracomment>
+        <translation>En %1: %2 es más largo que %3, la duración más larga que cabe en un TIME IEC (la consigna de un TON).</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; divides by zero: on the PLC an integer division or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / 0)</extracomment>
+        <translation>En %1: &apos;%2&apos; divide por cero: en el PLC una división entera o MOD por cero detiene la tarea con un fallo, y una REAL da INF o NaN.</translation>
+    </message>
+    <message>
+        <source>In %1: the divisor of &apos;%2&apos; can be zero: an integer division or MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / Batch)</extracomment>
+        <translation>En %1: el divisor de &apos;%2&apos; puede ser cero: una división entera o MOD por cero detiene el PLC con un fallo (y la simulación), una REAL da INF o NaN.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is an edge on a variable that is not BOOL.</source>
+        <extracomment>%2: an edge as written (RE Level)</extracomment>
+        <translation>En %1: %2 es un flanco sobre una variable que no es BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is for receptivities only: an action cannot read an edge or a step duration.</source>
+        <translation>En %1: %2 es solo para receptividades: una acción no puede leer un flanco ni una duración de etapa.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is an input: it is read from the machine, actions never write it.</source>
+        <translation>En %1: &apos;%2&apos; es una entrada: se lee de la máquina, las acciones nunca la escriben.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is %3; a continuous action needs a BOOL variable.</source>
+        <extracomment>%3: an IEC type name (INT)</extracomment>
+        <translation>En %1: &apos;%2&apos; es %3; una acción continua necesita una variable BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is also driven by continuous actions; a variable has either continuous or stored actions (the stored one is not generated).</source>
+        <translation>En %1: &apos;%2&apos; también la mandan acciones continuas; una variable tiene acciones continuas o memorizadas (la memorizada no se genera).</translation>
+    </message>
+    <message>
+        <source>In %1: invalid variable name: %2.</source>
+        <translation>En %1: nombre de variable no válido: %2.</translation>
+    </message>
+    <message>
+        <source>In %1: the condition reads &apos;%2&apos;, a continuous output of the same GRAFCET.</source>
+        <translation>En %1: la condición lee &apos;%2&apos;, una salida continua del mismo GRAFCET.</translation>
+    </message>
+    <message>
+        <source>The receptivity of T%2 of %1 is empty: write TRUE for a transition that is always ready.</source>
+        <translation>La receptividad de T%2 de %1 está vacía: escriba TRUE para una transición siempre lista.</translation>
     </message>
 </context>
 <context>
@@ -1862,6 +1998,21 @@
     </message>
 </context>
 <context>
+    <name>editor::BranchDrag</name>
+    <message>
+        <source>Step %1 is on no branch of a divergence: there is no branch to move</source>
+        <translation>La etapa %1 no está en ninguna rama de una divergencia: no hay rama que mover</translation>
+    </message>
+    <message>
+        <source>Move the branch of step %1 left in %2</source>
+        <translation>Mover la rama de la etapa %1 a la izquierda en %2</translation>
+    </message>
+    <message>
+        <source>Move the branch of step %1 right in %2</source>
+        <translation>Mover la rama de la etapa %1 a la derecha en %2</translation>
+    </message>
+</context>
+<context>
     <name>editor::ChartContextMenu</name>
     <message>
         <source>&amp;Show %1</source>
@@ -1952,6 +2103,14 @@
     <message>
         <source>Step %1</source>
         <translation>Etapa %1</translation>
+    </message>
+    <message>
+        <source>Tick an upstream step: a transition leaves at least one step.</source>
+        <translation>Marque una etapa anterior: una transición deja al menos una etapa.</translation>
+    </message>
+    <message>
+        <source>Tick a downstream step: a transition activates at least one step. To end a branch on a step with no transition after it, use Add Branch Ending on a Step on the step.</source>
+        <translation>Marque una etapa siguiente: una transición activa al menos una etapa. Para terminar una rama en una etapa sin transición después, use «Añadir rama que termina en una etapa» en la etapa.</translation>
     </message>
 </context>
 <context>
@@ -2324,6 +2483,77 @@
         <source>Create GRAFCET of %1</source>
         <translation>Crear el GRAFCET de %1</translation>
     </message>
+    <message>
+        <source>Add Branch &amp;Ending on a Step</source>
+        <translation>Añadir rama que &amp;termina en una etapa</translation>
+    </message>
+    <message>
+        <source>A new branch from this step to a new step with no transition after it (an exit step)</source>
+        <translation>Una nueva rama de esta etapa a una nueva etapa sin transición después (una etapa de salida)</translation>
+    </message>
+    <message>
+        <source>Move Branch &amp;Left</source>
+        <translation>Mover la rama a la &amp;izquierda</translation>
+    </message>
+    <message>
+        <source>Swap the branch holding this step with the one at its left</source>
+        <translation>Intercambia la rama que contiene esta etapa con la de su izquierda</translation>
+    </message>
+    <message>
+        <source>Move Branch Ri&amp;ght</source>
+        <translation>Mover la rama a la &amp;derecha</translation>
+    </message>
+    <message>
+        <source>Swap the branch holding this step with the one at its right</source>
+        <translation>Intercambia la rama que contiene esta etapa con la de su derecha</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Steps</source>
+        <translation>Cor&amp;tar etapas</translation>
+    </message>
+    <message>
+        <source>Add branch ending on a step at step %1 in %2</source>
+        <extracomment>%1 the step the branch leaves, %2 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Añadir rama que termina en una etapa en la etapa %1 de %2</translation>
+    </message>
+    <message>
+        <source>Move branch left in %1</source>
+        <extracomment>%1 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Mover una rama a la izquierda en %1</translation>
+    </message>
+    <message>
+        <source>Move branch right in %1</source>
+        <translation>Mover una rama a la derecha en %1</translation>
+    </message>
+    <message>
+        <source>Remove T%1 from %2</source>
+        <translation>Quitar T%1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n transitions from %1</source>
+        <translation>
+            <numerusform>Quitar %n transición de %1</numerusform>
+            <numerusform>Quitar %n transiciones de %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n elements from %1</source>
+        <translation>
+            <numerusform>Quitar %n elemento de %1</numerusform>
+            <numerusform>Quitar %n elementos de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cut step %1 from %2</source>
+        <translation>Cortar la etapa %1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n steps from %1</source>
+        <translation>
+            <numerusform>Cortar %n etapa de %1</numerusform>
+            <numerusform>Cortar %n etapas de %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetActionsModel</name>
@@ -2387,16 +2617,19 @@ S, R: ponerla a TRUE o FALSE
         <translation>%1 está activa: su GRAFCET evoluciona. Unstable: el último ciclo terminó sin una situación estable</translation>
     </message>
     <message>
-        <source>%1 is active: its GRAFCET runs (steps %2)</source>
-        <translation>%1 está activa: su GRAFCET evoluciona (etapas %2)</translation>
-    </message>
-    <message>
         <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
         <translation>%1 acaba de activarse: su GRAFCET empieza en sus etapas iniciales en el próximo ciclo</translation>
     </message>
     <message>
         <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
         <translation>%1 no está activa: su GRAFCET se muestra en gris, tal como quedó</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 is active: its GRAFCET runs (step(s) %2)</source>
+        <translation>
+            <numerusform>%1 está activa: su GRAFCET evoluciona (etapa %2)</numerusform>
+            <numerusform>%1 está activa: su GRAFCET evoluciona (etapas %2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2482,6 +2715,10 @@ S, R: ponerla a TRUE o FALSE
         <source>%1 already has a step %2: choose another number.</source>
         <translation>%1 ya tiene una etapa %2: elija otro número.</translation>
     </message>
+    <message>
+        <source>Step numbers start at 1: %1 is not a step number.</source>
+        <translation>Los números de etapa empiezan en 1: %1 no es un número de etapa.</translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetTransitionDock</name>
@@ -2527,6 +2764,49 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>In the nested GRAFCET of %1 %2</source>
         <translation>En el GRAFCET anidado de %1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::LinkDrag</name>
+    <message>
+        <source>A transition cannot be linked to a transition: steps and transitions alternate</source>
+        <translation>Una transición no se puede enlazar con una transición: etapas y transiciones se alternan</translation>
+    </message>
+    <message>
+        <source>Step %1 already leads to step %2</source>
+        <translation>La etapa %1 ya lleva a la etapa %2</translation>
+    </message>
+    <message>
+        <source>Step %1 already precedes T%2</source>
+        <translation>La etapa %1 ya precede a T%2</translation>
+    </message>
+    <message>
+        <source>Step %1 already follows T%2</source>
+        <translation>La etapa %1 ya sigue a T%2</translation>
+    </message>
+    <message>
+        <source>Step %1 cannot be linked to itself through one transition</source>
+        <translation>La etapa %1 no se puede enlazar consigo misma a través de una sola transición</translation>
+    </message>
+    <message>
+        <source>Step %1 would be linked to itself through T%2</source>
+        <translation>La etapa %1 quedaría enlazada consigo misma a través de T%2</translation>
+    </message>
+    <message>
+        <source>Drag onto a step or a transition to link them</source>
+        <translation>Arrastre hasta una etapa o una transición para enlazarlas</translation>
+    </message>
+    <message>
+        <source>Link step %1 to step %2 in %3</source>
+        <translation>Enlazar la etapa %1 con la etapa %2 en %3</translation>
+    </message>
+    <message>
+        <source>Link step %1 to T%2 in %3</source>
+        <translation>Enlazar la etapa %1 con T%2 en %3</translation>
+    </message>
+    <message>
+        <source>Link T%1 to step %2 in %3</source>
+        <translation>Enlazar T%1 con la etapa %2 en %3</translation>
     </message>
 </context>
 <context>
@@ -2622,10 +2902,6 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>Draw the hidden states and transitions faded, so they can be selected</source>
         <translation>Dibujar atenuados los estados y transiciones ocultos, para poder seleccionarlos</translation>
-    </message>
-    <message>
-        <source>&amp;Fit Chart</source>
-        <translation>&amp;Ajustar el diagrama</translation>
     </message>
     <message>
         <source>&amp;Actual Size (100 %)</source>
@@ -2914,6 +3190,10 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>Verification finished: nothing is violated, but some properties are undecided (see Problems)</source>
         <translation>Verificación terminada: nada se incumple, pero algunas propiedades están sin decidir (ver Problemas)</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to Window</source>
+        <translation>&amp;Ajustar a la ventana</translation>
     </message>
 </context>
 <context>
@@ -3835,6 +4115,17 @@ Etapa encapsulante: sus transiciones se franquean haga lo que haga el comportami
         <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
         <translation>Su GRAFCET evoluciona: etapas %1 activas</translation>
     </message>
+    <message>
+        <source>Its nested GRAFCET has 1 problem</source>
+        <translation>Su GRAFCET anidado tiene 1 problema</translation>
+    </message>
+    <message numerus="yes">
+        <source>Its nested GRAFCET has %n problems</source>
+        <translation>
+            <numerusform>Su GRAFCET anidado tiene %n problema</numerusform>
+            <numerusform>Su GRAFCET anidado tiene %n problemas</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::TraceTableModel</name>
@@ -4107,10 +4398,6 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
         <translation>Añadir</translation>
     </message>
     <message>
-        <source>Add a BOOL variable after the current one</source>
-        <translation>Añadir una variable BOOL después de la actual</translation>
-    </message>
-    <message>
         <source>Remove</source>
         <translation>Eliminar</translation>
     </message>
@@ -4178,12 +4465,16 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
         <translation>Copiar las variables seleccionadas como filas separadas por tabuladores</translation>
     </message>
     <message>
-        <source>Paste rows from a spreadsheet: name, type, default, comment and kind</source>
-        <translation>Pegar filas de una hoja de cálculo: nombre, tipo, valor inicial, comentario y clase</translation>
-    </message>
-    <message>
         <source>Show only the variables whose name, type, kind, default or comment contains this text</source>
         <translation>Mostrar solo las variables cuyo nombre, tipo, clase, valor inicial o comentario contiene este texto</translation>
+    </message>
+    <message>
+        <source>Add a BOOL variable after the current one (Insert)</source>
+        <translation>Añadir una variable BOOL después de la actual (Insert)</translation>
+    </message>
+    <message>
+        <source>Paste rows from a spreadsheet: name, type, default, comment and kind, in this order or in the order a first row of column titles gives</source>
+        <translation>Pegar filas de una hoja de cálculo: nombre, tipo, valor inicial, comentario y clase, en este orden o en el que indique una primera fila de títulos de columna</translation>
     </message>
 </context>
 <context>
@@ -4437,8 +4728,8 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
         <translation>Zoom: %1 %</translation>
     </message>
     <message>
-        <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
-        <translation>Ctrl+rueda hace zoom alrededor del ratón; Ctrl+0 ajusta el diagrama a la ventana</translation>
+        <source>The zoom of the tab in front. Ctrl+wheel or a pinch zooms about the mouse; Ctrl+0 fits the drawing in the window, Ctrl+1 shows it at its actual size</source>
+        <translation>El zoom de la pestaña en primer plano. Ctrl+rueda o un gesto de pellizco hace zoom alrededor del ratón; Ctrl+0 ajusta el dibujo a la ventana, Ctrl+1 lo muestra a su tamaño real</translation>
     </message>
 </context>
 <context>

@@ -316,6 +316,24 @@
     </message>
 </context>
 <context>
+    <name>DeclarationFixText</name>
+    <message>
+        <source>Declare &apos;%1&apos; as OUTPUT %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Déclarer « %1 » comme sortie %2</translation>
+    </message>
+    <message>
+        <source>Declare &apos;%1&apos; as INTERNAL %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Déclarer « %1 » comme variable interne %2</translation>
+    </message>
+    <message>
+        <source>Declare &apos;%1&apos; as INPUT %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Déclarer « %1 » comme entrée %2</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -693,6 +711,27 @@
     </message>
 </context>
 <context>
+    <name>GrafcetClipboard</name>
+    <message>
+        <source>The clipboard holds no GRAFCET steps</source>
+        <translation>Le presse-papiers ne contient aucune étape de GRAFCET</translation>
+    </message>
+    <message>
+        <source>Nothing pasted: the GRAFCET steps on the clipboard are damaged (%1)</source>
+        <extracomment>%1 what is wrong in the clipboard&apos;s data (in English), with where when known</extracomment>
+        <translation>Rien n’a été collé : les étapes de GRAFCET du presse-papiers sont endommagées (%1)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Étape %1</translation>
+    </message>
+    <message>
+        <source>T%1 (%2 → %3): %4</source>
+        <extracomment>a transition copied as text: %1 its number, %2 and %3 the steps it links, %4 its receptivity</extracomment>
+        <translation>T%1 (%2 → %3) : %4</translation>
+    </message>
+</context>
+<context>
     <name>GrafcetExport</name>
     <message>
         <source>Nested GRAFCET drawn by GG Studio</source>
@@ -736,6 +775,103 @@
     <message>
         <source>Move variable %1</source>
         <translation>Déplacer la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>NestedProblemText</name>
+    <message>
+        <source>the receptivity of T%2 of %1</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a transition of its nested GRAFCET</extracomment>
+        <translation>la réceptivité de T%2 de %1</translation>
+    </message>
+    <message>
+        <source>action %3 of step %2 of %1</source>
+        <extracomment>%1: a GEMMA step; %2: a nested step&apos;s number; %3: the action&apos;s position in its list, from 1</extracomment>
+        <translation>l&apos;action %3 de l&apos;étape %2 de %1</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is not a declared variable.</source>
+        <translation>Dans %1 : « %2 » n&apos;est pas une variable déclarée.</translation>
+    </message>
+    <message>
+        <source>In %1: a continuous action is N V or V IF &lt;condition&gt;.</source>
+        <translation>Dans %1 : une action continue s&apos;écrit N V ou V IF &lt;condition&gt;.</translation>
+    </message>
+    <message>
+        <source>In %1: a stored action is S V, R V or V := &lt;expression&gt;.</source>
+        <translation>Dans %1 : une action mémorisée s&apos;écrit S V, R V ou V := &lt;expression&gt;.</translation>
+    </message>
+    <message>
+        <source>Syntax error in %1: %2.</source>
+        <translation>Erreur de syntaxe dans %1 : %2.</translation>
+    </message>
+    <message>
+        <source>Type error in %1: %2.</source>
+        <translation>Erreur de type dans %1 : %2.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is %3; this action needs a BOOL variable.</source>
+        <extracomment>%3: an IEC type name (INT)</extracomment>
+        <translation>Dans %1 : « %2 » est de type %3 ; cette action demande une variable BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: %4 does not fit &apos;%2&apos; (%3): it cannot be assigned to it.</source>
+        <extracomment>%2: the target variable; %3: its type; %4: the value as written</extracomment>
+        <translation>Dans %1 : %4 ne convient pas à « %2 » (%3) : il ne peut pas lui être affecté.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 names step %3, which the GRAFCET of %4 does not have.</source>
+        <extracomment>%2: a step activity as written (X9); %3: its step number; %4: the GEMMA step</extracomment>
+        <translation>Dans %1 : %2 désigne l&apos;étape %3, que le GRAFCET de %4 n&apos;a pas.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is longer than %3, the longest duration an IEC TIME (a TON preset) holds.</source>
+        <extracomment>%2: a duration as written (25d/X1); %3: the longest IEC TIME</extracomment>
+        <translation>Dans %1 : %2 dépasse %3, la plus longue durée que contient un TIME IEC (la consigne d&apos;un TON).</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; divides by zero: on the PLC an integer division or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / 0)</extracomment>
+        <translation>Dans %1 : « %2 » divise par zéro : sur l&apos;automate, une division entière ou un MOD par zéro arrête la tâche en défaut, et une division REAL donne INF ou NaN.</translation>
+    </message>
+    <message>
+        <source>In %1: the divisor of &apos;%2&apos; can be zero: an integer division or MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / Batch)</extracomment>
+        <translation>Dans %1 : le diviseur de « %2 » peut valoir zéro : une division entière ou un MOD par zéro arrête l&apos;automate en défaut (et la simulation), une division REAL donne INF ou NaN.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is an edge on a variable that is not BOOL.</source>
+        <extracomment>%2: an edge as written (RE Level)</extracomment>
+        <translation>Dans %1 : %2 est un front sur une variable qui n&apos;est pas BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is for receptivities only: an action cannot read an edge or a step duration.</source>
+        <translation>Dans %1 : %2 est réservé aux réceptivités : une action ne peut lire ni un front ni une durée d&apos;étape.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is an input: it is read from the machine, actions never write it.</source>
+        <translation>Dans %1 : « %2 » est une entrée : elle est lue sur la machine, les actions ne l&apos;écrivent jamais.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is %3; a continuous action needs a BOOL variable.</source>
+        <extracomment>%3: an IEC type name (INT)</extracomment>
+        <translation>Dans %1 : « %2 » est de type %3 ; une action continue demande une variable BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is also driven by continuous actions; a variable has either continuous or stored actions (the stored one is not generated).</source>
+        <translation>Dans %1 : « %2 » est aussi commandée par des actions continues ; une variable a soit des actions continues, soit des actions mémorisées (celle-ci, mémorisée, n&apos;est pas générée).</translation>
+    </message>
+    <message>
+        <source>In %1: invalid variable name: %2.</source>
+        <translation>Dans %1 : nom de variable invalide : %2.</translation>
+    </message>
+    <message>
+        <source>In %1: the condition reads &apos;%2&apos;, a continuous output of the same GRAFCET.</source>
+        <translation>Dans %1 : la condition lit « %2 », une sortie continue du même GRAFCET.</translation>
+    </message>
+    <message>
+        <source>The receptivity of T%2 of %1 is empty: write TRUE for a transition that is always ready.</source>
+        <translation>La réceptivité de T%2 de %1 est vide : écrivez TRUE pour une transition toujours prête.</translation>
     </message>
 </context>
 <context>
@@ -1862,6 +1998,21 @@
     </message>
 </context>
 <context>
+    <name>editor::BranchDrag</name>
+    <message>
+        <source>Step %1 is on no branch of a divergence: there is no branch to move</source>
+        <translation>L’étape %1 n’est sur aucune branche d’une divergence : il n’y a pas de branche à déplacer</translation>
+    </message>
+    <message>
+        <source>Move the branch of step %1 left in %2</source>
+        <translation>Déplacer la branche de l’étape %1 vers la gauche dans %2</translation>
+    </message>
+    <message>
+        <source>Move the branch of step %1 right in %2</source>
+        <translation>Déplacer la branche de l’étape %1 vers la droite dans %2</translation>
+    </message>
+</context>
+<context>
     <name>editor::ChartContextMenu</name>
     <message>
         <source>&amp;Show %1</source>
@@ -1952,6 +2103,14 @@
     <message>
         <source>Step %1</source>
         <translation>Étape %1</translation>
+    </message>
+    <message>
+        <source>Tick an upstream step: a transition leaves at least one step.</source>
+        <translation>Cochez une étape amont : une transition quitte au moins une étape.</translation>
+    </message>
+    <message>
+        <source>Tick a downstream step: a transition activates at least one step. To end a branch on a step with no transition after it, use Add Branch Ending on a Step on the step.</source>
+        <translation>Cochez une étape aval : une transition active au moins une étape. Pour finir une branche sur une étape sans transition après elle, utilisez « Ajouter une branche finissant sur une étape » sur l’étape.</translation>
     </message>
 </context>
 <context>
@@ -2324,6 +2483,77 @@
         <source>Create GRAFCET of %1</source>
         <translation>Créer le GRAFCET de %1</translation>
     </message>
+    <message>
+        <source>Add Branch &amp;Ending on a Step</source>
+        <translation>Ajouter une branche finissant sur une &amp;étape</translation>
+    </message>
+    <message>
+        <source>A new branch from this step to a new step with no transition after it (an exit step)</source>
+        <translation>Une nouvelle branche de cette étape vers une nouvelle étape sans transition après elle (une étape de sortie)</translation>
+    </message>
+    <message>
+        <source>Move Branch &amp;Left</source>
+        <translation>Déplacer la branche à &amp;gauche</translation>
+    </message>
+    <message>
+        <source>Swap the branch holding this step with the one at its left</source>
+        <translation>Échange la branche qui contient cette étape avec celle à sa gauche</translation>
+    </message>
+    <message>
+        <source>Move Branch Ri&amp;ght</source>
+        <translation>Déplacer la branche à &amp;droite</translation>
+    </message>
+    <message>
+        <source>Swap the branch holding this step with the one at its right</source>
+        <translation>Échange la branche qui contient cette étape avec celle à sa droite</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Steps</source>
+        <translation>Cou&amp;per les étapes</translation>
+    </message>
+    <message>
+        <source>Add branch ending on a step at step %1 in %2</source>
+        <extracomment>%1 the step the branch leaves, %2 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Ajouter une branche finissant sur une étape à l’étape %1 de %2</translation>
+    </message>
+    <message>
+        <source>Move branch left in %1</source>
+        <extracomment>%1 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Déplacer une branche à gauche dans %1</translation>
+    </message>
+    <message>
+        <source>Move branch right in %1</source>
+        <translation>Déplacer une branche à droite dans %1</translation>
+    </message>
+    <message>
+        <source>Remove T%1 from %2</source>
+        <translation>Supprimer T%1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n transitions from %1</source>
+        <translation>
+            <numerusform>Supprimer %n transition de %1</numerusform>
+            <numerusform>Supprimer %n transitions de %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n elements from %1</source>
+        <translation>
+            <numerusform>Supprimer %n élément de %1</numerusform>
+            <numerusform>Supprimer %n éléments de %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cut step %1 from %2</source>
+        <translation>Couper l’étape %1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n steps from %1</source>
+        <translation>
+            <numerusform>Couper %n étape de %1</numerusform>
+            <numerusform>Couper %n étapes de %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetActionsModel</name>
@@ -2387,16 +2617,19 @@ S, R&#xa0;: la mettre à TRUE ou à FALSE
         <translation>%1 est active&#xa0;: son GRAFCET évolue. Unstable&#xa0;: le dernier cycle s&apos;est terminé sans situation stable</translation>
     </message>
     <message>
-        <source>%1 is active: its GRAFCET runs (steps %2)</source>
-        <translation>%1 est active&#xa0;: son GRAFCET évolue (étapes %2)</translation>
-    </message>
-    <message>
         <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
         <translation>%1 vient d&apos;être activée&#xa0;: son GRAFCET part de ses étapes initiales au prochain cycle</translation>
     </message>
     <message>
         <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
         <translation>%1 n&apos;est pas active&#xa0;: son GRAFCET est grisé, tel qu&apos;il a été laissé</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 is active: its GRAFCET runs (step(s) %2)</source>
+        <translation>
+            <numerusform>%1 est active : son GRAFCET évolue (étape %2)</numerusform>
+            <numerusform>%1 est active : son GRAFCET évolue (étapes %2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2482,6 +2715,10 @@ S, R&#xa0;: la mettre à TRUE ou à FALSE
         <source>%1 already has a step %2: choose another number.</source>
         <translation>%1 a déjà une étape %2&#xa0;: choisissez un autre numéro.</translation>
     </message>
+    <message>
+        <source>Step numbers start at 1: %1 is not a step number.</source>
+        <translation>Les numéros d&apos;étape commencent à 1 : %1 n&apos;est pas un numéro d&apos;étape.</translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetTransitionDock</name>
@@ -2527,6 +2764,49 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>In the nested GRAFCET of %1 %2</source>
         <translation>Dans le GRAFCET imbriqué de %1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::LinkDrag</name>
+    <message>
+        <source>A transition cannot be linked to a transition: steps and transitions alternate</source>
+        <translation>Une transition ne peut pas être liée à une transition : étapes et transitions alternent</translation>
+    </message>
+    <message>
+        <source>Step %1 already leads to step %2</source>
+        <translation>L’étape %1 mène déjà à l’étape %2</translation>
+    </message>
+    <message>
+        <source>Step %1 already precedes T%2</source>
+        <translation>L’étape %1 précède déjà T%2</translation>
+    </message>
+    <message>
+        <source>Step %1 already follows T%2</source>
+        <translation>L’étape %1 suit déjà T%2</translation>
+    </message>
+    <message>
+        <source>Step %1 cannot be linked to itself through one transition</source>
+        <translation>L’étape %1 ne peut pas être liée à elle-même par une seule transition</translation>
+    </message>
+    <message>
+        <source>Step %1 would be linked to itself through T%2</source>
+        <translation>L’étape %1 serait liée à elle-même par T%2</translation>
+    </message>
+    <message>
+        <source>Drag onto a step or a transition to link them</source>
+        <translation>Faites glisser jusqu’à une étape ou une transition pour les lier</translation>
+    </message>
+    <message>
+        <source>Link step %1 to step %2 in %3</source>
+        <translation>Lier l’étape %1 à l’étape %2 dans %3</translation>
+    </message>
+    <message>
+        <source>Link step %1 to T%2 in %3</source>
+        <translation>Lier l’étape %1 à T%2 dans %3</translation>
+    </message>
+    <message>
+        <source>Link T%1 to step %2 in %3</source>
+        <translation>Lier T%1 à l’étape %2 dans %3</translation>
     </message>
 </context>
 <context>
@@ -2622,10 +2902,6 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>Draw the hidden states and transitions faded, so they can be selected</source>
         <translation>Dessiner en estompé les états et transitions masqués, pour pouvoir les sélectionner</translation>
-    </message>
-    <message>
-        <source>&amp;Fit Chart</source>
-        <translation>Ajuster à la &amp;fenêtre</translation>
     </message>
     <message>
         <source>&amp;Actual Size (100 %)</source>
@@ -2914,6 +3190,10 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>Verification finished: nothing is violated, but some properties are undecided (see Problems)</source>
         <translation>Vérification terminée : rien n&apos;est violé, mais certaines propriétés sont indécises (voir Problèmes)</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to Window</source>
+        <translation>Ajuster à la &amp;fenêtre</translation>
     </message>
 </context>
 <context>
@@ -3835,6 +4115,17 @@ Macro-étape&#xa0;: ses transitions attendent que le comportement imbriqué soit
         <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
         <translation>Son GRAFCET évolue&#xa0;: étapes %1 actives</translation>
     </message>
+    <message>
+        <source>Its nested GRAFCET has 1 problem</source>
+        <translation>Son GRAFCET imbriqué a 1 problème</translation>
+    </message>
+    <message numerus="yes">
+        <source>Its nested GRAFCET has %n problems</source>
+        <translation>
+            <numerusform>Son GRAFCET imbriqué a %n problème</numerusform>
+            <numerusform>Son GRAFCET imbriqué a %n problèmes</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::TraceTableModel</name>
@@ -4107,10 +4398,6 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
         <translation>Ajouter</translation>
     </message>
     <message>
-        <source>Add a BOOL variable after the current one</source>
-        <translation>Ajouter une variable BOOL après la variable courante</translation>
-    </message>
-    <message>
         <source>Remove</source>
         <translation>Supprimer</translation>
     </message>
@@ -4178,12 +4465,16 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
         <translation>Copier les variables sélectionnées en lignes séparées par des tabulations</translation>
     </message>
     <message>
-        <source>Paste rows from a spreadsheet: name, type, default, comment and kind</source>
-        <translation>Coller des lignes d&apos;un tableur&#xa0;: nom, type, valeur initiale, commentaire et nature</translation>
-    </message>
-    <message>
         <source>Show only the variables whose name, type, kind, default or comment contains this text</source>
         <translation>N&apos;afficher que les variables dont le nom, le type, la nature, la valeur initiale ou le commentaire contient ce texte</translation>
+    </message>
+    <message>
+        <source>Add a BOOL variable after the current one (Insert)</source>
+        <translation>Ajouter une variable BOOL après la variable courante (Inser)</translation>
+    </message>
+    <message>
+        <source>Paste rows from a spreadsheet: name, type, default, comment and kind, in this order or in the order a first row of column titles gives</source>
+        <translation>Coller des lignes d&apos;un tableur : nom, type, valeur initiale, commentaire et nature, dans cet ordre ou dans l&apos;ordre que donne une première ligne de titres de colonnes</translation>
     </message>
 </context>
 <context>
@@ -4437,8 +4728,8 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
         <translation>Zoom&#xa0;: %1 %</translation>
     </message>
     <message>
-        <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
-        <translation>Ctrl+molette zoome autour de la souris&#xa0;; Ctrl+0 ajuste le diagramme à la fenêtre</translation>
+        <source>The zoom of the tab in front. Ctrl+wheel or a pinch zooms about the mouse; Ctrl+0 fits the drawing in the window, Ctrl+1 shows it at its actual size</source>
+        <translation>Le zoom de l’onglet au premier plan. Ctrl+molette ou un pincement zoome autour de la souris ; Ctrl+0 ajuste le dessin à la fenêtre, Ctrl+1 l’affiche à sa taille réelle</translation>
     </message>
 </context>
 <context>

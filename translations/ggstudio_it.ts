@@ -316,6 +316,24 @@
     </message>
 </context>
 <context>
+    <name>DeclarationFixText</name>
+    <message>
+        <source>Declare &apos;%1&apos; as OUTPUT %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Dichiarare &apos;%1&apos; come uscita %2</translation>
+    </message>
+    <message>
+        <source>Declare &apos;%1&apos; as INTERNAL %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Dichiarare &apos;%1&apos; come variabile interna %2</translation>
+    </message>
+    <message>
+        <source>Declare &apos;%1&apos; as INPUT %2</source>
+        <extracomment>A quick fix; %2: an IEC type name (BOOL, INT)</extracomment>
+        <translation>Dichiarare &apos;%1&apos; come ingresso %2</translation>
+    </message>
+</context>
+<context>
     <name>DiagnosticText</name>
     <message>
         <source>the name is empty</source>
@@ -693,6 +711,27 @@
     </message>
 </context>
 <context>
+    <name>GrafcetClipboard</name>
+    <message>
+        <source>The clipboard holds no GRAFCET steps</source>
+        <translation>Gli appunti non contengono tappe di GRAFCET</translation>
+    </message>
+    <message>
+        <source>Nothing pasted: the GRAFCET steps on the clipboard are damaged (%1)</source>
+        <extracomment>%1 what is wrong in the clipboard&apos;s data (in English), with where when known</extracomment>
+        <translation>Non è stato incollato nulla: le tappe di GRAFCET negli appunti sono danneggiate (%1)</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Tappa %1</translation>
+    </message>
+    <message>
+        <source>T%1 (%2 → %3): %4</source>
+        <extracomment>a transition copied as text: %1 its number, %2 and %3 the steps it links, %4 its receptivity</extracomment>
+        <translation>T%1 (%2 → %3): %4</translation>
+    </message>
+</context>
+<context>
     <name>GrafcetExport</name>
     <message>
         <source>Nested GRAFCET drawn by GG Studio</source>
@@ -736,6 +775,103 @@
     <message>
         <source>Move variable %1</source>
         <translation>Sposta la variabile %1</translation>
+    </message>
+</context>
+<context>
+    <name>NestedProblemText</name>
+    <message>
+        <source>the receptivity of T%2 of %1</source>
+        <extracomment>%1: a GEMMA step; %2: the number of a transition of its nested GRAFCET</extracomment>
+        <translation>recettività di T%2 di %1</translation>
+    </message>
+    <message>
+        <source>action %3 of step %2 of %1</source>
+        <extracomment>%1: a GEMMA step; %2: a nested step&apos;s number; %3: the action&apos;s position in its list, from 1</extracomment>
+        <translation>azione %3 della tappa %2 di %1</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is not a declared variable.</source>
+        <translation>In %1: &apos;%2&apos; non è una variabile dichiarata.</translation>
+    </message>
+    <message>
+        <source>In %1: a continuous action is N V or V IF &lt;condition&gt;.</source>
+        <translation>In %1: un&apos;azione continua è N V o V IF &lt;condizione&gt;.</translation>
+    </message>
+    <message>
+        <source>In %1: a stored action is S V, R V or V := &lt;expression&gt;.</source>
+        <translation>In %1: un&apos;azione memorizzata è S V, R V o V := &lt;espressione&gt;.</translation>
+    </message>
+    <message>
+        <source>Syntax error in %1: %2.</source>
+        <translation>Errore di sintassi in %1: %2.</translation>
+    </message>
+    <message>
+        <source>Type error in %1: %2.</source>
+        <translation>Errore di tipo in %1: %2.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is %3; this action needs a BOOL variable.</source>
+        <extracomment>%3: an IEC type name (INT)</extracomment>
+        <translation>In %1: &apos;%2&apos; è %3; questa azione richiede una variabile BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: %4 does not fit &apos;%2&apos; (%3): it cannot be assigned to it.</source>
+        <extracomment>%2: the target variable; %3: its type; %4: the value as written</extracomment>
+        <translation>In %1: %4 non è adatto a &apos;%2&apos; (%3): non gli può essere assegnato.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 names step %3, which the GRAFCET of %4 does not have.</source>
+        <extracomment>%2: a step activity as written (X9); %3: its step number; %4: the GEMMA step</extracomment>
+        <translation>In %1: %2 nomina la tappa %3, che il GRAFCET di %4 non ha.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is longer than %3, the longest duration an IEC TIME (a TON preset) holds.</source>
+        <extracomment>%2: a duration as written (25d/X1); %3: the longest IEC TIME</extracomment>
+        <translation>In %1: %2 è più lungo di %3, la durata più lunga che un TIME IEC (il preset di un TON) può contenere.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; divides by zero: on the PLC an integer division or MOD by zero stops the task with a fault, and a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / 0)</extracomment>
+        <translation>In %1: &apos;%2&apos; divide per zero: sul PLC una divisione intera o MOD per zero ferma il task con un guasto, e una REAL dà INF o NaN.</translation>
+    </message>
+    <message>
+        <source>In %1: the divisor of &apos;%2&apos; can be zero: an integer division or MOD by zero stops the PLC with a fault (and the simulation), a REAL one gives INF or NaN.</source>
+        <extracomment>%2: a division as written (Count / Batch)</extracomment>
+        <translation>In %1: il divisore di &apos;%2&apos; può essere zero: una divisione intera o MOD per zero ferma il PLC con un guasto (e la simulazione), una REAL dà INF o NaN.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is an edge on a variable that is not BOOL.</source>
+        <extracomment>%2: an edge as written (RE Level)</extracomment>
+        <translation>In %1: %2 è un fronte su una variabile che non è BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: %2 is for receptivities only: an action cannot read an edge or a step duration.</source>
+        <translation>In %1: %2 è solo per le recettività: un&apos;azione non può leggere un fronte né una durata di tappa.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is an input: it is read from the machine, actions never write it.</source>
+        <translation>In %1: &apos;%2&apos; è un ingresso: è letto dalla macchina, le azioni non lo scrivono mai.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is %3; a continuous action needs a BOOL variable.</source>
+        <extracomment>%3: an IEC type name (INT)</extracomment>
+        <translation>In %1: &apos;%2&apos; è %3; un&apos;azione continua richiede una variabile BOOL.</translation>
+    </message>
+    <message>
+        <source>In %1: &apos;%2&apos; is also driven by continuous actions; a variable has either continuous or stored actions (the stored one is not generated).</source>
+        <translation>In %1: &apos;%2&apos; è pilotata anche da azioni continue; una variabile ha azioni continue o memorizzate (quella memorizzata non è generata).</translation>
+    </message>
+    <message>
+        <source>In %1: invalid variable name: %2.</source>
+        <translation>In %1: nome di variabile non valido: %2.</translation>
+    </message>
+    <message>
+        <source>In %1: the condition reads &apos;%2&apos;, a continuous output of the same GRAFCET.</source>
+        <translation>In %1: la condizione legge &apos;%2&apos;, un&apos;uscita continua dello stesso GRAFCET.</translation>
+    </message>
+    <message>
+        <source>The receptivity of T%2 of %1 is empty: write TRUE for a transition that is always ready.</source>
+        <translation>La recettività di T%2 di %1 è vuota: scrivete TRUE per una transizione sempre pronta.</translation>
     </message>
 </context>
 <context>
@@ -1862,6 +1998,21 @@
     </message>
 </context>
 <context>
+    <name>editor::BranchDrag</name>
+    <message>
+        <source>Step %1 is on no branch of a divergence: there is no branch to move</source>
+        <translation>La tappa %1 non è su alcun ramo di una divergenza: non c’è alcun ramo da spostare</translation>
+    </message>
+    <message>
+        <source>Move the branch of step %1 left in %2</source>
+        <translation>Sposta il ramo della tappa %1 a sinistra in %2</translation>
+    </message>
+    <message>
+        <source>Move the branch of step %1 right in %2</source>
+        <translation>Sposta il ramo della tappa %1 a destra in %2</translation>
+    </message>
+</context>
+<context>
     <name>editor::ChartContextMenu</name>
     <message>
         <source>&amp;Show %1</source>
@@ -1952,6 +2103,14 @@
     <message>
         <source>Step %1</source>
         <translation>Tappa %1</translation>
+    </message>
+    <message>
+        <source>Tick an upstream step: a transition leaves at least one step.</source>
+        <translation>Spuntare una tappa a monte: una transizione lascia almeno una tappa.</translation>
+    </message>
+    <message>
+        <source>Tick a downstream step: a transition activates at least one step. To end a branch on a step with no transition after it, use Add Branch Ending on a Step on the step.</source>
+        <translation>Spuntare una tappa a valle: una transizione attiva almeno una tappa. Per terminare un ramo su una tappa senza transizione dopo, usare «Aggiungi ramo che termina su una tappa» sulla tappa.</translation>
     </message>
 </context>
 <context>
@@ -2324,6 +2483,77 @@
         <source>Create GRAFCET of %1</source>
         <translation>Crea il GRAFCET di %1</translation>
     </message>
+    <message>
+        <source>Add Branch &amp;Ending on a Step</source>
+        <translation>Aggiungi ramo che &amp;termina su una tappa</translation>
+    </message>
+    <message>
+        <source>A new branch from this step to a new step with no transition after it (an exit step)</source>
+        <translation>Un nuovo ramo da questa tappa a una nuova tappa senza transizione dopo (una tappa di uscita)</translation>
+    </message>
+    <message>
+        <source>Move Branch &amp;Left</source>
+        <translation>Sposta il ramo a &amp;sinistra</translation>
+    </message>
+    <message>
+        <source>Swap the branch holding this step with the one at its left</source>
+        <translation>Scambia il ramo che contiene questa tappa con quello alla sua sinistra</translation>
+    </message>
+    <message>
+        <source>Move Branch Ri&amp;ght</source>
+        <translation>Sposta il ramo a &amp;destra</translation>
+    </message>
+    <message>
+        <source>Swap the branch holding this step with the one at its right</source>
+        <translation>Scambia il ramo che contiene questa tappa con quello alla sua destra</translation>
+    </message>
+    <message>
+        <source>Cu&amp;t Steps</source>
+        <translation>&amp;Taglia tappe</translation>
+    </message>
+    <message>
+        <source>Add branch ending on a step at step %1 in %2</source>
+        <extracomment>%1 the step the branch leaves, %2 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Aggiungi ramo che termina su una tappa alla tappa %1 di %2</translation>
+    </message>
+    <message>
+        <source>Move branch left in %1</source>
+        <extracomment>%1 the GEMMA step whose GRAFCET it is</extracomment>
+        <translation>Sposta un ramo a sinistra in %1</translation>
+    </message>
+    <message>
+        <source>Move branch right in %1</source>
+        <translation>Sposta un ramo a destra in %1</translation>
+    </message>
+    <message>
+        <source>Remove T%1 from %2</source>
+        <translation>Rimuovi T%1 da %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n transitions from %1</source>
+        <translation>
+            <numerusform>Rimuovi %n transizione da %1</numerusform>
+            <numerusform>Rimuovi %n transizioni da %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n elements from %1</source>
+        <translation>
+            <numerusform>Rimuovi %n elemento da %1</numerusform>
+            <numerusform>Rimuovi %n elementi da %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cut step %1 from %2</source>
+        <translation>Taglia la tappa %1 da %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Cut %n steps from %1</source>
+        <translation>
+            <numerusform>Taglia %n tappa da %1</numerusform>
+            <numerusform>Taglia %n tappe da %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetActionsModel</name>
@@ -2387,16 +2617,19 @@ S, R: impostarla a TRUE o FALSE
         <translation>%1 è attiva: il suo GRAFCET evolve. Unstable: l&apos;ultimo ciclo è finito senza una situazione stabile</translation>
     </message>
     <message>
-        <source>%1 is active: its GRAFCET runs (steps %2)</source>
-        <translation>%1 è attiva: il suo GRAFCET evolve (tappe %2)</translation>
-    </message>
-    <message>
         <source>%1 has just been entered: its GRAFCET starts from its initial steps in the next scan</source>
         <translation>%1 è appena stata attivata: il suo GRAFCET parte dalle sue tappe iniziali al prossimo ciclo</translation>
     </message>
     <message>
         <source>%1 is not active: its GRAFCET is shown greyed, as it was left</source>
         <translation>%1 non è attiva: il suo GRAFCET è mostrato in grigio, come è stato lasciato</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 is active: its GRAFCET runs (step(s) %2)</source>
+        <translation>
+            <numerusform>%1 è attiva: il suo GRAFCET evolve (fase %2)</numerusform>
+            <numerusform>%1 è attiva: il suo GRAFCET evolve (fasi %2)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2482,6 +2715,10 @@ S, R: impostarla a TRUE o FALSE
         <source>%1 already has a step %2: choose another number.</source>
         <translation>%1 ha già una tappa %2: scegliere un altro numero.</translation>
     </message>
+    <message>
+        <source>Step numbers start at 1: %1 is not a step number.</source>
+        <translation>I numeri di fase partono da 1: %1 non è un numero di fase.</translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetTransitionDock</name>
@@ -2527,6 +2764,49 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>In the nested GRAFCET of %1 %2</source>
         <translation>Nel GRAFCET annidato di %1 %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::LinkDrag</name>
+    <message>
+        <source>A transition cannot be linked to a transition: steps and transitions alternate</source>
+        <translation>Una transizione non può essere collegata a una transizione: tappe e transizioni si alternano</translation>
+    </message>
+    <message>
+        <source>Step %1 already leads to step %2</source>
+        <translation>La tappa %1 porta già alla tappa %2</translation>
+    </message>
+    <message>
+        <source>Step %1 already precedes T%2</source>
+        <translation>La tappa %1 precede già T%2</translation>
+    </message>
+    <message>
+        <source>Step %1 already follows T%2</source>
+        <translation>La tappa %1 segue già T%2</translation>
+    </message>
+    <message>
+        <source>Step %1 cannot be linked to itself through one transition</source>
+        <translation>La tappa %1 non può essere collegata a sé stessa tramite una sola transizione</translation>
+    </message>
+    <message>
+        <source>Step %1 would be linked to itself through T%2</source>
+        <translation>La tappa %1 sarebbe collegata a sé stessa tramite T%2</translation>
+    </message>
+    <message>
+        <source>Drag onto a step or a transition to link them</source>
+        <translation>Trascinare su una tappa o una transizione per collegarle</translation>
+    </message>
+    <message>
+        <source>Link step %1 to step %2 in %3</source>
+        <translation>Collega la tappa %1 alla tappa %2 in %3</translation>
+    </message>
+    <message>
+        <source>Link step %1 to T%2 in %3</source>
+        <translation>Collega la tappa %1 a T%2 in %3</translation>
+    </message>
+    <message>
+        <source>Link T%1 to step %2 in %3</source>
+        <translation>Collega T%1 alla tappa %2 in %3</translation>
     </message>
 </context>
 <context>
@@ -2622,10 +2902,6 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>Draw the hidden states and transitions faded, so they can be selected</source>
         <translation>Disegna sbiaditi gli stati e le transizioni nascosti, in modo da poterli selezionare</translation>
-    </message>
-    <message>
-        <source>&amp;Fit Chart</source>
-        <translation>&amp;Adatta il diagramma</translation>
     </message>
     <message>
         <source>&amp;Actual Size (100 %)</source>
@@ -2914,6 +3190,10 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>Verification finished: nothing is violated, but some properties are undecided (see Problems)</source>
         <translation>Verifica terminata: nulla è violato, ma alcune proprietà sono indecise (vedi Problemi)</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to Window</source>
+        <translation>&amp;Adatta alla finestra</translation>
     </message>
 </context>
 <context>
@@ -3835,6 +4115,17 @@ Tappa incapsulante: le sue transizioni scattano qualunque cosa stia facendo il c
         <extracomment>simulation; %1: the active steps of the nested GRAFCET (&quot;3, 5&quot;)</extracomment>
         <translation>Il suo GRAFCET evolve: tappe %1 attive</translation>
     </message>
+    <message>
+        <source>Its nested GRAFCET has 1 problem</source>
+        <translation>Il suo GRAFCET annidato ha 1 problema</translation>
+    </message>
+    <message numerus="yes">
+        <source>Its nested GRAFCET has %n problems</source>
+        <translation>
+            <numerusform>Il suo GRAFCET annidato ha %n problema</numerusform>
+            <numerusform>Il suo GRAFCET annidato ha %n problemi</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>editor::TraceTableModel</name>
@@ -4107,10 +4398,6 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
         <translation>Aggiungi</translation>
     </message>
     <message>
-        <source>Add a BOOL variable after the current one</source>
-        <translation>Aggiungi una variabile BOOL dopo quella corrente</translation>
-    </message>
-    <message>
         <source>Remove</source>
         <translation>Rimuovi</translation>
     </message>
@@ -4178,12 +4465,16 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
         <translation>Copia le variabili selezionate come righe separate da tabulazioni</translation>
     </message>
     <message>
-        <source>Paste rows from a spreadsheet: name, type, default, comment and kind</source>
-        <translation>Incolla righe da un foglio di calcolo: nome, tipo, valore iniziale, commento e natura</translation>
-    </message>
-    <message>
         <source>Show only the variables whose name, type, kind, default or comment contains this text</source>
         <translation>Mostra solo le variabili il cui nome, tipo, natura, valore iniziale o commento contiene questo testo</translation>
+    </message>
+    <message>
+        <source>Add a BOOL variable after the current one (Insert)</source>
+        <translation>Aggiungere una variabile BOOL dopo quella corrente (Ins)</translation>
+    </message>
+    <message>
+        <source>Paste rows from a spreadsheet: name, type, default, comment and kind, in this order or in the order a first row of column titles gives</source>
+        <translation>Incollare righe da un foglio di calcolo: nome, tipo, valore iniziale, commento e natura, in quest&apos;ordine o nell&apos;ordine dato da una prima riga di titoli di colonna</translation>
     </message>
 </context>
 <context>
@@ -4437,8 +4728,8 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
         <translation>Zoom: %1 %</translation>
     </message>
     <message>
-        <source>Ctrl+wheel zooms about the mouse; Ctrl+0 fits the chart</source>
-        <translation>Ctrl+rotellina ingrandisce attorno al puntatore; Ctrl+0 adatta il diagramma</translation>
+        <source>The zoom of the tab in front. Ctrl+wheel or a pinch zooms about the mouse; Ctrl+0 fits the drawing in the window, Ctrl+1 shows it at its actual size</source>
+        <translation>Lo zoom della scheda in primo piano. Ctrl+rotellina o un pizzico ingrandisce attorno al puntatore; Ctrl+0 adatta il disegno alla finestra, Ctrl+1 lo mostra a grandezza reale</translation>
     </message>
 </context>
 <context>
