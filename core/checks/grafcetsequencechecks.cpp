@@ -34,19 +34,23 @@ std::string joinedNumbers(const std::vector<int>& numbers, const std::string& pr
 
 // The nodes a receptivity is TRUE with whenever they are (with the rest
 // TRUE): those reached from the root through AND and OR only, not under
-// NOT, XOR, an edge or a comparison.
-void forEachPositiveOperand(const cond::Expression& expression, int index,
-                            const std::function<void(const cond::Node&)>& use)
+// NOT, XOR, an edge or a comparison. Iterative: a long AND chain is as deep
+// as it is long.
+void forEachPositiveOperand(const cond::Expression& expression, const std::function<void(const cond::Node&)>& use)
 {
-    const cond::Node& node = expression.at(index);
-    const bool andOr = node.kind == cond::NodeKind::Binary
-        && (node.binaryOp == cond::BinaryOp::And || node.binaryOp == cond::BinaryOp::Or);
-    if (!andOr) {
-        use(node);
-        return;
+    std::vector<int> pending{expression.root};
+    while (!pending.empty()) {
+        const cond::Node& node = expression.at(pending.back());
+        pending.pop_back();
+        const bool andOr = node.kind == cond::NodeKind::Binary
+            && (node.binaryOp == cond::BinaryOp::And || node.binaryOp == cond::BinaryOp::Or);
+        if (!andOr) {
+            use(node);
+            continue;
+        }
+        pending.push_back(node.right);
+        pending.push_back(node.left);
     }
-    forEachPositiveOperand(expression, node.left, use);
-    forEachPositiveOperand(expression, node.right, use);
 }
 
 bool hasStep(const std::vector<int>& numbers, int number)
@@ -92,7 +96,7 @@ private:
         std::vector<const Variable*> result;
         if (expression.empty())
             return result;
-        forEachPositiveOperand(expression, expression.root, [&](const cond::Node& node) {
+        forEachPositiveOperand(expression, [&](const cond::Node& node) {
             const cond::Node* read = &node;
             if (risingEdges && node.kind == cond::NodeKind::Unary && node.unaryOp == cond::UnaryOp::RisingEdge)
                 read = &expression.at(node.operand);
