@@ -121,6 +121,79 @@ QString tokenText(const std::string& code, const QString& transition, const QStr
         .arg(transition, variable, sourceOf(transition.toStdString()));
 }
 
+// GG306 (on the variable, or on a condition or action that reads it) and
+// GG307 (on the step): a variable named like the instance or function block
+// the generated code declares for a visible macro-step or enclosing step
+// (core/model/stepnames.h). Arguments: the element, the other element,
+// "instance" or "function-block", "macro" or "enclosing", the suggested name.
+QString stepNameText(const core::Diagnostic& d)
+{
+    const std::vector<std::string>& a = d.arguments;
+    if ((d.code != "GG306" && d.code != "GG307") || a.size() != 5)
+        return {};
+    const auto arg = [&](std::size_t i) { return argumentText(a[i]); };
+    const bool functionBlock = a[2] == "function-block";
+    const bool enclosing = a[3] == "enclosing";
+    if (d.code == "GG306") {
+        if (functionBlock)
+            return (enclosing ? DiagnosticText::tr("Variable '%1' has the name of the function block of enclosing "
+                                                   "step %2 in the generated code: rename the variable (for example "
+                                                   "to '%3').")
+                              : DiagnosticText::tr("Variable '%1' has the name of the function block of macro-step "
+                                                   "%2 in the generated code: rename the variable (for example to "
+                                                   "'%3')."))
+                .arg(arg(0), arg(1), arg(4));
+        return (enclosing ? DiagnosticText::tr("Variable '%1' has the name of the instance of enclosing step %2 in the "
+                                               "generated code: rename the variable (for example to '%3').")
+                          : DiagnosticText::tr("Variable '%1' has the name of the instance of macro-step %2 in the "
+                                               "generated code: rename the variable (for example to '%3')."))
+            .arg(arg(0), arg(1), arg(4));
+    }
+    const QString declared = functionBlock ? arg(0) + QStringLiteral("_FB") : arg(0);
+    if (functionBlock)
+        return (enclosing ? DiagnosticText::tr("Enclosing step %1 declares its function block %2 in the generated "
+                                               "code, and variable '%3' has that name: rename the variable (for "
+                                               "example to '%4'), or make %1 a simple step.")
+                          : DiagnosticText::tr("Macro-step %1 declares its function block %2 in the generated code, "
+                                               "and variable '%3' has that name: rename the variable (for example to "
+                                               "'%4'), or make %1 a simple step."))
+            .arg(arg(0), declared, arg(1), arg(4));
+    return (enclosing ? DiagnosticText::tr("Enclosing step %1 declares its instance %2 in the generated code, and "
+                                           "variable '%3' has that name: rename the variable (for example to '%4'), "
+                                           "or make %1 a simple step.")
+                      : DiagnosticText::tr("Macro-step %1 declares its instance %2 in the generated code, and variable "
+                                           "'%3' has that name: rename the variable (for example to '%4'), or make "
+                                           "%1 a simple step."))
+        .arg(arg(0), declared, arg(1), arg(4));
+}
+
+// GG423 and GG424 (core/checks/grafcetsequencechecks.h).
+QString grafcetSequenceText(const core::Diagnostic& d)
+{
+    const std::vector<std::string>& a = d.arguments;
+    const auto arg = [&](std::size_t i) { return argumentText(a[i]); };
+    if (d.code == "GG423" && a.size() == 6)
+        return (a[5] == "until-stable"
+                    //: %2: a BOOL input; %3, %4: two nested transitions; %5: the steps between them
+                    ? DiagnosticText::tr("%2 is read in %3 and by its level in %4, which can fire right after it: "
+                                         "while %2 stays TRUE, both fire in the same scan and step %5 of %1 is passed "
+                                         "through; read its rising edge in %4 (↑%2) so that each press fires one "
+                                         "transition.")
+                    //: %2: a BOOL input; %3, %4: two nested transitions; %5: the steps between them
+                    : DiagnosticText::tr("%2 is read in %3 and by its level in %4, which can fire right after it: "
+                                         "while %2 stays TRUE, both fire in consecutive scans and step %5 of %1 is "
+                                         "passed through; read its rising edge in %4 (↑%2) so that each press "
+                                         "fires one transition."))
+            .arg(arg(0), arg(1), arg(2), arg(3), arg(4));
+    if (d.code == "GG424" && a.size() == 4)
+        //: %3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)
+        return DiagnosticText::tr("The selection after step %2 of %1 is not complete: with %4 none of %3 fires and "
+                                  "the GRAFCET waits in step %2; add a branch for these values unless waiting is "
+                                  "intended.")
+            .arg(arg(0), arg(1), arg(2), arg(3));
+    return {};
+}
+
 // The findings about nested GRAFCETs as a whole (core/checks/grafcetchecks.h).
 QString nestedGrafcetText(const core::Diagnostic& d)
 {
@@ -157,6 +230,8 @@ QString nestedGrafcetText(const core::Diagnostic& d)
         //: %2: why, in English (a technical reason)
         return DiagnosticText::tr("Variable '%1' has a name the code of the nested GRAFCETs uses: %2.")
             .arg(arg(0), arg(1));
+    if (const QString sequence = grafcetSequenceText(d); !sequence.isEmpty())
+        return sequence;
     if (code == "GG422" && n == 2)
         return a[1] == "hidden"
             ? DiagnosticText::tr("The nested GRAFCET of %1 is kept but not used: %1 is hidden.").arg(arg(0))
@@ -225,6 +300,8 @@ QString translated(const core::Diagnostic& d)
         return nested;
     if (const QString nested = nestedProblemText(d); !nested.isEmpty())
         return nested;
+    if (const QString stepName = stepNameText(d); !stepName.isEmpty())
+        return stepName;
     if (code == "GG201" && n >= 3) {
         // The parse error's kind and pieces follow the English detail (docs/diagnostics.md).
         const std::optional<core::cond::ParseError> error = core::cond::parseErrorFromArguments(a, 3);

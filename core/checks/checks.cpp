@@ -7,6 +7,7 @@
 #include "core/condition/divisionanalysis.h"
 #include "core/model/iectypes.h"
 #include "core/model/model.h"
+#include "core/model/stepnames.h"
 #include "core/condition/symboltable.h"
 
 #include <algorithm>
@@ -284,8 +285,30 @@ private:
                             + " has no visible outgoing transition: the machine would stay in it forever",
                         {step.id});
             checkStepReachable(step, index, graph);
+            checkStepDeclarations(step);
         }
         flush();
+    }
+
+    // GG307, the step's side of GG306: the generated code declares the
+    // step's instance and function block (visible macro/enclosing steps
+    // only), and a variable already has one of those names.
+    void checkStepDeclarations(const Step& step)
+    {
+        for (const Variable& variable : m_model.variables()) {
+            if (identifierProblem(variable.name) != IdentifierProblem::None)
+                continue;
+            const std::optional<StepNameClash> clash = stepNameClash(m_model, variable.name);
+            if (!clash || clash->step != &step)
+                continue;
+            const std::vector<std::string> clashArguments = stepNameClashArguments(m_model, variable, *clash);
+            addStep("GG307", Severity::Error, step, "type",
+                    std::string(clashedStepKind(*clash)) + " " + step.id + " declares its "
+                        + std::string(clashedDeclaration(*clash)) + " " + (clash->functionBlock ? step.id + "_FB" : step.id)
+                        + " in the generated code, and variable " + quoted(variable.name) + " has that name: "
+                        + stepNameClashFix(m_model, variable) + ", or make " + step.id + " a simple step",
+                    {step.id, variable.name, clashArguments[2], clashArguments[3], clashArguments[4]});
+        }
     }
 
     void checkStepReachable(const Step& step, std::size_t index, const StepGraph& graph)
@@ -546,8 +569,10 @@ private:
     void checkVariableName(const Variable& variable)
     {
         const IdentifierProblem problem = identifierProblem(variable.name);
-        if (problem == IdentifierProblem::None)
+        if (problem == IdentifierProblem::None) {
+            checkStepNameClash(variable);
             return;
+        }
         const char* code = problem == IdentifierProblem::Keyword ? "GG302"
             : problem == IdentifierProblem::GeneratorName        ? "GG303"
                                                                  : "GG301";
@@ -555,6 +580,19 @@ private:
         addVariable(code, Severity::Error, variable, "name",
                     "invalid variable name: " + detail,
                     {variable.name, detail});
+    }
+
+    // GG306, the variable's side of GG307.
+    void checkStepNameClash(const Variable& variable)
+    {
+        const std::optional<StepNameClash> clash = stepNameClash(m_model, variable.name);
+        if (!clash)
+            return;
+        addVariable("GG306", Severity::Error, variable, "name",
+                    "variable " + quoted(variable.name) + " has the name of the " + std::string(clashedDeclaration(*clash))
+                        + " of " + std::string(clashedStepKind(*clash)) + " " + clash->step->id
+                        + " in the generated code: " + stepNameClashFix(m_model, variable),
+                    stepNameClashArguments(m_model, variable, *clash));
     }
 
     void addVariable(std::string code, Severity severity, const Variable& variable, std::string field,

@@ -1,5 +1,7 @@
 #include "core/checks/grafcetchecks.h"
 
+#include "core/checks/grafcetsequencechecks.h"
+#include "core/checks/nestedsatisfiability.h"
 #include "core/codegen/gemmaprogram.h"
 #include "core/condition/actionparser.h"
 #include "core/condition/conditionanalysis.h"
@@ -86,101 +88,6 @@ struct ParsedGrafcet {
     }
 };
 
-// ---- satisfiability over the nested atoms ---------------------------------------
-
-// The satisfiability of core/verification knows declared variables only: the
-// atoms of the nested layer (X3, 5s/X3, RE a, Complete) become free BOOL
-// variables of their own. Treating them as free only adds valuations, so a
-// conjunction found unsatisfiable really is.
-class FreeAtomSpace {
-public:
-    explicit FreeAtomSpace(const std::vector<Variable>& declared)
-        : m_variables(declared)
-    {
-    }
-
-    const std::vector<Variable>& variables() const { return m_variables; }
-
-    // The expression with each nested atom replaced by a variable node.
-    cond::Expression substitute(const cond::Expression& expression)
-    {
-        cond::Expression result = expression;
-        for (cond::Node& node : result.nodes) {
-            const std::optional<std::string> name = atomName(expression, node);
-            if (!name)
-                continue;
-            declare(*name);
-            node = cond::Node{cond::NodeKind::Variable, node.span, *name};
-        }
-        return result;
-    }
-
-private:
-    static std::optional<std::string> atomName(const cond::Expression& expression, const cond::Node& node)
-    {
-        switch (node.kind) {
-        case cond::NodeKind::StepActivity: return "X" + std::to_string(node.number);
-        case cond::NodeKind::StepDuration:
-            return std::to_string(node.durationMs) + "ms/X" + std::to_string(node.number);
-        case cond::NodeKind::Complete: return std::string("Complete");
-        case cond::NodeKind::Unary:
-            if (node.unaryOp == cond::UnaryOp::RisingEdge || node.unaryOp == cond::UnaryOp::FallingEdge)
-                return (node.unaryOp == cond::UnaryOp::RisingEdge ? "RE " : "FE ")
-                    + expression.at(node.operand).text;
-            return std::nullopt;
-        default: return std::nullopt;
-        }
-    }
-
-    void declare(const std::string& name)
-    {
-        const bool known = std::any_of(m_variables.begin(), m_variables.end(),
-                                       [&](const Variable& v) { return equalsIgnoreCase(v.name, name); });
-        if (!known)
-            m_variables.push_back(Variable{name, IecType::Bool, "", ""});
-    }
-
-    std::vector<Variable> m_variables;
-};
-
-// a AND b, in one arena.
-cond::Expression conjunction(const cond::Expression& a, const cond::Expression& b)
-{
-    cond::Expression result = a;
-    const int offset = static_cast<int>(a.nodes.size());
-    for (cond::Node node : b.nodes) {
-        for (int* child : {&node.operand, &node.left, &node.right}) {
-            if (*child >= 0)
-                *child += offset;
-        }
-        result.nodes.push_back(node);
-    }
-    cond::Node both;
-    both.kind = cond::NodeKind::Binary;
-    both.binaryOp = cond::BinaryOp::And;
-    both.left = a.root;
-    both.right = b.root + offset;
-    result.nodes.push_back(both);
-    result.root = static_cast<int>(result.nodes.size()) - 1;
-    return result;
-}
-
-// "A = TRUE, Level = 3": the values of the variables the expression reads.
-std::string describeValuation(const cond::Expression& expression, const std::vector<Variable>& variables,
-                              const std::vector<cond::Value>& values)
-{
-    std::vector<std::string> parts;
-    std::set<std::size_t> shown;
-    for (int node : cond::variableNodes(expression)) {
-        const std::string& name = expression.at(node).text;
-        for (std::size_t i = 0; i < variables.size() && i < values.size(); ++i) {
-            if (equalsIgnoreCase(variables[i].name, name) && shown.insert(i).second)
-                parts.push_back(variables[i].name + " = " + cond::formatValue(values[i]));
-        }
-    }
-    return joined(parts);
-}
-
 // ---- the checker ------------------------------------------------------------------
 
 class GrafcetChecker {
@@ -206,6 +113,8 @@ public:
             checkSteps(parsed);
             checkSelections(parsed);
             checkDivisors(parsed);
+            for (Diagnostic& d : checkGrafcetSequences(m_model, step, *grafcet, parsed.receptivities))
+                m_result.push_back(std::move(d));
         }
         return std::move(m_result);
     }

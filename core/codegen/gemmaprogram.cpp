@@ -3,6 +3,7 @@
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/divisionanalysis.h"
 #include "core/model/model.h"
+#include "core/model/stepnames.h"
 #include "core/condition/symboltable.h"
 
 #include <algorithm>
@@ -78,14 +79,14 @@ void rejectUndeclarableNames(const BuildContext& context, GemmaTransition& trans
         const Variable* variable = context.symbols.find(expression.at(node).text);
         if (!variable || std::find(reported.begin(), reported.end(), variable) != reported.end())
             continue;
-        const char* code = unusableNameCode(variable->name);
+        const char* code = unusableNameCode(variable->name, context.model);
         if (!code)
             continue;
         reported.push_back(variable);
-        const std::string detail = identifierProblemMessage(identifierProblem(variable->name), variable->name);
+        const std::string detail = unusableNameDetail(variable->name, context.model);
         transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, code, id,
                                                   "in the condition of " + id + ": invalid variable name: " + detail,
-                                                  {variable->name, detail}));
+                                                  unusableNameArguments(*variable, context.model)));
         transition.conditionUsable = false;
     }
 }
@@ -404,14 +405,34 @@ const GemmaStep* GemmaProgram::step(const std::string& id) const
     return nullptr;
 }
 
-const char* unusableNameCode(std::string_view name)
+const char* unusableNameCode(std::string_view name, const Model& model)
 {
     switch (identifierProblem(name)) {
-    case IdentifierProblem::None: return nullptr;
+    case IdentifierProblem::None: return stepNameClash(model, name) ? "GG306" : nullptr;
     case IdentifierProblem::Keyword: return "GG302";
     case IdentifierProblem::GeneratorName: return "GG303";
     default: return "GG301"; // the codes of core/checks/checks.cpp
     }
+}
+
+std::string unusableNameDetail(std::string_view name, const Model& model)
+{
+    if (const IdentifierProblem problem = identifierProblem(name); problem != IdentifierProblem::None)
+        return identifierProblemMessage(problem, name);
+    const std::optional<StepNameClash> clash = stepNameClash(model, name);
+    if (!clash)
+        return {};
+    const Variable* variable = model.variable(name);
+    return stepNameClashDetail(*clash, name) + (variable ? "; " + stepNameClashFix(model, *variable) : "");
+}
+
+std::vector<std::string> unusableNameArguments(const Variable& variable, const Model& model)
+{
+    if (identifierProblem(variable.name) == IdentifierProblem::None) {
+        if (const std::optional<StepNameClash> clash = stepNameClash(model, variable.name))
+            return stepNameClashArguments(model, variable, *clash);
+    }
+    return {variable.name, unusableNameDetail(variable.name, model)};
 }
 
 std::string tokenVariableName(const std::string& variable, const std::string& sourceStepId, int priority)

@@ -119,10 +119,21 @@ GemmaProgram buildGemmaProgram(const Model& model);
 
 // The checks' code for a variable name the generated code cannot declare as
 // it is: "GG301" (not an IEC identifier), "GG302" (a keyword), "GG303" (a
-// name the generator uses); nullptr for a name it can. Such a variable is
-// declared under another name (core/codegen/stgenerator.h), so no condition may
-// read it: the condition is unusable.
-const char* unusableNameCode(std::string_view name);
+// fixed name the generator uses), "GG306" (the instance or function block of
+// a visible macro/enclosing step of this model, core/model/stepnames.h);
+// nullptr for a name it can. Such a variable is declared under another name
+// (core/codegen/stgenerator.h), so no condition may read it: the condition is
+// unusable.
+const char* unusableNameCode(std::string_view name, const Model& model);
+
+// Why, in English ("'State' is a name the generated code uses"); empty when
+// unusableNameCode is nullptr.
+std::string unusableNameDetail(std::string_view name, const Model& model);
+
+// The arguments of the finding about a condition or action that reads such
+// a variable: GG306's (core/model/stepnames.h), else the variable and the
+// detail.
+std::vector<std::string> unusableNameArguments(const Variable& variable, const Model& model);
 
 // "Stop_F1_3_MEM".
 std::string tokenVariableName(const std::string& variable, const std::string& sourceStepId, int priority);

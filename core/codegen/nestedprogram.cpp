@@ -66,6 +66,23 @@ public:
 private:
     // ---- problems ----
 
+    // A variable the code declares under another name (unusableNameCode).
+    // GG306 says which step's instance or function block took the name and
+    // how to free it.
+    std::string nameMessage(std::string_view code, const Variable& variable, const std::string& where) const
+    {
+        const std::string message = "in " + where + ": invalid variable name " + quoted(variable.name);
+        return code == "GG306" ? message + ": " + unusableNameDetail(variable.name, m_model) : message;
+    }
+
+    std::vector<std::string> nameArguments(std::string_view code, const Variable& variable,
+                                           const std::string& where) const
+    {
+        if (code == "GG306")
+            return unusableNameArguments(variable, m_model);
+        return {m_step.id, where, variable.name};
+    }
+
     void problem(std::string code, std::string message, std::vector<std::string> arguments, int step, int transition,
                  int action, std::optional<Span> span)
     {
@@ -147,9 +164,9 @@ private:
         }
         for (int node : cond::variableNodes(expression)) {
             const Variable* variable = m_symbols.find(expression.at(node).text);
-            if (variable && unusableNameCode(variable->name)) {
-                problem(unusableNameCode(variable->name), "in " + where + ": invalid variable name " + quoted(variable->name),
-                        {m_step.id, where, variable->name}, step, transition, action, expression.at(node).span);
+            if (const char* code = variable ? unusableNameCode(variable->name, m_model) : nullptr) {
+                problem(code, nameMessage(code, *variable, where), nameArguments(code, *variable, where), step,
+                        transition, action, expression.at(node).span);
                 usable = false;
             }
         }
@@ -265,9 +282,9 @@ private:
             return false;
         }
         action.target = variable->name;
-        if (const char* code = unusableNameCode(variable->name)) {
-            problem(code, "in " + where + ": invalid variable name " + quoted(variable->name),
-                    {m_step.id, where, variable->name}, stepNumber, 0, index, span);
+        if (const char* code = unusableNameCode(variable->name, m_model)) {
+            problem(code, nameMessage(code, *variable, where), nameArguments(code, *variable, where), stepNumber, 0,
+                    index, span);
             return false;
         }
         if (variable->kind == VariableKind::Input) {

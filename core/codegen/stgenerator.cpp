@@ -19,7 +19,8 @@
 //   with the reason in the declaration's comment;
 // - a hidden initial step: a comment at the top of the GEMMA body.
 // - a variable whose name the code cannot declare (not an IEC identifier, a
-//   keyword, a name the generator uses: the checks' GG301-GG303) is
+//   keyword, a name the generator uses, the instance or function block of a
+//   visible macro/enclosing step: the checks' GG301-GG303, GG306) is
 //   declared as Invalid_Name_<its position>, with the reason in its comment,
 //   and every condition that reads it is FALSE with its ERROR comment
 //   (gemmaprogram.h, unusableNameCode). Other names are written as declared.
@@ -90,8 +91,9 @@ std::string problemComment(const GemmaProblem& problem)
 // (unusableNameCode), with _2, _3, ... should a user variable already have
 // that name. No condition reads a renamed variable, so the name only has to
 // be a fresh identifier.
-std::vector<std::string> declaredNames(const std::vector<Variable>& variables)
+std::vector<std::string> declaredNames(const Model& model)
 {
+    const std::vector<Variable>& variables = model.variables();
     std::vector<std::string> names;
     names.reserve(variables.size());
     SymbolTable taken(variables);
@@ -101,7 +103,7 @@ std::vector<std::string> declaredNames(const std::vector<Variable>& variables)
         return !taken.find(candidate) && std::find(generated.begin(), generated.end(), key) == generated.end();
     };
     for (std::size_t i = 0; i < variables.size(); ++i) {
-        if (!unusableNameCode(variables[i].name)) {
+        if (!unusableNameCode(variables[i].name, model)) {
             names.push_back(variables[i].name);
             continue;
         }
@@ -121,7 +123,7 @@ public:
     Naming(const Model& model, Dialect dialect)
         : m_variables(model.variables())
         , m_symbols(model.variables())
-        , m_declared(declaredNames(model.variables()))
+        , m_declared(declaredNames(model))
         , m_dialect(dialect)
         , m_read(model.variables().size(), false)
     {
@@ -477,18 +479,17 @@ std::string initialValue(const Variable& variable, std::string& problem)
 
 // "ERROR GG303: invalid variable name: 'State' is a name the generated code
 // uses; declared as Invalid_Name_1, and every condition that reads it is FALSE".
-std::string renamedNote(const Variable& variable, const std::string& declaredName)
+std::string renamedNote(const Model& model, const Variable& variable, const std::string& declaredName)
 {
-    const char* code = unusableNameCode(variable.name);
-    return std::string("ERROR ") + code + ": invalid variable name: "
-           + identifierProblemMessage(identifierProblem(variable.name), variable.name) + "; declared as "
-           + declaredName + ", and every condition that reads it is FALSE";
+    const char* code = unusableNameCode(variable.name, model);
+    return std::string("ERROR ") + code + ": invalid variable name: " + unusableNameDetail(variable.name, model)
+           + "; declared as " + declaredName + ", and every condition that reads it is FALSE";
 }
 
 std::vector<PlcVariable> buildGlobals(const Model& model, const GemmaProgram& program)
 {
     const std::vector<Variable>& variables = model.variables();
-    const std::vector<std::string> names = declaredNames(variables);
+    const std::vector<std::string> names = declaredNames(model);
     std::vector<PlcVariable> globals;
     globals.reserve(variables.size());
     for (std::size_t i = 0; i < variables.size(); ++i) {
@@ -497,7 +498,7 @@ std::vector<PlcVariable> buildGlobals(const Model& model, const GemmaProgram& pr
         std::string value = initialValue(variable, problem);
         std::vector<std::string> notes;
         if (names[i] != variable.name)
-            notes.push_back(renamedNote(variable, names[i]));
+            notes.push_back(renamedNote(model, variable, names[i]));
         if (!problem.empty())
             notes.push_back("ERROR: default " + problem + "; " + value + " is used instead");
         if (!variable.comment.empty())

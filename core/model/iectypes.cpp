@@ -97,8 +97,8 @@ constexpr std::size_t kLongestKeyword = [] {
     return longest;
 }();
 
-// Fixed names of the generated project (spec §6, §7); the step ids and the
-// <step>_FB names are checked against the template.
+// Fixed names of the generated project (spec §6, §7). The instances and
+// function blocks of the steps depend on the model: core/model/stepnames.h.
 constexpr std::array kGeneratorNames = std::to_array<std::string_view>({
     "GEMMA", "State", "Entry", "Initialization", "Complete", "GVL",
     "GemmaConfiguration", "GemmaResource", "MainTask", "GemmaInstance",
@@ -462,10 +462,6 @@ bool isGeneratorName(std::string_view word)
         if (equalsIgnoreCase(name, word))
             return true;
     }
-    if (isStepId(word))
-        return true;
-    if (endsWithIgnoreCase(word, "_FB") && isStepId(word.substr(0, word.size() - 3)))
-        return true;
     return isTokenName(word);
 }
 

@@ -48,7 +48,8 @@ enum class IdentifierProblem {
     DoubleUnderscore,
     TrailingUnderscore,
     Keyword,          // an IEC 61131-3 keyword or type name
-    GeneratorName,    // a name the code generator uses (GEMMA, State, A1_FB, ...)
+    GeneratorName,    // a fixed name of the generated code (GEMMA, State, a token, ...); the
+                      // step instances depend on the model (core/model/stepnames.h)
 };
 
 IdentifierProblem identifierProblem(std::string_view name);

@@ -528,7 +528,7 @@ TEST_CASE("GG301..GG303: invalid and reserved variable names", "[checks]")
     addVariable(model, "Bool");
     addVariable(model, "elsif");
     addVariable(model, "State");
-    addVariable(model, "A1_FB");
+    addVariable(model, "Stop_F1_3_MEM");
     addVariable(model, "Good_Name");
     std::string all;
     for (const Variable& v : model.variables())
@@ -545,7 +545,7 @@ TEST_CASE("GG301..GG303: invalid and reserved variable names", "[checks]")
     }
     for (const char* name : {"Bool", "elsif"})
         CHECK(only(diagnostics, "GG302", name).field == "name");
-    for (const char* name : {"State", "A1_FB"})
+    for (const char* name : {"State", "Stop_F1_3_MEM"})
         CHECK(only(diagnostics, "GG303", name).field == "name");
     for (const char* name : {"Go", "Good_Name"}) {
         INFO(name);

@@ -8,6 +8,7 @@
 #include "editor/commands/setelementshiddencommand.h"
 #include "editor/commands/setinitialstepcommand.h"
 #include "editor/commands/setstephiddencommand.h"
+#include "editor/commands/setsteptypecommand.h"
 #include "editor/commands/setstepcommentcommand.h"
 #include "editor/commands/settokenscommand.h"
 #include "editor/conditionerrortext.h"
@@ -127,6 +128,7 @@ private slots:
     void variablesModelRefusesDuplicateName();
     void variablesKindColumnEditsTheKind();
     void variablesModelRefusesInvalidNameKeepingConditions();
+    void variablesModelAcceptsStepIdsTheCodeDoesNotDeclare();
     void variablesMessageGoesAtTheNextEdit();
     void invalidDefaultIsRedWithTooltip();
     void pasteAddsVariablesInOneUndoStep();
@@ -143,6 +145,7 @@ private slots:
     void stPreviewRewritesOnlyWhatChanged();
     void wrappingLabelHeightFollowsTextAndFont();
     void diagnosticTextTranslatesByCode();
+    void diagnosticTextWordsTheTeacherChecks();
     void secondaryTextIsReadable();
     void syntaxErrorsAreInTheUiLanguage();
     void typeAndValueErrorsAreInTheUiLanguage();
@@ -724,6 +727,47 @@ void TestDocks::variablesModelRefusesInvalidNameKeepingConditions()
     QCOMPARE(document.model().transition("F1->A2")->tokens, std::vector<std::string> { "Stop2" });
 }
 
+// a1 is the usual name of a limit switch: only the instances the generated
+// code declares (visible macro-steps and enclosing steps) clash, and the
+// checks then say so on the variable and on the step.
+void TestDocks::variablesModelAcceptsStepIdsTheCodeDoesNotDeclare()
+{
+    Document document;
+    Selection selection;
+    declare(document, "Stop");
+    VariablesDock dock(&document, &selection);
+    VariablesTableModel* model = dock.tableModel();
+    const auto codes = [&](const QString& code) {
+        QStringList elements;
+        for (const core::Diagnostic& d : document.diagnostics()) {
+            if (d.code == code.toStdString())
+                elements << QString::fromStdString(d.element);
+        }
+        return elements;
+    };
+
+    QVERIFY(model->setData(model->index(0, VariablesTableModel::NameColumn), "a1"));
+    QCOMPARE(document.model().variables().front().name, std::string("a1"));
+    QVERIFY(codes("GG306").isEmpty());
+
+    QVERIFY(document.push(new SetStepTypeCommand(document, "A1", core::StepType::Macro)));
+    QCOMPARE(codes("GG306"), QStringList { "a1" });
+    QCOMPARE(codes("GG307"), QStringList { "A1" });
+    for (const core::Diagnostic& d : document.diagnostics()) {
+        if (d.code == "GG306")
+            QCOMPARE(diagnosticText(d),
+                     QString("Variable 'a1' has the name of the instance of macro-step A1 in the generated code: "
+                             "rename the variable (for example to 'a1_Sensor')."));
+        if (d.code == "GG307")
+            QCOMPARE(diagnosticText(d),
+                     QString("Macro-step A1 declares its instance A1 in the generated code, and variable 'a1' has "
+                             "that name: rename the variable (for example to 'a1_Sensor'), or make A1 a simple "
+                             "step."));
+    }
+    document.undoStack()->undo();
+    QVERIFY(codes("GG307").isEmpty());
+}
+
 void TestDocks::variablesMessageGoesAtTheNextEdit()
 {
     Document document;
@@ -1217,6 +1261,30 @@ void TestDocks::diagnosticTextTranslatesByCode()
     Document document;
     for (const core::Diagnostic& diagnostic : document.diagnostics())
         QVERIFY(!diagnosticText(diagnostic).isEmpty());
+}
+
+void TestDocks::diagnosticTextWordsTheTeacherChecks()
+{
+    core::Diagnostic runaway;
+    runaway.code = "GG423";
+    runaway.message = "English";
+    runaway.arguments = { "F1", "StepButton", "T1", "T2", "2", "until-stable" };
+    QCOMPARE(diagnosticText(runaway),
+             QString::fromUtf8("StepButton is read in T1 and by its level in T2, which can fire right after it: while "
+                               "StepButton stays TRUE, both fire in the same scan and step 2 of F1 is passed "
+                               "through; read its rising edge in T2 (\u2191StepButton) so that each press fires one "
+                               "transition."));
+    runaway.arguments.back() = "one-per-scan";
+    QVERIFY(diagnosticText(runaway).contains("in consecutive scans"));
+
+    core::Diagnostic incomplete;
+    incomplete.code = "GG424";
+    incomplete.message = "English";
+    incomplete.arguments = { "F2", "3", "T3, T4", "CP1 = TRUE, CP2 = TRUE" };
+    QCOMPARE(diagnosticText(incomplete),
+             QString("The selection after step 3 of F2 is not complete: with CP1 = TRUE, CP2 = TRUE none of T3, T4 "
+                     "fires and the GRAFCET waits in step 3; add a branch for these values unless waiting is "
+                     "intended."));
 }
 
 // The condition parser's errors: every kind worded in English as the core
