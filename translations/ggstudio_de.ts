@@ -650,6 +650,52 @@
         <extracomment>%2: why, in English (the verifier&apos;s reason)</extracomment>
         <translation>Die Eigenschaft &apos;%1&apos; ist unentschieden: weder bewiesen noch als verletzt gezeigt (%2).</translation>
     </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the function block of enclosing step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>Die Variable &apos;%1&apos; trägt den Namen des Funktionsbausteins des einschließenden Schritts %2 im erzeugten Code: benennen Sie die Variable um (zum Beispiel in &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the function block of macro-step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>Die Variable &apos;%1&apos; trägt den Namen des Funktionsbausteins des Makroschritts %2 im erzeugten Code: benennen Sie die Variable um (zum Beispiel in &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the instance of enclosing step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>Die Variable &apos;%1&apos; trägt den Namen der Instanz des einschließenden Schritts %2 im erzeugten Code: benennen Sie die Variable um (zum Beispiel in &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the instance of macro-step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>Die Variable &apos;%1&apos; trägt den Namen der Instanz des Makroschritts %2 im erzeugten Code: benennen Sie die Variable um (zum Beispiel in &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Enclosing step %1 declares its function block %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>Der einschließende Schritt %1 deklariert seinen Funktionsbaustein %2 im erzeugten Code, und die Variable &apos;%3&apos; trägt diesen Namen: benennen Sie die Variable um (zum Beispiel in &apos;%4&apos;) oder machen Sie %1 zu einem einfachen Schritt.</translation>
+    </message>
+    <message>
+        <source>Macro-step %1 declares its function block %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>Der Makroschritt %1 deklariert seinen Funktionsbaustein %2 im erzeugten Code, und die Variable &apos;%3&apos; trägt diesen Namen: benennen Sie die Variable um (zum Beispiel in &apos;%4&apos;) oder machen Sie %1 zu einem einfachen Schritt.</translation>
+    </message>
+    <message>
+        <source>Enclosing step %1 declares its instance %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>Der einschließende Schritt %1 deklariert seine Instanz %2 im erzeugten Code, und die Variable &apos;%3&apos; trägt diesen Namen: benennen Sie die Variable um (zum Beispiel in &apos;%4&apos;) oder machen Sie %1 zu einem einfachen Schritt.</translation>
+    </message>
+    <message>
+        <source>Macro-step %1 declares its instance %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>Der Makroschritt %1 deklariert seine Instanz %2 im erzeugten Code, und die Variable &apos;%3&apos; trägt diesen Namen: benennen Sie die Variable um (zum Beispiel in &apos;%4&apos;) oder machen Sie %1 zu einem einfachen Schritt.</translation>
+    </message>
+    <message>
+        <source>%2 is read in %3 and by its level in %4, which can fire right after it: while %2 stays TRUE, both fire in the same scan and step %5 of %1 is passed through; read its rising edge in %4 (↑%2) so that each press fires one transition.</source>
+        <extracomment>%2: a BOOL input; %3, %4: two nested transitions; %5: the steps between them</extracomment>
+        <translation>%2 wird in %3 und über seinen Pegel in %4 gelesen, die direkt danach schalten kann: solange %2 TRUE bleibt, schalten beide im selben Zyklus und Schritt %5 von %1 wird durchlaufen; lesen Sie in %4 die steigende Flanke (↑%2), damit jeder Tastendruck genau eine Transition schaltet.</translation>
+    </message>
+    <message>
+        <source>%2 is read in %3 and by its level in %4, which can fire right after it: while %2 stays TRUE, both fire in consecutive scans and step %5 of %1 is passed through; read its rising edge in %4 (↑%2) so that each press fires one transition.</source>
+        <translation>%2 wird in %3 und über seinen Pegel in %4 gelesen, die direkt danach schalten kann: solange %2 TRUE bleibt, schalten beide in aufeinanderfolgenden Zyklen und Schritt %5 von %1 wird durchlaufen; lesen Sie in %4 die steigende Flanke (↑%2), damit jeder Tastendruck genau eine Transition schaltet.</translation>
+    </message>
+    <message>
+        <source>The selection after step %2 of %1 is not complete: with %4 none of %3 fires and the GRAFCET waits in step %2; add a branch for these values unless waiting is intended.</source>
+        <extracomment>%3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)</extracomment>
+        <translation>Die Auswahl nach Schritt %2 von %1 ist nicht vollständig: mit %4 schaltet keine von %3, und der GRAFCET wartet in Schritt %2; fügen Sie einen Zweig für diese Werte hinzu, sofern das Warten nicht gewollt ist.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>

@@ -650,6 +650,52 @@
         <extracomment>%2: why, in English (the verifier&apos;s reason)</extracomment>
         <translation>La propiedad &apos;%1&apos; está sin decidir: ni demostrada ni mostrada incumplida (%2).</translation>
     </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the function block of enclosing step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variable &apos;%1&apos; tiene el nombre del bloque de funciones de la etapa encapsulante %2 en el código generado: cambie el nombre de la variable (por ejemplo a &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the function block of macro-step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variable &apos;%1&apos; tiene el nombre del bloque de funciones de la macroetapa %2 en el código generado: cambie el nombre de la variable (por ejemplo a &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the instance of enclosing step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variable &apos;%1&apos; tiene el nombre de la instancia de la etapa encapsulante %2 en el código generado: cambie el nombre de la variable (por ejemplo a &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the instance of macro-step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variable &apos;%1&apos; tiene el nombre de la instancia de la macroetapa %2 en el código generado: cambie el nombre de la variable (por ejemplo a &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Enclosing step %1 declares its function block %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La etapa encapsulante %1 declara su bloque de funciones %2 en el código generado, y la variable &apos;%3&apos; tiene ese nombre: cambie el nombre de la variable (por ejemplo a &apos;%4&apos;), o convierta %1 en una etapa simple.</translation>
+    </message>
+    <message>
+        <source>Macro-step %1 declares its function block %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La macroetapa %1 declara su bloque de funciones %2 en el código generado, y la variable &apos;%3&apos; tiene ese nombre: cambie el nombre de la variable (por ejemplo a &apos;%4&apos;), o convierta %1 en una etapa simple.</translation>
+    </message>
+    <message>
+        <source>Enclosing step %1 declares its instance %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La etapa encapsulante %1 declara su instancia %2 en el código generado, y la variable &apos;%3&apos; tiene ese nombre: cambie el nombre de la variable (por ejemplo a &apos;%4&apos;), o convierta %1 en una etapa simple.</translation>
+    </message>
+    <message>
+        <source>Macro-step %1 declares its instance %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La macroetapa %1 declara su instancia %2 en el código generado, y la variable &apos;%3&apos; tiene ese nombre: cambie el nombre de la variable (por ejemplo a &apos;%4&apos;), o convierta %1 en una etapa simple.</translation>
+    </message>
+    <message>
+        <source>%2 is read in %3 and by its level in %4, which can fire right after it: while %2 stays TRUE, both fire in the same scan and step %5 of %1 is passed through; read its rising edge in %4 (↑%2) so that each press fires one transition.</source>
+        <extracomment>%2: a BOOL input; %3, %4: two nested transitions; %5: the steps between them</extracomment>
+        <translation>%2 se lee en %3 y por su nivel en %4, que puede dispararse justo después: mientras %2 siga en TRUE, ambas se disparan en el mismo ciclo y la etapa %5 de %1 se atraviesa; lea su flanco ascendente en %4 (↑%2) para que cada pulsación dispare una sola transición.</translation>
+    </message>
+    <message>
+        <source>%2 is read in %3 and by its level in %4, which can fire right after it: while %2 stays TRUE, both fire in consecutive scans and step %5 of %1 is passed through; read its rising edge in %4 (↑%2) so that each press fires one transition.</source>
+        <translation>%2 se lee en %3 y por su nivel en %4, que puede dispararse justo después: mientras %2 siga en TRUE, ambas se disparan en ciclos consecutivos y la etapa %5 de %1 se atraviesa; lea su flanco ascendente en %4 (↑%2) para que cada pulsación dispare una sola transición.</translation>
+    </message>
+    <message>
+        <source>The selection after step %2 of %1 is not complete: with %4 none of %3 fires and the GRAFCET waits in step %2; add a branch for these values unless waiting is intended.</source>
+        <extracomment>%3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)</extracomment>
+        <translation>La selección tras la etapa %2 de %1 no es completa: con %4 no se dispara ninguna de %3 y el GRAFCET espera en la etapa %2; añada una rama para estos valores, salvo que la espera sea intencionada.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>

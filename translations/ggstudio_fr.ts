@@ -650,6 +650,52 @@
         <extracomment>%2: why, in English (the verifier&apos;s reason)</extracomment>
         <translation>La propriété « %1 » est indécise : ni prouvée ni montrée violée (%2).</translation>
     </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the function block of enclosing step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variable « %1 » porte le nom du bloc fonctionnel de l&apos;étape encapsulante %2 dans le code généré : renommez la variable (par exemple en « %3 »).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the function block of macro-step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variable « %1 » porte le nom du bloc fonctionnel de la macro-étape %2 dans le code généré : renommez la variable (par exemple en « %3 »).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the instance of enclosing step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variable « %1 » porte le nom de l&apos;instance de l&apos;étape encapsulante %2 dans le code généré : renommez la variable (par exemple en « %3 »).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the instance of macro-step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variable « %1 » porte le nom de l&apos;instance de la macro-étape %2 dans le code généré : renommez la variable (par exemple en « %3 »).</translation>
+    </message>
+    <message>
+        <source>Enclosing step %1 declares its function block %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>L&apos;étape encapsulante %1 déclare son bloc fonctionnel %2 dans le code généré, et la variable « %3 » porte ce nom : renommez la variable (par exemple en « %4 »), ou faites de %1 une étape simple.</translation>
+    </message>
+    <message>
+        <source>Macro-step %1 declares its function block %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La macro-étape %1 déclare son bloc fonctionnel %2 dans le code généré, et la variable « %3 » porte ce nom : renommez la variable (par exemple en « %4 »), ou faites de %1 une étape simple.</translation>
+    </message>
+    <message>
+        <source>Enclosing step %1 declares its instance %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>L&apos;étape encapsulante %1 déclare son instance %2 dans le code généré, et la variable « %3 » porte ce nom : renommez la variable (par exemple en « %4 »), ou faites de %1 une étape simple.</translation>
+    </message>
+    <message>
+        <source>Macro-step %1 declares its instance %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La macro-étape %1 déclare son instance %2 dans le code généré, et la variable « %3 » porte ce nom : renommez la variable (par exemple en « %4 »), ou faites de %1 une étape simple.</translation>
+    </message>
+    <message>
+        <source>%2 is read in %3 and by its level in %4, which can fire right after it: while %2 stays TRUE, both fire in the same scan and step %5 of %1 is passed through; read its rising edge in %4 (↑%2) so that each press fires one transition.</source>
+        <extracomment>%2: a BOOL input; %3, %4: two nested transitions; %5: the steps between them</extracomment>
+        <translation>%2 est lue dans %3 et sur son niveau dans %4, qui peut être franchie juste après : tant que %2 reste à TRUE, les deux sont franchies dans le même cycle et l&apos;étape %5 de %1 est traversée ; lisez son front montant dans la réceptivité de %4 (↑%2) pour que chaque appui franchisse une seule transition.</translation>
+    </message>
+    <message>
+        <source>%2 is read in %3 and by its level in %4, which can fire right after it: while %2 stays TRUE, both fire in consecutive scans and step %5 of %1 is passed through; read its rising edge in %4 (↑%2) so that each press fires one transition.</source>
+        <translation>%2 est lue dans %3 et sur son niveau dans %4, qui peut être franchie juste après : tant que %2 reste à TRUE, les deux sont franchies dans des cycles consécutifs et l&apos;étape %5 de %1 est traversée ; lisez son front montant dans la réceptivité de %4 (↑%2) pour que chaque appui franchisse une seule transition.</translation>
+    </message>
+    <message>
+        <source>The selection after step %2 of %1 is not complete: with %4 none of %3 fires and the GRAFCET waits in step %2; add a branch for these values unless waiting is intended.</source>
+        <extracomment>%3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)</extracomment>
+        <translation>La sélection après l&apos;étape %2 de %1 n&apos;est pas complète : avec %4, aucune de %3 n&apos;est franchie et le GRAFCET attend à l&apos;étape %2 ; ajoutez une branche pour ces valeurs, sauf si l&apos;attente est voulue.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>

@@ -650,6 +650,52 @@
         <extracomment>%2: why, in English (the verifier&apos;s reason)</extracomment>
         <translation>La proprietà &apos;%1&apos; è indecisa: né dimostrata né mostrata violata (%2).</translation>
     </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the function block of enclosing step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variabile &apos;%1&apos; ha il nome del blocco funzionale della tappa incapsulante %2 nel codice generato: rinominare la variabile (per esempio in &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the function block of macro-step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variabile &apos;%1&apos; ha il nome del blocco funzionale della macro-tappa %2 nel codice generato: rinominare la variabile (per esempio in &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the instance of enclosing step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variabile &apos;%1&apos; ha il nome dell&apos;istanza della tappa incapsulante %2 nel codice generato: rinominare la variabile (per esempio in &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Variable &apos;%1&apos; has the name of the instance of macro-step %2 in the generated code: rename the variable (for example to &apos;%3&apos;).</source>
+        <translation>La variabile &apos;%1&apos; ha il nome dell&apos;istanza della macro-tappa %2 nel codice generato: rinominare la variabile (per esempio in &apos;%3&apos;).</translation>
+    </message>
+    <message>
+        <source>Enclosing step %1 declares its function block %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La tappa incapsulante %1 dichiara il suo blocco funzionale %2 nel codice generato, e la variabile &apos;%3&apos; ha quel nome: rinominare la variabile (per esempio in &apos;%4&apos;), o rendere %1 una tappa semplice.</translation>
+    </message>
+    <message>
+        <source>Macro-step %1 declares its function block %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La macro-tappa %1 dichiara il suo blocco funzionale %2 nel codice generato, e la variabile &apos;%3&apos; ha quel nome: rinominare la variabile (per esempio in &apos;%4&apos;), o rendere %1 una tappa semplice.</translation>
+    </message>
+    <message>
+        <source>Enclosing step %1 declares its instance %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La tappa incapsulante %1 dichiara la sua istanza %2 nel codice generato, e la variabile &apos;%3&apos; ha quel nome: rinominare la variabile (per esempio in &apos;%4&apos;), o rendere %1 una tappa semplice.</translation>
+    </message>
+    <message>
+        <source>Macro-step %1 declares its instance %2 in the generated code, and variable &apos;%3&apos; has that name: rename the variable (for example to &apos;%4&apos;), or make %1 a simple step.</source>
+        <translation>La macro-tappa %1 dichiara la sua istanza %2 nel codice generato, e la variabile &apos;%3&apos; ha quel nome: rinominare la variabile (per esempio in &apos;%4&apos;), o rendere %1 una tappa semplice.</translation>
+    </message>
+    <message>
+        <source>%2 is read in %3 and by its level in %4, which can fire right after it: while %2 stays TRUE, both fire in the same scan and step %5 of %1 is passed through; read its rising edge in %4 (↑%2) so that each press fires one transition.</source>
+        <extracomment>%2: a BOOL input; %3, %4: two nested transitions; %5: the steps between them</extracomment>
+        <translation>%2 è letta in %3 e per livello in %4, che può scattare subito dopo: finché %2 resta TRUE, entrambe scattano nello stesso ciclo e la tappa %5 di %1 viene attraversata; leggere il suo fronte di salita in %4 (↑%2) perché ogni pressione faccia scattare una sola transizione.</translation>
+    </message>
+    <message>
+        <source>%2 is read in %3 and by its level in %4, which can fire right after it: while %2 stays TRUE, both fire in consecutive scans and step %5 of %1 is passed through; read its rising edge in %4 (↑%2) so that each press fires one transition.</source>
+        <translation>%2 è letta in %3 e per livello in %4, che può scattare subito dopo: finché %2 resta TRUE, entrambe scattano in cicli consecutivi e la tappa %5 di %1 viene attraversata; leggere il suo fronte di salita in %4 (↑%2) perché ogni pressione faccia scattare una sola transizione.</translation>
+    </message>
+    <message>
+        <source>The selection after step %2 of %1 is not complete: with %4 none of %3 fires and the GRAFCET waits in step %2; add a branch for these values unless waiting is intended.</source>
+        <extracomment>%3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)</extracomment>
+        <translation>La selezione dopo la tappa %2 di %1 non è completa: con %4 non scatta nessuna di %3 e il GRAFCET attende nella tappa %2; aggiungere un ramo per questi valori, a meno che l&apos;attesa non sia voluta.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
