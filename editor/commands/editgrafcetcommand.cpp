@@ -4,10 +4,12 @@
 
 #include "core/model/model.h"
 
+#include <utility>
+
 namespace editor {
 
-EditGrafcetCommand::EditGrafcetCommand(Document& document, const QString& stepId, Edit edit, const QString& text)
-    : ModelCommand(document, text)
+EditGrafcetCommand::EditGrafcetCommand(Document& document, const QString& stepId, Edit edit, Wording wording)
+    : ModelCommand(document, std::move(wording))
     , m_stepId(toStdString(stepId))
     , m_edit(std::move(edit))
 {

@@ -12,7 +12,8 @@
 namespace editor {
 
 // One structured edit of a nested GRAFCET ("Add step 7 to F1", "Renumber
-// F1", "Create GRAFCET of F1"), named by the caller. Its first run applies
+// F1", "Create GRAFCET of F1"), named by the caller's wording, so that its
+// undo text follows the UI language. Its first run applies
 // the edit (a core/model/grafcetediting.h operation) to a copy of the
 // GRAFCET (an empty one when the step has none) and keeps the GRAFCET
 // before and after: redo and undo then set one or the other whole, so undo
@@ -24,8 +25,9 @@ class EditGrafcetCommand : public ModelCommand {
 
 public:
     using Edit = std::function<core::Status(core::Grafcet&)>;
+    using ModelCommand::Wording;
 
-    EditGrafcetCommand(Document& document, const QString& stepId, Edit edit, const QString& text);
+    EditGrafcetCommand(Document& document, const QString& stepId, Edit edit, Wording wording);
     int id() const override;
 
 private:

@@ -24,12 +24,6 @@ private:
     Document& m_document;
 };
 
-ModelCommand::ModelCommand(Document& document, const QString& text)
-    : QUndoCommand(text)
-    , m_document(document)
-{
-}
-
 ModelCommand::ModelCommand(Document& document, Wording wording)
     : QUndoCommand(wording())
     , m_document(document)
@@ -39,8 +33,7 @@ ModelCommand::ModelCommand(Document& document, Wording wording)
 
 void ModelCommand::reword()
 {
-    if (m_wording)
-        setText(m_wording());
+    setText(m_wording());
 }
 
 core::Model& ModelCommand::model()

@@ -44,9 +44,8 @@ protected:
     // The text in the current UI language, from the command's own data.
     using Wording = std::function<QString()>;
 
-    // A text that stays as given, in the language it was made in.
-    ModelCommand(Document& document, const QString& text);
-    // A text worded again when the UI language changes.
+    // The text, worded again when the UI language changes: every command
+    // has one, so the whole history follows the language.
     ModelCommand(Document& document, Wording wording);
 
     // Called for every redo; firstRun() is true the first time, when a

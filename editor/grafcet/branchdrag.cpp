@@ -154,10 +154,13 @@ void BranchDrag::moveBranch()
         return; // dropped back at its own place
     const int step = m_step;
     const int offset = m_offset;
-    const QString text = offset < 0 ? tr("Move the branch of step %1 left in %2").arg(step).arg(stepId)
-                                    : tr("Move the branch of step %1 right in %2").arg(step).arg(stepId);
+    const auto wording = [step, offset, stepId] {
+        return offset < 0 ? tr("Move the branch of step %1 left in %2").arg(step).arg(stepId)
+                          : tr("Move the branch of step %1 right in %2").arg(step).arg(stepId);
+    };
     if (!m_document.push(new EditGrafcetCommand(
-            m_document, stepId, [step, offset](core::Grafcet& g) { return core::moveBranch(g, step, offset); }, text)))
+            m_document, stepId, [step, offset](core::Grafcet& g) { return core::moveBranch(g, step, offset); },
+            wording)))
         return;
     // The moved step, selected as the press selected it.
     if (GrafcetStepItem* moved = m_view.grafcetScene()->stepItem(step)) {

@@ -350,11 +350,12 @@ void GrafcetActions::addJumpMenu(QMenu* menu)
     }
 }
 
-bool GrafcetActions::edit(const QString& text, const Edit& operation)
+bool GrafcetActions::edit(Wording wording, const Edit& operation)
 {
     auto created = std::make_shared<core::GrafcetCreated>();
     auto* command = new EditGrafcetCommand(
-        m_document, m_stepId, [operation, created](core::Grafcet& g) { return operation(g, *created); }, text);
+        m_document, m_stepId, [operation, created](core::Grafcet& g) { return operation(g, *created); },
+        std::move(wording));
     if (!m_document.push(command))
         return false;
     select(created->steps, created->transitions);
@@ -379,10 +380,12 @@ void GrafcetActions::insertStep(InsertOperation atStep, InsertOperation atTransi
     const int transition = singleTransition();
     if (!grafcet() || (step == 0 && transition == 0))
         return;
-    edit(tr("Add step %1 to %2").arg(grafcet()->nextStepNumber()).arg(m_stepId),
-         [=](core::Grafcet& g, core::GrafcetCreated& created) {
-             return step != 0 ? atStep(g, step, &created) : atTransition(g, transition, &created);
-         });
+    const auto wording = [number = grafcet()->nextStepNumber(), stepId = m_stepId] {
+        return tr("Add step %1 to %2").arg(number).arg(stepId);
+    };
+    edit(wording, [=](core::Grafcet& g, core::GrafcetCreated& created) {
+        return step != 0 ? atStep(g, step, &created) : atTransition(g, transition, &created);
+    });
 }
 
 void GrafcetActions::addSelectionBranch()
@@ -391,11 +394,11 @@ void GrafcetActions::addSelectionBranch()
     const int transition = singleTransition();
     if (step == 0 && transition == 0)
         return;
-    edit(tr("Add selection branch to %1").arg(m_stepId),
-         [step, transition](core::Grafcet& g, core::GrafcetCreated& created) {
-             return step != 0 ? core::addSelectionBranchAtStep(g, step, &created)
-                              : core::addSelectionBranchAtTransition(g, transition, &created);
-         });
+    edit([stepId = m_stepId] { return tr("Add selection branch to %1").arg(stepId); },
+        [step, transition](core::Grafcet& g, core::GrafcetCreated& created) {
+            return step != 0 ? core::addSelectionBranchAtStep(g, step, &created)
+                             : core::addSelectionBranchAtTransition(g, transition, &created);
+        });
 }
 
 void GrafcetActions::addParallelBranch()
@@ -403,9 +406,10 @@ void GrafcetActions::addParallelBranch()
     const int transition = singleTransition();
     if (transition == 0)
         return;
-    edit(tr("Add parallel branch to %1").arg(m_stepId), [transition](core::Grafcet& g, core::GrafcetCreated& created) {
-        return core::addParallelBranch(g, transition, &created);
-    });
+    edit([stepId = m_stepId] { return tr("Add parallel branch to %1").arg(stepId); },
+        [transition](core::Grafcet& g, core::GrafcetCreated& created) {
+            return core::addParallelBranch(g, transition, &created);
+        });
 }
 
 void GrafcetActions::addBranchEndingOnStep()
@@ -413,11 +417,14 @@ void GrafcetActions::addBranchEndingOnStep()
     const int step = singleStep();
     if (step == 0)
         return;
-    //: %1 the step the branch leaves, %2 the GEMMA step whose GRAFCET it is
-    edit(tr("Add branch ending on a step at step %1 in %2").arg(step).arg(m_stepId),
-         [step](core::Grafcet& g, core::GrafcetCreated& created) {
-             return core::addBranchEndingOnStep(g, step, &created);
-         });
+    edit(
+        [step, stepId = m_stepId] {
+            //: %1 the step the branch leaves, %2 the GEMMA step whose GRAFCET it is
+            return tr("Add branch ending on a step at step %1 in %2").arg(step).arg(stepId);
+        },
+        [step](core::Grafcet& g, core::GrafcetCreated& created) {
+            return core::addBranchEndingOnStep(g, step, &created);
+        });
 }
 
 void GrafcetActions::moveBranchLeft()
@@ -440,10 +447,11 @@ void GrafcetActions::moveBranch(int offset)
     const int step = branchStep();
     const std::vector<int> steps = selectedSteps();
     const std::vector<int> transitions = selectedTransitions();
-    //: %1 the GEMMA step whose GRAFCET it is
-    const QString text = offset < 0 ? tr("Move branch left in %1").arg(m_stepId)
-                                    : tr("Move branch right in %1").arg(m_stepId);
-    edit(text, [transition, step, offset, steps, transitions](core::Grafcet& g, core::GrafcetCreated& created) {
+    const auto wording = [offset, stepId = m_stepId] {
+        //: %1 the GEMMA step whose GRAFCET it is
+        return offset < 0 ? tr("Move branch left in %1").arg(stepId) : tr("Move branch right in %1").arg(stepId);
+    };
+    edit(wording, [transition, step, offset, steps, transitions](core::Grafcet& g, core::GrafcetCreated& created) {
         created.steps = steps;
         created.transitions = transitions;
         return transition != 0 ? core::moveSelectionBranch(g, transition, offset) : core::moveBranch(g, step, offset);
@@ -455,11 +463,13 @@ void GrafcetActions::addJumpTo(int target)
     const int step = singleStep();
     if (step == 0)
         return;
-    //: %1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is
-    edit(tr("Add jump from step %1 to step %2 in %3").arg(step).arg(target).arg(m_stepId),
-         [step, target](core::Grafcet& g, core::GrafcetCreated& created) {
-             return core::addJump(g, step, target, &created);
-         });
+    edit(
+        [step, target, stepId = m_stepId] {
+            //: %1 and %2 step numbers, %3 the GEMMA step whose GRAFCET it is
+            return tr("Add jump from step %1 to step %2 in %3").arg(step).arg(target).arg(stepId);
+        },
+        [step, target](
+            core::Grafcet& g, core::GrafcetCreated& created) { return core::addJump(g, step, target, &created); });
 }
 
 // The selected transitions go as they are (what they leave dangling, the
@@ -468,27 +478,25 @@ void GrafcetActions::removeSelected()
 {
     const std::vector<int> steps = selectedSteps();
     const std::vector<int> transitions = selectedTransitions();
-    QString text;
-    if (transitions.empty())
-        text = steps.size() == 1 ? tr("Remove step %1 from %2").arg(steps.front()).arg(m_stepId)
-                                 : tr("Remove %n steps from %1", nullptr, int(steps.size())).arg(m_stepId);
-    else if (steps.empty())
-        text = transitions.size() == 1
-                 ? tr("Remove T%1 from %2").arg(transitions.front()).arg(m_stepId)
-                 : tr("Remove %n transitions from %1", nullptr, int(transitions.size())).arg(m_stepId);
-    else
-        text = tr("Remove %n elements from %1", nullptr, int(steps.size() + transitions.size())).arg(m_stepId);
     if (steps.empty() && transitions.empty())
         return;
-    removeElements(steps, transitions, text);
+    removeElements(steps, transitions, [steps, transitions, stepId = m_stepId] {
+        if (transitions.empty())
+            return steps.size() == 1 ? tr("Remove step %1 from %2").arg(steps.front()).arg(stepId)
+                                     : tr("Remove %n steps from %1", nullptr, int(steps.size())).arg(stepId);
+        if (steps.empty())
+            return transitions.size() == 1
+                ? tr("Remove T%1 from %2").arg(transitions.front()).arg(stepId)
+                : tr("Remove %n transitions from %1", nullptr, int(transitions.size())).arg(stepId);
+        return tr("Remove %n elements from %1", nullptr, int(steps.size() + transitions.size())).arg(stepId);
+    });
 }
 
 // The transitions go as they are, then each step with repair (what it
 // connected joined), in one command.
-void GrafcetActions::removeElements(const std::vector<int>& steps, const std::vector<int>& transitions,
-                                    const QString& text)
+void GrafcetActions::removeElements(const std::vector<int>& steps, const std::vector<int>& transitions, Wording wording)
 {
-    edit(text, [steps, transitions](core::Grafcet& g, core::GrafcetCreated&) {
+    edit(std::move(wording), [steps, transitions](core::Grafcet& g, core::GrafcetCreated&) {
         for (int transition : transitions)
             if (core::Status status = g.removeTransition(transition); !status)
                 return status;
@@ -505,15 +513,16 @@ void GrafcetActions::removeBranch()
     const int transition = singleTransition();
     if (step == 0 && transition == 0)
         return;
-    edit(tr("Remove branch from %1").arg(m_stepId), [step, transition](core::Grafcet& g, core::GrafcetCreated&) {
-        return step != 0 ? core::removeParallelBranch(g, step) : core::removeSelectionBranch(g, transition);
-    });
+    edit([stepId = m_stepId] { return tr("Remove branch from %1").arg(stepId); },
+        [step, transition](core::Grafcet& g, core::GrafcetCreated&) {
+            return step != 0 ? core::removeParallelBranch(g, step) : core::removeSelectionBranch(g, transition);
+        });
 }
 
 void GrafcetActions::renumber()
 {
-    edit(tr("Renumber %1").arg(m_stepId),
-         [](core::Grafcet& g, core::GrafcetCreated&) { return core::renumberAll(g); });
+    edit([stepId = m_stepId] { return tr("Renumber %1").arg(stepId); },
+        [](core::Grafcet& g, core::GrafcetCreated&) { return core::renumberAll(g); });
 }
 
 void GrafcetActions::connectDirectly()
@@ -526,12 +535,15 @@ void GrafcetActions::connectDirectly()
         return;
     const std::vector<int> upstream = dialog.upstream();
     const std::vector<int> downstream = dialog.downstream();
-    //: %1 the GEMMA step, %2 the transition's number
-    edit(tr("Connect %1 T%2").arg(m_stepId).arg(transition),
-         [transition, upstream, downstream](core::Grafcet& g, core::GrafcetCreated& created) {
-             created.transitions.push_back(transition);
-             return core::connectDirectly(g, transition, upstream, downstream);
-         });
+    edit(
+        [transition, stepId = m_stepId] {
+            //: %1 the GEMMA step, %2 the transition's number
+            return tr("Connect %1 T%2").arg(stepId).arg(transition);
+        },
+        [transition, upstream, downstream](core::Grafcet& g, core::GrafcetCreated& created) {
+            created.transitions.push_back(transition);
+            return core::connectDirectly(g, transition, upstream, downstream);
+        });
 }
 
 // Copy, then the steps removed as Delete removes them.
@@ -541,8 +553,10 @@ void GrafcetActions::cut()
     if (steps.empty() || m_document.isReadOnly())
         return;
     copy();
-    removeElements(steps, {}, steps.size() == 1 ? tr("Cut step %1 from %2").arg(steps.front()).arg(m_stepId)
-                                         : tr("Cut %n steps from %1", nullptr, int(steps.size())).arg(m_stepId));
+    removeElements(steps, {}, [steps, stepId = m_stepId] {
+        return steps.size() == 1 ? tr("Cut step %1 from %2").arg(steps.front()).arg(stepId)
+                                 : tr("Cut %n steps from %1", nullptr, int(steps.size())).arg(stepId);
+    });
 }
 
 void GrafcetActions::copy()
@@ -562,23 +576,26 @@ void GrafcetActions::paste()
     }
     const core::GrafcetFragment fragment = std::get<core::GrafcetFragment>(std::move(read));
     const int after = singleStep();
-    edit(tr("Paste %n steps into %1", nullptr, int(fragment.steps.size())).arg(m_stepId),
-         [fragment, after](core::Grafcet& g, core::GrafcetCreated& created) {
-             return core::pasteFragment(g, fragment, after, &created);
-         });
+    const auto wording = [count = int(fragment.steps.size()), stepId = m_stepId] {
+        return tr("Paste %n steps into %1", nullptr, count).arg(stepId);
+    };
+    edit(wording, [fragment, after](core::Grafcet& g, core::GrafcetCreated& created) {
+        return core::pasteFragment(g, fragment, after, &created);
+    });
 }
 
 void GrafcetActions::createUsualShape()
 {
     if (const core::Grafcet* g = grafcet(); g && !g->steps().empty())
         return;
-    edit(tr("Create GRAFCET of %1").arg(m_stepId), [](core::Grafcet& g, core::GrafcetCreated& created) {
-        g = core::usualGrafcet();
-        // One element selected, so that the menu inserts at once: the first
-        // transition, whose receptivity (TRUE) is the first thing to write.
-        created.transitions.push_back(g.transitions().front().number);
-        return core::Status::success();
-    });
+    edit([stepId = m_stepId] { return tr("Create GRAFCET of %1").arg(stepId); },
+        [](core::Grafcet& g, core::GrafcetCreated& created) {
+            g = core::usualGrafcet();
+            // One element selected, so that the menu inserts at once: the first
+            // transition, whose receptivity (TRUE) is the first thing to write.
+            created.transitions.push_back(g.transitions().front().number);
+            return core::Status::success();
+        });
 }
 
 } // namespace editor

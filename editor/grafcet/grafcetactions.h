@@ -85,9 +85,12 @@ private:
     // selection branch the selected transition starts, or the branch of branchStep.
     bool canMoveBranch(int offset) const;
 
-    // Pushes one command running `edit`; selects what it created.
+    // Pushes one command running `edit`; selects what it created. The
+    // wording calls tr() each time it runs (capturing what it names by
+    // value), so the undo entry follows the UI language.
     using Edit = std::function<core::Status(core::Grafcet&, core::GrafcetCreated&)>;
-    bool edit(const QString& text, const Edit& operation);
+    using Wording = std::function<QString()>;
+    bool edit(Wording wording, const Edit& operation);
 
     void insertAfter();
     void insertBefore();
@@ -101,7 +104,7 @@ private:
     void moveBranch(int offset);
     void addJumpTo(int target);
     void removeSelected();
-    void removeElements(const std::vector<int>& steps, const std::vector<int>& transitions, const QString& text);
+    void removeElements(const std::vector<int>& steps, const std::vector<int>& transitions, Wording wording);
     void removeBranch();
     void renumber();
     void connectDirectly();

@@ -271,7 +271,8 @@ void LinkDrag::makeLink(GrafcetLinkEnd to)
     auto created = std::make_shared<core::GrafcetCreated>();
     auto* command = new EditGrafcetCommand(
         m_document, m_view.grafcetScene()->stepId(),
-        [from, to, created](core::Grafcet& g) { return core::link(g, from, to, created.get()); }, commandText(to));
+        [from, to, created](core::Grafcet& g) { return core::link(g, from, to, created.get()); },
+        [from, to, stepId = m_view.grafcetScene()->stepId()] { return commandText(from, to, stepId); });
     if (!m_document.push(command))
         return;
     // The transition of the link, ready for its receptivity.
@@ -311,10 +312,8 @@ void LinkDrag::selectOnly(GrafcetLinkEnd end)
     scene.setSelectionArea(area, Qt::ReplaceSelection, Qt::ContainsItemBoundingRect);
 }
 
-QString LinkDrag::commandText(GrafcetLinkEnd to) const
+QString LinkDrag::commandText(GrafcetLinkEnd from, GrafcetLinkEnd to, const QString& stepId)
 {
-    const QString& stepId = m_view.grafcetScene()->stepId();
-    const GrafcetLinkEnd from = *m_source;
     if (from.isStep() && to.isStep())
         return tr("Link step %1 to step %2 in %3").arg(from.number).arg(to.number).arg(stepId);
     if (from.isStep())

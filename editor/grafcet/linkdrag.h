@@ -76,7 +76,8 @@ private:
     void refuse(const QString& reason, QPoint pos);
     void clickElement(core::GrafcetLinkEnd end, Qt::KeyboardModifiers modifiers);
     void selectOnly(core::GrafcetLinkEnd end);
-    QString commandText(core::GrafcetLinkEnd to) const;
+    // The link's undo text in the current UI language (worded again on a language switch).
+    static QString commandText(core::GrafcetLinkEnd from, core::GrafcetLinkEnd to, const QString& stepId);
 
     Document& m_document;
     GrafcetView& m_view;

@@ -6,6 +6,7 @@
 
 #include "editor/chart/chartcontextmenu.h"
 #include "editor/commands/editgrafcetcommand.h"
+#include "editor/commands/undohistorywording.h"
 #include "editor/document.h"
 #include "editor/elementref.h"
 #include "editor/grafcet/connecttransitiondialog.h"
@@ -33,6 +34,7 @@
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTranslator>
 #include <QUndoStack>
 
 #include <memory>
@@ -91,6 +93,32 @@ struct Tab {
     GrafcetActions* actions;
 };
 
+// Marks every text of one translation context: a language in which the
+// undo history shows which entries are worded again.
+class MarkingTranslator : public QTranslator {
+public:
+    explicit MarkingTranslator(const char* context)
+        : m_context(context)
+    {
+    }
+    bool isEmpty() const override { return false; }
+    QString translate(const char* context, const char* sourceText, const char* = nullptr, int = -1) const override
+    {
+        return qstrcmp(context, m_context) == 0 ? QStringLiteral("[tr]") + QString::fromUtf8(sourceText) : QString();
+    }
+
+private:
+    const char* m_context;
+};
+
+QStringList undoTexts(const QUndoStack& stack)
+{
+    QStringList texts;
+    for (int i = 0; i < stack.count(); ++i)
+        texts << stack.text(i);
+    return texts;
+}
+
 } // namespace
 
 class TestGrafcetEditing : public QObject {
@@ -114,6 +142,7 @@ private slots:
     void connectDirectlySaysWhyOkIsDisabled();
     void aLongerReceptivityDoesNotShiftTheDrawing();
     void aWideDrawingOpensAtItsLeft();
+    void everyEditIsWordedInTheCurrentLanguage();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -528,7 +557,7 @@ void TestGrafcetEditing::aLongerReceptivityDoesNotShiftTheDrawing()
     const auto setReceptivity = [&document](const std::string& text) {
         return document.push(new EditGrafcetCommand(
             document, QStringLiteral("F3"), [text](core::Grafcet& g) { return g.setReceptivity(1, text); },
-            QStringLiteral("Set receptivity")));
+            [] { return QStringLiteral("Set receptivity"); }));
     };
     QVERIFY(setReceptivity("PartPresent AND NOT DrillHigh AND NOT DrillLow AND ClampClosed AND SpindleReady"));
     QVERIFY(tab.scene->drawingRect().width() > width + 100); // the drawing grew at its right
@@ -550,7 +579,7 @@ void TestGrafcetEditing::aWideDrawingOpensAtItsLeft()
                     return status;
             return core::Status::success();
         },
-        QStringLiteral("Add branches"))));
+        [] { return QStringLiteral("Add branches"); })));
     Tab tab(document, QStringLiteral("F3"));
     tab.view->resize(300, 400);
     tab.view->show();
@@ -560,6 +589,48 @@ void TestGrafcetEditing::aWideDrawingOpensAtItsLeft()
     QCOMPARE(bar->value(), bar->minimum());
     const QRect initialStep = tab.view->mapFromScene(tab.scene->stepItem(1)->sceneBoundingRect()).boundingRect();
     QVERIFY(tab.view->viewport()->rect().contains(initialStep));
+}
+
+// Every kind of entry the tab's actions make words its undo text again when
+// the language changes (here a marking translator stands for it), and back.
+void TestGrafcetEditing::everyEditIsWordedInTheCurrentLanguage()
+{
+    Document document(drillingCell());
+    Tab tab(document, QStringLiteral("F1"));
+    const auto edit = [&](const char* action, const std::vector<int>& steps, const std::vector<int>& transitions) {
+        const int before = document.undoStack()->count();
+        tab.actions->select(steps, transitions);
+        tab.action(action)->trigger();
+        QVERIFY2(document.undoStack()->count() == before + 1, action);
+    };
+    // F1: T2 opens the parallel branches 3-4 and 5-6, closed by T5.
+    edit("grafcetMoveBranchLeftAction", {5}, {});
+    edit("grafcetInsertAfterAction", {1}, {});
+    edit("grafcetSelectionBranchAction", {1}, {});
+    edit("grafcetParallelBranchAction", {}, {2});
+    edit("grafcetEndingBranchAction", {1}, {});
+    edit("grafcetRemoveAction", {6}, {});
+    edit("grafcetRenumberAction", {}, {});
+    tab.actions->select({1}, {});
+    tab.action("grafcetCopyAction")->trigger();
+    edit("grafcetPasteAction", {1}, {});
+    edit("grafcetCutAction", {2}, {});
+    const QStringList english = undoTexts(*document.undoStack());
+    QCOMPARE(english.first(), QStringLiteral("Move branch left in F1"));
+    QCOMPARE(english.last(), QStringLiteral("Cut step 2 from F1"));
+
+    {
+        MarkingTranslator marking("editor::GrafcetActions");
+        QCoreApplication::installTranslator(&marking);
+        rewordUndoHistory(document.undoStack());
+        QStringList marked;
+        for (const QString& text : english)
+            marked << QStringLiteral("[tr]") + text;
+        QCOMPARE(undoTexts(*document.undoStack()), marked);
+        QCOMPARE(document.undoStack()->undoText(), QStringLiteral("[tr]Cut step 2 from F1"));
+    }
+    rewordUndoHistory(document.undoStack());
+    QCOMPARE(undoTexts(*document.undoStack()), english);
 }
 
 QTEST_MAIN(TestGrafcetEditing)

@@ -7,6 +7,7 @@
 #include "editortestsupport.h"
 
 #include "editor/chart/layoutconversion.h"
+#include "editor/commands/undohistorywording.h"
 #include "editor/document.h"
 #include "editor/grafcet/branchdrag.h"
 #include "editor/grafcet/grafcetactions.h"
@@ -25,6 +26,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolTip>
+#include <QTranslator>
 #include <QUndoStack>
 
 #include <memory>
@@ -97,6 +99,24 @@ const core::GrafcetTransition& transition(const Document& document, const char* 
     return *t;
 }
 
+// Marks every text of one translation context: a language in which the
+// undo history shows which entries are worded again.
+class MarkingTranslator : public QTranslator {
+public:
+    explicit MarkingTranslator(const char* context)
+        : m_context(context)
+    {
+    }
+    bool isEmpty() const override { return false; }
+    QString translate(const char* context, const char* sourceText, const char* = nullptr, int = -1) const override
+    {
+        return qstrcmp(context, m_context) == 0 ? QStringLiteral("[tr]") + QString::fromUtf8(sourceText) : QString();
+    }
+
+private:
+    const char* m_context;
+};
+
 } // namespace
 
 class TestGrafcetMouse : public QObject {
@@ -115,6 +135,7 @@ private slots:
     void stepOnNoBranchSaysSo();
     void clicksStillSelect();
     void noLinkWhileReadOnly();
+    void linkAndBranchUndoTextsFollowTheLanguage();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -350,6 +371,36 @@ void TestGrafcetMouse::noLinkWhileReadOnly()
     tab.drag(tab.stepHandle(4), tab.transitionBar(3));
     QVERIFY(!tab.links->isDragging());
     QCOMPARE(transition(document, "F2", 3).upstream, steps({2}));
+}
+
+
+// A link and a branch move made with the mouse word their undo texts again
+// when the language changes (a marking translator stands for it), and back.
+void TestGrafcetMouse::linkAndBranchUndoTextsFollowTheLanguage()
+{
+    Document document(drillingCell());
+    Tab f2(document, QStringLiteral("F2"));
+    QVERIFY(QTest::qWaitForWindowExposed(f2.view.get()));
+    f2.drag(f2.stepHandle(4), f2.transitionBar(3));
+    Tab f1(document, QStringLiteral("F1"));
+    QVERIFY(QTest::qWaitForWindowExposed(f1.view.get()));
+    f1.drag(f1.stepBox(5), f1.stepBox(3));
+    QCOMPARE(document.undoStack()->count(), 2);
+    QCOMPARE(document.undoStack()->text(0), QStringLiteral("Link step 4 to T3 in F2"));
+    QCOMPARE(document.undoStack()->text(1), QStringLiteral("Move the branch of step 5 left in F1"));
+
+    {
+        MarkingTranslator links("editor::LinkDrag");
+        MarkingTranslator branches("editor::BranchDrag");
+        QCoreApplication::installTranslator(&links);
+        QCoreApplication::installTranslator(&branches);
+        rewordUndoHistory(document.undoStack());
+        QCOMPARE(document.undoStack()->text(0), QStringLiteral("[tr]Link step 4 to T3 in F2"));
+        QCOMPARE(document.undoStack()->text(1), QStringLiteral("[tr]Move the branch of step 5 left in F1"));
+    }
+    rewordUndoHistory(document.undoStack());
+    QCOMPARE(document.undoStack()->text(0), QStringLiteral("Link step 4 to T3 in F2"));
+    QCOMPARE(document.undoStack()->text(1), QStringLiteral("Move the branch of step 5 left in F1"));
 }
 
 QTEST_MAIN(TestGrafcetMouse)

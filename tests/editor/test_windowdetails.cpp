@@ -13,10 +13,13 @@
 #include "editor/docks/variablestablemodel.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
+#include "editor/grafcet/grafcetactions.h"
+#include "editor/grafcet/grafcetview.h"
 #include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 
+#include "core/model/grafcet.h"
 #include "core/model/model.h"
 
 #include <QAction>
@@ -47,6 +50,7 @@ private slots:
 
     void transitionsAreNamedWithAnArrow();
     void undoTextsFollowTheLanguage();
+    void grafcetUndoTextsFollowTheLanguage();
     void insertKeyAddsAVariable();
     void pasteReadsAHeaderRow();
     void stepNumberZeroIsRefusedWithTheReason();
@@ -170,6 +174,45 @@ void TestWindowDetails::undoTextsFollowTheLanguage()
     QCoreApplication::processEvents();
     QCOMPARE(undoStack()->undoText(), QStringLiteral("Remove 2 variables"));
     QCOMPARE(undoStack()->text(undoStack()->count() - 3), QStringLiteral("Edit condition of A1 → F2"));
+}
+
+// A GRAFCET edit made in English (a step inserted, steps pasted from the
+// tab's menu actions) reads in French in the undo history once the user
+// switches, and in English again on the way back.
+void TestWindowDetails::grafcetUndoTextsFollowTheLanguage()
+{
+    QVERIFY(m_window->openNestedGrafcet(QStringLiteral("F1")));
+    GrafcetView* view = m_window->grafcetView(QStringLiteral("F1"));
+    QVERIFY(view);
+    auto* actions = view->findChild<GrafcetActions*>(QStringLiteral("grafcetActions"));
+    QVERIFY(actions);
+    const auto trigger = [view](const char* name) {
+        auto* action = view->findChild<QAction*>(QLatin1String(name));
+        QVERIFY2(action, name);
+        action->trigger();
+    };
+    const int added = document().model().grafcet("F1")->nextStepNumber();
+    actions->select({1}, {});
+    trigger("grafcetInsertAfterAction");
+    const QString insertText = QStringLiteral("Add step %1 to F1").arg(added);
+    QCOMPARE(undoStack()->undoText(), insertText);
+    actions->select({1}, {});
+    trigger("grafcetCopyAction");
+    trigger("grafcetPasteAction");
+    QCOMPARE(undoStack()->undoText(), QStringLiteral("Paste 1 step into F1"));
+    QCOMPARE(undoStack()->count(), 2);
+
+    QVERIFY(m_translators->setLanguage(QStringLiteral("fr")));
+    QCoreApplication::processEvents();
+    QCOMPARE(undoStack()->undoText(), QStringLiteral("Coller 1 étape dans F1"));
+    QCOMPARE(undoStack()->text(0), QStringLiteral("Ajouter l’étape %1 à F1").arg(added));
+    QVERIFY2(child<QAction>("undoAction")->text().contains(undoStack()->undoText()),
+             qPrintable(child<QAction>("undoAction")->text()));
+
+    QVERIFY(m_translators->setLanguage(QStringLiteral("en")));
+    QCoreApplication::processEvents();
+    QCOMPARE(undoStack()->undoText(), QStringLiteral("Paste 1 step into F1"));
+    QCOMPARE(undoStack()->text(0), insertText);
 }
 
 // Insert in the table adds a row after the current one, as the Add button does.
