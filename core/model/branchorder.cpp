@@ -1,9 +1,10 @@
 #include "core/model/branchorder.h"
 
+#include "core/model/grafcetwalk.h"
+
 #include "core/model/grafcetediting.h"
 
 #include <algorithm>
-#include <deque>
 #include <map>
 #include <set>
 #include <string>
@@ -11,40 +12,6 @@
 namespace core {
 
 namespace {
-
-// The steps reachable from `from` (included), never entering a blocked step
-// nor using the skipped transition.
-std::set<int> reachableFrom(const Grafcet& grafcet, const std::vector<int>& from, const std::set<int>& blocked,
-                            int skippedTransition = 0)
-{
-    std::set<int> seen;
-    std::deque<int> queue;
-    for (int step : from)
-        if (!blocked.count(step) && seen.insert(step).second)
-            queue.push_back(step);
-    while (!queue.empty()) {
-        const int step = queue.front();
-        queue.pop_front();
-        for (const GrafcetTransition* t : grafcet.transitionsFrom(step)) {
-            if (t->number == skippedTransition)
-                continue;
-            for (int next : t->downstream)
-                if (!blocked.count(next) && seen.insert(next).second)
-                    queue.push_back(next);
-        }
-    }
-    return seen;
-}
-
-// Where walks start: the initial steps and the steps no transition reaches.
-std::vector<int> walkStarts(const Grafcet& grafcet, int except)
-{
-    std::vector<int> starts;
-    for (const GrafcetStep& step : grafcet.steps())
-        if (step.number != except && (step.initial || grafcet.transitionsTo(step.number).empty()))
-            starts.push_back(step.number);
-    return starts;
-}
 
 // Each branch's steps less those above the divergence and those two
 // branches share (they are past a join).
@@ -72,13 +39,13 @@ Divergence selectionAt(const Grafcet& grafcet, int step)
     int join = selectionJoin(grafcet, step);
     int reaching = 0;
     for (const GrafcetTransition* t : grafcet.transitionsFrom(step))
-        reaching += reachableFrom(grafcet, t->downstream, {step}).count(join) > 0 ? 1 : 0;
+        reaching += reachableSteps(grafcet, t->downstream, {step}).count(join) > 0 ? 1 : 0;
     if (reaching < 2)
         join = step;
     std::vector<std::set<int>> branches;
     for (const GrafcetTransition* t : grafcet.transitionsFrom(step))
-        branches.push_back(reachableFrom(grafcet, t->downstream, {step, join}));
-    const std::set<int> above = reachableFrom(grafcet, walkStarts(grafcet, step), {step});
+        branches.push_back(reachableSteps(grafcet, t->downstream, {step, join}));
+    const std::set<int> above = reachableSteps(grafcet, walkStarts(grafcet, step), {step});
     return {BranchPlace::Kind::Selection, step, ownSteps(std::move(branches), above)};
 }
 
@@ -88,8 +55,8 @@ Divergence parallelAt(const Grafcet& grafcet, const GrafcetTransition& transitio
     const std::set<int> blocked(transition.upstream.begin(), transition.upstream.end());
     std::vector<std::set<int>> branches;
     for (int first : transition.downstream)
-        branches.push_back(reachableFrom(grafcet, {first}, blocked, convergence));
-    const std::set<int> above = reachableFrom(grafcet, walkStarts(grafcet, 0), {}, transition.number);
+        branches.push_back(reachableSteps(grafcet, {first}, blocked, convergence));
+    const std::set<int> above = reachableSteps(grafcet, walkStarts(grafcet, 0), {}, transition.number);
     return {BranchPlace::Kind::Parallel, transition.number, ownSteps(std::move(branches), above)};
 }
 

@@ -1,5 +1,7 @@
 #include "core/model/grafcetediting.h"
 
+#include "core/model/grafcetwalk.h"
+
 #include "core/layout/grafcetlayout.h"
 
 #include <algorithm>
@@ -95,45 +97,11 @@ Status redirect(Grafcet& grafcet, const std::vector<int>& transitions, int step,
     return Status::success();
 }
 
-// The steps reachable from `from` (included) along transitions, never
-// entering a blocked step nor using the skipped transition.
-std::set<int> reachable(const Grafcet& grafcet, const std::vector<int>& from, const std::set<int>& blocked = {},
-                        int skippedTransition = 0)
-{
-    std::set<int> seen;
-    std::deque<int> queue;
-    for (int step : from)
-        if (!blocked.count(step) && seen.insert(step).second)
-            queue.push_back(step);
-    while (!queue.empty()) {
-        const int step = queue.front();
-        queue.pop_front();
-        for (const GrafcetTransition* t : grafcet.transitionsFrom(step)) {
-            if (t->number == skippedTransition)
-                continue;
-            for (int next : t->downstream)
-                if (!blocked.count(next) && seen.insert(next).second)
-                    queue.push_back(next);
-        }
-    }
-    return seen;
-}
-
-// Steps from which a walk can start: the initial steps and those no transition reaches.
-std::vector<int> roots(const Grafcet& grafcet)
-{
-    std::vector<int> result;
-    for (const GrafcetStep& step : grafcet.steps())
-        if (step.initial || grafcet.transitionsTo(step.number).empty())
-            result.push_back(step.number);
-    return result;
-}
-
 // Removes the steps reached from `start` that `others` no longer reach.
 Status removeCutOff(Grafcet& grafcet, const std::vector<int>& start, std::vector<int> others)
 {
-    const std::set<int> kept = reachable(grafcet, others);
-    for (int step : reachable(grafcet, start))
+    const std::set<int> kept = reachableSteps(grafcet, others);
+    for (int step : reachableSteps(grafcet, start))
         if (!kept.count(step))
             if (Status status = grafcet.removeStep(step); !status)
                 return status;
@@ -301,7 +269,7 @@ int parallelConvergence(const Grafcet& grafcet, const GrafcetTransition& diverge
         const auto leaving = grafcet.transitionsFrom(divergence.downstream.front());
         return leaving.size() == 1 && leaving.front()->upstream.size() == 1 ? leaving.front()->number : 0;
     }
-    const std::set<int> branches = reachable(grafcet, divergence.downstream, {}, divergence.number);
+    const std::set<int> branches = reachableSteps(grafcet, divergence.downstream, {}, divergence.number);
     std::set<int> seen;
     std::deque<int> queue(divergence.downstream.begin(), divergence.downstream.end());
     std::set<int> visited(queue.begin(), queue.end());
@@ -563,7 +531,7 @@ Status removeSelectionBranch(Grafcet& grafcet, int firstTransition)
         return status;
     return onCopy(grafcet, nullptr, [firstTransition](Grafcet& g, GrafcetCreated&) {
         const GrafcetTransition removed = *g.transition(firstTransition);
-        std::vector<int> others = roots(g);
+        std::vector<int> others = walkStarts(g);
         others.push_back(removed.upstream.front());
         g.removeTransition(firstTransition);
         return removeCutOff(g, removed.downstream, others);
@@ -584,7 +552,7 @@ Status removeParallelBranch(Grafcet& grafcet, int firstStep)
         return status;
     return onCopy(grafcet, nullptr, [firstStep, divergence](Grafcet& g, GrafcetCreated&) {
         std::vector<int> others;
-        for (int root : roots(g))
+        for (int root : walkStarts(g))
             if (root != firstStep)
                 others.push_back(root);
         const std::vector<int>& upstream = g.transition(divergence)->upstream;
