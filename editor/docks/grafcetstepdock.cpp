@@ -402,8 +402,11 @@ void GrafcetStepDock::onNumberChosen(int number)
         return;
     }
     showMessage(m_numberMessage, QString());
+    followNumber(number);
     if (document()->push(new RenumberGrafcetStepCommand(*document(), stepId, current, number)))
         selection()->select(ElementRef::grafcetStep(stepId, number));
+    else
+        followNumber(current);
 }
 
 void GrafcetStepDock::onInitialToggled(bool checked)

@@ -2,7 +2,8 @@
 // dock column holds Step, Transition and Simulation, or Nested Step, Nested
 // Transition and Simulation, with whole titles in every language; the five
 // together did not fit ("Nested Transit…"). A dock the user closed stays
-// closed, through tab switches and restarts. On the shipped drilling cell.
+// closed, through tab switches and restarts; a renumbered nested step keeps
+// its panel in its dock. On the shipped drilling cell.
 
 #include "editortestsupport.h"
 
@@ -11,12 +12,17 @@
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 
+#include "core/model/model.h"
+
 
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
 #include <QFontMetrics>
 #include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStackedWidget>
 #include <QTabBar>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -41,6 +47,7 @@ private slots:
     void aClosedDockStaysClosedAcrossTabs();
     void aClosedDockStaysClosedAfterARestart();
     void resetLayoutReopensClosedDocks();
+    void renumberedStepStaysInItsDock();
 
 private:
     void showWindow();
@@ -240,6 +247,40 @@ void TestDockTabs::resetLayoutReopensClosedDocks()
     QCOMPARE(shownPropertyDocks(), (QStringList{"grafcetStepDock", "grafcetTransitionDock"}));
     showChart();
     QCOMPARE(shownPropertyDocks(), (QStringList{"stepDock", "transitionDock"}));
+}
+
+// A nested step renumbered in the Nested Step panel: the panel shows the
+// step through the change, never its placeholder page in between (that
+// switch back and forth left the form painted over the column's tab bar
+// under X11), and its form stays inside the dock, below the tab bar.
+void TestDockTabs::renumberedStepStaysInItsDock()
+{
+    useDefaultLayout();
+    showGrafcet();
+    m_window->selection()->select(ElementRef::grafcetStep(QStringLiteral("F1"), 1));
+    QApplication::processEvents();
+    QDockWidget* nestedStep = dock("grafcetStepDock");
+    auto* pages = qobject_cast<QStackedWidget*>(nestedStep->widget());
+    QVERIFY(pages);
+    QSignalSpy pageChanges(pages, &QStackedWidget::currentChanged);
+    auto* spin = nestedStep->findChild<QSpinBox*>(QStringLiteral("numberSpin"));
+    QVERIFY(spin);
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, QStringLiteral("50"));
+    QTest::keyClick(spin, Qt::Key_Return);
+    QApplication::processEvents();
+    QVERIFY(m_window->document()->model().grafcet("F1")->step(50));
+    QCOMPARE(pageChanges.count(), 0);
+    QCOMPARE(m_window->focusWidget(), spin); // not moved off a hidden page
+    QCOMPARE(spin->value(), 50);
+    const QRect content = pages->geometry().translated(nestedStep->pos());
+    QVERIFY(pages->isVisible());
+    QVERIFY2(nestedStep->geometry().contains(content), "the form is outside its dock");
+    for (QTabBar* bar : m_window->findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+        if (bar->isVisible())
+            QVERIFY2(!bar->geometry().intersects(content), "the form covers a tab bar");
+    }
 }
 
 QTEST_MAIN(TestDockTabs)
