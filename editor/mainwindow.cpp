@@ -699,6 +699,10 @@ void MainWindow::onSelectionChanged(const ElementRef& element)
 {
     if (element.isNested())
         openNestedGrafcet(element.id);
+    // A GEMMA step or transition selected from a dock (Problems, a link)
+    // while a GRAFCET tab is in front: its dock comes with the chart.
+    else if (element.kind == ElementRef::Kind::Step || element.kind == ElementRef::Kind::Transition)
+        m_centralTabs->setCurrentIndex(0);
 }
 
 void MainWindow::onCentralTabChanged()

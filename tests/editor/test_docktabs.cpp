@@ -196,6 +196,12 @@ void TestDockTabs::theFrontDockGivesPlaceToItsCounterpart()
     QApplication::processEvents();
     QCOMPARE(shownPropertyDocks(), (QStringList{"grafcetStepDock", "grafcetTransitionDock"}));
     QVERIFY(!dock("grafcetStepDock")->visibleRegion().isEmpty());
+    // A GEMMA step selected from a dock while the GRAFCET tab is in front: the chart and the Step dock come.
+    m_window->selection()->select(ElementRef::step(QStringLiteral("F1")));
+    QApplication::processEvents();
+    QCOMPARE(m_window->findChild<QTabWidget*>(QStringLiteral("centralTabs"))->currentIndex(), 0);
+    QCOMPARE(shownPropertyDocks(), (QStringList{"stepDock", "transitionDock"}));
+    QVERIFY(!dock("stepDock")->visibleRegion().isEmpty());
 }
 
 void TestDockTabs::aClosedDockStaysClosedAcrossTabs()
