@@ -7,6 +7,7 @@
 #include "editor/commands/resetmodelcommand.h"
 #include "editor/commands/setelementshiddencommand.h"
 #include "editor/commands/undohistorywording.h"
+#include "editor/dockcontext.h"
 #include "editor/docks/grafcetstepdock.h"
 #include "editor/docks/grafcettransitiondock.h"
 #include "editor/docks/problemsdock.h"
@@ -130,6 +131,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     connect(m_centralTabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeGrafcetTab);
     connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::rememberGrafcetTabs);
     connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::onCentralTabChanged);
+    connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::followTabInFront);
     connect(m_selection, &Selection::changed, this, &MainWindow::onSelectionChanged);
     setCentralWidget(m_centralTabs);
 
@@ -140,6 +142,8 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     m_session = new SimulationSession(m_document, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
     m_verification = new VerificationRunner(m_document, m_session, this);
+    m_dockContext = new DockContext(this);
+    m_dockContext->setClosedDocks(m_settings->closedDocks());
     if (contents == DockContents::Immediate) {
         createDocks();
     } else {
@@ -222,6 +226,9 @@ void MainWindow::createDocks()
     onCentralTabChanged();
     m_simulationDock = new SimulationDock(m_session, m_document, this);
     arrangeDocks(docks());
+    for (QDockWidget* dock : docks())
+        m_dockContext->watch(dock);
+    followTabInFront();
     // Esc in a property dock goes back to the chart or GRAFCET in front (Enter or F2 there came in).
     for (PropertyDock* dock : std::initializer_list<PropertyDock*>{m_stepDock, m_transitionDock, m_grafcetStepDock,
                                                                   m_grafcetTransitionDock}) {
@@ -297,6 +304,8 @@ void MainWindow::createDockFrames()
         m_dockFrames << frame;
     }
     arrangeDocks(m_dockFrames);
+    for (QDockWidget* frame : std::as_const(m_dockFrames))
+        m_dockContext->watch(frame);
 }
 
 // The docks of each group tabbed behind its first, the lower group's front
@@ -362,6 +371,7 @@ void MainWindow::ensureDocksReady()
 void MainWindow::deleteDocks()
 {
     for (QDockWidget* dock : docks()) {
+        m_dockContext->unwatch(dock);
         removeDockWidget(dock);
         delete dock;
     }
@@ -389,10 +399,13 @@ void MainWindow::replaceDockFrames()
         m_viewMenu->removeAction(dock->toggleViewAction());
     deleteDocks();
     createDocks();
-    if (savedLayout.isEmpty() || !restoreState(savedLayout)) {
+    bool restored = false;
+    m_dockContext->untracked([&] { restored = !savedLayout.isEmpty() && restoreState(savedLayout); });
+    if (!restored) {
         resizeDocks({m_stepDock}, {columnWidth}, Qt::Horizontal);
         resizeDocks({m_variablesDock}, {lowerHeight}, Qt::Vertical);
     }
+    m_dockContext->apply();
     applyEditingLock();
     m_viewMenu->insertActions(m_dockActionsEnd, toggleViewActions());
     emit docksBecameReady();
@@ -686,6 +699,10 @@ void MainWindow::onSelectionChanged(const ElementRef& element)
 {
     if (element.isNested())
         openNestedGrafcet(element.id);
+    // A GEMMA step or transition selected from a dock (Problems, a link)
+    // while a GRAFCET tab is in front: its dock comes with the chart.
+    else if (element.kind == ElementRef::Kind::Step || element.kind == ElementRef::Kind::Transition)
+        m_centralTabs->setCurrentIndex(0);
 }
 
 void MainWindow::onCentralTabChanged()
@@ -694,6 +711,11 @@ void MainWindow::onCentralTabChanged()
         return;
     auto* view = qobject_cast<GrafcetView*>(m_centralTabs->currentWidget());
     m_stPreviewDock->setGrafcetInFront(view ? view->grafcetScene()->stepId() : QString());
+}
+
+void MainWindow::followTabInFront()
+{
+    m_dockContext->setGrafcetInFront(qobject_cast<GrafcetView*>(m_centralTabs->currentWidget()) != nullptr);
 }
 
 void MainWindow::closeGrafcetTab(int index)
@@ -783,6 +805,7 @@ void MainWindow::resetLayout()
     addToolBar(Qt::TopToolBarArea, m_mainToolBar);
     if (!isMaximized() && !isFullScreen())
         resize(before);
+    m_dockContext->apply(); // every dock shown above: none is closed now
     applyDefaultLayout();
 }
 
@@ -830,13 +853,16 @@ void MainWindow::restoreLayout()
     if (!restoreGeometry(m_settings->windowGeometry()))
         resize(defaultWindowSize(this));
     const QByteArray state = m_settings->windowState();
-    if (!restoreState(state)) {
+    bool restored = false;
+    m_dockContext->untracked([&] { restored = restoreState(state); });
+    m_dockContext->apply();
+    if (!restored) {
         applyDefaultLayout();
         return;
     }
     if (!docksReady()) {
         m_framesLayout = state; // the docks take it once they are built
-        hideFramesTabbedBehind(m_settings->tabbedBehindDocks());
+        m_dockContext->untracked([this] { hideFramesTabbedBehind(m_settings->tabbedBehindDocks()); });
     }
 }
 
@@ -881,6 +907,7 @@ void MainWindow::saveLayout()
     m_settings->setWindowGeometry(saveGeometry());
     m_settings->setWindowState(saveState());
     m_settings->setTabbedBehindDocks(docksTabbedBehind());
+    m_settings->setClosedDocks(m_dockContext->closedDocks());
     m_settings->sync();
 }
 

@@ -23,6 +23,7 @@ class Autosave;
 class ChartContextMenu;
 class ChartScene;
 class ChartView;
+class DockContext;
 class GrafcetStepDock;
 class GrafcetTransitionDock;
 class GrafcetView;
@@ -178,6 +179,8 @@ private:
     void onSelectionChanged(const ElementRef& element);
     // The Structured Text dock shows the function block of the GRAFCET in front.
     void onCentralTabChanged();
+    // The property docks of the tab in front (DockContext).
+    void followTabInFront();
     void applyEditingLock();
     // Verify: runs the verifier and shows its findings in the Problems dock.
     void verify();
@@ -195,6 +198,7 @@ private:
     ChartView* m_view;
     QTabWidget* m_centralTabs;
     bool m_switchingFile = false; // tabs change with the file: not the user's choice to remember
+    DockContext* m_dockContext = nullptr;
     StepDock* m_stepDock = nullptr;
     TransitionDock* m_transitionDock = nullptr;
     GrafcetStepDock* m_grafcetStepDock = nullptr;

@@ -87,6 +87,16 @@ void Settings::setTabbedBehindDocks(const QStringList& names)
     m_settings.setValue("window/tabbedBehind", names);
 }
 
+QStringList Settings::closedDocks() const
+{
+    return m_settings.value("window/closedDocks").toStringList();
+}
+
+void Settings::setClosedDocks(const QStringList& names)
+{
+    m_settings.setValue("window/closedDocks", names);
+}
+
 QStringList Settings::recentFiles() const
 {
     QStringList files = m_settings.value("files/recent").toStringList();

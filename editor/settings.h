@@ -40,6 +40,10 @@ public:
     // the next start's first frame leaves them out.
     QStringList tabbedBehindDocks() const;
     void setTabbedBehindDocks(const QStringList& names);
+    // The property docks (object names) the user closed: the window state
+    // alone cannot tell them from those the tab in front hid.
+    QStringList closedDocks() const;
+    void setClosedDocks(const QStringList& names);
 
     // Most recent first.
     QStringList recentFiles() const;

@@ -12,6 +12,7 @@
 #include "editor/docks/doubleclickedit.h"
 #include "editor/docks/grafcetactiondelegate.h"
 #include "editor/docks/grafcetactionsmodel.h"
+#include "editor/docks/stepdock.h"
 #include "editor/docks/toolicons.h"
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/docks/wrappinglabel.h"
@@ -24,6 +25,7 @@
 
 #include "core/model/model.h"
 
+#include <QAction>
 #include <QCheckBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -102,7 +104,11 @@ GrafcetStepDock::GrafcetStepDock(Document* document, Selection* selection, QWidg
 
 void GrafcetStepDock::retranslate()
 {
-    setWindowTitle(title());
+    // Its tab shows only while a GRAFCET tab is in front, the GEMMA Step
+    // dock hidden (DockContext): the short title keeps the three tabs of the
+    // column whole at 1366 x 768 in German. The View menu says which it is.
+    setWindowTitle(StepDock::title());
+    toggleViewAction()->setText(title());
     setPlaceholder(tr("Select a step in a nested GRAFCET's tab to see and edit its number, comment and actions."));
     m_numberLabel->setText(tr("&Number:"));
     m_numberSpin->setToolTip(tr("Unique in this GRAFCET; its activity is X<number>. The transitions and the "
@@ -396,8 +402,11 @@ void GrafcetStepDock::onNumberChosen(int number)
         return;
     }
     showMessage(m_numberMessage, QString());
+    followNumber(number);
     if (document()->push(new RenumberGrafcetStepCommand(*document(), stepId, current, number)))
         selection()->select(ElementRef::grafcetStep(stepId, number));
+    else
+        followNumber(current);
 }
 
 void GrafcetStepDock::onInitialToggled(bool checked)

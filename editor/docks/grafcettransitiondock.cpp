@@ -4,6 +4,7 @@
 #include "editor/diagnostictext.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/diagnosticlist.h"
+#include "editor/docks/transitiondock.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/secondarytext.h"
@@ -13,6 +14,7 @@
 
 #include "core/model/model.h"
 
+#include <QAction>
 #include <QFormLayout>
 #include <QLabel>
 #include <QScrollArea>
@@ -59,7 +61,11 @@ GrafcetTransitionDock::GrafcetTransitionDock(Document* document, Selection* sele
 
 void GrafcetTransitionDock::retranslate()
 {
-    setWindowTitle(title());
+    // Its tab shows only while a GRAFCET tab is in front, the GEMMA Transition
+    // dock hidden (DockContext): the short title keeps the three tabs of the
+    // column whole at 1366 x 768 in German. The View menu says which it is.
+    setWindowTitle(TransitionDock::title());
+    toggleViewAction()->setText(title());
     setPlaceholder(tr("Select a transition in a nested GRAFCET's tab to see and edit its receptivity."));
     m_upstreamLabel->setText(tr("From steps:"));
     m_downstreamLabel->setText(tr("To steps:"));

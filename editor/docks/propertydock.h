@@ -56,6 +56,11 @@ protected:
     // The nested step or transition number (nested kinds; 0 otherwise).
     int elementNumber() const { return m_number; }
     ElementRef element() const { return {m_kind, m_elementId, m_number}; }
+    // The element is about to take a new number: the dock shows it through
+    // the change, not its placeholder between the old number's going and the
+    // selection's following (that page switch back and forth left the form
+    // painted over the dock tab bar under X11).
+    void followNumber(int number) { m_number = number; }
 
     // The form while the element exists, filled again; else the placeholder.
     void refresh();
