@@ -290,20 +290,39 @@ private:
             Item selection = makeItem(ItemKind::Selection, step);
             selection.closing = inner.join;
             // Without a convergence the sequence goes on below the
-            // selection with the last branch that leads to new steps; its
+            // selection with the first branch that leads to new steps, as
+            // the sheet draws it: the step's column goes straight down that
+            // branch and the others (an exit step added beside) stand to
+            // its right. Branches that go back together with others keep
+            // their place to its left, where their one convergence is
+            // drawn (else the last such branch continues the column). Its
             // first transition stands with the other branches.
             if (inner.join == 0) {
                 std::vector<int> backs; // by branch, where a plain sequence goes back to (0: not so)
                 for (int t : owned)
                     backs.push_back(goesBackTo(t));
+                int lastSharingBack = -1;
+                std::vector<bool> continues(owned.size(), false);
                 for (std::size_t b = 0; b < owned.size(); ++b) {
                     const auto& down = transitionAt(owned[b]).downstream;
                     // A branch going back where another one does ends on their convergence.
                     const bool sharesBack = backs[b] != 0 && std::count(backs.begin(), backs.end(), backs[b]) > 1;
-                    if (std::any_of(down.begin(), down.end(), [&](int d) { return !placed(d) && !stops(inner, d); })
-                        && !sharesBack)
-                        selection.mainBranch = static_cast<int>(b);
+                    if (sharesBack)
+                        lastSharingBack = static_cast<int>(b);
+                    continues[b] = !sharesBack && std::any_of(down.begin(), down.end(), [&](int d) {
+                        return !placed(d) && !stops(inner, d);
+                    });
                 }
+                int firstRight = -1;
+                int last = -1;
+                for (std::size_t b = 0; b < owned.size(); ++b) {
+                    if (!continues[b])
+                        continue;
+                    last = static_cast<int>(b);
+                    if (last > lastSharingBack && firstRight < 0)
+                        firstRight = last;
+                }
+                selection.mainBranch = firstRight >= 0 ? firstRight : last;
             }
             bool joined = false;
             int mainBar = -1;

@@ -249,3 +249,26 @@ TEST_CASE("Stable drawing: a receptivity growing within its room moves nothing",
         CHECK(after.step(step.number)->box.x == step.box.x);
     CHECK(grafcetlayoutchecks::labelWidthMoves(g).empty());
 }
+
+// The exit step added in one action stands to the right of the sequence it
+// leaves: the step's column goes on straight down its first branch, as the
+// sheet draws it (it used to go on with the last branch, the new exit step,
+// and push the sequence to its left).
+TEST_CASE("An exit step added beside a sequence stands to its right", "[casestudy][grafcet-layout]")
+{
+    for (int exits = 1; exits <= 6; ++exits) {
+        Grafcet g = usualGrafcet(); // 1 -> T1 -> 2 -> T2 -> 3
+        for (int i = 0; i < exits; ++i)
+            require(addBranchEndingOnStep(g, 1));
+        checkLayoutClean(g);
+        const GrafcetLayout layout = layoutGrafcet(g, grafcetlayoutchecks::fixedWidth);
+        INFO("exit branches: " << exits);
+        CHECK(layout.step(1)->box.center().x == layout.step(2)->box.center().x);
+        CHECK(layout.step(2)->box.center().x == layout.step(3)->box.center().x);
+        for (int exit = 4; exit < 4 + exits; ++exit)
+            CHECK(layout.step(exit)->box.left() > layout.step(2)->box.right());
+        // The initial step is the leftmost box: a tab opened at its left shows it.
+        for (const GrafcetStepLayout& step : layout.steps)
+            CHECK(step.box.left() >= layout.step(1)->box.left());
+    }
+}
