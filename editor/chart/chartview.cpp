@@ -3,6 +3,7 @@
 #include "editor/chart/chartscene.h"
 #include "editor/pinchzoom.h"
 #include "editor/selection.h"
+#include "editor/viewzoom.h"
 
 #include <QContextMenuEvent>
 #include <QGraphicsItem>
@@ -88,14 +89,7 @@ void ChartView::zoomBy(double factor, QPointF viewPoint)
     if (qFuzzyCompare(target, zoom()))
         return;
     m_fitted = false;
-    const QPointF anchor = mapToScene(viewPoint.toPoint());
-    const ViewportAnchor previous = transformationAnchor();
-    setTransformationAnchor(NoAnchor);
-    scale(target / zoom(), target / zoom());
-    setTransformationAnchor(previous);
-    const QPointF drift = mapFromScene(anchor) - viewPoint;
-    horizontalScrollBar()->setValue(horizontalScrollBar()->value() + qRound(drift.x()));
-    verticalScrollBar()->setValue(verticalScrollBar()->value() + qRound(drift.y()));
+    zoomViewAbout(*this, target, viewPoint);
     emit zoomChanged(zoom());
 }
 

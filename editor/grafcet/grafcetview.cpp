@@ -2,6 +2,7 @@
 
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/pinchzoom.h"
+#include "editor/viewzoom.h"
 
 #include <QMouseEvent>
 #include <QScrollBar>
@@ -79,17 +80,8 @@ void GrafcetView::zoomToActualSize()
 
 void GrafcetView::zoomBy(double factor, QPointF viewPoint)
 {
-    const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
-    if (qFuzzyCompare(target, zoom()))
+    if (!zoomViewAbout(*this, std::clamp(zoom() * factor, kMinZoom, kMaxZoom), viewPoint))
         return;
-    const QPointF anchor = mapToScene(viewPoint.toPoint());
-    const ViewportAnchor previous = transformationAnchor();
-    setTransformationAnchor(NoAnchor);
-    scale(target / zoom(), target / zoom());
-    setTransformationAnchor(previous);
-    const QPointF drift = mapFromScene(anchor) - viewPoint;
-    horizontalScrollBar()->setValue(horizontalScrollBar()->value() + qRound(drift.x()));
-    verticalScrollBar()->setValue(verticalScrollBar()->value() + qRound(drift.y()));
     emit zoomChanged(zoom());
 }
 
