@@ -3,11 +3,13 @@
 // What the editor's window tests share: settings kept away from the user's,
 // a shown main window, counting chart items.
 
+#include "editor/languages.h"
 #include "editor/mainwindow.h"
 
 #include <QCoreApplication>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
+#include <QLatin1String>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QString>
@@ -35,6 +37,25 @@ inline std::unique_ptr<editor::MainWindow> showMainWindow(editor::Translators& t
     window->resize(1366, 768);
     window->show();
     return window;
+}
+
+// showMainWindow() with fresh translators set to English, kept in `translators`.
+inline std::unique_ptr<editor::MainWindow> showEnglishMainWindow(std::unique_ptr<editor::Translators>& translators)
+{
+    translators = std::make_unique<editor::Translators>();
+    translators->setLanguage(QStringLiteral("en"));
+    return showMainWindow(*translators);
+}
+
+// The child of `parent` with that object name; warns when there is none,
+// so that a failing test says which it looked for.
+template <typename T>
+T* namedChild(const QObject& parent, const char* name)
+{
+    T* found = parent.findChild<T*>(QLatin1String(name));
+    if (!found)
+        qWarning("no child %s", name);
+    return found;
 }
 
 template <typename Item>

@@ -104,10 +104,7 @@ private:
     template <typename T>
     T* child(const char* name) const
     {
-        T* found = m_window->findChild<T*>(QLatin1String(name));
-        if (!found)
-            qWarning("no child %s", name);
-        return found;
+        return editortest::namedChild<T>(*m_window, name);
     }
 
     QTemporaryDir m_settingsDir;
@@ -123,9 +120,7 @@ void TestGrafcetDocks::initTestCase()
 
 void TestGrafcetDocks::init()
 {
-    m_translators = std::make_unique<Translators>();
-    m_translators->setLanguage(QStringLiteral("en"));
-    m_window = editortest::showMainWindow(*m_translators);
+    m_window = editortest::showEnglishMainWindow(m_translators);
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
 }
 

@@ -119,9 +119,7 @@ void TestNestedProblems::initTestCase()
 
 void TestNestedProblems::init()
 {
-    m_translators = std::make_unique<Translators>();
-    m_translators->setLanguage(QStringLiteral("en"));
-    m_window = editortest::showMainWindow(*m_translators);
+    m_window = editortest::showEnglishMainWindow(m_translators);
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
 }
 
