@@ -9,6 +9,7 @@
 #include "core/condition/conditionparser.h"
 #include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
+#include "core/model/grafcetadjacency.h"
 #include "core/model/model.h"
 #include "core/verification/satisfiability.h"
 
@@ -53,12 +54,14 @@ bool writesComplete(const cond::ActionParseResult& action)
 struct ParsedGrafcet {
     const Step& owner;
     const Grafcet& grafcet;
+    const GrafcetAdjacency adjacency;
     std::map<int, cond::ParseResult> receptivities;             // by transition number
     std::map<int, std::vector<cond::ActionParseResult>> actions; // by step number, in list order
 
     ParsedGrafcet(const Step& step, const Grafcet& g)
         : owner(step)
         , grafcet(g)
+        , adjacency(g)
     {
         for (const GrafcetTransition& t : g.transitions())
             receptivities.emplace(t.number, cond::parse(t.receptivity, kNested));
@@ -113,7 +116,7 @@ public:
             checkSteps(parsed);
             checkSelections(parsed);
             checkDivisors(parsed);
-            for (Diagnostic& d : checkGrafcetSequences(m_model, step, *grafcet, parsed.receptivities))
+            for (Diagnostic& d : checkGrafcetSequences(m_model, step, *grafcet, parsed.receptivities, parsed.adjacency))
                 m_result.push_back(std::move(d));
         }
         return std::move(m_result);
@@ -173,7 +176,7 @@ private:
                                   + " cannot be reached from the initial steps through transitions: it can never "
                                     "become active",
                               {parsed.owner.id, std::to_string(step.number)});
-            if (parsed.grafcet.transitionsFrom(step.number).empty() && !parsed.stepSetsComplete(step.number))
+            if (parsed.adjacency.leaving(step.number).empty() && !parsed.stepSetsComplete(step.number))
                 addNestedStep("GG418", Severity::Warning, parsed.owner.id, step.number,
                               "step " + std::to_string(step.number) + " of " + parsed.owner.id
                                   + " has no outgoing transition and does not set Complete: the GRAFCET stops "
@@ -209,7 +212,7 @@ private:
     // entered it, in the same call; the GEMMA layer never sees it active.
     void checkTransient(const ParsedGrafcet& parsed, int stepNumber)
     {
-        for (const GrafcetTransition* t : parsed.grafcet.transitionsFrom(stepNumber)) {
+        for (const GrafcetTransition* t : parsed.adjacency.leaving(stepNumber)) {
             if (t->upstream.size() != 1 || !alwaysTrue(parsed.receptivities.at(t->number)))
                 continue;
             const std::string step = std::to_string(stepNumber);
@@ -244,7 +247,7 @@ private:
     {
         std::set<std::pair<int, int>> reported;
         for (const GrafcetStep& step : parsed.grafcet.steps()) {
-            const std::vector<const GrafcetTransition*> leaving = parsed.grafcet.transitionsFrom(step.number);
+            const std::vector<const GrafcetTransition*>& leaving = parsed.adjacency.leaving(step.number);
             for (std::size_t i = 0; i < leaving.size(); ++i) {
                 for (std::size_t j = i + 1; j < leaving.size(); ++j) {
                     const auto pair = std::make_pair(leaving[i]->number, leaving[j]->number);

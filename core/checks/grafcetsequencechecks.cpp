@@ -3,6 +3,7 @@
 #include "core/checks/nestedsatisfiability.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/symboltable.h"
+#include "core/model/grafcetadjacency.h"
 #include "core/model/model.h"
 #include "core/verification/satisfiability.h"
 
@@ -61,11 +62,12 @@ bool hasStep(const std::vector<int>& numbers, int number)
 class SequenceChecker {
 public:
     SequenceChecker(const Model& model, const Step& owner, const Grafcet& grafcet,
-                    const std::map<int, cond::ParseResult>& receptivities)
+                    const std::map<int, cond::ParseResult>& receptivities, const GrafcetAdjacency& adjacency)
         : m_model(model)
         , m_owner(owner)
         , m_grafcet(grafcet)
         , m_receptivities(receptivities)
+        , m_adjacency(adjacency)
         , m_symbols(model.variables())
     {
     }
@@ -119,28 +121,53 @@ private:
                            [&](int step) { return hasStep(first.downstream, step); });
     }
 
+    // Each receptivity is type-checked and read once, and each transition is
+    // paired only with those leaving the steps it activates: a chain of
+    // 10,000 steps is checked in linear time, not 10^8 pairs.
     void checkLevelRunaways()
     {
+        std::map<int, const cond::Expression*> usable;
+        for (const GrafcetTransition& t : m_grafcet.transitions())
+            if (const cond::Expression* receptivity = usableReceptivity(t.number))
+                usable.emplace(t.number, receptivity);
         std::set<std::pair<int, const Variable*>> reported;
-        for (const GrafcetTransition& second : m_grafcet.transitions()) {
-            const cond::Expression* secondReceptivity = usableReceptivity(second.number);
-            if (!secondReceptivity)
+        for (const GrafcetTransition& first : m_grafcet.transitions()) {
+            const auto firstReceptivity = usable.find(first.number);
+            if (firstReceptivity == usable.end())
                 continue;
-            const std::vector<const Variable*> levels = positiveInputReads(*secondReceptivity, false);
-            for (const GrafcetTransition& first : m_grafcet.transitions()) {
-                const cond::Expression* firstReceptivity = usableReceptivity(first.number);
-                if (levels.empty() || !firstReceptivity || !follows(first, second))
+            std::vector<const Variable*> held;
+            for (const GrafcetTransition* second : followers(first)) {
+                const auto secondReceptivity = usable.find(second->number);
+                if (secondReceptivity == usable.end())
                     continue;
-                for (const Variable* held : positiveInputReads(*firstReceptivity, true)) {
-                    if (!isAmong(levels, held) || reported.count({second.number, held}))
+                const std::vector<const Variable*> levels = positiveInputReads(*secondReceptivity->second, false);
+                if (levels.empty())
+                    continue;
+                if (held.empty())
+                    held = positiveInputReads(*firstReceptivity->second, true);
+                for (const Variable* variable : held) {
+                    if (!isAmong(levels, variable) || reported.count({second->number, variable}))
                         continue;
-                    if (!runsThrough(*firstReceptivity, *secondReceptivity, *held))
+                    if (!runsThrough(*firstReceptivity->second, *secondReceptivity->second, *variable))
                         continue;
-                    reported.insert({second.number, held});
-                    reportRunaway(first, second, *held);
+                    reported.insert({second->number, variable});
+                    reportRunaway(first, *second, *variable);
                 }
             }
         }
+    }
+
+    // The transitions that can fire in the evolution right after `first`,
+    // in the order of the GRAFCET's transitions.
+    std::vector<const GrafcetTransition*> followers(const GrafcetTransition& first) const
+    {
+        std::vector<const GrafcetTransition*> result;
+        for (int step : first.downstream)
+            for (const GrafcetTransition* second : m_adjacency.leaving(step))
+                if (follows(first, *second) && std::find(result.begin(), result.end(), second) == result.end())
+                    result.push_back(second);
+        std::sort(result.begin(), result.end());
+        return result;
     }
 
     static bool isAmong(const std::vector<const Variable*>& variables, const Variable* variable)
@@ -196,7 +223,7 @@ private:
     // themselves, so values of the inputs would not say when it waits.
     void checkSelectionComplete(int stepNumber)
     {
-        const std::vector<const GrafcetTransition*> leaving = m_grafcet.transitionsFrom(stepNumber);
+        const std::vector<const GrafcetTransition*>& leaving = m_adjacency.leaving(stepNumber);
         if (leaving.size() < 2)
             return;
         std::optional<cond::Expression> noneFires;
@@ -256,6 +283,7 @@ private:
     const Step& m_owner;
     const Grafcet& m_grafcet;
     const std::map<int, cond::ParseResult>& m_receptivities;
+    const GrafcetAdjacency& m_adjacency;
     SymbolTable m_symbols;
     std::vector<Diagnostic> m_result;
 };
@@ -263,9 +291,10 @@ private:
 } // namespace
 
 std::vector<Diagnostic> checkGrafcetSequences(const Model& model, const Step& owner, const Grafcet& grafcet,
-                                              const std::map<int, cond::ParseResult>& receptivities)
+                                              const std::map<int, cond::ParseResult>& receptivities,
+                                              const GrafcetAdjacency& adjacency)
 {
-    return SequenceChecker(model, owner, grafcet, receptivities).run();
+    return SequenceChecker(model, owner, grafcet, receptivities, adjacency).run();
 }
 
 } // namespace core

@@ -18,14 +18,17 @@
 namespace core {
 
 class Grafcet;
+class GrafcetAdjacency;
 class Model;
 struct Step;
 
 // Selections reading more variables than this are not examined (GG424).
 inline constexpr std::size_t kMaxSelectionVariables = 12;
 
-// `receptivities`: the parse of every transition's receptivity, by number.
+// `receptivities`: the parse of every transition's receptivity, by number;
+// `adjacency`: the GRAFCET's.
 std::vector<Diagnostic> checkGrafcetSequences(const Model& model, const Step& owner, const Grafcet& grafcet,
-                                              const std::map<int, cond::ParseResult>& receptivities);
+                                              const std::map<int, cond::ParseResult>& receptivities,
+                                              const GrafcetAdjacency& adjacency);
 
 } // namespace core

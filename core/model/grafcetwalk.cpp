@@ -1,5 +1,7 @@
 #include "core/model/grafcetwalk.h"
 
+#include "core/model/grafcetadjacency.h"
+
 #include <deque>
 
 namespace core {
@@ -12,10 +14,11 @@ std::set<int> reachableSteps(const Grafcet& grafcet, const std::vector<int>& fro
     for (int step : from)
         if (!blocked.count(step) && seen.insert(step).second)
             queue.push_back(step);
+    const GrafcetAdjacency adjacency(grafcet);
     while (!queue.empty()) {
         const int step = queue.front();
         queue.pop_front();
-        for (const GrafcetTransition* t : grafcet.transitionsFrom(step)) {
+        for (const GrafcetTransition* t : adjacency.leaving(step)) {
             if (t->number == skippedTransition)
                 continue;
             for (int next : t->downstream)
@@ -28,9 +31,10 @@ std::set<int> reachableSteps(const Grafcet& grafcet, const std::vector<int>& fro
 
 std::vector<int> walkStarts(const Grafcet& grafcet, int except)
 {
+    const GrafcetAdjacency adjacency(grafcet);
     std::vector<int> starts;
     for (const GrafcetStep& step : grafcet.steps())
-        if (step.number != except && (step.initial || grafcet.transitionsTo(step.number).empty()))
+        if (step.number != except && (step.initial || adjacency.entering(step.number).empty()))
             starts.push_back(step.number);
     return starts;
 }

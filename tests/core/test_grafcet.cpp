@@ -1,4 +1,5 @@
 #include "core/model/grafcet.h"
+#include "core/model/grafcetadjacency.h"
 
 #include <catch2/catch.hpp>
 
@@ -210,7 +211,7 @@ TEST_CASE("Renaming an identifier rewrites receptivities and actions and says wh
     CHECK(g.step(2)->actions[0].text == "Lamp");
 }
 
-TEST_CASE("Random operations keep the invariants, and refused ones change nothing", "[grafcet]")
+TEST_CASE("Random operations keep the invariants, refused ones change nothing, the adjacency follows", "[grafcet]")
 {
     std::mt19937 random(20261202);
     const auto pick = [&](int low, int high) { return std::uniform_int_distribution<int>(low, high)(random); };
@@ -237,6 +238,11 @@ TEST_CASE("Random operations keep the invariants, and refused ones change nothin
             }
             INFO("run " << run << ", operation " << i << ": " << status.message);
             REQUIRE(g.invariantViolations().empty());
+            const GrafcetAdjacency adjacency(g);
+            for (int step = 0; step <= 12; ++step) {
+                REQUIRE(adjacency.leaving(step) == g.transitionsFrom(step));
+                REQUIRE(adjacency.entering(step) == g.transitionsTo(step));
+            }
             if (!status)
                 REQUIRE(g.sameContent(before));
         }
