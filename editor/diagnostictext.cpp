@@ -8,7 +8,7 @@
 #include "editor/valueproblemtext.h"
 #include "editor/docks/elementlabels.h"
 
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 #include "core/model/iectypes.h"
 
 #include <QCoreApplication>

@@ -9,7 +9,7 @@
 
 #include "core/codegen/nestedprogram.h"
 #include "core/condition/conditionparser.h"
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 #include "core/model/model.h"
 
 #include <optional>

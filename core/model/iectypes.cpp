@@ -1,6 +1,6 @@
 #include "core/model/iectypes.h"
 
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 #include "core/model/grafcet.h"
 #include "core/model/iectypes.h"
 #include "core/model/status.h"

@@ -1,7 +1,7 @@
 #include "core/simulation/scenario.h"
 
 #include "core/formats/fileio.h"
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 #include "core/model/iectypes.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 
 #include "editor/commands/modelcommand.h"
 
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 
 #include <QCoreApplication>
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 
 #include <QString>
 

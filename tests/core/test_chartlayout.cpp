@@ -1,5 +1,5 @@
 #include "core/layout/chartlayout.h"
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 
 #include <catch2/catch.hpp>
 

@@ -19,7 +19,7 @@
 #include "editor/statenames.h"
 
 #include "core/layout/chartlayout.h"
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 
 #include <QApplication>
 #include <QFontMetricsF>

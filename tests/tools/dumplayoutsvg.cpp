@@ -3,7 +3,7 @@
 // Usage: dump_layout_svg [output.svg]   (stdout when no file is given)
 
 #include "core/layout/chartlayout.h"
-#include "core/model/gemmatemplate.h"
+#include "core/templates/gemma/gemmatemplate.h"
 
 #include <algorithm>
 #include <cmath>
