@@ -1,31 +1,10 @@
 #include "core/layout/chartlayout.h"
 
+#include "core/layout/orthogonalroute.h"
+
 #include <algorithm>
-#include <cmath>
 
 namespace core {
-
-bool Rect::intersects(const Rect& other) const
-{
-    return left() < other.right() && other.left() < right()
-        && top() < other.bottom() && other.top() < bottom();
-}
-
-bool Rect::contains(Point point) const
-{
-    return point.x >= left() && point.x <= right() && point.y >= top() && point.y <= bottom();
-}
-
-bool Rect::contains(const Rect& other) const
-{
-    return other.left() >= left() && other.right() <= right()
-        && other.top() >= top() && other.bottom() <= bottom();
-}
-
-Rect Rect::adjusted(double margin) const
-{
-    return {x - margin, y - margin, width + 2 * margin, height + 2 * margin};
-}
 
 const FrameLayout* ChartLayout::frame(Family family) const
 {
@@ -106,8 +85,6 @@ constexpr StepSpec kSteps[] = {
     {"D3", 480, 700, kStep},
 };
 
-enum class Side { Left, Right, Top, Bottom };
-
 // Where a label goes, as a compass direction from its bar. E and W: beside a
 // horizontal bar. NE, NW, SE, SW: above or below a horizontal segment, close
 // to it, starting right of the vertical bar or ending left of it. N, S and the
@@ -115,16 +92,7 @@ enum class Side { Left, Right, Top, Bottom };
 // joins.
 enum class LabelPlace { E, W, NE, NW, SE, SW, N, S, NEFar, NWFar, SEFar, SWFar };
 
-// A point on a box side, offset from the middle of that side (rightwards on
-// Top/Bottom, downwards on Left/Right).
-struct Anchor {
-    Side side;
-    double offset;
-};
-
-// A route leaves the exit anchor perpendicular to its side, then bends at
-// each coordinate of turns, alternately an x and a y; the builder adds the
-// last bend needed to reach the entry anchor perpendicular to its side.
+// A route as orthogonalRoute() builds it, with its bar and label.
 struct RouteSpec {
     std::string_view source;
     std::string_view target;
@@ -179,53 +147,6 @@ std::vector<RouteSpec> routeSpecs()
     };
 }
 
-Point anchorPoint(const Rect& box, Anchor anchor)
-{
-    const Point c = box.center();
-    switch (anchor.side) {
-    case Side::Left: return {box.left(), c.y + anchor.offset};
-    case Side::Right: return {box.right(), c.y + anchor.offset};
-    case Side::Top: return {c.x + anchor.offset, box.top()};
-    case Side::Bottom: return {c.x + anchor.offset, box.bottom()};
-    }
-    return c;
-}
-
-bool isHorizontalSide(Side side)
-{
-    return side == Side::Left || side == Side::Right;
-}
-
-std::vector<Point> buildRoute(const Rect& source, const Rect& target, const RouteSpec& spec)
-{
-    Point point = anchorPoint(source, spec.exit);
-    bool horizontal = isHorizontalSide(spec.exit.side);
-    std::vector<Point> route{point};
-    for (double turn : spec.turns) {
-        (horizontal ? point.x : point.y) = turn;
-        route.push_back(point);
-        horizontal = !horizontal;
-    }
-    const Point end = anchorPoint(target, spec.entry);
-    if (horizontal != isHorizontalSide(spec.entry.side)) {
-        (horizontal ? point.x : point.y) = horizontal ? end.x : end.y;
-        route.push_back(point);
-    }
-    route.push_back(end);
-    return route;
-}
-
-Point pointAlong(Point from, Point to, double distance)
-{
-    const double length = std::abs(to.x - from.x) + std::abs(to.y - from.y);
-    if (length <= 0)
-        return from;
-    if (distance < 0)
-        distance += length;
-    const double t = std::clamp(distance / length, 0.0, 1.0);
-    return {from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t};
-}
-
 Rect labelRect(Point bar, LabelPlace place, double w)
 {
     constexpr double h = kTransitionLabelHeight;
@@ -265,7 +186,8 @@ TransitionLayout buildTransition(const ChartLayout& layout, const RouteSpec& spe
     transition.id = makeTransitionId(spec.source, spec.target);
     transition.source = spec.source;
     transition.target = spec.target;
-    transition.route = buildRoute(endRect(layout, spec.source), endRect(layout, spec.target), spec);
+    transition.route = orthogonalRoute(endRect(layout, spec.source), spec.exit, spec.turns,
+                                       endRect(layout, spec.target), spec.entry);
     const std::size_t segment = std::min<std::size_t>(spec.barSegment, transition.route.size() - 2);
     const Point from = transition.route[segment];
     const Point to = transition.route[segment + 1];
