@@ -292,6 +292,11 @@ void Document::emitChange(const core::ModelChange& change)
     case core::ModelChange::Kind::Reset:
         emit modelReset();
         break;
+    case core::ModelChange::Kind::PackMLSettings:
+    case core::ModelChange::Kind::PackMLCommand:
+    case core::ModelChange::Kind::PackMLModes:
+    case core::ModelChange::Kind::PackMLMode:
+        break; // the editor does not handle PackML models yet
     }
 }
 
