@@ -141,7 +141,7 @@ public:
     const Step* step(std::string_view id) const;
     const Transition* transition(std::string_view id) const;
     const Variable* variable(std::string_view name) const; // case-insensitive
-    const Step& initialStep() const;
+    const Step& initialStep() const; // GEMMA models only: a PackML model has no steps
 
     // Nested GRAFCETs, by GEMMA step id, including those of steps that are
     // hidden or simple now: they are kept for when the step comes back. In a
