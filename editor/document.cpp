@@ -137,7 +137,7 @@ int Document::nestedProblemCount(const QString& stepId) const
 
 bool Document::load(const QString& path, QString* errorMessage, QStringList* warnings)
 {
-    core::LoadedModel loaded = core::loadModelFile(localPath(path));
+    core::LoadedModel loaded = core::loadSupportedModelFile(localPath(path));
     if (!loaded.ok()) {
         if (loaded.error.file.empty() || loaded.error.file == localPath(path))
             loaded.error.file = path.toStdString(); // show the path as the user gave it
@@ -292,6 +292,11 @@ void Document::emitChange(const core::ModelChange& change)
     case core::ModelChange::Kind::Reset:
         emit modelReset();
         break;
+    case core::ModelChange::Kind::PackMLSettings:
+    case core::ModelChange::Kind::PackMLCommand:
+    case core::ModelChange::Kind::PackMLModes:
+    case core::ModelChange::Kind::PackMLMode:
+        break; // the editor refuses PackML models when it loads them (core::loadSupportedModelFile)
     }
 }
 

@@ -16,7 +16,7 @@ void printLoadError(std::ostream& err, const core::LoadError& error)
 
 core::LoadedModel loadAndReport(const std::string& path, std::ostream& err)
 {
-    core::LoadedModel loaded = core::loadModelFile(path);
+    core::LoadedModel loaded = core::loadSupportedModelFile(path);
     if (!loaded.ok()) {
         printLoadError(err, loaded.error);
         return loaded;

@@ -67,12 +67,36 @@ LoadedModel loadModelText(std::string_view text, const std::string& displayName)
         + std::string(kNativeFormatName) + "\"), a GG-Generator JSON file or a GG Studio PLCopen XML file");
 }
 
+std::string unsupportedModelMessage(const Model& model)
+{
+    if (model.templateKind() == TemplateKind::Gemma)
+        return {};
+    return "a PackML model (format 3.0); this version of GG Studio reads PackML files but cannot edit, check or "
+           "export them yet";
+}
+
+LoadedModel loadSupportedModelFile(const std::string& path)
+{
+    LoadedModel loaded = loadModelFile(path);
+    if (!loaded.ok())
+        return loaded;
+    if (std::string message = unsupportedModelMessage(*loaded.model); !message.empty()) {
+        LoadedModel refused = failure(path, std::move(message));
+        refused.format = loaded.format;
+        return refused;
+    }
+    return loaded;
+}
+
 Status saveModelFile(const Model& model, const std::string& path, ModelFormat format)
 {
     switch (format) {
     case ModelFormat::Native:
         return writeFileAtomically(path, saveNativeJson(model));
     case ModelFormat::GGGenerator:
+        if (model.templateKind() != TemplateKind::Gemma)
+            return Status::failure("file.format", "GG-Generator JSON holds GEMMA models only; save a PackML model "
+                                                  "as a GG Studio model file");
         return writeFileAtomically(path, saveGGGeneratorJson(model));
     case ModelFormat::PlcOpen:
         break;

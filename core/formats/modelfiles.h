@@ -37,6 +37,13 @@ struct LoadedModel {
 LoadedModel loadModelFile(const std::string& path);
 LoadedModel loadModelText(std::string_view text, const std::string& displayName);
 
+// The message for a model this version reads but cannot yet edit, check or
+// export (a PackML model); empty for a model it supports.
+std::string unsupportedModelMessage(const Model& model);
+// loadModelFile, refusing such a model with that message (and no model):
+// what the editor and the command-line tool open.
+LoadedModel loadSupportedModelFile(const std::string& path);
+
 // Writes the model as a Native or GGGenerator file, atomically: on failure
 // the previous file is intact. PlcOpen files are written by the PLCopen
 // export (core/codegen/plcopenwriter.h); asking for one here is a failure.

@@ -3,6 +3,8 @@
 #include "core/formats/jsonreader.h"
 #include "core/formats/modelloading.h"
 #include "core/formats/nativegrafcetjson.h"
+#include "core/formats/nativemodelparts.h"
+#include "core/templates/packml/packmlformat.h"
 
 #include <nlohmann/json.hpp>
 
@@ -127,12 +129,9 @@ bool parseVersionPart(std::string_view text, int& value)
     return true;
 }
 
-struct FormatVersion {
-    int major = 0;
-    int minor = 0;
-};
+using FormatVersion = NativeVersion;
 
-FormatVersion checkFormatAndVersion(const json& root)
+FormatVersion readFormatAndVersion(const json& root)
 {
     const json* format = findMember(root, "format");
     if (!format)
@@ -150,12 +149,27 @@ FormatVersion checkFormatAndVersion(const json& root)
         || !parseVersionPart(std::string_view(version).substr(dot + 1), parsed.minor))
         failAt("/version", "expected a version MAJOR.MINOR of two whole numbers such as \"" + versionText(1)
             + "\", found " + describeJsonValue(*versionValue));
+    return parsed;
+}
+
+// Whether a file of this version is a PackML model (spec packml.md §9).
+bool isPackMLFile(const json& root, FormatVersion version)
+{
+    const json* templateValue = findMember(root, "template");
+    return version.major == packml::kFormatMajor && templateValue && templateValue->is_string()
+        && templateValue->get<std::string>() == packml::kTemplateName;
+}
+
+// Refuses the versions a GEMMA model file cannot have (readFormatAndVersion
+// has read `parsed` from "/version").
+void checkGemmaVersion(const json& root, FormatVersion parsed)
+{
+    const std::string version = findMember(root, "version")->get<std::string>();
     const std::string supported = "this version reads formats 1.x and 2.x";
     if (parsed.major > kNativeFormatMajor)
         failAt("/version", "this file was written by a newer GG Studio (format " + version + "); " + supported);
     if (parsed.major < kNativeFormatOldestMajor)
         failAt("/version", "unsupported format version " + version + "; " + supported);
-    return parsed;
 }
 
 // Which keys an object may hold. A file of the version this build writes (or
@@ -212,26 +226,35 @@ void readSettings(Model& model, const json& root, const KeyRule& keys)
         return;
     const json& settings = expectObject(*settingsValue, "/settings");
     keys.check(settings, "/settings", "the settings", {"cycleTimeMs", "dialect"}, {"evolution"});
+    readNativeCommonSettings(model, settings, "/settings");
+}
+
+} // namespace
+
+void readNativeCommonSettings(Model& model, const json& settings, const std::string& path)
+{
     if (const json* evolution = findMember(settings, "evolution")) {
-        const std::string name = readString(*evolution, "/settings/evolution");
+        const std::string name = readString(*evolution, path + "/evolution");
         EvolutionRule rule = EvolutionRule::OneEvolutionPerScan;
         if (!parseEvolutionRule(name, rule))
-            failAt("/settings/evolution",
+            failAt(path + "/evolution",
                    "unknown evolution rule \"" + name + "\"; expected \"one-per-scan\" or \"until-stable\"");
         model.setEvolutionRule(rule);
     }
     if (const json* cycle = findMember(settings, "cycleTimeMs")) {
-        const long long value = readInteger(*cycle, "/settings/cycleTimeMs", kMinCycleTimeMs, kMaxCycleTimeMs);
-        require(model.setCycleTimeMs(static_cast<int>(value)), "/settings/cycleTimeMs");
+        const long long value = readInteger(*cycle, path + "/cycleTimeMs", kMinCycleTimeMs, kMaxCycleTimeMs);
+        require(model.setCycleTimeMs(static_cast<int>(value)), path + "/cycleTimeMs");
     }
     if (const json* dialectValue = findMember(settings, "dialect")) {
-        const std::string name = readString(*dialectValue, "/settings/dialect");
+        const std::string name = readString(*dialectValue, path + "/dialect");
         Dialect dialect = Dialect::Iec;
         if (!parseDialect(name, dialect))
-            failAt("/settings/dialect", "unknown dialect \"" + name + "\"; expected \"iec\" or \"codesys\"");
+            failAt(path + "/dialect", "unknown dialect \"" + name + "\"; expected \"iec\" or \"codesys\"");
         model.setDialect(dialect);
     }
 }
+
+namespace {
 
 void readVariables(Model& model, const json& root, const KeyRule& keys)
 {
@@ -494,7 +517,11 @@ void readProperties(Model& model, const json& root, const KeyRule& keys)
 std::unique_ptr<Model> buildModel(const json& root)
 {
     expectObject(root, "");
-    const KeyRule keys(checkFormatAndVersion(root));
+    const FormatVersion version = readFormatAndVersion(root);
+    if (isPackMLFile(root, version))
+        return packml::buildModel(root, version);
+    checkGemmaVersion(root, version);
+    const KeyRule keys(version);
     keys.check(root, "", "a model file", {"format", "version", "name", "settings", "steps", "transitions", "variables"},
                {"grafcets", "properties"});
     auto model = std::make_unique<Model>();
@@ -531,6 +558,53 @@ bool hasNativeFormatMember(std::string_view text)
 
 } // namespace
 
+std::string nativeVersionText(int major)
+{
+    return versionText(major);
+}
+
+void checkNativeKeys(const json& object, const std::string& path, const char* what,
+                     std::initializer_list<std::string_view> known, NativeVersion version)
+{
+    KeyRule(version).check(object, path, what, known);
+}
+
+void readNativeVariables(Model& model, const json& root, NativeVersion version)
+{
+    readVariables(model, root, KeyRule(version));
+}
+
+void readNativeProperties(Model& model, const json& root, NativeVersion version)
+{
+    readProperties(model, root, KeyRule(version));
+}
+
+Grafcet readNativeGrafcet(const json& value, const std::string& path, NativeVersion version)
+{
+    return readGrafcet(value, path, KeyRule(version));
+}
+
+ordered_json nativeVariablesJson(const Model& model)
+{
+    ordered_json variables = ordered_json::array();
+    for (const Variable& variable : model.variables())
+        variables.push_back(variableJson(variable, true));
+    return variables;
+}
+
+ordered_json nativePropertiesJson(const Model& model)
+{
+    ordered_json properties = ordered_json::array();
+    for (const UserProperty& property : model.properties()) {
+        ordered_json object;
+        object["text"] = property.text;
+        if (!property.comment.empty())
+            object["comment"] = property.comment;
+        properties.push_back(std::move(object));
+    }
+    return properties;
+}
+
 ordered_json nativeGrafcetJson(const Grafcet& grafcet)
 {
     return grafcetJson(grafcet);
@@ -543,6 +617,8 @@ Grafcet readNativeGrafcet(const ordered_json& value, const std::string& path)
 
 std::string saveNativeJson(const Model& model)
 {
+    if (model.packml())
+        return packml::saveJson(model);
     const bool nested = needsNestedFormat(model);
     ordered_json root;
     root["format"] = kNativeFormatName;
@@ -578,17 +654,8 @@ std::string saveNativeJson(const Model& model)
         }
         root["grafcets"] = std::move(grafcets);
     }
-    if (!model.properties().empty()) {
-        ordered_json properties = ordered_json::array();
-        for (const UserProperty& property : model.properties()) {
-            ordered_json object;
-            object["text"] = property.text;
-            if (!property.comment.empty())
-                object["comment"] = property.comment;
-            properties.push_back(std::move(object));
-        }
-        root["properties"] = std::move(properties);
-    }
+    if (!model.properties().empty())
+        root["properties"] = nativePropertiesJson(model);
 
     // Text from elsewhere may hold invalid UTF-8: replace it rather than throw.
     return root.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";

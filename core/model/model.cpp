@@ -1,6 +1,7 @@
 #include "core/model/model.h"
 
 #include "core/condition/conditionparser.h"
+#include "core/templates/packml/packmlmodel.h"
 
 #include <algorithm>
 #include <set>
@@ -122,7 +123,14 @@ Model::Model(const Model& other)
     , m_grafcets(other.m_grafcets)
     , m_settings(other.m_settings)
     , m_properties(other.m_properties)
+    , m_packml(other.m_packml)
 {
+}
+
+Model::Model(packml::Configuration configuration)
+    : m_packml(std::move(configuration))
+{
+    m_settings.name = std::string(packml::kDefaultProgramName);
 }
 
 // ---- queries ---------------------------------------------------------------
@@ -231,6 +239,8 @@ const Grafcet* Model::grafcet(std::string_view stepId) const
 
 const Grafcet* Model::effectiveGrafcet(std::string_view stepId) const
 {
+    if (m_packml)
+        return effectivePackMLGrafcet(stepId);
     const Step* s = step(stepId);
     if (!s || s->hidden || s->type == StepType::Simple)
         return nullptr;
@@ -241,8 +251,8 @@ const Grafcet* Model::effectiveGrafcet(std::string_view stepId) const
 
 Status Model::setGrafcet(std::string_view stepId, Grafcet grafcet)
 {
-    if (!step(stepId))
-        return unknownStep(stepId);
+    if (!ownsGrafcetKey(stepId))
+        return unknownGrafcetOwner(stepId);
     if (const std::vector<std::string> problems = grafcet.invariantViolations(); !problems.empty())
         return Status::failure("invalid-grafcet", "the GRAFCET of " + std::string(stepId) + " is invalid: " + problems.front());
     const auto found = m_grafcets.find(stepId);
@@ -250,6 +260,14 @@ Status Model::setGrafcet(std::string_view stepId, Grafcet grafcet)
         return Status::success();
     m_grafcets.insert_or_assign(std::string(stepId), std::move(grafcet));
     notifyGrafcet(stepId, {});
+    if (m_packml) {
+        const auto [mode, state] = *packml::parseGrafcetKey(stepId);
+        packml::GrafcetChoice& choice = mutableMode(mode)->grafcets[static_cast<std::size_t>(state)];
+        if (choice != packml::GrafcetChoice::own()) {
+            choice = packml::GrafcetChoice::own();
+            notify(ModelChange::Kind::PackMLMode, std::to_string(mode));
+        }
+    }
     return Status::success();
 }
 
@@ -257,9 +275,14 @@ Status Model::removeGrafcet(std::string_view stepId)
 {
     const auto found = m_grafcets.find(stepId);
     if (found == m_grafcets.end())
-        return step(stepId) ? noGrafcet(stepId) : unknownStep(stepId);
+        return ownsGrafcetKey(stepId) ? noGrafcet(stepId) : unknownGrafcetOwner(stepId);
     m_grafcets.erase(found);
     notifyGrafcet(stepId, {});
+    if (m_packml) {
+        const auto [mode, state] = *packml::parseGrafcetKey(stepId);
+        mutableMode(mode)->grafcets[static_cast<std::size_t>(state)] = packml::GrafcetChoice::none();
+        notify(ModelChange::Kind::PackMLMode, std::to_string(mode));
+    }
     return Status::success();
 }
 
@@ -268,7 +291,7 @@ Status Model::editGrafcet(std::string_view stepId, Edit edit)
 {
     const auto found = m_grafcets.find(stepId);
     if (found == m_grafcets.end())
-        return step(stepId) ? noGrafcet(stepId) : unknownStep(stepId);
+        return ownsGrafcetKey(stepId) ? noGrafcet(stepId) : unknownGrafcetOwner(stepId);
     Status status = edit(found->second);
     if (status.ok && !found->second.lastChanges().empty())
         notifyGrafcet(stepId, found->second.lastChanges());
@@ -277,6 +300,8 @@ Status Model::editGrafcet(std::string_view stepId, Edit edit)
 
 Status Model::addGrafcetStep(std::string_view stepId, GrafcetStep newStep)
 {
+    if (m_packml) // an Own choice always has its GRAFCET
+        return editGrafcet(stepId, [&](Grafcet& g) { return g.addStep(std::move(newStep)); });
     const Step* s = step(stepId);
     if (!s)
         return unknownStep(stepId);
@@ -643,6 +668,7 @@ Status Model::renameVariable(std::string_view oldName, std::string newName)
         if (!changes.empty())
             notifyGrafcet(stepId, std::move(changes));
     }
+    renameInPackMLConditions(previous, newName);
     notify(ModelChange::Kind::Variable, newName);
     notify(ModelChange::Kind::VariableList);
     return Status::success();
@@ -809,7 +835,10 @@ void Model::setEvolutionRule(EvolutionRule rule)
 
 void Model::resetToTemplate()
 {
-    assign(Model());
+    if (m_packml)
+        assign(packml::newModel(m_packml->options.edition));
+    else
+        assign(Model());
 }
 
 void Model::assign(const Model& other)
@@ -822,6 +851,7 @@ void Model::assign(const Model& other)
     m_grafcets = other.m_grafcets;
     m_settings = other.m_settings;
     m_properties = other.m_properties;
+    m_packml = other.m_packml;
     notify(ModelChange::Kind::Reset);
 }
 
@@ -860,6 +890,37 @@ void Model::notifyGrafcet(std::string_view stepId, std::vector<GrafcetChange> ch
 std::vector<std::string> Model::invariantViolations() const
 {
     std::vector<std::string> problems;
+    if (m_packml)
+        packMLInvariantViolations(problems);
+    else
+        gemmaInvariantViolations(problems);
+    std::set<std::string> upperNames;
+    for (const Variable& v : m_variables) {
+        if (v.name.empty())
+            problems.push_back("a variable has an empty name");
+        if (!upperNames.insert(toUpperAscii(v.name)).second)
+            problems.push_back("two variables are named '" + v.name + "' (ignoring case)");
+    }
+    for (const Transition& t : m_transitions) {
+        std::set<std::string> upperTokens;
+        for (const std::string& token : t.tokens) {
+            if (token.empty() || !upperTokens.insert(toUpperAscii(token)).second)
+                problems.push_back("transition " + t.id + " has an empty or repeated token");
+        }
+    }
+    if (m_settings.cycleTimeMs < kMinCycleTimeMs || m_settings.cycleTimeMs > kMaxCycleTimeMs)
+        problems.push_back("the cycle time is out of range");
+    for (const auto& [stepId, nested] : m_grafcets) {
+        if (!ownsGrafcetKey(stepId))
+            problems.push_back("a nested GRAFCET belongs to '" + stepId + "', which is no template step");
+        for (const std::string& problem : nested.invariantViolations())
+            problems.push_back("GRAFCET of " + stepId + ": " + problem);
+    }
+    return problems;
+}
+
+void Model::gemmaInvariantViolations(std::vector<std::string>& problems) const
+{
     const auto initialCount = std::count_if(m_steps.begin(), m_steps.end(), [](const Step& s) { return s.initial; });
     if (initialCount != 1)
         problems.push_back(std::to_string(initialCount) + " initial steps instead of exactly one");
@@ -881,35 +942,12 @@ std::vector<std::string> Model::invariantViolations() const
                 problems.push_back("the priorities out of " + source + " do not form 1..n");
         }
     }
-    std::set<std::string> upperNames;
-    for (const Variable& v : m_variables) {
-        if (v.name.empty())
-            problems.push_back("a variable has an empty name");
-        if (!upperNames.insert(toUpperAscii(v.name)).second)
-            problems.push_back("two variables are named '" + v.name + "' (ignoring case)");
-    }
-    for (const Transition& t : m_transitions) {
-        std::set<std::string> upperTokens;
-        for (const std::string& token : t.tokens) {
-            if (token.empty() || !upperTokens.insert(toUpperAscii(token)).second)
-                problems.push_back("transition " + t.id + " has an empty or repeated token");
-        }
-    }
-    if (m_settings.cycleTimeMs < kMinCycleTimeMs || m_settings.cycleTimeMs > kMaxCycleTimeMs)
-        problems.push_back("the cycle time is out of range");
-    for (const auto& [stepId, nested] : m_grafcets) {
-        if (!step(stepId))
-            problems.push_back("a nested GRAFCET belongs to '" + stepId + "', which is no template step");
-        for (const std::string& problem : nested.invariantViolations())
-            problems.push_back("GRAFCET of " + stepId + ": " + problem);
-    }
-    return problems;
 }
 
 bool Model::sameContent(const Model& other) const
 {
     return m_steps == other.m_steps && m_transitions == other.m_transitions && m_variables == other.m_variables &&
-           m_settings == other.m_settings && m_properties == other.m_properties &&
+           m_settings == other.m_settings && m_properties == other.m_properties && m_packml == other.m_packml &&
            std::equal(m_grafcets.begin(), m_grafcets.end(), other.m_grafcets.begin(), other.m_grafcets.end(),
                       [](const auto& a, const auto& b) { return a.first == b.first && a.second.sameContent(b.second); });
 }

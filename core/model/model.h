@@ -5,10 +5,12 @@
 #include "core/model/iectypes.h"
 #include "core/model/status.h"
 #include "core/model/userproperty.h"
+#include "core/templates/packml/packmlconfiguration.h"
 
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -84,21 +86,46 @@ inline constexpr int kMaxCycleTimeMs = 3'600'000;
 
 // What an operation changed, for observers (the editor's Document, caches).
 struct ModelChange {
-    enum class Kind { Step, Transition, Variable, VariableList, Settings, Grafcet, Properties, Reset };
+    enum class Kind {
+        Step,
+        Transition,
+        Variable,
+        VariableList,
+        Settings,
+        Grafcet,
+        Properties,
+        Reset,
+        PackMLSettings, // edition, options, initial state or initial mode
+        PackMLCommand,  // id: the command's name ("Reset")
+        PackMLModes,    // a mode added or removed
+        PackMLMode,     // id: the mode's number ("4"): its name, comment, request, listings or GRAFCET choices
+    };
     Kind kind;
-    std::string id; // step id, transition id or variable name; empty for lists, settings, reset
-    // Kind::Grafcet (id: the GEMMA step): what changed inside its GRAFCET;
+    // Step id, transition id, variable name, command name or mode number;
+    // empty for lists, settings, reset.
+    std::string id;
+    // Kind::Grafcet (id: the GEMMA step, or packml::grafcetKey): what changed inside its GRAFCET;
     // empty when the whole GRAFCET was created, replaced or removed.
     std::vector<GrafcetChange> grafcetChanges = {};
 };
 
-// The GEMMA-GRAFCET model: the fixed template plus what the user changed.
-// Every mutator keeps the invariants (exactly one initial step, unique
+// Which fixed chart a model fills in.
+enum class TemplateKind { Gemma, PackML };
+
+// The model: a fixed template plus what the user changed. A GEMMA model has
+// the GEMMA steps and transitions; a PackML model has none of them but a
+// packml::Configuration (its commands and modes), its GRAFCETs stored under
+// packml::grafcetKey(mode, state) and addressed by that key wherever a GEMMA
+// step id addresses a GRAFCET. Name, settings, variables and properties are
+// common. Every mutator keeps the invariants (exactly one initial step, unique
 // non-empty variable names, per-source orders forming 1..m) and refuses what
 // would break them with a failed Status, leaving the model untouched.
 class Model {
 public:
-    Model(); // the template with its defaults
+    Model(); // the GEMMA template with its defaults
+    // A PackML model with this configuration, no variables and no GRAFCET
+    // (so no choice may be Own yet); packml::newModel makes a new one.
+    explicit Model(packml::Configuration configuration);
     Model(const Model& other);
     Model& operator=(const Model& other) = delete; // use assign(): observers must hear of it
 
@@ -107,18 +134,24 @@ public:
     const std::vector<Transition>& transitions() const { return m_transitions; }
     const std::vector<Variable>& variables() const { return m_variables; }
     const ModelSettings& settings() const { return m_settings; }
+    TemplateKind templateKind() const { return m_packml ? TemplateKind::PackML : TemplateKind::Gemma; }
+    // The PackML part; nullptr for a GEMMA model.
+    const packml::Configuration* packml() const { return m_packml ? &*m_packml : nullptr; }
 
     const Step* step(std::string_view id) const;
     const Transition* transition(std::string_view id) const;
     const Variable* variable(std::string_view name) const; // case-insensitive
-    const Step& initialStep() const;
+    const Step& initialStep() const; // GEMMA models only: a PackML model has no steps
 
     // Nested GRAFCETs, by GEMMA step id, including those of steps that are
-    // hidden or simple now: they are kept for when the step comes back.
+    // hidden or simple now: they are kept for when the step comes back. In a
+    // PackML model, by packml::grafcetKey: exactly the Own choices.
     const std::map<std::string, Grafcet, std::less<>>& grafcets() const { return m_grafcets; }
     const Grafcet* grafcet(std::string_view stepId) const;
     // The GRAFCET that is the body of S_FB: the step is visible, a macro-step
-    // or an enclosing step, and has one; nullptr otherwise.
+    // or an enclosing step, and has one; nullptr otherwise. PackML: the
+    // GRAFCET that runs in (mode, state) of the key: its own, or mode k's
+    // own for "same as k"; nullptr when the mode disables the state.
     const Grafcet* effectiveGrafcet(std::string_view stepId) const;
 
     // A transition is effective when it and both its ends are visible.
@@ -153,6 +186,9 @@ public:
     // transition number. A step that is simple has no GRAFCET created for it
     // (make it a macro-step or an enclosing step first); one it kept from
     // before can still be edited. See grafcet.h for each operation.
+    // PackML: a key of an existing mode and a state that holds a GRAFCET;
+    // setGrafcet makes the choice Own, removeGrafcet None, and
+    // addGrafcetStep creates no GRAFCET (choose Own first).
     Status setGrafcet(std::string_view stepId, Grafcet grafcet); // creates or replaces (loaders, undo)
     Status removeGrafcet(std::string_view stepId);
     // Creates the step's GRAFCET when it has none.
@@ -175,8 +211,8 @@ public:
     // Variables. Names are unique case-insensitively and never empty.
     Status addVariable(Variable variable, int index = -1); // -1: append
     Status removeVariable(std::string_view name);
-    // A refactoring: every condition, token, receptivity and action that
-    // uses the variable follows.
+    // A refactoring: every condition (PackML commands and mode requests
+    // included), token, receptivity and action that uses the variable follows.
     // The new name must be a valid identifier (identifierProblem() of
     // iectypes.h finds none), so that the rewritten conditions still parse.
     Status renameVariable(std::string_view oldName, std::string newName);
@@ -202,7 +238,28 @@ public:
     void setDialect(Dialect dialect);
     void setEvolutionRule(EvolutionRule rule);
 
-    void resetToTemplate();
+    // PackML (spec packml.md §3, §5.1). Each fails with "not-packml" on a
+    // GEMMA model. Texts and numbers are kept as written (the checks report
+    // them); mode numbers are 1..31, each once.
+    Status setPackMLOptions(packml::Options options); // edition and options
+    Status setPackMLInitialState(packml::State state);
+    Status setPackMLInitialMode(int mode);
+    Status setCommandCondition(packml::Command command, std::string condition);
+    Status setCommandComment(packml::Command command, std::string comment);
+    // A mode with the defaults of a new one (every state enabled, mode
+    // changes in Stopped, Idle, Aborted); `name` only for user modes (4..31).
+    Status addMode(int number, std::string name = {});
+    // Its GRAFCETs go with it; "same as" it becomes none.
+    Status removeMode(int number);
+    Status renameMode(int number, std::string name); // user modes only
+    Status setModeComment(int number, std::string comment);
+    Status setModeRequest(int number, std::string condition); // empty: none
+    Status setModeDisabled(int number, packml::StateSet disabled);
+    Status setModeChangeStates(int number, packml::StateSet states);
+    // Own creates an empty GRAFCET; leaving Own removes it.
+    Status setGrafcetChoice(int mode, packml::State state, packml::GrafcetChoice choice);
+
+    void resetToTemplate(); // PackML: a new model of the same edition
     void assign(const Model& other); // replaces everything; observers get Reset
 
     // Change notification: every successful mutation bumps the revision and
@@ -223,6 +280,15 @@ private:
     Transition* mutableTransition(std::string_view id);
     Variable* mutableVariable(std::string_view name);
     void notify(ModelChange::Kind kind, std::string id = {});
+    bool ownsGrafcetKey(std::string_view key) const;
+    Status unknownGrafcetOwner(std::string_view key) const;
+    Status notPackML() const;
+    packml::Mode* mutableMode(int number);
+    Status findMutableMode(int number, packml::Mode*& mode);
+    void renameInPackMLConditions(const std::string& previous, const std::string& newName);
+    void gemmaInvariantViolations(std::vector<std::string>& problems) const;
+    void packMLInvariantViolations(std::vector<std::string>& problems) const;
+    const Grafcet* effectivePackMLGrafcet(std::string_view key) const;
     void notifyGrafcet(std::string_view stepId, std::vector<GrafcetChange> changes);
     template <typename Edit>
     Status editGrafcet(std::string_view stepId, Edit edit);
@@ -235,6 +301,7 @@ private:
     std::map<std::string, Grafcet, std::less<>> m_grafcets;
     ModelSettings m_settings;
     std::vector<UserProperty> m_properties;
+    std::optional<packml::Configuration> m_packml;
     std::uint64_t m_revision = 0;
     std::map<int, Observer> m_observers;
     int m_nextObserver = 1;

@@ -128,6 +128,7 @@ struct Options {
     Edition edition = Edition::Y2015;
     bool holdInSuspended = false;         // default TRUE in 2022, FALSE in 2015
     bool completeInSuspendedHeld = false; // 2022 only
+    friend bool operator==(const Options&, const Options&) = default;
 };
 Options defaultOptions(Edition edition);
 
