@@ -4,6 +4,7 @@
 #include "core/templates/packml/packmlmodel.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <set>
 
 namespace core {
@@ -166,7 +167,11 @@ int Model::variableIndex(std::string_view name) const
 const Step& Model::initialStep() const
 {
     auto found = std::find_if(m_steps.begin(), m_steps.end(), [](const Step& s) { return s.initial; });
-    return *found; // the invariant guarantees exactly one
+    // A GEMMA model's invariant guarantees exactly one; a PackML model has
+    // none, and asking is a programming error, not undefined behaviour.
+    if (found == m_steps.end())
+        throw std::logic_error("Model::initialStep: a PackML model has no GEMMA steps");
+    return *found;
 }
 
 bool Model::isEffective(const Transition& transition) const

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,7 @@ TEST_CASE("A new PackML model has the base modes, the defaults and the command i
     CHECK(model.steps().empty());
     CHECK(model.transitions().empty());
     CHECK(model.grafcets().empty());
+    CHECK_THROWS_AS(model.initialStep(), std::logic_error); // GEMMA only: a loud error, not UB
     CHECK(model.settings().name == "PackML");
     CHECK(model.invariantViolations().empty());
 
