@@ -1,5 +1,6 @@
 #include "editor/exportactions.h"
 
+#include "editor/app/settings.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chartexport.h"
 #include "editor/diagnostictext.h"
@@ -7,7 +8,6 @@
 #include "editor/exportoptionsdialog.h"
 #include "editor/grafcet/grafcetexport.h"
 #include "editor/grafcet/grafcetscene.h"
-#include "editor/settings.h"
 #include "editor/specificationexport.h"
 
 #include "core/formats/fileio.h"

@@ -1,5 +1,6 @@
 #include "editor/modelsettingsdialog.h"
 
+#include "editor/app/settings.h"
 #include "editor/commands/setcycletimecommand.h"
 #include "editor/commands/setdialectcommand.h"
 #include "editor/commands/setevolutionrulecommand.h"
@@ -8,7 +9,6 @@
 #include "editor/document.h"
 #include "editor/exportoptionsdialog.h"
 #include "editor/secondarytext.h"
-#include "editor/settings.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -24,6 +24,7 @@
 #include "catchsession.h"
 #include "modelfactory.h"
 
+#include "editor/app/languages.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
 #include "editor/chart/layoutconversion.h"
@@ -39,7 +40,6 @@
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/grafcet/linkdrag.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 #include "editor/simulation/simulationdock.h"

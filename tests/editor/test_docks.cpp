@@ -2,14 +2,15 @@
 // commands, follow undo, and talk to each other through the Selection
 // (a problem's double-click focuses the field at fault).
 
+#include "editor/app/languages.h"
 #include "editor/commands/addvariablecommand.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setdialectcommand.h"
 #include "editor/commands/setelementshiddencommand.h"
 #include "editor/commands/setinitialstepcommand.h"
+#include "editor/commands/setstepcommentcommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/commands/setsteptypecommand.h"
-#include "editor/commands/setstepcommentcommand.h"
 #include "editor/commands/settokenscommand.h"
 #include "editor/conditionerrortext.h"
 #include "editor/conditiontypeerrortext.h"
@@ -24,7 +25,6 @@
 #include "editor/docks/variablestablemodel.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
-#include "editor/languages.h"
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"

@@ -8,6 +8,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/chart/chartstyle.h"
 #include "editor/commands/addgrafcetactioncommand.h"
 #include "editor/docks/conditionedit.h"
@@ -23,7 +24,6 @@
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/grafcetactionparts.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 

@@ -4,6 +4,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/chart/chartcontextmenu.h"
 #include "editor/commands/editgrafcetcommand.h"
 #include "editor/commands/undohistorywording.h"
@@ -17,7 +18,6 @@
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/grafcet/nestedgrafcetavailable.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 
 #include "core/formats/modelfiles.h"

@@ -7,6 +7,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/layoutconversion.h"
@@ -17,7 +18,6 @@
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/grafcet/grafcetwiringitem.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/simulation/grafcetmarklabelitem.h"
 #include "editor/simulation/grafcetsimulationmarks.h"

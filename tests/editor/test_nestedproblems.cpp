@@ -7,6 +7,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/stepitem.h"
@@ -24,7 +25,6 @@
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 

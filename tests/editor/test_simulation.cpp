@@ -7,20 +7,20 @@
 
 #include "editortestsupport.h"
 
-#include "editor/secondarytext.h"
-#include "editor/simulation/valuecolours.h"
+#include "editor/app/languages.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/stepitem.h"
 #include "editor/chart/transitionitem.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/docks/elementlabels.h"
 #include "editor/document.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
+#include "editor/secondarytext.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
+#include "editor/simulation/valuecolours.h"
 #include "editor/statusindicators.h"
 
 #include "core/condition/conditionevaluator.h"

@@ -10,11 +10,11 @@
 #include "modelfactory.h"
 #include "readonlyfolder.h"
 
+#include "editor/app/languages.h"
 #include "editor/document.h"
 #include "editor/exportactions.h"
 #include "editor/exportoptionsdialog.h"
 #include "editor/grafcet/grafcettransitionitem.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/specificationexport.h"
 #include "editor/statenames.h"

@@ -5,9 +5,9 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/chart/chartview.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/statusindicators.h"
 

@@ -1,4 +1,4 @@
-#include "editor/examplemodels.h"
+#include "editor/app/examplemodels.h"
 
 #include "core/formats/modelfiles.h"
 

@@ -1,4 +1,4 @@
-#include "editor/autosave.h"
+#include "editor/app/autosave.h"
 
 #include "editor/document.h"
 

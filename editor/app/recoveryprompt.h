@@ -9,7 +9,7 @@ namespace editor {
 class Document;
 
 // At start: offers the models autosave kept when a session ended without
-// saving them (editor/autosave.h), newest first; never those of an instance
+// saving them (editor/app/autosave.h), newest first; never those of an instance
 // still running, nor those another starting instance offers at the same
 // time. The user recovers one into the document, discards it, or keeps it
 // for the next start.

@@ -1,4 +1,4 @@
-#include "editor/settings.h"
+#include "editor/app/settings.h"
 
 #include <QDir>
 #include <QFileInfo>

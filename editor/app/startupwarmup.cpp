@@ -1,4 +1,4 @@
-#include "editor/startupwarmup.h"
+#include "editor/app/startupwarmup.h"
 
 #include <QDBusConnection>
 #include <QFontDatabase>

@@ -1,4 +1,4 @@
-#include "editor/userguide.h"
+#include "editor/app/userguide.h"
 
 #include <QAbstractTextDocumentLayout>
 #include <QAction>

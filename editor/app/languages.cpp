@@ -1,4 +1,4 @@
-#include "editor/languages.h"
+#include "editor/app/languages.h"
 
 #include <QCoreApplication>
 #include <QLibraryInfo>

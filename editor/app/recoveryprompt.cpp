@@ -1,6 +1,6 @@
-#include "editor/recoveryprompt.h"
+#include "editor/app/recoveryprompt.h"
 
-#include "editor/autosave.h"
+#include "editor/app/autosave.h"
 #include "editor/document.h"
 
 #include <QDir>

@@ -1,6 +1,6 @@
-#include "editor/recentfiles.h"
+#include "editor/app/recentfiles.h"
 
-#include "editor/settings.h"
+#include "editor/app/settings.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -1,10 +1,10 @@
-#include "editor/application.h"
+#include "editor/app/application.h"
 
-#include "editor/autosave.h"
-#include "editor/languages.h"
+#include "editor/app/autosave.h"
+#include "editor/app/languages.h"
+#include "editor/app/settings.h"
+#include "editor/app/startupwarmup.h"
 #include "editor/mainwindow.h"
-#include "editor/settings.h"
-#include "editor/startupwarmup.h"
 #include "editor/windowbuttonstyle.h"
 
 #include <QApplication>
