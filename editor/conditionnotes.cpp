@@ -3,7 +3,7 @@
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/transitionitem.h"
-#include "editor/docks/elementlabels.h"
+#include "editor/text/elementlabels.h"
 
 #include <QFontMetricsF>
 #include <QPainter>

@@ -3,12 +3,12 @@
 #include "editor/app/settings.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chartexport.h"
-#include "editor/diagnostictext.h"
 #include "editor/document.h"
 #include "editor/exportoptionsdialog.h"
 #include "editor/grafcet/grafcetexport.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/specificationexport.h"
+#include "editor/text/diagnostictext.h"
 
 #include "core/formats/fileio.h"
 #include "core/formats/gggeneratorformat.h"

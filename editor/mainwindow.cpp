@@ -38,8 +38,8 @@
 #include "editor/simulation/simulationchartmarks.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
-#include "editor/statenames.h"
 #include "editor/statusindicators.h"
+#include "editor/text/gemmastatenames.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>

@@ -1,8 +1,8 @@
 #include "editor/statusindicators.h"
 
-#include "editor/diagnostictext.h"
 #include "editor/document.h"
 #include "editor/severityicon.h"
+#include "editor/text/diagnostictext.h"
 #include "editor/verificationrunner.h"
 
 #include <QEvent>

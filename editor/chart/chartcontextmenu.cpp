@@ -8,10 +8,10 @@
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/commands/setsteptypecommand.h"
 #include "editor/commands/settransitionhiddencommand.h"
-#include "editor/docks/elementlabels.h"
 #include "editor/document.h"
 #include "editor/grafcet/nestedgrafcetavailable.h"
 #include "editor/selection.h"
+#include "editor/text/elementlabels.h"
 
 #include "core/model/model.h"
 

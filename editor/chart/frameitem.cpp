@@ -4,7 +4,7 @@
 #include "editor/chart/layoutconversion.h"
 #include "editor/chart/pixelsnap.h"
 #include "editor/chart/segmentstroke.h"
-#include "editor/statenames.h"
+#include "editor/text/gemmastatenames.h"
 
 #include <QFontMetrics>
 #include <QPainter>

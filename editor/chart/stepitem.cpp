@@ -4,7 +4,7 @@
 #include "editor/chart/pixelsnap.h"
 #include "editor/chart/segmentstroke.h"
 #include "editor/document.h"
-#include "editor/statenames.h"
+#include "editor/text/gemmastatenames.h"
 
 #include <QPainter>
 #include <QStyleOptionGraphicsItem>

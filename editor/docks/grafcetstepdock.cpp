@@ -20,8 +20,8 @@
 #include "editor/grafcetactionparts.h"
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
-#include "editor/statenames.h"
 #include "editor/stdstring.h"
+#include "editor/text/gemmastatenames.h"
 
 #include "core/model/model.h"
 

@@ -1,7 +1,6 @@
 #include "editor/docks/grafcettransitiondock.h"
 
 #include "editor/commands/setreceptivitycommand.h"
-#include "editor/diagnostictext.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/diagnosticlist.h"
 #include "editor/docks/transitiondock.h"
@@ -9,8 +8,9 @@
 #include "editor/document.h"
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
-#include "editor/statenames.h"
 #include "editor/stdstring.h"
+#include "editor/text/diagnostictext.h"
+#include "editor/text/gemmastatenames.h"
 
 #include "core/model/model.h"
 

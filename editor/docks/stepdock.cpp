@@ -5,9 +5,7 @@
 #include "editor/commands/setstepcommentcommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/commands/setsteptypecommand.h"
-#include "editor/diagnostictext.h"
 #include "editor/docks/diagnosticlist.h"
-#include "editor/docks/elementlabels.h"
 #include "editor/docks/startguide.h"
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/docks/wrappinglabel.h"
@@ -16,8 +14,10 @@
 #include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/severityicon.h"
-#include "editor/statenames.h"
 #include "editor/stdstring.h"
+#include "editor/text/diagnostictext.h"
+#include "editor/text/elementlabels.h"
+#include "editor/text/gemmastatenames.h"
 
 #include "core/model/model.h"
 

@@ -1,15 +1,15 @@
 #include "editor/simulation/simulationdock.h"
 
 #include "editor/chart/chartstyle.h"
-#include "editor/docks/elementlabels.h"
 #include "editor/document.h"
 #include "editor/secondarytext.h"
 #include "editor/simulation/lampindicator.h"
 #include "editor/simulation/simulationsession.h"
-#include "editor/simulation/valuecolours.h"
 #include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
-#include "editor/statenames.h"
+#include "editor/simulation/valuecolours.h"
+#include "editor/text/elementlabels.h"
+#include "editor/text/gemmastatenames.h"
 
 #include "core/model/model.h"
 #include "core/simulation/simulator.h"

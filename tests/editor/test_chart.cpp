@@ -16,7 +16,7 @@
 #include "editor/commands/setsteptypecommand.h"
 #include "editor/document.h"
 #include "editor/selection.h"
-#include "editor/statenames.h"
+#include "editor/text/gemmastatenames.h"
 
 #include "core/layout/chartlayout.h"
 #include "core/templates/gemma/gemmatemplate.h"

@@ -14,8 +14,6 @@
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setgrafcetactioncommand.h"
 #include "editor/commands/setreceptivitycommand.h"
-#include "editor/conditiontypeerrortext.h"
-#include "editor/diagnostictext.h"
 #include "editor/docks/diagnosticlist.h"
 #include "editor/docks/grafcettransitiondock.h"
 #include "editor/docks/problemsdock.h"
@@ -27,6 +25,8 @@
 #include "editor/grafcet/grafcetview.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
+#include "editor/text/conditiontypeerrortext.h"
+#include "editor/text/diagnostictext.h"
 
 #include "core/condition/conditiontypeerror.h"
 #include "core/model/model.h"

@@ -12,7 +12,6 @@
 #include "editor/chart/stepitem.h"
 #include "editor/chart/transitionitem.h"
 #include "editor/commands/setconditioncommand.h"
-#include "editor/docks/elementlabels.h"
 #include "editor/document.h"
 #include "editor/mainwindow.h"
 #include "editor/secondarytext.h"
@@ -22,6 +21,7 @@
 #include "editor/simulation/tracetablemodel.h"
 #include "editor/simulation/valuecolours.h"
 #include "editor/statusindicators.h"
+#include "editor/text/elementlabels.h"
 
 #include "core/condition/conditionevaluator.h"
 #include "core/formats/modelfiles.h"

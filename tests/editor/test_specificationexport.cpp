@@ -17,7 +17,7 @@
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/mainwindow.h"
 #include "editor/specificationexport.h"
-#include "editor/statenames.h"
+#include "editor/text/gemmastatenames.h"
 
 #include "core/codegen/stgenerator.h"
 #include "core/formats/modelfiles.h"

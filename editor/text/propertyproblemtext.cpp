@@ -1,8 +1,8 @@
-#include "editor/propertyproblemtext.h"
+#include "editor/text/propertyproblemtext.h"
 
-#include "editor/conditionerrortext.h"
-#include "editor/conditiontypeerrortext.h"
-#include "editor/displaytext.h"
+#include "editor/text/conditionerrortext.h"
+#include "editor/text/conditiontypeerrortext.h"
+#include "editor/text/displaytext.h"
 
 #include "core/verification/property.h"
 

@@ -1,6 +1,6 @@
-#include "editor/conditionerrortext.h"
+#include "editor/text/conditionerrortext.h"
 
-#include "editor/displaytext.h"
+#include "editor/text/displaytext.h"
 
 #include <QCoreApplication>
 

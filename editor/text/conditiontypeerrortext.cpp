@@ -1,7 +1,7 @@
-#include "editor/conditiontypeerrortext.h"
+#include "editor/text/conditiontypeerrortext.h"
 
-#include "editor/displaytext.h"
 #include "editor/stdstring.h"
+#include "editor/text/displaytext.h"
 
 #include <QCoreApplication>
 

@@ -1,4 +1,4 @@
-#include "editor/valueproblemtext.h"
+#include "editor/text/valueproblemtext.h"
 
 #include <QCoreApplication>
 

@@ -1,4 +1,4 @@
-#include "editor/docks/elementlabels.h"
+#include "editor/text/elementlabels.h"
 
 #include "core/model/model.h"
 

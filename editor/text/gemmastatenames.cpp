@@ -1,4 +1,4 @@
-#include "editor/statenames.h"
+#include "editor/text/gemmastatenames.h"
 
 #include <QCoreApplication>
 

@@ -1,9 +1,9 @@
-#include "editor/nestedproblemtext.h"
+#include "editor/text/nestedproblemtext.h"
 
-#include "editor/conditionerrortext.h"
-#include "editor/conditiontypeerrortext.h"
-#include "editor/diagnostictext.h"
 #include "editor/stdstring.h"
+#include "editor/text/conditionerrortext.h"
+#include "editor/text/conditiontypeerrortext.h"
+#include "editor/text/diagnostictext.h"
 
 #include "core/condition/conditionparseerror.h"
 #include "core/condition/conditiontypeerror.h"

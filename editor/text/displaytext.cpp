@@ -1,4 +1,4 @@
-#include "editor/displaytext.h"
+#include "editor/text/displaytext.h"
 
 #include <QStringList>
 
