@@ -24,7 +24,7 @@
 #include "editor/docks/variablesdock.h"
 #include "editor/docks/verificationpanel.h"
 #include "editor/document.h"
-#include "editor/exportactions.h"
+#include "editor/export/exportactions.h"
 #include "editor/frontzoom.h"
 #include "editor/grafcet/grafcetactions.h"
 #include "editor/grafcet/grafcetkeyboard.h"

@@ -7,7 +7,7 @@
 #include "editor/commands/setmodelnamecommand.h"
 #include "editor/commands/undohistorywording.h"
 #include "editor/document.h"
-#include "editor/exportoptionsdialog.h"
+#include "editor/export/exportoptionsdialog.h"
 #include "editor/secondarytext.h"
 
 #include <QCheckBox>

@@ -11,8 +11,8 @@
 
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
-#include "editor/chartexport.h"
 #include "editor/document.h"
+#include "editor/export/chartexport.h"
 #include "editor/selection.h"
 
 #include "modelfactory.h"

@@ -27,7 +27,7 @@
 #include "editor/app/languages.h"
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartview.h"
-#include "editor/chartexport.h"
+#include "editor/export/chartexport.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 #include "editor/simulation/simulationsession.h"

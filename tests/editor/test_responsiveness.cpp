@@ -10,7 +10,7 @@
 
 #include "editor/app/languages.h"
 #include "editor/document.h"
-#include "editor/exportactions.h"
+#include "editor/export/exportactions.h"
 #include "editor/mainwindow.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/verificationrunner.h"

@@ -12,11 +12,11 @@
 
 #include "editor/app/languages.h"
 #include "editor/document.h"
-#include "editor/exportactions.h"
-#include "editor/exportoptionsdialog.h"
+#include "editor/export/exportactions.h"
+#include "editor/export/exportoptionsdialog.h"
+#include "editor/export/specificationexport.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/mainwindow.h"
-#include "editor/specificationexport.h"
 #include "editor/text/gemmastatenames.h"
 
 #include "core/codegen/stgenerator.h"

@@ -1,11 +1,11 @@
-#include "editor/chartexport.h"
+#include "editor/export/chartexport.h"
 
 #include "editor/chart/chartscene.h"
 #include "editor/chart/frameitem.h"
 #include "editor/chart/transitionitem.h"
-#include "editor/conditionnotes.h"
-#include "editor/exportfile.h"
-#include "editor/hiddenselection.h"
+#include "editor/export/conditionnotes.h"
+#include "editor/export/exportfile.h"
+#include "editor/export/hiddenselection.h"
 
 #include <QFileInfo>
 #include <QGraphicsItem>

@@ -1,4 +1,4 @@
-#include "editor/exportoptionsdialog.h"
+#include "editor/export/exportoptionsdialog.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

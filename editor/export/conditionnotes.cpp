@@ -1,4 +1,4 @@
-#include "editor/conditionnotes.h"
+#include "editor/export/conditionnotes.h"
 
 #include "editor/chart/chartscene.h"
 #include "editor/chart/chartstyle.h"

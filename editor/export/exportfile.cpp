@@ -1,4 +1,4 @@
-#include "editor/exportfile.h"
+#include "editor/export/exportfile.h"
 
 #include "core/formats/fileio.h"
 

@@ -1,13 +1,13 @@
-#include "editor/exportactions.h"
+#include "editor/export/exportactions.h"
 
 #include "editor/app/settings.h"
 #include "editor/chart/chartscene.h"
-#include "editor/chartexport.h"
 #include "editor/document.h"
-#include "editor/exportoptionsdialog.h"
+#include "editor/export/chartexport.h"
+#include "editor/export/exportoptionsdialog.h"
+#include "editor/export/specificationexport.h"
 #include "editor/grafcet/grafcetexport.h"
 #include "editor/grafcet/grafcetscene.h"
-#include "editor/specificationexport.h"
 #include "editor/text/diagnostictext.h"
 
 #include "core/formats/fileio.h"

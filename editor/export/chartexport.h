@@ -17,7 +17,7 @@ class ChartScene;
 // when they are shown), on white paper, without the selection highlight.
 // No condition is cut short: one that does not fit its label ends there in a
 // note marker, "[1]", and a "Conditions" list under the chart gives it in
-// full (editor/conditionnotes.h); the picture grows downwards to hold it.
+// full (editor/export/conditionnotes.h); the picture grows downwards to hold it.
 // Each writer returns false with a message for the user when the file
 // cannot be written; a failed write leaves no partial file behind.
 class ChartExport {

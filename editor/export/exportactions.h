@@ -1,6 +1,6 @@
 #pragma once
 
-#include "editor/chartexport.h"
+#include "editor/export/chartexport.h"
 
 #include "core/checks/diagnostic.h"
 #include "core/model/model.h"
@@ -46,7 +46,7 @@ public:
     bool writeStFolder(const QString& folder, core::Dialect dialect, QString* errorMessage) const;
     bool writeStSingleFile(const QString& path, QString* errorMessage) const;
     bool writeGGGenerator(const QString& path, QString* errorMessage) const;
-    // The whole model as one PDF (editor/specificationexport.h).
+    // The whole model as one PDF (editor/export/specificationexport.h).
     bool writeSpecification(const QString& path, QString* errorMessage) const;
     // Export Specification's work after its file dialog: the PDF written
     // with a progress dialog whose Cancel leaves the file as it was, then
