@@ -8,7 +8,7 @@
 #include "editor/commands/undohistorywording.h"
 #include "editor/document.h"
 #include "editor/export/exportoptionsdialog.h"
-#include "editor/secondarytext.h"
+#include "editor/style/secondarytext.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,7 +1,7 @@
 #include "editor/statusindicators.h"
 
 #include "editor/document.h"
-#include "editor/severityicon.h"
+#include "editor/style/severityicon.h"
 #include "editor/text/diagnostictext.h"
 #include "editor/verificationrunner.h"
 

@@ -5,7 +5,7 @@
 #include "editor/app/settings.h"
 #include "editor/app/startupwarmup.h"
 #include "editor/mainwindow.h"
-#include "editor/windowbuttonstyle.h"
+#include "editor/style/windowbuttonstyle.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

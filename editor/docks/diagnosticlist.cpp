@@ -3,7 +3,7 @@
 #include "editor/declarationfix.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
-#include "editor/severityicon.h"
+#include "editor/style/severityicon.h"
 #include "editor/text/diagnostictext.h"
 
 #include <QEvent>

@@ -18,9 +18,9 @@
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/grafcetactionparts.h"
-#include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/stdstring.h"
+#include "editor/style/secondarytext.h"
 #include "editor/text/gemmastatenames.h"
 
 #include "core/model/model.h"

@@ -6,9 +6,9 @@
 #include "editor/docks/transitiondock.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
-#include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/stdstring.h"
+#include "editor/style/secondarytext.h"
 #include "editor/text/diagnostictext.h"
 #include "editor/text/gemmastatenames.h"
 

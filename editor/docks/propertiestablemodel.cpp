@@ -2,7 +2,7 @@
 
 #include "editor/commands/propertycommands.h"
 #include "editor/document.h"
-#include "editor/severityicon.h"
+#include "editor/style/severityicon.h"
 #include "editor/text/displaytext.h"
 #include "editor/text/propertyproblemtext.h"
 

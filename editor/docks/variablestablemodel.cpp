@@ -10,7 +10,7 @@
 #include "editor/stdstring.h"
 #include "editor/text/diagnostictext.h"
 
-#include "editor/secondarytext.h"
+#include "editor/style/secondarytext.h"
 
 #include "core/model/iectypes.h"
 

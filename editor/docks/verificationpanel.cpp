@@ -2,9 +2,9 @@
 
 #include "editor/docks/wrappingitemdelegate.h"
 #include "editor/docks/wrappinglabel.h"
-#include "editor/secondarytext.h"
 #include "editor/selection.h"
-#include "editor/severityicon.h"
+#include "editor/style/secondarytext.h"
+#include "editor/style/severityicon.h"
 #include "editor/text/diagnostictext.h"
 #include "editor/text/displaytext.h"
 #include "editor/text/elementlabels.h"

@@ -2,12 +2,12 @@
 
 #include "editor/chart/chartstyle.h"
 #include "editor/document.h"
-#include "editor/secondarytext.h"
 #include "editor/simulation/lampindicator.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
 #include "editor/simulation/valuecolours.h"
+#include "editor/style/secondarytext.h"
 #include "editor/text/elementlabels.h"
 #include "editor/text/gemmastatenames.h"
 

@@ -31,8 +31,8 @@
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/style/windowbuttonstyle.h"
 #include "editor/verificationrunner.h"
-#include "editor/windowbuttonstyle.h"
 
 #include <QAction>
 #include <QApplication>

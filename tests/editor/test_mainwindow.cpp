@@ -32,7 +32,7 @@
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/statusindicators.h"
-#include "editor/windowbuttonstyle.h"
+#include "editor/style/windowbuttonstyle.h"
 
 #include "core/formats/modelfiles.h"
 

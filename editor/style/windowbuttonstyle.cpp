@@ -1,6 +1,6 @@
-#include "editor/windowbuttonstyle.h"
+#include "editor/style/windowbuttonstyle.h"
 
-#include "editor/drawniconengine.h"
+#include "editor/style/drawniconengine.h"
 
 #include <QApplication>
 #include <QPainter>

@@ -1,4 +1,4 @@
-#include "editor/secondarytext.h"
+#include "editor/style/secondarytext.h"
 
 #include <QWidget>
 

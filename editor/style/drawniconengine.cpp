@@ -1,4 +1,4 @@
-#include "editor/drawniconengine.h"
+#include "editor/style/drawniconengine.h"
 
 #include <QPainter>
 #include <QPixmap>

@@ -1,6 +1,6 @@
-#include "editor/severityicon.h"
+#include "editor/style/severityicon.h"
 
-#include "editor/drawniconengine.h"
+#include "editor/style/drawniconengine.h"
 
 #include <QPainter>
 #include <QPainterPath>
