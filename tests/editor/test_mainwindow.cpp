@@ -27,12 +27,12 @@
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/mainwindow.h"
-#include "editor/modelsettingsdialog.h"
 #include "editor/selection.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
-#include "editor/statusindicators.h"
 #include "editor/style/windowbuttonstyle.h"
+#include "editor/window/modelsettingsdialog.h"
+#include "editor/window/statusindicators.h"
 
 #include "core/formats/modelfiles.h"
 

@@ -19,9 +19,9 @@
 #include "editor/simulation/simulationtext.h"
 #include "editor/simulation/tracetablemodel.h"
 #include "editor/simulation/valuecolours.h"
-#include "editor/statusindicators.h"
 #include "editor/style/secondarytext.h"
 #include "editor/text/elementlabels.h"
+#include "editor/window/statusindicators.h"
 
 #include "core/condition/conditionevaluator.h"
 #include "core/formats/modelfiles.h"

@@ -26,12 +26,12 @@
 #include "editor/selection.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
-#include "editor/statusindicators.h"
 #include "editor/style/secondarytext.h"
 #include "editor/text/diagnostictext.h"
 #include "editor/text/displaytext.h"
 #include "editor/text/elementlabels.h"
 #include "editor/verificationrunner.h"
+#include "editor/window/statusindicators.h"
 
 #include "core/formats/modelfiles.h"
 

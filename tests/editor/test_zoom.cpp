@@ -9,7 +9,7 @@
 #include "editor/chart/chartview.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/mainwindow.h"
-#include "editor/statusindicators.h"
+#include "editor/window/statusindicators.h"
 
 #include <QAction>
 #include <QGestureEvent>

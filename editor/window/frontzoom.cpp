@@ -1,8 +1,8 @@
-#include "editor/frontzoom.h"
+#include "editor/window/frontzoom.h"
 
 #include "editor/chart/chartview.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/statusindicators.h"
+#include "editor/window/statusindicators.h"
 
 #include <QTabWidget>
 

@@ -1,4 +1,4 @@
-#include "editor/statusindicators.h"
+#include "editor/window/statusindicators.h"
 
 #include "editor/document.h"
 #include "editor/style/severityicon.h"

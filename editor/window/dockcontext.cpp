@@ -1,4 +1,4 @@
-#include "editor/dockcontext.h"
+#include "editor/window/dockcontext.h"
 
 #include <QDockWidget>
 #include <QEvent>

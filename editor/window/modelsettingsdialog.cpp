@@ -1,4 +1,4 @@
-#include "editor/modelsettingsdialog.h"
+#include "editor/window/modelsettingsdialog.h"
 
 #include "editor/app/settings.h"
 #include "editor/commands/setcycletimecommand.h"
