@@ -1,9 +1,9 @@
 #include "editor/chart/chartview.h"
 
 #include "editor/chart/chartscene.h"
-#include "editor/pinchzoom.h"
+#include "editor/chart/pinchzoom.h"
+#include "editor/chart/viewzoom.h"
 #include "editor/selection.h"
-#include "editor/viewzoom.h"
 
 #include <QContextMenuEvent>
 #include <QGraphicsItem>

@@ -1,6 +1,6 @@
 #include "editor/docks/diagnosticlist.h"
 
-#include "editor/declarationfix.h"
+#include "editor/docks/declarationfix.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/style/severityicon.h"

@@ -2,8 +2,8 @@
 
 #include "editor/chart/chartstyle.h"
 #include "editor/commands/setgrafcetactioncommand.h"
+#include "editor/docks/grafcetactionparts.h"
 #include "editor/document.h"
-#include "editor/grafcetactionparts.h"
 #include "editor/text/conditionerrortext.h"
 #include "editor/text/diagnostictext.h"
 

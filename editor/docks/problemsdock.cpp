@@ -1,6 +1,6 @@
 #include "editor/docks/problemsdock.h"
 
-#include "editor/declarationfix.h"
+#include "editor/docks/declarationfix.h"
 #include "editor/docks/propertiespanel.h"
 #include "editor/docks/verificationpanel.h"
 #include "editor/docks/wrappingitemdelegate.h"

@@ -12,6 +12,7 @@
 #include "editor/chart/chartstyle.h"
 #include "editor/commands/addgrafcetactioncommand.h"
 #include "editor/docks/conditionedit.h"
+#include "editor/docks/grafcetactionparts.h"
 #include "editor/docks/grafcetactionsmodel.h"
 #include "editor/docks/grafcetstepdock.h"
 #include "editor/docks/grafcettransitiondock.h"
@@ -23,7 +24,6 @@
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/grafcetactionparts.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 

@@ -1,4 +1,4 @@
-#include "editor/grafcetactionparts.h"
+#include "editor/docks/grafcetactionparts.h"
 
 #include <QRegularExpression>
 

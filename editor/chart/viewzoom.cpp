@@ -1,4 +1,4 @@
-#include "editor/viewzoom.h"
+#include "editor/chart/viewzoom.h"
 
 #include <QGraphicsView>
 #include <QScrollBar>

@@ -1,4 +1,4 @@
-#include "editor/declarationfix.h"
+#include "editor/docks/declarationfix.h"
 
 #include "editor/commands/addvariablecommand.h"
 #include "editor/document.h"

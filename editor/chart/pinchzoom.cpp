@@ -1,4 +1,4 @@
-#include "editor/pinchzoom.h"
+#include "editor/chart/pinchzoom.h"
 
 #include <QGestureEvent>
 #include <QNativeGestureEvent>
