@@ -3,7 +3,7 @@
 #include "editor/commands/setreceptivitycommand.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/diagnosticlist.h"
-#include "editor/docks/transitiondock.h"
+#include "editor/docks/gemma/transitiondock.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
 #include "editor/selection.h"

@@ -1,8 +1,8 @@
 #include "editor/export/chartexport.h"
 
-#include "editor/chart/chartscene.h"
-#include "editor/chart/frameitem.h"
-#include "editor/chart/transitionitem.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/frameitem.h"
+#include "editor/chart/gemma/transitionitem.h"
 #include "editor/export/conditionnotes.h"
 #include "editor/export/exportfile.h"
 #include "editor/export/hiddenselection.h"

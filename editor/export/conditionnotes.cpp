@@ -1,8 +1,8 @@
 #include "editor/export/conditionnotes.h"
 
-#include "editor/chart/chartscene.h"
 #include "editor/chart/chartstyle.h"
-#include "editor/chart/transitionitem.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/transitionitem.h"
 #include "editor/text/elementlabels.h"
 
 #include <QFontMetricsF>

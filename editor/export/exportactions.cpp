@@ -1,7 +1,7 @@
 #include "editor/export/exportactions.h"
 
 #include "editor/app/settings.h"
-#include "editor/chart/chartscene.h"
+#include "editor/chart/gemma/chartscene.h"
 #include "editor/document.h"
 #include "editor/export/chartexport.h"
 #include "editor/export/exportoptionsdialog.h"

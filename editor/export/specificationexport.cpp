@@ -1,6 +1,6 @@
 #include "editor/export/specificationexport.h"
 
-#include "editor/chart/chartscene.h"
+#include "editor/chart/gemma/chartscene.h"
 #include "editor/docks/variablestablemodel.h"
 #include "editor/document.h"
 #include "editor/export/chartexport.h"

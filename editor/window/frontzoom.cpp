@@ -1,6 +1,6 @@
 #include "editor/window/frontzoom.h"
 
-#include "editor/chart/chartview.h"
+#include "editor/chart/gemma/chartview.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/window/statusindicators.h"
 

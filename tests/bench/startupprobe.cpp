@@ -27,8 +27,8 @@
 
 #include "editor/app/application.h"
 #include "editor/app/startupwarmup.h"
-#include "editor/chart/chartscene.h"
-#include "editor/chart/chartview.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/chartview.h"
 #include "editor/document.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"

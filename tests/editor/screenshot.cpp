@@ -25,8 +25,8 @@
 // --problems-tab shows that tab of the Problems dock (0 checks, 1 verification, 2 properties).
 
 #include "editor/app/languages.h"
-#include "editor/chart/chartscene.h"
-#include "editor/chart/chartview.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/chartview.h"
 #include "editor/export/chartexport.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"

@@ -3,12 +3,12 @@
 
 #include "editortestsupport.h"
 
-#include "editor/chart/chartscene.h"
 #include "editor/chart/chartstyle.h"
-#include "editor/chart/chartview.h"
-#include "editor/chart/frameitem.h"
-#include "editor/chart/stepitem.h"
-#include "editor/chart/transitionitem.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/chartview.h"
+#include "editor/chart/gemma/frameitem.h"
+#include "editor/chart/gemma/stepitem.h"
+#include "editor/chart/gemma/transitionitem.h"
 #include "editor/commands/addvariablecommand.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setnegatedcommand.h"

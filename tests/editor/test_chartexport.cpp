@@ -3,8 +3,8 @@
 // the Conditions list, and the files written. A nested GRAFCET exports too,
 // over as many pages as it needs.
 
-#include "editor/chart/chartscene.h"
-#include "editor/chart/transitionitem.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/transitionitem.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/document.h"

@@ -5,7 +5,7 @@
 #include "editortestsupport.h"
 
 #include "editor/app/languages.h"
-#include "editor/chart/chartcontextmenu.h"
+#include "editor/chart/gemma/chartcontextmenu.h"
 #include "editor/commands/editgrafcetcommand.h"
 #include "editor/commands/undohistorywording.h"
 #include "editor/document.h"

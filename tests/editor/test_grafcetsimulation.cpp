@@ -8,10 +8,10 @@
 #include "editortestsupport.h"
 
 #include "editor/app/languages.h"
-#include "editor/chart/chartscene.h"
 #include "editor/chart/chartstyle.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/stepitem.h"
 #include "editor/chart/layoutconversion.h"
-#include "editor/chart/stepitem.h"
 #include "editor/document.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetstepitem.h"

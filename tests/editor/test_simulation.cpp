@@ -8,9 +8,9 @@
 #include "editortestsupport.h"
 
 #include "editor/app/languages.h"
-#include "editor/chart/chartscene.h"
-#include "editor/chart/stepitem.h"
-#include "editor/chart/transitionitem.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/stepitem.h"
+#include "editor/chart/gemma/transitionitem.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/document.h"
 #include "editor/mainwindow.h"

@@ -6,7 +6,7 @@
 #include "editortestsupport.h"
 
 #include "editor/app/languages.h"
-#include "editor/chart/chartview.h"
+#include "editor/chart/gemma/chartview.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/mainwindow.h"
 #include "editor/window/statusindicators.h"

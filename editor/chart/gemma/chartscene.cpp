@@ -1,11 +1,11 @@
-#include "editor/chart/chartscene.h"
+#include "editor/chart/gemma/chartscene.h"
 
 #include "core/layout/chartlayout.h"
 #include "editor/chart/chartstyle.h"
-#include "editor/chart/frameitem.h"
+#include "editor/chart/gemma/frameitem.h"
+#include "editor/chart/gemma/stepitem.h"
+#include "editor/chart/gemma/transitionitem.h"
 #include "editor/chart/layoutconversion.h"
-#include "editor/chart/stepitem.h"
-#include "editor/chart/transitionitem.h"
 #include "editor/document.h"
 #include "editor/selection.h"
 

@@ -1,4 +1,4 @@
-#include "editor/docks/stepdock.h"
+#include "editor/docks/gemma/stepdock.h"
 
 #include "editor/commands/initialsteprule.h"
 #include "editor/commands/setinitialstepcommand.h"
@@ -6,7 +6,7 @@
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/commands/setsteptypecommand.h"
 #include "editor/docks/diagnosticlist.h"
-#include "editor/docks/startguide.h"
+#include "editor/docks/gemma/startguide.h"
 #include "editor/docks/undoshortcutfilter.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"

@@ -1,6 +1,6 @@
-#include "editor/chart/chartview.h"
+#include "editor/chart/gemma/chartview.h"
 
-#include "editor/chart/chartscene.h"
+#include "editor/chart/gemma/chartscene.h"
 #include "editor/chart/pinchzoom.h"
 #include "editor/chart/viewzoom.h"
 #include "editor/selection.h"

@@ -1,4 +1,4 @@
-#include "editor/chart/frameitem.h"
+#include "editor/chart/gemma/frameitem.h"
 
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/layoutconversion.h"

@@ -1,4 +1,4 @@
-#include "editor/chart/transitionitem.h"
+#include "editor/chart/gemma/transitionitem.h"
 
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/layoutconversion.h"

@@ -1,4 +1,4 @@
-#include "editor/docks/transitiondock.h"
+#include "editor/docks/gemma/transitiondock.h"
 
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setnegatedcommand.h"

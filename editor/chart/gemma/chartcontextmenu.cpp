@@ -1,4 +1,4 @@
-#include "editor/chart/chartcontextmenu.h"
+#include "editor/chart/gemma/chartcontextmenu.h"
 
 #include "editor/commands/initialsteprule.h"
 #include "editor/commands/setelementshiddencommand.h"

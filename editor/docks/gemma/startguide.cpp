@@ -1,4 +1,4 @@
-#include "editor/docks/startguide.h"
+#include "editor/docks/gemma/startguide.h"
 
 #include "editor/docks/wrappinglabel.h"
 

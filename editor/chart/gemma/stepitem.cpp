@@ -1,4 +1,4 @@
-#include "editor/chart/stepitem.h"
+#include "editor/chart/gemma/stepitem.h"
 
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/pixelsnap.h"
