@@ -1,7 +1,7 @@
 #pragma once
 
+#include "editor/app/userguide.h"
 #include "editor/elementref.h"
-#include "editor/userguide.h"
 
 #include "core/model/model.h"
 

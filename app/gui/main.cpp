@@ -1,6 +1,6 @@
 // GG Studio: the GEMMA-GRAFCET editor. Usage: ggstudio [MODEL]
 
-#include "editor/application.h"
+#include "editor/app/application.h"
 
 int main(int argc, char* argv[])
 {

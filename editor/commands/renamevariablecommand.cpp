@@ -1,7 +1,7 @@
 #include "editor/commands/renamevariablecommand.h"
 
 #include "editor/commands/commandids.h"
-#include "editor/diagnostictext.h"
+#include "editor/text/diagnostictext.h"
 
 #include "core/model/model.h"
 

@@ -1,7 +1,7 @@
 #include "editor/commands/setnegatedcommand.h"
 
 #include "editor/commands/commandids.h"
-#include "editor/docks/elementlabels.h"
+#include "editor/text/elementlabels.h"
 
 #include "core/model/model.h"
 

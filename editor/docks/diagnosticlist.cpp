@@ -1,10 +1,10 @@
 #include "editor/docks/diagnosticlist.h"
 
-#include "editor/declarationfix.h"
-#include "editor/diagnostictext.h"
-#include "editor/document.h"
+#include "editor/docks/declarationfix.h"
 #include "editor/docks/wrappinglabel.h"
-#include "editor/severityicon.h"
+#include "editor/document.h"
+#include "editor/style/severityicon.h"
+#include "editor/text/diagnostictext.h"
 
 #include <QEvent>
 #include <QHBoxLayout>

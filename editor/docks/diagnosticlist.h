@@ -22,7 +22,7 @@ public:
     explicit DiagnosticList(QWidget* parent = nullptr);
 
     // Given the document, a problem with a quick fix (an undeclared name:
-    // editor/declarationfix.h) gets a button under its message that applies it.
+    // editor/docks/declarationfix.h) gets a button under its message that applies it.
     void setDocument(Document* document) { m_document = document; }
     void setDiagnostics(const std::vector<core::Diagnostic>& diagnostics);
     int count() const { return static_cast<int>(m_diagnostics.size()); }

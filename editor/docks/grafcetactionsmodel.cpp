@@ -1,11 +1,11 @@
 #include "editor/docks/grafcetactionsmodel.h"
 
-#include "editor/commands/setgrafcetactioncommand.h"
 #include "editor/chart/chartstyle.h"
-#include "editor/conditionerrortext.h"
-#include "editor/diagnostictext.h"
+#include "editor/commands/setgrafcetactioncommand.h"
+#include "editor/docks/grafcetactionparts.h"
 #include "editor/document.h"
-#include "editor/grafcetactionparts.h"
+#include "editor/text/conditionerrortext.h"
+#include "editor/text/diagnostictext.h"
 
 #include "core/condition/actionparser.h"
 #include "core/model/model.h"

@@ -2,7 +2,7 @@
 
 #include "core/model/grafcet.h"
 
-#include "editor/grafcetactionparts.h"
+#include "editor/docks/grafcetactionparts.h"
 
 #include <QAbstractTableModel>
 #include <QString>

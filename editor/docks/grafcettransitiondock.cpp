@@ -1,16 +1,16 @@
 #include "editor/docks/grafcettransitiondock.h"
 
 #include "editor/commands/setreceptivitycommand.h"
-#include "editor/diagnostictext.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/diagnosticlist.h"
-#include "editor/docks/transitiondock.h"
+#include "editor/docks/gemma/transitiondock.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
-#include "editor/secondarytext.h"
 #include "editor/selection.h"
-#include "editor/statenames.h"
 #include "editor/stdstring.h"
+#include "editor/style/secondarytext.h"
+#include "editor/text/diagnostictext.h"
+#include "editor/text/gemmastatenames.h"
 
 #include "core/model/model.h"
 

@@ -1,15 +1,15 @@
 #include "editor/docks/problemsdock.h"
 
-#include "editor/declarationfix.h"
-#include "editor/diagnostictext.h"
-#include "editor/docks/elementlabels.h"
+#include "editor/docks/declarationfix.h"
 #include "editor/docks/propertiespanel.h"
 #include "editor/docks/verificationpanel.h"
 #include "editor/docks/wrappingitemdelegate.h"
 #include "editor/document.h"
 #include "editor/selection.h"
-#include "editor/severityicon.h"
 #include "editor/stdstring.h"
+#include "editor/style/severityicon.h"
+#include "editor/text/diagnostictext.h"
+#include "editor/text/elementlabels.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>

@@ -4,10 +4,10 @@
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/propertiestablemodel.h"
 #include "editor/docks/toolicons.h"
-#include "editor/displaytext.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
-#include "editor/propertyproblemtext.h"
+#include "editor/text/displaytext.h"
+#include "editor/text/propertyproblemtext.h"
 
 #include "core/model/model.h"
 

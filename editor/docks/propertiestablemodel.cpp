@@ -1,10 +1,10 @@
 #include "editor/docks/propertiestablemodel.h"
 
 #include "editor/commands/propertycommands.h"
-#include "editor/displaytext.h"
 #include "editor/document.h"
-#include "editor/propertyproblemtext.h"
-#include "editor/severityicon.h"
+#include "editor/style/severityicon.h"
+#include "editor/text/displaytext.h"
+#include "editor/text/propertyproblemtext.h"
 
 #include "core/model/model.h"
 

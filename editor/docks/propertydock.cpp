@@ -3,8 +3,8 @@
 #include "editor/docks/dockreveal.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/document.h"
-#include "editor/secondarytext.h"
 #include "editor/selection.h"
+#include "editor/style/secondarytext.h"
 
 #include "core/model/model.h"
 

@@ -3,9 +3,9 @@
 #include "editor/commands/setdialectcommand.h"
 #include "editor/docks/sthighlighter.h"
 #include "editor/document.h"
-#include "editor/secondarytext.h"
 #include "editor/selection.h"
 #include "editor/stdstring.h"
+#include "editor/style/secondarytext.h"
 
 #include "core/codegen/nestedpreview.h"
 #include "core/model/model.h"

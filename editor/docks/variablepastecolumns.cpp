@@ -1,6 +1,6 @@
 #include "editor/docks/variablepastecolumns.h"
 
-#include "editor/languages.h"
+#include "editor/app/languages.h"
 
 #include <QTranslator>
 

@@ -11,8 +11,8 @@
 #include "editor/docks/variablestablemodel.h"
 #include "editor/document.h"
 #include "editor/selection.h"
-#include "editor/severityicon.h"
 #include "editor/stdstring.h"
+#include "editor/style/severityicon.h"
 
 #include "core/model/iectypes.h"
 #include "core/model/model.h"

@@ -5,12 +5,12 @@
 #include "editor/commands/setvariabledefaultcommand.h"
 #include "editor/commands/setvariablekindcommand.h"
 #include "editor/commands/setvariabletypecommand.h"
-#include "editor/diagnostictext.h"
 #include "editor/docks/variablepastecolumns.h"
 #include "editor/document.h"
 #include "editor/stdstring.h"
+#include "editor/text/diagnostictext.h"
 
-#include "editor/secondarytext.h"
+#include "editor/style/secondarytext.h"
 
 #include "core/model/iectypes.h"
 

@@ -1,14 +1,14 @@
 #include "editor/docks/verificationpanel.h"
 
-#include "editor/diagnostictext.h"
-#include "editor/displaytext.h"
-#include "editor/docks/elementlabels.h"
 #include "editor/docks/wrappingitemdelegate.h"
 #include "editor/docks/wrappinglabel.h"
-#include "editor/secondarytext.h"
 #include "editor/selection.h"
-#include "editor/severityicon.h"
-#include "editor/statenames.h"
+#include "editor/style/secondarytext.h"
+#include "editor/style/severityicon.h"
+#include "editor/text/diagnostictext.h"
+#include "editor/text/displaytext.h"
+#include "editor/text/elementlabels.h"
+#include "editor/text/gemmastatenames.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>

@@ -1,11 +1,11 @@
 #include "editor/grafcet/grafcetexport.h"
 
 #include "editor/chart/chartstyle.h"
-#include "editor/exportfile.h"
+#include "editor/export/exportfile.h"
+#include "editor/export/hiddenselection.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
-#include "editor/hiddenselection.h"
 
 #include <QPagedPaintDevice>
 #include <QPainter>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "editor/chartexport.h"
+#include "editor/export/chartexport.h"
 
 #include <QCoreApplication>
 #include <QList>

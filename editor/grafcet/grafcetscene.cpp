@@ -1,11 +1,11 @@
 #include "editor/grafcet/grafcetscene.h"
 
 #include "editor/chart/chartstyle.h"
-#include "editor/diagnostictext.h"
 #include "editor/document.h"
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetwiringitem.h"
+#include "editor/text/diagnostictext.h"
 
 #include "core/model/model.h"
 

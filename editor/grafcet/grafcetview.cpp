@@ -1,8 +1,8 @@
 #include "editor/grafcet/grafcetview.h"
 
+#include "editor/chart/pinchzoom.h"
+#include "editor/chart/viewzoom.h"
 #include "editor/grafcet/grafcetscene.h"
-#include "editor/pinchzoom.h"
-#include "editor/viewzoom.h"
 
 #include <QMouseEvent>
 #include <QScrollBar>

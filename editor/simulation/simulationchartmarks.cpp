@@ -1,6 +1,6 @@
 #include "editor/simulation/simulationchartmarks.h"
 
-#include "editor/chart/chartscene.h"
+#include "editor/chart/gemma/chartscene.h"
 #include "editor/simulation/grafcetsimulationmarks.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/simulation/simulationtext.h"

@@ -1,9 +1,9 @@
 #include "editor/simulation/simulationtext.h"
 
-#include "editor/diagnostictext.h"
-#include "editor/docks/elementlabels.h"
 #include "editor/stdstring.h"
-#include "editor/valueproblemtext.h"
+#include "editor/text/diagnostictext.h"
+#include "editor/text/elementlabels.h"
+#include "editor/text/valueproblemtext.h"
 
 #include "core/checks/diagnostic.h"
 #include "core/simulation/scenario.h"

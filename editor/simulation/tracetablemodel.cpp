@@ -1,7 +1,7 @@
 #include "editor/simulation/tracetablemodel.h"
 
-#include "editor/docks/elementlabels.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/text/elementlabels.h"
 
 #include "core/condition/conditionevaluator.h"
 

@@ -13,7 +13,7 @@
 //   chart     for reference: the bare window with GG Studio's chart of the
 //             template instead of the empty view (no docks, menus or
 //             status bar) and GG Studio's start-up warm-up thread
-//             (editor/startupwarmup.h), the least any start showing this
+//             (editor/app/startupwarmup.h), the least any start showing this
 //             chart costs.
 //
 // The time runs from the first statement of main() until the window's first
@@ -25,13 +25,13 @@
 // executable: loading it and its libraries costs them the same. The
 // editor_benchmarks case "cold start" runs both modes alternately.
 
-#include "editor/application.h"
-#include "editor/chart/chartscene.h"
-#include "editor/chart/chartview.h"
+#include "editor/app/application.h"
+#include "editor/app/startupwarmup.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/chartview.h"
 #include "editor/document.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
-#include "editor/startupwarmup.h"
 
 #include <QApplication>
 #include <QEvent>

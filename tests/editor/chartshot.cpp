@@ -9,10 +9,10 @@
 // shows a model file. --export writes OUT through the chart export instead
 // (SVG, PNG or PDF after its extension; WIDTH and HEIGHT do not apply).
 
-#include "editor/chart/chartscene.h"
-#include "editor/chart/chartview.h"
-#include "editor/chartexport.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/chartview.h"
 #include "editor/document.h"
+#include "editor/export/chartexport.h"
 #include "editor/selection.h"
 
 #include "modelfactory.h"

@@ -10,10 +10,10 @@
 // (QT_QPA_PLATFORM=offscreen).
 
 #include "editor/commands/setconditioncommand.h"
+#include "editor/docks/gemma/stepdock.h"
+#include "editor/docks/gemma/transitiondock.h"
 #include "editor/docks/problemsdock.h"
-#include "editor/docks/stepdock.h"
 #include "editor/docks/stpreviewdock.h"
-#include "editor/docks/transitiondock.h"
 #include "editor/docks/variablesdock.h"
 #include "editor/document.h"
 #include "editor/selection.h"

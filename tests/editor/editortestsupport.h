@@ -3,7 +3,7 @@
 // What the editor's window tests share: settings kept away from the user's,
 // a shown main window, counting chart items.
 
-#include "editor/languages.h"
+#include "editor/app/languages.h"
 #include "editor/mainwindow.h"
 
 #include <QCoreApplication>

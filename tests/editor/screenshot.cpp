@@ -24,15 +24,15 @@
 // --verify runs Simulation > Verify and waits for its findings.
 // --problems-tab shows that tab of the Problems dock (0 checks, 1 verification, 2 properties).
 
-#include "editor/chart/chartscene.h"
-#include "editor/chart/chartview.h"
-#include "editor/chartexport.h"
-#include "editor/languages.h"
+#include "editor/app/languages.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/chartview.h"
+#include "editor/export/chartexport.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 #include "editor/simulation/simulationsession.h"
+#include "editor/style/windowbuttonstyle.h"
 #include "editor/verificationrunner.h"
-#include "editor/windowbuttonstyle.h"
 
 #include <QAction>
 #include <QApplication>

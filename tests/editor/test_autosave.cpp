@@ -1,10 +1,10 @@
 // Autosave and recovery, in QStandardPaths' test locations.
 
-#include "editor/autosave.h"
+#include "editor/app/autosave.h"
+#include "editor/app/recoveryprompt.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/document.h"
-#include "editor/recoveryprompt.h"
 
 #include "core/formats/modelfiles.h"
 

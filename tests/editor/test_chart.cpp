@@ -3,12 +3,12 @@
 
 #include "editortestsupport.h"
 
-#include "editor/chart/chartscene.h"
 #include "editor/chart/chartstyle.h"
-#include "editor/chart/chartview.h"
-#include "editor/chart/frameitem.h"
-#include "editor/chart/stepitem.h"
-#include "editor/chart/transitionitem.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/chartview.h"
+#include "editor/chart/gemma/frameitem.h"
+#include "editor/chart/gemma/stepitem.h"
+#include "editor/chart/gemma/transitionitem.h"
 #include "editor/commands/addvariablecommand.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setnegatedcommand.h"
@@ -16,7 +16,7 @@
 #include "editor/commands/setsteptypecommand.h"
 #include "editor/document.h"
 #include "editor/selection.h"
-#include "editor/statenames.h"
+#include "editor/text/gemmastatenames.h"
 
 #include "core/layout/chartlayout.h"
 #include "core/templates/gemma/gemmatemplate.h"

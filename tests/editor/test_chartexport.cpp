@@ -3,13 +3,13 @@
 // the Conditions list, and the files written. A nested GRAFCET exports too,
 // over as many pages as it needs.
 
-#include "editor/chart/chartscene.h"
-#include "editor/chart/transitionitem.h"
-#include "editor/chartexport.h"
+#include "editor/chart/gemma/chartscene.h"
+#include "editor/chart/gemma/transitionitem.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setstephiddencommand.h"
-#include "editor/conditionnotes.h"
 #include "editor/document.h"
+#include "editor/export/chartexport.h"
+#include "editor/export/conditionnotes.h"
 #include "editor/grafcet/grafcetexport.h"
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/selection.h"

@@ -7,8 +7,8 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/document.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 

@@ -4,6 +4,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/document.h"
 #include "editor/grafcet/grafcetactions.h"
 #include "editor/grafcet/grafcetclipboard.h"
@@ -11,7 +12,6 @@
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 
 #include "core/formats/modelfiles.h"

@@ -8,9 +8,11 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/chart/chartstyle.h"
 #include "editor/commands/addgrafcetactioncommand.h"
 #include "editor/docks/conditionedit.h"
+#include "editor/docks/grafcetactionparts.h"
 #include "editor/docks/grafcetactionsmodel.h"
 #include "editor/docks/grafcetstepdock.h"
 #include "editor/docks/grafcettransitiondock.h"
@@ -22,8 +24,6 @@
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/grafcetactionparts.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 

@@ -4,7 +4,8 @@
 
 #include "editortestsupport.h"
 
-#include "editor/chart/chartcontextmenu.h"
+#include "editor/app/languages.h"
+#include "editor/chart/gemma/chartcontextmenu.h"
 #include "editor/commands/editgrafcetcommand.h"
 #include "editor/commands/undohistorywording.h"
 #include "editor/document.h"
@@ -17,7 +18,6 @@
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/grafcet/nestedgrafcetavailable.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 
 #include "core/formats/modelfiles.h"

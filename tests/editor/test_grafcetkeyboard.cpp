@@ -7,6 +7,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/docks/conditionedit.h"
 #include "editor/docks/grafcetactionsmodel.h"
 #include "editor/docks/grafcetstepdock.h"
@@ -18,7 +19,6 @@
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 

@@ -8,9 +8,9 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/document.h"
-#include "editor/exportactions.h"
-#include "editor/languages.h"
+#include "editor/export/exportactions.h"
 #include "editor/mainwindow.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/verificationrunner.h"

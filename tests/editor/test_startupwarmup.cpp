@@ -1,8 +1,8 @@
-// The start-up's second thread (editor/startupwarmup.h): the main thread
+// The start-up's second thread (editor/app/startupwarmup.h): the main thread
 // waits for fontconfig only, and finishing never waits for a step that will
 // not come (a start that exits after reading its command line).
 
-#include "editor/startupwarmup.h"
+#include "editor/app/startupwarmup.h"
 
 #include <QDBusConnection>
 #include <QFontDatabase>

@@ -6,6 +6,7 @@
 
 #include "editortestsupport.h"
 
+#include "editor/app/languages.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setprioritycommand.h"
 #include "editor/docks/grafcetstepdock.h"
@@ -15,7 +16,6 @@
 #include "editor/document.h"
 #include "editor/grafcet/grafcetactions.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 

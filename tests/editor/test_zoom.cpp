@@ -5,11 +5,11 @@
 
 #include "editortestsupport.h"
 
-#include "editor/chart/chartview.h"
+#include "editor/app/languages.h"
+#include "editor/chart/gemma/chartview.h"
 #include "editor/grafcet/grafcetview.h"
-#include "editor/languages.h"
 #include "editor/mainwindow.h"
-#include "editor/statusindicators.h"
+#include "editor/window/statusindicators.h"
 
 #include <QAction>
 #include <QGestureEvent>
