@@ -1,5 +1,7 @@
 #include "grafcetlayoutchecks.h"
 
+#include "routegeometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -12,13 +14,9 @@ using namespace core;
 
 namespace {
 
-struct Segment {
-    Point a;
-    Point b;
-    std::string owner; // "link T3->5", "line ..."
-
-    bool vertical() const { return a.x == b.x; }
-};
+using routegeometry::crosses;
+using routegeometry::Segment;
+using routegeometry::segmentEnters;
 
 std::string describe(Point p)
 {
@@ -35,31 +33,6 @@ std::string describe(const Rect& r)
 }
 
 bool empty(const Rect& r) { return r.width == 0 && r.height == 0; }
-
-// Does an axis-aligned segment touch the interior of the rectangle?
-bool segmentEnters(const Segment& s, const Rect& r)
-{
-    const double xMin = std::min(s.a.x, s.b.x);
-    const double xMax = std::max(s.a.x, s.b.x);
-    const double yMin = std::min(s.a.y, s.b.y);
-    const double yMax = std::max(s.a.y, s.b.y);
-    if (s.vertical())
-        return xMin > r.left() && xMin < r.right() && yMin < r.bottom() && yMax > r.top();
-    return yMin > r.top() && yMin < r.bottom() && xMin < r.right() && xMax > r.left();
-}
-
-// Proper crossing of a horizontal and a vertical segment (not at an end).
-bool crosses(const Segment& s, const Segment& t)
-{
-    if (s.vertical() == t.vertical())
-        return false;
-    const Segment& v = s.vertical() ? s : t;
-    const Segment& h = s.vertical() ? t : s;
-    const auto inside = [](double value, double p, double q) {
-        return value > std::min(p, q) && value < std::max(p, q);
-    };
-    return inside(v.a.x, h.a.x, h.b.x) && inside(h.a.y, v.a.y, v.b.y);
-}
 
 Point bottomMiddle(const Rect& r) { return {r.center().x, r.bottom()}; }
 Point topMiddle(const Rect& r) { return {r.center().x, r.top()}; }

@@ -19,6 +19,7 @@ using core::Rect;
 struct Segment {
     Point a;
     Point b;
+    std::string owner = {}; // what it belongs to, for messages ("link T3->5")
 
     bool vertical() const { return a.x == b.x; }
     bool horizontal() const { return a.y == b.y; }

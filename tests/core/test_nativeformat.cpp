@@ -1,4 +1,5 @@
 #include "filetestsupport.h"
+#include "nativeloadchecks.h"
 
 #include "core/formats/nativeformat.h"
 
@@ -14,21 +15,8 @@ namespace {
 
 const std::string kHeader = "{\"format\": \"ggstudio-model\", \"version\": \"1.0\"";
 
-std::unique_ptr<Model> loadOk(const std::string& text)
-{
-    auto result = loadNativeJson(text, "test.json");
-    if (const auto* error = std::get_if<LoadError>(&result))
-        FAIL("unexpected load error: " << error->toString());
-    return std::move(std::get<std::unique_ptr<Model>>(result));
-}
-
-LoadError loadError(const std::string& text)
-{
-    auto result = loadNativeJson(text, "test.json");
-    if (std::holds_alternative<std::unique_ptr<Model>>(result))
-        FAIL("the file was accepted: " << text);
-    return std::get<LoadError>(result);
-}
+using filetests::loadError;
+using filetests::loadOk;
 
 // A minimal file with the given members after the header.
 std::string nativeFile(const std::string& members)

@@ -1,4 +1,5 @@
 #include "filetestsupport.h"
+#include "nativeloadchecks.h"
 
 #include "core/formats/modelfiles.h"
 #include "core/formats/nativeformat.h"
@@ -21,21 +22,8 @@ namespace {
 
 const std::filesystem::path kFillerFile = std::filesystem::path(GGSTUDIO_TEST_DATA_DIR) / "packml-filler.json";
 
-std::unique_ptr<Model> loadOk(const std::string& text)
-{
-    auto result = loadNativeJson(text, "test.json");
-    if (const auto* error = std::get_if<LoadError>(&result))
-        FAIL("unexpected load error: " << error->toString());
-    return std::move(std::get<std::unique_ptr<Model>>(result));
-}
-
-LoadError loadError(const std::string& text)
-{
-    auto result = loadNativeJson(text, "test.json");
-    if (std::holds_alternative<std::unique_ptr<Model>>(result))
-        FAIL("the file was accepted: " << text);
-    return std::get<LoadError>(result);
-}
+using filetests::loadError;
+using filetests::loadOk;
 
 const std::string kHeader = R"({"format": "ggstudio-model", "version": "3.0", "template": "packml")";
 
