@@ -9,6 +9,8 @@
 #include "editor/selection.h"
 
 #include "core/formats/gggeneratorformat.h"
+#include "core/formats/modelfiles.h"
+#include "core/templates/packml/packmlmodel.h"
 
 #include <QFile>
 #include <QSignalSpy>
@@ -281,6 +283,13 @@ void TestDocument::failedLoadKeepsModelAndHistory()
     QVERIFY(!document.load(directory.filePath("missing.ggs.json"), &error));
     QVERIFY2(error.contains("missing.ggs.json"), qPrintable(error));
     QVERIFY(!document.load(broken, nullptr));
+    // A PackML model is read by core but not edited yet: refused, said why.
+    const QString packml = directory.filePath("filler.ggs.json");
+    QVERIFY(core::saveModelFile(core::packml::newModel(core::packml::Edition::Y2015), packml.toStdString(),
+                                core::ModelFormat::Native));
+    QVERIFY(!document.load(packml, &error));
+    QVERIFY2(error.startsWith(packml + ": a PackML model"), qPrintable(error));
+    QVERIFY2(error.contains("cannot edit"), qPrintable(error));
 
     QVERIFY(document.model().sameContent(before));
     QCOMPARE(document.undoStack()->count(), commands);
