@@ -1,6 +1,7 @@
 #include "core/model/model.h"
 #include "core/templates/packml/packmlconfiguration.h"
 #include "core/templates/packml/packmlmodel.h"
+#include "core/templates/packml/packtags.h"
 
 #include <catch2/catch.hpp>
 
@@ -375,4 +376,24 @@ TEST_CASE("PackML GRAFCET keys are spelt and parsed by one pair of functions", "
     for (const char* bad : {"", "/Execute", "1/", "1/execute", "01/Execute", "+1/Execute", "-1/Execute", "1x/Execute",
                             "A1", "1/Execute/2"})
         CHECK_FALSE(packml::parseGrafcetKey(bad));
+}
+
+TEST_CASE("The PackTags interface: six globals typed and initialised from the configuration", "[packml-model]")
+{
+    packml::Configuration configuration = packml::defaultConfiguration(packml::Edition::Y2015);
+    configuration.initialMode = 3;
+    configuration.initialState = State::Aborted;
+    const std::vector<Variable> tags = packml::packTagVariables(configuration);
+    std::vector<std::string> summary;
+    for (const Variable& v : tags)
+        summary.push_back(v.name + ":" + std::string(iecTypeName(v.type)) + ":" + v.defaultValue + ":"
+                          + std::string(variableKindName(v.kind)));
+    CHECK(summary
+          == std::vector<std::string>{"CntrlCmd:DINT:0:input", "CmdChangeRequest:BOOL:FALSE:input",
+                                      "UnitMode:DINT:3:input", "UnitModeChangeRequest:BOOL:FALSE:input",
+                                      "StateCurrent:DINT:9:output", "UnitModeCurrent:DINT:3:output"});
+    CHECK(packml::isPackTagName("cntrlcmd"));
+    CHECK(packml::isPackTagName("UnitModeCurrent"));
+    CHECK_FALSE(packml::isPackTagName("UnitModeCurrentX"));
+    CHECK_FALSE(packml::isPackTagName("State"));
 }
