@@ -1,5 +1,6 @@
 #include "core/codegen/gemmaprogram.h"
 
+#include "core/codegen/nestedgrafcetset.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/divisionanalysis.h"
 #include "core/model/model.h"
@@ -316,77 +317,38 @@ GemmaStep makeStep(const BuildContext& context, const Step& step, const std::vec
     return result;
 }
 
-// Spec §3: a variable driven by continuous actions and written by stored
-// ones has no defined value (IEC 60848); the continuous actions win and the
-// stored ones are refused (GG415), so every output keeps one writer.
-void rejectStoredWritesOfContinuousOutputs(GemmaProgram& program)
-{
-    std::set<std::string> continuous; // upper case, Complete excluded
-    for (const GemmaStep& step : program.steps) {
-        if (!step.nested)
-            continue;
-        for (const ContinuousOutput& output : step.nested->outputs) {
-            if (!output.isComplete)
-                continuous.insert(toUpperAscii(output.variable));
-        }
+// The GEMMA model's reserved names (gemmaprogram.h's free functions) for
+// the nested GRAFCETs' builder.
+class GemmaUnusableNames final : public UnusableNames {
+public:
+    explicit GemmaUnusableNames(const Model& model)
+        : m_model(model)
+    {
     }
+    const char* code(std::string_view name) const override { return unusableNameCode(name, m_model); }
+    std::string detail(std::string_view name) const override { return unusableNameDetail(name, m_model); }
+    std::vector<std::string> arguments(const Variable& variable) const override
+    {
+        return unusableNameArguments(variable, m_model);
+    }
+
+private:
+    const Model& m_model;
+};
+
+// GG415 and the edge memories, once every nested GRAFCET is built.
+void finishNestedGrafcets(const Model& model, GemmaProgram& program)
+{
+    std::vector<OwnedGrafcet> owned;
+    std::vector<const NestedGrafcet*> built;
     for (GemmaStep& step : program.steps) {
         if (!step.nested)
             continue;
-        NestedGrafcet& nested = *step.nested;
-        const bool completeContinuous = nested.output("Complete") != nullptr;
-        for (NestedStep& nestedStep : nested.steps) {
-            for (auto* list : {&nestedStep.onActivation, &nestedStep.onDeactivation}) {
-                for (NestedAction& action : *list) {
-                    const bool clash = action.targetIsComplete ? completeContinuous
-                                                               : continuous.count(toUpperAscii(action.target)) > 0;
-                    if (!action.usable || !clash)
-                        continue;
-                    action.usable = false;
-                    const std::string where = "action " + std::to_string(action.index + 1) + " of step "
-                        + std::to_string(nestedStep.number) + " of " + step.id;
-                    GemmaProblem problem = makeProblem(
-                        GemmaProblem::Kind::Error, "GG415", step.id,
-                        "in " + where + ": " + quoted(action.target)
-                            + " is also driven by continuous actions; a variable has either continuous or stored "
-                              "actions (the stored one is not generated)",
-                        {step.id, where, action.target});
-                    problem.nestedStep = nestedStep.number;
-                    problem.actionIndex = action.index;
-                    problem.span = action.parsed.action.targetSpan;
-                    program.problems.push_back(std::move(problem));
-                }
-            }
-        }
-        auto& stored = nested.storedTargets;
-        stored.erase(std::remove_if(stored.begin(), stored.end(),
-                                    [&](const std::string& name) { return continuous.count(toUpperAscii(name)) > 0; }),
-                     stored.end());
+        owned.push_back({step.id, step.id, &*step.nested});
+        built.push_back(&*step.nested);
     }
-}
-
-std::vector<std::string> edgeVariablesOf(const Model& model, const GemmaProgram& program)
-{
-    std::vector<bool> edged(model.variables().size(), false);
-    for (const GemmaStep& step : program.steps) {
-        if (!step.nested)
-            continue;
-        for (const NestedTransition& t : step.nested->transitions) {
-            if (!t.usable)
-                continue;
-            for (int node : cond::edgeNodes(t.receptivity.expression)) {
-                const int index = model.variableIndex(t.receptivity.expression.at(t.receptivity.expression.at(node).operand).text);
-                if (index >= 0)
-                    edged[static_cast<std::size_t>(index)] = true;
-            }
-        }
-    }
-    std::vector<std::string> names;
-    for (std::size_t i = 0; i < edged.size(); ++i) {
-        if (edged[i])
-            names.push_back(model.variables()[i].name);
-    }
-    return names;
+    rejectStoredWritesOfContinuousOutputs(owned, program.problems);
+    program.edgeVariables = edgeVariablesOf(model.variables(), built);
 }
 
 } // namespace
@@ -454,6 +416,7 @@ GemmaProgram buildGemmaProgram(const Model& model)
     }
 
     const std::vector<GemmaTransition> family = familyTransitions(context);
+    const GemmaUnusableNames names(model);
     bool familyProblemsReported = false;
     for (const Step& step : model.steps()) {
         if (step.hidden)
@@ -466,12 +429,13 @@ GemmaProgram buildGemmaProgram(const Model& model)
         }
         if (step.family == Family::F)
             familyProblemsReported = true;
-        if (const Grafcet* grafcet = model.effectiveGrafcet(step.id))
-            program.steps.back().nested = buildNestedGrafcet(model, step, *grafcet, context.symbols, program.problems);
+        if (const Grafcet* grafcet = model.effectiveGrafcet(step.id)) {
+            const NestedScope scope{step.id, step.id, model.variables(), context.symbols, names};
+            program.steps.back().nested = buildNestedGrafcet(model, scope, *grafcet, program.problems);
+        }
     }
     program.evolution = model.settings().evolution;
-    rejectStoredWritesOfContinuousOutputs(program);
-    program.edgeVariables = edgeVariablesOf(model, program);
+    finishNestedGrafcets(model, program);
     return program;
 }
 

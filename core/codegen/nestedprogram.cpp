@@ -29,15 +29,14 @@ std::string quoted(const std::string& text)
 // Builds one GRAFCET, collecting its problems.
 class NestedBuilder {
 public:
-    NestedBuilder(const Model& model, const Step& step, const Grafcet& grafcet, const SymbolTable& symbols,
+    NestedBuilder(const Model& model, const NestedScope& scope, const Grafcet& grafcet,
                   std::vector<GemmaProblem>& problems)
-        : m_model(model)
-        , m_step(step)
+        : m_scope(scope)
         , m_grafcet(grafcet)
-        , m_symbols(symbols)
+        , m_symbols(scope.symbols)
         , m_problems(problems)
     {
-        m_result.stepId = step.id;
+        m_result.stepId = scope.element;
         m_result.rule = model.settings().evolution;
     }
 
@@ -72,15 +71,15 @@ private:
     std::string nameMessage(std::string_view code, const Variable& variable, const std::string& where) const
     {
         const std::string message = "in " + where + ": invalid variable name " + quoted(variable.name);
-        return code == "GG306" ? message + ": " + unusableNameDetail(variable.name, m_model) : message;
+        return code == "GG306" ? message + ": " + m_scope.unusableNames.detail(variable.name) : message;
     }
 
     std::vector<std::string> nameArguments(std::string_view code, const Variable& variable,
                                            const std::string& where) const
     {
         if (code == "GG306")
-            return unusableNameArguments(variable, m_model);
-        return {m_step.id, where, variable.name};
+            return m_scope.unusableNames.arguments(variable);
+        return {m_scope.label, where, variable.name};
     }
 
     void problem(std::string code, std::string message, std::vector<std::string> arguments, int step, int transition,
@@ -89,7 +88,7 @@ private:
         GemmaProblem p;
         p.kind = GemmaProblem::Kind::Error;
         p.code = std::move(code);
-        p.element = m_step.id;
+        p.element = m_scope.element;
         p.message = std::move(message);
         p.arguments = std::move(arguments);
         p.nestedStep = step;
@@ -101,12 +100,12 @@ private:
 
     std::string transitionLabel(int number) const
     {
-        return "T" + std::to_string(number) + " of " + m_step.id;
+        return "T" + std::to_string(number) + " of " + m_scope.label;
     }
 
     std::string actionLabel(int step, int index) const
     {
-        return "action " + std::to_string(index + 1) + " of step " + std::to_string(step) + " of " + m_step.id;
+        return "action " + std::to_string(index + 1) + " of step " + std::to_string(step) + " of " + m_scope.label;
     }
 
     // An undeclared name as an undeclared action target: the GEMMA step, the
@@ -116,8 +115,8 @@ private:
                                                 const std::string& where) const
     {
         if (issue.code == "GG203")
-            return {m_step.id, where, excerpt(text, issue.span)};
-        std::vector<std::string> arguments{m_step.id, where, excerpt(text, issue.span), issue.message};
+            return {m_scope.label, where, excerpt(text, issue.span)};
+        std::vector<std::string> arguments{m_scope.label, where, excerpt(text, issue.span), issue.message};
         if (issue.error)
             cond::appendArguments(*issue.error, arguments);
         return arguments;
@@ -142,8 +141,8 @@ private:
                 if (m_grafcet.step(n.number))
                     continue;
                 problem("GG406", "in " + where + ": " + n.text + " names step " + std::to_string(n.number)
-                            + ", which " + m_step.id + "'s GRAFCET does not have",
-                        {m_step.id, where, n.text, std::to_string(n.number)}, step, transition, action, n.span);
+                            + ", which " + m_scope.label + "'s GRAFCET does not have",
+                        {m_scope.label, where, n.text, std::to_string(n.number)}, step, transition, action, n.span);
                 usable = false;
             }
         }
@@ -158,13 +157,13 @@ private:
                 const cond::Node& n = expression.at(node);
                 problem("GG411", "in " + where + ": " + excerpt(text, n.span)
                             + " is for receptivities only: an action cannot read an edge or a step duration",
-                        {m_step.id, where, excerpt(text, n.span)}, step, transition, action, n.span);
+                        {m_scope.label, where, excerpt(text, n.span)}, step, transition, action, n.span);
                 usable = false;
             }
         }
         for (int node : cond::variableNodes(expression)) {
             const Variable* variable = m_symbols.find(expression.at(node).text);
-            if (const char* code = variable ? unusableNameCode(variable->name, m_model) : nullptr) {
+            if (const char* code = variable ? m_scope.unusableNames.code(variable->name) : nullptr) {
                 problem(code, nameMessage(code, *variable, where), nameArguments(code, *variable, where), step,
                         transition, action, expression.at(node).span);
                 usable = false;
@@ -187,7 +186,7 @@ private:
             const std::string longest = formatDuration(cond::kMaxTimeMs);
             problem("GG407", "in " + where + ": " + excerpt(text, n.span) + " is longer than " + longest
                         + ", the longest duration an IEC TIME (a TON preset) holds",
-                    {m_step.id, where, excerpt(text, n.span), longest}, step, transition, action, n.span);
+                    {m_scope.label, where, excerpt(text, n.span), longest}, step, transition, action, n.span);
             fit = false;
         }
         return fit;
@@ -204,7 +203,7 @@ private:
             if (!risk.constantZero)
                 continue;
             problem("GG408", "in " + where + ": " + cond::divisionByZeroMessage(risk, text),
-                    {m_step.id, where, excerpt(text, risk.span), excerpt(text, risk.divisorSpan)}, step, transition,
+                    {m_scope.label, where, excerpt(text, risk.span), excerpt(text, risk.divisorSpan)}, step, transition,
                     action, risk.span);
             none = false;
         }
@@ -240,7 +239,7 @@ private:
         const std::string where = actionLabel(stepNumber, index);
         if (!action.parsed.ok()) {
             const cond::ParseError& error = *action.parsed.error;
-            std::vector<std::string> arguments{m_step.id, where, excerpt(source.text, error.span), error.message};
+            std::vector<std::string> arguments{m_scope.label, where, excerpt(source.text, error.span), error.message};
             cond::appendArguments(error, arguments);
             problem("GG404", "syntax error in " + where + ": " + error.message, std::move(arguments), stepNumber, 0,
                     index, error.span);
@@ -251,7 +250,7 @@ private:
         if (continuous != (syntax.form == cond::ActionForm::Continuous)) {
             const std::string why = continuous ? "a continuous action is N V or V IF <condition>"
                                                : "a stored action is S V, R V or V := <expression>";
-            problem("GG405", "in " + where + ": " + why, {m_step.id, where, why}, stepNumber, 0, index, std::nullopt);
+            problem("GG405", "in " + where + ": " + why, {m_scope.label, where, why}, stepNumber, 0, index, std::nullopt);
             return action;
         }
         action.targetIsComplete = syntax.targetIsComplete;
@@ -278,11 +277,11 @@ private:
         const Variable* variable = m_symbols.find(syntax.target);
         if (!variable) {
             problem("GG405", "in " + where + ": " + quoted(syntax.target) + " is not a declared variable",
-                    {m_step.id, where, syntax.target}, stepNumber, 0, index, span);
+                    {m_scope.label, where, syntax.target}, stepNumber, 0, index, span);
             return false;
         }
         action.target = variable->name;
-        if (const char* code = unusableNameCode(variable->name, m_model)) {
+        if (const char* code = m_scope.unusableNames.code(variable->name)) {
             problem(code, nameMessage(code, *variable, where), nameArguments(code, *variable, where), stepNumber, 0,
                     index, span);
             return false;
@@ -290,7 +289,7 @@ private:
         if (variable->kind == VariableKind::Input) {
             problem("GG413", "in " + where + ": " + quoted(variable->name)
                         + " is an input: it is read from the machine, actions never write it",
-                    {m_step.id, where, variable->name}, stepNumber, 0, index, span);
+                    {m_scope.label, where, variable->name}, stepNumber, 0, index, span);
             return false;
         }
         const bool needsBool = syntax.form != cond::ActionForm::Assign;
@@ -298,7 +297,7 @@ private:
             const std::string code = syntax.form == cond::ActionForm::Continuous ? "GG414" : "GG405";
             problem(code, "in " + where + ": " + quoted(variable->name) + " is "
                         + std::string(iecTypeName(variable->type)) + "; this action needs a BOOL variable",
-                    {m_step.id, where, variable->name, std::string(iecTypeName(variable->type))}, stepNumber, 0, index,
+                    {m_scope.label, where, variable->name, std::string(iecTypeName(variable->type))}, stepNumber, 0, index,
                     span);
             return false;
         }
@@ -327,7 +326,7 @@ private:
         problem("GG405",
                 "in " + where + ": " + value + " is " + kindText(kind) + ", not " + article(typeName) + " " + typeName
                     + " value: it cannot be assigned to " + written + " (" + typeName + ")",
-                {m_step.id, where, action.target, typeName, value}, stepNumber, 0, index,
+                {m_scope.label, where, action.target, typeName, value}, stepNumber, 0, index,
                 syntax.value.rootNode().span);
         return false;
     }
@@ -371,7 +370,7 @@ private:
         }
         const auto rank = [&](const ContinuousOutput& o) -> std::size_t {
             if (o.isComplete)
-                return m_model.variables().size();
+                return m_scope.variables.size();
             return indexOf(o.variable);
         };
         std::sort(outputs.begin(), outputs.end(), [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
@@ -394,7 +393,7 @@ private:
                     const std::string where = actionLabel(step.number, action.index);
                     problem("GG421", "in " + where + ": the condition reads " + quoted(name)
                                 + ", a continuous output of the same GRAFCET",
-                            {m_step.id, where, name}, step.number, 0, action.index, condition.at(node).span);
+                            {m_scope.label, where, name}, step.number, 0, action.index, condition.at(node).span);
                     action.usable = false;
                     break;
                 }
@@ -415,13 +414,13 @@ private:
         transition.receptivity = cond::parse(source.receptivity, kNested);
         const std::string where = "the receptivity of " + transitionLabel(source.number);
         if (isBlank(source.receptivity)) {
-            problem("GG402", where + " is empty: write TRUE for a transition that is always ready", {m_step.id, where},
+            problem("GG402", where + " is empty: write TRUE for a transition that is always ready", {m_scope.label, where},
                     0, source.number, -1, std::nullopt);
             return transition;
         }
         if (!transition.receptivity.ok()) {
             const cond::ParseError& error = *transition.receptivity.error;
-            std::vector<std::string> arguments{m_step.id, where, excerpt(source.receptivity, error.span), error.message};
+            std::vector<std::string> arguments{m_scope.label, where, excerpt(source.receptivity, error.span), error.message};
             cond::appendArguments(error, arguments);
             problem("GG401", "syntax error in " + where + ": " + error.message, std::move(arguments), 0, source.number,
                     -1, error.span);
@@ -471,13 +470,13 @@ private:
     std::size_t indexOf(std::string_view name) const
     {
         const Variable* variable = m_symbols.find(name);
-        return variable ? static_cast<std::size_t>(variable - m_model.variables().data()) : m_model.variables().size();
+        return variable ? static_cast<std::size_t>(variable - m_scope.variables.data()) : m_scope.variables.size();
     }
 
     void collectVariables()
     {
-        std::vector<bool> read(m_model.variables().size(), false);
-        std::vector<bool> stored(m_model.variables().size(), false);
+        std::vector<bool> read(m_scope.variables.size(), false);
+        std::vector<bool> stored(m_scope.variables.size(), false);
         const auto markRead = [&](const cond::Expression& expression) {
             for (int node : cond::variableNodes(expression)) {
                 if (const std::size_t index = indexOf(expression.at(node).text); index < read.size())
@@ -504,14 +503,13 @@ private:
         }
         for (std::size_t i = 0; i < read.size(); ++i) {
             if (read[i])
-                m_result.readVariables.push_back(m_model.variables()[i].name);
+                m_result.readVariables.push_back(m_scope.variables[i].name);
             if (stored[i])
-                m_result.storedTargets.push_back(m_model.variables()[i].name);
+                m_result.storedTargets.push_back(m_scope.variables[i].name);
         }
     }
 
-    const Model& m_model;
-    const Step& m_step;
+    const NestedScope& m_scope;
     const Grafcet& m_grafcet;
     const SymbolTable& m_symbols;
     std::vector<GemmaProblem>& m_problems;
@@ -547,10 +545,10 @@ const ContinuousOutput* NestedGrafcet::output(std::string_view variable) const
     return nullptr;
 }
 
-NestedGrafcet buildNestedGrafcet(const Model& model, const Step& step, const Grafcet& grafcet,
-                                 const SymbolTable& symbols, std::vector<GemmaProblem>& problems)
+NestedGrafcet buildNestedGrafcet(const Model& model, const NestedScope& scope, const Grafcet& grafcet,
+                                 std::vector<GemmaProblem>& problems)
 {
-    return NestedBuilder(model, step, grafcet, symbols, problems).build();
+    return NestedBuilder(model, scope, grafcet, problems).build();
 }
 
 std::string stepActivityName(int step)

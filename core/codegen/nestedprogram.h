@@ -16,9 +16,11 @@
 #include "core/model/span.h"
 
 #include <optional>
+#include <span>
 
 #include <cstdint>
 #include <map>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,7 @@ class Model;
 class SymbolTable;
 struct GemmaProblem;
 struct Step;
+struct Variable;
 
 // One action of a step. Unusable actions (they do not parse or type-check,
 // or write what they may not) are kept for the comments of the generated
@@ -115,12 +118,36 @@ struct NestedGrafcet {
     const ContinuousOutput* output(std::string_view variable) const; // case-insensitive
 };
 
-// Builds the GRAFCET of a visible macro/enclosing step, appending what is
-// wrong with its receptivities and actions to `problems` (codes GG401-GG406,
-// GG410, GG411, GG413, GG414, GG421; GG415 across GRAFCETs is added by
-// buildGemmaProgram).
-NestedGrafcet buildNestedGrafcet(const Model& model, const Step& step, const Grafcet& grafcet,
-                                 const SymbolTable& symbols, std::vector<GemmaProblem>& problems);
+// Which variable names the generated code cannot declare as they are (each
+// template reserves its own); a text reading such a variable is unusable.
+class UnusableNames {
+public:
+    virtual ~UnusableNames() = default;
+    // The checks' code ("GG301", "PM018"...), nullptr for a usable name.
+    virtual const char* code(std::string_view name) const = 0;
+    // Why, in English; empty for a usable name.
+    virtual std::string detail(std::string_view name) const = 0;
+    // The arguments of a finding about a text that reads `variable`.
+    virtual std::vector<std::string> arguments(const Variable& variable) const = 0;
+};
+
+// Where a nested GRAFCET runs, as its builder needs it.
+struct NestedScope {
+    std::string element; // what its problems locate: the GEMMA step ("F1"), the PackML key ("3/Execute")
+    std::string label;   // how its messages name it: "F1", "Manual Execute"
+    // Every variable its texts may name, in declaration order (the slots of
+    // the simulator's globals), and the lookup over exactly these.
+    std::span<const Variable> variables;
+    const SymbolTable& symbols;
+    const UnusableNames& unusableNames;
+};
+
+// Builds the GRAFCET of a visible macro/enclosing step or of a PackML
+// (mode, state), appending what is wrong with its receptivities and actions
+// to `problems` (codes GG401-GG406, GG410, GG411, GG413, GG414, GG421; GG415
+// across GRAFCETs is added by nestedgrafcetset.h).
+NestedGrafcet buildNestedGrafcet(const Model& model, const NestedScope& scope, const Grafcet& grafcet,
+                                 std::vector<GemmaProblem>& problems);
 
 // The names the code of a nested GRAFCET declares inside S_FB, reserved for
 // user variables of a model with nested GRAFCETs (spec grafcet-layer.md §4.5).
