@@ -10,6 +10,7 @@
 #include "core/codegen/plcopenwriter.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
+#include "core/templates/packml/packmlmodel.h"
 #include "core/codegen/stexport.h"
 #include "core/codegen/stgenerator.h"
 #include "cycletime.h"
@@ -20,6 +21,8 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <memory>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
@@ -31,13 +34,15 @@ const char* const kUsage =
     "Usage: ggstudio-cli COMMAND [ARGUMENTS]\n"
     "\n"
     "Commands:\n"
-    "  new OUT|- [--to native|gg-generator]\n"
-    "      Write the GEMMA template as a new model file.\n"
+    "  new OUT|- [--to native|gg-generator] [--template gemma|packml] [--edition 2015|2022]\n"
+    "      Write a new model file: the GEMMA template (default), or a PackML model of the\n"
+    "      edition (default 2015) with the base modes and a Cmd_ input per command.\n"
     "  validate FILE...\n"
     "      Check models; print FILE: ELEMENT: severity: CODE: message lines.\n"
     "      Exit 0 without errors, 1 when a model has errors, 2 when a file cannot be read.\n"
     "  convert IN OUT|- [--to native|gg-generator]\n"
     "      Convert between GG Studio JSON, GG-Generator JSON and (as input) GG Studio PLCopen XML.\n"
+    "      A PackML model converts to GG Studio JSON only.\n"
     "  export MODEL -o OUT|- [--dialect iec|codesys] [--format plcopen|st|st-folder]\n"
     "         [--cycle-time 20ms] [--force]\n"
     "      Generate the PLC program: PLCopen XML (default for .xml), one IEC Structured Text\n"
@@ -116,6 +121,12 @@ bool isStandardOutput(const std::string& path)
 
 int save(const core::Model& model, const std::string& path, core::ModelFormat format, Streams streams)
 {
+    if (format == core::ModelFormat::GGGenerator && model.templateKind() != core::TemplateKind::Gemma) {
+        streams.err << "ggstudio-cli: GG-Generator JSON holds GEMMA models only; write a PackML model as a GG "
+                       "Studio model file (--to native)"
+                    << lineEnd;
+        return UsageError;
+    }
     if (format == core::ModelFormat::GGGenerator) {
         for (const core::GGGeneratorLoss& loss : core::ggGeneratorLosses(model))
             streams.err << "ggstudio-cli: warning: " << core::toText(loss) << lineEnd;
@@ -133,9 +144,35 @@ int save(const core::Model& model, const std::string& path, core::ModelFormat fo
     return Success;
 }
 
-std::unique_ptr<core::Model> loadOrReport(const std::string& path, std::ostream& err)
+std::unique_ptr<core::Model> loadOrReport(const std::string& path, std::ostream& err,
+                                          core::TemplateSupport support = core::TemplateSupport::GemmaOnly)
 {
-    return std::move(loadAndReport(path, err).model);
+    return std::move(loadAndReport(path, err, support).model);
+}
+
+// The model `new` writes, from --template and --edition; nullptr after a
+// usage error.
+std::unique_ptr<core::Model> newModel(const Arguments& args, std::ostream& err)
+{
+    const std::string templateName = args.value("--template").value_or("gemma");
+    const std::optional<std::string> editionName = args.value("--edition");
+    if (templateName == "gemma") {
+        if (editionName) {
+            usageError(err, "--edition is for PackML models (--template packml)");
+            return nullptr;
+        }
+        return std::make_unique<core::Model>();
+    }
+    if (templateName != "packml") {
+        usageError(err, "--template takes gemma or packml, not '" + templateName + "'");
+        return nullptr;
+    }
+    const std::optional<core::packml::Edition> edition = core::packml::parseEdition(editionName.value_or("2015"));
+    if (!edition) {
+        usageError(err, "--edition takes 2015 or 2022, not '" + *editionName + "'");
+        return nullptr;
+    }
+    return std::make_unique<core::Model>(core::packml::newModel(*edition));
 }
 
 int commandNew(const Arguments& args, Streams streams)
@@ -146,7 +183,10 @@ int commandNew(const Arguments& args, Streams streams)
     core::ModelFormat format;
     if (!outputFormat(args, path, format, streams.err))
         return UsageError;
-    return save(core::Model(), path, format, streams);
+    const std::unique_ptr<core::Model> model = newModel(args, streams.err);
+    if (!model)
+        return UsageError;
+    return save(*model, path, format, streams);
 }
 
 int validateOne(const std::string& path, Streams streams)
@@ -181,7 +221,7 @@ int commandConvert(const Arguments& args, Streams streams)
     core::ModelFormat format;
     if (!outputFormat(args, output, format, streams.err))
         return UsageError;
-    std::unique_ptr<core::Model> model = loadOrReport(input, streams.err);
+    std::unique_ptr<core::Model> model = loadOrReport(input, streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!model)
         return UnreadableInput;
     return save(*model, output, format, streams);
@@ -550,7 +590,7 @@ struct Command {
 const std::map<std::string, Command>& commands()
 {
     static const std::map<std::string, Command> table{
-        {"new", {commandNew, {"--to"}, {}}},
+        {"new", {commandNew, {"--to", "--template", "--edition"}, {}}},
         {"validate", {commandValidate, {}, {}}},
         {"convert", {commandConvert, {"--to"}, {}}},
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},

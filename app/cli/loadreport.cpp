@@ -14,9 +14,9 @@ void printLoadError(std::ostream& err, const core::LoadError& error)
     err << lineEnd;
 }
 
-core::LoadedModel loadAndReport(const std::string& path, std::ostream& err)
+core::LoadedModel loadAndReport(const std::string& path, std::ostream& err, core::TemplateSupport support)
 {
-    core::LoadedModel loaded = core::loadSupportedModelFile(path);
+    core::LoadedModel loaded = core::loadSupportedModelFile(path, support);
     if (!loaded.ok()) {
         printLoadError(err, loaded.error);
         return loaded;

@@ -11,7 +11,8 @@
 
 namespace cli {
 
-core::LoadedModel loadAndReport(const std::string& path, std::ostream& err);
+core::LoadedModel loadAndReport(const std::string& path, std::ostream& err,
+                                core::TemplateSupport support = core::TemplateSupport::GemmaOnly);
 
 // "FILE: LOCATION: MESSAGE; ADVICE": the advice is fixed text and printed as
 // it is, since the escaping of user text would double its backslashes

@@ -67,20 +67,20 @@ LoadedModel loadModelText(std::string_view text, const std::string& displayName)
         + std::string(kNativeFormatName) + "\"), a GG-Generator JSON file or a GG Studio PLCopen XML file");
 }
 
-std::string unsupportedModelMessage(const Model& model)
+std::string unsupportedModelMessage(const Model& model, TemplateSupport support)
 {
-    if (model.templateKind() == TemplateKind::Gemma)
+    if (model.templateKind() == TemplateKind::Gemma || support == TemplateSupport::GemmaAndPackML)
         return {};
     return "a PackML model (format 3.0); this version of GG Studio reads PackML files but cannot edit, check or "
            "export them yet";
 }
 
-LoadedModel loadSupportedModelFile(const std::string& path)
+LoadedModel loadSupportedModelFile(const std::string& path, TemplateSupport support)
 {
     LoadedModel loaded = loadModelFile(path);
     if (!loaded.ok())
         return loaded;
-    if (std::string message = unsupportedModelMessage(*loaded.model); !message.empty()) {
+    if (std::string message = unsupportedModelMessage(*loaded.model, support); !message.empty()) {
         LoadedModel refused = failure(path, std::move(message));
         refused.format = loaded.format;
         return refused;

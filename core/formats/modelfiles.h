@@ -37,12 +37,17 @@ struct LoadedModel {
 LoadedModel loadModelFile(const std::string& path);
 LoadedModel loadModelText(std::string_view text, const std::string& displayName);
 
-// The message for a model this version reads but cannot yet edit, check or
-// export (a PackML model); empty for a model it supports.
-std::string unsupportedModelMessage(const Model& model);
+// Which templates a reader of model files handles: PackML support comes
+// command by command (a PackML model is generated and simulated before the
+// editor draws it).
+enum class TemplateSupport { GemmaOnly, GemmaAndPackML };
+
+// The message for a model this reader loads but cannot yet handle (a PackML
+// model where only GEMMA is supported); empty for a model it supports.
+std::string unsupportedModelMessage(const Model& model, TemplateSupport support = TemplateSupport::GemmaOnly);
 // loadModelFile, refusing such a model with that message (and no model):
 // what the editor and the command-line tool open.
-LoadedModel loadSupportedModelFile(const std::string& path);
+LoadedModel loadSupportedModelFile(const std::string& path, TemplateSupport support = TemplateSupport::GemmaOnly);
 
 // Writes the model as a Native or GGGenerator file, atomically: on failure
 // the previous file is intact. PlcOpen files are written by the PLCopen
