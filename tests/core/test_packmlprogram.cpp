@@ -1,5 +1,6 @@
 #include "packmlcapper.h"
 
+#include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlmodel.h"
 #include "core/templates/packml/packmlprogram.h"
 
@@ -155,4 +156,29 @@ TEST_CASE("PackML program: a user variable with a reserved name makes what reads
     CHECK_FALSE(program.command(Command::Start)->condition.usable);
     REQUIRE_FALSE(program.problems.empty());
     CHECK(program.problems.front().code == "PM018");
+}
+
+TEST_CASE("The shipped PackML example builds without a problem, with the instances it documents", "[packml-program]")
+{
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
+    REQUIRE(loaded.ok());
+    const PackmlProgram program = buildPackmlProgram(*loaded.model);
+    for (const GemmaProblem& problem : program.problems)
+        FAIL_CHECK(problem.code << ": " << problem.message);
+    CHECK(program.programName == "BottleFiller");
+    std::vector<std::string> withGrafcet;
+    for (const ProgramInstance& instance : program.instances)
+        if (!instance.isSkeleton())
+            withGrafcet.push_back(instance.name + ":" + instance.typeName);
+    CHECK(withGrafcet
+          == std::vector<std::string>{"Production_Starting:Production_Starting_FB",
+                                      "Production_Execute:Production_Execute_FB",
+                                      "Production_Stopping:Production_Stopping_FB",
+                                      "Production_Aborting:Production_Aborting_FB",
+                                      "Production_Resetting:Production_Resetting_FB", "Manual_Execute:Manual_Execute_FB",
+                                      "Manual_Stopping:Production_Stopping_FB", "Manual_Aborting:Production_Aborting_FB"});
+    // Every command of the edition is accepted somewhere; Suspend and
+    // Unsuspend come from the infeed's photo-eye.
+    CHECK(commandNames(program).size() == 9);
+    CHECK(program.edgeVariables == std::vector<std::string>{"BottleIn"});
 }
