@@ -33,15 +33,17 @@ std::vector<std::string> modeNamesOf(const Configuration& configuration)
 class PackmlUnusableNames final : public UnusableNames {
 public:
     PackmlUnusableNames(const Model& model, std::string programName)
-        : m_model(model)
-        , m_programName(std::move(programName))
+        : m_programName(std::move(programName))
         , m_modeNames(modeNamesOf(*model.packml()))
     {
+        for (const PackTag& tag : packTags())
+            if (model.variableIndex(tag.name) >= 0)
+                m_takenTags.emplace_back(tag.name);
     }
 
     const char* code(std::string_view name) const override
     {
-        if (isPackTagName(name) && m_model.variableIndex(name) < 0)
+        if (isPackTagName(name) && !isTakenTag(name))
             return nullptr;
         switch (identifierProblem(name)) {
         case IdentifierProblem::None: return isReservedName(name, m_programName, m_modeNames) ? "PM018" : nullptr;
@@ -66,9 +68,15 @@ public:
     }
 
 private:
-    const Model& m_model;
+    bool isTakenTag(std::string_view name) const
+    {
+        return std::any_of(m_takenTags.begin(), m_takenTags.end(),
+                           [&](const std::string& taken) { return equalsIgnoreCase(taken, name); });
+    }
+
     std::string m_programName;
     std::vector<std::string> m_modeNames;
+    std::vector<std::string> m_takenTags; // PackTags a user variable also names (PM018)
 };
 
 // How messages name a mode's GRAFCET of a state: "Manual Execute".
