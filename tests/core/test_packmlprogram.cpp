@@ -3,6 +3,7 @@
 #include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlmodel.h"
 #include "core/templates/packml/packmlprogram.h"
+#include "packmlfactory.h"
 
 #include <catch2/catch.hpp>
 
@@ -181,4 +182,21 @@ TEST_CASE("The shipped PackML example builds without a problem, with the instanc
     // Unsuspend come from the infeed's photo-eye.
     CHECK(commandNames(program).size() == 9);
     CHECK(program.edgeVariables == std::vector<std::string>{"BottleIn"});
+}
+
+TEST_CASE("The PackML stress model: 31 modes sharing Production's eleven 40-step GRAFCETs", "[packml-program]")
+{
+    const Model model = factory::packmlStressModel();
+    CHECK(model.invariantViolations().empty());
+    const PackmlProgram program = buildPackmlProgram(model);
+    for (const GemmaProblem& problem : program.problems)
+        FAIL_CHECK(problem.code << ": " << problem.message);
+    CHECK(program.modes.size() == 31);
+    CHECK(program.instances.size() == 31 * 11);
+    REQUIRE(program.grafcets.size() == 11);
+    for (const ProgramGrafcet& grafcet : program.grafcets)
+        CHECK(grafcet.grafcet.steps.size() == 40);
+    CHECK(program.instance(31, State::Execute)->typeName == "Production_Execute_FB");
+    CHECK(program.mode(31)->requestGenerated);
+    CHECK(program.mode(1)->grants.size() == 30);
 }
