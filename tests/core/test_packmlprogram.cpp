@@ -4,6 +4,7 @@
 #include "core/templates/packml/packmlmodel.h"
 #include "core/templates/packml/packmlprogram.h"
 #include "packmlfactory.h"
+#include "packmlsamples.h"
 
 #include <catch2/catch.hpp>
 
@@ -199,4 +200,34 @@ TEST_CASE("The PackML stress model: 31 modes sharing Production's eleven 40-step
     CHECK(program.instance(31, State::Execute)->typeName == "Production_Execute_FB");
     CHECK(program.mode(31)->requestGenerated);
     CHECK(program.mode(1)->grants.size() == 30);
+}
+
+TEST_CASE("Random PackML models: programs without problems, covering what the agreement test needs",
+          "[packml-program]")
+{
+    int editions2022 = 0, userModes = 0, shared = 0, grafcets = 0, skipped = 0, emptyCommands = 0;
+    for (std::uint32_t seed = 0; seed < 40; ++seed) {
+        const Model model = samples::randomPackmlModel(seed);
+        CHECK(model.invariantViolations().empty());
+        const PackmlProgram program = buildPackmlProgram(model);
+        REQUIRE(program.problems.empty());
+        editions2022 += program.options.edition == Edition::Y2022 ? 1 : 0;
+        userModes += program.modes.back().number >= kFirstUserMode ? 1 : 0;
+        grafcets += static_cast<int>(program.grafcets.size());
+        for (const ProgramInstance& instance : program.instances)
+            shared += !instance.isSkeleton() && instance.ownerMode != instance.mode ? 1 : 0;
+        for (const ProgramMode& mode : program.modes)
+            for (const ProgramState& state : mode.states)
+                for (const ModeTransition& t : state.transitions)
+                    skipped += t.destination.skipped ? 1 : 0;
+        for (const ProgramCommand& command : program.commands)
+            emptyCommands += command.condition.text.empty() ? 1 : 0;
+        CHECK(samples::randomPackmlModel(seed).sameContent(model)); // reproducible
+    }
+    CHECK(editions2022 > 5);
+    CHECK(userModes > 5);
+    CHECK(shared > 5);
+    CHECK(grafcets > 40);
+    CHECK(skipped > 40);
+    CHECK(emptyCommands > 5);
 }
