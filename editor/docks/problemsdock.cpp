@@ -59,6 +59,12 @@ ElementRef::Kind kindOf(core::Diagnostic::Target target)
         return ElementRef::Kind::Variable;
     case core::Diagnostic::Target::Model:
         return ElementRef::Kind::Model;
+    case core::Diagnostic::Target::Mode:
+    case core::Diagnostic::Target::Command:
+    case core::Diagnostic::Target::ModeState:
+    case core::Diagnostic::Target::Request:
+        // PackML elements: the editor has no view of them to select yet.
+        return ElementRef::Kind::None;
     }
     return ElementRef::Kind::None;
 }
