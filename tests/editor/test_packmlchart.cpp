@@ -216,6 +216,7 @@ void TestPackmlChart::frameArrowsNameSkippedTargetAndCondition()
     QVERIFY(stop->isGreyed());
     const PackmlArrowItem* abort = m_scene->frameArrowItem(Command::Abort);
     QCOMPARE(abort->labelCandidates().first(), QStringLiteral("Abort → Aborted: Cmd_Abort OR NOT EStopOK"));
+    QVERIFY(abort->displayedLabel().startsWith(QStringLiteral("Abort → Aborted: Cmd_Abort")));
     QVERIFY(abort->toolTip().contains(QStringLiteral("Cmd_Abort OR NOT EStopOK")));
     m_scene->setMode(0);
     QCOMPARE(m_scene->frameArrowItem(Command::Stop)->displayedLabel(), QStringLiteral("Stop"));
@@ -269,6 +270,12 @@ void TestPackmlChart::longLabelGivesWayToWhereItLeads()
              (QStringList{QStringLiteral("Unhold → Execute"), QStringLiteral("→ Execute")}));
     QCOMPARE(unhold->displayedLabel(), QStringLiteral("→ Execute"));
     QVERIFY(unhold->toolTip().contains(QStringLiteral("Execute")));
+    // A command name a little wider than the label is drawn a little smaller, whole.
+    useModel(core::packml::newModel(core::packml::Edition::Y2015));
+    PackmlArrowItem* unsuspend = m_scene->transitionItem(State::Suspended, State::Unsuspending);
+    QCOMPARE(unsuspend->displayedLabel(), QStringLiteral("Unsuspend"));
+    QVERIFY(unsuspend->labelScale() >= PackmlArrowItem::kMinLabelScale);
+    QCOMPARE(m_scene->transitionItem(State::Idle, State::Starting)->labelScale(), 1.0);
 }
 
 void TestPackmlChart::modeSelectorListsTheModes()

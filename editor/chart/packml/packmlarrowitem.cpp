@@ -86,15 +86,21 @@ void PackmlArrowItem::setLabelCandidates(const QStringList& candidates)
     m_candidates = candidates;
     const QFontMetricsF metrics(chartstyle::font());
     m_shown.clear();
+    m_scale = 1;
+    const double room = m_labelRect.width();
     for (const QString& candidate : candidates) {
-        if (metrics.horizontalAdvance(candidate) <= m_labelRect.width()) {
+        const double width = metrics.horizontalAdvance(candidate);
+        if (width * kMinLabelScale <= room) {
             m_shown = candidate;
+            m_scale = std::min(1.0, room / width);
             break;
         }
     }
-    if (m_shown.isEmpty() && !candidates.isEmpty())
-        m_shown = metrics.elidedText(candidates.last(), Qt::ElideRight, m_labelRect.width());
-    m_shownWidth = metrics.horizontalAdvance(m_shown);
+    if (m_shown.isEmpty() && !candidates.isEmpty()) {
+        m_scale = kMinLabelScale; // as much of the text as can be read
+        m_shown = metrics.elidedText(candidates.last(), Qt::ElideRight, room / m_scale);
+    }
+    m_shownWidth = metrics.horizontalAdvance(m_shown) * m_scale;
     update();
 }
 
@@ -176,7 +182,8 @@ void PackmlArrowItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* o
     painter->drawLine(bar);
     if (!m_shown.isEmpty()) {
         painter->setPen(m_greyed ? ink : chartstyle::labelColor());
-        chartstyle::drawText(painter, shownLabelRect(), Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, m_shown);
+        chartstyle::drawText(painter, shownLabelRect(), Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, m_shown,
+                             m_scale);
     }
 }
 

@@ -22,12 +22,16 @@ public:
     int type() const override { return Type; }
 
     // The label, as the first of `candidates` that fits the layout's label
-    // rectangle, or else the last one elided: a long text can give way to a
-    // shorter one that says the main thing ("→ Idle").
+    // rectangle, if need be a little smaller (down to kMinLabelScale), or
+    // else the last one elided at that smallest size: a long text can give way to a shorter one
+    // that says the main thing ("→ Idle").
     void setLabelCandidates(const QStringList& candidates);
     const QStringList& labelCandidates() const { return m_candidates; }
     // The text drawn.
     const QString& displayedLabel() const { return m_shown; }
+    // How much smaller than the chart's font it is drawn (1: not at all).
+    double labelScale() const { return m_scale; }
+    static constexpr double kMinLabelScale = 0.8;
     QRectF labelRect() const { return m_labelRect; }
 
     bool isDashed() const { return m_dashed; }
@@ -58,7 +62,8 @@ private:
     QPainterPath m_shape;
     QStringList m_candidates;
     QString m_shown;
-    double m_shownWidth = 0;
+    double m_shownWidth = 0; // scaled
+    double m_scale = 1;
     bool m_dashed = false;
     bool m_greyed = false;
 };

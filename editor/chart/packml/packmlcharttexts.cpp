@@ -45,7 +45,7 @@ QStringList PackmlChartTexts::frameLabels(Command command, const QString& condit
     if (destination && destination->skipped)
         label += QStringLiteral(" → ") + packmltext::stateName(destination->state);
     if (!defaultCondition && !condition.trimmed().isEmpty())
-        return {label + QStringLiteral(": ") + condition.simplified(), label};
+        return {label + QStringLiteral(": ") + condition.simplified()}; // elided: the condition is the point
     return {label};
 }
 

@@ -27,7 +27,7 @@ public:
                                         const std::optional<core::packml::Destination>& destination);
     // A frame's arrow: "Abort", with its condition when not the default
     // ("Abort: Cmd_Abort OR NOT EStopOK"), and "→ Aborted" after the command
-    // when Aborting is skipped.
+    // when Aborting is skipped; one text, elided at its end if need be.
     static QStringList frameLabels(core::packml::Command command, const QString& condition, bool defaultCondition,
                                    const std::optional<core::packml::Destination>& destination);
 
