@@ -61,6 +61,7 @@ private slots:
     void everyItemHasATooltip();
     void longLabelGivesWayToWhereItLeads();
     void modeSelectorListsTheModes();
+    void selectorFollowsTheModelsModes();
     void clickSelectsStatesAndTransitions();
     void selectionSelectsTheItem();
     void showingAnotherModeKeepsTheSelectedState();
@@ -292,6 +293,27 @@ void TestPackmlChart::modeSelectorListsTheModes()
     QCOMPARE(m_scene->mode(), kManual);
     m_scene->setMode(kProduction);
     QCOMPARE(selector->currentText(), QStringLiteral("1 Production"));
+}
+
+void TestPackmlChart::selectorFollowsTheModelsModes()
+{
+    PackmlChartView view(m_scene.get());
+    m_scene->setMode(kManual);
+    QVERIFY(m_model->addMode(7, "Cleaning"));
+    m_scene->refresh();
+    QCOMPARE(view.modeSelector()->count(), 3);
+    QCOMPARE(view.modeSelector()->itemText(2), QStringLiteral("7 Cleaning"));
+    QCOMPARE(view.modeSelector()->currentText(), QStringLiteral("3 Manual"));
+    // The mode shown is removed: the chart shows the initial mode.
+    QVERIFY(m_model->removeMode(kManual));
+    m_scene->refresh();
+    QCOMPARE(m_scene->mode(), kProduction);
+    QCOMPARE(view.modeSelector()->currentText(), QStringLiteral("1 Production"));
+    QVERIFY(m_scene->stateItem(State::Holding)->isDisabledInMode());
+    // A number the model has no mode for shows the bare template.
+    m_scene->setMode(kManual);
+    QCOMPARE(m_scene->mode(), 0);
+    QVERIFY(!m_scene->stateItem(State::Holding)->isDisabledInMode());
 }
 
 void TestPackmlChart::clickSelectsStatesAndTransitions()
