@@ -257,7 +257,13 @@ void TestPackmlChart::everyItemHasATooltip()
         for (const Command command : {Command::Stop, Command::Abort})
             QVERIFY(!m_scene->frameArrowItem(command)->toolTip().isEmpty());
     }
+    // What runs in a state: the Capper's Production has its own GRAFCET in
+    // Execute, Manual none (the skeleton waits).
+    m_scene->setMode(kProduction);
+    QVERIFY(m_scene->stateItem(State::Execute)->toolTip().contains(QStringLiteral("its own nested GRAFCET")));
+    QVERIFY(!m_scene->stateItem(State::Idle)->toolTip().contains(QStringLiteral("GRAFCET")));
     m_scene->setMode(kManual);
+    QVERIFY(m_scene->stateItem(State::Execute)->toolTip().contains(QStringLiteral("waits for a command")));
     QVERIFY(m_scene->stateItem(State::Holding)->toolTip().contains(QStringLiteral("3 Manual")));
     QVERIFY(!m_scene->stateItem(State::Idle)->toolTip().contains(QStringLiteral("3 Manual")));
 }

@@ -173,13 +173,16 @@ void PackmlChartScene::applyToStates(const core::packml::StateSet& enabled)
     const core::packml::Configuration* configuration = m_model->packml();
     const bool edition2022 = configuration && configuration->options.edition == core::packml::Edition::Y2022;
     const QString mode = modeTitle();
+    const core::packml::Mode* shown = configuration ? configuration->mode(m_mode) : nullptr;
     for (PackmlStateItem* item : std::as_const(m_states)) {
         // The 2022 edition displays Complete as "Completed" (spec §2.1).
         const bool completed = edition2022 && item->state() == State::Complete;
         item->setDisplayName(completed ? QStringLiteral("Completed") : packmltext::stateName(item->state()));
         const bool disabled = !enabled.contains(item->state());
         item->setDisabledInMode(disabled);
-        item->setToolTip(PackmlChartTexts::stateToolTip(item->state(), item->displayName(), disabled, mode));
+        const std::optional<core::packml::GrafcetChoice> grafcet =
+            shown ? std::optional(shown->grafcetChoice(item->state())) : std::nullopt;
+        item->setToolTip(PackmlChartTexts::stateToolTip(item->state(), item->displayName(), disabled, mode, grafcet));
     }
 }
 

@@ -49,7 +49,8 @@ QStringList PackmlChartTexts::frameLabels(Command command, const QString& condit
     return {label};
 }
 
-QString PackmlChartTexts::stateToolTip(State state, const QString& displayName, bool disabled, const QString& mode)
+QString PackmlChartTexts::stateToolTip(State state, const QString& displayName, bool disabled, const QString& mode,
+                                       const std::optional<core::packml::GrafcetChoice>& grafcet)
 {
     const core::packml::StateInfo& info = core::packml::stateInfo(state);
     QString text = QStringLiteral("<b>%1</b> (%2)").arg(displayName.toHtmlEscaped()).arg(static_cast<int>(state));
@@ -58,6 +59,20 @@ QString PackmlChartTexts::stateToolTip(State state, const QString& displayName, 
     if (disabled)
         //: %1: the unit mode the chart shows ("3 Manual")
         text += line(tr("Disabled in mode %1: never active there.").arg(mode));
+    else if (grafcet && core::packml::holdsGrafcet(state)) {
+        using Kind = core::packml::GrafcetChoice::Kind;
+        switch (grafcet->kind) {
+        case Kind::Own: text += line(tr("Runs its own nested GRAFCET in this mode.")); break;
+        case Kind::SameAs:
+            //: %1: the number of the unit mode whose GRAFCET runs
+            text += line(tr("Runs the nested GRAFCET of mode %1 for this state.").arg(grafcet->sameAsMode));
+            break;
+        case Kind::None:
+            text += line(state == State::Execute ? tr("No nested GRAFCET in this mode: it waits for a command.")
+                                                 : tr("No nested GRAFCET in this mode: it completes at once."));
+            break;
+        }
+    }
     return text;
 }
 

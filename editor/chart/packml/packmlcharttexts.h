@@ -3,6 +3,7 @@
 // The texts of the PackML chart that depend on the mode shown: the labels of
 // its arrows and the tooltips of its states and arrows, in the UI language.
 
+#include "core/templates/packml/packmlconfiguration.h"
 #include "core/templates/packml/packmlrules.h"
 
 #include <QCoreApplication>
@@ -32,9 +33,11 @@ public:
                                    const std::optional<core::packml::Destination>& destination);
 
     // The state's name, kind and meaning, and whether the mode shown
-    // disables it (`mode` empty: the template, no mode).
+    // disables it (`mode` empty: the template, no mode); for a state that
+    // holds a GRAFCET, what runs there in that mode (`grafcet` nullopt: no
+    // mode shown).
     static QString stateToolTip(core::packml::State state, const QString& displayName, bool disabled,
-                                const QString& mode);
+                                const QString& mode, const std::optional<core::packml::GrafcetChoice>& grafcet);
     // Source → target, the command and what it does (or what SC means),
     // whether it is optional, and where it leads in the mode shown.
     static QString transitionToolTip(const core::packml::TemplateTransition& transition,
