@@ -506,3 +506,41 @@ TEST_CASE("A TON of the resumed GRAFCET counts the pause (spec §4)", "[packml-s
     CHECK(activeSteps(simulator, 1, State::Execute) == "2");
     CHECK(boolValue(simulator, "Done"));
 }
+
+TEST_CASE("A manual SC holds or completes a state without GRAFCET (spec §4's simulation aid)", "[packml-sim]")
+{
+    Model model = newModel(Edition::Y2015);
+    addGrafcet(model, 1, State::Starting, {{1, true, {"S Complete"}}}, {});
+    PackmlSimulator simulator(model);
+    const auto indexOf = [&](State state) {
+        const ProgramInstance* instance = simulator.program().instance(1, state);
+        REQUIRE(instance != nullptr);
+        return static_cast<int>(instance - simulator.program().instances.data());
+    };
+    const int resetting = indexOf(State::Resetting);
+    REQUIRE(simulator.setManualComplete(resetting, false).ok);
+    CHECK(simulator.manualComplete(resetting) == std::optional<bool>(false));
+    CHECK(firedText(pulse(simulator, "Cmd_Reset")) == "Stopped-Reset->Resetting");
+    for (int i = 0; i < 3; ++i)
+        CHECK(firedText(simulator.scan()) == "none"); // held: the skeleton would complete at once
+    REQUIRE(simulator.setManualComplete(resetting, true).ok);
+    CHECK(firedText(simulator.scan()) == "Resetting-SC->Idle");
+
+    // Execute's skeleton never completes; a manual TRUE is its SC in 2015.
+    const int execute = indexOf(State::Execute);
+    REQUIRE(simulator.setManualComplete(execute, true).ok);
+    CHECK(firedText(pulse(simulator, "Cmd_Start")) == "Idle-Start->Starting");
+    CHECK(firedText(simulator.scan()) == "Starting-SC->Execute");
+    CHECK(firedText(simulator.scan()) == "Execute-SC->Completing");
+    const Status refused = simulator.setManualComplete(indexOf(State::Starting), true);
+    CHECK_FALSE(refused.ok);
+    CHECK(refused.message == "the Complete of Production_Starting comes from its nested GRAFCET");
+    CHECK_FALSE(simulator.setManualComplete(-1, true).ok);
+
+    // Back to the skeleton: Resetting completes at once again.
+    REQUIRE(simulator.setManualComplete(resetting, std::nullopt).ok);
+    simulator.reset();
+    pulse(simulator, "Cmd_Reset");
+    CHECK(firedText(simulator.scan()) == "Resetting-SC->Idle");
+    CHECK(simulator.manualComplete(execute) == std::optional<bool>(true)); // kept by reset()
+}

@@ -207,7 +207,28 @@ PackmlSimulator::PackmlSimulator(const Model& model)
         if (!instance.isSkeleton())
             m_engines.back().emplace(program().grafcets[static_cast<std::size_t>(instance.grafcet)].grafcet, slotOf, typeOf);
     }
+    m_manualComplete.assign(m_engines.size(), std::nullopt);
     reset();
+}
+
+Status PackmlSimulator::setManualComplete(int instance, std::optional<bool> complete)
+{
+    if (instance < 0 || static_cast<std::size_t>(instance) >= m_engines.size())
+        return Status::failure("simulation.unknown-instance", "no instance has index " + std::to_string(instance));
+    const ProgramInstance& programInstance = program().instances[static_cast<std::size_t>(instance)];
+    if (!programInstance.isSkeleton()) {
+        return Status::failure("simulation.complete-from-grafcet",
+                               "the Complete of " + programInstance.name + " comes from its nested GRAFCET");
+    }
+    m_manualComplete[static_cast<std::size_t>(instance)] = complete;
+    return Status::success();
+}
+
+std::optional<bool> PackmlSimulator::manualComplete(int instance) const
+{
+    if (instance < 0 || static_cast<std::size_t>(instance) >= m_manualComplete.size())
+        return std::nullopt;
+    return m_manualComplete[static_cast<std::size_t>(instance)];
 }
 
 const PackmlProgram& PackmlSimulator::program() const
@@ -447,10 +468,13 @@ void PackmlSimulator::callFunctionBlock(int instance, bool initialization)
         return;
     }
     // The skeleton: Initialization clears Complete; an acting state's body
-    // sets it at once, Execute's never does (spec §4).
+    // sets it at once, Execute's never does (spec §4). A manual Complete is
+    // written by the body instead.
     if (initialization)
         m_complete[index] = 0;
-    if (isActing(program().instances[index].state))
+    if (const std::optional<bool>& manual = m_manualComplete[index])
+        m_complete[index] = *manual ? 1 : 0;
+    else if (isActing(program().instances[index].state))
         m_complete[index] = 1;
 }
 

@@ -71,6 +71,15 @@ public:
     const NestedEngine* engine(int instance) const;
     bool complete(int instance) const { return m_complete[static_cast<std::size_t>(instance)] != 0; }
 
+    // A simulation aid the generated code does not have (spec §4, as GEMMA's
+    // manual Complete): the Complete of an instance without GRAFCET comes
+    // from the user, written by its body in every call (so also in the
+    // call after Initialization), instead of its skeleton's. nullopt: the
+    // skeleton again. Fails for an instance that runs a GRAFCET (its
+    // GRAFCET writes Complete) or an index out of range. Kept by reset().
+    Status setManualComplete(int instance, std::optional<bool> complete);
+    std::optional<bool> manualComplete(int instance) const;
+
     const PackmlProgram& program() const;
 
 private:
@@ -105,6 +114,7 @@ private:
     std::vector<char> m_requestMemory; // by PackmlProgram::modes index
     std::vector<std::optional<NestedEngine>> m_engines; // by instance
     std::vector<char> m_complete;                       // by instance
+    std::vector<std::optional<bool>> m_manualComplete;  // by instance
 };
 
 } // namespace core::packml
