@@ -72,6 +72,7 @@ std::string otherText(const ScenarioError& e)
     case Kind::UnknownCommand: return "unknown command " + quote(e.subject);
     case Kind::UnknownMode: return "unknown unit mode " + quote(e.subject);
     case Kind::UnknownState: return "unknown state " + quote(e.subject);
+    case Kind::UnknownInstance: return "unknown instance " + quote(e.subject);
     case Kind::PackMLOnly: return quote(e.subject) + " is for PackML models only";
     case Kind::NotForPackML: return quote(e.subject) + " is for GEMMA models only";
     case Kind::EdgeTooSoon:

@@ -61,6 +61,7 @@ struct ScenarioError {
         UnknownCommand,           // as written: no command of the model's edition (PackML)
         UnknownMode,              // as written: no mode of the model (PackML)
         UnknownState,             // as written: no PackML state
+        UnknownInstance,          // as written: no instance <Mode>_<State> (PackML `set complete`)
         PackMLOnly,               // subject: the keyword ("command", "state"); a GEMMA scenario
         NotForPackML,             // subject: the keyword ("step", "token"); a PackML scenario
         // A command (mode) in the scan right after another: the request

@@ -205,6 +205,9 @@ QString scenarioErrorMessage(const core::ScenarioError& error)
     case Kind::UnknownCommand: return SimulationText::tr("unknown command '%1'").arg(subject);
     case Kind::UnknownMode: return SimulationText::tr("unknown unit mode '%1'").arg(subject);
     case Kind::UnknownState: return SimulationText::tr("unknown state '%1'").arg(subject);
+    case Kind::UnknownInstance:
+        //: %1: a PackML function block instance (Production_Resetting)
+        return SimulationText::tr("unknown instance '%1'").arg(subject);
     case Kind::PackMLOnly:
         //: %1: scenario syntax ("command", "expect state")
         return SimulationText::tr("'%1' is for PackML models only").arg(subject);

@@ -1,6 +1,7 @@
 #include "packmlcapper.h"
 
 #include "core/simulation/simulator.h"
+#include "core/templates/packml/packmlmodel.h"
 #include "core/templates/packml/packmlscenario.h"
 #include "modelfactory.h"
 
@@ -150,4 +151,34 @@ TEST_CASE("PackML scenario lines: syntax, and refused on a GEMMA model", "[packm
     CHECK(errorTexts(validateScenario(scenario, gemma))
           == std::vector<std::string>{"s.txt:1:15: 'command' is for PackML models only",
                                       "s.txt:2:19: 'expect mode' is for PackML models only"});
+}
+
+TEST_CASE("PackML scenarios: set complete gives an instance without GRAFCET a manual SC", "[packml-sim]")
+{
+    const auto capper = packmltests::loadCapper();
+    PackmlSimulator simulator(*capper);
+    // Production's Resetting runs a GRAFCET; Manual disables Starting (no instance).
+    const Scenario bad = parsed("at 1: set complete Production_Resetting = TRUE\n"
+                                "at 1: set complete Manual_Starting = auto\n"
+                                "at 2: expect complete Manual_Execute = TRUE\n");
+    CHECK(errorTexts(validatePackmlScenario(bad, simulator))
+          == std::vector<std::string>{
+              "s.txt:1:20: the Complete of Production_Resetting comes from its nested GRAFCET: it cannot be set",
+              "s.txt:2:20: unknown instance 'Manual_Starting'",
+              "s.txt:3:23: 'expect complete' is for GEMMA models only",
+          });
+
+    Model model = newModel(Edition::Y2015);
+    PackmlSimulator held(model);
+    const Scenario scenario = parsed("at 1: set complete production_resetting = FALSE\n"
+                                     "at 1: command Reset\n"
+                                     "at 3: expect state Resetting\n"
+                                     "at 4: set complete Production_Resetting = auto\n"
+                                     "at 4: expect state Idle\n");
+    REQUIRE(validatePackmlScenario(scenario, held).empty());
+    const PackmlScenarioRunResult result = runPackmlScenario(scenario, held);
+    CHECK(failureTexts(result.failures).empty());
+    // A new run starts from the skeletons again.
+    const PackmlScenarioRunResult again = runPackmlScenario(parsed("at 1: command Reset\nat 2: expect state Idle\n"), held);
+    CHECK(failureTexts(again.failures).empty());
 }

@@ -96,6 +96,8 @@ private:
             if (!findStateNamed(action.name))
                 error(action, action.column, ErrorKind::UnknownState, action.name);
             break;
+        case ActionKind::SetComplete:
+        case ActionKind::SetCompleteAuto: checkManualComplete(action); break;
         case ActionKind::ExpectFired:
         case ActionKind::ExpectNoFiring: break;
         default:
@@ -124,6 +126,19 @@ private:
             problem.detail = defaultValueProblem(variable.type, action.value);
             problem.message = toText(problem);
         }
+    }
+
+    // set complete <Mode>_<State>: an instance without GRAFCET.
+    void checkManualComplete(const ScenarioAction& action)
+    {
+        const std::optional<int> instance = findInstanceNamed(m_simulator.program(), action.name);
+        if (!instance) {
+            error(action, action.column, ErrorKind::UnknownInstance, action.name);
+            return;
+        }
+        const ProgramInstance& found = m_simulator.program().instances[static_cast<std::size_t>(*instance)];
+        if (!found.isSkeleton())
+            error(action, action.column, ErrorKind::CompleteFromGrafcet, found.name);
     }
 
     // One command (mode) per scan: CntrlCmd (UnitMode) holds one number.
@@ -169,6 +184,14 @@ std::string modeNameOf(const PackmlProgram& program, int number)
 }
 
 } // namespace
+
+std::optional<int> findInstanceNamed(const PackmlProgram& program, std::string_view name)
+{
+    for (std::size_t i = 0; i < program.instances.size(); ++i)
+        if (equalsIgnoreCase(program.instances[i].name, name))
+            return static_cast<int>(i);
+    return std::nullopt;
+}
 
 std::optional<Command> findCommandNamed(std::string_view name, Edition edition)
 {
@@ -240,6 +263,24 @@ void PackmlScenarioRunner::setInput(const ScenarioAction& action, std::string_vi
     m_lastFailures.push_back(std::move(failure));
 }
 
+void PackmlScenarioRunner::setManualComplete(const ScenarioAction& action)
+{
+    const std::optional<int> instance = findInstanceNamed(m_simulator.program(), action.name);
+    const std::optional<bool> value =
+        action.kind == ActionKind::SetCompleteAuto ? std::nullopt : std::optional(action.value == "TRUE");
+    const Status status = instance ? m_simulator.setManualComplete(*instance, value)
+                                   : Status::failure("simulation.unknown-instance", "no instance is named " + action.name);
+    if (status)
+        return;
+    PackmlScenarioFailure failure;
+    failure.scan = m_simulator.scanCount() + 1;
+    failure.line = action.line;
+    failure.kind = PackmlScenarioFailure::Kind::CannotApply;
+    failure.subject = action.name;
+    failure.detail = status.message;
+    m_lastFailures.push_back(std::move(failure));
+}
+
 void PackmlScenarioRunner::apply(const ScenarioAction& action)
 {
     const PackmlProgram& program = m_simulator.program();
@@ -247,6 +288,10 @@ void PackmlScenarioRunner::apply(const ScenarioAction& action)
     const Request* request = nullptr;
     if (action.kind == ActionKind::SetVariable) {
         setInput(action, action.name, action.value);
+        return;
+    }
+    if (action.kind == ActionKind::SetComplete || action.kind == ActionKind::SetCompleteAuto) {
+        setManualComplete(action);
         return;
     }
     if (action.kind == ActionKind::Command) {
@@ -351,7 +396,11 @@ PackmlScanRecord PackmlScenarioRunner::step()
 
 PackmlScenarioRunResult runPackmlScenario(const Scenario& scenario, PackmlSimulator& simulator, std::int64_t scans)
 {
+    // A scenario starts from the program's start state with every Complete from its skeleton.
     simulator.reset();
+    for (std::size_t i = 0; i < simulator.program().instances.size(); ++i)
+        if (simulator.program().instances[i].isSkeleton())
+            simulator.setManualComplete(static_cast<int>(i), std::nullopt);
     PackmlScenarioRunResult result;
     PackmlScenarioRunner runner(scenario, simulator);
     const std::int64_t count = scans > 0 ? scans : scenario.lastScan();

@@ -8,6 +8,7 @@
 //   at 9: expect state Idle
 //   at 9: expect mode Manual
 //   at 9: expect fired Stopped-Reset->Idle
+//   at 3: set complete Production_Resetting = FALSE   # a manual SC (auto: the skeleton's)
 //
 // and the `set` and `expect variable` lines of every scenario. A command or
 // a mode goes through the PackTags request for exactly one scan: the request
@@ -29,7 +30,8 @@ namespace core::packml {
 // Names and values against the simulator's program: unknown variables,
 // commands, modes and states, sets of non-inputs, values not of the
 // variable's type, two commands (modes) in one scan or in two scans in a
-// row, and the GEMMA-only lines (steps, tokens, Complete, Entry, nested).
+// row, `set complete` of an unknown instance or of one running a GRAFCET,
+// and the GEMMA-only lines (steps, tokens, expect complete, Entry, nested).
 std::vector<ScenarioError> validatePackmlScenario(const Scenario& scenario, const PackmlSimulator& simulator);
 
 struct PackmlScenarioFailure {
@@ -68,6 +70,7 @@ public:
 private:
     void apply(const ScenarioAction& action);
     void setInput(const ScenarioAction& action, std::string_view name, const std::string& value);
+    void setManualComplete(const ScenarioAction& action);
     void check(const ScenarioAction& action, const PackmlScanRecord& record);
 
     const Scenario& m_scenario;
@@ -91,5 +94,6 @@ PackmlScenarioRunResult runPackmlScenario(const Scenario& scenario, PackmlSimula
 std::optional<Command> findCommandNamed(std::string_view name, Edition edition);
 std::optional<int> findModeNamed(const PackmlProgram& program, std::string_view name);
 std::optional<State> findStateNamed(std::string_view name);
+std::optional<int> findInstanceNamed(const PackmlProgram& program, std::string_view name); // index in instances
 
 } // namespace core::packml
