@@ -113,6 +113,10 @@ int simulatePackml(const core::Model& model, const std::vector<std::string>& fil
     std::size_t failures = 0;
     for (std::int64_t i = 0; i < scans; ++i) {
         const core::packml::PackmlScanRecord record = runner.step();
+        if (const auto& fault = simulator.fault()) {
+            streams.err << files[0] << ": " << core::toText(*fault) << lineEnd;
+            return RunTimeFault;
+        }
         printScan(record, simulator, trace, streams.out);
         for (const core::packml::PackmlScenarioFailure& failure : runner.lastFailures())
             streams.err << files[1] << ":" << failure.line << ": " << core::packml::toText(failure) << lineEnd;

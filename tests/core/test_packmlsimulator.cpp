@@ -1,6 +1,7 @@
 #include "packmlcapper.h"
 
 #include "core/templates/packml/packmlmodel.h"
+#include "core/templates/packml/packmlscenario.h"
 #include "core/templates/packml/packmlsimulator.h"
 
 #include <catch2/catch.hpp>
@@ -543,4 +544,49 @@ TEST_CASE("A manual SC holds or completes a state without GRAFCET (spec §4's si
     pulse(simulator, "Cmd_Reset");
     CHECK(firedText(simulator.scan()) == "Resetting-SC->Idle");
     CHECK(simulator.manualComplete(execute) == std::optional<bool>(true)); // kept by reset()
+}
+
+TEST_CASE("An integer division by zero stops the run where the PLC stops", "[packml-sim]")
+{
+    Model model = newModel(Edition::Y2015);
+    addVariable(model, "Count", VariableKind::Input, IecType::Int);
+    addVariable(model, "Batch", VariableKind::Input, IecType::Int);
+    addVariable(model, "Cap", VariableKind::Output);
+
+    SECTION("in a command condition: the scan stops in section 1")
+    {
+        REQUIRE(model.setCommandCondition(Command::Start, "Count / Batch > 1").ok);
+        PackmlSimulator simulator(model);
+        const PackmlScanRecord first = pulse(simulator, "Cmd_Reset");
+        REQUIRE(simulator.fault().has_value());
+        CHECK_FALSE(first.fired); // Reset's edge came before, but the state machine never ran
+        CHECK(toText(*simulator.fault())
+              == "scan 1: integer division by zero in the condition of the Start command (Count / Batch in "
+                 "'Count / Batch > 1'): the PLC stops with a fault, and so does the simulation");
+        simulator.scan();
+        CHECK(simulator.scanCount() == 1);
+        simulator.reset();
+        CHECK_FALSE(simulator.fault().has_value());
+        // A scenario stops at the fault: its later scans never run, its expectations are not checked.
+        const ScenarioParseResult parsed = parseScenario("at 1: command Reset\nat 1: expect state Idle\nat 3: expect state Idle\n");
+        REQUIRE(parsed.ok());
+        const PackmlScenarioRunResult result = runPackmlScenario(parsed.scenario, simulator);
+        CHECK(result.records.size() == 1);
+        CHECK(result.failures.empty());
+        CHECK(result.fault.has_value());
+        CHECK_FALSE(result.passed());
+    }
+    SECTION("in a GRAFCET: after the instance's call, before the transitions")
+    {
+        addGrafcet(model, 1, State::Resetting, {{1, true, {"N Cap"}}, {2, false, {}}}, {{1, 1, 2, "Count / Batch > 1"}});
+        PackmlSimulator simulator(model);
+        pulse(simulator, "Cmd_Reset");
+        CHECK_FALSE(simulator.fault().has_value());
+        const PackmlScanRecord faulted = scanWith(simulator, {{"Cmd_Abort", "TRUE"}});
+        REQUIRE(simulator.fault().has_value());
+        CHECK(simulator.fault()->stepId == "Production_Resetting");
+        CHECK(simulator.fault()->scan == 2);
+        CHECK_FALSE(faulted.fired); // the Abort never came to be evaluated
+        CHECK(simulator.state() == State::Resetting);
+    }
 }

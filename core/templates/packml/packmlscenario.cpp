@@ -388,7 +388,7 @@ PackmlScanRecord PackmlScenarioRunner::step()
     if (mode)
         m_simulator.setInput(kModeRequest.edgeTag, false);
     for (const ScenarioAction* action : actions)
-        if (action->isExpectation())
+        if (action->isExpectation() && !m_simulator.fault()) // a scan that faulted did not finish
             check(*action, record);
     m_failures.insert(m_failures.end(), m_lastFailures.begin(), m_lastFailures.end());
     return record;
@@ -404,9 +404,10 @@ PackmlScenarioRunResult runPackmlScenario(const Scenario& scenario, PackmlSimula
     PackmlScenarioRunResult result;
     PackmlScenarioRunner runner(scenario, simulator);
     const std::int64_t count = scans > 0 ? scans : scenario.lastScan();
-    for (std::int64_t i = 0; i < count; ++i)
+    for (std::int64_t i = 0; i < count && !simulator.fault(); ++i)
         result.records.push_back(runner.step());
     result.failures = runner.failures();
+    result.fault = simulator.fault();
     return result;
 }
 

@@ -81,9 +81,12 @@ private:
 };
 
 struct PackmlScenarioRunResult {
-    std::vector<PackmlScanRecord> records;
+    std::vector<PackmlScanRecord> records; // the scan that faulted included
     std::vector<PackmlScenarioFailure> failures;
-    bool passed() const { return failures.empty(); }
+    // The run-time fault that stopped the run (its scan's expectations are
+    // not checked, no later scan runs).
+    std::optional<SimulationFault> fault;
+    bool passed() const { return failures.empty() && !fault; }
 };
 
 // Resets the simulator and runs `scans` scans (0: to the scenario's last scan).

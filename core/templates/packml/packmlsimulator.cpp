@@ -1,6 +1,7 @@
 #include "core/templates/packml/packmlsimulator.h"
 
 #include "core/condition/conditionanalysis.h"
+#include "core/model/span.h"
 #include "core/model/iectypes.h"
 #include "core/templates/packml/packmlconfiguration.h"
 #include "core/templates/packml/packmlmodel.h"
@@ -247,13 +248,17 @@ void PackmlSimulator::reset()
     m_entry = true;
     m_resume = false;
     m_scanCount = 0;
+    m_fault.reset();
     m_cmdChangeMemory = false;
     m_modeChangeMemory = false;
     m_commandMemory.assign(program().commands.size(), 0);
     m_requestMemory.assign(program().modes.size(), 0);
-    for (std::optional<NestedEngine>& engine : m_engines)
-        if (engine)
+    for (std::optional<NestedEngine>& engine : m_engines) {
+        if (engine) {
             engine->reset();
+            engine->clearDivisionFault();
+        }
+    }
     m_complete.assign(m_engines.size(), 0);
 }
 
@@ -303,15 +308,29 @@ Status PackmlSimulator::setInputText(std::string_view name, std::string_view tex
     return setInput(name, *value);
 }
 
-bool PackmlSimulator::evaluate(const ProgramCondition& condition, const std::vector<int>& nodeSlots) const
+bool PackmlSimulator::evaluate(const ProgramCondition& condition, const std::vector<int>& nodeSlots,
+                               const std::string& place)
 {
-    if (!condition.usable)
+    if (!condition.usable || m_fault)
         return false; // the code writes FALSE for an unusable condition
-    const cond::Value result = cond::evaluate(condition.parsed.expression, [&](int node) {
-        const int slot = nodeSlots[static_cast<std::size_t>(node)];
-        return slot < 0 ? cond::Value{false} : m_values[static_cast<std::size_t>(slot)];
-    });
-    return cond::isTrue(result);
+    int division = -1;
+    const cond::Value result = cond::evaluate(
+        condition.parsed.expression,
+        [&](int node) {
+            const int slot = nodeSlots[static_cast<std::size_t>(node)];
+            return slot < 0 ? cond::Value{false} : m_values[static_cast<std::size_t>(slot)];
+        },
+        division);
+    if (division < 0)
+        return cond::isTrue(result);
+    SimulationFault fault;
+    fault.scan = m_scanCount;
+    fault.stepId = std::string(stateName(m_state));
+    fault.place = place;
+    fault.text = condition.text;
+    fault.division = excerpt(condition.text, condition.parsed.expression.at(division).span);
+    m_fault = std::move(fault);
+    return false;
 }
 
 // Step 1: the commands, sampled at the start of the scan.
@@ -322,7 +341,11 @@ PackmlSimulator::Events PackmlSimulator::commandEvents()
     const bool cmdChange = trigger(cond::isTrue(value(compiled.cmdChangeRequest)), m_cmdChangeMemory);
     for (std::size_t i = 0; i < program().commands.size(); ++i) {
         const ProgramCommand& command = program().commands[i];
-        const bool edge = trigger(evaluate(command.condition, compiled.commandSlots[i]), m_commandMemory[i]);
+        const bool edge = trigger(evaluate(command.condition, compiled.commandSlots[i],
+                                           "the condition of the " + command.name + " command"),
+                                  m_commandMemory[i]);
+        if (m_fault)
+            return events; // the PLC stops in the middle of section 1
         events.command[static_cast<std::size_t>(command.command)] = edge;
     }
     if (cmdChange) {
@@ -347,8 +370,13 @@ void PackmlSimulator::runModeManager(PackmlScanRecord& record)
     std::vector<std::size_t> requested; // mode order
     for (std::size_t i = 0; i < modes.size(); ++i) {
         bool edge = false;
-        if (modes[i].requestGenerated)
-            edge = trigger(evaluate(modes[i].request, compiled.requestSlots[i]), m_requestMemory[i]);
+        if (modes[i].requestGenerated) {
+            edge = trigger(evaluate(modes[i].request, compiled.requestSlots[i],
+                                    "the request condition of mode " + modes[i].name),
+                           m_requestMemory[i]);
+            if (m_fault)
+                return;
+        }
         if (edge || (change && unitMode == modes[i].number))
             requested.push_back(i);
     }
@@ -423,6 +451,8 @@ void PackmlSimulator::runStateMachine(const Events& events, PackmlScanRecord& re
         return;
     }
     const bool complete = programState->instance >= 0 && callInstance(programState->instance, record);
+    if (programState->instance >= 0 && instanceFaulted(programState->instance))
+        return;
     const ModeTransition* fired = nullptr;
     for (const ModeTransition& transition : programState->transitions) {
         const TemplateTransition& t = transition.transition;
@@ -456,6 +486,20 @@ bool PackmlSimulator::callInstance(int instance, PackmlScanRecord& record)
     }
     callFunctionBlock(instance, false);
     return m_complete[static_cast<std::size_t>(instance)] != 0;
+}
+
+// The engine went on with 0 for the quotient to the end of its call; the
+// scan stops after it, before the transitions.
+bool PackmlSimulator::instanceFaulted(int instance)
+{
+    std::optional<NestedEngine>& engine = m_engines[static_cast<std::size_t>(instance)];
+    if (!engine || !engine->divisionFault())
+        return false;
+    m_fault = *engine->divisionFault();
+    engine->clearDivisionFault();
+    m_fault->scan = m_scanCount;
+    m_fault->stepId = program().instances[static_cast<std::size_t>(instance)].name;
+    return true;
 }
 
 void PackmlSimulator::callFunctionBlock(int instance, bool initialization)
@@ -553,14 +597,22 @@ void PackmlSimulator::writeOutputs()
 PackmlScanRecord PackmlSimulator::scan()
 {
     const Compiled& compiled = *m_compiled;
-    ++m_scanCount;
     PackmlScanRecord record;
+    record.stateBefore = record.state = m_state;
+    record.modeBefore = record.mode = m_mode;
     record.scan = m_scanCount;
-    record.stateBefore = m_state;
-    record.modeBefore = m_mode;
+    if (m_fault)
+        return record; // the PLC stopped: no scan runs
+    record.scan = ++m_scanCount;
     const Events events = commandEvents();
-    runModeManager(record);
-    runStateMachine(events, record);
+    if (!m_fault)
+        runModeManager(record);
+    if (!m_fault)
+        runStateMachine(events, record);
+    record.state = m_state;
+    record.mode = m_mode;
+    if (m_fault)
+        return record;
     writeOutputs();
     if (compiled.stateCurrent >= 0)
         m_values[static_cast<std::size_t>(compiled.stateCurrent)] = std::int64_t{static_cast<int>(m_state)};
@@ -568,8 +620,6 @@ PackmlScanRecord PackmlSimulator::scan()
         m_values[static_cast<std::size_t>(compiled.unitModeCurrent)] = std::int64_t{m_mode};
     for (int slot : compiled.edgeSlots)
         m_previous[static_cast<std::size_t>(slot)] = cond::isTrue(m_values[static_cast<std::size_t>(slot)]);
-    record.state = m_state;
-    record.mode = m_mode;
     return record;
 }
 

@@ -25,6 +25,7 @@
 #include "core/condition/conditionevaluator.h"
 #include "core/model/status.h"
 #include "core/simulation/nestedengine.h"
+#include "core/simulation/simulationfault.h"
 #include "core/templates/packml/packmlprogram.h"
 #include "core/templates/packml/packmlscanrecord.h"
 
@@ -53,6 +54,13 @@ public:
     // changes and the Status says why.
     Status setInput(std::string_view name, const cond::Value& value);
     Status setInputText(std::string_view name, std::string_view text); // "TRUE", "9"
+
+    // The integer division or MOD by zero that stopped the run, as the PLC's
+    // task stops on it (nullopt while running): in a command or request
+    // condition the scan stops there; in an instance's GRAFCET, after its
+    // call (which went on with 0), before the transitions. After it scan()
+    // runs nothing (its record repeats the state); reset() clears it.
+    const std::optional<SimulationFault>& fault() const { return m_fault; }
 
     State state() const { return m_state; }
     int mode() const { return m_mode; }
@@ -98,7 +106,9 @@ private:
     void dropCommands(const Events& events, const ProgramState* programState, bool complete,
                       const ModeTransition* fired, PackmlScanRecord& record) const;
     void writeOutputs();
-    bool evaluate(const ProgramCondition& condition, const std::vector<int>& nodeSlots) const;
+    // FALSE and a fault at `place` on an integer division by zero.
+    bool evaluate(const ProgramCondition& condition, const std::vector<int>& nodeSlots, const std::string& place);
+    bool instanceFaulted(int instance);
 
     std::shared_ptr<const Compiled> m_compiled;
     std::vector<cond::Value> m_values; // by slot
@@ -108,6 +118,7 @@ private:
     bool m_entry = true;
     bool m_resume = false;
     std::int64_t m_scanCount = 0;
+    std::optional<SimulationFault> m_fault;
     bool m_cmdChangeMemory = false;
     bool m_modeChangeMemory = false;
     std::vector<char> m_commandMemory; // by PackmlProgram::commands index
