@@ -15,6 +15,7 @@
 #include "core/codegen/stgenerator.h"
 #include "cycletime.h"
 #include "loadreport.h"
+#include "packmlsimulate.h"
 #include "terminal.h"
 #include "verifycommand.h"
 
@@ -534,9 +535,14 @@ int commandSimulate(const Arguments& args, Streams streams)
             return usageError(streams.err, "--scans takes at most " + std::to_string(core::kMaxScenarioScan)
                                                + " scans, not " + *given);
     }
-    std::unique_ptr<core::Model> model = loadOrReport(files[0], streams.err);
+    std::unique_ptr<core::Model> model = loadOrReport(files[0], streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!model)
         return UnreadableInput;
+    if (model->templateKind() == core::TemplateKind::PackML) {
+        if (args.has("--explain"))
+            return usageError(streams.err, "--explain is not available for PackML models yet");
+        return simulatePackml(*model, files, scans, args.has("--trace"), streams);
+    }
     core::Simulator simulator(*model);
     int errors = 0;
     for (const core::GemmaProblem& problem : simulator.program().problems)

@@ -231,6 +231,10 @@ private:
             return parseSet(actions);
         if (accept("expect"))
             return parseExpect(actions);
+        if (accept("command"))
+            return parseNamed(ScenarioAction::Kind::Command, ErrorKind::ExpectedCommand, actions) && endOfLine();
+        if (accept("mode"))
+            return parseNamed(ScenarioAction::Kind::Mode, ErrorKind::ExpectedMode, actions) && endOfLine();
         return fail(ErrorKind::ExpectedSetOrExpect);
     }
 
@@ -346,10 +350,28 @@ private:
         } else if (accept("nested")) {
             if (!parseNested(actions))
                 return false;
+        } else if (accept("state")) {
+            if (!parseNamed(Kind::ExpectState, ErrorKind::ExpectedState, actions))
+                return false;
+        } else if (accept("mode")) {
+            if (!parseNamed(Kind::ExpectMode, ErrorKind::ExpectedMode, actions))
+                return false;
         } else {
             return fail(ErrorKind::ExpectedExpectItem);
         }
         return endOfLine();
+    }
+
+    // One name: command NAME, mode NAME, expect state NAME, expect mode NAME.
+    bool parseNamed(ScenarioAction::Kind kind, ErrorKind missing, std::vector<ScenarioAction>& actions)
+    {
+        Word word;
+        if (!name(missing, word))
+            return false;
+        ScenarioAction action = makeAction(kind, word);
+        action.name = std::string(word.text);
+        actions.push_back(std::move(action));
+        return true;
     }
 
     // nested STEP steps 6, 8, 10 | nested STEP unstable = TRUE|FALSE
@@ -596,6 +618,10 @@ private:
         }
         case Kind::ExpectNoFiring:
         case Kind::ExpectEntry: break;
+        case Kind::Command:
+        case Kind::Mode:
+        case Kind::ExpectState:
+        case Kind::ExpectMode: error(action, action.column, ErrorKind::PackMLOnly, std::string(scenarioKeyword(action.kind))); break;
         }
     }
 
@@ -863,6 +889,30 @@ ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, st
     result.failures = runner.failures();
     result.fault = simulator.fault();
     return result;
+}
+
+std::string_view scenarioKeyword(ScenarioAction::Kind kind)
+{
+    using Kind = ScenarioAction::Kind;
+    switch (kind) {
+    case Kind::SetVariable: return "set";
+    case Kind::SetComplete:
+    case Kind::SetCompleteAuto: return "set complete";
+    case Kind::Command: return "command";
+    case Kind::Mode: return "mode";
+    case Kind::ExpectStep: return "expect step";
+    case Kind::ExpectFired:
+    case Kind::ExpectNoFiring: return "expect fired";
+    case Kind::ExpectToken: return "expect token";
+    case Kind::ExpectVariable: return "expect variable";
+    case Kind::ExpectEntry: return "expect entry";
+    case Kind::ExpectComplete: return "expect complete";
+    case Kind::ExpectNestedSteps:
+    case Kind::ExpectUnstable: return "expect nested";
+    case Kind::ExpectState: return "expect state";
+    case Kind::ExpectMode: return "expect mode";
+    }
+    return {};
 }
 
 // --- Writing ----------------------------------------------------------------------

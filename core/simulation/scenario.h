@@ -12,6 +12,10 @@
 //   at 6: expect token Stop_F1_2_MEM = TRUE
 //   at 9: set complete F1 = auto      # back to the skeleton FB's behaviour
 //
+// A PackML model's scenario (core/templates/packml/packmlscenario.h) also
+// has `at 5: command Start`, `at 9: mode Manual`, `expect state Execute`
+// and `expect mode Manual`, and no steps, tokens or Complete.
+//
 // Scans are numbered from 1, as Simulator and `ggstudio-cli simulate` number
 // them. `at N: set ...` applies before scan N runs (scan N reads the values);
 // `at N: expect ...` is checked after scan N. Keywords are case-insensitive,
@@ -34,6 +38,8 @@ struct ScenarioAction {
         SetVariable,    // set NAME = VALUE
         SetComplete,    // set complete STEP = TRUE|FALSE (Manual mode with that value)
         SetCompleteAuto, // set complete STEP = auto (Automatic mode)
+        Command,        // command NAME (PackML: CntrlCmd with a rising edge of CmdChangeRequest)
+        Mode,           // mode NAME (PackML: UnitMode with a rising edge of UnitModeChangeRequest)
         ExpectStep,     // expect step STEP
         ExpectFired,    // expect fired TRANSITION
         ExpectNoFiring, // expect fired none
@@ -43,6 +49,8 @@ struct ScenarioAction {
         ExpectComplete, // expect complete STEP = TRUE|FALSE
         ExpectNestedSteps, // expect nested STEP steps 6, 8, 10 (value: "6, 8, 10", ascending)
         ExpectUnstable,    // expect nested STEP unstable = TRUE|FALSE
+        ExpectState,       // expect state NAME (PackML)
+        ExpectMode,        // expect mode NAME (PackML)
     };
     Kind kind = Kind::SetVariable;
     std::int64_t scan = 1;
@@ -74,6 +82,9 @@ struct ScenarioParseResult {
 
     bool ok() const { return errors.empty(); }
 };
+
+// How a scenario line spells the action: "command", "expect state".
+std::string_view scenarioKeyword(ScenarioAction::Kind kind);
 
 // Syntax only: names are not looked up (see validateScenario).
 ScenarioParseResult parseScenario(std::string_view text, std::string fileName = {});

@@ -40,6 +40,9 @@ std::string expectation(Kind kind)
     case Kind::ExpectedCompleteValue: return "TRUE, FALSE or auto";
     case Kind::ExpectedCommaOrEnd: return "',' or the end of the line";
     case Kind::ExpectedEnd: return "the end of the line";
+    case Kind::ExpectedCommand: return "a command name after 'command'";
+    case Kind::ExpectedMode: return "a mode name or number after 'mode'";
+    case Kind::ExpectedState: return "a state name after 'state'";
     default: return {};
     }
 }
@@ -66,6 +69,15 @@ std::string otherText(const ScenarioError& e)
     case Kind::CompleteFromGrafcet:
         return "the Complete of " + e.subject + " comes from its nested GRAFCET: it cannot be set";
     case Kind::InvalidUtf8: return "invalid UTF-8: a scenario file must be UTF-8 text";
+    case Kind::UnknownCommand: return "unknown command " + quote(e.subject);
+    case Kind::UnknownMode: return "unknown unit mode " + quote(e.subject);
+    case Kind::UnknownState: return "unknown state " + quote(e.subject);
+    case Kind::UnknownInstance: return "unknown instance " + quote(e.subject);
+    case Kind::PackMLOnly: return quote(e.subject) + " is for PackML models only";
+    case Kind::NotForPackML: return quote(e.subject) + " is for GEMMA models only";
+    case Kind::EdgeTooSoon:
+        return "a " + e.subject + " in scan " + std::to_string(e.scan) + " right after the one of line "
+            + std::to_string(e.otherLine) + " is not seen: the request must be FALSE for one scan in between";
     case Kind::ConflictingValue:
     case Kind::ConflictingComplete:
         return (e.kind == Kind::ConflictingValue ? e.subject : e.subject + "'s Complete") + " is set to two values in scan "

@@ -43,6 +43,9 @@ struct ScenarioError {
         ExpectedStepNumber,       // a nested step number after 'steps' or ','
         ExpectedEnd,              // the end of the line
         InvalidUtf8,              // at the first byte that is not UTF-8; the file is not read further
+        ExpectedCommand,          // a command name after 'command'
+        ExpectedMode,             // a mode name or number after 'mode'
+        ExpectedState,            // a state name after 'state'
         // Names and values (validateScenario). subject: the name, as the kind says.
         UnknownVariable,          // as written
         InvalidValue,             // the variable as declared; type: its IEC type; detail: why (English)
@@ -55,6 +58,16 @@ struct ScenarioError {
         NotAnInput,               // the variable as declared; detail: its kind ("output", "internal")
         NoGrafcet,                // the step id in capitals: it has no nested GRAFCET
         CompleteFromGrafcet,      // the step id in capitals: its Complete comes from its GRAFCET
+        UnknownCommand,           // as written: no command of the model's edition (PackML)
+        UnknownMode,              // as written: no mode of the model (PackML)
+        UnknownState,             // as written: no PackML state
+        UnknownInstance,          // as written: no instance <Mode>_<State> (PackML `set complete`)
+        PackMLOnly,               // subject: the keyword ("command", "state"); a GEMMA scenario
+        NotForPackML,             // subject: the keyword ("step", "token"); a PackML scenario
+        // A command (mode) in the scan right after another: the request
+        // tag must be FALSE for one scan for its R_TRIG to see the next edge.
+        // subject: "command" or "mode"; otherLine: the earlier one's line.
+        EdgeTooSoon,
         // A second set of one thing in one scan, to another value; at the
         // value of the later line. found: its value; otherLine, otherValue:
         // the earlier set's; scan: the scan both name.

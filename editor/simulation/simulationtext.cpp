@@ -143,6 +143,15 @@ QString syntaxErrorText(core::ScenarioError::Kind kind, const QString& found)
         return SimulationText::tr("expected TRUE, FALSE or auto, found %1").arg(found);
     case Kind::ExpectedCommaOrEnd: return SimulationText::tr("expected ',' or the end of the line, found %1").arg(found);
     case Kind::ExpectedEnd: return SimulationText::tr("expected the end of the line, found %1").arg(found);
+    case Kind::ExpectedCommand:
+        //: 'command' is scenario syntax
+        return SimulationText::tr("expected a command name after 'command', found %1").arg(found);
+    case Kind::ExpectedMode:
+        //: 'mode' is scenario syntax
+        return SimulationText::tr("expected a mode name or number after 'mode', found %1").arg(found);
+    case Kind::ExpectedState:
+        //: 'state' is scenario syntax
+        return SimulationText::tr("expected a state name after 'state', found %1").arg(found);
     default: return {};
     }
 }
@@ -193,6 +202,25 @@ QString scenarioErrorMessage(const core::ScenarioError& error)
     case Kind::UnknownTransition: return SimulationText::tr("unknown transition '%1'").arg(subject);
     case Kind::UnknownToken: return SimulationText::tr("unknown token '%1'").arg(subject);
     case Kind::InvalidUtf8: return SimulationText::tr("invalid UTF-8: a scenario file must be UTF-8 text");
+    case Kind::UnknownCommand: return SimulationText::tr("unknown command '%1'").arg(subject);
+    case Kind::UnknownMode: return SimulationText::tr("unknown unit mode '%1'").arg(subject);
+    case Kind::UnknownState: return SimulationText::tr("unknown state '%1'").arg(subject);
+    case Kind::UnknownInstance:
+        //: %1: a PackML function block instance (Production_Resetting)
+        return SimulationText::tr("unknown instance '%1'").arg(subject);
+    case Kind::PackMLOnly:
+        //: %1: scenario syntax ("command", "expect state")
+        return SimulationText::tr("'%1' is for PackML models only").arg(subject);
+    case Kind::NotForPackML:
+        //: %1: scenario syntax ("expect step", "set complete")
+        return SimulationText::tr("'%1' is for GEMMA models only").arg(subject);
+    case Kind::EdgeTooSoon:
+        //: %1: "command" or "mode" (scenario syntax); %2: a scan number; %3: a line number
+        return SimulationText::tr("a %1 in scan %2 right after the one of line %3 is not seen: the request must be "
+                                  "FALSE for one scan in between")
+            .arg(subject)
+            .arg(error.scan)
+            .arg(error.otherLine);
     case Kind::ConflictingValue:
     case Kind::ConflictingComplete: return conflictText(error);
     default: break;
