@@ -36,6 +36,11 @@ std::string formatConfiguration(const PlcProject& project);
 // IEC counterpart.
 std::string formatSingleFileIec(const PlcProject& project);
 
+// The ST literal a global is initialised with: its default as a literal of
+// its type, or the type's implicit default when it has none or it does not
+// fit (then `problem` says why).
+std::string plcInitialValue(const Variable& variable, std::string& problem);
+
 // T#20ms, T#1s500ms, T#1m0s500ms: the units from the largest to the smallest
 // non-zero one, none skipped in between (IEC 61131-3 duration grammar).
 // Written as given, never clamped: the checks refuse a duration above
