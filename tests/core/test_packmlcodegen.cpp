@@ -4,7 +4,10 @@
 
 #include "packmlcapper.h"
 
+#include "core/codegen/plcopenwriter.h"
 #include "core/codegen/stgenerator.h"
+#include "core/formats/nativeformat.h"
+#include "core/formats/plcopenreader.h"
 #include "core/templates/packml/packmlcodegen.h"
 #include "core/templates/packml/packmlconfiguration.h"
 #include "core/templates/packml/packmlmodel.h"
@@ -13,9 +16,12 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <unistd.h>
+#include <variant>
 
 using namespace core;
 using namespace core::packml;
@@ -213,4 +219,136 @@ TEST_CASE("PackML code: an unusable condition is FALSE with its error", "[packml
     CHECK(text.find("(* ERROR GG202: the condition of the Hold command is empty: write FALSE for a command that comes "
                     "only through CntrlCmd *)\nTrig_Hold(CLK := FALSE);\n")
           != std::string::npos);
+}
+
+TEST_CASE("PackML code: section 6 keeps the edge memories the nested receptivities read", "[packml-codegen]")
+{
+    Model model = newModel();
+    REQUIRE(model.addVariable(output("Pump")));
+    addOwnGrafcet(model, 1, State::Starting, "N Pump");
+    const std::string key = grafcetKey(1, State::Starting);
+    GrafcetStep done;
+    done.number = 2;
+    done.actions.push_back(GrafcetAction{ActionTiming::OnActivation, "S Complete"});
+    REQUIRE(model.addGrafcetStep(key, done));
+    REQUIRE(model.addGrafcetTransition(key, GrafcetTransition{1, {1}, {2}, "RE Cmd_Start"}));
+    const PlcProject project = buildPlcProject(model, Dialect::Iec);
+    const std::string text = formatPou(programPou(project), Dialect::Iec);
+    CHECK(text.find("UnitModeCurrent := Mode;\n"
+                    "(* 6. Edge memories of the nested receptivities *)\n"
+                    "Cmd_Start_PREV := Cmd_Start;\n"
+                    "END_PROGRAM\n")
+          != std::string::npos);
+    CHECK(text.find("    UnitModeCurrent : DINT;\n    Cmd_Start_PREV : BOOL;\nEND_VAR\n") != std::string::npos);
+    const std::string globals = formatGlobals(project);
+    CHECK(globals.find("    UnitModeCurrent : DINT := 1;\n    Cmd_Start_PREV : BOOL := FALSE;\nEND_VAR\n")
+          != std::string::npos);
+    const std::string fb = formatPou(project.pous[project.pous.size() - 2], Dialect::Iec);
+    CHECK(fb.find("FUNCTION_BLOCK Production_Starting_FB\n") != std::string::npos);
+    CHECK(fb.find("GG_Fire1 := X1 AND (Cmd_Start AND NOT Cmd_Start_PREV);") != std::string::npos);
+}
+
+TEST_CASE("PackML code: the CODESYS dialect reads every global in GVL", "[packml-codegen]")
+{
+    const auto capper = packmltests::loadCapper();
+    const PlcProject project = buildPlcProject(*capper, Dialect::Codesys);
+    CHECK(project.globalListName == "GVL");
+    const std::string program = formatPou(programPou(project), Dialect::Codesys);
+    CHECK(program.find("VAR_EXTERNAL") == std::string::npos);
+    for (const char* line : {"Trig_CmdChange(CLK := GVL.CmdChangeRequest);\n",
+                             "Trig_Abort(CLK := (GVL.Cmd_Abort OR NOT GVL.EStopOK));\n",
+                             "Ev_Abort := Trig_Abort.Q OR (Trig_CmdChange.Q AND GVL.CntrlCmd = 8);\n",
+                             "Trig_ModeChange(CLK := GVL.UnitModeChangeRequest);\n",
+                             "Trig_Production(CLK := NOT GVL.KeyManual);\n",
+                             "    IF ((Trig_ModeChange.Q AND GVL.UnitMode = 3) OR Trig_Manual.Q) AND (State = 2 OR State = 4 OR State = 9) THEN",
+                             "GVL.Cap := (Mode = 1 AND State = 6 AND NOT Entry AND Production_Execute.Cap);\n",
+                             "GVL.StateCurrent := State;\nGVL.UnitModeCurrent := Mode;\n",
+                             "    Trig_Reset : R_TRIG;\n"})
+        CHECK(program.find(line) != std::string::npos);
+    const PlcPou& execute = project.pous[1];
+    REQUIRE(execute.name == "Production_Execute_FB");
+    CHECK(execute.externals.empty());
+    CHECK(execute.body.find("GG_Fire1 := X1 AND GVL.Capped;") != std::string::npos);
+    const std::string globals = formatGlobals(project);
+    CHECK(globals.rfind("{attribute 'qualified_only'}\nVAR_GLOBAL\n    Cmd_Reset : BOOL := FALSE;\n", 0) == 0);
+    CHECK(globals.find("    StateCurrent : DINT := 2;\n    UnitModeCurrent : DINT := 1;\nEND_VAR\n") != std::string::npos);
+    // The configuration runs the PROGRAM under PackML's names; CODESYS keeps the globals in the GVL.
+    CHECK(formatConfiguration(project)
+          == "CONFIGURATION PackMLConfiguration\n"
+             "    RESOURCE PackMLResource ON PLC\n"
+             "        TASK MainTask(INTERVAL := T#20ms, PRIORITY := 1);\n"
+             "        PROGRAM PackMLInstance WITH MainTask : Capper;\n"
+             "    END_RESOURCE\n"
+             "END_CONFIGURATION\n");
+}
+
+namespace {
+
+// xmllint against the TC6 v2.01 schema, as tests/core/test_plcopen.cpp does
+// (CODESYS files after the namespace swap: their structure is the same).
+bool validatesAgainstSchema(std::string text, const std::string& fileName)
+{
+    const std::string from(kPlcOpenNamespace200);
+    if (const std::size_t at = text.find(from); at != std::string::npos)
+        text.replace(at, from.size(), std::string(kPlcOpenNamespace201));
+    const auto folder = std::filesystem::temp_directory_path() / ("ggstudio-packml-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    const auto file = folder / fileName;
+    std::ofstream(file, std::ios::binary) << text;
+    const std::string command = "xmllint --noout --nonet --schema '" GGSTUDIO_REFERENCE_DIR
+                                "/plcopen/tc6_xml_v201.xsd' '" + file.string() + "' 2>'" + file.string() + ".log'";
+    const int status = std::system(command.c_str());
+    if (status != 0) {
+        std::ifstream log(file.string() + ".log");
+        for (std::string line; std::getline(log, line);)
+            UNSCOPED_INFO(line);
+    }
+    std::filesystem::remove_all(folder);
+    return status == 0;
+}
+
+PlcOpenOptions fixedClock()
+{
+    PlcOpenOptions options;
+    options.now = [] { return std::string("2026-12-06T10:00:00"); };
+    return options;
+}
+
+} // namespace
+
+TEST_CASE("PackML code: PLCopen XML of the Capper validates, carries the 3.0 model and opens again", "[packml-codegen]")
+{
+    const auto capper = packmltests::loadCapper();
+    for (const Dialect dialect : {Dialect::Iec, Dialect::Codesys}) {
+        const PlcProject project = buildPlcProject(*capper, dialect);
+        const std::string xml = writePlcOpenXml(project, *capper, fixedClock());
+        INFO(dialectName(dialect));
+        CHECK(validatesAgainstSchema(xml, "capper.xml"));
+        CHECK(xml.find("<pou name=\"Execute_FB\" pouType=\"functionBlock\">") != std::string::npos);
+        CHECK(xml.find("<pou name=\"Capper\" pouType=\"program\">") != std::string::npos);
+        CHECK(xml.find("<derived name=\"R_TRIG\"/>") != std::string::npos);
+        CHECK(xml.find("<configuration name=\"PackMLConfiguration\">") != std::string::npos);
+        CHECK(xml.find(saveNativeJson(*capper)) != std::string::npos);
+        CHECK(xml.find("\"version\": \"3.0\"") != std::string::npos);
+
+        std::vector<LoadWarning> warnings;
+        auto loaded = readPlcOpenModel(xml, "capper.xml", &warnings);
+        REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(loaded));
+        CHECK(std::get<std::unique_ptr<Model>>(loaded)->sameContent(*capper));
+        CHECK(warnings.empty()); // the code in the file is the code of its model
+    }
+}
+
+TEST_CASE("PackML code: a PLCopen file whose code was changed opens with a warning", "[packml-codegen]")
+{
+    const auto capper = packmltests::loadCapper();
+    std::string xml = writePlcOpenXml(buildPlcProject(*capper, Dialect::Iec), *capper, fixedClock());
+    const std::string edited = "Ev_Hold := Trig_Hold.Q OR (Trig_CmdChange.Q AND CntrlCmd = 4);";
+    const std::size_t at = xml.find(edited);
+    REQUIRE(at != std::string::npos);
+    xml.replace(at, edited.size(), "Ev_Hold := FALSE;");
+    std::vector<LoadWarning> warnings;
+    auto loaded = readPlcOpenModel(xml, "capper.xml", &warnings);
+    REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(loaded));
+    CHECK_FALSE(warnings.empty());
 }

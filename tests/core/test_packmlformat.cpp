@@ -347,14 +347,3 @@ TEST_CASE("A PackML model is saved natively and never as GG-Generator JSON", "[p
     REQUIRE(saveModelFile(model, folder.file("filler.json").string(), ModelFormat::Native));
     CHECK(filetests::readBinaryFile(folder.file("filler.json")) == filetests::readBinaryFile(kFillerFile));
 }
-
-TEST_CASE("A PLCopen file carrying a PackML model is refused, not compared with GEMMA code", "[packml-format]")
-{
-    const std::string xml = "<project><addData><data name=\"urn:ggstudio:model:1\"><model><![CDATA["
-                            + saveNativeJson(packml::newModel()) + "]]></model></data></addData></project>";
-    const LoadedModel loaded = loadModelText(xml, "packml.xml");
-    REQUIRE_FALSE(loaded.ok());
-    CHECK(loaded.format == ModelFormat::PlcOpen);
-    CHECK_THAT(loaded.error.message, Catch::StartsWith("the GG Studio model inside this PLCopen file is a PackML model"));
-    CHECK_FALSE(loaded.error.location.empty());
-}
