@@ -14,6 +14,7 @@
 
 namespace core {
 
+// A PackML model's project comes from core/templates/packml/packmlcodegen.h.
 PlcProject buildPlcProject(const Model& model, Dialect dialect);
 
 // One POU with its declarations: "PROGRAM GEMMA ... END_PROGRAM" or
@@ -27,7 +28,7 @@ std::string formatPou(const PlcPou& pou, Dialect dialect);
 std::string formatGlobals(const PlcProject& project);
 
 // CONFIGURATION ... END_CONFIGURATION with the globals, one resource, the
-// cyclic task and the GEMMA program instance.
+// cyclic task and the instance of the project's PROGRAM.
 std::string formatConfiguration(const PlcProject& project);
 
 // Every POU (function blocks first, so each type is declared before use) and

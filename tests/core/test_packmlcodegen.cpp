@@ -140,6 +140,29 @@ TEST_CASE("PackML code: edition 2022, Execute leaves on the Complete command, no
                     "Ev_Complete := Trig_Complete.Q OR (Trig_CmdChange.Q AND CntrlCmd = 10);\n")
           != std::string::npos);
     CHECK(text.find("    Ev_Complete : BOOL;\n") != std::string::npos);
+
+    // No GRAFCET: every instance runs its state's skeleton, one each, in state order.
+    const PlcProject project = buildPlcProject(model, Dialect::Iec);
+    CHECK(pouNames(project)
+          == std::vector<std::string>{"Clearing_FB", "Starting_FB", "Execute_FB", "Stopping_FB", "Aborting_FB",
+                                      "Holding_FB", "Unholding_FB", "Suspending_FB", "Unsuspending_FB",
+                                      "Resetting_FB", "Completing_FB", "PackML"});
+    CHECK(formatPou(project.pous[1], Dialect::Iec)
+          == "FUNCTION_BLOCK Starting_FB\n"
+             "VAR_INPUT\n"
+             "    Initialization : BOOL; (* TRUE in the first scan of the state *)\n"
+             "END_VAR\n"
+             "VAR_OUTPUT\n"
+             "    Complete : BOOL; (* State Complete (SC) *)\n"
+             "END_VAR\n"
+             "IF Initialization THEN\n"
+             "    Complete := FALSE;\n"
+             "    (* initialization actions *)\n"
+             "END_IF;\n"
+             "(* The behaviour of Starting goes here; it sets Complete := TRUE when the state is complete (SC). *)\n"
+             "(* Until it is written, the state completes at once: *)\n"
+             "Complete := TRUE;\n"
+             "END_FUNCTION_BLOCK\n");
 }
 
 TEST_CASE("PackML code: a user mode sharing Production's GRAFCET, its output driven by both instances",
