@@ -375,3 +375,21 @@ TEST_CASE("PackML code: a PLCopen file whose code was changed opens with a warni
     REQUIRE(std::holds_alternative<std::unique_ptr<Model>>(loaded));
     CHECK_FALSE(warnings.empty());
 }
+
+TEST_CASE("PackML code: a variable named as the code's own names is declared under another name", "[packml-codegen]")
+{
+    Model model = newModel();
+    Variable clash;
+    clash.name = "Entry";
+    REQUIRE(model.addVariable(clash));
+    REQUIRE(model.setCommandCondition(Command::Start, "Entry"));
+    const PlcProject project = buildPlcProject(model, Dialect::Iec);
+    const std::string position = std::to_string(model.variables().size());
+    const std::string globals = formatGlobals(project);
+    CHECK(globals.find("    Invalid_Name_" + position + " : BOOL := FALSE; (* ERROR: 'Entry' cannot be declared as it "
+                       "is named; every condition that reads it is FALSE *)\n")
+          != std::string::npos);
+    const std::string text = formatPou(programPou(project), Dialect::Iec);
+    CHECK(text.find("Trig_Start(CLK := FALSE);\n") != std::string::npos);
+    CHECK(text.find("Invalid_Name_") == std::string::npos); // nothing reads it
+}
