@@ -65,18 +65,18 @@ std::string PackmlNaming::qualified(std::string name) const
 
 std::string PackmlNaming::global(std::string_view name)
 {
-    const int slot = m_program.slotOf(name);
-    if (slot < 0)
+    const Variable* variable = m_symbols.find(name);
+    if (!variable)
         return qualified(std::string(name)); // not reached: usable texts name declared variables
-    m_read[static_cast<std::size_t>(slot)] = true;
-    return qualified(m_declared[static_cast<std::size_t>(slot)]);
+    const auto slot = static_cast<std::size_t>(variable - m_program.variables.data());
+    m_read[slot] = true;
+    return qualified(m_declared[slot]);
 }
 
 std::string PackmlNaming::edgeMemory(std::string_view name) const
 {
-    const int slot = m_program.slotOf(name);
-    const std::string declared = slot < 0 ? std::string(name) : m_program.variables[static_cast<std::size_t>(slot)].name;
-    return qualified(edgeMemoryName(declared));
+    const Variable* variable = m_symbols.find(name);
+    return qualified(edgeMemoryName(variable ? variable->name : std::string(name)));
 }
 
 std::vector<PlcVariable> PackmlNaming::readVariables() const
