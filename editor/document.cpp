@@ -31,6 +31,10 @@ core::Diagnostic::Target diagnosticTarget(ElementRef::Kind kind)
         return core::Diagnostic::Target::GrafcetTransition;
     case ElementRef::Kind::Model:
     case ElementRef::Kind::None:
+    case ElementRef::Kind::PackmlState: // PackML elements have no diagnostics of their own yet
+    case ElementRef::Kind::PackmlTransition:
+    case ElementRef::Kind::PackmlCommand:
+    case ElementRef::Kind::PackmlMode:
         break;
     }
     return core::Diagnostic::Target::Model;

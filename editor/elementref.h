@@ -6,12 +6,30 @@
 namespace editor {
 
 // What the user can select or point at: a step, a transition, a variable,
-// the model itself, or a step or transition of a nested GRAFCET. Holds ids
-// and numbers, never a pointer, so it stays valid across undo and reload.
+// the model itself, or a step or transition of a nested GRAFCET; in a PackML
+// model a state, a transition, a command or a unit mode. Holds ids and
+// numbers, never a pointer, so it stays valid across undo and reload.
 struct ElementRef {
     // GrafcetStep, GrafcetTransition: `id` is the GEMMA step whose nested
     // GRAFCET holds the element, `number` its step or transition number.
-    enum class Kind { None, Model, Step, Transition, Variable, GrafcetStep, GrafcetTransition };
+    // PackmlState: `id` the PackTags state name ("Execute"), `number` the
+    // unit mode the chart showed it in, or 0. PackmlTransition: `id`
+    // "Source->Target" with the template's target (before skipping),
+    // `number` as for a state. PackmlCommand: `id` the command's name
+    // ("Reset"). PackmlMode: `number` the mode's number.
+    enum class Kind {
+        None,
+        Model,
+        Step,
+        Transition,
+        Variable,
+        GrafcetStep,
+        GrafcetTransition,
+        PackmlState,
+        PackmlTransition,
+        PackmlCommand,
+        PackmlMode,
+    };
 
     Kind kind = Kind::None;
     QString id; // step id, transition id or variable name
@@ -27,6 +45,14 @@ struct ElementRef {
     {
         return {Kind::GrafcetTransition, stepId, number};
     }
+
+    static ElementRef packmlState(const QString& state, int mode = 0) { return {Kind::PackmlState, state, mode}; }
+    static ElementRef packmlTransition(const QString& source, const QString& target, int mode = 0)
+    {
+        return {Kind::PackmlTransition, source + QStringLiteral("->") + target, mode};
+    }
+    static ElementRef packmlCommand(const QString& command) { return {Kind::PackmlCommand, command}; }
+    static ElementRef packmlMode(int mode) { return {Kind::PackmlMode, QString(), mode}; }
 
     friend bool operator==(const ElementRef& a, const ElementRef& b)
     {

@@ -270,34 +270,17 @@ bool chooseExportFormat(const Arguments& args, const std::string& output, Export
     return true;
 }
 
-// "ELEMENT: error: CODE: MESSAGE" for each error of a model about to be
-// exported. The checks do not read PackML models yet: for those, the errors
-// its code marks with a comment (conditions, GRAFCETs, names).
-std::vector<std::string> exportErrors(const core::Model& model)
-{
-    std::vector<std::string> errors;
-    if (model.packml()) {
-        for (const core::GemmaProblem& problem : core::packml::buildPackmlProgram(model).problems) {
-            if (problem.kind == core::GemmaProblem::Kind::Error)
-                errors.push_back(problem.element + ": error: " + problem.code + ": " + problem.message);
-        }
-        return errors;
-    }
-    for (const core::Diagnostic& d : core::checkModel(model)) {
-        if (d.severity == core::Severity::Error)
-            errors.push_back(core::diagnosticElementLabel(d) + ": error: " + d.code + ": " + d.message);
-    }
-    return errors;
-}
-
 // Lists the errors of a model about to be exported; true when there are none.
 bool reportExportErrors(const std::string& path, const core::Model& model, bool force, std::ostream& err)
 {
-    const std::vector<std::string> errors = exportErrors(model);
-    if (errors.empty())
+    const std::vector<core::Diagnostic> diagnostics = core::checkModel(model);
+    if (!core::hasErrors(diagnostics))
         return true;
-    for (const std::string& error : errors)
-        err << path << ": " << error << lineEnd;
+    for (const core::Diagnostic& d : diagnostics) {
+        if (d.severity == core::Severity::Error)
+            err << path << ": " << core::diagnosticElementLabel(d) << ": error: " << d.code << ": " << d.message
+                << lineEnd;
+    }
     err << (force ? "ggstudio-cli: exporting anyway (--force): the code marks each problem with a comment"
                   : "ggstudio-cli: the model has errors; fix them or export anyway with --force")
         << lineEnd;

@@ -9,6 +9,7 @@
 #include "core/model/model.h"
 #include "core/model/stepnames.h"
 #include "core/condition/symboltable.h"
+#include "core/templates/packml/packmlchecks.h"
 
 #include <algorithm>
 #include <deque>
@@ -615,6 +616,8 @@ private:
 
 std::vector<Diagnostic> checkModel(const Model& model)
 {
+    if (model.templateKind() == TemplateKind::PackML)
+        return packml::checkPackMLModel(model);
     return Checker(model).run();
 }
 

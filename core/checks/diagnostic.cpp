@@ -23,7 +23,13 @@ std::string diagnosticElementLabel(const Diagnostic& diagnostic)
         return diagnostic.element + " step " + std::to_string(diagnostic.nestedNumber);
     if (diagnostic.target == Diagnostic::Target::GrafcetTransition)
         return diagnostic.element + " T" + std::to_string(diagnostic.nestedNumber);
-    return diagnostic.element;
+    switch (diagnostic.target) {
+    case Diagnostic::Target::Mode: return "mode " + diagnostic.element;
+    case Diagnostic::Target::Command: return "command " + diagnostic.element;
+    case Diagnostic::Target::ModeState: return diagnostic.element + ": " + diagnostic.state;
+    case Diagnostic::Target::Request: return "request of mode " + diagnostic.element;
+    default: return diagnostic.element;
+    }
 }
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics)

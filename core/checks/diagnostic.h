@@ -18,7 +18,15 @@ std::string_view severityName(Severity severity); // "error", "warning", "info"
 struct Diagnostic {
     // GrafcetStep and GrafcetTransition: a step or transition of the nested
     // GRAFCET of the GEMMA step named by `element`, numbered by nestedNumber.
-    enum class Target { Model, Step, Transition, Variable, GrafcetStep, GrafcetTransition };
+    // PackML models (core/templates/packml/packmlchecks.h): Mode, a unit
+    // mode (element: its name, `mode` its number); Command (element: the
+    // command's PackTags name); ModeState, a state in a mode (element: the
+    // mode's name, `state` the state's); Request, a mode's request condition
+    // (element: the mode's name).
+    enum class Target {
+        Model, Step, Transition, Variable, GrafcetStep, GrafcetTransition,
+        Mode, Command, ModeState, Request,
+    };
 
     std::string code;         // "GG201"
     Severity severity = Severity::Error;
@@ -30,11 +38,14 @@ struct Diagnostic {
     std::vector<std::string> arguments; // the values the message names, for translation
     int nestedNumber = 0;     // GrafcetStep, GrafcetTransition: the nested step or transition number
     int actionIndex = -1;     // GrafcetStep, field "action": the action's index in the step's list
+    int mode = 0;             // Mode, ModeState, Request: the unit mode's number
+    std::string state{};      // ModeState: the state's PackTags name ("Execute")
 
     friend bool operator==(const Diagnostic&, const Diagnostic&) = default;
 };
 
-// "A1", "F1->A2", the variable name, "F1 step 3", "F1 T2", or "model".
+// "A1", "F1->A2", the variable name, "F1 step 3", "F1 T2", "mode Manual",
+// "command Hold", "Manual: Execute", "request of mode Manual", or "model".
 std::string diagnosticElementLabel(const Diagnostic& diagnostic);
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics);

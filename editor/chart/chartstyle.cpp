@@ -37,6 +37,26 @@ QColor frameBorderColor(core::Family family)
     return Qt::gray;
 }
 
+QColor packmlStateFillColor(core::packml::StateKind kind)
+{
+    switch (kind) {
+    case core::packml::StateKind::Wait: return QColor(0xb8, 0xec, 0xf4);
+    case core::packml::StateKind::Acting: return QColor(0xbf, 0xe8, 0xb4);
+    case core::packml::StateKind::Dual: return QColor(0xff, 0xff, 0xff);
+    }
+    return Qt::white;
+}
+
+QColor packmlFrameFillColor(core::packml::Command command)
+{
+    return command == core::packml::Command::Abort ? QColor(0xfc, 0xee, 0xeb) : QColor(0xfd, 0xf7, 0xe4);
+}
+
+QColor packmlFrameBorderColor(core::packml::Command command)
+{
+    return command == core::packml::Command::Abort ? QColor(0xc0, 0x5a, 0x48) : QColor(0xb8, 0x8a, 0x2c);
+}
+
 // Built once, at the first use (a QApplication exists by then).
 const QFont& font()
 {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/templates/gemma/gemmatemplate.h"
+#include "core/templates/packml/packmltemplate.h"
 
 #include <QColor>
 #include <QFont>
@@ -74,6 +75,18 @@ inline QColor litActionBorderColor() { return firedColor(); }
 // failures red-orange.
 QColor frameFillColor(core::Family family);
 QColor frameBorderColor(core::Family family);
+
+// The PackML chart (spec packml.md §2.4, after seed 002's Figure 1): wait
+// states cyan, acting states green, Execute (dual) white, each pale enough to
+// print and to carry ink text; a state the shown mode disables is grey with
+// a dashed outline, an arrow that skips a state grey.
+QColor packmlStateFillColor(core::packml::StateKind kind);
+inline QColor packmlDisabledFillColor() { return QColor(0xec, 0xee, 0xf0); }
+inline QColor packmlGreyedInkColor() { return QColor(0x98, 0x9f, 0xa8); }
+// The Stop frame pale amber inside the Abort frame pale red: a controlled
+// stop inside the region a fault can reach.
+QColor packmlFrameFillColor(core::packml::Command command);
+QColor packmlFrameBorderColor(core::packml::Command command);
 
 // All the chart's text is one font, the window's own face at kFontSize units:
 // the transition labels at that size, step ids, badges and family titles

@@ -10,6 +10,7 @@
 #include "editor/style/severityicon.h"
 #include "editor/text/diagnostictext.h"
 #include "editor/text/elementlabels.h"
+#include "editor/text/packmldiagnostictext.h"
 #include "editor/verificationrunner.h"
 
 #include <QAction>
@@ -59,6 +60,12 @@ ElementRef::Kind kindOf(core::Diagnostic::Target target)
         return ElementRef::Kind::Variable;
     case core::Diagnostic::Target::Model:
         return ElementRef::Kind::Model;
+    case core::Diagnostic::Target::Mode:
+    case core::Diagnostic::Target::Command:
+    case core::Diagnostic::Target::ModeState:
+    case core::Diagnostic::Target::Request:
+        // PackML elements: the editor has no view of them to select yet.
+        return ElementRef::Kind::None;
     }
     return ElementRef::Kind::None;
 }
@@ -77,6 +84,11 @@ QString elementText(const core::Diagnostic& diagnostic)
     case core::Diagnostic::Target::GrafcetTransition:
         //: A transition of the nested GRAFCET of a GEMMA step: "F1 T2"
         return ProblemsDock::tr("%1 T%2").arg(element).arg(diagnostic.nestedNumber);
+    case core::Diagnostic::Target::Mode:
+    case core::Diagnostic::Target::Command:
+    case core::Diagnostic::Target::ModeState:
+    case core::Diagnostic::Target::Request:
+        return packmlElementText(diagnostic);
     default:
         return element;
     }

@@ -6,6 +6,7 @@
 #include "editor/text/displaytext.h"
 #include "editor/text/elementlabels.h"
 #include "editor/text/nestedproblemtext.h"
+#include "editor/text/packmldiagnostictext.h"
 #include "editor/text/valueproblemtext.h"
 
 #include "core/templates/gemma/gemmatemplate.h"
@@ -245,7 +246,10 @@ QString translated(const core::Diagnostic& d)
 {
     const std::vector<std::string>& a = d.arguments;
     const std::string& code = d.code;
-    const auto arg = [&](std::size_t i) { return argumentText(a[i]); };
+    // A PackML command or request condition is named in the UI language.
+    const auto arg = [&](std::size_t i) {
+        return i == 0 && isPackMLCondition(d) ? packmlElementText(d) : argumentText(a[i]);
+    };
     const std::size_t n = a.size();
 
     if (n == 1) {
@@ -551,7 +555,9 @@ QString verificationText(const core::VerificationFinding& finding)
 
 QString diagnosticText(const core::Diagnostic& diagnostic)
 {
-    const QString text = translated(diagnostic);
+    QString text = packmlDiagnosticText(diagnostic);
+    if (text.isEmpty())
+        text = translated(diagnostic);
     return text.isEmpty() ? fallback(diagnostic) : text;
 }
 

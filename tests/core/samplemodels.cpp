@@ -365,6 +365,15 @@ class ValidNestedBuilder {
 public:
     ValidNestedBuilder(core::Model& model, std::mt19937& random) : m_model(model), m_random(random) {}
 
+    // Random GRAFCETs at these keys (PackML: grafcetKey(mode, state), each
+    // an Own choice with an empty GRAFCET).
+    void buildAt(const std::vector<std::string>& keys)
+    {
+        declareVariables();
+        for (const std::string& key : keys)
+            buildGrafcet(key);
+    }
+
     int build()
     {
         declareVariables();
@@ -629,6 +638,11 @@ private:
 };
 
 } // namespace
+
+void addRandomGrafcetsAt(core::Model& model, std::mt19937& random, const std::vector<std::string>& keys)
+{
+    ValidNestedBuilder(model, random).buildAt(keys);
+}
 
 int addValidRandomNestedGrafcets(core::Model& model, std::mt19937& random)
 {

@@ -55,6 +55,11 @@ void addRandomNestedGrafcets(core::Model& model, std::uint32_t seed);
 // GRAFCETs added. The model's evolution rule is left as it is.
 int addValidRandomNestedGrafcets(core::Model& model, std::mt19937& random);
 
+// The GRAFCETs of addValidRandomNestedGrafcets, one at each key whatever
+// the checks say (the caller decides), with the variables they use; for a
+// PackML model each key's choice must already be Own.
+void addRandomGrafcetsAt(core::Model& model, std::mt19937& random, const std::vector<std::string>& keys);
+
 } // namespace samples
 
 namespace samples {

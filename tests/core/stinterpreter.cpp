@@ -29,6 +29,7 @@ struct StInterpreter::Statement {
 struct StInterpreter::Pou {
     std::string name; // upper case: "F1_FB"
     bool skeleton = false;
+    bool risingEdge = false; // the standard R_TRIG: CLK in, Q out, M memory
     struct Slot {
         std::string name; // as declared
         core::IecType type = core::IecType::Bool;
@@ -713,6 +714,15 @@ StInterpreter::StInterpreter(std::string_view programText, std::string_view glob
     skeleton->complete = 1;
     const Pou* const skeletonPou = skeleton.get();
     m_pous.push_back(std::move(skeleton));
+    // IEC 61131-3's R_TRIG (PackML programs): Q := CLK AND NOT M; M := CLK.
+    auto risingEdge = std::make_unique<Pou>();
+    risingEdge->name = "R_TRIG";
+    risingEdge->risingEdge = true;
+    risingEdge->slots = {{"CLK", core::IecType::Bool, false, false}, {"Q", core::IecType::Bool, false, true},
+                         {"M", core::IecType::Bool, false, false}};
+    risingEdge->slotOf = {{"CLK", 0}, {"Q", 1}, {"M", 2}};
+    const Pou* const risingEdgePou = risingEdge.get();
+    m_pous.push_back(std::move(risingEdge));
 
     // The program: its own variables live beside the globals.
     const std::string program = stripComments(programText);
@@ -753,15 +763,16 @@ StInterpreter::StInterpreter(std::string_view programText, std::string_view glob
             continue;
         }
         const std::string type = upper(d.type);
-        if (type.size() <= 3 || type.compare(type.size() - 3, 3, "_FB") != 0) {
+        const bool isRisingEdge = type == "R_TRIG";
+        if (!isRisingEdge && (type.size() <= 3 || type.compare(type.size() - 3, 3, "_FB") != 0)) {
             m_error = "unknown type " + d.type + " of " + d.name;
             return;
         }
         Instance instance;
         instance.name = d.name;
-        instance.pou = skeletonPou;
+        instance.pou = isRisingEdge ? risingEdgePou : skeletonPou;
         for (const std::unique_ptr<Pou>& pou : m_pous) {
-            if (pou->name == type)
+            if (!isRisingEdge && pou->name == type)
                 instance.pou = pou.get();
         }
         for (const Pou::Slot& slot : instance.pou->slots)
@@ -894,6 +905,17 @@ void StInterpreter::call(const Statement& s)
         return;
     }
     Instance& instance = m_instances[static_cast<std::size_t>(s.callee)];
+    if (instance.pou->risingEdge) {
+        if (s.arguments.size() != 1 || s.arguments[0].first != "CLK" || s.arguments[0].second.durationMs) {
+            if (m_runtimeError.empty())
+                m_runtimeError = "a call of the R_TRIG " + instance.name + " with other arguments than CLK";
+            return;
+        }
+        const bool clk = truth(s.arguments[0].second);
+        instance.values[1] = clk && !core::cond::isTrue(instance.values[2]);
+        instance.values[2] = clk;
+        return;
+    }
     if (s.arguments.size() != 1 || s.arguments[0].first != "INITIALIZATION" || s.arguments[0].second.durationMs) {
         if (m_runtimeError.empty())
             m_runtimeError = "a call of " + instance.name + " with other arguments than Initialization";

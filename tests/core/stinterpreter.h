@@ -5,10 +5,11 @@
 // only what the generator writes:
 // - declarations: VAR_GLOBAL, and in each POU VAR_INPUT, VAR_OUTPUT,
 //   VAR_EXTERNAL and VAR blocks of `name : TYPE [:= value];` (elementary
-//   types, the FB types S_FB, TON);
+//   types, the FB types S_FB, TON, and R_TRIG in the program);
 // - statements: assignments, IF/ELSIF/ELSE/END_IF, `CASE State OF` with
 //   integer labels, REPEAT ... UNTIL ... END_REPEAT, calls with named
-//   arguments: `F1(Initialization := Entry);`, `GG_T5_2000ms(IN := X5, PT := T#2s);`;
+//   arguments: `F1(Initialization := Entry);`, `GG_T5_2000ms(IN := X5, PT := T#2s);`,
+//   `Trig_Reset(CLK := Cmd_Reset);` (`Trig_Reset.Q` reads its output);
 // - expressions: parsed by core::cond::parse (GEMMA context: X3 is a name)
 //   and evaluated by core::cond::evaluate; `F1.Complete` reads an output of
 //   the FB instance F1, `GG_T5_2000ms.Q` / `.ET` a TON's outputs.

@@ -3,6 +3,7 @@
 // not show.
 
 #include "packmlcapper.h"
+#include "stinterpreter.h"
 
 #include "core/codegen/plcopenwriter.h"
 #include "core/codegen/stgenerator.h"
@@ -18,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -392,4 +394,57 @@ TEST_CASE("PackML code: a variable named as the code's own names is declared und
     const std::string text = formatPou(programPou(project), Dialect::Iec);
     CHECK(text.find("Trig_Start(CLK := FALSE);\n") != std::string::npos);
     CHECK(text.find("Invalid_Name_") == std::string::npos); // nothing reads it
+}
+
+TEST_CASE("PackML code: the Capper's generated IEC code runs the trace of spec 6.6", "[packml-codegen]")
+{
+    // The code as a PLC runs it, by the tests' ST interpreter (no IEC compiler in the suite).
+    const auto capper = packmltests::loadCapper();
+    const PlcProject project = buildPlcProject(*capper, Dialect::Iec);
+    std::vector<std::string> functionBlocks;
+    for (const PlcPou& pou : project.pous)
+        if (pou.kind == PouKind::FunctionBlock)
+            functionBlocks.push_back(formatPou(pou, Dialect::Iec));
+    sttest::StInterpreter plc(formatPou(programPou(project), Dialect::Iec), formatGlobals(project), functionBlocks);
+    REQUIRE(plc.error().empty());
+
+    using Inputs = std::vector<std::pair<std::string, cond::Value>>;
+    const std::map<int, Inputs> scenario{
+        {1, {{"Cmd_Reset", true}}},
+        {2, {{"Cmd_Reset", false}}},
+        {4, {{"Homed", true}}},
+        {5, {{"Cmd_Start", true}}},
+        {6, {{"Cmd_Start", false}}},
+        {7, {{"KeyManual", true}, {"Capped", true}}},
+        {8, {{"Cmd_Hold", true}}},
+        {9, {{"Cmd_Hold", false}, {"Capped", false}}},
+        {10, {{"Cmd_Unhold", true}}},
+        {11, {{"Cmd_Unhold", false}}},
+        {12, {{"Cmd_Stop", true}}},
+        {13, {{"Cmd_Stop", false}, {"KeyManual", false}}},
+        {14, {{"KeyManual", true}, {"Cmd_Reset", true}}},
+        {15, {{"EStopOK", false}}},
+        {16, {{"EStopOK", true}, {"Cmd_Reset", false}}},
+        {17, {{"CntrlCmd", std::int64_t{9}}, {"CmdChangeRequest", true}}},
+        {18, {{"UnitMode", std::int64_t{1}}, {"UnitModeChangeRequest", true}}},
+    };
+    // Scan 0 is the start; then State, UnitModeCurrent, HomeAxis Cap Eject at the end of each scan.
+    const std::vector<std::string> expected{
+        "2 1 000", "15 1 000", "15 1 100", "15 1 100", "4 1 000", "6 1 000", "6 1 010", "6 1 001", "11 1 000", "11 1 000",
+        "6 1 000", "6 1 001", "2 1 000",   "2 1 000",  "4 3 000", "9 3 000", "9 3 000", "2 3 000", "2 1 000"};
+    auto bit = [&plc](const char* name) { return cond::isTrue(plc.value(name)) ? "1" : "0"; };
+    std::vector<std::string> trace;
+    for (int scan = 0; scan < static_cast<int>(expected.size()); ++scan) {
+        if (scan > 0) {
+            if (const auto inputs = scenario.find(scan); inputs != scenario.end())
+                for (const auto& [name, value] : inputs->second)
+                    plc.setInput(name, value);
+            plc.scan();
+        }
+        trace.push_back(std::to_string(std::get<std::int64_t>(plc.value("StateCurrent"))) + " "
+                        + std::to_string(std::get<std::int64_t>(plc.value("UnitModeCurrent"))) + " " + bit("HomeAxis")
+                        + bit("Cap") + bit("Eject"));
+    }
+    CHECK(trace == expected);
+    CHECK(plc.runtimeError().empty());
 }

@@ -1,7 +1,10 @@
 #include "packmlcapper.h"
 
+#include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlmodel.h"
 #include "core/templates/packml/packmlprogram.h"
+#include "packmlfactory.h"
+#include "packmlsamples.h"
 
 #include <catch2/catch.hpp>
 
@@ -155,4 +158,76 @@ TEST_CASE("PackML program: a user variable with a reserved name makes what reads
     CHECK_FALSE(program.command(Command::Start)->condition.usable);
     REQUIRE_FALSE(program.problems.empty());
     CHECK(program.problems.front().code == "PM018");
+}
+
+TEST_CASE("The shipped PackML example builds without a problem, with the instances it documents", "[packml-program]")
+{
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
+    REQUIRE(loaded.ok());
+    const PackmlProgram program = buildPackmlProgram(*loaded.model);
+    for (const GemmaProblem& problem : program.problems)
+        FAIL_CHECK(problem.code << ": " << problem.message);
+    CHECK(program.programName == "BottleFiller");
+    std::vector<std::string> withGrafcet;
+    for (const ProgramInstance& instance : program.instances)
+        if (!instance.isSkeleton())
+            withGrafcet.push_back(instance.name + ":" + instance.typeName);
+    CHECK(withGrafcet
+          == std::vector<std::string>{"Production_Starting:Production_Starting_FB",
+                                      "Production_Execute:Production_Execute_FB",
+                                      "Production_Stopping:Production_Stopping_FB",
+                                      "Production_Aborting:Production_Aborting_FB",
+                                      "Production_Resetting:Production_Resetting_FB", "Manual_Execute:Manual_Execute_FB",
+                                      "Manual_Stopping:Production_Stopping_FB", "Manual_Aborting:Production_Aborting_FB"});
+    // Every command of the edition is accepted somewhere; Suspend and
+    // Unsuspend come from the infeed's photo-eye.
+    CHECK(commandNames(program).size() == 9);
+    CHECK(program.edgeVariables == std::vector<std::string>{"BottleIn"});
+}
+
+TEST_CASE("The PackML stress model: 31 modes sharing Production's eleven 40-step GRAFCETs", "[packml-program]")
+{
+    const Model model = factory::packmlStressModel();
+    CHECK(model.invariantViolations().empty());
+    const PackmlProgram program = buildPackmlProgram(model);
+    for (const GemmaProblem& problem : program.problems)
+        FAIL_CHECK(problem.code << ": " << problem.message);
+    CHECK(program.modes.size() == 31);
+    CHECK(program.instances.size() == 31 * 11);
+    REQUIRE(program.grafcets.size() == 11);
+    for (const ProgramGrafcet& grafcet : program.grafcets)
+        CHECK(grafcet.grafcet.steps.size() == 40);
+    CHECK(program.instance(31, State::Execute)->typeName == "Production_Execute_FB");
+    CHECK(program.mode(31)->requestGenerated);
+    CHECK(program.mode(1)->grants.size() == 30);
+}
+
+TEST_CASE("Random PackML models: programs without problems, covering what the agreement test needs",
+          "[packml-program]")
+{
+    int editions2022 = 0, userModes = 0, shared = 0, grafcets = 0, skipped = 0, emptyCommands = 0;
+    for (std::uint32_t seed = 0; seed < 40; ++seed) {
+        const Model model = samples::randomPackmlModel(seed);
+        CHECK(model.invariantViolations().empty());
+        const PackmlProgram program = buildPackmlProgram(model);
+        REQUIRE(program.problems.empty());
+        editions2022 += program.options.edition == Edition::Y2022 ? 1 : 0;
+        userModes += program.modes.back().number >= kFirstUserMode ? 1 : 0;
+        grafcets += static_cast<int>(program.grafcets.size());
+        for (const ProgramInstance& instance : program.instances)
+            shared += !instance.isSkeleton() && instance.ownerMode != instance.mode ? 1 : 0;
+        for (const ProgramMode& mode : program.modes)
+            for (const ProgramState& state : mode.states)
+                for (const ModeTransition& t : state.transitions)
+                    skipped += t.destination.skipped ? 1 : 0;
+        for (const ProgramCommand& command : program.commands)
+            emptyCommands += command.condition.text.empty() ? 1 : 0;
+        CHECK(samples::randomPackmlModel(seed).sameContent(model)); // reproducible
+    }
+    CHECK(editions2022 > 5);
+    CHECK(userModes > 5);
+    CHECK(shared > 5);
+    CHECK(grafcets > 40);
+    CHECK(skipped > 40);
+    CHECK(emptyCommands > 5);
 }

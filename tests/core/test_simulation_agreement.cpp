@@ -130,3 +130,26 @@ TEST_CASE("The ST interpreter reads what the generator writes", "[simulation]")
     CHECK(plc.state() == 1);
     CHECK(plc.runtimeError().empty());
 }
+
+TEST_CASE("The ST interpreter runs the standard R_TRIG as a program instance", "[simulation]")
+{
+    // PackML programs sample each command through an R_TRIG (spec packml.md §6.3).
+    const std::string globals = "VAR_GLOBAL\n    Button : BOOL;\n    Count : INT;\nEND_VAR\n";
+    const std::string program = "PROGRAM P\nVAR_EXTERNAL\n    Button : BOOL;\n    Count : INT;\nEND_VAR\n"
+                                "VAR\n    Trig_Button : R_TRIG;\nEND_VAR\n"
+                                "Trig_Button(CLK := Button);\nIF Trig_Button.Q THEN Count := Count + 1; END_IF;\n"
+                                "END_PROGRAM\n";
+    sttest::StInterpreter plc(program, globals);
+    REQUIRE(plc.error().empty());
+    const std::vector<bool> presses{true, true, false, true, false, false, true};
+    std::vector<std::int64_t> counts;
+    for (const bool pressed : presses) {
+        plc.setInput("Button", pressed);
+        plc.scan();
+        counts.push_back(std::get<std::int64_t>(plc.value("Count")));
+    }
+    // TRUE in the first scan is an edge; holding it is not.
+    CHECK(counts == std::vector<std::int64_t>{1, 1, 1, 2, 2, 2, 3});
+    CHECK(plc.runtimeError().empty());
+    CHECK(plc.member("Trig_Button", "Q") == std::optional<core::cond::Value>(true));
+}

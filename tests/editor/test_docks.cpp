@@ -28,12 +28,15 @@
 #include "editor/text/conditionerrortext.h"
 #include "editor/text/conditiontypeerrortext.h"
 #include "editor/text/diagnostictext.h"
+#include "editor/text/packmldiagnostictext.h"
 #include "editor/text/valueproblemtext.h"
 
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
 #include "core/condition/symboltable.h"
 #include "core/formats/modelfiles.h"
+#include "core/checks/checks.h"
+#include "core/templates/packml/packmlmodel.h"
 
 #include <QAbstractItemView>
 #include <QApplication>
@@ -146,6 +149,7 @@ private slots:
     void wrappingLabelHeightFollowsTextAndFont();
     void diagnosticTextTranslatesByCode();
     void diagnosticTextWordsTheTeacherChecks();
+    void diagnosticTextWordsEveryPackMLCheck();
     void secondaryTextIsReadable();
     void syntaxErrorsAreInTheUiLanguage();
     void typeAndValueErrorsAreInTheUiLanguage();
@@ -1285,6 +1289,124 @@ void TestDocks::diagnosticTextWordsTheTeacherChecks()
              QString("The selection after step 3 of F2 is not complete: with CP1 = TRUE, CP2 = TRUE none of T3, T4 "
                      "fires and the GRAFCET waits in step 3; add a branch for these values unless waiting is "
                      "intended."));
+}
+
+namespace {
+
+core::Variable packmlVariable(std::string name, core::VariableKind kind = core::VariableKind::Input)
+{
+    core::Variable variable;
+    variable.name = std::move(name);
+    variable.kind = kind;
+    return variable;
+}
+
+// Gives (mode, state) of a PackML model its own GRAFCET: one initial step
+// with one action.
+void packmlGrafcet(core::Model& model, int mode, core::packml::State state, core::GrafcetAction action)
+{
+    QVERIFY(model.setGrafcetChoice(mode, state, core::packml::GrafcetChoice::own()));
+    core::GrafcetStep step;
+    step.initial = true;
+    step.actions.push_back(std::move(action));
+    QVERIFY(model.addGrafcetStep(core::packml::grafcetKey(mode, state), step));
+}
+
+// PackML models that, together, raise every code PM001-PM019.
+std::vector<core::Diagnostic> everyPackMLCheck()
+{
+    using core::packml::Command;
+    using core::packml::State;
+    using core::packml::StateSet;
+    std::vector<core::Diagnostic> all;
+    const auto collect = [&](const core::Model& model) {
+        for (const core::Diagnostic& d : core::checkModel(model))
+            all.push_back(d);
+    };
+
+    core::Model settings = core::packml::newModel(core::packml::Edition::Y2022);
+    settings.removeMode(1);
+    settings.setPackMLInitialState(State::Execute);
+    settings.setName("Bad name");
+    settings.addMode(4, "4x");
+    settings.addMode(5, "Cleaning");
+    settings.setModeChangeStates(5, StateSet{});
+    settings.setModeDisabled(2, StateSet{State::Stopped, State::Held, State::Unholding});
+    settings.setModeChangeStates(3, StateSet{State::Clearing, State::Stopped, State::Idle, State::Aborted});
+    settings.setCommandCondition(Command::Stop, "cmd_hold");
+    settings.addVariable(packmlVariable("Lamp", core::VariableKind::Output));
+    settings.addVariable(packmlVariable("CntrlCmd"));
+    settings.setCommandCondition(Command::Start, "Cmd_Start AND Lamp");
+    settings.setCommandCondition(Command::Reset, "RE Cmd_Reset");
+    settings.setCommandCondition(Command::Unhold, "");
+    collect(settings);
+
+    core::Model paths = core::packml::newModel(core::packml::Edition::Y2022);
+    paths.setModeChangeStates(1, StateSet{State::Stopped});
+    packmlGrafcet(paths, 1, State::Resetting, {core::ActionTiming::OnActivation, "R Complete"});
+    packmlGrafcet(paths, 2, State::Aborting, {core::ActionTiming::OnActivation, "R Complete"});
+    packmlGrafcet(paths, 1, State::Execute, {core::ActionTiming::OnActivation, "S Complete"});
+    packmlGrafcet(paths, 2, State::Clearing, {core::ActionTiming::OnActivation, "S Complete"});
+    paths.setModeDisabled(2, StateSet{State::Clearing});
+    paths.setGrafcetChoice(2, State::Stopping, core::packml::GrafcetChoice::sameAs(1));
+    collect(paths);
+
+    core::Model commands = core::packml::newModel(core::packml::Edition::Y2015);
+    for (int mode = 1; mode <= 3; ++mode)
+        commands.setModeDisabled(mode, StateSet{State::Holding, State::Held, State::Unholding});
+    commands.setCommandCondition(Command::Complete, "Cmd_Stop");
+    core::packml::Options options = commands.packml()->options;
+    options.completeInSuspendedHeld = true;
+    commands.setPackMLOptions(options);
+    collect(commands);
+    return all;
+}
+
+} // namespace
+
+void TestDocks::diagnosticTextWordsEveryPackMLCheck()
+{
+    std::set<std::string> codes;
+    for (core::Diagnostic d : everyPackMLCheck()) {
+        codes.insert(d.code);
+        d.message = "English";
+        // A template for the code and these arguments: the core's English is not what shows.
+        QVERIFY2(diagnosticText(d) != QString("English"), d.code.c_str());
+    }
+    for (int n = 1; n <= 19; ++n)
+        QVERIFY2(codes.count(QString("PM%1").arg(n, 3, 10, QChar('0')).toStdString()) == 1, qPrintable(QString::number(n)));
+
+    core::Diagnostic output;
+    output.code = "PM012";
+    output.target = core::Diagnostic::Target::Command;
+    output.element = "Start";
+    output.arguments = {"command Start", "Lamp"};
+    QCOMPARE(diagnosticText(output),
+             QString("The condition of command Start reads the output 'Lamp': commands and mode requests come from an "
+                     "operator, a line controller or an alarm, so read an input or an internal variable."));
+
+    // The GEMMA condition errors name a command or request in the UI language too.
+    core::Diagnostic undeclared;
+    undeclared.code = "GG203";
+    undeclared.target = core::Diagnostic::Target::Request;
+    undeclared.element = "Manual";
+    undeclared.mode = 3;
+    undeclared.arguments = {"request of mode Manual", "Key", "'Key' is not a declared variable"};
+    QCOMPARE(diagnosticText(undeclared), QString("In the condition of request of mode Manual: 'Key' is not a declared "
+                                                 "variable."));
+    core::Diagnostic empty;
+    empty.code = "GG202";
+    empty.target = core::Diagnostic::Target::Command;
+    empty.element = "Hold";
+    empty.arguments = {"command Hold"};
+    QCOMPARE(diagnosticText(empty), QString("The condition of command Hold is empty: write FALSE for a command that "
+                                            "comes only through CntrlCmd."));
+
+    core::Diagnostic state;
+    state.target = core::Diagnostic::Target::ModeState;
+    state.element = "Manual";
+    state.state = "Execute";
+    QCOMPARE(packmlElementText(state), QString("Manual: Execute"));
 }
 
 // The condition parser's errors: every kind worded in English as the core

@@ -6,6 +6,7 @@
 #include "core/condition/symboltable.h"
 #include "core/templates/packml/packmlconfiguration.h"
 #include "core/templates/packml/packmlmodel.h"
+#include "core/templates/packml/packmlprogramname.h"
 #include "core/templates/packml/packtags.h"
 
 #include <algorithm>
@@ -19,29 +20,23 @@ bool isBlank(std::string_view text)
     return std::all_of(text.begin(), text.end(), [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; });
 }
 
-std::vector<std::string> modeNamesOf(const Configuration& configuration)
-{
-    std::vector<std::string> names;
-    for (const Mode& mode : configuration.modes)
-        names.emplace_back(mode.displayName());
-    return names;
-}
-
 // The names of spec §5.3 (PM018) and the IEC rules (GG301-GG303). The six
 // PackTags are the program's own globals: reading them is what they are for,
 // unless a user variable took one of their names.
 class PackmlUnusableNames final : public UnusableNames {
 public:
     PackmlUnusableNames(const Model& model, std::string programName)
-        : m_model(model)
-        , m_programName(std::move(programName))
-        , m_modeNames(modeNamesOf(*model.packml()))
+        : m_programName(std::move(programName))
+        , m_modeNames(modeNames(*model.packml()))
     {
+        for (const PackTag& tag : packTags())
+            if (model.variableIndex(tag.name) >= 0)
+                m_takenTags.emplace_back(tag.name);
     }
 
     const char* code(std::string_view name) const override
     {
-        if (isPackTagName(name) && m_model.variableIndex(name) < 0)
+        if (isPackTagName(name) && !isTakenTag(name))
             return nullptr;
         switch (identifierProblem(name)) {
         case IdentifierProblem::None: return isReservedName(name, m_programName, m_modeNames) ? "PM018" : nullptr;
@@ -66,9 +61,15 @@ public:
     }
 
 private:
-    const Model& m_model;
+    bool isTakenTag(std::string_view name) const
+    {
+        return std::any_of(m_takenTags.begin(), m_takenTags.end(),
+                           [&](const std::string& taken) { return equalsIgnoreCase(taken, name); });
+    }
+
     std::string m_programName;
     std::vector<std::string> m_modeNames;
+    std::vector<std::string> m_takenTags; // PackTags a user variable also names (PM018)
 };
 
 // How messages name a mode's GRAFCET of a state: "Manual Execute".
@@ -337,23 +338,11 @@ std::string grafcetTypeName(std::string_view ownerModeName, State state)
     return instanceName(ownerModeName, state) + "_FB";
 }
 
-std::string programNameOf(const Model& model)
-{
-    const std::string& name = model.settings().name;
-    const Configuration* configuration = model.packml();
-    if (!configuration || identifierProblem(name) != IdentifierProblem::None || model.variableIndex(name) >= 0)
-        return std::string(kDefaultProgramName);
-    const std::vector<std::string> modeNames = modeNamesOf(*configuration);
-    if (isReservedName(name, std::string_view(), modeNames))
-        return std::string(kDefaultProgramName);
-    return name;
-}
-
 PackmlProgram buildPackmlProgram(const Model& model)
 {
     const Configuration& configuration = *model.packml();
     PackmlProgram program;
-    program.programName = programNameOf(model);
+    program.programName = programName(model);
     program.options = configuration.options;
     program.initialState = configuration.initialState;
     program.initialMode = configuration.initialMode;

@@ -88,7 +88,7 @@ struct ProgramGrafcet {
 };
 
 struct PackmlProgram {
-    std::string programName; // spec §6.1: the model's name, or "PackML"
+    std::string programName; // spec §6.1: packmlprogramname.h
     Options options;
     State initialState = State::Stopped;
     int initialMode = 1;
@@ -117,10 +117,6 @@ struct PackmlProgram {
 };
 
 PackmlProgram buildPackmlProgram(const Model& model);
-
-// Spec §6.1: the model's name when it is an IEC identifier that no
-// generated or user name takes, else "PackML" (PM003).
-std::string programNameOf(const Model& model);
 
 // "Production_Execute", "Execute_FB", "Production_Execute_FB".
 std::string instanceName(std::string_view modeName, State state);

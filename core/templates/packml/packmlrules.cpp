@@ -2,6 +2,7 @@
 
 #include "core/model/iectypes.h"
 
+#include <algorithm>
 #include <array>
 
 namespace core::packml {
@@ -69,17 +70,33 @@ bool startsWithIgnoringCase(std::string_view name, std::string_view prefix)
     return name.size() >= prefix.size() && equalsIgnoreCase(name.substr(0, prefix.size()), prefix);
 }
 
+bool isStateName(std::string_view text)
+{
+    const auto all = states();
+    return std::any_of(all.begin(), all.end(), [&](const StateInfo& info) { return equalsIgnoreCase(text, info.name); });
+}
+
+// "<State>" or "<State>_FB".
+bool namesStateOrItsBlock(std::string_view text)
+{
+    constexpr std::string_view suffix = "_FB";
+    if (isStateName(text))
+        return true;
+    return text.size() > suffix.size() && equalsIgnoreCase(text.substr(text.size() - suffix.size()), suffix)
+        && isStateName(text.substr(0, text.size() - suffix.size()));
+}
+
+// "<State>_FB", "<Mode>_<State>" or "<Mode>_<State>_FB", read from the name
+// rather than spelled for every mode and state: the checks ask for every
+// name a model's texts read.
 bool namesInstanceOrBlock(std::string_view name, std::span<const std::string> modeNames)
 {
-    for (const StateInfo& info : states()) {
-        const std::string block = std::string(info.name) + "_FB";
-        if (equalsIgnoreCase(name, block))
+    if (namesStateOrItsBlock(name) && !isStateName(name))
+        return true;
+    for (const std::string& mode : modeNames) {
+        if (name.size() > mode.size() + 1 && name[mode.size()] == '_' && startsWithIgnoringCase(name, mode)
+            && namesStateOrItsBlock(name.substr(mode.size() + 1)))
             return true;
-        for (const std::string& mode : modeNames) {
-            const std::string instance = mode + "_" + std::string(info.name);
-            if (equalsIgnoreCase(name, instance) || equalsIgnoreCase(name, instance + "_FB"))
-                return true;
-        }
     }
     return false;
 }

@@ -1,0 +1,166 @@
+#include "core/templates/packml/packmlpathchecks.h"
+
+#include "core/condition/actionparser.h"
+#include "core/model/model.h"
+#include "core/templates/packml/packmldiagnostics.h"
+#include "core/templates/packml/packmlrules.h"
+
+#include <algorithm>
+#include <deque>
+#include <string>
+
+namespace core::packml {
+
+namespace {
+
+bool anyAction(const Grafcet& grafcet, bool (*test)(const cond::ActionParseResult&))
+{
+    return std::any_of(grafcet.steps().begin(), grafcet.steps().end(), [&](const GrafcetStep& step) {
+        return std::any_of(step.actions.begin(), step.actions.end(),
+                           [&](const GrafcetAction& action) { return test(cond::parseAction(action.text)); });
+    });
+}
+
+bool makesCompleteTrue(const cond::ActionParseResult& action)
+{
+    return action.ok() && action.action.targetIsComplete && action.action.form != cond::ActionForm::Reset;
+}
+
+bool writesComplete(const cond::ActionParseResult& action)
+{
+    return action.ok() && action.action.targetIsComplete;
+}
+
+class PathChecker {
+public:
+    PathChecker(const Model& model, const Mode& mode)
+        : m_model(model)
+        , m_configuration(*model.packml())
+        , m_mode(mode)
+        , m_enabled(enabledStates(mode.disabled).enabled)
+    {
+    }
+
+    void run(std::vector<Diagnostic>& result)
+    {
+        const StateSet begin = beginStates();
+        const StateSet reached = begin.empty() ? StateSet{} : reachableFrom(begin);
+        const std::string label = modeLabel(m_mode);
+        if (!begin.empty() && !reached.contains(State::Execute))
+            result.push_back(modeDiagnostic(
+                m_mode, {"PM008", Severity::Warning, "disabled",
+                         "in mode " + label + ", no sequence of transitions leads to Execute from where the mode "
+                             + "begins (counting a State Complete only where the state's GRAFCET writes Complete)",
+                         {label}}));
+        for (const State state : m_enabled.list()) {
+            const std::string name(stateName(state));
+            if (!begin.empty() && state != State::Execute && !reached.contains(state))
+                result.push_back(modeStateDiagnostic(
+                    m_mode, state, {"PM009", Severity::Warning, "disabled",
+                                    "in mode " + label + ", no sequence of transitions reaches " + name
+                                        + " from where the mode begins: it is never active",
+                                    {label, name}}));
+            checkComplete(state, result);
+        }
+    }
+
+private:
+    // The initial state for the initial mode, and the states where another
+    // mode may change into this one.
+    StateSet beginStates() const
+    {
+        StateSet begin;
+        if (m_mode.number == m_configuration.initialMode)
+            begin.insert(m_configuration.initialState);
+        for (const Mode& other : m_configuration.modes)
+            if (other.number != m_mode.number)
+                for (const State state : modeChangeStates(other.modeChange, m_mode.modeChange, m_enabled).list())
+                    begin.insert(state);
+        return begin;
+    }
+
+    const Grafcet* grafcetOf(State state) const
+    {
+        return m_model.effectiveGrafcet(grafcetKey(m_mode.number, state));
+    }
+
+    // An acting state without GRAFCET completes at once through its skeleton;
+    // Execute's skeleton never completes (spec §4).
+    bool completes(State state) const
+    {
+        if (!holdsGrafcet(state))
+            return false;
+        const Grafcet* grafcet = grafcetOf(state);
+        return grafcet ? setsComplete(*grafcet) : isActing(state);
+    }
+
+    StateSet reachableFrom(const StateSet& begin) const
+    {
+        StateSet reached = begin;
+        std::deque<State> pending;
+        for (const State state : begin.list())
+            pending.push_back(state);
+        while (!pending.empty()) {
+            const State state = pending.front();
+            pending.pop_front();
+            for (const ModeTransition& transition : modeTransitionsFrom(state, m_enabled, m_configuration.options)) {
+                const bool fires = transition.transition.trigger == Trigger::Command || completes(state);
+                const State next = transition.destination.state;
+                if (fires && !reached.contains(next)) {
+                    reached.insert(next);
+                    pending.push_back(next);
+                }
+            }
+        }
+        return reached;
+    }
+
+    void checkComplete(State state, std::vector<Diagnostic>& result) const
+    {
+        const Grafcet* grafcet = holdsGrafcet(state) ? grafcetOf(state) : nullptr;
+        if (grafcet == nullptr)
+            return;
+        const std::string label = modeLabel(m_mode);
+        const std::string name(stateName(state));
+        if (isActing(state) && !setsComplete(*grafcet)) {
+            const bool aborting = state == State::Aborting;
+            result.push_back(modeStateDiagnostic(
+                m_mode, state,
+                {"PM010", aborting ? Severity::Error : Severity::Warning, "grafcet",
+                 "the GRAFCET of " + label + ": " + name + " never writes Complete: "
+                     + (aborting ? "nothing leaves Aborting, so the unit can never reach Aborted"
+                                 : "only Stop or Abort leave the state"),
+                 {label, name}}));
+        }
+        if (state == State::Execute && m_configuration.options.edition == Edition::Y2022
+            && anyAction(*grafcet, writesComplete))
+            result.push_back(modeStateDiagnostic(
+                m_mode, state,
+                {"PM016", Severity::Warning, "grafcet",
+                 "the GRAFCET of " + label
+                     + ": Execute writes Complete, which nothing reads in the 2022 edition: use the Complete command",
+                 {label}}));
+    }
+
+    const Model& m_model;
+    const Configuration& m_configuration;
+    const Mode& m_mode;
+    StateSet m_enabled;
+};
+
+} // namespace
+
+bool setsComplete(const Grafcet& grafcet)
+{
+    return anyAction(grafcet, makesCompleteTrue);
+}
+
+std::vector<Diagnostic> checkPaths(const Model& model)
+{
+    std::vector<Diagnostic> result;
+    for (const Mode& mode : model.packml()->modes)
+        PathChecker(model, mode).run(result);
+    return result;
+}
+
+} // namespace core::packml
