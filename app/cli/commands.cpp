@@ -11,6 +11,7 @@
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
 #include "core/templates/packml/packmlmodel.h"
+#include "core/templates/packml/packmlprogram.h"
 #include "core/codegen/stexport.h"
 #include "core/codegen/stgenerator.h"
 #include "cycletime.h"
@@ -49,10 +50,11 @@ const char* const kUsage =
     "      Generate the PLC program: PLCopen XML (default for .xml), one IEC Structured Text\n"
     "      file (default for .st) or a folder with one .st file per POU. The dialect and\n"
     "      cycle time default to the model's settings. A model with errors is refused\n"
-    "      unless --force (the code then carries a comment at each problem).\n"
+    "      unless --force (the code then carries a comment at each problem). PackML models too.\n"
     "  st MODEL [--dialect iec|codesys] [--step STEP]\n"
     "      Print the GEMMA program's Structured Text, or with --step the function block of\n"
-    "      one visible macro-step or enclosing step (its nested GRAFCET).\n"
+    "      one visible macro-step or enclosing step (its nested GRAFCET). A PackML model:\n"
+    "      its PROGRAM, or with --step the function block of an instance (Production_Execute).\n"
     "  simulate MODEL [SCENARIO] [--scans N] [--trace] [--explain]\n"
     "      Run the GEMMA program scan by scan: one line 'scan N: STEP [fired TRANSITION]' per\n"
     "      scan (--trace adds inputs, Entry, tokens, Complete, the active steps, timers and\n"
@@ -192,7 +194,7 @@ int commandNew(const Arguments& args, Streams streams)
 
 int validateOne(const std::string& path, Streams streams)
 {
-    core::LoadedModel loaded = loadAndReport(path, streams.err);
+    core::LoadedModel loaded = loadAndReport(path, streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!loaded.ok())
         return UnreadableInput;
     const std::vector<core::Diagnostic> diagnostics = core::checkModel(*loaded.model);
@@ -323,7 +325,7 @@ int commandExport(const Arguments& args, Streams streams)
     if (format == ExportFormat::StFolder && isStandardOutput(*output))
         return usageError(streams.err, "--format st-folder writes a folder: it cannot go to standard output");
 
-    std::unique_ptr<core::Model> model = loadOrReport(input, streams.err);
+    std::unique_ptr<core::Model> model = loadOrReport(input, streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!model)
         return UnreadableInput;
     core::Dialect dialect;
@@ -373,17 +375,49 @@ int printFunctionBlock(const core::Model& model, const std::string& stepId, core
     return usageError(streams.err, "--step: no function block " + name + " was generated");
 }
 
+// A PackML model: the PROGRAM, or with --step the function block an
+// instance <Mode>_<State> runs (its mode's GRAFCET, the one it is the same
+// as, or the skeleton).
+int printPackmlPou(const core::Model& model, const std::optional<std::string>& instanceName, core::Dialect dialect,
+                   Streams streams)
+{
+    const core::PlcProject project = core::buildPlcProject(model, dialect);
+    if (!instanceName) {
+        writeVerbatim(streams.out, core::formatPou(project.pous.back(), dialect));
+        return Success;
+    }
+    const core::packml::PackmlProgram program = core::packml::buildPackmlProgram(model);
+    const auto instance = std::find_if(program.instances.begin(), program.instances.end(),
+                                       [&](const core::packml::ProgramInstance& candidate) {
+                                           return core::equalsIgnoreCase(candidate.name, *instanceName);
+                                       });
+    if (instance == program.instances.end())
+        return usageError(streams.err, "--step: there is no instance '" + *instanceName
+                                           + "' in this PackML model: name a mode and an enabled acting state or "
+                                             "Execute, such as Production_Execute");
+    for (const core::PlcPou& pou : project.pous) {
+        if (pou.name == instance->typeName) {
+            writeVerbatim(streams.out, core::formatPou(pou, dialect));
+            return Success;
+        }
+    }
+    return usageError(streams.err, "--step: no function block " + instance->typeName + " was generated");
+}
+
 int commandSt(const Arguments& args, Streams streams)
 {
     if (args.positional().size() != 1)
         return usageError(streams.err, "st takes one model file");
-    std::unique_ptr<core::Model> model = loadOrReport(args.positional()[0], streams.err);
+    std::unique_ptr<core::Model> model =
+        loadOrReport(args.positional()[0], streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!model)
         return UnreadableInput;
     core::Dialect dialect;
     if (!chooseDialect(args, *model, dialect, streams.err))
         return UsageError;
     const std::optional<std::string> stepId = args.value("--step");
+    if (model->packml())
+        return printPackmlPou(*model, stepId, dialect, streams);
     if (!stepId) {
         writeVerbatim(streams.out, core::previewGemmaProgram(*model, dialect).text);
         return Success;

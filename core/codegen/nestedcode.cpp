@@ -40,15 +40,13 @@ constexpr std::string_view kFired = "GG_Fired";
 
 class NestedWriter {
 public:
-    NestedWriter(const GemmaStep& step, const GemmaProgram& program,
-                 const std::function<std::string(std::string_view)>& global,
+    NestedWriter(const NestedCodeSource& source, const std::function<std::string(std::string_view)>& global,
                  const std::function<std::string(std::string_view)>& edgeMemory)
-        : m_step(step)
-        , m_grafcet(*step.nested)
-        , m_program(program)
+        : m_source(source)
+        , m_grafcet(source.grafcet)
         , m_global(global)
         , m_edgeMemory(edgeMemory)
-        , m_untilStable(program.evolution == EvolutionRule::UntilStable)
+        , m_untilStable(source.evolution == EvolutionRule::UntilStable)
     {
         // Which usable transitions deactivate and activate each step, once:
         // every step asks for both.
@@ -94,7 +92,7 @@ private:
     {
         for (const ContinuousOutput& output : m_grafcet.outputs) {
             if (!output.isComplete)
-                m_code.outputs.push_back({output.variable, "BOOL", {}, "continuous action of " + m_step.id});
+                m_code.outputs.push_back({output.variable, "BOOL", {}, "continuous action of " + std::string(m_source.label)});
         }
         if (m_untilStable)
             m_code.outputs.push_back({std::string(kUnstableName), "BOOL", {},
@@ -118,7 +116,7 @@ private:
             m_code.locals.push_back({std::string(kEvolution), "INT", "0", "evolutions in this call"});
             m_code.locals.push_back({std::string(kFired), "BOOL", "FALSE", "a transition fired in the last evolution"});
         }
-        for (const std::string& name : m_program.edgeVariables)
+        for (const std::string& name : m_source.edgeVariables)
             if (readsEdgeOf(name))
                 m_code.edgeMemories.push_back({edgeMemoryName(name), "BOOL", {}, {}});
     }
@@ -139,8 +137,8 @@ private:
 
     void writeProblems()
     {
-        for (const GemmaProblem& problem : m_program.problems) {
-            if (problem.element != m_step.id || (problem.nestedStep == 0 && problem.nestedTransition == 0))
+        for (const GemmaProblem& problem : m_source.problems) {
+            if (problem.element != m_source.element || (problem.nestedStep == 0 && problem.nestedTransition == 0))
                 continue;
             line(0, comment("ERROR " + problem.code + ": " + problem.message + " (not generated)"));
         }
@@ -360,9 +358,8 @@ private:
         }
     }
 
-    const GemmaStep& m_step;
+    const NestedCodeSource& m_source;
     const NestedGrafcet& m_grafcet;
-    const GemmaProgram& m_program;
     const std::function<std::string(std::string_view)>& m_global;
     const std::function<std::string(std::string_view)>& m_edgeMemory;
     bool m_untilStable;
@@ -373,11 +370,20 @@ private:
 
 } // namespace
 
+NestedCode generateNestedCode(const NestedCodeSource& source,
+                              const std::function<std::string(std::string_view)>& global,
+                              const std::function<std::string(std::string_view)>& edgeMemory)
+{
+    return NestedWriter(source, global, edgeMemory).run();
+}
+
 NestedCode generateNestedCode(const GemmaStep& step, const GemmaProgram& program,
                               const std::function<std::string(std::string_view)>& global,
                               const std::function<std::string(std::string_view)>& edgeMemory)
 {
-    return NestedWriter(step, program, global, edgeMemory).run();
+    const NestedCodeSource source{*step.nested, step.id, step.id, program.evolution, program.edgeVariables,
+                                  program.problems};
+    return generateNestedCode(source, global, edgeMemory);
 }
 
 } // namespace core

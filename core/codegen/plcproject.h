@@ -37,7 +37,7 @@ struct PlcProject {
     Dialect dialect = Dialect::Iec;
     std::vector<PlcVariable> globals;
     std::string globalListName; // CODESYS: "GVL" (qualified_only); IEC: empty, globals live in the configuration
-    std::vector<PlcPou> pous;   // GEMMA first, then the FBs in state order
+    std::vector<PlcPou> pous;   // GEMMA first, then the FBs in state order; PackML: the FBs, then the PROGRAM
     std::string configurationName = "GemmaConfiguration";
     std::string resourceName = "GemmaResource";
     std::string taskName = "MainTask";

@@ -42,6 +42,7 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/codegen/nestedcode.h"
 #include "core/condition/symboltable.h"
+#include "core/templates/packml/packmlcodegen.h"
 
 #include <algorithm>
 #include <functional>
@@ -461,7 +462,9 @@ std::string normalizeRealLiteral(const std::string& text)
     return mantissa + rest;
 }
 
-std::string initialValue(const Variable& variable, std::string& problem)
+} // namespace
+
+std::string plcInitialValue(const Variable& variable, std::string& problem)
 {
     if (variable.defaultValue.empty())
         return std::string(implicitDefault(variable.type));
@@ -475,6 +478,13 @@ std::string initialValue(const Variable& variable, std::string& problem)
     if (isRealType(variable.type))
         return normalizeRealLiteral(variable.defaultValue);
     return variable.defaultValue;
+}
+
+namespace {
+
+std::string initialValue(const Variable& variable, std::string& problem)
+{
+    return plcInitialValue(variable, problem);
 }
 
 // "ERROR GG303: invalid variable name: 'State' is a name the generated code
@@ -643,6 +653,8 @@ std::string formatDuration(std::int64_t milliseconds)
 
 PlcProject buildPlcProject(const Model& model, Dialect dialect)
 {
+    if (model.packml())
+        return packml::buildPackmlPlcProject(model, dialect);
     const GemmaProgram program = buildGemmaProgram(model);
     PlcProject project;
     project.projectName = model.settings().name;
@@ -687,6 +699,15 @@ std::string formatGlobals(const PlcProject& project)
 
 namespace {
 
+// The type of the configuration's program instance: the project's PROGRAM.
+std::string programTypeName(const PlcProject& project)
+{
+    for (const PlcPou& pou : project.pous)
+        if (pou.kind == PouKind::Program)
+            return pou.name;
+    return std::string(kGemmaPouName);
+}
+
 std::string configurationText(const PlcProject& project, bool withGlobals)
 {
     std::string out = "CONFIGURATION " + project.configurationName + "\n";
@@ -696,7 +717,7 @@ std::string configurationText(const PlcProject& project, bool withGlobals)
     out += "        TASK " + project.taskName + "(INTERVAL := " + formatDuration(project.cycleTimeMs)
            + ", PRIORITY := " + std::to_string(project.taskPriority) + ");\n";
     out += "        PROGRAM " + project.programInstanceName + " WITH " + project.taskName + " : "
-           + std::string(kGemmaPouName) + ";\n";
+           + programTypeName(project) + ";\n";
     out += "    END_RESOURCE\n";
     out += "END_CONFIGURATION\n";
     return out;

@@ -14,6 +14,7 @@
 
 namespace core {
 
+// A PackML model's project comes from core/templates/packml/packmlcodegen.h.
 PlcProject buildPlcProject(const Model& model, Dialect dialect);
 
 // One POU with its declarations: "PROGRAM GEMMA ... END_PROGRAM" or
@@ -27,7 +28,7 @@ std::string formatPou(const PlcPou& pou, Dialect dialect);
 std::string formatGlobals(const PlcProject& project);
 
 // CONFIGURATION ... END_CONFIGURATION with the globals, one resource, the
-// cyclic task and the GEMMA program instance.
+// cyclic task and the instance of the project's PROGRAM.
 std::string formatConfiguration(const PlcProject& project);
 
 // Every POU (function blocks first, so each type is declared before use) and
@@ -35,6 +36,11 @@ std::string formatConfiguration(const PlcProject& project);
 // Meant for the IEC dialect: CODESYS conditions name GVL, which has no
 // IEC counterpart.
 std::string formatSingleFileIec(const PlcProject& project);
+
+// The ST literal a global is initialised with: its default as a literal of
+// its type, or the type's implicit default when it has none or it does not
+// fit (then `problem` says why).
+std::string plcInitialValue(const Variable& variable, std::string& problem);
 
 // T#20ms, T#1s500ms, T#1m0s500ms: the units from the largest to the smallest
 // non-zero one, none skipped in between (IEC 61131-3 duration grammar).

@@ -71,8 +71,8 @@ std::string unsupportedModelMessage(const Model& model, TemplateSupport support)
 {
     if (model.templateKind() == TemplateKind::Gemma || support == TemplateSupport::GemmaAndPackML)
         return {};
-    return "a PackML model (format 3.0); this version of GG Studio reads PackML files but cannot edit, check or "
-           "export them yet";
+    return "a PackML model (format 3.0); GG Studio does not handle PackML models here yet (ggstudio-cli new, "
+           "convert, validate, export, st and simulate do)";
 }
 
 LoadedModel loadSupportedModelFile(const std::string& path, TemplateSupport support)

@@ -126,12 +126,6 @@ std::variant<std::unique_ptr<Model>, LoadError> readPlcOpenModel(std::string_vie
     auto loaded = loadNativeJson(textContent(model), displayName);
     if (auto* failure = std::get_if<LoadError>(&loaded))
         return embeddedModelError(*failure, displayName);
-    // GG Studio exports no PackML model yet (its code is not generated): the
-    // code comparison below would run the GEMMA generator on it.
-    if (std::get<std::unique_ptr<Model>>(loaded)->templateKind() != TemplateKind::Gemma)
-        return LoadError{displayName, describeElementPosition(xmlText, *model),
-                         "the GG Studio model inside this PLCopen file is a PackML model, which this version of GG "
-                         "Studio does not export to PLCopen XML yet: open its model file (format 3.0) instead"};
     if (warnings)
         *warnings = plcOpenCodeDifferences(xmlText, *root, *std::get<std::unique_ptr<Model>>(loaded), displayName);
     return loaded;
