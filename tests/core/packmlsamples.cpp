@@ -97,7 +97,7 @@ private:
                 continue;
             const std::string input(info.defaultInput);
             switch (pick(6)) {
-            case 0: require(model.setCommandCondition(info.command, "")); break;
+            case 0: require(model.setCommandCondition(info.command, "FALSE")); break;
             case 1: require(model.setCommandCondition(info.command, input + " OR AnyCommand")); break;
             case 2: require(model.setCommandCondition(info.command, "NOT " + input)); break;
             default: break; // the default input

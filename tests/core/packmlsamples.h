@@ -13,8 +13,8 @@ namespace samples {
 // modes (Maintenance sometimes removed) and sometimes a user mode, random
 // disabled states kept consistent as the editor keeps them, random
 // mode-change states and request conditions (some empty, some on an INT
-// selector), command conditions that are the default input, an OR of two,
-// shared by two commands, or empty (CntrlCmd only), a random initial state
+// selector), command conditions that are the default input, an OR with an
+// input shared by several commands, a NOT, or FALSE (CntrlCmd only), a random initial state
 // and mode, and on enabled acting states and Execute random GRAFCETs (those
 // of addValidRandomNestedGrafcets), some shared by "same as". The same seed
 // gives the same model.

@@ -137,14 +137,14 @@ TEST_CASE("PackML program: conditions that cannot be used are FALSE, with the re
     CHECK(program.programName == "PackML");
     CHECK_FALSE(program.command(Command::Start)->condition.usable);
     CHECK_FALSE(program.command(Command::Stop)->condition.usable);
-    CHECK_FALSE(program.command(Command::Hold)->condition.usable); // empty: CntrlCmd only, no problem
+    CHECK_FALSE(program.command(Command::Hold)->condition.usable); // empty: FALSE, and GG202 says to write it
     CHECK(program.command(Command::Reset)->condition.usable);
     // The PackTags are the program's own globals: a request may read them.
     CHECK(program.mode(3)->request.usable);
     std::vector<std::string> problems;
     for (const GemmaProblem& problem : program.problems)
         problems.push_back(problem.code + "@" + problem.element);
-    CHECK(problems == std::vector<std::string>{"GG201@Start", "GG203@Stop"});
+    CHECK(problems == std::vector<std::string>{"GG201@Start", "GG203@Stop", "GG202@Hold"});
 }
 
 TEST_CASE("PackML program: a user variable with a reserved name makes what reads it unusable", "[packml-program]")
@@ -221,7 +221,7 @@ TEST_CASE("Random PackML models: programs without problems, covering what the ag
                 for (const ModeTransition& t : state.transitions)
                     skipped += t.destination.skipped ? 1 : 0;
         for (const ProgramCommand& command : program.commands)
-            emptyCommands += command.condition.text.empty() ? 1 : 0;
+            emptyCommands += command.condition.text == "FALSE" ? 1 : 0;
         CHECK(samples::randomPackmlModel(seed).sameContent(model)); // reproducible
     }
     CHECK(editions2022 > 5);

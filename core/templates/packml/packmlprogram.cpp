@@ -107,7 +107,7 @@ ProgramCondition analyseCondition(const BuildContext& context, const std::string
     condition.text = text;
     std::vector<GemmaProblem>& problems = context.program.problems;
     if (isBlank(text))
-        return condition; // no condition: the event comes through CntrlCmd / UnitMode only
+        return condition; // FALSE; a command's is GG202 (addCommands), a request's means "none"
     condition.parsed = cond::parse(text);
     if (!condition.parsed.ok()) {
         const cond::ParseError& error = *condition.parsed.error;
@@ -145,8 +145,13 @@ void addCommands(const BuildContext& context, std::span<const StateSet> enabledP
         ProgramCommand generated;
         generated.command = command;
         generated.name = std::string(commandName(command));
-        generated.condition = analyseCondition(context, context.configuration.command(command).condition,
-                                               generated.name, "the condition of the " + generated.name + " command");
+        const std::string label = "the condition of the " + generated.name + " command";
+        const std::string& text = context.configuration.command(command).condition;
+        generated.condition = analyseCondition(context, text, generated.name, label);
+        if (isBlank(text)) // as the checks say (GG202): FALSE is written for a command that only CntrlCmd gives
+            context.program.problems.push_back(conditionProblem(
+                "GG202", generated.name, label + " is empty: write FALSE for a command that comes only through CntrlCmd",
+                {generated.name}));
         context.program.commands.push_back(std::move(generated));
     }
 }
