@@ -29,19 +29,47 @@ core::Diagnostic::Target diagnosticTarget(ElementRef::Kind kind)
         return core::Diagnostic::Target::GrafcetStep;
     case ElementRef::Kind::GrafcetTransition:
         return core::Diagnostic::Target::GrafcetTransition;
+    case ElementRef::Kind::PackmlState:
+        return core::Diagnostic::Target::ModeState;
+    case ElementRef::Kind::PackmlCommand:
+        return core::Diagnostic::Target::Command;
+    case ElementRef::Kind::PackmlMode:
+        return core::Diagnostic::Target::Mode;
     case ElementRef::Kind::Model:
     case ElementRef::Kind::None:
-    case ElementRef::Kind::PackmlState: // PackML elements have no diagnostics of their own yet
-    case ElementRef::Kind::PackmlTransition:
-    case ElementRef::Kind::PackmlCommand:
-    case ElementRef::Kind::PackmlMode:
+    case ElementRef::Kind::PackmlTransition: // the checks report a transition's problem on its command
         break;
     }
     return core::Diagnostic::Target::Model;
 }
 
+// A PackML mode owns its request's diagnostics too; a state shown in no
+// particular mode (number 0) owns those of every mode.
+bool concernsPackml(const core::Diagnostic& diagnostic, const ElementRef& element)
+{
+    using Target = core::Diagnostic::Target;
+    switch (element.kind) {
+    case ElementRef::Kind::PackmlMode:
+        return (diagnostic.target == Target::Mode || diagnostic.target == Target::Request)
+            && diagnostic.mode == element.number;
+    case ElementRef::Kind::PackmlState:
+        return diagnostic.target == Target::ModeState && diagnostic.state == element.id.toStdString()
+            && (element.number == 0 || diagnostic.mode == element.number);
+    case ElementRef::Kind::PackmlCommand:
+        return diagnostic.target == Target::Command && diagnostic.element == element.id.toStdString();
+    default: return false;
+    }
+}
+
 bool concerns(const core::Diagnostic& diagnostic, const ElementRef& element)
 {
+    switch (element.kind) {
+    case ElementRef::Kind::PackmlMode:
+    case ElementRef::Kind::PackmlState:
+    case ElementRef::Kind::PackmlCommand:
+    case ElementRef::Kind::PackmlTransition: return concernsPackml(diagnostic, element);
+    default: break;
+    }
     if (element.isNull() || diagnostic.target != diagnosticTarget(element.kind))
         return false;
     if (element.kind == ElementRef::Kind::Model)

@@ -66,6 +66,7 @@ private slots:
     void renameToAnInvalidNameIsRefused();
     void newFromTemplate();
     void selection();
+    void packmlDiagnosticsBelongToTheirElements();
 };
 
 void TestDocument::startsWithTheTemplate()
@@ -372,4 +373,29 @@ void TestDocument::selection()
 }
 
 QTEST_MAIN(TestDocument)
+void TestDocument::packmlDiagnosticsBelongToTheirElements()
+{
+    // A PackML model's findings go to its mode, command and (mode, state):
+    // what the chart and the docks ask the Document for.
+    core::Model model = core::packml::newModel(core::packml::Edition::Y2022);
+    QVERIFY(model.setCommandCondition(core::packml::Command::Hold, "NoSuchInput"));
+    QVERIFY(model.setModeRequest(3, "AlsoUndeclared"));
+    QVERIFY(model.setGrafcetChoice(1, core::packml::State::Starting, core::packml::GrafcetChoice::own()));
+    Document document(model);
+    const auto codes = [&](const ElementRef& element) {
+        QStringList result;
+        for (const core::Diagnostic& d : document.diagnosticsFor(element))
+            result << QString::fromStdString(d.code);
+        return result;
+    };
+    QCOMPARE(codes(ElementRef::packmlCommand(QStringLiteral("Hold"))), QStringList{QStringLiteral("GG203")});
+    QVERIFY(codes(ElementRef::packmlCommand(QStringLiteral("Start"))).isEmpty());
+    QCOMPARE(codes(ElementRef::packmlMode(3)), QStringList{QStringLiteral("GG203")});
+    QVERIFY(codes(ElementRef::packmlMode(1)).isEmpty());
+    QVERIFY(codes(ElementRef::packmlState(QStringLiteral("Starting"), 1)).contains(QStringLiteral("PM010")));
+    QVERIFY(codes(ElementRef::packmlState(QStringLiteral("Starting"), 0)).contains(QStringLiteral("PM010")));
+    QVERIFY(codes(ElementRef::packmlState(QStringLiteral("Starting"), 2)).isEmpty());
+    QVERIFY(document.hasProblems(ElementRef::packmlCommand(QStringLiteral("Hold"))));
+}
+
 #include "test_document.moc"
