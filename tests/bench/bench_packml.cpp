@@ -1,16 +1,59 @@
 #include "packmlfactory.h"
 
+#include "core/checks/checks.h"
+#include "core/codegen/stgenerator.h"
+#include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlprogram.h"
+#include "core/templates/packml/packmlsimulator.h"
 
 #include <catch2/catch.hpp>
 
+#include <stdexcept>
+
 // Issue 34's PackML figures on its stress model (31 modes, eleven 40-step
-// GRAFCETs shared by "same as"): what every engine reads first.
+// GRAFCETs shared by "same as") and on the shipped example.
+
 TEST_CASE("PackML program of the stress model", "[benchmark][packml]")
 {
     const core::Model model = factory::packmlStressModel();
     BENCHMARK("build the PackML program")
     {
         return core::packml::buildPackmlProgram(model).instances.size();
+    };
+}
+
+TEST_CASE("PackML: re-check after a command-condition edit, stress model (target <= 1 ms)", "[benchmark][packml]")
+{
+    core::Model model = factory::packmlStressModel();
+    bool toggle = false;
+    BENCHMARK("set the Hold condition + re-check")
+    {
+        toggle = !toggle;
+        (void)model.setCommandCondition(core::packml::Command::Hold, toggle ? "Cmd_Hold AND In1" : "Cmd_Hold");
+        return core::checkModel(model).size();
+    };
+}
+
+TEST_CASE("PackML: Structured Text of the whole program, stress model (target <= 2 ms)", "[benchmark][packml]")
+{
+    const core::Model model = factory::packmlStressModel();
+    BENCHMARK("ST of the whole PackML program")
+    {
+        return core::formatSingleFileIec(core::buildPlcProject(model, core::Dialect::Iec)).size();
+    };
+}
+
+TEST_CASE("PackML: simulation speed, shipped example (target >= 1,000,000 scans/s)", "[benchmark][packml]")
+{
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
+    if (!loaded.ok())
+        throw std::runtime_error("cannot load the bottle filler");
+    core::packml::PackmlSimulator simulator(*loaded.model);
+    (void)simulator.setInput("Cmd_Reset", true);
+    BENCHMARK("1,000 scans of the bottle filler")
+    {
+        for (int i = 0; i < 1000; ++i)
+            (void)simulator.scan();
+        return simulator.scanCount();
     };
 }
