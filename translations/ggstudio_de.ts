@@ -921,6 +921,304 @@
     </message>
 </context>
 <context>
+    <name>PackMLDiagnosticText</name>
+    <message>
+        <source>The model has no unit mode.</source>
+        <translation>Das Modell hat keine Betriebsart.</translation>
+    </message>
+    <message>
+        <source>The initial mode %1 is not a unit mode of the model.</source>
+        <translation>Die Anfangsbetriebsart %1 ist keine Betriebsart des Modells.</translation>
+    </message>
+    <message>
+        <source>The initial state %1 is not Stopped, Idle or Aborted.</source>
+        <translation>Der Anfangszustand %1 ist nicht Stopped, Idle oder Aborted.</translation>
+    </message>
+    <message>
+        <source>The model&apos;s name &apos;%1&apos; cannot name the PROGRAM (it is no IEC identifier, or the generated code or a variable takes it): the PROGRAM is named %2.</source>
+        <translation>Der Modellname „%1“ kann das PROGRAM nicht benennen (er ist kein IEC-Bezeichner, oder der erzeugte Code oder eine Variable verwendet ihn): das PROGRAM heißt %2.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is outside 1..31 (PackTags UnitMode).</source>
+        <translation>Die Betriebsart %1 liegt außerhalb von 1..31 (PackTags UnitMode).</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is given twice.</source>
+        <translation>Die Betriebsart %1 ist doppelt angegeben.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is named %2, not &apos;%3&apos;.</source>
+        <extracomment>%2: the fixed name of a base mode (Production, Maintenance, Manual)</extracomment>
+        <translation>Die Betriebsart %1 heißt %2, nicht „%3“.</translation>
+    </message>
+    <message>
+        <source>The name &apos;%2&apos; of unit mode %1 is not an IEC identifier, and it becomes part of the names of function blocks.</source>
+        <translation>Der Name „%2“ der Betriebsart %1 ist kein IEC-Bezeichner, wird aber Teil der Namen von Funktionsbausteinen.</translation>
+    </message>
+    <message>
+        <source>The name &apos;%2&apos; of unit mode %1 is one the generated code uses.</source>
+        <translation>Der Name „%2“ der Betriebsart %1 wird vom erzeugten Code verwendet.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is named &apos;%2&apos;, as mode %3 is (ignoring case).</source>
+        <translation>Die Betriebsart %1 heißt „%2“, wie die Betriebsart %3 (ohne Beachtung der Groß-/Kleinschreibung).</translation>
+    </message>
+    <message>
+        <source>Mode %1 lists %2 as disabled, which every unit needs: ignored.</source>
+        <translation>Die Betriebsart %1 führt %2 als deaktiviert, doch jede Einheit braucht diesen Zustand: ignoriert.</translation>
+    </message>
+    <message>
+        <source>Mode %1 lists %2 as disabled, but it stays enabled while %3 is enabled.</source>
+        <extracomment>%3: the enabled acting states of the loop (Holding, Unholding)</extracomment>
+        <translation>Die Betriebsart %1 führt %2 als deaktiviert, doch der Zustand bleibt aktiviert, solange %3 aktiviert ist.</translation>
+    </message>
+    <message>
+        <source>Mode %1 allows a mode change in %2, an acting state, half-way through its GRAFCET: ignored.</source>
+        <translation>Die Betriebsart %1 erlaubt einen Betriebsartwechsel in %2, einem handelnden Zustand, mitten in seinem GRAFCET: ignoriert.</translation>
+    </message>
+    <message>
+        <source>Mode %1 allows a mode change in %2, which it disables: no effect.</source>
+        <translation>Die Betriebsart %1 erlaubt einen Betriebsartwechsel in %2, den sie deaktiviert: ohne Wirkung.</translation>
+    </message>
+    <message>
+        <source>Mode %1 can never be current: it is not the initial mode, and no state allows a change into it from another mode.</source>
+        <translation>Die Betriebsart %1 kann nie aktuell werden: sie ist nicht die Anfangsbetriebsart, und kein Zustand erlaubt den Wechsel aus einer anderen Betriebsart in sie.</translation>
+    </message>
+    <message>
+        <source>In mode %1, no sequence of transitions leads to Execute from where the mode begins (counting a State Complete only where the state&apos;s GRAFCET writes Complete).</source>
+        <translation>In der Betriebsart %1 führt keine Folge von Transitionen von ihrem Beginn nach Execute (ein State Complete zählt nur, wo das GRAFCET des Zustands Complete schreibt).</translation>
+    </message>
+    <message>
+        <source>In mode %1, no sequence of transitions reaches %2 from where the mode begins: it is never active.</source>
+        <translation>In der Betriebsart %1 erreicht keine Folge von Transitionen von ihrem Beginn aus %2: der Zustand ist nie aktiv.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: Aborting never writes Complete: nothing leaves Aborting, so the unit can never reach Aborted.</source>
+        <translation>Das GRAFCET von %1: Aborting schreibt nie Complete: nichts verlässt Aborting, die Einheit kann Aborted also nie erreichen.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: %2 never writes Complete: only Stop or Abort leave the state.</source>
+        <translation>Das GRAFCET von %1: %2 schreibt nie Complete: nur Stop oder Abort verlassen den Zustand.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: %2 is kept, but the mode disables the state: it generates no code.</source>
+        <translation>Das GRAFCET von %1: %2 bleibt erhalten, aber die Betriebsart deaktiviert den Zustand: es erzeugt keinen Code.</translation>
+    </message>
+    <message>
+        <source>there is no mode %1</source>
+        <translation>es gibt keine Betriebsart %1</translation>
+    </message>
+    <message>
+        <source>that is the mode itself</source>
+        <translation>das ist die Betriebsart selbst</translation>
+    </message>
+    <message>
+        <source>mode %1 has no GRAFCET of its own there</source>
+        <translation>die Betriebsart %1 hat dort kein eigenes GRAFCET</translation>
+    </message>
+    <message>
+        <source>%1: %2 runs the same GRAFCET as mode %3, but %4.</source>
+        <extracomment>%4: why (there is no mode 9, that is the mode itself, ...)</extracomment>
+        <translation>%1: %2 führt dasselbe GRAFCET aus wie die Betriebsart %3, aber %4.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: Execute writes Complete, which nothing reads in the 2022 edition: use the Complete command.</source>
+        <translation>Das GRAFCET von %1: Execute schreibt Complete, was in der Ausgabe 2022 nichts liest: verwenden Sie den Befehl Complete.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is empty: write FALSE for a command that comes only through CntrlCmd.</source>
+        <translation>Die Bedingung von %1 ist leer: schreiben Sie FALSE für einen Befehl, der nur über CntrlCmd kommt.</translation>
+    </message>
+    <message>
+        <source>Command %2 has the same condition as command %1: one rising edge issues both, and only the first in priority acts.</source>
+        <translation>Der Befehl %2 hat dieselbe Bedingung wie der Befehl %1: eine steigende Flanke gibt beide aus, und nur der erste in der Priorität wirkt.</translation>
+    </message>
+    <message>
+        <source>The request of mode %2 has the same condition as the request of mode %1: one rising edge issues both, and only the first in priority acts.</source>
+        <translation>Die Anforderung der Betriebsart %2 hat dieselbe Bedingung wie die Anforderung der Betriebsart %1: eine steigende Flanke gibt beide aus, und nur die erste in der Priorität wirkt.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 reads the output &apos;%2&apos;: commands and mode requests come from an operator, a line controller or an alarm, so read an input or an internal variable.</source>
+        <translation>Die Bedingung von %1 liest den Ausgang „%2“: Befehle und Betriebsartanforderungen kommen von einem Bediener, einer Liniensteuerung oder einem Alarm, lesen Sie also einen Eingang oder eine interne Variable.</translation>
+    </message>
+    <message>
+        <source>No enabled state of any mode accepts the command %1: it generates no code.</source>
+        <translation>Kein aktivierter Zustand einer Betriebsart nimmt den Befehl %1 an: er erzeugt keinen Code.</translation>
+    </message>
+    <message>
+        <source>The Complete command exists in the 2022 edition only: its setting is ignored in this 2015 model.</source>
+        <translation>Den Befehl Complete gibt es nur in der Ausgabe 2022: seine Einstellung wird in diesem Modell der Ausgabe 2015 ignoriert.</translation>
+    </message>
+    <message>
+        <source>The option completeInSuspendedHeld is for the 2022 edition only: it is ignored in this 2015 model.</source>
+        <translation>Die Option completeInSuspendedHeld gilt nur für die Ausgabe 2022: sie wird in diesem Modell der Ausgabe 2015 ignoriert.</translation>
+    </message>
+    <message>
+        <source>a step activity</source>
+        <translation>eine Schrittaktivität</translation>
+    </message>
+    <message>
+        <source>a step duration</source>
+        <translation>eine Schrittdauer</translation>
+    </message>
+    <message>
+        <source>an edge</source>
+        <translation>eine Flanke</translation>
+    </message>
+    <message>
+        <source>The condition of %1 uses %2 (&apos;%3&apos;), which only the texts of nested GRAFCETs have; a command or request is already the rising edge of its condition.</source>
+        <extracomment>%2: what the condition uses (a step activity, an edge...); %3: the text as written</extracomment>
+        <translation>Die Bedingung von %1 verwendet %2 („%3“), was nur die Texte verschachtelter GRAFCETs haben; ein Befehl oder eine Anforderung ist bereits die steigende Flanke seiner Bedingung.</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <extracomment>A unit mode of a PackML model: &quot;mode Manual&quot;</extracomment>
+        <translation>Betriebsart %1</translation>
+    </message>
+    <message>
+        <source>command %1</source>
+        <extracomment>A PackML command: &quot;command Hold&quot;</extracomment>
+        <translation>Befehl %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>A state in a unit mode: &quot;Manual: Execute&quot;</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>request of mode %1</source>
+        <extracomment>The request condition of a unit mode</extracomment>
+        <translation>Anforderung der Betriebsart %1</translation>
+    </message>
+    <message>
+        <source>The variable name &apos;%1&apos; is one the generated PackML code uses (PackTags, the state machine, the function blocks or the program %2).</source>
+        <translation>Der Variablenname „%1“ wird vom erzeugten PackML-Code verwendet (PackTags, der Zustandsautomat, die Funktionsbausteine oder das Programm %2).</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlTexts</name>
+    <message>
+        <source>Wait state</source>
+        <translation>Wartezustand</translation>
+    </message>
+    <message>
+        <source>Acting state</source>
+        <translation>Aktiver Zustand</translation>
+    </message>
+    <message>
+        <source>Dual state: acts and waits for a command</source>
+        <translation>Dualer Zustand: handelt und wartet auf einen Befehl</translation>
+    </message>
+    <message>
+        <source>Clears the faults that led to Aborted, then goes to Stopped.</source>
+        <translation>Behebt die Fehler, die zu Aborted führten, und geht dann nach Stopped.</translation>
+    </message>
+    <message>
+        <source>Powered and stationary; waits for Reset.</source>
+        <translation>Eingeschaltet und in Ruhe; wartet auf Reset.</translation>
+    </message>
+    <message>
+        <source>Prepares the unit to produce, then goes to Execute.</source>
+        <translation>Bereitet die Einheit auf die Produktion vor und geht dann nach Execute.</translation>
+    </message>
+    <message>
+        <source>Reset and ready; waits for Start.</source>
+        <translation>Zurückgesetzt und bereit; wartet auf Start.</translation>
+    </message>
+    <message>
+        <source>Paused by a condition outside the unit (starved, blocked); waits for Unsuspend.</source>
+        <translation>Angehalten durch eine Bedingung außerhalb der Einheit (Mangel, Rückstau); wartet auf Unsuspend.</translation>
+    </message>
+    <message>
+        <source>Produces; waits for Hold, Suspend or the end of the batch.</source>
+        <translation>Produziert; wartet auf Hold, Suspend oder das Ende der Charge.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to a controlled stop, then goes to Stopped.</source>
+        <translation>Bringt die Einheit zu einem kontrollierten Halt und geht dann nach Stopped.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to a quick safe stop, then goes to Aborted.</source>
+        <translation>Bringt die Einheit schnell und sicher zum Stillstand und geht dann nach Aborted.</translation>
+    </message>
+    <message>
+        <source>Stopped after an abort; waits for Clear.</source>
+        <translation>Nach einem Abbruch gestoppt; wartet auf Clear.</translation>
+    </message>
+    <message>
+        <source>Brings production to a controlled pause for an internal reason, then goes to Held.</source>
+        <translation>Hält die Produktion aus einem internen Grund kontrolliert an und geht dann nach Held.</translation>
+    </message>
+    <message>
+        <source>Paused for an internal reason; waits for Unhold.</source>
+        <translation>Aus einem internen Grund angehalten; wartet auf Unhold.</translation>
+    </message>
+    <message>
+        <source>Prepares to resume production after Held, then goes to Execute.</source>
+        <translation>Bereitet die Wiederaufnahme der Produktion nach Held vor und geht dann nach Execute.</translation>
+    </message>
+    <message>
+        <source>Brings production to a controlled pause for an outside reason, then goes to Suspended.</source>
+        <translation>Hält die Produktion aus einem äußeren Grund kontrolliert an und geht dann nach Suspended.</translation>
+    </message>
+    <message>
+        <source>Prepares to resume production after Suspended, then goes to Execute.</source>
+        <translation>Bereitet die Wiederaufnahme der Produktion nach Suspended vor und geht dann nach Execute.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to its ready state, then goes to Idle.</source>
+        <translation>Bringt die Einheit in ihren Bereitzustand und geht dann nach Idle.</translation>
+    </message>
+    <message>
+        <source>Ends the batch in order, then goes to Complete.</source>
+        <translation>Beendet die Charge geordnet und geht dann nach Complete.</translation>
+    </message>
+    <message>
+        <source>The batch is complete; waits for Reset.</source>
+        <translation>Die Charge ist abgeschlossen; wartet auf Reset.</translation>
+    </message>
+    <message>
+        <source>Reset: make the unit ready to start again.</source>
+        <translation>Reset: die Einheit wieder startbereit machen.</translation>
+    </message>
+    <message>
+        <source>Start: begin producing.</source>
+        <translation>Start: mit der Produktion beginnen.</translation>
+    </message>
+    <message>
+        <source>Stop: bring the unit to a controlled stop.</source>
+        <translation>Stop: die Einheit kontrolliert anhalten.</translation>
+    </message>
+    <message>
+        <source>Hold: pause production for an internal reason.</source>
+        <translation>Hold: die Produktion aus einem internen Grund anhalten.</translation>
+    </message>
+    <message>
+        <source>Unhold: resume production after a Hold.</source>
+        <translation>Unhold: die Produktion nach einem Hold fortsetzen.</translation>
+    </message>
+    <message>
+        <source>Suspend: pause production for an outside reason.</source>
+        <translation>Suspend: die Produktion aus einem äußeren Grund anhalten.</translation>
+    </message>
+    <message>
+        <source>Unsuspend: resume production after a Suspend.</source>
+        <translation>Unsuspend: die Produktion nach einem Suspend fortsetzen.</translation>
+    </message>
+    <message>
+        <source>Abort: stop the unit at once, safely.</source>
+        <translation>Abort: die Einheit sofort und sicher stillsetzen.</translation>
+    </message>
+    <message>
+        <source>Clear: clear the faults after an Abort.</source>
+        <translation>Clear: die Fehler nach einem Abort beheben.</translation>
+    </message>
+    <message>
+        <source>Complete: end the batch.</source>
+        <translation>Complete: die Charge beenden.</translation>
+    </message>
+</context>
+<context>
     <name>PasteVariablesCommand</name>
     <message>
         <source>Paste variable %1</source>
@@ -1597,6 +1895,53 @@
         <source>scan number %1 is too large: a scenario runs at most %2 scans</source>
         <extracomment>%2: the highest scan number a scenario may name</extracomment>
         <translation>die Zyklusnummer %1 ist zu groß: ein Szenario läuft höchstens %2 Zyklen</translation>
+    </message>
+    <message>
+        <source>expected a command name after &apos;command&apos;, found %1</source>
+        <extracomment>&apos;command&apos; is scenario syntax</extracomment>
+        <translation>nach &apos;command&apos; wird ein Befehlsname erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>expected a mode name or number after &apos;mode&apos;, found %1</source>
+        <extracomment>&apos;mode&apos; is scenario syntax</extracomment>
+        <translation>nach &apos;mode&apos; wird ein Betriebsartname oder eine Betriebsartnummer erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>expected a state name after &apos;state&apos;, found %1</source>
+        <extracomment>&apos;state&apos; is scenario syntax</extracomment>
+        <translation>nach &apos;state&apos; wird ein Zustandsname erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>unbekannter Befehl &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown unit mode &apos;%1&apos;</source>
+        <translation>unbekannte Betriebsart &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown state &apos;%1&apos;</source>
+        <translation>unbekannter Zustand &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown instance &apos;%1&apos;</source>
+        <extracomment>%1: a PackML function block instance (Production_Resetting)</extracomment>
+        <translation>unbekannte Instanz &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is for PackML models only</source>
+        <extracomment>%1: scenario syntax (&quot;command&quot;, &quot;expect state&quot;)</extracomment>
+        <translation>&apos;%1&apos; gilt nur für PackML-Modelle</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is for GEMMA models only</source>
+        <extracomment>%1: scenario syntax (&quot;expect step&quot;, &quot;set complete&quot;)</extracomment>
+        <translation>&apos;%1&apos; gilt nur für GEMMA-Modelle</translation>
+    </message>
+    <message>
+        <source>a %1 in scan %2 right after the one of line %3 is not seen: the request must be FALSE for one scan in between</source>
+        <extracomment>%1: &quot;command&quot; or &quot;mode&quot; (scenario syntax); %2: a scan number; %3: a line number</extracomment>
+        <translation>ein %1 in Zyklus %2 direkt nach dem aus Zeile %3 wird nicht erkannt: die Anforderung muss dazwischen einen Zyklus lang FALSE sein</translation>
     </message>
 </context>
 <context>
@@ -3315,6 +3660,68 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
         <translation>Jeder Zyklus schaltet die zu seinem Beginn freigegebenen Transitionen einmal, wie SFC-Laufzeitsysteme wie CODESYS.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartTexts</name>
+    <message>
+        <source>Disabled in mode %1: never active there.</source>
+        <extracomment>%1: the unit mode the chart shows (&quot;3 Manual&quot;)</extracomment>
+        <translation>Im Modus %1 deaktiviert: dort nie aktiv.</translation>
+    </message>
+    <message>
+        <source>Runs its own nested GRAFCET in this mode.</source>
+        <translation>Führt in diesem Modus sein eigenes eingebettetes GRAFCET aus.</translation>
+    </message>
+    <message>
+        <source>Runs the nested GRAFCET of mode %1 for this state.</source>
+        <extracomment>%1: the number of the unit mode whose GRAFCET runs</extracomment>
+        <translation>Führt das eingebettete GRAFCET von Modus %1 für diesen Zustand aus.</translation>
+    </message>
+    <message>
+        <source>No nested GRAFCET in this mode: it waits for a command.</source>
+        <translation>Kein eingebettetes GRAFCET in diesem Modus: wartet auf einen Befehl.</translation>
+    </message>
+    <message>
+        <source>No nested GRAFCET in this mode: it completes at once.</source>
+        <translation>Kein eingebettetes GRAFCET in diesem Modus: ist sofort abgeschlossen.</translation>
+    </message>
+    <message>
+        <source>SC (State Complete): %1 has done its work.</source>
+        <extracomment>%1: a PackML state (&quot;Starting&quot;)</extracomment>
+        <translation>SC (State Complete): %1 hat seine Arbeit getan.</translation>
+    </message>
+    <message>
+        <source>Optional: exists only under an option of Model Settings.</source>
+        <translation>Optional: nur mit einer Option der Modelleinstellungen vorhanden.</translation>
+    </message>
+    <message>
+        <source>In mode %1, %2 is disabled: this transition leads to %3.</source>
+        <extracomment>%1: the unit mode (&quot;3 Manual&quot;), %2: the disabled state, %3: where the transition leads instead</extracomment>
+        <translation>Im Modus %1 ist %2 deaktiviert: dieser Übergang führt nach %3.</translation>
+    </message>
+    <message>
+        <source>Accepted by every state in the Abort frame, before their own transitions.</source>
+        <translation>Von jedem Zustand im Abort-Rahmen angenommen, vor dessen eigenen Übergängen.</translation>
+    </message>
+    <message>
+        <source>Accepted by every state in the Stop frame, before their own transitions.</source>
+        <translation>Von jedem Zustand im Stop-Rahmen angenommen, vor dessen eigenen Übergängen.</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Bedingung:</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartView</name>
+    <message>
+        <source>Unit &amp;mode:</source>
+        <translation>Betriebs&amp;modus:</translation>
+    </message>
+    <message>
+        <source>The unit mode the chart shows: its disabled states greyed, its skipped transitions labelled with where they lead</source>
+        <translation>Der Betriebsmodus, den das Diagramm zeigt: seine deaktivierten Zustände grau, übersprungene Übergänge mit ihrem Ziel beschriftet</translation>
     </message>
 </context>
 <context>

@@ -921,6 +921,304 @@
     </message>
 </context>
 <context>
+    <name>PackMLDiagnosticText</name>
+    <message>
+        <source>The model has no unit mode.</source>
+        <translation>El modelo no tiene ningún modo de unidad.</translation>
+    </message>
+    <message>
+        <source>The initial mode %1 is not a unit mode of the model.</source>
+        <translation>El modo inicial %1 no es un modo de unidad del modelo.</translation>
+    </message>
+    <message>
+        <source>The initial state %1 is not Stopped, Idle or Aborted.</source>
+        <translation>El estado inicial %1 no es Stopped, Idle ni Aborted.</translation>
+    </message>
+    <message>
+        <source>The model&apos;s name &apos;%1&apos; cannot name the PROGRAM (it is no IEC identifier, or the generated code or a variable takes it): the PROGRAM is named %2.</source>
+        <translation>El nombre del modelo «%1» no puede nombrar el PROGRAM (no es un identificador IEC, o el código generado o una variable ya lo usa): el PROGRAM se llama %2.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is outside 1..31 (PackTags UnitMode).</source>
+        <translation>El modo de unidad %1 está fuera de 1..31 (PackTags UnitMode).</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is given twice.</source>
+        <translation>El modo de unidad %1 aparece dos veces.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is named %2, not &apos;%3&apos;.</source>
+        <extracomment>%2: the fixed name of a base mode (Production, Maintenance, Manual)</extracomment>
+        <translation>El modo de unidad %1 se llama %2, no «%3».</translation>
+    </message>
+    <message>
+        <source>The name &apos;%2&apos; of unit mode %1 is not an IEC identifier, and it becomes part of the names of function blocks.</source>
+        <translation>El nombre «%2» del modo de unidad %1 no es un identificador IEC, y forma parte de los nombres de los bloques de función.</translation>
+    </message>
+    <message>
+        <source>The name &apos;%2&apos; of unit mode %1 is one the generated code uses.</source>
+        <translation>El nombre «%2» del modo de unidad %1 lo usa el código generado.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is named &apos;%2&apos;, as mode %3 is (ignoring case).</source>
+        <translation>El modo de unidad %1 se llama «%2», como el modo %3 (sin distinguir mayúsculas).</translation>
+    </message>
+    <message>
+        <source>Mode %1 lists %2 as disabled, which every unit needs: ignored.</source>
+        <translation>El modo %1 marca %2 como desactivado, y toda unidad lo necesita: se ignora.</translation>
+    </message>
+    <message>
+        <source>Mode %1 lists %2 as disabled, but it stays enabled while %3 is enabled.</source>
+        <extracomment>%3: the enabled acting states of the loop (Holding, Unholding)</extracomment>
+        <translation>El modo %1 marca %2 como desactivado, pero sigue activado mientras %3 esté activado.</translation>
+    </message>
+    <message>
+        <source>Mode %1 allows a mode change in %2, an acting state, half-way through its GRAFCET: ignored.</source>
+        <translation>El modo %1 permite un cambio de modo en %2, un estado de acción, a mitad de su GRAFCET: se ignora.</translation>
+    </message>
+    <message>
+        <source>Mode %1 allows a mode change in %2, which it disables: no effect.</source>
+        <translation>El modo %1 permite un cambio de modo en %2, que desactiva: no tiene efecto.</translation>
+    </message>
+    <message>
+        <source>Mode %1 can never be current: it is not the initial mode, and no state allows a change into it from another mode.</source>
+        <translation>El modo %1 nunca puede ser el actual: no es el modo inicial y ningún estado permite cambiar a él desde otro modo.</translation>
+    </message>
+    <message>
+        <source>In mode %1, no sequence of transitions leads to Execute from where the mode begins (counting a State Complete only where the state&apos;s GRAFCET writes Complete).</source>
+        <translation>En el modo %1, ninguna secuencia de transiciones lleva a Execute desde donde empieza el modo (un State Complete solo cuenta donde el GRAFCET del estado escribe Complete).</translation>
+    </message>
+    <message>
+        <source>In mode %1, no sequence of transitions reaches %2 from where the mode begins: it is never active.</source>
+        <translation>En el modo %1, ninguna secuencia de transiciones alcanza %2 desde donde empieza el modo: nunca está activo.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: Aborting never writes Complete: nothing leaves Aborting, so the unit can never reach Aborted.</source>
+        <translation>El GRAFCET de %1: Aborting nunca escribe Complete: nada sale de Aborting, así que la unidad nunca puede llegar a Aborted.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: %2 never writes Complete: only Stop or Abort leave the state.</source>
+        <translation>El GRAFCET de %1: %2 nunca escribe Complete: solo Stop o Abort salen del estado.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: %2 is kept, but the mode disables the state: it generates no code.</source>
+        <translation>El GRAFCET de %1: %2 se conserva, pero el modo desactiva el estado: no genera código.</translation>
+    </message>
+    <message>
+        <source>there is no mode %1</source>
+        <translation>no existe el modo %1</translation>
+    </message>
+    <message>
+        <source>that is the mode itself</source>
+        <translation>es el propio modo</translation>
+    </message>
+    <message>
+        <source>mode %1 has no GRAFCET of its own there</source>
+        <translation>el modo %1 no tiene ahí un GRAFCET propio</translation>
+    </message>
+    <message>
+        <source>%1: %2 runs the same GRAFCET as mode %3, but %4.</source>
+        <extracomment>%4: why (there is no mode 9, that is the mode itself, ...)</extracomment>
+        <translation>%1: %2 ejecuta el mismo GRAFCET que el modo %3, pero %4.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: Execute writes Complete, which nothing reads in the 2022 edition: use the Complete command.</source>
+        <translation>El GRAFCET de %1: Execute escribe Complete, que nada lee en la edición 2022: use el comando Complete.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is empty: write FALSE for a command that comes only through CntrlCmd.</source>
+        <translation>La condición de %1 está vacía: escriba FALSE para un comando que solo llega por CntrlCmd.</translation>
+    </message>
+    <message>
+        <source>Command %2 has the same condition as command %1: one rising edge issues both, and only the first in priority acts.</source>
+        <translation>El comando %2 tiene la misma condición que el comando %1: un mismo flanco ascendente emite ambos y solo actúa el primero en prioridad.</translation>
+    </message>
+    <message>
+        <source>The request of mode %2 has the same condition as the request of mode %1: one rising edge issues both, and only the first in priority acts.</source>
+        <translation>La petición del modo %2 tiene la misma condición que la petición del modo %1: un mismo flanco ascendente emite ambas y solo actúa la primera en prioridad.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 reads the output &apos;%2&apos;: commands and mode requests come from an operator, a line controller or an alarm, so read an input or an internal variable.</source>
+        <translation>La condición de %1 lee la salida «%2»: los comandos y las peticiones de modo vienen de un operador, de un controlador de línea o de una alarma, así que lea una entrada o una variable interna.</translation>
+    </message>
+    <message>
+        <source>No enabled state of any mode accepts the command %1: it generates no code.</source>
+        <translation>Ningún estado activado de ningún modo acepta el comando %1: no genera código.</translation>
+    </message>
+    <message>
+        <source>The Complete command exists in the 2022 edition only: its setting is ignored in this 2015 model.</source>
+        <translation>El comando Complete solo existe en la edición 2022: su ajuste se ignora en este modelo 2015.</translation>
+    </message>
+    <message>
+        <source>The option completeInSuspendedHeld is for the 2022 edition only: it is ignored in this 2015 model.</source>
+        <translation>La opción completeInSuspendedHeld es solo para la edición 2022: se ignora en este modelo 2015.</translation>
+    </message>
+    <message>
+        <source>a step activity</source>
+        <translation>una actividad de etapa</translation>
+    </message>
+    <message>
+        <source>a step duration</source>
+        <translation>una duración de etapa</translation>
+    </message>
+    <message>
+        <source>an edge</source>
+        <translation>un flanco</translation>
+    </message>
+    <message>
+        <source>The condition of %1 uses %2 (&apos;%3&apos;), which only the texts of nested GRAFCETs have; a command or request is already the rising edge of its condition.</source>
+        <extracomment>%2: what the condition uses (a step activity, an edge...); %3: the text as written</extracomment>
+        <translation>La condición de %1 usa %2 («%3»), que solo tienen los textos de los GRAFCET anidados; un comando o una petición ya es el flanco ascendente de su condición.</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <extracomment>A unit mode of a PackML model: &quot;mode Manual&quot;</extracomment>
+        <translation>modo %1</translation>
+    </message>
+    <message>
+        <source>command %1</source>
+        <extracomment>A PackML command: &quot;command Hold&quot;</extracomment>
+        <translation>comando %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>A state in a unit mode: &quot;Manual: Execute&quot;</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>request of mode %1</source>
+        <extracomment>The request condition of a unit mode</extracomment>
+        <translation>petición del modo %1</translation>
+    </message>
+    <message>
+        <source>The variable name &apos;%1&apos; is one the generated PackML code uses (PackTags, the state machine, the function blocks or the program %2).</source>
+        <translation>El nombre de variable «%1» lo usa el código PackML generado (PackTags, la máquina de estados, los bloques de función o el programa %2).</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlTexts</name>
+    <message>
+        <source>Wait state</source>
+        <translation>Estado de espera</translation>
+    </message>
+    <message>
+        <source>Acting state</source>
+        <translation>Estado activo</translation>
+    </message>
+    <message>
+        <source>Dual state: acts and waits for a command</source>
+        <translation>Estado dual: actúa y espera una orden</translation>
+    </message>
+    <message>
+        <source>Clears the faults that led to Aborted, then goes to Stopped.</source>
+        <translation>Borra los fallos que llevaron a Aborted y pasa a Stopped.</translation>
+    </message>
+    <message>
+        <source>Powered and stationary; waits for Reset.</source>
+        <translation>Alimentada y parada; espera Reset.</translation>
+    </message>
+    <message>
+        <source>Prepares the unit to produce, then goes to Execute.</source>
+        <translation>Prepara la unidad para producir y pasa a Execute.</translation>
+    </message>
+    <message>
+        <source>Reset and ready; waits for Start.</source>
+        <translation>Restablecida y lista; espera Start.</translation>
+    </message>
+    <message>
+        <source>Paused by a condition outside the unit (starved, blocked); waits for Unsuspend.</source>
+        <translation>En pausa por una condición ajena a la unidad (falta de material, bloqueo); espera Unsuspend.</translation>
+    </message>
+    <message>
+        <source>Produces; waits for Hold, Suspend or the end of the batch.</source>
+        <translation>Produce; espera Hold, Suspend o el fin del lote.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to a controlled stop, then goes to Stopped.</source>
+        <translation>Lleva la unidad a una parada controlada y pasa a Stopped.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to a quick safe stop, then goes to Aborted.</source>
+        <translation>Lleva la unidad a una parada rápida y segura y pasa a Aborted.</translation>
+    </message>
+    <message>
+        <source>Stopped after an abort; waits for Clear.</source>
+        <translation>Parada tras un aborto; espera Clear.</translation>
+    </message>
+    <message>
+        <source>Brings production to a controlled pause for an internal reason, then goes to Held.</source>
+        <translation>Lleva la producción a una pausa controlada por una causa interna y pasa a Held.</translation>
+    </message>
+    <message>
+        <source>Paused for an internal reason; waits for Unhold.</source>
+        <translation>En pausa por una causa interna; espera Unhold.</translation>
+    </message>
+    <message>
+        <source>Prepares to resume production after Held, then goes to Execute.</source>
+        <translation>Prepara la reanudación de la producción tras Held y pasa a Execute.</translation>
+    </message>
+    <message>
+        <source>Brings production to a controlled pause for an outside reason, then goes to Suspended.</source>
+        <translation>Lleva la producción a una pausa controlada por una causa externa y pasa a Suspended.</translation>
+    </message>
+    <message>
+        <source>Prepares to resume production after Suspended, then goes to Execute.</source>
+        <translation>Prepara la reanudación de la producción tras Suspended y pasa a Execute.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to its ready state, then goes to Idle.</source>
+        <translation>Lleva la unidad a su estado listo y pasa a Idle.</translation>
+    </message>
+    <message>
+        <source>Ends the batch in order, then goes to Complete.</source>
+        <translation>Termina el lote en orden y pasa a Complete.</translation>
+    </message>
+    <message>
+        <source>The batch is complete; waits for Reset.</source>
+        <translation>El lote está terminado; espera Reset.</translation>
+    </message>
+    <message>
+        <source>Reset: make the unit ready to start again.</source>
+        <translation>Reset: dejar la unidad lista para arrancar de nuevo.</translation>
+    </message>
+    <message>
+        <source>Start: begin producing.</source>
+        <translation>Start: empezar a producir.</translation>
+    </message>
+    <message>
+        <source>Stop: bring the unit to a controlled stop.</source>
+        <translation>Stop: llevar la unidad a una parada controlada.</translation>
+    </message>
+    <message>
+        <source>Hold: pause production for an internal reason.</source>
+        <translation>Hold: pausar la producción por una causa interna.</translation>
+    </message>
+    <message>
+        <source>Unhold: resume production after a Hold.</source>
+        <translation>Unhold: reanudar la producción tras un Hold.</translation>
+    </message>
+    <message>
+        <source>Suspend: pause production for an outside reason.</source>
+        <translation>Suspend: pausar la producción por una causa externa.</translation>
+    </message>
+    <message>
+        <source>Unsuspend: resume production after a Suspend.</source>
+        <translation>Unsuspend: reanudar la producción tras un Suspend.</translation>
+    </message>
+    <message>
+        <source>Abort: stop the unit at once, safely.</source>
+        <translation>Abort: parar la unidad de inmediato, con seguridad.</translation>
+    </message>
+    <message>
+        <source>Clear: clear the faults after an Abort.</source>
+        <translation>Clear: borrar los fallos tras un Abort.</translation>
+    </message>
+    <message>
+        <source>Complete: end the batch.</source>
+        <translation>Complete: terminar el lote.</translation>
+    </message>
+</context>
+<context>
     <name>PasteVariablesCommand</name>
     <message>
         <source>Paste variable %1</source>
@@ -1597,6 +1895,53 @@
         <source>scan number %1 is too large: a scenario runs at most %2 scans</source>
         <extracomment>%2: the highest scan number a scenario may name</extracomment>
         <translation>el número de ciclo %1 es demasiado grande: un escenario dura como máximo %2 ciclos</translation>
+    </message>
+    <message>
+        <source>expected a command name after &apos;command&apos;, found %1</source>
+        <extracomment>&apos;command&apos; is scenario syntax</extracomment>
+        <translation>se esperaba un nombre de comando después de &apos;command&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a mode name or number after &apos;mode&apos;, found %1</source>
+        <extracomment>&apos;mode&apos; is scenario syntax</extracomment>
+        <translation>se esperaba un nombre o número de modo después de &apos;mode&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected a state name after &apos;state&apos;, found %1</source>
+        <extracomment>&apos;state&apos; is scenario syntax</extracomment>
+        <translation>se esperaba un nombre de estado después de &apos;state&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown unit mode &apos;%1&apos;</source>
+        <translation>modo de unidad desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown state &apos;%1&apos;</source>
+        <translation>estado desconocido &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown instance &apos;%1&apos;</source>
+        <extracomment>%1: a PackML function block instance (Production_Resetting)</extracomment>
+        <translation>instancia desconocida &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is for PackML models only</source>
+        <extracomment>%1: scenario syntax (&quot;command&quot;, &quot;expect state&quot;)</extracomment>
+        <translation>&apos;%1&apos; solo es para modelos PackML</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is for GEMMA models only</source>
+        <extracomment>%1: scenario syntax (&quot;expect step&quot;, &quot;set complete&quot;)</extracomment>
+        <translation>&apos;%1&apos; solo es para modelos GEMMA</translation>
+    </message>
+    <message>
+        <source>a %1 in scan %2 right after the one of line %3 is not seen: the request must be FALSE for one scan in between</source>
+        <extracomment>%1: &quot;command&quot; or &quot;mode&quot; (scenario syntax); %2: a scan number; %3: a line number</extracomment>
+        <translation>un %1 en el ciclo %2, justo después del de la línea %3, no se detecta: la petición debe estar en FALSE durante un ciclo entre ambos</translation>
     </message>
 </context>
 <context>
@@ -3315,6 +3660,68 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
         <translation>Cada ciclo franquea una vez las transiciones validadas al empezar, como hacen los entornos SFC como CODESYS.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartTexts</name>
+    <message>
+        <source>Disabled in mode %1: never active there.</source>
+        <extracomment>%1: the unit mode the chart shows (&quot;3 Manual&quot;)</extracomment>
+        <translation>Desactivado en el modo %1: nunca activo en él.</translation>
+    </message>
+    <message>
+        <source>Runs its own nested GRAFCET in this mode.</source>
+        <translation>Ejecuta su propio GRAFCET anidado en este modo.</translation>
+    </message>
+    <message>
+        <source>Runs the nested GRAFCET of mode %1 for this state.</source>
+        <extracomment>%1: the number of the unit mode whose GRAFCET runs</extracomment>
+        <translation>Ejecuta el GRAFCET anidado del modo %1 para este estado.</translation>
+    </message>
+    <message>
+        <source>No nested GRAFCET in this mode: it waits for a command.</source>
+        <translation>Sin GRAFCET anidado en este modo: espera una orden.</translation>
+    </message>
+    <message>
+        <source>No nested GRAFCET in this mode: it completes at once.</source>
+        <translation>Sin GRAFCET anidado en este modo: termina de inmediato.</translation>
+    </message>
+    <message>
+        <source>SC (State Complete): %1 has done its work.</source>
+        <extracomment>%1: a PackML state (&quot;Starting&quot;)</extracomment>
+        <translation>SC (State Complete): %1 ha terminado su trabajo.</translation>
+    </message>
+    <message>
+        <source>Optional: exists only under an option of Model Settings.</source>
+        <translation>Opcional: solo existe con una opción de la configuración del modelo.</translation>
+    </message>
+    <message>
+        <source>In mode %1, %2 is disabled: this transition leads to %3.</source>
+        <extracomment>%1: the unit mode (&quot;3 Manual&quot;), %2: the disabled state, %3: where the transition leads instead</extracomment>
+        <translation>En el modo %1, %2 está desactivado: esta transición lleva a %3.</translation>
+    </message>
+    <message>
+        <source>Accepted by every state in the Abort frame, before their own transitions.</source>
+        <translation>Aceptada por todos los estados del marco Abort, antes de sus propias transiciones.</translation>
+    </message>
+    <message>
+        <source>Accepted by every state in the Stop frame, before their own transitions.</source>
+        <translation>Aceptada por todos los estados del marco Stop, antes de sus propias transiciones.</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Condición:</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartView</name>
+    <message>
+        <source>Unit &amp;mode:</source>
+        <translation>&amp;Modo de la unidad:</translation>
+    </message>
+    <message>
+        <source>The unit mode the chart shows: its disabled states greyed, its skipped transitions labelled with where they lead</source>
+        <translation>El modo de la unidad que muestra el diagrama: sus estados desactivados en gris, sus transiciones saltadas rotuladas con su destino</translation>
     </message>
 </context>
 <context>

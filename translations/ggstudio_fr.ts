@@ -921,6 +921,304 @@
     </message>
 </context>
 <context>
+    <name>PackMLDiagnosticText</name>
+    <message>
+        <source>The model has no unit mode.</source>
+        <translation>Le modèle n&apos;a aucun mode d&apos;unité.</translation>
+    </message>
+    <message>
+        <source>The initial mode %1 is not a unit mode of the model.</source>
+        <translation>Le mode initial %1 n&apos;est pas un mode d&apos;unité du modèle.</translation>
+    </message>
+    <message>
+        <source>The initial state %1 is not Stopped, Idle or Aborted.</source>
+        <translation>L&apos;état initial %1 n&apos;est pas Stopped, Idle ou Aborted.</translation>
+    </message>
+    <message>
+        <source>The model&apos;s name &apos;%1&apos; cannot name the PROGRAM (it is no IEC identifier, or the generated code or a variable takes it): the PROGRAM is named %2.</source>
+        <translation>Le nom du modèle « %1 » ne peut pas nommer le PROGRAM (ce n&apos;est pas un identificateur CEI, ou le code généré ou une variable le prend) : le PROGRAM s&apos;appelle %2.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is outside 1..31 (PackTags UnitMode).</source>
+        <translation>Le mode d&apos;unité %1 est hors de 1..31 (PackTags UnitMode).</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is given twice.</source>
+        <translation>Le mode d&apos;unité %1 est donné deux fois.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is named %2, not &apos;%3&apos;.</source>
+        <extracomment>%2: the fixed name of a base mode (Production, Maintenance, Manual)</extracomment>
+        <translation>Le mode d&apos;unité %1 s&apos;appelle %2, pas « %3 ».</translation>
+    </message>
+    <message>
+        <source>The name &apos;%2&apos; of unit mode %1 is not an IEC identifier, and it becomes part of the names of function blocks.</source>
+        <translation>Le nom « %2 » du mode d&apos;unité %1 n&apos;est pas un identificateur CEI, et il entre dans les noms des blocs fonctionnels.</translation>
+    </message>
+    <message>
+        <source>The name &apos;%2&apos; of unit mode %1 is one the generated code uses.</source>
+        <translation>Le nom « %2 » du mode d&apos;unité %1 est utilisé par le code généré.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is named &apos;%2&apos;, as mode %3 is (ignoring case).</source>
+        <translation>Le mode d&apos;unité %1 s&apos;appelle « %2 », comme le mode %3 (sans tenir compte de la casse).</translation>
+    </message>
+    <message>
+        <source>Mode %1 lists %2 as disabled, which every unit needs: ignored.</source>
+        <translation>Le mode %1 désactive %2, dont toute unité a besoin : ignoré.</translation>
+    </message>
+    <message>
+        <source>Mode %1 lists %2 as disabled, but it stays enabled while %3 is enabled.</source>
+        <extracomment>%3: the enabled acting states of the loop (Holding, Unholding)</extracomment>
+        <translation>Le mode %1 désactive %2, mais cet état reste activé tant que %3 est activé.</translation>
+    </message>
+    <message>
+        <source>Mode %1 allows a mode change in %2, an acting state, half-way through its GRAFCET: ignored.</source>
+        <translation>Le mode %1 autorise un changement de mode dans %2, un état actif, au milieu de son GRAFCET : ignoré.</translation>
+    </message>
+    <message>
+        <source>Mode %1 allows a mode change in %2, which it disables: no effect.</source>
+        <translation>Le mode %1 autorise un changement de mode dans %2, qu&apos;il désactive : sans effet.</translation>
+    </message>
+    <message>
+        <source>Mode %1 can never be current: it is not the initial mode, and no state allows a change into it from another mode.</source>
+        <translation>Le mode %1 ne peut jamais être courant : ce n&apos;est pas le mode initial, et aucun état ne permet d&apos;y passer depuis un autre mode.</translation>
+    </message>
+    <message>
+        <source>In mode %1, no sequence of transitions leads to Execute from where the mode begins (counting a State Complete only where the state&apos;s GRAFCET writes Complete).</source>
+        <translation>Dans le mode %1, aucune suite de transitions ne mène à Execute depuis là où le mode commence (un State Complete ne compte que là où le GRAFCET de l&apos;état écrit Complete).</translation>
+    </message>
+    <message>
+        <source>In mode %1, no sequence of transitions reaches %2 from where the mode begins: it is never active.</source>
+        <translation>Dans le mode %1, aucune suite de transitions n&apos;atteint %2 depuis là où le mode commence : l&apos;état n&apos;est jamais actif.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: Aborting never writes Complete: nothing leaves Aborting, so the unit can never reach Aborted.</source>
+        <translation>Le GRAFCET de %1 : Aborting n&apos;écrit jamais Complete : rien ne fait sortir d&apos;Aborting, l&apos;unité ne peut donc jamais atteindre Aborted.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: %2 never writes Complete: only Stop or Abort leave the state.</source>
+        <translation>Le GRAFCET de %1 : %2 n&apos;écrit jamais Complete : seuls Stop ou Abort font sortir de l&apos;état.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: %2 is kept, but the mode disables the state: it generates no code.</source>
+        <translation>Le GRAFCET de %1 : %2 est conservé, mais le mode désactive l&apos;état : il ne génère aucun code.</translation>
+    </message>
+    <message>
+        <source>there is no mode %1</source>
+        <translation>il n&apos;y a pas de mode %1</translation>
+    </message>
+    <message>
+        <source>that is the mode itself</source>
+        <translation>c&apos;est le mode lui-même</translation>
+    </message>
+    <message>
+        <source>mode %1 has no GRAFCET of its own there</source>
+        <translation>le mode %1 n&apos;y a pas de GRAFCET propre</translation>
+    </message>
+    <message>
+        <source>%1: %2 runs the same GRAFCET as mode %3, but %4.</source>
+        <extracomment>%4: why (there is no mode 9, that is the mode itself, ...)</extracomment>
+        <translation>%1 : %2 exécute le même GRAFCET que le mode %3, mais %4.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: Execute writes Complete, which nothing reads in the 2022 edition: use the Complete command.</source>
+        <translation>Le GRAFCET de %1 : Execute écrit Complete, que rien ne lit dans l&apos;édition 2022 : utilisez la commande Complete.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is empty: write FALSE for a command that comes only through CntrlCmd.</source>
+        <translation>La condition de %1 est vide : écrivez FALSE pour une commande qui ne vient que par CntrlCmd.</translation>
+    </message>
+    <message>
+        <source>Command %2 has the same condition as command %1: one rising edge issues both, and only the first in priority acts.</source>
+        <translation>La commande %2 a la même condition que la commande %1 : un même front montant émet les deux, et seule la première en priorité agit.</translation>
+    </message>
+    <message>
+        <source>The request of mode %2 has the same condition as the request of mode %1: one rising edge issues both, and only the first in priority acts.</source>
+        <translation>La demande du mode %2 a la même condition que la demande du mode %1 : un même front montant émet les deux, et seule la première en priorité agit.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 reads the output &apos;%2&apos;: commands and mode requests come from an operator, a line controller or an alarm, so read an input or an internal variable.</source>
+        <translation>La condition de %1 lit la sortie « %2 » : commandes et demandes de mode viennent d&apos;un opérateur, d&apos;un contrôleur de ligne ou d&apos;une alarme, lisez donc une entrée ou une variable interne.</translation>
+    </message>
+    <message>
+        <source>No enabled state of any mode accepts the command %1: it generates no code.</source>
+        <translation>Aucun état activé d&apos;aucun mode n&apos;accepte la commande %1 : elle ne génère aucun code.</translation>
+    </message>
+    <message>
+        <source>The Complete command exists in the 2022 edition only: its setting is ignored in this 2015 model.</source>
+        <translation>La commande Complete n&apos;existe que dans l&apos;édition 2022 : son réglage est ignoré dans ce modèle 2015.</translation>
+    </message>
+    <message>
+        <source>The option completeInSuspendedHeld is for the 2022 edition only: it is ignored in this 2015 model.</source>
+        <translation>L&apos;option completeInSuspendedHeld n&apos;est que pour l&apos;édition 2022 : elle est ignorée dans ce modèle 2015.</translation>
+    </message>
+    <message>
+        <source>a step activity</source>
+        <translation>une activité d&apos;étape</translation>
+    </message>
+    <message>
+        <source>a step duration</source>
+        <translation>une durée d&apos;étape</translation>
+    </message>
+    <message>
+        <source>an edge</source>
+        <translation>un front</translation>
+    </message>
+    <message>
+        <source>The condition of %1 uses %2 (&apos;%3&apos;), which only the texts of nested GRAFCETs have; a command or request is already the rising edge of its condition.</source>
+        <extracomment>%2: what the condition uses (a step activity, an edge...); %3: the text as written</extracomment>
+        <translation>La condition de %1 utilise %2 (« %3 »), que seuls les textes des GRAFCET imbriqués ont ; une commande ou une demande est déjà le front montant de sa condition.</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <extracomment>A unit mode of a PackML model: &quot;mode Manual&quot;</extracomment>
+        <translation>mode %1</translation>
+    </message>
+    <message>
+        <source>command %1</source>
+        <extracomment>A PackML command: &quot;command Hold&quot;</extracomment>
+        <translation>commande %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>A state in a unit mode: &quot;Manual: Execute&quot;</extracomment>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>request of mode %1</source>
+        <extracomment>The request condition of a unit mode</extracomment>
+        <translation>demande du mode %1</translation>
+    </message>
+    <message>
+        <source>The variable name &apos;%1&apos; is one the generated PackML code uses (PackTags, the state machine, the function blocks or the program %2).</source>
+        <translation>Le nom de variable « %1 » est utilisé par le code PackML généré (PackTags, la machine d&apos;états, les blocs fonctionnels ou le programme %2).</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlTexts</name>
+    <message>
+        <source>Wait state</source>
+        <translation>État d&apos;attente</translation>
+    </message>
+    <message>
+        <source>Acting state</source>
+        <translation>État actif</translation>
+    </message>
+    <message>
+        <source>Dual state: acts and waits for a command</source>
+        <translation>État double : agit et attend une commande</translation>
+    </message>
+    <message>
+        <source>Clears the faults that led to Aborted, then goes to Stopped.</source>
+        <translation>Efface les défauts qui ont mené à Aborted, puis passe à Stopped.</translation>
+    </message>
+    <message>
+        <source>Powered and stationary; waits for Reset.</source>
+        <translation>Sous tension et à l&apos;arrêt ; attend Reset.</translation>
+    </message>
+    <message>
+        <source>Prepares the unit to produce, then goes to Execute.</source>
+        <translation>Prépare l&apos;unité à produire, puis passe à Execute.</translation>
+    </message>
+    <message>
+        <source>Reset and ready; waits for Start.</source>
+        <translation>Réinitialisée et prête ; attend Start.</translation>
+    </message>
+    <message>
+        <source>Paused by a condition outside the unit (starved, blocked); waits for Unsuspend.</source>
+        <translation>En pause pour une condition extérieure à l&apos;unité (manque, bourrage aval) ; attend Unsuspend.</translation>
+    </message>
+    <message>
+        <source>Produces; waits for Hold, Suspend or the end of the batch.</source>
+        <translation>Produit ; attend Hold, Suspend ou la fin du lot.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to a controlled stop, then goes to Stopped.</source>
+        <translation>Amène l&apos;unité à un arrêt contrôlé, puis passe à Stopped.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to a quick safe stop, then goes to Aborted.</source>
+        <translation>Amène l&apos;unité à un arrêt rapide et sûr, puis passe à Aborted.</translation>
+    </message>
+    <message>
+        <source>Stopped after an abort; waits for Clear.</source>
+        <translation>Arrêtée après un abandon ; attend Clear.</translation>
+    </message>
+    <message>
+        <source>Brings production to a controlled pause for an internal reason, then goes to Held.</source>
+        <translation>Met la production en pause contrôlée pour une raison interne, puis passe à Held.</translation>
+    </message>
+    <message>
+        <source>Paused for an internal reason; waits for Unhold.</source>
+        <translation>En pause pour une raison interne ; attend Unhold.</translation>
+    </message>
+    <message>
+        <source>Prepares to resume production after Held, then goes to Execute.</source>
+        <translation>Prépare la reprise de la production après Held, puis passe à Execute.</translation>
+    </message>
+    <message>
+        <source>Brings production to a controlled pause for an outside reason, then goes to Suspended.</source>
+        <translation>Met la production en pause contrôlée pour une raison extérieure, puis passe à Suspended.</translation>
+    </message>
+    <message>
+        <source>Prepares to resume production after Suspended, then goes to Execute.</source>
+        <translation>Prépare la reprise de la production après Suspended, puis passe à Execute.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to its ready state, then goes to Idle.</source>
+        <translation>Amène l&apos;unité dans son état prêt, puis passe à Idle.</translation>
+    </message>
+    <message>
+        <source>Ends the batch in order, then goes to Complete.</source>
+        <translation>Termine le lot en ordre, puis passe à Complete.</translation>
+    </message>
+    <message>
+        <source>The batch is complete; waits for Reset.</source>
+        <translation>Le lot est terminé ; attend Reset.</translation>
+    </message>
+    <message>
+        <source>Reset: make the unit ready to start again.</source>
+        <translation>Reset : rendre l&apos;unité prête à redémarrer.</translation>
+    </message>
+    <message>
+        <source>Start: begin producing.</source>
+        <translation>Start : commencer à produire.</translation>
+    </message>
+    <message>
+        <source>Stop: bring the unit to a controlled stop.</source>
+        <translation>Stop : amener l&apos;unité à un arrêt contrôlé.</translation>
+    </message>
+    <message>
+        <source>Hold: pause production for an internal reason.</source>
+        <translation>Hold : mettre la production en pause pour une raison interne.</translation>
+    </message>
+    <message>
+        <source>Unhold: resume production after a Hold.</source>
+        <translation>Unhold : reprendre la production après un Hold.</translation>
+    </message>
+    <message>
+        <source>Suspend: pause production for an outside reason.</source>
+        <translation>Suspend : mettre la production en pause pour une raison extérieure.</translation>
+    </message>
+    <message>
+        <source>Unsuspend: resume production after a Suspend.</source>
+        <translation>Unsuspend : reprendre la production après un Suspend.</translation>
+    </message>
+    <message>
+        <source>Abort: stop the unit at once, safely.</source>
+        <translation>Abort : arrêter l&apos;unité immédiatement, en sécurité.</translation>
+    </message>
+    <message>
+        <source>Clear: clear the faults after an Abort.</source>
+        <translation>Clear : effacer les défauts après un Abort.</translation>
+    </message>
+    <message>
+        <source>Complete: end the batch.</source>
+        <translation>Complete : terminer le lot.</translation>
+    </message>
+</context>
+<context>
     <name>PasteVariablesCommand</name>
     <message>
         <source>Paste variable %1</source>
@@ -1597,6 +1895,53 @@
         <source>scan number %1 is too large: a scenario runs at most %2 scans</source>
         <extracomment>%2: the highest scan number a scenario may name</extracomment>
         <translation>le numéro de cycle %1 est trop grand : un scénario dure au plus %2 cycles</translation>
+    </message>
+    <message>
+        <source>expected a command name after &apos;command&apos;, found %1</source>
+        <extracomment>&apos;command&apos; is scenario syntax</extracomment>
+        <translation>un nom de commande est attendu après &apos;command&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a mode name or number after &apos;mode&apos;, found %1</source>
+        <extracomment>&apos;mode&apos; is scenario syntax</extracomment>
+        <translation>un nom ou un numéro de mode est attendu après &apos;mode&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected a state name after &apos;state&apos;, found %1</source>
+        <extracomment>&apos;state&apos; is scenario syntax</extracomment>
+        <translation>un nom d&apos;état est attendu après &apos;state&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>commande inconnue &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown unit mode &apos;%1&apos;</source>
+        <translation>mode d&apos;unité inconnu &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown state &apos;%1&apos;</source>
+        <translation>état inconnu &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown instance &apos;%1&apos;</source>
+        <extracomment>%1: a PackML function block instance (Production_Resetting)</extracomment>
+        <translation>instance inconnue &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is for PackML models only</source>
+        <extracomment>%1: scenario syntax (&quot;command&quot;, &quot;expect state&quot;)</extracomment>
+        <translation>&apos;%1&apos; ne s&apos;applique qu&apos;aux modèles PackML</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is for GEMMA models only</source>
+        <extracomment>%1: scenario syntax (&quot;expect step&quot;, &quot;set complete&quot;)</extracomment>
+        <translation>&apos;%1&apos; ne s&apos;applique qu&apos;aux modèles GEMMA</translation>
+    </message>
+    <message>
+        <source>a %1 in scan %2 right after the one of line %3 is not seen: the request must be FALSE for one scan in between</source>
+        <extracomment>%1: &quot;command&quot; or &quot;mode&quot; (scenario syntax); %2: a scan number; %3: a line number</extracomment>
+        <translation>un %1 au cycle %2, juste après celui de la ligne %3, n&apos;est pas vu : la demande doit rester FALSE pendant un cycle entre les deux</translation>
     </message>
 </context>
 <context>
@@ -3315,6 +3660,68 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
         <translation>Chaque cycle franchit une fois les transitions validées à son début, comme le font les exécutifs SFC tels que CODESYS.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartTexts</name>
+    <message>
+        <source>Disabled in mode %1: never active there.</source>
+        <extracomment>%1: the unit mode the chart shows (&quot;3 Manual&quot;)</extracomment>
+        <translation>Désactivé dans le mode %1 : jamais actif dans ce mode.</translation>
+    </message>
+    <message>
+        <source>Runs its own nested GRAFCET in this mode.</source>
+        <translation>Exécute son propre GRAFCET imbriqué dans ce mode.</translation>
+    </message>
+    <message>
+        <source>Runs the nested GRAFCET of mode %1 for this state.</source>
+        <extracomment>%1: the number of the unit mode whose GRAFCET runs</extracomment>
+        <translation>Exécute le GRAFCET imbriqué du mode %1 pour cet état.</translation>
+    </message>
+    <message>
+        <source>No nested GRAFCET in this mode: it waits for a command.</source>
+        <translation>Pas de GRAFCET imbriqué dans ce mode : il attend une commande.</translation>
+    </message>
+    <message>
+        <source>No nested GRAFCET in this mode: it completes at once.</source>
+        <translation>Pas de GRAFCET imbriqué dans ce mode : il se termine aussitôt.</translation>
+    </message>
+    <message>
+        <source>SC (State Complete): %1 has done its work.</source>
+        <extracomment>%1: a PackML state (&quot;Starting&quot;)</extracomment>
+        <translation>SC (State Complete) : %1 a terminé son travail.</translation>
+    </message>
+    <message>
+        <source>Optional: exists only under an option of Model Settings.</source>
+        <translation>Facultative : n&apos;existe qu&apos;avec une option des paramètres du modèle.</translation>
+    </message>
+    <message>
+        <source>In mode %1, %2 is disabled: this transition leads to %3.</source>
+        <extracomment>%1: the unit mode (&quot;3 Manual&quot;), %2: the disabled state, %3: where the transition leads instead</extracomment>
+        <translation>Dans le mode %1, %2 est désactivé : cette transition mène à %3.</translation>
+    </message>
+    <message>
+        <source>Accepted by every state in the Abort frame, before their own transitions.</source>
+        <translation>Acceptée par tous les états du cadre Abort, avant leurs propres transitions.</translation>
+    </message>
+    <message>
+        <source>Accepted by every state in the Stop frame, before their own transitions.</source>
+        <translation>Acceptée par tous les états du cadre Stop, avant leurs propres transitions.</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Condition :</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartView</name>
+    <message>
+        <source>Unit &amp;mode:</source>
+        <translation>&amp;Mode de l&apos;unité :</translation>
+    </message>
+    <message>
+        <source>The unit mode the chart shows: its disabled states greyed, its skipped transitions labelled with where they lead</source>
+        <translation>Le mode de l&apos;unité que montre le diagramme : ses états désactivés grisés, ses transitions sautées étiquetées avec leur destination</translation>
     </message>
 </context>
 <context>

@@ -921,6 +921,304 @@
     </message>
 </context>
 <context>
+    <name>PackMLDiagnosticText</name>
+    <message>
+        <source>The model has no unit mode.</source>
+        <translation>Il modello non ha alcuna modalità di unità.</translation>
+    </message>
+    <message>
+        <source>The initial mode %1 is not a unit mode of the model.</source>
+        <translation>La modalità iniziale %1 non è una modalità di unità del modello.</translation>
+    </message>
+    <message>
+        <source>The initial state %1 is not Stopped, Idle or Aborted.</source>
+        <translation>Lo stato iniziale %1 non è Stopped, Idle o Aborted.</translation>
+    </message>
+    <message>
+        <source>The model&apos;s name &apos;%1&apos; cannot name the PROGRAM (it is no IEC identifier, or the generated code or a variable takes it): the PROGRAM is named %2.</source>
+        <translation>Il nome del modello «%1» non può nominare il PROGRAM (non è un identificatore IEC, oppure lo usa il codice generato o una variabile): il PROGRAM si chiama %2.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is outside 1..31 (PackTags UnitMode).</source>
+        <translation>La modalità di unità %1 è fuori da 1..31 (PackTags UnitMode).</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is given twice.</source>
+        <translation>La modalità di unità %1 è indicata due volte.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is named %2, not &apos;%3&apos;.</source>
+        <extracomment>%2: the fixed name of a base mode (Production, Maintenance, Manual)</extracomment>
+        <translation>La modalità di unità %1 si chiama %2, non «%3».</translation>
+    </message>
+    <message>
+        <source>The name &apos;%2&apos; of unit mode %1 is not an IEC identifier, and it becomes part of the names of function blocks.</source>
+        <translation>Il nome «%2» della modalità di unità %1 non è un identificatore IEC, e diventa parte dei nomi dei blocchi funzione.</translation>
+    </message>
+    <message>
+        <source>The name &apos;%2&apos; of unit mode %1 is one the generated code uses.</source>
+        <translation>Il nome «%2» della modalità di unità %1 è usato dal codice generato.</translation>
+    </message>
+    <message>
+        <source>Unit mode %1 is named &apos;%2&apos;, as mode %3 is (ignoring case).</source>
+        <translation>La modalità di unità %1 si chiama «%2», come la modalità %3 (senza distinguere maiuscole e minuscole).</translation>
+    </message>
+    <message>
+        <source>Mode %1 lists %2 as disabled, which every unit needs: ignored.</source>
+        <translation>La modalità %1 elenca %2 come disattivato, ma ogni unità ne ha bisogno: ignorato.</translation>
+    </message>
+    <message>
+        <source>Mode %1 lists %2 as disabled, but it stays enabled while %3 is enabled.</source>
+        <extracomment>%3: the enabled acting states of the loop (Holding, Unholding)</extracomment>
+        <translation>La modalità %1 elenca %2 come disattivato, ma resta attivato finché %3 è attivato.</translation>
+    </message>
+    <message>
+        <source>Mode %1 allows a mode change in %2, an acting state, half-way through its GRAFCET: ignored.</source>
+        <translation>La modalità %1 consente un cambio di modalità in %2, uno stato attivo, a metà del suo GRAFCET: ignorato.</translation>
+    </message>
+    <message>
+        <source>Mode %1 allows a mode change in %2, which it disables: no effect.</source>
+        <translation>La modalità %1 consente un cambio di modalità in %2, che disattiva: nessun effetto.</translation>
+    </message>
+    <message>
+        <source>Mode %1 can never be current: it is not the initial mode, and no state allows a change into it from another mode.</source>
+        <translation>La modalità %1 non può mai essere quella corrente: non è la modalità iniziale e nessuno stato consente di passarvi da un&apos;altra modalità.</translation>
+    </message>
+    <message>
+        <source>In mode %1, no sequence of transitions leads to Execute from where the mode begins (counting a State Complete only where the state&apos;s GRAFCET writes Complete).</source>
+        <translation>Nella modalità %1 nessuna sequenza di transizioni porta a Execute da dove la modalità inizia (uno State Complete conta solo dove il GRAFCET dello stato scrive Complete).</translation>
+    </message>
+    <message>
+        <source>In mode %1, no sequence of transitions reaches %2 from where the mode begins: it is never active.</source>
+        <translation>Nella modalità %1 nessuna sequenza di transizioni raggiunge %2 da dove la modalità inizia: non è mai attivo.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: Aborting never writes Complete: nothing leaves Aborting, so the unit can never reach Aborted.</source>
+        <translation>Il GRAFCET di %1: Aborting non scrive mai Complete: nulla esce da Aborting, quindi l&apos;unità non può mai raggiungere Aborted.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: %2 never writes Complete: only Stop or Abort leave the state.</source>
+        <translation>Il GRAFCET di %1: %2 non scrive mai Complete: solo Stop o Abort escono dallo stato.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: %2 is kept, but the mode disables the state: it generates no code.</source>
+        <translation>Il GRAFCET di %1: %2 è conservato, ma la modalità disattiva lo stato: non genera codice.</translation>
+    </message>
+    <message>
+        <source>there is no mode %1</source>
+        <translation>non esiste la modalità %1</translation>
+    </message>
+    <message>
+        <source>that is the mode itself</source>
+        <translation>è la modalità stessa</translation>
+    </message>
+    <message>
+        <source>mode %1 has no GRAFCET of its own there</source>
+        <translation>la modalità %1 non vi ha un GRAFCET proprio</translation>
+    </message>
+    <message>
+        <source>%1: %2 runs the same GRAFCET as mode %3, but %4.</source>
+        <extracomment>%4: why (there is no mode 9, that is the mode itself, ...)</extracomment>
+        <translation>%1: %2 esegue lo stesso GRAFCET della modalità %3, ma %4.</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1: Execute writes Complete, which nothing reads in the 2022 edition: use the Complete command.</source>
+        <translation>Il GRAFCET di %1: Execute scrive Complete, che nell&apos;edizione 2022 nulla legge: usate il comando Complete.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 is empty: write FALSE for a command that comes only through CntrlCmd.</source>
+        <translation>La condizione di %1 è vuota: scrivete FALSE per un comando che arriva solo tramite CntrlCmd.</translation>
+    </message>
+    <message>
+        <source>Command %2 has the same condition as command %1: one rising edge issues both, and only the first in priority acts.</source>
+        <translation>Il comando %2 ha la stessa condizione del comando %1: un solo fronte di salita li emette entrambi, e agisce solo il primo in priorità.</translation>
+    </message>
+    <message>
+        <source>The request of mode %2 has the same condition as the request of mode %1: one rising edge issues both, and only the first in priority acts.</source>
+        <translation>La richiesta della modalità %2 ha la stessa condizione della richiesta della modalità %1: un solo fronte di salita le emette entrambe, e agisce solo la prima in priorità.</translation>
+    </message>
+    <message>
+        <source>The condition of %1 reads the output &apos;%2&apos;: commands and mode requests come from an operator, a line controller or an alarm, so read an input or an internal variable.</source>
+        <translation>La condizione di %1 legge l&apos;uscita «%2»: comandi e richieste di modalità vengono da un operatore, da un controllore di linea o da un allarme, quindi leggete un ingresso o una variabile interna.</translation>
+    </message>
+    <message>
+        <source>No enabled state of any mode accepts the command %1: it generates no code.</source>
+        <translation>Nessuno stato attivato di alcuna modalità accetta il comando %1: non genera codice.</translation>
+    </message>
+    <message>
+        <source>The Complete command exists in the 2022 edition only: its setting is ignored in this 2015 model.</source>
+        <translation>Il comando Complete esiste solo nell&apos;edizione 2022: la sua impostazione è ignorata in questo modello 2015.</translation>
+    </message>
+    <message>
+        <source>The option completeInSuspendedHeld is for the 2022 edition only: it is ignored in this 2015 model.</source>
+        <translation>L&apos;opzione completeInSuspendedHeld vale solo per l&apos;edizione 2022: è ignorata in questo modello 2015.</translation>
+    </message>
+    <message>
+        <source>a step activity</source>
+        <translation>un&apos;attività di tappa</translation>
+    </message>
+    <message>
+        <source>a step duration</source>
+        <translation>una durata di tappa</translation>
+    </message>
+    <message>
+        <source>an edge</source>
+        <translation>un fronte</translation>
+    </message>
+    <message>
+        <source>The condition of %1 uses %2 (&apos;%3&apos;), which only the texts of nested GRAFCETs have; a command or request is already the rising edge of its condition.</source>
+        <extracomment>%2: what the condition uses (a step activity, an edge...); %3: the text as written</extracomment>
+        <translation>La condizione di %1 usa %2 («%3»), che hanno solo i testi dei GRAFCET annidati; un comando o una richiesta è già il fronte di salita della sua condizione.</translation>
+    </message>
+    <message>
+        <source>mode %1</source>
+        <extracomment>A unit mode of a PackML model: &quot;mode Manual&quot;</extracomment>
+        <translation>modalità %1</translation>
+    </message>
+    <message>
+        <source>command %1</source>
+        <extracomment>A PackML command: &quot;command Hold&quot;</extracomment>
+        <translation>comando %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>A state in a unit mode: &quot;Manual: Execute&quot;</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>request of mode %1</source>
+        <extracomment>The request condition of a unit mode</extracomment>
+        <translation>richiesta della modalità %1</translation>
+    </message>
+    <message>
+        <source>The variable name &apos;%1&apos; is one the generated PackML code uses (PackTags, the state machine, the function blocks or the program %2).</source>
+        <translation>Il nome di variabile «%1» è usato dal codice PackML generato (PackTags, la macchina a stati, i blocchi funzione o il programma %2).</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlTexts</name>
+    <message>
+        <source>Wait state</source>
+        <translation>Stato di attesa</translation>
+    </message>
+    <message>
+        <source>Acting state</source>
+        <translation>Stato attivo</translation>
+    </message>
+    <message>
+        <source>Dual state: acts and waits for a command</source>
+        <translation>Stato duale: agisce e attende un comando</translation>
+    </message>
+    <message>
+        <source>Clears the faults that led to Aborted, then goes to Stopped.</source>
+        <translation>Cancella i guasti che hanno portato ad Aborted, poi passa a Stopped.</translation>
+    </message>
+    <message>
+        <source>Powered and stationary; waits for Reset.</source>
+        <translation>Alimentata e ferma; attende Reset.</translation>
+    </message>
+    <message>
+        <source>Prepares the unit to produce, then goes to Execute.</source>
+        <translation>Prepara l&apos;unità a produrre, poi passa a Execute.</translation>
+    </message>
+    <message>
+        <source>Reset and ready; waits for Start.</source>
+        <translation>Ripristinata e pronta; attende Start.</translation>
+    </message>
+    <message>
+        <source>Paused by a condition outside the unit (starved, blocked); waits for Unsuspend.</source>
+        <translation>In pausa per una condizione esterna all&apos;unità (mancanza, blocco); attende Unsuspend.</translation>
+    </message>
+    <message>
+        <source>Produces; waits for Hold, Suspend or the end of the batch.</source>
+        <translation>Produce; attende Hold, Suspend o la fine del lotto.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to a controlled stop, then goes to Stopped.</source>
+        <translation>Porta l&apos;unità a un arresto controllato, poi passa a Stopped.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to a quick safe stop, then goes to Aborted.</source>
+        <translation>Porta l&apos;unità a un arresto rapido e sicuro, poi passa ad Aborted.</translation>
+    </message>
+    <message>
+        <source>Stopped after an abort; waits for Clear.</source>
+        <translation>Ferma dopo un&apos;interruzione; attende Clear.</translation>
+    </message>
+    <message>
+        <source>Brings production to a controlled pause for an internal reason, then goes to Held.</source>
+        <translation>Porta la produzione a una pausa controllata per una causa interna, poi passa a Held.</translation>
+    </message>
+    <message>
+        <source>Paused for an internal reason; waits for Unhold.</source>
+        <translation>In pausa per una causa interna; attende Unhold.</translation>
+    </message>
+    <message>
+        <source>Prepares to resume production after Held, then goes to Execute.</source>
+        <translation>Prepara la ripresa della produzione dopo Held, poi passa a Execute.</translation>
+    </message>
+    <message>
+        <source>Brings production to a controlled pause for an outside reason, then goes to Suspended.</source>
+        <translation>Porta la produzione a una pausa controllata per una causa esterna, poi passa a Suspended.</translation>
+    </message>
+    <message>
+        <source>Prepares to resume production after Suspended, then goes to Execute.</source>
+        <translation>Prepara la ripresa della produzione dopo Suspended, poi passa a Execute.</translation>
+    </message>
+    <message>
+        <source>Brings the unit to its ready state, then goes to Idle.</source>
+        <translation>Porta l&apos;unità nel suo stato di pronto, poi passa a Idle.</translation>
+    </message>
+    <message>
+        <source>Ends the batch in order, then goes to Complete.</source>
+        <translation>Termina il lotto in ordine, poi passa a Complete.</translation>
+    </message>
+    <message>
+        <source>The batch is complete; waits for Reset.</source>
+        <translation>Il lotto è completato; attende Reset.</translation>
+    </message>
+    <message>
+        <source>Reset: make the unit ready to start again.</source>
+        <translation>Reset: rendere l&apos;unità pronta a ripartire.</translation>
+    </message>
+    <message>
+        <source>Start: begin producing.</source>
+        <translation>Start: iniziare a produrre.</translation>
+    </message>
+    <message>
+        <source>Stop: bring the unit to a controlled stop.</source>
+        <translation>Stop: portare l&apos;unità a un arresto controllato.</translation>
+    </message>
+    <message>
+        <source>Hold: pause production for an internal reason.</source>
+        <translation>Hold: mettere in pausa la produzione per una causa interna.</translation>
+    </message>
+    <message>
+        <source>Unhold: resume production after a Hold.</source>
+        <translation>Unhold: riprendere la produzione dopo un Hold.</translation>
+    </message>
+    <message>
+        <source>Suspend: pause production for an outside reason.</source>
+        <translation>Suspend: mettere in pausa la produzione per una causa esterna.</translation>
+    </message>
+    <message>
+        <source>Unsuspend: resume production after a Suspend.</source>
+        <translation>Unsuspend: riprendere la produzione dopo un Suspend.</translation>
+    </message>
+    <message>
+        <source>Abort: stop the unit at once, safely.</source>
+        <translation>Abort: fermare l&apos;unità subito, in sicurezza.</translation>
+    </message>
+    <message>
+        <source>Clear: clear the faults after an Abort.</source>
+        <translation>Clear: cancellare i guasti dopo un Abort.</translation>
+    </message>
+    <message>
+        <source>Complete: end the batch.</source>
+        <translation>Complete: terminare il lotto.</translation>
+    </message>
+</context>
+<context>
     <name>PasteVariablesCommand</name>
     <message>
         <source>Paste variable %1</source>
@@ -1597,6 +1895,53 @@
         <source>scan number %1 is too large: a scenario runs at most %2 scans</source>
         <extracomment>%2: the highest scan number a scenario may name</extracomment>
         <translation>il numero di ciclo %1 è troppo grande: uno scenario dura al massimo %2 cicli</translation>
+    </message>
+    <message>
+        <source>expected a command name after &apos;command&apos;, found %1</source>
+        <extracomment>&apos;command&apos; is scenario syntax</extracomment>
+        <translation>atteso un nome di comando dopo &apos;command&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a mode name or number after &apos;mode&apos;, found %1</source>
+        <extracomment>&apos;mode&apos; is scenario syntax</extracomment>
+        <translation>atteso un nome o un numero di modo dopo &apos;mode&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected a state name after &apos;state&apos;, found %1</source>
+        <extracomment>&apos;state&apos; is scenario syntax</extracomment>
+        <translation>atteso un nome di stato dopo &apos;state&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos;</source>
+        <translation>comando sconosciuto &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown unit mode &apos;%1&apos;</source>
+        <translation>modo dell&apos;unità sconosciuto &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown state &apos;%1&apos;</source>
+        <translation>stato sconosciuto &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>unknown instance &apos;%1&apos;</source>
+        <extracomment>%1: a PackML function block instance (Production_Resetting)</extracomment>
+        <translation>istanza sconosciuta &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is for PackML models only</source>
+        <extracomment>%1: scenario syntax (&quot;command&quot;, &quot;expect state&quot;)</extracomment>
+        <translation>&apos;%1&apos; vale solo per i modelli PackML</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is for GEMMA models only</source>
+        <extracomment>%1: scenario syntax (&quot;expect step&quot;, &quot;set complete&quot;)</extracomment>
+        <translation>&apos;%1&apos; vale solo per i modelli GEMMA</translation>
+    </message>
+    <message>
+        <source>a %1 in scan %2 right after the one of line %3 is not seen: the request must be FALSE for one scan in between</source>
+        <extracomment>%1: &quot;command&quot; or &quot;mode&quot; (scenario syntax); %2: a scan number; %3: a line number</extracomment>
+        <translation>un %1 nel ciclo %2 subito dopo quello della riga %3 non viene visto: la richiesta deve restare FALSE per un ciclo nel mezzo</translation>
     </message>
 </context>
 <context>
@@ -3315,6 +3660,68 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
         <translation>Ogni ciclo fa scattare una volta le transizioni abilitate al suo inizio, come fanno i runtime SFC quali CODESYS.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartTexts</name>
+    <message>
+        <source>Disabled in mode %1: never active there.</source>
+        <extracomment>%1: the unit mode the chart shows (&quot;3 Manual&quot;)</extracomment>
+        <translation>Disattivato nel modo %1: mai attivo in esso.</translation>
+    </message>
+    <message>
+        <source>Runs its own nested GRAFCET in this mode.</source>
+        <translation>Esegue il proprio GRAFCET annidato in questo modo.</translation>
+    </message>
+    <message>
+        <source>Runs the nested GRAFCET of mode %1 for this state.</source>
+        <extracomment>%1: the number of the unit mode whose GRAFCET runs</extracomment>
+        <translation>Esegue il GRAFCET annidato del modo %1 per questo stato.</translation>
+    </message>
+    <message>
+        <source>No nested GRAFCET in this mode: it waits for a command.</source>
+        <translation>Nessun GRAFCET annidato in questo modo: attende un comando.</translation>
+    </message>
+    <message>
+        <source>No nested GRAFCET in this mode: it completes at once.</source>
+        <translation>Nessun GRAFCET annidato in questo modo: si completa subito.</translation>
+    </message>
+    <message>
+        <source>SC (State Complete): %1 has done its work.</source>
+        <extracomment>%1: a PackML state (&quot;Starting&quot;)</extracomment>
+        <translation>SC (State Complete): %1 ha terminato il suo lavoro.</translation>
+    </message>
+    <message>
+        <source>Optional: exists only under an option of Model Settings.</source>
+        <translation>Facoltativa: esiste solo con un&apos;opzione delle impostazioni del modello.</translation>
+    </message>
+    <message>
+        <source>In mode %1, %2 is disabled: this transition leads to %3.</source>
+        <extracomment>%1: the unit mode (&quot;3 Manual&quot;), %2: the disabled state, %3: where the transition leads instead</extracomment>
+        <translation>Nel modo %1, %2 è disattivato: questa transizione porta a %3.</translation>
+    </message>
+    <message>
+        <source>Accepted by every state in the Abort frame, before their own transitions.</source>
+        <translation>Accettata da ogni stato del riquadro Abort, prima delle loro transizioni.</translation>
+    </message>
+    <message>
+        <source>Accepted by every state in the Stop frame, before their own transitions.</source>
+        <translation>Accettata da ogni stato del riquadro Stop, prima delle loro transizioni.</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Condizione:</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartView</name>
+    <message>
+        <source>Unit &amp;mode:</source>
+        <translation>&amp;Modo dell&apos;unità:</translation>
+    </message>
+    <message>
+        <source>The unit mode the chart shows: its disabled states greyed, its skipped transitions labelled with where they lead</source>
+        <translation>Il modo dell&apos;unità mostrato dal diagramma: i suoi stati disattivati in grigio, le transizioni saltate etichettate con la loro destinazione</translation>
     </message>
 </context>
 <context>
