@@ -6,6 +6,7 @@
 #include "core/model/model.h"
 #include "core/simulation/simulator.h"
 #include "samplemodels.h"
+#include "generatedcode.h"
 #include "stinterpreter.h"
 
 #include <random>
@@ -25,44 +26,12 @@ using namespace core;
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
-
-struct Generated {
-    std::string program;
-    std::string globals;
-    std::vector<std::string> functionBlocks;
-
-    std::string all() const
-    {
-        std::string text = globals + "\n" + program;
-        for (const std::string& fb : functionBlocks)
-            text += "\n" + fb;
-        return text;
-    }
-};
+using sttest::kSanitized;
+using Generated = sttest::GeneratedCode;
 
 Generated generate(const Model& model)
 {
-    const PlcProject project = buildPlcProject(model, Dialect::Iec);
-    Generated generated;
-    generated.globals = formatGlobals(project);
-    for (const PlcPou& pou : project.pous) {
-        if (pou.kind == PouKind::Program)
-            generated.program = formatPou(pou, Dialect::Iec);
-        else
-            generated.functionBlocks.push_back(formatPou(pou, Dialect::Iec));
-    }
-    return generated;
+    return sttest::generateIec(model);
 }
 
 cond::Value randomValue(std::mt19937& random, IecType type)

@@ -5,6 +5,7 @@
 #include "core/templates/packml/packmlsimulator.h"
 #include "packmlcapper.h"
 #include "packmlsamples.h"
+#include "generatedcode.h"
 #include "stinterpreter.h"
 
 #include <functional>
@@ -25,44 +26,12 @@ using namespace core::packml;
 
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
-
-struct Generated {
-    std::string program;
-    std::string globals;
-    std::vector<std::string> functionBlocks;
-
-    std::string all() const
-    {
-        std::string text = globals + "\n" + program;
-        for (const std::string& fb : functionBlocks)
-            text += "\n" + fb;
-        return text;
-    }
-};
+using sttest::kSanitized;
+using Generated = sttest::GeneratedCode;
 
 Generated generate(const Model& model)
 {
-    const PlcProject project = buildPlcProject(model, Dialect::Iec);
-    Generated generated;
-    generated.globals = formatGlobals(project);
-    for (const PlcPou& pou : project.pous) {
-        if (pou.kind == PouKind::Program)
-            generated.program = formatPou(pou, Dialect::Iec);
-        else
-            generated.functionBlocks.push_back(formatPou(pou, Dialect::Iec));
-    }
-    return generated;
+    return sttest::generateIec(model);
 }
 
 std::string boolText(bool value)
