@@ -496,3 +496,29 @@ TEST_CASE("PackML rules: on random listings, S(c,r) holds no acting or disabled 
                 CHECK(granted.contains(state));
     }
 }
+
+TEST_CASE("Execute's Resume flag: set by Hold and Suspend out of Execute, cleared by a start", "[packml-rules]")
+{
+    const Options options = defaultOptions(Edition::Y2015);
+    StateSet all;
+    for (const StateInfo& info : states())
+        all.insert(info.state);
+    const auto effectOf = [&](State source, Command command, const StateSet& enabled) {
+        for (const ModeTransition& t : modeTransitionsFrom(source, enabled, options))
+            if (t.transition.trigger == Trigger::Command && t.transition.command == command)
+                return resumeEffect(t);
+        FAIL("no such transition");
+        return ResumeEffect::None;
+    };
+    CHECK(effectOf(State::Execute, Command::Hold, all) == ResumeEffect::Set);
+    CHECK(effectOf(State::Execute, Command::Suspend, all) == ResumeEffect::Set);
+    CHECK(effectOf(State::Execute, Command::Stop, all) == ResumeEffect::None);
+    CHECK(effectOf(State::Held, Command::Unhold, all) == ResumeEffect::None);
+    CHECK(effectOf(State::Idle, Command::Start, all) == ResumeEffect::None); // into Starting
+    StateSet noStarting = all;
+    noStarting.erase(State::Starting);
+    CHECK(effectOf(State::Idle, Command::Start, noStarting) == ResumeEffect::Clear); // Starting skipped
+    for (const ModeTransition& t : modeTransitionsFrom(State::Starting, all, options))
+        if (t.transition.trigger == Trigger::StateComplete)
+            CHECK(resumeEffect(t) == ResumeEffect::Clear);
+}

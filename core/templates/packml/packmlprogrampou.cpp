@@ -214,14 +214,11 @@ private:
     {
         const TemplateTransition& t = transition.transition;
         std::string text = "State := " + number(transition.destination.state) + "; Entry := TRUE;";
-        const bool pausesExecute = t.source == State::Execute && t.trigger == Trigger::Command
-                                   && (t.command == Command::Hold || t.command == Command::Suspend);
-        const bool startsExecute = transition.destination.state == State::Execute
-                                   && (t.source == State::Starting || t.target == State::Starting);
-        if (pausesExecute)
-            text += " Resume := TRUE;";
-        else if (startsExecute)
-            text += " Resume := FALSE;";
+        switch (resumeEffect(transition)) {
+        case ResumeEffect::Set: text += " Resume := TRUE;"; break;
+        case ResumeEffect::Clear: text += " Resume := FALSE;"; break;
+        case ResumeEffect::None: break;
+        }
         const bool sc = t.trigger == Trigger::StateComplete;
         if (transition.destination.skipped)
             text += " " + comment(std::string(sc ? "SC: " : "") + std::string(stateName(*transition.destination.skipped))

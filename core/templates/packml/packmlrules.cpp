@@ -166,6 +166,18 @@ StateSet consistentListing(const StateSet& disabledListing, State toggled)
     return listing;
 }
 
+ResumeEffect resumeEffect(const ModeTransition& transition)
+{
+    const TemplateTransition& t = transition.transition;
+    const bool pausesExecute = t.source == State::Execute && t.trigger == Trigger::Command
+                               && (t.command == Command::Hold || t.command == Command::Suspend);
+    if (pausesExecute)
+        return ResumeEffect::Set;
+    const bool startsExecute = transition.destination.state == State::Execute
+                               && (t.source == State::Starting || t.target == State::Starting);
+    return startsExecute ? ResumeEffect::Clear : ResumeEffect::None;
+}
+
 std::optional<Destination> destination(State target, const StateSet& enabled)
 {
     if (enabled.contains(target))

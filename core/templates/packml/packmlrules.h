@@ -66,6 +66,13 @@ struct ModeTransition {
     Destination destination;
 };
 
+// What a transition does to Execute's Resume flag (spec §4, §6.4): Hold and
+// Suspend out of Execute set it (the return from their loop resumes);
+// entering Execute from Starting, or from Idle with Starting skipped, clears
+// it (a fresh start). The generator and the simulator both apply this rule.
+enum class ResumeEffect { None, Set, Clear };
+ResumeEffect resumeEffect(const ModeTransition& transition);
+
 // The transitions of `source` in a mode with these enabled states, in
 // priority order, skipping applied, the ones that do not exist left out.
 // None for a disabled source: it is never active in the mode.

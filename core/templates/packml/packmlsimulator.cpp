@@ -50,12 +50,6 @@ private:
     const std::vector<char>& m_previous;
 };
 
-bool isPauseCommand(const TemplateTransition& transition)
-{
-    return transition.trigger == Trigger::Command
-        && (transition.command == Command::Hold || transition.command == Command::Suspend);
-}
-
 } // namespace
 
 // What scan() reads and never changes, shared by copies.
@@ -479,15 +473,13 @@ void PackmlSimulator::callFunctionBlock(int instance, bool initialization)
 
 void PackmlSimulator::fire(const ModeTransition& transition)
 {
-    const State source = m_state;
     m_state = transition.destination.state;
     m_entry = true;
-    // Spec §6.4: Resume is set when Hold or Suspend pauses Execute and
-    // cleared on the way into Execute from Starting (or Idle, Starting skipped).
-    if (source == State::Execute && isPauseCommand(transition.transition))
-        m_resume = true;
-    else if (m_state == State::Execute && (source == State::Starting || source == State::Idle))
-        m_resume = false;
+    switch (resumeEffect(transition)) {
+    case ResumeEffect::Set: m_resume = true; break;
+    case ResumeEffect::Clear: m_resume = false; break;
+    case ResumeEffect::None: break;
+    }
 }
 
 void PackmlSimulator::dropCommands(const Events& events, const ProgramState* programState, bool complete,
