@@ -1,6 +1,7 @@
 #include "core/templates/packml/packmlrules.h"
 
 #include "core/model/iectypes.h"
+#include "core/templates/packml/packtags.h"
 
 #include <algorithm>
 #include <array>
@@ -56,11 +57,11 @@ bool acceptedSomewhere(Command command, std::span<const StateSet> enabledPerMode
     return false;
 }
 
-// Spec §5.3's names that do not depend on the model.
-constexpr std::array<std::string_view, 17> kFixedNames{
-    "State",           "Mode",           "Entry",          "Resume",         "Initialization", "Complete",
-    "R_TRIG",          "CntrlCmd",       "CmdChangeRequest", "UnitMode",     "UnitModeChangeRequest",
-    "StateCurrent",    "UnitModeCurrent", "PackMLConfiguration", "PackMLResource", "MainTask", "PackMLInstance",
+// Spec §5.3's names that do not depend on the model, besides the six
+// PackTags (packtags.h).
+constexpr std::array<std::string_view, 11> kFixedNames{
+    "State",  "Mode",           "Entry",          "Resume",   "Initialization", "Complete",
+    "R_TRIG", "PackMLConfiguration", "PackMLResource", "MainTask", "PackMLInstance",
 };
 
 constexpr std::array<std::string_view, 2> kReservedPrefixes{"Trig_", "Ev_"};
@@ -238,6 +239,8 @@ bool isReservedName(std::string_view name, std::string_view programName, std::sp
     for (const std::string_view fixed : kFixedNames)
         if (equalsIgnoreCase(name, fixed))
             return true;
+    if (isPackTagName(name))
+        return true;
     for (const std::string_view prefix : kReservedPrefixes)
         if (startsWithIgnoringCase(name, prefix))
             return true;
