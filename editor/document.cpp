@@ -325,10 +325,17 @@ void Document::emitChange(const core::ModelChange& change)
         emit modelReset();
         break;
     case core::ModelChange::Kind::PackMLSettings:
+        emit packmlSettingsChanged();
+        break;
     case core::ModelChange::Kind::PackMLCommand:
+        emit commandChanged(id);
+        break;
     case core::ModelChange::Kind::PackMLModes:
+        emit modesChanged();
+        break;
     case core::ModelChange::Kind::PackMLMode:
-        break; // the editor refuses PackML models when it loads them (core::loadSupportedModelFile)
+        emit modeChanged(id.toInt());
+        break;
     }
 }
 

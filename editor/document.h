@@ -89,7 +89,12 @@ signals:
     void variablesChanged(); // added, removed, renamed or moved
     void settingsChanged();
     void propertiesChanged(); // the verification properties: added, removed, edited or moved
-    void grafcetChanged(const QString& stepId); // something in the nested GRAFCET of a GEMMA step
+    void grafcetChanged(const QString& stepId); // something in the nested GRAFCET of a GEMMA step (or packml::grafcetKey)
+    // PackML models only (spec packml.md §3, §5.1).
+    void packmlSettingsChanged(); // edition, options, initial state or initial mode
+    void commandChanged(const QString& command); // its condition or comment ("Reset")
+    void modesChanged(); // a unit mode added or removed
+    void modeChanged(int mode); // its name, comment, request, listings or GRAFCET choices
     void modelReset();        // everything may have changed
     // After modelReset: a new model (New, Open, an example, a recovery), not an edit of this one.
     void modelReplaced();
