@@ -52,7 +52,13 @@ StPreview previewNestedFunctionBlock(const Model& model, std::string_view stepId
     }
     if (!pou || !model.effectiveGrafcet(stepId))
         return preview;
-    preview.text = formatPou(*pou, dialect);
+    return previewFunctionBlockPou(*pou, dialect);
+}
+
+StPreview previewFunctionBlockPou(const PlcPou& pou, Dialect dialect)
+{
+    StPreview preview;
+    preview.text = formatPou(pou, dialect);
 
     std::istringstream lines(preview.text);
     std::string line;

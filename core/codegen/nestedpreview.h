@@ -20,4 +20,8 @@ namespace core {
 // under "X3@2", "X3@3"...
 StPreview previewNestedFunctionBlock(const Model& model, std::string_view stepId, Dialect dialect);
 
+// The same for a function block POU of any template (a PackML GRAFCET's
+// "<Owner>_<State>_FB" as core/templates/packml/packmlpreview.h finds it).
+StPreview previewFunctionBlockPou(const PlcPou& pou, Dialect dialect);
+
 } // namespace core
