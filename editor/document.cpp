@@ -169,7 +169,7 @@ int Document::nestedProblemCount(const QString& stepId) const
 
 bool Document::load(const QString& path, QString* errorMessage, QStringList* warnings)
 {
-    core::LoadedModel loaded = core::loadSupportedModelFile(localPath(path));
+    core::LoadedModel loaded = core::loadSupportedModelFile(localPath(path), core::TemplateSupport::GemmaAndPackML);
     if (!loaded.ok()) {
         if (loaded.error.file.empty() || loaded.error.file == localPath(path))
             loaded.error.file = path.toStdString(); // show the path as the user gave it

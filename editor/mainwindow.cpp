@@ -10,6 +10,11 @@
 #include "editor/chart/gemma/chartcontextmenu.h"
 #include "editor/chart/gemma/chartscene.h"
 #include "editor/chart/gemma/chartview.h"
+#include "editor/chart/packml/packmlchartbinding.h"
+#include "editor/chart/packml/packmlchartcontextmenu.h"
+#include "editor/chart/packml/packmlsheetview.h"
+#include "editor/chart/packml/packmlchartscene.h"
+#include "editor/chart/packml/packmlchartview.h"
 #include "editor/commands/resetmodelcommand.h"
 #include "editor/commands/setelementshiddencommand.h"
 #include "editor/commands/undohistorywording.h"
@@ -39,7 +44,9 @@
 #include "editor/verificationrunner.h"
 #include "editor/window/dockcontext.h"
 #include "editor/window/frontzoom.h"
+#include "editor/window/grafcettabs.h"
 #include "editor/window/modelsettingsdialog.h"
+#include "editor/window/newmodeldialog.h"
 #include "editor/window/statusindicators.h"
 
 #include <QAction>
@@ -49,6 +56,7 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
@@ -75,13 +83,10 @@ constexpr int kStatusMessageMs = 6000;
 // How long closing the window waits for a cancelled verification to end.
 constexpr int kQuitWaitMs = 2000;
 
-// What File > New opens: the template with the user's default settings.
+// What the window starts on: the GEMMA template with the user's default settings.
 core::Model newTemplate(const Settings& settings)
 {
-    core::Model model;
-    model.setCycleTimeMs(settings.defaultCycleTimeMs());
-    model.setDialect(settings.defaultDialect());
-    return model;
+    return NewModelDialog::newModel(NewModelDialog::Choice::Gemma, settings);
 }
 
 // The window's first size: most of the screen, but no wider than a chart
@@ -110,6 +115,10 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     , m_scene(new ChartScene(m_document, m_selection, this))
     , m_view(new ChartView(m_scene, this))
     , m_centralTabs(new QTabWidget(this))
+    , m_packmlScene(new PackmlChartScene(&m_document->model(), m_selection, this))
+    , m_packmlView(new PackmlChartView(m_packmlScene, this))
+    , m_packmlBinding(new PackmlChartBinding(m_document, m_packmlView, this))
+    , m_grafcetTabs(new GrafcetTabs(m_centralTabs, m_document, m_selection, m_settings.get(), this))
 {
     setObjectName("mainWindow");
     // The window icon is the application's: editor::runApplication sets it
@@ -121,15 +130,18 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     m_centralTabs->setDocumentMode(true);
     m_centralTabs->setTabBarAutoHide(true);
     m_centralTabs->setTabsClosable(true);
-    m_centralTabs->addTab(m_view, QString());
-    // The GEMMA chart's tab has no close button (the bar only hides the one it takes away).
-    for (QTabBar::ButtonPosition side : {QTabBar::LeftSide, QTabBar::RightSide}) {
-        QWidget* close = m_centralTabs->tabBar()->tabButton(0, side);
-        m_centralTabs->tabBar()->setTabButton(0, side, nullptr);
-        delete close;
-    }
-    connect(m_centralTabs, &QTabWidget::tabCloseRequested, this, &MainWindow::closeGrafcetTab);
-    connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::rememberGrafcetTabs);
+    m_packmlView->setObjectName("packmlChartView");
+    m_packmlView->hide();
+    installChartTab(m_view);
+    connect(m_centralTabs, &QTabWidget::tabCloseRequested, m_grafcetTabs, &GrafcetTabs::close);
+    connect(m_centralTabs, &QTabWidget::currentChanged, m_grafcetTabs, &GrafcetTabs::remember);
+    connect(m_packmlBinding, &PackmlChartBinding::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
+    connect(m_grafcetTabs, &GrafcetTabs::statusMessage, this,
+            [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
+    connect(m_grafcetTabs, &GrafcetTabs::viewOpened, this, [this](GrafcetView* view) {
+        if (m_document->model().templateKind() == core::TemplateKind::Gemma)
+            new GrafcetSimulationMarks(m_session, view->grafcetScene(), view->grafcetScene());
+    });
     connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::onCentralTabChanged);
     connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::followTabInFront);
     connect(m_selection, &Selection::changed, this, &MainWindow::onSelectionChanged);
@@ -159,7 +171,8 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     onSimulationActiveChanged(m_session->isActive());
 
     connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
-    connect(m_document, &Document::filePathChanged, this, &MainWindow::rememberGrafcetTabs); // Save As
+    connect(m_document, &Document::filePathChanged, m_grafcetTabs, &GrafcetTabs::remember); // Save As
+    connect(m_document, &Document::modelReplaced, this, &MainWindow::applyTemplate);
     connect(m_document, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::editFailed, this, &MainWindow::showEditFailure);
     connect(m_session, &SimulationSession::activeChanged, this, &MainWindow::onSimulationActiveChanged);
@@ -535,13 +548,28 @@ void MainWindow::createActions()
         auto* view = qobject_cast<GrafcetView*>(m_centralTabs->currentWidget());
         return view ? view->grafcetScene() : nullptr;
     });
+    m_exportActions->setPackmlChart(m_packmlScene);
     m_chartContextMenu = new ChartContextMenu(
         *m_document, *m_selection,
         ChartContextMenu::SheetActions{m_showHiddenAction, m_fitAction, m_exportActions->chartAction()}, this);
     connect(m_view, &ChartView::contextMenuRequested, this, &MainWindow::showChartContextMenu);
+    auto* packmlMenu = new PackmlChartContextMenu(
+        *m_document, *m_packmlScene, PackmlChartContextMenu::SheetActions{m_fitAction, m_exportActions->chartAction()},
+        this);
+    connect(packmlMenu, &PackmlChartContextMenu::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
+    connect(m_packmlView->sheetView(), &PackmlSheetView::contextMenuRequested, this,
+            [this, packmlMenu](const ElementRef& element, const QPoint& globalPos) {
+                ensureDocksReady();
+                QMenu menu(this);
+                menu.setObjectName(QStringLiteral("packmlChartContextMenu"));
+                packmlMenu->populate(&menu, element);
+                menu.exec(globalPos);
+            });
     connect(m_chartContextMenu, &ChartContextMenu::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
     connect(m_view, &ChartView::stepDoubleClicked, this, &MainWindow::openNestedGrafcet);
-    connect(m_document, &Document::modelReset, this, &MainWindow::closeStaleGrafcetTabs);
+    connect(m_document, &Document::modelReset, m_grafcetTabs, &GrafcetTabs::closeStale);
+    connect(m_document, &Document::modesChanged, m_grafcetTabs, &GrafcetTabs::closeStale);
+    connect(m_document, &Document::modeChanged, m_grafcetTabs, &GrafcetTabs::closeStale);
     connect(m_exportActions, &ExportActions::exported, this,
             [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
 }
@@ -662,37 +690,49 @@ void MainWindow::showChartContextMenu(const ElementRef& element, const QPoint& g
 
 GrafcetView* MainWindow::grafcetView(const QString& stepId) const
 {
-    for (int i = 1; i < m_centralTabs->count(); ++i) {
-        auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i));
-        if (view && view->grafcetScene()->stepId() == stepId)
-            return view;
-    }
-    return nullptr;
+    return m_grafcetTabs->view(stepId);
 }
 
 bool MainWindow::openNestedGrafcet(const QString& stepId)
 {
-    if (!canOpenNestedGrafcet(m_document->model(), stepId))
-        return false;
-    GrafcetView* view = grafcetView(stepId);
-    if (!view) {
-        auto* scene = new GrafcetScene(m_document, stepId);
-        new GrafcetSimulationMarks(m_session, scene, scene); // marked at once when opened during a simulation
-        view = new GrafcetView(scene);
-        scene->setParent(view);
-        auto* actions = new GrafcetActions(*m_document, *view);
-        connect(actions, &GrafcetActions::statusMessage, this,
-                [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
-        view->setObjectName(QStringLiteral("grafcetView_") + stepId);
-        m_centralTabs->addTab(view, QString());
-        retitleGrafcetTabs();
-        m_centralTabs->setCurrentWidget(view);
-        // Once shown, so that the view scrolls to a selected element after its first placing.
-        new GrafcetSelectionSync(view, m_selection);
-        new GrafcetKeyboard(view, m_selection);
+    return m_grafcetTabs->open(stepId);
+}
+
+// The chart's tab has no close button (the bar only hides the one it takes away).
+void MainWindow::installChartTab(QWidget* chart)
+{
+    m_centralTabs->insertTab(0, chart, QString());
+    for (QTabBar::ButtonPosition side : {QTabBar::LeftSide, QTabBar::RightSide}) {
+        QWidget* close = m_centralTabs->tabBar()->tabButton(0, side);
+        m_centralTabs->tabBar()->setTabButton(0, side, nullptr);
+        delete close;
     }
-    m_centralTabs->setCurrentWidget(view); // remembered through currentChanged when it changes
-    return true;
+}
+
+void MainWindow::applyTemplate()
+{
+    const core::TemplateKind kind = m_document->model().templateKind();
+    const bool packml = kind == core::TemplateKind::PackML;
+    QWidget* chart = packml ? static_cast<QWidget*>(m_packmlView) : static_cast<QWidget*>(m_view);
+    if (m_centralTabs->widget(0) != chart) {
+        m_grafcetTabs->setSwitchingFile(true);
+        QWidget* previous = m_centralTabs->widget(0);
+        m_centralTabs->removeTab(0);
+        previous->hide();
+        installChartTab(chart);
+        m_centralTabs->setCurrentIndex(0);
+        m_grafcetTabs->setSwitchingFile(false);
+    }
+    m_grafcetTabs->retitle();
+    m_dockContext->setTemplate(kind);
+    // What only the GEMMA chart has: hiding its elements, the GG-Generator format.
+    for (QAction* gemmaOnly : {m_hideSelectionAction, m_showSelectionAction, m_showHiddenAction,
+                               m_exportActions->ggGeneratorAction()})
+        gemmaOnly->setVisible(!packml);
+    // Not yet for a PackML model in the window: the command line simulates and verifies it.
+    for (QAction* gemmaOnly : {m_simulateAction, m_verifyAction, m_exportActions->specificationAction()})
+        gemmaOnly->setEnabled(!packml);
+    applyEditingLock();
 }
 
 void MainWindow::onSelectionChanged(const ElementRef& element)
@@ -716,78 +756,6 @@ void MainWindow::onCentralTabChanged()
 void MainWindow::followTabInFront()
 {
     m_dockContext->setGrafcetInFront(qobject_cast<GrafcetView*>(m_centralTabs->currentWidget()) != nullptr);
-}
-
-void MainWindow::closeGrafcetTab(int index)
-{
-    if (index <= 0) // the GEMMA chart
-        return;
-    QWidget* view = m_centralTabs->widget(index);
-    m_centralTabs->removeTab(index);
-    delete view;
-    rememberGrafcetTabs();
-}
-
-void MainWindow::closeGrafcetTabs()
-{
-    for (int i = m_centralTabs->count() - 1; i > 0; --i) {
-        QWidget* view = m_centralTabs->widget(i);
-        m_centralTabs->removeTab(i);
-        delete view;
-    }
-}
-
-void MainWindow::rememberGrafcetTabs()
-{
-    if (m_switchingFile || m_document->filePath().isEmpty())
-        return;
-    Settings::GrafcetTabs tabs;
-    for (int i = 1; i < m_centralTabs->count(); ++i) {
-        if (auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i)))
-            tabs.steps << view->grafcetScene()->stepId();
-    }
-    if (auto* front = qobject_cast<GrafcetView*>(m_centralTabs->currentWidget()))
-        tabs.current = front->grafcetScene()->stepId();
-    m_settings->setGrafcetTabs(m_document->filePath(), tabs);
-}
-
-// The tabs of GRAFCETs the file no longer has (edited elsewhere) stay closed.
-void MainWindow::restoreGrafcetTabs()
-{
-    const Settings::GrafcetTabs tabs = m_settings->grafcetTabs(m_document->filePath());
-    m_switchingFile = true;
-    for (const QString& stepId : tabs.steps)
-        openNestedGrafcet(stepId);
-    if (GrafcetView* front = grafcetView(tabs.current))
-        m_centralTabs->setCurrentWidget(front);
-    else
-        m_centralTabs->setCurrentIndex(0);
-    m_switchingFile = false;
-    rememberGrafcetTabs();
-}
-
-void MainWindow::closeStaleGrafcetTabs()
-{
-    for (int i = m_centralTabs->count() - 1; i > 0; --i) {
-        auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i));
-        if (view && !m_document->model().grafcet(view->grafcetScene()->stepId().toStdString()))
-            closeGrafcetTab(i);
-    }
-    retitleGrafcetTabs();
-}
-
-// "F1 Normal production": the step and its official name, as the chart's tooltips name it.
-void MainWindow::retitleGrafcetTabs()
-{
-    m_centralTabs->setTabText(0, tr("GEMMA Chart"));
-    for (int i = 1; i < m_centralTabs->count(); ++i) {
-        auto* view = qobject_cast<GrafcetView*>(m_centralTabs->widget(i));
-        if (!view)
-            continue;
-        const QString stepId = view->grafcetScene()->stepId();
-        m_centralTabs->setTabText(i, QStringLiteral("%1 %2").arg(stepId, officialStateName(stepId)));
-        m_centralTabs->setTabToolTip(i, tr("The nested GRAFCET of %1").arg(stepId));
-    }
 }
 
 void MainWindow::resetLayout()
@@ -844,7 +812,11 @@ void MainWindow::applyDefaultLayout()
     const int spare = window.width() - m_view->widthToFitHeight(chartHeight) - separator;
     const int columnWidth = std::clamp(spare, 340, std::max(340, window.width() * 40 / 100));
     const int lowerHeight = std::clamp(window.height() * 42 / 100, 200, 480);
-    resizeDocks({dockNamed(QStringLiteral("stepDock"))}, {columnWidth}, Qt::Horizontal);
+    // Any dock of the column sizes it: the first one the template shows.
+    QDockWidget* inColumn = dockNamed(QStringLiteral("stepDock"));
+    if (!inColumn || inColumn->isHidden())
+        inColumn = dockNamed(QStringLiteral("variablesDock"));
+    resizeDocks({inColumn}, {columnWidth}, Qt::Horizontal);
     resizeDocks({dockNamed(QStringLiteral("variablesDock"))}, {lowerHeight}, Qt::Vertical);
 }
 
@@ -926,7 +898,7 @@ void MainWindow::changeEvent(QEvent* event)
 
 void MainWindow::retranslate()
 {
-    retitleGrafcetTabs();
+    m_grafcetTabs->retitle();
     m_fileMenu->setTitle(tr("&File"));
     m_editMenu->setTitle(tr("&Edit"));
     m_viewMenu->setTitle(tr("&View"));
@@ -1036,11 +1008,16 @@ void MainWindow::newModel()
 {
     if (!maybeSave())
         return;
-    rememberGrafcetTabs();
-    m_switchingFile = true;
-    closeGrafcetTabs();
-    m_document->replaceModel(newTemplate(*m_settings), QString(), core::ModelFormat::Native);
-    m_switchingFile = false;
+    NewModelDialog dialog(NewModelDialog::fromSettingName(m_settings->newModelTemplate()), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    m_settings->setNewModelTemplate(NewModelDialog::settingName(dialog.choice()));
+    m_grafcetTabs->remember();
+    m_grafcetTabs->setSwitchingFile(true);
+    m_grafcetTabs->closeAll();
+    m_document->replaceModel(NewModelDialog::newModel(dialog.choice(), *m_settings), QString(),
+                             core::ModelFormat::Native);
+    m_grafcetTabs->setSwitchingFile(false);
     m_selection->clear();
     updateTitle();
 }
@@ -1071,11 +1048,11 @@ bool MainWindow::loadFile(const QString& path)
 {
     QString error;
     QStringList warnings;
-    rememberGrafcetTabs();
+    m_grafcetTabs->remember();
     QApplication::setOverrideCursor(Qt::WaitCursor);
-    m_switchingFile = true;
+    m_grafcetTabs->setSwitchingFile(true);
     const bool loaded = m_document->load(path, &error, &warnings);
-    m_switchingFile = false;
+    m_grafcetTabs->setSwitchingFile(false);
     QApplication::restoreOverrideCursor();
     if (!loaded) {
         QMessageBox box(QMessageBox::Critical, tr("Open Model"),
@@ -1089,10 +1066,10 @@ bool MainWindow::loadFile(const QString& path)
     }
     m_selection->clear();
     m_recentFiles->add(path);
-    m_switchingFile = true;
-    closeGrafcetTabs();
-    m_switchingFile = false;
-    restoreGrafcetTabs();
+    m_grafcetTabs->setSwitchingFile(true);
+    m_grafcetTabs->closeAll();
+    m_grafcetTabs->setSwitchingFile(false);
+    m_grafcetTabs->restore();
     m_settings->setLastModelDirectory(QFileInfo(path).absolutePath());
     updateTitle();
     switch (m_document->fileFormat()) {
@@ -1215,11 +1192,14 @@ void MainWindow::offerRecovery()
 
 void MainWindow::resetToTemplate()
 {
-    const auto answer = QMessageBox::question(
-        this, tr("Reset to Template"),
-        tr("Put every state, transition, variable and setting back to the GEMMA template? "
-           "You can undo this."),
-        QMessageBox::Reset | QMessageBox::Cancel, QMessageBox::Cancel);
+    const bool packml = m_document->model().templateKind() == core::TemplateKind::PackML;
+    const QString question =
+        packml ? tr("Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model "
+                    "of this edition? You can undo this.")
+               : tr("Put every state, transition, variable and setting back to the GEMMA template? "
+                    "You can undo this.");
+    const auto answer = QMessageBox::question(this, tr("Reset to Template"), question,
+                                              QMessageBox::Reset | QMessageBox::Cancel, QMessageBox::Cancel);
     if (answer == QMessageBox::Reset)
         m_document->push(new ResetModelCommand(*m_document));
 }
@@ -1453,7 +1433,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
-    rememberGrafcetTabs();
+    m_grafcetTabs->remember();
     bringBackLockedDocks(); // the layout saved is the one without simulation
     saveLayout();
     // Quit ends the long work at once: the simulation stops scanning and

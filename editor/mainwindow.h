@@ -25,10 +25,14 @@ class ChartScene;
 class ChartView;
 class DockContext;
 class GrafcetStepDock;
+class GrafcetTabs;
 class GrafcetTransitionDock;
 class GrafcetView;
 class Document;
 class ExportActions;
+class PackmlChartBinding;
+class PackmlChartScene;
+class PackmlChartView;
 class ProblemCounter;
 class ProblemsDock;
 class RecentFiles;
@@ -166,15 +170,10 @@ private:
     // from the docks below it (locked then), and gives it back at the end.
     void giveSimulationTheColumn(bool simulating);
     void bringBackLockedDocks();
-    void closeGrafcetTab(int index);
-    // After a new model: the tabs of steps that have no GRAFCET any more close.
-    void closeStaleGrafcetTabs();
-    void retitleGrafcetTabs();
-    // The open GRAFCET tabs of the file are kept in the settings, and come
-    // back when the file is opened again.
-    void rememberGrafcetTabs();
-    void restoreGrafcetTabs();
-    void closeGrafcetTabs();
+    // The chart of the model's template in the first tab, its docks and
+    // actions: after every new model (New, Open, an example, a recovery).
+    void applyTemplate();
+    void installChartTab(QWidget* chart);
     // A nested element selected (the Problems dock, a link) shows its GRAFCET's tab.
     void onSelectionChanged(const ElementRef& element);
     // The Structured Text dock shows the function block of the GRAFCET in front.
@@ -197,7 +196,10 @@ private:
     ChartScene* m_scene;
     ChartView* m_view;
     QTabWidget* m_centralTabs;
-    bool m_switchingFile = false; // tabs change with the file: not the user's choice to remember
+    PackmlChartScene* m_packmlScene;
+    PackmlChartView* m_packmlView;
+    PackmlChartBinding* m_packmlBinding;
+    GrafcetTabs* m_grafcetTabs;
     DockContext* m_dockContext = nullptr;
     StepDock* m_stepDock = nullptr;
     TransitionDock* m_transitionDock = nullptr;

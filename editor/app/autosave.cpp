@@ -364,7 +364,8 @@ bool Autosave::recover(const RecoveryFile& file, Document& document, QString* er
             *errorMessage = tr("Another GG Studio is using the recovery copy %1.").arg(file.recoveryPath);
         return false;
     }
-    core::LoadedModel loaded = core::loadSupportedModelFile(QFile::encodeName(file.recoveryPath).toStdString());
+    core::LoadedModel loaded = core::loadSupportedModelFile(QFile::encodeName(file.recoveryPath).toStdString(),
+                                                                 core::TemplateSupport::GemmaAndPackML);
     if (!loaded.ok()) {
         if (errorMessage)
             *errorMessage = QString::fromStdString(loaded.error.toString());

@@ -20,6 +20,11 @@ std::vector<ExampleModel> exampleModels()
          QCoreApplication::translate("ExampleModels",
                                      "The same machine with one mistake for each check of the nested "
                                      "GRAFCETs, to see what the Problems panel reports")},
+        {QStringLiteral("bottle-filler.ggstudio.json"),
+         QCoreApplication::translate("ExampleModels", "Bottle Filler (PackML)"),
+         QCoreApplication::translate("ExampleModels",
+                                     "A PackML unit with Production and Manual modes and a GRAFCET in Resetting, "
+                                     "Starting, Execute, Stopping and Aborting")},
     };
 }
 

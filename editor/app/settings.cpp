@@ -34,6 +34,16 @@ void Settings::setDefaultDialect(core::Dialect dialect)
     setDialectValue("model/defaultDialect", dialect);
 }
 
+QString Settings::newModelTemplate() const
+{
+    return m_settings.value("model/newModelTemplate", QStringLiteral("gemma")).toString();
+}
+
+void Settings::setNewModelTemplate(const QString& name)
+{
+    m_settings.setValue("model/newModelTemplate", name);
+}
+
 int Settings::defaultCycleTimeMs() const
 {
     const int fallback = core::Model().settings().cycleTimeMs;

@@ -25,6 +25,9 @@ public:
 
     // What a new model starts with (the template has IEC and 20 ms).
     core::Dialect defaultDialect() const;
+    // The template File > New offered last: "gemma", "packml-2015" or "packml-2022".
+    QString newModelTemplate() const;
+    void setNewModelTemplate(const QString& name);
     void setDefaultDialect(core::Dialect dialect);
     int defaultCycleTimeMs() const;
     void setDefaultCycleTimeMs(int milliseconds);

@@ -17,7 +17,9 @@ int ResetModelCommand::id() const
 core::Status ResetModelCommand::apply()
 {
     if (firstRun()) {
-        if (model().sameContent(core::Model()))
+        m_snapshot = std::make_unique<core::Model>(model());
+        m_snapshot->resetToTemplate();
+        if (model().sameContent(*m_snapshot))
             return core::Status::success(); // already the template: nothing to undo
         m_snapshot = std::make_unique<core::Model>(model());
     }

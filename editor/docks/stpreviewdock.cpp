@@ -8,6 +8,7 @@
 #include "editor/style/secondarytext.h"
 
 #include "core/codegen/nestedpreview.h"
+#include "core/templates/packml/packmlpreview.h"
 #include "core/model/model.h"
 
 #include <QComboBox>
@@ -130,6 +131,10 @@ StPreviewDock::StPreviewDock(Document* document, Selection* selection, QWidget* 
     connect(m_document, &Document::settingsChanged, this, &StPreviewDock::scheduleUpdate);
     connect(m_document, &Document::modelReset, this, &StPreviewDock::scheduleUpdate);
     connect(m_document, &Document::grafcetChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::packmlSettingsChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::commandChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::modesChanged, this, &StPreviewDock::scheduleUpdate);
+    connect(m_document, &Document::modeChanged, this, &StPreviewDock::scheduleUpdate);
     connect(m_document, &Document::settingsChanged, this, &StPreviewDock::refreshDialect);
     connect(m_document, &Document::modelReset, this, &StPreviewDock::refreshDialect);
     connect(m_selection, &Selection::changed, this, &StPreviewDock::onSelectionChanged);
@@ -185,9 +190,14 @@ void StPreviewDock::updatePreview()
     m_updateTimer->stop();
     m_stale = false;
     const core::Model& model = m_document->model();
-    m_preview = m_grafcetStepId.isEmpty()
-        ? core::previewGemmaProgram(model, model.settings().dialect)
-        : core::previewNestedFunctionBlock(model, m_grafcetStepId.toStdString(), model.settings().dialect);
+    const core::Dialect dialect = model.settings().dialect;
+    const std::string grafcet = m_grafcetStepId.toStdString();
+    if (model.templateKind() == core::TemplateKind::PackML)
+        m_preview = grafcet.empty() ? core::packml::previewPackmlProgram(model, dialect)
+                                    : core::packml::previewPackmlFunctionBlock(model, grafcet, dialect);
+    else
+        m_preview = grafcet.empty() ? core::previewGemmaProgram(model, dialect)
+                                    : core::previewNestedFunctionBlock(model, grafcet, dialect);
     const QString text = fromStd(m_preview.text);
     if (text != m_editor->toPlainText()) {
         QScrollBar* vertical = m_editor->verticalScrollBar();
@@ -243,6 +253,8 @@ std::vector<core::LineRange> StPreviewDock::rangesFor(const ElementRef& element)
     std::vector<core::LineRange> ranges;
     if (!m_grafcetStepId.isEmpty())
         return nestedRangesFor(element);
+    if (element.kind == ElementRef::Kind::PackmlState || element.kind == ElementRef::Kind::PackmlMode)
+        return packmlRangesFor(element);
     if (element.kind != ElementRef::Kind::Step && element.kind != ElementRef::Kind::Transition)
         return ranges;
     const std::string key = element.id.toStdString();
@@ -250,6 +262,26 @@ std::vector<core::LineRange> StPreviewDock::rangesFor(const ElementRef& element)
     const std::string occurrence = key + "@";
     for (const auto& [name, range] : m_preview.ranges) {
         if (name == key || (element.kind == ElementRef::Kind::Transition && name.rfind(occurrence, 0) == 0))
+            ranges.push_back(range);
+    }
+    std::sort(ranges.begin(), ranges.end(),
+        [](const core::LineRange& a, const core::LineRange& b) { return a.first < b.first; });
+    return ranges;
+}
+
+// A PackML state's branch in the mode the chart shows it in (or in every
+// mode), a unit mode's whole branch (core::packml::previewPackmlProgram).
+std::vector<core::LineRange> StPreviewDock::packmlRangesFor(const ElementRef& element) const
+{
+    std::vector<core::LineRange> ranges;
+    const std::string mode = std::to_string(element.number);
+    const std::string state = "/" + element.id.toStdString();
+    for (const auto& [name, range] : m_preview.ranges) {
+        const bool matches = element.kind == ElementRef::Kind::PackmlMode
+            ? name == mode
+            : name.size() > state.size() && name.compare(name.size() - state.size(), state.size(), state) == 0
+                  && (element.number == 0 || name == mode + state);
+        if (matches)
             ranges.push_back(range);
     }
     std::sort(ranges.begin(), ranges.end(),
@@ -326,6 +358,8 @@ void StPreviewDock::scrollToLines(const core::LineRange& range, bool onlyIfHidde
 QString StPreviewDock::noCodeReason(const ElementRef& element) const
 {
     const core::Model& model = m_document->model();
+    if (model.templateKind() == core::TemplateKind::PackML)
+        return packmlNoCodeReason(element);
     if (!m_grafcetStepId.isEmpty()) {
         if (!model.effectiveGrafcet(m_grafcetStepId.toStdString()))
             return tr("%1 generates no function block: only a visible macro-step or enclosing step does.")
@@ -341,6 +375,19 @@ QString StPreviewDock::noCodeReason(const ElementRef& element) const
         if (model.transition(element.id.toStdString()) && !model.isEffective(element.id.toStdString()))
             return tr("This transition is not effective: it generates no code.");
     }
+    return {};
+}
+
+QString StPreviewDock::packmlNoCodeReason(const ElementRef& element) const
+{
+    if (!m_grafcetStepId.isEmpty()) {
+        if (m_preview.text.empty())
+            return tr("No enabled state runs this GRAFCET: it generates no function block.");
+        return {};
+    }
+    if (element.kind == ElementRef::Kind::PackmlState && element.number != 0 && rangesFor(element).empty())
+        return tr("%1 is disabled in this unit mode: the mode's state machine has no branch for it.")
+            .arg(element.id);
     return {};
 }
 

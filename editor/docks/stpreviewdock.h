@@ -57,6 +57,8 @@ private:
     void highlightSelection(bool scrollToIt);
     std::vector<core::LineRange> rangesFor(const ElementRef& element) const;
     std::vector<core::LineRange> nestedRangesFor(const ElementRef& element) const;
+    std::vector<core::LineRange> packmlRangesFor(const ElementRef& element) const;
+    QString packmlNoCodeReason(const ElementRef& element) const;
     void scrollToLines(const core::LineRange& range, bool onlyIfHidden);
     QString noCodeReason(const ElementRef& element) const;
 

@@ -4,6 +4,7 @@
 #include "editor/chart/gemma/chartscene.h"
 #include "editor/document.h"
 #include "editor/export/chartexport.h"
+#include "editor/export/packmlchartexport.h"
 #include "editor/export/exportoptionsdialog.h"
 #include "editor/export/specificationexport.h"
 #include "editor/grafcet/grafcetexport.h"
@@ -325,6 +326,11 @@ bool ExportActions::writeChart(const QString& path, ChartExport::Format format, 
         picture.setTitle(tr("%1, nested GRAFCET of %2").arg(title, grafcet->stepId()));
         return picture.write(path, format, errorMessage);
     }
+    if (m_packmlChart && m_document.model().templateKind() == core::TemplateKind::PackML) {
+        PackmlChartExport chart(*m_packmlChart);
+        chart.setTitle(title);
+        return chart.write(path, format, errorMessage);
+    }
     ChartExport chart(m_scene);
     chart.setTitle(title);
     return chart.write(path, format, errorMessage);
@@ -389,6 +395,10 @@ void ExportActions::print()
         GrafcetExport picture(*grafcet);
         picture.setTitle(tr("%1, nested GRAFCET of %2").arg(title, grafcet->stepId()));
         printed = picture.print(printer);
+    } else if (m_packmlChart && m_document.model().templateKind() == core::TemplateKind::PackML) {
+        PackmlChartExport chart(*m_packmlChart);
+        chart.setTitle(title);
+        printed = chart.print(printer);
     } else {
         ChartExport chart(m_scene);
         chart.setTitle(title);

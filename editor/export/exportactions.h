@@ -20,6 +20,7 @@ namespace editor {
 
 class ChartScene;
 class GrafcetScene;
+class PackmlChartScene;
 class Document;
 class Settings;
 
@@ -58,6 +59,8 @@ public:
     // Export Chart and Print take the nested GRAFCET in front when there is
     // one (the window says which), the GEMMA chart otherwise.
     void setGrafcetInFront(std::function<GrafcetScene*()> grafcetInFront) { m_grafcetInFront = std::move(grafcetInFront); }
+    // The PackML chart, which Export Chart and Print take for a PackML model.
+    void setPackmlChart(PackmlChartScene* scene) { m_packmlChart = scene; }
     // Writes the picture in front; Export Chart's work after its dialog.
     bool writeChart(const QString& path, ChartExport::Format format, QString* errorMessage) const;
 
@@ -104,6 +107,7 @@ private:
     Document& m_document;
     ChartScene& m_scene;
     std::function<GrafcetScene*()> m_grafcetInFront;
+    PackmlChartScene* m_packmlChart = nullptr;
     Settings& m_settings;
     QWidget* m_window;
     QAction* m_plcOpen;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/model/model.h"
+
 #include <QObject>
 #include <QStringList>
 
@@ -17,6 +19,12 @@ namespace editor {
 // has ~340; three of them fit in every language. A dock the user closed
 // (close button, View menu) stays closed in both contexts until the user
 // shows it again; a dock hidden by the context is not "closed".
+//
+// The template is a context too: a GEMMA model has the Step, Transition and
+// Simulation docks, a PackML model the State, Commands, Modes and PackML
+// Simulation docks (State and Commands then give way to Nested Step and
+// Nested Transition); a dock of the other template is hidden and left out
+// of the View menu.
 class DockContext : public QObject {
     Q_OBJECT
 public:
@@ -31,6 +39,10 @@ public:
     // in front of the group gives its place to its counterpart.
     void setGrafcetInFront(bool grafcetInFront);
     bool grafcetInFront() const { return m_grafcetInFront; }
+    void setTemplate(core::TemplateKind kind);
+    core::TemplateKind templateKind() const { return m_template; }
+    // Whether the dock (by object name) belongs to the other template.
+    bool isForeign(const QString& objectName) const;
     void apply();
 
     // The docks (object names) the user closed, kept with the window state.
@@ -56,6 +68,7 @@ private:
     QMainWindow* m_window;
     QStringList m_closed;
     bool m_grafcetInFront = false;
+    core::TemplateKind m_template = core::TemplateKind::Gemma;
     bool m_applying = false;
 };
 

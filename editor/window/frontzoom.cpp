@@ -1,6 +1,8 @@
 #include "editor/window/frontzoom.h"
 
 #include "editor/chart/gemma/chartview.h"
+#include "editor/chart/packml/packmlchartview.h"
+#include "editor/chart/packml/packmlsheetview.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/window/statusindicators.h"
 
@@ -27,6 +29,8 @@ void FrontZoom::onFront(Act act) const
         act(*grafcet);
     else if (auto* chart = qobject_cast<ChartView*>(front))
         act(*chart);
+    else if (auto* packml = qobject_cast<PackmlChartView*>(front))
+        act(*packml->sheetView());
 }
 
 double FrontZoom::zoom() const

@@ -5,8 +5,12 @@
 
 #include "editor/app/languages.h"
 #include "editor/mainwindow.h"
+#include "editor/window/newmodeldialog.h"
 
+#include <QAbstractButton>
+#include <QApplication>
 #include <QCoreApplication>
+#include <QTimer>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
 #include <QLatin1String>
@@ -67,6 +71,32 @@ int countItems(const QGraphicsScene& scene)
             ++count;
     }
     return count;
+}
+
+// Answers the next File > New dialog once it shows: picks `choice` (the
+// object name of its radio button, "templateGemma"...) and accepts, or
+// rejects when `choice` is empty.
+inline void answerNewModel(const char* choice)
+{
+    struct Poll {
+        const char* choice;
+        void operator()() const
+        {
+            auto* dialog = qobject_cast<editor::NewModelDialog*>(QApplication::activeModalWidget());
+            if (!dialog) {
+                QTimer::singleShot(10, *this);
+                return;
+            }
+            if (!choice || !*choice) {
+                dialog->reject();
+                return;
+            }
+            if (auto* button = dialog->findChild<QAbstractButton*>(QLatin1String(choice)))
+                button->click();
+            dialog->accept();
+        }
+    };
+    QTimer::singleShot(0, Poll{choice});
 }
 
 } // namespace editortest

@@ -975,6 +975,7 @@ void TestMainWindow::grafcetTabsComeBackWithTheirFile()
     tabs->setCurrentWidget(m_window->grafcetView(QStringLiteral("F2")));
 
     // Another file: its own tabs (none), not the cell's.
+    editortest::answerNewModel("templateGemma");
     m_window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
     QCOMPARE(tabs->count(), 1);
     const QString other = m_files.filePath(QStringLiteral("tabs-other.json"));

@@ -572,6 +572,7 @@ void TestVerification::newOrOpenedModelStartsWithoutFindings()
     };
 
     verifyFindsSome();
+    editortest::answerNewModel("templateGemma");
     m_window->findChild<QAction*>(QStringLiteral("newAction"))->trigger();
     noFindings("New");
 

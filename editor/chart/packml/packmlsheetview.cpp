@@ -4,6 +4,10 @@
 #include "editor/chart/pinchzoom.h"
 #include "editor/chart/viewzoom.h"
 
+#include "editor/selection.h"
+
+#include <QContextMenuEvent>
+#include <QGraphicsItem>
 #include <QKeyEvent>
 #include <QWheelEvent>
 
@@ -100,6 +104,21 @@ bool PackmlSheetView::viewportEvent(QEvent* event)
         return true;
     }
     return QGraphicsView::viewportEvent(event);
+}
+
+void PackmlSheetView::contextMenuEvent(QContextMenuEvent* event)
+{
+    ElementRef element;
+    if (event->reason() == QContextMenuEvent::Mouse) {
+        for (QGraphicsItem* item = itemAt(event->pos()); item && element.isNull(); item = item->parentItem())
+            element = m_scene->elementOf(item);
+        if (!element.isNull())
+            m_scene->selection()->select(element);
+    } else {
+        element = m_scene->selection()->current(); // the menu key: the selected element
+    }
+    emit contextMenuRequested(element, event->globalPos());
+    event->accept();
 }
 
 void PackmlSheetView::keyPressEvent(QKeyEvent* event)

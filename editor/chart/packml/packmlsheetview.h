@@ -1,5 +1,7 @@
 #pragma once
 
+#include "editor/elementref.h"
+
 #include <QGraphicsView>
 
 namespace editor {
@@ -27,9 +29,13 @@ public slots:
 
 signals:
     void zoomChanged(double zoom);
+    // A right click (or the menu key) on a state, a transition, a frame's
+    // arrow (its command), or the sheet (a null element).
+    void contextMenuRequested(const editor::ElementRef& element, const QPoint& globalPos);
 
 protected:
     void keyPressEvent(QKeyEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     bool viewportEvent(QEvent* event) override;
