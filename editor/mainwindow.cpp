@@ -201,6 +201,7 @@ MainWindow::~MainWindow()
     m_session->disconnect(this);
     m_verification->disconnect(this);
     m_centralTabs->disconnect(this); // its tabs go with it: not the user's closing them
+    m_centralTabs->disconnect(m_grafcetTabs);
     delete m_frontZoom;               // which follows the tab in front
     delete m_chartMarks;
     delete m_problemCounter;

@@ -122,11 +122,13 @@ void GrafcetTabs::closeAll()
     }
 }
 
+// A macro-step's tab stays while its GRAFCET does, as a PackML state's.
 void GrafcetTabs::closeStale()
 {
+    const core::Model& model = m_document->model();
     for (int i = m_tabs->count() - 1; i > 0; --i) {
         auto* grafcetView = qobject_cast<GrafcetView*>(m_tabs->widget(i));
-        if (grafcetView && !canOpen(grafcetView->grafcetScene()->stepId()))
+        if (grafcetView && !model.grafcet(grafcetView->grafcetScene()->stepId().toStdString()))
             close(i);
     }
     retitle();
