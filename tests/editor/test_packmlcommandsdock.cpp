@@ -121,6 +121,12 @@ void TestPackmlCommandsDock::commandsDockSelectionBothWays()
     QCOMPARE(child<QFrame>(dock, "row_Stop")->frameShadow(), QFrame::Raised);
     QCOMPARE(child<QFrame>(dock, "row_Hold")->frameShadow(), QFrame::Plain);
 
+    // A transition fired by a command brings the command's row; one fired by SC leaves it.
+    selection.select(ElementRef::packmlTransition(QStringLiteral("Execute"), QStringLiteral("Holding"), 1));
+    QCOMPARE(dock.currentCommand(), QStringLiteral("Hold"));
+    selection.select(ElementRef::packmlTransition(QStringLiteral("Starting"), QStringLiteral("Execute"), 1));
+    QCOMPARE(dock.currentCommand(), QStringLiteral("Hold"));
+
     // Working in a row selects its command.
     QTest::mouseClick(child<QLineEdit>(dock, "comment_Clear"), Qt::LeftButton);
     QCOMPARE(selection.current(), ElementRef::packmlCommand(QStringLiteral("Clear")));

@@ -33,6 +33,26 @@ QString nameOf(packml::Command command)
     return packmltext::commandName(command);
 }
 
+// The command a selected element stands for: a command, or a transition of
+// the chart that a command fires ("Execute->Holding": Hold); empty otherwise.
+QString commandOf(const ElementRef& element, const core::Model& model)
+{
+    if (element.kind == ElementRef::Kind::PackmlCommand)
+        return element.id;
+    const packml::Configuration* configuration = model.packml();
+    if (element.kind != ElementRef::Kind::PackmlTransition || !configuration)
+        return {};
+    const QStringList ends = element.id.split(QStringLiteral("->"));
+    const auto source = ends.size() == 2 ? packml::findState(ends[0].toStdString()) : std::nullopt;
+    const auto target = ends.size() == 2 ? packml::findState(ends[1].toStdString()) : std::nullopt;
+    if (!source || !target)
+        return {};
+    for (const packml::TemplateTransition& transition : packml::transitionsFrom(*source, configuration->options))
+        if (transition.target == *target && transition.trigger == packml::Trigger::Command)
+            return nameOf(transition.command);
+    return {};
+}
+
 } // namespace
 
 QString PackmlCommandsDock::title()
@@ -261,9 +281,10 @@ bool PackmlCommandsDock::eventFilter(QObject* watched, QEvent* event)
 
 void PackmlCommandsDock::onSelectionChanged(const ElementRef& element)
 {
-    if (element.kind != ElementRef::Kind::PackmlCommand || !rowOf(element.id))
+    const QString command = commandOf(element, m_document->model());
+    if (command.isEmpty() || !rowOf(command))
         return; // the row stays current while something else is selected
-    m_current = element.id;
+    m_current = command;
     showCurrent();
     raiseOverPropertySibling(this);
 }

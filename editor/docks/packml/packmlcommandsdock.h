@@ -26,7 +26,8 @@ class Selection;
 // condition, checked as it is typed, its problems and its comment. Typing
 // pushes commands that merge into one undo step per field. Working in a row
 // selects the command (ElementRef::packmlCommand); a command selected
-// elsewhere (the chart's frame arrows, Problems) brings its row forward. On
+// elsewhere (the chart's frame arrows, Problems), or a transition of the
+// chart that a command fires, brings its row forward. On
 // a GEMMA model it says it is for PackML models.
 class PackmlCommandsDock : public QDockWidget {
     Q_OBJECT
