@@ -223,6 +223,11 @@ void TestPackmlModesDock::modesDockFollowsSelection()
     // Something else selected: the mode stays shown.
     selection.select(ElementRef::packmlCommand(QStringLiteral("Hold")));
     QCOMPARE(dock.currentMode(), 2);
+    // A state picked on the chart showing Manual shows Manual; one in no mode changes nothing.
+    selection.select(ElementRef::packmlState(QStringLiteral("Idle"), 3));
+    QCOMPARE(dock.currentMode(), 3);
+    selection.select(ElementRef::packmlState(QStringLiteral("Idle"), 0));
+    QCOMPARE(dock.currentMode(), 3);
 
     Document gemma;
     PackmlModesDock gemmaDock(&gemma, &selection);

@@ -257,8 +257,11 @@ void PackmlModesDock::onInitialModeChosen(int index)
 
 void PackmlModesDock::onSelectionChanged(const ElementRef& element)
 {
+    // A state or transition picked on the chart names the mode the chart shows.
+    const bool namesMode = element.kind == ElementRef::Kind::PackmlMode
+        || element.kind == ElementRef::Kind::PackmlState || element.kind == ElementRef::Kind::PackmlTransition;
     const packml::Configuration* configuration = m_document->model().packml();
-    if (!configuration || element.kind != ElementRef::Kind::PackmlMode || !configuration->mode(element.number))
+    if (!configuration || !namesMode || !configuration->mode(element.number))
         return;
     showMode(element.number);
 }

@@ -22,7 +22,8 @@ class Selection;
 // free number of 4..31, or the one chosen), removing one (never Production),
 // the initial mode, and the selected mode's fields (PackmlModeForm). Picking
 // a mode selects it (ElementRef::packmlMode); a mode selected elsewhere
-// (Problems, the chart's mode) is shown. On a GEMMA model it says it is for
+// (Problems), or a state or transition picked on the chart in a mode, shows
+// that mode. On a GEMMA model it says it is for
 // PackML models.
 class PackmlModesDock : public QDockWidget {
     Q_OBJECT
