@@ -223,6 +223,9 @@ void PackmlStateDock::refreshGrafcets(packml::State state)
         row.label->setFont(font);
         row.choice = new QComboBox(m_grafcetGroup);
         row.choice->setObjectName(QStringLiteral("choice_%1").arg(mode->number));
+        // "Same as 12 Changeover" may be wider than a dock: the combo narrows, its popup does not.
+        row.choice->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        row.choice->setMinimumContentsLength(8);
         row.label->setBuddy(row.choice);
         row.open = new QPushButton(tr("Open GRAFCET"), m_grafcetGroup);
         row.open->setObjectName(QStringLiteral("open_%1").arg(mode->number));
@@ -234,6 +237,7 @@ void PackmlStateDock::refreshGrafcets(packml::State state)
         m_grafcetGrid->addWidget(row.label, line, 0);
         m_grafcetGrid->addWidget(row.choice, line, 1);
         m_grafcetGrid->addWidget(row.open, line, 2);
+        m_grafcetGrid->setColumnStretch(1, 1);
         m_modeRows << row;
     }
 }
