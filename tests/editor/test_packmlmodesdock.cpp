@@ -173,6 +173,7 @@ void TestPackmlModesDock::modesDockModeChangeStates()
     PackmlModesDock dock(&document, &selection);
     selection.select(ElementRef::packmlMode(3));
     QVERIFY(!dock.findChild<QCheckBox*>(QStringLiteral("modeChange_Starting"))); // no acting state (§3.4)
+    QCOMPARE(child<QCheckBox>(dock, "modeChange_Complete")->text(), QStringLiteral("Complete")); // 2015
     QVERIFY(child<QCheckBox>(dock, "modeChange_Idle")->isChecked());
     child<QCheckBox>(dock, "modeChange_Execute")->click();
     child<QCheckBox>(dock, "modeChange_Idle")->click();
@@ -187,9 +188,10 @@ void TestPackmlModesDock::modesDockModeChangeStates()
 
 void TestPackmlModesDock::modesDockRequestAndInitialMode()
 {
-    Document document(core::packml::newModel(Edition::Y2015));
+    Document document(core::packml::newModel(Edition::Y2022));
     Selection selection;
     PackmlModesDock dock(&document, &selection);
+    QCOMPARE(child<QCheckBox>(dock, "disabled_Complete")->text(), QStringLiteral("Completed")); // 2022 (§2.1)
     dock.show();
     selection.select(ElementRef::packmlMode(3));
     auto* request = child<ConditionEdit>(dock, "requestEdit");

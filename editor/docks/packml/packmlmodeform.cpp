@@ -195,8 +195,14 @@ void PackmlModeForm::refreshRequest()
 
 void PackmlModeForm::refreshStateLists()
 {
-    const packml::Mode& mode = *m_document->model().packml()->mode(m_mode);
+    const packml::Configuration& configuration = *m_document->model().packml();
+    const packml::Mode& mode = *configuration.mode(m_mode);
     const packml::StateSet enabled = packml::enabledStates(mode.disabled).enabled;
+    // The 2022 edition displays state 17 as "Completed" (spec §2.1).
+    const QString complete = configuration.options.edition == packml::Edition::Y2022 ? QStringLiteral("Completed")
+                                                                                   : QStringLiteral("Complete");
+    m_disabledChecks.value(packml::State::Complete)->setText(complete);
+    m_modeChangeChecks.value(packml::State::Complete)->setText(complete);
     for (auto it = m_disabledChecks.begin(); it != m_disabledChecks.end(); ++it) {
         setCheckedQuietly(it.value(), !enabled.contains(it.key()));
         it.value()->setEnabled(packml::stateInfo(it.key()).mayBeDisabled);
