@@ -42,6 +42,19 @@ enum CommandId : int {
     MovePropertyId,
     SetPropertyTextId,    // merges typing in the same property
     SetPropertyCommentId, // merges typing in the same property's comment
+    SetPackmlOptionsId,
+    SetPackmlInitialStateId,
+    SetPackmlInitialModeId,
+    SetCommandConditionId, // merges typing in the same PackML command's condition
+    SetCommandCommentId,   // merges typing in the same PackML command's comment
+    AddModeId,
+    RemoveModeId,
+    RenameModeId,         // merges typing in the same unit mode's name
+    SetModeCommentId,     // merges typing in the same unit mode's comment
+    SetModeRequestId,     // merges typing in the same unit mode's request condition
+    SetModeDisabledId,
+    SetModeChangeStatesId,
+    SetGrafcetChoiceId,
 };
 
 } // namespace editor

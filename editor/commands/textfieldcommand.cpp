@@ -27,10 +27,17 @@ bool TextFieldCommand::mergeWith(const QUndoCommand* other)
     return true;
 }
 
+core::Status TextFieldCommand::validate(const std::string&, const std::string&) const
+{
+    return core::Status::success();
+}
+
 core::Status TextFieldCommand::apply()
 {
     if (firstRun())
         m_previous = read(m_element);
+    if (core::Status status = validate(m_element, m_value); !status)
+        return status;
     return write(m_element, m_value);
 }
 

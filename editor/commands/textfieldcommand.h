@@ -25,6 +25,9 @@ protected:
     // element (writing then fails and says why).
     virtual std::string read(const std::string& element) const = 0;
     virtual core::Status write(const std::string& element, const std::string& value) = 0;
+    // Whether the model accepts `value` at all (an edit it refuses never
+    // enters the stack); undo restores the previous value without asking.
+    virtual core::Status validate(const std::string& element, const std::string& value) const;
 
 private:
     core::Status apply() final;

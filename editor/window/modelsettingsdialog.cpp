@@ -9,11 +9,13 @@
 #include "editor/document.h"
 #include "editor/export/exportoptionsdialog.h"
 #include "editor/style/secondarytext.h"
+#include "editor/window/packmlsettingswidget.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSpinBox>
@@ -82,6 +84,13 @@ ModelSettingsDialog::ModelSettingsDialog(Document& document, Settings& settings,
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
+    if (document.model().packml()) {
+        auto* group = new QGroupBox(tr("PackML"), this);
+        auto* groupLayout = new QVBoxLayout(group);
+        m_packmlSettings = new PackmlSettingsWidget(document, group);
+        groupLayout->addWidget(m_packmlSettings);
+        layout->addWidget(group);
+    }
     layout->addWidget(m_defaultsCheck);
     layout->addWidget(buttons);
     setMinimumWidth(fontMetrics().averageCharWidth() * 60);
@@ -125,6 +134,10 @@ void ModelSettingsDialog::apply()
         commands.push_back(new SetDialectCommand(m_document, dialect));
     if (evolution != current.evolution)
         commands.push_back(new SetEvolutionRuleCommand(m_document, evolution));
+    if (m_packmlSettings) {
+        const std::vector<QUndoCommand*> packml = m_packmlSettings->pendingCommands();
+        commands.insert(commands.end(), packml.begin(), packml.end());
+    }
 
     // One undo step for the whole dialog.
     QUndoStack* stack = m_document.undoStack();

@@ -13,12 +13,14 @@ class QSpinBox;
 namespace editor {
 
 class Document;
+class PackmlSettingsWidget;
 class Settings;
 
 // Edit > Model Settings: the model name, the PLC cycle time, the dialect
 // of the generated code and the evolution rule of the nested GRAFCETs
 // (spec grafcet-layer.md §4.1), with a sentence saying what the chosen rule
-// means. Accepting pushes one undoable edit for what
+// means; for a PackML model also its edition, options and initial state
+// (PackmlSettingsWidget). Accepting pushes one undoable edit for what
 // changed; it can also make the cycle time and dialect the defaults of new
 // models.
 class ModelSettingsDialog : public QDialog {
@@ -44,6 +46,7 @@ private:
     QComboBox* m_evolutionCombo;
     QLabel* m_evolutionDescription;
     QCheckBox* m_defaultsCheck;
+    PackmlSettingsWidget* m_packmlSettings = nullptr; // PackML models only
 };
 
 } // namespace editor
