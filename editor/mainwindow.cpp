@@ -22,6 +22,9 @@
 #include "editor/docks/gemma/stepdock.h"
 #include "editor/docks/gemma/transitiondock.h"
 #include "editor/docks/grafcetstepdock.h"
+#include "editor/docks/packml/packmlcommandsdock.h"
+#include "editor/docks/packml/packmlmodesdock.h"
+#include "editor/docks/packml/packmlstatedock.h"
 #include "editor/docks/grafcettransitiondock.h"
 #include "editor/docks/problemsdock.h"
 #include "editor/docks/stpreviewdock.h"
@@ -214,8 +217,9 @@ QList<QDockWidget*> MainWindow::docks() const
 {
     if (!m_dockFrames.isEmpty())
         return m_dockFrames;
-    return {m_stepDock,      m_transitionDock, m_grafcetStepDock, m_grafcetTransitionDock,
-            m_simulationDock, m_variablesDock, m_problemsDock,    m_stPreviewDock};
+    return {m_stepDock,           m_transitionDock,     m_packmlStateDock, m_packmlCommandsDock,
+            m_packmlModesDock,    m_grafcetStepDock,    m_grafcetTransitionDock,
+            m_simulationDock,     m_variablesDock,      m_problemsDock,    m_stPreviewDock};
 }
 
 QDockWidget* MainWindow::dockNamed(const QString& objectName) const
@@ -227,6 +231,10 @@ void MainWindow::createDocks()
 {
     m_stepDock = new StepDock(m_document, m_selection, this);
     m_transitionDock = new TransitionDock(m_document, m_selection, this);
+    m_packmlStateDock = new PackmlStateDock(m_document, m_selection, this);
+    m_packmlCommandsDock = new PackmlCommandsDock(m_document, m_selection, this);
+    m_packmlModesDock = new PackmlModesDock(m_document, m_selection, this);
+    connect(m_packmlStateDock, &PackmlStateDock::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
     m_grafcetStepDock = new GrafcetStepDock(m_document, m_selection, this);
     m_grafcetTransitionDock = new GrafcetTransitionDock(m_document, m_selection, this);
     m_variablesDock = new VariablesDock(m_document, m_selection, this);
@@ -271,6 +279,9 @@ struct DockPlace {
 constexpr DockPlace kDockPlaces[] = {
     {"stepDock", &StepDock::title, DockGroup::Upper},
     {"transitionDock", &TransitionDock::title, DockGroup::Upper},
+    {"packmlStateDock", &PackmlStateDock::title, DockGroup::Upper},
+    {"packmlCommandsDock", &PackmlCommandsDock::title, DockGroup::Upper},
+    {"packmlModesDock", &PackmlModesDock::title, DockGroup::Upper},
     {"grafcetStepDock", &GrafcetStepDock::title, DockGroup::Upper},
     {"grafcetTransitionDock", &GrafcetTransitionDock::title, DockGroup::Upper},
     {"simulationDock", &SimulationDock::title, DockGroup::Upper},
@@ -391,6 +402,9 @@ void MainWindow::deleteDocks()
     }
     m_stepDock = nullptr;
     m_transitionDock = nullptr;
+    m_packmlStateDock = nullptr;
+    m_packmlCommandsDock = nullptr;
+    m_packmlModesDock = nullptr;
     m_grafcetStepDock = nullptr;
     m_grafcetTransitionDock = nullptr;
     m_variablesDock = nullptr;
@@ -725,7 +739,14 @@ void MainWindow::applyTemplate()
         m_grafcetTabs->setSwitchingFile(false);
     }
     m_grafcetTabs->retitle();
+    const bool templateChanged = m_dockContext->templateKind() != kind;
     m_dockContext->setTemplate(kind);
+    // The template's first panel in front of its group, as at the first start.
+    if (QDockWidget* first = templateChanged ? dockNamed(packml ? QStringLiteral("packmlStateDock")
+                                                                : QStringLiteral("stepDock"))
+                                             : nullptr;
+        first && !first->isHidden())
+        first->raise();
     // What only the GEMMA chart has: hiding its elements, the GG-Generator format.
     for (QAction* gemmaOnly : {m_hideSelectionAction, m_showSelectionAction, m_showHiddenAction,
                                m_exportActions->ggGeneratorAction()})
@@ -1423,8 +1444,9 @@ void MainWindow::applyEditingLock()
     m_showSelectionAction->setEnabled(!locked);
     if (!docksReady())
         return; // the docks are built with the lock applied
-    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{m_stepDock, m_transitionDock, m_grafcetStepDock,
-                                                                 m_grafcetTransitionDock, m_variablesDock})
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{
+             m_stepDock, m_transitionDock, m_packmlStateDock, m_packmlCommandsDock, m_packmlModesDock,
+             m_grafcetStepDock, m_grafcetTransitionDock, m_variablesDock})
         dock->widget()->setEnabled(!locked);
 }
 

@@ -35,6 +35,7 @@
 #include "editor/window/statusindicators.h"
 
 #include "core/formats/modelfiles.h"
+#include "core/templates/packml/packmltemplate.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
@@ -174,12 +175,16 @@ QString harmlessCharacterDevice(const QTemporaryDir& dir)
 }
 
 // Whether `text` is language: it has letters and is not an element id, an
-// IEC type name or a key name.
+// IEC type name, a key name or a PackTags state or command name (which
+// PackML never translates, spec packml.md §2.1).
 bool isLanguage(const QString& text)
 {
     static const QRegularExpression notLanguage(
         QStringLiteral(R"(^([A-Z][0-9](->[A-Z][0-9])?|F->D1|[A-Z]+|[A-Z]{2}[0-9]{3}|[-+]?[0-9.,]+ ?%?|Ctrl\+.*)$)"));
     const QString plain = QTextDocumentFragment::fromHtml(text).toPlainText().trimmed();
+    const std::string name = plain.toStdString();
+    if (core::packml::findState(name) || core::packml::findCommand(name) || plain == QLatin1String("Completed"))
+        return false;
     const bool hasLetters = std::any_of(plain.begin(), plain.end(), [](QChar c) { return c.isLetter(); });
     return hasLetters && !notLanguage.match(plain).hasMatch();
 }
@@ -1439,11 +1444,11 @@ void TestMainWindow::deferredDocksFillInAfterTheFirstFrame()
     QCOMPARE(tabsShownIn(&window),
              (QStringList{"Problems", "Simulation", "Step", "Structured Text", "Transition", "Variables"}));
     // The real docks, one of each, where the frames were, working.
-    QCOMPARE(window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly).size(), 8);
+    QCOMPARE(window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly).size(), 12);
     auto* stepDock = window.findChild<StepDock*>(QStringLiteral("stepDock"));
     QVERIFY(stepDock);
     QCOMPARE(window.dockWidgetArea(stepDock), Qt::RightDockWidgetArea);
-    QCOMPARE(window.tabifiedDockWidgets(stepDock).size(), 4);
+    QCOMPARE(window.tabifiedDockWidgets(stepDock).size(), 8); // with the nested and the PackML docks
     window.selection()->select(ElementRef::step(QStringLiteral("F1")));
     auto* idLabel = stepDock->findChild<QLabel*>(QStringLiteral("idLabel"));
     QVERIFY(idLabel);
@@ -1526,7 +1531,7 @@ void TestMainWindow::deferredDocksSaveTheirLayoutWhenClosedEarly()
     auto* problems = again.findChild<QDockWidget*>(QStringLiteral("problemsDock"));
     QCOMPARE(again.dockWidgetArea(problems), Qt::RightDockWidgetArea);
     QCOMPARE(again.tabifiedDockWidgets(problems).size(), 2);
-    QCOMPARE(again.tabifiedDockWidgets(again.findChild<QDockWidget*>(QStringLiteral("stepDock"))).size(), 4);
+    QCOMPARE(again.tabifiedDockWidgets(again.findChild<QDockWidget*>(QStringLiteral("stepDock"))).size(), 8);
     QSettings().clear(); // the other tests start from the default layout
 }
 
@@ -1630,7 +1635,7 @@ void TestMainWindow::languageChangeRetranslatesMenus()
     QCOMPARE(m_window->dockWidgetArea(problems), Qt::LeftDockWidgetArea);
     auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
     QVERIFY(viewMenu->actions().contains(problems->toggleViewAction()));
-    QCOMPARE(m_window->findChildren<QDockWidget*>().size(), 8); // with the Simulation and nested GRAFCET docks
+    QCOMPARE(m_window->findChildren<QDockWidget*>().size(), 12); // with the Simulation, nested GRAFCET and PackML docks
 
     QCoreApplication::removeTranslator(&translator);
     QCoreApplication::processEvents();

@@ -127,6 +127,19 @@ void TestPackmlWindow::openingAPackmlModelShowsItsChart()
     QVERIFY(!dockOffered(*m_window, "simulationDock"));
     QVERIFY(dockOffered(*m_window, "variablesDock"));
     QVERIFY(dockOffered(*m_window, "problemsDock"));
+    for (const char* packml : {"packmlStateDock", "packmlCommandsDock", "packmlModesDock"}) {
+        QVERIFY2(dockOffered(*m_window, packml), packml);
+        QVERIFY2(dockShown(*m_window, packml), packml);
+    }
+    // A GRAFCET tab in front: the State and Commands panels give way to the nested ones.
+    QVERIFY(m_window->openNestedGrafcet(QStringLiteral("1/Execute")));
+    QVERIFY(!dockShown(*m_window, "packmlStateDock"));
+    QVERIFY(!dockShown(*m_window, "packmlCommandsDock"));
+    QVERIFY(dockShown(*m_window, "grafcetStepDock"));
+    QVERIFY(dockShown(*m_window, "packmlModesDock"));
+    m_window->centralTabs()->setCurrentIndex(0);
+    QVERIFY(dockShown(*m_window, "packmlStateDock"));
+    QVERIFY(!dockShown(*m_window, "grafcetStepDock"));
     QVERIFY(!m_window->findChild<QAction*>(QStringLiteral("hideSelectionAction"))->isVisible());
     QVERIFY(!m_window->exportActions()->ggGeneratorAction()->isVisible());
     QVERIFY(m_window->exportActions()->plcOpenAction()->isEnabled());
@@ -143,6 +156,10 @@ void TestPackmlWindow::goingBackToGemmaBringsTheGemmaChartBack()
     QVERIFY(dockOffered(*m_window, "stepDock"));
     QVERIFY(dockShown(*m_window, "stepDock"));
     QVERIFY(dockOffered(*m_window, "simulationDock"));
+    for (const char* packml : {"packmlStateDock", "packmlCommandsDock", "packmlModesDock"}) {
+        QVERIFY2(!dockOffered(*m_window, packml), packml);
+        QVERIFY2(!dockShown(*m_window, packml), packml);
+    }
     QVERIFY(m_window->findChild<QAction*>(QStringLiteral("hideSelectionAction"))->isVisible());
     QVERIFY(m_window->exportActions()->ggGeneratorAction()->isVisible());
     QVERIFY(m_window->openNestedGrafcet(QStringLiteral("F1")));
