@@ -73,6 +73,7 @@ private slots:
     void droppedCommandIsWorded();
     void refusedModeNamesWhereItIsGranted();
     void inputsRefusedWithTheirReason();
+    void manualCompleteOnlyWithoutGrafcet();
     void historyShowsRecordedScans();
     void playingFromAPastScanDropsWhatFollowed();
     void resetGoesBackToTheStart();
@@ -221,6 +222,26 @@ void TestPackmlSimulation::inputsRefusedWithTheirReason()
     QVERIFY(m_session->setInputText(QStringLiteral("CmdChangeRequest"), QStringLiteral("TRUE")));
     stepTo(1);
     QCOMPARE(m_session->simulator()->state(), State::Resetting); // the raw PackTags request
+}
+
+void TestPackmlSimulation::manualCompleteOnlyWithoutGrafcet()
+{
+    QCOMPARE(m_session->currentInstance(), -1); // Stopped: a wait state
+    m_session->pressCommand(Command::Reset);
+    stepTo(1);
+    const int resetting = m_session->currentInstance();
+    QVERIFY(resetting >= 0);
+    QCOMPARE(m_session->simulator()->program().instances[std::size_t(resetting)].name, std::string("Production_Resetting"));
+    QString error;
+    QVERIFY(!m_session->setManualComplete(resetting, true, &error)); // its GRAFCET writes Complete
+    QVERIFY(!error.isEmpty());
+    const auto* manualExecute = m_session->simulator()->program().instance(kManual, State::Execute);
+    const int index = static_cast<int>(manualExecute - m_session->simulator()->program().instances.data());
+    QVERIFY(m_session->setManualComplete(index, true));
+    QCOMPARE(m_session->simulator()->manualComplete(index), std::optional<bool>(true));
+    // A replay starts with every SC from its skeleton.
+    QVERIFY(m_session->startReplayText("at 1: expect state Stopped\n", QStringLiteral("s"), nullptr));
+    QCOMPARE(m_session->simulator()->manualComplete(index), std::nullopt);
 }
 
 void TestPackmlSimulation::historyShowsRecordedScans()

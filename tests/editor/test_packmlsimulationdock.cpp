@@ -54,6 +54,8 @@ private slots:
     void modeSelectorRequestsAMode();
     void packTagsFieldsDriveTheRequestsByHand();
     void outputsAsLampsAndValues();
+    void functionBlockOfTheCurrentState();
+    void completeOfASkeletonSetByHand();
     void historyButtonsShowPastScans();
     void runButtonRunsAndPauses();
     void scenarioReplayedWithItsResult();
@@ -218,6 +220,44 @@ void TestPackmlSimulationDock::outputsAsLampsAndValues()
     m_session->advance(2);
     QVERIFY(m_dock->outputLamp(QStringLiteral("HomeAxis"))->isOn());
     QCOMPARE(m_dock->outputValue(QStringLiteral("StateCurrent"))->text(), QStringLiteral("15"));
+}
+
+void TestPackmlSimulationDock::functionBlockOfTheCurrentState()
+{
+    start();
+    QCOMPARE(m_dock->instanceLabel()->text(), QStringLiteral("Stopped is a wait state: no function block runs in it"));
+    QTest::mouseClick(m_dock->commandButton(Command::Reset), Qt::LeftButton);
+    m_session->advance(2);
+    QCOMPARE(m_dock->instanceLabel()->text(), QStringLiteral("Production_Resetting: active steps 1, Complete = FALSE"));
+    QVERIFY(m_dock->completeCombo()->isHidden()); // its GRAFCET writes Complete
+}
+
+// Manual's Execute has no GRAFCET: its SC, FALSE from the skeleton, set TRUE by hand and back.
+void TestPackmlSimulationDock::completeOfASkeletonSetByHand()
+{
+    start();
+    m_session->requestMode(3);
+    m_session->stepOnce();
+    QTest::mouseClick(m_dock->commandButton(Command::Reset), Qt::LeftButton);
+    m_session->advance(2);
+    QTest::mouseClick(m_dock->commandButton(Command::Start), Qt::LeftButton);
+    m_session->advance(2);
+    QCOMPARE(m_session->simulator()->state(), State::Execute);
+    QCOMPARE(m_dock->instanceLabel()->text(), QStringLiteral("Manual_Execute runs no GRAFCET: Complete = FALSE"));
+    QVERIFY(!m_dock->completeCombo()->isHidden());
+    QCOMPARE(m_dock->completeCombo()->currentIndex(), 0);
+    m_dock->completeCombo()->setCurrentIndex(1);
+    emit m_dock->completeCombo()->activated(1);
+    QCOMPARE(m_session->simulator()->manualComplete(m_session->currentInstance()), std::optional<bool>(true));
+    m_session->stepOnce();
+    QCOMPARE(m_dock->instanceLabel()->text(), QStringLiteral("Manual_Execute runs no GRAFCET: Complete = TRUE"));
+    QCOMPARE(m_dock->completeCombo()->currentIndex(), 1);
+    // Manual disables Completing: the SC leads nowhere, Execute stays.
+    QCOMPARE(m_session->simulator()->state(), State::Execute);
+    emit m_dock->completeCombo()->activated(0);
+    QCOMPARE(m_session->simulator()->manualComplete(m_session->currentInstance()), std::nullopt);
+    m_session->stepOnce();
+    QCOMPARE(m_dock->completeCombo()->currentIndex(), 0);
 }
 
 void TestPackmlSimulationDock::historyButtonsShowPastScans()

@@ -5,6 +5,7 @@
 #include "editor/simulation/packml/packmlsimulationsession.h"
 #include "editor/simulation/packml/packmlsimulationtext.h"
 #include "editor/simulation/packml/packmltracemodel.h"
+#include "editor/simulation/simulationtext.h"
 #include "editor/stdstring.h"
 
 #include "core/templates/packml/packmlsimulator.h"
@@ -169,6 +170,16 @@ QWidget* PackmlSimulationDock::buildUnitTab()
     m_modeSelector = new QComboBox(page);
     m_modeSelector->setObjectName(QStringLiteral("modeSelector"));
     layout->addWidget(m_modeSelector);
+    m_instanceTitle = sectionTitle(page);
+    layout->addWidget(m_instanceTitle);
+    m_instanceLabel = new QLabel(page);
+    m_instanceLabel->setObjectName(QStringLiteral("instanceLabel"));
+    m_instanceLabel->setWordWrap(true);
+    layout->addWidget(m_instanceLabel);
+    m_completeCombo = new QComboBox(page);
+    m_completeCombo->setObjectName(QStringLiteral("completeCombo"));
+    m_completeCombo->addItems({QString(), QString(), QString()}); // worded by retranslate()
+    layout->addWidget(m_completeCombo);
     m_inputsTitle = sectionTitle(page);
     layout->addWidget(m_inputsTitle);
     m_inputsGrid = new QGridLayout();
@@ -186,6 +197,10 @@ QWidget* PackmlSimulationDock::buildUnitTab()
         const int mode = m_modeSelector->itemData(index).toInt();
         if (m_session->isActive() && mode != m_session->simulator()->mode())
             m_session->requestMode(mode);
+    });
+    connect(m_completeCombo, &QComboBox::activated, this, [this](int index) {
+        const std::optional<bool> complete = index == 0 ? std::nullopt : std::optional<bool>(index == 1);
+        m_session->setManualComplete(m_session->currentInstance(), complete);
     });
     return scroll;
 }
@@ -267,6 +282,13 @@ void PackmlSimulationDock::retranslate()
     m_commandsTitle->setText(tr("Commands"));
     m_modeTitle->setText(tr("Unit mode"));
     m_modeSelector->setToolTip(tr("Pick a mode to request it: the mode manager grants it or says why not"));
+    m_instanceTitle->setText(tr("Function block"));
+    //: the State Complete of a state without nested GRAFCET: as the generated skeleton sets it
+    m_completeCombo->setItemText(0, tr("SC from the skeleton"));
+    m_completeCombo->setItemText(1, tr("SC = TRUE (by hand)"));
+    m_completeCombo->setItemText(2, tr("SC = FALSE (by hand)"));
+    m_completeCombo->setToolTip(tr("The State Complete of a state without nested GRAFCET, set by hand to hold an "
+                                   "acting state or to complete Execute"));
     m_inputsTitle->setText(tr("Inputs"));
     m_outputsTitle->setText(tr("Outputs"));
     m_replayButton->setText(tr("Replay Scenario…"));
@@ -408,6 +430,7 @@ void PackmlSimulationDock::refresh()
     refreshCommands();
     refreshRequest();
     refreshVariables();
+    refreshInstance();
     refreshReplay();
     selectShownScan();
 }
@@ -501,6 +524,36 @@ void PackmlSimulationDock::refreshVariables()
         it.value()->setOn(valueOf(it.key()) == std::optional<core::cond::Value>(true));
     for (auto it = m_outputValues.cbegin(); it != m_outputValues.cend(); ++it)
         it.value()->setText(fromStd(core::cond::formatValue(*valueOf(it.key()))));
+}
+
+void PackmlSimulationDock::refreshInstance()
+{
+    const core::packml::PackmlSimulator* simulator = m_session->simulator();
+    const int index = m_session->currentInstance();
+    m_completeCombo->setVisible(false);
+    if (!simulator) {
+        m_instanceLabel->clear();
+        return;
+    }
+    const QString state = fromStd(std::string(core::packml::stateName(simulator->state())));
+    if (index < 0) {
+        m_instanceLabel->setText(tr("%1 is a wait state: no function block runs in it").arg(state));
+        return;
+    }
+    const core::packml::ProgramInstance& instance = simulator->program().instances[static_cast<std::size_t>(index)];
+    const QString name = fromStd(instance.name);
+    const QString complete = simulator->complete(index) ? QStringLiteral("TRUE") : QStringLiteral("FALSE");
+    if (const core::NestedEngine* engine = simulator->engine(index)) {
+        //: %1: a function block instance (Production_Execute), %2: step numbers, %3: TRUE or FALSE
+        m_instanceLabel->setText(tr("%1: active steps %2, Complete = %3")
+                                     .arg(name, stepNumbersText(engine->activeSteps()), complete));
+        return;
+    }
+    m_instanceLabel->setText(tr("%1 runs no GRAFCET: Complete = %2").arg(name, complete));
+    m_completeCombo->setVisible(true);
+    const std::optional<bool> manual = simulator->manualComplete(index);
+    const QSignalBlocker blocker(m_completeCombo);
+    m_completeCombo->setCurrentIndex(!manual ? 0 : (*manual ? 1 : 2));
 }
 
 void PackmlSimulationDock::refreshReplay()

@@ -56,6 +56,12 @@ public:
     QLabel* statusLabel() const { return m_statusLabel; }
     QLabel* requestLabel() const { return m_requestLabel; }
     QComboBox* modeSelector() const { return m_modeSelector; }
+    // The function block of the current (mode, state): its instance, the
+    // active steps of its GRAFCET or that it has none, its Complete.
+    QLabel* instanceLabel() const { return m_instanceLabel; }
+    // The SC of an instance without GRAFCET: from its skeleton, TRUE or
+    // FALSE by hand (shown only for such an instance).
+    QComboBox* completeCombo() const { return m_completeCombo; }
     QTableView* traceView() const { return m_traceView; }
     PackmlTraceModel* traceModel() const { return m_traceModel; }
     QLabel* replayLabel() const { return m_replayLabel; }
@@ -99,6 +105,7 @@ private:
     void refreshCommands();
     void refreshRequest();
     void refreshVariables();
+    void refreshInstance();
     void refreshReplay();
     void selectShownScan();
 
@@ -122,6 +129,9 @@ private:
     QLabel* m_requestLabel = nullptr;
     QLabel* m_modeTitle = nullptr;
     QComboBox* m_modeSelector = nullptr;
+    QLabel* m_instanceTitle = nullptr;
+    QLabel* m_instanceLabel = nullptr;
+    QComboBox* m_completeCombo = nullptr;
     QLabel* m_inputsTitle = nullptr;
     QGridLayout* m_inputsGrid = nullptr;
     QLabel* m_outputsTitle = nullptr;

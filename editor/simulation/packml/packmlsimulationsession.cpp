@@ -307,6 +307,32 @@ bool PackmlSimulationSession::setInputText(const QString& name, const QString& t
     return true;
 }
 
+bool PackmlSimulationSession::setManualComplete(int instance, std::optional<bool> complete, QString* error)
+{
+    if (!isActive())
+        return false;
+    continueFromViewedScan();
+    stopReplay();
+    const core::Status status = m_simulator->setManualComplete(instance, complete);
+    if (!status) {
+        if (error)
+            *error = QString::fromStdString(status.message);
+        return false;
+    }
+    emit inputsChanged();
+    return true;
+}
+
+int PackmlSimulationSession::currentInstance() const
+{
+    const core::packml::PackmlSimulator* shown = simulator();
+    if (!shown)
+        return -1;
+    const auto& instances = shown->program().instances;
+    const core::packml::ProgramInstance* instance = shown->program().instance(shown->mode(), shown->state());
+    return instance ? static_cast<int>(instance - instances.data()) : -1;
+}
+
 void PackmlSimulationSession::pressCommand(core::packml::Command command)
 {
     if (!isActive())

@@ -86,6 +86,15 @@ public:
     // the reason (English, from the simulator) when refused. Ends a replay.
     bool setInput(const QString& name, const core::cond::Value& value, QString* error = nullptr);
     bool setInputText(const QString& name, const QString& text, QString* error = nullptr);
+    // The State Complete of an instance without GRAFCET set by hand (spec
+    // §4's simulation aid, a scenario's `set complete`); nullopt gives the
+    // skeleton's back. False with the reason (English) for an instance that
+    // runs a GRAFCET. Ends a replay.
+    bool setManualComplete(int instance, std::optional<bool> complete, QString* error = nullptr);
+    // The instance of the current (mode, state) in the scan shown, an index
+    // into PackmlProgram::instances; -1 for a wait state (no function block).
+    int currentInstance() const;
+
     // One command or mode request for the next scan that can take it; a
     // second press before then replaces the first. Ends a replay.
     void pressCommand(core::packml::Command command);
