@@ -70,6 +70,8 @@ private slots:
     void activeLocksTheDocumentAndStartsInTheInitialState();
     void capperThroughCommandsAndModes();
     void aPressRightAfterAnotherWaitsAScan();
+    void aPressAfterARequestByHandWaitsAScan();
+    void aPressAfterAReplaysCommandWaitsAScan();
     void droppedCommandIsWorded();
     void refusedModeNamesWhereItIsGranted();
     void inputsRefusedWithTheirReason();
@@ -179,6 +181,34 @@ void TestPackmlSimulation::aPressRightAfterAnotherWaitsAScan()
     QCOMPARE(m_session->simulator()->state(), State::Stopped);
     QCOMPARE(m_session->lastRequest()->record->scan, 3);
     QCOMPARE(outcomeOf(*m_session), QStringLiteral("Stop: fired Resetting-Stop->Stopped"));
+}
+
+// The same with CmdChangeRequest raised by hand, as an HMI would.
+void TestPackmlSimulation::aPressAfterARequestByHandWaitsAScan()
+{
+    QVERIFY(m_session->setInputText(QStringLiteral("CntrlCmd"), QStringLiteral("1")));
+    QVERIFY(m_session->setInput(QStringLiteral("CmdChangeRequest"), true));
+    stepTo(1);
+    QCOMPARE(m_session->simulator()->state(), State::Resetting);
+    QVERIFY(m_session->setInput(QStringLiteral("CmdChangeRequest"), false));
+    m_session->pressCommand(Command::Stop);
+    stepTo(2);
+    QCOMPARE(m_session->simulator()->state(), State::Resetting);
+    stepTo(3);
+    QCOMPARE(m_session->simulator()->state(), State::Stopped);
+}
+
+// And after a command of a replay, in its last scan.
+void TestPackmlSimulation::aPressAfterAReplaysCommandWaitsAScan()
+{
+    QVERIFY(m_session->startReplayText("at 1: command Reset\n", QStringLiteral("s"), nullptr));
+    stepTo(1);
+    QCOMPARE(m_session->replayState(), PackmlSimulationSession::ReplayState::Finished);
+    m_session->pressCommand(Command::Stop);
+    stepTo(2);
+    QCOMPARE(m_session->simulator()->state(), State::Resetting);
+    stepTo(3);
+    QCOMPARE(m_session->simulator()->state(), State::Stopped);
 }
 
 void TestPackmlSimulation::droppedCommandIsWorded()

@@ -158,8 +158,8 @@ void PackmlSimulationSession::clearSession()
     m_trace.clear();
     m_pending.reset();
     m_lastRequest.reset();
-    m_commandRose = false;
-    m_modeRose = false;
+    m_commandTagTrue = false;
+    m_modeTagTrue = false;
     const bool wasViewingHistory = isViewingHistory();
     m_viewed.reset();
     m_history.clear();
@@ -227,20 +227,22 @@ void PackmlSimulationSession::runScans(std::int64_t scans, qint64 budgetNs)
 
 void PackmlSimulationSession::runOneScan()
 {
-    applyPendingRequest();
-    const bool commandRequested = m_commandRose;
-    const bool modeRequested = m_modeRose;
+    const std::optional<RequestKind> raised = applyPendingRequest();
+    const bool commandTag = requestTagTrue(RequestKind::Command);
+    const bool modeTag = requestTagTrue(RequestKind::Mode);
     PackmlScanRecord record = m_runner ? m_runner->step() : m_simulator->scan();
     if (m_runner) {
         const auto& failures = m_runner->lastFailures();
         m_replayFailures.insert(m_replayFailures.end(), failures.begin(), failures.end());
     }
-    // A request is TRUE for the one scan that reads it.
-    if (commandRequested)
+    // A request raised by a press is TRUE for the one scan that reads it.
+    if (raised == RequestKind::Command)
         m_simulator->setInput(kCommandEdgeTag, false);
-    if (modeRequested)
+    if (raised == RequestKind::Mode)
         m_simulator->setInput(kModeEdgeTag, false);
-    if (m_lastRequest && !m_lastRequest->record && !m_pending && (commandRequested || modeRequested))
+    m_commandTagTrue = commandTag;
+    m_modeTagTrue = modeTag;
+    if (raised && m_lastRequest && !m_lastRequest->record)
         m_lastRequest->record = record;
     m_trace.push_back(record);
     if (m_trace.size() > static_cast<std::size_t>(kTraceCapacity))
@@ -248,29 +250,39 @@ void PackmlSimulationSession::runOneScan()
     keepSnapshot(std::move(record));
 }
 
-// The press waiting, if its request can rise in this scan: not when the
-// same request was TRUE in the scan before (no edge then), so it waits one.
-void PackmlSimulationSession::applyPendingRequest()
+bool PackmlSimulationSession::requestTagTrue(RequestKind kind) const
 {
-    const bool commandWasTrue = m_commandRose;
-    const bool modeWasTrue = m_modeRose;
-    m_commandRose = false;
-    m_modeRose = false;
+    const bool isCommand = kind == RequestKind::Command;
+    if (m_simulator->value(isCommand ? kCommandEdgeTag : kModeEdgeTag) == std::optional<core::cond::Value>(true))
+        return true;
+    if (!m_runner)
+        return false;
+    const auto actionKind = isCommand ? core::ScenarioAction::Kind::Command : core::ScenarioAction::Kind::Mode;
+    const std::int64_t next = m_simulator->scanCount() + 1;
+    return std::any_of(m_scenario->actions.begin(), m_scenario->actions.end(),
+                       [&](const core::ScenarioAction& action) { return action.scan == next && action.kind == actionKind; });
+}
+
+// Not when the same request tag was TRUE in the scan before (no edge then):
+// the press waits a scan more.
+std::optional<PackmlSimulationSession::RequestKind> PackmlSimulationSession::applyPendingRequest()
+{
     if (!m_pending)
-        return;
+        return std::nullopt;
     const bool isCommand = m_pending->kind == RequestKind::Command;
-    if (isCommand ? commandWasTrue : modeWasTrue)
-        return;
+    if (isCommand ? m_commandTagTrue : m_modeTagTrue)
+        return std::nullopt;
     const std::string number = std::to_string(m_pending->number);
     m_simulator->setInputText(isCommand ? kCommandNumberTag : kModeNumberTag, number);
     m_simulator->setInput(isCommand ? kCommandEdgeTag : kModeEdgeTag, true);
-    (isCommand ? m_commandRose : m_modeRose) = true;
+    const RequestKind raised = m_pending->kind;
     m_pending.reset();
+    return raised;
 }
 
 void PackmlSimulationSession::keepSnapshot(std::optional<PackmlScanRecord> record)
 {
-    m_history.push_back({*m_simulator, std::move(record), m_commandRose, m_modeRose});
+    m_history.push_back({*m_simulator, std::move(record), m_commandTagTrue, m_modeTagTrue});
     if (m_history.size() > static_cast<std::size_t>(kHistoryCapacity) + 1)
         m_history.pop_front();
 }
@@ -423,8 +435,8 @@ void PackmlSimulationSession::continueFromViewedScan()
     m_viewed.reset();
     // Assigned, not replaced: the replay's runner refers to this simulator.
     *m_simulator = m_history.back().simulator;
-    m_commandRose = m_history.back().commandRose;
-    m_modeRose = m_history.back().modeRose;
+    m_commandTagTrue = m_history.back().commandTagTrue;
+    m_modeTagTrue = m_history.back().modeTagTrue;
     m_pending.reset();
     const std::int64_t scan = m_simulator->scanCount();
     while (!m_trace.empty() && m_trace.back().scan > scan)

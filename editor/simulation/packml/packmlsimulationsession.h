@@ -146,14 +146,19 @@ private:
     struct Snapshot {
         core::packml::PackmlSimulator simulator;
         std::optional<core::packml::PackmlScanRecord> record; // none for scan 0
-        bool commandRose = false; // CmdChangeRequest was TRUE in this scan
-        bool modeRose = false;
+        bool commandTagTrue = false; // CmdChangeRequest was TRUE in this scan
+        bool modeTagTrue = false;    // UnitModeChangeRequest was TRUE in this scan
     };
 
     void onTick();
     void runScans(std::int64_t scans, qint64 budgetNs);
     void runOneScan();
-    void applyPendingRequest();
+    // Raises the request of the press waiting, if it can rise in this scan:
+    // the kind raised, nullopt when none.
+    std::optional<RequestKind> applyPendingRequest();
+    // Is the request tag TRUE for the next scan: set so, or raised by the
+    // replay's scenario in it?
+    bool requestTagTrue(RequestKind kind) const;
     void clearSession();
     void keepSnapshot(std::optional<core::packml::PackmlScanRecord> record);
     void continueFromViewedScan();
@@ -171,8 +176,10 @@ private:
     std::deque<core::packml::PackmlScanRecord> m_trace;
     std::optional<Request> m_pending;     // waits for the next scan that can take it
     std::optional<Request> m_lastRequest; // the latest press, for the dock
-    bool m_commandRose = false;           // the request tag was TRUE in the latest scan
-    bool m_modeRose = false;
+    // The request tags were TRUE in the latest scan (by a press, by hand or
+    // by a replay): a press waits a scan for the tag to fall first.
+    bool m_commandTagTrue = false;
+    bool m_modeTagTrue = false;
 
     std::deque<Snapshot> m_history; // oldest first; the last is the latest scan
     std::optional<std::size_t> m_viewed;
