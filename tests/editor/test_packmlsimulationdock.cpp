@@ -10,6 +10,7 @@
 #include "editor/simulation/packml/packmltracemodel.h"
 
 #include "core/formats/modelfiles.h"
+#include "core/templates/packml/packmlmodel.h"
 
 #include <QComboBox>
 #include <QFile>
@@ -61,6 +62,7 @@ private slots:
     void scenarioReplayedWithItsResult();
     void scenarioThatDoesNotFitIsExplained();
     void endButtonEndsTheSimulation();
+    void divisionByZeroStopsTheRunAndSaysWhere();
 
 private:
     void start();
@@ -332,6 +334,30 @@ void TestPackmlSimulationDock::endButtonEndsTheSimulation()
     QVERIFY(!m_document->isReadOnly());
     QVERIFY(!m_dock->commandButton(Command::Reset));
     QVERIFY(m_dock->startButton()->isVisible());
+}
+
+void TestPackmlSimulationDock::divisionByZeroStopsTheRunAndSaysWhere()
+{
+    core::Model model = core::packml::newModel(core::packml::Edition::Y2015);
+    for (const char* name : {"Count", "Batch"})
+        QVERIFY(model.addVariable({name, core::IecType::Int, {}, {}, core::VariableKind::Input}).ok);
+    QVERIFY(model.setCommandCondition(Command::Reset, "Count / Batch > 1").ok);
+    cleanup();
+    m_document = std::make_unique<Document>(model);
+    m_session = std::make_unique<PackmlSimulationSession>(m_document.get());
+    m_dock = std::make_unique<PackmlSimulationDock>(m_session.get(), m_document.get());
+    start();
+    QTest::mouseClick(m_dock->stepButton(), Qt::LeftButton);
+    QVERIFY(m_session->simulator()->fault().has_value());
+    const QString status = m_dock->statusLabel()->text();
+    QVERIFY2(status.contains(QStringLiteral("Stopped at scan 1: integer division by zero in the condition of the Reset "
+                                            "command (Count / Batch in 'Count / Batch > 1')")),
+             qPrintable(status));
+    // No scan runs until a reset.
+    m_session->advance(3);
+    QCOMPARE(m_session->latestScan(), 1);
+    QTest::mouseClick(m_dock->resetButton(), Qt::LeftButton);
+    QVERIFY(!m_session->simulator()->fault().has_value());
 }
 
 QTEST_MAIN(TestPackmlSimulationDock)

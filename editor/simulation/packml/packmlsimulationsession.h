@@ -34,8 +34,9 @@ class Document;
 // A command button or a mode request goes through the PackTags request as a
 // scenario's `command` and `mode` lines do: CntrlCmd (UnitMode) is set and
 // CmdChangeRequest (UnitModeChangeRequest) is TRUE for exactly one scan,
-// FALSE again after it. A press in the scan right after another one waits a
-// scan, so that the request can fall and rise again: no press is lost.
+// FALSE again after it. A press after a scan in which the same request tag
+// was TRUE (a press, by hand, a replay) waits a scan, so that the request
+// can fall and rise again: no press is lost.
 class PackmlSimulationSession : public QObject {
     Q_OBJECT
 

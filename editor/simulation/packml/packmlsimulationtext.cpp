@@ -112,6 +112,33 @@ QString droppedCommandText(const DroppedEvent& event)
     return subject;
 }
 
+// Where a fault happened, worded from its parts: a nested GRAFCET's
+// receptivity or action (stepId names the instance), else a command's or a
+// mode's condition, whose name only the core's English place carries.
+QString faultPlaceText(const core::SimulationFault& fault)
+{
+    const QString owner = fromStd(fault.stepId);
+    if (fault.place.empty() || fault.nestedTransition > 0 || fault.actionIndex >= 0) {
+        if (fault.actionIndex < 0)
+            //: %1: a transition number of a nested GRAFCET, %2: its function block instance
+            return PackmlSimulationText::tr("the receptivity of T%1 of %2").arg(fault.nestedTransition).arg(owner);
+        //: %1: an action's position, %2: a step number, %3: a function block instance
+        return PackmlSimulationText::tr("action %1 of step %2 of %3").arg(fault.actionIndex + 1).arg(fault.nestedStep).arg(owner);
+    }
+    const QString place = fromStd(fault.place);
+    const QString commandPrefix = QStringLiteral("the condition of the ");
+    const QString commandSuffix = QStringLiteral(" command");
+    const QString modePrefix = QStringLiteral("the request condition of mode ");
+    if (place.startsWith(commandPrefix) && place.endsWith(commandSuffix))
+        //: %1: a PackML command (Start)
+        return PackmlSimulationText::tr("the condition of the %1 command")
+            .arg(place.mid(commandPrefix.size(), place.size() - commandPrefix.size() - commandSuffix.size()));
+    if (place.startsWith(modePrefix))
+        //: %1: a unit mode (Manual)
+        return PackmlSimulationText::tr("the request condition of mode %1").arg(place.mid(modePrefix.size()));
+    return place;
+}
+
 } // namespace
 
 QString packmlTransitionText(const core::packml::ModeTransition& transition)
@@ -150,10 +177,10 @@ QString packmlScenarioFailureText(const core::packml::PackmlScenarioFailure& fai
 
 QString packmlFaultText(const core::SimulationFault& fault)
 {
-    //: %1: a scan number, %2: a PackML state, %3: the division as written, %4: the condition or action
+    //: %1: a scan number, %2: where (a condition, a receptivity, an action), %3: the division as written, %4: the text
     return PackmlSimulationText::tr("Stopped at scan %1: integer division by zero in %2 (%3 in '%4'). On the PLC the "
                                     "task stops with a fault; Reset to run again.")
-        .arg(QString::number(static_cast<qlonglong>(fault.scan)), fromStd(fault.stepId), fromStd(fault.division),
+        .arg(QString::number(static_cast<qlonglong>(fault.scan)), faultPlaceText(fault), fromStd(fault.division),
              fromStd(fault.text));
 }
 

@@ -26,7 +26,8 @@ QString packmlDroppedText(const core::packml::DroppedEvent& event, const core::p
 // "scan 9: expected state Execute, the state is Held".
 QString packmlScenarioFailureText(const core::packml::PackmlScenarioFailure& failure);
 
-// "Stopped at scan 7: integer division by zero in Execute ('Count / Batch')".
+// "Stopped at scan 1: integer division by zero in the condition of the
+// Reset command (Count / Batch in 'Count / Batch > 1'). ...".
 QString packmlFaultText(const core::SimulationFault& fault);
 
 // What became of a command pressed or a mode requested, from the scan that
