@@ -85,6 +85,7 @@ private slots:
     void replayRefusesAScenarioThatDoesNotFit();
     void aPressEndsTheReplay();
     void aNewModelEndsTheSimulation();
+    void aGemmaModelIsNotSimulatedHere();
 
 private:
     void stepTo(std::int64_t scan);
@@ -399,6 +400,17 @@ void TestPackmlSimulation::aNewModelEndsTheSimulation()
     m_document->replaceModel(capper(), QString(), core::ModelFormat::Native);
     QVERIFY(!m_session->isActive());
     QVERIFY(!m_document->isReadOnly());
+}
+
+void TestPackmlSimulation::aGemmaModelIsNotSimulatedHere()
+{
+    m_session->setActive(false);
+    m_document->newFromTemplate(); // GEMMA
+    QSignalSpy active(m_session.get(), &PackmlSimulationSession::activeChanged);
+    m_session->setActive(true);
+    QVERIFY(!m_session->isActive());
+    QVERIFY(!m_document->isReadOnly());
+    QCOMPARE(active.count(), 0);
 }
 
 QTEST_MAIN(TestPackmlSimulation)

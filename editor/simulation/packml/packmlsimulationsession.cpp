@@ -79,6 +79,8 @@ void PackmlSimulationSession::setActive(bool active)
     if (active == isActive())
         return;
     if (active) {
+        if (!m_document->model().packml())
+            return; // a GEMMA model: SimulationSession plays it
         m_simulator = std::make_unique<core::packml::PackmlSimulator>(m_document->model());
         clearSession();
         m_document->setReadOnly(true);

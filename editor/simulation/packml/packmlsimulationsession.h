@@ -62,6 +62,7 @@ public:
     ~PackmlSimulationSession() override;
 
     bool isActive() const { return m_simulator != nullptr; }
+    // Does nothing on a GEMMA model (SimulationSession plays those).
     void setActive(bool active);
     // The scan the user looks at: a past one while stepping through the
     // history, else the running simulator. nullptr while inactive.
