@@ -8,6 +8,10 @@
 #include "editor/chart/packml/packmlchartview.h"
 #include "editor/chart/packml/packmlstateitem.h"
 #include "editor/document.h"
+#include "editor/grafcet/grafcetscene.h"
+#include "editor/grafcet/grafcetstepitem.h"
+#include "editor/grafcet/grafcettransitionitem.h"
+#include "editor/simulation/packml/packmlgrafcetmarks.h"
 #include "editor/selection.h"
 #include "editor/simulation/packml/packmlsimulationmarks.h"
 #include "editor/simulation/packml/packmlsimulationsession.h"
@@ -51,6 +55,8 @@ private slots:
     void chartAndSelectorFollowTheCurrentMode();
     void historyShowsThePastScansMarks();
     void endingTheSimulationClearsTheMarks();
+    void nestedGrafcetOfTheCurrentStateRuns();
+    void nestedGrafcetOfAnotherStateIsGreyed();
 
 private:
     QList<State> activeStates() const;
@@ -179,6 +185,56 @@ void TestPackmlSimulationMarks::endingTheSimulationClearsTheMarks()
     m_session->setActive(false);
     QVERIFY(activeStates().isEmpty());
     QCOMPARE(firedArrows(), 0);
+}
+
+// Production's Execute: 1 N Cap -Capped-> 2 N Eject (spec §6.6).
+void TestPackmlSimulationMarks::nestedGrafcetOfTheCurrentStateRuns()
+{
+    GrafcetScene scene(m_document.get(), QStringLiteral("1/Execute"));
+    GrafcetSimulationMarks* marks = addPackmlGrafcetMarks(m_session.get(), &scene, &scene);
+    QCOMPARE(marks->state(), GrafcetSimulationMarks::State::Frozen); // as it was left: never run
+    m_session->pressCommand(Command::Reset);
+    QVERIFY(m_session->setInput(QStringLiteral("Homed"), true));
+    m_session->advance(2);
+    QCOMPARE(m_session->simulator()->state(), State::Idle);
+    m_session->pressCommand(Command::Start);
+    m_session->stepOnce();
+    QCOMPARE(m_session->simulator()->state(), State::Execute);
+    QCOMPARE(marks->captionText(), QStringLiteral("Production_Execute has just been entered: its GRAFCET starts from "
+                                                  "its initial steps in the next scan"));
+    m_session->stepOnce();
+    QCOMPARE(marks->state(), GrafcetSimulationMarks::State::Running);
+    QCOMPARE(scene.stepItem(1)->simulationMark(), GrafcetStepItem::SimulationMark::Active);
+    QCOMPARE(scene.stepItem(2)->simulationMark(), GrafcetStepItem::SimulationMark::None);
+    QVERIFY(!scene.transitionItem(1)->isFired());
+    QVERIFY(m_session->setInput(QStringLiteral("Capped"), true));
+    m_session->stepOnce();
+    QCOMPARE(scene.stepItem(1)->simulationMark(), GrafcetStepItem::SimulationMark::None);
+    QCOMPARE(scene.stepItem(2)->simulationMark(), GrafcetStepItem::SimulationMark::Active);
+    QVERIFY(scene.transitionItem(1)->isFired());
+    QCOMPARE(marks->captionText(), QStringLiteral("Production_Execute is active: its GRAFCET runs (step(s) 2)"));
+    // Back in the history: the scan before, its situation.
+    m_session->stepBack();
+    QCOMPARE(scene.stepItem(1)->simulationMark(), GrafcetStepItem::SimulationMark::Active);
+    QVERIFY(!scene.transitionItem(1)->isFired());
+    m_session->setActive(false);
+    QCOMPARE(marks->state(), GrafcetSimulationMarks::State::Off);
+    QCOMPARE(scene.stepItem(1)->simulationMark(), GrafcetStepItem::SimulationMark::None);
+}
+
+void TestPackmlSimulationMarks::nestedGrafcetOfAnotherStateIsGreyed()
+{
+    GrafcetScene scene(m_document.get(), QStringLiteral("1/Resetting"));
+    GrafcetSimulationMarks* marks = addPackmlGrafcetMarks(m_session.get(), &scene, &scene);
+    m_session->pressCommand(Command::Reset);
+    m_session->advance(2);
+    QVERIFY(m_session->setInput(QStringLiteral("Homed"), true));
+    m_session->advance(2); // SC: Resetting-SC->Idle
+    QCOMPARE(m_session->simulator()->state(), State::Idle);
+    QCOMPARE(marks->state(), GrafcetSimulationMarks::State::Frozen);
+    QCOMPARE(scene.stepItem(2)->simulationMark(), GrafcetStepItem::SimulationMark::Frozen);
+    QCOMPARE(marks->captionText(),
+             QStringLiteral("Production_Resetting is not active: its GRAFCET is shown greyed, as it was left"));
 }
 
 QTEST_MAIN(TestPackmlSimulationMarks)
