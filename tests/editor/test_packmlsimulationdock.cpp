@@ -277,6 +277,11 @@ void TestPackmlSimulationDock::historyButtonsShowPastScans()
     QTest::mouseClick(m_dock->stepForwardButton(), Qt::LeftButton);
     QVERIFY(!m_dock->stepForwardButton()->isEnabled());
     QCOMPARE(m_dock->statusLabel()->text(), QStringLiteral("Scan 3: Resetting in Production"));
+    // A click on a row of the trace shows its scan.
+    QTableView* trace = m_dock->traceView();
+    const QRect row = trace->visualRect(m_dock->traceModel()->index(1, PackmlTraceModel::StateColumn));
+    QTest::mouseClick(trace->viewport(), Qt::LeftButton, {}, row.center());
+    QCOMPARE(m_session->viewedScan(), 2);
 }
 
 void TestPackmlSimulationDock::runButtonRunsAndPauses()

@@ -1,10 +1,10 @@
 #include "editor/simulation/packml/packmlsimulationdock.h"
 
 #include "editor/document.h"
-#include "editor/simulation/lampindicator.h"
 #include "editor/simulation/packml/packmlsimulationsession.h"
 #include "editor/simulation/packml/packmlsimulationtext.h"
 #include "editor/simulation/packml/packmltracemodel.h"
+#include "editor/simulation/packml/packmlvariablespanel.h"
 #include "editor/simulation/simulationtext.h"
 #include "editor/stdstring.h"
 
@@ -17,7 +17,6 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
 #include <QScrollArea>
@@ -180,14 +179,8 @@ QWidget* PackmlSimulationDock::buildUnitTab()
     m_completeCombo->setObjectName(QStringLiteral("completeCombo"));
     m_completeCombo->addItems({QString(), QString(), QString()}); // worded by retranslate()
     layout->addWidget(m_completeCombo);
-    m_inputsTitle = sectionTitle(page);
-    layout->addWidget(m_inputsTitle);
-    m_inputsGrid = new QGridLayout();
-    layout->addLayout(m_inputsGrid);
-    m_outputsTitle = sectionTitle(page);
-    layout->addWidget(m_outputsTitle);
-    m_outputsGrid = new QGridLayout();
-    layout->addLayout(m_outputsGrid);
+    m_variables = new PackmlVariablesPanel(m_session, page);
+    layout->addWidget(m_variables);
     layout->addStretch(1);
     scroll->setWidget(page);
 
@@ -289,8 +282,7 @@ void PackmlSimulationDock::retranslate()
     m_completeCombo->setItemText(2, tr("SC = FALSE (by hand)"));
     m_completeCombo->setToolTip(tr("The State Complete of a state without nested GRAFCET, set by hand to hold an "
                                    "acting state or to complete Execute"));
-    m_inputsTitle->setText(tr("Inputs"));
-    m_outputsTitle->setText(tr("Outputs"));
+    m_variables->retranslate();
     m_replayButton->setText(tr("Replay Scenario…"));
     m_traceModel->refresh();
     refresh();
@@ -299,13 +291,7 @@ void PackmlSimulationDock::retranslate()
 void PackmlSimulationDock::clearProgramWidgets()
 {
     m_commandButtons.clear();
-    m_inputToggles.clear();
-    m_inputFields.clear();
-    m_outputLamps.clear();
-    m_outputValues.clear();
     clearGrid(m_commandsGrid);
-    clearGrid(m_inputsGrid);
-    clearGrid(m_outputsGrid);
     m_modeSelector->clear();
 }
 
@@ -317,8 +303,8 @@ void PackmlSimulationDock::rebuildForProgram()
     if (m_session->isActive()) {
         addCommandButtons();
         addModes();
-        addVariables();
     }
+    m_variables->rebuild();
     refresh();
 }
 
@@ -345,54 +331,6 @@ void PackmlSimulationDock::addModes()
         m_modeSelector->addItem(QStringLiteral("%1 %2").arg(mode.number).arg(fromStd(mode.name)), mode.number);
 }
 
-void PackmlSimulationDock::addVariables()
-{
-    QWidget* parent = m_inputsGrid->parentWidget();
-    for (const core::Variable& variable : m_session->simulator()->program().variables) {
-        const QString name = fromStd(variable.name);
-        const bool isBool = variable.type == core::IecType::Bool;
-        if (variable.kind == core::VariableKind::Input) {
-            const int row = m_inputsGrid->rowCount();
-            if (isBool) {
-                auto* toggle = new QToolButton(parent);
-                toggle->setObjectName(QStringLiteral("toggle_") + name);
-                toggle->setText(name);
-                toggle->setCheckable(true);
-                connect(toggle, &QToolButton::toggled, this,
-                        [this, name](bool on) { m_session->setInput(name, core::cond::Value(on)); });
-                m_inputsGrid->addWidget(toggle, row, 0, 1, 2);
-                m_inputToggles.insert(name, toggle);
-                continue;
-            }
-            auto* field = new QLineEdit(parent);
-            field->setObjectName(QStringLiteral("value_") + name);
-            connect(field, &QLineEdit::editingFinished, this, [this, name, field] {
-                QString error;
-                if (!m_session->setInputText(name, field->text().trimmed(), &error))
-                    field->setToolTip(error);
-                refreshVariables(); // a refused value shows the current one again
-            });
-            m_inputsGrid->addWidget(new QLabel(name, parent), row, 0);
-            m_inputsGrid->addWidget(field, row, 1);
-            m_inputFields.insert(name, field);
-        } else if (variable.kind == core::VariableKind::Output) {
-            const int row = m_outputsGrid->rowCount();
-            m_outputsGrid->addWidget(new QLabel(name, parent), row, 0);
-            if (isBool) {
-                auto* lamp = new LampIndicator(parent);
-                lamp->setObjectName(QStringLiteral("lamp_") + name);
-                m_outputsGrid->addWidget(lamp, row, 1, Qt::AlignLeft);
-                m_outputLamps.insert(name, lamp);
-            } else {
-                auto* value = new QLabel(parent);
-                value->setObjectName(QStringLiteral("shown_") + name);
-                m_outputsGrid->addWidget(value, row, 1);
-                m_outputValues.insert(name, value);
-            }
-        }
-    }
-}
-
 QPushButton* PackmlSimulationDock::commandButton(Command command) const
 {
     return m_commandButtons.value(static_cast<int>(command), nullptr);
@@ -405,22 +343,22 @@ bool PackmlSimulationDock::isCommandAccepted(Command command) const
 
 QToolButton* PackmlSimulationDock::inputToggle(const QString& variable) const
 {
-    return m_inputToggles.value(variable, nullptr);
+    return m_variables->inputToggle(variable);
 }
 
 QLineEdit* PackmlSimulationDock::inputField(const QString& variable) const
 {
-    return m_inputFields.value(variable, nullptr);
+    return m_variables->inputField(variable);
 }
 
 LampIndicator* PackmlSimulationDock::outputLamp(const QString& variable) const
 {
-    return m_outputLamps.value(variable, nullptr);
+    return m_variables->outputLamp(variable);
 }
 
 QLabel* PackmlSimulationDock::outputValue(const QString& variable) const
 {
-    return m_outputValues.value(variable, nullptr);
+    return m_variables->outputValue(variable);
 }
 
 void PackmlSimulationDock::refresh()
@@ -429,7 +367,7 @@ void PackmlSimulationDock::refresh()
     refreshStatus();
     refreshCommands();
     refreshRequest();
-    refreshVariables();
+    m_variables->refresh();
     refreshInstance();
     refreshReplay();
     selectShownScan();
@@ -505,25 +443,6 @@ void PackmlSimulationDock::refreshRequest()
     const QString name = kind == PackmlRequestKind::Mode ? packmlModeName(program, request->number)
                                                          : commandText(static_cast<Command>(request->number));
     m_requestLabel->setText(tr("%1: requested, read by the next scan").arg(name));
-}
-
-void PackmlSimulationDock::refreshVariables()
-{
-    const core::packml::PackmlSimulator* simulator = m_session->simulator();
-    if (!simulator)
-        return;
-    const auto valueOf = [simulator](const QString& name) { return simulator->value(name.toStdString()); };
-    for (auto it = m_inputToggles.cbegin(); it != m_inputToggles.cend(); ++it) {
-        const QSignalBlocker blocker(it.value());
-        it.value()->setChecked(valueOf(it.key()) == std::optional<core::cond::Value>(true));
-    }
-    for (auto it = m_inputFields.cbegin(); it != m_inputFields.cend(); ++it)
-        if (!it.value()->hasFocus())
-            it.value()->setText(fromStd(core::cond::formatValue(*valueOf(it.key()))));
-    for (auto it = m_outputLamps.cbegin(); it != m_outputLamps.cend(); ++it)
-        it.value()->setOn(valueOf(it.key()) == std::optional<core::cond::Value>(true));
-    for (auto it = m_outputValues.cbegin(); it != m_outputValues.cend(); ++it)
-        it.value()->setText(fromStd(core::cond::formatValue(*valueOf(it.key()))));
 }
 
 void PackmlSimulationDock::refreshInstance()

@@ -25,6 +25,7 @@ class Document;
 class LampIndicator;
 class PackmlSimulationSession;
 class PackmlTraceModel;
+class PackmlVariablesPanel;
 
 // Plays a PackML simulation (issue 34, Simulation): start and end, run,
 // pause, single scan, step back and forward, reset and speed; the unit's
@@ -73,6 +74,7 @@ public:
     bool isCommandAccepted(core::packml::Command command) const;
     // The widgets of a variable: a toggle for a BOOL input, a text field for
     // another input, a lamp for a BOOL output, a value label for another output.
+    PackmlVariablesPanel* variablesPanel() const { return m_variables; }
     QToolButton* inputToggle(const QString& variable) const;
     QLineEdit* inputField(const QString& variable) const;
     LampIndicator* outputLamp(const QString& variable) const;
@@ -96,7 +98,6 @@ private:
     void clearProgramWidgets();
     void addCommandButtons();
     void addModes();
-    void addVariables();
     void openScenario();
 
     void refresh();
@@ -104,7 +105,6 @@ private:
     void refreshStatus();
     void refreshCommands();
     void refreshRequest();
-    void refreshVariables();
     void refreshInstance();
     void refreshReplay();
     void selectShownScan();
@@ -132,15 +132,8 @@ private:
     QLabel* m_instanceTitle = nullptr;
     QLabel* m_instanceLabel = nullptr;
     QComboBox* m_completeCombo = nullptr;
-    QLabel* m_inputsTitle = nullptr;
-    QGridLayout* m_inputsGrid = nullptr;
-    QLabel* m_outputsTitle = nullptr;
-    QGridLayout* m_outputsGrid = nullptr;
+    PackmlVariablesPanel* m_variables = nullptr;
     QHash<int, QPushButton*> m_commandButtons; // by CntrlCmd number
-    QHash<QString, QToolButton*> m_inputToggles;
-    QHash<QString, QLineEdit*> m_inputFields;
-    QHash<QString, LampIndicator*> m_outputLamps;
-    QHash<QString, QLabel*> m_outputValues;
 
     QTableView* m_traceView = nullptr;
     PackmlTraceModel* m_traceModel = nullptr;
