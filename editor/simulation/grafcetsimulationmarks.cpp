@@ -40,20 +40,41 @@ bool grafcetRuns(const core::Simulator& simulator, std::string_view stepId)
     return simulator.hasGrafcet(stepId) && simulator.activeStepId() == stepId && !simulator.entry();
 }
 
-GrafcetSimulationMarks::GrafcetSimulationMarks(SimulationSession* session, GrafcetScene* scene, QObject* parent)
+GrafcetSimulationMarks::GrafcetSimulationMarks(GrafcetSimulationSource source, GrafcetScene* scene, QObject* parent)
     : QObject(parent)
-    , m_session(session)
+    , m_source(std::move(source))
     , m_scene(scene)
 {
     setObjectName(QStringLiteral("grafcetSimulationMarks"));
-    connect(m_session, &SimulationSession::activeChanged, this, &GrafcetSimulationMarks::update);
-    connect(m_session, &SimulationSession::stepped, this, &GrafcetSimulationMarks::update);
-    connect(m_session, &SimulationSession::historyMoved, this, &GrafcetSimulationMarks::update);
     connect(m_scene, &GrafcetScene::rebuilt, this, [this] {
         forgetItems();
         update();
     });
     update();
+}
+
+GrafcetSimulationMarks::GrafcetSimulationMarks(SimulationSession* session, GrafcetScene* scene, QObject* parent)
+    : GrafcetSimulationMarks(
+          [session, scene] {
+              GrafcetSimulationSnapshot shown;
+              const core::Simulator* simulator = session->simulator();
+              const std::string stepId = scene->stepId().toStdString();
+              shown.engine = simulator ? simulator->grafcetEngine(stepId) : nullptr;
+              if (!shown.engine) // no simulation, or a step the simulator runs no GRAFCET for (hidden)
+                  return shown;
+              shown.runs = grafcetRuns(*simulator, stepId);
+              shown.justEntered = !shown.runs && simulator->activeStepId() == stepId;
+              // Transitions fired in the last scan: only a GRAFCET that ran in it has any.
+              if (shown.runs)
+                  shown.fired = simulator->firedNestedTransitions(stepId);
+              shown.owner = scene->stepId();
+              return shown;
+          },
+          scene, parent)
+{
+    connect(session, &SimulationSession::activeChanged, this, &GrafcetSimulationMarks::update);
+    connect(session, &SimulationSession::stepped, this, &GrafcetSimulationMarks::update);
+    connect(session, &SimulationSession::historyMoved, this, &GrafcetSimulationMarks::update);
 }
 
 QString GrafcetSimulationMarks::captionText() const
@@ -93,17 +114,16 @@ void GrafcetSimulationMarks::clear()
 
 void GrafcetSimulationMarks::update()
 {
-    const core::Simulator* simulator = m_session->simulator();
-    const QString& id = m_scene->stepId();
-    const std::string stepId = id.toStdString();
-    const core::NestedEngine* engine = simulator ? simulator->grafcetEngine(stepId) : nullptr;
-    if (!engine) { // no simulation, or a step the simulator runs no GRAFCET for (hidden)
+    const GrafcetSimulationSnapshot shown = m_source();
+    const core::NestedEngine* engine = shown.engine;
+    if (!engine) {
         if (m_state != State::Off)
             clear();
         return;
     }
-    const bool runs = grafcetRuns(*simulator, stepId);
+    const bool runs = shown.runs;
     m_state = runs ? State::Running : State::Frozen;
+    const QString& id = shown.owner;
 
     // Steps: the token, and the continuous actions the last call emitted.
     const auto running = GrafcetStepItem::SimulationMark::Active;
@@ -124,10 +144,9 @@ void GrafcetSimulationMarks::update()
         item->setLitActions(lit);
     }
 
-    // Transitions fired in the last scan: only a GRAFCET that ran in it has any.
     QList<int> fired;
     if (runs) {
-        for (int number : simulator->firedNestedTransitions(stepId))
+        for (int number : shown.fired)
             fired << number;
     }
     for (const core::GrafcetTransitionLayout& transition : m_scene->layout().transitions) {
@@ -149,7 +168,9 @@ void GrafcetSimulationMarks::update()
                       static_cast<int>(engine->activeSteps().size()))
                        .arg(id, stepNumbersText(engine->activeSteps())),
                    false);
-    else if (simulator->activeStepId() == stepId)
+    else if (shown.justEntered && shown.resumes)
+        setCaption(tr("%1 has just been resumed: its GRAFCET goes on where it was paused in the next scan").arg(id), false);
+    else if (shown.justEntered)
         setCaption(tr("%1 has just been entered: its GRAFCET starts from its initial steps in the next scan")
                        .arg(id),
                    false);

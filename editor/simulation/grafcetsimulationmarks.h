@@ -4,7 +4,9 @@
 #include <QObject>
 #include <QString>
 
+#include <functional>
 #include <string_view>
+#include <vector>
 
 namespace core {
 class NestedEngine;
@@ -23,6 +25,18 @@ class SimulationSession;
 // enters the step the FB has not run yet: its GRAFCET still stands as it
 // was left, and starts from its initial steps in the next scan.
 bool grafcetRuns(const core::Simulator& simulator, std::string_view stepId);
+
+// What the marks show of one nested GRAFCET in the scan the session shows,
+// from whichever simulator runs it (GEMMA's, or PackML's instances).
+struct GrafcetSimulationSnapshot {
+    const core::NestedEngine* engine = nullptr; // nullptr: nothing to mark (no simulation)
+    bool runs = false;        // its function block has run since its owner was entered
+    bool justEntered = false; // its owner was entered in that scan: it runs from the next one
+    bool resumes = false;     // ...and goes on where it was paused (PackML's Execute)
+    std::vector<int> fired;   // its transitions fired in that scan
+    QString owner;            // how the caption names its owner: "F1", "Production_Execute"
+};
+using GrafcetSimulationSource = std::function<GrafcetSimulationSnapshot()>;
 
 // Shows the simulation on the tab of one nested GRAFCET, as
 // SimulationChartMarks does on the GEMMA chart, for the scan the session
@@ -46,6 +60,9 @@ public:
     enum class State { Off, Running, Frozen };
 
     GrafcetSimulationMarks(SimulationSession* session, GrafcetScene* scene, QObject* parent = nullptr);
+    // Marks from another source; whoever makes it calls update() when the
+    // scan shown changes (PackmlGrafcetMarks does for PackML).
+    GrafcetSimulationMarks(GrafcetSimulationSource source, GrafcetScene* scene, QObject* parent = nullptr);
 
     State state() const { return m_state; }
     // The caption's text; empty while the simulation is off.
@@ -59,7 +76,7 @@ private:
     void forgetItems(); // the scene built its items again
     void showTimers(const core::NestedEngine& engine);
 
-    SimulationSession* m_session;
+    GrafcetSimulationSource m_source;
     GrafcetScene* m_scene;
     State m_state = State::Off;
     GrafcetMarkLabelItem* m_caption = nullptr;

@@ -120,8 +120,18 @@ void PackmlArrowItem::setGreyed(bool greyed)
     update();
 }
 
+void PackmlArrowItem::setFired(bool fired)
+{
+    if (m_fired == fired)
+        return;
+    m_fired = fired;
+    update();
+}
+
 QColor PackmlArrowItem::inkColor() const
 {
+    if (m_fired)
+        return chartstyle::firedColor();
     return m_greyed ? chartstyle::packmlGreyedInkColor() : chartstyle::inkColor();
 }
 
@@ -171,8 +181,8 @@ void PackmlArrowItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* o
             painter->drawRoundedRect(shownLabelRect().adjusted(-2, -1, 2, 1), 3, 3);
     }
     const QColor ink = inkColor();
-    painter->setPen(QPen(ink, chartstyle::kRouteWidth, m_dashed ? Qt::DashLine : Qt::SolidLine, Qt::FlatCap,
-                         Qt::MiterJoin));
+    const double routeWidth = m_fired ? chartstyle::kFiredWidth : chartstyle::kRouteWidth;
+    painter->setPen(QPen(ink, routeWidth, m_dashed ? Qt::DashLine : Qt::SolidLine, Qt::FlatCap, Qt::MiterJoin));
     painter->setBrush(Qt::NoBrush);
     segmentstroke::drawPolyline(painter, m_line);
     painter->setPen(QPen(ink, chartstyle::kRouteWidth));

@@ -39,6 +39,10 @@ public:
     // Skips a state in the mode shown: drawn in grey.
     bool isGreyed() const { return m_greyed; }
     void setGreyed(bool greyed);
+    // The transition that fired last in the simulation (PackmlSimulationMarks):
+    // drawn green and thicker.
+    bool isFired() const { return m_fired; }
+    void setFired(bool fired);
     QColor inkColor() const;
 
     QRectF boundingRect() const override;
@@ -66,6 +70,7 @@ private:
     double m_scale = 1;
     bool m_dashed = false;
     bool m_greyed = false;
+    bool m_fired = false;
 };
 
 } // namespace editor

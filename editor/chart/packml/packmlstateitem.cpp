@@ -42,8 +42,18 @@ void PackmlStateItem::setDisabledInMode(bool disabled)
     update();
 }
 
+void PackmlStateItem::setActiveInSimulation(bool active)
+{
+    if (m_active == active)
+        return;
+    m_active = active;
+    update();
+}
+
 QColor PackmlStateItem::fillColor() const
 {
+    if (m_active)
+        return chartstyle::activeFillColor();
     return m_disabled ? chartstyle::packmlDisabledFillColor() : chartstyle::packmlStateFillColor(kind());
 }
 

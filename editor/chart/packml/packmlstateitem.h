@@ -29,6 +29,11 @@ public:
     bool isDisabledInMode() const { return m_disabled; }
     void setDisabledInMode(bool disabled);
 
+    // The state the simulation is in (PackmlSimulationMarks): filled as the
+    // GEMMA chart fills its active step.
+    bool isActiveInSimulation() const { return m_active; }
+    void setActiveInSimulation(bool active);
+
     // The colour the box is filled with now.
     QColor fillColor() const;
 
@@ -45,6 +50,7 @@ private:
     QRectF m_box; // item coordinates: the item sits at the box's top-left corner
     QString m_name;
     bool m_disabled = false;
+    bool m_active = false;
 };
 
 } // namespace editor
