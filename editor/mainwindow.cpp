@@ -40,6 +40,10 @@
 #include "editor/grafcet/nestedgrafcetavailable.h"
 #include "editor/selection.h"
 #include "editor/simulation/grafcetsimulationmarks.h"
+#include "editor/simulation/packml/packmlgrafcetmarks.h"
+#include "editor/simulation/packml/packmlsimulationdock.h"
+#include "editor/simulation/packml/packmlsimulationmarks.h"
+#include "editor/simulation/packml/packmlsimulationsession.h"
 #include "editor/simulation/simulationchartmarks.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
@@ -144,6 +148,8 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     connect(m_grafcetTabs, &GrafcetTabs::viewOpened, this, [this](GrafcetView* view) {
         if (m_document->model().templateKind() == core::TemplateKind::Gemma)
             new GrafcetSimulationMarks(m_session, view->grafcetScene(), view->grafcetScene());
+        else
+            addPackmlGrafcetMarks(m_packmlSession, view->grafcetScene(), view->grafcetScene());
     });
     connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::onCentralTabChanged);
     connect(m_centralTabs, &QTabWidget::currentChanged, this, &MainWindow::followTabInFront);
@@ -156,6 +162,8 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     m_session = new SimulationSession(m_document, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
+    m_packmlSession = new PackmlSimulationSession(m_document, this);
+    new PackmlSimulationMarks(m_packmlSession, m_packmlScene, this);
     m_verification = new VerificationRunner(m_document, m_session, this);
     m_dockContext = new DockContext(this);
     m_dockContext->setClosedDocks(m_settings->closedDocks());
@@ -179,6 +187,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     connect(m_document, &Document::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &Document::editFailed, this, &MainWindow::showEditFailure);
     connect(m_session, &SimulationSession::activeChanged, this, &MainWindow::onSimulationActiveChanged);
+    connect(m_packmlSession, &PackmlSimulationSession::activeChanged, this, &MainWindow::onSimulationActiveChanged);
     connect(m_session, &SimulationSession::replayChanged, this, &MainWindow::onReplayChanged);
     connect(m_verification, &VerificationRunner::started, this, &MainWindow::showVerificationStatus);
     connect(m_verification, &VerificationRunner::finished, this, &MainWindow::showVerificationStatus);
@@ -202,6 +211,7 @@ MainWindow::~MainWindow()
     m_document->undoStack()->disconnect(this);
     m_document->disconnect(this);
     m_session->disconnect(this);
+    m_packmlSession->disconnect(this);
     m_verification->disconnect(this);
     m_centralTabs->disconnect(this); // its tabs go with it: not the user's closing them
     m_centralTabs->disconnect(m_grafcetTabs);
@@ -219,7 +229,7 @@ QList<QDockWidget*> MainWindow::docks() const
         return m_dockFrames;
     return {m_stepDock,           m_transitionDock,     m_packmlStateDock, m_packmlCommandsDock,
             m_packmlModesDock,    m_grafcetStepDock,    m_grafcetTransitionDock,
-            m_simulationDock,     m_variablesDock,      m_problemsDock,    m_stPreviewDock};
+            m_simulationDock,     m_packmlSimulationDock, m_variablesDock,  m_problemsDock, m_stPreviewDock};
 }
 
 QDockWidget* MainWindow::dockNamed(const QString& objectName) const
@@ -247,6 +257,7 @@ void MainWindow::createDocks()
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
     onCentralTabChanged();
     m_simulationDock = new SimulationDock(m_session, m_document, this);
+    m_packmlSimulationDock = new PackmlSimulationDock(m_packmlSession, m_document, this);
     arrangeDocks(docks());
     for (QDockWidget* dock : docks())
         m_dockContext->watch(dock);
@@ -285,6 +296,7 @@ constexpr DockPlace kDockPlaces[] = {
     {"grafcetStepDock", &GrafcetStepDock::title, DockGroup::Upper},
     {"grafcetTransitionDock", &GrafcetTransitionDock::title, DockGroup::Upper},
     {"simulationDock", &SimulationDock::title, DockGroup::Upper},
+    {"packmlSimulationDock", &PackmlSimulationDock::title, DockGroup::Upper},
     {"variablesDock", &VariablesDock::title, DockGroup::Lower},
     {"problemsDock", &ProblemsDock::title, DockGroup::Lower},
     {"stPreviewDock", &StPreviewDock::title, DockGroup::Lower},
@@ -411,6 +423,7 @@ void MainWindow::deleteDocks()
     m_problemsDock = nullptr;
     m_stPreviewDock = nullptr;
     m_simulationDock = nullptr;
+    m_packmlSimulationDock = nullptr;
     m_dockFrames.clear();
 }
 
@@ -471,9 +484,9 @@ void MainWindow::createActions()
     m_undoAction->setEnabled(stack->canUndo());
     m_redoAction->setEnabled(stack->canRedo());
     connect(stack, &QUndoStack::canUndoChanged, this,
-            [this](bool can) { m_undoAction->setEnabled(can && !m_session->isActive()); });
+            [this](bool can) { m_undoAction->setEnabled(can && !isSimulating()); });
     connect(stack, &QUndoStack::canRedoChanged, this,
-            [this](bool can) { m_redoAction->setEnabled(can && !m_session->isActive()); });
+            [this](bool can) { m_redoAction->setEnabled(can && !isSimulating()); });
     connect(stack, &QUndoStack::undoTextChanged, this, &MainWindow::retranslate);
     connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::retranslate);
     m_modelSettingsAction = action("modelSettingsAction", &MainWindow::editModelSettings);
@@ -503,35 +516,48 @@ void MainWindow::createActions()
     m_simulateAction->setObjectName("simulateAction");
     m_simulateAction->setShortcut(Qt::Key_F5);
     m_simulateAction->setCheckable(true);
-    connect(m_simulateAction, &QAction::toggled, m_session, &SimulationSession::setActive);
+    connect(m_simulateAction, &QAction::toggled, this, [this](bool active) {
+        if (isPackml())
+            m_packmlSession->setActive(active);
+        else
+            m_session->setActive(active);
+    });
     m_runAction = new QAction(this);
     m_runAction->setObjectName("runSimulationAction");
     m_runAction->setShortcut(Qt::Key_F6);
     m_runAction->setCheckable(true);
     connect(m_runAction, &QAction::toggled, this, [this](bool run) {
-        if (run)
-            m_session->run();
+        if (isPackml())
+            run ? m_packmlSession->run() : m_packmlSession->pause();
         else
-            m_session->pause();
+            run ? m_session->run() : m_session->pause();
     });
-    connect(m_session, &SimulationSession::runningChanged, this, [this](bool running) {
+    const auto showRunning = [this](bool running) {
         const QSignalBlocker blocker(m_runAction);
         m_runAction->setChecked(running);
-    });
-    m_scanAction = action("singleScanAction", [this] { m_session->stepOnce(); }, SimulationDock::singleScanShortcut());
-    m_resetSimulationAction = action("resetSimulationAction", [this] { m_session->reset(); });
-    m_stepBackAction = action("stepBackAction", [this] { m_session->stepBack(); },
+    };
+    connect(m_session, &SimulationSession::runningChanged, this, showRunning);
+    connect(m_packmlSession, &PackmlSimulationSession::runningChanged, this, showRunning);
+    m_scanAction = action("singleScanAction", [this] { isPackml() ? m_packmlSession->stepOnce() : m_session->stepOnce(); },
+                          SimulationDock::singleScanShortcut());
+    m_resetSimulationAction =
+        action("resetSimulationAction", [this] { isPackml() ? m_packmlSession->reset() : m_session->reset(); });
+    m_stepBackAction = action("stepBackAction", [this] { isPackml() ? m_packmlSession->stepBack() : m_session->stepBack(); },
                               SimulationDock::stepBackShortcut());
-    m_stepForwardAction = action("stepForwardAction", [this] { m_session->stepForward(); },
+    m_stepForwardAction = action("stepForwardAction",
+                                 [this] { isPackml() ? m_packmlSession->stepForward() : m_session->stepForward(); },
                                  SimulationDock::stepForwardShortcut());
     // Enabled where the history has a scan to go to.
     const auto updateHistoryActions = [this] {
-        m_stepBackAction->setEnabled(m_session->canStepBack());
-        m_stepForwardAction->setEnabled(m_session->canStepForward());
+        m_stepBackAction->setEnabled(isPackml() ? m_packmlSession->canStepBack() : m_session->canStepBack());
+        m_stepForwardAction->setEnabled(isPackml() ? m_packmlSession->canStepForward() : m_session->canStepForward());
     };
     connect(m_session, &SimulationSession::stepped, this, updateHistoryActions);
     connect(m_session, &SimulationSession::historyMoved, this, updateHistoryActions);
     connect(m_session, &SimulationSession::activeChanged, this, updateHistoryActions);
+    connect(m_packmlSession, &PackmlSimulationSession::stepped, this, updateHistoryActions);
+    connect(m_packmlSession, &PackmlSimulationSession::historyMoved, this, updateHistoryActions);
+    connect(m_packmlSession, &PackmlSimulationSession::activeChanged, this, updateHistoryActions);
     m_verifyAction = action("verifyAction", &MainWindow::verify, Qt::Key_F7);
     m_verifyAction->setShortcuts({QKeySequence(Qt::Key_F7), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V)});
     m_exactTimeAction = new QAction(this);
@@ -694,7 +720,7 @@ void MainWindow::showChartContextMenu(const ElementRef& element, const QPoint& g
     QMenu menu(this);
     menu.setObjectName(QStringLiteral("chartContextMenu"));
     m_chartContextMenu->populate(&menu, element);
-    if (m_session->isActive()) { // simulation locks editing: only the sheet's view entries stay
+    if (isSimulating()) { // simulation locks editing: only the sheet's view entries stay
         for (QAction* action : menu.actions()) {
             if (action != m_showHiddenAction && action != m_fitAction && action != m_exportActions->chartAction())
                 action->setEnabled(false);
@@ -711,6 +737,21 @@ GrafcetView* MainWindow::grafcetView(const QString& stepId) const
 bool MainWindow::openNestedGrafcet(const QString& stepId)
 {
     return m_grafcetTabs->open(stepId);
+}
+
+bool MainWindow::isPackml() const
+{
+    return m_document->model().templateKind() == core::TemplateKind::PackML;
+}
+
+bool MainWindow::isSimulating() const
+{
+    return m_session->isActive() || m_packmlSession->isActive();
+}
+
+QDockWidget* MainWindow::simulationDock() const
+{
+    return isPackml() ? static_cast<QDockWidget*>(m_packmlSimulationDock) : m_simulationDock;
 }
 
 // The chart's tab has no close button (the bar only hides the one it takes away).
@@ -752,7 +793,7 @@ void MainWindow::applyTemplate()
                                m_exportActions->ggGeneratorAction()})
         gemmaOnly->setVisible(!packml);
     // Not yet for a PackML model in the window: the command line simulates and verifies it.
-    for (QAction* gemmaOnly : {m_simulateAction, m_verifyAction, m_exportActions->specificationAction()})
+    for (QAction* gemmaOnly : {m_verifyAction, m_exportActions->specificationAction()})
         gemmaOnly->setEnabled(!packml);
     applyEditingLock();
 }
@@ -1258,6 +1299,11 @@ UserGuide::Topic MainWindow::helpTopic() const
         {m_problemsDock, UserGuide::Topic::ProblemsPanel},
         {m_stPreviewDock, UserGuide::Topic::StructuredTextPanel},
         {m_simulationDock, UserGuide::Topic::Simulation},
+        {m_packmlView, UserGuide::Topic::Packml},
+        {m_packmlStateDock, UserGuide::Topic::Packml},
+        {m_packmlCommandsDock, UserGuide::Topic::Packml},
+        {m_packmlModesDock, UserGuide::Topic::Packml},
+        {m_packmlSimulationDock, UserGuide::Topic::Packml},
     };
     for (const QWidget* widget = QApplication::focusWidget(); widget; widget = widget->parentWidget()) {
         for (const auto& [place, topic] : places) {
@@ -1301,14 +1347,14 @@ void MainWindow::onSimulationActiveChanged(bool active)
     m_runAction->setEnabled(active);
     m_scanAction->setEnabled(active);
     m_resetSimulationAction->setEnabled(active);
-    m_stepBackAction->setEnabled(m_session->canStepBack());
-    m_stepForwardAction->setEnabled(m_session->canStepForward());
+    m_stepBackAction->setEnabled(isPackml() ? m_packmlSession->canStepBack() : m_session->canStepBack());
+    m_stepForwardAction->setEnabled(isPackml() ? m_packmlSession->canStepForward() : m_session->canStepForward());
     m_simulationIndicator->setVisible(active);
     applyEditingLock();
     if (active) {
         ensureDocksReady();
-        m_simulationDock->show();
-        m_simulationDock->raise();
+        simulationDock()->show();
+        simulationDock()->raise();
     }
     giveSimulationTheColumn(active);
 }
@@ -1327,22 +1373,24 @@ void MainWindow::giveSimulationTheColumn(bool simulating)
         bringBackLockedDocks();
         return;
     }
-    const Qt::DockWidgetArea area = dockWidgetArea(m_simulationDock);
-    const auto belowSimulation = [this, area](QDockWidget* dock) {
-        return dock->toggleViewAction()->isChecked() && !dock->isFloating() && !m_simulationDock->isFloating()
+    QDockWidget* simulation = simulationDock();
+    const Qt::DockWidgetArea area = dockWidgetArea(simulation);
+    const auto belowSimulation = [this, area, simulation](QDockWidget* dock) {
+        return dock->toggleViewAction()->isChecked() && !dock->isFloating() && !simulation->isFloating()
             && area != Qt::NoDockWidgetArea && dockWidgetArea(dock) == area
-            && !tabifiedDockWidgets(m_simulationDock).contains(dock);
+            && !tabifiedDockWidgets(simulation).contains(dock);
     };
     QDockWidget* lowerFront = nullptr;
     const QList<QDockWidget*> lowerDocks{m_variablesDock, m_problemsDock, m_stPreviewDock};
     for (QDockWidget* dock : lowerDocks) {
-        if (dock->isVisible() && belowSimulation(dock) && dock->x() == m_simulationDock->x())
+        if (dock->isVisible() && belowSimulation(dock) && dock->x() == simulation->x())
             lowerFront = dock;
     }
-    if (!lowerFront || !m_simulationDock->isVisible())
+    if (!lowerFront || !simulation->isVisible())
         return;
     m_lowerFrontBeforeSimulation = lowerFront;
-    m_columnBeforeSimulation = {m_simulationDock->height(), lowerFront->height()};
+    m_simulationDockWithTheColumn = simulation;
+    m_columnBeforeSimulation = {simulation->height(), lowerFront->height()};
     for (QDockWidget* dock : lowerDocks) {
         if (belowSimulation(dock)) {
             m_setAsideForSimulation << dock;
@@ -1357,9 +1405,10 @@ void MainWindow::bringBackLockedDocks()
         if (dock)
             dock->show();
     }
-    if (m_lowerFrontBeforeSimulation && m_columnBeforeSimulation.size() == 2) {
+    if (m_lowerFrontBeforeSimulation && m_simulationDockWithTheColumn && m_columnBeforeSimulation.size() == 2) {
         m_lowerFrontBeforeSimulation->raise();
-        resizeDocks({m_simulationDock, m_lowerFrontBeforeSimulation}, m_columnBeforeSimulation, Qt::Vertical);
+        resizeDocks({m_simulationDockWithTheColumn, m_lowerFrontBeforeSimulation}, m_columnBeforeSimulation,
+                    Qt::Vertical);
     }
     m_setAsideForSimulation.clear();
     m_lowerFrontBeforeSimulation = nullptr;
@@ -1434,7 +1483,7 @@ void MainWindow::onReplayChanged()
 // refuses every edit while the simulation runs, and a user expects to see it.
 void MainWindow::applyEditingLock()
 {
-    const bool locked = m_session->isActive();
+    const bool locked = isSimulating();
     QUndoStack* stack = m_document->undoStack();
     m_undoAction->setEnabled(!locked && stack->canUndo());
     m_redoAction->setEnabled(!locked && stack->canRedo());
@@ -1464,6 +1513,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
     // does not outlive its window (what is left of a run that does not
     // end in time is waited for when the runner goes).
     m_session->pause();
+    m_packmlSession->pause();
     m_verification->shutdown(kQuitWaitMs);
     event->accept();
 }

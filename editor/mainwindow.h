@@ -33,6 +33,8 @@ class ExportActions;
 class PackmlChartBinding;
 class PackmlCommandsDock;
 class PackmlModesDock;
+class PackmlSimulationDock;
+class PackmlSimulationSession;
 class PackmlStateDock;
 class PackmlChartScene;
 class PackmlChartView;
@@ -176,6 +178,11 @@ private:
     // The chart of the model's template in the first tab, its docks and
     // actions: after every new model (New, Open, an example, a recovery).
     void applyTemplate();
+    bool isPackml() const;
+    // Either template's simulation session is active.
+    bool isSimulating() const;
+    // The Simulation dock of the model's template.
+    QDockWidget* simulationDock() const;
     void installChartTab(QWidget* chart);
     // A nested element selected (the Problems dock, a link) shows its GRAFCET's tab.
     void onSelectionChanged(const ElementRef& element);
@@ -222,6 +229,9 @@ private:
     SimulationSession* m_session = nullptr;
     SimulationChartMarks* m_chartMarks = nullptr;
     SimulationDock* m_simulationDock = nullptr;
+    PackmlSimulationSession* m_packmlSession = nullptr;
+    PackmlSimulationDock* m_packmlSimulationDock = nullptr;
+    QPointer<QDockWidget> m_simulationDockWithTheColumn; // while the simulation has the column
     QList<int> m_columnBeforeSimulation; // the Simulation dock's and the lower docks' heights
     QList<QPointer<QDockWidget>> m_setAsideForSimulation; // hidden while the simulation has their room
     QPointer<QDockWidget> m_lowerFrontBeforeSimulation;

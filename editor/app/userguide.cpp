@@ -74,6 +74,7 @@ QString UserGuide::heading(Topic topic)
     case Topic::Verification: return QStringLiteral("Verification");
     case Topic::Export: return QStringLiteral("Export");
     case Topic::Keyboard: return QStringLiteral("Keyboard");
+    case Topic::Packml: return QStringLiteral("PackML");
     }
     return {};
 }

@@ -30,8 +30,9 @@ public:
         Verification,
         Export,
         Keyboard,
+        Packml,
     };
-    static constexpr int kTopicCount = int(Topic::Keyboard) + 1;
+    static constexpr int kTopicCount = int(Topic::Packml) + 1;
 
     explicit UserGuide(QWidget* parent = nullptr);
 

@@ -17,6 +17,8 @@
 #include "editor/grafcet/grafcetview.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
+#include "editor/simulation/packml/packmlsimulationsession.h"
+#include "editor/simulation/simulationsession.h"
 #include "editor/window/newmodeldialog.h"
 
 #include "core/formats/modelfiles.h"
@@ -81,6 +83,7 @@ private slots:
     void chartPicturesAreThePackmlChart();
     void structuredTextIsThePackmlProgramAndFollowsTheState();
     void resetKeepsTheTemplateAndItsEdition();
+    void simulateRunsThePackmlSimulation();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -280,7 +283,16 @@ void TestPackmlWindow::contextMenuOpensTheGrafcetAndEditsTheCommand()
     QVERIFY(open);
     open->trigger();
     QCOMPARE(m_window->centralTabs()->count(), 2);
-    QVERIFY(state.findChild<QAction*>(QStringLiteral("chooseGrafcetAction")));
+    // Choose Its GRAFCET puts the focus on the mode's choice in the State panel.
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    auto* choose = state.findChild<QAction*>(QStringLiteral("chooseGrafcetAction"));
+    QVERIFY(choose);
+    choose->trigger();
+    auto* stateDock = m_window->findChild<QDockWidget*>(QStringLiteral("packmlStateDock"));
+    auto* choice = stateDock->findChild<QComboBox*>(QStringLiteral("choice_1"));
+    QVERIFY(choice);
+    QTRY_VERIFY(choice->hasFocus());
     QMenu idle; // a wait state holds no GRAFCET
     menus.populate(&idle, ElementRef::packmlState(QStringLiteral("Idle"), 1));
     QVERIFY(!idle.findChild<QAction*>(QStringLiteral("openGrafcetAction")));
@@ -379,6 +391,35 @@ void TestPackmlWindow::resetKeepsTheTemplateAndItsEdition()
     QCOMPARE(document->model().packml()->options.edition, core::packml::Edition::Y2022);
     document->undoStack()->undo();
     QVERIFY(document->model().packml()->mode(4));
+}
+
+void TestPackmlWindow::simulateRunsThePackmlSimulation()
+{
+    QVERIFY(m_window->openFile(kBottleFiller));
+    auto* simulate = m_window->findChild<QAction*>(QStringLiteral("simulateAction"));
+    QVERIFY(simulate->isEnabled());
+    simulate->trigger();
+    auto* session = m_window->findChild<PackmlSimulationSession*>();
+    QVERIFY(session);
+    QVERIFY(session->isActive());
+    QVERIFY(!m_window->simulationSession()->isActive()); // GEMMA's stays off
+    QVERIFY(m_window->document()->isReadOnly());
+    QVERIFY(dockShown(*m_window, "packmlSimulationDock"));
+    QVERIFY(!dockShown(*m_window, "simulationDock"));
+    QVERIFY(!m_window->findChild<QAction*>(QStringLiteral("undoAction"))->isEnabled());
+
+    // The window's scan commands drive it: Reset from Stopped, then one scan.
+    const std::int64_t before = session->latestScan();
+    m_window->findChild<QAction*>(QStringLiteral("singleScanAction"))->trigger();
+    QCOMPARE(session->latestScan(), before + 1);
+    session->pressCommand(core::packml::Command::Reset);
+    m_window->findChild<QAction*>(QStringLiteral("singleScanAction"))->trigger();
+    QVERIFY(m_window->findChild<QAction*>(QStringLiteral("stepBackAction"))->isEnabled());
+
+    simulate->trigger();
+    QVERIFY(!session->isActive());
+    QVERIFY(!m_window->document()->isReadOnly());
+    QVERIFY(!dockShown(*m_window, "packmlSimulationDock") || dockOffered(*m_window, "packmlSimulationDock"));
 }
 
 QTEST_MAIN(TestPackmlWindow)

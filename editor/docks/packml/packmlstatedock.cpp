@@ -88,6 +88,7 @@ PackmlStateDock::PackmlStateDock(Document* document, Selection* selection, QWidg
     connect(m_document, &Document::packmlSettingsChanged, this, &PackmlStateDock::refresh);
     connect(m_document, &Document::diagnosticsChanged, this, &PackmlStateDock::refresh);
     connect(m_selection, &Selection::changed, this, &PackmlStateDock::onSelectionChanged);
+    connect(m_selection, &Selection::focusFieldRequested, this, &PackmlStateDock::onFocusFieldRequested);
     retranslate();
     onSelectionChanged(m_selection->current());
 }
@@ -153,6 +154,22 @@ void PackmlStateDock::onSelectionChanged(const ElementRef& element)
     refresh();
     if (!m_state.isEmpty())
         raiseOverPropertySibling(this);
+}
+
+// "grafcet" (the chart's Choose Its GRAFCET): the choice of the mode the
+// state was picked in, in front and focused.
+void PackmlStateDock::onFocusFieldRequested(const ElementRef& element, const QString& field)
+{
+    if (element.kind != ElementRef::Kind::PackmlState || field != QLatin1String("grafcet"))
+        return;
+    onSelectionChanged(element);
+    for (const ModeRow& row : std::as_const(m_modeRows)) {
+        if (row.mode == element.number && row.choice) {
+            revealDock(this);
+            row.choice->setFocus(Qt::OtherFocusReason);
+            return;
+        }
+    }
 }
 
 void PackmlStateDock::refresh()

@@ -56,6 +56,7 @@ private:
     QWidget* createForm();
     void retranslate();
     void refresh();
+    void onFocusFieldRequested(const ElementRef& element, const QString& field);
     void refreshHeader(core::packml::State state);
     void refreshGrafcets(core::packml::State state);
     void fillChoice(ModeRow& row, core::packml::State state);
