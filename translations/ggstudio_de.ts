@@ -10,6 +10,13 @@
     </message>
 </context>
 <context>
+    <name>AddModeCommand</name>
+    <message>
+        <source>Add mode %1 %2</source>
+        <translation>Betriebsart %1 %2 hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>AddPropertyCommand</name>
     <message>
         <source>Add property</source>
@@ -755,6 +762,14 @@
         <source>The example %1 is missing from this build.</source>
         <translation>Das Beispiel %1 fehlt in diesem Build.</translation>
     </message>
+    <message>
+        <source>Bottle Filler (PackML)</source>
+        <translation>Flaschenfüller (PackML)</translation>
+    </message>
+    <message>
+        <source>A PackML unit with Production and Manual modes and a GRAFCET in Resetting, Starting, Execute, Stopping and Aborting</source>
+        <translation>Eine PackML-Einheit mit den Betriebsarten Production und Manual und einem GRAFCET in Resetting, Starting, Execute, Stopping und Aborting</translation>
+    </message>
 </context>
 <context>
     <name>GrafcetClipboard</name>
@@ -1096,6 +1111,156 @@
     </message>
 </context>
 <context>
+    <name>PackmlChartExport</name>
+    <message>
+        <source>PackML chart drawn by GG Studio</source>
+        <translation>PackML-Diagramm, gezeichnet von GG Studio</translation>
+    </message>
+    <message>
+        <source>Unit mode %1</source>
+        <translation>Betriebsart %1</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlSimulationText</name>
+    <message>
+        <source>%1 cannot be entered in %2: %3</source>
+        <extracomment>%1: a unit mode (Manual), %2: a PackML state (Execute), %3: why</extracomment>
+        <translation>%1 kann in %2 nicht aktiviert werden: %3</translation>
+    </message>
+    <message>
+        <source>%1; %2 grants it in no state</source>
+        <extracomment>%1: a refusal, %2: the current unit mode</extracomment>
+        <translation>%1; %2 gewährt ihn in keinem Zustand</translation>
+    </message>
+    <message>
+        <source>%1; it can be entered in %2</source>
+        <extracomment>%1: a refusal, %2: PackML states (&quot;Stopped, Idle, Aborted&quot;)</extracomment>
+        <translation>%1; er kann in %2 aktiviert werden</translation>
+    </message>
+    <message>
+        <source>%1 allows no mode change there</source>
+        <translation>%1 erlaubt dort keinen Betriebsartwechsel</translation>
+    </message>
+    <message>
+        <source>%1 disables this state</source>
+        <translation>%1 deaktiviert diesen Zustand</translation>
+    </message>
+    <message>
+        <source>%1 is not granted: %2, lower-numbered, is granted in the same scan</source>
+        <extracomment>%2: the unit mode granted instead</extracomment>
+        <translation>%1 wird nicht gewährt: %2 mit kleinerer Nummer wird im selben Zyklus gewährt</translation>
+    </message>
+    <message>
+        <source>%1 is requested: it is already the current mode</source>
+        <translation>%1 wird angefordert: das ist bereits die aktuelle Betriebsart</translation>
+    </message>
+    <message>
+        <source>%1 names no unit mode</source>
+        <translation>%1 bezeichnet keine Betriebsart der Einheit</translation>
+    </message>
+    <message>
+        <source>the SC of %1</source>
+        <translation>das SC von %1</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2</source>
+        <extracomment>%1: a PackML command (Hold), %2: a state (Idle)</extracomment>
+        <translation>%1 wird in %2 nicht angenommen</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2 in %3: the mode disables where it leads</source>
+        <extracomment>%1: a command, %2: a state, %3: a unit mode</extracomment>
+        <translation>%1 wird in %2 in %3 nicht angenommen: die Betriebsart deaktiviert den Zielzustand</translation>
+    </message>
+    <message>
+        <source>%1 is pre-empted by %2</source>
+        <extracomment>%2: the transition that fired instead (&quot;Execute-Stop-&gt;Stopped&quot;)</extracomment>
+        <translation>%1 wird von %2 verdrängt</translation>
+    </message>
+    <message>
+        <source>%1 names no command</source>
+        <translation>%1 bezeichnet keinen Befehl</translation>
+    </message>
+    <message>
+        <source>the receptivity of T%1 of %2</source>
+        <extracomment>%1: a transition number of a nested GRAFCET, %2: its function block instance</extracomment>
+        <translation>die Transitionsbedingung von T%1 von %2</translation>
+    </message>
+    <message>
+        <source>action %1 of step %2 of %3</source>
+        <extracomment>%1: an action&apos;s position, %2: a step number, %3: a function block instance</extracomment>
+        <translation>Aktion %1 von Schritt %2 von %3</translation>
+    </message>
+    <message>
+        <source>the condition of the %1 command</source>
+        <extracomment>%1: a PackML command (Start)</extracomment>
+        <translation>die Bedingung des Befehls %1</translation>
+    </message>
+    <message>
+        <source>the request condition of mode %1</source>
+        <extracomment>%1: a unit mode (Manual)</extracomment>
+        <translation>die Anforderungsbedingung der Betriebsart %1</translation>
+    </message>
+    <message>
+        <source>cannot set %1: %2</source>
+        <extracomment>%1: a variable or instance, %2: why (from the simulator)</extracomment>
+        <translation>%1 kann nicht gesetzt werden: %2</translation>
+    </message>
+    <message>
+        <source>expected state %1, the state is %2</source>
+        <translation>Zustand %1 erwartet, der Zustand ist %2</translation>
+    </message>
+    <message>
+        <source>expected mode %1, the mode is %2</source>
+        <translation>Betriebsart %1 erwartet, die Betriebsart ist %2</translation>
+    </message>
+    <message>
+        <source>expected %1 = %2, it is %3</source>
+        <translation>%1 = %2 erwartet, der Wert ist %3</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, no transition fired</source>
+        <translation>Schalten von %1 erwartet, keine Transition hat geschaltet</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, %2 fired</source>
+        <translation>Schalten von %1 erwartet, %2 hat geschaltet</translation>
+    </message>
+    <message>
+        <source>expected no transition to fire, %1 fired</source>
+        <translation>kein Schalten erwartet, %1 hat geschaltet</translation>
+    </message>
+    <message>
+        <source>scan %1: %2</source>
+        <extracomment>%1: a scan number, %2: what did not hold</extracomment>
+        <translation>Zyklus %1: %2</translation>
+    </message>
+    <message>
+        <source>Stopped at scan %1: integer division by zero in %2 (%3 in &apos;%4&apos;). On the PLC the task stops with a fault; Reset to run again.</source>
+        <extracomment>%1: a scan number, %2: where (a condition, a receptivity, an action), %3: the division as written, %4: the text</extracomment>
+        <translation>Angehalten in Zyklus %1: ganzzahlige Division durch null in %2 (%3 in „%4“). In der SPS stoppt die Task mit einem Fehler; zum erneuten Start zurücksetzen.</translation>
+    </message>
+    <message>
+        <source>%1: granted</source>
+        <extracomment>a unit mode request that the mode manager granted</extracomment>
+        <translation>%1: gewährt</translation>
+    </message>
+    <message>
+        <source>%1: not granted</source>
+        <translation>%1: nicht gewährt</translation>
+    </message>
+    <message>
+        <source>%1: fired %2</source>
+        <extracomment>%1: a command, %2: the transition it fired (&quot;Idle-Start-&gt;Execute&quot;)</extracomment>
+        <translation>%1: %2 hat geschaltet</translation>
+    </message>
+    <message>
+        <source>%1: no transition fired</source>
+        <translation>%1: keine Transition hat geschaltet</translation>
+    </message>
+</context>
+<context>
     <name>PackmlTexts</name>
     <message>
         <source>Wait state</source>
@@ -1338,6 +1503,13 @@
     </message>
 </context>
 <context>
+    <name>RemoveModeCommand</name>
+    <message>
+        <source>Remove mode %1</source>
+        <translation>Betriebsart %1 entfernen</translation>
+    </message>
+</context>
+<context>
     <name>RemovePropertyCommand</name>
     <message>
         <source>Remove property %1</source>
@@ -1349,6 +1521,13 @@
     <message>
         <source>Remove variable %1</source>
         <translation>Variable %1 entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>RenameModeCommand</name>
+    <message>
+        <source>Rename mode %1</source>
+        <translation>Betriebsart %1 umbenennen</translation>
     </message>
 </context>
 <context>
@@ -1375,6 +1554,20 @@
     <message>
         <source>Reset to template</source>
         <translation>Auf Vorlage zurücksetzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetCommandCommentCommand</name>
+    <message>
+        <source>Edit comment of command %1</source>
+        <translation>Kommentar des Befehls %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetCommandConditionCommand</name>
+    <message>
+        <source>Edit condition of command %1</source>
+        <translation>Bedingung des Befehls %1 bearbeiten</translation>
     </message>
 </context>
 <context>
@@ -1443,6 +1636,21 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetChoiceCommand</name>
+    <message>
+        <source>Give %1 its own GRAFCET in mode %2</source>
+        <translation>%1 in Betriebsart %2 einen eigenen GRAFCET geben</translation>
+    </message>
+    <message>
+        <source>Run in %1 of mode %2 the GRAFCET of mode %3</source>
+        <translation>In %1 der Betriebsart %2 den GRAFCET der Betriebsart %3 ausführen</translation>
+    </message>
+    <message>
+        <source>Remove the GRAFCET of %1 in mode %2</source>
+        <translation>GRAFCET von %1 in Betriebsart %2 entfernen</translation>
+    </message>
+</context>
+<context>
     <name>SetGrafcetStepCommentCommand</name>
     <message>
         <source>Edit comment of %1 step %2</source>
@@ -1470,6 +1678,31 @@
     </message>
 </context>
 <context>
+    <name>SetModeCommentCommand</name>
+    <message>
+        <source>Edit comment of mode %1</source>
+        <translation>Kommentar der Betriebsart %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetModeRequestCommand</name>
+    <message>
+        <source>Edit request condition of mode %1</source>
+        <translation>Anforderungsbedingung der Betriebsart %1 bearbeiten</translation>
+    </message>
+</context>
+<context>
+    <name>SetModeStatesCommand</name>
+    <message>
+        <source>Change disabled states of mode %1</source>
+        <translation>Deaktivierte Zustände der Betriebsart %1 ändern</translation>
+    </message>
+    <message>
+        <source>Change mode-change states of mode %1</source>
+        <translation>Zustände für den Betriebsartwechsel der Betriebsart %1 ändern</translation>
+    </message>
+</context>
+<context>
     <name>SetModelNameCommand</name>
     <message>
         <source>Rename model</source>
@@ -1485,6 +1718,27 @@
     <message>
         <source>Remove negation of %1</source>
         <translation>Negation von %1 aufheben</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlInitialModeCommand</name>
+    <message>
+        <source>Set initial mode to %1</source>
+        <translation>Anfangsbetriebsart auf %1 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlInitialStateCommand</name>
+    <message>
+        <source>Set initial state to %1</source>
+        <translation>Anfangszustand auf %1 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlOptionsCommand</name>
+    <message>
+        <source>Change PackML edition and options</source>
+        <translation>PackML-Ausgabe und -Optionen ändern</translation>
     </message>
 </context>
 <context>
@@ -3022,6 +3276,10 @@ S, R: auf TRUE oder FALSE setzen
             <numerusform>%1 ist aktiv: sein GRAFCET läuft (Schritte %2)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 has just been resumed: its GRAFCET goes on where it was paused in the next scan</source>
+        <translation>%1 wurde gerade fortgesetzt: sein GRAFCET macht im nächsten Zyklus dort weiter, wo es angehalten wurde</translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetStepDock</name>
@@ -3109,6 +3367,29 @@ S, R: auf TRUE oder FALSE setzen
     <message>
         <source>Step numbers start at 1: %1 is not a step number.</source>
         <translation>Schrittnummern beginnen bei 1: %1 ist keine Schrittnummer.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTabs</name>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1 in the mode %2</source>
+        <translation>Das GRAFCET von %1 in der Betriebsart %2</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1</source>
+        <translation>Der eingebettete GRAFCET von %1</translation>
+    </message>
+    <message>
+        <source>PackML Chart</source>
+        <translation>PackML-Diagramm</translation>
+    </message>
+    <message>
+        <source>GEMMA Chart</source>
+        <translation>GEMMA-Diagramm</translation>
     </message>
 </context>
 <context>
@@ -3551,14 +3832,6 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <translation>Den nächsten Zyklus im Verlauf des Laufs zeigen</translation>
     </message>
     <message>
-        <source>GEMMA Chart</source>
-        <translation>GEMMA-Diagramm</translation>
-    </message>
-    <message>
-        <source>The nested GRAFCET of %1</source>
-        <translation>Der eingebettete GRAFCET von %1</translation>
-    </message>
-    <message>
         <source>Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for every input sequence, and check your properties; the findings go to the Problems dock</source>
         <translation>Beweisen, was die GEMMA-Ebene und die eingebetteten GRAFCETs für jede Eingangsfolge tun können und was nicht, und Ihre Eigenschaften prüfen; die Befunde kommen in das Fenster Probleme</translation>
     </message>
@@ -3585,6 +3858,10 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>&amp;Fit to Window</source>
         <translation>An &amp;Fenster anpassen</translation>
+    </message>
+    <message>
+        <source>Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model of this edition? You can undo this.</source>
+        <translation>Alle Befehle, Betriebsarten, GRAFCETs, Variablen und Einstellungen auf ein neues PackML-Modell dieser Ausgabe zurücksetzen? Sie können das rückgängig machen.</translation>
     </message>
 </context>
 <context>
@@ -3661,6 +3938,68 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
         <translation>Jeder Zyklus schaltet die zu seinem Beginn freigegebenen Transitionen einmal, wie SFC-Laufzeitsysteme wie CODESYS.</translation>
     </message>
+    <message>
+        <source>PackML</source>
+        <translation>PackML</translation>
+    </message>
+</context>
+<context>
+    <name>editor::NewModelDialog</name>
+    <message>
+        <source>GEMMA</source>
+        <translation>GEMMA</translation>
+    </message>
+    <message>
+        <source>The GEMMA chart (stop, operation and failure procedures) with a nested GRAFCET in each macro-step: the GEMMA-GRAFCET method.</source>
+        <translation>Das GEMMA-Diagramm (Stopp-, Betriebs- und Fehlerverfahren) mit einem verschachtelten GRAFCET in jedem Makroschritt: die GEMMA-GRAFCET-Methode.</translation>
+    </message>
+    <message>
+        <source>PackML, 2015 edition</source>
+        <translation>PackML, Ausgabe 2015</translation>
+    </message>
+    <message>
+        <source>The ISA-TR88.00.02-2015 state machine with unit modes: Production, Maintenance and Manual, a GRAFCET in each acting state.</source>
+        <translation>Der Zustandsautomat nach ISA-TR88.00.02-2015 mit Betriebsarten: Production, Maintenance und Manual, ein GRAFCET in jedem aktiven Zustand.</translation>
+    </message>
+    <message>
+        <source>PackML, 2022 edition</source>
+        <translation>PackML, Ausgabe 2022</translation>
+    </message>
+    <message>
+        <source>The ISA-TR88.00.02-2022 state machine: as 2015, with the Complete command that ends Execute.</source>
+        <translation>Der Zustandsautomat nach ISA-TR88.00.02-2022: wie 2015, mit dem Befehl Complete, der Execute beendet.</translation>
+    </message>
+    <message>
+        <source>New Model</source>
+        <translation>Neues Modell</translation>
+    </message>
+    <message>
+        <source>Which chart does the new model fill in?</source>
+        <translation>Welches Diagramm füllt das neue Modell aus?</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartContextMenu</name>
+    <message>
+        <source>&amp;Open GRAFCET</source>
+        <translation>GRAFCET ö&amp;ffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Choose Its GRAFCET…</source>
+        <translation>Sein GRAFCET &amp;wählen…</translation>
+    </message>
+    <message>
+        <source>Its own GRAFCET in this mode, the one of another mode, or none</source>
+        <translation>Ein eigenes GRAFCET in dieser Betriebsart, das einer anderen Betriebsart oder keines</translation>
+    </message>
+    <message>
+        <source>Edit the %1 &amp;Condition…</source>
+        <translation>&amp;Bedingung von %1 bearbeiten…</translation>
+    </message>
+    <message>
+        <source>Show in &amp;Mode</source>
+        <translation>In Betriebs&amp;art zeigen</translation>
+    </message>
 </context>
 <context>
     <name>editor::PackmlChartTexts</name>
@@ -3722,6 +4061,443 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>The unit mode the chart shows: its disabled states greyed, its skipped transitions labelled with where they lead</source>
         <translation>Der Betriebsmodus, den das Diagramm zeigt: seine deaktivierten Zustände grau, übersprungene Übergänge mit ihrem Ziel beschriftet</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlCommandsDock</name>
+    <message>
+        <source>Commands</source>
+        <translation>Befehle</translation>
+    </message>
+    <message>
+        <source>Commands belong to PackML models: this model follows GEMMA.</source>
+        <translation>Befehle gehören zu PackML-Modellen: Dieses Modell folgt GEMMA.</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <extracomment>a PackML command&apos;s row: its PackTags number and name, &quot;4 Hold&quot;</extracomment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Bedingung:</translation>
+    </message>
+    <message>
+        <source>e.g. %1, or FALSE for a command given only through CntrlCmd</source>
+        <translation>z. B. %1, oder FALSE für einen Befehl, der nur über CntrlCmd kommt</translation>
+    </message>
+    <message>
+        <source>Issues the command at its rising edge. Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND, XOR, OR, comparisons.
+Ctrl+Space completes a variable name.</source>
+        <translation>Gibt den Befehl bei seiner steigenden Flanke. Strukturierter Text: deklarierte Variablen, Zahlen, TRUE, FALSE, NOT, AND, XOR, OR, Vergleiche.
+Strg+Leertaste vervollständigt einen Variablennamen.</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Kommentar:</translation>
+    </message>
+    <message>
+        <source>Where the command comes from on this machine</source>
+        <translation>Woher der Befehl an dieser Maschine kommt</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlModeForm</name>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>User modes (4 to 31) take an IEC identifier that no other mode has and the generated code does not use; it becomes part of function block names.
+Modes 1 to 3 are Production, Maintenance and Manual.</source>
+        <translation>Benutzerbetriebsarten (4 bis 31) tragen einen IEC-Bezeichner, den keine andere Betriebsart hat und der generierte Code nicht verwendet; er wird Teil von Funktionsbausteinnamen.
+Die Betriebsarten 1 bis 3 sind Production, Maintenance und Manual.</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Kommentar:</translation>
+    </message>
+    <message>
+        <source>What the unit does in this mode</source>
+        <translation>Was die Einheit in dieser Betriebsart tut</translation>
+    </message>
+    <message>
+        <source>Request condition:</source>
+        <translation>Anforderungsbedingung:</translation>
+    </message>
+    <message>
+        <source>None: requested through UnitMode only (e.g. KeyManual)</source>
+        <translation>Keine: nur über UnitMode angefordert (z. B. KeyManual)</translation>
+    </message>
+    <message>
+        <source>Requests this mode at its rising edge, as a rising edge of UnitModeChangeRequest with UnitMode set to its number does.</source>
+        <translation>Fordert diese Betriebsart bei ihrer steigenden Flanke an, wie es eine steigende Flanke von UnitModeChangeRequest mit UnitMode auf ihrer Nummer tut.</translation>
+    </message>
+    <message>
+        <source>Disabled states</source>
+        <translation>Deaktivierte Zustände</translation>
+    </message>
+    <message>
+        <source>Stopped, Idle, Execute and Aborted are never disabled. Disabling Held, Suspended or Complete disables the acting states of its loop; enabling one of those enables it again.</source>
+        <translation>Stopped, Idle, Execute und Aborted werden nie deaktiviert. Das Deaktivieren von Held, Suspended oder Complete deaktiviert die aktiven Zustände seiner Schleife; das Aktivieren eines davon aktiviert ihn wieder.</translation>
+    </message>
+    <message>
+        <source>Mode change allowed in</source>
+        <translation>Betriebsartwechsel erlaubt in</translation>
+    </message>
+    <message>
+        <source>A change to or from this mode is granted in a state that both modes list and the requested mode enables.</source>
+        <translation>Ein Wechsel in diese oder aus dieser Betriebsart wird in einem Zustand gewährt, den beide Betriebsarten auflisten und die angeforderte aktiviert.</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this mode: no change can be granted there.</source>
+        <translation>%1 ist in dieser Betriebsart deaktiviert: Dort kann kein Wechsel gewährt werden.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlModesDock</name>
+    <message>
+        <source>Modes</source>
+        <translation>Betriebsarten</translation>
+    </message>
+    <message>
+        <source>Unit modes belong to PackML models: this model follows GEMMA.</source>
+        <translation>Betriebsarten gehören zu PackML-Modellen: Dieses Modell folgt GEMMA.</translation>
+    </message>
+    <message>
+        <source>The number of the next user mode (PackTags UnitMode)</source>
+        <translation>Die Nummer der nächsten Benutzerbetriebsart (PackTags UnitMode)</translation>
+    </message>
+    <message>
+        <source>&amp;Add Mode</source>
+        <translation>Betriebsart &amp;hinzufügen</translation>
+    </message>
+    <message>
+        <source>Adds a user mode with this number: every state enabled, mode changes in Stopped, Idle and Aborted</source>
+        <translation>Fügt eine Benutzerbetriebsart mit dieser Nummer hinzu: alle Zustände aktiv, Betriebsartwechsel in Stopped, Idle und Aborted</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>&amp;Initial mode:</source>
+        <translation>&amp;Anfangsbetriebsart:</translation>
+    </message>
+    <message>
+        <source>The mode the unit is in at power-up</source>
+        <translation>Die Betriebsart der Einheit beim Einschalten</translation>
+    </message>
+    <message>
+        <source>Production is the mode every unit has</source>
+        <translation>Production ist die Betriebsart, die jede Einheit hat</translation>
+    </message>
+    <message>
+        <source>Removes the mode with its GRAFCETs</source>
+        <translation>Entfernt die Betriebsart mit ihren GRAFCETs</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSettingsWidget</name>
+    <message>
+        <source>&amp;Hold accepted in Suspended</source>
+        <translation>&amp;Hold in Suspended angenommen</translation>
+    </message>
+    <message>
+        <source>Suspended → Holding on Hold, an optional transition of the 2015 model and a standard one of 2022</source>
+        <translation>Suspended → Holding bei Hold, ein optionaler Übergang des Modells 2015 und ein Standardübergang von 2022</translation>
+    </message>
+    <message>
+        <source>C&amp;omplete accepted in Suspended and Held</source>
+        <translation>C&amp;omplete in Suspended und Held angenommen</translation>
+    </message>
+    <message>
+        <source>Suspended and Held → Completing on the Complete command (2022 edition only)</source>
+        <translation>Suspended und Held → Completing beim Befehl Complete (nur Ausgabe 2022)</translation>
+    </message>
+    <message>
+        <source>The state at power-up: Stopped as usual, Aborted for a unit that must be cleared after a power loss, Idle for one with nothing to reset</source>
+        <translation>Der Zustand beim Einschalten: Stopped üblicherweise, Aborted für eine Einheit, die nach einem Stromausfall quittiert werden muss, Idle für eine ohne Rücksetzbedarf</translation>
+    </message>
+    <message>
+        <source>PackML &amp;edition:</source>
+        <translation>PackML-&amp;Ausgabe:</translation>
+    </message>
+    <message>
+        <source>Initial &amp;state:</source>
+        <translation>Anfangs&amp;zustand:</translation>
+    </message>
+    <message>
+        <source>2022: Execute is left on the Complete command, which a new model conditions on Cmd_Complete; its State Complete leads nowhere.</source>
+        <translation>2022: Execute wird mit dem Befehl Complete verlassen, den ein neues Modell an Cmd_Complete bindet; sein State Complete führt nirgendwohin.</translation>
+    </message>
+    <message>
+        <source>2015: Execute&apos;s State Complete leads to Completing; there is no Complete command.</source>
+        <translation>2015: Der State Complete von Execute führt zu Completing; es gibt keinen Befehl Complete.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSimulationDock</name>
+    <message>
+        <source>PackML Simulation</source>
+        <translation>PackML-Simulation</translation>
+    </message>
+    <message>
+        <source>Start Simulation</source>
+        <translation>Simulation starten</translation>
+    </message>
+    <message>
+        <source>Run or pause the scans</source>
+        <translation>Zyklen ausführen oder anhalten</translation>
+    </message>
+    <message>
+        <source>Single scan</source>
+        <translation>Einzelzyklus</translation>
+    </message>
+    <message>
+        <source>Step back: show the scan before</source>
+        <translation>Zurück: den vorigen Zyklus zeigen</translation>
+    </message>
+    <message>
+        <source>Step forward: show the scan after</source>
+        <translation>Vor: den nächsten Zyklus zeigen</translation>
+    </message>
+    <message>
+        <source>Reset: the initial state and mode, inputs at their defaults</source>
+        <translation>Zurücksetzen: Anfangszustand und -betriebsart, Eingänge auf ihren Vorgabewerten</translation>
+    </message>
+    <message>
+        <source>End the simulation</source>
+        <translation>Simulation beenden</translation>
+    </message>
+    <message>
+        <source>Scans/s:</source>
+        <translation>Zyklen/s:</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Einheit</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Ablauf</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Szenario</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Befehle</translation>
+    </message>
+    <message>
+        <source>Unit mode</source>
+        <translation>Betriebsart der Einheit</translation>
+    </message>
+    <message>
+        <source>Pick a mode to request it: the mode manager grants it or says why not</source>
+        <translation>Eine Betriebsart wählen, um sie anzufordern: die Betriebsartenverwaltung gewährt sie oder sagt, warum nicht</translation>
+    </message>
+    <message>
+        <source>Function block</source>
+        <translation>Funktionsbaustein</translation>
+    </message>
+    <message>
+        <source>SC from the skeleton</source>
+        <extracomment>the State Complete of a state without nested GRAFCET: as the generated skeleton sets it</extracomment>
+        <translation>SC aus dem Gerüst</translation>
+    </message>
+    <message>
+        <source>SC = TRUE (by hand)</source>
+        <translation>SC = TRUE (von Hand)</translation>
+    </message>
+    <message>
+        <source>SC = FALSE (by hand)</source>
+        <translation>SC = FALSE (von Hand)</translation>
+    </message>
+    <message>
+        <source>The State Complete of a state without nested GRAFCET, set by hand to hold an acting state or to complete Execute</source>
+        <translation>Das State Complete eines Zustands ohne eingebettetes GRAFCET, von Hand gesetzt, um einen aktiven Zustand festzuhalten oder Execute abzuschließen</translation>
+    </message>
+    <message>
+        <source>Replay Scenario…</source>
+        <translation>Szenario abspielen…</translation>
+    </message>
+    <message>
+        <source>Start the simulation to play the unit&apos;s commands and modes.</source>
+        <translation>Starten Sie die Simulation, um die Befehle und Betriebsarten der Einheit zu spielen.</translation>
+    </message>
+    <message>
+        <source>Scan %1: %2 in %3</source>
+        <extracomment>%1: a scan number, %2: a PackML state (Execute), %3: a unit mode (Production)</extracomment>
+        <translation>Zyklus %1: %2 in %3</translation>
+    </message>
+    <message>
+        <source>%1 (history; the latest scan is %2)</source>
+        <extracomment>%1: a status, %2: the latest scan</extracomment>
+        <translation>%1 (Verlauf; der letzte Zyklus ist %2)</translation>
+    </message>
+    <message>
+        <source>%1 is accepted in %2</source>
+        <translation>%1 wird in %2 angenommen</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2: pressing it shows why</source>
+        <translation>%1 wird in %2 nicht angenommen: ein Druck zeigt, warum</translation>
+    </message>
+    <message>
+        <source>%1: requested, read by the next scan</source>
+        <translation>%1: angefordert, wird im nächsten Zyklus gelesen</translation>
+    </message>
+    <message>
+        <source>%1 is a wait state: no function block runs in it</source>
+        <translation>%1 ist ein Wartezustand: in ihm läuft kein Funktionsbaustein</translation>
+    </message>
+    <message>
+        <source>%1: active steps %2, Complete = %3</source>
+        <extracomment>%1: a function block instance (Production_Execute), %2: step numbers, %3: TRUE or FALSE</extracomment>
+        <translation>%1: aktive Schritte %2, Complete = %3</translation>
+    </message>
+    <message>
+        <source>%1 runs no GRAFCET: Complete = %2</source>
+        <translation>%1 führt kein GRAFCET aus: Complete = %2</translation>
+    </message>
+    <message>
+        <source>Replaying %1: scan %2 of %3</source>
+        <extracomment>%1: a scenario file, %2: the scan shown, %3: its last scan</extracomment>
+        <translation>%1 wird abgespielt: Zyklus %2 von %3</translation>
+    </message>
+    <message>
+        <source>%1 passed: all %2 expectation(s) met</source>
+        <translation>%1 bestanden: alle %2 Erwartung(en) erfüllt</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2 of %3 expectation(s) did not hold</source>
+        <translation>%1 fehlgeschlagen: %2 von %3 Erwartung(en) nicht erfüllt</translation>
+    </message>
+    <message>
+        <source>Cannot replay %1:
+%2</source>
+        <translation>%1 kann nicht abgespielt werden:
+%2</translation>
+    </message>
+    <message>
+        <source>Replay Scenario</source>
+        <translation>Szenario abspielen</translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scenario *.txt);;All files (*)</source>
+        <translation>Szenarien (*.scenario *.txt);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSimulationSession</name>
+    <message>
+        <source>(%1 more)</source>
+        <translation>(%1 weitere)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlStateDock</name>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Select a state in the PackML chart to see what it means and what runs in it.</source>
+        <translation>Wählen Sie einen Zustand im PackML-Diagramm, um zu sehen, was er bedeutet und was darin läuft.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET per mode</source>
+        <translation>Eingebetteter GRAFCET je Betriebsart</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <extracomment>a PackML state&apos;s title: its PackTags number and name, &quot;6 Execute&quot;</extracomment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Own: a nested GRAFCET for this mode; Same as: the one of another mode; None: the state&apos;s skeleton (%1).</source>
+        <translation>Eigener: ein eingebetteter GRAFCET für diese Betriebsart; Wie: der einer anderen Betriebsart; Keiner: das Gerüst des Zustands (%1).</translation>
+    </message>
+    <message>
+        <source>Execute waits for a command</source>
+        <translation>Execute wartet auf einen Befehl</translation>
+    </message>
+    <message>
+        <source>the state completes at once</source>
+        <translation>der Zustand ist sofort abgeschlossen</translation>
+    </message>
+    <message>
+        <source>A wait state runs no GRAFCET.</source>
+        <translation>Ein Wartezustand führt keinen GRAFCET aus.</translation>
+    </message>
+    <message>
+        <source>Open GRAFCET</source>
+        <translation>GRAFCET öffnen</translation>
+    </message>
+    <message>
+        <source>None (skeleton)</source>
+        <translation>Keiner (Gerüst)</translation>
+    </message>
+    <message>
+        <source>Own GRAFCET</source>
+        <translation>Eigener GRAFCET</translation>
+    </message>
+    <message>
+        <source>Same as %1</source>
+        <translation>Wie %1</translation>
+    </message>
+    <message>
+        <source>Same as mode %1 (no GRAFCET there)</source>
+        <translation>Wie Betriebsart %1 (dort kein GRAFCET)</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this mode: nothing runs there.</source>
+        <translation>%1 ist in dieser Betriebsart deaktiviert: Dort läuft nichts.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlTraceModel</name>
+    <message>
+        <source>mode %1 → %2</source>
+        <extracomment>a unit mode change in one scan: from, to</extracomment>
+        <translation>Betriebsart %1 → %2</translation>
+    </message>
+    <message>
+        <source>Execute resumed</source>
+        <translation>Execute fortgesetzt</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Zyklus</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Zustand</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Betriebsart</translation>
+    </message>
+    <message>
+        <source>Fired</source>
+        <translation>Geschaltet</translation>
+    </message>
+    <message>
+        <source>Dropped</source>
+        <translation>Verworfen</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlVariablesPanel</name>
+    <message>
+        <source>Inputs</source>
+        <translation>Eingänge</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Ausgänge</translation>
     </message>
 </context>
 <context>
@@ -4358,6 +5134,14 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <source>%1_FB (the nested GRAFCET of %1)</source>
         <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
         <translation>%1_FB (der eingebettete GRAFCET von %1)</translation>
+    </message>
+    <message>
+        <source>No enabled state runs this GRAFCET: it generates no function block.</source>
+        <translation>Kein aktivierter Zustand führt dieses GRAFCET aus: Es erzeugt keinen Funktionsbaustein.</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this unit mode: the mode&apos;s state machine has no branch for it.</source>
+        <translation>%1 ist in dieser Betriebsart deaktiviert: Der Zustandsautomat der Betriebsart hat keinen Zweig dafür.</translation>
     </message>
 </context>
 <context>

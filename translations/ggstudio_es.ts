@@ -10,6 +10,13 @@
     </message>
 </context>
 <context>
+    <name>AddModeCommand</name>
+    <message>
+        <source>Add mode %1 %2</source>
+        <translation>Añadir el modo %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>AddPropertyCommand</name>
     <message>
         <source>Add property</source>
@@ -755,6 +762,14 @@
         <source>The example %1 is missing from this build.</source>
         <translation>El ejemplo %1 no está incluido en esta compilación.</translation>
     </message>
+    <message>
+        <source>Bottle Filler (PackML)</source>
+        <translation>Llenadora de botellas (PackML)</translation>
+    </message>
+    <message>
+        <source>A PackML unit with Production and Manual modes and a GRAFCET in Resetting, Starting, Execute, Stopping and Aborting</source>
+        <translation>Una unidad PackML con los modos Production y Manual y un GRAFCET en Resetting, Starting, Execute, Stopping y Aborting</translation>
+    </message>
 </context>
 <context>
     <name>GrafcetClipboard</name>
@@ -1096,6 +1111,156 @@
     </message>
 </context>
 <context>
+    <name>PackmlChartExport</name>
+    <message>
+        <source>PackML chart drawn by GG Studio</source>
+        <translation>Diagrama PackML dibujado por GG Studio</translation>
+    </message>
+    <message>
+        <source>Unit mode %1</source>
+        <translation>Modo de unidad %1</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlSimulationText</name>
+    <message>
+        <source>%1 cannot be entered in %2: %3</source>
+        <extracomment>%1: a unit mode (Manual), %2: a PackML state (Execute), %3: why</extracomment>
+        <translation>%1 no puede activarse en %2: %3</translation>
+    </message>
+    <message>
+        <source>%1; %2 grants it in no state</source>
+        <extracomment>%1: a refusal, %2: the current unit mode</extracomment>
+        <translation>%1; %2 no lo concede en ningún estado</translation>
+    </message>
+    <message>
+        <source>%1; it can be entered in %2</source>
+        <extracomment>%1: a refusal, %2: PackML states (&quot;Stopped, Idle, Aborted&quot;)</extracomment>
+        <translation>%1; puede activarse en %2</translation>
+    </message>
+    <message>
+        <source>%1 allows no mode change there</source>
+        <translation>%1 no permite allí ningún cambio de modo</translation>
+    </message>
+    <message>
+        <source>%1 disables this state</source>
+        <translation>%1 desactiva este estado</translation>
+    </message>
+    <message>
+        <source>%1 is not granted: %2, lower-numbered, is granted in the same scan</source>
+        <extracomment>%2: the unit mode granted instead</extracomment>
+        <translation>%1 no se concede: %2, de número menor, se concede en el mismo ciclo</translation>
+    </message>
+    <message>
+        <source>%1 is requested: it is already the current mode</source>
+        <translation>%1 se solicita: ya es el modo actual</translation>
+    </message>
+    <message>
+        <source>%1 names no unit mode</source>
+        <translation>%1 no designa ningún modo de la unidad</translation>
+    </message>
+    <message>
+        <source>the SC of %1</source>
+        <translation>el SC de %1</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2</source>
+        <extracomment>%1: a PackML command (Hold), %2: a state (Idle)</extracomment>
+        <translation>%1 no se acepta en %2</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2 in %3: the mode disables where it leads</source>
+        <extracomment>%1: a command, %2: a state, %3: a unit mode</extracomment>
+        <translation>%1 no se acepta en %2 en %3: el modo desactiva el estado al que lleva</translation>
+    </message>
+    <message>
+        <source>%1 is pre-empted by %2</source>
+        <extracomment>%2: the transition that fired instead (&quot;Execute-Stop-&gt;Stopped&quot;)</extracomment>
+        <translation>%1 queda anulado por %2</translation>
+    </message>
+    <message>
+        <source>%1 names no command</source>
+        <translation>%1 no designa ningún comando</translation>
+    </message>
+    <message>
+        <source>the receptivity of T%1 of %2</source>
+        <extracomment>%1: a transition number of a nested GRAFCET, %2: its function block instance</extracomment>
+        <translation>la receptividad de T%1 de %2</translation>
+    </message>
+    <message>
+        <source>action %1 of step %2 of %3</source>
+        <extracomment>%1: an action&apos;s position, %2: a step number, %3: a function block instance</extracomment>
+        <translation>la acción %1 de la etapa %2 de %3</translation>
+    </message>
+    <message>
+        <source>the condition of the %1 command</source>
+        <extracomment>%1: a PackML command (Start)</extracomment>
+        <translation>la condición del comando %1</translation>
+    </message>
+    <message>
+        <source>the request condition of mode %1</source>
+        <extracomment>%1: a unit mode (Manual)</extracomment>
+        <translation>la condición de solicitud del modo %1</translation>
+    </message>
+    <message>
+        <source>cannot set %1: %2</source>
+        <extracomment>%1: a variable or instance, %2: why (from the simulator)</extracomment>
+        <translation>no se puede asignar %1: %2</translation>
+    </message>
+    <message>
+        <source>expected state %1, the state is %2</source>
+        <translation>se esperaba el estado %1, el estado es %2</translation>
+    </message>
+    <message>
+        <source>expected mode %1, the mode is %2</source>
+        <translation>se esperaba el modo %1, el modo es %2</translation>
+    </message>
+    <message>
+        <source>expected %1 = %2, it is %3</source>
+        <translation>se esperaba %1 = %2, es %3</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, no transition fired</source>
+        <translation>se esperaba que %1 se franqueara, no se franqueó ninguna transición</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, %2 fired</source>
+        <translation>se esperaba que %1 se franqueara, se franqueó %2</translation>
+    </message>
+    <message>
+        <source>expected no transition to fire, %1 fired</source>
+        <translation>no se esperaba ningún franqueo, se franqueó %1</translation>
+    </message>
+    <message>
+        <source>scan %1: %2</source>
+        <extracomment>%1: a scan number, %2: what did not hold</extracomment>
+        <translation>ciclo %1: %2</translation>
+    </message>
+    <message>
+        <source>Stopped at scan %1: integer division by zero in %2 (%3 in &apos;%4&apos;). On the PLC the task stops with a fault; Reset to run again.</source>
+        <extracomment>%1: a scan number, %2: where (a condition, a receptivity, an action), %3: the division as written, %4: the text</extracomment>
+        <translation>Detenido en el ciclo %1: división entera por cero en %2 (%3 en «%4»). En el PLC la tarea se detiene con un fallo; reinicie para volver a ejecutar.</translation>
+    </message>
+    <message>
+        <source>%1: granted</source>
+        <extracomment>a unit mode request that the mode manager granted</extracomment>
+        <translation>%1: concedido</translation>
+    </message>
+    <message>
+        <source>%1: not granted</source>
+        <translation>%1: no concedido</translation>
+    </message>
+    <message>
+        <source>%1: fired %2</source>
+        <extracomment>%1: a command, %2: the transition it fired (&quot;Idle-Start-&gt;Execute&quot;)</extracomment>
+        <translation>%1: se franqueó %2</translation>
+    </message>
+    <message>
+        <source>%1: no transition fired</source>
+        <translation>%1: no se franqueó ninguna transición</translation>
+    </message>
+</context>
+<context>
     <name>PackmlTexts</name>
     <message>
         <source>Wait state</source>
@@ -1338,6 +1503,13 @@
     </message>
 </context>
 <context>
+    <name>RemoveModeCommand</name>
+    <message>
+        <source>Remove mode %1</source>
+        <translation>Eliminar el modo %1</translation>
+    </message>
+</context>
+<context>
     <name>RemovePropertyCommand</name>
     <message>
         <source>Remove property %1</source>
@@ -1349,6 +1521,13 @@
     <message>
         <source>Remove variable %1</source>
         <translation>Eliminar la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>RenameModeCommand</name>
+    <message>
+        <source>Rename mode %1</source>
+        <translation>Renombrar el modo %1</translation>
     </message>
 </context>
 <context>
@@ -1375,6 +1554,20 @@
     <message>
         <source>Reset to template</source>
         <translation>Restablecer la plantilla</translation>
+    </message>
+</context>
+<context>
+    <name>SetCommandCommentCommand</name>
+    <message>
+        <source>Edit comment of command %1</source>
+        <translation>Editar el comentario del comando %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetCommandConditionCommand</name>
+    <message>
+        <source>Edit condition of command %1</source>
+        <translation>Editar la condición del comando %1</translation>
     </message>
 </context>
 <context>
@@ -1443,6 +1636,21 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetChoiceCommand</name>
+    <message>
+        <source>Give %1 its own GRAFCET in mode %2</source>
+        <translation>Dar a %1 su propio GRAFCET en el modo %2</translation>
+    </message>
+    <message>
+        <source>Run in %1 of mode %2 the GRAFCET of mode %3</source>
+        <translation>Ejecutar en %1 del modo %2 el GRAFCET del modo %3</translation>
+    </message>
+    <message>
+        <source>Remove the GRAFCET of %1 in mode %2</source>
+        <translation>Eliminar el GRAFCET de %1 en el modo %2</translation>
+    </message>
+</context>
+<context>
     <name>SetGrafcetStepCommentCommand</name>
     <message>
         <source>Edit comment of %1 step %2</source>
@@ -1470,6 +1678,31 @@
     </message>
 </context>
 <context>
+    <name>SetModeCommentCommand</name>
+    <message>
+        <source>Edit comment of mode %1</source>
+        <translation>Editar el comentario del modo %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetModeRequestCommand</name>
+    <message>
+        <source>Edit request condition of mode %1</source>
+        <translation>Editar la condición de solicitud del modo %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetModeStatesCommand</name>
+    <message>
+        <source>Change disabled states of mode %1</source>
+        <translation>Cambiar los estados desactivados del modo %1</translation>
+    </message>
+    <message>
+        <source>Change mode-change states of mode %1</source>
+        <translation>Cambiar los estados de cambio de modo del modo %1</translation>
+    </message>
+</context>
+<context>
     <name>SetModelNameCommand</name>
     <message>
         <source>Rename model</source>
@@ -1485,6 +1718,27 @@
     <message>
         <source>Remove negation of %1</source>
         <translation>Quitar la negación de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlInitialModeCommand</name>
+    <message>
+        <source>Set initial mode to %1</source>
+        <translation>Fijar el modo inicial en %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlInitialStateCommand</name>
+    <message>
+        <source>Set initial state to %1</source>
+        <translation>Fijar el estado inicial en %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlOptionsCommand</name>
+    <message>
+        <source>Change PackML edition and options</source>
+        <translation>Cambiar la edición y las opciones PackML</translation>
     </message>
 </context>
 <context>
@@ -3022,6 +3276,10 @@ S, R: ponerla a TRUE o FALSE
             <numerusform>%1 está activa: su GRAFCET evoluciona (etapas %2)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 has just been resumed: its GRAFCET goes on where it was paused in the next scan</source>
+        <translation>%1 acaba de reanudarse: su GRAFCET continúa donde se pausó en el próximo ciclo</translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetStepDock</name>
@@ -3109,6 +3367,29 @@ S, R: ponerla a TRUE o FALSE
     <message>
         <source>Step numbers start at 1: %1 is not a step number.</source>
         <translation>Los números de etapa empiezan en 1: %1 no es un número de etapa.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTabs</name>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1 in the mode %2</source>
+        <translation>El GRAFCET de %1 en el modo %2</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1</source>
+        <translation>El GRAFCET anidado de %1</translation>
+    </message>
+    <message>
+        <source>PackML Chart</source>
+        <translation>Diagrama PackML</translation>
+    </message>
+    <message>
+        <source>GEMMA Chart</source>
+        <translation>Diagrama GEMMA</translation>
     </message>
 </context>
 <context>
@@ -3551,14 +3832,6 @@ Ctrl+Espacio completa un nombre.</translation>
         <translation>Mostrar el ciclo siguiente del historial de la ejecución</translation>
     </message>
     <message>
-        <source>GEMMA Chart</source>
-        <translation>Diagrama GEMMA</translation>
-    </message>
-    <message>
-        <source>The nested GRAFCET of %1</source>
-        <translation>El GRAFCET anidado de %1</translation>
-    </message>
-    <message>
         <source>Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for every input sequence, and check your properties; the findings go to the Problems dock</source>
         <translation>Demostrar lo que el nivel GEMMA y los GRAFCET anidados pueden y no pueden hacer para toda secuencia de entradas, y comprobar sus propiedades; los hallazgos van al panel Problemas</translation>
     </message>
@@ -3585,6 +3858,10 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Ajustar a la ventana</translation>
+    </message>
+    <message>
+        <source>Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model of this edition? You can undo this.</source>
+        <translation>¿Devolver cada comando, modo de unidad, GRAFCET, variable y ajuste a un nuevo modelo PackML de esta edición? Puede deshacerlo.</translation>
     </message>
 </context>
 <context>
@@ -3661,6 +3938,68 @@ Ctrl+Espacio completa un nombre.</translation>
         <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
         <translation>Cada ciclo franquea una vez las transiciones validadas al empezar, como hacen los entornos SFC como CODESYS.</translation>
     </message>
+    <message>
+        <source>PackML</source>
+        <translation>PackML</translation>
+    </message>
+</context>
+<context>
+    <name>editor::NewModelDialog</name>
+    <message>
+        <source>GEMMA</source>
+        <translation>GEMMA</translation>
+    </message>
+    <message>
+        <source>The GEMMA chart (stop, operation and failure procedures) with a nested GRAFCET in each macro-step: the GEMMA-GRAFCET method.</source>
+        <translation>La guía GEMMA (procedimientos de parada, de funcionamiento y de fallo) con un GRAFCET anidado en cada macroetapa: el método GEMMA-GRAFCET.</translation>
+    </message>
+    <message>
+        <source>PackML, 2015 edition</source>
+        <translation>PackML, edición 2015</translation>
+    </message>
+    <message>
+        <source>The ISA-TR88.00.02-2015 state machine with unit modes: Production, Maintenance and Manual, a GRAFCET in each acting state.</source>
+        <translation>La máquina de estados ISA-TR88.00.02-2015 con modos de unidad: Production, Maintenance y Manual, un GRAFCET en cada estado activo.</translation>
+    </message>
+    <message>
+        <source>PackML, 2022 edition</source>
+        <translation>PackML, edición 2022</translation>
+    </message>
+    <message>
+        <source>The ISA-TR88.00.02-2022 state machine: as 2015, with the Complete command that ends Execute.</source>
+        <translation>La máquina de estados ISA-TR88.00.02-2022: como la de 2015, con el comando Complete que termina Execute.</translation>
+    </message>
+    <message>
+        <source>New Model</source>
+        <translation>Nuevo modelo</translation>
+    </message>
+    <message>
+        <source>Which chart does the new model fill in?</source>
+        <translation>¿Qué diagrama rellena el nuevo modelo?</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartContextMenu</name>
+    <message>
+        <source>&amp;Open GRAFCET</source>
+        <translation>&amp;Abrir el GRAFCET</translation>
+    </message>
+    <message>
+        <source>&amp;Choose Its GRAFCET…</source>
+        <translation>&amp;Elegir su GRAFCET…</translation>
+    </message>
+    <message>
+        <source>Its own GRAFCET in this mode, the one of another mode, or none</source>
+        <translation>Su propio GRAFCET en este modo, el de otro modo, o ninguno</translation>
+    </message>
+    <message>
+        <source>Edit the %1 &amp;Condition…</source>
+        <translation>Editar la &amp;condición de %1…</translation>
+    </message>
+    <message>
+        <source>Show in &amp;Mode</source>
+        <translation>Mostrar en el &amp;modo</translation>
+    </message>
 </context>
 <context>
     <name>editor::PackmlChartTexts</name>
@@ -3722,6 +4061,443 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>The unit mode the chart shows: its disabled states greyed, its skipped transitions labelled with where they lead</source>
         <translation>El modo de la unidad que muestra el diagrama: sus estados desactivados en gris, sus transiciones saltadas rotuladas con su destino</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlCommandsDock</name>
+    <message>
+        <source>Commands</source>
+        <translation>Comandos</translation>
+    </message>
+    <message>
+        <source>Commands belong to PackML models: this model follows GEMMA.</source>
+        <translation>Los comandos son de los modelos PackML: este modelo sigue la GEMMA.</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <extracomment>a PackML command&apos;s row: its PackTags number and name, &quot;4 Hold&quot;</extracomment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Condición:</translation>
+    </message>
+    <message>
+        <source>e.g. %1, or FALSE for a command given only through CntrlCmd</source>
+        <translation>p. ej. %1, o FALSE para un comando dado solo por CntrlCmd</translation>
+    </message>
+    <message>
+        <source>Issues the command at its rising edge. Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND, XOR, OR, comparisons.
+Ctrl+Space completes a variable name.</source>
+        <translation>Da el comando en su flanco ascendente. Texto estructurado: variables declaradas, números, TRUE, FALSE, NOT, AND, XOR, OR, comparaciones.
+Ctrl+Espacio completa un nombre de variable.</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Comentario:</translation>
+    </message>
+    <message>
+        <source>Where the command comes from on this machine</source>
+        <translation>De dónde viene el comando en esta máquina</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlModeForm</name>
+    <message>
+        <source>Name:</source>
+        <translation>Nombre:</translation>
+    </message>
+    <message>
+        <source>User modes (4 to 31) take an IEC identifier that no other mode has and the generated code does not use; it becomes part of function block names.
+Modes 1 to 3 are Production, Maintenance and Manual.</source>
+        <translation>Los modos de usuario (4 a 31) llevan un identificador IEC que ningún otro modo tiene y que el código generado no usa; forma parte de los nombres de los bloques de función.
+Los modos 1 a 3 son Production, Maintenance y Manual.</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Comentario:</translation>
+    </message>
+    <message>
+        <source>What the unit does in this mode</source>
+        <translation>Lo que hace la unidad en este modo</translation>
+    </message>
+    <message>
+        <source>Request condition:</source>
+        <translation>Condición de solicitud:</translation>
+    </message>
+    <message>
+        <source>None: requested through UnitMode only (e.g. KeyManual)</source>
+        <translation>Ninguna: solicitado solo por UnitMode (p. ej. KeyManual)</translation>
+    </message>
+    <message>
+        <source>Requests this mode at its rising edge, as a rising edge of UnitModeChangeRequest with UnitMode set to its number does.</source>
+        <translation>Solicita este modo en su flanco ascendente, como lo hace un flanco ascendente de UnitModeChangeRequest con UnitMode en su número.</translation>
+    </message>
+    <message>
+        <source>Disabled states</source>
+        <translation>Estados desactivados</translation>
+    </message>
+    <message>
+        <source>Stopped, Idle, Execute and Aborted are never disabled. Disabling Held, Suspended or Complete disables the acting states of its loop; enabling one of those enables it again.</source>
+        <translation>Stopped, Idle, Execute y Aborted nunca se desactivan. Desactivar Held, Suspended o Complete desactiva los estados activos de su bucle; activar uno de ellos lo vuelve a activar.</translation>
+    </message>
+    <message>
+        <source>Mode change allowed in</source>
+        <translation>Cambio de modo permitido en</translation>
+    </message>
+    <message>
+        <source>A change to or from this mode is granted in a state that both modes list and the requested mode enables.</source>
+        <translation>Un cambio hacia o desde este modo se concede en un estado que ambos modos listan y que el modo solicitado activa.</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this mode: no change can be granted there.</source>
+        <translation>%1 está desactivado en este modo: ahí no se puede conceder ningún cambio.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlModesDock</name>
+    <message>
+        <source>Modes</source>
+        <translation>Modos</translation>
+    </message>
+    <message>
+        <source>Unit modes belong to PackML models: this model follows GEMMA.</source>
+        <translation>Los modos de unidad son de los modelos PackML: este modelo sigue la GEMMA.</translation>
+    </message>
+    <message>
+        <source>The number of the next user mode (PackTags UnitMode)</source>
+        <translation>El número del próximo modo de usuario (PackTags UnitMode)</translation>
+    </message>
+    <message>
+        <source>&amp;Add Mode</source>
+        <translation>&amp;Añadir modo</translation>
+    </message>
+    <message>
+        <source>Adds a user mode with this number: every state enabled, mode changes in Stopped, Idle and Aborted</source>
+        <translation>Añade un modo de usuario con este número: todos los estados activados, cambios de modo en Stopped, Idle y Aborted</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Eliminar</translation>
+    </message>
+    <message>
+        <source>&amp;Initial mode:</source>
+        <translation>Modo &amp;inicial:</translation>
+    </message>
+    <message>
+        <source>The mode the unit is in at power-up</source>
+        <translation>El modo de la unidad al arrancar</translation>
+    </message>
+    <message>
+        <source>Production is the mode every unit has</source>
+        <translation>Production es el modo que tiene toda unidad</translation>
+    </message>
+    <message>
+        <source>Removes the mode with its GRAFCETs</source>
+        <translation>Elimina el modo con sus GRAFCET</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSettingsWidget</name>
+    <message>
+        <source>&amp;Hold accepted in Suspended</source>
+        <translation>&amp;Hold aceptado en Suspended</translation>
+    </message>
+    <message>
+        <source>Suspended → Holding on Hold, an optional transition of the 2015 model and a standard one of 2022</source>
+        <translation>Suspended → Holding con Hold, una transición opcional del modelo 2015 y estándar en 2022</translation>
+    </message>
+    <message>
+        <source>C&amp;omplete accepted in Suspended and Held</source>
+        <translation>C&amp;omplete aceptado en Suspended y Held</translation>
+    </message>
+    <message>
+        <source>Suspended and Held → Completing on the Complete command (2022 edition only)</source>
+        <translation>Suspended y Held → Completing con el comando Complete (solo edición 2022)</translation>
+    </message>
+    <message>
+        <source>The state at power-up: Stopped as usual, Aborted for a unit that must be cleared after a power loss, Idle for one with nothing to reset</source>
+        <translation>El estado al arrancar: Stopped lo habitual, Aborted para una unidad que debe rearmarse tras un corte de corriente, Idle para una sin nada que reiniciar</translation>
+    </message>
+    <message>
+        <source>PackML &amp;edition:</source>
+        <translation>&amp;Edición PackML:</translation>
+    </message>
+    <message>
+        <source>Initial &amp;state:</source>
+        <translation>E&amp;stado inicial:</translation>
+    </message>
+    <message>
+        <source>2022: Execute is left on the Complete command, which a new model conditions on Cmd_Complete; its State Complete leads nowhere.</source>
+        <translation>2022: se sale de Execute con el comando Complete, que un modelo nuevo condiciona a Cmd_Complete; su State Complete no lleva a ninguna parte.</translation>
+    </message>
+    <message>
+        <source>2015: Execute&apos;s State Complete leads to Completing; there is no Complete command.</source>
+        <translation>2015: el State Complete de Execute lleva a Completing; no hay comando Complete.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSimulationDock</name>
+    <message>
+        <source>PackML Simulation</source>
+        <translation>Simulación PackML</translation>
+    </message>
+    <message>
+        <source>Start Simulation</source>
+        <translation>Iniciar la simulación</translation>
+    </message>
+    <message>
+        <source>Run or pause the scans</source>
+        <translation>Ejecutar o pausar los ciclos</translation>
+    </message>
+    <message>
+        <source>Single scan</source>
+        <translation>Un solo ciclo</translation>
+    </message>
+    <message>
+        <source>Step back: show the scan before</source>
+        <translation>Retroceder: mostrar el ciclo anterior</translation>
+    </message>
+    <message>
+        <source>Step forward: show the scan after</source>
+        <translation>Avanzar: mostrar el ciclo siguiente</translation>
+    </message>
+    <message>
+        <source>Reset: the initial state and mode, inputs at their defaults</source>
+        <translation>Reiniciar: el estado y el modo iniciales, las entradas a sus valores por defecto</translation>
+    </message>
+    <message>
+        <source>End the simulation</source>
+        <translation>Terminar la simulación</translation>
+    </message>
+    <message>
+        <source>Scans/s:</source>
+        <translation>Ciclos/s:</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidad</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Traza</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Escenario</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Comandos</translation>
+    </message>
+    <message>
+        <source>Unit mode</source>
+        <translation>Modo de la unidad</translation>
+    </message>
+    <message>
+        <source>Pick a mode to request it: the mode manager grants it or says why not</source>
+        <translation>Elija un modo para solicitarlo: el gestor de modos lo concede o dice por qué no</translation>
+    </message>
+    <message>
+        <source>Function block</source>
+        <translation>Bloque de función</translation>
+    </message>
+    <message>
+        <source>SC from the skeleton</source>
+        <extracomment>the State Complete of a state without nested GRAFCET: as the generated skeleton sets it</extracomment>
+        <translation>SC del esqueleto</translation>
+    </message>
+    <message>
+        <source>SC = TRUE (by hand)</source>
+        <translation>SC = TRUE (a mano)</translation>
+    </message>
+    <message>
+        <source>SC = FALSE (by hand)</source>
+        <translation>SC = FALSE (a mano)</translation>
+    </message>
+    <message>
+        <source>The State Complete of a state without nested GRAFCET, set by hand to hold an acting state or to complete Execute</source>
+        <translation>El State Complete de un estado sin GRAFCET anidado, asignado a mano para retener un estado activo o completar Execute</translation>
+    </message>
+    <message>
+        <source>Replay Scenario…</source>
+        <translation>Reproducir un escenario…</translation>
+    </message>
+    <message>
+        <source>Start the simulation to play the unit&apos;s commands and modes.</source>
+        <translation>Inicie la simulación para ejecutar los comandos y modos de la unidad.</translation>
+    </message>
+    <message>
+        <source>Scan %1: %2 in %3</source>
+        <extracomment>%1: a scan number, %2: a PackML state (Execute), %3: a unit mode (Production)</extracomment>
+        <translation>Ciclo %1: %2 en %3</translation>
+    </message>
+    <message>
+        <source>%1 (history; the latest scan is %2)</source>
+        <extracomment>%1: a status, %2: the latest scan</extracomment>
+        <translation>%1 (historial; el último ciclo es %2)</translation>
+    </message>
+    <message>
+        <source>%1 is accepted in %2</source>
+        <translation>%1 se acepta en %2</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2: pressing it shows why</source>
+        <translation>%1 no se acepta en %2: al pulsarlo se muestra por qué</translation>
+    </message>
+    <message>
+        <source>%1: requested, read by the next scan</source>
+        <translation>%1: solicitado, lo leerá el próximo ciclo</translation>
+    </message>
+    <message>
+        <source>%1 is a wait state: no function block runs in it</source>
+        <translation>%1 es un estado de espera: no se ejecuta en él ningún bloque de función</translation>
+    </message>
+    <message>
+        <source>%1: active steps %2, Complete = %3</source>
+        <extracomment>%1: a function block instance (Production_Execute), %2: step numbers, %3: TRUE or FALSE</extracomment>
+        <translation>%1: etapas activas %2, Complete = %3</translation>
+    </message>
+    <message>
+        <source>%1 runs no GRAFCET: Complete = %2</source>
+        <translation>%1 no ejecuta ningún GRAFCET: Complete = %2</translation>
+    </message>
+    <message>
+        <source>Replaying %1: scan %2 of %3</source>
+        <extracomment>%1: a scenario file, %2: the scan shown, %3: its last scan</extracomment>
+        <translation>Reproduciendo %1: ciclo %2 de %3</translation>
+    </message>
+    <message>
+        <source>%1 passed: all %2 expectation(s) met</source>
+        <translation>%1 superado: se cumplen las %2 expectativa(s)</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2 of %3 expectation(s) did not hold</source>
+        <translation>%1 fallido: %2 de %3 expectativa(s) no se cumplieron</translation>
+    </message>
+    <message>
+        <source>Cannot replay %1:
+%2</source>
+        <translation>No se puede reproducir %1:
+%2</translation>
+    </message>
+    <message>
+        <source>Replay Scenario</source>
+        <translation>Reproducir un escenario</translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scenario *.txt);;All files (*)</source>
+        <translation>Escenarios (*.scenario *.txt);;Todos los archivos (*)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSimulationSession</name>
+    <message>
+        <source>(%1 more)</source>
+        <translation>(%1 más)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlStateDock</name>
+    <message>
+        <source>State</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Select a state in the PackML chart to see what it means and what runs in it.</source>
+        <translation>Seleccione un estado en el diagrama PackML para ver qué significa y qué se ejecuta en él.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET per mode</source>
+        <translation>GRAFCET anidado por modo</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <extracomment>a PackML state&apos;s title: its PackTags number and name, &quot;6 Execute&quot;</extracomment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Own: a nested GRAFCET for this mode; Same as: the one of another mode; None: the state&apos;s skeleton (%1).</source>
+        <translation>Propio: un GRAFCET anidado para este modo; Igual que: el de otro modo; Ninguno: el esqueleto del estado (%1).</translation>
+    </message>
+    <message>
+        <source>Execute waits for a command</source>
+        <translation>Execute espera un comando</translation>
+    </message>
+    <message>
+        <source>the state completes at once</source>
+        <translation>el estado se completa de inmediato</translation>
+    </message>
+    <message>
+        <source>A wait state runs no GRAFCET.</source>
+        <translation>Un estado de espera no ejecuta ningún GRAFCET.</translation>
+    </message>
+    <message>
+        <source>Open GRAFCET</source>
+        <translation>Abrir GRAFCET</translation>
+    </message>
+    <message>
+        <source>None (skeleton)</source>
+        <translation>Ninguno (esqueleto)</translation>
+    </message>
+    <message>
+        <source>Own GRAFCET</source>
+        <translation>GRAFCET propio</translation>
+    </message>
+    <message>
+        <source>Same as %1</source>
+        <translation>Igual que %1</translation>
+    </message>
+    <message>
+        <source>Same as mode %1 (no GRAFCET there)</source>
+        <translation>Igual que el modo %1 (sin GRAFCET)</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this mode: nothing runs there.</source>
+        <translation>%1 está desactivado en este modo: ahí no se ejecuta nada.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlTraceModel</name>
+    <message>
+        <source>mode %1 → %2</source>
+        <extracomment>a unit mode change in one scan: from, to</extracomment>
+        <translation>modo %1 → %2</translation>
+    </message>
+    <message>
+        <source>Execute resumed</source>
+        <translation>Execute reanudado</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modo</translation>
+    </message>
+    <message>
+        <source>Fired</source>
+        <translation>Franqueada</translation>
+    </message>
+    <message>
+        <source>Dropped</source>
+        <translation>Descartados</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlVariablesPanel</name>
+    <message>
+        <source>Inputs</source>
+        <translation>Entradas</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Salidas</translation>
     </message>
 </context>
 <context>
@@ -4358,6 +5134,14 @@ Ctrl+Espacio completa un nombre.</translation>
         <source>%1_FB (the nested GRAFCET of %1)</source>
         <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
         <translation>%1_FB (el GRAFCET anidado de %1)</translation>
+    </message>
+    <message>
+        <source>No enabled state runs this GRAFCET: it generates no function block.</source>
+        <translation>Ningún estado habilitado ejecuta este GRAFCET: no genera ningún bloque de función.</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this unit mode: the mode&apos;s state machine has no branch for it.</source>
+        <translation>%1 está deshabilitado en este modo de unidad: la máquina de estados del modo no tiene rama para él.</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,13 @@
     </message>
 </context>
 <context>
+    <name>AddModeCommand</name>
+    <message>
+        <source>Add mode %1 %2</source>
+        <translation>Ajouter le mode %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>AddPropertyCommand</name>
     <message>
         <source>Add property</source>
@@ -755,6 +762,14 @@
         <source>The example %1 is missing from this build.</source>
         <translation>L&apos;exemple %1 est absent de cette version.</translation>
     </message>
+    <message>
+        <source>Bottle Filler (PackML)</source>
+        <translation>Remplisseuse de bouteilles (PackML)</translation>
+    </message>
+    <message>
+        <source>A PackML unit with Production and Manual modes and a GRAFCET in Resetting, Starting, Execute, Stopping and Aborting</source>
+        <translation>Une unité PackML avec les modes Production et Manual et un GRAFCET dans Resetting, Starting, Execute, Stopping et Aborting</translation>
+    </message>
 </context>
 <context>
     <name>GrafcetClipboard</name>
@@ -1096,6 +1111,156 @@
     </message>
 </context>
 <context>
+    <name>PackmlChartExport</name>
+    <message>
+        <source>PackML chart drawn by GG Studio</source>
+        <translation>Diagramme PackML dessiné par GG Studio</translation>
+    </message>
+    <message>
+        <source>Unit mode %1</source>
+        <translation>Mode d&apos;unité %1</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlSimulationText</name>
+    <message>
+        <source>%1 cannot be entered in %2: %3</source>
+        <extracomment>%1: a unit mode (Manual), %2: a PackML state (Execute), %3: why</extracomment>
+        <translation>%1 ne peut pas être activé dans %2 : %3</translation>
+    </message>
+    <message>
+        <source>%1; %2 grants it in no state</source>
+        <extracomment>%1: a refusal, %2: the current unit mode</extracomment>
+        <translation>%1 ; %2 ne l&apos;accorde dans aucun état</translation>
+    </message>
+    <message>
+        <source>%1; it can be entered in %2</source>
+        <extracomment>%1: a refusal, %2: PackML states (&quot;Stopped, Idle, Aborted&quot;)</extracomment>
+        <translation>%1 ; il peut être activé dans %2</translation>
+    </message>
+    <message>
+        <source>%1 allows no mode change there</source>
+        <translation>%1 n&apos;y autorise aucun changement de mode</translation>
+    </message>
+    <message>
+        <source>%1 disables this state</source>
+        <translation>%1 désactive cet état</translation>
+    </message>
+    <message>
+        <source>%1 is not granted: %2, lower-numbered, is granted in the same scan</source>
+        <extracomment>%2: the unit mode granted instead</extracomment>
+        <translation>%1 n&apos;est pas accordé : %2, de numéro inférieur, est accordé dans le même cycle</translation>
+    </message>
+    <message>
+        <source>%1 is requested: it is already the current mode</source>
+        <translation>%1 est demandé : c&apos;est déjà le mode courant</translation>
+    </message>
+    <message>
+        <source>%1 names no unit mode</source>
+        <translation>%1 ne désigne aucun mode de l&apos;unité</translation>
+    </message>
+    <message>
+        <source>the SC of %1</source>
+        <translation>le SC de %1</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2</source>
+        <extracomment>%1: a PackML command (Hold), %2: a state (Idle)</extracomment>
+        <translation>%1 n&apos;est pas accepté dans %2</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2 in %3: the mode disables where it leads</source>
+        <extracomment>%1: a command, %2: a state, %3: a unit mode</extracomment>
+        <translation>%1 n&apos;est pas accepté dans %2 en %3 : le mode désactive l&apos;état où il mène</translation>
+    </message>
+    <message>
+        <source>%1 is pre-empted by %2</source>
+        <extracomment>%2: the transition that fired instead (&quot;Execute-Stop-&gt;Stopped&quot;)</extracomment>
+        <translation>%1 est devancé par %2</translation>
+    </message>
+    <message>
+        <source>%1 names no command</source>
+        <translation>%1 ne désigne aucune commande</translation>
+    </message>
+    <message>
+        <source>the receptivity of T%1 of %2</source>
+        <extracomment>%1: a transition number of a nested GRAFCET, %2: its function block instance</extracomment>
+        <translation>la réceptivité de T%1 de %2</translation>
+    </message>
+    <message>
+        <source>action %1 of step %2 of %3</source>
+        <extracomment>%1: an action&apos;s position, %2: a step number, %3: a function block instance</extracomment>
+        <translation>l&apos;action %1 de l&apos;étape %2 de %3</translation>
+    </message>
+    <message>
+        <source>the condition of the %1 command</source>
+        <extracomment>%1: a PackML command (Start)</extracomment>
+        <translation>la condition de la commande %1</translation>
+    </message>
+    <message>
+        <source>the request condition of mode %1</source>
+        <extracomment>%1: a unit mode (Manual)</extracomment>
+        <translation>la condition de demande du mode %1</translation>
+    </message>
+    <message>
+        <source>cannot set %1: %2</source>
+        <extracomment>%1: a variable or instance, %2: why (from the simulator)</extracomment>
+        <translation>impossible d&apos;affecter %1 : %2</translation>
+    </message>
+    <message>
+        <source>expected state %1, the state is %2</source>
+        <translation>état attendu %1, l&apos;état est %2</translation>
+    </message>
+    <message>
+        <source>expected mode %1, the mode is %2</source>
+        <translation>mode attendu %1, le mode est %2</translation>
+    </message>
+    <message>
+        <source>expected %1 = %2, it is %3</source>
+        <translation>attendu %1 = %2, la valeur est %3</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, no transition fired</source>
+        <translation>franchissement attendu de %1, aucune transition franchie</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, %2 fired</source>
+        <translation>franchissement attendu de %1, %2 franchie</translation>
+    </message>
+    <message>
+        <source>expected no transition to fire, %1 fired</source>
+        <translation>aucun franchissement attendu, %1 franchie</translation>
+    </message>
+    <message>
+        <source>scan %1: %2</source>
+        <extracomment>%1: a scan number, %2: what did not hold</extracomment>
+        <translation>cycle %1 : %2</translation>
+    </message>
+    <message>
+        <source>Stopped at scan %1: integer division by zero in %2 (%3 in &apos;%4&apos;). On the PLC the task stops with a fault; Reset to run again.</source>
+        <extracomment>%1: a scan number, %2: where (a condition, a receptivity, an action), %3: the division as written, %4: the text</extracomment>
+        <translation>Arrêté au cycle %1 : division entière par zéro dans %2 (%3 dans « %4 »). Sur l&apos;automate, la tâche s&apos;arrête en défaut ; réinitialisez pour relancer.</translation>
+    </message>
+    <message>
+        <source>%1: granted</source>
+        <extracomment>a unit mode request that the mode manager granted</extracomment>
+        <translation>%1 : accordé</translation>
+    </message>
+    <message>
+        <source>%1: not granted</source>
+        <translation>%1 : non accordé</translation>
+    </message>
+    <message>
+        <source>%1: fired %2</source>
+        <extracomment>%1: a command, %2: the transition it fired (&quot;Idle-Start-&gt;Execute&quot;)</extracomment>
+        <translation>%1 : %2 franchie</translation>
+    </message>
+    <message>
+        <source>%1: no transition fired</source>
+        <translation>%1 : aucune transition franchie</translation>
+    </message>
+</context>
+<context>
     <name>PackmlTexts</name>
     <message>
         <source>Wait state</source>
@@ -1338,6 +1503,13 @@
     </message>
 </context>
 <context>
+    <name>RemoveModeCommand</name>
+    <message>
+        <source>Remove mode %1</source>
+        <translation>Supprimer le mode %1</translation>
+    </message>
+</context>
+<context>
     <name>RemovePropertyCommand</name>
     <message>
         <source>Remove property %1</source>
@@ -1349,6 +1521,13 @@
     <message>
         <source>Remove variable %1</source>
         <translation>Supprimer la variable %1</translation>
+    </message>
+</context>
+<context>
+    <name>RenameModeCommand</name>
+    <message>
+        <source>Rename mode %1</source>
+        <translation>Renommer le mode %1</translation>
     </message>
 </context>
 <context>
@@ -1375,6 +1554,20 @@
     <message>
         <source>Reset to template</source>
         <translation>Réinitialiser au gabarit</translation>
+    </message>
+</context>
+<context>
+    <name>SetCommandCommentCommand</name>
+    <message>
+        <source>Edit comment of command %1</source>
+        <translation>Modifier le commentaire de la commande %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetCommandConditionCommand</name>
+    <message>
+        <source>Edit condition of command %1</source>
+        <translation>Modifier la condition de la commande %1</translation>
     </message>
 </context>
 <context>
@@ -1443,6 +1636,21 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetChoiceCommand</name>
+    <message>
+        <source>Give %1 its own GRAFCET in mode %2</source>
+        <translation>Donner à %1 son propre GRAFCET dans le mode %2</translation>
+    </message>
+    <message>
+        <source>Run in %1 of mode %2 the GRAFCET of mode %3</source>
+        <translation>Exécuter dans %1 du mode %2 le GRAFCET du mode %3</translation>
+    </message>
+    <message>
+        <source>Remove the GRAFCET of %1 in mode %2</source>
+        <translation>Supprimer le GRAFCET de %1 dans le mode %2</translation>
+    </message>
+</context>
+<context>
     <name>SetGrafcetStepCommentCommand</name>
     <message>
         <source>Edit comment of %1 step %2</source>
@@ -1470,6 +1678,31 @@
     </message>
 </context>
 <context>
+    <name>SetModeCommentCommand</name>
+    <message>
+        <source>Edit comment of mode %1</source>
+        <translation>Modifier le commentaire du mode %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetModeRequestCommand</name>
+    <message>
+        <source>Edit request condition of mode %1</source>
+        <translation>Modifier la condition de demande du mode %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetModeStatesCommand</name>
+    <message>
+        <source>Change disabled states of mode %1</source>
+        <translation>Modifier les états désactivés du mode %1</translation>
+    </message>
+    <message>
+        <source>Change mode-change states of mode %1</source>
+        <translation>Modifier les états de changement de mode du mode %1</translation>
+    </message>
+</context>
+<context>
     <name>SetModelNameCommand</name>
     <message>
         <source>Rename model</source>
@@ -1485,6 +1718,27 @@
     <message>
         <source>Remove negation of %1</source>
         <translation>Retirer la négation de %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlInitialModeCommand</name>
+    <message>
+        <source>Set initial mode to %1</source>
+        <translation>Définir le mode initial à %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlInitialStateCommand</name>
+    <message>
+        <source>Set initial state to %1</source>
+        <translation>Définir l&apos;état initial à %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlOptionsCommand</name>
+    <message>
+        <source>Change PackML edition and options</source>
+        <translation>Modifier l&apos;édition et les options PackML</translation>
     </message>
 </context>
 <context>
@@ -3022,6 +3276,10 @@ S, R&#xa0;: la mettre à TRUE ou à FALSE
             <numerusform>%1 est active : son GRAFCET évolue (étapes %2)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 has just been resumed: its GRAFCET goes on where it was paused in the next scan</source>
+        <translation>%1 vient d&apos;être repris : son GRAFCET continue là où il avait été suspendu au prochain cycle</translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetStepDock</name>
@@ -3109,6 +3367,29 @@ S, R&#xa0;: la mettre à TRUE ou à FALSE
     <message>
         <source>Step numbers start at 1: %1 is not a step number.</source>
         <translation>Les numéros d&apos;étape commencent à 1 : %1 n&apos;est pas un numéro d&apos;étape.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTabs</name>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1 in the mode %2</source>
+        <translation>Le GRAFCET de %1 dans le mode %2</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1</source>
+        <translation>Le GRAFCET imbriqué de %1</translation>
+    </message>
+    <message>
+        <source>PackML Chart</source>
+        <translation>Diagramme PackML</translation>
+    </message>
+    <message>
+        <source>GEMMA Chart</source>
+        <translation>Diagramme GEMMA</translation>
     </message>
 </context>
 <context>
@@ -3551,14 +3832,6 @@ Ctrl+Espace complète un nom.</translation>
         <translation>Afficher le cycle suivant de l&apos;historique de l&apos;exécution</translation>
     </message>
     <message>
-        <source>GEMMA Chart</source>
-        <translation>Diagramme GEMMA</translation>
-    </message>
-    <message>
-        <source>The nested GRAFCET of %1</source>
-        <translation>Le GRAFCET imbriqué de %1</translation>
-    </message>
-    <message>
         <source>Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for every input sequence, and check your properties; the findings go to the Problems dock</source>
         <translation>Prouver ce que le niveau GEMMA et les GRAFCET imbriqués peuvent et ne peuvent pas faire pour toute suite d&apos;entrées, et vérifier vos propriétés&#xa0;; les constats vont dans le panneau Problèmes</translation>
     </message>
@@ -3585,6 +3858,10 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>&amp;Fit to Window</source>
         <translation>Ajuster à la &amp;fenêtre</translation>
+    </message>
+    <message>
+        <source>Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model of this edition? You can undo this.</source>
+        <translation>Remettre chaque commande, mode d&apos;unité, GRAFCET, variable et réglage à ceux d&apos;un nouveau modèle PackML de cette édition ? Vous pouvez l&apos;annuler.</translation>
     </message>
 </context>
 <context>
@@ -3661,6 +3938,68 @@ Ctrl+Espace complète un nom.</translation>
         <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
         <translation>Chaque cycle franchit une fois les transitions validées à son début, comme le font les exécutifs SFC tels que CODESYS.</translation>
     </message>
+    <message>
+        <source>PackML</source>
+        <translation>PackML</translation>
+    </message>
+</context>
+<context>
+    <name>editor::NewModelDialog</name>
+    <message>
+        <source>GEMMA</source>
+        <translation>GEMMA</translation>
+    </message>
+    <message>
+        <source>The GEMMA chart (stop, operation and failure procedures) with a nested GRAFCET in each macro-step: the GEMMA-GRAFCET method.</source>
+        <translation>Le guide GEMMA (procédures d&apos;arrêt, de fonctionnement et de défaillance) avec un GRAFCET imbriqué dans chaque macro-étape : la méthode GEMMA-GRAFCET.</translation>
+    </message>
+    <message>
+        <source>PackML, 2015 edition</source>
+        <translation>PackML, édition 2015</translation>
+    </message>
+    <message>
+        <source>The ISA-TR88.00.02-2015 state machine with unit modes: Production, Maintenance and Manual, a GRAFCET in each acting state.</source>
+        <translation>La machine à états ISA-TR88.00.02-2015 avec ses modes d&apos;unité : Production, Maintenance et Manual, un GRAFCET dans chaque état actif.</translation>
+    </message>
+    <message>
+        <source>PackML, 2022 edition</source>
+        <translation>PackML, édition 2022</translation>
+    </message>
+    <message>
+        <source>The ISA-TR88.00.02-2022 state machine: as 2015, with the Complete command that ends Execute.</source>
+        <translation>La machine à états ISA-TR88.00.02-2022 : comme 2015, avec la commande Complete qui termine Execute.</translation>
+    </message>
+    <message>
+        <source>New Model</source>
+        <translation>Nouveau modèle</translation>
+    </message>
+    <message>
+        <source>Which chart does the new model fill in?</source>
+        <translation>Quel diagramme le nouveau modèle remplit-il ?</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartContextMenu</name>
+    <message>
+        <source>&amp;Open GRAFCET</source>
+        <translation>&amp;Ouvrir le GRAFCET</translation>
+    </message>
+    <message>
+        <source>&amp;Choose Its GRAFCET…</source>
+        <translation>&amp;Choisir son GRAFCET…</translation>
+    </message>
+    <message>
+        <source>Its own GRAFCET in this mode, the one of another mode, or none</source>
+        <translation>Son propre GRAFCET dans ce mode, celui d&apos;un autre mode, ou aucun</translation>
+    </message>
+    <message>
+        <source>Edit the %1 &amp;Condition…</source>
+        <translation>Modifier la &amp;condition de %1…</translation>
+    </message>
+    <message>
+        <source>Show in &amp;Mode</source>
+        <translation>Afficher dans le &amp;mode</translation>
+    </message>
 </context>
 <context>
     <name>editor::PackmlChartTexts</name>
@@ -3722,6 +4061,443 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>The unit mode the chart shows: its disabled states greyed, its skipped transitions labelled with where they lead</source>
         <translation>Le mode de l&apos;unité que montre le diagramme : ses états désactivés grisés, ses transitions sautées étiquetées avec leur destination</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlCommandsDock</name>
+    <message>
+        <source>Commands</source>
+        <translation>Commandes</translation>
+    </message>
+    <message>
+        <source>Commands belong to PackML models: this model follows GEMMA.</source>
+        <translation>Les commandes concernent les modèles PackML : ce modèle suit le GEMMA.</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <extracomment>a PackML command&apos;s row: its PackTags number and name, &quot;4 Hold&quot;</extracomment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Condition :</translation>
+    </message>
+    <message>
+        <source>e.g. %1, or FALSE for a command given only through CntrlCmd</source>
+        <translation>p. ex. %1, ou FALSE pour une commande donnée seulement par CntrlCmd</translation>
+    </message>
+    <message>
+        <source>Issues the command at its rising edge. Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND, XOR, OR, comparisons.
+Ctrl+Space completes a variable name.</source>
+        <translation>Donne la commande à son front montant. Texte structuré : variables déclarées, nombres, TRUE, FALSE, NOT, AND, XOR, OR, comparaisons.
+Ctrl+Espace complète un nom de variable.</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Commentaire :</translation>
+    </message>
+    <message>
+        <source>Where the command comes from on this machine</source>
+        <translation>D&apos;où vient la commande sur cette machine</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlModeForm</name>
+    <message>
+        <source>Name:</source>
+        <translation>Nom :</translation>
+    </message>
+    <message>
+        <source>User modes (4 to 31) take an IEC identifier that no other mode has and the generated code does not use; it becomes part of function block names.
+Modes 1 to 3 are Production, Maintenance and Manual.</source>
+        <translation>Les modes utilisateur (4 à 31) prennent un identificateur CEI qu&apos;aucun autre mode n&apos;a et que le code généré n&apos;utilise pas ; il entre dans les noms des blocs fonctionnels.
+Les modes 1 à 3 sont Production, Maintenance et Manual.</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Commentaire :</translation>
+    </message>
+    <message>
+        <source>What the unit does in this mode</source>
+        <translation>Ce que fait l&apos;unité dans ce mode</translation>
+    </message>
+    <message>
+        <source>Request condition:</source>
+        <translation>Condition de demande :</translation>
+    </message>
+    <message>
+        <source>None: requested through UnitMode only (e.g. KeyManual)</source>
+        <translation>Aucune : demandé seulement par UnitMode (p. ex. KeyManual)</translation>
+    </message>
+    <message>
+        <source>Requests this mode at its rising edge, as a rising edge of UnitModeChangeRequest with UnitMode set to its number does.</source>
+        <translation>Demande ce mode à son front montant, comme le fait un front montant de UnitModeChangeRequest avec UnitMode à son numéro.</translation>
+    </message>
+    <message>
+        <source>Disabled states</source>
+        <translation>États désactivés</translation>
+    </message>
+    <message>
+        <source>Stopped, Idle, Execute and Aborted are never disabled. Disabling Held, Suspended or Complete disables the acting states of its loop; enabling one of those enables it again.</source>
+        <translation>Stopped, Idle, Execute et Aborted ne sont jamais désactivés. Désactiver Held, Suspended ou Complete désactive les états actifs de sa boucle ; en activer un le réactive.</translation>
+    </message>
+    <message>
+        <source>Mode change allowed in</source>
+        <translation>Changement de mode permis en</translation>
+    </message>
+    <message>
+        <source>A change to or from this mode is granted in a state that both modes list and the requested mode enables.</source>
+        <translation>Un changement vers ou depuis ce mode est accordé dans un état que les deux modes listent et que le mode demandé active.</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this mode: no change can be granted there.</source>
+        <translation>%1 est désactivé dans ce mode : aucun changement ne peut y être accordé.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlModesDock</name>
+    <message>
+        <source>Modes</source>
+        <translation>Modes</translation>
+    </message>
+    <message>
+        <source>Unit modes belong to PackML models: this model follows GEMMA.</source>
+        <translation>Les modes d&apos;unité concernent les modèles PackML : ce modèle suit le GEMMA.</translation>
+    </message>
+    <message>
+        <source>The number of the next user mode (PackTags UnitMode)</source>
+        <translation>Le numéro du prochain mode utilisateur (PackTags UnitMode)</translation>
+    </message>
+    <message>
+        <source>&amp;Add Mode</source>
+        <translation>&amp;Ajouter un mode</translation>
+    </message>
+    <message>
+        <source>Adds a user mode with this number: every state enabled, mode changes in Stopped, Idle and Aborted</source>
+        <translation>Ajoute un mode utilisateur de ce numéro : tous les états activés, changements de mode en Stopped, Idle et Aborted</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Supprimer</translation>
+    </message>
+    <message>
+        <source>&amp;Initial mode:</source>
+        <translation>Mode &amp;initial :</translation>
+    </message>
+    <message>
+        <source>The mode the unit is in at power-up</source>
+        <translation>Le mode de l&apos;unité à la mise sous tension</translation>
+    </message>
+    <message>
+        <source>Production is the mode every unit has</source>
+        <translation>Production est le mode que toute unité possède</translation>
+    </message>
+    <message>
+        <source>Removes the mode with its GRAFCETs</source>
+        <translation>Supprime le mode avec ses GRAFCET</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSettingsWidget</name>
+    <message>
+        <source>&amp;Hold accepted in Suspended</source>
+        <translation>&amp;Hold accepté en Suspended</translation>
+    </message>
+    <message>
+        <source>Suspended → Holding on Hold, an optional transition of the 2015 model and a standard one of 2022</source>
+        <translation>Suspended → Holding sur Hold, une transition facultative du modèle 2015 et standard en 2022</translation>
+    </message>
+    <message>
+        <source>C&amp;omplete accepted in Suspended and Held</source>
+        <translation>C&amp;omplete accepté en Suspended et Held</translation>
+    </message>
+    <message>
+        <source>Suspended and Held → Completing on the Complete command (2022 edition only)</source>
+        <translation>Suspended et Held → Completing sur la commande Complete (édition 2022 seulement)</translation>
+    </message>
+    <message>
+        <source>The state at power-up: Stopped as usual, Aborted for a unit that must be cleared after a power loss, Idle for one with nothing to reset</source>
+        <translation>L&apos;état à la mise sous tension : Stopped d&apos;habitude, Aborted pour une unité à acquitter après une coupure de courant, Idle pour une unité sans rien à réinitialiser</translation>
+    </message>
+    <message>
+        <source>PackML &amp;edition:</source>
+        <translation>&amp;Édition PackML :</translation>
+    </message>
+    <message>
+        <source>Initial &amp;state:</source>
+        <translation>É&amp;tat initial :</translation>
+    </message>
+    <message>
+        <source>2022: Execute is left on the Complete command, which a new model conditions on Cmd_Complete; its State Complete leads nowhere.</source>
+        <translation>2022 : Execute se quitte sur la commande Complete, qu&apos;un nouveau modèle conditionne par Cmd_Complete ; son State Complete ne mène nulle part.</translation>
+    </message>
+    <message>
+        <source>2015: Execute&apos;s State Complete leads to Completing; there is no Complete command.</source>
+        <translation>2015 : le State Complete d&apos;Execute mène à Completing ; il n&apos;y a pas de commande Complete.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSimulationDock</name>
+    <message>
+        <source>PackML Simulation</source>
+        <translation>Simulation PackML</translation>
+    </message>
+    <message>
+        <source>Start Simulation</source>
+        <translation>Démarrer la simulation</translation>
+    </message>
+    <message>
+        <source>Run or pause the scans</source>
+        <translation>Lancer ou suspendre les cycles</translation>
+    </message>
+    <message>
+        <source>Single scan</source>
+        <translation>Un seul cycle</translation>
+    </message>
+    <message>
+        <source>Step back: show the scan before</source>
+        <translation>Reculer : afficher le cycle précédent</translation>
+    </message>
+    <message>
+        <source>Step forward: show the scan after</source>
+        <translation>Avancer : afficher le cycle suivant</translation>
+    </message>
+    <message>
+        <source>Reset: the initial state and mode, inputs at their defaults</source>
+        <translation>Réinitialiser : l&apos;état et le mode initiaux, les entrées à leurs valeurs par défaut</translation>
+    </message>
+    <message>
+        <source>End the simulation</source>
+        <translation>Terminer la simulation</translation>
+    </message>
+    <message>
+        <source>Scans/s:</source>
+        <translation>Cycles/s :</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unité</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Trace</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Scénario</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Commandes</translation>
+    </message>
+    <message>
+        <source>Unit mode</source>
+        <translation>Mode de l&apos;unité</translation>
+    </message>
+    <message>
+        <source>Pick a mode to request it: the mode manager grants it or says why not</source>
+        <translation>Choisissez un mode pour le demander : le gestionnaire de modes l&apos;accorde ou dit pourquoi non</translation>
+    </message>
+    <message>
+        <source>Function block</source>
+        <translation>Bloc fonctionnel</translation>
+    </message>
+    <message>
+        <source>SC from the skeleton</source>
+        <extracomment>the State Complete of a state without nested GRAFCET: as the generated skeleton sets it</extracomment>
+        <translation>SC du squelette</translation>
+    </message>
+    <message>
+        <source>SC = TRUE (by hand)</source>
+        <translation>SC = TRUE (à la main)</translation>
+    </message>
+    <message>
+        <source>SC = FALSE (by hand)</source>
+        <translation>SC = FALSE (à la main)</translation>
+    </message>
+    <message>
+        <source>The State Complete of a state without nested GRAFCET, set by hand to hold an acting state or to complete Execute</source>
+        <translation>Le State Complete d&apos;un état sans GRAFCET imbriqué, affecté à la main pour retenir un état actif ou terminer Execute</translation>
+    </message>
+    <message>
+        <source>Replay Scenario…</source>
+        <translation>Rejouer un scénario…</translation>
+    </message>
+    <message>
+        <source>Start the simulation to play the unit&apos;s commands and modes.</source>
+        <translation>Démarrez la simulation pour jouer les commandes et les modes de l&apos;unité.</translation>
+    </message>
+    <message>
+        <source>Scan %1: %2 in %3</source>
+        <extracomment>%1: a scan number, %2: a PackML state (Execute), %3: a unit mode (Production)</extracomment>
+        <translation>Cycle %1 : %2 en %3</translation>
+    </message>
+    <message>
+        <source>%1 (history; the latest scan is %2)</source>
+        <extracomment>%1: a status, %2: the latest scan</extracomment>
+        <translation>%1 (historique ; le dernier cycle est %2)</translation>
+    </message>
+    <message>
+        <source>%1 is accepted in %2</source>
+        <translation>%1 est accepté dans %2</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2: pressing it shows why</source>
+        <translation>%1 n&apos;est pas accepté dans %2 : l&apos;appuyer montre pourquoi</translation>
+    </message>
+    <message>
+        <source>%1: requested, read by the next scan</source>
+        <translation>%1 : demandé, lu par le prochain cycle</translation>
+    </message>
+    <message>
+        <source>%1 is a wait state: no function block runs in it</source>
+        <translation>%1 est un état d&apos;attente : aucun bloc fonctionnel ne s&apos;y exécute</translation>
+    </message>
+    <message>
+        <source>%1: active steps %2, Complete = %3</source>
+        <extracomment>%1: a function block instance (Production_Execute), %2: step numbers, %3: TRUE or FALSE</extracomment>
+        <translation>%1 : étapes actives %2, Complete = %3</translation>
+    </message>
+    <message>
+        <source>%1 runs no GRAFCET: Complete = %2</source>
+        <translation>%1 n&apos;exécute aucun GRAFCET : Complete = %2</translation>
+    </message>
+    <message>
+        <source>Replaying %1: scan %2 of %3</source>
+        <extracomment>%1: a scenario file, %2: the scan shown, %3: its last scan</extracomment>
+        <translation>Rejeu de %1 : cycle %2 sur %3</translation>
+    </message>
+    <message>
+        <source>%1 passed: all %2 expectation(s) met</source>
+        <translation>%1 réussi : les %2 attente(s) sont satisfaites</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2 of %3 expectation(s) did not hold</source>
+        <translation>%1 échoué : %2 attente(s) sur %3 non satisfaites</translation>
+    </message>
+    <message>
+        <source>Cannot replay %1:
+%2</source>
+        <translation>Impossible de rejouer %1 :
+%2</translation>
+    </message>
+    <message>
+        <source>Replay Scenario</source>
+        <translation>Rejouer un scénario</translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scenario *.txt);;All files (*)</source>
+        <translation>Scénarios (*.scenario *.txt);;Tous les fichiers (*)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSimulationSession</name>
+    <message>
+        <source>(%1 more)</source>
+        <translation>(%1 de plus)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlStateDock</name>
+    <message>
+        <source>State</source>
+        <translation>État</translation>
+    </message>
+    <message>
+        <source>Select a state in the PackML chart to see what it means and what runs in it.</source>
+        <translation>Sélectionnez un état dans le diagramme PackML pour voir ce qu&apos;il signifie et ce qui s&apos;y exécute.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET per mode</source>
+        <translation>GRAFCET imbriqué par mode</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <extracomment>a PackML state&apos;s title: its PackTags number and name, &quot;6 Execute&quot;</extracomment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Own: a nested GRAFCET for this mode; Same as: the one of another mode; None: the state&apos;s skeleton (%1).</source>
+        <translation>Propre : un GRAFCET imbriqué pour ce mode ; Identique à : celui d&apos;un autre mode ; Aucun : le squelette de l&apos;état (%1).</translation>
+    </message>
+    <message>
+        <source>Execute waits for a command</source>
+        <translation>Execute attend une commande</translation>
+    </message>
+    <message>
+        <source>the state completes at once</source>
+        <translation>l&apos;état se termine aussitôt</translation>
+    </message>
+    <message>
+        <source>A wait state runs no GRAFCET.</source>
+        <translation>Un état d&apos;attente n&apos;exécute aucun GRAFCET.</translation>
+    </message>
+    <message>
+        <source>Open GRAFCET</source>
+        <translation>Ouvrir le GRAFCET</translation>
+    </message>
+    <message>
+        <source>None (skeleton)</source>
+        <translation>Aucun (squelette)</translation>
+    </message>
+    <message>
+        <source>Own GRAFCET</source>
+        <translation>GRAFCET propre</translation>
+    </message>
+    <message>
+        <source>Same as %1</source>
+        <translation>Identique à %1</translation>
+    </message>
+    <message>
+        <source>Same as mode %1 (no GRAFCET there)</source>
+        <translation>Identique au mode %1 (sans GRAFCET)</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this mode: nothing runs there.</source>
+        <translation>%1 est désactivé dans ce mode : rien ne s&apos;y exécute.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlTraceModel</name>
+    <message>
+        <source>mode %1 → %2</source>
+        <extracomment>a unit mode change in one scan: from, to</extracomment>
+        <translation>mode %1 → %2</translation>
+    </message>
+    <message>
+        <source>Execute resumed</source>
+        <translation>Execute repris</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Cycle</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>État</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Mode</translation>
+    </message>
+    <message>
+        <source>Fired</source>
+        <translation>Franchie</translation>
+    </message>
+    <message>
+        <source>Dropped</source>
+        <translation>Ignorés</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlVariablesPanel</name>
+    <message>
+        <source>Inputs</source>
+        <translation>Entrées</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Sorties</translation>
     </message>
 </context>
 <context>
@@ -4358,6 +5134,14 @@ Ctrl+Espace complète un nom.</translation>
         <source>%1_FB (the nested GRAFCET of %1)</source>
         <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
         <translation>%1_FB (le GRAFCET imbriqué de %1)</translation>
+    </message>
+    <message>
+        <source>No enabled state runs this GRAFCET: it generates no function block.</source>
+        <translation>Aucun état activé n&apos;exécute ce GRAFCET : il ne génère aucun bloc fonctionnel.</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this unit mode: the mode&apos;s state machine has no branch for it.</source>
+        <translation>%1 est désactivé dans ce mode d&apos;unité : la machine à états du mode n&apos;a pas de branche pour lui.</translation>
     </message>
 </context>
 <context>

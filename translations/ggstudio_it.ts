@@ -10,6 +10,13 @@
     </message>
 </context>
 <context>
+    <name>AddModeCommand</name>
+    <message>
+        <source>Add mode %1 %2</source>
+        <translation>Aggiungi il modo %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>AddPropertyCommand</name>
     <message>
         <source>Add property</source>
@@ -755,6 +762,14 @@
         <source>The example %1 is missing from this build.</source>
         <translation>L&apos;esempio %1 manca in questa build.</translation>
     </message>
+    <message>
+        <source>Bottle Filler (PackML)</source>
+        <translation>Riempitrice di bottiglie (PackML)</translation>
+    </message>
+    <message>
+        <source>A PackML unit with Production and Manual modes and a GRAFCET in Resetting, Starting, Execute, Stopping and Aborting</source>
+        <translation>Un&apos;unità PackML con i modi Production e Manual e un GRAFCET in Resetting, Starting, Execute, Stopping e Aborting</translation>
+    </message>
 </context>
 <context>
     <name>GrafcetClipboard</name>
@@ -1096,6 +1111,156 @@
     </message>
 </context>
 <context>
+    <name>PackmlChartExport</name>
+    <message>
+        <source>PackML chart drawn by GG Studio</source>
+        <translation>Diagramma PackML disegnato da GG Studio</translation>
+    </message>
+    <message>
+        <source>Unit mode %1</source>
+        <translation>Modo di unità %1</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlSimulationText</name>
+    <message>
+        <source>%1 cannot be entered in %2: %3</source>
+        <extracomment>%1: a unit mode (Manual), %2: a PackML state (Execute), %3: why</extracomment>
+        <translation>%1 non può essere attivato in %2: %3</translation>
+    </message>
+    <message>
+        <source>%1; %2 grants it in no state</source>
+        <extracomment>%1: a refusal, %2: the current unit mode</extracomment>
+        <translation>%1; %2 non lo concede in nessuno stato</translation>
+    </message>
+    <message>
+        <source>%1; it can be entered in %2</source>
+        <extracomment>%1: a refusal, %2: PackML states (&quot;Stopped, Idle, Aborted&quot;)</extracomment>
+        <translation>%1; può essere attivato in %2</translation>
+    </message>
+    <message>
+        <source>%1 allows no mode change there</source>
+        <translation>%1 non consente lì alcun cambio di modo</translation>
+    </message>
+    <message>
+        <source>%1 disables this state</source>
+        <translation>%1 disattiva questo stato</translation>
+    </message>
+    <message>
+        <source>%1 is not granted: %2, lower-numbered, is granted in the same scan</source>
+        <extracomment>%2: the unit mode granted instead</extracomment>
+        <translation>%1 non è concesso: %2, di numero inferiore, è concesso nello stesso ciclo</translation>
+    </message>
+    <message>
+        <source>%1 is requested: it is already the current mode</source>
+        <translation>%1 è richiesto: è già il modo corrente</translation>
+    </message>
+    <message>
+        <source>%1 names no unit mode</source>
+        <translation>%1 non indica alcun modo dell&apos;unità</translation>
+    </message>
+    <message>
+        <source>the SC of %1</source>
+        <translation>il SC di %1</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2</source>
+        <extracomment>%1: a PackML command (Hold), %2: a state (Idle)</extracomment>
+        <translation>%1 non è accettato in %2</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2 in %3: the mode disables where it leads</source>
+        <extracomment>%1: a command, %2: a state, %3: a unit mode</extracomment>
+        <translation>%1 non è accettato in %2 in %3: il modo disattiva lo stato a cui porta</translation>
+    </message>
+    <message>
+        <source>%1 is pre-empted by %2</source>
+        <extracomment>%2: the transition that fired instead (&quot;Execute-Stop-&gt;Stopped&quot;)</extracomment>
+        <translation>%1 è preceduto da %2</translation>
+    </message>
+    <message>
+        <source>%1 names no command</source>
+        <translation>%1 non indica alcun comando</translation>
+    </message>
+    <message>
+        <source>the receptivity of T%1 of %2</source>
+        <extracomment>%1: a transition number of a nested GRAFCET, %2: its function block instance</extracomment>
+        <translation>la ricettività di T%1 di %2</translation>
+    </message>
+    <message>
+        <source>action %1 of step %2 of %3</source>
+        <extracomment>%1: an action&apos;s position, %2: a step number, %3: a function block instance</extracomment>
+        <translation>l&apos;azione %1 del passo %2 di %3</translation>
+    </message>
+    <message>
+        <source>the condition of the %1 command</source>
+        <extracomment>%1: a PackML command (Start)</extracomment>
+        <translation>la condizione del comando %1</translation>
+    </message>
+    <message>
+        <source>the request condition of mode %1</source>
+        <extracomment>%1: a unit mode (Manual)</extracomment>
+        <translation>la condizione di richiesta del modo %1</translation>
+    </message>
+    <message>
+        <source>cannot set %1: %2</source>
+        <extracomment>%1: a variable or instance, %2: why (from the simulator)</extracomment>
+        <translation>impossibile impostare %1: %2</translation>
+    </message>
+    <message>
+        <source>expected state %1, the state is %2</source>
+        <translation>atteso lo stato %1, lo stato è %2</translation>
+    </message>
+    <message>
+        <source>expected mode %1, the mode is %2</source>
+        <translation>atteso il modo %1, il modo è %2</translation>
+    </message>
+    <message>
+        <source>expected %1 = %2, it is %3</source>
+        <translation>atteso %1 = %2, è %3</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, no transition fired</source>
+        <translation>atteso il superamento di %1, nessuna transizione superata</translation>
+    </message>
+    <message>
+        <source>expected %1 to fire, %2 fired</source>
+        <translation>atteso il superamento di %1, superata %2</translation>
+    </message>
+    <message>
+        <source>expected no transition to fire, %1 fired</source>
+        <translation>nessun superamento atteso, superata %1</translation>
+    </message>
+    <message>
+        <source>scan %1: %2</source>
+        <extracomment>%1: a scan number, %2: what did not hold</extracomment>
+        <translation>ciclo %1: %2</translation>
+    </message>
+    <message>
+        <source>Stopped at scan %1: integer division by zero in %2 (%3 in &apos;%4&apos;). On the PLC the task stops with a fault; Reset to run again.</source>
+        <extracomment>%1: a scan number, %2: where (a condition, a receptivity, an action), %3: the division as written, %4: the text</extracomment>
+        <translation>Arrestato al ciclo %1: divisione intera per zero in %2 (%3 in «%4»). Nel PLC il task si ferma con un errore; reimposta per ripartire.</translation>
+    </message>
+    <message>
+        <source>%1: granted</source>
+        <extracomment>a unit mode request that the mode manager granted</extracomment>
+        <translation>%1: concesso</translation>
+    </message>
+    <message>
+        <source>%1: not granted</source>
+        <translation>%1: non concesso</translation>
+    </message>
+    <message>
+        <source>%1: fired %2</source>
+        <extracomment>%1: a command, %2: the transition it fired (&quot;Idle-Start-&gt;Execute&quot;)</extracomment>
+        <translation>%1: superata %2</translation>
+    </message>
+    <message>
+        <source>%1: no transition fired</source>
+        <translation>%1: nessuna transizione superata</translation>
+    </message>
+</context>
+<context>
     <name>PackmlTexts</name>
     <message>
         <source>Wait state</source>
@@ -1338,6 +1503,13 @@
     </message>
 </context>
 <context>
+    <name>RemoveModeCommand</name>
+    <message>
+        <source>Remove mode %1</source>
+        <translation>Rimuovi il modo %1</translation>
+    </message>
+</context>
+<context>
     <name>RemovePropertyCommand</name>
     <message>
         <source>Remove property %1</source>
@@ -1349,6 +1521,13 @@
     <message>
         <source>Remove variable %1</source>
         <translation>Rimuovi la variabile %1</translation>
+    </message>
+</context>
+<context>
+    <name>RenameModeCommand</name>
+    <message>
+        <source>Rename mode %1</source>
+        <translation>Rinomina il modo %1</translation>
     </message>
 </context>
 <context>
@@ -1375,6 +1554,20 @@
     <message>
         <source>Reset to template</source>
         <translation>Ripristina il template</translation>
+    </message>
+</context>
+<context>
+    <name>SetCommandCommentCommand</name>
+    <message>
+        <source>Edit comment of command %1</source>
+        <translation>Modifica il commento del comando %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetCommandConditionCommand</name>
+    <message>
+        <source>Edit condition of command %1</source>
+        <translation>Modifica la condizione del comando %1</translation>
     </message>
 </context>
 <context>
@@ -1443,6 +1636,21 @@
     </message>
 </context>
 <context>
+    <name>SetGrafcetChoiceCommand</name>
+    <message>
+        <source>Give %1 its own GRAFCET in mode %2</source>
+        <translation>Dare a %1 un proprio GRAFCET nel modo %2</translation>
+    </message>
+    <message>
+        <source>Run in %1 of mode %2 the GRAFCET of mode %3</source>
+        <translation>Eseguire in %1 del modo %2 il GRAFCET del modo %3</translation>
+    </message>
+    <message>
+        <source>Remove the GRAFCET of %1 in mode %2</source>
+        <translation>Rimuovi il GRAFCET di %1 nel modo %2</translation>
+    </message>
+</context>
+<context>
     <name>SetGrafcetStepCommentCommand</name>
     <message>
         <source>Edit comment of %1 step %2</source>
@@ -1470,6 +1678,31 @@
     </message>
 </context>
 <context>
+    <name>SetModeCommentCommand</name>
+    <message>
+        <source>Edit comment of mode %1</source>
+        <translation>Modifica il commento del modo %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetModeRequestCommand</name>
+    <message>
+        <source>Edit request condition of mode %1</source>
+        <translation>Modifica la condizione di richiesta del modo %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetModeStatesCommand</name>
+    <message>
+        <source>Change disabled states of mode %1</source>
+        <translation>Modifica gli stati disattivati del modo %1</translation>
+    </message>
+    <message>
+        <source>Change mode-change states of mode %1</source>
+        <translation>Modifica gli stati di cambio modo del modo %1</translation>
+    </message>
+</context>
+<context>
     <name>SetModelNameCommand</name>
     <message>
         <source>Rename model</source>
@@ -1485,6 +1718,27 @@
     <message>
         <source>Remove negation of %1</source>
         <translation>Rimuovi la negazione di %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlInitialModeCommand</name>
+    <message>
+        <source>Set initial mode to %1</source>
+        <translation>Imposta il modo iniziale a %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlInitialStateCommand</name>
+    <message>
+        <source>Set initial state to %1</source>
+        <translation>Imposta lo stato iniziale a %1</translation>
+    </message>
+</context>
+<context>
+    <name>SetPackmlOptionsCommand</name>
+    <message>
+        <source>Change PackML edition and options</source>
+        <translation>Modifica edizione e opzioni PackML</translation>
     </message>
 </context>
 <context>
@@ -3022,6 +3276,10 @@ S, R: impostarla a TRUE o FALSE
             <numerusform>%1 è attiva: il suo GRAFCET evolve (fasi %2)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1 has just been resumed: its GRAFCET goes on where it was paused in the next scan</source>
+        <translation>%1 è appena stato ripreso: il suo GRAFCET riprende da dove era stato sospeso nel prossimo ciclo</translation>
+    </message>
 </context>
 <context>
     <name>editor::GrafcetStepDock</name>
@@ -3109,6 +3367,29 @@ S, R: impostarla a TRUE o FALSE
     <message>
         <source>Step numbers start at 1: %1 is not a step number.</source>
         <translation>I numeri di fase partono da 1: %1 non è un numero di fase.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::GrafcetTabs</name>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>The GRAFCET of %1 in the mode %2</source>
+        <translation>Il GRAFCET di %1 nel modo %2</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET of %1</source>
+        <translation>Il GRAFCET annidato di %1</translation>
+    </message>
+    <message>
+        <source>PackML Chart</source>
+        <translation>Diagramma PackML</translation>
+    </message>
+    <message>
+        <source>GEMMA Chart</source>
+        <translation>Diagramma GEMMA</translation>
     </message>
 </context>
 <context>
@@ -3551,14 +3832,6 @@ Ctrl+Spazio completa un nome.</translation>
         <translation>Mostra il ciclo successivo della cronologia dell&apos;esecuzione</translation>
     </message>
     <message>
-        <source>GEMMA Chart</source>
-        <translation>Diagramma GEMMA</translation>
-    </message>
-    <message>
-        <source>The nested GRAFCET of %1</source>
-        <translation>Il GRAFCET annidato di %1</translation>
-    </message>
-    <message>
         <source>Prove what the GEMMA layer and the nested GRAFCETs can and cannot do for every input sequence, and check your properties; the findings go to the Problems dock</source>
         <translation>Dimostrare ciò che il livello GEMMA e i GRAFCET annidati possono e non possono fare per ogni sequenza di ingressi, e verificare le tue proprietà; i risultati vanno nel pannello Problemi</translation>
     </message>
@@ -3585,6 +3858,10 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>&amp;Fit to Window</source>
         <translation>&amp;Adatta alla finestra</translation>
+    </message>
+    <message>
+        <source>Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model of this edition? You can undo this.</source>
+        <translation>Riportare ogni comando, modo di unità, GRAFCET, variabile e impostazione a un nuovo modello PackML di questa edizione? È possibile annullare.</translation>
     </message>
 </context>
 <context>
@@ -3661,6 +3938,68 @@ Ctrl+Spazio completa un nome.</translation>
         <source>Each scan fires the transitions enabled at its start once, as SFC runtimes such as CODESYS do.</source>
         <translation>Ogni ciclo fa scattare una volta le transizioni abilitate al suo inizio, come fanno i runtime SFC quali CODESYS.</translation>
     </message>
+    <message>
+        <source>PackML</source>
+        <translation>PackML</translation>
+    </message>
+</context>
+<context>
+    <name>editor::NewModelDialog</name>
+    <message>
+        <source>GEMMA</source>
+        <translation>GEMMA</translation>
+    </message>
+    <message>
+        <source>The GEMMA chart (stop, operation and failure procedures) with a nested GRAFCET in each macro-step: the GEMMA-GRAFCET method.</source>
+        <translation>La guida GEMMA (procedure di arresto, di funzionamento e di guasto) con un GRAFCET annidato in ogni macro-passo: il metodo GEMMA-GRAFCET.</translation>
+    </message>
+    <message>
+        <source>PackML, 2015 edition</source>
+        <translation>PackML, edizione 2015</translation>
+    </message>
+    <message>
+        <source>The ISA-TR88.00.02-2015 state machine with unit modes: Production, Maintenance and Manual, a GRAFCET in each acting state.</source>
+        <translation>La macchina a stati ISA-TR88.00.02-2015 con i modi di unità: Production, Maintenance e Manual, un GRAFCET in ogni stato attivo.</translation>
+    </message>
+    <message>
+        <source>PackML, 2022 edition</source>
+        <translation>PackML, edizione 2022</translation>
+    </message>
+    <message>
+        <source>The ISA-TR88.00.02-2022 state machine: as 2015, with the Complete command that ends Execute.</source>
+        <translation>La macchina a stati ISA-TR88.00.02-2022: come la 2015, con il comando Complete che termina Execute.</translation>
+    </message>
+    <message>
+        <source>New Model</source>
+        <translation>Nuovo modello</translation>
+    </message>
+    <message>
+        <source>Which chart does the new model fill in?</source>
+        <translation>Quale diagramma compila il nuovo modello?</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlChartContextMenu</name>
+    <message>
+        <source>&amp;Open GRAFCET</source>
+        <translation>&amp;Apri il GRAFCET</translation>
+    </message>
+    <message>
+        <source>&amp;Choose Its GRAFCET…</source>
+        <translation>&amp;Scegli il suo GRAFCET…</translation>
+    </message>
+    <message>
+        <source>Its own GRAFCET in this mode, the one of another mode, or none</source>
+        <translation>Il proprio GRAFCET in questo modo, quello di un altro modo, o nessuno</translation>
+    </message>
+    <message>
+        <source>Edit the %1 &amp;Condition…</source>
+        <translation>Modifica la &amp;condizione di %1…</translation>
+    </message>
+    <message>
+        <source>Show in &amp;Mode</source>
+        <translation>Mostra nel &amp;modo</translation>
+    </message>
 </context>
 <context>
     <name>editor::PackmlChartTexts</name>
@@ -3722,6 +4061,443 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>The unit mode the chart shows: its disabled states greyed, its skipped transitions labelled with where they lead</source>
         <translation>Il modo dell&apos;unità mostrato dal diagramma: i suoi stati disattivati in grigio, le transizioni saltate etichettate con la loro destinazione</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlCommandsDock</name>
+    <message>
+        <source>Commands</source>
+        <translation>Comandi</translation>
+    </message>
+    <message>
+        <source>Commands belong to PackML models: this model follows GEMMA.</source>
+        <translation>I comandi riguardano i modelli PackML: questo modello segue il GEMMA.</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <extracomment>a PackML command&apos;s row: its PackTags number and name, &quot;4 Hold&quot;</extracomment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Condition:</source>
+        <translation>Condizione:</translation>
+    </message>
+    <message>
+        <source>e.g. %1, or FALSE for a command given only through CntrlCmd</source>
+        <translation>ad es. %1, o FALSE per un comando dato solo tramite CntrlCmd</translation>
+    </message>
+    <message>
+        <source>Issues the command at its rising edge. Structured Text: declared variables, numbers, TRUE, FALSE, NOT, AND, XOR, OR, comparisons.
+Ctrl+Space completes a variable name.</source>
+        <translation>Dà il comando sul suo fronte di salita. Testo strutturato: variabili dichiarate, numeri, TRUE, FALSE, NOT, AND, XOR, OR, confronti.
+Ctrl+Spazio completa un nome di variabile.</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Commento:</translation>
+    </message>
+    <message>
+        <source>Where the command comes from on this machine</source>
+        <translation>Da dove viene il comando su questa macchina</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlModeForm</name>
+    <message>
+        <source>Name:</source>
+        <translation>Nome:</translation>
+    </message>
+    <message>
+        <source>User modes (4 to 31) take an IEC identifier that no other mode has and the generated code does not use; it becomes part of function block names.
+Modes 1 to 3 are Production, Maintenance and Manual.</source>
+        <translation>I modi utente (da 4 a 31) hanno un identificatore IEC che nessun altro modo ha e che il codice generato non usa; entra nei nomi dei blocchi funzione.
+I modi da 1 a 3 sono Production, Maintenance e Manual.</translation>
+    </message>
+    <message>
+        <source>Comment:</source>
+        <translation>Commento:</translation>
+    </message>
+    <message>
+        <source>What the unit does in this mode</source>
+        <translation>Cosa fa l&apos;unità in questo modo</translation>
+    </message>
+    <message>
+        <source>Request condition:</source>
+        <translation>Condizione di richiesta:</translation>
+    </message>
+    <message>
+        <source>None: requested through UnitMode only (e.g. KeyManual)</source>
+        <translation>Nessuna: richiesto solo tramite UnitMode (ad es. KeyManual)</translation>
+    </message>
+    <message>
+        <source>Requests this mode at its rising edge, as a rising edge of UnitModeChangeRequest with UnitMode set to its number does.</source>
+        <translation>Richiede questo modo sul suo fronte di salita, come fa un fronte di salita di UnitModeChangeRequest con UnitMode al suo numero.</translation>
+    </message>
+    <message>
+        <source>Disabled states</source>
+        <translation>Stati disattivati</translation>
+    </message>
+    <message>
+        <source>Stopped, Idle, Execute and Aborted are never disabled. Disabling Held, Suspended or Complete disables the acting states of its loop; enabling one of those enables it again.</source>
+        <translation>Stopped, Idle, Execute e Aborted non sono mai disattivati. Disattivare Held, Suspended o Complete disattiva gli stati attivi del suo ciclo; attivarne uno lo riattiva.</translation>
+    </message>
+    <message>
+        <source>Mode change allowed in</source>
+        <translation>Cambio di modo permesso in</translation>
+    </message>
+    <message>
+        <source>A change to or from this mode is granted in a state that both modes list and the requested mode enables.</source>
+        <translation>Un cambio verso o da questo modo è concesso in uno stato che entrambi i modi elencano e che il modo richiesto attiva.</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this mode: no change can be granted there.</source>
+        <translation>%1 è disattivato in questo modo: lì non può essere concesso alcun cambio.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlModesDock</name>
+    <message>
+        <source>Modes</source>
+        <translation>Modi</translation>
+    </message>
+    <message>
+        <source>Unit modes belong to PackML models: this model follows GEMMA.</source>
+        <translation>I modi dell&apos;unità riguardano i modelli PackML: questo modello segue il GEMMA.</translation>
+    </message>
+    <message>
+        <source>The number of the next user mode (PackTags UnitMode)</source>
+        <translation>Il numero del prossimo modo utente (PackTags UnitMode)</translation>
+    </message>
+    <message>
+        <source>&amp;Add Mode</source>
+        <translation>&amp;Aggiungi modo</translation>
+    </message>
+    <message>
+        <source>Adds a user mode with this number: every state enabled, mode changes in Stopped, Idle and Aborted</source>
+        <translation>Aggiunge un modo utente con questo numero: tutti gli stati attivi, cambi di modo in Stopped, Idle e Aborted</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Rimuovi</translation>
+    </message>
+    <message>
+        <source>&amp;Initial mode:</source>
+        <translation>Modo &amp;iniziale:</translation>
+    </message>
+    <message>
+        <source>The mode the unit is in at power-up</source>
+        <translation>Il modo dell&apos;unità all&apos;accensione</translation>
+    </message>
+    <message>
+        <source>Production is the mode every unit has</source>
+        <translation>Production è il modo che ogni unità ha</translation>
+    </message>
+    <message>
+        <source>Removes the mode with its GRAFCETs</source>
+        <translation>Rimuove il modo con i suoi GRAFCET</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSettingsWidget</name>
+    <message>
+        <source>&amp;Hold accepted in Suspended</source>
+        <translation>&amp;Hold accettato in Suspended</translation>
+    </message>
+    <message>
+        <source>Suspended → Holding on Hold, an optional transition of the 2015 model and a standard one of 2022</source>
+        <translation>Suspended → Holding su Hold, una transizione facoltativa del modello 2015 e standard nel 2022</translation>
+    </message>
+    <message>
+        <source>C&amp;omplete accepted in Suspended and Held</source>
+        <translation>C&amp;omplete accettato in Suspended e Held</translation>
+    </message>
+    <message>
+        <source>Suspended and Held → Completing on the Complete command (2022 edition only)</source>
+        <translation>Suspended e Held → Completing sul comando Complete (solo edizione 2022)</translation>
+    </message>
+    <message>
+        <source>The state at power-up: Stopped as usual, Aborted for a unit that must be cleared after a power loss, Idle for one with nothing to reset</source>
+        <translation>Lo stato all&apos;accensione: Stopped di solito, Aborted per un&apos;unità da ripristinare dopo una mancanza di corrente, Idle per una senza nulla da reimpostare</translation>
+    </message>
+    <message>
+        <source>PackML &amp;edition:</source>
+        <translation>&amp;Edizione PackML:</translation>
+    </message>
+    <message>
+        <source>Initial &amp;state:</source>
+        <translation>&amp;Stato iniziale:</translation>
+    </message>
+    <message>
+        <source>2022: Execute is left on the Complete command, which a new model conditions on Cmd_Complete; its State Complete leads nowhere.</source>
+        <translation>2022: da Execute si esce con il comando Complete, che un nuovo modello condiziona a Cmd_Complete; il suo State Complete non porta da nessuna parte.</translation>
+    </message>
+    <message>
+        <source>2015: Execute&apos;s State Complete leads to Completing; there is no Complete command.</source>
+        <translation>2015: il State Complete di Execute porta a Completing; non c&apos;è il comando Complete.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSimulationDock</name>
+    <message>
+        <source>PackML Simulation</source>
+        <translation>Simulazione PackML</translation>
+    </message>
+    <message>
+        <source>Start Simulation</source>
+        <translation>Avvia la simulazione</translation>
+    </message>
+    <message>
+        <source>Run or pause the scans</source>
+        <translation>Esegui o sospendi i cicli</translation>
+    </message>
+    <message>
+        <source>Single scan</source>
+        <translation>Ciclo singolo</translation>
+    </message>
+    <message>
+        <source>Step back: show the scan before</source>
+        <translation>Indietro: mostra il ciclo precedente</translation>
+    </message>
+    <message>
+        <source>Step forward: show the scan after</source>
+        <translation>Avanti: mostra il ciclo successivo</translation>
+    </message>
+    <message>
+        <source>Reset: the initial state and mode, inputs at their defaults</source>
+        <translation>Reimposta: lo stato e il modo iniziali, gli ingressi ai valori predefiniti</translation>
+    </message>
+    <message>
+        <source>End the simulation</source>
+        <translation>Termina la simulazione</translation>
+    </message>
+    <message>
+        <source>Scans/s:</source>
+        <translation>Cicli/s:</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unità</translation>
+    </message>
+    <message>
+        <source>Trace</source>
+        <translation>Traccia</translation>
+    </message>
+    <message>
+        <source>Scenario</source>
+        <translation>Scenario</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Comandi</translation>
+    </message>
+    <message>
+        <source>Unit mode</source>
+        <translation>Modo dell&apos;unità</translation>
+    </message>
+    <message>
+        <source>Pick a mode to request it: the mode manager grants it or says why not</source>
+        <translation>Scegli un modo per richiederlo: il gestore dei modi lo concede o dice perché no</translation>
+    </message>
+    <message>
+        <source>Function block</source>
+        <translation>Blocco funzione</translation>
+    </message>
+    <message>
+        <source>SC from the skeleton</source>
+        <extracomment>the State Complete of a state without nested GRAFCET: as the generated skeleton sets it</extracomment>
+        <translation>SC dallo scheletro</translation>
+    </message>
+    <message>
+        <source>SC = TRUE (by hand)</source>
+        <translation>SC = TRUE (a mano)</translation>
+    </message>
+    <message>
+        <source>SC = FALSE (by hand)</source>
+        <translation>SC = FALSE (a mano)</translation>
+    </message>
+    <message>
+        <source>The State Complete of a state without nested GRAFCET, set by hand to hold an acting state or to complete Execute</source>
+        <translation>Lo State Complete di uno stato senza GRAFCET annidato, impostato a mano per trattenere uno stato attivo o completare Execute</translation>
+    </message>
+    <message>
+        <source>Replay Scenario…</source>
+        <translation>Riproduci uno scenario…</translation>
+    </message>
+    <message>
+        <source>Start the simulation to play the unit&apos;s commands and modes.</source>
+        <translation>Avvia la simulazione per eseguire i comandi e i modi dell&apos;unità.</translation>
+    </message>
+    <message>
+        <source>Scan %1: %2 in %3</source>
+        <extracomment>%1: a scan number, %2: a PackML state (Execute), %3: a unit mode (Production)</extracomment>
+        <translation>Ciclo %1: %2 in %3</translation>
+    </message>
+    <message>
+        <source>%1 (history; the latest scan is %2)</source>
+        <extracomment>%1: a status, %2: the latest scan</extracomment>
+        <translation>%1 (cronologia; l&apos;ultimo ciclo è %2)</translation>
+    </message>
+    <message>
+        <source>%1 is accepted in %2</source>
+        <translation>%1 è accettato in %2</translation>
+    </message>
+    <message>
+        <source>%1 is not accepted in %2: pressing it shows why</source>
+        <translation>%1 non è accettato in %2: premerlo mostra perché</translation>
+    </message>
+    <message>
+        <source>%1: requested, read by the next scan</source>
+        <translation>%1: richiesto, letto dal prossimo ciclo</translation>
+    </message>
+    <message>
+        <source>%1 is a wait state: no function block runs in it</source>
+        <translation>%1 è uno stato di attesa: in esso non viene eseguito alcun blocco funzione</translation>
+    </message>
+    <message>
+        <source>%1: active steps %2, Complete = %3</source>
+        <extracomment>%1: a function block instance (Production_Execute), %2: step numbers, %3: TRUE or FALSE</extracomment>
+        <translation>%1: passi attivi %2, Complete = %3</translation>
+    </message>
+    <message>
+        <source>%1 runs no GRAFCET: Complete = %2</source>
+        <translation>%1 non esegue alcun GRAFCET: Complete = %2</translation>
+    </message>
+    <message>
+        <source>Replaying %1: scan %2 of %3</source>
+        <extracomment>%1: a scenario file, %2: the scan shown, %3: its last scan</extracomment>
+        <translation>Riproduzione di %1: ciclo %2 di %3</translation>
+    </message>
+    <message>
+        <source>%1 passed: all %2 expectation(s) met</source>
+        <translation>%1 superato: tutte le %2 attese soddisfatte</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2 of %3 expectation(s) did not hold</source>
+        <translation>%1 non superato: %2 di %3 attese non soddisfatte</translation>
+    </message>
+    <message>
+        <source>Cannot replay %1:
+%2</source>
+        <translation>Impossibile riprodurre %1:
+%2</translation>
+    </message>
+    <message>
+        <source>Replay Scenario</source>
+        <translation>Riproduci uno scenario</translation>
+    </message>
+    <message>
+        <source>Scenarios (*.scenario *.txt);;All files (*)</source>
+        <translation>Scenari (*.scenario *.txt);;Tutti i file (*)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlSimulationSession</name>
+    <message>
+        <source>(%1 more)</source>
+        <translation>(altri %1)</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlStateDock</name>
+    <message>
+        <source>State</source>
+        <translation>Stato</translation>
+    </message>
+    <message>
+        <source>Select a state in the PackML chart to see what it means and what runs in it.</source>
+        <translation>Selezionare uno stato nel diagramma PackML per vedere cosa significa e cosa vi si esegue.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET per mode</source>
+        <translation>GRAFCET annidato per modo</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <extracomment>a PackML state&apos;s title: its PackTags number and name, &quot;6 Execute&quot;</extracomment>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Own: a nested GRAFCET for this mode; Same as: the one of another mode; None: the state&apos;s skeleton (%1).</source>
+        <translation>Proprio: un GRAFCET annidato per questo modo; Come: quello di un altro modo; Nessuno: lo scheletro dello stato (%1).</translation>
+    </message>
+    <message>
+        <source>Execute waits for a command</source>
+        <translation>Execute attende un comando</translation>
+    </message>
+    <message>
+        <source>the state completes at once</source>
+        <translation>lo stato si completa subito</translation>
+    </message>
+    <message>
+        <source>A wait state runs no GRAFCET.</source>
+        <translation>Uno stato di attesa non esegue alcun GRAFCET.</translation>
+    </message>
+    <message>
+        <source>Open GRAFCET</source>
+        <translation>Apri GRAFCET</translation>
+    </message>
+    <message>
+        <source>None (skeleton)</source>
+        <translation>Nessuno (scheletro)</translation>
+    </message>
+    <message>
+        <source>Own GRAFCET</source>
+        <translation>GRAFCET proprio</translation>
+    </message>
+    <message>
+        <source>Same as %1</source>
+        <translation>Come %1</translation>
+    </message>
+    <message>
+        <source>Same as mode %1 (no GRAFCET there)</source>
+        <translation>Come il modo %1 (lì nessun GRAFCET)</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this mode: nothing runs there.</source>
+        <translation>%1 è disattivato in questo modo: lì non si esegue nulla.</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlTraceModel</name>
+    <message>
+        <source>mode %1 → %2</source>
+        <extracomment>a unit mode change in one scan: from, to</extracomment>
+        <translation>modo %1 → %2</translation>
+    </message>
+    <message>
+        <source>Execute resumed</source>
+        <translation>Execute ripreso</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>Ciclo</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stato</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modo</translation>
+    </message>
+    <message>
+        <source>Fired</source>
+        <translation>Superata</translation>
+    </message>
+    <message>
+        <source>Dropped</source>
+        <translation>Scartati</translation>
+    </message>
+</context>
+<context>
+    <name>editor::PackmlVariablesPanel</name>
+    <message>
+        <source>Inputs</source>
+        <translation>Ingressi</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Uscite</translation>
     </message>
 </context>
 <context>
@@ -4358,6 +5134,14 @@ Ctrl+Spazio completa un nome.</translation>
         <source>%1_FB (the nested GRAFCET of %1)</source>
         <extracomment>the function block shown: &quot;F1_FB (the nested GRAFCET of F1)&quot;</extracomment>
         <translation>%1_FB (il GRAFCET annidato di %1)</translation>
+    </message>
+    <message>
+        <source>No enabled state runs this GRAFCET: it generates no function block.</source>
+        <translation>Nessuno stato abilitato esegue questo GRAFCET: non genera alcun blocco funzionale.</translation>
+    </message>
+    <message>
+        <source>%1 is disabled in this unit mode: the mode&apos;s state machine has no branch for it.</source>
+        <translation>%1 è disabilitato in questo modo di unità: la macchina a stati del modo non ha un ramo per esso.</translation>
     </message>
 </context>
 <context>
