@@ -10,6 +10,7 @@
 #include "core/templates/packml/packmlscenario.h"
 #include "core/templates/packml/packmlsimulator.h"
 #include "core/templates/packml/packmlverifier.h"
+#include "core/verification/property.h"
 #include "core/verification/verification.h"
 
 #include <catch2/catch.hpp>
@@ -279,4 +280,58 @@ TEST_CASE("The shipped bottle filler: no violation found, undecided because of i
     CHECK_FALSE(result.violated());
     for (const char* never : {"GV130", "GV131", "GV134", "GV135"})
         CHECK_FALSE(findingOf(result, never));
+}
+
+TEST_CASE("The engineer's properties read in <State>, mode <Mode> and <Mode>_<State>.Xn", "[packml-verify]")
+{
+    const auto model = packmltests::loadCapper();
+    VerificationOptions options;
+    options.properties = {
+        "never Cap AND NOT in Execute",             // Cap is driven in Execute only
+        "always Cap -> Production_Execute.X1",      // by its step 1
+        "never mode Manual AND in Held",            // Manual disables Held
+        "never in Execute AND mode Manual",         // Manual's Execute is reachable
+        "never Production_Execute.X2 AND Eject",    // step 2 drives Eject
+        "never in Nowhere",                         // no such state
+    };
+    const VerificationResult result = verifyModel(*model, options);
+    INFO(Catch::Detail::stringify(codesOf(result)));
+    REQUIRE(result.propertyVerdicts.size() == 6);
+    CHECK(result.propertyVerdicts[0].outcome == PropertyOutcome::Holds);
+    CHECK(result.propertyVerdicts[1].outcome == PropertyOutcome::Holds);
+    CHECK(result.propertyVerdicts[2].outcome == PropertyOutcome::Holds);
+    CHECK(result.propertyVerdicts[3].outcome == PropertyOutcome::Violated);
+    CHECK(result.propertyVerdicts[4].outcome == PropertyOutcome::Violated);
+    CHECK(result.propertyVerdicts[5].outcome == PropertyOutcome::Undecided);
+    std::vector<std::string> codes(6);
+    for (const VerificationFinding& f : result.findings)
+        if (f.property >= 0)
+            codes[static_cast<std::size_t>(f.property)] = f.code;
+    CHECK(codes == std::vector<std::string>{"GV121", "GV121", "GV121", "GV120", "GV120", "GV122"});
+    for (const VerificationFinding& f : result.findings)
+        if (f.code == "GV120") {
+            requireReplays(*model, buildPackmlProgram(*model), f);
+            CHECK(verificationElementLabel(f) == "property '" + options.properties[static_cast<std::size_t>(f.property)] + "'");
+        }
+}
+
+TEST_CASE("PackML property names are checked against the program", "[packml-verify]")
+{
+    const auto model = packmltests::loadCapper();
+    CHECK(checkProperty(*model, "never in Execute AND mode Manual").empty());
+    CHECK(checkProperty(*model, "never IN held OR MODE production").empty());
+    const auto codeOf = [&](const std::string& text) {
+        const std::vector<PropertyProblem> problems = checkProperty(*model, text);
+        return problems.empty() ? std::string() : problems.front().code;
+    };
+    CHECK(codeOf("never in Nowhere") == "GP003");
+    CHECK(codeOf("never mode Cleaning") == "GP003");
+    CHECK(codeOf("never Manual_Execute.X1") == "GP004");
+    CHECK(codeOf("never Production_Execute.X9") == "GP005");
+    CHECK(codeOf("never Ghost") == "GP002");
+    CHECK(codeOf("never mode") == "GP002"); // `mode` alone is a variable name
+    // The span of a problem is that of the text as written.
+    const std::vector<PropertyProblem> problems = checkProperty(*model, "never mode Cleaning");
+    REQUIRE(problems.size() == 1);
+    CHECK(problems.front().span.begin == 6);
 }

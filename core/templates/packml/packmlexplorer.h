@@ -85,6 +85,7 @@ public:
     std::vector<std::string> abstractions() const;
     const InputChoices& inputChoices() const { return m_choices; }
     const ScanReference& reference() const { return m_reference; }
+    const PackmlProgram& program() const { return m_start.program(); }
 
     // The inputs of each scan from the start to `node`, then `lastChoice` (if any).
     std::vector<InputChoice> path(std::size_t node) const;

@@ -112,8 +112,11 @@ void InputChoices::classify(const std::vector<std::string>& alwaysRead)
         for (int slot : c.inputs)
             ++readers[slot];
     std::vector<int> shared;
-    for (const std::string& name : alwaysRead)
-        addOnce(shared, m_program.slotOf(name));
+    for (const std::string& name : alwaysRead) {
+        const int slot = m_program.slotOf(name);
+        if (slot >= 0 && m_program.variables[static_cast<std::size_t>(slot)].kind == VariableKind::Input)
+            addOnce(shared, slot);
+    }
     for (const std::string& name : m_program.edgeVariables)
         addOnce(shared, m_program.slotOf(name));
     std::set<std::int64_t> constants{0};

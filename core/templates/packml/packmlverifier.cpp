@@ -4,6 +4,8 @@
 #include "core/templates/packml/packmlcounterexample.h"
 #include "core/templates/packml/packmldiagnostics.h"
 #include "core/templates/packml/packmlexplorer.h"
+#include "core/templates/packml/packmlproperty.h"
+#include "core/verification/bothlayers.h"
 
 #include <algorithm>
 #include <deque>
@@ -31,14 +33,21 @@ public:
     PackmlVerifier(const Model& model, PackmlProgram program, const VerificationOptions& options)
         : m_model(model)
         , m_configuration(*model.packml())
-        , m_explorer(model, std::move(program), limits(options))
+        , m_texts(propertiesToCheck(model, options))
+        , m_explorer(model, std::move(program), limits(options, m_texts, m_properties))
     {
+        for (const std::string& text : m_texts) {
+            m_problems.push_back(checkPackmlProperty(model, text));
+            m_properties.push_back(parsePackmlProperty(text, m_explorer.program()));
+        }
     }
 
     VerificationResult run();
 
 private:
-    static ExplorerLimits limits(const VerificationOptions& options);
+    ExplorerLimits limits(const VerificationOptions& options, const std::vector<std::string>& texts,
+                          const std::vector<PackmlProperty>& properties) const;
+    void reportProperties();
     std::string modeName(int number) const;
     VerificationFinding finding(const std::string& code, std::string message, Diagnostic location) const;
     Diagnostic modeLocation(int mode, std::optional<State> state, const std::string& code, const std::string& message) const;
@@ -52,13 +61,32 @@ private:
 
     const Model& m_model;
     const Configuration& m_configuration;
+    std::vector<std::string> m_texts;               // the model's properties, then the options'
+    std::vector<std::vector<PropertyProblem>> m_problems; // per property: why it cannot be checked
+    std::vector<PackmlProperty> m_properties;
     PackmlExplorer m_explorer;
     VerificationResult m_result;
 };
 
-ExplorerLimits PackmlVerifier::limits(const VerificationOptions& options)
+ExplorerLimits PackmlVerifier::limits(const VerificationOptions& options, const std::vector<std::string>& texts,
+                                      const std::vector<PackmlProperty>& properties) const
 {
     ExplorerLimits limits;
+    // The properties are parsed once the explorer's program exists; the
+    // callback reads them when the run starts.
+    for (const std::string& text : texts) {
+        const ParsedProperty parsed = parseProperty(text);
+        for (const cond::Node& node : parsed.expression.nodes)
+            if (node.kind == cond::NodeKind::Variable)
+                limits.alwaysRead.push_back(node.text);
+    }
+    limits.violatedProperties = [this, &properties](const PackmlSimulator& simulator) {
+        std::vector<int> violated;
+        for (std::size_t i = 0; i < properties.size(); ++i)
+            if (m_problems[i].empty() && packmlPropertyViolated(properties[i], simulator))
+                violated.push_back(static_cast<int>(i));
+        return violated;
+    };
     limits.maxStates = std::min(options.maxProgramStates, kMaxExploredConfigurations);
     if (options.timeLimit.count() > 0)
         limits.deadline = std::chrono::steady_clock::now() + options.timeLimit;
@@ -238,6 +266,64 @@ void PackmlVerifier::reportUndecided()
                                                                 message, {}})));
 }
 
+void PackmlVerifier::reportProperties()
+{
+    const bool exact = m_explorer.exhaustive() && m_explorer.abstractions().empty();
+    for (std::size_t i = 0; i < m_texts.size(); ++i) {
+        const std::string& text = m_texts[i];
+        VerificationFinding f;
+        f.property = static_cast<int>(i);
+        f.arguments = {text};
+        f.origin = FindingOrigin::PackML;
+        f.location = modelDiagnostic(Finding{"", Severity::Info, "", "", {text}});
+        PropertyVerdict verdict;
+        const auto witness = std::find_if(m_explorer.witnesses().begin(), m_explorer.witnesses().end(),
+                                          [&](const ExploredWitness& w) { return w.property == static_cast<int>(i); });
+        if (!m_problems[i].empty()) {
+            f.code = core::verification::kPropertyUnusable;
+            f.severity = Severity::Warning;
+            f.message = "the property cannot be checked: " + m_problems[i].front().message;
+            verdict.reason = f.message;
+        } else if (witness != m_explorer.witnesses().end()) {
+            f.code = core::verification::kPropertyViolated;
+            f.severity = Severity::Error;
+            f.message = "the property is violated at the end of a reachable scan";
+            const ExploredNode& from = m_explorer.nodes()[witness->node];
+            const InputChoice choice = m_explorer.inputChoices().choices(from.simulator)[witness->choice];
+            PackmlSimulator after = from.simulator;
+            const int mode = PackmlExplorer::runScan(after, choice).mode;
+            f.counterexample = counterexampleTo(witness->node, std::vector<InputChoice>{choice},
+                                                f.code + ": property '" + text + "' violated", mode);
+            if (const std::optional<Replay> replayed = replay(m_explorer.nodes().front().simulator, *f.counterexample))
+                f.counterexample->confirmed = packmlPropertyViolated(m_properties[i], replayed->after);
+            if (f.counterexample->confirmed) {
+                verdict.outcome = PropertyOutcome::Violated;
+            } else {
+                f.severity = Severity::Info;
+                f.message += " (not confirmed: its counterexample does not replay to it in the simulator)";
+                verdict.reason = "its counterexample does not replay";
+            }
+        } else if (exact) {
+            f.code = core::verification::kPropertyHolds;
+            f.severity = Severity::Info;
+            f.message = "the property holds at the end of every reachable scan";
+            verdict.outcome = PropertyOutcome::Holds;
+        } else {
+            f.code = core::verification::kPropertyUndecided;
+            f.severity = Severity::Warning;
+            f.message = "the property was neither proved nor shown violated: the exploration was not exhaustive (GV100)";
+            verdict.reason = "the exploration was not exhaustive";
+        }
+        f.location->code = f.code;
+        f.location->severity = f.severity;
+        f.location->message = f.message;
+        m_result.properties.push_back(text);
+        m_result.propertyHolds.push_back(verdict.outcome == PropertyOutcome::Holds);
+        m_result.propertyVerdicts.push_back(verdict);
+        m_result.findings.push_back(std::move(f));
+    }
+}
+
 VerificationResult PackmlVerifier::run()
 {
     m_explorer.run();
@@ -250,6 +336,7 @@ VerificationResult PackmlVerifier::run()
         if (witness.property < 0)
             reportWitness(witness);
     const bool exact = m_explorer.exhaustive() && m_explorer.abstractions().empty();
+    reportProperties();
     if (exact) {
         reportStuck();
         reportNeverActive();
