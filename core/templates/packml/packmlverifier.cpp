@@ -144,10 +144,11 @@ void PackmlVerifier::reportWitness(const ExploredWitness& witness)
     PackmlSimulator after = from.simulator;
     const PackmlScanRecord record = PackmlExplorer::runScan(after, choice);
     const bool located = s.code == verification::kDisabledStateActive;
-    const std::string message = modeName(s.mode) + ": " + s.message;
+    const std::string& message = s.message; // the location names the mode
     VerificationFinding f = finding(s.code, message, modeLocation(s.mode, located ? std::optional<State>(s.state) : std::nullopt,
                                                                  s.code, message));
-    f.counterexample = counterexampleTo(witness.node, std::vector<InputChoice>{choice}, s.code + ": " + message, record.mode);
+    f.counterexample = counterexampleTo(witness.node, std::vector<InputChoice>{choice},
+                                        s.code + ": " + modeName(s.mode) + ": " + message, record.mode);
     // Confirmed when the scenario replays to the same violation.
     if (const std::optional<Replay> replayed = replay(m_explorer.nodes().front().simulator, *f.counterexample)) {
         for (const ScanFinding& again : checkScan(m_explorer.reference(), replayed->ghost, replayed->facts))
@@ -194,13 +195,12 @@ void PackmlVerifier::reportStuck()
             continue;
         const bool aborting = s.state() == State::Aborting;
         const std::string code = aborting ? verification::kAbortingStuck : verification::kStuckGrafcet;
-        const std::string message = modeName(s.mode()) + ": "
-            + (aborting ? std::string("Aborting can reach a situation from which Aborted is never reached: nothing leaves it")
+        const std::string message = (aborting ? std::string("Aborting can reach a situation from which Aborted is never reached: nothing leaves it")
                         : std::string(stateName(s.state())) + "'s GRAFCET can reach a situation from which Complete never "
                               "becomes TRUE: only Stop or Abort leave it");
         VerificationFinding f = finding(code, message, modeLocation(s.mode(), aborting ? std::nullopt : std::optional(s.state()),
                                                                      code, message));
-        f.counterexample = counterexampleTo(n, {}, code + ": " + message, s.mode());
+        f.counterexample = counterexampleTo(n, {}, code + ": " + modeName(s.mode()) + ": " + message, s.mode());
         if (f.counterexample->scans == 0) {
             f.counterexample.reset();
         } else if (const std::optional<Replay> replayed = replay(nodes.front().simulator, *f.counterexample)) {
@@ -229,8 +229,7 @@ void PackmlVerifier::reportNeverActive()
         for (State state : m_explorer.reference().enabled(mode.number).list()) {
             if (reached.count({mode.number, state}))
                 continue;
-            const std::string message = modeName(mode.number) + ": " + std::string(stateName(state))
-                + " is enabled but never active in this mode";
+            const std::string message = std::string(stateName(state)) + " is enabled but never active in this mode";
             m_result.findings.push_back(finding(verification::kNeverActive, message,
                                                 modeLocation(mode.number, state, verification::kNeverActive, message)));
         }
