@@ -71,6 +71,10 @@ PackmlExplorer::PackmlExplorer(const Model& model, PackmlProgram program, Explor
 std::vector<std::string> PackmlExplorer::abstractions() const
 {
     std::vector<std::string> list = m_choices.abstractions();
+    if (m_truncated) {
+        list.push_back("some configuration reads more inputs than " + std::to_string(InputChoices::kMaxChoices)
+                       + " ways of setting them: only the first were explored");
+    }
     if (m_timers && !m_limits.exactTime) {
         list.push_back("time is counted in scans of the model's cycle time: a TON elapses when it would at that cycle, "
                        "not at a longer or varying one");
@@ -145,13 +149,19 @@ void PackmlExplorer::run()
     while (!queue.empty()) {
         const std::size_t index = queue.front();
         queue.pop_front();
-        const std::vector<InputChoice> choices = m_choices.choices(m_nodes[index].simulator);
+        bool truncated = false;
+        const std::vector<InputChoice> choices = m_choices.choices(m_nodes[index].simulator, &truncated);
         if (m_nodes[index].simulator.fault())
             continue; // the PLC stopped: no scan follows
+        if (truncated) {
+            m_exhaustive = false;
+            m_truncated = true;
+        }
         for (std::uint32_t c = 0; c < choices.size(); ++c) {
             ++m_scans;
             if (outOfBudget()) {
                 m_exhaustive = false;
+                m_budgetReached = true;
                 return;
             }
             next = m_nodes[index].simulator; // assigned, not copied: its buffers are reused
@@ -185,6 +195,7 @@ void PackmlExplorer::run()
                 continue;
             if (m_nodes.size() >= m_limits.maxStates) {
                 m_exhaustive = false;
+                m_budgetReached = true;
                 return;
             }
             const std::uint32_t depth = m_nodes[index].depth + 1;

@@ -80,6 +80,7 @@ public:
     const std::set<Command>& firedCommands() const { return m_firedCommands; }
     const std::set<std::pair<int, State>>& reached() const { return m_reached; }
     bool exhaustive() const { return m_exhaustive; }
+    bool budgetReached() const { return m_budgetReached; }
     bool cancelled() const { return m_cancelled; }
     std::size_t maxDepth() const { return m_maxDepth; }
     std::vector<std::string> abstractions() const;
@@ -109,6 +110,8 @@ private:
     bool m_exhaustive = true;
     bool m_cancelled = false;
     bool m_timers = false;
+    bool m_truncated = false;
+    bool m_budgetReached = false;
     std::size_t m_maxDepth = 0;
     std::size_t m_scans = 0;
 };

@@ -311,8 +311,10 @@ InputChoices::Assignments InputChoices::assignments(const Condition& c, const Pa
     return result;
 }
 
-std::vector<InputChoice> InputChoices::choices(const PackmlSimulator& simulator) const
+std::vector<InputChoice> InputChoices::choices(const PackmlSimulator& simulator, bool* truncated) const
 {
+    if (truncated)
+        *truncated = false;
     const State state = simulator.state();
     const auto& accepted = m_accepted[static_cast<std::size_t>(state)];
     const auto& grantable = m_grantable[static_cast<std::size_t>(state)];
@@ -366,9 +368,13 @@ std::vector<InputChoice> InputChoices::choices(const PackmlSimulator& simulator)
         if (values.empty())
             continue; // CntrlCmd, UnitMode: the requests set them
         std::vector<InputChoice> next;
-        next.reserve(shared.size() * values.size());
         for (const InputChoice& partial : shared)
             for (const cond::Value& value : values) {
+                if (next.size() == kMaxChoices) {
+                    if (truncated)
+                        *truncated = true;
+                    break;
+                }
                 next.push_back(partial);
                 next.back().push_back({slot, value});
             }
@@ -376,10 +382,14 @@ std::vector<InputChoice> InputChoices::choices(const PackmlSimulator& simulator)
     }
 
     std::vector<InputChoice> result;
-    result.reserve(commandEvents.size() * modeEvents.size() * shared.size());
     for (const InputChoice& command : commandEvents)
         for (const InputChoice& mode : modeEvents)
             for (const InputChoice& inputs : shared) {
+                if (result.size() == kMaxChoices) {
+                    if (truncated)
+                        *truncated = true;
+                    return result;
+                }
                 InputChoice choice = base;
                 for (const InputChoice* part : {&command, &mode, &inputs})
                     for (const InputValue& v : *part)

@@ -46,7 +46,9 @@ public:
     // engineer's properties), by name.
     InputChoices(const PackmlProgram& program, const std::vector<std::string>& alwaysRead);
 
-    std::vector<InputChoice> choices(const PackmlSimulator& simulator) const;
+    // At most kMaxChoices; `truncated` (when given) is set when there were more.
+    std::vector<InputChoice> choices(const PackmlSimulator& simulator, bool* truncated = nullptr) const;
+    static constexpr std::size_t kMaxChoices = 4096;
 
     // What makes the enumeration less than every value (English), empty when exact.
     const std::vector<std::string>& abstractions() const { return m_abstractions; }

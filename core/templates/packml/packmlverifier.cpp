@@ -251,7 +251,7 @@ void PackmlVerifier::reportNeverAccepted()
 void PackmlVerifier::reportUndecided()
 {
     std::string why;
-    if (m_explorer.nodes().size() >= kMaxExploredConfigurations || !m_explorer.exhaustive())
+    if (m_explorer.budgetReached())
         why = "the exploration stopped at its budget (" + std::to_string(m_explorer.nodes().size())
               + " configurations, or the time limit) before it had seen every configuration";
     for (const std::string& abstraction : m_explorer.abstractions())
