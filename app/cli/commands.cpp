@@ -77,6 +77,8 @@ const char* const kUsage =
     "      Each property ends as holds, violated or undecided. Exit 1 when a finding is an\n"
     "      error or a warning (a property violated), else 3 when something is undecided (a\n"
     "      property, or a claim whose run does not replay); 2 when a file cannot be written.\n"
+    "      A PackML model: GV130-GV138 (docs/packml.md); --promela and --complete-automatic\n"
+    "      are for GEMMA models.\n"
     "\n"
     "Formats: IN is recognised by its content. OUT is GG-Generator JSON when it ends in\n"
     ".gg.json, GG Studio JSON otherwise; --to overrides the extension. OUT - is standard\n"

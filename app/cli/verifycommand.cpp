@@ -209,9 +209,17 @@ int commandVerify(const Arguments& args, Streams streams)
                     << lineEnd << "Try 'ggstudio-cli --help'." << lineEnd;
         return UsageError;
     }
-    core::LoadedModel loaded = loadAndReport(path, streams.err);
+    core::LoadedModel loaded = loadAndReport(path, streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!loaded.ok())
         return UnreadableInput;
+    if (loaded.model->templateKind() == core::TemplateKind::PackML) {
+        for (const char* option : {"--complete-automatic", "--promela"})
+            if (args.value(option)) {
+                streams.err << "ggstudio-cli: " << option << " is not available for PackML models" << lineEnd
+                            << "Try 'ggstudio-cli --help'." << lineEnd;
+                return UsageError;
+            }
+    }
     std::vector<std::string> automatic;
     if (const std::optional<std::string> value = args.value("--complete-automatic")) {
         std::optional<std::vector<std::string>> steps = parseCompleteAutomatic(*value, *loaded.model, streams.err);
@@ -283,9 +291,11 @@ int commandVerify(const Arguments& args, Streams streams)
     for (const std::string& abstraction : result.abstractions)
         streams.out << path << ": abstracted: " << abstraction << lineEnd;
     printPropertyVerdicts(path, result, streams.out);
-    streams.out << path << ": " << result.reachableSteps.size() << " reachable steps, " << result.configurations
-                << " reachable configurations, ";
-    if (result.bothLayers)
+    streams.out << path << ": ";
+    if (loaded.model->templateKind() == core::TemplateKind::Gemma)
+        streams.out << result.reachableSteps.size() << " reachable steps, ";
+    streams.out << result.configurations << " reachable configurations, ";
+    if (result.bothLayers && loaded.model->templateKind() == core::TemplateKind::Gemma)
         streams.out << result.programStates << " program states (both layers), ";
     streams.out << result.findings.size() << " finding(s)" << (result.exhaustive ? "" : " (not exhaustive)");
     if (!automatic.empty())

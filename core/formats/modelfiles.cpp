@@ -72,7 +72,7 @@ std::string unsupportedModelMessage(const Model& model, TemplateSupport support)
     if (model.templateKind() == TemplateKind::Gemma || support == TemplateSupport::GemmaAndPackML)
         return {};
     return "a PackML model (format 3.0); GG Studio does not handle PackML models here yet (ggstudio-cli new, "
-           "convert, validate, export, st and simulate do)";
+           "convert, validate, export, st, simulate and verify do)";
 }
 
 LoadedModel loadSupportedModelFile(const std::string& path, TemplateSupport support)

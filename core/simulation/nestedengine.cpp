@@ -132,7 +132,8 @@ std::vector<NestedTimerState> NestedEngine::timers() const
     std::vector<NestedTimerState> states;
     for (std::size_t i = 0; i < m_timers.size(); ++i) {
         const NestedTimer& timer = m_grafcet->timers[i];
-        states.push_back({timer.name, timer.step, timer.durationMs, m_timers[i].elapsed, m_timers[i].q});
+        states.push_back({timer.name, timer.step, timer.durationMs, m_timers[i].elapsed, m_timers[i].q,
+                          m_timers[i].running, m_timers[i].start});
     }
     return states;
 }

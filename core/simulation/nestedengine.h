@@ -43,6 +43,10 @@ struct NestedTimerState {
     std::int64_t durationMs = 0;
     std::int64_t elapsedMs = 0; // ET
     bool done = false;          // Q
+    // IN was TRUE at the last call and startMs is when it rose: what the
+    // PackML verifier needs to tell two paused situations apart.
+    bool running = false;
+    std::int64_t startMs = 0;
 };
 
 enum class NestedTransitionStatus {

@@ -4,6 +4,7 @@
 #include "core/condition/conditionparser.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
+#include "core/templates/packml/packmlproperty.h"
 
 #include <cctype>
 
@@ -103,6 +104,8 @@ std::string propertyStepId(const Model& model, std::string_view written)
 
 std::vector<PropertyProblem> checkProperty(const Model& model, std::string_view text)
 {
+    if (model.templateKind() == TemplateKind::PackML)
+        return packml::checkPackmlProperty(model, text);
     const ParsedProperty parsed = parseProperty(text);
     if (!parsed.ok()) {
         PropertyProblem syntax = problem(parsed.error->span, property::kSyntax, parsed.error->message);

@@ -1,5 +1,7 @@
 #include "core/verification/verification.h"
 
+#include "core/templates/packml/packmlverifier.h"
+
 #include "core/verification/bothlayers.h"
 
 #include "core/model/model.h"
@@ -1144,6 +1146,8 @@ bool VerificationResult::undecided() const
 
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options)
 {
+    if (model.templateKind() == TemplateKind::PackML)
+        return packml::verifyPackmlModel(model, options);
     // One time limit for the whole run, both layers included.
     const auto deadline = options.timeLimit.count() > 0 ? std::chrono::steady_clock::now() + options.timeLimit
                                                          : std::chrono::steady_clock::time_point::max();

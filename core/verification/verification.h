@@ -111,6 +111,7 @@ enum class FindingOrigin {
     GemmaLayer,     // the GEMMA layer alone, Complete free or automatic (verification.cpp)
     GemmaLayerKept, // the same, kept on a model whose both layers were explored: its run may not exist there
     BothLayers,     // the exploration of both layers (bothlayers.cpp), under its abstractions
+    PackML,         // the exploration of a PackML program (core/templates/packml/packmlverifier.h)
 };
 
 struct VerificationFinding {
@@ -129,6 +130,9 @@ struct VerificationFinding {
     // VerificationOptions::properties); -1 otherwise.
     int property = -1;
     FindingOrigin origin = FindingOrigin::GemmaLayer;
+    // PackML models: where the finding points, as the checks' diagnostics
+    // do (Target Mode, ModeState or Command); unset for GEMMA models.
+    std::optional<Diagnostic> location;
 };
 
 // What a run decided about one of the engineer's properties.

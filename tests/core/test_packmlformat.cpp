@@ -322,7 +322,7 @@ TEST_CASE("Files the editor and the CLI open refuse a PackML model for now", "[p
     CHECK(unsupportedModelMessage(gemma).empty());
     CHECK(unsupportedModelMessage(packml::newModel())
           == "a PackML model (format 3.0); GG Studio does not handle PackML models here yet (ggstudio-cli new, "
-             "convert, validate, export, st and simulate do)");
+             "convert, validate, export, st, simulate and verify do)");
     CHECK(unsupportedModelMessage(packml::newModel(), TemplateSupport::GemmaAndPackML).empty());
 
     const std::string path = kFillerFile.string();

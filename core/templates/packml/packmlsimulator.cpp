@@ -74,7 +74,7 @@ struct PackmlSimulator::Compiled {
     int cntrlCmd = -1, cmdChangeRequest = -1, unitMode = -1, unitModeChangeRequest = -1;
     int stateCurrent = -1, unitModeCurrent = -1;
 
-    explicit Compiled(const Model& model);
+    Compiled(const Model& model, PackmlProgram built);
     int slot(std::string_view name) const
     {
         const auto found = slotByUpperName.find(toUpperAscii(name));
@@ -98,8 +98,8 @@ struct PackmlSimulator::Compiled {
     }
 };
 
-PackmlSimulator::Compiled::Compiled(const Model& model)
-    : program(buildPackmlProgram(model))
+PackmlSimulator::Compiled::Compiled(const Model& model, PackmlProgram built)
+    : program(std::move(built))
     , cycleTimeMs(model.settings().cycleTimeMs)
 {
     for (std::size_t slot = 0; slot < program.variables.size(); ++slot) {
@@ -145,7 +145,12 @@ struct PackmlSimulator::Events {
 };
 
 PackmlSimulator::PackmlSimulator(const Model& model)
-    : m_compiled(std::make_shared<const Compiled>(model))
+    : PackmlSimulator(model, buildPackmlProgram(model))
+{
+}
+
+PackmlSimulator::PackmlSimulator(const Model& model, PackmlProgram built)
+    : m_compiled(std::make_shared<const Compiled>(model, std::move(built)))
 {
     const Compiled* shared = m_compiled.get();
     const std::function<int(std::string_view)> slotOf = [shared](std::string_view name) { return shared->slot(name); };
@@ -233,6 +238,13 @@ Status PackmlSimulator::setInput(std::string_view name, const cond::Value& value
     const int slot = m_compiled->slot(name);
     if (slot < 0)
         return Status::failure("simulation.unknown-variable", "no variable is named '" + std::string(name) + "'");
+    return setInput(slot, value);
+}
+
+Status PackmlSimulator::setInput(int slot, const cond::Value& value)
+{
+    if (slot < 0 || static_cast<std::size_t>(slot) >= m_values.size())
+        return Status::failure("simulation.unknown-variable", "no variable has slot " + std::to_string(slot));
     const Variable& variable = program().variables[static_cast<std::size_t>(slot)];
     if (variable.kind != VariableKind::Input)
         return Status::failure("simulation.not-an-input", variable.name + " is not an input: the program writes it");

@@ -43,6 +43,10 @@ class PackmlSimulator {
 public:
     // Builds the program of a PackML model; keeps no reference to the model.
     explicit PackmlSimulator(const Model& model);
+    // Runs `program` instead of the model's own (the verifier's tests run
+    // deliberately wrong programs to show that its checks see them); the
+    // model gives the cycle time and the mode-change lists of drop reasons.
+    PackmlSimulator(const Model& model, PackmlProgram program);
 
     // Spec §6.5's start: initial state and mode, Entry TRUE, Resume FALSE,
     // every R_TRIG memory FALSE, variables at their defaults, scan count 0.
@@ -54,6 +58,7 @@ public:
     // changes and the Status says why.
     Status setInput(std::string_view name, const cond::Value& value);
     Status setInputText(std::string_view name, std::string_view text); // "TRUE", "9"
+    Status setInput(int slot, const cond::Value& value); // by PackmlProgram::variables slot
 
     // The integer division or MOD by zero that stopped the run, as the PLC's
     // task stops on it (nullopt while running): in a command or request
@@ -67,6 +72,14 @@ public:
     bool entry() const { return m_entry; }
     bool resume() const { return m_resume; }
     std::int64_t scanCount() const { return m_scanCount; }
+    // The R_TRIG memories (what the last scan's CLK was), for the verifier:
+    // by PackmlProgram::commands index, by PackmlProgram::modes index.
+    bool commandMemory(std::size_t command) const { return m_commandMemory[command] != 0; }
+    bool requestMemory(std::size_t modeIndex) const { return m_requestMemory[modeIndex] != 0; }
+    bool cmdChangeMemory() const { return m_cmdChangeMemory; }
+    bool modeChangeMemory() const { return m_modeChangeMemory; }
+    // <V>_PREV of an edge variable by slot.
+    bool previous(int slot) const { return m_previous[static_cast<std::size_t>(slot)] != 0; }
     std::int64_t simulatedTimeMs() const;
 
     // Variables by slot (PackmlProgram::variables order) or name (ignoring case).

@@ -1,0 +1,119 @@
+#pragma once
+
+// Explores a PackML program scan by scan (spec packml.md §8,
+// docs/packml.md "Verification"): every configuration the program can reach
+// from its start, with the inputs free (packmlinputchoices.h). The scans are
+// run by the simulator itself (one scan exactly, §6.5), so every path found
+// is a run the simulator replays. A configuration is everything the next
+// scans depend on: State, Mode, Entry, Resume, the R_TRIG memories, the
+// <V>_PREV memories, the variables the program writes, the situation of the
+// instance that runs (and of Execute while it is paused) with its TONs as
+// time since they started (capped at their duration), and the pause ghost
+// of the GV138 check. Inputs are not part of it: they are set before every
+// scan. Time is counted in scans of the model's cycle time: a TON elapses
+// when the PLC's would at that cycle (an abstraction the result names).
+
+#include "core/templates/packml/packmlinputchoices.h"
+#include "core/templates/packml/packmlscanchecks.h"
+#include "core/templates/packml/packmlsimulator.h"
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace core::packml {
+
+struct ExplorerLimits {
+    std::size_t maxStates = 200'000;
+    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+    std::function<bool()> cancelled;
+    // VerificationOptions::exactTime: time counted in scans of the cycle
+    // time is the semantics asked for, not an abstraction.
+    bool exactTime = false;
+    // Variables read at the end of every scan (the engineer's properties).
+    std::vector<std::string> alwaysRead;
+    // Called after every scan with the simulator as it ended; a true result
+    // records a witness of the property with that index (ExploredWitness::property).
+    std::function<std::vector<int>(const PackmlSimulator&)> violatedProperties;
+};
+
+struct ExploredEdge {
+    std::uint32_t from = 0, to = 0;
+    std::uint32_t choice = 0; // index into the choices of `from`
+    bool stays = false;       // no transition fired and the mode did not change
+    bool completes = false;   // an SC transition fired
+};
+
+// The first scan that shows a finding (or a property's violation).
+struct ExploredWitness {
+    ScanFinding finding;
+    int property = -1; // an engineer's property (finding.code empty)
+    std::size_t node = 0;      // the configuration the scan starts from
+    std::uint32_t choice = 0;
+};
+
+struct ExploredNode {
+    PackmlSimulator simulator;
+    PauseGhost ghost;
+    std::uint32_t parent = 0;
+    std::uint32_t parentChoice = 0;
+    std::uint32_t depth = 0;
+};
+
+class PackmlExplorer {
+public:
+    // Explores `program` (the model's, or one built wrong for a test); the
+    // checks compare with the model's configuration.
+    PackmlExplorer(const Model& model, PackmlProgram program, ExplorerLimits limits);
+
+    void run();
+
+    const std::vector<ExploredNode>& nodes() const { return m_nodes; }
+    const std::vector<ExploredEdge>& edges() const { return m_edges; }
+    const std::vector<ExploredWitness>& witnesses() const { return m_witnesses; }
+    // Commands that fired in some scan; (mode, state) pairs and modes active at the end of one.
+    const std::set<Command>& firedCommands() const { return m_firedCommands; }
+    const std::set<std::pair<int, State>>& reached() const { return m_reached; }
+    bool exhaustive() const { return m_exhaustive; }
+    bool budgetReached() const { return m_budgetReached; }
+    bool cancelled() const { return m_cancelled; }
+    std::size_t maxDepth() const { return m_maxDepth; }
+    std::vector<std::string> abstractions() const;
+    const InputChoices& inputChoices() const { return m_choices; }
+    const ScanReference& reference() const { return m_reference; }
+    const PackmlProgram& program() const { return m_start.program(); }
+
+    // The inputs of each scan from the start to `node`, then `lastChoice` (if any).
+    std::vector<InputChoice> path(std::size_t node) const;
+    // Runs one scan of `simulator` with `choice` set: the record and whether every value applied.
+    static PackmlScanRecord runScan(PackmlSimulator& simulator, const InputChoice& choice);
+
+private:
+    std::string key(const PackmlSimulator& simulator, const PauseGhost& ghost) const;
+    bool outOfBudget();
+
+    PackmlSimulator m_start;
+    ScanReference m_reference;
+    InputChoices m_choices;
+    ExplorerLimits m_limits;
+    std::vector<ExploredNode> m_nodes;
+    std::vector<ExploredEdge> m_edges;
+    std::vector<ExploredWitness> m_witnesses;
+    std::set<std::string> m_witnessKeys;
+    std::set<Command> m_firedCommands;
+    std::set<std::pair<int, State>> m_reached;
+    bool m_exhaustive = true;
+    bool m_cancelled = false;
+    bool m_timers = false;
+    bool m_truncated = false;
+    bool m_budgetReached = false;
+    std::size_t m_maxDepth = 0;
+    std::size_t m_scans = 0;
+};
+
+} // namespace core::packml

@@ -1,0 +1,34 @@
+#pragma once
+
+// Verifies a PackML model (spec packml.md §8, docs/packml.md
+// "Verification"): explores its program (packmlexplorer.h) and turns what
+// the exploration saw into findings GV130-GV138, each one that claims a
+// reachable violation with a scenario replayed in the PackmlSimulator to
+// confirm it. A "never" claim (GV130, GV131, GV134, GV135, and the absence
+// of an error) is made only when the exploration was exhaustive and exact;
+// otherwise GV100 says what is undecided and why.
+
+#include "core/templates/packml/packmlprogram.h"
+#include "core/verification/verification.h"
+
+namespace core::packml {
+
+VerificationResult verifyPackmlModel(const Model& model, const VerificationOptions& options = {});
+
+// The same on `program` instead of the model's own: the tests show with
+// programs built wrong on purpose that the checks see what they claim to.
+VerificationResult verifyPackmlProgram(const Model& model, PackmlProgram program, const VerificationOptions& options = {});
+
+namespace verification {
+inline constexpr const char* kStuckGrafcet = "GV130";        // error: mode, acting state
+inline constexpr const char* kAbortingStuck = "GV131";       // error: mode
+inline constexpr const char* kDisabledStateActive = "GV132"; // error: mode, state
+inline constexpr const char* kModeChangeOutside = "GV133";   // error: mode
+inline constexpr const char* kNeverActive = "GV134";         // warning: mode, state; or mode
+inline constexpr const char* kNeverAccepted = "GV135";       // warning: command
+inline constexpr const char* kOutputOnAbort = "GV136";       // error: mode
+inline constexpr const char* kStoredOutputOnAbort = "GV137"; // info: mode
+inline constexpr const char* kExecuteEntry = "GV138";        // error: mode
+} // namespace verification
+
+} // namespace core::packml
