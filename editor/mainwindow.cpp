@@ -792,9 +792,8 @@ void MainWindow::applyTemplate()
     for (QAction* gemmaOnly : {m_hideSelectionAction, m_showSelectionAction, m_showHiddenAction,
                                m_exportActions->ggGeneratorAction()})
         gemmaOnly->setVisible(!packml);
-    // Not yet for a PackML model in the window: the command line simulates and verifies it.
-    for (QAction* gemmaOnly : {m_verifyAction, m_exportActions->specificationAction()})
-        gemmaOnly->setEnabled(!packml);
+    // Not yet for a PackML model: its specification PDF.
+    m_exportActions->specificationAction()->setEnabled(!packml);
     applyEditingLock();
 }
 
@@ -1449,10 +1448,13 @@ void MainWindow::replayCounterexample(int findingIndex)
     const core::VerificationFinding* finding = m_verification->finding(findingIndex);
     if (!finding || !finding->counterexample)
         return;
-    m_session->setActive(true);
     QString error;
     const QString name = tr("%1 counterexample").arg(QString::fromStdString(finding->code));
-    if (!m_session->startReplayText(finding->counterexample->text, name, &error)) {
+    const bool started = isPackml() ? (m_packmlSession->setActive(true),
+                                       m_packmlSession->startReplayText(finding->counterexample->text, name, &error))
+                                    : (m_session->setActive(true),
+                                       m_session->startReplayText(finding->counterexample->text, name, &error));
+    if (!started) {
         QMessageBox box(QMessageBox::Warning, tr("Replay in Simulator"), tr("Could not replay %1.").arg(name),
                         QMessageBox::Ok, this);
         box.setInformativeText(error);
@@ -1461,8 +1463,8 @@ void MainWindow::replayCounterexample(int findingIndex)
     }
     // Paused at scan 0, like a replay from the Simulation dock: F10 steps, Run plays the rest.
     ensureDocksReady();
-    m_simulationDock->show();
-    m_simulationDock->raise();
+    simulationDock()->show();
+    simulationDock()->raise();
     // A finding about a nested GRAFCET happens on its tab: watched from the
     // start, and in front again when the replay reaches the situation.
     m_replayedGrafcet = QString::fromStdString(finding->gemmaStep);

@@ -53,6 +53,11 @@ VerificationRunner::VerificationRunner(Document* document, SimulationSession* se
     connect(m_document, &Document::variableChanged, this, &VerificationRunner::onModelChanged);
     connect(m_document, &Document::variablesChanged, this, &VerificationRunner::onModelChanged);
     connect(m_document, &Document::settingsChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::grafcetChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::packmlSettingsChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::commandChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::modesChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::modeChanged, this, &VerificationRunner::onModelChanged);
     if (m_session) {
         // Complete modes change with the user's choice, a reset or a replay,
         // each followed by inputsChanged(); they exist while the mode is active.

@@ -104,8 +104,23 @@ ElementRef elementRef(const std::string& id)
     return text.contains(QLatin1String("->")) ? ElementRef::transition(text) : ElementRef::step(text);
 }
 
+// A PackML finding points where the checks' diagnostics do: a mode, a
+// state in a mode, a command.
+ElementRef packmlElementRef(const core::Diagnostic& location)
+{
+    using Target = core::Diagnostic::Target;
+    switch (location.target) {
+    case Target::Mode: return ElementRef::packmlMode(location.mode);
+    case Target::ModeState: return ElementRef::packmlState(QString::fromStdString(location.state), location.mode);
+    case Target::Command: return ElementRef::packmlCommand(QString::fromStdString(location.element));
+    default: return {};
+    }
+}
+
 ElementRef firstElementRef(const core::VerificationFinding* finding)
 {
+    if (finding && finding->location)
+        return packmlElementRef(*finding->location);
     return finding && !finding->elements.empty() ? elementRef(finding->elements.front()) : ElementRef{};
 }
 

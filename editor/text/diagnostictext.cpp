@@ -1,4 +1,5 @@
 #include "editor/text/diagnostictext.h"
+#include "editor/text/packmlverificationtext.h"
 
 #include "editor/stdstring.h"
 #include "editor/text/conditionerrortext.h"
@@ -541,6 +542,12 @@ QString unconfirmedReason(const core::VerificationFinding& f)
 // Transitions named as everywhere else in the editor ("F1 → A2").
 QString verificationText(const core::VerificationFinding& finding)
 {
+    if (QString packml = packmlVerificationText(finding); !packml.isEmpty()) {
+        if (finding.counterexample && !finding.counterexample->confirmed)
+            packml += QLatin1Char(' ')
+                      + DiagnosticText::tr("Not confirmed: its counterexample does not replay to it in the simulator.");
+        return packml;
+    }
     QString text = withTransitionLabels(translatedFinding(finding));
     if (text.isEmpty()) {
         text = withTransitionLabels(fromStd(finding.message));

@@ -16,7 +16,10 @@
 #include "editor/grafcet/grafcetscene.h"
 #include "editor/grafcet/grafcetview.h"
 #include "editor/mainwindow.h"
+#include "editor/docks/verificationpanel.h"
 #include "editor/selection.h"
+#include "editor/text/diagnostictext.h"
+#include "editor/verificationrunner.h"
 #include "editor/simulation/packml/packmlsimulationsession.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/window/newmodeldialog.h"
@@ -84,6 +87,7 @@ private slots:
     void structuredTextIsThePackmlProgramAndFollowsTheState();
     void resetKeepsTheTemplateAndItsEdition();
     void simulateRunsThePackmlSimulation();
+    void verifyFindsAStuckStateAndReplaysItsCounterexample();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -420,6 +424,45 @@ void TestPackmlWindow::simulateRunsThePackmlSimulation()
     QVERIFY(!session->isActive());
     QVERIFY(!m_window->document()->isReadOnly());
     QVERIFY(!dockShown(*m_window, "packmlSimulationDock") || dockOffered(*m_window, "packmlSimulationDock"));
+}
+
+// The Capper with a Resetting GRAFCET that can stop short of Complete
+// (tests/cli/data, the command-line tests' model).
+void TestPackmlWindow::verifyFindsAStuckStateAndReplaysItsCounterexample()
+{
+    QVERIFY(m_window->openFile(QStringLiteral(GGSTUDIO_CLI_TEST_DATA_DIR "/packml-capper-stuck.json")));
+    auto* verify = m_window->findChild<QAction*>(QStringLiteral("verifyAction"));
+    QVERIFY(verify->isEnabled());
+    VerificationRunner* runner = m_window->verificationRunner();
+    QSignalSpy finished(runner, &VerificationRunner::finished);
+    verify->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(finished.size() == 1, 60000);
+    QVERIFY2(runner->failure().isEmpty(), qPrintable(runner->failure()));
+    int stuck = -1;
+    const std::vector<core::VerificationFinding>& findings = runner->result().findings;
+    for (std::size_t i = 0; i < findings.size(); ++i) {
+        if (findings[i].code == "GV130")
+            stuck = static_cast<int>(i);
+    }
+    QVERIFY(stuck >= 0);
+    const core::VerificationFinding& finding = findings[std::size_t(stuck)];
+    // Worded for the user, located on the state in its mode.
+    QVERIFY2(verificationText(finding).startsWith(QStringLiteral("In Production, the GRAFCET of Resetting")),
+             qPrintable(verificationText(finding)));
+    QVERIFY(finding.location);
+    QCOMPARE(finding.location->state, std::string("Resetting"));
+    QVERIFY(finding.counterexample && finding.counterexample->confirmed);
+
+    // Replay in Simulator: the PackML simulation plays the counterexample.
+    auto* panel = m_window->findChild<VerificationPanel*>();
+    QVERIFY(panel);
+    emit panel->replayRequested(stuck);
+    auto* session = m_window->findChild<PackmlSimulationSession*>();
+    QVERIFY(session->isActive());
+    QVERIFY(session->isReplaying());
+    QVERIFY(dockShown(*m_window, "packmlSimulationDock"));
+    session->advance(session->replayLength());
+    QCOMPARE(session->liveSimulator()->state(), core::packml::State::Resetting);
 }
 
 QTEST_MAIN(TestPackmlWindow)

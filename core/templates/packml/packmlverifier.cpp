@@ -52,6 +52,7 @@ private:
     VerificationFinding finding(const std::string& code, std::string message, Diagnostic location) const;
     Diagnostic modeLocation(int mode, std::optional<State> state, const std::string& code, const std::string& message) const;
     void reportWitness(const ExploredWitness& witness);
+    static void appendScanArguments(VerificationFinding& f, const ScanFinding& s);
     void reportStuck();
     void reportNeverActive();
     void reportNeverAccepted();
@@ -136,6 +137,26 @@ Counterexample PackmlVerifier::counterexampleTo(std::size_t node, const std::vec
     return writeCounterexample(m_explorer.nodes().front().simulator, scans, title, modeName(expectedMode));
 }
 
+// What the editor's wording needs besides the mode (and GV132's state):
+// GV133 the state the mode changed in; GV136, GV137 the state entered and
+// the outputs; GV138 which rule broke ("afresh", "resumed", "situation").
+void PackmlVerifier::appendScanArguments(VerificationFinding& f, const ScanFinding& s)
+{
+    if (s.code == verification::kModeChangeOutside) {
+        f.arguments.push_back(std::string(stateName(s.state)));
+    } else if (s.code == verification::kOutputOnAbort || s.code == verification::kStoredOutputOnAbort) {
+        std::string outputs;
+        for (const std::string& name : s.names)
+            outputs += (outputs.empty() ? "" : ", ") + name;
+        f.arguments.push_back(std::string(stateName(s.state)));
+        f.arguments.push_back(outputs);
+    } else if (s.code == verification::kExecuteEntry) {
+        const bool afresh = s.message.find("afresh instead") != std::string::npos;
+        const bool resumed = s.message.find("resumed where") != std::string::npos;
+        f.arguments.push_back(afresh ? "afresh" : resumed ? "resumed" : "situation");
+    }
+}
+
 void PackmlVerifier::reportWitness(const ExploredWitness& witness)
 {
     const ScanFinding& s = witness.finding;
@@ -147,6 +168,7 @@ void PackmlVerifier::reportWitness(const ExploredWitness& witness)
     const std::string& message = s.message; // the location names the mode
     VerificationFinding f = finding(s.code, message, modeLocation(s.mode, located ? std::optional<State>(s.state) : std::nullopt,
                                                                  s.code, message));
+    appendScanArguments(f, s);
     f.counterexample = counterexampleTo(witness.node, std::vector<InputChoice>{choice},
                                         s.code + ": " + modeName(s.mode) + ": " + message, record.mode);
     // Confirmed when the scenario replays to the same violation.
