@@ -752,7 +752,7 @@ void MainWindow::applyTemplate()
                                m_exportActions->ggGeneratorAction()})
         gemmaOnly->setVisible(!packml);
     // Not yet for a PackML model in the window: the command line simulates and verifies it.
-    for (QAction* gemmaOnly : {m_simulateAction, m_verifyAction, m_exportActions->specificationAction()})
+    for (QAction* gemmaOnly : {m_simulateAction, m_verifyAction})
         gemmaOnly->setEnabled(!packml);
     applyEditingLock();
 }

@@ -3,6 +3,7 @@
 #include "editor/document.h"
 #include "editor/export/exportfile.h"
 #include "editor/export/gemmaspecification.h"
+#include "editor/export/packmlspecification.h"
 #include "editor/text/displaytext.h"
 
 #include "core/model/model.h"
@@ -20,6 +21,10 @@ std::unique_ptr<specification::SpecificationPages> makePages(Document& document,
                                                              QPagedPaintDevice& device, const QSizeF& printable,
                                                              double dotsPerPoint)
 {
+    if (document.model().packml()) {
+        return std::make_unique<specification::PackmlSpecificationPages>(document, date, device, printable,
+                                                                         dotsPerPoint);
+    }
     return std::make_unique<specification::GemmaSpecificationPages>(document, date, device, printable,
                                                                     dotsPerPoint);
 }
