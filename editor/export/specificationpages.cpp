@@ -246,7 +246,10 @@ void SpecificationPages::planCode(const QString& section, std::size_t entry, std
     startsHere(entry);
     const core::Dialect dialect = m_model.settings().dialect;
     const core::PlcProject project = core::buildPlcProject(m_model, dialect);
-    const QString program = project.pous.empty() ? QStringLiteral("GEMMA") : fromStd(project.pous.front().name);
+    // The PROGRAM: first in a GEMMA project, after the function blocks in a PackML one.
+    const auto programPou = std::find_if(project.pous.begin(), project.pous.end(),
+                                         [](const core::PlcPou& pou) { return pou.kind == core::PouKind::Program; });
+    const QString program = programPou == project.pous.end() ? QStringLiteral("GEMMA") : fromStd(programPou->name);
     addHeading(flow, m_style, TextStyle::Heading, tr("Generated code"), 0);
     addText(flow, m_style, TextStyle::Body, intro.arg(program));
     if (const int errors = errorCount(); errors > 0) {

@@ -98,7 +98,8 @@ void TestPackmlSpecification::everyTextOfTheBottleFillerIsThere()
     for (const QString& expected : {QStringLiteral("PackML specification"), QStringLiteral("PackML, 2015 edition"),
                                     QStringLiteral("Initial unit mode 1 Production"), QStringLiteral("10 ms"),
                                     QStringLiteral("PROGRAM BottleFiller"),
-                                    QStringLiteral("FUNCTION_BLOCK Production_Execute_FB")})
+                                    QStringLiteral("FUNCTION_BLOCK Production_Execute_FB"),
+                                    QStringLiteral("BottleFiller calls it while the unit is in Execute")})
         QVERIFY2(text.contains(expected), qPrintable(expected));
     for (const core::packml::CommandInfo& info : core::packml::allCommands()) {
         const core::packml::CommandSetting& setting = configuration.command(info.command);
