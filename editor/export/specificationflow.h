@@ -26,7 +26,6 @@ inline constexpr double kSectionGap = 14;      // above a heading that does not 
 inline constexpr double kMaxGrafcetText = 10;  // a small GRAFCET grows to fill its page no further
 inline constexpr double kMeasureSlack = 0.5;   // kept free at a line's end, against rounding
 
-
 inline QColor inkColor() { return QColor(0x20, 0x24, 0x2a); }
 inline QColor mutedColor() { return QColor(0x5b, 0x64, 0x70); }
 inline QColor headFillColor() { return QColor(0xe9, 0xed, 0xf2); }
