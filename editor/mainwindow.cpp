@@ -792,8 +792,6 @@ void MainWindow::applyTemplate()
     for (QAction* gemmaOnly : {m_hideSelectionAction, m_showSelectionAction, m_showHiddenAction,
                                m_exportActions->ggGeneratorAction()})
         gemmaOnly->setVisible(!packml);
-    // Not yet for a PackML model: its specification PDF.
-    m_exportActions->specificationAction()->setEnabled(!packml);
     applyEditingLock();
 }
 

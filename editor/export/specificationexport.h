@@ -28,6 +28,9 @@ class Document;
 // - the outline of the generated code: the task, the POUs with their
 //   interfaces (inputs, outputs, instances, the globals they read, their
 //   locals) and the globals the generator adds.
+// A PackML model's specification has its own sections (the chart of each
+// unit mode, the commands, the modes, each own GRAFCET headed
+// "Production · Execute"; docs/packml.md, "Specification PDF").
 // Nothing is cut short: texts wrap (a word wider than its column between
 // its characters), tables break between rows and repeat their header, a row
 // taller than a page breaks between its lines.
