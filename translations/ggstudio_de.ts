@@ -703,6 +703,10 @@
         <extracomment>%3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)</extracomment>
         <translation>Die Auswahl nach Schritt %2 von %1 ist nicht vollständig: mit %4 schaltet keine von %3, und der GRAFCET wartet in Schritt %2; fügen Sie einen Zweig für diese Werte hinzu, sofern das Warten nicht gewollt ist.</translation>
     </message>
+    <message>
+        <source>Not confirmed: its counterexample does not replay to it in the simulator.</source>
+        <translation>Nicht bestätigt: Sein Gegenbeispiel führt im Simulator nicht dorthin.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -1381,6 +1385,61 @@
     <message>
         <source>Complete: end the batch.</source>
         <translation>Complete: die Charge beenden.</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlVerificationText</name>
+    <message>
+        <source>In %1, Execute, entered again from the Hold or Suspend loop, started afresh instead of resuming where it was paused.</source>
+        <translation>In %1 hat Execute, aus der Hold- oder Suspend-Schleife wieder betreten, neu begonnen, statt dort fortzufahren, wo es unterbrochen wurde.</translation>
+    </message>
+    <message>
+        <source>In %1, Execute resumed where it should have started afresh from its initial situation.</source>
+        <translation>In %1 hat Execute fortgesetzt, wo es in seiner Anfangssituation neu hätte beginnen müssen.</translation>
+    </message>
+    <message>
+        <source>In %1, Execute resumed in a situation other than the one it was paused in.</source>
+        <translation>In %1 hat Execute in einer anderen Situation fortgesetzt als der, in der es unterbrochen wurde.</translation>
+    </message>
+    <message>
+        <source>The verification was not exhaustive (its time or size limit, timers or numeric inputs it explores only in part): stuck states, states never active and commands never accepted were not decided, and the absence of other findings is not a proof.</source>
+        <translation>Die Verifikation war nicht erschöpfend (ihr Zeit- oder Größenlimit, Timer oder numerische Eingänge, die sie nur teilweise untersucht): Festsitzende Zustände, nie aktive Zustände und nie angenommene Befehle wurden nicht entschieden, und das Fehlen weiterer Befunde ist kein Beweis.</translation>
+    </message>
+    <message>
+        <source>In %1, the GRAFCET of %2 can reach a situation from which Complete never becomes TRUE: only Stop or Abort then leave %2.</source>
+        <translation>In %1 kann das GRAFCET von %2 eine Situation erreichen, aus der Complete nie TRUE wird: Dann verlassen nur Stop oder Abort %2.</translation>
+    </message>
+    <message>
+        <source>In %1, Aborting can reach a situation from which Aborted is never reached: nothing leaves it.</source>
+        <translation>In %1 kann Aborting eine Situation erreichen, aus der Aborted nie erreicht wird: Nichts verlässt sie.</translation>
+    </message>
+    <message>
+        <source>%2 was active at the end of a scan in %1, a mode that disables it.</source>
+        <translation>%2 war am Ende eines Zyklus in %1 aktiv, einer Betriebsart, die es deaktiviert.</translation>
+    </message>
+    <message>
+        <source>The mode changed from %1 in %2, a state where this change is not allowed.</source>
+        <translation>Die Betriebsart wechselte von %1 in %2, einem Zustand, in dem dieser Wechsel nicht erlaubt ist.</translation>
+    </message>
+    <message>
+        <source>%1 is never the current mode.</source>
+        <translation>%1 ist nie die aktuelle Betriebsart.</translation>
+    </message>
+    <message>
+        <source>%2 is enabled in %1 but never active there.</source>
+        <translation>%2 ist in %1 aktiviert, dort aber nie aktiv.</translation>
+    </message>
+    <message>
+        <source>The %1 command is accepted in no reachable configuration.</source>
+        <translation>Der Befehl %1 wird in keiner erreichbaren Konfiguration angenommen.</translation>
+    </message>
+    <message>
+        <source>In %1, continuous outputs are TRUE at the end of the scan that enters %2: %3.</source>
+        <translation>In %1 sind kontinuierliche Ausgänge am Ende des Zyklus TRUE, der %2 betritt: %3.</translation>
+    </message>
+    <message>
+        <source>In %1, stored outputs can still be TRUE when %2 is entered: %3.</source>
+        <translation>In %1 können gespeicherte Ausgänge beim Betreten von %2 noch TRUE sein: %3.</translation>
     </message>
 </context>
 <context>
@@ -2511,6 +2570,150 @@
     <message>
         <source>Page %1 of %2</source>
         <translation>Seite %1 von %2</translation>
+    </message>
+    <message>
+        <source>PackML chart</source>
+        <translation>PackML-Diagramm</translation>
+    </message>
+    <message>
+        <source>Commands, modes and variables</source>
+        <translation>Befehle, Betriebsarten und Variablen</translation>
+    </message>
+    <message>
+        <source>Unit mode %1</source>
+        <translation>Betriebsart %1</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Befehle</translation>
+    </message>
+    <message>
+        <source>Unit modes</source>
+        <translation>Betriebsarten</translation>
+    </message>
+    <message>
+        <source>PackML, 2022 edition</source>
+        <translation>PackML, Ausgabe 2022</translation>
+    </message>
+    <message>
+        <source>PackML, 2015 edition</source>
+        <translation>PackML, Ausgabe 2015</translation>
+    </message>
+    <message>
+        <source>Hold accepted in Suspended</source>
+        <translation>Hold in Suspended angenommen</translation>
+    </message>
+    <message>
+        <source>Complete accepted in Suspended and Held</source>
+        <translation>Complete in Suspended und Held angenommen</translation>
+    </message>
+    <message>
+        <source>%1; options: %2</source>
+        <translation>%1; Optionen: %2</translation>
+    </message>
+    <message>
+        <source>Template</source>
+        <translation>Vorlage</translation>
+    </message>
+    <message>
+        <source>Initial unit mode</source>
+        <translation>Anfangsbetriebsart</translation>
+    </message>
+    <message>
+        <source>PackML specification</source>
+        <translation>PackML-Spezifikation</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Befehl</translation>
+    </message>
+    <message>
+        <source>CntrlCmd</source>
+        <translation>CntrlCmd</translation>
+    </message>
+    <message>
+        <source>The commands of the edition, with the condition whose rising edge issues each one (besides CntrlCmd). A command a state does not accept is ignored there.</source>
+        <translation>Die Befehle der Ausgabe mit der Bedingung, deren steigende Flanke jeden auslöst (neben CntrlCmd). Ein Befehl, den ein Zustand nicht annimmt, wird dort ignoriert.</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Betriebsart</translation>
+    </message>
+    <message>
+        <source>Request condition</source>
+        <translation>Anforderungsbedingung</translation>
+    </message>
+    <message>
+        <source>Disabled states</source>
+        <translation>Deaktivierte Zustände</translation>
+    </message>
+    <message>
+        <source>Mode change allowed in</source>
+        <translation>Betriebsartwechsel erlaubt in</translation>
+    </message>
+    <message>
+        <source>The unit modes, in number order. A mode skips its disabled states; the unit changes to a mode when its request condition rises while the current mode allows a change in the current state.</source>
+        <translation>Die Betriebsarten in Nummernfolge. Eine Betriebsart überspringt ihre deaktivierten Zustände; die Einheit wechselt in eine Betriebsart, wenn deren Anforderungsbedingung steigt, während die aktuelle Betriebsart im aktuellen Zustand einen Wechsel erlaubt.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET</source>
+        <translation>Untergeordneter GRAFCET</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs in %1</source>
+        <translation>Untergeordnete GRAFCETs in %1</translation>
+    </message>
+    <message>
+        <source>None: the mode disables this state</source>
+        <translation>Keiner: die Betriebsart deaktiviert diesen Zustand</translation>
+    </message>
+    <message>
+        <source>Own: %1</source>
+        <translation>Eigener: %1</translation>
+    </message>
+    <message>
+        <source>Same as mode %1: %2</source>
+        <translation>Wie Betriebsart %1: %2</translation>
+    </message>
+    <message>
+        <source>Same as mode %1, which does not exist</source>
+        <translation>Wie Betriebsart %1, die es nicht gibt</translation>
+    </message>
+    <message>
+        <source>None: the state completes at once</source>
+        <translation>Keiner: der Zustand ist sofort abgeschlossen</translation>
+    </message>
+    <message>
+        <source>None: Execute waits for a command</source>
+        <translation>Keiner: Execute wartet auf einen Befehl</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET %1, continued</source>
+        <translation>Untergeordneter GRAFCET %1, Fortsetzung</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the PackML design pattern: the program %1 is the state and mode manager, with the PackTags interface; it calls, in each acting state and Execute, the function block instance of the current unit mode and state, whose State Complete ends that state. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio erzeugt das SPS-Programm als IEC-61131-3-Strukturierten Text nach dem PackML-Entwurfsmuster: das Programm %1 ist die Zustands- und Betriebsartverwaltung mit der PackTags-Schnittstelle; es ruft in jedem handelnden Zustand und in Execute die Funktionsbausteininstanz der aktuellen Betriebsart und des aktuellen Zustands auf, deren State Complete diesen Zustand beendet. Diese Übersicht nennt die Programmorganisationseinheiten und ihre Schnittstellen; Datei &gt; Strukturierten Text exportieren und PLCopen XML exportieren schreiben den Code selbst.</translation>
+    </message>
+    <message>
+        <source>The PackML state and mode manager: it latches the commands and mode requests, holds the current state and unit mode in StateCurrent and UnitModeCurrent, evaluates the current state&apos;s transitions in the current mode and calls the function block instance of that mode and state.</source>
+        <translation>Die PackML-Zustands- und Betriebsartverwaltung: sie speichert die Befehle und Betriebsartanforderungen, hält den aktuellen Zustand und die aktuelle Betriebsart in StateCurrent und UnitModeCurrent, wertet die Transitionen des aktuellen Zustands in der aktuellen Betriebsart aus und ruft die Funktionsbausteininstanz dieser Betriebsart und dieses Zustands auf.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET %1 (page %2). %3 calls it while the unit is in %4 in a mode that runs it; its Complete is that state&apos;s State Complete.</source>
+        <translation>Der untergeordnete GRAFCET %1 (Seite %2). %3 ruft ihn auf, solange die Einheit in %4 ist, in einer Betriebsart, die ihn ausführt; sein Complete ist das State Complete dieses Zustands.</translation>
+    </message>
+    <message>
+        <source>The function block of %1 in the modes without a GRAFCET there: %2</source>
+        <translation>Der Funktionsbaustein von %1 in den Betriebsarten ohne GRAFCET dort: %2</translation>
+    </message>
+    <message>
+        <source>it completes at once.</source>
+        <translation>er ist sofort abgeschlossen.</translation>
+    </message>
+    <message>
+        <source>it does nothing, Execute waits for a command.</source>
+        <translation>er tut nichts, Execute wartet auf einen Befehl.</translation>
     </message>
 </context>
 <context>

@@ -703,6 +703,10 @@
         <extracomment>%3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)</extracomment>
         <translation>La selección tras la etapa %2 de %1 no es completa: con %4 no se dispara ninguna de %3 y el GRAFCET espera en la etapa %2; añada una rama para estos valores, salvo que la espera sea intencionada.</translation>
     </message>
+    <message>
+        <source>Not confirmed: its counterexample does not replay to it in the simulator.</source>
+        <translation>No confirmado: su contraejemplo no lo reproduce en el simulador.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -1381,6 +1385,61 @@
     <message>
         <source>Complete: end the batch.</source>
         <translation>Complete: terminar el lote.</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlVerificationText</name>
+    <message>
+        <source>In %1, Execute, entered again from the Hold or Suspend loop, started afresh instead of resuming where it was paused.</source>
+        <translation>En %1, Execute, reactivado desde el bucle Hold o Suspend, empezó de cero en lugar de reanudar donde se había detenido.</translation>
+    </message>
+    <message>
+        <source>In %1, Execute resumed where it should have started afresh from its initial situation.</source>
+        <translation>En %1, Execute se reanudó cuando debería haber empezado de cero desde su situación inicial.</translation>
+    </message>
+    <message>
+        <source>In %1, Execute resumed in a situation other than the one it was paused in.</source>
+        <translation>En %1, Execute se reanudó en una situación distinta de aquella en que se detuvo.</translation>
+    </message>
+    <message>
+        <source>The verification was not exhaustive (its time or size limit, timers or numeric inputs it explores only in part): stuck states, states never active and commands never accepted were not decided, and the absence of other findings is not a proof.</source>
+        <translation>La verificación no fue exhaustiva (su límite de tiempo o de tamaño, temporizadores o entradas numéricas que solo explora en parte): los estados bloqueados, los estados nunca activos y los comandos nunca aceptados no se decidieron, y la ausencia de otros hallazgos no es una prueba.</translation>
+    </message>
+    <message>
+        <source>In %1, the GRAFCET of %2 can reach a situation from which Complete never becomes TRUE: only Stop or Abort then leave %2.</source>
+        <translation>En %1, el GRAFCET de %2 puede llegar a una situación desde la que Complete nunca se vuelve TRUE: entonces solo Stop o Abort sacan de %2.</translation>
+    </message>
+    <message>
+        <source>In %1, Aborting can reach a situation from which Aborted is never reached: nothing leaves it.</source>
+        <translation>En %1, Aborting puede llegar a una situación desde la que nunca se alcanza Aborted: nada sale de ella.</translation>
+    </message>
+    <message>
+        <source>%2 was active at the end of a scan in %1, a mode that disables it.</source>
+        <translation>%2 estaba activo al final de un ciclo en %1, un modo que lo deshabilita.</translation>
+    </message>
+    <message>
+        <source>The mode changed from %1 in %2, a state where this change is not allowed.</source>
+        <translation>El modo cambió desde %1 en %2, un estado donde este cambio no está permitido.</translation>
+    </message>
+    <message>
+        <source>%1 is never the current mode.</source>
+        <translation>%1 nunca es el modo actual.</translation>
+    </message>
+    <message>
+        <source>%2 is enabled in %1 but never active there.</source>
+        <translation>%2 está habilitado en %1 pero nunca está activo allí.</translation>
+    </message>
+    <message>
+        <source>The %1 command is accepted in no reachable configuration.</source>
+        <translation>El comando %1 no se acepta en ninguna configuración alcanzable.</translation>
+    </message>
+    <message>
+        <source>In %1, continuous outputs are TRUE at the end of the scan that enters %2: %3.</source>
+        <translation>En %1, hay salidas continuas en TRUE al final del ciclo que entra en %2: %3.</translation>
+    </message>
+    <message>
+        <source>In %1, stored outputs can still be TRUE when %2 is entered: %3.</source>
+        <translation>En %1, salidas memorizadas pueden seguir en TRUE al entrar en %2: %3.</translation>
     </message>
 </context>
 <context>
@@ -2511,6 +2570,150 @@
     <message>
         <source>Page %1 of %2</source>
         <translation>Página %1 de %2</translation>
+    </message>
+    <message>
+        <source>PackML chart</source>
+        <translation>Diagrama PackML</translation>
+    </message>
+    <message>
+        <source>Commands, modes and variables</source>
+        <translation>Comandos, modos y variables</translation>
+    </message>
+    <message>
+        <source>Unit mode %1</source>
+        <translation>Modo de unidad %1</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Comandos</translation>
+    </message>
+    <message>
+        <source>Unit modes</source>
+        <translation>Modos de unidad</translation>
+    </message>
+    <message>
+        <source>PackML, 2022 edition</source>
+        <translation>PackML, edición 2022</translation>
+    </message>
+    <message>
+        <source>PackML, 2015 edition</source>
+        <translation>PackML, edición 2015</translation>
+    </message>
+    <message>
+        <source>Hold accepted in Suspended</source>
+        <translation>Hold aceptado en Suspended</translation>
+    </message>
+    <message>
+        <source>Complete accepted in Suspended and Held</source>
+        <translation>Complete aceptado en Suspended y Held</translation>
+    </message>
+    <message>
+        <source>%1; options: %2</source>
+        <translation>%1; opciones: %2</translation>
+    </message>
+    <message>
+        <source>Template</source>
+        <translation>Plantilla</translation>
+    </message>
+    <message>
+        <source>Initial unit mode</source>
+        <translation>Modo de unidad inicial</translation>
+    </message>
+    <message>
+        <source>PackML specification</source>
+        <translation>Especificación PackML</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Comando</translation>
+    </message>
+    <message>
+        <source>CntrlCmd</source>
+        <translation>CntrlCmd</translation>
+    </message>
+    <message>
+        <source>The commands of the edition, with the condition whose rising edge issues each one (besides CntrlCmd). A command a state does not accept is ignored there.</source>
+        <translation>Los comandos de la edición, con la condición cuyo flanco ascendente emite cada uno (además de CntrlCmd). Un comando que un estado no acepta se ignora en él.</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modo</translation>
+    </message>
+    <message>
+        <source>Request condition</source>
+        <translation>Condición de solicitud</translation>
+    </message>
+    <message>
+        <source>Disabled states</source>
+        <translation>Estados desactivados</translation>
+    </message>
+    <message>
+        <source>Mode change allowed in</source>
+        <translation>Cambio de modo permitido en</translation>
+    </message>
+    <message>
+        <source>The unit modes, in number order. A mode skips its disabled states; the unit changes to a mode when its request condition rises while the current mode allows a change in the current state.</source>
+        <translation>Los modos de unidad, por número. Un modo salta sus estados desactivados; la unidad pasa a un modo cuando su condición de solicitud sube mientras el modo actual permite un cambio en el estado actual.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET</source>
+        <translation>GRAFCET anidado</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs in %1</source>
+        <translation>GRAFCET anidados en %1</translation>
+    </message>
+    <message>
+        <source>None: the mode disables this state</source>
+        <translation>Ninguno: el modo desactiva este estado</translation>
+    </message>
+    <message>
+        <source>Own: %1</source>
+        <translation>Propio: %1</translation>
+    </message>
+    <message>
+        <source>Same as mode %1: %2</source>
+        <translation>El mismo que el modo %1: %2</translation>
+    </message>
+    <message>
+        <source>Same as mode %1, which does not exist</source>
+        <translation>El mismo que el modo %1, que no existe</translation>
+    </message>
+    <message>
+        <source>None: the state completes at once</source>
+        <translation>Ninguno: el estado se completa enseguida</translation>
+    </message>
+    <message>
+        <source>None: Execute waits for a command</source>
+        <translation>Ninguno: Execute espera un comando</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET %1, continued</source>
+        <translation>GRAFCET anidado %1, continuación</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the PackML design pattern: the program %1 is the state and mode manager, with the PackTags interface; it calls, in each acting state and Execute, the function block instance of the current unit mode and state, whose State Complete ends that state. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio genera el programa del PLC en texto estructurado IEC 61131-3 según el patrón de diseño PackML: el programa %1 es el gestor de estados y modos, con la interfaz PackTags; llama, en cada estado activo y en Execute, a la instancia de bloque de función del modo de unidad y el estado actuales, cuyo State Complete termina ese estado. Este esquema da las unidades de organización de programa y sus interfaces; Archivo &gt; Exportar texto estructurado y Exportar PLCopen XML escriben el código en sí.</translation>
+    </message>
+    <message>
+        <source>The PackML state and mode manager: it latches the commands and mode requests, holds the current state and unit mode in StateCurrent and UnitModeCurrent, evaluates the current state&apos;s transitions in the current mode and calls the function block instance of that mode and state.</source>
+        <translation>El gestor de estados y modos PackML: memoriza los comandos y las solicitudes de modo, guarda el estado y el modo de unidad actuales en StateCurrent y UnitModeCurrent, evalúa las transiciones del estado actual en el modo actual y llama a la instancia de bloque de función de ese modo y ese estado.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET %1 (page %2). %3 calls it while the unit is in %4 in a mode that runs it; its Complete is that state&apos;s State Complete.</source>
+        <translation>El GRAFCET anidado %1 (página %2). %3 lo llama mientras la unidad está en %4 en un modo que lo ejecuta; su Complete es el State Complete de ese estado.</translation>
+    </message>
+    <message>
+        <source>The function block of %1 in the modes without a GRAFCET there: %2</source>
+        <translation>El bloque de función de %1 en los modos sin GRAFCET allí: %2</translation>
+    </message>
+    <message>
+        <source>it completes at once.</source>
+        <translation>se completa enseguida.</translation>
+    </message>
+    <message>
+        <source>it does nothing, Execute waits for a command.</source>
+        <translation>no hace nada, Execute espera un comando.</translation>
     </message>
 </context>
 <context>

@@ -703,6 +703,10 @@
         <extracomment>%3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)</extracomment>
         <translation>La sélection après l&apos;étape %2 de %1 n&apos;est pas complète : avec %4, aucune de %3 n&apos;est franchie et le GRAFCET attend à l&apos;étape %2 ; ajoutez une branche pour ces valeurs, sauf si l&apos;attente est voulue.</translation>
     </message>
+    <message>
+        <source>Not confirmed: its counterexample does not replay to it in the simulator.</source>
+        <translation>Non confirmé : son contre-exemple ne le reproduit pas dans le simulateur.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -1381,6 +1385,61 @@
     <message>
         <source>Complete: end the batch.</source>
         <translation>Complete : terminer le lot.</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlVerificationText</name>
+    <message>
+        <source>In %1, Execute, entered again from the Hold or Suspend loop, started afresh instead of resuming where it was paused.</source>
+        <translation>Dans %1, Execute, réactivé depuis la boucle Hold ou Suspend, est reparti de zéro au lieu de reprendre là où il avait été interrompu.</translation>
+    </message>
+    <message>
+        <source>In %1, Execute resumed where it should have started afresh from its initial situation.</source>
+        <translation>Dans %1, Execute a repris là où il aurait dû repartir de sa situation initiale.</translation>
+    </message>
+    <message>
+        <source>In %1, Execute resumed in a situation other than the one it was paused in.</source>
+        <translation>Dans %1, Execute a repris dans une autre situation que celle où il avait été interrompu.</translation>
+    </message>
+    <message>
+        <source>The verification was not exhaustive (its time or size limit, timers or numeric inputs it explores only in part): stuck states, states never active and commands never accepted were not decided, and the absence of other findings is not a proof.</source>
+        <translation>La vérification n&apos;a pas été exhaustive (sa limite de temps ou de taille, des temporisations ou des entrées numériques qu&apos;elle n&apos;explore qu&apos;en partie) : les états bloqués, les états jamais actifs et les commandes jamais acceptées n&apos;ont pas été décidés, et l&apos;absence d&apos;autres constats n&apos;est pas une preuve.</translation>
+    </message>
+    <message>
+        <source>In %1, the GRAFCET of %2 can reach a situation from which Complete never becomes TRUE: only Stop or Abort then leave %2.</source>
+        <translation>Dans %1, le GRAFCET de %2 peut atteindre une situation d&apos;où Complete ne devient jamais TRUE : seuls Stop ou Abort font alors quitter %2.</translation>
+    </message>
+    <message>
+        <source>In %1, Aborting can reach a situation from which Aborted is never reached: nothing leaves it.</source>
+        <translation>Dans %1, Aborting peut atteindre une situation d&apos;où Aborted n&apos;est jamais atteint : rien ne permet d&apos;en sortir.</translation>
+    </message>
+    <message>
+        <source>%2 was active at the end of a scan in %1, a mode that disables it.</source>
+        <translation>%2 était actif à la fin d&apos;un cycle dans %1, un mode qui le désactive.</translation>
+    </message>
+    <message>
+        <source>The mode changed from %1 in %2, a state where this change is not allowed.</source>
+        <translation>Le mode a changé depuis %1 dans %2, un état où ce changement n&apos;est pas permis.</translation>
+    </message>
+    <message>
+        <source>%1 is never the current mode.</source>
+        <translation>%1 n&apos;est jamais le mode courant.</translation>
+    </message>
+    <message>
+        <source>%2 is enabled in %1 but never active there.</source>
+        <translation>%2 est activé dans %1 mais n&apos;y est jamais actif.</translation>
+    </message>
+    <message>
+        <source>The %1 command is accepted in no reachable configuration.</source>
+        <translation>La commande %1 n&apos;est acceptée dans aucune configuration atteignable.</translation>
+    </message>
+    <message>
+        <source>In %1, continuous outputs are TRUE at the end of the scan that enters %2: %3.</source>
+        <translation>Dans %1, des sorties continues sont TRUE à la fin du cycle qui entre dans %2 : %3.</translation>
+    </message>
+    <message>
+        <source>In %1, stored outputs can still be TRUE when %2 is entered: %3.</source>
+        <translation>Dans %1, des sorties mémorisées peuvent encore être TRUE à l&apos;entrée dans %2 : %3.</translation>
     </message>
 </context>
 <context>
@@ -2511,6 +2570,150 @@
     <message>
         <source>Page %1 of %2</source>
         <translation>Page %1 sur %2</translation>
+    </message>
+    <message>
+        <source>PackML chart</source>
+        <translation>Diagramme PackML</translation>
+    </message>
+    <message>
+        <source>Commands, modes and variables</source>
+        <translation>Commandes, modes et variables</translation>
+    </message>
+    <message>
+        <source>Unit mode %1</source>
+        <translation>Mode d&apos;unité %1</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Commandes</translation>
+    </message>
+    <message>
+        <source>Unit modes</source>
+        <translation>Modes d&apos;unité</translation>
+    </message>
+    <message>
+        <source>PackML, 2022 edition</source>
+        <translation>PackML, édition 2022</translation>
+    </message>
+    <message>
+        <source>PackML, 2015 edition</source>
+        <translation>PackML, édition 2015</translation>
+    </message>
+    <message>
+        <source>Hold accepted in Suspended</source>
+        <translation>Hold accepté dans Suspended</translation>
+    </message>
+    <message>
+        <source>Complete accepted in Suspended and Held</source>
+        <translation>Complete accepté dans Suspended et Held</translation>
+    </message>
+    <message>
+        <source>%1; options: %2</source>
+        <translation>%1 ; options : %2</translation>
+    </message>
+    <message>
+        <source>Template</source>
+        <translation>Modèle</translation>
+    </message>
+    <message>
+        <source>Initial unit mode</source>
+        <translation>Mode d&apos;unité initial</translation>
+    </message>
+    <message>
+        <source>PackML specification</source>
+        <translation>Spécification PackML</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Commande</translation>
+    </message>
+    <message>
+        <source>CntrlCmd</source>
+        <translation>CntrlCmd</translation>
+    </message>
+    <message>
+        <source>The commands of the edition, with the condition whose rising edge issues each one (besides CntrlCmd). A command a state does not accept is ignored there.</source>
+        <translation>Les commandes de l&apos;édition, avec la condition dont le front montant émet chacune (en plus de CntrlCmd). Une commande qu&apos;un état n&apos;accepte pas y est ignorée.</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Mode</translation>
+    </message>
+    <message>
+        <source>Request condition</source>
+        <translation>Condition de demande</translation>
+    </message>
+    <message>
+        <source>Disabled states</source>
+        <translation>États désactivés</translation>
+    </message>
+    <message>
+        <source>Mode change allowed in</source>
+        <translation>Changement de mode permis dans</translation>
+    </message>
+    <message>
+        <source>The unit modes, in number order. A mode skips its disabled states; the unit changes to a mode when its request condition rises while the current mode allows a change in the current state.</source>
+        <translation>Les modes d&apos;unité, par numéro. Un mode saute ses états désactivés ; l&apos;unité passe à un mode quand sa condition de demande monte alors que le mode courant permet un changement dans l&apos;état courant.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET</source>
+        <translation>GRAFCET imbriqué</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs in %1</source>
+        <translation>GRAFCET imbriqués en %1</translation>
+    </message>
+    <message>
+        <source>None: the mode disables this state</source>
+        <translation>Aucun : le mode désactive cet état</translation>
+    </message>
+    <message>
+        <source>Own: %1</source>
+        <translation>Propre : %1</translation>
+    </message>
+    <message>
+        <source>Same as mode %1: %2</source>
+        <translation>Le même que le mode %1 : %2</translation>
+    </message>
+    <message>
+        <source>Same as mode %1, which does not exist</source>
+        <translation>Le même que le mode %1, qui n&apos;existe pas</translation>
+    </message>
+    <message>
+        <source>None: the state completes at once</source>
+        <translation>Aucun : l&apos;état se termine aussitôt</translation>
+    </message>
+    <message>
+        <source>None: Execute waits for a command</source>
+        <translation>Aucun : Execute attend une commande</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET %1, continued</source>
+        <translation>GRAFCET imbriqué %1, suite</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the PackML design pattern: the program %1 is the state and mode manager, with the PackTags interface; it calls, in each acting state and Execute, the function block instance of the current unit mode and state, whose State Complete ends that state. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio génère le programme de l&apos;automate en texte structuré CEI 61131-3 selon le patron de conception PackML : le programme %1 est le gestionnaire d&apos;états et de modes, avec l&apos;interface PackTags ; il appelle, dans chaque état actif et dans Execute, l&apos;instance de bloc fonctionnel du mode d&apos;unité et de l&apos;état courants, dont le State Complete termine cet état. Ce plan donne les unités d&apos;organisation de programme et leurs interfaces ; Fichier &gt; Exporter le texte structuré et Exporter en PLCopen XML écrivent le code lui-même.</translation>
+    </message>
+    <message>
+        <source>The PackML state and mode manager: it latches the commands and mode requests, holds the current state and unit mode in StateCurrent and UnitModeCurrent, evaluates the current state&apos;s transitions in the current mode and calls the function block instance of that mode and state.</source>
+        <translation>Le gestionnaire d&apos;états et de modes PackML : il mémorise les commandes et les demandes de mode, tient l&apos;état et le mode d&apos;unité courants dans StateCurrent et UnitModeCurrent, évalue les transitions de l&apos;état courant dans le mode courant et appelle l&apos;instance de bloc fonctionnel de ce mode et de cet état.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET %1 (page %2). %3 calls it while the unit is in %4 in a mode that runs it; its Complete is that state&apos;s State Complete.</source>
+        <translation>Le GRAFCET imbriqué %1 (page %2). %3 l&apos;appelle tant que l&apos;unité est dans %4 dans un mode qui l&apos;exécute ; son Complete est le State Complete de cet état.</translation>
+    </message>
+    <message>
+        <source>The function block of %1 in the modes without a GRAFCET there: %2</source>
+        <translation>Le bloc fonctionnel de %1 dans les modes sans GRAFCET à cet endroit : %2</translation>
+    </message>
+    <message>
+        <source>it completes at once.</source>
+        <translation>il se termine aussitôt.</translation>
+    </message>
+    <message>
+        <source>it does nothing, Execute waits for a command.</source>
+        <translation>il ne fait rien, Execute attend une commande.</translation>
     </message>
 </context>
 <context>

@@ -703,6 +703,10 @@
         <extracomment>%3: the branches (T1, T2); %4: values of the variables (CP1 = TRUE, CP2 = FALSE)</extracomment>
         <translation>La selezione dopo la tappa %2 di %1 non è completa: con %4 non scatta nessuna di %3 e il GRAFCET attende nella tappa %2; aggiungere un ramo per questi valori, a meno che l&apos;attesa non sia voluta.</translation>
     </message>
+    <message>
+        <source>Not confirmed: its counterexample does not replay to it in the simulator.</source>
+        <translation>Non confermato: il suo controesempio non lo riproduce nel simulatore.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -1381,6 +1385,61 @@
     <message>
         <source>Complete: end the batch.</source>
         <translation>Complete: terminare il lotto.</translation>
+    </message>
+</context>
+<context>
+    <name>PackmlVerificationText</name>
+    <message>
+        <source>In %1, Execute, entered again from the Hold or Suspend loop, started afresh instead of resuming where it was paused.</source>
+        <translation>In %1, Execute, rientrato dal ciclo Hold o Suspend, è ripartito da capo invece di riprendere da dove era stato interrotto.</translation>
+    </message>
+    <message>
+        <source>In %1, Execute resumed where it should have started afresh from its initial situation.</source>
+        <translation>In %1, Execute ha ripreso dove avrebbe dovuto ripartire dalla sua situazione iniziale.</translation>
+    </message>
+    <message>
+        <source>In %1, Execute resumed in a situation other than the one it was paused in.</source>
+        <translation>In %1, Execute ha ripreso in una situazione diversa da quella in cui era stato interrotto.</translation>
+    </message>
+    <message>
+        <source>The verification was not exhaustive (its time or size limit, timers or numeric inputs it explores only in part): stuck states, states never active and commands never accepted were not decided, and the absence of other findings is not a proof.</source>
+        <translation>La verifica non è stata esaustiva (il suo limite di tempo o di dimensione, temporizzatori o ingressi numerici che esplora solo in parte): stati bloccati, stati mai attivi e comandi mai accettati non sono stati decisi, e l&apos;assenza di altri risultati non è una prova.</translation>
+    </message>
+    <message>
+        <source>In %1, the GRAFCET of %2 can reach a situation from which Complete never becomes TRUE: only Stop or Abort then leave %2.</source>
+        <translation>In %1, il GRAFCET di %2 può raggiungere una situazione da cui Complete non diventa mai TRUE: solo Stop o Abort fanno allora uscire da %2.</translation>
+    </message>
+    <message>
+        <source>In %1, Aborting can reach a situation from which Aborted is never reached: nothing leaves it.</source>
+        <translation>In %1, Aborting può raggiungere una situazione da cui Aborted non viene mai raggiunto: nulla ne esce.</translation>
+    </message>
+    <message>
+        <source>%2 was active at the end of a scan in %1, a mode that disables it.</source>
+        <translation>%2 era attivo alla fine di un ciclo in %1, un modo che lo disabilita.</translation>
+    </message>
+    <message>
+        <source>The mode changed from %1 in %2, a state where this change is not allowed.</source>
+        <translation>Il modo è cambiato da %1 in %2, uno stato in cui questo cambio non è consentito.</translation>
+    </message>
+    <message>
+        <source>%1 is never the current mode.</source>
+        <translation>%1 non è mai il modo corrente.</translation>
+    </message>
+    <message>
+        <source>%2 is enabled in %1 but never active there.</source>
+        <translation>%2 è abilitato in %1 ma non vi è mai attivo.</translation>
+    </message>
+    <message>
+        <source>The %1 command is accepted in no reachable configuration.</source>
+        <translation>Il comando %1 non è accettato in nessuna configurazione raggiungibile.</translation>
+    </message>
+    <message>
+        <source>In %1, continuous outputs are TRUE at the end of the scan that enters %2: %3.</source>
+        <translation>In %1, uscite continue sono TRUE alla fine del ciclo che entra in %2: %3.</translation>
+    </message>
+    <message>
+        <source>In %1, stored outputs can still be TRUE when %2 is entered: %3.</source>
+        <translation>In %1, uscite memorizzate possono essere ancora TRUE all&apos;ingresso in %2: %3.</translation>
     </message>
 </context>
 <context>
@@ -2511,6 +2570,150 @@
     <message>
         <source>Page %1 of %2</source>
         <translation>Pagina %1 di %2</translation>
+    </message>
+    <message>
+        <source>PackML chart</source>
+        <translation>Diagramma PackML</translation>
+    </message>
+    <message>
+        <source>Commands, modes and variables</source>
+        <translation>Comandi, modalità e variabili</translation>
+    </message>
+    <message>
+        <source>Unit mode %1</source>
+        <translation>Modalità dell&apos;unità %1</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Comandi</translation>
+    </message>
+    <message>
+        <source>Unit modes</source>
+        <translation>Modalità dell&apos;unità</translation>
+    </message>
+    <message>
+        <source>PackML, 2022 edition</source>
+        <translation>PackML, edizione 2022</translation>
+    </message>
+    <message>
+        <source>PackML, 2015 edition</source>
+        <translation>PackML, edizione 2015</translation>
+    </message>
+    <message>
+        <source>Hold accepted in Suspended</source>
+        <translation>Hold accettato in Suspended</translation>
+    </message>
+    <message>
+        <source>Complete accepted in Suspended and Held</source>
+        <translation>Complete accettato in Suspended e Held</translation>
+    </message>
+    <message>
+        <source>%1; options: %2</source>
+        <translation>%1; opzioni: %2</translation>
+    </message>
+    <message>
+        <source>Template</source>
+        <translation>Modello</translation>
+    </message>
+    <message>
+        <source>Initial unit mode</source>
+        <translation>Modalità iniziale dell&apos;unità</translation>
+    </message>
+    <message>
+        <source>PackML specification</source>
+        <translation>Specifica PackML</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>Comando</translation>
+    </message>
+    <message>
+        <source>CntrlCmd</source>
+        <translation>CntrlCmd</translation>
+    </message>
+    <message>
+        <source>The commands of the edition, with the condition whose rising edge issues each one (besides CntrlCmd). A command a state does not accept is ignored there.</source>
+        <translation>I comandi dell&apos;edizione, con la condizione il cui fronte di salita emette ciascuno (oltre a CntrlCmd). Un comando che uno stato non accetta vi è ignorato.</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modalità</translation>
+    </message>
+    <message>
+        <source>Request condition</source>
+        <translation>Condizione di richiesta</translation>
+    </message>
+    <message>
+        <source>Disabled states</source>
+        <translation>Stati disattivati</translation>
+    </message>
+    <message>
+        <source>Mode change allowed in</source>
+        <translation>Cambio di modalità permesso in</translation>
+    </message>
+    <message>
+        <source>The unit modes, in number order. A mode skips its disabled states; the unit changes to a mode when its request condition rises while the current mode allows a change in the current state.</source>
+        <translation>Le modalità dell&apos;unità, in ordine di numero. Una modalità salta i suoi stati disattivati; l&apos;unità passa a una modalità quando la sua condizione di richiesta sale mentre la modalità corrente permette un cambio nello stato corrente.</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET</source>
+        <translation>GRAFCET annidato</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCETs in %1</source>
+        <translation>GRAFCET annidati in %1</translation>
+    </message>
+    <message>
+        <source>None: the mode disables this state</source>
+        <translation>Nessuno: la modalità disattiva questo stato</translation>
+    </message>
+    <message>
+        <source>Own: %1</source>
+        <translation>Proprio: %1</translation>
+    </message>
+    <message>
+        <source>Same as mode %1: %2</source>
+        <translation>Lo stesso della modalità %1: %2</translation>
+    </message>
+    <message>
+        <source>Same as mode %1, which does not exist</source>
+        <translation>Lo stesso della modalità %1, che non esiste</translation>
+    </message>
+    <message>
+        <source>None: the state completes at once</source>
+        <translation>Nessuno: lo stato si completa subito</translation>
+    </message>
+    <message>
+        <source>None: Execute waits for a command</source>
+        <translation>Nessuno: Execute attende un comando</translation>
+    </message>
+    <message>
+        <source>Nested GRAFCET %1, continued</source>
+        <translation>GRAFCET annidato %1, continua</translation>
+    </message>
+    <message>
+        <source>GG Studio generates the PLC program as IEC 61131-3 Structured Text by the PackML design pattern: the program %1 is the state and mode manager, with the PackTags interface; it calls, in each acting state and Execute, the function block instance of the current unit mode and state, whose State Complete ends that state. This outline gives the program organisation units and their interfaces; File &gt; Export Structured Text and Export PLCopen XML write the code itself.</source>
+        <translation>GG Studio genera il programma del PLC in testo strutturato IEC 61131-3 secondo il pattern di progettazione PackML: il programma %1 è il gestore di stati e modalità, con l&apos;interfaccia PackTags; chiama, in ogni stato attivo e in Execute, l&apos;istanza di blocco funzione della modalità dell&apos;unità e dello stato correnti, il cui State Complete termina quello stato. Questo schema riporta le unità di organizzazione del programma e le loro interfacce; File &gt; Esporta testo strutturato ed Esporta PLCopen XML scrivono il codice stesso.</translation>
+    </message>
+    <message>
+        <source>The PackML state and mode manager: it latches the commands and mode requests, holds the current state and unit mode in StateCurrent and UnitModeCurrent, evaluates the current state&apos;s transitions in the current mode and calls the function block instance of that mode and state.</source>
+        <translation>Il gestore di stati e modalità PackML: memorizza i comandi e le richieste di modalità, tiene lo stato e la modalità dell&apos;unità correnti in StateCurrent e UnitModeCurrent, valuta le transizioni dello stato corrente nella modalità corrente e chiama l&apos;istanza di blocco funzione di quella modalità e di quello stato.</translation>
+    </message>
+    <message>
+        <source>The nested GRAFCET %1 (page %2). %3 calls it while the unit is in %4 in a mode that runs it; its Complete is that state&apos;s State Complete.</source>
+        <translation>Il GRAFCET annidato %1 (pagina %2). %3 lo chiama mentre l&apos;unità è in %4 in una modalità che lo esegue; il suo Complete è lo State Complete di quello stato.</translation>
+    </message>
+    <message>
+        <source>The function block of %1 in the modes without a GRAFCET there: %2</source>
+        <translation>Il blocco funzione di %1 nelle modalità senza GRAFCET lì: %2</translation>
+    </message>
+    <message>
+        <source>it completes at once.</source>
+        <translation>si completa subito.</translation>
+    </message>
+    <message>
+        <source>it does nothing, Execute waits for a command.</source>
+        <translation>non fa nulla, Execute attende un comando.</translation>
     </message>
 </context>
 <context>
