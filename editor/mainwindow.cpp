@@ -163,7 +163,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     m_session = new SimulationSession(m_document, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
     m_packmlSession = new PackmlSimulationSession(m_document, this);
-    new PackmlSimulationMarks(m_packmlSession, m_packmlScene, this);
+    m_packmlChartMarks = new PackmlSimulationMarks(m_packmlSession, m_packmlScene, this);
     m_verification = new VerificationRunner(m_document, m_session, this);
     m_dockContext = new DockContext(this);
     m_dockContext->setClosedDocks(m_settings->closedDocks());
@@ -217,6 +217,7 @@ MainWindow::~MainWindow()
     m_centralTabs->disconnect(m_grafcetTabs);
     delete m_frontZoom;               // which follows the tab in front
     delete m_chartMarks;
+    delete m_packmlChartMarks;
     delete m_problemCounter;
     deleteDocks();
     delete m_view;

@@ -34,6 +34,7 @@ class PackmlChartBinding;
 class PackmlCommandsDock;
 class PackmlModesDock;
 class PackmlSimulationDock;
+class PackmlSimulationMarks;
 class PackmlSimulationSession;
 class PackmlStateDock;
 class PackmlChartScene;
@@ -230,6 +231,7 @@ private:
     SimulationChartMarks* m_chartMarks = nullptr;
     SimulationDock* m_simulationDock = nullptr;
     PackmlSimulationSession* m_packmlSession = nullptr;
+    PackmlSimulationMarks* m_packmlChartMarks = nullptr;
     PackmlSimulationDock* m_packmlSimulationDock = nullptr;
     QPointer<QDockWidget> m_simulationDockWithTheColumn; // while the simulation has the column
     QList<int> m_columnBeforeSimulation; // the Simulation dock's and the lower docks' heights

@@ -37,39 +37,39 @@ QString PackmlVerificationText::executeEntryText(const core::VerificationFinding
 
 QString PackmlVerificationText::text(const core::VerificationFinding& f)
 {
-    namespace gv = core::verification;
+    namespace pv = core::packml::verification;
     const std::string& code = f.code;
     const std::size_t n = f.arguments.size();
-    if (code == gv::kIncomplete)
+    if (code == core::verification::kIncomplete)
         return tr("The verification was not exhaustive (its time or size limit, timers or numeric inputs it explores "
                   "only in part): stuck states, states never active and commands never accepted were not decided, "
                   "and the absence of other findings is not a proof.");
-    if (code == gv::kStuckGrafcet && n >= 2)
+    if (code == pv::kStuckGrafcet && n >= 2)
         return tr("In %1, the GRAFCET of %2 can reach a situation from which Complete never becomes TRUE: only Stop "
                   "or Abort then leave %2.")
             .arg(argument(f, 0), argument(f, 1));
-    if (code == gv::kAbortingStuck && n >= 1)
+    if (code == pv::kAbortingStuck && n >= 1)
         return tr("In %1, Aborting can reach a situation from which Aborted is never reached: nothing leaves it.")
             .arg(argument(f, 0));
-    if (code == gv::kDisabledStateActive && n >= 2)
+    if (code == pv::kDisabledStateActive && n >= 2)
         return tr("%2 was active at the end of a scan in %1, a mode that disables it.").arg(argument(f, 0),
                                                                                           argument(f, 1));
-    if (code == gv::kModeChangeOutside && n >= 2)
+    if (code == pv::kModeChangeOutside && n >= 2)
         return tr("The mode changed from %1 in %2, a state where this change is not allowed.")
             .arg(argument(f, 0), argument(f, 1));
-    if (code == gv::kNeverActive && n == 1)
+    if (code == pv::kNeverActive && n == 1)
         return tr("%1 is never the current mode.").arg(argument(f, 0));
-    if (code == gv::kNeverActive && n >= 2)
+    if (code == pv::kNeverActive && n >= 2)
         return tr("%2 is enabled in %1 but never active there.").arg(argument(f, 0), argument(f, 1));
-    if (code == gv::kNeverAccepted && n >= 1)
+    if (code == pv::kNeverAccepted && n >= 1)
         return tr("The %1 command is accepted in no reachable configuration.").arg(argument(f, 0));
-    if (code == gv::kOutputOnAbort && n >= 3)
+    if (code == pv::kOutputOnAbort && n >= 3)
         return tr("In %1, continuous outputs are TRUE at the end of the scan that enters %2: %3.")
             .arg(argument(f, 0), argument(f, 1), argument(f, 2));
-    if (code == gv::kStoredOutputOnAbort && n >= 3)
+    if (code == pv::kStoredOutputOnAbort && n >= 3)
         return tr("In %1, stored outputs can still be TRUE when %2 is entered: %3.")
             .arg(argument(f, 0), argument(f, 1), argument(f, 2));
-    if (code == gv::kExecuteEntry && n >= 1)
+    if (code == pv::kExecuteEntry && n >= 1)
         return executeEntryText(f);
     return {};
 }

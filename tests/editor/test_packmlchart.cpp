@@ -2,6 +2,7 @@
 // (disabled states greyed, skipped transitions re-labelled, transitions the
 // mode lacks left out), optional transitions dashed, tooltips, selection.
 
+#include "packmlcappermodel.h"
 #include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlchartlayout.h"
 #include "core/templates/packml/packmlconfiguration.h"
@@ -29,16 +30,10 @@ using core::packml::StateKind;
 
 namespace {
 
-core::Model capper()
-{
-    core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_CORE_TEST_DATA_DIR "/packml-capper.json");
-    if (!loaded.model)
-        qFatal("cannot load the Capper");
-    return *loaded.model;
-}
+using packmltest::capper;
 
-constexpr int kProduction = 1;
-constexpr int kManual = 3;
+using packmltest::kManual;
+using packmltest::kProduction;
 
 } // namespace
 

@@ -3,6 +3,7 @@
 // speed, history, reset, replay of a scenario with its expectations, the
 // drop reasons worded, on the Capper of spec §6.6.
 
+#include "packmlcappermodel.h"
 #include "editor/document.h"
 #include "editor/simulation/packml/packmlsimulationsession.h"
 #include "editor/simulation/packml/packmlsimulationtext.h"
@@ -20,16 +21,10 @@ using core::packml::State;
 
 namespace {
 
-core::Model capper()
-{
-    core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_CORE_TEST_DATA_DIR "/packml-capper.json");
-    if (!loaded.model)
-        qFatal("cannot load the Capper");
-    return *loaded.model;
-}
+using packmltest::capper;
 
-constexpr int kProduction = 1;
-constexpr int kManual = 3;
+using packmltest::kManual;
+using packmltest::kProduction;
 
 // The Capper's walk of the core's scenario test, as a scenario file.
 constexpr const char* kCapperScenario = "at 1: command Reset\n"

@@ -3,6 +3,7 @@
 // of a press, the mode selector, the inputs and outputs, the trace with the
 // drop reasons worded, history, run, and a scenario replayed.
 
+#include "packmlcappermodel.h"
 #include "editor/document.h"
 #include "editor/simulation/lampindicator.h"
 #include "editor/simulation/packml/packmlsimulationdock.h"
@@ -32,13 +33,7 @@ using core::packml::State;
 
 namespace {
 
-core::Model capper()
-{
-    core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_CORE_TEST_DATA_DIR "/packml-capper.json");
-    if (!loaded.model)
-        qFatal("cannot load the Capper");
-    return *loaded.model;
-}
+using packmltest::capper;
 
 } // namespace
 

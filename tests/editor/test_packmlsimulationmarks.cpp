@@ -2,6 +2,7 @@
 // current state filled, the transition that fired green, the chart and its
 // mode selector on the current mode, for the scan shown; on the Capper.
 
+#include "packmlcappermodel.h"
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/packml/packmlarrowitem.h"
 #include "editor/chart/packml/packmlchartscene.h"
@@ -29,16 +30,10 @@ using core::packml::State;
 
 namespace {
 
-core::Model capper()
-{
-    core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_CORE_TEST_DATA_DIR "/packml-capper.json");
-    if (!loaded.model)
-        qFatal("cannot load the Capper");
-    return *loaded.model;
-}
+using packmltest::capper;
 
-constexpr int kProduction = 1;
-constexpr int kManual = 3;
+using packmltest::kManual;
+using packmltest::kProduction;
 
 } // namespace
 
