@@ -61,6 +61,7 @@ private slots:
     void saveAndLoadRoundTrip();
     void failedLoadKeepsModelAndHistory();
     void loadSaysWhatItDidNotTakeOver();
+    void loadsAPackmlModelAndSignalsItsEdits();
     void failedSaveKeepsModified();
     void replaceModelClearsHistory();
     void renameToAnInvalidNameIsRefused();
@@ -242,6 +243,38 @@ void TestDocument::saveAndLoadRoundTrip()
 
 // A GG-Generator file carrying GG Studio's verification properties used to
 // open without a word, and the properties were gone.
+// A PackML model (format 3.0) opens like a GEMMA one; its edits come out as
+// the PackML signals, after the checks.
+void TestDocument::loadsAPackmlModelAndSignalsItsEdits()
+{
+    QTemporaryDir directory;
+    const QString packml = directory.filePath("filler.json");
+    QVERIFY(core::saveModelFile(core::packml::newModel(core::packml::Edition::Y2022), packml.toStdString(),
+                                core::ModelFormat::Native));
+    Document document;
+    QString error;
+    QVERIFY2(document.load(packml, &error), qPrintable(error));
+    QVERIFY(document.model().packml());
+    QCOMPARE(document.model().packml()->options.edition, core::packml::Edition::Y2022);
+    QCOMPARE(document.filePath(), packml);
+
+    QSignalSpy command(&document, &Document::commandChanged);
+    QSignalSpy modes(&document, &Document::modesChanged);
+    QSignalSpy mode(&document, &Document::modeChanged);
+    QSignalSpy settings(&document, &Document::packmlSettingsChanged);
+    core::Model& model = document.modelForCommands();
+    QVERIFY(model.setCommandCondition(core::packml::Command::Start, "Cmd_Start AND Cmd_Reset"));
+    QVERIFY(model.addMode(4, "Cleaning"));
+    QVERIFY(model.setModeComment(4, "CIP"));
+    QVERIFY(model.setPackMLInitialMode(4));
+    QTRY_COMPARE(command.count(), 1);
+    QCOMPARE(command.first().first().toString(), QStringLiteral("Start"));
+    QCOMPARE(modes.count(), 1);
+    QVERIFY(!mode.isEmpty());
+    QCOMPARE(mode.last().first().toInt(), 4); // the comment
+    QCOMPARE(settings.count(), 1);
+}
+
 void TestDocument::loadSaysWhatItDidNotTakeOver()
 {
     QTemporaryDir directory;
@@ -284,13 +317,6 @@ void TestDocument::failedLoadKeepsModelAndHistory()
     QVERIFY(!document.load(directory.filePath("missing.ggs.json"), &error));
     QVERIFY2(error.contains("missing.ggs.json"), qPrintable(error));
     QVERIFY(!document.load(broken, nullptr));
-    // A PackML model is read by core but not edited yet: refused, said why.
-    const QString packml = directory.filePath("filler.ggs.json");
-    QVERIFY(core::saveModelFile(core::packml::newModel(core::packml::Edition::Y2015), packml.toStdString(),
-                                core::ModelFormat::Native));
-    QVERIFY(!document.load(packml, &error));
-    QVERIFY2(error.startsWith(packml + ": a PackML model"), qPrintable(error));
-    QVERIFY2(error.contains("does not handle PackML models"), qPrintable(error));
 
     QVERIFY(document.model().sameContent(before));
     QCOMPARE(document.undoStack()->count(), commands);

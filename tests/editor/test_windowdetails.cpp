@@ -73,6 +73,12 @@ private:
     {
         return editortest::namedChild<T>(*m_window, name);
     }
+    // In the GEMMA Simulation dock: the PackML one has widgets of the same names.
+    template <typename T>
+    T* simulationChild(const char* name) const
+    {
+        return editortest::namedChild<T>(*dock("simulationDock"), name);
+    }
 
     QTemporaryDir m_settingsDir;
     std::unique_ptr<Translators> m_translators;
@@ -360,14 +366,14 @@ void TestWindowDetails::simulationReadsAt1366x768()
              qPrintable(QStringLiteral("%1 px beside %2").arg(dock("simulationDock")->height())
                             .arg(m_window->centralWidget()->height())));
     const int line = m_window->fontMetrics().lineSpacing();
-    auto* inputs = child<QWidget>("inputsArea");
+    auto* inputs = simulationChild<QWidget>("inputsArea");
     QVERIFY2(inputs->height() >= 12 * line, qPrintable(QStringLiteral("inputs: %1 px").arg(inputs->height())));
-    auto* explanation = child<QAbstractItemView>("explanationView");
+    auto* explanation = simulationChild<QAbstractItemView>("explanationView");
     QVERIFY2(explanation->viewport()->height() >= 4 * line,
              qPrintable(QStringLiteral("explanation: %1 px").arg(explanation->viewport()->height())));
-    child<QTabWidget>("simulationTabs")->setCurrentIndex(1);
+    simulationChild<QTabWidget>("simulationTabs")->setCurrentIndex(1);
     QApplication::processEvents();
-    auto* trace = child<QTableView>("traceView");
+    auto* trace = simulationChild<QTableView>("traceView");
     QVERIFY2(trace->viewport()->height() >= 4 * trace->verticalHeader()->defaultSectionSize(),
              qPrintable(QStringLiteral("trace: %1 px").arg(trace->viewport()->height())));
 
@@ -387,8 +393,8 @@ void TestWindowDetails::scanStatusDoesNotCrowdTheSpeedBox()
     child<QAction>("stepBackAction")->trigger();
     child<QAction>("stepBackAction")->trigger();
     QApplication::processEvents();
-    auto* status = child<QLabel>("statusLabel");
-    auto* speed = child<QSpinBox>("speedSpin");
+    auto* status = simulationChild<QLabel>("statusLabel");
+    auto* speed = simulationChild<QSpinBox>("speedSpin");
     QVERIFY2(status->text().contains(QLatin1String("(history)")), qPrintable(status->text()));
     const QRect statusRect(status->mapTo(m_window.get(), QPoint()), status->size());
     const QRect speedRect(speed->mapTo(m_window.get(), QPoint()), speed->size());
