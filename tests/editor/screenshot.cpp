@@ -30,6 +30,8 @@
 #include "editor/export/chartexport.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
+#include "editor/document.h"
+#include "editor/simulation/packml/packmlsimulationsession.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/style/windowbuttonstyle.h"
 #include "editor/verificationrunner.h"
@@ -236,7 +238,23 @@ int main(int argc, char* argv[])
             return 1;
         }
     }
-    if (simulate) {
+    // A PackML model: its session plays the scans and the replay (its inputs are set in its dock).
+    if (simulate && window.document()->model().packml()) {
+        window.findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+        auto* session = window.findChild<editor::PackmlSimulationSession*>();
+        for (const Play& play : plays)
+            session->advance(play.scans);
+        if (!replay.isEmpty()) {
+            QString error;
+            if (!session->startReplay(replay, &error)) {
+                std::fprintf(stderr, "ggstudio_screenshot: --replay %s: %s\n", qPrintable(replay), qPrintable(error));
+                return 2;
+            }
+            session->advance(replayScans);
+        }
+        if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("packmlSimulationTabs")))
+            tabs->setCurrentIndex(simulationTab);
+    } else if (simulate) {
         window.findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
         editor::SimulationSession* session = window.simulationSession();
         for (const Play& play : plays) {

@@ -34,7 +34,9 @@ namespace {
 
 using core::packml::Command;
 
-constexpr int kCommandColumns = 5;
+// Three buttons a row fit the dock column's 340 px at 1366 x 768 in every
+// language (five overflowed it: "Unsuspend" was cut and the page scrolled sideways).
+constexpr int kCommandColumns = 3;
 
 QToolButton* toolButton(QWidget* parent, const QString& objectName, QStyle::StandardPixmap icon)
 {
