@@ -3,7 +3,6 @@
 #include "editor/chart/packml/packmlchartscene.h"
 #include "editor/chart/packml/packmlchartview.h"
 #include "editor/document.h"
-#include "editor/selection.h"
 
 #include "core/templates/packml/packmlconfiguration.h"
 
