@@ -146,7 +146,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     connect(m_grafcetTabs, &GrafcetTabs::statusMessage, this,
             [this](const QString& message) { statusBar()->showMessage(message, kStatusMessageMs); });
     connect(m_grafcetTabs, &GrafcetTabs::viewOpened, this, [this](GrafcetView* view) {
-        if (m_document->model().templateKind() == core::TemplateKind::Gemma)
+        if (!isPackml())
             new GrafcetSimulationMarks(m_session, view->grafcetScene(), view->grafcetScene());
         else
             addPackmlGrafcetMarks(m_packmlSession, view->grafcetScene(), view->grafcetScene());
@@ -548,17 +548,12 @@ void MainWindow::createActions()
     m_stepForwardAction = action("stepForwardAction",
                                  [this] { isPackml() ? m_packmlSession->stepForward() : m_session->stepForward(); },
                                  SimulationDock::stepForwardShortcut());
-    // Enabled where the history has a scan to go to.
-    const auto updateHistoryActions = [this] {
-        m_stepBackAction->setEnabled(isPackml() ? m_packmlSession->canStepBack() : m_session->canStepBack());
-        m_stepForwardAction->setEnabled(isPackml() ? m_packmlSession->canStepForward() : m_session->canStepForward());
-    };
-    connect(m_session, &SimulationSession::stepped, this, updateHistoryActions);
-    connect(m_session, &SimulationSession::historyMoved, this, updateHistoryActions);
-    connect(m_session, &SimulationSession::activeChanged, this, updateHistoryActions);
-    connect(m_packmlSession, &PackmlSimulationSession::stepped, this, updateHistoryActions);
-    connect(m_packmlSession, &PackmlSimulationSession::historyMoved, this, updateHistoryActions);
-    connect(m_packmlSession, &PackmlSimulationSession::activeChanged, this, updateHistoryActions);
+    connect(m_session, &SimulationSession::stepped, this, &MainWindow::updateHistoryActions);
+    connect(m_session, &SimulationSession::historyMoved, this, &MainWindow::updateHistoryActions);
+    connect(m_session, &SimulationSession::activeChanged, this, &MainWindow::updateHistoryActions);
+    connect(m_packmlSession, &PackmlSimulationSession::stepped, this, &MainWindow::updateHistoryActions);
+    connect(m_packmlSession, &PackmlSimulationSession::historyMoved, this, &MainWindow::updateHistoryActions);
+    connect(m_packmlSession, &PackmlSimulationSession::activeChanged, this, &MainWindow::updateHistoryActions);
     m_verifyAction = action("verifyAction", &MainWindow::verify, Qt::Key_F7);
     m_verifyAction->setShortcuts({QKeySequence(Qt::Key_F7), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V)});
     m_exactTimeAction = new QAction(this);
@@ -748,6 +743,13 @@ bool MainWindow::isPackml() const
 bool MainWindow::isSimulating() const
 {
     return m_session->isActive() || m_packmlSession->isActive();
+}
+
+// Enabled where the history of the template's session has a scan to go to.
+void MainWindow::updateHistoryActions()
+{
+    m_stepBackAction->setEnabled(isPackml() ? m_packmlSession->canStepBack() : m_session->canStepBack());
+    m_stepForwardAction->setEnabled(isPackml() ? m_packmlSession->canStepForward() : m_session->canStepForward());
 }
 
 QDockWidget* MainWindow::simulationDock() const
@@ -1345,8 +1347,7 @@ void MainWindow::onSimulationActiveChanged(bool active)
     m_runAction->setEnabled(active);
     m_scanAction->setEnabled(active);
     m_resetSimulationAction->setEnabled(active);
-    m_stepBackAction->setEnabled(isPackml() ? m_packmlSession->canStepBack() : m_session->canStepBack());
-    m_stepForwardAction->setEnabled(isPackml() ? m_packmlSession->canStepForward() : m_session->canStepForward());
+    updateHistoryActions();
     m_simulationIndicator->setVisible(active);
     applyEditingLock();
     if (active) {

@@ -182,6 +182,7 @@ private:
     bool isPackml() const;
     // Either template's simulation session is active.
     bool isSimulating() const;
+    void updateHistoryActions();
     // The Simulation dock of the model's template.
     QDockWidget* simulationDock() const;
     void installChartTab(QWidget* chart);
