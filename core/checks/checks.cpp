@@ -1,6 +1,8 @@
 #include "core/checks/checks.h"
 
 #include "core/checks/grafcetchecks.h"
+#include "core/condition/blanktext.h"
+#include "core/model/messagetext.h"
 
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
@@ -23,30 +25,6 @@
 namespace core {
 
 namespace {
-
-bool isBlank(std::string_view text)
-{
-    return text.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos;
-}
-
-std::string quoted(std::string_view text)
-{
-    std::string result;
-    result.reserve(text.size() + 2);
-    result.append("'").append(text).append("'");
-    return result;
-}
-
-std::string joined(const std::vector<std::string>& items)
-{
-    std::string result;
-    for (const std::string& item : items) {
-        if (!result.empty())
-            result += ", ";
-        result += item;
-    }
-    return result;
-}
 
 // Spec §6.3: macro-steps wait unless negated, enclosing steps wait only when
 // negated, family transitions never wait.

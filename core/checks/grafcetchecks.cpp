@@ -10,6 +10,8 @@
 #include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/grafcetadjacency.h"
+#include "core/model/grafcetnumbers.h"
+#include "core/model/messagetext.h"
 #include "core/model/model.h"
 #include "core/verification/satisfiability.h"
 
@@ -23,20 +25,6 @@ namespace core {
 
 namespace {
 
-const cond::ParseOptions kNested{cond::Context::Nested};
-
-std::string joined(const std::vector<std::string>& items)
-{
-    std::string result;
-    for (const std::string& item : items)
-        result += (result.empty() ? "" : ", ") + item;
-    return result;
-}
-
-std::string transitionName(int number)
-{
-    return "T" + std::to_string(number);
-}
 
 // A step's action that makes Complete TRUE at some point: `S Complete`,
 // `Complete := ...` or a continuous `Complete`.
@@ -64,7 +52,7 @@ struct ParsedGrafcet {
         , adjacency(g)
     {
         for (const GrafcetTransition& t : g.transitions())
-            receptivities.emplace(t.number, cond::parse(t.receptivity, kNested));
+            receptivities.emplace(t.number, cond::parse(t.receptivity, cond::kNestedOptions));
         for (const GrafcetStep& s : g.steps()) {
             std::vector<cond::ActionParseResult>& parsed = actions[s.number];
             for (const GrafcetAction& action : s.actions)
@@ -218,9 +206,9 @@ private:
             const std::string step = std::to_string(stepNumber);
             addNestedStep("GG419", Severity::Warning, parsed.owner.id, stepNumber,
                           "under the until-stable rule, step " + step + " of " + parsed.owner.id
-                              + " is left in the call that enters it (" + transitionName(t->number)
+                              + " is left in the call that enters it (" + grafcetnumbers::transitionLabel(t->number)
                               + " is always TRUE): the GEMMA layer never sees what it does to Complete",
-                          {parsed.owner.id, step, transitionName(t->number)});
+                          {parsed.owner.id, step, grafcetnumbers::transitionLabel(t->number)});
             return;
         }
     }
@@ -276,10 +264,10 @@ private:
         const std::string step = std::to_string(stepNumber);
         addNestedTransition("GG417", Severity::Warning, id, second.number,
                             "the selection after step " + step + " of " + id + " is not exclusive: "
-                                + transitionName(first.number) + " and " + transitionName(second.number)
+                                + grafcetnumbers::transitionLabel(first.number) + " and " + grafcetnumbers::transitionLabel(second.number)
                                 + " can both fire (" + (witness.empty() ? "always" : "with " + witness)
                                 + "), and both branches then start",
-                            {id, step, transitionName(first.number), transitionName(second.number), witness});
+                            {id, step, grafcetnumbers::transitionLabel(first.number), grafcetnumbers::transitionLabel(second.number), witness});
         return true;
     }
 
@@ -326,7 +314,7 @@ private:
         const std::string& id = parsed.owner.id;
         for (const GrafcetTransition& t : parsed.grafcet.transitions()) {
             const cond::ParseResult& receptivity = parsed.receptivities.at(t.number);
-            const std::string where = "the receptivity of " + transitionName(t.number) + " of " + id;
+            const std::string where = "the receptivity of " + grafcetnumbers::transitionLabel(t.number) + " of " + id;
             for (const cond::DivisionByZeroRisk& risk : variableDivisors(receptivity.ok(), receptivity.expression)) {
                 addNestedTransition("GG409", Severity::Warning, id, t.number,
                                     divisorMessage(where, risk, t.receptivity),
@@ -464,7 +452,7 @@ std::vector<Diagnostic> checkGrafcets(const Model& model)
 void forEachNestedIdentifier(const Model& model, const std::function<void(std::string_view)>& use)
 {
     const auto useTokens = [&](std::string_view text) {
-        for (const cond::Token& token : cond::tokenize(text, kNested)) {
+        for (const cond::Token& token : cond::tokenize(text, cond::kNestedOptions)) {
             if (token.kind == cond::TokenKind::Identifier)
                 use(token.text);
         }

@@ -4,6 +4,7 @@
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/grafcetadjacency.h"
+#include "core/model/grafcetnumbers.h"
 #include "core/model/model.h"
 #include "core/verification/satisfiability.h"
 
@@ -18,12 +19,6 @@ namespace core {
 
 namespace {
 
-const cond::ParseOptions kNested{cond::Context::Nested};
-
-std::string transitionName(int number)
-{
-    return "T" + std::to_string(number);
-}
 
 std::string joinedNumbers(const std::vector<int>& numbers, const std::string& prefix = {})
 {
@@ -183,7 +178,7 @@ private:
     bool runsThrough(const cond::Expression& first, const cond::Expression& second, const Variable& held) const
     {
         FreeAtomSpace space(m_model.variables());
-        const cond::Expression level = cond::parse(held.name, kNested).expression;
+        const cond::Expression level = cond::parse(held.name, cond::kNestedOptions).expression;
         const cond::Expression a = conjunction(space.substitute(first), level);
         const cond::Expression b = conjunction(space.substitute(second), level);
         if (untilStable())
@@ -201,12 +196,12 @@ private:
         const std::string when = untilStable() ? "in the same scan" : "in consecutive scans";
         const std::string steps = second.upstream.size() == 1 ? "step " : "steps ";
         add("GG423", Severity::Warning, Diagnostic::Target::GrafcetTransition, second.number, "receptivity",
-            held.name + " is read in " + transitionName(first.number) + " and by its level in "
-                + transitionName(second.number) + ", which can fire right after it: while " + held.name
+            held.name + " is read in " + grafcetnumbers::transitionLabel(first.number) + " and by its level in "
+                + grafcetnumbers::transitionLabel(second.number) + ", which can fire right after it: while " + held.name
                 + " stays TRUE, both fire " + when + " and " + steps + between + " of " + id
-                + " is passed through; read its rising edge in " + transitionName(second.number) + " (↑"
+                + " is passed through; read its rising edge in " + grafcetnumbers::transitionLabel(second.number) + " (↑"
                 + held.name + ") so that each press fires one transition",
-            {id, held.name, transitionName(first.number), transitionName(second.number), between,
+            {id, held.name, grafcetnumbers::transitionLabel(first.number), grafcetnumbers::transitionLabel(second.number), between,
              std::string(evolutionRuleName(m_model.settings().evolution))});
     }
 

@@ -1,9 +1,11 @@
 #include "core/codegen/gemmaprogram.h"
 
 #include "core/codegen/nestedgrafcetset.h"
+#include "core/condition/blanktext.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/divisionanalysis.h"
 #include "core/model/model.h"
+#include "core/model/messagetext.h"
 #include "core/model/stepnames.h"
 #include "core/condition/symboltable.h"
 
@@ -26,17 +28,6 @@ constexpr const char* kTokenBothPolaritiesCode = "GG209";
 constexpr const char* kTokenNoEffectCode = "GG210";
 constexpr const char* kTokenUndeclaredCode = "GG211";
 constexpr const char* kTokenNoLiteralCode = "GG212";
-
-bool isBlank(std::string_view text)
-{
-    return std::all_of(text.begin(), text.end(),
-                       [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; });
-}
-
-std::string quoted(const std::string& name)
-{
-    return "'" + name + "'";
-}
 
 struct BuildContext {
     const Model& model;

@@ -3,6 +3,7 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/model/model.h"
+#include "core/model/messagetext.h"
 
 #include <algorithm>
 #include <set>
@@ -10,11 +11,6 @@
 namespace core {
 
 namespace {
-
-std::string quoted(const std::string& name)
-{
-    return "'" + name + "'";
-}
 
 std::set<std::string> continuousOutputs(std::span<const OwnedGrafcet> grafcets) // upper case, Complete excluded
 {

@@ -2,10 +2,12 @@
 
 #include "core/codegen/gemmaprogram.h"
 #include "core/codegen/stgenerator.h"
+#include "core/condition/blanktext.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/divisionanalysis.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
+#include "core/model/messagetext.h"
 
 #include <algorithm>
 #include <set>
@@ -14,17 +16,6 @@ namespace core {
 
 namespace {
 
-const cond::ParseOptions kNested{cond::Context::Nested};
-
-bool isBlank(std::string_view text)
-{
-    return text.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos;
-}
-
-std::string quoted(const std::string& text)
-{
-    return "'" + text + "'";
-}
 
 // Builds one GRAFCET, collecting its problems.
 class NestedBuilder {
@@ -411,7 +402,7 @@ private:
         transition.upstream = source.upstream;
         transition.downstream = source.downstream;
         transition.text = source.receptivity;
-        transition.receptivity = cond::parse(source.receptivity, kNested);
+        transition.receptivity = cond::parse(source.receptivity, cond::kNestedOptions);
         const std::string where = "the receptivity of " + transitionLabel(source.number);
         if (isBlank(source.receptivity)) {
             problem("GG402", where + " is empty: write TRUE for a transition that is always ready", {m_scope.label, where},

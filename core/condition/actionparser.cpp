@@ -11,7 +11,6 @@ namespace {
 
 using ErrorKind = ParseError::Kind;
 
-const ParseOptions kNested{Context::Nested};
 
 // The IEC 60848 / 61131-3 qualifiers GG Studio does not implement: named as
 // such rather than taken for a variable followed by junk.
@@ -39,7 +38,7 @@ class ActionParser {
 public:
     explicit ActionParser(std::string_view text)
         : m_text(text)
-        , m_tokens(tokenize(text, kNested))
+        , m_tokens(tokenize(text, kNestedOptions))
     {
     }
 
@@ -177,7 +176,7 @@ private:
 
     void readExpression(Expression& into)
     {
-        ParseResult parsed = parseTokens(m_text, m_tokens, m_position, m_tokens.size() - 1, kNested);
+        ParseResult parsed = parseTokens(m_text, m_tokens, m_position, m_tokens.size() - 1, kNestedOptions);
         if (!parsed.ok()) {
             m_result.error = std::move(parsed.error);
             return;

@@ -42,6 +42,9 @@ struct ParseOptions {
     Context context = Context::Gemma;
 };
 
+// A nested GRAFCET's receptivities and actions (spec grafcet-layer.md).
+inline constexpr ParseOptions kNestedOptions{Context::Nested};
+
 struct Token {
     TokenKind kind = TokenKind::End;
     Span span;

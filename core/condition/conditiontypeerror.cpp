@@ -1,32 +1,28 @@
 #include "core/condition/conditiontypeerror.h"
 
 #include "core/model/enumnames.h"
+#include "core/model/messagetext.h"
 
 namespace core::cond {
 
 namespace {
 
-using Kind = TypeError::Kind;
+using TypeKind = TypeError::Kind;
 
 // The names are part of the arguments' contract: never rename one.
-constexpr EnumName<Kind> kKindNames[] = {
-    {Kind::NotBoolCondition, "not-bool-condition"},
-    {Kind::NotBoolOperand, "not-bool-operand"},
-    {Kind::NotNumericOperand, "not-numeric-operand"},
-    {Kind::BoolOperands, "bool-operands"},
-    {Kind::NumericOperands, "numeric-operands"},
-    {Kind::IntegerOperands, "integer-operands"},
-    {Kind::SameKindOperands, "same-kind-operands"},
-    {Kind::IntegerLiteralRange, "integer-literal-range"},
-    {Kind::RealLiteralRange, "real-literal-range"},
+constexpr EnumName<TypeKind> kTypeKindNames[] = {
+    {TypeKind::NotBoolCondition, "not-bool-condition"},
+    {TypeKind::NotBoolOperand, "not-bool-operand"},
+    {TypeKind::NotNumericOperand, "not-numeric-operand"},
+    {TypeKind::BoolOperands, "bool-operands"},
+    {TypeKind::NumericOperands, "numeric-operands"},
+    {TypeKind::IntegerOperands, "integer-operands"},
+    {TypeKind::SameKindOperands, "same-kind-operands"},
+    {TypeKind::IntegerLiteralRange, "integer-literal-range"},
+    {TypeKind::RealLiteralRange, "real-literal-range"},
 };
 
 constexpr std::size_t kArgumentCount = 6;
-
-std::string quoted(std::string_view text)
-{
-    return "'" + std::string(text) + "'";
-}
 
 std::string typeText(std::string_view type)
 {
@@ -50,29 +46,29 @@ std::string toText(const TypeError& error)
 {
     const std::string operand = toText(error.first);
     switch (error.kind) {
-    case Kind::NotBoolCondition: return "a condition must be BOOL, but " + operand;
-    case Kind::NotBoolOperand: return error.op + " needs a BOOL operand, but " + operand;
-    case Kind::NotNumericOperand: return "unary " + error.op + " needs a numeric operand, but " + operand;
-    case Kind::BoolOperands: return error.op + " needs BOOL operands, but " + operand;
-    case Kind::NumericOperands: return error.op + " needs numeric operands, but " + operand;
-    case Kind::IntegerOperands: return error.op + " needs integer operands, but " + operand;
-    case Kind::SameKindOperands:
+    case TypeKind::NotBoolCondition: return "a condition must be BOOL, but " + operand;
+    case TypeKind::NotBoolOperand: return error.op + " needs a BOOL operand, but " + operand;
+    case TypeKind::NotNumericOperand: return "unary " + error.op + " needs a numeric operand, but " + operand;
+    case TypeKind::BoolOperands: return error.op + " needs BOOL operands, but " + operand;
+    case TypeKind::NumericOperands: return error.op + " needs numeric operands, but " + operand;
+    case TypeKind::IntegerOperands: return error.op + " needs integer operands, but " + operand;
+    case TypeKind::SameKindOperands:
         return error.op + " needs two operands of the same kind, but " + operand + " and " + toText(error.second);
-    case Kind::IntegerLiteralRange:
+    case TypeKind::IntegerLiteralRange:
         return quoted(error.first.text) + " is out of range: integer literals go up to 9223372036854775807 (LINT)";
-    case Kind::RealLiteralRange: return quoted(error.first.text) + " is out of range for LREAL (-1.8E308..1.8E308)";
+    case TypeKind::RealLiteralRange: return quoted(error.first.text) + " is out of range for LREAL (-1.8E308..1.8E308)";
     }
     return {};
 }
 
 std::string_view kindName(TypeError::Kind kind)
 {
-    return nameIn(kKindNames, kind);
+    return nameIn(kTypeKindNames, kind);
 }
 
 std::optional<TypeError::Kind> typeErrorKind(std::string_view name)
 {
-    return valueIn(kKindNames, name);
+    return valueIn(kTypeKindNames, name);
 }
 
 void appendArguments(const TypeError& error, std::vector<std::string>& arguments)
@@ -89,7 +85,7 @@ std::optional<TypeError> typeErrorFromArguments(const std::vector<std::string>& 
 {
     if (arguments.size() < first + kArgumentCount)
         return std::nullopt;
-    const std::optional<Kind> kind = typeErrorKind(arguments[first]);
+    const std::optional<TypeKind> kind = typeErrorKind(arguments[first]);
     if (!kind)
         return std::nullopt;
     TypeError error;

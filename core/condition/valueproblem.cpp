@@ -1,28 +1,24 @@
 #include "core/condition/valueproblem.h"
 
 #include "core/model/enumnames.h"
+#include "core/model/messagetext.h"
 
 namespace core {
 
 namespace {
 
-using Kind = ValueProblem::Kind;
+using ProblemKind = ValueProblem::Kind;
 
 // The names are part of the arguments' contract: never rename one.
-constexpr EnumName<Kind> kKindNames[] = {
-    {Kind::Spaces, "spaces"},
-    {Kind::NotBool, "not-bool"},
-    {Kind::NotInteger, "not-integer"},
-    {Kind::NotReal, "not-real"},
-    {Kind::OutOfRange, "out-of-range"},
+constexpr EnumName<ProblemKind> kProblemKindNames[] = {
+    {ProblemKind::Spaces, "spaces"},
+    {ProblemKind::NotBool, "not-bool"},
+    {ProblemKind::NotInteger, "not-integer"},
+    {ProblemKind::NotReal, "not-real"},
+    {ProblemKind::OutOfRange, "out-of-range"},
 };
 
 constexpr std::size_t kArgumentCount = 5;
-
-std::string quoted(std::string_view value)
-{
-    return "'" + std::string(value) + "'";
-}
 
 } // namespace
 
@@ -30,14 +26,14 @@ std::string toText(const ValueProblem& problem)
 {
     const std::string value = quoted(problem.value);
     switch (problem.kind) {
-    case Kind::Spaces: return value + " has leading or trailing spaces";
-    case Kind::NotBool: return value + " is not a BOOL literal (TRUE or FALSE)";
-    case Kind::NotInteger:
+    case ProblemKind::Spaces: return value + " has leading or trailing spaces";
+    case ProblemKind::NotBool: return value + " is not a BOOL literal (TRUE or FALSE)";
+    case ProblemKind::NotInteger:
         return value + " is not " + (problem.type == "INT" ? "an " : "a ") + problem.type
             + " literal: write a whole number such as 42";
-    case Kind::NotReal:
+    case ProblemKind::NotReal:
         return value + " is not a " + problem.type + " literal: write a decimal number such as 1.5 or 2.0E3";
-    case Kind::OutOfRange:
+    case ProblemKind::OutOfRange:
         return value + " is out of range for " + problem.type + " (" + problem.low + ".." + problem.high + ")";
     }
     return {};
@@ -45,12 +41,12 @@ std::string toText(const ValueProblem& problem)
 
 std::string_view kindName(ValueProblem::Kind kind)
 {
-    return nameIn(kKindNames, kind);
+    return nameIn(kProblemKindNames, kind);
 }
 
 std::optional<ValueProblem::Kind> valueProblemKind(std::string_view name)
 {
-    return valueIn(kKindNames, name);
+    return valueIn(kProblemKindNames, name);
 }
 
 void appendArguments(const ValueProblem& problem, std::vector<std::string>& arguments)
@@ -66,7 +62,7 @@ std::optional<ValueProblem> valueProblemFromArguments(const std::vector<std::str
 {
     if (arguments.size() < first + kArgumentCount)
         return std::nullopt;
-    const std::optional<Kind> kind = valueProblemKind(arguments[first]);
+    const std::optional<ProblemKind> kind = valueProblemKind(arguments[first]);
     if (!kind)
         return std::nullopt;
     return ValueProblem{*kind, arguments[first + 1], arguments[first + 2], arguments[first + 3],

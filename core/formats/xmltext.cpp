@@ -101,7 +101,7 @@ std::string codePointName(char32_t code)
 
 // A reference or name quoted in a message, cut short so that a megabyte of
 // digits does not end up in it.
-std::string quoted(std::string_view text)
+std::string cutShort(std::string_view text)
 {
     constexpr std::size_t kLongest = 40;
     return text.size() <= kLongest ? std::string(text) : std::string(text.substr(0, kLongest)) + "...";
@@ -299,11 +299,11 @@ private:
         const std::string_view version = items[next++].second;
         // XML 1.1 allows control characters by reference that 1.0 refuses.
         if (version != "1.0")
-            fail(start, "XML version '" + quoted(version) + "' is not read: GG Studio reads XML 1.0");
+            fail(start, "XML version '" + cutShort(version) + "' is not read: GG Studio reads XML 1.0");
         if (next < items.size() && items[next].first == "encoding") {
             const std::string_view encoding = items[next++].second;
             if (!equalsIgnoringCase(encoding, "UTF-8"))
-                fail(start, "the encoding '" + quoted(encoding) + "': GG Studio reads PLCopen files in UTF-8");
+                fail(start, "the encoding '" + cutShort(encoding) + "': GG Studio reads PLCopen files in UTF-8");
         }
         if (next < items.size() && items[next].first == "standalone") {
             const std::string_view standalone = items[next++].second;
@@ -311,7 +311,7 @@ private:
                 fail(start, "standalone must be 'yes' or 'no' in the XML declaration");
         }
         if (next < items.size())
-            fail(start, "'" + quoted(items[next].first) + "' out of place in the XML declaration "
+            fail(start, "'" + cutShort(items[next].first) + "' out of place in the XML declaration "
                             "(version, then encoding, then standalone)");
     }
 
@@ -357,11 +357,11 @@ private:
             // "R&D" is a raw '&', "&amp" a reference cut short.
             if (!isPredefinedEntity(name))
                 fail(start, "a '&' that starts no reference (write it as &amp;)");
-            fail(start, "the reference &" + quoted(name) + " is not closed by ';'");
+            fail(start, "the reference &" + cutShort(name) + " is not closed by ';'");
         }
         ++m_pos;
         if (!isPredefinedEntity(name))
-            fail(start, "the entity &" + quoted(name)
+            fail(start, "the entity &" + cutShort(name)
                             + "; is not declared (XML predefines only &lt; &gt; &amp; &apos; &quot;)");
     }
 
@@ -388,7 +388,7 @@ private:
             fail(start, std::string("a malformed character reference: expected ") + (hex ? "hexadecimal " : "")
                             + "digits and ';' after '" + (hex ? "&#x" : "&#") + "'");
         ++m_pos;
-        const std::string reference = quoted(m_text.substr(start, m_pos - start));
+        const std::string reference = cutShort(m_text.substr(start, m_pos - start));
         const auto code = static_cast<char32_t>(value);
         if (beyond)
             fail(start, "the character reference " + reference + " is beyond U+10FFFF, the last Unicode character");
@@ -418,21 +418,21 @@ private:
     {
         skipSpaces();
         if (!lookingAt("="))
-            fail(m_pos, "expected '=' after the attribute '" + quoted(name) + "'");
+            fail(m_pos, "expected '=' after the attribute '" + cutShort(name) + "'");
         ++m_pos;
         skipSpaces();
         if (atEnd() || (m_text[m_pos] != '"' && m_text[m_pos] != '\''))
-            fail(m_pos, "the value of the attribute '" + quoted(name) + "' is not quoted");
+            fail(m_pos, "the value of the attribute '" + cutShort(name) + "' is not quoted");
         const char quote = m_text[m_pos++];
         const std::size_t valueStart = m_pos;
         while (true) {
             if (atEnd())
-                fail(nameOffset, "the value of the attribute '" + quoted(name) + "' is not closed by " + quote);
+                fail(nameOffset, "the value of the attribute '" + cutShort(name) + "' is not closed by " + quote);
             const char c = m_text[m_pos];
             if (c == quote)
                 break;
             if (c == '<')
-                fail(m_pos, "a '<' in the value of the attribute '" + quoted(name) + "' (write it as &lt;)");
+                fail(m_pos, "a '<' in the value of the attribute '" + cutShort(name) + "' (write it as &lt;)");
             if (c == '&')
                 scanReference();
             else
@@ -461,9 +461,9 @@ private:
                 return false;
             }
             if (atEnd())
-                fail(start, "the start tag <" + quoted(element) + "> is not closed by '>'");
+                fail(start, "the start tag <" + cutShort(element) + "> is not closed by '>'");
             if (!spaced)
-                fail(m_pos, "expected a space, '>' or '/>' in the start tag <" + quoted(element) + ">");
+                fail(m_pos, "expected a space, '>' or '/>' in the start tag <" + cutShort(element) + ">");
             scanAttribute(element);
         }
     }
@@ -472,13 +472,13 @@ private:
     {
         const std::size_t nameOffset = m_pos;
         if (!nameStartsAt(m_pos))
-            fail(m_pos, "expected an attribute name, '>' or '/>' in the start tag <" + quoted(element) + ">");
+            fail(m_pos, "expected an attribute name, '>' or '/>' in the start tag <" + cutShort(element) + ">");
         const std::string_view name = readName("an attribute name");
         // The cap keeps this search bounded, and the whole scan linear.
         if (std::find(m_attributeNames.begin(), m_attributeNames.end(), name) != m_attributeNames.end())
-            fail(nameOffset, "the attribute '" + quoted(name) + "' appears twice in <" + quoted(element) + ">");
+            fail(nameOffset, "the attribute '" + cutShort(name) + "' appears twice in <" + cutShort(element) + ">");
         if (m_attributeNames.size() == kMaxXmlAttributesPerElement)
-            fail(nameOffset, "the element <" + quoted(element) + "> has more than "
+            fail(nameOffset, "the element <" + cutShort(element) + "> has more than "
                                  + std::to_string(kMaxXmlAttributesPerElement) + " attributes (GG Studio reads at most "
                                  + std::to_string(kMaxXmlAttributesPerElement) + " on one element)");
         m_attributeNames.push_back(name);
@@ -492,12 +492,12 @@ private:
         const std::string_view name = readName("an element name after '</'");
         skipSpaces();
         if (!lookingAt(">"))
-            fail(m_pos, "expected '>' to close the end tag </" + quoted(name) + ">");
+            fail(m_pos, "expected '>' to close the end tag </" + cutShort(name) + ">");
         ++m_pos;
         const OpenElement& open = m_open.back();
         if (name != open.name) {
-            fail(start, "an element is not closed by its matching end tag: </" + quoted(name) + "> here closes <"
-                            + quoted(open.name) + "> of "
+            fail(start, "an element is not closed by its matching end tag: </" + cutShort(name) + "> here closes <"
+                            + cutShort(open.name) + "> of "
                             + describePosition(textPosition(m_text, open.offset)));
         }
         m_open.pop_back();
@@ -510,7 +510,7 @@ private:
             return;
         while (!m_open.empty()) {
             if (atEnd())
-                fail(m_open.back().offset, "the element <" + quoted(m_open.back().name) + "> is not closed");
+                fail(m_open.back().offset, "the element <" + cutShort(m_open.back().name) + "> is not closed");
             const char c = m_text[m_pos];
             if (c == '&')
                 scanReference();

@@ -1,6 +1,7 @@
 #include "core/model/grafcet.h"
 
 #include "core/condition/conditionparser.h"
+#include "core/model/grafcetnumbers.h"
 
 #include <algorithm>
 #include <set>
@@ -9,34 +10,19 @@ namespace core {
 
 namespace {
 
-std::string stepName(int number)
-{
-    return "step " + std::to_string(number);
-}
+using grafcetnumbers::contains;
+using grafcetnumbers::stepName;
+using grafcetnumbers::unknownStep;
+using grafcetnumbers::unknownTransition;
 
-std::string transitionName(int number)
+std::string namedTransition(int number)
 {
-    return "transition T" + std::to_string(number);
-}
-
-Status unknownStep(int number)
-{
-    return Status::failure("unknown-step", "the GRAFCET has no " + stepName(number));
-}
-
-Status unknownTransition(int number)
-{
-    return Status::failure("unknown-transition", "the GRAFCET has no " + transitionName(number));
+    return "transition " + grafcetnumbers::transitionLabel(number);
 }
 
 Status badNumber(int number)
 {
     return Status::failure("invalid-number", "numbers start at 1, not " + std::to_string(number));
-}
-
-bool contains(const std::vector<int>& numbers, int number)
-{
-    return std::find(numbers.begin(), numbers.end(), number) != numbers.end();
 }
 
 std::string activity(int number)
@@ -339,7 +325,7 @@ Status Grafcet::addTransition(GrafcetTransition newTransition)
         return badNumber(newTransition.number);
     if (transition(newTransition.number))
         return Status::failure("duplicate-transition",
-                               "the GRAFCET already has a " + transitionName(newTransition.number));
+                               "the GRAFCET already has a " + namedTransition(newTransition.number));
     if (Status status = checkStepSet(newTransition.upstream, "upstream"); !status)
         return status;
     if (Status status = checkStepSet(newTransition.downstream, "downstream"); !status)
@@ -428,7 +414,7 @@ std::vector<std::string> Grafcet::invariantViolations() const
     }
     std::set<int> transitionNumbers;
     for (const GrafcetTransition& t : m_transitions) {
-        const std::string name = transitionName(t.number);
+        const std::string name = namedTransition(t.number);
         if (t.number < 1)
             violations.push_back(name + ": numbers start at 1");
         if (!transitionNumbers.insert(t.number).second)

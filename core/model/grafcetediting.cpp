@@ -1,5 +1,6 @@
 #include "core/model/grafcetediting.h"
 
+#include "core/model/grafcetnumbers.h"
 #include "core/model/grafcetwalk.h"
 
 #include "core/layout/grafcetlayout.h"
@@ -16,10 +17,9 @@ namespace core {
 
 namespace {
 
-bool contains(const std::vector<int>& numbers, int number)
-{
-    return std::find(numbers.begin(), numbers.end(), number) != numbers.end();
-}
+using grafcetnumbers::contains;
+using grafcetnumbers::unknownStep;
+using grafcetnumbers::unknownTransition;
 
 // `number` in `set` replaced, at its place, by those of `with` not in the set yet.
 std::vector<int> replaced(const std::vector<int>& set, int number, const std::vector<int>& with)
@@ -36,16 +36,6 @@ std::vector<int> replaced(const std::vector<int>& set, int number, const std::ve
                 result.push_back(w);
     }
     return result;
-}
-
-Status unknownStep(int number)
-{
-    return Status::failure("unknown-step", "the GRAFCET has no step " + std::to_string(number));
-}
-
-Status unknownTransition(int number)
-{
-    return Status::failure("unknown-transition", "the GRAFCET has no transition T" + std::to_string(number));
 }
 
 GrafcetStep plainStep(int number)

@@ -1,5 +1,6 @@
 #include "core/model/grafcetlinking.h"
 
+#include "core/model/grafcetnumbers.h"
 #include <algorithm>
 #include <string>
 
@@ -7,24 +8,13 @@ namespace core {
 
 namespace {
 
-bool contains(const std::vector<int>& numbers, int number)
-{
-    return std::find(numbers.begin(), numbers.end(), number) != numbers.end();
-}
+using grafcetnumbers::contains;
+using grafcetnumbers::stepName;
+using grafcetnumbers::transitionLabel;
 
 Status refuse(std::string_view code, std::string message)
 {
     return Status::failure(std::string(code), std::move(message));
-}
-
-std::string stepName(int number)
-{
-    return "step " + std::to_string(number);
-}
-
-std::string transitionName(int number)
-{
-    return "T" + std::to_string(number);
 }
 
 // Step onto transition (stepIsUpstream) or transition onto step.
@@ -37,10 +27,10 @@ Status checkStepTransition(const Grafcet& grafcet, int step, int transition, boo
     const std::vector<int>& other = stepIsUpstream ? t->downstream : t->upstream;
     if (contains(joined, step))
         return refuse(kLinkExists, stepName(step) + (stepIsUpstream ? " already precedes " : " already follows ")
-                                       + transitionName(transition));
+                                       + transitionLabel(transition));
     if (contains(other, step))
         return refuse(kLinkStepToItself, stepName(step) + " would be linked to itself through "
-                                             + transitionName(transition));
+                                             + transitionLabel(transition));
     return Status::success();
 }
 
@@ -52,7 +42,7 @@ Status checkStepStep(const Grafcet& grafcet, int from, int to)
         return refuse(kLinkStepToItself, stepName(from) + " would be linked to itself through one transition");
     for (const GrafcetTransition* t : grafcet.transitionsFrom(from))
         if (contains(t->downstream, to))
-            return refuse(kLinkExists, transitionName(t->number) + " already leads from " + stepName(from) + " to "
+            return refuse(kLinkExists, transitionLabel(t->number) + " already leads from " + stepName(from) + " to "
                                            + stepName(to));
     return Status::success();
 }

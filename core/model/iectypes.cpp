@@ -1,5 +1,6 @@
 #include "core/model/iectypes.h"
 
+#include "core/model/messagetext.h"
 #include "core/templates/gemma/gemmatemplate.h"
 
 #include <algorithm>
@@ -253,11 +254,6 @@ bool fitsRange(const IntegerText& value, IntegerRange range)
     const std::uint64_t minMagnitude =
         range.min < 0 ? static_cast<std::uint64_t>(-(range.min + 1)) + 1 : 0;
     return value.magnitude <= minMagnitude;
-}
-
-std::string quoted(std::string_view value)
-{
-    return "'" + std::string(value) + "'";
 }
 
 ValueProblem makeProblem(ValueProblem::Kind kind, IecType type, std::string_view value, std::string low = {},

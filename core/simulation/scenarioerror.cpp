@@ -6,7 +6,7 @@ namespace core {
 
 namespace {
 
-using Kind = ScenarioError::Kind;
+using ErrorKind = ScenarioError::Kind;
 
 std::string quote(const std::string& text)
 {
@@ -14,35 +14,35 @@ std::string quote(const std::string& text)
 }
 
 // What a syntax error expected; empty for the other kinds.
-std::string expectation(Kind kind)
+std::string expectation(ErrorKind kind)
 {
     switch (kind) {
-    case Kind::ExpectedAt: return "'at SCAN:' at the start of the line";
-    case Kind::ExpectedScanNumber: return "a scan number after 'at'";
-    case Kind::ExpectedColon: return "':' after the scan number";
-    case Kind::ExpectedSetOrExpect: return "'set' or 'expect'";
-    case Kind::ExpectedSetItem: return "a variable name or 'complete STEP'";
-    case Kind::ExpectedStepAfterComplete: return "a step id after 'complete'";
-    case Kind::ExpectedStepAfterStep: return "a step id after 'step'";
-    case Kind::ExpectedTransition: return "a transition id or 'none' after 'fired'";
-    case Kind::ExpectedToken: return "a token name after 'token'";
-    case Kind::ExpectedVariable: return "a variable name after 'variable'";
-    case Kind::ExpectedExpectItem: return "step, fired, token, variable, entry, complete or nested after 'expect'";
-    case Kind::ExpectedStepAfterNested: return "a step id after 'nested'";
-    case Kind::ExpectedNestedItem: return "'steps' or 'unstable' after the step id";
-    case Kind::ExpectedStepNumber: return "a step number";
-    case Kind::ExpectedEqualsAfterStep: return "'=' after the step id";
-    case Kind::ExpectedEqualsAfterVariable: return "'=' after the variable name";
-    case Kind::ExpectedEqualsAfterToken: return "'=' after the token name";
-    case Kind::ExpectedEqualsAfterEntry: return "'=' after 'entry'";
-    case Kind::ExpectedValue: return "a value after '='";
-    case Kind::ExpectedBool: return "TRUE or FALSE";
-    case Kind::ExpectedCompleteValue: return "TRUE, FALSE or auto";
-    case Kind::ExpectedCommaOrEnd: return "',' or the end of the line";
-    case Kind::ExpectedEnd: return "the end of the line";
-    case Kind::ExpectedCommand: return "a command name after 'command'";
-    case Kind::ExpectedMode: return "a mode name or number after 'mode'";
-    case Kind::ExpectedState: return "a state name after 'state'";
+    case ErrorKind::ExpectedAt: return "'at SCAN:' at the start of the line";
+    case ErrorKind::ExpectedScanNumber: return "a scan number after 'at'";
+    case ErrorKind::ExpectedColon: return "':' after the scan number";
+    case ErrorKind::ExpectedSetOrExpect: return "'set' or 'expect'";
+    case ErrorKind::ExpectedSetItem: return "a variable name or 'complete STEP'";
+    case ErrorKind::ExpectedStepAfterComplete: return "a step id after 'complete'";
+    case ErrorKind::ExpectedStepAfterStep: return "a step id after 'step'";
+    case ErrorKind::ExpectedTransition: return "a transition id or 'none' after 'fired'";
+    case ErrorKind::ExpectedToken: return "a token name after 'token'";
+    case ErrorKind::ExpectedVariable: return "a variable name after 'variable'";
+    case ErrorKind::ExpectedExpectItem: return "step, fired, token, variable, entry, complete or nested after 'expect'";
+    case ErrorKind::ExpectedStepAfterNested: return "a step id after 'nested'";
+    case ErrorKind::ExpectedNestedItem: return "'steps' or 'unstable' after the step id";
+    case ErrorKind::ExpectedStepNumber: return "a step number";
+    case ErrorKind::ExpectedEqualsAfterStep: return "'=' after the step id";
+    case ErrorKind::ExpectedEqualsAfterVariable: return "'=' after the variable name";
+    case ErrorKind::ExpectedEqualsAfterToken: return "'=' after the token name";
+    case ErrorKind::ExpectedEqualsAfterEntry: return "'=' after 'entry'";
+    case ErrorKind::ExpectedValue: return "a value after '='";
+    case ErrorKind::ExpectedBool: return "TRUE or FALSE";
+    case ErrorKind::ExpectedCompleteValue: return "TRUE, FALSE or auto";
+    case ErrorKind::ExpectedCommaOrEnd: return "',' or the end of the line";
+    case ErrorKind::ExpectedEnd: return "the end of the line";
+    case ErrorKind::ExpectedCommand: return "a command name after 'command'";
+    case ErrorKind::ExpectedMode: return "a mode name or number after 'mode'";
+    case ErrorKind::ExpectedState: return "a state name after 'state'";
     default: return {};
     }
 }
@@ -50,37 +50,37 @@ std::string expectation(Kind kind)
 std::string otherText(const ScenarioError& e)
 {
     switch (e.kind) {
-    case Kind::ScanBelowOne: return "scans are numbered from 1";
-    case Kind::ScanTooLarge:
+    case ErrorKind::ScanBelowOne: return "scans are numbered from 1";
+    case ErrorKind::ScanTooLarge:
         return "scan number " + e.subject + " is too large: a scenario runs at most "
             + std::to_string(kMaxScenarioScan) + " scans";
-    case Kind::UnknownVariable: return "unknown variable " + quote(e.subject);
-    case Kind::InvalidValue: return e.subject + " is " + e.type + ": " + e.detail;
-    case Kind::HiddenStep: return "step " + e.subject + " is hidden: it does not exist for the simulator";
-    case Kind::UnknownStep: return "unknown step " + quote(e.subject);
-    case Kind::SimpleStep: return "step " + e.subject + " is a simple step: it has no Complete";
-    case Kind::IneffectiveTransition:
+    case ErrorKind::UnknownVariable: return "unknown variable " + quote(e.subject);
+    case ErrorKind::InvalidValue: return e.subject + " is " + e.type + ": " + e.detail;
+    case ErrorKind::HiddenStep: return "step " + e.subject + " is hidden: it does not exist for the simulator";
+    case ErrorKind::UnknownStep: return "unknown step " + quote(e.subject);
+    case ErrorKind::SimpleStep: return "step " + e.subject + " is a simple step: it has no Complete";
+    case ErrorKind::IneffectiveTransition:
         return "transition " + e.subject + " is not effective (it or one of its steps is hidden)";
-    case Kind::UnknownTransition: return "unknown transition " + quote(e.subject);
-    case Kind::UnknownToken: return "unknown token " + quote(e.subject);
-    case Kind::NotAnInput:
+    case ErrorKind::UnknownTransition: return "unknown transition " + quote(e.subject);
+    case ErrorKind::UnknownToken: return "unknown token " + quote(e.subject);
+    case ErrorKind::NotAnInput:
         return e.subject + " is an " + e.detail + " variable: the program writes it, a scenario sets only inputs";
-    case Kind::NoGrafcet: return "step " + e.subject + " has no nested GRAFCET";
-    case Kind::CompleteFromGrafcet:
+    case ErrorKind::NoGrafcet: return "step " + e.subject + " has no nested GRAFCET";
+    case ErrorKind::CompleteFromGrafcet:
         return "the Complete of " + e.subject + " comes from its nested GRAFCET: it cannot be set";
-    case Kind::InvalidUtf8: return "invalid UTF-8: a scenario file must be UTF-8 text";
-    case Kind::UnknownCommand: return "unknown command " + quote(e.subject);
-    case Kind::UnknownMode: return "unknown unit mode " + quote(e.subject);
-    case Kind::UnknownState: return "unknown state " + quote(e.subject);
-    case Kind::UnknownInstance: return "unknown instance " + quote(e.subject);
-    case Kind::PackMLOnly: return quote(e.subject) + " is for PackML models only";
-    case Kind::NotForPackML: return quote(e.subject) + " is for GEMMA models only";
-    case Kind::EdgeTooSoon:
+    case ErrorKind::InvalidUtf8: return "invalid UTF-8: a scenario file must be UTF-8 text";
+    case ErrorKind::UnknownCommand: return "unknown command " + quote(e.subject);
+    case ErrorKind::UnknownMode: return "unknown unit mode " + quote(e.subject);
+    case ErrorKind::UnknownState: return "unknown state " + quote(e.subject);
+    case ErrorKind::UnknownInstance: return "unknown instance " + quote(e.subject);
+    case ErrorKind::PackMLOnly: return quote(e.subject) + " is for PackML models only";
+    case ErrorKind::NotForPackML: return quote(e.subject) + " is for GEMMA models only";
+    case ErrorKind::EdgeTooSoon:
         return "a " + e.subject + " in scan " + std::to_string(e.scan) + " right after the one of line "
             + std::to_string(e.otherLine) + " is not seen: the request must be FALSE for one scan in between";
-    case Kind::ConflictingValue:
-    case Kind::ConflictingComplete:
-        return (e.kind == Kind::ConflictingValue ? e.subject : e.subject + "'s Complete") + " is set to two values in scan "
+    case ErrorKind::ConflictingValue:
+    case ErrorKind::ConflictingComplete:
+        return (e.kind == ErrorKind::ConflictingValue ? e.subject : e.subject + "'s Complete") + " is set to two values in scan "
             + std::to_string(e.scan) + ": " + e.otherValue + " on line " + std::to_string(e.otherLine) + ", "
             + e.found + " on line " + std::to_string(e.line);
     default: return {};

@@ -2,6 +2,7 @@
 
 #include "core/codegen/gemmaprogram.h"
 #include "core/model/model.h"
+#include "core/model/messagetext.h"
 #include "core/verification/concretesearch.h"
 #include "core/verification/programexplorer.h"
 #include "core/verification/property.h"
@@ -28,11 +29,6 @@ std::string nestedStep(const std::string& stepId, int number)
 std::string nestedTransition(const std::string& stepId, int number)
 {
     return stepId + "/T" + std::to_string(number);
-}
-
-std::string quoted(const std::string& text)
-{
-    return "'" + text + "'";
 }
 
 

@@ -6,6 +6,7 @@
 #include "core/codegen/stgenerator.h"
 #include "core/model/model.h"
 #include "core/condition/symboltable.h"
+#include "core/verification/promelawriter.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -521,27 +522,6 @@ private:
 
 // --- Writing ---------------------------------------------------------------------
 
-class Writer {
-public:
-    // Returns the 1-based number of the line written.
-    int line(const std::string& text)
-    {
-        if (!text.empty())
-            m_text.append(static_cast<std::size_t>(m_indent) * 4, ' ');
-        m_text += text;
-        m_text += '\n';
-        return ++m_lines;
-    }
-    void in() { ++m_indent; }
-    void out() { --m_indent; }
-    std::string take() { return std::move(m_text); }
-
-private:
-    std::string m_text;
-    int m_lines = 0;
-    int m_indent = 0;
-};
-
 std::string typeForCount(std::size_t values)
 {
     return values <= 200 ? "byte" : values <= 30000 ? "short" : "int";
@@ -624,7 +604,7 @@ private:
     std::vector<StepPlan> m_plans;
     std::size_t m_maxTransitions = 1;
     std::size_t m_maxFlags = 1;
-    Writer m_out;
+    PromelaWriter m_out;
     std::vector<PromelaMarker> m_markers;
 };
 

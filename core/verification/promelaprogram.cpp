@@ -6,6 +6,7 @@
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
 #include "core/verification/comparisonshape.h"
+#include "core/verification/promelawriter.h"
 #include "core/verification/property.h"
 #include "core/verification/satisfiability.h"
 #include "core/verification/tonscans.h"
@@ -111,26 +112,6 @@ struct Context {
     bool property = false;                    // `in S`, `S.Xn`
 };
 
-class Writer {
-public:
-    int line(const std::string& text)
-    {
-        if (!text.empty())
-            m_text.append(static_cast<std::size_t>(m_indent) * 4, ' ');
-        m_text += text;
-        m_text += '\n';
-        return ++m_lines;
-    }
-    void in() { ++m_indent; }
-    void out() { --m_indent; }
-    std::string take() { return std::move(m_text); }
-
-private:
-    std::string m_text;
-    int m_lines = 0;
-    int m_indent = 0;
-};
-
 class ProgramPromela {
 public:
     ProgramPromela(const Model& model, const ProgramPromelaOptions& options)
@@ -202,7 +183,7 @@ private:
     std::size_t m_maxTransitions = 1, m_maxSteps = 1, m_maxOutputs = 1;
     int m_maxEvolutions = 1; // gEvolutions counts up to it: a byte holds only 255
     std::vector<std::string> m_storedWritten; // Stored variables some stored action writes
-    Writer m_out;
+    PromelaWriter m_out;
     std::vector<PromelaMarker> m_markers;
 };
 
@@ -653,7 +634,7 @@ PromelaModel ProgramPromela::run()
     const std::string process = m_out.take();
     const std::vector<PromelaMarker> markers = std::move(m_markers);
     m_markers.clear();
-    m_out = Writer();
+    m_out = PromelaWriter();
     writeHeader();
     writeDeclarations();
     writeReaders();

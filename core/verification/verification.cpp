@@ -36,7 +36,7 @@ namespace code = verification;
 constexpr const char* kEmergencyStop = "D1";
 constexpr std::size_t kUnreached = std::numeric_limits<std::size_t>::max();
 
-std::string joined(const std::vector<std::string>& items, const std::string& last = " and ")
+std::string listed(const std::vector<std::string>& items, const std::string& last = " and ")
 {
     std::string text;
     for (std::size_t i = 0; i < items.size(); ++i) {
@@ -644,7 +644,7 @@ void Verifier::checkUnreachable()
         } else if (incoming.empty()) {
             finding.message = id + " can never become active: no effective transition leads to it";
         } else {
-            finding.message = id + " can never become active: " + joined(incoming, " and ")
+            finding.message = id + " can never become active: " + listed(incoming, " and ")
                 + (incoming.size() == 1 ? " never fires" : " never fire") + " in any situation reachable from "
                 + m_program.initialStepId;
         }
@@ -735,7 +735,7 @@ void Verifier::checkTransition(const std::string& id, const std::vector<Occurren
             VerificationFinding finding = gemmaFinding(code::kDeadTransition, Severity::Warning, {id});
             finding.elements.insert(finding.elements.end(), covers.begin(), covers.end());
             if (shown.step >= 0) {
-                finding.message = id + " can never fire: whenever its condition holds, " + joined(covers, " or ")
+                finding.message = id + " can never fire: whenever its condition holds, " + listed(covers, " or ")
                     + " fires first (higher priority)";
                 StepSpace& s = space(shown.step);
                 const Ref holds = s.manager().conj(s.theory(), s.gated(shown.transition));
@@ -795,7 +795,7 @@ void Verifier::checkTransition(const std::string& id, const std::vector<Occurren
             finding.message = transition.family
                 ? "the condition of " + id + " is always TRUE: no own transition of an F step can ever fire"
                 : "the condition of " + id + " is always TRUE when " + m_program.steps[static_cast<std::size_t>(
-                      occurrences.front().step)].id + " is active: " + joined(later, " and ")
+                      occurrences.front().step)].id + " is active: " + listed(later, " and ")
                       + (later.size() == 1 ? " can" : " can") + " never fire";
             const Occurrence o = occurrences.front();
             StepSpace& s = space(o.step);
@@ -1012,10 +1012,10 @@ void Verifier::checkEmergencyStop(int step)
                 + ": the family transition F->D1 is not effective and " + gemma.id + " has no transition to D1";
         else if (m.conj(bad, s.zero()) != bdd::kFalse)
             finding.message = "the emergency stop D1 cannot be entered from " + gemma.id
-                + " in one scan, whatever the inputs: " + joined(ways, " and ") + " cannot fire there";
+                + " in one scan, whatever the inputs: " + listed(ways, " and ") + " cannot fire there";
         else
             finding.message = "after some scans in " + gemma.id + ", the emergency stop D1 cannot be entered in one "
-                "scan, whatever the inputs: " + joined(ways, " and ") + " cannot fire with the tokens it holds";
+                "scan, whatever the inputs: " + listed(ways, " and ") + " cannot fire with the tokens it holds";
         const Ref show = m.conj(s.theory(), stopHolds);
         finding.counterexample = counterexampleAt(
             code::kNoEmergencyStop + std::string(": ") + finding.message, step, bad, [&](const Configuration& c) {
@@ -1082,7 +1082,7 @@ void Verifier::reportUndecided(VerificationResult& result)
                 + ": which of its transitions can fire, and GV102 to GV107 about it and its transitions, were "
                   "not decided; the steps it leads to are taken as reachable";
         } else {
-            std::string what = joined(codes, " and ");
+            std::string what = listed(codes, " and ");
             if (transitions)
                 what = "where its transitions lead" + std::string(codes.empty() ? "" : ", ") + what;
             finding.message = what + (codes.size() + (transitions ? 1 : 0) == 1 ? " was" : " were")

@@ -1,11 +1,11 @@
 #include "editor/simulation/simulationsession.h"
 
 #include "editor/document.h"
+#include "editor/simulation/simulationpacing.h"
 #include "editor/simulation/simulationtext.h"
 
 #include "core/formats/fileio.h"
 
-#include <QCoreApplication>
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
@@ -15,35 +15,6 @@
 #include <cmath>
 
 namespace editor {
-
-namespace {
-
-// A tick that comes late (a busy machine, a modal dialog) does not try to
-// catch up on more than this: simulated time then runs slower than real
-// time instead of freezing the window.
-constexpr double kMaxCatchUpSeconds = 0.1;
-
-// A tick's scans stop after this much time, so that the event loop runs at
-// least every kTickMs + kTickBudgetMs + one scan (a few milliseconds even
-// for issue 32's 10,000-step unstable GRAFCET): what is left of the owed
-// scans is dropped, simulated time then runs slower than real time.
-constexpr qint64 kTickBudgetNs = 12'000'000;
-
-// At most this many problems of a scenario file are listed.
-constexpr std::size_t kMaxListedErrors = 10;
-
-QString errorList(const std::vector<core::ScenarioError>& errors)
-{
-    QStringList lines;
-    for (std::size_t i = 0; i < errors.size() && i < kMaxListedErrors; ++i)
-        lines << scenarioErrorText(errors[i]);
-    if (errors.size() > kMaxListedErrors)
-        lines << QCoreApplication::translate("editor::SimulationSession", "(%1 more)")
-                     .arg(errors.size() - kMaxListedErrors);
-    return lines.join(QLatin1Char('\n'));
-}
-
-} // namespace
 
 SimulationSession::SimulationSession(Document* document, QObject* parent)
     : QObject(parent)
@@ -187,12 +158,12 @@ void SimulationSession::setSpeed(int scansPerSecond)
 
 void SimulationSession::onTick()
 {
-    const double seconds = std::min(static_cast<double>(m_clock.nsecsElapsed()) / 1e9, kMaxCatchUpSeconds);
+    const double seconds = std::min(static_cast<double>(m_clock.nsecsElapsed()) / 1e9, simulationpacing::kMaxCatchUpSeconds);
     m_clock.restart();
     m_owedScans += seconds * m_speed;
     const double scans = std::floor(m_owedScans);
     m_owedScans -= scans;
-    runScans(static_cast<std::int64_t>(scans), kTickBudgetNs);
+    runScans(static_cast<std::int64_t>(scans), simulationpacing::kTickBudgetNs);
 }
 
 void SimulationSession::advance(std::int64_t scans)
@@ -537,7 +508,7 @@ bool SimulationSession::startReplayText(std::string_view text, const QString& fi
         errors = core::validateScenario(parsed.scenario, *m_simulator);
     if (!errors.empty()) {
         if (error)
-            *error = errorList(errors);
+            *error = scenarioErrorListText(errors);
         return false;
     }
 

@@ -300,4 +300,15 @@ QString scenarioErrorText(const core::ScenarioError& error)
         .arg(file, QString::number(error.line), QString::number(error.column), scenarioErrorMessage(error));
 }
 
+QString scenarioErrorListText(const std::vector<core::ScenarioError>& errors)
+{
+    constexpr std::size_t kMaxListed = 10;
+    QStringList lines;
+    for (std::size_t i = 0; i < errors.size() && i < kMaxListed; ++i)
+        lines << scenarioErrorText(errors[i]);
+    if (errors.size() > kMaxListed)
+        lines << QCoreApplication::translate("editor::SimulationSession", "(%1 more)").arg(errors.size() - kMaxListed);
+    return lines.join(QLatin1Char('\n'));
+}
+
 } // namespace editor

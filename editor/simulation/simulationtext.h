@@ -28,4 +28,7 @@ QString scenarioFailureText(const core::ScenarioFailure& failure);
 // location as ScenarioError::toString() writes it, then the message.
 QString scenarioErrorText(const core::ScenarioError& error);
 
+// The first ten of a scenario file's problems, one a line, then "(3 more)".
+QString scenarioErrorListText(const std::vector<core::ScenarioError>& errors);
+
 } // namespace editor

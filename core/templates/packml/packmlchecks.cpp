@@ -1,5 +1,6 @@
 #include "core/templates/packml/packmlchecks.h"
 
+#include "core/condition/blanktext.h"
 #include "core/condition/valueproblem.h"
 #include "core/model/iectypes.h"
 #include "core/model/model.h"
@@ -15,11 +16,6 @@
 namespace core::packml {
 
 namespace {
-
-bool isBlank(std::string_view text)
-{
-    return text.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos;
-}
 
 void append(std::vector<Diagnostic>& result, std::vector<Diagnostic> more)
 {

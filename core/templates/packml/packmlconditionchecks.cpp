@@ -1,5 +1,6 @@
 #include "core/templates/packml/packmlconditionchecks.h"
 
+#include "core/condition/blanktext.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
 #include "core/condition/symboltable.h"
@@ -16,11 +17,6 @@
 namespace core::packml {
 
 namespace {
-
-bool isBlank(std::string_view text)
-{
-    return text.find_first_not_of(" \t\r\n\f\v") == std::string_view::npos;
-}
 
 // The user's variables and the PackTags globals a condition may read; a
 // user variable of the same name hides the global (PM018 reports it).

@@ -1,6 +1,7 @@
 #include "core/templates/packml/packmlprogram.h"
 
 #include "core/codegen/nestedgrafcetset.h"
+#include "core/condition/blanktext.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparseerror.h"
 #include "core/condition/symboltable.h"
@@ -14,11 +15,6 @@
 namespace core::packml {
 
 namespace {
-
-bool isBlank(std::string_view text)
-{
-    return std::all_of(text.begin(), text.end(), [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; });
-}
 
 // The names of spec §5.3 (PM018) and the IEC rules (GG301-GG303). The six
 // PackTags are the program's own globals: reading them is what they are for,

@@ -1,5 +1,6 @@
 #include "core/templates/packml/packmlscanchecks.h"
 
+#include "core/model/messagetext.h"
 #include "core/templates/packml/packmlrules.h"
 #include "core/templates/packml/packmlsimulator.h"
 
@@ -42,14 +43,6 @@ void outputsAfter(const PackmlSimulator& simulator, ScanFacts& facts)
         else if (listed(stored))
             facts.storedOutputsTrue.push_back(variable.name);
     }
-}
-
-std::string joined(const std::vector<std::string>& names)
-{
-    std::string text;
-    for (const std::string& name : names)
-        text += (text.empty() ? "" : ", ") + name;
-    return text;
 }
 
 } // namespace

@@ -28,6 +28,12 @@ QString PackmlChartTexts::modeTitle(int number, const QString& name)
     return QStringLiteral("%1 %2").arg(number).arg(name);
 }
 
+QString PackmlChartTexts::modeTitle(const core::packml::Mode& mode)
+{
+    const std::string_view name = mode.displayName();
+    return modeTitle(mode.number, QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
+}
+
 QStringList PackmlChartTexts::transitionLabels(const core::packml::TemplateTransition& transition,
                                                const std::optional<core::packml::Destination>& destination)
 {

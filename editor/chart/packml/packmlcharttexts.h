@@ -20,6 +20,7 @@ class PackmlChartTexts {
 public:
     // "1 Production": how the mode selector and the tooltips name a mode.
     static QString modeTitle(int number, const QString& name);
+    static QString modeTitle(const core::packml::Mode& mode);
 
     // What an arrow's label may say, longest first (PackmlArrowItem picks
     // the first that fits): "Reset", "SC"; where the target is skipped

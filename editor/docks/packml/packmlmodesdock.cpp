@@ -31,11 +31,6 @@ namespace {
 
 namespace packml = core::packml;
 
-QString modeTitle(const packml::Mode& mode)
-{
-    return PackmlChartTexts::modeTitle(mode.number, toQString(mode.displayName()));
-}
-
 } // namespace
 
 QString PackmlModesDock::title()
@@ -174,7 +169,7 @@ void PackmlModesDock::refreshList()
     const QSignalBlocker blocker(m_list);
     m_list->clear();
     for (const packml::Mode& mode : configuration.modes) {
-        auto* item = new QListWidgetItem(modeTitle(mode), m_list);
+        auto* item = new QListWidgetItem(PackmlChartTexts::modeTitle(mode), m_list);
         item->setData(Qt::UserRole, mode.number);
         item->setToolTip(toQString(mode.comment));
         if (m_document->hasProblems(ElementRef::packmlMode(mode.number)))
@@ -188,7 +183,7 @@ void PackmlModesDock::refreshInitialMode()
     const QSignalBlocker blocker(m_initialCombo);
     m_initialCombo->clear();
     for (const packml::Mode& mode : configuration.modes)
-        m_initialCombo->addItem(modeTitle(mode), mode.number);
+        m_initialCombo->addItem(PackmlChartTexts::modeTitle(mode), mode.number);
     m_initialCombo->setCurrentIndex(m_initialCombo->findData(configuration.initialMode));
 }
 
@@ -211,7 +206,7 @@ void PackmlModesDock::showMode(int number)
     if (!mode)
         return;
     m_form->setMode(number);
-    m_formTitle->setText(modeTitle(*mode));
+    m_formTitle->setText(PackmlChartTexts::modeTitle(*mode));
     for (int row = 0; row < m_list->count(); ++row) {
         if (m_list->item(row)->data(Qt::UserRole).toInt() == number) {
             const QSignalBlocker blocker(m_list);

@@ -30,11 +30,6 @@ namespace {
 namespace packml = core::packml;
 using packml::GrafcetChoice;
 
-QString modeTitle(const packml::Mode& mode)
-{
-    return PackmlChartTexts::modeTitle(mode.number, toQString(mode.displayName()));
-}
-
 // The combo's items carry the choice: None, Own, or a mode number for "same as".
 constexpr int kNoneItem = -1;
 constexpr int kOwnItem = 0;
@@ -234,7 +229,7 @@ void PackmlStateDock::refreshGrafcets(packml::State state)
     for (const packml::Mode* mode : modes) {
         ModeRow row;
         row.mode = mode->number;
-        row.label = new QLabel(modeTitle(*mode), m_grafcetGroup);
+        row.label = new QLabel(PackmlChartTexts::modeTitle(*mode), m_grafcetGroup);
         QFont font = row.label->font();
         font.setBold(mode->number == m_selectedMode);
         row.label->setFont(font);
@@ -269,7 +264,7 @@ void PackmlStateDock::fillChoice(ModeRow& row, packml::State state)
     // "Same as k" names k's own GRAFCET: no chains (spec §4).
     for (const packml::Mode& other : configuration.modes)
         if (other.number != mode.number && other.grafcetChoice(state).kind == GrafcetChoice::Kind::Own)
-            row.choice->addItem(tr("Same as %1").arg(modeTitle(other)), other.number);
+            row.choice->addItem(tr("Same as %1").arg(PackmlChartTexts::modeTitle(other)), other.number);
     int index = row.choice->findData(itemData(current));
     if (index < 0) { // a "same as" kept as written that names no usable GRAFCET (PM015)
         row.choice->addItem(tr("Same as mode %1 (no GRAFCET there)").arg(current.sameAsMode), current.sameAsMode);

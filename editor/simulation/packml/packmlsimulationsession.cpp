@@ -1,6 +1,7 @@
 #include "editor/simulation/packml/packmlsimulationsession.h"
 
 #include "editor/document.h"
+#include "editor/simulation/simulationpacing.h"
 #include "editor/simulation/simulationtext.h"
 
 #include "core/templates/packml/packtags.h"
@@ -20,29 +21,11 @@ namespace {
 
 using core::packml::PackmlScanRecord;
 
-// As in the GEMMA session: a late tick does not catch up on more than
-// this, and a tick's scans stop after a time budget, so that a slow model
-// slows simulated time down instead of freezing the window.
-constexpr double kMaxCatchUpSeconds = 0.1;
-constexpr qint64 kTickBudgetNs = 12'000'000;
-constexpr std::size_t kMaxListedErrors = 10;
-
 // The PackTags a request goes through (spec §6.3).
 constexpr const char* kCommandNumberTag = "CntrlCmd";
 constexpr const char* kCommandEdgeTag = "CmdChangeRequest";
 constexpr const char* kModeNumberTag = "UnitMode";
 constexpr const char* kModeEdgeTag = "UnitModeChangeRequest";
-
-QString errorList(const std::vector<core::ScenarioError>& errors)
-{
-    QStringList lines;
-    for (std::size_t i = 0; i < errors.size() && i < kMaxListedErrors; ++i)
-        lines << scenarioErrorText(errors[i]);
-    if (errors.size() > kMaxListedErrors)
-        lines << QCoreApplication::translate("editor::PackmlSimulationSession", "(%1 more)")
-                     .arg(errors.size() - kMaxListedErrors);
-    return lines.join(QLatin1Char('\n'));
-}
 
 } // namespace
 
@@ -181,12 +164,12 @@ void PackmlSimulationSession::setSpeed(int scansPerSecond)
 
 void PackmlSimulationSession::onTick()
 {
-    const double seconds = std::min(static_cast<double>(m_clock.nsecsElapsed()) / 1e9, kMaxCatchUpSeconds);
+    const double seconds = std::min(static_cast<double>(m_clock.nsecsElapsed()) / 1e9, simulationpacing::kMaxCatchUpSeconds);
     m_clock.restart();
     m_owedScans += seconds * m_speed;
     const double scans = std::floor(m_owedScans);
     m_owedScans -= scans;
-    runScans(static_cast<std::int64_t>(scans), kTickBudgetNs);
+    runScans(static_cast<std::int64_t>(scans), simulationpacing::kTickBudgetNs);
 }
 
 void PackmlSimulationSession::advance(std::int64_t scans)
@@ -481,7 +464,7 @@ bool PackmlSimulationSession::startReplayText(std::string_view text, const QStri
         errors = core::packml::validatePackmlScenario(parsed.scenario, *m_simulator);
     if (!errors.empty()) {
         if (error)
-            *error = errorList(errors);
+            *error = scenarioErrorListText(errors);
         return false;
     }
     pause();

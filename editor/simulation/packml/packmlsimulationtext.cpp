@@ -115,7 +115,7 @@ QString droppedCommandText(const DroppedEvent& event)
 // Where a fault happened, worded from its parts: a nested GRAFCET's
 // receptivity or action (stepId names the instance), else a command's or a
 // mode's condition, whose name only the core's English place carries.
-QString faultPlaceText(const core::SimulationFault& fault)
+QString packmlFaultPlaceText(const core::SimulationFault& fault)
 {
     const QString owner = fromStd(fault.stepId);
     if (fault.place.empty() || fault.nestedTransition > 0 || fault.actionIndex >= 0) {
@@ -180,7 +180,7 @@ QString packmlFaultText(const core::SimulationFault& fault)
     //: %1: a scan number, %2: where (a condition, a receptivity, an action), %3: the division as written, %4: the text
     return PackmlSimulationText::tr("Stopped at scan %1: integer division by zero in %2 (%3 in '%4'). On the PLC the "
                                     "task stops with a fault; Reset to run again.")
-        .arg(QString::number(static_cast<qlonglong>(fault.scan)), faultPlaceText(fault), fromStd(fault.division),
+        .arg(QString::number(static_cast<qlonglong>(fault.scan)), packmlFaultPlaceText(fault), fromStd(fault.division),
              fromStd(fault.text));
 }
 
