@@ -185,7 +185,7 @@ void Writer::writeDeclarations()
     for (std::size_t o = 0; o < m_maxOutputs; ++o)
         more += "bool no" + std::to_string(o) + "; ";
     d.line(more + "bool nc;");
-    d.line("");
+    d.line("/* the scan */");
 }
 
 std::string Writer::condition(const ProgramCondition& c) const
