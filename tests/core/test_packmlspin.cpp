@@ -189,17 +189,6 @@ int instanceOf(const Model& model, int mode, State state)
     return static_cast<int>(instance - program.instances.data());
 }
 
-ModeTransition& transitionOf(PackmlProgram& program, int mode, State source, Command command)
-{
-    ProgramMode& m = *std::find_if(program.modes.begin(), program.modes.end(), [&](const ProgramMode& x) { return x.number == mode; });
-    ProgramState& s = *std::find_if(m.states.begin(), m.states.end(), [&](const ProgramState& x) { return x.state == source; });
-    auto found = std::find_if(s.transitions.begin(), s.transitions.end(), [&](const ModeTransition& t) {
-        return t.transition.trigger == Trigger::Command && t.transition.command == command;
-    });
-    REQUIRE(found != s.transitions.end());
-    return *found;
-}
-
 } // namespace
 
 TEST_CASE("PackML SPIN agreement on the Capper of spec §6.6", "[spin][packml]")
@@ -233,7 +222,7 @@ TEST_CASE("PackML SPIN agreement on programs and models seeded with each defect"
     SECTION("GV132: a transition into a state the mode disables")
     {
         PackmlProgram program = buildPackmlProgram(*capper);
-        transitionOf(program, 1, State::Idle, Command::Start).destination = Destination{State::Starting, std::nullopt};
+        packmltests::transitionOf(program, 1, State::Idle, Command::Start).destination = Destination{State::Starting, std::nullopt};
         CHECK(requireAgreement(*capper, program).count(checkFact("GV132", 1, State::Starting)) == 1);
     }
     SECTION("GV133: a mode change granted outside S(c,r)")
