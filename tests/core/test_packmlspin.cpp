@@ -292,3 +292,14 @@ TEST_CASE("PackML SPIN agreement on random PackML models", "[spin][packml]")
     if (!sttest::kSanitized)
         CHECK(withGrafcet > 0);
 }
+
+TEST_CASE("A PackML program the Promela export cannot write exactly is refused with the reason", "[spin][packml]")
+{
+    // A division by zero would stop the PLC, which the model does not follow.
+    const auto model = capperWith("\"receptivity\": \"Capped\"", "\"receptivity\": \"Capped OR StateCurrent MOD 2 = 1\"");
+    const PackmlPromela exported = buildPackmlPromela(*model);
+    CHECK(exported.unsupported.find("MOD") != std::string::npos);
+    CHECK(exported.text.empty());
+    CHECK(exported.markers.empty());
+    CHECK(buildPackmlPromela(*packmltests::loadCapper()).unsupported.empty());
+}

@@ -1,7 +1,5 @@
 #include "core/templates/packml/packmlpromela.h"
 
-#include "core/condition/conditionanalysis.h"
-#include "core/condition/conditionevaluator.h"
 #include "core/model/iectypes.h"
 #include "core/model/model.h"
 #include "core/templates/packml/packmlpromelawriter.h"
@@ -17,21 +15,6 @@ namespace promela {
 
 namespace {
 
-void addOnce(std::vector<int>& list, int value)
-{
-    if (std::find(list.begin(), list.end(), value) == list.end())
-        list.push_back(value);
-}
-
-std::string valueText(const cond::Value& value)
-{
-    if (const bool* b = std::get_if<bool>(&value))
-        return *b ? "1" : "0";
-    if (const std::int64_t* i = std::get_if<std::int64_t>(&value))
-        return std::to_string(*i);
-    throw Unsupported("a REAL value");
-}
-
 std::string number(State state)
 {
     return std::to_string(static_cast<int>(state));
@@ -40,20 +23,6 @@ std::string number(State state)
 bool entersAbort(State state)
 {
     return state == State::Aborting || state == State::Aborted;
-}
-
-// The input slots a condition reads.
-std::vector<int> inputsOf(const PackmlProgram& program, const ProgramCondition& condition)
-{
-    std::vector<int> inputs;
-    if (!condition.usable)
-        return inputs;
-    for (int node : cond::variableNodes(condition.parsed.expression)) {
-        const int slot = program.slotOf(condition.parsed.expression.at(node).text);
-        if (slot >= 0 && program.variables[static_cast<std::size_t>(slot)].kind == VariableKind::Input)
-            addOnce(inputs, slot);
-    }
-    return inputs;
 }
 
 } // namespace
@@ -150,12 +119,9 @@ void Writer::writeDeclarations()
     d.line("/* the variables: v stored, i inputs (chosen in each scan), p <V>_PREV */");
     for (std::size_t slot = 0; slot < m_program.variables.size(); ++slot) {
         const Variable& variable = m_program.variables[slot];
-        std::string type;
-        try {
-            type = m_names.type(variable);
-        } catch (const Unsupported&) {
+        if (!m_names.holds(variable))
             continue; // never read nor written: Names and writeStored refuse it otherwise
-        }
+        const std::string type = m_names.type(variable);
         const int s = static_cast<int>(slot);
         if (variable.kind == VariableKind::Input)
             d.line(type + " " + Names::input(s) + " = 0; /* " + comment(variable.name) + " */");
@@ -218,25 +184,6 @@ void Writer::markIf(const std::string& test, PackmlMarker m, const std::string& 
     m_process.line("fi;");
 }
 
-std::pair<bool, bool> Writer::collapsedValues(const ProgramCondition& c) const
-{
-    if (!c.usable)
-        return {false, true};
-    const std::vector<int> inputs = inputsOf(m_program, c);
-    bool canBeTrue = false, canBeFalse = false;
-    for (std::uint32_t bits = 0; bits < (1u << inputs.size()); ++bits) {
-        const cond::Value value = cond::evaluate(c.parsed.expression, [&](int node) {
-            const int slot = m_program.slotOf(c.parsed.expression.at(node).text);
-            const auto at = std::find(inputs.begin(), inputs.end(), slot);
-            if (at == inputs.end())
-                throw Unsupported("the condition " + c.text + " reads a stored variable beside its own inputs");
-            return cond::Value{((bits >> (at - inputs.begin())) & 1u) != 0};
-        });
-        (cond::isTrue(value) ? canBeTrue : canBeFalse) = true;
-    }
-    return {canBeTrue, canBeFalse};
-}
-
 void Writer::writeProcess()
 {
     Lines& p = m_process;
@@ -278,113 +225,6 @@ void Writer::writeReachMarkers()
         }
     m_process.line(":: else -> skip;");
     m_process.line("fi;");
-}
-
-// Spec §8 inputs as InputChoices gives them: the other inputs any value,
-// then at most one command event and one mode event.
-void Writer::writeInputs()
-{
-    Lines& p = m_process;
-    p.line("/* the inputs of this scan */");
-    std::vector<int> collapsedInputs;
-    for (std::size_t i = 0; i < m_program.commands.size(); ++i)
-        if (m_choices.commandCollapsed(i))
-            for (int slot : inputsOf(m_program, m_program.commands[i].condition))
-                addOnce(collapsedInputs, slot);
-    for (std::size_t r = 0; r < m_program.modes.size(); ++r)
-        if (m_program.modes[r].requestGenerated && m_choices.requestCollapsed(r))
-            for (int slot : inputsOf(m_program, m_program.modes[r].request))
-                addOnce(collapsedInputs, slot);
-    for (std::size_t slot = 0; slot < m_program.variables.size(); ++slot) {
-        const int s = static_cast<int>(slot);
-        const Variable& variable = m_program.variables[slot];
-        if (variable.kind != VariableKind::Input || s == m_cntrlCmd || s == m_unitMode || s == m_cmdChangeRequest
-            || s == m_unitModeChangeRequest || isRealType(variable.type)
-            || std::find(collapsedInputs.begin(), collapsedInputs.end(), s) != collapsedInputs.end())
-            continue;
-        std::string options;
-        for (const cond::Value& value : m_choices.values(s))
-            options += ":: " + Names::input(s) + " = " + valueText(value) + "; ";
-        if (!options.empty())
-            p.line("if " + options + "fi;");
-    }
-    p.line(Names::input(m_unitMode) + " = gMode;");
-    writeCommandEvent();
-    writeModeEvent();
-}
-
-void Writer::writeCommandEvent()
-{
-    Lines& p = m_process;
-    std::vector<std::string> options;
-    for (std::size_t i = 0; i < m_program.commands.size(); ++i) {
-        if (!m_choices.commandCollapsed(i))
-            continue;
-        const auto [canBeTrue, canBeFalse] = collapsedValues(m_program.commands[i].condition);
-        const std::string value = "cv" + std::to_string(i);
-        p.line(value + " = " + (canBeFalse ? "0" : "1") + ";");
-        std::vector<State> accepting;
-        for (const StateInfo& info : states()) {
-            const auto& accepted = m_accepted[static_cast<std::size_t>(info.state)];
-            if (std::find(accepted.begin(), accepted.end(), m_program.commands[i].command) != accepted.end())
-                accepting.push_back(info.state);
-        }
-        if (canBeTrue && canBeFalse && !accepting.empty())
-            options.push_back(":: !mc" + std::to_string(i) + " && " + stateIn(accepting) + " -> " + value + " = 1;");
-        if (!accepting.empty())
-            options.push_back(":: !mCmd && " + stateIn(accepting) + " -> " + Names::input(m_cmdChangeRequest) + " = 1; "
-                              + Names::input(m_cntrlCmd) + " = "
-                              + std::to_string(static_cast<int>(m_program.commands[i].command)) + ";");
-    }
-    for (std::size_t i = 0; i < m_program.commands.size(); ++i) {
-        if (m_choices.commandCollapsed(i))
-            continue;
-        std::vector<State> accepting;
-        for (const StateInfo& info : states()) {
-            const auto& accepted = m_accepted[static_cast<std::size_t>(info.state)];
-            if (std::find(accepted.begin(), accepted.end(), m_program.commands[i].command) != accepted.end())
-                accepting.push_back(info.state);
-        }
-        if (!accepting.empty())
-            options.push_back(":: !mCmd && " + stateIn(accepting) + " -> " + Names::input(m_cmdChangeRequest) + " = 1; "
-                              + Names::input(m_cntrlCmd) + " = "
-                              + std::to_string(static_cast<int>(m_program.commands[i].command)) + ";");
-    }
-    p.line("if");
-    p.line(":: skip; /* no command event */");
-    for (const std::string& option : options)
-        p.line(option);
-    p.line("fi;");
-}
-
-void Writer::writeModeEvent()
-{
-    Lines& p = m_process;
-    std::vector<std::string> options;
-    for (std::size_t r = 0; r < m_program.modes.size(); ++r) {
-        const ProgramMode& mode = m_program.modes[r];
-        std::vector<State> grantable;
-        for (const StateInfo& info : states()) {
-            const auto& list = m_grantable[static_cast<std::size_t>(info.state)];
-            if (std::find(list.begin(), list.end(), static_cast<int>(r)) != list.end())
-                grantable.push_back(info.state);
-        }
-        const std::string where = "gMode != " + std::to_string(mode.number) + " && " + stateIn(grantable);
-        if (mode.requestGenerated && m_choices.requestCollapsed(r)) {
-            const auto [canBeTrue, canBeFalse] = collapsedValues(mode.request);
-            p.line("rv" + std::to_string(r) + " = " + (canBeFalse ? "0" : "1") + ";");
-            if (canBeTrue && canBeFalse && !grantable.empty())
-                options.push_back(":: !mr" + std::to_string(r) + " && " + where + " -> rv" + std::to_string(r) + " = 1;");
-        }
-        if (!grantable.empty())
-            options.push_back(":: !mMode && " + where + " -> " + Names::input(m_unitModeChangeRequest) + " = 1; "
-                              + Names::input(m_unitMode) + " = " + std::to_string(mode.number) + ";");
-    }
-    p.line("if");
-    p.line(":: skip; /* no mode event */");
-    for (const std::string& option : options)
-        p.line(option);
-    p.line("fi;");
 }
 
 // Step 1: every generated command through its R_TRIG; CntrlCmd at an edge of CmdChangeRequest.
@@ -647,8 +487,7 @@ void Writer::writeForget()
         reset += "no" + std::to_string(o) + " = 0; ";
     for (std::size_t slot = 0; slot < m_program.variables.size(); ++slot) {
         const Variable& variable = m_program.variables[slot];
-        if (variable.kind == VariableKind::Input && !isRealType(variable.type) && variable.type != IecType::Lint
-            && variable.type != IecType::Ulint && variable.type != IecType::Udint)
+        if (variable.kind == VariableKind::Input && m_names.holds(variable))
             reset += Names::input(static_cast<int>(slot)) + " = 0; ";
     }
     m_process.line(reset + "}");

@@ -57,6 +57,21 @@ std::string comment(std::string_view text)
     return promelaComment(text);
 }
 
+std::string valueText(const cond::Value& value)
+{
+    if (const bool* b = std::get_if<bool>(&value))
+        return *b ? "1" : "0";
+    if (const std::int64_t* i = std::get_if<std::int64_t>(&value))
+        return std::to_string(*i);
+    throw Unsupported("a REAL value");
+}
+
+void addOnce(std::vector<int>& list, int value)
+{
+    if (std::find(list.begin(), list.end(), value) == list.end())
+        list.push_back(value);
+}
+
 Names::Names(const PackmlProgram& program, int cycleTimeMs)
     : m_program(program)
     , m_cycleTimeMs(cycleTimeMs)
@@ -105,11 +120,16 @@ int Names::ownOutput(const NestedGrafcet& grafcet, std::string_view variable)
     return -1;
 }
 
+bool Names::holds(const Variable& variable) const
+{
+    return variable.type == IecType::Bool || smallInteger(variable.type) || variable.type == IecType::Dint;
+}
+
 std::string Names::type(const Variable& variable) const
 {
     if (variable.type == IecType::Bool)
         return "bool";
-    if (smallInteger(variable.type) || variable.type == IecType::Dint)
+    if (holds(variable))
         return "int";
     throw Unsupported(variable.name + " is " + std::string(iecTypeName(variable.type))
                       + ": the export holds BOOL, SINT, INT, DINT, USINT and UINT only");

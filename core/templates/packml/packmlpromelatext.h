@@ -5,12 +5,14 @@
 // instances in the model, and conditions as Promela expressions.
 
 #include "core/codegen/nestedprogram.h"
+#include "core/condition/conditionevaluator.h"
 #include "core/condition/conditionsyntax.h"
 #include "core/templates/packml/packmlprogram.h"
 
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace core::packml::promela {
 
@@ -35,6 +37,9 @@ private:
 
 // Text safe inside a Promela comment.
 std::string comment(std::string_view text);
+// A BOOL or integer value as Promela writes it; throws Unsupported for a REAL.
+std::string valueText(const cond::Value& value);
+void addOnce(std::vector<int>& list, int value);
 
 // Where a condition is evaluated: the PackML layer (no instance), or a call
 // of an instance's GRAFCET (its steps, TONs, Complete and own outputs).
@@ -68,6 +73,7 @@ public:
     std::string expression(const cond::Expression& expression, const Place& place, const char* empty = "1") const;
     // The Promela type of a variable; throws Unsupported for one it cannot hold.
     std::string type(const Variable& variable) const;
+    bool holds(const Variable& variable) const;
 
 private:
     std::string node(const cond::Expression& expression, int index, const Place& place) const;

@@ -19,7 +19,7 @@ public:
     PackmlPromela run();
 
 private:
-    // The PackML layer.
+    // The PackML layer (packmlpromela.cpp; the inputs: packmlpromelainputs.cpp).
     void writeHeader();
     void writeDeclarations();
     void writeProcess();
@@ -41,6 +41,7 @@ private:
     void markIf(const std::string& test, PackmlMarker m, const std::string& what);
     // Collapsed conditions: may their private inputs make them TRUE, FALSE?
     std::pair<bool, bool> collapsedValues(const ProgramCondition& condition) const;
+    std::vector<State> acceptingStates(Command command) const; // some mode accepts it there
 
     // The instances' GRAFCETs.
     void declareInstance(int instance);
