@@ -304,14 +304,14 @@ void Writer::writeStateMachine()
             p.line(":: gMode == " + std::to_string(mode.number) + " && gState == " + number(state.state) + " -> /* "
                    + comment(mode.name) + " " + std::string(stateName(state.state)) + " */");
             p.in();
-            writeBranch(mode, state);
+            writeBranch(state);
             p.out();
         }
     p.line(":: else -> skip; /* no branch: nothing runs */");
     p.line("fi;");
 }
 
-void Writer::writeBranch(const ProgramMode& mode, const ProgramState& state)
+void Writer::writeBranch(const ProgramState& state)
 {
     Lines& p = m_process;
     const int k = state.instance;
@@ -354,14 +354,14 @@ void Writer::writeBranch(const ProgramMode& mode, const ProgramState& state)
         p.line("if");
         p.line(":: !fd && " + holds + " ->");
         p.in();
-        writeFire(mode, transition);
+        writeFire(transition);
         p.out();
         p.line(":: else -> skip;");
         p.line("fi;");
     }
 }
 
-void Writer::writeFire(const ProgramMode&, const ModeTransition& transition)
+void Writer::writeFire(const ModeTransition& transition)
 {
     std::string text = "fd = 1; gState = " + number(transition.destination.state) + "; gEntry = 1;";
     switch (resumeEffect(transition)) {

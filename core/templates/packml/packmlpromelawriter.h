@@ -29,8 +29,8 @@ private:
     void writeCommands();
     void writeModeManager();
     void writeStateMachine();
-    void writeBranch(const ProgramMode& mode, const ProgramState& state);
-    void writeFire(const ProgramMode& mode, const ModeTransition& transition);
+    void writeBranch(const ProgramState& state);
+    void writeFire(const ModeTransition& transition);
     void writeEndOfScan();
     void writeReachMarkers();
     void writeCheckMarkers();
