@@ -8,6 +8,7 @@
 #include "core/codegen/gemmaprogram.h"
 #include "core/model/model.h"
 #include "core/formats/modelfiles.h"
+#include "core/templates/packml/packmlpromela.h"
 #include "core/verification/bothlayers.h"
 #include "core/verification/promela.h"
 #include "core/verification/promelaprogram.h"
@@ -132,8 +133,15 @@ std::optional<std::chrono::milliseconds> parseTimeLimit(const std::string& text)
     return std::chrono::milliseconds(*ms);
 }
 
-std::string promelaText(const core::Model& model, const core::VerificationOptions& options)
+// A PackML model: its program, time counted in scans (docs/packml.md, "SPIN
+// cross-check"); `unsupported` says why it cannot be written.
+std::string promelaText(const core::Model& model, const core::VerificationOptions& options, std::string& unsupported)
 {
+    if (model.templateKind() == core::TemplateKind::PackML) {
+        core::packml::PackmlPromela exported = core::packml::buildPackmlPromela(model);
+        unsupported = std::move(exported.unsupported);
+        return std::move(exported.text);
+    }
     if (!core::needsBothLayers(model, options)) {
         core::PromelaOptions gemma;
         gemma.complete = options.complete;
@@ -213,12 +221,11 @@ int commandVerify(const Arguments& args, Streams streams)
     if (!loaded.ok())
         return UnreadableInput;
     if (loaded.model->templateKind() == core::TemplateKind::PackML) {
-        for (const char* option : {"--complete-automatic", "--promela"})
-            if (args.value(option)) {
-                streams.err << "ggstudio-cli: " << option << " is not available for PackML models" << lineEnd
-                            << "Try 'ggstudio-cli --help'." << lineEnd;
-                return UsageError;
-            }
+        if (args.value("--complete-automatic")) {
+            streams.err << "ggstudio-cli: --complete-automatic is not available for PackML models" << lineEnd
+                        << "Try 'ggstudio-cli --help'." << lineEnd;
+            return UsageError;
+        }
     }
     std::vector<std::string> automatic;
     if (const std::optional<std::string> value = args.value("--complete-automatic")) {
@@ -273,7 +280,13 @@ int commandVerify(const Arguments& args, Streams streams)
                         << "Try 'ggstudio-cli --help'." << lineEnd;
             return UsageError;
         }
-        if (core::Status status = core::writeFileAtomically(*promela, promelaText(*loaded.model, options)); !status) {
+        std::string unsupported;
+        const std::string text = promelaText(*loaded.model, options, unsupported);
+        if (!unsupported.empty()) {
+            streams.err << *promela << ": not written: the program cannot be exported: " << unsupported << lineEnd;
+            return UnreadableInput;
+        }
+        if (core::Status status = core::writeFileAtomically(*promela, text); !status) {
             streams.err << *promela << ": " << status.message << lineEnd;
             return UnreadableInput;
         }

@@ -4,11 +4,7 @@
 # `reach S` marker line is listed as unreached iff S is reported) and on stuck
 # steps (GV106: the `no fire in S` marker line is reached).
 # -D CLI=path -D MODEL=file (or "template": a new model) -D WORKDIR=dir
-find_program(SPIN spin)
-find_program(CC gcc)
-if(NOT SPIN OR NOT CC)
-    message(FATAL_ERROR "spin and gcc are needed (Debian packages spin and gcc)")
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/spin_run.cmake")
 set(dir "${WORKDIR}/spin-promela")
 file(REMOVE_RECURSE "${dir}")
 file(MAKE_DIRECTORY "${dir}")
@@ -26,30 +22,7 @@ if(NOT (code EQUAL 0 OR code EQUAL 1) OR NOT EXISTS "${dir}/model.pml")
     message(FATAL_ERROR "ggstudio-cli verify --promela: exit ${code}\n${verify}\n${err}")
 endif()
 
-execute_process(COMMAND "${SPIN}" -o3 -a model.pml WORKING_DIRECTORY "${dir}"
-    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 0)
-    message(FATAL_ERROR "spin -a: exit ${code}\n${out}\n${err}")
-endif()
-execute_process(COMMAND "${CC}" -O0 -DSAFETY -DMEMLIM=512 -o pan pan.c WORKING_DIRECTORY "${dir}"
-    RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL 0)
-    message(FATAL_ERROR "compiling pan.c: exit ${code}\n${out}\n${err}")
-endif()
-execute_process(COMMAND ./pan -m200000 -w20 WORKING_DIRECTORY "${dir}"
-    RESULT_VARIABLE code OUTPUT_VARIABLE pan ERROR_VARIABLE err)
-if(NOT pan MATCHES "errors: 0\n" OR NOT pan MATCHES "unreached in proctype scan\n"
-   OR pan MATCHES "max search depth too small")
-    message(FATAL_ERROR "pan did not complete its search:\n${pan}\n${err}")
-endif()
-
-# Line numbers of pan's unreached statements.
-string(REGEX MATCHALL "model\\.pml:[0-9]+," listed "${pan}")
-set(unreached "")
-foreach(item IN LISTS listed)
-    string(REGEX REPLACE "model\\.pml:([0-9]+)," "\\1" line "${item}")
-    list(APPEND unreached ${line})
-endforeach()
+run_spin("${dir}")
 
 file(STRINGS "${dir}/model.pml" lines)
 set(number 0)

@@ -7,9 +7,11 @@
 
 #include "core/formats/fileio.h"
 #include "core/formats/nativeformat.h"
+#include "core/templates/packml/packmlprogram.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -26,6 +28,21 @@ inline std::unique_ptr<core::Model> loadCapper()
     if (const auto* error = std::get_if<core::LoadError>(&result))
         FAIL("the Capper does not load: " << error->toString());
     return std::move(std::get<std::unique_ptr<core::Model>>(result));
+}
+
+// The transition on `command` from `source` in `mode`, for tests that build
+// a program wrong on purpose.
+inline core::packml::ModeTransition& transitionOf(core::packml::PackmlProgram& program, int mode,
+                                                  core::packml::State source, core::packml::Command command)
+{
+    using namespace core::packml;
+    ProgramMode& m = *std::find_if(program.modes.begin(), program.modes.end(), [&](const ProgramMode& x) { return x.number == mode; });
+    ProgramState& s = *std::find_if(m.states.begin(), m.states.end(), [&](const ProgramState& x) { return x.state == source; });
+    auto found = std::find_if(s.transitions.begin(), s.transitions.end(), [&](const ModeTransition& t) {
+        return t.transition.trigger == Trigger::Command && t.transition.command == command;
+    });
+    REQUIRE(found != s.transitions.end());
+    return *found;
 }
 
 } // namespace packmltests

@@ -83,17 +83,6 @@ void requireReplays(const Model& model, const PackmlProgram& program, const Veri
     CHECK(runPackmlScenario(parsed.scenario, simulator).passed());
 }
 
-ModeTransition& transitionOf(PackmlProgram& program, int mode, State source, Command command)
-{
-    ProgramMode& m = *std::find_if(program.modes.begin(), program.modes.end(), [&](const ProgramMode& x) { return x.number == mode; });
-    ProgramState& s = *std::find_if(m.states.begin(), m.states.end(), [&](const ProgramState& x) { return x.state == source; });
-    auto found = std::find_if(s.transitions.begin(), s.transitions.end(), [&](const ModeTransition& t) {
-        return t.transition.trigger == Trigger::Command && t.transition.command == command;
-    });
-    REQUIRE(found != s.transitions.end());
-    return *found;
-}
-
 } // namespace
 
 TEST_CASE("The Capper of spec §6.6 verifies exhaustively without a finding", "[packml-verify]")
@@ -112,7 +101,7 @@ TEST_CASE("A transition into a state the mode disables is GV132, with a countere
     const auto model = packmltests::loadCapper();
     PackmlProgram program = buildPackmlProgram(*model);
     // Production disables Starting: Start from Idle must lead to Execute.
-    transitionOf(program, 1, State::Idle, Command::Start).destination = Destination{State::Starting, std::nullopt};
+    packmltests::transitionOf(program, 1, State::Idle, Command::Start).destination = Destination{State::Starting, std::nullopt};
     const VerificationResult result = verifyPackmlProgram(*model, program);
     const VerificationFinding* f = findingOf(result, "GV132");
     REQUIRE(f);
@@ -152,7 +141,7 @@ TEST_CASE("Execute that starts afresh after the Hold loop, or resumes after a fr
     {
         PackmlProgram program = buildPackmlProgram(*model);
         // Seen as a fresh start (from Starting), the Unhold clears Resume.
-        transitionOf(program, 1, State::Held, Command::Unhold).transition.target = State::Starting;
+        packmltests::transitionOf(program, 1, State::Held, Command::Unhold).transition.target = State::Starting;
         const VerificationResult result = verifyPackmlProgram(*model, program);
         const VerificationFinding* f = findingOf(result, "GV138");
         REQUIRE(f);
@@ -163,7 +152,7 @@ TEST_CASE("Execute that starts afresh after the Hold loop, or resumes after a fr
     {
         PackmlProgram program = buildPackmlProgram(*model);
         // Start from Idle no longer clears Resume; the Stop out of Held left it set.
-        transitionOf(program, 1, State::Idle, Command::Start).transition.target = State::Execute;
+        packmltests::transitionOf(program, 1, State::Idle, Command::Start).transition.target = State::Execute;
         const VerificationResult result = verifyPackmlProgram(*model, program);
         const VerificationFinding* f = findingOf(result, "GV138");
         REQUIRE(f);

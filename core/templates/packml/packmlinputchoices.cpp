@@ -215,6 +215,13 @@ void InputChoices::classify(const std::vector<std::string>& alwaysRead)
         }
 }
 
+bool InputChoices::requestCollapsed(std::size_t modeIndex) const
+{
+    return std::any_of(m_requests.begin(), m_requests.end(), [&](const Condition& c) {
+        return c.modeIndex == static_cast<int>(modeIndex) && c.collapsible;
+    });
+}
+
 InputChoices::GrafcetReads InputChoices::grafcetReads(const NestedGrafcet& grafcet) const
 {
     GrafcetReads reads;

@@ -53,6 +53,15 @@ public:
     // What makes the enumeration less than every value (English), empty when exact.
     const std::vector<std::string>& abstractions() const { return m_abstractions; }
 
+    // What the Promela export (packmlpromela.h) needs to choose the inputs
+    // as these choices do: whether a command's condition (by
+    // PackmlProgram::commands index) or a mode's request (by
+    // PackmlProgram::modes index) is collapsed to its value, and the values
+    // enumerated for an input (empty for CntrlCmd and UnitMode).
+    bool commandCollapsed(std::size_t command) const { return m_commands[command].collapsible; }
+    bool requestCollapsed(std::size_t modeIndex) const;
+    const std::vector<cond::Value>& values(int slot) const { return m_values[static_cast<std::size_t>(slot)]; }
+
 private:
     struct Condition {
         const ProgramCondition* condition = nullptr;
