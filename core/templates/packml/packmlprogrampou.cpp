@@ -129,6 +129,7 @@ private:
         line(0, "END_CASE;");
     }
 
+    // Written in place: 31 modes make 930 grants.
     void writeGrants(const ProgramMode& mode)
     {
         if (mode.grants.empty())
@@ -138,23 +139,35 @@ private:
         bool first = true;
         for (const ModeGrant& grant : mode.grants) {
             const ProgramMode& target = *m_program.mode(grant.targetMode);
-            std::string request = "(Trig_ModeChange.Q AND " + unitMode + " = " + std::to_string(grant.targetMode) + ")";
+            const std::string targetNumber = std::to_string(grant.targetMode);
+            m_text.append(first ? "    IF " : "    ELSIF ");
             if (target.requestGenerated)
-                request = "(" + request + " OR Trig_" + target.name + ".Q)";
-            line(4, std::string(first ? "IF " : "ELSIF ") + request + " AND " + statesCondition(grant.states)
-                        + " THEN Mode := " + std::to_string(grant.targetMode) + "; Entry := TRUE; Resume := FALSE;");
+                m_text += '(';
+            m_text.append("(Trig_ModeChange.Q AND ").append(unitMode).append(" = ").append(targetNumber).append(")");
+            if (target.requestGenerated)
+                m_text.append(" OR Trig_").append(target.name).append(".Q)");
+            m_text.append(" AND ");
+            appendStatesCondition(grant.states);
+            m_text.append(" THEN Mode := ").append(targetNumber).append("; Entry := TRUE; Resume := FALSE;\n");
             first = false;
         }
         line(4, "END_IF;");
     }
 
-    static std::string statesCondition(const StateSet& states)
+    void appendStatesCondition(const StateSet& states)
     {
-        const std::vector<State> list = states.list();
-        std::string text;
-        for (State state : list)
-            text += (text.empty() ? "" : " OR ") + std::string("State = ") + number(state);
-        return list.size() == 1 ? text : "(" + text + ")";
+        const bool several = states.size() != 1;
+        if (several)
+            m_text += '(';
+        bool first = true;
+        for (const State state : states.list()) {
+            if (!first)
+                m_text.append(" OR ");
+            first = false;
+            m_text.append("State = ").append(number(state));
+        }
+        if (several)
+            m_text += ')';
     }
 
     // ---- 3. State machine ----
