@@ -594,8 +594,29 @@ int countLines(const std::string& text)
 
 } // namespace
 
+namespace {
+
+// Printable ASCII without a comment delimiter: what nearly every comment the
+// generators write is, and what escapeComment leaves as it is.
+bool isPlainCommentText(std::string_view text)
+{
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c < 0x20 || c > 0x7E)
+            return false;
+        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+        if ((c == '(' && next == '*') || (c == '*' && next == ')'))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
 std::string escapeComment(const std::string& text)
 {
+    if (isPlainCommentText(text))
+        return text;
     std::string out;
     out.reserve(text.size());
     std::string_view rest = text;
