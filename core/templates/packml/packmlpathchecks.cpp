@@ -5,6 +5,7 @@
 #include "core/templates/packml/packmldiagnostics.h"
 #include "core/templates/packml/packmlrules.h"
 
+#include <array>
 #include <deque>
 #include <string>
 #include <unordered_map>
@@ -12,6 +13,14 @@
 namespace core::packml {
 
 namespace {
+
+// Without StateSet::list's vector: every mode asks it of every other mode.
+void insertAll(StateSet& into, const StateSet& states)
+{
+    for (int n = 1; n <= kStateCount; ++n)
+        if (states.contains(static_cast<State>(n)))
+            into.insert(static_cast<State>(n));
+}
 
 // Which actions of a GRAFCET write Complete, and whether one makes it TRUE
 // (`S Complete`, `Complete := ...`, a continuous `Complete`).
@@ -98,14 +107,19 @@ private:
             begin.insert(m_configuration.initialState);
         for (const Mode& other : m_configuration.modes)
             if (other.number != m_mode.number)
-                for (const State state : modeChangeStates(other.modeChange, m_mode.modeChange, m_enabled).list())
-                    begin.insert(state);
+                insertAll(begin, modeChangeStates(other.modeChange, m_mode.modeChange, m_enabled));
         return begin;
     }
 
+    // Looked up once per state: the walk asks at every transition it follows.
     const Grafcet* grafcetOf(State state) const
     {
-        return m_model.effectiveGrafcet(grafcetKey(m_mode.number, state));
+        const auto index = static_cast<std::size_t>(state);
+        if (!m_grafcetKnown[index]) {
+            m_grafcets[index] = m_model.effectiveGrafcet(grafcetKey(m_mode.number, state));
+            m_grafcetKnown[index] = true;
+        }
+        return m_grafcets[index];
     }
 
     // An acting state without GRAFCET completes at once through its skeleton;
@@ -171,6 +185,8 @@ private:
     const Mode& m_mode;
     StateSet m_enabled;
     CompleteWriters& m_writers;
+    mutable std::array<const Grafcet*, kStateCount + 1> m_grafcets{};
+    mutable std::array<bool, kStateCount + 1> m_grafcetKnown{};
 };
 
 } // namespace
