@@ -146,13 +146,15 @@ private:
 
     // ---- the structure ----
 
-    std::vector<int> deactivatedBy(int step) const { return firesOf(m_deactivatedBy, step); }
-    std::vector<int> activatedBy(int step) const { return firesOf(m_activatedBy, step); }
+    // References, not copies: the writer asks for them several times per step.
+    const std::vector<int>& deactivatedBy(int step) const { return firesOf(m_deactivatedBy, step); }
+    const std::vector<int>& activatedBy(int step) const { return firesOf(m_activatedBy, step); }
 
-    static std::vector<int> firesOf(const std::map<int, std::vector<int>>& fires, int step)
+    static const std::vector<int>& firesOf(const std::map<int, std::vector<int>>& fires, int step)
     {
+        static const std::vector<int> none;
         const auto found = fires.find(step);
-        return found == fires.end() ? std::vector<int>{} : found->second;
+        return found == fires.end() ? none : found->second;
     }
 
     static std::string anyOf(const std::vector<int>& transitions)
@@ -300,8 +302,8 @@ private:
     void writeSituationChange(std::string& out, int indent) const
     {
         for (const NestedStep& s : m_grafcet.steps) {
-            const std::vector<int> leaving = deactivatedBy(s.number);
-            const std::vector<int> entering = activatedBy(s.number);
+            const std::vector<int>& leaving = deactivatedBy(s.number);
+            const std::vector<int>& entering = activatedBy(s.number);
             const std::string x = stepActivityName(s.number);
             if (!leaving.empty())
                 append(out, indent, leftFlag(s.number) + " := " + (entering.empty() ? "(" + anyOf(leaving) + ")"

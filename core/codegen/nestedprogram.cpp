@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 
 namespace core {
 
@@ -359,13 +360,16 @@ private:
                 found->drivers.push_back({step.number, static_cast<int>(i)});
             }
         }
-        const auto rank = [&](const ContinuousOutput& o) -> std::size_t {
-            if (o.isComplete)
-                return m_scope.variables.size();
-            return indexOf(o.variable);
-        };
-        std::sort(outputs.begin(), outputs.end(), [&](const auto& a, const auto& b) { return rank(a) < rank(b); });
-        m_result.outputs = std::move(outputs);
+        // Each output's rank is looked up once, not in every comparison; the
+        // sort sees the same comparisons, so the order is the same.
+        std::vector<std::pair<std::size_t, ContinuousOutput>> ranked;
+        ranked.reserve(outputs.size());
+        for (ContinuousOutput& output : outputs)
+            ranked.emplace_back(output.isComplete ? m_scope.variables.size() : indexOf(output.variable), std::move(output));
+        std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        m_result.outputs.clear();
+        for (auto& entry : ranked)
+            m_result.outputs.push_back(std::move(entry.second));
     }
 
     // Spec §4.2 (4): the value of such a condition would depend on the

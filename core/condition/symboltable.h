@@ -2,6 +2,7 @@
 
 #include "core/model/iectypes.h"
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -21,7 +22,18 @@ public:
     const Variable* find(std::string_view name) const;
 
 private:
-    std::unordered_map<std::string, const Variable*> m_byUpperName;
+    // ASCII case folded in the hash and the comparison, so that a lookup
+    // (done for every name a condition reads) builds no upper-case copy.
+    struct FoldedHash {
+        using is_transparent = void;
+        std::size_t operator()(std::string_view name) const;
+    };
+    struct FoldedEqual {
+        using is_transparent = void;
+        bool operator()(std::string_view a, std::string_view b) const { return equalsIgnoreCase(a, b); }
+    };
+
+    std::unordered_map<std::string, const Variable*, FoldedHash, FoldedEqual> m_byName;
 };
 
 } // namespace core

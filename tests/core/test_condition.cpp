@@ -105,6 +105,28 @@ std::vector<TokenKind> kinds(std::string_view text)
 
 } // namespace
 
+// --- symbol table ---------------------------------------------------------------
+
+TEST_CASE("The symbol table finds a variable in any case, the first of a name winning", "[condition]")
+{
+    std::vector<Variable> variables = testVariables();
+    variables.push_back({"motor_on", IecType::Int, "", ""});
+    variables.push_back({"Z_9", IecType::Bool, "", ""});
+    const SymbolTable symbols(variables);
+    REQUIRE(symbols.find("motor_ON") != nullptr);
+    CHECK(symbols.find("motor_ON") == &variables[2]);
+    CHECK(symbols.find("z_9") == &variables.back());
+    CHECK(symbols.find("SPEED")->type == IecType::Int);
+    CHECK(symbols.find("Spee") == nullptr);
+    CHECK(symbols.find("Speed_") == nullptr);
+    CHECK(symbols.find("") == nullptr);
+    // Only ASCII letters fold: '{' is '[' + 32, not its lower case.
+    const std::vector<Variable> bracket{{"a[", IecType::Bool, "", ""}};
+    const SymbolTable withBracket(bracket);
+    CHECK(withBracket.find("A[") == &bracket.front());
+    CHECK(withBracket.find("A{") == nullptr);
+}
+
 // --- tokens ---------------------------------------------------------------------
 
 TEST_CASE("names containing AND, OR, NOT are identifiers", "[condition]")

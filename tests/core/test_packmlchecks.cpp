@@ -276,6 +276,20 @@ TEST_CASE("PM010: an acting state's GRAFCET that never writes Complete", "[packm
     CHECK(withCode(model, "PM010").empty());
 }
 
+TEST_CASE("PM010, PM016: a GRAFCET that resets Complete and then sets it, shared by two modes", "[packml-checks]")
+{
+    // The path checks read what each GRAFCET writes once, however many
+    // modes run it: a reset before the set must not hide the set.
+    Model model = cleanModel();
+    ownGrafcet(model, 3, State::Starting, {"R Complete", "S Complete"});
+    REQUIRE(model.setGrafcetChoice(1, State::Starting, GrafcetChoice::sameAs(3)));
+    CHECK(withCode(model, "PM010").empty());
+
+    ownGrafcet(model, 3, State::Execute, {"R Complete"});
+    REQUIRE(model.setGrafcetChoice(1, State::Execute, GrafcetChoice::sameAs(3)));
+    CHECK(labels(withCode(model, "PM016")) == Strings{"Production: Execute", "Manual: Execute"});
+}
+
 TEST_CASE("PM011: two commands or two requests with the same condition", "[packml-checks]")
 {
     Model model = cleanModel();

@@ -653,6 +653,12 @@ TEST_CASE("user text in comments cannot close or open a comment", "[stgen]")
     CHECK(escapeComment("**)") == "** )");
     CHECK(escapeComment("line\r\nnext\tend") == "line  next end");
     CHECK(escapeComment("Arrêt") == "Arrêt");
+    // Printable ASCII without a delimiter comes back as it is; DEL and the
+    // delimiters at either end do not.
+    CHECK(escapeComment(" ~a*b(c)d* (") == " ~a*b(c)d* (");
+    CHECK(escapeComment("a\x7f") == "a?");
+    CHECK(escapeComment("*)x") == "* )x");
+    CHECK(escapeComment("x(*") == "x( *");
 
     Model model = errorsModel();
     REQUIRE(model.setStepComment("F1", "x *) State := 99; (* y"));

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <iterator>
 
 namespace core::packml {
 
@@ -67,12 +68,14 @@ PlcPou grafcetFunctionBlock(const PackmlProgram& program, const ProgramGrafcet& 
     const NestedCodeSource source{grafcet.grafcet, grafcet.key, label, program.evolution, program.edgeVariables,
                                   program.problems};
     NestedCode code = generateNestedCode(source, global, edgeMemory);
-    pou.outputs.insert(pou.outputs.end(), code.outputs.begin(), code.outputs.end());
+    pou.outputs.insert(pou.outputs.end(), std::make_move_iterator(code.outputs.begin()),
+                       std::make_move_iterator(code.outputs.end()));
     pou.locals = std::move(code.locals);
     pou.body = std::move(code.body);
     if (dialect == Dialect::Iec) {
         pou.externals = naming.readVariables();
-        pou.externals.insert(pou.externals.end(), code.edgeMemories.begin(), code.edgeMemories.end());
+        pou.externals.insert(pou.externals.end(), std::make_move_iterator(code.edgeMemories.begin()),
+                             std::make_move_iterator(code.edgeMemories.end()));
     }
     return pou;
 }

@@ -5,39 +5,72 @@
 #include "core/templates/packml/packmldiagnostics.h"
 #include "core/templates/packml/packmlrules.h"
 
-#include <algorithm>
+#include <array>
 #include <deque>
 #include <string>
+#include <unordered_map>
 
 namespace core::packml {
 
 namespace {
 
-bool anyAction(const Grafcet& grafcet, bool (*test)(const cond::ActionParseResult&))
+// Without StateSet::list's vector: every mode asks it of every other mode.
+void insertAll(StateSet& into, const StateSet& states)
 {
-    return std::any_of(grafcet.steps().begin(), grafcet.steps().end(), [&](const GrafcetStep& step) {
-        return std::any_of(step.actions.begin(), step.actions.end(),
-                           [&](const GrafcetAction& action) { return test(cond::parseAction(action.text)); });
-    });
+    for (int n = 1; n <= kStateCount; ++n)
+        if (states.contains(static_cast<State>(n)))
+            into.insert(static_cast<State>(n));
 }
 
-bool makesCompleteTrue(const cond::ActionParseResult& action)
+// Which actions of a GRAFCET write Complete, and whether one makes it TRUE
+// (`S Complete`, `Complete := ...`, a continuous `Complete`).
+struct CompleteWrites {
+    bool makesTrue = false;
+    bool writes = false;
+};
+
+CompleteWrites completeWrites(const Grafcet& grafcet)
 {
-    return action.ok() && action.action.targetIsComplete && action.action.form != cond::ActionForm::Reset;
+    CompleteWrites result;
+    for (const GrafcetStep& step : grafcet.steps())
+        for (const GrafcetAction& action : step.actions) {
+            const cond::ActionParseResult parsed = cond::parseAction(action.text);
+            if (!parsed.ok() || !parsed.action.targetIsComplete)
+                continue;
+            result.writes = true;
+            if (parsed.action.form != cond::ActionForm::Reset) {
+                result.makesTrue = true;
+                return result;
+            }
+        }
+    return result;
 }
 
-bool writesComplete(const cond::ActionParseResult& action)
-{
-    return action.ok() && action.action.targetIsComplete;
-}
+// What the GRAFCETs write, parsed once per GRAFCET: the modes that run a
+// procedure "same as" another share its GRAFCET, and the path walk asks the
+// same question of it for every transition it follows.
+class CompleteWriters {
+public:
+    const CompleteWrites& of(const Grafcet& grafcet)
+    {
+        const auto found = m_known.find(&grafcet);
+        if (found != m_known.end())
+            return found->second;
+        return m_known.emplace(&grafcet, completeWrites(grafcet)).first->second;
+    }
+
+private:
+    std::unordered_map<const Grafcet*, CompleteWrites> m_known;
+};
 
 class PathChecker {
 public:
-    PathChecker(const Model& model, const Mode& mode)
+    PathChecker(const Model& model, const Mode& mode, CompleteWriters& writers)
         : m_model(model)
         , m_configuration(*model.packml())
         , m_mode(mode)
         , m_enabled(enabledStates(mode.disabled).enabled)
+        , m_writers(writers)
     {
     }
 
@@ -74,14 +107,19 @@ private:
             begin.insert(m_configuration.initialState);
         for (const Mode& other : m_configuration.modes)
             if (other.number != m_mode.number)
-                for (const State state : modeChangeStates(other.modeChange, m_mode.modeChange, m_enabled).list())
-                    begin.insert(state);
+                insertAll(begin, modeChangeStates(other.modeChange, m_mode.modeChange, m_enabled));
         return begin;
     }
 
+    // Looked up once per state: the walk asks at every transition it follows.
     const Grafcet* grafcetOf(State state) const
     {
-        return m_model.effectiveGrafcet(grafcetKey(m_mode.number, state));
+        const auto index = static_cast<std::size_t>(state);
+        if (!m_grafcetKnown[index]) {
+            m_grafcets[index] = m_model.effectiveGrafcet(grafcetKey(m_mode.number, state));
+            m_grafcetKnown[index] = true;
+        }
+        return m_grafcets[index];
     }
 
     // An acting state without GRAFCET completes at once through its skeleton;
@@ -91,7 +129,7 @@ private:
         if (!holdsGrafcet(state))
             return false;
         const Grafcet* grafcet = grafcetOf(state);
-        return grafcet ? setsComplete(*grafcet) : isActing(state);
+        return grafcet ? m_writers.of(*grafcet).makesTrue : isActing(state);
     }
 
     StateSet reachableFrom(const StateSet& begin) const
@@ -122,7 +160,7 @@ private:
             return;
         const std::string label = modeLabel(m_mode);
         const std::string name(stateName(state));
-        if (isActing(state) && !setsComplete(*grafcet)) {
+        if (isActing(state) && !m_writers.of(*grafcet).makesTrue) {
             const bool aborting = state == State::Aborting;
             result.push_back(modeStateDiagnostic(
                 m_mode, state,
@@ -133,7 +171,7 @@ private:
                  {label, name}}));
         }
         if (state == State::Execute && m_configuration.options.edition == Edition::Y2022
-            && anyAction(*grafcet, writesComplete))
+            && m_writers.of(*grafcet).writes)
             result.push_back(modeStateDiagnostic(
                 m_mode, state,
                 {"PM016", Severity::Warning, "grafcet",
@@ -146,20 +184,24 @@ private:
     const Configuration& m_configuration;
     const Mode& m_mode;
     StateSet m_enabled;
+    CompleteWriters& m_writers;
+    mutable std::array<const Grafcet*, kStateCount + 1> m_grafcets{};
+    mutable std::array<bool, kStateCount + 1> m_grafcetKnown{};
 };
 
 } // namespace
 
 bool setsComplete(const Grafcet& grafcet)
 {
-    return anyAction(grafcet, makesCompleteTrue);
+    return completeWrites(grafcet).makesTrue;
 }
 
 std::vector<Diagnostic> checkPaths(const Model& model)
 {
     std::vector<Diagnostic> result;
+    CompleteWriters writers;
     for (const Mode& mode : model.packml()->modes)
-        PathChecker(model, mode).run(result);
+        PathChecker(model, mode, writers).run(result);
     return result;
 }
 

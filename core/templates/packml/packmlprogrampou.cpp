@@ -15,6 +15,8 @@
 #include "core/templates/packml/packmlcodenaming.h"
 #include "core/templates/packml/packtags.h"
 
+#include <algorithm>
+
 namespace core::packml {
 
 namespace {
@@ -127,6 +129,7 @@ private:
         line(0, "END_CASE;");
     }
 
+    // Written in place: 31 modes make 930 grants.
     void writeGrants(const ProgramMode& mode)
     {
         if (mode.grants.empty())
@@ -136,23 +139,35 @@ private:
         bool first = true;
         for (const ModeGrant& grant : mode.grants) {
             const ProgramMode& target = *m_program.mode(grant.targetMode);
-            std::string request = "(Trig_ModeChange.Q AND " + unitMode + " = " + std::to_string(grant.targetMode) + ")";
+            const std::string targetNumber = std::to_string(grant.targetMode);
+            m_text.append(first ? "    IF " : "    ELSIF ");
             if (target.requestGenerated)
-                request = "(" + request + " OR Trig_" + target.name + ".Q)";
-            line(4, std::string(first ? "IF " : "ELSIF ") + request + " AND " + statesCondition(grant.states)
-                        + " THEN Mode := " + std::to_string(grant.targetMode) + "; Entry := TRUE; Resume := FALSE;");
+                m_text += '(';
+            m_text.append("(Trig_ModeChange.Q AND ").append(unitMode).append(" = ").append(targetNumber).append(")");
+            if (target.requestGenerated)
+                m_text.append(" OR Trig_").append(target.name).append(".Q)");
+            m_text.append(" AND ");
+            appendStatesCondition(grant.states);
+            m_text.append(" THEN Mode := ").append(targetNumber).append("; Entry := TRUE; Resume := FALSE;\n");
             first = false;
         }
         line(4, "END_IF;");
     }
 
-    static std::string statesCondition(const StateSet& states)
+    void appendStatesCondition(const StateSet& states)
     {
-        const std::vector<State> list = states.list();
-        std::string text;
-        for (State state : list)
-            text += (text.empty() ? "" : " OR ") + std::string("State = ") + number(state);
-        return list.size() == 1 ? text : "(" + text + ")";
+        const bool several = states.size() != 1;
+        if (several)
+            m_text += '(';
+        bool first = true;
+        for (const State state : states.list()) {
+            if (!first)
+                m_text.append(" OR ");
+            first = false;
+            m_text.append("State = ").append(number(state));
+        }
+        if (several)
+            m_text += ')';
     }
 
     // ---- 3. State machine ----
@@ -230,36 +245,70 @@ private:
 
     // ---- 4. Continuous outputs ----
 
+    // Which output of each own GRAFCET writes each user variable (Complete
+    // excluded), looked up once per GRAFCET rather than once per instance:
+    // the modes that run a procedure "same as" another share its GRAFCET.
+    using OutputsBySlot = std::vector<const ContinuousOutput*>;
+
+    std::vector<OutputsBySlot> outputsOfGrafcets(std::size_t userCount) const
+    {
+        std::vector<OutputsBySlot> result;
+        result.reserve(m_program.grafcets.size());
+        for (const ProgramGrafcet& grafcet : m_program.grafcets) {
+            OutputsBySlot& bySlot = result.emplace_back(userCount, nullptr);
+            if (grafcet.grafcet.outputs.empty())
+                continue;
+            for (std::size_t slot = 0; slot < userCount; ++slot) {
+                const ContinuousOutput* output = grafcet.grafcet.output(m_program.variables[slot].name);
+                if (output && !output->isComplete)
+                    bySlot[slot] = output;
+            }
+        }
+        return result;
+    }
+
+    // Each statement is written in place: section 4 of a large program is
+    // most of its text.
     void writeContinuousOutputs()
     {
         bool any = false;
         const std::size_t userCount = m_program.variables.size() - packTags().size();
+        const std::vector<OutputsBySlot> outputs = outputsOfGrafcets(userCount);
         for (std::size_t slot = 0; slot < userCount; ++slot) {
-            const std::string value = continuousValue(m_program.variables[slot].name);
-            if (value.empty())
+            if (!isDriven(slot, outputs))
                 continue;
             if (!any)
                 line(0, comment("4. Continuous outputs of the nested GRAFCETs: one writer each"));
             any = true;
-            line(0, m_naming.global(m_program.variables[slot].name) + " := " + value + ";");
+            m_text.append(m_naming.global(m_program.variables[slot].name)).append(" := ");
+            appendContinuousValue(slot, outputs);
+            m_text.append(";\n");
         }
     }
 
-    std::string continuousValue(const std::string& variable) const
+    bool isDriven(std::size_t slot, const std::vector<OutputsBySlot>& outputs) const
     {
-        std::string value;
+        return std::any_of(m_program.instances.begin(), m_program.instances.end(), [&](const ProgramInstance& instance) {
+            return !instance.isSkeleton() && outputs[static_cast<std::size_t>(instance.grafcet)][slot] != nullptr;
+        });
+    }
+
+    void appendContinuousValue(std::size_t slot, const std::vector<OutputsBySlot>& outputs)
+    {
+        bool first = true;
         for (const ProgramInstance& instance : m_program.instances) {
             if (instance.isSkeleton())
                 continue;
-            const NestedGrafcet& grafcet = m_program.grafcets[static_cast<std::size_t>(instance.grafcet)].grafcet;
-            const ContinuousOutput* output = grafcet.output(variable);
-            if (!output || output->isComplete)
+            const ContinuousOutput* output = outputs[static_cast<std::size_t>(instance.grafcet)][slot];
+            if (!output)
                 continue;
-            value += (value.empty() ? "" : " OR ") + std::string("(Mode = ") + std::to_string(instance.mode)
-                     + " AND State = " + number(instance.state) + " AND NOT Entry AND " + instance.name + "."
-                     + output->variable + ")";
+            if (!first)
+                m_text += " OR ";
+            first = false;
+            m_text.append("(Mode = ").append(std::to_string(instance.mode)).append(" AND State = ");
+            m_text.append(number(instance.state)).append(" AND NOT Entry AND ").append(instance.name);
+            m_text.append(".").append(output->variable).append(")");
         }
-        return value;
     }
 
     // ---- 5, 6 ----

@@ -60,6 +60,10 @@ struct PackmlSimulator::Compiled {
     std::unordered_map<std::string, int> slotByUpperName; // the first variable of a name wins, as slotOf
     std::vector<std::vector<int>> commandSlots;          // by command: expression node -> slot
     std::vector<std::vector<int>> requestSlots;          // by mode
+    // Where a division by zero stops the run, by command and by mode: spelled
+    // once here rather than in every scan that may never need it.
+    std::vector<std::string> commandPlaces;
+    std::vector<std::string> requestPlaces;
     std::vector<StateSet> modeChange;                    // by mode: the states listed, as configured
     struct Driver {
         int instance = 0;
@@ -106,11 +110,14 @@ PackmlSimulator::Compiled::Compiled(const Model& model, PackmlProgram built)
         defaults.push_back(defaultValueOf(program.variables[slot]));
         slotByUpperName.emplace(toUpperAscii(program.variables[slot].name), static_cast<int>(slot));
     }
-    for (const ProgramCommand& command : program.commands)
+    for (const ProgramCommand& command : program.commands) {
         commandSlots.push_back(nodeSlots(command.condition));
+        commandPlaces.push_back("the condition of the " + command.name + " command");
+    }
     const Configuration& configuration = *model.packml();
     for (const ProgramMode& mode : program.modes) {
         requestSlots.push_back(nodeSlots(mode.request));
+        requestPlaces.push_back("the request condition of mode " + mode.name);
         modeChange.push_back(configuration.mode(mode.number)->modeChange);
     }
     for (std::size_t i = 0; i < program.instances.size(); ++i) {
@@ -302,8 +309,7 @@ PackmlSimulator::Events PackmlSimulator::commandEvents()
     const bool cmdChange = trigger(cond::isTrue(value(compiled.cmdChangeRequest)), m_cmdChangeMemory);
     for (std::size_t i = 0; i < program().commands.size(); ++i) {
         const ProgramCommand& command = program().commands[i];
-        const bool edge = trigger(evaluate(command.condition, compiled.commandSlots[i],
-                                           "the condition of the " + command.name + " command"),
+        const bool edge = trigger(evaluate(command.condition, compiled.commandSlots[i], compiled.commandPlaces[i]),
                                   m_commandMemory[i]);
         if (m_fault)
             return events; // the PLC stops in the middle of section 1
@@ -332,8 +338,7 @@ void PackmlSimulator::runModeManager(PackmlScanRecord& record)
     for (std::size_t i = 0; i < modes.size(); ++i) {
         bool edge = false;
         if (modes[i].requestGenerated) {
-            edge = trigger(evaluate(modes[i].request, compiled.requestSlots[i],
-                                    "the request condition of mode " + modes[i].name),
+            edge = trigger(evaluate(modes[i].request, compiled.requestSlots[i], compiled.requestPlaces[i]),
                            m_requestMemory[i]);
             if (m_fault)
                 return;
@@ -504,7 +509,16 @@ void PackmlSimulator::dropCommands(const Events& events, const ProgramState* pro
                                                    && t.transition.command == command;
                                            });
     };
-    const std::vector<TemplateTransition> inTemplate = transitionsFrom(m_state, program().options);
+    // The template's transitions are listed only for a command the state
+    // drops, not in every scan.
+    std::optional<std::vector<TemplateTransition>> inTemplate;
+    const auto templateAccepts = [&](Command command) {
+        if (!inTemplate)
+            inTemplate = transitionsFrom(m_state, program().options);
+        return std::any_of(inTemplate->begin(), inTemplate->end(), [&](const TemplateTransition& t) {
+            return t.trigger == Trigger::Command && t.command == command;
+        });
+    };
     for (int number = 1; number <= kCommandCount; ++number) {
         const auto command = static_cast<Command>(number);
         if (!events.command[static_cast<std::size_t>(number)])
@@ -516,9 +530,7 @@ void PackmlSimulator::dropCommands(const Events& events, const ProgramState* pro
         if (accepts(command)) {
             event.reason = DropReason::Preempted;
             event.preemptedBy = fired ? transitionText(*fired) : std::string();
-        } else if (std::any_of(inTemplate.begin(), inTemplate.end(), [&](const TemplateTransition& t) {
-                       return t.trigger == Trigger::Command && t.command == command;
-                   })) {
+        } else if (templateAccepts(command)) {
             event.reason = DropReason::NotAcceptedInMode;
         }
         record.dropped.push_back(std::move(event));
