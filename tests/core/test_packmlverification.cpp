@@ -27,32 +27,8 @@ using namespace core::packml;
 
 namespace {
 
-std::string capperText()
-{
-    const std::filesystem::path file = std::filesystem::path(GGSTUDIO_TEST_DATA_DIR) / "packml-capper.json";
-    std::string text;
-    REQUIRE(core::readFileLimited(file.string(), 1 << 20, text));
-    return text;
-}
-
-// The Capper with pieces of its file text replaced, each the first after `after`.
-struct Replacement {
-    std::string from, to, after = {};
-};
-
-std::unique_ptr<Model> capperWith(const std::vector<Replacement>& replacements)
-{
-    std::string text = capperText();
-    for (const Replacement& r : replacements) {
-        const std::size_t at = text.find(r.from, text.find(r.after));
-        REQUIRE(at != std::string::npos);
-        text.replace(at, r.from.size(), r.to);
-    }
-    auto result = core::loadNativeJson(text, "capper-variant.json");
-    if (const auto* error = std::get_if<core::LoadError>(&result))
-        FAIL("the variant does not load: " << error->toString());
-    return std::move(std::get<std::unique_ptr<core::Model>>(result));
-}
+using packmltests::capperText;
+using packmltests::capperWith;
 
 std::vector<std::string> codesOf(const VerificationResult& result)
 {
@@ -261,24 +237,6 @@ TEST_CASE("A budget too small says GV100 and claims no never-finding", "[packml-
     CHECK_FALSE(result.exhaustive);
     CHECK(result.undecided());
     CHECK(findingOf(result, "GV100"));
-    for (const char* never : {"GV130", "GV131", "GV134", "GV135"})
-        CHECK_FALSE(findingOf(result, never));
-}
-
-TEST_CASE("The shipped bottle filler: no violation found, undecided because of its timers", "[packml-verify]")
-{
-    const LoadedModel loaded = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
-    REQUIRE(loaded.ok());
-    VerificationOptions options;
-    options.timeLimit = std::chrono::milliseconds(1000);
-    const VerificationResult result = verifyModel(*loaded.model, options);
-    INFO(Catch::Detail::stringify(codesOf(result)));
-    // Its Starting, Stopping and Aborting wait on TONs: time counted in
-    // scans of the nominal cycle proves nothing about a PLC whose cycle varies.
-    CHECK_FALSE(result.exhaustive);
-    REQUIRE(findingOf(result, "GV100"));
-    CHECK(findingOf(result, "GV100")->message.find("cycle time") != std::string::npos);
-    CHECK_FALSE(result.violated());
     for (const char* never : {"GV130", "GV131", "GV134", "GV135"})
         CHECK_FALSE(findingOf(result, never));
 }
