@@ -65,12 +65,14 @@ bool replays(const Model& model, const VerificationFinding& finding)
 }
 
 // Production's Resetting: step 1 leaves for step 2 (Complete) on `homing`;
-// with `early`, also for step 3 (which never completes) on it. Execute's
+// with `early`, also for step 3 (which never completes, unless
+// `earlyCompletes`) on it. Execute's
 // step 1 leaves on `capped`. Manual allows no mode change, so Idle is
 // reached through Resetting only.
 std::unique_ptr<Model> capperWithTimers(const std::string& homing, const std::string& early = {},
-                                        const std::string& capped = "Capped")
+                                        const std::string& capped = "Capped", bool earlyCompletes = false)
 {
+    const std::string earlyActions = earlyCompletes ? "[{ \"timing\": \"activation\", \"text\": \"S Complete\" }]" : "[]";
     std::vector<Replacement> replacements{{"\"receptivity\": \"Homed\"", "\"receptivity\": \"" + homing + "\""},
                                           {"\"receptivity\": \"Capped\"", "\"receptivity\": \"" + capped + "\""},
                                           {"\"modeChange\": [\n        \"Stopped\",\n        \"Idle\",\n        \"Aborted\"\n      ]",
@@ -81,7 +83,7 @@ std::unique_ptr<Model> capperWithTimers(const std::string& homing, const std::st
                                 "\"downstream\": [3], \"receptivity\": \"" + early + "\""});
         replacements.push_back({"\"text\": \"S Complete\"\n                }\n              ]\n            }",
                                 "\"text\": \"S Complete\"\n                }\n              ]\n            }, "
-                                "{ \"number\": 3, \"initial\": false, \"comment\": \"Early\", \"actions\": [] }",
+                                "{ \"number\": 3, \"initial\": false, \"comment\": \"Early\", \"actions\": " + earlyActions + " }",
                                 "\"comment\": \"Homed\","});
     }
     return capperWith(replacements);
@@ -210,6 +212,31 @@ TEST_CASE("Where time counted in scans runs out, an abstraction-only run stays i
     for (const VerificationFinding& f : result.findings)
         if (f.code == "GV130")
             CHECK(f.severity == Severity::Info);
+}
+
+TEST_CASE("Where two TONs race, the abstraction's way to Complete is not taken for the PLC's", "[packml-verify][timers]")
+{
+    // Both ways complete, but a way to Complete that needs the 1000 s TON
+    // before the 400 s one exists only under the abstraction: from where
+    // both run, the scans that wait decide two TONs, so no sure way is
+    // known, and time counted in scans cannot end (70,000 scans of waiting).
+    const auto model = capperWithTimers("1000s/X1", "400s/X1", "Capped", true);
+    VerificationOptions options;
+    options.maxProgramStates = 5'000;
+    const VerificationResult result = verifyModel(*model, options);
+    INFO(Catch::Detail::stringify(codesOf(result)));
+    const VerificationFinding* undecided = findingOf(result, "GV100");
+    REQUIRE(undecided);
+    CHECK(undecided->message == "GV130 and GV131 were not decided in Production Resetting: timers longer than one cycle "
+                                "may or may not have elapsed, and the runs to Complete found from some situations let "
+                                "TONs elapse in an order the PLC's may not");
+    CHECK_FALSE(findingOf(result, "GV130"));
+    CHECK_FALSE(result.exhaustive);
+    // One TON alone: waiting for it is sure, GV130 and GV131 are decided.
+    const VerificationResult single = verifyModel(*capperWithTimers("1000s/X1"), options);
+    INFO(Catch::Detail::stringify(codesOf(single)));
+    CHECK_FALSE(findingOf(single, "GV100"));
+    CHECK(single.exhaustive);
 }
 
 TEST_CASE("On random timer variants, what time counted in scans confirms the abstraction finds too", "[packml-verify][timers]")
