@@ -7,6 +7,8 @@
 #include "packmlsamples.h"
 
 #include "core/formats/modelfiles.h"
+#include "core/templates/packml/packmlexplorer.h"
+#include "core/templates/packml/packmlprogram.h"
 #include "core/templates/packml/packmlscanchecks.h"
 #include "core/templates/packml/packmlscenario.h"
 #include "core/templates/packml/packmlsimulator.h"
@@ -327,4 +329,23 @@ TEST_CASE("On random PackML models the generated rules hold and every claimed vi
     // and nothing the explorer reached may be a violation.
     CHECK(exhaustive == 0);
     CHECK(violations == 0);
+}
+
+TEST_CASE("Memories the next scan cannot read do not split the explored configurations", "[packml-verify]")
+{
+    const auto model = packmltests::loadCapper();
+    const PackmlExplorer explorer(*model, buildPackmlProgram(*model), ExplorerLimits{});
+    const auto afterOneScan = [&](const char* input, bool value) {
+        PackmlSimulator simulator(*model);
+        REQUIRE(simulator.setInput(input, value).ok);
+        (void)simulator.scan();
+        return simulator;
+    };
+    // Hold acts in Execute only: its R_TRIG memory after a scan in Stopped is overwritten unread.
+    const PackmlSimulator held = afterOneScan("Cmd_Hold", true), released = afterOneScan("Cmd_Hold", false);
+    REQUIRE(held.state() == State::Stopped);
+    REQUIRE(held.commandMemory(static_cast<std::size_t>(std::find_if(held.program().commands.begin(),
+        held.program().commands.end(), [](const ProgramCommand& c) { return c.command == Command::Hold; })
+        - held.program().commands.begin())));
+    CHECK(explorer.key(held, PauseGhost{}) == explorer.key(released, PauseGhost{}));
 }

@@ -1,5 +1,6 @@
 #include "core/templates/packml/packmlexplorer.h"
 
+#include "core/condition/conditionanalysis.h"
 #include "core/model/model.h"
 
 #include <algorithm>
@@ -55,11 +56,73 @@ PackmlExplorer::PackmlExplorer(const Model& model, PackmlProgram program, Explor
     , m_timerChoices(model.settings().cycleTimeMs)
     , m_next(m_start)
 {
+    noteLiveMemories();
+    noteLivePrevious();
     for (const ProgramGrafcet& g : m_start.program().grafcets)
         for (const NestedTimer& timer : g.grafcet.timers) {
             m_timers = true;
             m_timeAbstracted = m_timeAbstracted || (!m_limits.exactTime && timer.durationMs > model.settings().cycleTimeMs);
         }
+}
+
+// A command's R_TRIG memory is read by the next scan only to make its
+// event, which acts only where some mode accepts the command; a request's
+// only where some grant allows it. Elsewhere the scan overwrites the memory
+// with the condition's value before anything reads it, so two
+// configurations that differ only there have the same futures.
+void PackmlExplorer::noteLiveMemories()
+{
+    const PackmlProgram& program = m_start.program();
+    for (auto& live : m_liveCommandMemory)
+        live.assign(program.commands.size(), 0);
+    for (auto& live : m_liveRequestMemory)
+        live.assign(program.modes.size(), 0);
+    for (const ProgramMode& mode : program.modes) {
+        for (const ProgramState& state : mode.states)
+            for (const ModeTransition& transition : state.transitions)
+                for (std::size_t c = 0; c < program.commands.size(); ++c)
+                    if (transition.transition.trigger == Trigger::Command
+                        && transition.transition.command == program.commands[c].command)
+                        m_liveCommandMemory[static_cast<std::size_t>(state.state)][c] = 1;
+        for (const ModeGrant& grant : mode.grants)
+            for (State state : grant.states.list())
+                for (std::size_t r = 0; r < program.modes.size(); ++r)
+                    if (program.modes[r].number == grant.targetMode)
+                        m_liveRequestMemory[static_cast<std::size_t>(state)][r] = 1;
+    }
+}
+
+// <V>_PREV is read by the next scan only through an edge of V: in a command
+// or request condition (every scan), or in the GRAFCET of an instance of the
+// state. An edge variable is set before every scan (an input is enumerated,
+// anything else is in the key), so elsewhere the scan overwrites the memory
+// before anything reads it.
+void PackmlExplorer::noteLivePrevious()
+{
+    const PackmlProgram& program = m_start.program();
+    const std::size_t edges = program.edgeVariables.size();
+    std::vector<char> always(edges, 0);
+    const auto noteCondition = [&](const ProgramCondition& condition) {
+        for (int node : cond::variableNodes(condition.parsed.expression))
+            for (std::size_t e = 0; e < edges; ++e)
+                if (program.slotOf(condition.parsed.expression.at(node).text) == program.slotOf(program.edgeVariables[e]))
+                    always[e] = 1;
+    };
+    for (const ProgramCommand& command : program.commands)
+        noteCondition(command.condition);
+    for (const ProgramMode& mode : program.modes)
+        noteCondition(mode.request);
+    for (auto& live : m_livePrevious)
+        live = always;
+    for (const ProgramInstance& instance : program.instances) {
+        if (instance.isSkeleton())
+            continue;
+        const NestedGrafcet& grafcet = program.grafcets[static_cast<std::size_t>(instance.grafcet)].grafcet;
+        for (const std::string& name : grafcet.readVariables)
+            for (std::size_t e = 0; e < edges; ++e)
+                if (program.slotOf(name) == program.slotOf(program.edgeVariables[e]))
+                    m_livePrevious[static_cast<std::size_t>(instance.state)][e] = 1;
+    }
 }
 
 // A situation with its TONs as what their Q can still do (time abstracted)
@@ -138,12 +201,13 @@ std::string PackmlExplorer::key(const PackmlSimulator& s, const PauseGhost& ghos
     key.push_back(s.fault() ? '1' : '0');
     key.push_back(s.cmdChangeMemory() ? '1' : '0');
     key.push_back(s.modeChangeMemory() ? '1' : '0');
+    const auto state = static_cast<std::size_t>(s.state());
     for (std::size_t c = 0; c < program.commands.size(); ++c)
-        key.push_back(s.commandMemory(c) ? '1' : '0');
+        key.push_back(m_liveCommandMemory[state][c] && s.commandMemory(c) ? '1' : '0');
     for (std::size_t m = 0; m < program.modes.size(); ++m)
-        key.push_back(s.requestMemory(m) ? '1' : '0');
-    for (const std::string& name : program.edgeVariables)
-        key.push_back(s.previous(program.slotOf(name)) ? '1' : '0');
+        key.push_back(m_liveRequestMemory[state][m] && s.requestMemory(m) ? '1' : '0');
+    for (std::size_t e = 0; e < program.edgeVariables.size(); ++e)
+        key.push_back(m_livePrevious[state][e] && s.previous(program.slotOf(program.edgeVariables[e])) ? '1' : '0');
     for (std::size_t slot = 0; slot < program.variables.size(); ++slot)
         if (program.variables[slot].kind != VariableKind::Input)
             putValue(key, s.value(static_cast<int>(slot)));
@@ -166,11 +230,11 @@ PackmlScanRecord PackmlExplorer::runScan(PackmlSimulator& simulator, const Input
 }
 
 PackmlScanRecord PackmlExplorer::runScan(PackmlSimulator& simulator, const InputChoice& choice,
-                                         const std::vector<char>& decisions)
+                                         const std::vector<char>& answers)
 {
     if (!m_timeAbstracted)
         return runScan(simulator, choice);
-    m_timerChoices.start(decisions);
+    m_timerChoices.start(answers);
     simulator.setTimerOracle(&m_timerChoices);
     PackmlScanRecord record = runScan(simulator, choice);
     simulator.setTimerOracle(nullptr);
@@ -197,7 +261,7 @@ void PackmlExplorer::run()
     m_reached.insert({start.mode(), start.state()});
     std::unordered_map<std::string, std::uint32_t> known;
     known.emplace(key(start, PauseGhost{}), 0);
-    m_nodes.push_back({std::move(start), PauseGhost{}, 0, 0, 0, {}});
+    m_nodes.push_back({std::move(start), PauseGhost{}, 0, 0, 0});
     std::deque<std::size_t> queue{0};
     while (!queue.empty() && !m_stopped) {
         const std::size_t index = queue.front();
@@ -231,19 +295,18 @@ void PackmlExplorer::explore(std::size_t index, std::uint32_t c, const InputChoi
         }
         m_next = m_nodes[index].simulator; // assigned, not copied: its buffers are reused
         PackmlScanRecord record = runScan(m_next, inputs, answers);
-        answers = m_timerChoices.answers();
         const ScanFacts facts = observeScan(m_nodes[index].simulator, m_next, std::move(record));
         const PauseGhost& ghost = m_nodes[index].ghost;
         for (ScanFinding& finding : checkScan(m_reference, ghost, facts)) {
             const std::string witnessKey = finding.code + "/" + std::to_string(finding.mode) + "/"
                                            + std::string(stateName(finding.state));
             if (m_witnessKeys.insert(witnessKey).second)
-                m_witnesses.push_back({std::move(finding), -1, index, c, answers});
+                m_witnesses.push_back({std::move(finding), -1, index, c});
         }
         if (m_limits.violatedProperties)
             for (int property : m_limits.violatedProperties(m_next))
                 if (m_witnessKeys.insert("property/" + std::to_string(property)).second)
-                    m_witnesses.push_back({{}, property, index, c, answers});
+                    m_witnesses.push_back({{}, property, index, c});
         const PackmlScanRecord& r = facts.record;
         if (r.fired && r.fired->transition.trigger == Trigger::Command)
             m_firedCommands.insert(r.fired->transition.command);
@@ -275,7 +338,7 @@ void PackmlExplorer::explore(std::size_t index, std::uint32_t c, const InputChoi
             }
             const std::uint32_t depth = m_nodes[index].depth + 1;
             m_maxDepth = std::max<std::size_t>(m_maxDepth, depth);
-            m_nodes.push_back({m_next, std::move(nextGhostValue), static_cast<std::uint32_t>(index), c, depth, answers});
+            m_nodes.push_back({m_next, std::move(nextGhostValue), static_cast<std::uint32_t>(index), c, depth});
             queue.push_back(m_nodes.size() - 1);
         }
     } while (m_timeAbstracted && m_timerChoices.advance(answers));

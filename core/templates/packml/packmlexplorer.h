@@ -5,10 +5,10 @@
 // from its start, with the inputs free (packmlinputchoices.h). The scans are
 // run by the simulator itself (one scan exactly, §6.5), so every path found
 // is a run the simulator replays. A configuration is everything the next
-// scans depend on: State, Mode, Entry, Resume, the R_TRIG memories, the
-// <V>_PREV memories, the variables the program writes, the situation of the
-// instance that runs (and of Execute while it is paused) with its TONs, and
-// the pause ghost of the GV138 check. Inputs are not part of it: they are
+// scans depend on: State, Mode, Entry, Resume, the R_TRIG and <V>_PREV
+// memories the next scan can read (the others as FALSE), the variables the
+// program writes, the situation of the instance that runs (and of Execute
+// while it is paused) with its TONs, and the pause ghost of the GV138 check. Inputs are not part of it: they are
 // set before every scan.
 //
 // Time: a TON longer than one cycle may or may not have elapsed from its
@@ -25,6 +25,7 @@
 #include "core/templates/packml/packmlsimulator.h"
 #include "core/templates/packml/packmltimerchoices.h"
 
+#include <array>
 #include <chrono>
 #include <deque>
 #include <unordered_map>
@@ -70,7 +71,6 @@ struct ExploredWitness {
     int property = -1; // an engineer's property (finding.code empty)
     std::size_t node = 0;      // the configuration the scan starts from
     std::uint32_t choice = 0;
-    std::vector<char> decisions; // the TON answers of that scan (TimerChoices::start)
 };
 
 struct ExploredNode {
@@ -79,7 +79,6 @@ struct ExploredNode {
     std::uint32_t parent = 0;
     std::uint32_t parentChoice = 0;
     std::uint32_t depth = 0;
-    std::vector<char> parentDecisions; // the TON answers of the scan from the parent
 };
 
 class PackmlExplorer {
@@ -118,11 +117,13 @@ public:
     std::vector<InputChoice> path(std::size_t node) const;
     // Runs one scan of `simulator` with `choice` set: the record and whether every value applied.
     static PackmlScanRecord runScan(PackmlSimulator& simulator, const InputChoice& choice);
-    // The same scan as the exploration ran it: with `decisions` for the TONs
-    // under the timer abstraction.
-    PackmlScanRecord runScan(PackmlSimulator& simulator, const InputChoice& choice, const std::vector<char>& decisions);
 
 private:
+    // The scan as the exploration runs it: under the timer abstraction with
+    // `answers` first for the TONs it reads (TimerChoices::start).
+    PackmlScanRecord runScan(PackmlSimulator& simulator, const InputChoice& choice, const std::vector<char>& answers);
+    void noteLiveMemories();
+    void noteLivePrevious();
     void putSituation(std::string& key, const PackmlSimulator& simulator, const Situation& situation) const;
     void putGhost(std::string& key, const PackmlSimulator& simulator, const PauseGhost& ghost) const;
     void explore(std::size_t index, std::uint32_t choice, const InputChoice& inputs,
@@ -145,6 +146,12 @@ private:
     bool m_timeAbstracted = false;
     bool m_stopped = false; // out of budget or cancelled
     TimerChoices m_timerChoices;
+    // By state: whether the next scan can read each R_TRIG memory (a command
+    // some mode accepts there, a request some grant allows there).
+    std::array<std::vector<char>, kStateCount + 1> m_liveCommandMemory{};
+    std::array<std::vector<char>, kStateCount + 1> m_liveRequestMemory{};
+    // By state: whether the next scan can read each <V>_PREV (PackmlProgram::edgeVariables order).
+    std::array<std::vector<char>, kStateCount + 1> m_livePrevious{};
     PackmlSimulator m_next; // the scan's simulator, assigned not copied: its buffers are reused
     bool m_truncated = false;
     bool m_budgetReached = false;

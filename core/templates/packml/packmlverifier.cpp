@@ -243,6 +243,8 @@ void PackmlVerifier::reportWitness(const ExploredWitness& witness)
                          ? " (not confirmed: its counterexample does not replay in the simulator, and no run with time "
                            "counted in scans was found within the budget)"
                          : " (not confirmed: its counterexample does not replay to it in the simulator)";
+        if (m_explorer.timeAbstracted())
+            f.counterexample.reset(); // as for GEMMA: a run that may not exist is not offered
     }
     m_result.findings.push_back(std::move(f));
 }
@@ -327,6 +329,8 @@ VerificationFinding PackmlVerifier::stuckFinding(const PackmlExplorer& explorer,
     if (!f.counterexample->confirmed) {
         f.severity = Severity::Info;
         f.message += " (not confirmed: its counterexample does not replay to that situation in the simulator)";
+        if (explorer.timeAbstracted())
+            f.counterexample.reset(); // as for GEMMA: a run that may not exist is not offered
     }
     return f;
 }
@@ -435,6 +439,8 @@ void PackmlVerifier::reportProperties()
                 f.severity = Severity::Info;
                 f.message += " (not confirmed: its counterexample does not replay to it in the simulator)";
                 verdict.reason = "its counterexample does not replay";
+                if (m_explorer.timeAbstracted())
+                    f.counterexample.reset(); // as for GEMMA: a run that may not exist is not offered
             }
         } else if (exact) {
             f.code = core::verification::kPropertyHolds;
