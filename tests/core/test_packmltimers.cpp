@@ -230,6 +230,7 @@ TEST_CASE("Where two TONs race, the abstraction's way to Complete is not taken f
     CHECK(undecided->message == "GV130 and GV131 were not decided in Production Resetting: timers longer than one cycle "
                                 "may or may not have elapsed, and the runs to Complete found from some situations let "
                                 "TONs elapse in an order the PLC's may not");
+    CHECK(undecided->arguments == std::vector<std::string>{"stuck", "Production Resetting"}); // the editor's wording
     CHECK_FALSE(findingOf(result, "GV130"));
     CHECK_FALSE(result.exhaustive);
     // One TON alone: waiting for it is sure, GV130 and GV131 are decided.

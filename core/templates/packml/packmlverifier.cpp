@@ -377,6 +377,7 @@ void PackmlVerifier::reportUndecided()
     for (const std::string& reason : m_explorer.runsLeftOutReasons())
         why += (why.empty() ? "" : "; ") + reason;
     std::string message;
+    std::vector<std::string> arguments; // the editor's wording: "stuck" and the states when only those are open
     if (!why.empty()) {
         message = "not exhaustive: " + why
                   + ". GV130, GV131, GV134 and GV135 were not decided, and the absence of the other findings is not a proof";
@@ -384,6 +385,7 @@ void PackmlVerifier::reportUndecided()
         std::string states;
         for (const auto& [mode, state] : m_stuckUndecided)
             states += (states.empty() ? "" : ", ") + modeName(mode) + " " + std::string(stateName(state));
+        arguments = {"stuck", states};
         message = "GV130 and GV131 were not decided in " + states
                   + ": timers longer than one cycle may or may not have elapsed, and the runs to Complete found from "
                     "some situations let TONs elapse in an order the PLC's may not";
@@ -392,7 +394,7 @@ void PackmlVerifier::reportUndecided()
     }
     m_result.findings.push_back(finding(core::verification::kIncomplete, message,
                                         modelDiagnostic(Finding{core::verification::kIncomplete, Severity::Warning, "",
-                                                                message, {}})));
+                                                                message, std::move(arguments)})));
 }
 
 void PackmlVerifier::reportProperties()
