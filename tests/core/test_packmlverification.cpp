@@ -348,4 +348,17 @@ TEST_CASE("Memories the next scan cannot read do not split the explored configur
         held.program().commands.end(), [](const ProgramCommand& c) { return c.command == Command::Hold; })
         - held.program().commands.begin())));
     CHECK(explorer.key(held, PauseGhost{}) == explorer.key(released, PauseGhost{}));
+
+    // The bottle filler reads BottleIn under an edge in Execute only: in
+    // Stopped its BottleIn_PREV is overwritten unread too.
+    const LoadedModel filler = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
+    REQUIRE(filler.ok());
+    const PackmlExplorer fillerExplorer(*filler.model, buildPackmlProgram(*filler.model), ExplorerLimits{});
+    PackmlSimulator bottle(*filler.model), none(*filler.model);
+    REQUIRE(bottle.setInput("BottleIn", true).ok);
+    (void)bottle.scan();
+    (void)none.scan();
+    REQUIRE(bottle.state() == State::Stopped);
+    REQUIRE(bottle.previous(bottle.slotOf("BottleIn")));
+    CHECK(fillerExplorer.key(bottle, PauseGhost{}) == fillerExplorer.key(none, PauseGhost{}));
 }
