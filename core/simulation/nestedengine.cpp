@@ -150,8 +150,28 @@ void NestedEngine::runTon(std::size_t index, bool in, std::int64_t nowMs)
         timer.running = true;
         timer.start = nowMs;
     }
+    const bool wasDone = timer.q;
     timer.elapsed = std::min(nowMs - timer.start, m_grafcet->timers[index].durationMs);
     timer.q = nowMs - timer.start >= m_grafcet->timers[index].durationMs;
+    // Under an oracle the time since the start means nothing (the verifier
+    // merges runs that started at other times): from its second run on, a
+    // TON not yet elapsed is decided when read, and once elapsed it stays so.
+    if (m_timerOracle && nowMs != timer.start) {
+        timer.q = wasDone;
+        timer.undecided = !wasDone;
+    }
+}
+
+bool NestedEngine::timerDone(std::size_t index) const
+{
+    Timer& timer = m_timers[index];
+    if (timer.undecided && m_timerOracle) {
+        timer.undecided = false;
+        timer.q = m_timerOracle->elapsed(m_grafcet->timers[index], index);
+        if (timer.q)
+            timer.elapsed = m_grafcet->timers[index].durationMs;
+    }
+    return timer.q;
 }
 
 cond::Value NestedEngine::atom(const cond::Expression& expression, int node, const std::map<int, int>* timers,
@@ -163,7 +183,7 @@ cond::Value NestedEngine::atom(const cond::Expression& expression, int node, con
     case cond::NodeKind::StepDuration: {
         if (!timers || !timers->count(node))
             return false;
-        return active(n.number) && m_timers[static_cast<std::size_t>(timers->at(node))].q;
+        return active(n.number) && timerDone(static_cast<std::size_t>(timers->at(node)));
     }
     case cond::NodeKind::Complete: return m_complete;
     case cond::NodeKind::Variable: {

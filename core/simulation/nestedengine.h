@@ -49,6 +49,19 @@ struct NestedTimerState {
     std::int64_t startMs = 0;
 };
 
+// Decides Q of a TON where the PackML verifier abstracts time
+// (docs/packml.md, "Verification"): instead of comparing the simulated time
+// with the TON's start, the engine asks whether a TON that runs since an
+// earlier call and was not yet seen elapsed has elapsed now. It is asked
+// only when the call reads that Q, at most once per call and TON, so that
+// the verifier branches only on the TONs a scan reads.
+class TimerOracle {
+public:
+    virtual ~TimerOracle() = default;
+    // `index`: the TON's index in NestedGrafcet::timers.
+    virtual bool elapsed(const NestedTimer& timer, std::size_t index) = 0;
+};
+
 enum class NestedTransitionStatus {
     Fires,            // it fires in the first evolution of the next call
     UpstreamInactive, // some of its upstream steps are not active (reasons: which)
@@ -108,6 +121,11 @@ public:
     std::vector<NestedTimerState> timers() const;
     const NestedGrafcet& grafcet() const { return *m_grafcet; }
 
+    // nullptr (the default): Q compares the time with the start, as the PLC.
+    // Otherwise `oracle` decides it (see TimerOracle); it is not owned and
+    // copies of the engine keep the pointer.
+    void setTimerOracle(TimerOracle* oracle) { m_timerOracle = oracle; }
+
     // The first integer division or MOD by zero evaluated since the last
     // clearDivisionFault() (the call went on with 0 as the quotient): the
     // PLC would have stopped there. stepId, scan and transitionId are left
@@ -133,6 +151,7 @@ private:
         std::int64_t start = 0;
         std::int64_t elapsed = 0;
         bool q = false;
+        bool undecided = false; // under a TimerOracle: running, Q not yet decided in this call
     };
 
     cond::Value evaluate(const cond::Expression& expression, const std::map<int, int>* timers,
@@ -149,6 +168,7 @@ private:
     std::string declaredName(const std::string& written) const;
     int ownOutput(std::string_view name) const; // index into m_outputNames, -1 when not one
     void runTon(std::size_t timer, bool in, std::int64_t nowMs);
+    bool timerDone(std::size_t timer) const;
     bool evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals& globals);
     bool enabled(std::size_t transition) const;
     void findEnabled();
@@ -163,7 +183,9 @@ private:
     bool m_untilStable = false;
     std::vector<int> m_stepNumbers;       // by index
     std::vector<char> m_x;                // by step index
-    std::vector<Timer> m_timers;
+    // Mutable: under a TimerOracle, reading a Q decides it (timerDone()).
+    mutable std::vector<Timer> m_timers;
+    TimerOracle* m_timerOracle = nullptr;
     std::vector<std::string> m_outputNames;
     std::vector<int> m_outputSlots;
     std::vector<int> m_outputOf;          // NestedGrafcet::outputs index -> m_outputs index, -1 for Complete

@@ -40,6 +40,11 @@ QString PackmlVerificationText::text(const core::VerificationFinding& f)
     namespace pv = core::packml::verification;
     const std::string& code = f.code;
     const std::size_t n = f.arguments.size();
+    if (code == core::verification::kIncomplete && n == 2 && argument(f, 0) == QLatin1String("stuck"))
+        return tr("Stuck states were not decided in %1: timers longer than one cycle may or may not have elapsed, "
+                  "and the ways to Complete found there let timers elapse in an order the PLC's may not. Every other "
+                  "finding is decided.")
+            .arg(argument(f, 1));
     if (code == core::verification::kIncomplete)
         return tr("The verification was not exhaustive (its time or size limit, timers or numeric inputs it explores "
                   "only in part): stuck states, states never active and commands never accepted were not decided, "

@@ -5,6 +5,7 @@
 #include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlprogram.h"
 #include "core/templates/packml/packmlsimulator.h"
+#include "core/verification/verification.h"
 
 #include <catch2/catch.hpp>
 
@@ -55,5 +56,18 @@ TEST_CASE("PackML: simulation speed, shipped example (target >= 1,000,000 scans/
         for (int i = 0; i < 1000; ++i)
             (void)simulator.scan();
         return simulator.scanCount();
+    };
+}
+
+// Default options (the 4 s time limit): the figure is the time to a verdict,
+// the time limit itself while the exploration is not exhaustive (GV100).
+TEST_CASE("PackML: verification of the shipped example (target <= 1 s)", "[benchmark][packml]")
+{
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
+    if (!loaded.ok())
+        throw std::runtime_error("cannot load the bottle filler");
+    BENCHMARK("verify the bottle filler")
+    {
+        return core::verifyModel(*loaded.model).configurations;
     };
 }

@@ -16,15 +16,21 @@
 #include <memory>
 #include <string>
 #include <variant>
+#include <vector>
 
 namespace packmltests {
 
-inline std::unique_ptr<core::Model> loadCapper()
+inline std::string capperText()
 {
     const std::filesystem::path file = std::filesystem::path(GGSTUDIO_TEST_DATA_DIR) / "packml-capper.json";
     std::string text;
     REQUIRE(core::readFileLimited(file.string(), 1 << 20, text));
-    auto result = core::loadNativeJson(text, file.string());
+    return text;
+}
+
+inline std::unique_ptr<core::Model> loadCapper()
+{
+    auto result = core::loadNativeJson(capperText(), "packml-capper.json");
     if (const auto* error = std::get_if<core::LoadError>(&result))
         FAIL("the Capper does not load: " << error->toString());
     return std::move(std::get<std::unique_ptr<core::Model>>(result));
@@ -43,6 +49,25 @@ inline core::packml::ModeTransition& transitionOf(core::packml::PackmlProgram& p
     });
     REQUIRE(found != s.transitions.end());
     return *found;
+}
+
+// The Capper with pieces of its file text replaced, each the first after `after`.
+struct Replacement {
+    std::string from, to, after = {};
+};
+
+inline std::unique_ptr<core::Model> capperWith(const std::vector<Replacement>& replacements)
+{
+    std::string text = capperText();
+    for (const Replacement& r : replacements) {
+        const std::size_t at = text.find(r.from, text.find(r.after));
+        REQUIRE(at != std::string::npos);
+        text.replace(at, r.from.size(), r.to);
+    }
+    auto result = core::loadNativeJson(text, "capper-variant.json");
+    if (const auto* error = std::get_if<core::LoadError>(&result))
+        FAIL("the variant does not load: " << error->toString());
+    return std::move(std::get<std::unique_ptr<core::Model>>(result));
 }
 
 } // namespace packmltests

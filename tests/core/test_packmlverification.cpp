@@ -7,6 +7,8 @@
 #include "packmlsamples.h"
 
 #include "core/formats/modelfiles.h"
+#include "core/templates/packml/packmlexplorer.h"
+#include "core/templates/packml/packmlprogram.h"
 #include "core/templates/packml/packmlscanchecks.h"
 #include "core/templates/packml/packmlscenario.h"
 #include "core/templates/packml/packmlsimulator.h"
@@ -27,32 +29,8 @@ using namespace core::packml;
 
 namespace {
 
-std::string capperText()
-{
-    const std::filesystem::path file = std::filesystem::path(GGSTUDIO_TEST_DATA_DIR) / "packml-capper.json";
-    std::string text;
-    REQUIRE(core::readFileLimited(file.string(), 1 << 20, text));
-    return text;
-}
-
-// The Capper with pieces of its file text replaced, each the first after `after`.
-struct Replacement {
-    std::string from, to, after = {};
-};
-
-std::unique_ptr<Model> capperWith(const std::vector<Replacement>& replacements)
-{
-    std::string text = capperText();
-    for (const Replacement& r : replacements) {
-        const std::size_t at = text.find(r.from, text.find(r.after));
-        REQUIRE(at != std::string::npos);
-        text.replace(at, r.from.size(), r.to);
-    }
-    auto result = core::loadNativeJson(text, "capper-variant.json");
-    if (const auto* error = std::get_if<core::LoadError>(&result))
-        FAIL("the variant does not load: " << error->toString());
-    return std::move(std::get<std::unique_ptr<core::Model>>(result));
-}
+using packmltests::capperText;
+using packmltests::capperWith;
 
 std::vector<std::string> codesOf(const VerificationResult& result)
 {
@@ -254,24 +232,6 @@ TEST_CASE("A budget too small says GV100 and claims no never-finding", "[packml-
         CHECK_FALSE(findingOf(result, never));
 }
 
-TEST_CASE("The shipped bottle filler: no violation found, undecided because of its timers", "[packml-verify]")
-{
-    const LoadedModel loaded = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
-    REQUIRE(loaded.ok());
-    VerificationOptions options;
-    options.timeLimit = std::chrono::milliseconds(1000);
-    const VerificationResult result = verifyModel(*loaded.model, options);
-    INFO(Catch::Detail::stringify(codesOf(result)));
-    // Its Starting, Stopping and Aborting wait on TONs: time counted in
-    // scans of the nominal cycle proves nothing about a PLC whose cycle varies.
-    CHECK_FALSE(result.exhaustive);
-    REQUIRE(findingOf(result, "GV100"));
-    CHECK(findingOf(result, "GV100")->message.find("cycle time") != std::string::npos);
-    CHECK_FALSE(result.violated());
-    for (const char* never : {"GV130", "GV131", "GV134", "GV135"})
-        CHECK_FALSE(findingOf(result, never));
-}
-
 TEST_CASE("The engineer's properties read in <State>, mode <Mode> and <Mode>_<State>.Xn", "[packml-verify]")
 {
     const auto model = packmltests::loadCapper();
@@ -358,4 +318,36 @@ TEST_CASE("On random PackML models the generated rules hold and every claimed vi
     // and nothing the explorer reached may be a violation.
     CHECK(exhaustive == 0);
     CHECK(violations == 0);
+}
+
+TEST_CASE("Memories the next scan cannot read do not split the explored configurations", "[packml-verify]")
+{
+    const auto model = packmltests::loadCapper();
+    const PackmlExplorer explorer(*model, buildPackmlProgram(*model), ExplorerLimits{});
+    const auto afterOneScan = [&](const char* input, bool value) {
+        PackmlSimulator simulator(*model);
+        REQUIRE(simulator.setInput(input, value).ok);
+        (void)simulator.scan();
+        return simulator;
+    };
+    // Hold acts in Execute only: its R_TRIG memory after a scan in Stopped is overwritten unread.
+    const PackmlSimulator held = afterOneScan("Cmd_Hold", true), released = afterOneScan("Cmd_Hold", false);
+    REQUIRE(held.state() == State::Stopped);
+    REQUIRE(held.commandMemory(static_cast<std::size_t>(std::find_if(held.program().commands.begin(),
+        held.program().commands.end(), [](const ProgramCommand& c) { return c.command == Command::Hold; })
+        - held.program().commands.begin())));
+    CHECK(explorer.key(held, PauseGhost{}) == explorer.key(released, PauseGhost{}));
+
+    // The bottle filler reads BottleIn under an edge in Execute only: in
+    // Stopped its BottleIn_PREV is overwritten unread too.
+    const LoadedModel filler = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
+    REQUIRE(filler.ok());
+    const PackmlExplorer fillerExplorer(*filler.model, buildPackmlProgram(*filler.model), ExplorerLimits{});
+    PackmlSimulator bottle(*filler.model), none(*filler.model);
+    REQUIRE(bottle.setInput("BottleIn", true).ok);
+    (void)bottle.scan();
+    (void)none.scan();
+    REQUIRE(bottle.state() == State::Stopped);
+    REQUIRE(bottle.previous(bottle.slotOf("BottleIn")));
+    CHECK(fillerExplorer.key(bottle, PauseGhost{}) == fillerExplorer.key(none, PauseGhost{}));
 }

@@ -5,19 +5,30 @@
 // from its start, with the inputs free (packmlinputchoices.h). The scans are
 // run by the simulator itself (one scan exactly, §6.5), so every path found
 // is a run the simulator replays. A configuration is everything the next
-// scans depend on: State, Mode, Entry, Resume, the R_TRIG memories, the
-// <V>_PREV memories, the variables the program writes, the situation of the
-// instance that runs (and of Execute while it is paused) with its TONs as
-// time since they started (capped at their duration), and the pause ghost
-// of the GV138 check. Inputs are not part of it: they are set before every
-// scan. Time is counted in scans of the model's cycle time: a TON elapses
-// when the PLC's would at that cycle (an abstraction the result names).
+// scans depend on: State, Mode, Entry, Resume, the R_TRIG and <V>_PREV
+// memories the next scan can read (the others as FALSE), the variables the
+// program writes, the situation of the instance that runs (and of Execute
+// while it is paused) with its TONs, and the pause ghost of the GV138 check. Inputs are not part of it: they are
+// set before every scan.
+//
+// Time: a TON longer than one cycle may or may not have elapsed from its
+// second run on (packmltimerchoices.h): the key stores each TON as idle,
+// running or elapsed, and a scan that reads such a TON is run once per
+// answer. This only adds runs (a PLC's cycle may vary), so what the
+// exploration never sees never happens; a run it finds may not exist at
+// nominal time (the verifier replays it). With ExplorerLimits::exactTime
+// time is counted in scans of the cycle time instead: the key stores each
+// TON's time since it started, capped at its duration.
 
 #include "core/templates/packml/packmlinputchoices.h"
 #include "core/templates/packml/packmlscanchecks.h"
 #include "core/templates/packml/packmlsimulator.h"
+#include "core/templates/packml/packmltimerchoices.h"
 
+#include <array>
 #include <chrono>
+#include <deque>
+#include <unordered_map>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -47,6 +58,11 @@ struct ExploredEdge {
     std::uint32_t choice = 0; // index into the choices of `from`
     bool stays = false;       // no transition fired and the mode did not change
     bool completes = false;   // an SC transition fired
+    // The TONs the scan decided under the timer abstraction (none with exact time).
+    std::uint16_t decisions = 0;
+    bool decidedElapsed = false;    // some TON was taken as elapsed
+    bool decidedRunning = false;    // some TON was taken as not elapsed
+    std::int32_t decidedTimer = -1; // the one TON decided (its index), -2 when several
 };
 
 // The first scan that shows a finding (or a property's violation).
@@ -84,6 +100,15 @@ public:
     bool cancelled() const { return m_cancelled; }
     std::size_t maxDepth() const { return m_maxDepth; }
     std::vector<std::string> abstractions() const;
+    // Some TON is longer than one cycle and time is not exact: the runs are
+    // a superset of the PLC's (never-claims hold, runs must be replayed).
+    bool timeAbstracted() const { return m_timeAbstracted; }
+    // Some runs were left out (numbers enumerated on some values only, too
+    // many ways of setting the inputs): never-claims do not hold.
+    bool runsLeftOut() const { return !runsLeftOutReasons().empty(); }
+    std::vector<std::string> runsLeftOutReasons() const;
+    // The configuration's key: two simulators with one key have the same futures.
+    std::string key(const PackmlSimulator& simulator, const PauseGhost& ghost) const;
     const InputChoices& inputChoices() const { return m_choices; }
     const ScanReference& reference() const { return m_reference; }
     const PackmlProgram& program() const { return m_start.program(); }
@@ -94,7 +119,15 @@ public:
     static PackmlScanRecord runScan(PackmlSimulator& simulator, const InputChoice& choice);
 
 private:
-    std::string key(const PackmlSimulator& simulator, const PauseGhost& ghost) const;
+    // The scan as the exploration runs it: under the timer abstraction with
+    // `answers` first for the TONs it reads (TimerChoices::start).
+    PackmlScanRecord runScan(PackmlSimulator& simulator, const InputChoice& choice, const std::vector<char>& answers);
+    void noteLiveMemories();
+    void noteLivePrevious();
+    void putSituation(std::string& key, const PackmlSimulator& simulator, const Situation& situation) const;
+    void putGhost(std::string& key, const PackmlSimulator& simulator, const PauseGhost& ghost) const;
+    void explore(std::size_t index, std::uint32_t choice, const InputChoice& inputs,
+                 std::unordered_map<std::string, std::uint32_t>& known, std::deque<std::size_t>& queue);
     bool outOfBudget();
 
     PackmlSimulator m_start;
@@ -110,6 +143,16 @@ private:
     bool m_exhaustive = true;
     bool m_cancelled = false;
     bool m_timers = false;
+    bool m_timeAbstracted = false;
+    bool m_stopped = false; // out of budget or cancelled
+    TimerChoices m_timerChoices;
+    // By state: whether the next scan can read each R_TRIG memory (a command
+    // some mode accepts there, a request some grant allows there).
+    std::array<std::vector<char>, kStateCount + 1> m_liveCommandMemory{};
+    std::array<std::vector<char>, kStateCount + 1> m_liveRequestMemory{};
+    // By state: whether the next scan can read each <V>_PREV (PackmlProgram::edgeVariables order).
+    std::array<std::vector<char>, kStateCount + 1> m_livePrevious{};
+    PackmlSimulator m_next; // the scan's simulator, assigned not copied: its buffers are reused
     bool m_truncated = false;
     bool m_budgetReached = false;
     std::size_t m_maxDepth = 0;

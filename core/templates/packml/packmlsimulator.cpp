@@ -468,6 +468,13 @@ bool PackmlSimulator::instanceFaulted(int instance)
     return true;
 }
 
+void PackmlSimulator::setTimerOracle(TimerOracle* oracle)
+{
+    for (std::optional<NestedEngine>& engine : m_engines)
+        if (engine)
+            engine->setTimerOracle(oracle);
+}
+
 void PackmlSimulator::callFunctionBlock(int instance, bool initialization)
 {
     const auto index = static_cast<std::size_t>(instance);

@@ -103,6 +103,10 @@ public:
 
     const PackmlProgram& program() const;
 
+    // The verifier's hook (NestedEngine::setTimerOracle) on every instance's
+    // engine: nullptr runs the TONs on the simulated time again.
+    void setTimerOracle(TimerOracle* oracle);
+
 private:
     struct Compiled;
     struct Events;

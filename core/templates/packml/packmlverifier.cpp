@@ -1,6 +1,7 @@
 #include "core/templates/packml/packmlverifier.h"
 
 #include "core/model/model.h"
+#include "core/templates/packml/packmlcompletion.h"
 #include "core/templates/packml/packmlcounterexample.h"
 #include "core/templates/packml/packmldiagnostics.h"
 #include "core/templates/packml/packmlexplorer.h"
@@ -8,7 +9,7 @@
 #include "core/verification/bothlayers.h"
 
 #include <algorithm>
-#include <deque>
+#include <memory>
 #include <set>
 
 namespace core::packml {
@@ -34,7 +35,8 @@ public:
         : m_model(model)
         , m_configuration(*model.packml())
         , m_texts(propertiesToCheck(model, options))
-        , m_explorer(model, std::move(program), limits(options, m_texts, m_properties))
+        , m_limits(limits(options, m_texts, m_properties))
+        , m_explorer(model, std::move(program), m_limits)
     {
         for (const std::string& text : m_texts) {
             m_problems.push_back(checkPackmlProperty(model, text));
@@ -57,15 +59,29 @@ private:
     void reportNeverActive();
     void reportNeverAccepted();
     void reportUndecided();
-    Counterexample counterexampleTo(std::size_t node, const std::vector<InputChoice>& lastScan, const std::string& title,
-                                    int expectedMode) const;
+    Counterexample counterexampleTo(const PackmlExplorer& explorer, std::size_t node, const std::vector<InputChoice>& lastScan,
+                                    const std::string& title, int expectedMode) const;
+    // Never-claims hold: every run was explored (the timer abstraction only adds runs).
+    bool neverSound() const { return m_explorer.exhaustive() && !m_explorer.runsLeftOut(); }
+    // Time counted in scans: searches the PLC's runs for what the abstraction found (built once).
+    const PackmlExplorer& exactExplorer();
+    // The exact search was exhaustive: what it did not see does not happen.
+    bool exactSearchDecides() { return exactExplorer().exhaustive() && !exactExplorer().runsLeftOut(); }
+    std::optional<ExploredWitness> exactWitness(const ExploredWitness& witness);
+    bool confirmScan(const PackmlExplorer& explorer, const ExploredWitness& witness, VerificationFinding& f,
+                     const std::string& title);
+    bool replaysToNode(const PackmlExplorer& explorer, std::size_t node, const Counterexample& counterexample) const;
+    VerificationFinding stuckFinding(const PackmlExplorer& explorer, std::size_t node) const;
 
     const Model& m_model;
     const Configuration& m_configuration;
     std::vector<std::string> m_texts;               // the model's properties, then the options'
     std::vector<std::vector<PropertyProblem>> m_problems; // per property: why it cannot be checked
     std::vector<PackmlProperty> m_properties;
+    ExplorerLimits m_limits;
     PackmlExplorer m_explorer;
+    std::unique_ptr<PackmlExplorer> m_exact;
+    std::set<std::pair<int, State>> m_stuckUndecided; // GV130/GV131 neither shown nor excluded
     VerificationResult m_result;
 };
 
@@ -129,12 +145,56 @@ VerificationFinding PackmlVerifier::finding(const std::string& code, std::string
     return f;
 }
 
-Counterexample PackmlVerifier::counterexampleTo(std::size_t node, const std::vector<InputChoice>& lastScan,
-                                                const std::string& title, int expectedMode) const
+Counterexample PackmlVerifier::counterexampleTo(const PackmlExplorer& explorer, std::size_t node,
+                                                const std::vector<InputChoice>& lastScan, const std::string& title,
+                                                int expectedMode) const
 {
-    std::vector<InputChoice> scans = m_explorer.path(node);
+    std::vector<InputChoice> scans = explorer.path(node);
     scans.insert(scans.end(), lastScan.begin(), lastScan.end());
-    return writeCounterexample(m_explorer.nodes().front().simulator, scans, title, modeName(expectedMode));
+    return writeCounterexample(explorer.nodes().front().simulator, scans, title, modeName(expectedMode));
+}
+
+const PackmlExplorer& PackmlVerifier::exactExplorer()
+{
+    if (!m_exact) {
+        ExplorerLimits limits = m_limits;
+        limits.exactTime = true;
+        m_exact = std::make_unique<PackmlExplorer>(m_model, m_explorer.program(), std::move(limits));
+        m_exact->run();
+    }
+    return *m_exact;
+}
+
+std::optional<ExploredWitness> PackmlVerifier::exactWitness(const ExploredWitness& witness)
+{
+    for (const ExploredWitness& w : exactExplorer().witnesses())
+        if (w.property == witness.property && w.finding.code == witness.finding.code
+            && w.finding.mode == witness.finding.mode && w.finding.state == witness.finding.state)
+            return w;
+    return std::nullopt;
+}
+
+// The counterexample to the scan of `witness` in `explorer`'s run, and
+// whether it replays to the same finding (or property violation).
+bool PackmlVerifier::confirmScan(const PackmlExplorer& explorer, const ExploredWitness& witness, VerificationFinding& f,
+                                 const std::string& title)
+{
+    const ExploredNode& from = explorer.nodes()[witness.node];
+    const InputChoice choice = explorer.inputChoices().choices(from.simulator)[witness.choice];
+    PackmlSimulator after = from.simulator;
+    const int mode = PackmlExplorer::runScan(after, choice).mode; // the mode manager reads no TON
+    f.counterexample = counterexampleTo(explorer, witness.node, std::vector<InputChoice>{choice}, title, mode);
+    const std::optional<Replay> replayed = replay(explorer.nodes().front().simulator, *f.counterexample);
+    bool confirmed = false;
+    if (replayed && witness.property >= 0) {
+        confirmed = packmlPropertyViolated(m_properties[static_cast<std::size_t>(witness.property)], replayed->after);
+    } else if (replayed) {
+        const ScanFinding& s = witness.finding;
+        for (const ScanFinding& again : checkScan(explorer.reference(), replayed->ghost, replayed->facts))
+            confirmed = confirmed || (again.code == s.code && again.mode == s.mode && again.state == s.state);
+    }
+    f.counterexample->confirmed = confirmed;
+    return confirmed;
 }
 
 // What the editor's wording needs besides the mode (and GV132's state):
@@ -157,84 +217,122 @@ void PackmlVerifier::appendScanArguments(VerificationFinding& f, const ScanFindi
     }
 }
 
+// A run found under the timer abstraction may let a TON elapse sooner than
+// the PLC's: when it does not replay, the PLC's runs (time counted in scans)
+// are searched. One found replaces it; none in an exhaustive search drops
+// the finding; otherwise it is reported as info, "(not confirmed: ...)".
 void PackmlVerifier::reportWitness(const ExploredWitness& witness)
 {
     const ScanFinding& s = witness.finding;
-    const ExploredNode& from = m_explorer.nodes()[witness.node];
-    const InputChoice choice = m_explorer.inputChoices().choices(from.simulator)[witness.choice];
-    PackmlSimulator after = from.simulator;
-    const PackmlScanRecord record = PackmlExplorer::runScan(after, choice);
     const bool located = s.code == verification::kDisabledStateActive;
     const std::string& message = s.message; // the location names the mode
     VerificationFinding f = finding(s.code, message, modeLocation(s.mode, located ? std::optional<State>(s.state) : std::nullopt,
                                                                  s.code, message));
     appendScanArguments(f, s);
-    f.counterexample = counterexampleTo(witness.node, std::vector<InputChoice>{choice},
-                                        s.code + ": " + modeName(s.mode) + ": " + message, record.mode);
-    // Confirmed when the scenario replays to the same violation.
-    if (const std::optional<Replay> replayed = replay(m_explorer.nodes().front().simulator, *f.counterexample)) {
-        for (const ScanFinding& again : checkScan(m_explorer.reference(), replayed->ghost, replayed->facts))
-            f.counterexample->confirmed = f.counterexample->confirmed
-                                          || (again.code == s.code && again.mode == s.mode && again.state == s.state);
+    const std::string title = s.code + ": " + modeName(s.mode) + ": " + message;
+    bool confirmed = confirmScan(m_explorer, witness, f, title);
+    if (!confirmed && m_explorer.timeAbstracted()) {
+        if (const std::optional<ExploredWitness> exact = exactWitness(witness))
+            confirmed = confirmScan(exactExplorer(), *exact, f, title);
+        else if (exactSearchDecides())
+            return; // counted in scans, no run shows it: the timer abstraction alone made it
     }
-    if (!f.counterexample->confirmed) {
+    if (!confirmed) {
         f.severity = Severity::Info;
-        f.message += " (not confirmed: its counterexample does not replay to it in the simulator)";
+        f.message += m_explorer.timeAbstracted()
+                         ? " (not confirmed: its counterexample does not replay in the simulator, and no run with time "
+                           "counted in scans was found within the budget)"
+                         : " (not confirmed: its counterexample does not replay to it in the simulator)";
+        if (m_explorer.timeAbstracted())
+            f.counterexample.reset(); // as for GEMMA: a run that may not exist is not offered
     }
     m_result.findings.push_back(std::move(f));
 }
 
+// The counterexample replays to a configuration with the node's key: one
+// the node stands for, so what the graph says of the node's futures holds of it.
+bool PackmlVerifier::replaysToNode(const PackmlExplorer& explorer, std::size_t node, const Counterexample& counterexample) const
+{
+    const std::optional<Replay> replayed = replay(explorer.nodes().front().simulator, counterexample);
+    if (!replayed)
+        return false;
+    const ExploredNode& target = explorer.nodes()[node];
+    return explorer.key(replayed->after, nextGhost(replayed->ghost, replayed->facts)) == explorer.key(target.simulator, target.ghost);
+}
+
 // GV130, GV131: configurations of an acting state from which no run that
 // stays in it (no transition, no mode change) reaches a scan whose SC fires.
+// The claim needs a real configuration: one its counterexample replays to.
+// Where a path to SC exists only under the timer abstraction
+// (packmlcompletion.h), or the stuck configuration does not replay, the
+// state is decided with time counted in scans when that search is
+// exhaustive, and left undecided otherwise.
 void PackmlVerifier::reportStuck()
 {
-    const auto& nodes = m_explorer.nodes();
-    const auto& edges = m_explorer.edges();
-    std::vector<std::vector<std::uint32_t>> staysInto(nodes.size());
-    std::vector<char> canComplete(nodes.size(), 0);
-    std::deque<std::uint32_t> queue;
-    for (const ExploredEdge& edge : edges) {
-        if (edge.stays)
-            staysInto[edge.to].push_back(edge.from);
-        if (edge.completes && !canComplete[edge.from]) {
-            canComplete[edge.from] = 1;
-            queue.push_back(edge.from);
-        }
-    }
-    while (!queue.empty()) {
-        const std::uint32_t n = queue.front();
-        queue.pop_front();
-        for (std::uint32_t from : staysInto[n])
-            if (!canComplete[from]) {
-                canComplete[from] = 1;
-                queue.push_back(from);
-            }
-    }
-    std::set<std::pair<int, State>> reported;
-    for (std::size_t n = 0; n < nodes.size(); ++n) { // shortest first: nodes are in breadth-first order
-        const PackmlSimulator& s = nodes[n].simulator;
-        if (canComplete[n] || !isActing(s.state()) || s.fault() || !reported.insert({s.mode(), s.state()}).second)
+    const Completion found = completion(m_explorer);
+    std::set<std::pair<int, State>> candidates;
+    std::vector<VerificationFinding> unconfirmed;
+    for (std::size_t n = 0; n < m_explorer.nodes().size(); ++n) { // shortest first: breadth-first order
+        const PackmlSimulator& s = m_explorer.nodes()[n].simulator;
+        if (!isActing(s.state()) || s.fault() || found.sure[n])
             continue;
-        const bool aborting = s.state() == State::Aborting;
-        const std::string code = aborting ? verification::kAbortingStuck : verification::kStuckGrafcet;
-        const std::string message = (aborting ? std::string("Aborting can reach a situation from which Aborted is never reached: nothing leaves it")
-                        : std::string(stateName(s.state())) + "'s GRAFCET can reach a situation from which Complete never "
-                              "becomes TRUE: only Stop or Abort leave it");
-        VerificationFinding f = finding(code, message, modeLocation(s.mode(), aborting ? std::nullopt : std::optional(s.state()),
-                                                                     code, message));
-        f.counterexample = counterexampleTo(n, {}, code + ": " + modeName(s.mode()) + ": " + message, s.mode());
-        if (f.counterexample->scans == 0) {
-            f.counterexample.reset();
-        } else if (const std::optional<Replay> replayed = replay(nodes.front().simulator, *f.counterexample)) {
-            const int instance = replayed->after.program().instance(s.mode(), s.state())
-                                     ? static_cast<int>(replayed->after.program().instance(s.mode(), s.state())
-                                                        - replayed->after.program().instances.data())
-                                     : -1;
-            f.counterexample->confirmed = replayed->after.state() == s.state() && replayed->after.mode() == s.mode()
-                                          && situationOf(replayed->after, instance) == situationOf(s, instance);
+        const std::pair<int, State> at{s.mode(), s.state()};
+        if (found.possible[n] || !candidates.insert(at).second)
+            continue;
+        VerificationFinding f = stuckFinding(m_explorer, n);
+        if (f.severity == Severity::Error) {
+            m_result.findings.push_back(std::move(f));
+        } else {
+            m_stuckUndecided.insert(at); // not shown on a real run
+            unconfirmed.push_back(std::move(f));
         }
-        m_result.findings.push_back(std::move(f));
     }
+    for (std::size_t n = 0; n < m_explorer.nodes().size(); ++n) {
+        const PackmlSimulator& s = m_explorer.nodes()[n].simulator;
+        if (isActing(s.state()) && !s.fault() && found.possible[n] && !found.sure[n] && !candidates.count({s.mode(), s.state()}))
+            m_stuckUndecided.insert({s.mode(), s.state()});
+    }
+    if (m_stuckUndecided.empty() || !m_explorer.timeAbstracted() || !exactSearchDecides()) {
+        for (VerificationFinding& f : unconfirmed)
+            m_result.findings.push_back(std::move(f));
+        return;
+    }
+    // Counted in scans, every run was seen: it decides each state left open.
+    const PackmlExplorer& exact = exactExplorer();
+    const Completion counted = completion(exact);
+    for (std::size_t n = 0; n < exact.nodes().size(); ++n) {
+        const PackmlSimulator& s = exact.nodes()[n].simulator;
+        if (isActing(s.state()) && !s.fault() && !counted.possible[n] && m_stuckUndecided.erase({s.mode(), s.state()}))
+            m_result.findings.push_back(stuckFinding(exact, n));
+    }
+    m_stuckUndecided.clear();
+}
+
+// The GV130 or GV131 finding of `explorer`'s node, an error when its
+// counterexample replays to that node's configuration (or it is the start).
+VerificationFinding PackmlVerifier::stuckFinding(const PackmlExplorer& explorer, std::size_t node) const
+{
+    const PackmlSimulator& s = explorer.nodes()[node].simulator;
+    const bool aborting = s.state() == State::Aborting;
+    const std::string code = aborting ? verification::kAbortingStuck : verification::kStuckGrafcet;
+    const std::string message = (aborting ? std::string("Aborting can reach a situation from which Aborted is never reached: nothing leaves it")
+                    : std::string(stateName(s.state())) + "'s GRAFCET can reach a situation from which Complete never "
+                          "becomes TRUE: only Stop or Abort leave it");
+    VerificationFinding f = finding(code, message, modeLocation(s.mode(), aborting ? std::nullopt : std::optional(s.state()),
+                                                                 code, message));
+    f.counterexample = counterexampleTo(explorer, node, {}, code + ": " + modeName(s.mode()) + ": " + message, s.mode());
+    if (f.counterexample->scans == 0) {
+        f.counterexample.reset(); // the start itself
+        return f;
+    }
+    f.counterexample->confirmed = replaysToNode(explorer, node, *f.counterexample);
+    if (!f.counterexample->confirmed) {
+        f.severity = Severity::Info;
+        f.message += " (not confirmed: its counterexample does not replay to that situation in the simulator)";
+        if (explorer.timeAbstracted())
+            f.counterexample.reset(); // as for GEMMA: a run that may not exist is not offered
+    }
+    return f;
 }
 
 void PackmlVerifier::reportNeverActive()
@@ -276,20 +374,32 @@ void PackmlVerifier::reportUndecided()
     if (m_explorer.budgetReached())
         why = "the exploration stopped at its budget (" + std::to_string(m_explorer.nodes().size())
               + " configurations, or the time limit) before it had seen every configuration";
-    for (const std::string& abstraction : m_explorer.abstractions())
-        why += (why.empty() ? "" : "; ") + abstraction;
-    if (why.empty())
+    for (const std::string& reason : m_explorer.runsLeftOutReasons())
+        why += (why.empty() ? "" : "; ") + reason;
+    std::string message;
+    std::vector<std::string> arguments; // the editor's wording: "stuck" and the states when only those are open
+    if (!why.empty()) {
+        message = "not exhaustive: " + why
+                  + ". GV130, GV131, GV134 and GV135 were not decided, and the absence of the other findings is not a proof";
+    } else if (!m_stuckUndecided.empty()) {
+        std::string states;
+        for (const auto& [mode, state] : m_stuckUndecided)
+            states += (states.empty() ? "" : ", ") + modeName(mode) + " " + std::string(stateName(state));
+        arguments = {"stuck", states};
+        message = "GV130 and GV131 were not decided in " + states
+                  + ": timers longer than one cycle may or may not have elapsed, and the runs to Complete found from "
+                    "some situations let TONs elapse in an order the PLC's may not";
+    } else {
         return;
-    const std::string message = "not exhaustive: " + why
-        + ". GV130, GV131, GV134 and GV135 were not decided, and the absence of the other findings is not a proof";
+    }
     m_result.findings.push_back(finding(core::verification::kIncomplete, message,
                                         modelDiagnostic(Finding{core::verification::kIncomplete, Severity::Warning, "",
-                                                                message, {}})));
+                                                                message, std::move(arguments)})));
 }
 
 void PackmlVerifier::reportProperties()
 {
-    const bool exact = m_explorer.exhaustive() && m_explorer.abstractions().empty();
+    const bool exact = neverSound();
     for (std::size_t i = 0; i < m_texts.size(); ++i) {
         const std::string& text = m_texts[i];
         VerificationFinding f;
@@ -309,20 +419,30 @@ void PackmlVerifier::reportProperties()
             f.code = core::verification::kPropertyViolated;
             f.severity = Severity::Error;
             f.message = "the property is violated at the end of a reachable scan";
-            const ExploredNode& from = m_explorer.nodes()[witness->node];
-            const InputChoice choice = m_explorer.inputChoices().choices(from.simulator)[witness->choice];
-            PackmlSimulator after = from.simulator;
-            const int mode = PackmlExplorer::runScan(after, choice).mode;
-            f.counterexample = counterexampleTo(witness->node, std::vector<InputChoice>{choice},
-                                                f.code + ": property '" + text + "' violated", mode);
-            if (const std::optional<Replay> replayed = replay(m_explorer.nodes().front().simulator, *f.counterexample))
-                f.counterexample->confirmed = packmlPropertyViolated(m_properties[i], replayed->after);
-            if (f.counterexample->confirmed) {
+            const std::string title = f.code + ": property '" + text + "' violated";
+            bool confirmed = confirmScan(m_explorer, *witness, f, title);
+            bool dropped = false;
+            if (!confirmed && m_explorer.timeAbstracted()) {
+                if (const std::optional<ExploredWitness> exact = exactWitness(*witness))
+                    confirmed = confirmScan(exactExplorer(), *exact, f, title);
+                else
+                    dropped = exactSearchDecides();
+            }
+            if (dropped) {
+                // Counted in scans, no run violates it: the timer abstraction alone made the run.
+                f.code = core::verification::kPropertyHolds;
+                f.severity = Severity::Info;
+                f.message = "the property holds at the end of every reachable scan";
+                f.counterexample.reset();
+                verdict.outcome = PropertyOutcome::Holds;
+            } else if (confirmed) {
                 verdict.outcome = PropertyOutcome::Violated;
             } else {
                 f.severity = Severity::Info;
                 f.message += " (not confirmed: its counterexample does not replay to it in the simulator)";
                 verdict.reason = "its counterexample does not replay";
+                if (m_explorer.timeAbstracted())
+                    f.counterexample.reset(); // as for GEMMA: a run that may not exist is not offered
             }
         } else if (exact) {
             f.code = core::verification::kPropertyHolds;
@@ -356,15 +476,14 @@ VerificationResult PackmlVerifier::run()
     for (const ExploredWitness& witness : m_explorer.witnesses())
         if (witness.property < 0)
             reportWitness(witness);
-    const bool exact = m_explorer.exhaustive() && m_explorer.abstractions().empty();
     reportProperties();
-    if (exact) {
+    if (neverSound()) {
         reportStuck();
         reportNeverActive();
         reportNeverAccepted();
     }
     reportUndecided();
-    m_result.exhaustive = exact;
+    m_result.exhaustive = neverSound() && m_stuckUndecided.empty();
     m_result.configurations = m_explorer.nodes().size();
     m_result.programStates = m_explorer.nodes().size();
     m_result.maxDepth = m_explorer.maxDepth();

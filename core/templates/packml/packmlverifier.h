@@ -4,9 +4,12 @@
 // "Verification"): explores its program (packmlexplorer.h) and turns what
 // the exploration saw into findings GV130-GV138, each one that claims a
 // reachable violation with a scenario replayed in the PackmlSimulator to
-// confirm it. A "never" claim (GV130, GV131, GV134, GV135, and the absence
-// of an error) is made only when the exploration was exhaustive and exact;
-// otherwise GV100 says what is undecided and why.
+// confirm it. A "never" claim (GV134, GV135, GV121 and the absence of an
+// error) is made only when the exploration was exhaustive and left no run
+// out (the timer abstraction only adds runs); GV130 and GV131 also need a
+// sure way to Complete (packmlcompletion.h). A run that does not replay is
+// searched again with time counted in scans. Otherwise GV100 says what is
+// undecided and why.
 
 #include "core/templates/packml/packmlprogram.h"
 #include "core/verification/verification.h"
