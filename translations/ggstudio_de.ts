@@ -1441,6 +1441,10 @@
         <source>In %1, stored outputs can still be TRUE when %2 is entered: %3.</source>
         <translation>In %1 können gespeicherte Ausgänge beim Betreten von %2 noch TRUE sein: %3.</translation>
     </message>
+    <message>
+        <source>Stuck states were not decided in %1: timers longer than one cycle may or may not have elapsed, and the ways to Complete found there let timers elapse in an order the PLC&apos;s may not. Every other finding is decided.</source>
+        <translation>Blockierte Zustände wurden in %1 nicht entschieden: Timer, die länger als ein Zyklus sind, können abgelaufen sein oder nicht, und die dort gefundenen Wege zu Complete lassen Timer in einer Reihenfolge ablaufen, die die der SPS möglicherweise nicht einhalten. Alle anderen Befunde sind entschieden.</translation>
+    </message>
 </context>
 <context>
     <name>PasteVariablesCommand</name>
@@ -4591,13 +4595,6 @@ Die Betriebsarten 1 bis 3 sind Production, Maintenance und Manual.</translation>
     <message>
         <source>Scenarios (*.scenario *.txt);;All files (*)</source>
         <translation>Szenarien (*.scenario *.txt);;Alle Dateien (*)</translation>
-    </message>
-</context>
-<context>
-    <name>editor::PackmlSimulationSession</name>
-    <message>
-        <source>(%1 more)</source>
-        <translation>(%1 weitere)</translation>
     </message>
 </context>
 <context>

@@ -1441,6 +1441,10 @@
         <source>In %1, stored outputs can still be TRUE when %2 is entered: %3.</source>
         <translation>En %1, salidas memorizadas pueden seguir en TRUE al entrar en %2: %3.</translation>
     </message>
+    <message>
+        <source>Stuck states were not decided in %1: timers longer than one cycle may or may not have elapsed, and the ways to Complete found there let timers elapse in an order the PLC&apos;s may not. Every other finding is decided.</source>
+        <translation>Los estados bloqueados no se decidieron en %1: los temporizadores más largos que un ciclo pueden haber vencido o no, y los caminos hacia Complete encontrados allí dejan vencer los temporizadores en un orden que los del PLC pueden no seguir. Todos los demás hallazgos están decididos.</translation>
+    </message>
 </context>
 <context>
     <name>PasteVariablesCommand</name>
@@ -4591,13 +4595,6 @@ Los modos 1 a 3 son Production, Maintenance y Manual.</translation>
     <message>
         <source>Scenarios (*.scenario *.txt);;All files (*)</source>
         <translation>Escenarios (*.scenario *.txt);;Todos los archivos (*)</translation>
-    </message>
-</context>
-<context>
-    <name>editor::PackmlSimulationSession</name>
-    <message>
-        <source>(%1 more)</source>
-        <translation>(%1 más)</translation>
     </message>
 </context>
 <context>

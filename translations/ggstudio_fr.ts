@@ -1441,6 +1441,10 @@
         <source>In %1, stored outputs can still be TRUE when %2 is entered: %3.</source>
         <translation>Dans %1, des sorties mémorisées peuvent encore être TRUE à l&apos;entrée dans %2 : %3.</translation>
     </message>
+    <message>
+        <source>Stuck states were not decided in %1: timers longer than one cycle may or may not have elapsed, and the ways to Complete found there let timers elapse in an order the PLC&apos;s may not. Every other finding is decided.</source>
+        <translation>Les états bloqués n&apos;ont pas été décidés dans %1 : les temporisations plus longues qu&apos;un cycle peuvent être écoulées ou non, et les chemins vers Complete trouvés là laissent les temporisations s&apos;écouler dans un ordre que celles de l&apos;automate peuvent ne pas suivre. Toutes les autres constatations sont décidées.</translation>
+    </message>
 </context>
 <context>
     <name>PasteVariablesCommand</name>
@@ -4591,13 +4595,6 @@ Les modes 1 à 3 sont Production, Maintenance et Manual.</translation>
     <message>
         <source>Scenarios (*.scenario *.txt);;All files (*)</source>
         <translation>Scénarios (*.scenario *.txt);;Tous les fichiers (*)</translation>
-    </message>
-</context>
-<context>
-    <name>editor::PackmlSimulationSession</name>
-    <message>
-        <source>(%1 more)</source>
-        <translation>(%1 de plus)</translation>
     </message>
 </context>
 <context>

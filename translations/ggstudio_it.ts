@@ -1441,6 +1441,10 @@
         <source>In %1, stored outputs can still be TRUE when %2 is entered: %3.</source>
         <translation>In %1, uscite memorizzate possono essere ancora TRUE all&apos;ingresso in %2: %3.</translation>
     </message>
+    <message>
+        <source>Stuck states were not decided in %1: timers longer than one cycle may or may not have elapsed, and the ways to Complete found there let timers elapse in an order the PLC&apos;s may not. Every other finding is decided.</source>
+        <translation>Gli stati bloccati non sono stati decisi in %1: i temporizzatori più lunghi di un ciclo possono essere scaduti o no, e i percorsi verso Complete trovati lì fanno scadere i temporizzatori in un ordine che quelli del PLC possono non seguire. Tutti gli altri risultati sono decisi.</translation>
+    </message>
 </context>
 <context>
     <name>PasteVariablesCommand</name>
@@ -4591,13 +4595,6 @@ I modi da 1 a 3 sono Production, Maintenance e Manual.</translation>
     <message>
         <source>Scenarios (*.scenario *.txt);;All files (*)</source>
         <translation>Scenari (*.scenario *.txt);;Tutti i file (*)</translation>
-    </message>
-</context>
-<context>
-    <name>editor::PackmlSimulationSession</name>
-    <message>
-        <source>(%1 more)</source>
-        <translation>(altri %1)</translation>
     </message>
 </context>
 <context>

@@ -17,10 +17,7 @@ if(NOT (code EQUAL 0 OR code EQUAL 1) OR NOT EXISTS "${dir}/model.pml")
 endif()
 run_spin("${dir}")
 
-# One list element a line: the semicolons of Promela would split lines.
-file(READ "${dir}/model.pml" content)
-string(REPLACE ";" "," content "${content}")
-string(REPLACE "\n" ";" lines "${content}")
+model_lines("${dir}")
 set(number 0)
 set(markers 0)
 set(expected FALSE)

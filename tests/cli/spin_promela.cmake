@@ -24,7 +24,7 @@ endif()
 
 run_spin("${dir}")
 
-file(STRINGS "${dir}/model.pml" lines)
+model_lines("${dir}")
 set(number 0)
 set(markers 0)
 foreach(text IN LISTS lines)

@@ -34,3 +34,16 @@ function(run_spin dir)
     set(pan "${output}" PARENT_SCOPE)
     set(unreached "${lines}" PARENT_SCOPE)
 endfunction()
+
+# model_lines(DIR): sets `lines` to DIR/model.pml, one list element a line,
+# so that element k is line k as pan numbers them. file(STRINGS) would drop
+# empty lines and let Promela's semicolons split a line in two; brackets are
+# replaced too, as CMake does not split a list inside them.
+function(model_lines dir)
+    file(READ "${dir}/model.pml" content)
+    string(REPLACE ";" "," content "${content}")
+    string(REPLACE "[" "(" content "${content}")
+    string(REPLACE "]" ")" content "${content}")
+    string(REPLACE "\n" ";" content "${content}")
+    set(lines "${content}" PARENT_SCOPE)
+endfunction()
