@@ -7,6 +7,7 @@
 // also found with the abstraction.
 
 #include "packmlcapper.h"
+#include "verificationtestsupport.h"
 
 #include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlexplorer.h"
@@ -29,20 +30,8 @@ using packmltests::Replacement;
 
 namespace {
 
-std::vector<std::string> codesOf(const VerificationResult& result)
-{
-    std::vector<std::string> codes;
-    for (const VerificationFinding& f : result.findings)
-        codes.push_back(f.code + " " + f.message);
-    return codes;
-}
-
-const VerificationFinding* findingOf(const VerificationResult& result, const std::string& code)
-{
-    const auto found = std::find_if(result.findings.begin(), result.findings.end(),
-                                    [&](const VerificationFinding& f) { return f.code == code; });
-    return found == result.findings.end() ? nullptr : &*found;
-}
+using verificationtest::codesOf;
+using verificationtest::findingOf;
 
 const VerificationFinding* propertyFinding(const VerificationResult& result, int property)
 {

@@ -5,6 +5,7 @@
 
 #include "packmlcapper.h"
 #include "packmlsamples.h"
+#include "verificationtestsupport.h"
 
 #include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlexplorer.h"
@@ -32,20 +33,8 @@ namespace {
 using packmltests::capperText;
 using packmltests::capperWith;
 
-std::vector<std::string> codesOf(const VerificationResult& result)
-{
-    std::vector<std::string> codes;
-    for (const VerificationFinding& f : result.findings)
-        codes.push_back(f.code + " " + f.message);
-    return codes;
-}
-
-const VerificationFinding* findingOf(const VerificationResult& result, const std::string& code)
-{
-    const auto found = std::find_if(result.findings.begin(), result.findings.end(),
-                                    [&](const VerificationFinding& f) { return f.code == code; });
-    return found == result.findings.end() ? nullptr : &*found;
-}
+using verificationtest::codesOf;
+using verificationtest::findingOf;
 
 // The counterexample replays as a scenario in a simulator of `program`,
 // every expectation holding.
