@@ -418,9 +418,9 @@ TEST_CASE("PM017: the Complete command and its option in a 2015 model", "[packml
 TEST_CASE("PM018: a variable named as the generated PackML code names things", "[packml-checks]")
 {
     Model model = cleanModel();
-    for (const char* name : {"CntrlCmd", "trig_start", "Manual_Execute", "Holding_FB", "PackML", "Resume"})
+    for (const char* name : {"CntrlCmd", "trig_start", "Manual_Execute", "Holding_FB", "PackML", "Resume", "gvl"})
         REQUIRE(model.addVariable(variable(name)));
-    REQUIRE(model.addVariable(variable("GEMMA"))); // GEMMA's generator names are free here
+    REQUIRE(model.addVariable(variable("GEMMA"))); // GEMMA's generator names are free here, but GVL
     const std::vector<Diagnostic> found = withCode(model, "PM018");
     Strings names;
     for (const Diagnostic& d : found) {
@@ -428,7 +428,7 @@ TEST_CASE("PM018: a variable named as the generated PackML code names things", "
         CHECK(d.severity == Severity::Error);
         names.push_back(d.arguments.at(0));
     }
-    CHECK(names == Strings{"CntrlCmd", "trig_start", "Manual_Execute", "Holding_FB", "PackML", "Resume"});
+    CHECK(names == Strings{"CntrlCmd", "trig_start", "Manual_Execute", "Holding_FB", "PackML", "Resume", "gvl"});
     CHECK(withCode(model, "GG303").empty());
 }
 

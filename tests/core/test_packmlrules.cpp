@@ -400,7 +400,7 @@ TEST_CASE("PackML rules: the names spec 5.3 reserves, ignoring case", "[packml-r
                              "UnitModeCurrent", "PackMLConfiguration", "PackMLResource", "MainTask",
                              "PackMLInstance", "Capper", "CAPPER", "Trig_Anything", "trig_x", "Ev_Start", "EV_",
                              "Production_Execute", "manual_resetting", "Cleaning_Execute_FB", "Execute_FB",
-                             "complete_fb", "Cleaning_Aborted"}) {
+                             "complete_fb", "Cleaning_Aborted", "GVL", "gvl"}) {
         INFO(name);
         CHECK(isReservedName(name, "Capper", modes));
     }

@@ -58,10 +58,12 @@ bool acceptedSomewhere(Command command, std::span<const StateSet> enabledPerMode
 }
 
 // Spec §5.3's names that do not depend on the model, besides the six
-// PackTags (packtags.h).
-constexpr std::array<std::string_view, 11> kFixedNames{
+// PackTags (packtags.h); and GVL, the CODESYS dialect's global list (spec
+// §6.7), reserved in both dialects as GEMMA does, so that a model stays
+// valid whichever dialect it is exported in.
+constexpr std::array<std::string_view, 12> kFixedNames{
     "State",  "Mode",           "Entry",          "Resume",   "Initialization", "Complete",
-    "R_TRIG", "PackMLConfiguration", "PackMLResource", "MainTask", "PackMLInstance",
+    "R_TRIG", "PackMLConfiguration", "PackMLResource", "MainTask", "PackMLInstance", "GVL",
 };
 
 constexpr std::array<std::string_view, 2> kReservedPrefixes{"Trig_", "Ev_"};
