@@ -10,11 +10,7 @@ set(dir "${WORKDIR}/spin-packml")
 file(REMOVE_RECURSE "${dir}")
 file(MAKE_DIRECTORY "${dir}")
 
-execute_process(COMMAND "${CLI}" verify "${MODEL}" --promela "${dir}/model.pml"
-    RESULT_VARIABLE code OUTPUT_VARIABLE verify ERROR_VARIABLE err)
-if(NOT (code EQUAL 0 OR code EQUAL 1) OR NOT EXISTS "${dir}/model.pml")
-    message(FATAL_ERROR "ggstudio-cli verify --promela: exit ${code}\n${verify}\n${err}")
-endif()
+export_promela("${dir}")
 run_spin("${dir}")
 
 model_lines("${dir}")

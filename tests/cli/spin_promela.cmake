@@ -16,11 +16,7 @@ if(MODEL STREQUAL "template")
         message(FATAL_ERROR "ggstudio-cli new: exit ${code}")
     endif()
 endif()
-execute_process(COMMAND "${CLI}" verify "${MODEL}" --promela "${dir}/model.pml"
-    RESULT_VARIABLE code OUTPUT_VARIABLE verify ERROR_VARIABLE err)
-if(NOT (code EQUAL 0 OR code EQUAL 1) OR NOT EXISTS "${dir}/model.pml")
-    message(FATAL_ERROR "ggstudio-cli verify --promela: exit ${code}\n${verify}\n${err}")
-endif()
+export_promela("${dir}")
 
 run_spin("${dir}")
 

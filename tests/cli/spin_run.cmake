@@ -8,6 +8,18 @@ if(NOT SPIN OR NOT CC)
     message(FATAL_ERROR "spin and gcc are needed (Debian packages spin and gcc)")
 endif()
 
+# export_promela(DIR): `ggstudio-cli verify MODEL --promela DIR/model.pml`,
+# which must write the file and exit 0 or 1 (findings); sets `verify` (its
+# output) in the caller's scope.
+function(export_promela dir)
+    execute_process(COMMAND "${CLI}" verify "${MODEL}" --promela "${dir}/model.pml"
+        RESULT_VARIABLE code OUTPUT_VARIABLE output ERROR_VARIABLE err)
+    if(NOT (code EQUAL 0 OR code EQUAL 1) OR NOT EXISTS "${dir}/model.pml")
+        message(FATAL_ERROR "ggstudio-cli verify --promela: exit ${code}\n${output}\n${err}")
+    endif()
+    set(verify "${output}" PARENT_SCOPE)
+endfunction()
+
 function(run_spin dir)
     execute_process(COMMAND "${SPIN}" -o3 -a model.pml WORKING_DIRECTORY "${dir}"
         RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
