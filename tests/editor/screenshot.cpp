@@ -114,6 +114,22 @@ editor::ElementRef selectionOf(const QString& text)
     return text.contains(QLatin1String("->")) ? editor::ElementRef::transition(text) : editor::ElementRef::step(text);
 }
 
+// Replays `scenario` (none when empty) for `scans` scans in either
+// simulation session; false, with the reason on stderr, when it cannot start.
+template <typename Session>
+bool replayed(Session& session, const QString& scenario, int scans)
+{
+    if (scenario.isEmpty())
+        return true;
+    QString error;
+    if (!session.startReplay(scenario, &error)) {
+        std::fprintf(stderr, "ggstudio_screenshot: --replay %s: %s\n", qPrintable(scenario), qPrintable(error));
+        return false;
+    }
+    session.advance(scans);
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -244,14 +260,8 @@ int main(int argc, char* argv[])
         auto* session = window.findChild<editor::PackmlSimulationSession*>();
         for (const Play& play : plays)
             session->advance(play.scans);
-        if (!replay.isEmpty()) {
-            QString error;
-            if (!session->startReplay(replay, &error)) {
-                std::fprintf(stderr, "ggstudio_screenshot: --replay %s: %s\n", qPrintable(replay), qPrintable(error));
-                return 2;
-            }
-            session->advance(replayScans);
-        }
+        if (!replayed(*session, replay, replayScans))
+            return 2;
         if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("packmlSimulationTabs")))
             tabs->setCurrentIndex(simulationTab);
     } else if (simulate) {
@@ -280,14 +290,8 @@ int main(int argc, char* argv[])
         }
         for (int i = 0; i < back; ++i)
             session->stepBack();
-        if (!replay.isEmpty()) {
-            QString error;
-            if (!session->startReplay(replay, &error)) {
-                std::fprintf(stderr, "ggstudio_screenshot: --replay %s: %s\n", qPrintable(replay), qPrintable(error));
-                return 2;
-            }
-            session->advance(replayScans);
-        }
+        if (!replayed(*session, replay, replayScans))
+            return 2;
         if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("simulationTabs")))
             tabs->setCurrentIndex(simulationTab);
     }
