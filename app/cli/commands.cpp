@@ -14,6 +14,7 @@
 #include "core/templates/packml/packmlprogram.h"
 #include "core/codegen/stexport.h"
 #include "core/codegen/stgenerator.h"
+#include "core/templates/gemma/gemmacodegen.h"
 #include "cycletime.h"
 #include "loadreport.h"
 #include "packmlsimulate.h"
@@ -581,8 +582,8 @@ int commandSimulate(const Arguments& args, Streams streams)
     }
     core::Simulator simulator(*model);
     int errors = 0;
-    for (const core::GemmaProblem& problem : simulator.program().problems)
-        errors += problem.kind == core::GemmaProblem::Kind::Error ? 1 : 0;
+    for (const core::ProgramProblem& problem : simulator.program().problems)
+        errors += problem.kind == core::ProgramProblem::Kind::Error ? 1 : 0;
     if (errors > 0)
         streams.err << files[0] << ": " << errors << " error(s) in the model (see 'ggstudio-cli validate'): "
                     << "a condition that cannot be used never fires, as in the generated code" << lineEnd;

@@ -97,8 +97,8 @@ int simulatePackml(const core::Model& model, const std::vector<std::string>& fil
 {
     core::packml::PackmlSimulator simulator(model);
     int errors = 0;
-    for (const core::GemmaProblem& problem : simulator.program().problems)
-        errors += problem.kind == core::GemmaProblem::Kind::Error ? 1 : 0;
+    for (const core::ProgramProblem& problem : simulator.program().problems)
+        errors += problem.kind == core::ProgramProblem::Kind::Error ? 1 : 0;
     if (errors > 0)
         streams.err << files[0] << ": " << errors << " error(s) in the model: "
                     << "a condition that cannot be used is FALSE, as in the generated code" << lineEnd;

@@ -5,7 +5,7 @@
 #include "terminal.h"
 
 #include "core/formats/fileio.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/model/model.h"
 #include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlpromela.h"

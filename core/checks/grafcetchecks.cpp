@@ -2,7 +2,7 @@
 
 #include "core/checks/grafcetsequencechecks.h"
 #include "core/checks/nestedsatisfiability.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/condition/actionparser.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
@@ -377,12 +377,12 @@ private:
 std::vector<Diagnostic> elementDiagnostics(const GemmaProgram& program)
 {
     std::vector<Diagnostic> result;
-    for (GemmaProblem problem : program.problems) {
+    for (ProgramProblem problem : program.problems) {
         if (problem.nestedStep == 0 && problem.nestedTransition == 0)
             continue;
         Diagnostic d;
         d.code = std::move(problem.code);
-        d.severity = problem.kind == GemmaProblem::Kind::Error ? Severity::Error : Severity::Warning;
+        d.severity = problem.kind == ProgramProblem::Kind::Error ? Severity::Error : Severity::Warning;
         d.element = std::move(problem.element);
         const bool onTransition = problem.nestedTransition != 0;
         d.target = onTransition ? Diagnostic::Target::GrafcetTransition : Diagnostic::Target::GrafcetStep;

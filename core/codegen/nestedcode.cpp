@@ -1,6 +1,6 @@
 #include "core/codegen/nestedcode.h"
 
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/codegen/stgenerator.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/model/model.h"
@@ -137,7 +137,7 @@ private:
 
     void writeProblems()
     {
-        for (const GemmaProblem& problem : m_source.problems) {
+        for (const ProgramProblem& problem : m_source.problems) {
             if (problem.element != m_source.element || (problem.nestedStep == 0 && problem.nestedTransition == 0))
                 continue;
             line(0, comment("ERROR " + problem.code + ": " + problem.message + " (not generated)"));

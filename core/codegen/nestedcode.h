@@ -18,7 +18,7 @@ namespace core {
 
 struct GemmaStep;
 struct GemmaProgram;
-struct GemmaProblem;
+struct ProgramProblem;
 struct NestedGrafcet;
 enum class EvolutionRule;
 
@@ -37,7 +37,7 @@ struct NestedCodeSource {
     std::string_view label;   // how the declarations' comments name it: "F1", "Production Execute"
     EvolutionRule evolution;
     std::span<const std::string> edgeVariables; // the program's <V>_PREV, slot order
-    std::span<const GemmaProblem> problems;     // the program's
+    std::span<const ProgramProblem> problems;     // the program's
 };
 
 NestedCode generateNestedCode(const NestedCodeSource& source,

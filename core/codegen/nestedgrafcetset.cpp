@@ -1,6 +1,6 @@
 #include "core/codegen/nestedgrafcetset.h"
 
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/model/model.h"
 #include "core/model/messagetext.h"
@@ -24,12 +24,12 @@ std::set<std::string> continuousOutputs(std::span<const OwnedGrafcet> grafcets) 
     return continuous;
 }
 
-GemmaProblem storedWriteProblem(const OwnedGrafcet& owned, const NestedStep& step, const NestedAction& action)
+ProgramProblem storedWriteProblem(const OwnedGrafcet& owned, const NestedStep& step, const NestedAction& action)
 {
     const std::string where = "action " + std::to_string(action.index + 1) + " of step " + std::to_string(step.number)
         + " of " + owned.label;
-    GemmaProblem problem;
-    problem.kind = GemmaProblem::Kind::Error;
+    ProgramProblem problem;
+    problem.kind = ProgramProblem::Kind::Error;
     problem.code = "GG415";
     problem.element = owned.element;
     problem.message = "in " + where + ": " + quoted(action.target)
@@ -45,7 +45,7 @@ GemmaProblem storedWriteProblem(const OwnedGrafcet& owned, const NestedStep& ste
 } // namespace
 
 void rejectStoredWritesOfContinuousOutputs(std::span<const OwnedGrafcet> grafcets,
-                                           std::vector<GemmaProblem>& problems)
+                                           std::vector<ProgramProblem>& problems)
 {
     const std::set<std::string> continuous = continuousOutputs(grafcets);
     for (const OwnedGrafcet& owned : grafcets) {

@@ -13,7 +13,7 @@
 
 namespace core {
 
-struct GemmaProblem;
+struct ProgramProblem;
 struct Variable;
 
 // One nested GRAFCET of a program, with the names its problems use
@@ -30,7 +30,7 @@ struct OwnedGrafcet {
 // keeps one writer. Marks the stored actions unusable, drops them from
 // storedTargets and appends a problem for each, in GRAFCET order.
 void rejectStoredWritesOfContinuousOutputs(std::span<const OwnedGrafcet> grafcets,
-                                           std::vector<GemmaProblem>& problems);
+                                           std::vector<ProgramProblem>& problems);
 
 // The BOOL variables read under an edge by a usable receptivity of any of
 // the GRAFCETs, spelled as declared, in the order of `variables`.

@@ -1,6 +1,6 @@
 #include "core/codegen/nestedprogram.h"
 
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/codegen/stgenerator.h"
 #include "core/condition/blanktext.h"
 #include "core/condition/conditionanalysis.h"
@@ -22,7 +22,7 @@ namespace {
 class NestedBuilder {
 public:
     NestedBuilder(const Model& model, const NestedScope& scope, const Grafcet& grafcet,
-                  std::vector<GemmaProblem>& problems)
+                  std::vector<ProgramProblem>& problems)
         : m_scope(scope)
         , m_grafcet(grafcet)
         , m_symbols(scope.symbols)
@@ -77,8 +77,8 @@ private:
     void problem(std::string code, std::string message, std::vector<std::string> arguments, int step, int transition,
                  int action, std::optional<Span> span)
     {
-        GemmaProblem p;
-        p.kind = GemmaProblem::Kind::Error;
+        ProgramProblem p;
+        p.kind = ProgramProblem::Kind::Error;
         p.code = std::move(code);
         p.element = m_scope.element;
         p.message = std::move(message);
@@ -507,7 +507,7 @@ private:
     const NestedScope& m_scope;
     const Grafcet& m_grafcet;
     const SymbolTable& m_symbols;
-    std::vector<GemmaProblem>& m_problems;
+    std::vector<ProgramProblem>& m_problems;
     NestedGrafcet m_result;
 };
 
@@ -541,7 +541,7 @@ const ContinuousOutput* NestedGrafcet::output(std::string_view variable) const
 }
 
 NestedGrafcet buildNestedGrafcet(const Model& model, const NestedScope& scope, const Grafcet& grafcet,
-                                 std::vector<GemmaProblem>& problems)
+                                 std::vector<ProgramProblem>& problems)
 {
     return NestedBuilder(model, scope, grafcet, problems).build();
 }

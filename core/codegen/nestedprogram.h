@@ -29,7 +29,7 @@ namespace core {
 enum class EvolutionRule;
 class Model;
 class SymbolTable;
-struct GemmaProblem;
+struct ProgramProblem;
 struct Step;
 struct Variable;
 
@@ -147,7 +147,7 @@ struct NestedScope {
 // to `problems` (codes GG401-GG406, GG410, GG411, GG413, GG414, GG421; GG415
 // across GRAFCETs is added by nestedgrafcetset.h).
 NestedGrafcet buildNestedGrafcet(const Model& model, const NestedScope& scope, const Grafcet& grafcet,
-                                 std::vector<GemmaProblem>& problems);
+                                 std::vector<ProgramProblem>& problems);
 
 // The names the code of a nested GRAFCET declares inside S_FB, reserved for
 // user variables of a model with nested GRAFCETs (spec grafcet-layer.md §4.5).

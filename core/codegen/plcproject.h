@@ -8,9 +8,14 @@
 #include "core/model/model.h"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace core {
+
+// The CODESYS dialect's global variable list (qualified_only): conditions
+// read GVL.Start there.
+inline constexpr std::string_view kCodesysGlobalList = "GVL";
 
 struct PlcVariable {
     std::string name;
@@ -36,7 +41,7 @@ struct PlcProject {
     std::string projectName;   // the model name
     Dialect dialect = Dialect::Iec;
     std::vector<PlcVariable> globals;
-    std::string globalListName; // CODESYS: "GVL" (qualified_only); IEC: empty, globals live in the configuration
+    std::string globalListName; // CODESYS: kCodesysGlobalList; IEC: empty, globals live in the configuration
     std::vector<PlcPou> pous;   // GEMMA first, then the FBs in state order; PackML: the FBs, then the PROGRAM
     std::string configurationName = "GemmaConfiguration";
     std::string resourceName = "GemmaResource";

@@ -22,7 +22,7 @@ std::string globalsFileStem(const PlcProject& project)
 {
     if (project.dialect == Dialect::Iec)
         return "globals";
-    return project.globalListName.empty() ? "GVL" : project.globalListName;
+    return project.globalListName.empty() ? std::string(kCodesysGlobalList) : project.globalListName;
 }
 
 std::string globalsText(const PlcProject& project)

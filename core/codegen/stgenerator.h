@@ -1,9 +1,9 @@
 #pragma once
 
-// Structured Text generation by the Hierarchical Design Pattern (spec §6, §7):
-// the model becomes a PlcProject (one PROGRAM GEMMA, one FUNCTION_BLOCK per
-// visible macro/enclosing step, the globals and a configuration), and the
-// printers below turn that into IEC 61131-3 or CODESYS text.
+// Structured Text: the model's template builds a PlcProject (its POUs, the
+// globals and a configuration; GEMMA: core/templates/gemma/gemmacodegen.h,
+// PackML: core/templates/packml/packmlcodegen.h), and the printers below turn
+// it into IEC 61131-3 or CODESYS text.
 
 #include "core/model/model.h"
 #include "core/codegen/plcproject.h"
@@ -11,15 +11,27 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <string_view>
 
 namespace core {
 
-// A PackML model's project comes from core/templates/packml/packmlcodegen.h.
+// The model's project, built by its template's generator
+// (core/templates/templateengines.h).
 PlcProject buildPlcProject(const Model& model, Dialect dialect);
 
 // One POU with its declarations: "PROGRAM GEMMA ... END_PROGRAM" or
 // "FUNCTION_BLOCK F1_FB ... END_FUNCTION_BLOCK", ending with a line feed.
 std::string formatPou(const PlcPou& pou, Dialect dialect);
+
+// Everything formatPou writes before the body: the comment, the POU keyword
+// and name, the declaration blocks.
+std::string formatPouHead(const PlcPou& pou, Dialect dialect);
+
+// The number of line feeds in text.
+int countLines(const std::string& text);
+
+// "(* text *)", the text made safe by escapeComment.
+std::string formatComment(std::string_view text);
 
 // IEC: the VAR_GLOBAL block as it appears in the configuration (empty text
 // when there are no globals: IEC does not allow an empty VAR_GLOBAL).
@@ -53,8 +65,8 @@ std::string formatDuration(std::int64_t milliseconds);
 // controls, bidi overrides) and invalid UTF-8 bytes become '?'.
 std::string escapeComment(const std::string& text);
 
-// The GEMMA POU as the editor previews it, with the lines each element
-// produced.
+// A POU as the editor previews it, with the lines each element produced
+// (previewGemmaProgram, previewPackmlProgram, previewNestedFunctionBlock).
 struct LineRange {
     int first = 0; // 1-based, inclusive
     int last = 0;  // inclusive
@@ -63,14 +75,12 @@ struct LineRange {
 };
 
 struct StPreview {
-    std::string text; // exactly formatPou of the GEMMA POU
-    // Keys: a step id ("F1": its whole CASE branch); a transition id ("F1->A2":
+    std::string text; // exactly formatPou of the POU
+    // GEMMA's keys: a step id ("F1": its whole CASE branch); a transition id ("F1->A2":
     // its IF/ELSIF line through its assignments, with the problem comments
     // above it). A family transition is evaluated by every visible F state:
     // "F->D1" is its first occurrence, "F->D1@F2" the one in F2's branch.
     std::map<std::string, LineRange> ranges;
 };
-
-StPreview previewGemmaProgram(const Model& model, Dialect dialect);
 
 } // namespace core

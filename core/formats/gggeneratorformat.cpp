@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "core/layout/chartlayout.h"
+#include "core/templates/gemma/gemmachartlayout.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
 #include "core/formats/gggeneratordropped.h"

@@ -7,7 +7,7 @@
 // GRAFCET view and the SVG/PDF exports draw the same picture.
 // docs/grafcet-layout.md says how it is computed.
 
-#include "core/layout/chartlayout.h"
+#include "core/templates/gemma/gemmachartlayout.h"
 #include "core/model/grafcet.h"
 
 #include <functional>

@@ -1347,11 +1347,11 @@ namespace {
 // or receptivity unusable, with what the editor needs to word them as the
 // checks' diagnostics of the same code.
 template <typename Concerns>
-std::vector<ExplanationReason> unusableReasons(const std::vector<GemmaProblem>& problems, Concerns concerns)
+std::vector<ExplanationReason> unusableReasons(const std::vector<ProgramProblem>& problems, Concerns concerns)
 {
     std::vector<ExplanationReason> reasons;
-    for (const GemmaProblem& problem : problems) {
-        if (problem.kind != GemmaProblem::Kind::Error || !concerns(problem))
+    for (const ProgramProblem& problem : problems) {
+        if (problem.kind != ProgramProblem::Kind::Error || !concerns(problem))
             continue;
         ExplanationReason reason;
         reason.kind = ExplanationReason::Kind::Unusable;
@@ -1403,7 +1403,7 @@ std::vector<TransitionExplanation> Simulator::explain() const
         explanation.waitsForComplete = source.waitsForComplete;
         if (!source.conditionUsable) {
             explanation.status = TransitionStatus::Unusable;
-            explanation.reasons = unusableReasons(source.problems, [](const GemmaProblem&) { return true; });
+            explanation.reasons = unusableReasons(source.problems, [](const ProgramProblem&) { return true; });
         } else if (!impl.evaluate(transition, inputs)) {
             explanation.status = TransitionStatus::ConditionFalse;
             explanation.reasons = impl.explainFalse(transition, inputs);
@@ -1453,7 +1453,7 @@ NestedExplanation Simulator::explainNested(std::string_view stepId) const
     for (NestedTransitionExplanation& explanation : result.transitions) {
         if (explanation.status != NestedTransitionStatus::Unusable)
             continue;
-        explanation.reasons = unusableReasons(impl.program.problems, [&](const GemmaProblem& problem) {
+        explanation.reasons = unusableReasons(impl.program.problems, [&](const ProgramProblem& problem) {
             return problem.nestedTransition == explanation.number && equalsIgnoreCase(problem.element, result.stepId);
         });
     }

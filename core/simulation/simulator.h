@@ -43,7 +43,7 @@
 #include "core/simulation/explanationreason.h"
 #include "core/simulation/nestedengine.h"
 #include "core/simulation/simulationfault.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/model/model.h"
 #include "core/model/status.h"
 

@@ -1,6 +1,6 @@
 #include "core/verification/bothlayers.h"
 
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/model/model.h"
 #include "core/model/messagetext.h"
 #include "core/verification/concretesearch.h"

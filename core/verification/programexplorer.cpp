@@ -1,6 +1,6 @@
 #include "core/verification/programexplorer.h"
 
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
 #include "core/condition/symboltable.h"

@@ -2,7 +2,7 @@
 
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/codegen/stgenerator.h"
 #include "core/model/model.h"
 #include "core/condition/symboltable.h"

@@ -4,7 +4,7 @@
 #include "core/condition/conditionparser.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
-#include "core/templates/packml/packmlproperty.h"
+#include "core/templates/templateengines.h"
 
 #include <cctype>
 
@@ -104,8 +104,11 @@ std::string propertyStepId(const Model& model, std::string_view written)
 
 std::vector<PropertyProblem> checkProperty(const Model& model, std::string_view text)
 {
-    if (model.templateKind() == TemplateKind::PackML)
-        return packml::checkPackmlProperty(model, text);
+    return enginesOf(model).checkProperty(model, text);
+}
+
+std::vector<PropertyProblem> checkGemmaProperty(const Model& model, std::string_view text)
+{
     const ParsedProperty parsed = parseProperty(text);
     if (!parsed.ok()) {
         PropertyProblem syntax = problem(parsed.error->span, property::kSyntax, parsed.error->message);

@@ -54,9 +54,12 @@ struct PropertyProblem {
     std::optional<cond::TypeError> type;    // GP006 (and some GP002): the type error as data
 };
 
-// Syntax first (one problem), then names and types against the model.
-// Empty when the property can be verified.
+// Syntax first (one problem), then names and types against the model, by
+// its template's rules. Empty when the property can be verified.
 std::vector<PropertyProblem> checkProperty(const Model& model, std::string_view text);
+
+// checkProperty for a GEMMA model.
+std::vector<PropertyProblem> checkGemmaProperty(const Model& model, std::string_view text);
 
 // The GEMMA step `S` of `in S` / `S.Xn` names, as the model spells it; empty
 // when there is no visible step of that id (case-insensitive).

@@ -1,6 +1,6 @@
 #include "core/verification/scanreads.h"
 
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/simulation/simulator.h"
 
 #include <algorithm>

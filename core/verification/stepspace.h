@@ -14,7 +14,7 @@
 // (now) and t' (after the scan).
 
 #include "core/verification/decisiondiagram.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/verification/satisfiability.h"
 
 #include <functional>

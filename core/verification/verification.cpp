@@ -1,6 +1,6 @@
 #include "core/verification/verification.h"
 
-#include "core/templates/packml/packmlverifier.h"
+#include "core/templates/templateengines.h"
 
 #include "core/verification/bothlayers.h"
 
@@ -752,8 +752,8 @@ void Verifier::checkTransition(const std::string& id, const std::vector<Occurren
                 // Unsatisfiable whatever the tokens hold, or only with the tokens it can hold.
                 const bool formulaUnsat = m.conj(s.theory(), s.gated(first.transition)) == bdd::kFalse;
                 std::string problem;
-                for (const GemmaProblem& p : transition.problems) {
-                    if (p.kind == GemmaProblem::Kind::Error) {
+                for (const ProgramProblem& p : transition.problems) {
+                    if (p.kind == ProgramProblem::Kind::Error) {
                         problem = p.code;
                         break;
                     }
@@ -1146,8 +1146,11 @@ bool VerificationResult::undecided() const
 
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options)
 {
-    if (model.templateKind() == TemplateKind::PackML)
-        return packml::verifyPackmlModel(model, options);
+    return enginesOf(model).verifyModel(model, options);
+}
+
+VerificationResult verifyGemmaModel(const Model& model, const VerificationOptions& options)
+{
     // One time limit for the whole run, both layers included.
     const auto deadline = options.timeLimit.count() > 0 ? std::chrono::steady_clock::now() + options.timeLimit
                                                          : std::chrono::steady_clock::time_point::max();

@@ -181,10 +181,13 @@ struct VerificationResult {
     bool undecided() const;
 };
 
-// Verifies the model with the given assumptions. Never throws for any model
-// the Model class accepts; a hidden initial step makes every visible step
-// unreachable (GV101), as on the PLC.
+// Verifies the model with the given assumptions, by its template's verifier.
+// Never throws for any model the Model class accepts.
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options = {});
+
+// verifyModel for a GEMMA model: a hidden initial step makes every visible
+// step unreachable (GV101), as on the PLC.
+VerificationResult verifyGemmaModel(const Model& model, const VerificationOptions& options = {});
 
 // "F1", "F1->A2", or "F1->D3, F1->A2" for several: the elements joined by ", ".
 std::string verificationElementLabel(const VerificationFinding& finding);

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/layout/chartlayout.h"
+#include "core/templates/gemma/gemmachartlayout.h"
 
 #include <QPointF>
 #include <QRectF>

@@ -7,6 +7,7 @@
 #include "editor/stdstring.h"
 #include "editor/style/secondarytext.h"
 
+#include "core/templates/gemma/gemmacodegen.h"
 #include "core/codegen/nestedpreview.h"
 #include "core/templates/packml/packmlpreview.h"
 #include "core/model/model.h"

@@ -29,6 +29,7 @@
 //   IF Initialization THEN Complete := FALSE; END_IF;
 //   Complete := TRUE;           (or the manual value the test gives)
 
+#include "core/templates/gemma/gemmacodegen.h"
 #include "core/condition/conditionevaluator.h"
 #include "core/condition/conditionsyntax.h"
 #include "core/model/iectypes.h"

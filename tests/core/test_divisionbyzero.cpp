@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/checks/checks.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/codegen/stgenerator.h"
 #include "core/condition/conditionevaluator.h"
 #include "core/condition/conditionparser.h"
@@ -252,7 +252,7 @@ TEST_CASE("Division by zero: a nested action that divides by zero names the acti
     REQUIRE(constant.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "Count := Count / (1 - 1)"}));
     const GemmaProgram program = buildGemmaProgram(constant);
     const auto problem = std::find_if(program.problems.begin(), program.problems.end(),
-                                      [](const GemmaProblem& p) { return p.code == "GG408"; });
+                                      [](const ProgramProblem& p) { return p.code == "GG408"; });
     REQUIRE(problem != program.problems.end());
     CHECK(problem->nestedStep == 2);
     CHECK(problem->actionIndex == 2);

@@ -8,7 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "core/checks/checks.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/codegen/stgenerator.h"
 #include "core/condition/conditionparser.h"
 #include "core/model/model.h"

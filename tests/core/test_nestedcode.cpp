@@ -2,8 +2,9 @@
 // (spec grafcet-layer.md §4).
 
 #include "core/checks/checks.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/codegen/stgenerator.h"
+#include "core/templates/gemma/gemmacodegen.h"
 #include "core/formats/modelfiles.h"
 #include "core/model/model.h"
 #include "samplemodels.h"
@@ -41,16 +42,16 @@ std::string functionBlock(const Model& model, const std::string& name, Dialect d
 std::vector<std::string> codes(const GemmaProgram& program)
 {
     std::vector<std::string> result;
-    for (const GemmaProblem& problem : program.problems) {
+    for (const ProgramProblem& problem : program.problems) {
         if (problem.nestedStep != 0 || problem.nestedTransition != 0)
             result.push_back(problem.code);
     }
     return result;
 }
 
-const GemmaProblem& firstNested(const GemmaProgram& program)
+const ProgramProblem& firstNested(const GemmaProgram& program)
 {
-    for (const GemmaProblem& problem : program.problems) {
+    for (const ProgramProblem& problem : program.problems) {
         if (problem.nestedStep != 0 || problem.nestedTransition != 0)
             return problem;
     }
@@ -308,7 +309,7 @@ TEST_CASE("An assigned value that does not fit names the variable and the value"
     }
     Model assigned(model);
     REQUIRE(assigned.addGrafcetAction("F1", 3, {ActionTiming::OnActivation, "S := 3"}));
-    const GemmaProblem problem = firstNested(buildGemmaProgram(assigned));
+    const ProgramProblem problem = firstNested(buildGemmaProgram(assigned));
     CHECK(problem.arguments == std::vector<std::string>{"F1", "action 2 of step 3 of F1", "S", "BOOL", "3"});
     REQUIRE(problem.span.has_value());
     CHECK(*problem.span == Span{5, 6});

@@ -142,7 +142,7 @@ TEST_CASE("PackML program: conditions that cannot be used are FALSE, with the re
     // The PackTags are the program's own globals: a request may read them.
     CHECK(program.mode(3)->request.usable);
     std::vector<std::string> problems;
-    for (const GemmaProblem& problem : program.problems)
+    for (const ProgramProblem& problem : program.problems)
         problems.push_back(problem.code + "@" + problem.element);
     CHECK(problems == std::vector<std::string>{"GG201@Start", "GG203@Stop", "GG202@Hold"});
 }
@@ -165,7 +165,7 @@ TEST_CASE("The shipped PackML example builds without a problem, with the instanc
     const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/bottle-filler.ggstudio.json");
     REQUIRE(loaded.ok());
     const PackmlProgram program = buildPackmlProgram(*loaded.model);
-    for (const GemmaProblem& problem : program.problems)
+    for (const ProgramProblem& problem : program.problems)
         FAIL_CHECK(problem.code << ": " << problem.message);
     CHECK(program.programName == "BottleFiller");
     std::vector<std::string> withGrafcet;
@@ -190,7 +190,7 @@ TEST_CASE("The PackML stress model: 31 modes sharing Production's eleven 40-step
     const Model model = factory::packmlStressModel();
     CHECK(model.invariantViolations().empty());
     const PackmlProgram program = buildPackmlProgram(model);
-    for (const GemmaProblem& problem : program.problems)
+    for (const ProgramProblem& problem : program.problems)
         FAIL_CHECK(problem.code << ": " << problem.message);
     CHECK(program.modes.size() == 31);
     CHECK(program.instances.size() == 31 * 11);

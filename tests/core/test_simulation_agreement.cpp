@@ -3,6 +3,7 @@
 #include "core/model/model.h"
 #include "core/simulation/simulator.h"
 #include "core/codegen/stgenerator.h"
+#include "core/templates/gemma/gemmacodegen.h"
 #include "modelfactory.h"
 #include "samplemodels.h"
 #include "stinterpreter.h"

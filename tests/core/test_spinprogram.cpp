@@ -10,7 +10,7 @@
 #include "modelfactory.h"
 #include "spinrunner.h"
 
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/formats/modelfiles.h"
 #include "core/model/model.h"
 #include "core/verification/programexplorer.h"

@@ -2,9 +2,10 @@
 
 #include "core/checks/checks.h"
 #include "core/checks/diagnostic.h"
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 #include "core/model/model.h"
 #include "core/codegen/stgenerator.h"
+#include "core/templates/gemma/gemmacodegen.h"
 #include "core/formats/modelfiles.h"
 #include "hostilemodels.h"
 #include "modelfactory.h"
@@ -1030,7 +1031,7 @@ TEST_CASE("GemmaProgram: tokens that cannot take effect are ignored with a warni
     CHECK(program.step("F1")->tokens.empty());
     REQUIRE(program.problems.size() == 1);
     CHECK(program.problems.front().code == "GG210");
-    CHECK(program.problems.front().kind == GemmaProblem::Kind::Warning);
+    CHECK(program.problems.front().kind == ProgramProblem::Kind::Warning);
 }
 
 TEST_CASE("a token is generated exactly when the checks accept it", "[stgen]")

@@ -18,7 +18,7 @@
 #include "editor/selection.h"
 #include "editor/text/gemmastatenames.h"
 
-#include "core/layout/chartlayout.h"
+#include "core/templates/gemma/gemmachartlayout.h"
 #include "core/templates/gemma/gemmatemplate.h"
 
 #include <QApplication>

@@ -31,6 +31,7 @@
 #include "editor/text/packmldiagnostictext.h"
 #include "editor/text/valueproblemtext.h"
 
+#include "core/templates/gemma/gemmacodegen.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
 #include "core/condition/symboltable.h"

@@ -2,7 +2,7 @@
 // quality figures (route crossings, labels lying on routes) to stderr.
 // Usage: dump_layout_svg [output.svg]   (stdout when no file is given)
 
-#include "core/layout/chartlayout.h"
+#include "core/templates/gemma/gemmachartlayout.h"
 #include "core/templates/gemma/gemmatemplate.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 
 // Geometry of the fixed PackML chart (spec packml.md §2.4), in scene units
 // (y grows downwards), shared by the Qt chart and any chart export so both
-// draw the same sheet, as core/layout/chartlayout.h does for GEMMA. It
+// draw the same sheet, as core/templates/gemma/gemmachartlayout.h does for GEMMA. It
 // depends on the edition and options only: a unit mode greys or hides what
 // is drawn here, it never moves anything. docs/packml.md ("The chart")
 // explains the choices.

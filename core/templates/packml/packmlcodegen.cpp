@@ -132,7 +132,7 @@ PlcProject buildPackmlPlcProject(const Model& model, Dialect dialect)
     project.cycleTimeMs = model.settings().cycleTimeMs;
     project.globals = globalsOf(program, declared);
     if (dialect == Dialect::Codesys)
-        project.globalListName = "GVL";
+        project.globalListName = std::string(kCodesysGlobalList);
     for (State state : program.skeletons)
         project.pous.push_back(skeletonFunctionBlock(state));
     for (const ProgramGrafcet* grafcet : grafcetsInOrder(program))

@@ -10,8 +10,6 @@ namespace core::packml {
 
 namespace {
 
-constexpr std::string_view kGlobalListName = "GVL";
-
 std::vector<std::string> modeNamesOf(const PackmlProgram& program)
 {
     std::vector<std::string> names;
@@ -60,7 +58,7 @@ PackmlNaming::PackmlNaming(const PackmlProgram& program, const std::vector<std::
 
 std::string PackmlNaming::qualified(std::string name) const
 {
-    return m_dialect == Dialect::Codesys ? std::string(kGlobalListName) + "." + name : name;
+    return m_dialect == Dialect::Codesys ? std::string(kCodesysGlobalList) + "." + name : name;
 }
 
 std::string PackmlNaming::global(std::string_view name)

@@ -82,10 +82,10 @@ struct BuildContext {
     const PackmlUnusableNames& names;
 };
 
-GemmaProblem conditionProblem(std::string code, const std::string& element, std::string message,
+ProgramProblem conditionProblem(std::string code, const std::string& element, std::string message,
                               std::vector<std::string> arguments)
 {
-    GemmaProblem problem;
+    ProgramProblem problem;
     problem.code = std::move(code);
     problem.element = element;
     problem.message = std::move(message);
@@ -101,7 +101,7 @@ ProgramCondition analyseCondition(const BuildContext& context, const std::string
 {
     ProgramCondition condition;
     condition.text = text;
-    std::vector<GemmaProblem>& problems = context.program.problems;
+    std::vector<ProgramProblem>& problems = context.program.problems;
     if (isBlank(text))
         return condition; // FALSE; a command's is GG202 (addCommands), a request's means "none"
     condition.parsed = cond::parse(text);

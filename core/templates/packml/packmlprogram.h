@@ -9,7 +9,7 @@
 // runs it and the verifier explores it: one reading of the semantics, as
 // buildGemmaProgram is for GEMMA.
 
-#include "core/codegen/gemmaprogram.h"
+#include "core/codegen/programproblem.h"
 #include "core/codegen/nestedprogram.h"
 #include "core/condition/conditionparser.h"
 #include "core/model/model.h"
@@ -107,7 +107,7 @@ struct PackmlProgram {
     // What is wrong with the conditions, the names and the GRAFCETs: the
     // commands', each GRAFCET's (as the modes first use them), the requests',
     // then GG415 across GRAFCETs.
-    std::vector<GemmaProblem> problems;
+    std::vector<ProgramProblem> problems;
 
     const ProgramMode* mode(int number) const;
     const ProgramCommand* command(Command command) const;

@@ -65,10 +65,10 @@ private:
 
     void writeProblems(const std::string& element)
     {
-        for (const GemmaProblem& problem : m_program.problems) {
+        for (const ProgramProblem& problem : m_program.problems) {
             if (problem.element != element)
                 continue;
-            std::string text = problem.kind == GemmaProblem::Kind::Error ? "ERROR" : "WARNING";
+            std::string text = problem.kind == ProgramProblem::Kind::Error ? "ERROR" : "WARNING";
             if (!problem.code.empty())
                 text += " " + problem.code;
             line(0, comment(text + ": " + problem.message));

@@ -1,6 +1,6 @@
 #include "editor/chart/gemma/chartscene.h"
 
-#include "core/layout/chartlayout.h"
+#include "core/templates/gemma/gemmachartlayout.h"
 #include "editor/chart/chartstyle.h"
 #include "editor/chart/gemma/frameitem.h"
 #include "editor/chart/gemma/stepitem.h"

@@ -1,4 +1,4 @@
-#include "core/codegen/gemmaprogram.h"
+#include "core/templates/gemma/gemmaprogram.h"
 
 #include "core/codegen/nestedgrafcetset.h"
 #include "core/condition/blanktext.h"
@@ -17,7 +17,7 @@ namespace core {
 
 namespace {
 
-// Codes and wording shared with the checks (core/checks/checks.cpp), so a comment
+// Codes and wording shared with the checks (core/templates/gemma/gemmachecks.cpp), so a comment
 // in the generated code names the same finding as the checks panel.
 constexpr const char* kInitialHiddenCode = "GG001";
 constexpr const char* kConditionSyntaxCode = "GG201";
@@ -34,10 +34,10 @@ struct BuildContext {
     SymbolTable symbols;
 };
 
-GemmaProblem makeProblem(GemmaProblem::Kind kind, std::string code, const std::string& element, std::string message,
+ProgramProblem makeProblem(ProgramProblem::Kind kind, std::string code, const std::string& element, std::string message,
                          std::vector<std::string> arguments = {})
 {
-    GemmaProblem problem;
+    ProgramProblem problem;
     problem.kind = kind;
     problem.code = std::move(code);
     problem.element = element;
@@ -76,7 +76,7 @@ void rejectUndeclarableNames(const BuildContext& context, GemmaTransition& trans
             continue;
         reported.push_back(variable);
         const std::string detail = unusableNameDetail(variable->name, context.model);
-        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, code, id,
+        transition.problems.push_back(makeProblem(ProgramProblem::Kind::Error, code, id,
                                                   "in the condition of " + id + ": invalid variable name: " + detail,
                                                   unusableNameArguments(*variable, context.model)));
         transition.conditionUsable = false;
@@ -93,7 +93,7 @@ void rejectConstantZeroDivisors(GemmaTransition& transition)
         if (!risk.constantZero)
             continue;
         transition.problems.push_back(makeProblem(
-            GemmaProblem::Kind::Error, "GG215", id,
+            ProgramProblem::Kind::Error, "GG215", id,
             "in the condition of " + id + ": " + cond::divisionByZeroMessage(risk, transition.conditionText),
             {id, excerpt(transition.conditionText, risk.span), excerpt(transition.conditionText, risk.divisorSpan)}));
         transition.conditionUsable = false;
@@ -106,7 +106,7 @@ void analyseCondition(const BuildContext& context, GemmaTransition& transition)
     const std::string& id = transition.id;
     transition.condition = cond::parse(transition.conditionText);
     if (isBlank(transition.conditionText)) {
-        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kConditionEmptyCode, id,
+        transition.problems.push_back(makeProblem(ProgramProblem::Kind::Error, kConditionEmptyCode, id,
                                                   "the condition of " + id
                                                       + " is empty: write TRUE for a transition that is always ready",
                                                   {id}));
@@ -116,7 +116,7 @@ void analyseCondition(const BuildContext& context, GemmaTransition& transition)
         const cond::ParseError& error = *transition.condition.error;
         std::vector<std::string> arguments{id, excerpt(transition.conditionText, error.span), error.message};
         cond::appendArguments(error, arguments);
-        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kConditionSyntaxCode, id,
+        transition.problems.push_back(makeProblem(ProgramProblem::Kind::Error, kConditionSyntaxCode, id,
                                                   "syntax error in the condition of " + id + ": " + error.message,
                                                   std::move(arguments)));
         return;
@@ -126,7 +126,7 @@ void analyseCondition(const BuildContext& context, GemmaTransition& transition)
         std::vector<std::string> arguments{id, excerpt(transition.conditionText, issue.span), issue.message};
         if (issue.error)
             cond::appendArguments(*issue.error, arguments);
-        transition.problems.push_back(makeProblem(GemmaProblem::Kind::Error, std::move(issue.code), id,
+        transition.problems.push_back(makeProblem(ProgramProblem::Kind::Error, std::move(issue.code), id,
                                                   "in the condition of " + id + ": " + issue.message,
                                                   std::move(arguments)));
     }
@@ -187,7 +187,7 @@ void resolveTokens(const BuildContext& context, const Step& source, int priority
     std::vector<const Variable*> done;
     for (const std::string& tokenName : tokenNames) {
         auto ignore = [&](const char* code, const std::string& why) {
-            transition.problems.push_back(makeProblem(GemmaProblem::Kind::Warning, code ? code : "", transition.id,
+            transition.problems.push_back(makeProblem(ProgramProblem::Kind::Warning, code ? code : "", transition.id,
                                                       "the token on " + quoted(tokenName) + " in " + transition.id
                                                           + " is not generated: " + why));
         };
@@ -274,7 +274,7 @@ std::vector<GemmaTransition> familyTransitions(const BuildContext& context)
     for (const Transition* transition : family) {
         result.push_back(makeTransition(context, *transition, ++priority));
         if (!transition->tokens.empty()) {
-            result.back().problems.push_back(makeProblem(GemmaProblem::Kind::Warning, kTokenNoEffectCode,
+            result.back().problems.push_back(makeProblem(ProgramProblem::Kind::Warning, kTokenNoEffectCode,
                                                          transition->id,
                                                          "the tokens in " + transition->id + " are not generated: "
                                                          "family transitions never wait for Complete"));
@@ -364,7 +364,7 @@ const char* unusableNameCode(std::string_view name, const Model& model)
     case IdentifierProblem::None: return stepNameClash(model, name) ? "GG306" : nullptr;
     case IdentifierProblem::Keyword: return "GG302";
     case IdentifierProblem::GeneratorName: return "GG303";
-    default: return "GG301"; // the codes of core/checks/checks.cpp
+    default: return "GG301"; // the codes of core/templates/gemma/gemmachecks.cpp
     }
 }
 
@@ -401,7 +401,7 @@ GemmaProgram buildGemmaProgram(const Model& model)
     program.initialStepId = initial.id;
     program.initialNumber = initial.number;
     if (initial.hidden) {
-        program.problems.push_back(makeProblem(GemmaProblem::Kind::Error, kInitialHiddenCode, initial.id,
+        program.problems.push_back(makeProblem(ProgramProblem::Kind::Error, kInitialHiddenCode, initial.id,
                                                "the initial step " + initial.id
                                                    + " is hidden: the PLC would start in a state that has no code"));
     }

@@ -8,6 +8,7 @@
 // mean.
 
 #include "core/codegen/nestedprogram.h"
+#include "core/codegen/programproblem.h"
 #include "core/condition/conditionparser.h"
 #include "core/templates/gemma/gemmatemplate.h"
 #include "core/model/model.h"
@@ -43,26 +44,6 @@ struct GemmaToken {
     std::vector<int> literalNodes;
 };
 
-// Something wrong found while building: a condition that cannot be used, a
-// token that cannot take effect. Code generation writes it as a comment at
-// the place it concerns.
-struct GemmaProblem {
-    enum class Kind { Error, Warning };
-    Kind kind = Kind::Error;
-    std::string code;    // diagnostic code when one applies ("GG201"), else empty
-    std::string element; // transition id or step id
-    std::string message; // English, may quote user text
-    // For the condition errors (GG201-GG204): Diagnostic::arguments as the
-    // checks give them for the same code, so the UI can word them the same.
-    std::vector<std::string> arguments;
-    // In a nested GRAFCET (element: its GEMMA step): the nested step (with
-    // the action's index) or transition, and the span in its text.
-    int nestedStep = 0;
-    int nestedTransition = 0;
-    int actionIndex = -1;
-    std::optional<Span> span;
-};
-
 struct GemmaTransition {
     std::string id;           // "F1->A2", "F->D1"
     std::string targetId;
@@ -77,7 +58,7 @@ struct GemmaTransition {
     // Otherwise the generated code and the simulator use FALSE.
     bool conditionUsable = false;
     std::map<int, std::string> substitutions; // literal node -> token variable
-    std::vector<GemmaProblem> problems;       // of this transition, in the order found
+    std::vector<ProgramProblem> problems;       // of this transition, in the order found
 };
 
 struct GemmaStep {
@@ -105,7 +86,7 @@ struct GemmaProgram {
     int initialNumber = 0;
     // Every problem of every step and transition, in program order (a family
     // transition's problems once, at its first use).
-    std::vector<GemmaProblem> problems;
+    std::vector<ProgramProblem> problems;
     EvolutionRule evolution = EvolutionRule::OneEvolutionPerScan;
     // BOOL variables read under an edge by a usable receptivity, spelled as
     // declared, in declaration order: each has a global <V>_PREV.

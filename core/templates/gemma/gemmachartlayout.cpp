@@ -1,4 +1,4 @@
-#include "core/layout/chartlayout.h"
+#include "core/templates/gemma/gemmachartlayout.h"
 
 #include "core/layout/orthogonalroute.h"
 

@@ -1,0 +1,10 @@
+#pragma once
+
+#include "core/templates/templateengines.h"
+
+namespace core {
+
+// GEMMA's checks, property checks, verifier and code generator.
+const TemplateEngines& gemmaEngines();
+
+} // namespace core

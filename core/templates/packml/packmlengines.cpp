@@ -1,0 +1,21 @@
+#include "core/templates/packml/packmlengines.h"
+
+#include "core/templates/packml/packmlchecks.h"
+#include "core/templates/packml/packmlcodegen.h"
+#include "core/templates/packml/packmlproperty.h"
+#include "core/templates/packml/packmlverifier.h"
+
+namespace core::packml {
+
+const TemplateEngines& engines()
+{
+    static const TemplateEngines engines{
+        checkPackMLModel,
+        checkPackmlProperty,
+        verifyPackmlModel,
+        buildPackmlPlcProject,
+    };
+    return engines;
+}
+
+} // namespace core::packml

@@ -1,0 +1,10 @@
+#pragma once
+
+#include "core/templates/templateengines.h"
+
+namespace core::packml {
+
+// PackML's checks, property checks, verifier and code generator.
+const TemplateEngines& engines();
+
+} // namespace core::packml
