@@ -4,6 +4,7 @@
 #include "core/condition/symboltable.h"
 #include "core/model/iectypes.h"
 #include "core/model/model.h"
+#include "core/templates/packml/packmlconfiguration.h"
 
 namespace core {
 
@@ -30,6 +31,16 @@ const std::string* fieldText(const Model& model, const Diagnostic& diagnostic, c
         if (!step || diagnostic.actionIndex < 0 || static_cast<std::size_t>(diagnostic.actionIndex) >= step->actions.size())
             return nullptr;
         return &step->actions[static_cast<std::size_t>(diagnostic.actionIndex)].text;
+    }
+    case Diagnostic::Target::Command: {
+        context = cond::Context::Gemma;
+        const std::optional<packml::Command> command = packml::findCommand(diagnostic.element);
+        return model.packml() && command ? &model.packml()->command(*command).condition : nullptr;
+    }
+    case Diagnostic::Target::Request: {
+        context = cond::Context::Gemma;
+        const packml::Mode* mode = model.packml() ? model.packml()->mode(diagnostic.mode) : nullptr;
+        return mode ? &mode->request : nullptr;
     }
     default:
         return nullptr;

@@ -12,7 +12,8 @@ namespace core {
 
 class Model;
 
-// The undeclared name a diagnostic is about: GG203 (a GEMMA condition),
+// The undeclared name a diagnostic is about: GG203 (a GEMMA condition, a
+// PackML command or mode request condition),
 // GG403 (a nested receptivity), GG405 (a nested action), read from the text
 // at the diagnostic's span. nullopt for any other diagnostic, or when that
 // text is no longer an undeclared name that could be declared (the model

@@ -4,6 +4,7 @@
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionparser.h"
 #include "core/condition/symboltable.h"
+#include "core/templates/packml/packmlconfiguration.h"
 
 #include <optional>
 #include <vector>
@@ -189,6 +190,12 @@ DeclarationGuess guessDeclaration(const Model& model, std::string_view name)
     };
     for (const Transition& transition : model.transitions())
         readText(transition.condition, cond::Context::Gemma);
+    if (const packml::Configuration* packml = model.packml()) {
+        for (const packml::CommandSetting& command : packml->commands)
+            readText(command.condition, cond::Context::Gemma);
+        for (const packml::Mode& mode : packml->modes)
+            readText(mode.request, cond::Context::Gemma);
+    }
     for (const auto& [stepId, grafcet] : model.grafcets()) {
         for (const GrafcetTransition& transition : grafcet.transitions())
             readText(transition.receptivity, cond::Context::Nested);

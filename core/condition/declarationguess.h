@@ -2,8 +2,8 @@
 
 // The declaration the quick fix of an undeclared name proposes ("Declare
 // 'start' as INPUT BOOL"), guessed from every text of the model that uses
-// the name: the GEMMA conditions, the nested receptivities and the nested
-// actions.
+// the name: the GEMMA conditions, the PackML command and request conditions,
+// the nested receptivities and the nested actions.
 
 #include "core/model/iectypes.h"
 #include "core/model/model.h"

@@ -277,7 +277,9 @@ QString translated(const core::Diagnostic& d)
             return DiagnosticText::tr("The condition of %1 is FALSE: the transition can never fire (hide it instead).")
                 .arg(arg(0));
         if (code == "GG305")
-            return DiagnosticText::tr("Variable '%1' is not used by any visible transition condition.").arg(arg(0));
+            return DiagnosticText::tr(
+                       "Variable '%1' is used by no condition, receptivity or action that generates code.")
+                .arg(arg(0));
     }
     if (n == 2) {
         if (code == "GG103")

@@ -7,6 +7,7 @@
 #include "core/checks/undeclaredvariable.h"
 #include "core/condition/declarationguess.h"
 #include "core/model/model.h"
+#include "core/templates/packml/packmlmodel.h"
 
 #include <catch2/catch.hpp>
 
@@ -137,4 +138,19 @@ TEST_CASE("no undeclared name for other problems, or once the name is declared",
     require(model.addVariable(samples::variable("Start2", IecType::Bool, VariableKind::Input)));
     require(model.setReceptivity("F1", 1, "Start2"));
     CHECK(undeclaredNames(model).empty());
+}
+
+TEST_CASE("the undeclared name of a PackML command or mode request condition", "[declarationguess]")
+{
+    Model model = packml::newModel(packml::Edition::Y2022);
+    require(model.setCommandCondition(packml::Command::Start, "StartButton AND NOT Jammed"));
+    require(model.setModeRequest(3, "Speed > 2.5"));
+    const std::vector<std::string> names = undeclaredNames(model);
+    CHECK(names == std::vector<std::string>{"GG203 Jammed", "GG203 Speed", "GG203 StartButton"});
+    // Read in a command condition: a BOOL input; compared with a real number: REAL.
+    CHECK(guessDeclaration(model, "StartButton") == guess(VariableKind::Input, IecType::Bool));
+    CHECK(guessDeclaration(model, "Speed") == guess(VariableKind::Input, IecType::Real));
+
+    require(model.addVariable(samples::variable("Speed", IecType::Real, VariableKind::Input)));
+    CHECK(undeclaredNames(model) == std::vector<std::string>{"GG203 Jammed", "GG203 StartButton"});
 }

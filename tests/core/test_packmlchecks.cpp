@@ -1,4 +1,5 @@
 #include "core/checks/checks.h"
+#include "core/formats/modelfiles.h"
 #include "core/model/model.h"
 #include "core/templates/packml/packmlconfiguration.h"
 #include "core/templates/packml/packmlmodel.h"
@@ -490,4 +491,46 @@ TEST_CASE("PackML variables get the GEMMA name and default checks", "[packml-che
     const Diagnostic d = only(model, "GG304");
     CHECK(d.target == Target::Variable);
     CHECK(d.field == "default");
+}
+
+TEST_CASE("GG305: a variable no command, request or GRAFCET that generates code uses", "[packml-checks]")
+{
+    Model model = packml::newModel(Edition::Y2015);
+    for (const char* name : {"Go", "Halt", "Finish", "ToManual", "Lamp", "Spare"})
+        REQUIRE(model.addVariable(variable(name)));
+    REQUIRE(model.setCommandCondition(Command::Start, "Go AND ("));  // counts while still being typed
+    REQUIRE(model.setCommandCondition(Command::Hold, "Halt"));       // no enabled state accepts Hold below
+    REQUIRE(model.setCommandCondition(Command::Complete, "Finish")); // 2022 only: ignored in 2015
+    REQUIRE(model.setModeRequest(3, "ToManual"));
+    ownGrafcet(model, 1, State::Suspending, {"Lamp"});
+    const StateSet holdLoop{State::Holding, State::Held, State::Unholding};
+    for (int mode = 1; mode <= 3; ++mode)
+        REQUIRE(model.setModeDisabled(mode, holdLoop));
+    const auto unused = [&model] {
+        Strings names;
+        for (const Diagnostic& d : withCode(model, "GG305")) {
+            CHECK(d.severity == Severity::Warning);
+            CHECK(d.target == Target::Variable);
+            CHECK(d.field == "name");
+            names.push_back(d.arguments.at(0));
+        }
+        return names;
+    };
+    // A new model's Cmd_<Command> inputs: Start and Hold read others now, and
+    // no state accepts Unhold.
+    CHECK(unused() == Strings{"Cmd_Start", "Cmd_Hold", "Cmd_Unhold", "Halt", "Finish", "Spare"});
+
+    // Hold accepted in one mode; the GRAFCET on a state its mode disables
+    // generates no code (PM014).
+    REQUIRE(model.setModeDisabled(2, StateSet{}));
+    REQUIRE(model.setModeDisabled(1, StateSet{State::Holding, State::Held, State::Unholding, State::Suspending,
+                                              State::Suspended, State::Unsuspending}));
+    CHECK(unused() == Strings{"Cmd_Start", "Cmd_Hold", "Finish", "Lamp", "Spare"});
+}
+
+TEST_CASE("GG305: the shipped bottle filler uses every variable it declares", "[packml-checks]")
+{
+    const LoadedModel loaded = loadModelFile(std::string(GGSTUDIO_EXAMPLES_DIR) + "/bottle-filler.ggstudio.json");
+    REQUIRE(loaded.ok());
+    CHECK(withCode(*loaded.model, "GG305").empty());
 }

@@ -539,7 +539,8 @@ private:
         }
         if (!used)
             addVariable("GG305", Severity::Warning, variable, "name",
-                        "variable " + quoted(variable.name) + " is not used by any visible transition condition",
+                        "variable " + quoted(variable.name)
+                            + " is used by no condition, receptivity or action that generates code",
                         {variable.name});
         flush();
     }

@@ -1,6 +1,9 @@
 #include "core/templates/packml/packmlchecks.h"
 
+#include "core/checks/grafcetchecks.h"
 #include "core/condition/blanktext.h"
+#include "core/condition/conditionparser.h"
+#include "core/condition/symboltable.h"
 #include "core/condition/valueproblem.h"
 #include "core/model/iectypes.h"
 #include "core/model/model.h"
@@ -11,6 +14,7 @@
 #include "core/templates/packml/packmlprogramname.h"
 #include "core/templates/packml/packmlrules.h"
 
+#include <algorithm>
 #include <string>
 
 namespace core::packml {
@@ -115,6 +119,50 @@ void checkVariable(const Variable& variable, const std::string& program, const s
     }
 }
 
+// Which variables (by declaration index) a text that generates code
+// mentions: the conditions of the commands some enabled state accepts (in
+// the model's edition), the mode requests and the effective GRAFCETs. A
+// condition that does not parse yet still counts its identifiers, as GEMMA's
+// GG305 does.
+std::vector<bool> usedVariables(const Model& model)
+{
+    const Configuration& configuration = *model.packml();
+    const SymbolTable symbols(model.variables());
+    std::vector<bool> used(model.variables().size(), false);
+    const auto use = [&](std::string_view name) {
+        if (const Variable* variable = symbols.find(name))
+            used[static_cast<std::size_t>(variable - model.variables().data())] = true;
+    };
+    const auto useTokens = [&](const std::string& text) {
+        for (const cond::Token& token : cond::tokenize(text))
+            if (token.kind == cond::TokenKind::Identifier)
+                use(token.text);
+    };
+    std::vector<StateSet> enabledPerMode;
+    for (const Mode& mode : configuration.modes)
+        enabledPerMode.push_back(enabledStates(mode.disabled).enabled);
+    const std::vector<Command> unaccepted = unacceptedCommands(enabledPerMode, configuration.options);
+    for (const CommandInfo& info : allCommands()) {
+        const bool generated = commandInEdition(info.command, configuration.options.edition)
+            && std::find(unaccepted.begin(), unaccepted.end(), info.command) == unaccepted.end();
+        if (generated)
+            useTokens(configuration.command(info.command).condition);
+    }
+    for (const Mode& mode : configuration.modes)
+        useTokens(mode.request);
+    forEachNestedIdentifier(model, use);
+    return used;
+}
+
+// GG305, as for GEMMA models.
+Diagnostic unusedVariable(const std::string& name)
+{
+    return variableDiagnostic(name, {"GG305", Severity::Warning, "name",
+                                     "variable '" + name
+                                         + "' is used by no condition, receptivity or action that generates code",
+                                     {name}});
+}
+
 } // namespace
 
 std::vector<Diagnostic> checkPackMLModel(const Model& model)
@@ -129,8 +177,13 @@ std::vector<Diagnostic> checkPackMLModel(const Model& model)
     append(result, checkPaths(model));
     const std::string program = programName(model);
     const std::vector<std::string> modes = modeNames(*model.packml());
-    for (const Variable& variable : model.variables())
+    const std::vector<bool> used = usedVariables(model);
+    for (std::size_t i = 0; i < used.size(); ++i) {
+        const Variable& variable = model.variables()[i];
         checkVariable(variable, program, modes, result);
+        if (!used[i])
+            result.push_back(unusedVariable(variable.name));
+    }
     return result;
 }
 
