@@ -8,44 +8,34 @@
 
 namespace samples {
 
-namespace {
-
-void require(const core::Status& status)
-{
-    if (!status)
-        throw std::logic_error("nested sample model: " + status.message);
-}
-
 using core::ActionTiming;
-
-} // namespace
 
 core::Model nestedMachine()
 {
     core::Model model;
     for (const char* name : {"Start", "Done", "EStop", "A", "B", "C"})
-        require(model.addVariable(variable(name, core::IecType::Bool, core::VariableKind::Input)));
-    require(model.addVariable(variable("Lamp", core::IecType::Bool, core::VariableKind::Output)));
-    require(model.addVariable(variable("Flag", core::IecType::Bool, core::VariableKind::Internal)));
-    require(model.setInitialStep("A1"));
-    require(model.setStepType("F1", core::StepType::Macro));
-    require(model.setCondition("A1->F1", "Start"));
-    require(model.setCondition("F1->A2", "Done"));
-    require(model.setCondition("A2->A1", "TRUE"));
-    require(model.setCondition("F->D1", "EStop"));
-    require(model.setCondition("D1->A5", "NOT EStop"));
+        requireBuilt(model.addVariable(variable(name, core::IecType::Bool, core::VariableKind::Input)));
+    requireBuilt(model.addVariable(variable("Lamp", core::IecType::Bool, core::VariableKind::Output)));
+    requireBuilt(model.addVariable(variable("Flag", core::IecType::Bool, core::VariableKind::Internal)));
+    requireBuilt(model.setInitialStep("A1"));
+    requireBuilt(model.setStepType("F1", core::StepType::Macro));
+    requireBuilt(model.setCondition("A1->F1", "Start"));
+    requireBuilt(model.setCondition("F1->A2", "Done"));
+    requireBuilt(model.setCondition("A2->A1", "TRUE"));
+    requireBuilt(model.setCondition("F->D1", "EStop"));
+    requireBuilt(model.setCondition("D1->A5", "NOT EStop"));
     return model;
 }
 
 void addMachineStep(core::Model& model, int number, bool initial, std::vector<core::GrafcetAction> actions)
 {
-    require(model.addGrafcetStep("F1", {number, initial, "", std::move(actions)}));
+    requireBuilt(model.addGrafcetStep("F1", {number, initial, "", std::move(actions)}));
 }
 
 void addMachineTransition(core::Model& model, int number, std::vector<int> up, std::vector<int> down,
                           std::string receptivity)
 {
-    require(model.addGrafcetTransition("F1", {number, std::move(up), std::move(down), std::move(receptivity)}));
+    requireBuilt(model.addGrafcetTransition("F1", {number, std::move(up), std::move(down), std::move(receptivity)}));
 }
 
 core::Model soundMachine()
@@ -61,7 +51,7 @@ core::Model soundMachine()
 core::Model longTimerMachine()
 {
     core::Model model = nestedMachine();
-    require(model.addVariable(variable("Out1", core::IecType::Bool, core::VariableKind::Output)));
+    requireBuilt(model.addVariable(variable("Out1", core::IecType::Bool, core::VariableKind::Output)));
     addMachineStep(model, 1, true);
     addMachineStep(model, 2, false, {{ActionTiming::Continuous, "N Out1"}, {ActionTiming::OnActivation, "S Complete"}});
     addMachineTransition(model, 1, {1}, {2}, "25m/X1 AND NOT 30m/X1");
@@ -72,9 +62,9 @@ core::Model longTimerMachine()
 core::Model overlapMachine()
 {
     core::Model model = soundMachine();
-    require(model.setCondition("F1->A3", "B"));
-    require(model.setCondition("A3->A4", "TRUE"));
-    require(model.setCondition("A4->F1", "Start"));
+    requireBuilt(model.setCondition("F1->A3", "B"));
+    requireBuilt(model.setCondition("A3->A4", "TRUE"));
+    requireBuilt(model.setCondition("A4->F1", "Start"));
     return model;
 }
 
@@ -82,26 +72,26 @@ core::Model overlapMachine()
 core::Model alwaysTrueMachine()
 {
     core::Model model = overlapMachine();
-    require(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "S Flag"}));
-    require(model.setNegated("F1->A2", true));
-    require(model.setCondition("F1->A2", "Flag"));
+    requireBuilt(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "S Flag"}));
+    requireBuilt(model.setNegated("F1->A2", true));
+    requireBuilt(model.setCondition("F1->A2", "Flag"));
     return model;
 }
 
 core::Model exclusiveByMemoryMachine()
 {
     core::Model model = soundMachine();
-    require(model.addVariable(variable("Flag2", core::IecType::Bool, core::VariableKind::Internal)));
-    require(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "S Flag"}));
-    require(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "R Flag2"}));
-    require(model.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "R Flag"}));
-    require(model.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "S Flag2"}));
-    require(model.setNegated("F1->A2", true));
-    require(model.setCondition("F1->A2", "Flag AND B"));
-    require(model.setNegated("F1->A3", true));
-    require(model.setCondition("F1->A3", "Flag2 AND B"));
-    require(model.setCondition("A3->A4", "TRUE"));
-    require(model.setCondition("A4->F1", "Start"));
+    requireBuilt(model.addVariable(variable("Flag2", core::IecType::Bool, core::VariableKind::Internal)));
+    requireBuilt(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "S Flag"}));
+    requireBuilt(model.addGrafcetAction("F1", 1, {ActionTiming::OnActivation, "R Flag2"}));
+    requireBuilt(model.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "R Flag"}));
+    requireBuilt(model.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "S Flag2"}));
+    requireBuilt(model.setNegated("F1->A2", true));
+    requireBuilt(model.setCondition("F1->A2", "Flag AND B"));
+    requireBuilt(model.setNegated("F1->A3", true));
+    requireBuilt(model.setCondition("F1->A3", "Flag2 AND B"));
+    requireBuilt(model.setCondition("A3->A4", "TRUE"));
+    requireBuilt(model.setCondition("A4->F1", "Start"));
     return model;
 }
 
@@ -163,13 +153,13 @@ std::vector<SeededModel> seededDefectModels()
     }
     {
         core::Model model = soundMachine(); // a stored output is still TRUE when D1 is entered
-        require(model.addVariable(variable("Horn", core::IecType::Bool, core::VariableKind::Output)));
-        require(model.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "S Horn"}));
+        requireBuilt(model.addVariable(variable("Horn", core::IecType::Bool, core::VariableKind::Output)));
+        requireBuilt(model.addGrafcetAction("F1", 2, {ActionTiming::OnActivation, "S Horn"}));
         out.push_back({"stored-output-on-d1", std::move(model), {"always in D1 -> NOT Horn", "never Lamp AND Horn"}});
     }
     {
         core::Model model = soundMachine(); // edges, a numeric input and an assigned value
-        require(model.addVariable(variable("Speed", core::IecType::Int, core::VariableKind::Input)));
+        requireBuilt(model.addVariable(variable("Speed", core::IecType::Int, core::VariableKind::Input)));
         addMachineStep(model, 3, false, {{ActionTiming::OnActivation, "Flag := B OR Speed > 10"}});
         addMachineTransition(model, 3, {1}, {3}, "RE C AND Speed > 5");
         addMachineTransition(model, 4, {3}, {1}, "FE C OR Speed >= 100");

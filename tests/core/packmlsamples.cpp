@@ -21,12 +21,6 @@ using core::packml::GrafcetChoice;
 using core::packml::State;
 using core::packml::StateSet;
 
-void require(const core::Status& status)
-{
-    if (!status)
-        throw std::logic_error("randomPackmlModel: " + status.message);
-}
-
 class RandomPackmlBuilder {
 public:
     explicit RandomPackmlBuilder(std::mt19937& random) : m_random(random) {}
@@ -38,16 +32,16 @@ public:
         core::packml::Options options = model.packml()->options;
         options.holdInSuspended = chance(2);
         options.completeInSuspendedHeld = edition == core::packml::Edition::Y2022 && chance(2);
-        require(model.setPackMLOptions(options));
+        requireBuilt(model.setPackMLOptions(options));
         declareInputs(model);
         chooseModes(model);
         for (const core::packml::Mode& mode : std::vector<core::packml::Mode>(model.packml()->modes))
             configureMode(model, mode.number);
         chooseCommands(model);
         const std::vector<core::packml::Mode>& modes = model.packml()->modes;
-        require(model.setPackMLInitialMode(modes[static_cast<std::size_t>(pick(static_cast<int>(modes.size())))].number));
+        requireBuilt(model.setPackMLInitialMode(modes[static_cast<std::size_t>(pick(static_cast<int>(modes.size())))].number));
         const State initialStates[] = {State::Stopped, State::Idle, State::Aborted};
-        require(model.setPackMLInitialState(initialStates[pick(3)]));
+        requireBuilt(model.setPackMLInitialState(initialStates[pick(3)]));
         addGrafcets(model);
         return model;
     }
@@ -59,16 +53,16 @@ private:
     void declareInputs(core::Model& model)
     {
         core::Variable selector{"ModeKey", core::IecType::Int, "", "mode selector"};
-        require(model.addVariable(selector));
-        require(model.addVariable(core::Variable{"AnyCommand", core::IecType::Bool, "", "a shared command input"}));
+        requireBuilt(model.addVariable(selector));
+        requireBuilt(model.addVariable(core::Variable{"AnyCommand", core::IecType::Bool, "", "a shared command input"}));
     }
 
     void chooseModes(core::Model& model)
     {
         if (chance(3))
-            require(model.removeMode(2));
+            requireBuilt(model.removeMode(2));
         if (chance(2))
-            require(model.addMode(4 + pick(5), "User"));
+            requireBuilt(model.addMode(4 + pick(5), "User"));
     }
 
     void configureMode(core::Model& model, int number)
@@ -76,17 +70,17 @@ private:
         StateSet listing;
         for (int toggles = pick(6); toggles > 0; --toggles)
             listing = core::packml::consistentListing(listing, static_cast<State>(1 + pick(core::packml::kStateCount)));
-        require(model.setModeDisabled(number, listing));
+        requireBuilt(model.setModeDisabled(number, listing));
         StateSet modeChange;
         for (const State state : {State::Stopped, State::Idle, State::Aborted, State::Held, State::Suspended,
                                   State::Complete, State::Execute})
             if (chance(2))
                 modeChange.insert(state);
-        require(model.setModeChangeStates(number, modeChange));
+        requireBuilt(model.setModeChangeStates(number, modeChange));
         switch (pick(3)) {
-        case 0: require(model.setModeRequest(number, "")); break;
-        case 1: require(model.setModeRequest(number, "ModeKey = " + std::to_string(number))); break;
-        default: require(model.setModeRequest(number, "ModeKey >= " + std::to_string(number))); break;
+        case 0: requireBuilt(model.setModeRequest(number, "")); break;
+        case 1: requireBuilt(model.setModeRequest(number, "ModeKey = " + std::to_string(number))); break;
+        default: requireBuilt(model.setModeRequest(number, "ModeKey >= " + std::to_string(number))); break;
         }
     }
 
@@ -97,9 +91,9 @@ private:
                 continue;
             const std::string input(info.defaultInput);
             switch (pick(6)) {
-            case 0: require(model.setCommandCondition(info.command, "FALSE")); break;
-            case 1: require(model.setCommandCondition(info.command, input + " OR AnyCommand")); break;
-            case 2: require(model.setCommandCondition(info.command, "NOT " + input)); break;
+            case 0: requireBuilt(model.setCommandCondition(info.command, "FALSE")); break;
+            case 1: requireBuilt(model.setCommandCondition(info.command, input + " OR AnyCommand")); break;
+            case 2: requireBuilt(model.setCommandCondition(info.command, "NOT " + input)); break;
             default: break; // the default input
             }
         }
@@ -117,14 +111,14 @@ private:
                 if (!core::packml::holdsGrafcet(state))
                     continue;
                 if (chance(2)) {
-                    require(model.setGrafcetChoice(mode.number, state, GrafcetChoice::own()));
+                    requireBuilt(model.setGrafcetChoice(mode.number, state, GrafcetChoice::own()));
                     keys.push_back(core::packml::grafcetKey(mode.number, state));
                     owners.emplace_back(mode.number, state);
                     continue;
                 }
                 for (const auto& [owner, ownerState] : owners)
                     if (ownerState == state && chance(2)) {
-                        require(model.setGrafcetChoice(mode.number, state, GrafcetChoice::sameAs(owner)));
+                        requireBuilt(model.setGrafcetChoice(mode.number, state, GrafcetChoice::sameAs(owner)));
                         break;
                     }
             }

@@ -17,18 +17,18 @@ core::Variable variable(std::string name, core::IecType type, core::VariableKind
     return v;
 }
 
-namespace {
-
-void require(const core::Status& status)
+void requireBuilt(const core::Status& status)
 {
     if (!status)
         throw std::logic_error("sample model: " + status.message);
 }
 
+namespace {
+
 void addVariable(core::Model& model, const std::string& name, core::IecType type, std::string defaultValue = {},
                  std::string comment = {})
 {
-    require(model.addVariable({name, type, std::move(defaultValue), std::move(comment)}));
+    requireBuilt(model.addVariable({name, type, std::move(defaultValue), std::move(comment)}));
 }
 
 struct ConditionRow {
@@ -144,16 +144,16 @@ void RandomModelBuilder::randomizeSteps(core::Model& model, bool allowHiding)
     const std::vector<core::StepType> types = {core::StepType::Simple, core::StepType::Macro,
                                                core::StepType::Enclosing};
     for (const core::Step& step : std::vector<core::Step>(model.steps())) {
-        require(model.setStepType(step.id, pick(types)));
-        require(model.setStepComment(step.id, pick(kAwkwardTexts)));
+        requireBuilt(model.setStepType(step.id, pick(types)));
+        requireBuilt(model.setStepComment(step.id, pick(kAwkwardTexts)));
     }
     const std::string initial = model.steps()[static_cast<std::size_t>(uniform(0, 15))].id;
-    require(model.setInitialStep(initial));
+    requireBuilt(model.setInitialStep(initial));
     if (!allowHiding)
         return;
     for (const core::Step& step : std::vector<core::Step>(model.steps())) {
         if (step.id != initial && chance(0.15))
-            require(model.setStepHidden(step.id, true));
+            requireBuilt(model.setStepHidden(step.id, true));
     }
 }
 
@@ -199,18 +199,18 @@ void RandomModelBuilder::randomizeTransitions(core::Model& model, bool allowHidi
 {
     for (const core::Transition& t : std::vector<core::Transition>(model.transitions())) {
         std::vector<std::pair<std::string, bool>> literals;
-        require(model.setCondition(t.id, condition(literals)));
+        requireBuilt(model.setCondition(t.id, condition(literals)));
         const core::Step* source = model.step(t.source);
         const bool nested = source && core::hasNestedBehaviour(source->type);
-        require(model.setNegated(t.id, nested && chance(0.3)));
+        requireBuilt(model.setNegated(t.id, nested && chance(0.3)));
         std::vector<std::string> tokens;
         for (const auto& literal : literals) {
             if (nested && chance(0.3))
                 tokens.push_back(literal.first);
         }
-        require(model.setTokens(t.id, tokens));
+        requireBuilt(model.setTokens(t.id, tokens));
         if (allowHiding && chance(0.08))
-            require(model.setTransitionHidden(t.id, true));
+            requireBuilt(model.setTransitionHidden(t.id, true));
     }
 }
 
@@ -219,7 +219,7 @@ void RandomModelBuilder::randomizePriorities(core::Model& model)
     for (const core::Transition& t : std::vector<core::Transition>(model.transitions())) {
         const auto effective = model.effectiveOutgoing(t.source);
         if (model.isEffective(t) && effective.size() > 1 && chance(0.3))
-            require(model.setPriority(t.id, uniform(1, static_cast<int>(effective.size()))));
+            requireBuilt(model.setPriority(t.id, uniform(1, static_cast<int>(effective.size()))));
     }
 }
 
@@ -231,8 +231,8 @@ core::Model RandomModelBuilder::build(bool allowHiding)
     m_integers.clear();
     m_reals.clear();
     core::Model model;
-    require(model.setName(pick(names) + " " + std::to_string(uniform(1, 999))));
-    require(model.setCycleTimeMs(pick(std::vector<int>{1, 5, 10, 20, 50, 100, 1500, 60000})));
+    requireBuilt(model.setName(pick(names) + " " + std::to_string(uniform(1, 999))));
+    requireBuilt(model.setCycleTimeMs(pick(std::vector<int>{1, 5, 10, 20, 50, 100, 1500, 60000})));
     addVariables(model);
     randomizeSteps(model, allowHiding);
     randomizeTransitions(model, allowHiding);
@@ -246,24 +246,24 @@ core::Model caseStudyModel()
 {
     using core::IecType;
     core::Model model;
-    require(model.setName("Filling and capping machine"));
+    requireBuilt(model.setName("Filling and capping machine"));
     for (const char* name : {"EmergencyInterrupter", "Alarm", "ManualCapping", "Stop", "Manual", "StationTest",
                              "Semiautomatic", "EmptyMachine", "Start", "Ready", "Automatic", "CycleEnd", "Reset"})
         addVariable(model, name, IecType::Bool);
-    require(model.setVariableDefault("EmergencyInterrupter", "TRUE"));
-    require(model.setVariableComment("EmergencyInterrupter", "NC contact: FALSE when the mushroom button is pressed"));
+    requireBuilt(model.setVariableDefault("EmergencyInterrupter", "TRUE"));
+    requireBuilt(model.setVariableComment("EmergencyInterrupter", "NC contact: FALSE when the mushroom button is pressed"));
     addVariable(model, "PieceCount", IecType::Int, "0", "pieces since the start of the batch");
     addVariable(model, "Pressure", IecType::Real, "0.0", "bar");
 
-    require(model.setStepType("A7", core::StepType::Simple));
-    require(model.setStepType("D2", core::StepType::Simple));
-    require(model.setStepHidden("F6", true));
-    require(model.setStepComment("F1", "fill, cap, eject"));
-    require(model.setStepComment("D3", "capping by hand while the filler goes on"));
+    requireBuilt(model.setStepType("A7", core::StepType::Simple));
+    requireBuilt(model.setStepType("D2", core::StepType::Simple));
+    requireBuilt(model.setStepHidden("F6", true));
+    requireBuilt(model.setStepComment("F1", "fill, cap, eject"));
+    requireBuilt(model.setStepComment("D3", "capping by hand while the filler goes on"));
     for (const ConditionRow& row : kCaseStudyConditions)
-        require(model.setCondition(row.transition, row.condition));
-    require(model.setTokens("F1->A2", {"Stop"}));
-    require(model.setTokens("F1->F3", {"EmptyMachine"}));
+        requireBuilt(model.setCondition(row.transition, row.condition));
+    requireBuilt(model.setTokens("F1->A2", {"Stop"}));
+    requireBuilt(model.setTokens("F1->F3", {"EmptyMachine"}));
     return model;
 }
 
@@ -398,7 +398,7 @@ private:
     void declareVariables()
     {
         for (const char* name : {"NestedIn0", "NestedIn1", "NestedIn2"}) {
-            require(m_model.addVariable(core::Variable{name, core::IecType::Bool, "", "input of the nested GRAFCETs"}));
+            requireBuilt(m_model.addVariable(core::Variable{name, core::IecType::Bool, "", "input of the nested GRAFCETs"}));
             m_inputs.push_back(name);
         }
         for (const core::Variable& variable : m_model.variables()) {
@@ -414,19 +414,19 @@ private:
         for (int i = 0; i < 4; ++i) {
             core::Variable output{"NestedOut" + std::to_string(i), core::IecType::Bool, "", "continuous actions"};
             output.kind = core::VariableKind::Output;
-            require(m_model.addVariable(output));
+            requireBuilt(m_model.addVariable(output));
             m_continuous.push_back(output.name);
         }
         for (int i = 0; i < 2; ++i) {
             core::Variable memory{"NestedMem" + std::to_string(i), core::IecType::Bool, i == 0 ? "" : "TRUE",
                                   "stored actions"};
             memory.kind = i == 0 ? core::VariableKind::Output : core::VariableKind::Internal;
-            require(m_model.addVariable(memory));
+            requireBuilt(m_model.addVariable(memory));
             m_stored.push_back(memory.name);
         }
         core::Variable counter{"NestedCount", core::IecType::Int, "", "counted by nested GRAFCETs"};
         counter.kind = core::VariableKind::Internal;
-        require(m_model.addVariable(counter));
+        requireBuilt(m_model.addVariable(counter));
     }
 
     // Mostly the nested GRAFCETs' own inputs, sometimes one the GEMMA layer reads.
@@ -616,9 +616,9 @@ private:
             transition(upstream, downstream, receptivity(upstream[0]));
         }
         for (const core::GrafcetStep& step : m_steps)
-            require(m_model.addGrafcetStep(stepId, step));
+            requireBuilt(m_model.addGrafcetStep(stepId, step));
         for (const core::GrafcetTransition& t : m_transitions)
-            require(m_model.addGrafcetTransition(stepId, t));
+            requireBuilt(m_model.addGrafcetTransition(stepId, t));
     }
 
     core::Model& m_model;
@@ -664,13 +664,13 @@ core::Model lampGrafcetModel()
     for (const core::Variable& v : {variable("Start", core::IecType::Bool, core::VariableKind::Input),
                                     variable("Lamp", core::IecType::Bool, core::VariableKind::Output),
                                     variable("Count", core::IecType::Int, core::VariableKind::Internal)})
-        require(model.addVariable(v));
-    require(model.addGrafcetStep("F1", {1, true, "", {}}));
-    require(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::Continuous, "N Lamp"},
+        requireBuilt(model.addVariable(v));
+    requireBuilt(model.addGrafcetStep("F1", {1, true, "", {}}));
+    requireBuilt(model.addGrafcetStep("F1", {2, false, "", {{ActionTiming::Continuous, "N Lamp"},
                                                        {ActionTiming::OnActivation, "Count := Count + 1"}}}));
-    require(model.addGrafcetStep("F1", {3, false, "", {{ActionTiming::OnActivation, "S Complete"}}}));
-    require(model.addGrafcetTransition("F1", {1, {1}, {2}, "RE Start"}));
-    require(model.addGrafcetTransition("F1", {2, {2}, {3}, "5s/X2"}));
+    requireBuilt(model.addGrafcetStep("F1", {3, false, "", {{ActionTiming::OnActivation, "S Complete"}}}));
+    requireBuilt(model.addGrafcetTransition("F1", {1, {1}, {2}, "RE Start"}));
+    requireBuilt(model.addGrafcetTransition("F1", {2, {2}, {3}, "5s/X2"}));
     return model;
 }
 

@@ -13,6 +13,10 @@
 
 namespace samples {
 
+// Throws std::logic_error with the refusal when a mutator refuses what a
+// sample builder asks: a sample that cannot be built is a bug in the test.
+void requireBuilt(const core::Status& status);
+
 // A variable with no default value and no comment, of the given kind.
 core::Variable variable(std::string name, core::IecType type, core::VariableKind kind);
 

@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+namespace test_bothlayers {
+
 using namespace core;
 
 namespace {
@@ -419,3 +421,5 @@ TEST_CASE("Both layers: the shipped example", "[bothlayers]")
     CHECK(findingsWith(result, code::kNestedStepNeverActive).empty());
     CHECK(findingsWith(result, code::kNestedTransitionDead).empty());
 }
+
+} // namespace test_bothlayers

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+namespace test_branchorder {
+
 using namespace core;
 
 namespace {
@@ -159,3 +161,5 @@ TEST_CASE("moveBranch moves the branches of a selection that never converges eit
     REQUIRE(moveBranch(g, 3, +1).ok);
     CHECK(leaving(g, 1) == std::vector<int>{1, 2});
 }
+
+} // namespace test_branchorder

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace test_casestudyshapes {
+
 using namespace core;
 
 namespace {
@@ -272,3 +274,5 @@ TEST_CASE("An exit step added beside a sequence stands to its right", "[casestud
             CHECK(step.box.left() >= layout.step(1)->box.left());
     }
 }
+
+} // namespace test_casestudyshapes

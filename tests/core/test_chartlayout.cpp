@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+namespace test_chartlayout {
+
 using namespace core;
 using namespace routegeometry;
 
@@ -366,3 +368,5 @@ TEST_CASE("The family transition leaves the F frame from its bottom-left area", 
     CHECK(start.x == f.left());
     CHECK(start.y > f.center().y);
 }
+
+} // namespace test_chartlayout

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+namespace test_checks {
+
 using namespace core;
 
 namespace {
@@ -654,3 +656,5 @@ TEST_CASE("severity names, element labels and hasErrors", "[checks]")
     error.severity = Severity::Error;
     CHECK(hasErrors({d, error}));
 }
+
+} // namespace test_checks

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace test_condition {
+
 using namespace core;
 using namespace core::cond;
 
@@ -976,3 +978,5 @@ TEST_CASE("values format as ST literals", "[condition]")
     CHECK(formatValue(Value{2.0}) == "2.0");
     CHECK(formatValue(Value{1e20}) == "1.0e+20");
 }
+
+} // namespace test_condition

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace test_declarationguess {
+
 using namespace core;
 
 namespace {
@@ -154,3 +156,5 @@ TEST_CASE("the undeclared name of a PackML command or mode request condition", "
     require(model.addVariable(samples::variable("Speed", IecType::Real, VariableKind::Input)));
     CHECK(undeclaredNames(model) == std::vector<std::string>{"GG203 Jammed", "GG203 StartButton"});
 }
+
+} // namespace test_declarationguess

@@ -4,6 +4,8 @@
 
 #include <string>
 
+namespace test_diagnostic {
+
 using namespace core;
 
 TEST_CASE("control characters in user text are escaped for the terminal", "[diagnostic]")
@@ -47,3 +49,5 @@ TEST_CASE("the escaped text is one line with no control character", "[diagnostic
         i += character.length;
     }
 }
+
+} // namespace test_diagnostic

@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+namespace test_divisionbyzero {
+
 using namespace core;
 
 namespace {
@@ -276,3 +278,5 @@ TEST_CASE("Division by zero: the verifier reads a division by a variable as a fr
     CHECK(std::any_of(result.abstractions.begin(), result.abstractions.end(),
                       [](const std::string& a) { return a.find("Batch > 100 / Batch") != std::string::npos; }));
 }
+
+} // namespace test_divisionbyzero

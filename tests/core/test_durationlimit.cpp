@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+namespace test_durationlimit {
+
 using namespace core;
 
 namespace {
@@ -133,3 +135,5 @@ TEST_CASE("Durations: the simulator never fires a receptivity whose duration is 
     CHECK(sim.activeNestedSteps("F1") == std::vector<int>{2});
     CHECK(sim.nestedTimers("F1").empty());
 }
+
+} // namespace test_durationlimit

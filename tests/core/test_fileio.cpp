@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <string>
 
+namespace test_fileio {
+
 using namespace core;
 using filetests::ScratchFolder;
 #ifndef _WIN32
@@ -429,3 +431,5 @@ TEST_CASE("saveModelFile writes native and GG-Generator files that load back", "
     CHECK_FALSE(saveModelFile(model, folder.file("model.xml").string(), ModelFormat::PlcOpen));
     CHECK(folder.entries() == std::vector<std::string>{"model.gg.json", "model.ggstudio.json"});
 }
+
+} // namespace test_fileio

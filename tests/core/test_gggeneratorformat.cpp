@@ -11,6 +11,8 @@
 #include <set>
 #include <string>
 
+namespace test_gggeneratorformat {
+
 using namespace core;
 using nlohmann::ordered_json;
 
@@ -356,3 +358,5 @@ TEST_CASE("GG-Generator import names GG Studio's keys it does not load", "[files
         loadGGGeneratorJson(saveGGGeneratorJson(filetests::richNativeModel()), "gg.json", &warnings)));
     CHECK(warnings.empty());
 }
+
+} // namespace test_gggeneratorformat

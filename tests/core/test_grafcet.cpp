@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+namespace test_grafcet {
+
 using namespace core;
 
 namespace {
@@ -248,3 +250,5 @@ TEST_CASE("Random operations keep the invariants, refused ones change nothing, t
         }
     }
 }
+
+} // namespace test_grafcet

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+namespace test_grafcetchecks {
+
 using namespace core;
 
 namespace {
@@ -265,3 +267,5 @@ TEST_CASE("GG420: user variables named like the nested GRAFCETs' generated names
     REQUIRE(model.setStepHidden("F1", true));
     CHECK(withCode(model, "GG420").empty());
 }
+
+} // namespace test_grafcetchecks

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_grafcetediting {
+
 using namespace core;
 
 namespace {
@@ -610,3 +612,5 @@ TEST_CASE("Structured editing: random sequences of operations", "[grafcet-editin
     }
     CHECK(applied > 1000);
 }
+
+} // namespace test_grafcetediting

@@ -9,6 +9,8 @@
 
 #include <string>
 
+namespace test_grafcetfragmentjson {
+
 using namespace core;
 
 namespace {
@@ -106,3 +108,5 @@ TEST_CASE("A fragment's size is bounded before it is read", "[grafcetfragmentjso
     REQUIRE(many.size() < kMaxGrafcetFragmentBytes);
     CHECK(refusal(many).rfind("/grafcet/steps: 1001 steps", 0) == 0);
 }
+
+} // namespace test_grafcetfragmentjson

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+namespace test_grafcetlayout {
+
 using namespace core;
 
 namespace {
@@ -497,3 +499,5 @@ TEST_CASE("GRAFCET layout: a large structured GRAFCET", "[layout][grafcet-layout
             CHECK(s.box.center().x == layout.step(1)->box.center().x);
     }
 }
+
+} // namespace test_grafcetlayout

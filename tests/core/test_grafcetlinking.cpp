@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace test_grafcetlinking {
+
 using namespace core;
 
 namespace {
@@ -94,3 +96,5 @@ TEST_CASE("links IEC 60848 does not allow are refused with their reason", "[link
     requireRefused(GrafcetLinkEnd::step(3), GrafcetLinkEnd::step(3), kLinkStepToItself);
     requireRefused(GrafcetLinkEnd::step(9), GrafcetLinkEnd::transition(1), kLinkUnknownElement);
 }
+
+} // namespace test_grafcetlinking

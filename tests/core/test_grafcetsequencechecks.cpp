@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace test_grafcetsequencechecks {
+
 using namespace core;
 
 namespace {
@@ -203,3 +205,5 @@ TEST_CASE("GG424 leaves out what input values cannot decide, and selections too 
     REQUIRE(model.setGrafcet("F1", selection(many)));
     CHECK(withCode(model, "GG424").empty());
 }
+
+} // namespace test_grafcetsequencechecks

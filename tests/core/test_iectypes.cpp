@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+namespace test_iectypes {
+
 using namespace core;
 
 TEST_CASE("IEC types are listed in spec order and named in upper case", "[iectypes]")
@@ -294,3 +296,5 @@ TEST_CASE("ASCII case helpers", "[iectypes]")
     CHECK(toUpperAscii("abc_Z9é") == "ABC_Z9é");
     CHECK(equalsIgnoreCase("", ""));
 }
+
+} // namespace test_iectypes

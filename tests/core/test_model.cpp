@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+namespace test_model {
+
 using namespace core;
 
 namespace {
@@ -442,3 +444,5 @@ TEST_CASE("Variable kinds and evolution rules have stable names", "[model]")
         CHECK(parsed == rule);
     }
 }
+
+} // namespace test_model

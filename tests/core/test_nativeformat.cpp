@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+namespace test_nativeformat {
+
 using namespace core;
 
 namespace {
@@ -535,3 +537,5 @@ TEST_CASE("Native 2.0: malformed nested parts are refused with their path", "[fi
     CHECK(loadError(withGrafcet(many + "]}")).message
         == "10001 steps; a nested GRAFCET holds at most 10000");
 }
+
+} // namespace test_nativeformat

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_nestedagreement {
+
 using namespace core;
 
 // Issue #16: the simulator runs exactly the code the PLC runs, nested
@@ -326,3 +328,5 @@ TEST_CASE("The ST interpreter runs the function blocks the generator writes", "[
     CHECK(refused("    PartPresent : BOOL;\n", ""));  // read without VAR_EXTERNAL
     CHECK(refused("GG_T5_2000ms.Q", "GG_T5_2000ms.R"));
 }
+
+} // namespace test_nestedagreement

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+namespace test_nestedcode {
+
 using namespace core;
 
 namespace {
@@ -314,3 +316,5 @@ TEST_CASE("An assigned value that does not fit names the variable and the value"
     REQUIRE(problem.span.has_value());
     CHECK(*problem.span == Span{5, 6});
 }
+
+} // namespace test_nestedcode

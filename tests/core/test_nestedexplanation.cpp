@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace test_nestedexplanation {
+
 using namespace core;
 
 namespace {
@@ -349,3 +351,5 @@ TEST_CASE("GEMMA explanation of a step with a GRAFCET: its Complete and its stor
     CHECK(alarmed.variable("Alarm") == cond::Value{false}); // explaining changes nothing
     CHECK(alarmed.step().fired == "F->D1");
 }
+
+} // namespace test_nestedexplanation

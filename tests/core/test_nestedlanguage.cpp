@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+namespace test_nestedlanguage {
+
 using namespace core;
 using namespace core::cond;
 
@@ -272,3 +274,5 @@ TEST_CASE("Hostile nested texts are refused, not recursed into", "[action][neste
     const std::string longAction = "N Valve IF " + std::string(1'000'000, 'A');
     CHECK(parseAction(longAction).ok()); // one long identifier: fine
 }
+
+} // namespace test_nestedlanguage

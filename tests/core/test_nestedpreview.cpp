@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace test_nestedpreview {
+
 using namespace core;
 
 namespace {
@@ -95,3 +97,5 @@ TEST_CASE("Each nested step and transition has the lines of its code", "[nested-
         CHECK(static_cast<std::size_t>(range.last) <= lineCount);
     }
 }
+
+} // namespace test_nestedpreview

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace test_nestedsimulation {
+
 using namespace core;
 
 namespace {
@@ -495,3 +497,5 @@ TEST_CASE("Which continuous actions emit their output after a call", "[simulatio
     simulator.reset();
     CHECK_FALSE(engine->emitting(2, 0));
 }
+
+} // namespace test_nestedsimulation

@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+namespace test_numericsoundness {
+
 using namespace core;
 
 namespace {
@@ -312,3 +314,5 @@ TEST_CASE("Numeric soundness: a GEMMA transition on an infinite REAL is not dead
     CHECK_FALSE(hasFinding(result, code::kDeadTransition, "F1->A2"));
     CHECK_FALSE(hasFinding(result, code::kUnreachableStep, "A2"));
 }
+
+} // namespace test_numericsoundness

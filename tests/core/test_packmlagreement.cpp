@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlagreement {
+
 using namespace core;
 using namespace core::packml;
 
@@ -308,3 +310,5 @@ TEST_CASE("PackML agreement catches a wrong generated program", "[packml-agreeme
         CHECK(caught);
     }
 }
+
+} // namespace test_packmlagreement

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlchartlayout {
+
 using namespace core;
 using namespace core::packml;
 using namespace routegeometry;
@@ -24,7 +26,7 @@ std::vector<Options> everyOptions()
     return result;
 }
 
-std::string describe(const Options& options)
+std::string describeOptions(const Options& options)
 {
     return std::string("edition ") + std::string(editionName(options.edition)) + ", holdInSuspended "
         + (options.holdInSuspended ? "on" : "off") + ", completeInSuspendedHeld "
@@ -45,7 +47,7 @@ std::vector<NamedArrow> allArrows(const PackmlChartLayout& layout)
 {
     std::vector<NamedArrow> result;
     for (const ChartTransition& t : layout.transitions) {
-        const TemplateTransition& tt = t.transition;
+        const packml::TemplateTransition& tt = t.transition;
         result.push_back({std::string(stateName(tt.source)) + "->" + std::string(stateName(tt.target)), &t.arrow,
                           layout.state(tt.source).box, layout.state(tt.target).box, false, tt.optional});
     }
@@ -63,12 +65,12 @@ Rect barRect(const ChartArrow& a)
     return {a.barCenter.x - 1, a.barCenter.y - half, 2, kChartBarLength};
 }
 
-bool isFrameCommand(const TemplateTransition& t)
+bool isFrameCommand(const packml::TemplateTransition& t)
 {
     return t.trigger == Trigger::Command && (t.command == Command::Stop || t.command == Command::Abort);
 }
 
-bool sameTransition(const TemplateTransition& a, const TemplateTransition& b)
+bool sameTransition(const packml::TemplateTransition& a, const packml::TemplateTransition& b)
 {
     return a.source == b.source && a.target == b.target && a.trigger == b.trigger
         && (a.trigger == Trigger::StateComplete || a.command == b.command) && a.optional == b.optional;
@@ -79,7 +81,7 @@ bool sameTransition(const TemplateTransition& a, const TemplateTransition& b)
 TEST_CASE("PackML chart: 17 boxes of 120 x 44 on the 5 x 6 grid, none overlapping", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         REQUIRE(layout.states.size() == 17);
         for (const ChartStateBox& box : layout.states) {
@@ -110,11 +112,11 @@ TEST_CASE("PackML chart: 17 boxes of 120 x 44 on the 5 x 6 grid, none overlappin
 TEST_CASE("PackML chart: every transition of the template has exactly one route", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         std::size_t expected = 0;
         for (const StateInfo& info : states()) {
-            for (const TemplateTransition& t : transitionsFrom(info.state, options)) {
+            for (const packml::TemplateTransition& t : transitionsFrom(info.state, options)) {
                 if (isFrameCommand(t))
                     continue;
                 ++expected;
@@ -140,7 +142,7 @@ TEST_CASE("PackML chart: every transition of the template has exactly one route"
 TEST_CASE("PackML chart: routes are orthogonal and join their source and target borders", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         for (const NamedArrow& a : allArrows(layout)) {
             INFO(a.name);
@@ -170,7 +172,7 @@ TEST_CASE("PackML chart: routes are orthogonal and join their source and target 
 TEST_CASE("PackML chart: no route passes through a box", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         for (const NamedArrow& a : allArrows(layout)) {
             for (const Segment& s : segmentsOf(a.arrow->route)) {
@@ -188,7 +190,7 @@ TEST_CASE("PackML chart: no route passes through a box", "[packml-chart]")
 TEST_CASE("PackML chart: routes never run along each other; only optional ones cross, once", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         const std::vector<NamedArrow> arrows = allArrows(layout);
         std::vector<int> crossings(arrows.size(), 0);
@@ -221,7 +223,7 @@ TEST_CASE("PackML chart: routes never run along each other; only optional ones c
 TEST_CASE("PackML chart: route ends on one box are kept apart", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         std::vector<std::pair<std::string, Point>> ends;
         for (const NamedArrow& a : allArrows(layout)) {
@@ -242,7 +244,7 @@ TEST_CASE("PackML chart: route ends on one box are kept apart", "[packml-chart]"
 TEST_CASE("PackML chart: transition bars sit on a straight stretch of their route", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         const std::vector<NamedArrow> arrows = allArrows(layout);
         for (const NamedArrow& a : arrows) {
@@ -275,7 +277,7 @@ TEST_CASE("PackML chart: labels overlap no box, no title, no other label, and no
           "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         const std::vector<NamedArrow> arrows = allArrows(layout);
         for (const NamedArrow& a : arrows) {
@@ -309,7 +311,7 @@ TEST_CASE("PackML chart: labels overlap no box, no title, no other label, and no
 TEST_CASE("PackML chart: the Stop and Abort frames enclose exactly the states that accept them", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         REQUIRE(layout.frames.size() == 2);
         const ChartFrame* stop = layout.frame(Command::Stop);
@@ -351,7 +353,7 @@ TEST_CASE("PackML chart: the Stop and Abort frames enclose exactly the states th
 TEST_CASE("PackML chart: the drawing follows spec 2.4", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         const auto box = [&](State s) { return layout.state(s).box; };
         const auto route = [&](State s, State t) {
@@ -401,7 +403,7 @@ TEST_CASE("PackML chart: the drawing follows spec 2.4", "[packml-chart]")
 TEST_CASE("PackML chart: everything lies inside the scene rectangle", "[packml-chart]")
 {
     for (const Options& options : everyOptions()) {
-        INFO(describe(options));
+        INFO(describeOptions(options));
         const PackmlChartLayout layout = chartLayout(options);
         const Rect& scene = layout.sceneRect;
         CHECK(scene.x == 0);
@@ -421,3 +423,5 @@ TEST_CASE("PackML chart: everything lies inside the scene rectangle", "[packml-c
         }
     }
 }
+
+} // namespace test_packmlchartlayout

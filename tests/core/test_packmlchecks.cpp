@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlchecks {
+
 using namespace core;
 using packml::Command;
 using packml::Edition;
@@ -534,3 +536,5 @@ TEST_CASE("GG305: the shipped bottle filler uses every variable it declares", "[
     REQUIRE(loaded.ok());
     CHECK(withCode(*loaded.model, "GG305").empty());
 }
+
+} // namespace test_packmlchecks

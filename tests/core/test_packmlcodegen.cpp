@@ -25,6 +25,8 @@
 #include <unistd.h>
 #include <variant>
 
+namespace test_packmlcodegen {
+
 using namespace core;
 using namespace core::packml;
 
@@ -448,3 +450,5 @@ TEST_CASE("PackML code: the Capper's generated IEC code runs the trace of spec 6
     CHECK(trace == expected);
     CHECK(plc.runtimeError().empty());
 }
+
+} // namespace test_packmlcodegen

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlformat {
+
 using namespace core;
 using packml::Command;
 using packml::GrafcetChoice;
@@ -348,3 +350,5 @@ TEST_CASE("A PackML model is saved natively and never as GG-Generator JSON", "[p
     REQUIRE(saveModelFile(model, folder.file("filler.json").string(), ModelFormat::Native));
     CHECK(filetests::readBinaryFile(folder.file("filler.json")) == filetests::readBinaryFile(kFillerFile));
 }
+
+} // namespace test_packmlformat

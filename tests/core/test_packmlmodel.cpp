@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlmodel {
+
 using namespace core;
 using packml::Command;
 using packml::GrafcetChoice;
@@ -397,3 +399,5 @@ TEST_CASE("The PackTags interface: six globals typed and initialised from the co
     CHECK_FALSE(packml::isPackTagName("UnitModeCurrentX"));
     CHECK_FALSE(packml::isPackTagName("State"));
 }
+
+} // namespace test_packmlmodel

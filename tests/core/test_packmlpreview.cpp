@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlpreview {
+
 namespace {
 
 std::vector<std::string> linesOf(const std::string& text)
@@ -78,3 +80,5 @@ TEST_CASE("The PackML function block preview is the GRAFCET's FB with its steps'
     CHECK(core::packml::previewPackmlFunctionBlock(*capper, "3/Resetting", core::Dialect::Iec).text.empty());
     CHECK(core::packml::previewPackmlFunctionBlock(*capper, "nonsense", core::Dialect::Iec).text.empty());
 }
+
+} // namespace test_packmlpreview

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlprogram {
+
 using namespace core;
 using namespace core::packml;
 
@@ -231,3 +233,5 @@ TEST_CASE("Random PackML models: programs without problems, covering what the ag
     CHECK(skipped > 40);
     CHECK(emptyCommands > 5);
 }
+
+} // namespace test_packmlprogram

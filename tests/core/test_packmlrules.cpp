@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlrules {
+
 using namespace core::packml;
 
 namespace {
@@ -522,3 +524,5 @@ TEST_CASE("Execute's Resume flag: set by Hold and Suspend out of Execute, cleare
         if (t.transition.trigger == Trigger::StateComplete)
             CHECK(resumeEffect(t) == ResumeEffect::Clear);
 }
+
+} // namespace test_packmlrules

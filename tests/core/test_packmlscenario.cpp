@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlscenario {
+
 using namespace core;
 using namespace core::packml;
 
@@ -182,3 +184,5 @@ TEST_CASE("PackML scenarios: set complete gives an instance without GRAFCET a ma
     const PackmlScenarioRunResult again = runPackmlScenario(parsed("at 1: command Reset\nat 2: expect state Idle\n"), held);
     CHECK(failureTexts(again.failures).empty());
 }
+
+} // namespace test_packmlscenario

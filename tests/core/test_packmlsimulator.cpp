@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlsimulator {
+
 using namespace core;
 using namespace core::packml;
 
@@ -590,3 +592,5 @@ TEST_CASE("An integer division by zero stops the run where the PLC stops", "[pac
         CHECK(simulator.state() == State::Resetting);
     }
 }
+
+} // namespace test_packmlsimulator

@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmlspin {
+
 using namespace core;
 using namespace core::packml;
 
@@ -303,3 +305,5 @@ TEST_CASE("A PackML program the Promela export cannot write exactly is refused w
     CHECK(exported.markers.empty());
     CHECK(buildPackmlPromela(*packmltests::loadCapper()).unsupported.empty());
 }
+
+} // namespace test_packmlspin

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmltemplate {
+
 using namespace core::packml;
 
 namespace {
@@ -221,3 +223,5 @@ TEST_CASE("PackML template: a mode change may be allowed in the seven states of 
         CHECK(mayAllowModeChange(info.state) == allowed.contains(info.state));
     }
 }
+
+} // namespace test_packmltemplate

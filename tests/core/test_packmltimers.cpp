@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+namespace test_packmltimers {
+
 using namespace core;
 using namespace core::packml;
 using packmltests::capperWith;
@@ -276,3 +278,5 @@ TEST_CASE("On random timer variants, what time counted in scans confirms the abs
     CHECK(compared > 6);
     CHECK(confirmedFindings > 6);
 }
+
+} // namespace test_packmltimers

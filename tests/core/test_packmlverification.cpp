@@ -25,6 +25,8 @@
 #include <variant>
 #include <vector>
 
+namespace test_packmlverification {
+
 using namespace core;
 using namespace core::packml;
 
@@ -340,3 +342,5 @@ TEST_CASE("Memories the next scan cannot read do not split the explored configur
     REQUIRE(bottle.previous(bottle.slotOf("BottleIn")));
     CHECK(fillerExplorer.key(bottle, PauseGhost{}) == fillerExplorer.key(none, PauseGhost{}));
 }
+
+} // namespace test_packmlverification

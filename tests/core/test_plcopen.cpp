@@ -22,6 +22,8 @@
 #include <unistd.h>
 #include <vector>
 
+namespace test_plcopen {
+
 using namespace core;
 using tinyxml2::XMLElement;
 
@@ -846,3 +848,5 @@ TEST_CASE("The well-formedness check accepts what XML 1.0 allows", "[plcopen]")
           == "the character reference &#" + std::string(38, '9')
                  + "... is beyond U+10FFFF, the last Unicode character");
 }
+
+} // namespace test_plcopen

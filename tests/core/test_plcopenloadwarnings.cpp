@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+namespace test_plcopenloadwarnings {
+
 using namespace core;
 
 namespace {
@@ -253,3 +255,5 @@ TEST_CASE("POUs the model does not generate are named up to ten, then counted", 
           == "19990 more POUs from here on are not ones the embedded model generates: the embedded model is used; "
              "they are not kept");
 }
+
+} // namespace test_plcopenloadwarnings

@@ -8,6 +8,8 @@
 #include <regex>
 #include <string>
 
+namespace test_promela {
+
 using namespace core;
 
 namespace {
@@ -93,3 +95,5 @@ TEST_CASE("A condition reading a name the code cannot use reaches Promela as FAL
     CHECK(code.find("in_State") == std::string::npos);
     CHECK(code.find("in_Start") != std::string::npos);
 }
+
+} // namespace test_promela

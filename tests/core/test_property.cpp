@@ -8,6 +8,8 @@
 #include <random>
 #include <variant>
 
+namespace test_property {
+
 using namespace core;
 
 TEST_CASE("Random edit sequences keep every invariant and survive save and open", "[property]")
@@ -47,3 +49,5 @@ TEST_CASE("Refused random edits leave the model unchanged", "[property]")
         }
     }
 }
+
+} // namespace test_property

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+namespace test_propertyoutcome {
+
 using namespace core;
 
 namespace {
@@ -140,3 +142,5 @@ TEST_CASE("The search of the simulator's runs sets only the inputs a scan reads"
     // PartCount only grows from 0 (and is reset): never 'holds', never violated.
     CHECK(result.propertyVerdicts[1].outcome == PropertyOutcome::Undecided);
 }
+
+} // namespace test_propertyoutcome

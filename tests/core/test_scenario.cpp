@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+namespace test_scenario {
+
 using namespace core;
 
 namespace {
@@ -467,3 +469,5 @@ TEST_CASE("Scenario: a recorded session is written back as a scenario that repla
         CHECK(replay.records[i].tokens == recording.records[i].tokens);
     }
 }
+
+} // namespace test_scenario

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+namespace test_simulation_agreement {
+
 using namespace core;
 
 // The simulator must run exactly the code the PLC runs: the generated GEMMA
@@ -154,3 +156,5 @@ TEST_CASE("The ST interpreter runs the standard R_TRIG as a program instance", "
     CHECK(plc.runtimeError().empty());
     CHECK(plc.member("Trig_Button", "Q") == std::optional<core::cond::Value>(true));
 }
+
+} // namespace test_simulation_agreement

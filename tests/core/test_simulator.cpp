@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_simulator {
+
 using namespace core;
 
 // Every expected trace below is computed by hand from the generated code of
@@ -640,3 +642,5 @@ TEST_CASE("Simulator: trace, callback and copies", "[simulation]")
     CHECK(sim.scanCount() == 0);
     CHECK(sim.variable("HomePosition") == cond::Value{false});
 }
+
+} // namespace test_simulator

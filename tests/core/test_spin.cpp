@@ -20,6 +20,8 @@
 
 #include <stdlib.h> // mkdtemp
 
+namespace test_spin {
+
 using namespace core;
 
 // SPIN as an independent check of core::verifyModel: the model is exported as
@@ -645,3 +647,5 @@ TEST_CASE("exportPromela writes the scan loop of the generated code", "[spin]")
     REQUIRE(model.setName("x */ byte evil; /*"));
     CHECK(exportPromela(model).find("x * / byte evil; / *") != std::string::npos);
 }
+
+} // namespace test_spin

@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+namespace test_spinprogram {
+
 using namespace core;
 
 namespace {
@@ -375,3 +377,5 @@ TEST_CASE("SPIN agrees with the exploration of both layers on the benchmark's st
     const Facts facts = requireAgreement(factory::bothLayersStressModel(), {"never BatchMark AND in A1"}, false, "stress");
     CHECK(has(facts, "reach D3"));
 }
+
+} // namespace test_spinprogram

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+namespace test_stepnamechecks {
+
 using namespace core;
 
 namespace {
@@ -142,3 +144,5 @@ TEST_CASE("The generated code never declares a variable under a step instance's 
         CHECK(contains(gemma, "(* ERROR GG306: in the condition of A1->F4: invalid variable name: 'a1'"));
     }
 }
+
+} // namespace test_stepnamechecks

@@ -14,6 +14,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+namespace test_stexport {
+
 using namespace core;
 namespace fs = std::filesystem;
 
@@ -203,3 +205,5 @@ TEST_CASE("The single-file export is IEC whatever the model's dialect", "[plcope
     CHECK_FALSE(missingFolder.message.empty());
     CHECK(exportStSingleFile(model, "").code == "stexport.file-name");
 }
+
+} // namespace test_stexport

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+namespace test_stgenerator {
+
 using namespace core;
 
 // Golden files live in tests/core/data/golden. Run the tests with
@@ -1121,3 +1123,5 @@ TEST_CASE("generation is deterministic", "[stgen]")
         CHECK(fullText(copy, dialect) == first);
     }
 }
+
+} // namespace test_stgenerator

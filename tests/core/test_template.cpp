@@ -6,6 +6,8 @@
 #include <set>
 #include <string>
 
+namespace test_template {
+
 using namespace core;
 
 TEST_CASE("The template has the 16 GEMMA states of the spec", "[template]")
@@ -54,3 +56,5 @@ TEST_CASE("The template has the 34 transitions with priorities 1..n per source",
     CHECK(priorities["F1"].size() == 9);
     CHECK(priorities["A1"].size() == 4);
 }
+
+} // namespace test_template

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+namespace test_verification {
+
 namespace {
 
 namespace code = core::verification;
@@ -709,3 +711,5 @@ TEST_CASE("The symbolic exploration agrees with an explicit one on random models
     CHECK(withStuck >= 3);
     CHECK(withNoReturn >= 3);
 }
+
+} // namespace test_verification

@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+namespace test_verificationbounds {
+
 using namespace core;
 
 namespace {
@@ -168,3 +170,5 @@ TEST_CASE("Verification bounds: a long cycle that never settles is explored in l
     CHECK(std::any_of(e.events.begin(), e.events.end(),
                       [](const explore::Event& event) { return event.kind == explore::EventKind::Unstable; }));
 }
+
+} // namespace test_verificationbounds

@@ -17,6 +17,8 @@
 #include <string>
 #include <variant>
 
+namespace test_verificationproperty {
+
 using namespace core;
 
 namespace {
@@ -227,3 +229,5 @@ TEST_CASE("A wrong nested step is named for what is wrong, step 0 included", "[v
     // Not a step activity at all: still refused by the parser.
     CHECK(problemCodes(model, "never F1.Lamp") == property::kSyntax);
 }
+
+} // namespace test_verificationproperty
