@@ -35,6 +35,7 @@ struct VerificationRunner::Job {
     QStringList automatic;
     std::map<std::string, core::CompleteAssumption> complete;
     bool exactTime = false;
+    std::chrono::milliseconds timeLimit{0};
     std::atomic<bool> cancelled{false};
     core::VerificationResult result;
     std::string failure;
@@ -100,6 +101,7 @@ void VerificationRunner::start()
         m_current->cancelled = true;
     auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic);
     job->exactTime = m_exactTime;
+    job->timeLimit = m_timeLimit;
     m_current = job;
     m_wasCancelled = false;
     if (wasRunning)
@@ -262,6 +264,7 @@ void VerificationRunner::runJob(const std::shared_ptr<Job>& job)
     core::VerificationOptions options;
     options.complete = job->complete;
     options.exactTime = job->exactTime;
+    options.timeLimit = job->timeLimit;
     options.cancelled = [job] { return job->cancelled.load(std::memory_order_relaxed); };
     try {
         job->result = core::verifyModel(job->model, options);

@@ -7,6 +7,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -80,6 +81,12 @@ public:
     // The same for the last result.
     bool resultExactTime() const { return m_resultExactTime; }
 
+    // How long the next runs may take before they stop, undecided where they
+    // had to (GV100). Not an assumption: a change leaves a run under way and
+    // the last result as they are.
+    void setTimeLimit(std::chrono::milliseconds limit) { m_timeLimit = limit; }
+    std::chrono::milliseconds timeLimit() const { return m_timeLimit; }
+
     // The nested steps whose Complete the next run assumes automatic, state order.
     QStringList assumedAutomatic() const { return m_assumedAutomatic; }
     // The same for the last result.
@@ -136,6 +143,7 @@ private:
     // what it assumed, moved along by the changes the user did not choose.
     QStringList m_currentWithAutomatic;
     bool m_exactTime = false;
+    std::chrono::milliseconds m_timeLimit = core::VerificationOptions().timeLimit;
     QStringList m_resultAutomatic;
     bool m_resultExactTime = false;
 };

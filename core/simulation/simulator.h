@@ -1,7 +1,7 @@
 #pragma once
 
 // Runs the GEMMA program scan by scan, exactly as the generated PROGRAM GEMMA
-// (spec §6.6, core/codegen/stgenerator.cpp) runs on a PLC, before any PLC exists.
+// (spec §6.6, core/templates/gemma/gemmacodegen.cpp) runs on a PLC, before any PLC exists.
 //
 // The simulator reads the one intermediate form, core::GemmaProgram: the
 // visible steps, the transitions each step evaluates in evaluation order

@@ -57,6 +57,19 @@ void Settings::setDefaultCycleTimeMs(int milliseconds)
     m_settings.setValue("model/defaultCycleTimeMs", milliseconds);
 }
 
+int Settings::verificationTimeLimitSeconds() const
+{
+    bool ok = false;
+    const int value = m_settings.value("verification/timeLimitSeconds", kDefaultVerificationSeconds).toInt(&ok);
+    return ok && value >= kMinVerificationSeconds && value <= kMaxVerificationSeconds ? value
+                                                                                      : kDefaultVerificationSeconds;
+}
+
+void Settings::setVerificationTimeLimitSeconds(int seconds)
+{
+    m_settings.setValue("verification/timeLimitSeconds", seconds);
+}
+
 bool Settings::showHidden() const
 {
     return m_settings.value("view/showHidden", false).toBool();

@@ -15,6 +15,10 @@ namespace editor {
 // settings file never breaks the editor.
 class Settings {
 public:
+    static constexpr int kMinVerificationSeconds = 1;
+    static constexpr int kMaxVerificationSeconds = 3600;
+    static constexpr int kDefaultVerificationSeconds = 4;
+
     // Uses the application's QSettings (organisation and application names
     // set in main()).
     Settings() = default;
@@ -31,6 +35,11 @@ public:
     void setDefaultDialect(core::Dialect dialect);
     int defaultCycleTimeMs() const;
     void setDefaultCycleTimeMs(int milliseconds);
+
+    // How long one verification may run before it stops, undecided where it
+    // had to (GV100): 1 s to 1 h, 4 s by default as in ggstudio-cli verify.
+    int verificationTimeLimitSeconds() const;
+    void setVerificationTimeLimitSeconds(int seconds);
 
     bool showHidden() const;
     void setShowHidden(bool show);

@@ -1,5 +1,6 @@
 #include "editor/docks/verificationpanel.h"
 
+#include "editor/app/settings.h"
 #include "editor/docks/wrappingitemdelegate.h"
 #include "editor/docks/wrappinglabel.h"
 #include "editor/selection.h"
@@ -18,6 +19,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QSpinBox>
 #include <QStyle>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -163,6 +165,8 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     , m_showAction(new QAction(this))
     , m_replayAction(new QAction(this))
     , m_copyAction(new QAction(m_view))
+    , m_timeLimitLabel(new QLabel(this))
+    , m_timeLimitBox(new QSpinBox(this))
 {
     Q_ASSERT(runner && selection);
     setObjectName(QStringLiteral("verificationPanel"));
@@ -172,6 +176,8 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     connect(m_verifyAction, &QAction::triggered, m_runner, &VerificationRunner::start);
     connect(m_showAction, &QAction::triggered, this, [this] { showOnChart(m_view->currentItem()); });
     connect(m_replayAction, &QAction::triggered, this, [this] { replay(m_view->currentItem()); });
+
+    setUpTimeLimit();
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -186,6 +192,14 @@ VerificationPanel::VerificationPanel(VerificationRunner* runner, Selection* sele
     bar->addWidget(toolButton(m_showAction, this));
     bar->addWidget(toolButton(m_replayAction, this));
     layout->addLayout(bar);
+    // A row of its own: beside the buttons it would widen the dock column.
+    auto* limitRow = new QHBoxLayout;
+    limitRow->setContentsMargins(6, 0, 4, 2);
+    limitRow->setSpacing(4);
+    limitRow->addWidget(m_timeLimitLabel);
+    limitRow->addWidget(m_timeLimitBox);
+    limitRow->addStretch(1);
+    layout->addLayout(limitRow);
     // The status and the assumptions on lines of their own, wrapped: in the
     // dock column a status such as "Model changed since verification:
     // verify again…" is wider than the dock, and it must never be cut.
@@ -244,6 +258,19 @@ void VerificationPanel::changeEvent(QEvent* event)
 }
 
 // The findings too: they are worded in the UI language when listed.
+void VerificationPanel::setUpTimeLimit()
+{
+    m_timeLimitBox->setObjectName(QStringLiteral("verificationTimeLimit"));
+    m_timeLimitBox->setRange(Settings::kMinVerificationSeconds, Settings::kMaxVerificationSeconds);
+    m_timeLimitBox->setValue(Settings().verificationTimeLimitSeconds());
+    m_timeLimitLabel->setBuddy(m_timeLimitBox);
+    m_runner->setTimeLimit(std::chrono::seconds(m_timeLimitBox->value()));
+    connect(m_timeLimitBox, &QSpinBox::valueChanged, this, [this](int seconds) {
+        m_runner->setTimeLimit(std::chrono::seconds(seconds));
+        Settings().setVerificationTimeLimitSeconds(seconds);
+    });
+}
+
 void VerificationPanel::retranslate()
 {
     m_verifyAction->setText(tr("&Verify"));
@@ -252,6 +279,14 @@ void VerificationPanel::retranslate()
     m_showAction->setToolTip(tr("Select the element of the finding on the chart"));
     m_replayAction->setText(tr("&Replay in Simulator"));
     m_copyAction->setText(tr("&Copy"));
+    m_timeLimitLabel->setText(tr("&Time limit:"));
+    //: The unit after the verification's time limit: "4 s"
+    m_timeLimitBox->setSuffix(tr(" s"));
+    const QString limitTip = tr("How long a verification may run. Past it, what is not decided yet is reported "
+                                "as undecided (GV100) with how far the exploration got: give more time and verify "
+                                "again.");
+    m_timeLimitLabel->setToolTip(limitTip);
+    m_timeLimitBox->setToolTip(limitTip);
     m_view->setHeaderLabels({tr("Code"), tr("Element"), tr("Scans"), tr("Message")});
     m_view->headerItem()->setToolTip(ScansColumn, tr("Scans of the counterexample, which the simulator can replay"));
     refresh();

@@ -8,6 +8,7 @@
 
 class QAction;
 class QLabel;
+class QSpinBox;
 class QToolButton;
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -42,6 +43,8 @@ public:
     QLabel* statusLabel() const { return m_statusLabel; }
     QLabel* assumptionsLabel() const { return m_assumptionsLabel; }
     QAction* verifyAction() const { return m_verifyAction; }
+    // How long a verification may run (seconds), remembered in the settings.
+    QSpinBox* timeLimitBox() const { return m_timeLimitBox; }
     QAction* showOnChartAction() const { return m_showAction; }
     QAction* replayAction() const { return m_replayAction; }
 
@@ -59,6 +62,7 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    void setUpTimeLimit();
     void retranslate();
     void refresh();
     void refreshStatus();
@@ -79,6 +83,8 @@ private:
     QAction* m_showAction;
     QAction* m_replayAction;
     QAction* m_copyAction;
+    QLabel* m_timeLimitLabel;
+    QSpinBox* m_timeLimitBox;
     QSet<QString> m_collapsedGroups; // GEMMA step ids
 };
 

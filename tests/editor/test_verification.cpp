@@ -10,6 +10,7 @@
 #include "editortestsupport.h"
 
 #include "editor/app/languages.h"
+#include "editor/app/settings.h"
 #include "editor/commands/propertycommands.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/docks/problemsdock.h"
@@ -38,6 +39,7 @@
 #include <QToolButton>
 #include <QAction>
 #include <QComboBox>
+#include <QSpinBox>
 #include <QApplication>
 #include <QClipboard>
 #include <QTreeWidgetItemIterator>
@@ -53,6 +55,8 @@
 #include <QTreeWidget>
 #include <QUndoStack>
 
+#include <algorithm>
+#include <chrono>
 #include <memory>
 
 using namespace editor;
@@ -100,6 +104,7 @@ class TestVerification : public QObject {
 
 private slots:
     void exactTimeFromTheMenu();
+    void timeLimitFromThePanel();
     void initTestCase();
     void init();
     void cleanup();
@@ -858,6 +863,32 @@ void TestVerification::statusCountsProgramStatesAndListsAbstractions()
     QVERIFY(!m_runner->result().bothLayers);
     QVERIFY(!panel->statusLabel()->text().contains(QStringLiteral("program states")));
     QVERIFY(!panel->assumptionsLabel()->toolTip().contains(QStringLiteral("abstracted")));
+}
+
+// The panel's time limit is the next runs' and is remembered; a run that
+// reaches it reports what is undecided (GV100), and more time decides it.
+void TestVerification::timeLimitFromThePanel()
+{
+    VerificationPanel* panel = m_dock->verificationPanel();
+    QSpinBox* box = panel->timeLimitBox();
+    QCOMPARE(box->value(), Settings::kDefaultVerificationSeconds);
+    QCOMPARE(m_runner->timeLimit(), std::chrono::milliseconds(4000));
+    box->setValue(90);
+    QCOMPARE(m_runner->timeLimit(), std::chrono::milliseconds(90000));
+    QCOMPARE(Settings().verificationTimeLimitSeconds(), 90);
+
+    // Thousands of program states: 1 ms (below the box's 1 s) is sure to stop it.
+    m_window->document()->replaceModel(factory::bothLayersStressModel(), QString(), core::ModelFormat::Native);
+    m_runner->setTimeLimit(std::chrono::milliseconds(1));
+    verifyAndWait();
+    QVERIFY(!m_runner->result().exhaustive);
+    const auto& findings = m_runner->result().findings;
+    QVERIFY(std::any_of(findings.begin(), findings.end(),
+                        [](const core::VerificationFinding& f) { return f.code == core::verification::kIncomplete; }));
+    box->setValue(60);
+    verifyAndWait();
+    QVERIFY(m_runner->result().exhaustive);
+    box->setValue(Settings::kDefaultVerificationSeconds); // the next tests start from the default
 }
 
 // A property finding names the property in the element column and has no
