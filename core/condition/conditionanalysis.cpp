@@ -205,7 +205,7 @@ std::optional<std::uint64_t> integerMagnitude(std::string_view text)
     return value;
 }
 
-constexpr std::uint64_t kInt64Max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+constexpr std::uint64_t kInt64MaxMagnitude = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
 
 // Computes the kind of every node, children first; optionally records the
 // issues. An operand already in error (Unknown) raises no further issue.
@@ -322,7 +322,8 @@ private:
             return;
         const Node& node = m_expression.at(index);
         const auto magnitude = integerMagnitude(node.text);
-        const std::uint64_t limit = m_negatedLiteral[static_cast<std::size_t>(index)] ? kInt64Max + 1 : kInt64Max;
+        const bool negated = m_negatedLiteral[static_cast<std::size_t>(index)];
+        const std::uint64_t limit = negated ? kInt64MaxMagnitude + 1 : kInt64MaxMagnitude;
         if (!magnitude || *magnitude > limit)
             reportLiteral(TypeError::Kind::IntegerLiteralRange, node);
     }

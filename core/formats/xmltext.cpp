@@ -1,6 +1,7 @@
 #include "core/formats/xmltext.h"
 
 #include "core/formats/fileio.h"
+#include "core/model/iectypes.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -149,13 +150,6 @@ bool isPredefinedEntity(std::string_view name)
     return name == "lt" || name == "gt" || name == "amp" || name == "apos" || name == "quot";
 }
 
-bool equalsIgnoringCase(std::string_view a, std::string_view b)
-{
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return (x >= 'A' && x <= 'Z' ? x + 32 : x) == (y >= 'A' && y <= 'Z' ? y + 32 : y);
-           });
-}
-
 struct OpenElement {
     std::string_view name;
     std::size_t offset;
@@ -302,7 +296,7 @@ private:
             fail(start, "XML version '" + cutShort(version) + "' is not read: GG Studio reads XML 1.0");
         if (next < items.size() && items[next].first == "encoding") {
             const std::string_view encoding = items[next++].second;
-            if (!equalsIgnoringCase(encoding, "UTF-8"))
+            if (!equalsIgnoreCase(encoding, "UTF-8"))
                 fail(start, "the encoding '" + cutShort(encoding) + "': GG Studio reads PLCopen files in UTF-8");
         }
         if (next < items.size() && items[next].first == "standalone") {
@@ -332,7 +326,7 @@ private:
         const std::size_t start = m_pos;
         m_pos += 2;
         const std::string_view target = readName("a processing instruction's target after '<?'");
-        if (equalsIgnoringCase(target, "xml"))
+        if (equalsIgnoreCase(target, "xml"))
             fail(start, "an XML declaration that is not at the very start of the file");
         if (!lookingAt("?>") && !skipSpaces())
             fail(m_pos, "expected a space or '?>' after the processing instruction's target");

@@ -1,4 +1,5 @@
 #include "core/layout/grafcetactiontext.h"
+#include "core/model/iectypes.h"
 
 #include <algorithm>
 #include <cctype>
@@ -19,13 +20,6 @@ std::string trimmed(std::string_view text)
     return std::string(text.substr(begin, end - begin));
 }
 
-bool equalsIgnoringCase(std::string_view a, std::string_view b)
-{
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
-           });
-}
-
 } // namespace
 
 ActionParts splitAction(const GrafcetAction& action)
@@ -38,7 +32,7 @@ ActionParts splitAction(const GrafcetAction& action)
     const std::string_view word = std::string_view(body).substr(0, space);
     const std::string rest = trimmed(std::string_view(body).substr(space));
     std::string qualifier;
-    if ((equalsIgnoringCase(word, "N") || equalsIgnoringCase(word, "S") || equalsIgnoringCase(word, "R"))
+    if ((equalsIgnoreCase(word, "N") || equalsIgnoreCase(word, "S") || equalsIgnoreCase(word, "R"))
         && !rest.empty() && rest.rfind(":=", 0) != 0) {
         qualifier = std::string(1, static_cast<char>(std::toupper(static_cast<unsigned char>(word[0]))));
         body = rest;
@@ -53,7 +47,7 @@ ActionParts splitAction(const GrafcetAction& action)
             std::size_t stop = body.find_first_of(" \t\r\n", start);
             if (stop == std::string::npos)
                 stop = body.size();
-            if (start > 0 && equalsIgnoringCase(std::string_view(body).substr(start, stop - start), "IF")) {
+            if (start > 0 && equalsIgnoreCase(std::string_view(body).substr(start, stop - start), "IF")) {
                 parts.condition = trimmed(std::string_view(body).substr(stop));
                 body = trimmed(std::string_view(body).substr(0, start));
                 break;

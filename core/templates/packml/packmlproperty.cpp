@@ -8,6 +8,7 @@
 #include "core/templates/packml/packmlprogram.h"
 #include "core/templates/packml/packmlscenario.h"
 #include "core/templates/packml/packmlsimulator.h"
+#include "core/model/iectypes.h"
 
 #include <algorithm>
 #include <cctype>
@@ -15,13 +16,6 @@
 namespace core::packml {
 
 namespace {
-
-bool equalsIgnoreCase(std::string_view a, std::string_view b)
-{
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-           });
-}
 
 PropertyProblem problem(Span span, const char* code, std::string message, std::vector<std::string> arguments)
 {
