@@ -95,7 +95,7 @@ Component readComponent(const ordered_json& value, const std::string& path, bool
         failAt(path + "/name", "empty; every component has a name");
     for (std::size_t i = 0; i < spec.roles.size(); ++i) {
         if (const ordered_json* variable = findMember(object, spec.roles[i].key))
-            component.signals[i] = readString(*variable, childPath(path, spec.roles[i].key));
+            component.wires[i] = readString(*variable, childPath(path, spec.roles[i].key));
     }
     for (std::size_t i = 0; i < spec.parameters.size(); ++i) {
         if (const ordered_json* parameter = findMember(object, spec.parameters[i].key))
@@ -123,9 +123,9 @@ ordered_json nativeMachineJson(const machine::Machine& machine)
         ordered_json object;
         object["name"] = component.name;
         object["kind"] = componentKindName(component.kind);
-        for (std::size_t i = 0; i < spec.roles.size() && i < component.signals.size(); ++i) {
-            if (!component.signals[i].empty())
-                object[std::string(spec.roles[i].key)] = component.signals[i];
+        for (std::size_t i = 0; i < spec.roles.size() && i < component.wires.size(); ++i) {
+            if (!component.wires[i].empty())
+                object[std::string(spec.roles[i].key)] = component.wires[i];
         }
         for (std::size_t i = 0; i < spec.parameters.size() && i < component.parameters.size(); ++i) {
             if (spec.parameters[i].kind != ParameterKind::PartCount || component.parameters[i] != kUnlimitedParts)

@@ -64,7 +64,7 @@ inline constexpr std::int64_t kUnlimitedParts = -1;
 
 struct ComponentKindSpec {
     ComponentKind kind;
-    std::span<const RoleSpec> roles;           // the order of Component::signals
+    std::span<const RoleSpec> roles;           // the order of Component::wires
     std::span<const ParameterSpec> parameters; // the order of Component::parameters
     bool hasContact;   // an operator input
     bool feedsConveyor; // names the conveyor it puts parts on

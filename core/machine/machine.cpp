@@ -24,17 +24,17 @@ int indexOf(std::span<const Spec> specs, std::string_view key)
 std::string_view Component::signal(std::string_view roleKey) const
 {
     const int index = indexOf(kindSpec(kind).roles, roleKey);
-    if (index < 0 || static_cast<std::size_t>(index) >= signals.size())
+    if (index < 0 || static_cast<std::size_t>(index) >= wires.size())
         return {};
-    return signals[static_cast<std::size_t>(index)];
+    return wires[static_cast<std::size_t>(index)];
 }
 
 bool Component::setSignal(std::string_view roleKey, std::string variable)
 {
     const int index = indexOf(kindSpec(kind).roles, roleKey);
-    if (index < 0 || static_cast<std::size_t>(index) >= signals.size())
+    if (index < 0 || static_cast<std::size_t>(index) >= wires.size())
         return false;
-    signals[static_cast<std::size_t>(index)] = std::move(variable);
+    wires[static_cast<std::size_t>(index)] = std::move(variable);
     return true;
 }
 
@@ -61,7 +61,7 @@ Component makeComponent(ComponentKind kind, std::string name)
     Component component;
     component.name = std::move(name);
     component.kind = kind;
-    component.signals.resize(spec.roles.size());
+    component.wires.resize(spec.roles.size());
     for (const ParameterSpec& parameter : spec.parameters)
         component.parameters.push_back(parameter.defaultValue);
     if (kind == ComponentKind::EmergencyStop)
@@ -86,7 +86,7 @@ std::vector<std::string> Machine::structuralProblems() const
             problems.push_back("a machine component has an empty name");
         else if (!upperNames.insert(toUpperAscii(component.name)).second)
             problems.push_back("two machine components are named '" + component.name + "' (ignoring case)");
-        if (component.signals.size() != spec.roles.size() || component.parameters.size() != spec.parameters.size())
+        if (component.wires.size() != spec.roles.size() || component.parameters.size() != spec.parameters.size())
             problems.push_back("machine component '" + component.name + "' does not have the signals and "
                                "parameters of a " + std::string(componentKindName(component.kind)));
         if (!spec.feedsConveyor && !component.conveyor.empty())
@@ -99,7 +99,7 @@ bool Machine::renameVariable(std::string_view previous, const std::string& newNa
 {
     bool changed = false;
     for (Component& component : components) {
-        for (std::string& variable : component.signals) {
+        for (std::string& variable : component.wires) {
             if (!variable.empty() && equalsIgnoreCase(variable, previous)) {
                 variable = newName;
                 changed = true;

@@ -19,7 +19,7 @@ struct Component {
     ComponentKind kind = ComponentKind::Lamp;
     // The variable of each role, in kindSpec(kind).roles order, spelled as
     // the user wrote it; empty: not wired.
-    std::vector<std::string> signals;
+    std::vector<std::string> wires;
     // Each parameter, in kindSpec(kind).parameters order.
     std::vector<std::int64_t> parameters;
     Contact contact = Contact::NormallyOpen; // operator inputs only

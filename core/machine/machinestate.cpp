@@ -30,8 +30,8 @@ MachineState::MachineState(const Machine& machine, int cycleTimeMs,
         Runtime r;
         r.kind = component.kind;
         r.contact = component.contact;
-        for (std::size_t role = 0; role < spec.roles.size() && role < component.signals.size(); ++role) {
-            const std::string& name = component.signals[role];
+        for (std::size_t role = 0; role < spec.roles.size() && role < component.wires.size(); ++role) {
+            const std::string& name = component.wires[role];
             const int variable = name.empty() ? -1 : wire(name, spec.roles[role].direction);
             if (variable < 0)
                 continue;

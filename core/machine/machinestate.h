@@ -46,7 +46,7 @@ public:
     // sensor slot is written from the new state.
     void cycle();
 
-    const std::vector<SignalSlot>& slots() const { return m_slots; }
+    const std::vector<SignalSlot>& signalSlots() const { return m_slots; }
     bool signal(std::size_t slot) const { return m_signals[slot] != 0; }
     void setSignal(std::size_t slot, bool value) { m_signals[slot] = value ? 1 : 0; }
 

@@ -22,15 +22,15 @@ public:
 
     void set(const std::string& name, bool value)
     {
-        for (std::size_t i = 0; i < m_state.slots().size(); ++i) {
-            if (m_names[static_cast<std::size_t>(m_state.slots()[i].variable)] == name)
+        for (std::size_t i = 0; i < m_state.signalSlots().size(); ++i) {
+            if (m_names[static_cast<std::size_t>(m_state.signalSlots()[i].variable)] == name)
                 m_state.setSignal(i, value);
         }
     }
     bool get(const std::string& name) const
     {
-        for (std::size_t i = 0; i < m_state.slots().size(); ++i) {
-            if (m_names[static_cast<std::size_t>(m_state.slots()[i].variable)] == name)
+        for (std::size_t i = 0; i < m_state.signalSlots().size(); ++i) {
+            if (m_names[static_cast<std::size_t>(m_state.signalSlots()[i].variable)] == name)
                 return m_state.signal(i);
         }
         FAIL("no slot for " << name);
@@ -234,7 +234,7 @@ TEST_CASE("Structural problems of a machine description", "[machine]")
     machine.components[1].name.clear();
     CHECK(machine.structuralProblems() == std::vector<std::string>{"a machine component has an empty name"});
     machine.components[1] = makeComponent(ComponentKind::Lamp, "M");
-    machine.components[1].signals.push_back("Extra");
+    machine.components[1].wires.push_back("Extra");
     CHECK(machine.structuralProblems().size() == 1);
     machine.components[1] = makeComponent(ComponentKind::Lamp, "M");
     machine.components[1].conveyor = "Belt";
