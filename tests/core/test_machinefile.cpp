@@ -1,6 +1,7 @@
 // The native file's "machine" key (core/formats/nativemachinejson.h) and its
 // way through PLCopen, where the native model is embedded.
 
+#include "filetestsupport.h"
 #include "nativeloadchecks.h"
 
 #include "core/codegen/plcopenwriter.h"
@@ -82,6 +83,15 @@ TEST_CASE("A model without machine saves as before", "[machine][files]")
     CHECK(text.find("machine") == std::string::npos);
     CHECK(text.find("\"version\": \"1.0\"") != std::string::npos); // no 2.0 key needed
     CHECK(loadOk(text)->machine().empty());
+}
+
+TEST_CASE("The shipped drilling cell and its machine are written back byte for byte", "[machine][files][example]")
+{
+    const std::string text = filetests::readBinaryFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    const auto loaded = loadOk(text);
+    REQUIRE(loaded->machine().components.size() == 9);
+    CHECK(loaded->machine().components[3].conveyor == "Infeed");
+    CHECK(saveNativeJson(*loaded) == text);
 }
 
 TEST_CASE("The machine survives the PLCopen round trip", "[machine][files][plcopen]")
