@@ -615,7 +615,8 @@ int commandSimulate(const Arguments& args, Streams streams)
         scans = scenario.lastScan() > 0 ? scenario.lastScan() : kDefaultSimulationScans;
 
     const bool trace = args.has("--trace");
-    core::ScenarioRunner runner = loop ? core::ScenarioRunner(scenario, *loop) : core::ScenarioRunner(scenario, simulator);
+    core::ScenarioRunner runner =
+        loop ? core::ScenarioRunner(scenario, *loop) : core::ScenarioRunner(scenario, simulator);
     std::size_t failures = 0;
     for (std::int64_t i = 0; i < scans; ++i) {
         const core::ScanRecord record = runner.step();

@@ -108,7 +108,8 @@ TEST_CASE("The machine survives the PLCopen round trip", "[machine][files][plcop
 TEST_CASE("The machine reader is strict and says where", "[machine][files]")
 {
     CHECK(loadError("{\"format\": \"ggstudio-model\", \"version\": \"1.0\", \"machine\": {}}").location == "/machine");
-    CHECK(loadError(fileWithMachine("[]")).toStringWithoutAdvice().find("/machine: expected an object") != std::string::npos);
+    CHECK(loadError(fileWithMachine("[]")).toStringWithoutAdvice().find("/machine: expected an object")
+          != std::string::npos);
     CHECK(loadError(fileWithMachine("{\"parts\": 1}")).toStringWithoutAdvice().find(
               "/machine/parts: unknown key \"parts\" in the machine; it knows \"components\"")
           != std::string::npos);

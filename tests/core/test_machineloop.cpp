@@ -116,8 +116,8 @@ TEST_CASE("The drilling cell drills its parts in closed loop from the operator's
         const auto found = std::find_if(records.begin(), records.end(), holds);
         return found == records.end() ? std::int64_t{0} : found->scan;
     };
-    const std::size_t f1 = static_cast<std::size_t>(
-        std::find(simulator.nestedSteps().begin(), simulator.nestedSteps().end(), "F1") - simulator.nestedSteps().begin());
+    const std::vector<std::string>& nested = simulator.nestedSteps();
+    const auto f1 = static_cast<std::size_t>(std::find(nested.begin(), nested.end(), "F1") - nested.begin());
     const auto nestedF1 = [&](std::vector<int> steps) {
         return [f1, steps](const ScanRecord& r) { return r.stepAfter == "F1" && r.nestedActive[f1] == steps; };
     };
