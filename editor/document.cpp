@@ -336,6 +336,9 @@ void Document::emitChange(const core::ModelChange& change)
     case core::ModelChange::Kind::PackMLMode:
         emit modeChanged(id.toInt());
         break;
+    case core::ModelChange::Kind::Machine:
+        // No view shows the machine yet; the checks rerun on every change as for the others.
+        break;
     }
 }
 

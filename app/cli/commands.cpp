@@ -8,6 +8,8 @@
 #include "core/formats/modelfiles.h"
 #include "core/formats/nativeformat.h"
 #include "core/codegen/plcopenwriter.h"
+#include "core/machine/closedloopscenario.h"
+#include "core/machine/machineloop.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
 #include "core/templates/packml/packmlmodel.h"
@@ -56,11 +58,14 @@ const char* const kUsage =
     "      Print the GEMMA program's Structured Text, or with --step the function block of\n"
     "      one visible macro-step or enclosing step (its nested GRAFCET). A PackML model:\n"
     "      its PROGRAM, or with --step the function block of an instance (Production_Execute).\n"
-    "  simulate MODEL [SCENARIO] [--scans N] [--trace] [--explain]\n"
+    "  simulate MODEL [SCENARIO] [--scans N] [--trace] [--explain] [--open-loop]\n"
     "      Run the GEMMA program scan by scan: one line 'scan N: STEP [fired TRANSITION]' per\n"
     "      scan (--trace adds inputs, Entry, tokens, Complete, the active steps, timers and\n"
     "      Unstable of each nested GRAFCET and the outputs they drive; --explain ends with why\n"
     "      each transition of the active step and of its GRAFCET fires or not in the next scan).\n"
+    "      A model with a machine runs in closed loop: the machine sets its sensors after\n"
+    "      each scan (--trace shows them), the scenario plays the operator; --open-loop\n"
+    "      ignores the machine.\n"
     "      Runs the scenario's last scan, else 10 scans, or N (at most 10000000, as a scenario).\n"
     "      Exit 1 when an expectation of the scenario fails.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
@@ -533,10 +538,20 @@ void printExplanation(const core::Simulator& simulator, std::ostream& out)
             << "): " << core::nestedTransitionStatusName(t.status) << reasonsText(t.reasons) << lineEnd;
 }
 
-// The scenario file, parsed and checked against the model; false (and the
-// errors printed) when it cannot be used.
-bool loadScenario(const std::string& path, const core::Simulator& simulator, core::Scenario& scenario,
-                  std::ostream& err)
+// The sensors the machine set after a scan, read by the next one.
+void printMachineSensors(const core::machine::MachineLoop& loop, std::ostream& out)
+{
+    std::string sensors;
+    for (const core::InputChange& change : loop.lastSensorChanges())
+        sensors += (sensors.empty() ? "" : ", ") + change.variable + " = " + core::cond::formatValue(change.value);
+    if (!sensors.empty())
+        out << "    machine set: " << sensors << lineEnd;
+}
+
+// The scenario file, parsed and checked against the model (in closed loop,
+// against the machine too); false (and the errors printed) when it cannot be used.
+bool loadScenario(const std::string& path, const core::Simulator& simulator, const core::machine::MachineLoop* loop,
+                  core::Scenario& scenario, std::ostream& err)
 {
     std::string text;
     if (core::Status status = core::readFileLimited(path, 16u * 1024u * 1024u, text); !status) {
@@ -547,6 +562,8 @@ bool loadScenario(const std::string& path, const core::Simulator& simulator, cor
     std::vector<core::ScenarioError> errors = parsed.errors;
     if (parsed.ok())
         errors = core::validateScenario(parsed.scenario, simulator);
+    if (errors.empty() && loop)
+        errors = core::machine::validateClosedLoopScenario(parsed.scenario, *loop);
     for (const core::ScenarioError& error : errors)
         err << error.toString() << lineEnd;
     scenario = std::move(parsed.scenario);
@@ -588,14 +605,19 @@ int commandSimulate(const Arguments& args, Streams streams)
         streams.err << files[0] << ": " << errors << " error(s) in the model (see 'ggstudio-cli validate'): "
                     << "a condition that cannot be used never fires, as in the generated code" << lineEnd;
 
+    std::optional<core::machine::MachineLoop> loop;
+    if (!model->machine().empty() && !args.has("--open-loop"))
+        loop.emplace(simulator, model->machine());
+
     core::Scenario scenario;
-    if (files.size() == 2 && !loadScenario(files[1], simulator, scenario, streams.err))
+    if (files.size() == 2 && !loadScenario(files[1], simulator, loop ? &*loop : nullptr, scenario, streams.err))
         return UnreadableInput;
     if (scans == 0)
         scans = scenario.lastScan() > 0 ? scenario.lastScan() : kDefaultSimulationScans;
 
     const bool trace = args.has("--trace");
-    core::ScenarioRunner runner(scenario, simulator);
+    core::ScenarioRunner runner =
+        loop ? core::ScenarioRunner(scenario, *loop) : core::ScenarioRunner(scenario, simulator);
     std::size_t failures = 0;
     for (std::int64_t i = 0; i < scans; ++i) {
         const core::ScanRecord record = runner.step();
@@ -604,6 +626,8 @@ int commandSimulate(const Arguments& args, Streams streams)
             return RunTimeFault;
         }
         printScan(record, simulator, trace, streams.out);
+        if (trace && loop)
+            printMachineSensors(*loop, streams.out);
         for (const core::ScenarioFailure& failure : runner.lastFailures())
             streams.err << files[1] << ":" << failure.line << ": " << core::toText(failure) << lineEnd;
         failures += runner.lastFailures().size();
@@ -638,7 +662,7 @@ const std::map<std::string, Command>& commands()
         {"convert", {commandConvert, {"--to"}, {}}},
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
         {"st", {commandSt, {"--dialect", "--step"}, {}}},
-        {"simulate", {commandSimulate, {"--scans"}, {"--trace", "--explain"}}},
+        {"simulate", {commandSimulate, {"--scans"}, {"--trace", "--explain", "--open-loop"}}},
         {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property", "--time-limit"},
                     {"--exact-time"}}},
     };

@@ -28,6 +28,7 @@ std::string diagnosticElementLabel(const Diagnostic& diagnostic)
     case Diagnostic::Target::Command: return "command " + diagnostic.element;
     case Diagnostic::Target::ModeState: return diagnostic.element + ": " + diagnostic.state;
     case Diagnostic::Target::Request: return "request of mode " + diagnostic.element;
+    case Diagnostic::Target::MachineComponent: return "machine component " + diagnostic.element;
     default: return diagnostic.element;
     }
 }

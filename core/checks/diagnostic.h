@@ -22,10 +22,12 @@ struct Diagnostic {
     // mode (element: its name, `mode` its number); Command (element: the
     // command's PackTags name); ModeState, a state in a mode (element: the
     // mode's name, `state` the state's); Request, a mode's request condition
-    // (element: the mode's name).
+    // (element: the mode's name). MachineComponent: a component of the
+    // virtual machine (core/machine/machinechecks.h; element: its name,
+    // field: the role or parameter at fault).
     enum class Target {
         Model, Step, Transition, Variable, GrafcetStep, GrafcetTransition,
-        Mode, Command, ModeState, Request,
+        Mode, Command, ModeState, Request, MachineComponent,
     };
 
     std::string code;         // "GG201"
@@ -45,7 +47,8 @@ struct Diagnostic {
 };
 
 // "A1", "F1->A2", the variable name, "F1 step 3", "F1 T2", "mode Manual",
-// "command Hold", "Manual: Execute", "request of mode Manual", or "model".
+// "command Hold", "Manual: Execute", "request of mode Manual", "machine
+// component Clamp", or "model".
 std::string diagnosticElementLabel(const Diagnostic& diagnostic);
 
 bool hasErrors(const std::vector<Diagnostic>& diagnostics);

@@ -3,6 +3,7 @@
 #include "core/formats/jsonreader.h"
 #include "core/formats/modelloading.h"
 #include "core/formats/nativegrafcetjson.h"
+#include "core/formats/nativemachinejson.h"
 #include "core/formats/nativemodelparts.h"
 #include "core/templates/packml/packmlformat.h"
 
@@ -49,7 +50,7 @@ ordered_json transitionJson(const Transition& transition)
 bool needsNestedFormat(const Model& model)
 {
     const auto& variables = model.variables();
-    return !model.grafcets().empty() || !model.properties().empty()
+    return !model.grafcets().empty() || !model.properties().empty() || !model.machine().empty()
         || model.settings().evolution != EvolutionRule::OneEvolutionPerScan
         || std::any_of(variables.begin(), variables.end(),
                        [](const Variable& v) { return v.kind != VariableKind::Input; });
@@ -523,7 +524,7 @@ std::unique_ptr<Model> buildModel(const json& root)
     checkGemmaVersion(root, version);
     const KeyRule keys(version);
     keys.check(root, "", "a model file", {"format", "version", "name", "settings", "steps", "transitions", "variables"},
-               {"grafcets", "properties"});
+               {"grafcets", "properties", "machine"});
     auto model = std::make_unique<Model>();
     readSettings(*model, root, keys);
     readVariables(*model, root, keys);
@@ -531,6 +532,8 @@ std::unique_ptr<Model> buildModel(const json& root)
     readTransitions(*model, root, keys);
     readGrafcets(*model, root, keys);
     readProperties(*model, root, keys);
+    if (const json* machine = findMember(root, "machine"))
+        require(model->setMachine(readNativeMachine(*machine, "/machine", version)), "/machine");
     return model;
 }
 
@@ -656,6 +659,8 @@ std::string saveNativeJson(const Model& model)
     }
     if (!model.properties().empty())
         root["properties"] = nativePropertiesJson(model);
+    if (!model.machine().empty())
+        root["machine"] = nativeMachineJson(model.machine());
 
     // Text from elsewhere may hold invalid UTF-8: replace it rather than throw.
     return root.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";

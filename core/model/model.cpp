@@ -125,6 +125,7 @@ Model::Model(const Model& other)
     , m_settings(other.m_settings)
     , m_properties(other.m_properties)
     , m_packml(other.m_packml)
+    , m_machine(other.m_machine)
 {
 }
 
@@ -674,6 +675,8 @@ Status Model::renameVariable(std::string_view oldName, std::string newName)
             notifyGrafcet(stepId, std::move(changes));
     }
     renameInPackMLConditions(previous, newName);
+    if (m_machine.renameVariable(previous, newName))
+        notify(ModelChange::Kind::Machine);
     notify(ModelChange::Kind::Variable, newName);
     notify(ModelChange::Kind::VariableList);
     return Status::success();
@@ -838,6 +841,19 @@ void Model::setEvolutionRule(EvolutionRule rule)
     }
 }
 
+Status Model::setMachine(machine::Machine machine)
+{
+    if (m_packml && !machine.empty())
+        return Status::failure("machine.packml", "a PackML model has no virtual machine yet");
+    if (const std::vector<std::string> problems = machine.structuralProblems(); !problems.empty())
+        return Status::failure("machine.structure", problems.front());
+    if (machine == m_machine)
+        return Status::success();
+    m_machine = std::move(machine);
+    notify(ModelChange::Kind::Machine);
+    return Status::success();
+}
+
 void Model::resetToTemplate()
 {
     if (m_packml)
@@ -857,6 +873,7 @@ void Model::assign(const Model& other)
     m_settings = other.m_settings;
     m_properties = other.m_properties;
     m_packml = other.m_packml;
+    m_machine = other.m_machine;
     notify(ModelChange::Kind::Reset);
 }
 
@@ -915,6 +932,10 @@ std::vector<std::string> Model::invariantViolations() const
     }
     if (m_settings.cycleTimeMs < kMinCycleTimeMs || m_settings.cycleTimeMs > kMaxCycleTimeMs)
         problems.push_back("the cycle time is out of range");
+    for (std::string& problem : m_machine.structuralProblems())
+        problems.push_back(std::move(problem));
+    if (m_packml && !m_machine.empty())
+        problems.push_back("a PackML model has a virtual machine");
     for (const auto& [stepId, nested] : m_grafcets) {
         if (!ownsGrafcetKey(stepId))
             problems.push_back("a nested GRAFCET belongs to '" + stepId + "', which is no template step");
@@ -953,6 +974,7 @@ bool Model::sameContent(const Model& other) const
 {
     return m_steps == other.m_steps && m_transitions == other.m_transitions && m_variables == other.m_variables &&
            m_settings == other.m_settings && m_properties == other.m_properties && m_packml == other.m_packml &&
+           m_machine == other.m_machine &&
            std::equal(m_grafcets.begin(), m_grafcets.end(), other.m_grafcets.begin(), other.m_grafcets.end(),
                       [](const auto& a, const auto& b) { return a.first == b.first && a.second.sameContent(b.second); });
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/templates/gemma/gemmatemplate.h"
+#include "core/machine/machine.h"
 #include "core/model/grafcet.h"
 #include "core/model/iectypes.h"
 #include "core/model/status.h"
@@ -99,6 +100,7 @@ struct ModelChange {
         PackMLCommand,  // id: the command's name ("Reset")
         PackMLModes,    // a mode added or removed
         PackMLMode,     // id: the mode's number ("4"): its name, comment, request, listings or GRAFCET choices
+        Machine,        // the virtual machine's description
     };
     Kind kind;
     // Step id, transition id, variable name, command name or mode number;
@@ -232,6 +234,15 @@ public:
     Status removeProperty(int index);
     Status moveProperty(int from, int to);
 
+    // The virtual machine (core/machine/machine.h): components wired to the
+    // variables by name. GEMMA models only for now (a PackML model's is
+    // always empty). setMachine replaces the whole description; it refuses
+    // one with structural problems (Machine::structuralProblems). Wiring to
+    // unknown variables or variables of the wrong kind is allowed: the checks
+    // report it. renameVariable rewires the machine too.
+    const machine::Machine& machine() const { return m_machine; }
+    Status setMachine(machine::Machine machine);
+
     // Settings.
     Status setName(std::string name);
     Status setCycleTimeMs(int cycleTimeMs);
@@ -302,6 +313,7 @@ private:
     ModelSettings m_settings;
     std::vector<UserProperty> m_properties;
     std::optional<packml::Configuration> m_packml;
+    machine::Machine m_machine;
     std::uint64_t m_revision = 0;
     std::map<int, Observer> m_observers;
     int m_nextObserver = 1;

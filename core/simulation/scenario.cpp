@@ -1,6 +1,7 @@
 #include "core/simulation/scenario.h"
 
 #include "core/formats/fileio.h"
+#include "core/machine/machineloop.h"
 #include "core/templates/gemma/gemmatemplate.h"
 #include "core/model/iectypes.h"
 
@@ -727,6 +728,12 @@ ScenarioRunner::ScenarioRunner(const Scenario& scenario, Simulator& simulator)
         m_byScan[action.scan].push_back(&action);
 }
 
+ScenarioRunner::ScenarioRunner(const Scenario& scenario, machine::MachineLoop& loop)
+    : ScenarioRunner(scenario, loop.simulator())
+{
+    m_loop = &loop;
+}
+
 void ScenarioRunner::apply(const ScenarioAction& action)
 {
     using Kind = ScenarioAction::Kind;
@@ -869,26 +876,51 @@ ScanRecord ScenarioRunner::step()
                 check(*action, record);
         }
     }
+    if (m_loop)
+        m_loop->afterScan();
     m_failures.insert(m_failures.end(), m_lastFailures.begin(), m_lastFailures.end());
     return record;
 }
 
-ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, std::int64_t scans)
+namespace {
+
+// A scenario starts from the program's start state with every Complete automatic.
+void makeCompleteAutomatic(Simulator& simulator)
 {
-    // A scenario starts from the program's start state with every Complete automatic.
-    simulator.reset();
     for (const std::string& step : simulator.nestedSteps()) {
         simulator.setCompleteMode(step, CompleteMode::Automatic);
         simulator.setComplete(step, false);
     }
+}
+
+ScenarioRunResult runFromStart(const Scenario& scenario, ScenarioRunner& runner, Simulator& simulator,
+                               std::int64_t scans)
+{
     ScenarioRunResult result;
-    ScenarioRunner runner(scenario, simulator);
     const std::int64_t count = scans > 0 ? scans : scenario.lastScan();
     for (std::int64_t i = 0; i < count && !simulator.fault(); ++i)
         result.records.push_back(runner.step());
     result.failures = runner.failures();
     result.fault = simulator.fault();
     return result;
+}
+
+} // namespace
+
+ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, std::int64_t scans)
+{
+    simulator.reset();
+    makeCompleteAutomatic(simulator);
+    ScenarioRunner runner(scenario, simulator);
+    return runFromStart(scenario, runner, simulator, scans);
+}
+
+ScenarioRunResult runScenario(const Scenario& scenario, machine::MachineLoop& loop, std::int64_t scans)
+{
+    makeCompleteAutomatic(loop.simulator());
+    loop.reset();
+    ScenarioRunner runner(scenario, loop);
+    return runFromStart(scenario, runner, loop.simulator(), scans);
 }
 
 std::string_view scenarioKeyword(ScenarioAction::Kind kind)

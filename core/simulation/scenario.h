@@ -33,6 +33,10 @@
 
 namespace core {
 
+namespace machine {
+class MachineLoop;
+}
+
 struct ScenarioAction {
     enum class Kind {
         SetVariable,    // set NAME = VALUE
@@ -135,6 +139,10 @@ std::string toText(const ScenarioFailure& failure);
 class ScenarioRunner {
 public:
     ScenarioRunner(const Scenario& scenario, Simulator& simulator);
+    // In closed loop: each step() runs the loop's simulator, checks the
+    // scan's expectations (so they see what the scan read), then runs the
+    // machine's cycle. The loop must outlive the runner.
+    ScenarioRunner(const Scenario& scenario, machine::MachineLoop& loop);
 
     // Applies the sets of the next scan, runs it, checks its expectations.
     ScanRecord step();
@@ -149,6 +157,7 @@ private:
 
     const Scenario& m_scenario;
     Simulator& m_simulator;
+    machine::MachineLoop* m_loop = nullptr;
     std::map<std::int64_t, std::vector<const ScenarioAction*>> m_byScan;
     std::vector<ScenarioFailure> m_failures;
     std::vector<ScenarioFailure> m_lastFailures;
@@ -166,6 +175,8 @@ struct ScenarioRunResult {
 
 // Resets the simulator and runs `scans` scans (0: the scenario's last scan).
 ScenarioRunResult runScenario(const Scenario& scenario, Simulator& simulator, std::int64_t scans = 0);
+// The same in closed loop: resets the loop (the simulator and the machine).
+ScenarioRunResult runScenario(const Scenario& scenario, machine::MachineLoop& loop, std::int64_t scans = 0);
 
 // --- Writing: "record the session as a scenario file" -----------------------
 

@@ -65,6 +65,9 @@ std::string otherText(const ScenarioError& e)
     case ErrorKind::UnknownToken: return "unknown token " + quote(e.subject);
     case ErrorKind::NotAnInput:
         return e.subject + " is an " + e.detail + " variable: the program writes it, a scenario sets only inputs";
+    case ErrorKind::MachineSensor:
+        return e.subject + " is a sensor of the machine's " + e.detail
+            + ": the machine sets it; set it by hand in open loop only";
     case ErrorKind::NoGrafcet: return "step " + e.subject + " has no nested GRAFCET";
     case ErrorKind::CompleteFromGrafcet:
         return "the Complete of " + e.subject + " comes from its nested GRAFCET: it cannot be set";

@@ -73,6 +73,9 @@ struct ScenarioError {
         // the earlier set's; scan: the scan both name.
         ConflictingValue,         // subject: the variable as declared; values as written
         ConflictingComplete,      // subject: the step id in capitals; values TRUE, FALSE or auto
+        // In closed loop: a set of a sensor the virtual machine writes.
+        // subject: the variable as declared; detail: the component's name.
+        MachineSensor,
     };
 
     std::string fileName;

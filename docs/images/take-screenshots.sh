@@ -16,12 +16,12 @@ example=examples/drilling-cell.ggstudio.json
 # The faulty example: the Problems dock and a step with problems.
 "$shot" "$images/main-window-problem.png" 1920 1080 examples/drilling-cell-faulty.ggstudio.json \
     --select A7 --raise problemsDock
-# The start scenario replayed up to the first part being drilled.
+# The open-loop start scenario (the editor does not run the machine yet) replayed up to the first part being drilled.
 "$shot" "$images/simulation.png" 1366 768 "$example" --simulate \
-    --replay examples/drilling-cell-start.scenario --replay-scans 1013 --raise simulationDock
+    --replay examples/drilling-cell-open-loop.scenario --replay-scans 1013 --raise simulationDock
 # Scan 1,012 of it with F1's GRAFCET in front (F2's greyed in the tab beside it).
 "$shot" "$images/simulation-grafcet.png" 1366 768 "$example" --grafcet F2 --grafcet F1 --simulate \
-    --replay examples/drilling-cell-start.scenario --replay-scans 1012 --raise simulationDock
+    --replay examples/drilling-cell-open-loop.scenario --replay-scans 1012 --raise simulationDock
 # The nested GRAFCET of F1 in its tab, its transition T3 in the Nested Transition dock.
 "$shot" "$images/grafcet-tab.png" 1366 768 "$example" --grafcet F1 --select F1/T3 --raise grafcetTransitionDock
 # Verify and its findings.

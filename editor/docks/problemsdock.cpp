@@ -66,6 +66,9 @@ ElementRef::Kind kindOf(core::Diagnostic::Target target)
     case core::Diagnostic::Target::Request:
         // PackML elements: the editor has no view of them to select yet.
         return ElementRef::Kind::None;
+    case core::Diagnostic::Target::MachineComponent:
+        // The editor has no view of the machine yet.
+        return ElementRef::Kind::None;
     }
     return ElementRef::Kind::None;
 }
@@ -89,6 +92,9 @@ QString elementText(const core::Diagnostic& diagnostic)
     case core::Diagnostic::Target::ModeState:
     case core::Diagnostic::Target::Request:
         return packmlElementText(diagnostic);
+    case core::Diagnostic::Target::MachineComponent:
+        //: A component of the virtual machine: "machine component Clamp"
+        return ProblemsDock::tr("machine component %1").arg(element);
     default:
         return element;
     }

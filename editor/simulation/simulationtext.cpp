@@ -194,6 +194,11 @@ QString scenarioErrorMessage(const core::ScenarioError& error)
             ? SimulationText::tr("%1 is an output variable: the program writes it, a scenario sets only inputs").arg(subject)
             : SimulationText::tr("%1 is an internal variable: the program writes it, a scenario sets only inputs")
                   .arg(subject);
+    case Kind::MachineSensor:
+        //: %1: a variable; %2: the name of a component of the virtual machine ("Clamp")
+        return SimulationText::tr("%1 is a sensor of the machine's %2: the machine sets it; set it by hand in open "
+                                  "loop only")
+            .arg(subject, fromStd(error.detail));
     case Kind::NoGrafcet: return SimulationText::tr("step %1 has no nested GRAFCET").arg(subject);
     case Kind::CompleteFromGrafcet:
         return SimulationText::tr("the Complete of %1 comes from its nested GRAFCET: it cannot be set").arg(subject);

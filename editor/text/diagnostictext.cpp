@@ -6,6 +6,7 @@
 #include "editor/text/conditiontypeerrortext.h"
 #include "editor/text/displaytext.h"
 #include "editor/text/elementlabels.h"
+#include "editor/text/machinediagnostictext.h"
 #include "editor/text/nestedproblemtext.h"
 #include "editor/text/packmldiagnostictext.h"
 #include "editor/text/valueproblemtext.h"
@@ -565,6 +566,8 @@ QString verificationText(const core::VerificationFinding& finding)
 QString diagnosticText(const core::Diagnostic& diagnostic)
 {
     QString text = packmlDiagnosticText(diagnostic);
+    if (text.isEmpty())
+        text = machineDiagnosticText(diagnostic);
     if (text.isEmpty())
         text = translated(diagnostic);
     return text.isEmpty() ? fallback(diagnostic) : text;

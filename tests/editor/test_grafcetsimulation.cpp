@@ -277,7 +277,7 @@ void TestGrafcetSimulation::tabsShowTheSimulationOfBothLayers()
     QVERIFY(!m_window->chartScene()->stepItem(QStringLiteral("F2"))->nestedRunning());
 
     scan(); // F2's entry scan: Initialization, then 1 -> 3 (T2, DrillHigh)
-    set("StartButton", false); // as examples/drilling-cell-start.scenario plays it
+    set("StartButton", false); // as examples/drilling-cell-open-loop.scenario plays it
     QCOMPARE(marksOf(f2)->state(), GrafcetSimulationMarks::State::Running);
     QCOMPARE(simulator->activeNestedSteps("F2"), std::vector<int>{3});
     QCOMPARE(simulator->firedNestedTransitions("F2"), std::vector<int>{2});
@@ -423,9 +423,11 @@ void TestGrafcetSimulation::marksFollowTheHistoryAndTheReplay()
     mismatch = marksMismatch(*f2, *m_session->simulator());
     QVERIFY2(mismatch.isEmpty(), qPrintable(mismatch));
 
-    // The shipped scenario replayed: back at scan 0, then scan by scan.
+    // The shipped open-loop scenario replayed (the editor's simulation does not
+    // run the machine yet): back at scan 0, then scan by scan.
     QString error;
-    QVERIFY2(m_session->startReplay(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-start.scenario", &error), qPrintable(error));
+    QVERIFY2(m_session->startReplay(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-open-loop.scenario", &error),
+             qPrintable(error));
     QCOMPARE(f2->stepItem(3)->simulationMark(), Mark::None);
     QCOMPARE(marksOf(f2)->state(), GrafcetSimulationMarks::State::Frozen);
     scan(2);

@@ -2,6 +2,7 @@
 
 #include "core/checks/grafcetchecks.h"
 #include "core/condition/blanktext.h"
+#include "core/machine/machinechecks.h"
 #include "core/model/messagetext.h"
 
 #include "core/condition/conditionanalysis.h"
@@ -594,7 +595,10 @@ private:
 
 std::vector<Diagnostic> checkGemmaModel(const Model& model)
 {
-    return Checker(model).run();
+    std::vector<Diagnostic> diagnostics = Checker(model).run();
+    for (Diagnostic& diagnostic : machine::checkMachine(model))
+        diagnostics.push_back(std::move(diagnostic));
+    return diagnostics;
 }
 
 } // namespace core

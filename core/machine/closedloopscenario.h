@@ -1,0 +1,17 @@
+#pragma once
+
+// A scenario played in closed loop (docs/simulation.md, "The virtual
+// machine"): its `set` lines are the operator's, so setting an input the
+// machine writes at every cycle is an error, at the line and column of the
+// name (ScenarioError::Kind::MachineSensor). Run validateScenario first.
+
+#include "core/machine/machineloop.h"
+#include "core/simulation/scenario.h"
+
+#include <vector>
+
+namespace core::machine {
+
+std::vector<ScenarioError> validateClosedLoopScenario(const Scenario& scenario, const MachineLoop& loop);
+
+} // namespace core::machine
