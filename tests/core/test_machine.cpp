@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+namespace test_machine {
+
 using namespace core::machine;
 
 namespace {
@@ -243,3 +245,5 @@ TEST_CASE("Structural problems of a machine description", "[machine]")
     CHECK(machine.structuralProblems().empty());
     CHECK(machine.find("m") == &machine.components[1]);
 }
+
+} // namespace test_machine

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+namespace test_machinechecks {
+
 using namespace core;
 using namespace core::machine;
 
@@ -186,3 +188,5 @@ TEST_CASE("The model carries its machine", "[machine][model]")
     Model packmlModel = packml::newModel();
     CHECK_FALSE(packmlModel.setMachine(Machine{{clamp()}}));
 }
+
+} // namespace test_machinechecks

@@ -14,6 +14,8 @@
 
 #include <string>
 
+namespace test_machinefile {
+
 using namespace core;
 using namespace core::machine;
 using filetests::loadError;
@@ -143,3 +145,5 @@ TEST_CASE("The machine reader is strict and says where", "[machine][files]")
                                              "\"travelMs\": 0}]}"));
     CHECK(zero->machine().components[0].parameter("travelMs") == 0);
 }
+
+} // namespace test_machinefile

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+namespace test_machineloop {
+
 using namespace core;
 using namespace core::machine;
 
@@ -159,3 +161,5 @@ TEST_CASE("The simulator alone ignores the machine", "[machine][machine-loop]")
     CHECK(simulator.variable("DrillHigh") == cond::Value{false});
     CHECK(simulator.activeStepId() == "A1");
 }
+
+} // namespace test_machineloop
