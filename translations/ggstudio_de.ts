@@ -411,10 +411,6 @@
         <translation>Die Bedingung von %1 ist FALSE: Die Transition kann nie schalten (besser ausblenden).</translation>
     </message>
     <message>
-        <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
-        <translation>Die Variable &apos;%1&apos; wird von keiner sichtbaren Transitionsbedingung verwendet.</translation>
-    </message>
-    <message>
         <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
         <translation>Schritt %1 ist vom Anfangsschritt %2 aus über sichtbare Transitionen nicht erreichbar: Er kann nie aktiv werden.</translation>
     </message>
@@ -707,6 +703,10 @@
         <source>Not confirmed: its counterexample does not replay to it in the simulator.</source>
         <translation>Nicht bestätigt: Sein Gegenbeispiel führt im Simulator nicht dorthin.</translation>
     </message>
+    <message>
+        <source>Variable &apos;%1&apos; is used by no condition, receptivity or action that generates code.</source>
+        <translation>Die Variable &apos;%1&apos; wird von keiner Bedingung, Weiterschaltbedingung oder Aktion verwendet, die Code erzeugt.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -814,6 +814,58 @@
         <source>%1 is hidden and cannot be the initial step; show it first</source>
         <extracomment>%1 is a GEMMA step, e.g. A3</extracomment>
         <translation>%1 ist ausgeblendet und kann nicht der Anfangsschritt sein; blenden Sie ihn zuerst ein</translation>
+    </message>
+</context>
+<context>
+    <name>MachineDiagnosticText</name>
+    <message>
+        <source>an input</source>
+        <translation>ein Eingang</translation>
+    </message>
+    <message>
+        <source>an output</source>
+        <translation>ein Ausgang</translation>
+    </message>
+    <message>
+        <source>an internal variable</source>
+        <translation>eine interne Variable</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal names &apos;%3&apos;, which is no variable of the model.</source>
+        <extracomment>%1: a machine component; %2: its role (extend, retracted...); %3: a name</extracomment>
+        <translation>Das Signal %2 von %1 nennt &apos;%3&apos;, das keine Variable des Modells ist.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal is %3, %4; it needs %5.</source>
+        <extracomment>%1: a machine component; %2: its role; %3: a variable; %4, %5: &quot;an input&quot;, &quot;an output&quot;...</extracomment>
+        <translation>Das Signal %2 von %1 ist %3, %4; es braucht %5.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal is %3, of type %4; a machine signal is BOOL.</source>
+        <extracomment>%4: an IEC type (INT)</extracomment>
+        <translation>Das Signal %2 von %1 ist %3 vom Typ %4; ein Maschinensignal ist BOOL.</translation>
+    </message>
+    <message>
+        <source>%3 is wired to %1&apos;s %2 signal and to %4&apos;s %5 signal: an input has one source.</source>
+        <extracomment>%1, %4: machine components; %2, %5: their roles; %3: the input both are wired to</extracomment>
+        <translation>%3 ist mit dem Signal %2 von %1 und dem Signal %5 von %4 verdrahtet: ein Eingang hat eine Quelle.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal %3 is driven by no action of the program: the component never moves.</source>
+        <translation>Das Signal %2 (%3) von %1 wird von keiner Aktion des Programms angesteuert: die Komponente bewegt sich nie.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 is %3: out of range (travel times 1 to 3600000 ms, delays 0 to 3600000 ms, parts 0 to 1000000000).</source>
+        <extracomment>%2: a parameter (extendMs, onDelayMs, parts); %3: its value</extracomment>
+        <translation>%2 von %1 ist %3: außerhalb des Bereichs (Verfahrzeiten 1 bis 3600000 ms, Verzögerungen 0 bis 3600000 ms, Teile 0 bis 1000000000).</translation>
+    </message>
+    <message>
+        <source>%1 has no variable for its %2 signal.</source>
+        <translation>%1 hat keine Variable für sein Signal %2.</translation>
+    </message>
+    <message>
+        <source>%1 feeds &apos;%2&apos;, which is no conveyor of the machine.</source>
+        <translation>%1 beschickt &apos;%2&apos;, das kein Förderband der Maschine ist.</translation>
     </message>
 </context>
 <context>
@@ -2259,6 +2311,11 @@
         <source>a %1 in scan %2 right after the one of line %3 is not seen: the request must be FALSE for one scan in between</source>
         <extracomment>%1: &quot;command&quot; or &quot;mode&quot; (scenario syntax); %2: a scan number; %3: a line number</extracomment>
         <translation>ein %1 in Zyklus %2 direkt nach dem aus Zeile %3 wird nicht erkannt: die Anforderung muss dazwischen einen Zyklus lang FALSE sein</translation>
+    </message>
+    <message>
+        <source>%1 is a sensor of the machine&apos;s %2: the machine sets it; set it by hand in open loop only</source>
+        <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Clamp&quot;)</extracomment>
+        <translation>%1 ist ein Sensor der Maschinenkomponente %2: die Maschine setzt ihn; setzen Sie ihn nur im offenen Regelkreis von Hand</translation>
     </message>
 </context>
 <context>
@@ -4857,6 +4914,11 @@ Die Betriebsarten 1 bis 3 sind Production, Maintenance und Manual.</translation>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <source>machine component %1</source>
+        <extracomment>A component of the virtual machine: &quot;machine component Clamp&quot;</extracomment>
+        <translation>Maschinenkomponente %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::PropertiesPanel</name>
@@ -6156,6 +6218,19 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
         <translation>Nichts ist verletzt, aber einige Eigenschaften sind unentschieden: siehe die Befunde (%1 Konfigurationen der GEMMA-Ebene und %2 Programmzustände beider Ebenen erkundet).</translation>
+    </message>
+    <message>
+        <source>&amp;Time limit:</source>
+        <translation>&amp;Zeitlimit:</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <extracomment>The unit after the verification&apos;s time limit: &quot;4 s&quot;</extracomment>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How long a verification may run. Past it, what is not decided yet is reported as undecided (GV100) with how far the exploration got: give more time and verify again.</source>
+        <translation>Wie lange eine Verifikation laufen darf. Danach wird, was noch nicht entschieden ist, als unentschieden (GV100) gemeldet, mit dem Stand der Exploration: geben Sie mehr Zeit und verifizieren Sie erneut.</translation>
     </message>
 </context>
 <context>

@@ -411,10 +411,6 @@
         <translation>La condición de %1 es FALSE: la transición nunca puede franquearse (ocúltela en su lugar).</translation>
     </message>
     <message>
-        <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
-        <translation>La variable &apos;%1&apos; no se usa en ninguna condición de transición visible.</translation>
-    </message>
-    <message>
         <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
         <translation>La etapa %1 no es alcanzable desde la etapa inicial %2 a través de transiciones visibles: nunca puede activarse.</translation>
     </message>
@@ -707,6 +703,10 @@
         <source>Not confirmed: its counterexample does not replay to it in the simulator.</source>
         <translation>No confirmado: su contraejemplo no lo reproduce en el simulador.</translation>
     </message>
+    <message>
+        <source>Variable &apos;%1&apos; is used by no condition, receptivity or action that generates code.</source>
+        <translation>La variable &apos;%1&apos; no la usa ninguna condición, receptividad o acción que genere código.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -814,6 +814,58 @@
         <source>%1 is hidden and cannot be the initial step; show it first</source>
         <extracomment>%1 is a GEMMA step, e.g. A3</extracomment>
         <translation>%1 está oculta y no puede ser la etapa inicial; muéstrela primero</translation>
+    </message>
+</context>
+<context>
+    <name>MachineDiagnosticText</name>
+    <message>
+        <source>an input</source>
+        <translation>una entrada</translation>
+    </message>
+    <message>
+        <source>an output</source>
+        <translation>una salida</translation>
+    </message>
+    <message>
+        <source>an internal variable</source>
+        <translation>una variable interna</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal names &apos;%3&apos;, which is no variable of the model.</source>
+        <extracomment>%1: a machine component; %2: its role (extend, retracted...); %3: a name</extracomment>
+        <translation>La señal %2 de %1 nombra &apos;%3&apos;, que no es una variable del modelo.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal is %3, %4; it needs %5.</source>
+        <extracomment>%1: a machine component; %2: its role; %3: a variable; %4, %5: &quot;an input&quot;, &quot;an output&quot;...</extracomment>
+        <translation>La señal %2 de %1 es %3, %4; necesita %5.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal is %3, of type %4; a machine signal is BOOL.</source>
+        <extracomment>%4: an IEC type (INT)</extracomment>
+        <translation>La señal %2 de %1 es %3, de tipo %4; una señal de la máquina es BOOL.</translation>
+    </message>
+    <message>
+        <source>%3 is wired to %1&apos;s %2 signal and to %4&apos;s %5 signal: an input has one source.</source>
+        <extracomment>%1, %4: machine components; %2, %5: their roles; %3: the input both are wired to</extracomment>
+        <translation>%3 está cableada a la señal %2 de %1 y a la señal %5 de %4: una entrada tiene una sola fuente.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal %3 is driven by no action of the program: the component never moves.</source>
+        <translation>La señal %2 (%3) de %1 no la acciona ninguna acción del programa: el componente nunca se mueve.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 is %3: out of range (travel times 1 to 3600000 ms, delays 0 to 3600000 ms, parts 0 to 1000000000).</source>
+        <extracomment>%2: a parameter (extendMs, onDelayMs, parts); %3: its value</extracomment>
+        <translation>%2 de %1 vale %3: fuera de rango (tiempos de recorrido de 1 a 3600000 ms, retardos de 0 a 3600000 ms, piezas de 0 a 1000000000).</translation>
+    </message>
+    <message>
+        <source>%1 has no variable for its %2 signal.</source>
+        <translation>%1 no tiene variable para su señal %2.</translation>
+    </message>
+    <message>
+        <source>%1 feeds &apos;%2&apos;, which is no conveyor of the machine.</source>
+        <translation>%1 alimenta &apos;%2&apos;, que no es un transportador de la máquina.</translation>
     </message>
 </context>
 <context>
@@ -2259,6 +2311,11 @@
         <source>a %1 in scan %2 right after the one of line %3 is not seen: the request must be FALSE for one scan in between</source>
         <extracomment>%1: &quot;command&quot; or &quot;mode&quot; (scenario syntax); %2: a scan number; %3: a line number</extracomment>
         <translation>un %1 en el ciclo %2, justo después del de la línea %3, no se detecta: la petición debe estar en FALSE durante un ciclo entre ambos</translation>
+    </message>
+    <message>
+        <source>%1 is a sensor of the machine&apos;s %2: the machine sets it; set it by hand in open loop only</source>
+        <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Clamp&quot;)</extracomment>
+        <translation>%1 es un sensor del componente %2 de la máquina: la máquina lo fija; fíjelo a mano solo en lazo abierto</translation>
     </message>
 </context>
 <context>
@@ -4857,6 +4914,11 @@ Los modos 1 a 3 son Production, Maintenance y Manual.</translation>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <source>machine component %1</source>
+        <extracomment>A component of the virtual machine: &quot;machine component Clamp&quot;</extracomment>
+        <translation>componente de máquina %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::PropertiesPanel</name>
@@ -6156,6 +6218,19 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
         <translation>Nada se incumple, pero algunas propiedades están sin decidir: vea los resultados (%1 configuraciones del nivel GEMMA y %2 estados del programa de los dos niveles explorados).</translation>
+    </message>
+    <message>
+        <source>&amp;Time limit:</source>
+        <translation>&amp;Límite de tiempo:</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <extracomment>The unit after the verification&apos;s time limit: &quot;4 s&quot;</extracomment>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How long a verification may run. Past it, what is not decided yet is reported as undecided (GV100) with how far the exploration got: give more time and verify again.</source>
+        <translation>Cuánto puede durar una verificación. Pasado ese tiempo, lo que aún no está decidido se indica como sin decidir (GV100), con hasta dónde llegó la exploración: dé más tiempo y vuelva a verificar.</translation>
     </message>
 </context>
 <context>

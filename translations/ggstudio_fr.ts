@@ -411,10 +411,6 @@
         <translation>La réceptivité de %1 est FALSE&#xa0;: la transition ne peut jamais être franchie (masquez-la plutôt).</translation>
     </message>
     <message>
-        <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
-        <translation>La variable &apos;%1&apos; n&apos;est utilisée dans aucune réceptivité de transition visible.</translation>
-    </message>
-    <message>
         <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
         <translation>L&apos;étape %1 n&apos;est pas accessible depuis l&apos;étape initiale %2 par des transitions visibles&#xa0;: elle ne peut jamais devenir active.</translation>
     </message>
@@ -707,6 +703,10 @@
         <source>Not confirmed: its counterexample does not replay to it in the simulator.</source>
         <translation>Non confirmé : son contre-exemple ne le reproduit pas dans le simulateur.</translation>
     </message>
+    <message>
+        <source>Variable &apos;%1&apos; is used by no condition, receptivity or action that generates code.</source>
+        <translation>La variable &apos;%1&apos; n&apos;est utilisée par aucune condition, réceptivité ou action qui génère du code.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -814,6 +814,58 @@
         <source>%1 is hidden and cannot be the initial step; show it first</source>
         <extracomment>%1 is a GEMMA step, e.g. A3</extracomment>
         <translation>%1 est masquée et ne peut pas être l&apos;étape initiale ; affichez-la d&apos;abord</translation>
+    </message>
+</context>
+<context>
+    <name>MachineDiagnosticText</name>
+    <message>
+        <source>an input</source>
+        <translation>une entrée</translation>
+    </message>
+    <message>
+        <source>an output</source>
+        <translation>une sortie</translation>
+    </message>
+    <message>
+        <source>an internal variable</source>
+        <translation>une variable interne</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal names &apos;%3&apos;, which is no variable of the model.</source>
+        <extracomment>%1: a machine component; %2: its role (extend, retracted...); %3: a name</extracomment>
+        <translation>Le signal %2 de %1 désigne « %3 », qui n&apos;est pas une variable du modèle.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal is %3, %4; it needs %5.</source>
+        <extracomment>%1: a machine component; %2: its role; %3: a variable; %4, %5: &quot;an input&quot;, &quot;an output&quot;...</extracomment>
+        <translation>Le signal %2 de %1 est %3, %4 ; il lui faut %5.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal is %3, of type %4; a machine signal is BOOL.</source>
+        <extracomment>%4: an IEC type (INT)</extracomment>
+        <translation>Le signal %2 de %1 est %3, de type %4 ; un signal de la machine est BOOL.</translation>
+    </message>
+    <message>
+        <source>%3 is wired to %1&apos;s %2 signal and to %4&apos;s %5 signal: an input has one source.</source>
+        <extracomment>%1, %4: machine components; %2, %5: their roles; %3: the input both are wired to</extracomment>
+        <translation>%3 est câblée au signal %2 de %1 et au signal %5 de %4 : une entrée a une seule source.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal %3 is driven by no action of the program: the component never moves.</source>
+        <translation>Le signal %2 (%3) de %1 n&apos;est piloté par aucune action du programme : le composant ne bouge jamais.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 is %3: out of range (travel times 1 to 3600000 ms, delays 0 to 3600000 ms, parts 0 to 1000000000).</source>
+        <extracomment>%2: a parameter (extendMs, onDelayMs, parts); %3: its value</extracomment>
+        <translation>%2 de %1 vaut %3 : hors limites (temps de course 1 à 3600000 ms, retards 0 à 3600000 ms, pièces 0 à 1000000000).</translation>
+    </message>
+    <message>
+        <source>%1 has no variable for its %2 signal.</source>
+        <translation>%1 n&apos;a pas de variable pour son signal %2.</translation>
+    </message>
+    <message>
+        <source>%1 feeds &apos;%2&apos;, which is no conveyor of the machine.</source>
+        <translation>%1 alimente « %2 », qui n&apos;est pas un convoyeur de la machine.</translation>
     </message>
 </context>
 <context>
@@ -2259,6 +2311,11 @@
         <source>a %1 in scan %2 right after the one of line %3 is not seen: the request must be FALSE for one scan in between</source>
         <extracomment>%1: &quot;command&quot; or &quot;mode&quot; (scenario syntax); %2: a scan number; %3: a line number</extracomment>
         <translation>un %1 au cycle %2, juste après celui de la ligne %3, n&apos;est pas vu : la demande doit rester FALSE pendant un cycle entre les deux</translation>
+    </message>
+    <message>
+        <source>%1 is a sensor of the machine&apos;s %2: the machine sets it; set it by hand in open loop only</source>
+        <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Clamp&quot;)</extracomment>
+        <translation>%1 est un capteur du composant %2 de la machine : la machine le positionne ; ne le forcez à la main qu&apos;en boucle ouverte</translation>
     </message>
 </context>
 <context>
@@ -4857,6 +4914,11 @@ Les modes 1 à 3 sont Production, Maintenance et Manual.</translation>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <source>machine component %1</source>
+        <extracomment>A component of the virtual machine: &quot;machine component Clamp&quot;</extracomment>
+        <translation>composant machine %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::PropertiesPanel</name>
@@ -6156,6 +6218,19 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
         <translation>Rien n&apos;est violé, mais certaines propriétés sont indécises : voir les résultats (%1 configurations du niveau GEMMA et %2 états du programme des deux niveaux explorés).</translation>
+    </message>
+    <message>
+        <source>&amp;Time limit:</source>
+        <translation>&amp;Limite de temps :</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <extracomment>The unit after the verification&apos;s time limit: &quot;4 s&quot;</extracomment>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How long a verification may run. Past it, what is not decided yet is reported as undecided (GV100) with how far the exploration got: give more time and verify again.</source>
+        <translation>Durée maximale d&apos;une vérification. Au-delà, ce qui n&apos;est pas encore décidé est signalé comme indécis (GV100), avec l&apos;avancement de l&apos;exploration : donnez plus de temps et vérifiez à nouveau.</translation>
     </message>
 </context>
 <context>

@@ -411,10 +411,6 @@
         <translation>La condizione di %1 è FALSE: la transizione non può mai scattare (meglio nasconderla).</translation>
     </message>
     <message>
-        <source>Variable &apos;%1&apos; is not used by any visible transition condition.</source>
-        <translation>La variabile &apos;%1&apos; non è usata da alcuna condizione di transizione visibile.</translation>
-    </message>
-    <message>
         <source>Step %1 cannot be reached from the initial step %2 through visible transitions: it can never become active.</source>
         <translation>La tappa %1 non è raggiungibile dalla tappa iniziale %2 tramite transizioni visibili: non può mai diventare attiva.</translation>
     </message>
@@ -707,6 +703,10 @@
         <source>Not confirmed: its counterexample does not replay to it in the simulator.</source>
         <translation>Non confermato: il suo controesempio non lo riproduce nel simulatore.</translation>
     </message>
+    <message>
+        <source>Variable &apos;%1&apos; is used by no condition, receptivity or action that generates code.</source>
+        <translation>La variabile &apos;%1&apos; non è usata da alcuna condizione, recettività o azione che genera codice.</translation>
+    </message>
 </context>
 <context>
     <name>ElementLabels</name>
@@ -814,6 +814,58 @@
         <source>%1 is hidden and cannot be the initial step; show it first</source>
         <extracomment>%1 is a GEMMA step, e.g. A3</extracomment>
         <translation>%1 è nascosta e non può essere la fase iniziale; mostrarla prima</translation>
+    </message>
+</context>
+<context>
+    <name>MachineDiagnosticText</name>
+    <message>
+        <source>an input</source>
+        <translation>un ingresso</translation>
+    </message>
+    <message>
+        <source>an output</source>
+        <translation>un&apos;uscita</translation>
+    </message>
+    <message>
+        <source>an internal variable</source>
+        <translation>una variabile interna</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal names &apos;%3&apos;, which is no variable of the model.</source>
+        <extracomment>%1: a machine component; %2: its role (extend, retracted...); %3: a name</extracomment>
+        <translation>Il segnale %2 di %1 indica &apos;%3&apos;, che non è una variabile del modello.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal is %3, %4; it needs %5.</source>
+        <extracomment>%1: a machine component; %2: its role; %3: a variable; %4, %5: &quot;an input&quot;, &quot;an output&quot;...</extracomment>
+        <translation>Il segnale %2 di %1 è %3, %4; serve %5.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal is %3, of type %4; a machine signal is BOOL.</source>
+        <extracomment>%4: an IEC type (INT)</extracomment>
+        <translation>Il segnale %2 di %1 è %3, di tipo %4; un segnale della macchina è BOOL.</translation>
+    </message>
+    <message>
+        <source>%3 is wired to %1&apos;s %2 signal and to %4&apos;s %5 signal: an input has one source.</source>
+        <extracomment>%1, %4: machine components; %2, %5: their roles; %3: the input both are wired to</extracomment>
+        <translation>%3 è collegato al segnale %2 di %1 e al segnale %5 di %4: un ingresso ha una sola sorgente.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 signal %3 is driven by no action of the program: the component never moves.</source>
+        <translation>Il segnale %2 (%3) di %1 non è comandato da nessuna azione del programma: il componente non si muove mai.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s %2 is %3: out of range (travel times 1 to 3600000 ms, delays 0 to 3600000 ms, parts 0 to 1000000000).</source>
+        <extracomment>%2: a parameter (extendMs, onDelayMs, parts); %3: its value</extracomment>
+        <translation>%2 di %1 vale %3: fuori intervallo (tempi di corsa da 1 a 3600000 ms, ritardi da 0 a 3600000 ms, pezzi da 0 a 1000000000).</translation>
+    </message>
+    <message>
+        <source>%1 has no variable for its %2 signal.</source>
+        <translation>%1 non ha una variabile per il suo segnale %2.</translation>
+    </message>
+    <message>
+        <source>%1 feeds &apos;%2&apos;, which is no conveyor of the machine.</source>
+        <translation>%1 alimenta &apos;%2&apos;, che non è un nastro trasportatore della macchina.</translation>
     </message>
 </context>
 <context>
@@ -2259,6 +2311,11 @@
         <source>a %1 in scan %2 right after the one of line %3 is not seen: the request must be FALSE for one scan in between</source>
         <extracomment>%1: &quot;command&quot; or &quot;mode&quot; (scenario syntax); %2: a scan number; %3: a line number</extracomment>
         <translation>un %1 nel ciclo %2 subito dopo quello della riga %3 non viene visto: la richiesta deve restare FALSE per un ciclo nel mezzo</translation>
+    </message>
+    <message>
+        <source>%1 is a sensor of the machine&apos;s %2: the machine sets it; set it by hand in open loop only</source>
+        <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Clamp&quot;)</extracomment>
+        <translation>%1 è un sensore del componente %2 della macchina: la macchina lo imposta; impostarlo a mano solo in anello aperto</translation>
     </message>
 </context>
 <context>
@@ -4857,6 +4914,11 @@ I modi da 1 a 3 sono Production, Maintenance e Manual.</translation>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
+    <message>
+        <source>machine component %1</source>
+        <extracomment>A component of the virtual machine: &quot;machine component Clamp&quot;</extracomment>
+        <translation>componente macchina %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::PropertiesPanel</name>
@@ -6156,6 +6218,19 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>Nothing is violated, but some properties are undecided: see the findings (%1 configurations of the GEMMA layer and %2 program states of both layers explored).</source>
         <translation>Nulla è violato, ma alcune proprietà sono indecise: vedi i risultati (%1 configurazioni del livello GEMMA e %2 stati del programma dei due livelli esplorati).</translation>
+    </message>
+    <message>
+        <source>&amp;Time limit:</source>
+        <translation>&amp;Limite di tempo:</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <extracomment>The unit after the verification&apos;s time limit: &quot;4 s&quot;</extracomment>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How long a verification may run. Past it, what is not decided yet is reported as undecided (GV100) with how far the exploration got: give more time and verify again.</source>
+        <translation>Quanto può durare una verifica. Oltre questo tempo, ciò che non è ancora deciso viene segnalato come indeciso (GV100), con il punto raggiunto dall&apos;esplorazione: concedete più tempo e verificate di nuovo.</translation>
     </message>
 </context>
 <context>
