@@ -157,6 +157,9 @@ public:
     // `expect step` / `expect nested` at the last scan. `title` is the
     // leading comment. Replayed in the simulator to confirm it; for a
     // property, the property is also evaluated on the replay's last scan.
+    // Under the timer abstraction the run is first stretched: before a scan
+    // where a TON elapses sooner than the PLC's would, scans in which only
+    // time passes are inserted, as many as it still needs.
     Counterexample counterexample(const Event& event, const std::string& title) const;
 
 private:
