@@ -146,16 +146,33 @@ void BothLayers::run()
 
 // Under the timer abstraction a run may let a TON elapse sooner than the PLC
 // would: such counterexamples do not replay. Exploring again with time
-// counted in scans finds the real run, or shows there is none.
+// counted in scans finds the real run, or shows there is none. That
+// exploration is a search for the runs that do not replay: it stops once
+// it has found them all (counting time in scans multiplies the states by
+// the TONs' durations in scans), and runs to the end only when one of them
+// has no real run.
 void BothLayers::refine()
 {
     if (m_options.exactTime || !hasLongTimers(m_program, m_model.settings().cycleTimeMs))
         return;
-    const bool anyPath = std::any_of(m_explorer->result().events.begin(), m_explorer->result().events.end(),
-                                     [](const Event& event) { return !event.stateOnly; });
+    const std::vector<Event>& events = m_explorer->result().events;
+    const bool anyPath
+        = std::any_of(events.begin(), events.end(), [](const Event& event) { return !event.stateOnly; });
     if (!anyPath)
         return;
-    m_exact = std::make_unique<explore::ProgramExplorer>(m_model, explorationOptions(true));
+    // add() looks for a run counted in scans only where the abstract one does
+    // not replay; an AlwaysTrue's run only illustrates it and is never sought.
+    std::set<std::string> unconfirmed;
+    for (const Event& event : events) {
+        if (event.kind != EventKind::AlwaysTrue && !m_explorer->counterexample(event, "replay").confirmed)
+            unconfirmed.insert(eventKey(event));
+    }
+    if (unconfirmed.empty())
+        return;
+    explore::Options options = explorationOptions(true);
+    if (!m_options.wholeExactTimeExploration)
+        options.searchFor = std::move(unconfirmed);
+    m_exact = std::make_unique<explore::ProgramExplorer>(m_model, std::move(options));
     const explore::Exploration& exact = m_exact->run();
     for (const Event& event : exact.events)
         m_exactKeys.insert(eventKey(event));

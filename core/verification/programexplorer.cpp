@@ -106,6 +106,13 @@ struct NodeInfo {
     std::string text;     // Opaque: its canonical text (its identity within a scan)
     bool negated = false; // Opaque: the node is the negation of that canonical comparison
     std::shared_ptr<cond::Expression> sub; // Exact: the comparison as an expression of its own
+    // BoolRead, Edge in a nested GRAFCET: the index of the variable among the
+    // outputs of the GRAFCET it is compiled for (owner), -1 when not one of
+    // them; Literal: 1 for TRUE. Looked up once here rather than by name at
+    // every read.
+    int ownOutput = -1;
+    int owner = -1;
+    bool literalTrue = false;
     // Exact on a free numeric variable: bit i set when its representative i makes it TRUE (computed at first use).
     mutable std::uint64_t truth = 0;
     mutable bool truthKnown = false;
@@ -340,6 +347,7 @@ struct ProgramExplorer::Impl {
     bool testNumber(const ExpressionInfo& info, const NodeInfo& n);
     bool choose(Decision::Kind kind, int slot);
     bool eval(const ExpressionInfo& info, int node);
+    int ownOutputIndex(const NodeInfo& n, const std::string& name) const;
     bool evalNode(const ExpressionInfo& info, int node);
     void initializationCall(const CompiledStep& step);
     void evolvingCall(const CompiledStep& step, ScanOutcome& outcome);
@@ -368,9 +376,18 @@ struct ProgramExplorer::Impl {
     void probeScans(std::size_t state, std::size_t& leaves,
                     std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound);
     bool worthProbing(int step, const std::set<std::pair<int, std::pair<std::size_t, std::size_t>>>& overlapFound) const;
+    void compileSearchedOverlaps();
+    void probeSearchedOverlaps(std::size_t state);
+    void noteSearched(const std::string& key);
     bool outOfBudget();
 
     // --- counterexamples -------------------------------------------------------------------
+    using Path = std::vector<std::pair<std::size_t, std::vector<int>>>;
+    Path stretchForTimers(const Path& path, const Event& event);
+    std::optional<std::pair<std::size_t, std::vector<int>>> stutter(std::size_t state);
+    std::int64_t missingRuns(std::size_t from, const std::vector<std::int64_t>& counts) const;
+    void replayScan(std::size_t from, const std::vector<int>& answers, const Event& event, bool witnessScan);
+    std::vector<std::int64_t> countRuns(const std::vector<std::int64_t>& counts, std::int64_t scans) const;
     std::vector<std::pair<std::size_t, std::vector<int>>> pathTo(std::size_t state) const;
     std::vector<int> answersTo(std::size_t from, std::size_t to) const;
 
@@ -418,6 +435,17 @@ struct ProgramExplorer::Impl {
     std::map<int, std::pair<int, bool>> writes; // slot -> (step index, value) within the scan
     bool propertyPhase = false;
     int newStep = -1;
+    // What the TONs did in the scan being replayed (logTimers), for
+    // stretchForTimers: by timer of the active GRAFCET, -1 not run, else IN;
+    // reset: set to 0 after its run (its step entered); initialized: the
+    // Initialization call set them all to 0 before their run.
+    struct TimerLog {
+        std::vector<int> in;
+        std::vector<char> reset;
+        bool initialized = false;
+    };
+    bool logTimers = false;
+    TimerLog timerLog;
     Probe probe;                 // the probe the scans run
     std::vector<char> probeTrue; // by position in the probed step: its gated condition in the last scan
     std::vector<char> failSeen; // by global transition: its gated condition was FALSE in some scan
@@ -443,6 +471,11 @@ struct ProgramExplorer::Impl {
         Witness witness;
     };
     std::vector<FirstFire> firstFire; // by global transition: the first (shortest) scan that fires it
+    // GV104 pairs (step, (higher, lower)) found by a probe, while searching and after the exploration.
+    std::set<std::pair<int, std::pair<std::size_t, std::size_t>>> overlapFound;
+    // Options::searchFor: the keys found so far, and by step index the Overlap keys searched for.
+    std::size_t searchedFound = 0;
+    std::vector<std::vector<std::string>> searchedOverlaps;
     Exploration result;
     std::chrono::steady_clock::time_point started;
     std::size_t scansRun = 0;
@@ -814,6 +847,13 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
 {
     (void)step;
     collectComparisons(expression);
+    const auto ownOutputOf = [&](NodeInfo& n, const std::string& name) {
+        if (!grafcet)
+            return;
+        n.owner = static_cast<int>(grafcet - grafcets.data());
+        auto own = grafcet->ownOutput.find(upper(name));
+        n.ownOutput = own == grafcet->ownOutput.end() ? -1 : own->second;
+    };
     auto out = std::make_unique<ExpressionInfo>();
     out->expression = &expression;
     out->nodes.resize(expression.nodes.size());
@@ -827,10 +867,14 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
             continue;
         }
         switch (node.kind) {
-        case cond::NodeKind::BoolLiteral: n.role = NodeRole::Literal; break;
+        case cond::NodeKind::BoolLiteral:
+            n.role = NodeRole::Literal;
+            n.literalTrue = upper(node.text) == "TRUE";
+            break;
         case cond::NodeKind::Variable: {
             n.slot = slotOf(node.text);
             n.role = NodeRole::BoolRead;
+            ownOutputOf(n, node.text);
             break;
         }
         case cond::NodeKind::StepActivity:
@@ -873,6 +917,7 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
             } else if (node.unaryOp == cond::UnaryOp::RisingEdge || node.unaryOp == cond::UnaryOp::FallingEdge) {
                 n.role = NodeRole::Edge;
                 n.slot = slotOf(expression.at(node.operand).text);
+                ownOutputOf(n, expression.at(node.operand).text);
             }
             break;
         case cond::NodeKind::Binary: {
@@ -1056,6 +1101,17 @@ bool ProgramExplorer::Impl::testNumber(const ExpressionInfo& info, const NodeInf
     return value;
 }
 
+// The index among the active GRAFCET's outputs of the variable a node reads,
+// -1 when not one of them: compiled for the expressions of that GRAFCET,
+// looked up by name for any other (none is evaluated while it is active).
+int ProgramExplorer::Impl::ownOutputIndex(const NodeInfo& n, const std::string& name) const
+{
+    if (n.owner >= 0 && &grafcets[static_cast<std::size_t>(n.owner)] == activeGrafcet)
+        return n.ownOutput;
+    auto own = activeGrafcet->ownOutput.find(upper(name));
+    return own == activeGrafcet->ownOutput.end() ? -1 : own->second;
+}
+
 bool ProgramExplorer::Impl::eval(const ExpressionInfo& info, int node)
 {
     if (!info.expression || info.expression->root < 0)
@@ -1069,12 +1125,12 @@ bool ProgramExplorer::Impl::evalNode(const ExpressionInfo& info, int index)
     const NodeInfo& n = info.nodes[static_cast<std::size_t>(index)];
     const auto u = [](int i) { return static_cast<std::size_t>(i); };
     switch (n.role) {
-    case NodeRole::Literal: return upper(node.text) == "TRUE";
+    case NodeRole::Literal: return n.literalTrue;
     case NodeRole::BoolRead: {
         if (activeGrafcet && !propertyPhase) {
-            auto own = activeGrafcet->ownOutput.find(upper(node.text));
-            if (own != activeGrafcet->ownOutput.end())
-                return work[u(layout.outputs + own->second)] != 0;
+            const int own = ownOutputIndex(n, node.text);
+            if (own >= 0)
+                return work[u(layout.outputs + own)] != 0;
         }
         return readBool(n.slot);
     }
@@ -1093,12 +1149,8 @@ bool ProgramExplorer::Impl::evalNode(const ExpressionInfo& info, int index)
     case NodeRole::Edge: {
         if (!firstEvolution || n.slot < 0)
             return false;
-        const std::string name = upper(info.expression->at(node.operand).text);
-        bool now = false;
-        if (activeGrafcet && activeGrafcet->ownOutput.count(name))
-            now = work[u(layout.outputs + activeGrafcet->ownOutput.at(name))] != 0;
-        else
-            now = readBool(n.slot);
+        const int own = activeGrafcet ? ownOutputIndex(n, info.expression->at(node.operand).text) : -1;
+        const bool now = own >= 0 ? work[u(layout.outputs + own)] != 0 : readBool(n.slot);
         const int edge = slots[u(n.slot)].edge;
         const bool before = edge >= 0 && work[u(layout.prev + edge)] != 0;
         return node.unaryOp == cond::UnaryOp::RisingEdge ? now && !before : !now && before;
@@ -1171,6 +1223,8 @@ void ProgramExplorer::Impl::setTimerState(int timer, std::int64_t value)
 void ProgramExplorer::Impl::runTimer(const CompiledGrafcet& g, int timer, bool in)
 {
     const auto t = static_cast<std::size_t>(timer);
+    if (logTimers)
+        timerLog.in[t] = in ? 1 : 0;
     const std::int64_t state = timerState(timer);
     if (!in)
         setTimerState(timer, 0);
@@ -1335,6 +1389,7 @@ void ProgramExplorer::Impl::initializationCall(const CompiledStep& step)
     work[static_cast<std::size_t>(layout.complete)] = 0;
     for (std::size_t t = 0; t < g.timerStep.size(); ++t)
         setTimerState(static_cast<int>(t), 0);
+    timerLog.initialized = true;
     for (std::size_t i = 0; i < g.numbers.size(); ++i) {
         if (g.initial[i])
             runStored(step, static_cast<int>(i), g.onActivation[i], ignored);
@@ -1428,6 +1483,8 @@ bool ProgramExplorer::Impl::evolve(const CompiledStep& step, bool first, ScanOut
         for (int timer : g.timersOfStep[u(i)]) {
             setTimerState(timer, 0);
             timerCache[u(timer)] = -1;
+            if (logTimers)
+                timerLog.reset[u(timer)] = 1;
         }
     }
     return true;
@@ -1471,6 +1528,11 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
     std::fill(numberCache.begin(), numberCache.end(), -1);
     std::fill(numberPossible.begin(), numberPossible.end(), 0);
     std::fill(timerCache.begin(), timerCache.end(), -1);
+    if (logTimers) {
+        timerLog.in.assign(timerCache.size(), -1);
+        timerLog.reset.assign(timerCache.size(), 0);
+        timerLog.initialized = false;
+    }
     opaqueCache.clear();
     writes.clear();
     propertyPhase = false;
@@ -1636,6 +1698,7 @@ void ProgramExplorer::Impl::addEvent(Event event, std::size_t state, bool gemmaF
         return;
     }
     eventKeys.insert(key);
+    noteSearched(key);
     event.witness.state = state;
     event.witness.answers = chooser.answers();
     eventAt.emplace(key, std::make_pair(result.events.size(), gemmaFired));
@@ -1652,6 +1715,7 @@ void ProgramExplorer::Impl::explore()
     depth.push_back(0);
     edges.emplace_back();
     std::vector<bool> reached(steps.size(), false);
+    compileSearchedOverlaps();
     polling = true;
     for (std::size_t next = 0; next < statesByIndex.size(); ++next) {
         if ((next & 63) == 0 && outOfBudget()) {
@@ -1664,6 +1728,13 @@ void ProgramExplorer::Impl::explore()
         if (!exploreState(next, from)) {
             result.exhaustive = false;
             break;
+        }
+        if (!options.searchFor.empty()) {
+            probeSearchedOverlaps(next);
+            if (searchedFound == options.searchFor.size()) {
+                result.exhaustive = false; // every run searched for is found: the rest is left unexplored
+                break;
+            }
         }
     }
     finishExploration(reached);
@@ -1753,7 +1824,6 @@ void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
 void ProgramExplorer::Impl::probePriorities()
 {
     const auto u = [](auto i) { return static_cast<std::size_t>(i); };
-    std::set<std::pair<int, std::pair<std::size_t, std::size_t>>> overlapFound;
     for (std::size_t s = 0; s < statesByIndex.size() && result.prioritiesDecided; ++s) {
         const int active = stepIndexOf(*statesByIndex[s]);
         if (active >= 0 && worthProbing(active, overlapFound))
@@ -1863,10 +1933,56 @@ void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
             event.numbers = {static_cast<int>(i), static_cast<int>(j)};
             event.transition = higher.source->id;
             event.witness = Witness{state, chooser.answers()};
-            eventKeys.insert(eventKey(event));
+            const std::string key = eventKey(event);
+            eventKeys.insert(key);
+            noteSearched(key);
             result.events.push_back(std::move(event));
         }
     } while (chooser.advance());
+}
+
+void ProgramExplorer::Impl::noteSearched(const std::string& key)
+{
+    if (options.searchFor.count(key))
+        ++searchedFound;
+}
+
+// By step index, the keys of the Overlap events Options::searchFor names.
+void ProgramExplorer::Impl::compileSearchedOverlaps()
+{
+    searchedOverlaps.assign(steps.size(), {});
+    if (options.searchFor.empty())
+        return;
+    for (std::size_t s = 0; s < steps.size(); ++s) {
+        const std::size_t count = steps[s].transitions.size();
+        for (std::size_t i = 0; i < count; ++i) {
+            for (std::size_t j = i + 1; j < count; ++j) {
+                Event event;
+                event.kind = EventKind::Overlap;
+                event.stepId = steps[s].source->id;
+                event.numbers = {static_cast<int>(i), static_cast<int>(j)};
+                event.transition = steps[s].transitions[i].source->id;
+                const std::string key = eventKey(event);
+                if (options.searchFor.count(key))
+                    searchedOverlaps[s].push_back(key);
+            }
+        }
+    }
+}
+
+// While searching: a state whose step has an Overlap searched for and not
+// found yet is probed as soon as it is explored (the exploration may stop
+// before probePriorities would run).
+void ProgramExplorer::Impl::probeSearchedOverlaps(std::size_t state)
+{
+    const int active = stepIndexOf(*statesByIndex[state]);
+    if (active < 0)
+        return;
+    const std::vector<std::string>& keys = searchedOverlaps[static_cast<std::size_t>(active)];
+    if (std::all_of(keys.begin(), keys.end(), [&](const std::string& key) { return eventKeys.count(key) > 0; }))
+        return;
+    probeState(state, overlapFound);
+    result.prioritiesDecided = true; // decided, or not, by the whole exploration's probePriorities alone
 }
 
 // The graph properties: from which states of a step something can still happen.
@@ -1978,6 +2094,127 @@ std::vector<int> ProgramExplorer::Impl::answersTo(std::size_t from, std::size_t 
     return {};
 }
 
+// A scan of the path again, as counterexample() replays it, with its TONs logged.
+void ProgramExplorer::Impl::replayScan(std::size_t from, const std::vector<int>& answers, const Event& event,
+                                       bool witnessScan)
+{
+    chooser.restart(&answers);
+    if (witnessScan && event.kind == EventKind::Overlap)
+        probe = Probe{stepIndexOf(*statesByIndex[from]), false};
+    logTimers = true;
+    State ignored;
+    scan(*statesByIndex[from], ignored);
+    logTimers = false;
+    probe = Probe{};
+}
+
+// The runs with IN TRUE of each TON, counted as exact time counts them, after
+// `scans` scans like the one just replayed (before the steps it enters reset them).
+std::vector<std::int64_t> ProgramExplorer::Impl::countRuns(const std::vector<std::int64_t>& counts,
+                                                           std::int64_t scans) const
+{
+    std::vector<std::int64_t> out(counts.size(), 0);
+    for (std::size_t t = 0; t < counts.size(); ++t) {
+        if (timerLog.in[t] > 0)
+            out[t] = (timerLog.initialized ? 0 : counts[t]) + scans;
+    }
+    return out;
+}
+
+// A scan from `state` in which time passes and nothing else does: no TON
+// elapses, and it ends in the same state or one that differs only by the
+// TONs' states (a TON whose step was just entered starts running); a scan
+// back to the state itself is preferred. The state it ends in, its answers.
+std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::stutter(std::size_t state)
+{
+    const State& from = *statesByIndex[state];
+    const auto timersOnly = [&](const State& next) {
+        return std::equal(from.begin(), from.begin() + layout.timers, next.begin())
+            && std::equal(from.begin() + layout.bools, from.end(), next.begin() + layout.bools);
+    };
+    std::optional<std::pair<std::size_t, std::vector<int>>> found;
+    chooser.reset();
+    do {
+        chooser.restart(nullptr);
+        State next;
+        scan(from, next);
+        const bool elapses = std::any_of(chooser.decisions.begin(), chooser.decisions.end(), [](const Decision& d) {
+            return d.kind == Decision::Kind::Timer && d.value != 0;
+        });
+        if (elapses || next.size() != from.size() || !timersOnly(next))
+            continue;
+        const auto known = index.find(next);
+        if (known == index.end())
+            continue;
+        if (known->second == state)
+            return std::make_pair(state, chooser.answers());
+        if (!found)
+            found = std::make_pair(std::size_t{known->second}, chooser.answers());
+    } while (chooser.advance());
+    return found;
+}
+
+// The TON runs still missing before the replayed scan's TONs may elapse as it chose.
+std::int64_t ProgramExplorer::Impl::missingRuns(std::size_t from, const std::vector<std::int64_t>& counts) const
+{
+    const int step = stepIndexOf(*statesByIndex[from]);
+    const int grafcet = step >= 0 ? steps[static_cast<std::size_t>(step)].grafcet : -1;
+    if (grafcet < 0 || timerLog.initialized)
+        return 0;
+    const std::vector<std::int64_t> runs = countRuns(counts, 1);
+    std::int64_t missing = 0;
+    for (const Decision& d : chooser.decisions) {
+        if (d.kind == Decision::Kind::Timer && d.value != 0) {
+            const auto t = static_cast<std::size_t>(d.slot);
+            missing = std::max(missing, grafcets[static_cast<std::size_t>(grafcet)].timerRuns[t] - runs[t]);
+        }
+    }
+    return missing;
+}
+
+// Under the timer abstraction a path may let a TON elapse at its second run,
+// which the PLC's does only after its duration: before such a scan, scans in
+// which only time passes (stutter) are inserted, as many as the TON still
+// needs (up to kMaxStretch in all), so that the run can replay. The replay in
+// the simulator still decides whether it does.
+ProgramExplorer::Impl::Path ProgramExplorer::Impl::stretchForTimers(const Path& path, const Event& event)
+{
+    constexpr std::int64_t kMaxStretch = 100'000;
+    if (options.exactTime || timerCache.empty())
+        return path;
+    Path out;
+    std::vector<std::int64_t> counts(timerCache.size(), 0);
+    std::int64_t inserted = 0;
+    for (std::size_t k = 0; k < path.size(); ++k) {
+        std::size_t from = path[k].first;
+        const std::vector<int>& answers = path[k].second;
+        const bool witnessScan = !event.stateOnly && k + 1 == path.size();
+        replayScan(from, answers, event, witnessScan);
+        for (std::int64_t missing = missingRuns(from, counts); missing > 0 && inserted + missing <= kMaxStretch;) {
+            const auto wait = stutter(from);
+            if (!wait)
+                break;
+            replayScan(from, wait->second, event, false);
+            // A scan back to the same state stands for all the runs missing; another for one.
+            const std::int64_t times = wait->first == from ? missing : 1;
+            counts = countRuns(counts, times);
+            out.insert(out.end(), static_cast<std::size_t>(times), {from, wait->second});
+            inserted += times;
+            from = wait->first;
+            replayScan(from, answers, event, witnessScan);
+            missing = missingRuns(from, counts);
+        }
+        counts = countRuns(counts, 1);
+        for (std::size_t t = 0; t < counts.size(); ++t) {
+            if (timerLog.reset[t])
+                counts[t] = 0;
+        }
+        out.emplace_back(from, answers);
+    }
+    chooser.reset();
+    return out;
+}
+
 std::vector<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::pathTo(std::size_t state) const
 {
     std::vector<std::size_t> chain;
@@ -2028,6 +2265,7 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     auto path = impl.pathTo(event.witness.state);
     if (!event.stateOnly)
         path.emplace_back(event.witness.state, event.witness.answers);
+    path = impl.stretchForTimers(path, event);
     std::ostringstream text;
     text << "# " << title << "\n";
     std::map<int, std::string> current; // slot -> value text the simulator holds

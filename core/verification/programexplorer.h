@@ -35,6 +35,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,6 +61,12 @@ struct Options {
     std::int64_t maxCountedTimerRuns = tonscans::kMaxCountedRuns;
     // Decide GV103 and GV104 (Exploration::alwaysTrueTransitions, overlaps).
     bool decidePriorities = true;
+    // A search for runs rather than a proof: the exploration stops (not
+    // exhaustive) as soon as it has found an event of each of these keys
+    // (eventKey). The Overlap events among them are probed state by state as
+    // the states are explored; the graph properties (Stuck, NoReturn, ...)
+    // are only found by a whole exploration. Empty: explore everything.
+    std::set<std::string> searchFor;
     std::size_t maxStates = 1'000'000;
     // Scans run (each way the inputs of a state go): a budget of work that,
     // unlike the deadline, ends at the same point on every machine.
@@ -150,6 +157,9 @@ public:
     // `expect step` / `expect nested` at the last scan. `title` is the
     // leading comment. Replayed in the simulator to confirm it; for a
     // property, the property is also evaluated on the replay's last scan.
+    // Under the timer abstraction the run is first stretched: before a scan
+    // where a TON elapses sooner than the PLC's would, scans in which only
+    // time passes are inserted, as many as it still needs.
     Counterexample counterexample(const Event& event, const std::string& title) const;
 
 private:

@@ -6,6 +6,7 @@
 // condition, 24 mixed operands per condition, and two conditions of about
 // 5,000 characters (which end with GV100 findings naming them).
 
+#include "core/checks/checks.h"
 #include "core/formats/modelfiles.h"
 #include "core/verification/verification.h"
 
@@ -95,4 +96,34 @@ TEST_CASE("Verification of both layers", "[bench][verification]")
     std::cout << "both layers, stress model: GG Studio " << ours << " ms (" << stressResult.programStates
               << " states), SPIN's pan " << theirs << " ms (" << report.statesStored
               << " states): GG Studio / SPIN = " << ours / theirs << "\n";
+}
+
+// Issue 36: a model of the size of a published case study
+// (factory::caseStudyModel), with the default options of the command line
+// and the editor (4 s), verified exhaustively within 1 s; SPIN's pan on its
+// exported Promela in the same run.
+TEST_CASE("Verification of the case-study model", "[bench][verification]")
+{
+    const core::Model model = factory::caseStudyModel();
+    REQUIRE_FALSE(core::hasErrors(core::checkModel(model)));
+    const auto started = std::chrono::steady_clock::now();
+    const core::VerificationResult first = core::verifyModel(model);
+    const double firstMs
+        = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    REQUIRE(first.programStates > 0);
+    std::cout << "case-study model: " << first.programStates << " program states, "
+              << (first.exhaustive ? "exhaustive" : "NOT exhaustive") << ", " << firstMs << " ms\n";
+
+    BENCHMARK("verify the case-study model") { return core::verifyModel(model).findings.size(); };
+
+    if (benchSmokeRun() || !spin::available())
+        return;
+    const core::PromelaModel promela = core::buildProgramPromela(model);
+    const spin::CompiledPan pan(promela.text, "bench-case-study", "-O2 -DSAFETY -DMEMLIM=1024");
+    const auto panStarted = std::chrono::steady_clock::now();
+    const core::SpinReport report = core::readSpinReport(pan.run());
+    const double panMs
+        = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - panStarted).count();
+    std::cout << "case-study model, SPIN's pan: " << report.statesStored << " states, "
+              << (report.complete ? "complete" : "NOT complete: " + report.problem) << ", " << panMs << " ms\n";
 }

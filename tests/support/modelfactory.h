@@ -70,6 +70,19 @@ core::Model unstableGrafcetModel(int steps = 10000);
 // -> F1 -> F5 -> F4 -> A6 -> A1 with F1 -> D3 and the emergency stop.
 core::Model bothLayersStressModel(int branchLength = 3);
 
+// Issue 36's case-study-sized model, in the spirit of the GG-Generator
+// paper's filling and capping machine: the paper's GEMMA conditions and
+// tokens (F1 -> A2 on NOT Stop, F1 -> F3 on EmptyMachine), 22 BOOL inputs
+// and the paper's two numeric ones (PieceCount, Pressure), 14 BOOL outputs,
+// a stored Alarm (Alarm := NOT (CP1 AND CP2 AND CP3) when a bottle leaves
+// F1's join, reset by F2), and six nested GRAFCETs: F1 (fill, cap, eject),
+// F3 (emptying), F5 (one semi-automatic cycle) and D3 (capping by hand
+// while the filler goes on) each a three-station parallel section; F2 (the
+// preparation run) a sequence; F4 (manual and station test) a selection that
+// is not exclusive (Manual and StationTest may hold together), so that its
+// step 4 can be activated while active (unsafe).
+core::Model caseStudyModel();
+
 // For the verifier's budget inside one scan (issue 32): the template with
 // A1 --Start--> F1, F1 a macro-step whose GRAFCET is a cycle of `steps`
 // steps (1 initial) evolving until stable, transition n from step n to n + 1
