@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+namespace test_timerrefinement {
+
 using namespace core;
 
 namespace {
@@ -181,3 +183,5 @@ TEST_CASE("Verification: the searched refinement finds the runs a stretch cannot
         CHECK(race->counterexample->scans > 50);
     }
 }
+
+} // namespace test_timerrefinement
