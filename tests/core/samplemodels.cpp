@@ -1,5 +1,7 @@
 #include "samplemodels.h"
 
+#include "modelfactory.h"
+
 #include "core/checks/checks.h"
 
 #include <array>
@@ -30,48 +32,6 @@ void addVariable(core::Model& model, const std::string& name, core::IecType type
 {
     requireBuilt(model.addVariable({name, type, std::move(defaultValue), std::move(comment)}));
 }
-
-struct ConditionRow {
-    const char* transition;
-    const char* condition;
-};
-
-constexpr std::array<ConditionRow, 34> kCaseStudyConditions = {{
-    {"F->D1", "NOT EmergencyInterrupter"},
-    {"A1->F4", "Manual OR StationTest"},
-    {"A1->F2", "Start AND NOT Ready"},
-    {"A1->F1", "Start AND Ready AND Automatic"},
-    {"A1->F5", "Semiautomatic"},
-    {"A2->A1", "CycleEnd"},
-    {"A3->A4", "CycleEnd"},
-    {"A4->F1", "Start"},
-    {"A5->A6", "Reset AND NOT Alarm"},
-    {"A5->A7", "Reset AND Alarm"},
-    {"A6->A1", "Ready"},
-    {"A7->A4", "Ready"},
-    {"F1->D1", "Alarm"},
-    {"F1->D3", "ManualCapping"},
-    {"F1->A2", "NOT Stop"},
-    {"F1->F4", "Manual OR StationTest"},
-    {"F1->F5", "Semiautomatic"},
-    {"F1->F3", "EmptyMachine"},
-    {"F1->A3", "Stop AND PieceCount >= 100"},
-    {"F1->F6", "StationTest AND Manual"},
-    {"F1->D2", "Pressure > 6.5"},
-    {"F2->F1", "Ready"},
-    {"F3->A1", "CycleEnd"},
-    {"F4->A6", "NOT Manual AND NOT StationTest"},
-    {"F5->F4", "Manual"},
-    {"F5->F1", "Automatic"},
-    {"F6->D1", "Alarm"},
-    {"F6->F1", "Automatic"},
-    {"D1->A5", "EmergencyInterrupter"},
-    {"D1->D2", "EmergencyInterrupter AND Alarm"},
-    {"D2->A5", "Reset"},
-    {"D3->A2", "Stop"},
-    {"D3->A3", "NOT ManualCapping"},
-    {"D3->D2", "Alarm"},
-}};
 
 // ---- random models -----------------------------------------------------------
 
@@ -260,7 +220,7 @@ core::Model caseStudyModel()
     requireBuilt(model.setStepHidden("F6", true));
     requireBuilt(model.setStepComment("F1", "fill, cap, eject"));
     requireBuilt(model.setStepComment("D3", "capping by hand while the filler goes on"));
-    for (const ConditionRow& row : kCaseStudyConditions)
+    for (const factory::CaseStudyCondition& row : factory::caseStudyConditions())
         requireBuilt(model.setCondition(row.transition, row.condition));
     requireBuilt(model.setTokens("F1->A2", {"Stop"}));
     requireBuilt(model.setTokens("F1->F3", {"EmptyMachine"}));

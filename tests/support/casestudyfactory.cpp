@@ -24,14 +24,8 @@ void declare(core::Model& model, const std::string& name, core::IecType type, co
     require(model.addVariable(variable));
 }
 
-struct Row {
-    const char* transition;
-    const char* condition;
-};
-
-// The paper's GEMMA conditions (tests/core/samplemodels.cpp has the same table
-// for the PLCopen tests), Alarm now stored by F1's GRAFCET.
-constexpr std::array<Row, 34> kConditions = {{
+// The paper's GEMMA conditions; here Alarm is stored by F1's GRAFCET.
+constexpr std::array<CaseStudyCondition, 34> kConditions = {{
     {"F->D1", "NOT EmergencyInterrupter"},
     {"A1->F4", "Manual OR StationTest"},
     {"A1->F2", "Start AND NOT Ready"},
@@ -193,6 +187,11 @@ void addManualTest(core::Model& model)
 
 } // namespace
 
+std::span<const CaseStudyCondition> caseStudyConditions()
+{
+    return kConditions;
+}
+
 core::Model caseStudyModel()
 {
     core::Model model;
@@ -201,7 +200,7 @@ core::Model caseStudyModel()
     require(model.setStepType("A7", core::StepType::Simple));
     require(model.setStepType("D2", core::StepType::Simple));
     require(model.setStepHidden("F6", true));
-    for (const Row& row : kConditions)
+    for (const CaseStudyCondition& row : kConditions)
         require(model.setCondition(row.transition, row.condition));
     require(model.setTokens("F1->A2", {"Stop"}));
     require(model.setTokens("F1->F3", {"EmptyMachine"}));

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <random>
+#include <span>
 #include <string>
 
 namespace factory {
@@ -82,6 +83,15 @@ core::Model bothLayersStressModel(int branchLength = 3);
 // is not exclusive (Manual and StationTest may hold together), so that its
 // step 4 can be activated while active (unsafe).
 core::Model caseStudyModel();
+
+// The GEMMA conditions of the GG-Generator paper's filling and capping
+// machine, one per transition it uses: caseStudyModel and the core tests'
+// samples::caseStudyModel write the same 34.
+struct CaseStudyCondition {
+    const char* transition;
+    const char* condition;
+};
+std::span<const CaseStudyCondition> caseStudyConditions();
 
 // For the verifier's budget inside one scan (issue 32): the template with
 // A1 --Start--> F1, F1 a macro-step whose GRAFCET is a cycle of `steps`
