@@ -1,6 +1,6 @@
 #include "core/verification/verification.h"
 
-#include "core/templates/templateengines.h"
+#include "core/templates/templateverification.h"
 
 #include "core/verification/bothlayers.h"
 
@@ -1146,7 +1146,7 @@ bool VerificationResult::undecided() const
 
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options)
 {
-    return enginesOf(model).verifyModel(model, options);
+    return verificationEnginesOf(model).verifyModel(model, options);
 }
 
 VerificationResult verifyGemmaModel(const Model& model, const VerificationOptions& options)

@@ -9,8 +9,6 @@ const TemplateEngines& gemmaEngines()
 {
     static const TemplateEngines engines{
         checkGemmaModel,
-        checkGemmaProperty,
-        verifyGemmaModel,
         buildGemmaPlcProject,
     };
     return engines;

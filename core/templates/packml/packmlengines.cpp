@@ -2,8 +2,6 @@
 
 #include "core/templates/packml/packmlchecks.h"
 #include "core/templates/packml/packmlcodegen.h"
-#include "core/templates/packml/packmlproperty.h"
-#include "core/templates/packml/packmlverifier.h"
 
 namespace core::packml {
 
@@ -11,8 +9,6 @@ const TemplateEngines& engines()
 {
     static const TemplateEngines engines{
         checkPackMLModel,
-        checkPackmlProperty,
-        verifyPackmlModel,
         buildPackmlPlcProject,
     };
     return engines;
