@@ -41,9 +41,15 @@ TEST_CASE("Verification of comparison-heavy models", "[bench][verification]")
     // Whether the time budget suffices depends on the build (a sanitizer
     // build is many times slower): the tests check the results, not this.
 
-    BENCHMARK("verify 12 INT comparisons per condition") { return core::verifyModel(comparisons).findings.size(); };
-    BENCHMARK("verify 24 mixed operands per condition") { return core::verifyModel(mixed).findings.size(); };
-    BENCHMARK("verify 5,000-character conditions") { return core::verifyModel(huge).findings.size(); };
+    // The smoke pass only runs them: under the sanitizers each would spend the
+    // whole default budget, twice (Catch2's estimate, then the sample).
+    core::VerificationOptions options;
+    if (benchSmokeRun())
+        options.timeLimit = std::chrono::milliseconds(500);
+
+    BENCHMARK("verify 12 INT comparisons per condition") { return core::verifyModel(comparisons, options).findings.size(); };
+    BENCHMARK("verify 24 mixed operands per condition") { return core::verifyModel(mixed, options).findings.size(); };
+    BENCHMARK("verify 5,000-character conditions") { return core::verifyModel(huge, options).findings.size(); };
 }
 
 // Both layers (issue 19): the shipped example (four nested GRAFCETs, timers
@@ -73,7 +79,7 @@ TEST_CASE("Verification of both layers", "[bench][verification]")
     // SPIN on the same stress model, exported (core/verification/promelaprogram.h)
     // and compiled once as core::kSpinCompile says: the search alone is timed.
     const core::PromelaModel promela = core::buildProgramPromela(stress);
-    const spin::CompiledPan pan(promela.text, "bench-stress", "-O2 -DSAFETY -DMEMLIM=1024");
+    const spin::CompiledPan pan(promela.text, "bench-stress", benchPanCompileFlags());
     const core::SpinReport report = core::readSpinReport(pan.run());
     REQUIRE(report.complete);
     BENCHMARK("SPIN (pan) on the exported stress model") { return core::readSpinReport(pan.run()).statesStored; };
@@ -119,7 +125,7 @@ TEST_CASE("Verification of the case-study model", "[bench][verification]")
     if (benchSmokeRun() || !spin::available())
         return;
     const core::PromelaModel promela = core::buildProgramPromela(model);
-    const spin::CompiledPan pan(promela.text, "bench-case-study", "-O2 -DSAFETY -DMEMLIM=1024");
+    const spin::CompiledPan pan(promela.text, "bench-case-study", benchPanCompileFlags());
     const auto panStarted = std::chrono::steady_clock::now();
     const core::SpinReport report = core::readSpinReport(pan.run());
     const double panMs

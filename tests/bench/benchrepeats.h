@@ -16,3 +16,11 @@ inline int benchRepeats(int full)
 {
     return benchSmokeRun() ? 1 : full;
 }
+
+// pan's compile flags: -O2 as core::kSpinCompile for the timed runs; -O0 in
+// the smoke pass, which times nothing and where compiling pan.c at -O2 took
+// most of the pass.
+inline const char* benchPanCompileFlags()
+{
+    return benchSmokeRun() ? "-O0 -DSAFETY -DMEMLIM=1024" : "-O2 -DSAFETY -DMEMLIM=1024";
+}
