@@ -31,6 +31,13 @@ std::unique_ptr<Model> drillingCell(const std::string& file = "drilling-cell.ggs
     return std::move(loaded.model);
 }
 
+std::string exampleText(const std::string& file)
+{
+    std::string text;
+    REQUIRE(readFileLimited(GGSTUDIO_EXAMPLES_DIR "/" + file, 1u << 20, text));
+    return text;
+}
+
 bool reads(const Simulator& simulator, const std::string& name)
 {
     return simulator.variable(name) == cond::Value{true};
@@ -258,6 +265,32 @@ TEST_CASE("A recorded run with faults writes fault lines that replay", "[machine
     REQUIRE(parsed.ok());
     REQUIRE(parsed.scenario.actions.size() == 4);
     CHECK(scenarioFault(parsed.scenario.actions[2]) == Fault{FaultKind::Jam, "Clamp"});
+}
+
+TEST_CASE("The watchdog example goes to D2 when a limit switch does not arrive within its travel time and margin",
+          "[machine][faults][example]")
+{
+    const std::string model = "drilling-cell-watchdog.ggstudio.json";
+    const ScenarioRunResult faulty = runClosedLoop(exampleText("drilling-cell-clamp-fault.scenario"), model);
+    requirePassed(faulty);
+    // ClampOut from scan 1124; 300 ms of travel and 200 ms of margin at 10 ms: step 10 at 1174, D2 next.
+    std::int64_t inD2 = 0;
+    for (const ScanRecord& record : faulty.records) {
+        if (inD2 == 0 && record.stepAfter == "D2")
+            inD2 = record.scan;
+    }
+    CHECK(inD2 == 1124 + 30 + 20 + 1);
+    // A sound machine: no false alarm, the start scenario passes as on the plain cell.
+    const ScenarioRunResult sound = runClosedLoop(exampleText("drilling-cell-start.scenario"), model);
+    requirePassed(sound);
+    for (const ScanRecord& record : sound.records)
+        CHECK(record.stepAfter != "D2");
+    // The drill head's switch: the 2 s watchdog of step 3.
+    const ScenarioRunResult drill = runClosedLoop("at 1: set StartButton = TRUE\nat 3: set StartButton = FALSE\n"
+                                                  "at 1200: fault DrillLow stuck FALSE\n"
+                                                  "at 1500: expect step D2\n",
+                                                  model);
+    requirePassed(drill);
 }
 
 } // namespace test_machinefaults
