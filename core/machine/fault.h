@@ -19,7 +19,7 @@ namespace core::machine {
 enum class FaultKind {
     StuckTrue,  // the sensor reads TRUE whatever the machine does
     StuckFalse, // the sensor reads FALSE whatever the machine does
-    Flicker,    // the sensor reads the opposite of its previous reading at every scan
+    Flicker,    // the sensor reads the opposite of the value it had, then toggles at every scan
     Jam,        // the cylinder or conveyor stops where it is whatever its outputs
     Clear,      // the sensor reads the machine again, the component moves again
 };
