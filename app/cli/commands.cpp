@@ -583,53 +583,6 @@ bool loadScenario(const std::string& path, const core::Simulator& simulator, con
     return errors.empty();
 }
 
-// The --fault options as scenario actions; false after a usage error.
-bool parseFaultOptions(const Arguments& args, std::vector<core::ScenarioAction>& faults, std::ostream& err)
-{
-    for (const std::string& option : args.values("--fault")) {
-        core::ScenarioAction action;
-        std::string error;
-        if (!parseFaultOption(option, action, error)) {
-            usageError(err, "--fault '" + option + "': " + error);
-            return false;
-        }
-        faults.push_back(std::move(action));
-    }
-    return true;
-}
-
-// The --fault options checked against the machine; false after a usage error.
-bool checkFaultOptions(const Arguments& args, const std::vector<core::ScenarioAction>& faults,
-                       const core::machine::MachineLoop* loop, std::ostream& err)
-{
-    if (faults.empty())
-        return true;
-    if (!loop) {
-        usageError(err, args.has("--open-loop") ? "--fault needs the virtual machine: leave out --open-loop"
-                                                : "--fault needs the virtual machine: the model has none");
-        return false;
-    }
-    const std::vector<std::string> options = args.values("--fault");
-    for (std::size_t i = 0; i < faults.size(); ++i) {
-        if (auto refusal = loop->checkFault(*core::scenarioFault(faults[i]))) {
-            usageError(err, "--fault '" + options[i] + "': " + core::machine::toText(*refusal));
-            return false;
-        }
-    }
-    return true;
-}
-
-// "fault at scan 120: Clamped stuck FALSE" before the scan it begins.
-void printFaults(const core::Scenario& scenario, std::int64_t scan, std::ostream& out)
-{
-    for (const core::ScenarioAction& action : scenario.actions) {
-        if (action.scan != scan)
-            continue;
-        if (const std::optional<core::machine::Fault> fault = core::scenarioFault(action))
-            out << "fault at scan " << scan << ": " << core::machine::toText(*fault) << lineEnd;
-    }
-}
-
 int commandSimulate(const Arguments& args, Streams streams)
 {
     const std::vector<std::string>& files = args.positional();
@@ -649,9 +602,10 @@ int commandSimulate(const Arguments& args, Streams streams)
             return usageError(streams.err, "--scans takes at most " + std::to_string(core::kMaxScenarioScan)
                                                + " scans, not " + *given);
     }
+    const std::vector<std::string> faultOptions = args.values("--fault");
     std::vector<core::ScenarioAction> faults;
-    if (!parseFaultOptions(args, faults, streams.err))
-        return UsageError;
+    if (std::string error; !parseFaultOptions(faultOptions, faults, error))
+        return usageError(streams.err, error);
     std::unique_ptr<core::Model> model = loadOrReport(files[0], streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!model)
         return UnreadableInput;
@@ -674,8 +628,9 @@ int commandSimulate(const Arguments& args, Streams streams)
     if (!model->machine().empty() && !args.has("--open-loop"))
         loop.emplace(simulator, model->machine());
 
-    if (!checkFaultOptions(args, faults, loop ? &*loop : nullptr, streams.err))
-        return UsageError;
+    const bool openLoop = args.has("--open-loop");
+    if (std::string error; !checkFaultOptions(faultOptions, faults, loop ? &*loop : nullptr, openLoop, error))
+        return usageError(streams.err, error);
     core::Scenario scenario;
     if (files.size() == 2 && !loadScenario(files[1], simulator, loop ? &*loop : nullptr, scenario, streams.err))
         return UnreadableInput;
@@ -685,11 +640,12 @@ int commandSimulate(const Arguments& args, Streams streams)
         scans = scenario.lastScan() > 0 ? scenario.lastScan() : kDefaultSimulationScans;
 
     const bool trace = args.has("--trace");
+    const FaultAnnouncements announcements(scenario);
     core::ScenarioRunner runner =
         loop ? core::ScenarioRunner(scenario, *loop) : core::ScenarioRunner(scenario, simulator);
     std::size_t failures = 0;
     for (std::int64_t i = 0; i < scans; ++i) {
-        printFaults(scenario, simulator.scanCount() + 1, streams.out);
+        announcements.print(simulator.scanCount() + 1, streams.out);
         const core::ScanRecord record = runner.step();
         if (const auto& fault = simulator.fault()) {
             streams.err << files[0] << ": " << core::toText(*fault) << lineEnd;
