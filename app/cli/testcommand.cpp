@@ -89,7 +89,7 @@ ScenarioOutcome play(const core::Scenario& scenario, Runner& runner, const Simul
         runner.step();
         outcome.scans = simulator.scanCount();
         if (simulator.fault()) {
-            outcome.problems.push_back("scan " + std::to_string(outcome.scans) + ": " + core::toText(*simulator.fault()));
+            outcome.problems.push_back(core::toText(*simulator.fault())); // "scan 3: integer division by zero ..."
             break;
         }
     }
