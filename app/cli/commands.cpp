@@ -18,9 +18,11 @@
 #include "core/codegen/stgenerator.h"
 #include "core/templates/gemma/gemmacodegen.h"
 #include "cycletime.h"
+#include "faultoption.h"
 #include "loadreport.h"
 #include "packmlsimulate.h"
 #include "terminal.h"
+#include "testcommand.h"
 #include "verifycommand.h"
 
 #include <algorithm>
@@ -59,15 +61,25 @@ const char* const kUsage =
     "      one visible macro-step or enclosing step (its nested GRAFCET). A PackML model:\n"
     "      its PROGRAM, or with --step the function block of an instance (Production_Execute).\n"
     "  simulate MODEL [SCENARIO] [--scans N] [--trace] [--explain] [--open-loop]\n"
+    "           [--fault \"SCAN:SENSOR stuck TRUE|FALSE|flicker|clear\"] [--fault \"SCAN:COMPONENT jam\"]\n"
     "      Run the GEMMA program scan by scan: one line 'scan N: STEP [fired TRANSITION]' per\n"
     "      scan (--trace adds inputs, Entry, tokens, Complete, the active steps, timers and\n"
     "      Unstable of each nested GRAFCET and the outputs they drive; --explain ends with why\n"
     "      each transition of the active step and of its GRAFCET fires or not in the next scan).\n"
     "      A model with a machine runs in closed loop: the machine sets its sensors after\n"
     "      each scan (--trace shows them), the scenario plays the operator; --open-loop\n"
-    "      ignores the machine.\n"
+    "      ignores the machine. Each --fault (repeatable) injects a fault before scan SCAN, as a\n"
+    "      scenario's 'at SCAN: fault ...' line; the output says when it begins.\n"
     "      Runs the scenario's last scan, else 10 scans, or N (at most 10000000, as a scenario).\n"
     "      Exit 1 when an expectation of the scenario fails.\n"
+    "  test MODEL SCENARIO|FOLDER... [--junit FILE]\n"
+    "  test --models MODEL|FOLDER [--models ...] SCENARIO|FOLDER... [--junit FILE]\n"
+    "      Run each scenario (a FOLDER: its *.scenario files) against each model, in closed loop\n"
+    "      when the model has a machine; print one line per scenario (PASS or FAIL, the scans run,\n"
+    "      the first failed expectation with its scan, expected and seen) and write JUnit XML\n"
+    "      with --junit (one testsuite per model). --models takes a model or a folder of\n"
+    "      models (*.json, *.xml): a class's models against one suite.\n"
+    "      Exit 0 when every scenario passes, 1 when one fails, 2 when a file cannot be read.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
     "         [--complete-automatic STEP[,STEP...]|all] [--property \"never P\"]... [--exact-time]\n"
     "         [--time-limit 4s]\n"
@@ -561,7 +573,8 @@ bool loadScenario(const std::string& path, const core::Simulator& simulator, con
     core::ScenarioParseResult parsed = core::parseScenario(text, path);
     std::vector<core::ScenarioError> errors = parsed.errors;
     if (parsed.ok())
-        errors = core::validateScenario(parsed.scenario, simulator);
+        errors = core::validateScenario(parsed.scenario, simulator,
+                                        loop ? core::FaultLines::CheckedByMachine : core::FaultLines::Refused);
     if (errors.empty() && loop)
         errors = core::machine::validateClosedLoopScenario(parsed.scenario, *loop);
     for (const core::ScenarioError& error : errors)
@@ -589,12 +602,18 @@ int commandSimulate(const Arguments& args, Streams streams)
             return usageError(streams.err, "--scans takes at most " + std::to_string(core::kMaxScenarioScan)
                                                + " scans, not " + *given);
     }
+    const std::vector<std::string> faultOptions = args.values("--fault");
+    std::vector<core::ScenarioAction> faults;
+    if (std::string error; !parseFaultOptions(faultOptions, faults, error))
+        return usageError(streams.err, error);
     std::unique_ptr<core::Model> model = loadOrReport(files[0], streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!model)
         return UnreadableInput;
     if (model->templateKind() == core::TemplateKind::PackML) {
         if (args.has("--explain"))
             return usageError(streams.err, "--explain is not available for PackML models yet");
+        if (!faults.empty())
+            return usageError(streams.err, "--fault needs the virtual machine of a GEMMA model");
         return simulatePackml(*model, files, scans, args.has("--trace"), streams);
     }
     core::Simulator simulator(*model);
@@ -609,17 +628,24 @@ int commandSimulate(const Arguments& args, Streams streams)
     if (!model->machine().empty() && !args.has("--open-loop"))
         loop.emplace(simulator, model->machine());
 
+    const bool openLoop = args.has("--open-loop");
+    if (std::string error; !checkFaultOptions(faultOptions, faults, loop ? &*loop : nullptr, openLoop, error))
+        return usageError(streams.err, error);
     core::Scenario scenario;
     if (files.size() == 2 && !loadScenario(files[1], simulator, loop ? &*loop : nullptr, scenario, streams.err))
         return UnreadableInput;
+    // The options' faults join the scenario's; the default run reaches them.
+    scenario.actions.insert(scenario.actions.end(), faults.begin(), faults.end());
     if (scans == 0)
         scans = scenario.lastScan() > 0 ? scenario.lastScan() : kDefaultSimulationScans;
 
     const bool trace = args.has("--trace");
+    const FaultAnnouncements announcements(scenario);
     core::ScenarioRunner runner =
         loop ? core::ScenarioRunner(scenario, *loop) : core::ScenarioRunner(scenario, simulator);
     std::size_t failures = 0;
     for (std::int64_t i = 0; i < scans; ++i) {
+        announcements.print(simulator.scanCount() + 1, streams.out);
         const core::ScanRecord record = runner.step();
         if (const auto& fault = simulator.fault()) {
             streams.err << files[0] << ": " << core::toText(*fault) << lineEnd;
@@ -662,7 +688,8 @@ const std::map<std::string, Command>& commands()
         {"convert", {commandConvert, {"--to"}, {}}},
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
         {"st", {commandSt, {"--dialect", "--step"}, {}}},
-        {"simulate", {commandSimulate, {"--scans"}, {"--trace", "--explain", "--open-loop"}}},
+        {"simulate", {commandSimulate, {"--scans", "--fault"}, {"--trace", "--explain", "--open-loop"}}},
+        {"test", {commandTest, {"--junit", "--models"}, {}}},
         {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property", "--time-limit"},
                     {"--exact-time"}}},
     };

@@ -3,7 +3,11 @@
 // A scenario played in closed loop (docs/simulation.md, "The virtual
 // machine"): its `set` lines are the operator's, so setting an input the
 // machine writes at every cycle is an error, at the line and column of the
-// name (ScenarioError::Kind::MachineSensor). Run validateScenario first.
+// name (ScenarioError::Kind::MachineSensor); its `fault` lines must name a
+// sensor the machine writes or a component that moves (docs/simulation.md,
+// "Faults"), else an error at the name (ScenarioError::Kind::Fault..., or
+// UnknownVariable). Run validateScenario(scenario, simulator,
+// FaultLines::CheckedByMachine) first.
 
 #include "core/machine/machineloop.h"
 #include "core/simulation/scenario.h"

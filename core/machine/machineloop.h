@@ -12,10 +12,12 @@
 // a BOOL output, a sensor or operator role to a BOOL input. Anything else is
 // left unwired here and reported by the checks (machinechecks.h).
 
+#include "core/machine/fault.h"
 #include "core/machine/machinestate.h"
 #include "core/simulation/simulator.h"
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -48,17 +50,33 @@ public:
     // The component whose sensor role writes the input; nullptr when none does.
     const Component* sensorOwner(std::string_view name) const;
 
+    // Faults (fault.h; docs/simulation.md, "Faults"). nullopt when the
+    // fault applies to this machine; else why not.
+    std::optional<FaultRefusal> checkFault(const Fault& fault) const;
+    // Applies a fault before the next scan: a sensor's new reading is
+    // written into its input at once, so the next scan reads it; a jam or
+    // its clearing holds from the machine cycle after that scan. False, and
+    // nothing changed, when checkFault refuses it. reset() clears every fault.
+    bool applyFault(const Fault& fault);
+    // The fault a sensor is under; SensorFault::None when it is sound or no sensor.
+    SensorFault sensorFault(std::string_view variable) const;
+
     Simulator& simulator() { return m_simulator; }
     const Simulator& simulator() const { return m_simulator; }
     const MachineState& state() const { return m_state; }
 
 private:
     void writeInputs(bool operatorsToo);
+    int sensorSlot(std::string_view variable) const; // -1 when the machine writes no such input
+    int componentIndex(std::string_view name) const; // -1 when no such component
+    const Component* operatorOwner(std::string_view variable) const;
+    void writeReading(std::size_t slot);
 
     Simulator& m_simulator;
     Machine m_machine;
     MachineState m_state;
     std::vector<InputChange> m_sensorChanges;
+    std::vector<SensorFault> m_sensorFaults; // by signal slot
 };
 
 } // namespace core::machine

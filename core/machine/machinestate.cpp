@@ -84,6 +84,7 @@ void MachineState::reset()
         r.pending = 0;
         r.on = false;
         r.partsLeft = r.initialParts;
+        r.jammed = false;
     }
     for (Runtime& r : m_components) {
         if (r.kind == ComponentKind::PartSource)
@@ -123,6 +124,8 @@ void MachineState::write(const Runtime& r, std::size_t role, bool value)
 
 void MachineState::move(Runtime& r)
 {
+    if (r.jammed)
+        return;
     switch (r.kind) {
     case ComponentKind::DoubleActingCylinder: {
         // Both valves energised, or neither: the rod stays where it is.

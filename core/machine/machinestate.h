@@ -58,6 +58,10 @@ public:
     std::int64_t partsDelivered(std::size_t component) const; // conveyors: parts that left past the sensor
     std::int64_t partsLeft(std::size_t component) const;      // part sources; kUnlimitedParts when unlimited
     bool sensorOn(std::size_t component) const;               // delayed sensors
+    // A jammed component (fault.h) does not move in a cycle, whatever its
+    // outputs; its sensors keep giving its position. reset() frees them all.
+    void setJammed(std::size_t component, bool jammed) { m_components.at(component).jammed = jammed; }
+    bool jammed(std::size_t component) const { return m_components.at(component).jammed; }
     std::size_t componentCount() const { return m_components.size(); }
 
     // Cycles a travel or delay of `ms` takes: ceil(ms / cycle), at least 1.
@@ -83,6 +87,7 @@ private:
         std::int64_t initialParts = kUnlimitedParts; // part sources
         std::int64_t partsLeft = kUnlimitedParts;
         int conveyor = -1;            // part sources: the conveyor's component index
+        bool jammed = false;          // a fault: the component does not move
     };
 
     bool read(const Runtime& r, std::size_t role) const;

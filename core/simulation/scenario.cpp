@@ -236,7 +236,36 @@ private:
             return parseNamed(ScenarioAction::Kind::Command, ErrorKind::ExpectedCommand, actions) && endOfLine();
         if (accept("mode"))
             return parseNamed(ScenarioAction::Kind::Mode, ErrorKind::ExpectedMode, actions) && endOfLine();
+        if (accept("fault"))
+            return parseFault(actions) && endOfLine();
         return fail(ErrorKind::ExpectedSetOrExpect);
+    }
+
+    // fault TARGET stuck TRUE|FALSE | flicker | jam | clear
+    bool parseFault(std::vector<ScenarioAction>& actions)
+    {
+        Word target;
+        if (!name(ErrorKind::ExpectedFaultTarget, target))
+            return false;
+        ScenarioAction action = makeAction(ScenarioAction::Kind::Fault, target);
+        action.name = std::string(target.text);
+        action.valueColumn = column();
+        if (accept("stuck")) {
+            if (atEnd() || !(isKeyword(m_words[m_next], "TRUE") || isKeyword(m_words[m_next], "FALSE")))
+                return fail(ErrorKind::ExpectedBool);
+            const bool stuckTrue = isKeyword(m_words[m_next++], "TRUE");
+            action.value = machine::faultKindText(stuckTrue ? machine::FaultKind::StuckTrue : machine::FaultKind::StuckFalse);
+        } else if (accept("flicker")) {
+            action.value = machine::faultKindText(machine::FaultKind::Flicker);
+        } else if (accept("jam")) {
+            action.value = machine::faultKindText(machine::FaultKind::Jam);
+        } else if (accept("clear")) {
+            action.value = machine::faultKindText(machine::FaultKind::Clear);
+        } else {
+            return fail(ErrorKind::ExpectedFaultKind);
+        }
+        actions.push_back(std::move(action));
+        return true;
     }
 
     bool scanNumber()
@@ -467,8 +496,8 @@ std::string stepSubject(ErrorKind kind, const std::string& id)
 
 class Validator {
 public:
-    Validator(const Scenario& scenario, const Simulator& simulator)
-        : m_scenario(scenario), m_simulator(simulator)
+    Validator(const Scenario& scenario, const Simulator& simulator, FaultLines faults)
+        : m_scenario(scenario), m_simulator(simulator), m_faults(faults)
     {
     }
 
@@ -619,6 +648,10 @@ private:
         }
         case Kind::ExpectNoFiring:
         case Kind::ExpectEntry: break;
+        case Kind::Fault:
+            if (m_faults == FaultLines::Refused)
+                error(action, action.column, ErrorKind::FaultInOpenLoop, "fault");
+            break;
         case Kind::Command:
         case Kind::Mode:
         case Kind::ExpectState:
@@ -628,6 +661,7 @@ private:
 
     const Scenario& m_scenario;
     const Simulator& m_simulator;
+    FaultLines m_faults;
     std::vector<ScenarioError> m_errors;
     // The first set of each (scan, variable index) and (scan, step id).
     std::map<std::pair<std::int64_t, int>, const ScenarioAction*> m_firstSets;
@@ -714,9 +748,19 @@ ScenarioParseResult parseScenario(std::string_view text, std::string fileName)
     return result;
 }
 
-std::vector<ScenarioError> validateScenario(const Scenario& scenario, const Simulator& simulator)
+std::vector<ScenarioError> validateScenario(const Scenario& scenario, const Simulator& simulator, FaultLines faults)
 {
-    return Validator(scenario, simulator).run();
+    return Validator(scenario, simulator, faults).run();
+}
+
+std::optional<machine::Fault> scenarioFault(const ScenarioAction& action)
+{
+    if (action.kind != ScenarioAction::Kind::Fault)
+        return std::nullopt;
+    const std::optional<machine::FaultKind> kind = machine::parseFaultKind(action.value);
+    if (!kind)
+        return std::nullopt;
+    return machine::Fault{*kind, action.name};
 }
 
 // --- Running --------------------------------------------------------------------
@@ -734,6 +778,17 @@ ScenarioRunner::ScenarioRunner(const Scenario& scenario, machine::MachineLoop& l
     m_loop = &loop;
 }
 
+Status ScenarioRunner::applyFault(const ScenarioAction& action)
+{
+    const std::optional<machine::Fault> fault = scenarioFault(action);
+    if (!m_loop || !fault)
+        return Status::failure("fault", "a fault needs the virtual machine: run the scenario in closed loop");
+    if (const std::optional<machine::FaultRefusal> refusal = m_loop->checkFault(*fault))
+        return Status::failure("fault", machine::toText(*refusal));
+    m_loop->applyFault(*fault);
+    return Status::success();
+}
+
 void ScenarioRunner::apply(const ScenarioAction& action)
 {
     using Kind = ScenarioAction::Kind;
@@ -746,6 +801,7 @@ void ScenarioRunner::apply(const ScenarioAction& action)
             status = m_simulator.setComplete(action.name, action.value == "TRUE");
         break;
     case Kind::SetCompleteAuto: status = m_simulator.setCompleteMode(action.name, CompleteMode::Automatic); break;
+    case Kind::Fault: status = applyFault(action); break;
     default: return;
     }
     if (!status) {
@@ -932,6 +988,7 @@ std::string_view scenarioKeyword(ScenarioAction::Kind kind)
     case Kind::SetCompleteAuto: return "set complete";
     case Kind::Command: return "command";
     case Kind::Mode: return "mode";
+    case Kind::Fault: return "fault";
     case Kind::ExpectStep: return "expect step";
     case Kind::ExpectFired:
     case Kind::ExpectNoFiring: return "expect fired";
@@ -990,6 +1047,8 @@ std::string writeScenario(const ScenarioRecording& recording)
             lines[scan.scan].push_back(at + "set complete " + complete.stepId + " = "
                                        + (complete.manualValue ? boolText(*complete.manualValue) : "auto"));
         }
+        for (const machine::Fault& fault : scan.faults)
+            lines[scan.scan].push_back(at + "fault " + machine::toText(fault));
     }
     const std::vector<std::string>& nested = recording.nestedSteps;
     std::vector<std::vector<int>> situations(nested.size());

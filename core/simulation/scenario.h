@@ -11,6 +11,7 @@
 //   at 5: set complete F1 = FALSE     # F1's Complete becomes manual, FALSE
 //   at 6: expect token Stop_F1_2_MEM = TRUE
 //   at 9: set complete F1 = auto      # back to the skeleton FB's behaviour
+//   at 12: fault Clamped stuck FALSE  # closed loop only: a sensor fault
 //
 // A PackML model's scenario (core/templates/packml/packmlscenario.h) also
 // has `at 5: command Start`, `at 9: mode Manual`, `expect state Execute`
@@ -21,6 +22,7 @@
 // `at N: expect ...` is checked after scan N. Keywords are case-insensitive,
 // `#` starts a comment.
 
+#include "core/machine/fault.h"
 #include "core/simulation/scenarioerror.h"
 #include "core/simulation/simulator.h"
 
@@ -44,6 +46,7 @@ struct ScenarioAction {
         SetCompleteAuto, // set complete STEP = auto (Automatic mode)
         Command,        // command NAME (PackML: CntrlCmd with a rising edge of CmdChangeRequest)
         Mode,           // mode NAME (PackML: UnitMode with a rising edge of UnitModeChangeRequest)
+        Fault,          // fault TARGET stuck TRUE|FALSE|flicker|jam|clear (closed loop; value: machine::faultKindText)
         ExpectStep,     // expect step STEP
         ExpectFired,    // expect fired TRANSITION
         ExpectNoFiring, // expect fired none
@@ -93,10 +96,19 @@ std::string_view scenarioKeyword(ScenarioAction::Kind kind);
 // Syntax only: names are not looked up (see validateScenario).
 ScenarioParseResult parseScenario(std::string_view text, std::string fileName = {});
 
+// Whether a scenario's fault lines are refused (open loop: no machine to
+// fault) or left to validateClosedLoopScenario (core/machine/closedloopscenario.h).
+enum class FaultLines { Refused, CheckedByMachine };
+
 // Names and values against the program the simulator runs: unknown or hidden
 // variables, steps, transitions and tokens, `complete` on a step without
-// nested behaviour, values that are not of the variable's type.
-std::vector<ScenarioError> validateScenario(const Scenario& scenario, const Simulator& simulator);
+// nested behaviour, values that are not of the variable's type; fault lines
+// as `faults` says.
+std::vector<ScenarioError> validateScenario(const Scenario& scenario, const Simulator& simulator,
+                                            FaultLines faults = FaultLines::Refused);
+
+// The fault of a `fault` action (its name and value); nullopt for another action.
+std::optional<machine::Fault> scenarioFault(const ScenarioAction& action);
 
 // An expectation that did not hold, or a set that could not be applied, as
 // data: the editor words it in the UI language, toText() in English. Names
@@ -153,6 +165,7 @@ public:
 
 private:
     void apply(const ScenarioAction& action);
+    Status applyFault(const ScenarioAction& action);
     void check(const ScenarioAction& action, const ScanRecord& record);
 
     const Scenario& m_scenario;
@@ -189,6 +202,7 @@ struct RecordedScan {
         std::optional<bool> manualValue; // nullopt: back to Automatic
     };
     std::vector<CompleteSetting> completes;
+    std::vector<machine::Fault> faults; // injected before the scan (closed loop)
 };
 
 struct ScenarioRecording {

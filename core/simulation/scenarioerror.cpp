@@ -43,8 +43,24 @@ std::string expectation(ErrorKind kind)
     case ErrorKind::ExpectedCommand: return "a command name after 'command'";
     case ErrorKind::ExpectedMode: return "a mode name or number after 'mode'";
     case ErrorKind::ExpectedState: return "a state name after 'state'";
+    case ErrorKind::ExpectedFaultTarget: return "a sensor or component name after 'fault'";
+    case ErrorKind::ExpectedFaultKind: return "stuck, flicker, jam or clear after the name";
     default: return {};
     }
+}
+
+machine::FaultRefusal faultRefusal(const ScenarioError& e)
+{
+    using Refusal = machine::FaultRefusal::Kind;
+    machine::FaultRefusal refusal{Refusal::UnknownTarget, e.subject, e.detail};
+    switch (e.kind) {
+    case ErrorKind::FaultOnOperatorInput: refusal.kind = Refusal::OperatorInput; break;
+    case ErrorKind::FaultNotMachineSensor: refusal.kind = Refusal::NotMachineSensor; break;
+    case ErrorKind::FaultUnknownComponent: refusal.kind = Refusal::UnknownComponent; break;
+    case ErrorKind::FaultCannotJam: refusal.kind = Refusal::CannotJam; break;
+    default: break;
+    }
+    return refusal;
 }
 
 std::string otherText(const ScenarioError& e)
@@ -68,6 +84,13 @@ std::string otherText(const ScenarioError& e)
     case ErrorKind::MachineSensor:
         return e.subject + " is a sensor of the machine's " + e.detail
             + ": the machine sets it; set it by hand in open loop only";
+    case ErrorKind::FaultInOpenLoop:
+        return "a fault needs the virtual machine: run the scenario in closed loop, on a model with a machine";
+    case ErrorKind::FaultOnOperatorInput:
+    case ErrorKind::FaultNotMachineSensor:
+    case ErrorKind::FaultUnknownComponent:
+    case ErrorKind::FaultCannotJam:
+    case ErrorKind::FaultUnknownTarget: return machine::toText(faultRefusal(e));
     case ErrorKind::NoGrafcet: return "step " + e.subject + " has no nested GRAFCET";
     case ErrorKind::CompleteFromGrafcet:
         return "the Complete of " + e.subject + " comes from its nested GRAFCET: it cannot be set";

@@ -46,6 +46,8 @@ struct ScenarioError {
         ExpectedCommand,          // a command name after 'command'
         ExpectedMode,             // a mode name or number after 'mode'
         ExpectedState,            // a state name after 'state'
+        ExpectedFaultTarget,      // a sensor or component name after 'fault'
+        ExpectedFaultKind,        // stuck, flicker, jam or clear after the fault's target
         // Names and values (validateScenario). subject: the name, as the kind says.
         UnknownVariable,          // as written
         InvalidValue,             // the variable as declared; type: its IEC type; detail: why (English)
@@ -76,6 +78,14 @@ struct ScenarioError {
         // In closed loop: a set of a sensor the virtual machine writes.
         // subject: the variable as declared; detail: the component's name.
         MachineSensor,
+        // Fault lines (docs/simulation.md, "Faults"). In open loop: subject "fault".
+        FaultInOpenLoop,
+        // In closed loop (machine::FaultRefusal): subject and detail as there.
+        FaultOnOperatorInput,     // subject: the variable as declared; detail: its component
+        FaultNotMachineSensor,    // subject: the variable as declared
+        FaultUnknownComponent,    // subject: as written
+        FaultCannotJam,           // subject: the component; detail: its kind ("lamp")
+        FaultUnknownTarget,       // subject: as written (clear)
     };
 
     std::string fileName;

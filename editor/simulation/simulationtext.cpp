@@ -152,6 +152,12 @@ QString syntaxErrorText(core::ScenarioError::Kind kind, const QString& found)
     case Kind::ExpectedState:
         //: 'state' is scenario syntax
         return SimulationText::tr("expected a state name after 'state', found %1").arg(found);
+    case Kind::ExpectedFaultTarget:
+        //: 'fault' is scenario syntax
+        return SimulationText::tr("expected a sensor or component name after 'fault', found %1").arg(found);
+    case Kind::ExpectedFaultKind:
+        //: stuck, flicker, jam and clear are scenario syntax
+        return SimulationText::tr("expected stuck, flicker, jam or clear after the name, found %1").arg(found);
     default: return {};
     }
 }
@@ -199,6 +205,23 @@ QString scenarioErrorMessage(const core::ScenarioError& error)
         return SimulationText::tr("%1 is a sensor of the machine's %2: the machine sets it; set it by hand in open "
                                   "loop only")
             .arg(subject, fromStd(error.detail));
+    case Kind::FaultInOpenLoop:
+        return SimulationText::tr(
+            "a fault needs the virtual machine: run the scenario in closed loop, on a model with a machine");
+    case Kind::FaultOnOperatorInput:
+        //: %1: a variable; %2: the name of a component of the virtual machine ("Start"); 'set' is scenario syntax
+        return SimulationText::tr("%1 is an operator input of the machine's %2: the user drives it with set; a fault "
+                                  "applies to the machine's sensors")
+            .arg(subject, fromStd(error.detail));
+    case Kind::FaultNotMachineSensor:
+        return SimulationText::tr("%1 is no sensor of the machine: a fault applies to the inputs a component writes")
+            .arg(subject);
+    case Kind::FaultUnknownComponent: return SimulationText::tr("no component '%1' in the machine").arg(subject);
+    case Kind::FaultCannotJam:
+        //: %1: a component of the virtual machine; %2: its kind as the file spells it ("lamp", "push-button")
+        return SimulationText::tr("%1 is a %2: only cylinders and conveyors jam").arg(subject, fromStd(error.detail));
+    case Kind::FaultUnknownTarget:
+        return SimulationText::tr("'%1' is neither a sensor nor a component of the machine").arg(subject);
     case Kind::NoGrafcet: return SimulationText::tr("step %1 has no nested GRAFCET").arg(subject);
     case Kind::CompleteFromGrafcet:
         return SimulationText::tr("the Complete of %1 comes from its nested GRAFCET: it cannot be set").arg(subject);

@@ -271,7 +271,7 @@ ScenarioRecording recordSession(Simulator& simulator, std::int64_t scans,
         }
         ScanRecord record = simulator.step();
         if (!record.changedInputs.empty())
-            recording.changes.push_back(RecordedScan{record.scan, record.changedInputs, {}});
+            recording.changes.push_back(RecordedScan{record.scan, record.changedInputs, {}, {}});
         if (recordWorthKeeping(record, previous ? &*previous : nullptr))
             recording.records.push_back(record);
         previous = std::move(record);

@@ -427,7 +427,7 @@ TEST_CASE("Scenario: a recorded session is written back as a scenario that repla
             if (complete.manualValue)
                 REQUIRE(sim.setComplete(complete.stepId, *complete.manualValue));
         }
-        recording.changes.push_back(RecordedScan{scan, std::move(inputs), std::move(completes)});
+        recording.changes.push_back(RecordedScan{scan, std::move(inputs), std::move(completes), {}});
     };
     before(1, {{"HomePosition", true}, {"AirPressureOk", true}});
     recording.records.push_back(sim.step());

@@ -25,6 +25,8 @@
 
 #include "core/condition/conditionevaluator.h"
 #include "core/formats/modelfiles.h"
+#include "core/machine/closedloopscenario.h"
+#include "core/machine/machineloop.h"
 #include "core/simulation/scenario.h"
 
 #include <QAbstractButton>
@@ -642,7 +644,8 @@ void TestSimulation::scenarioErrorsAreInTheUiLanguage()
         "at 2: set BatchSize = 40000", "at 2: expect step F3", "at 2: expect step Q7", "at 3: expect fired A1->F5",
         "at 3: expect fired A1->Z1", "at 4: set complete F2 = TRUE", "at 4: expect token Start_F1_1_MEM = TRUE",
         "at 1: set HomePosition\xff = TRUE", "at 2: set HomePosition = TRUE\nat 2: set HomePosition = FALSE",
-        "at 2: set complete F1 = TRUE\nat 2: set complete F1 = auto",
+        "at 2: set complete F1 = TRUE\nat 2: set complete F1 = auto", "at 3: fault", "at 3: fault Start",
+        "at 3: fault Start stuck TRUE",
     };
     std::set<core::ScenarioError::Kind> kinds;
     for (const char* line : lines) {
@@ -654,6 +657,24 @@ void TestSimulation::scenarioErrorsAreInTheUiLanguage()
         QCOMPARE(scenarioErrorText(errors.front()), QString::fromStdString(errors.front().toString()));
     }
     QCOMPARE(kinds.size(), std::size(lines));
+
+    // The fault lines refused by a machine (the drilling cell's).
+    const core::LoadedModel cell = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    QVERIFY(cell.model);
+    core::Simulator cellSimulator(*cell.model);
+    const core::machine::MachineLoop loop(cellSimulator, cell.model->machine());
+    const char* const faults[] = {"at 1: fault StartButton stuck TRUE", "at 1: fault ClampOut flicker",
+                                  "at 1: fault Nobody jam", "at 1: fault Ready jam", "at 1: fault Nobody clear"};
+    std::set<core::ScenarioError::Kind> faultKinds;
+    for (const char* line : faults) {
+        const core::ScenarioParseResult parsed = core::parseScenario(line, "f.txt");
+        QVERIFY(parsed.ok());
+        const std::vector<core::ScenarioError> errors = core::machine::validateClosedLoopScenario(parsed.scenario, loop);
+        QCOMPARE(errors.size(), std::size_t{1});
+        faultKinds.insert(errors.front().kind);
+        QCOMPARE(scenarioErrorText(errors.front()), QString::fromStdString(errors.front().toString()));
+    }
+    QCOMPARE(faultKinds.size(), std::size(faults));
 
     // In French, a replay refuses the file with the reasons in French, the names as written.
     reopenInFrench();
