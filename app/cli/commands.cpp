@@ -70,7 +70,7 @@ const char* const kUsage =
     "      Exit 1 when an expectation of the scenario fails.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
     "         [--complete-automatic STEP[,STEP...]|all] [--property \"never P\"]... [--exact-time]\n"
-    "         [--time-limit 4s]\n"
+    "         [--time-limit 4s] [--machine]\n"
     "      Prove properties of both layers (docs/verification.md): print FILE: ELEMENTS:\n"
     "      severity: CODE: message lines; with DIR, write each counterexample as a scenario\n"
     "      file there; with --promela, also write the model for SPIN. The model's own\n"
@@ -80,6 +80,9 @@ const char* const kUsage =
     "      named by --complete-automatic (TRUE at every scan, as the skeleton FB).\n"
     "      The whole run stops after --time-limit (default 4s, at most 1h; what it could not\n"
     "      decide by then is reported as not exhaustive or undecided).\n"
+    "      --machine explores the program with the model's machine (closed loop): the inputs\n"
+    "      its sensors drive follow the machine, operator inputs stay free, time is counted in\n"
+    "      scans; counterexamples replay with the machine (simulate).\n"
     "      Each property ends as holds, violated or undecided. Exit 1 when a finding is an\n"
     "      error or a warning (a property violated), else 3 when something is undecided (a\n"
     "      property, or a claim whose run does not replay); 2 when a file cannot be written.\n"
@@ -664,7 +667,7 @@ const std::map<std::string, Command>& commands()
         {"st", {commandSt, {"--dialect", "--step"}, {}}},
         {"simulate", {commandSimulate, {"--scans"}, {"--trace", "--explain", "--open-loop"}}},
         {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property", "--time-limit"},
-                    {"--exact-time"}}},
+                    {"--exact-time", "--machine"}}},
     };
     return table;
 }
