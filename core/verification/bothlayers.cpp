@@ -159,7 +159,8 @@ void BothLayers::run()
 // has no real run.
 void BothLayers::refine()
 {
-    if (m_options.exactTime || m_closedLoop || !hasLongTimers(m_program, m_model.settings().cycleTimeMs))
+    // In closed loop the machine's travels are abstracted as the TONs are.
+    if (m_options.exactTime || (!m_closedLoop && !hasLongTimers(m_program, m_model.settings().cycleTimeMs)))
         return;
     const std::vector<Event>& events = m_explorer->result().events;
     const bool anyPath
@@ -504,7 +505,7 @@ void BothLayers::add(VerificationFinding f, const Event* event)
                 }
             }
             if (witness == event && m_exact->result().exhaustive && !m_exactKeys.count(key)) {
-                // Counted in scans, no run shows it: the timer abstraction alone made it.
+                // Counted in scans, no run shows it: the time abstraction (of the TONs, of the machine) alone made it.
                 return;
             }
         }

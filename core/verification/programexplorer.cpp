@@ -10,6 +10,7 @@
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
+#include "core/verification/abstractmachine.h"
 #include "core/verification/closedloopreplay.h"
 #include "core/verification/comparisonshape.h"
 #include "core/verification/property.h"
@@ -215,7 +216,8 @@ struct Layout {
 struct Decision {
     // NumberTest: a comparison of a free numeric variable with constants,
     // decided on the representatives still possible (Impl::numberPossible).
-    enum class Kind { Bool, Number, NumberTest, Opaque, Timer, Complete } kind = Kind::Bool;
+    // Machine: closed loop under the time abstraction, whether a travel or delay ends.
+    enum class Kind { Bool, Number, NumberTest, Opaque, Timer, Complete, Machine } kind = Kind::Bool;
     int slot = -1; // Bool, Number: the variable; Timer: the timer; Complete: the step index
     int value = 0; // Bool, Opaque, Timer, Complete: 0/1; Number: representative index
 };
@@ -424,8 +426,11 @@ struct ProgramExplorer::Impl {
     Layout layout;
     int cycleMs = 20;
     // Closed loop: the machine, restored from each state's tail (after
-    // layout.size) before its scan; its actuators (signal slot, variable slot).
+    // layout.size) before its scan: counted in scans with exactTime, else
+    // abstracted as the TONs are (abstractMachine); its actuators (signal
+    // slot, variable slot).
     std::optional<machine::MachineState> machineState;
+    std::optional<AbstractMachine> abstractMachine;
     std::vector<std::pair<std::size_t, int>> actuators;
     std::string machineStart; // the key of the machine's start state
     std::vector<ParsedProperty> parsedProperties;
@@ -507,8 +512,6 @@ ProgramExplorer::Impl::Impl(const Model& m, Options o)
     , symbols(m.variables())
 {
     cycleMs = m.settings().cycleTimeMs;
-    if (options.machine && !options.machine->empty())
-        options.exactTime = true; // the machine counts its travel times in scans: so do the TONs
     compileSlots(m);
     compileMachine();
     compileSteps();
@@ -632,6 +635,10 @@ void ProgramExplorer::Impl::compileMachine()
         return slot.type == IecType::Bool && slot.kind == wanted ? s : -1;
     };
     machineState.emplace(*options.machine, cycleMs, wire);
+    if (!options.exactTime) {
+        abstractMachine.emplace(*options.machine, *machineState, cycleMs, wire);
+        result.abstractions.push_back("machine travels and delays longer than one cycle may or may not have ended");
+    }
     const std::vector<machine::SignalSlot>& table = machineState->signalSlots();
     for (std::size_t i = 0; i < table.size(); ++i) {
         Slot& slot = slots[static_cast<std::size_t>(table[i].variable)];
@@ -644,7 +651,10 @@ void ProgramExplorer::Impl::compileMachine()
         case machine::SignalDirection::Actuator: actuators.emplace_back(i, table[i].variable); break;
         }
     }
-    machineState->appendKey(machineStart);
+    if (abstractMachine)
+        abstractMachine->appendKey(machineStart);
+    else
+        machineState->appendKey(machineStart);
 }
 
 void ProgramExplorer::Impl::compileSteps()
@@ -1082,7 +1092,10 @@ bool ProgramExplorer::Impl::readBool(int slot)
     switch (s.cls) {
     case SlotClass::StateBool: return work[static_cast<std::size_t>(layout.bools + s.stateBit)] != 0;
     case SlotClass::ConstBool: return cond::isTrue(s.initial);
-    case SlotClass::MachineBool: return machineState->signal(static_cast<std::size_t>(s.machineSignal));
+    case SlotClass::MachineBool: {
+        const auto signal = static_cast<std::size_t>(s.machineSignal);
+        return abstractMachine ? abstractMachine->signal(signal) : machineState->signal(signal);
+    }
     case SlotClass::FreeBool: {
         int& cached = boolCache[static_cast<std::size_t>(slot)];
         if (cached < 0)
@@ -1578,7 +1591,9 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
 {
     ScanOutcome outcome;
     work = from;
-    if (machineState)
+    if (abstractMachine)
+        abstractMachine->restoreKey(std::string_view(from).substr(static_cast<std::size_t>(layout.size)));
+    else if (machineState)
         machineState->restoreKey(std::string_view(from).substr(static_cast<std::size_t>(layout.size)));
     std::fill(boolCache.begin(), boolCache.end(), -1);
     std::fill(numberCache.begin(), numberCache.end(), -1);
@@ -1721,10 +1736,21 @@ void ProgramExplorer::Impl::advanceMachine()
 {
     if (!machineState)
         return;
+    work.resize(static_cast<std::size_t>(layout.size));
+    if (abstractMachine) {
+        for (const auto& [signal, slot] : actuators)
+            abstractMachine->setSignal(signal, readBool(slot));
+        abstractMachine->cycle([&](int alternatives) {
+            const int value = chooser.choose(alternatives);
+            chooser.decisions.push_back({Decision::Kind::Machine, -1, value});
+            return value;
+        });
+        abstractMachine->appendKey(work);
+        return;
+    }
     for (const auto& [signal, slot] : actuators)
         machineState->setSignal(signal, readBool(slot));
     machineState->cycle();
-    work.resize(static_cast<std::size_t>(layout.size));
     machineState->appendKey(work);
 }
 
