@@ -12,14 +12,19 @@
 #include "core/machine/machinestate.h"
 #include "core/model/model.h"
 #include "core/simulation/simulator.h"
+#include "core/verification/abstractmachine.h"
 #include "core/verification/closedloopreplay.h"
+#include "core/verification/programexplorer.h"
 #include "core/verification/property.h"
 #include "core/verification/propertyevaluation.h"
 #include "core/verification/verification.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <memory>
+#include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -131,6 +136,88 @@ TEST_CASE("A machine state's key restores the same state and futures", "[closed-
     CHECK(restored.restoreKey(std::string_view(moved).substr(0, 1)) == 0); // truncated: refused
 }
 
+TEST_CASE("Every run of the machine is a run of its abstraction", "[closed-loop-verify]")
+{
+    // The drilling cell's machine, a spring-return cylinder and a delayed
+    // sensor, at 10 ms: the actuators change at random (seldom, so that
+    // travels end), and after each cycle some abstract state reached by
+    // choosing how travels end shows the machine's sensors.
+    const auto model = drillingCell();
+    Machine machine = model->machine();
+    Component spring = makeComponent(ComponentKind::SingleActingCylinder, "Spring");
+    spring.wires = {"S_Out", "S_In", "S_Ext"};
+    spring.parameters = {50, 20};
+    Component delayed = makeComponent(ComponentKind::DelayedSensor, "Delay");
+    delayed.wires = {"D_Out", "D_In"};
+    delayed.parameters = {30, 0};
+    machine.components.push_back(spring);
+    machine.components.push_back(delayed);
+    std::vector<std::string> names;
+    const auto wire = [&](std::string_view name, SignalDirection) {
+        const auto known = std::find(names.begin(), names.end(), name);
+        if (known != names.end())
+            return static_cast<int>(known - names.begin());
+        names.emplace_back(name);
+        return static_cast<int>(names.size()) - 1;
+    };
+    MachineState exact(machine, 10, wire);
+    explore::AbstractMachine abstract(machine, exact, 10, wire);
+    const std::vector<SignalSlot>& table = exact.signalSlots();
+    const auto sensors = [&](const auto& m) {
+        std::string out;
+        for (std::size_t i = 0; i < table.size(); ++i)
+            out += table[i].direction == SignalDirection::Sensor && m.signal(i) ? '1' : '0';
+        return out;
+    };
+    std::set<std::string> possible;
+    std::string start;
+    abstract.appendKey(start);
+    possible.insert(start);
+    REQUIRE(sensors(abstract) == sensors(exact));
+    std::mt19937 random(35);
+    std::vector<char> actuators(table.size(), 0);
+    for (int cycle = 0; cycle < 3000; ++cycle) {
+        for (std::size_t i = 0; i < table.size(); ++i) {
+            if (table[i].direction == SignalDirection::Actuator && random() % 40 == 0)
+                actuators[i] = !actuators[i];
+            exact.setSignal(i, actuators[i] != 0);
+        }
+        exact.cycle();
+        std::set<std::string> next;
+        for (const std::string& key : possible) {
+            std::vector<int> answers; // every way the travels may end, depth first
+            bool more = true;
+            while (more) {
+                std::size_t at = 0;
+                REQUIRE(abstract.restoreKey(key) == key.size());
+                for (std::size_t i = 0; i < table.size(); ++i) {
+                    if (table[i].direction == SignalDirection::Actuator)
+                        abstract.setSignal(i, actuators[i] != 0);
+                }
+                abstract.cycle([&](int) {
+                    if (at == answers.size())
+                        answers.push_back(0);
+                    return answers[at++];
+                });
+                answers.resize(at);
+                if (sensors(abstract) == sensors(exact)) {
+                    std::string reached;
+                    abstract.appendKey(reached);
+                    next.insert(reached);
+                }
+                while (!answers.empty() && answers.back() == 1)
+                    answers.pop_back();
+                more = !answers.empty();
+                if (more)
+                    answers.back() = 1;
+            }
+        }
+        INFO("cycle " << cycle << ", sensors " << sensors(exact));
+        REQUIRE_FALSE(next.empty());
+        possible = std::move(next);
+    }
+}
+
 TEST_CASE("Limit switches of one cylinder: never together with the machine, free without it",
           "[closed-loop-verify]")
 {
@@ -161,6 +248,47 @@ TEST_CASE("By hand: step 2 is left in the scan that reads the extended switch", 
     const VerificationResult result = verifyModel(model, withProperty(violated, true));
     REQUIRE(outcomeOf(result) == PropertyOutcome::Violated);
     CHECK(replaysToViolation(model, result, violated));
+}
+
+TEST_CASE("By hand: a travel shorter than the machine's is no violation", "[closed-loop-verify]")
+{
+    // 1 --A--> 2 --NOT A--> 3 --TRUE--> 4 --TRUE--> 5, Lamp extending the
+    // cylinder from step 2 on. Step 2 is entered in the scan K that reads A,
+    // 3 in K+1 and 4 in K+2, left in K+3; B is read from K+3 on (three
+    // cycles out). Under the abstraction the rod may arrive a cycle sooner:
+    // that run does not replay, and the search with the machine counted in
+    // scans shows there is none.
+    Model model = cylinderCell();
+    require(model.removeGrafcetTransition("F1", 2));
+    for (int step = 3; step <= 5; ++step)
+        samples::addMachineStep(model, step, false, {{ActionTiming::Continuous, "N Lamp"}});
+    samples::addMachineTransition(model, 2, {2}, {3}, "NOT A");
+    samples::addMachineTransition(model, 3, {3}, {4}, "TRUE");
+    samples::addMachineTransition(model, 4, {4}, {5}, "TRUE");
+    const std::string property = "never F1.X4 AND B";
+    explore::Options options;
+    options.machine = &model.machine();
+    options.properties = {property};
+    explore::ProgramExplorer explorer(model, options);
+    const explore::Exploration& exploration = explorer.run();
+    REQUIRE(exploration.exhaustive);
+    const auto spurious = std::find_if(exploration.events.begin(), exploration.events.end(), [](const explore::Event& e) {
+        return e.kind == explore::EventKind::PropertyViolated;
+    });
+    REQUIRE(spurious != exploration.events.end());
+    CHECK_FALSE(explorer.counterexample(*spurious, "too soon").confirmed);
+
+    const VerificationResult abstracted = verifyModel(model, withProperty(property, true));
+    INFO(codesOf(abstracted).size());
+    CHECK(outcomeOf(abstracted) == PropertyOutcome::Holds);
+    VerificationOptions counted = withProperty(property, true);
+    counted.exactTime = true;
+    CHECK(outcomeOf(verifyModel(model, counted)) == PropertyOutcome::Holds);
+    // One scan later it is a real violation.
+    const std::string later = "never F1.X5 AND B";
+    const VerificationResult violated = verifyModel(model, withProperty(later, true));
+    REQUIRE(outcomeOf(violated) == PropertyOutcome::Violated);
+    CHECK(replaysToViolation(model, violated, later));
 }
 
 TEST_CASE("A part source without limit keeps the closed-loop exploration finite", "[closed-loop-verify]")
