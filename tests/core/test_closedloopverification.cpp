@@ -61,26 +61,6 @@ PropertyOutcome outcomeOf(const VerificationResult& result)
     return result.propertyVerdicts.front().outcome;
 }
 
-// F1's GRAFCET: 1 --A--> 2 (N Lamp) --B--> 1, Lamp extending a
-// single-acting cylinder whose retracted switch is A and extended switch B,
-// 3 cycles out (60 ms at 20 ms) and 2 back.
-Model cylinderCell()
-{
-    Model model = samples::nestedMachine();
-    samples::addMachineStep(model, 1, true);
-    samples::addMachineStep(model, 2, false, {{ActionTiming::Continuous, "N Lamp"}});
-    samples::addMachineTransition(model, 1, {1}, {2}, "A");
-    samples::addMachineTransition(model, 2, {2}, {1}, "B");
-    Component cylinder = makeComponent(ComponentKind::SingleActingCylinder, "Pusher");
-    REQUIRE(cylinder.setSignal("extend", "Lamp"));
-    REQUIRE(cylinder.setSignal("retracted", "A"));
-    REQUIRE(cylinder.setSignal("extended", "B"));
-    REQUIRE(cylinder.setParameter("extendMs", 60));
-    REQUIRE(cylinder.setParameter("retractMs", 40));
-    require(model.setMachine(Machine{{cylinder}}));
-    return model;
-}
-
 // The counterexample of the property's violation, replayed with the
 // machine up to its last scan: whether the property is violated there.
 bool replaysToViolation(const Model& model, const VerificationResult& result, const std::string& property)
@@ -221,7 +201,7 @@ TEST_CASE("Every run of the machine is a run of its abstraction", "[closed-loop-
 TEST_CASE("Limit switches of one cylinder: never together with the machine, free without it",
           "[closed-loop-verify]")
 {
-    const Model model = cylinderCell();
+    const Model model = samples::cylinderCell();
     const std::string property = "never A AND B";
     const VerificationResult open = verifyModel(model, withProperty(property, false));
     CHECK(outcomeOf(open) == PropertyOutcome::Violated);
@@ -239,7 +219,7 @@ TEST_CASE("By hand: step 2 is left in the scan that reads the extended switch", 
     // Step 2 is entered on A (the rod retracted) and left on B: it can never
     // be active at the end of a scan that read B. It can be active in the
     // scan that entered it, which still read A.
-    const Model model = cylinderCell();
+    const Model model = samples::cylinderCell();
     const VerificationResult holds = verifyModel(model, withProperty("never F1.X2 AND B", true));
     CHECK(outcomeOf(holds) == PropertyOutcome::Holds);
     CHECK(outcomeOf(verifyModel(model, withProperty("never F1.X2 AND B", false))) == PropertyOutcome::Violated);
@@ -258,7 +238,7 @@ TEST_CASE("By hand: a travel shorter than the machine's is no violation", "[clos
     // cycles out). Under the abstraction the rod may arrive a cycle sooner:
     // that run does not replay, and the search with the machine counted in
     // scans shows there is none.
-    Model model = cylinderCell();
+    Model model = samples::cylinderCell();
     require(model.removeGrafcetTransition("F1", 2));
     for (int step = 3; step <= 5; ++step)
         samples::addMachineStep(model, step, false, {{ActionTiming::Continuous, "N Lamp"}});
