@@ -82,7 +82,7 @@ const char* const kUsage =
     "      decide by then is reported as not exhaustive or undecided).\n"
     "      --machine explores the program with the model's machine (closed loop): the inputs\n"
     "      its sensors drive follow the machine, operator inputs stay free, time is counted in\n"
-    "      scans; counterexamples replay with the machine (simulate).\n"
+    "      scans; counterexamples replay with the machine (simulate); --promela writes it too.\n"
     "      Each property ends as holds, violated or undecided. Exit 1 when a finding is an\n"
     "      error or a warning (a property violated), else 3 when something is undecided (a\n"
     "      property, or a claim whose run does not replay); 2 when a file cannot be written.\n"

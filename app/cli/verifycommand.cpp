@@ -151,6 +151,8 @@ std::string promelaText(const core::Model& model, const core::VerificationOption
     program.complete = options.complete;
     program.properties = core::propertiesToCheck(model, options);
     program.exactTime = options.exactTime;
+    if (core::runsClosedLoop(model, options))
+        program.machine = &model.machine();
     return core::buildProgramPromela(model, program).text;
 }
 
@@ -233,11 +235,6 @@ int commandVerify(const Arguments& args, Streams streams)
     if (closedLoop && loaded.model->machine().empty()) {
         streams.err << "ggstudio-cli: --machine: " << path
                     << " has no machine to verify with (docs/simulation.md, \"The virtual machine\")" << lineEnd;
-        return UsageError;
-    }
-    if (closedLoop && args.value("--promela")) {
-        streams.err << "ggstudio-cli: --promela writes the open-loop program: it is not available with --machine"
-                    << lineEnd;
         return UsageError;
     }
     std::vector<std::string> automatic;
