@@ -7,6 +7,7 @@
 #include "verificationtestsupport.h"
 
 #include "core/formats/modelfiles.h"
+#include "core/machine/closedloopscenario.h"
 #include "core/machine/machine.h"
 #include "core/machine/machineloop.h"
 #include "core/machine/machinestate.h"
@@ -326,6 +327,33 @@ TEST_CASE("Drilling cell: a closed-loop violation replays with the machine", "[c
     const VerificationResult result = verifyModel(*model, withProperty(property, true));
     REQUIRE(outcomeOf(result) == PropertyOutcome::Violated);
     CHECK(replaysToViolation(*model, result, property));
+}
+
+TEST_CASE("Cut short, a closed-loop run claims no run of arbitrary sensors", "[closed-loop-verify]")
+{
+    // The GEMMA layer's findings that claim a run (GV104-GV107) were decided
+    // with every input free: only the exploration with the machine may claim
+    // them, and every counterexample leaves the sensors to the machine.
+    const auto model = drillingCell();
+    VerificationOptions options;
+    options.closedLoop = true;
+    options.maxProgramStates = 50;
+    const VerificationResult result = verifyModel(*model, options);
+    CHECK_FALSE(result.exhaustive);
+    VerificationOptions open = options;
+    open.closedLoop = false;
+    const VerificationResult openLoop = verifyModel(*model, open);
+    REQUIRE(findingOf(openLoop, verification::kOverlap)); // the open loop claims some
+    Simulator simulator(*model);
+    MachineLoop loop(simulator, model->machine());
+    for (const VerificationFinding& f : result.findings) {
+        INFO(f.code << " " << f.message);
+        const bool claimsRun = f.code == verification::kOverlap || f.code == verification::kNoReturn
+            || f.code == verification::kStuck || f.code == verification::kNoEmergencyStop;
+        CHECK((!claimsRun || f.origin == FindingOrigin::BothLayers));
+        if (f.counterexample)
+            CHECK(validateClosedLoopScenario(f.counterexample->scenario, loop).empty());
+    }
 }
 
 TEST_CASE("Closed loop needs a machine", "[closed-loop-verify]")
