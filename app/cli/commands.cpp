@@ -82,7 +82,7 @@ const char* const kUsage =
     "      Exit 0 when every scenario passes, 1 when one fails, 2 when a file cannot be read.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
     "         [--complete-automatic STEP[,STEP...]|all] [--property \"never P\"]... [--exact-time]\n"
-    "         [--time-limit 4s]\n"
+    "         [--time-limit 4s] [--machine]\n"
     "      Prove properties of both layers (docs/verification.md): print FILE: ELEMENTS:\n"
     "      severity: CODE: message lines; with DIR, write each counterexample as a scenario\n"
     "      file there; with --promela, also write the model for SPIN. The model's own\n"
@@ -92,6 +92,9 @@ const char* const kUsage =
     "      named by --complete-automatic (TRUE at every scan, as the skeleton FB).\n"
     "      The whole run stops after --time-limit (default 4s, at most 1h; what it could not\n"
     "      decide by then is reported as not exhaustive or undecided).\n"
+    "      --machine explores the program with the model's machine (closed loop): the inputs\n"
+    "      its sensors drive follow the machine, operator inputs stay free, time is counted in\n"
+    "      scans; counterexamples replay with the machine (simulate); --promela writes it too.\n"
     "      Each property ends as holds, violated or undecided. Exit 1 when a finding is an\n"
     "      error or a warning (a property violated), else 3 when something is undecided (a\n"
     "      property, or a claim whose run does not replay); 2 when a file cannot be written.\n"
@@ -691,7 +694,7 @@ const std::map<std::string, Command>& commands()
         {"simulate", {commandSimulate, {"--scans", "--fault"}, {"--trace", "--explain", "--open-loop"}}},
         {"test", {commandTest, {"--junit", "--models"}, {}}},
         {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property", "--time-limit"},
-                    {"--exact-time"}}},
+                    {"--exact-time", "--machine"}}},
     };
     return table;
 }

@@ -151,6 +151,8 @@ std::string promelaText(const core::Model& model, const core::VerificationOption
     program.complete = options.complete;
     program.properties = core::propertiesToCheck(model, options);
     program.exactTime = options.exactTime;
+    if (core::runsClosedLoop(model, options))
+        program.machine = &model.machine();
     return core::buildProgramPromela(model, program).text;
 }
 
@@ -221,11 +223,19 @@ int commandVerify(const Arguments& args, Streams streams)
     if (!loaded.ok())
         return UnreadableInput;
     if (loaded.model->templateKind() == core::TemplateKind::PackML) {
-        if (args.value("--complete-automatic")) {
-            streams.err << "ggstudio-cli: --complete-automatic is not available for PackML models" << lineEnd
-                        << "Try 'ggstudio-cli --help'." << lineEnd;
-            return UsageError;
+        for (const char* gemmaOnly : {"--complete-automatic", "--machine"}) {
+            if (args.has(gemmaOnly) || args.value(gemmaOnly)) {
+                streams.err << "ggstudio-cli: " << gemmaOnly << " is not available for PackML models" << lineEnd
+                            << "Try 'ggstudio-cli --help'." << lineEnd;
+                return UsageError;
+            }
         }
+    }
+    const bool closedLoop = args.has("--machine");
+    if (closedLoop && loaded.model->machine().empty()) {
+        streams.err << "ggstudio-cli: --machine: " << path
+                    << " has no machine to verify with (docs/simulation.md, \"The virtual machine\")" << lineEnd;
+        return UsageError;
     }
     std::vector<std::string> automatic;
     if (const std::optional<std::string> value = args.value("--complete-automatic")) {
@@ -238,6 +248,7 @@ int commandVerify(const Arguments& args, Streams streams)
     for (const std::string& id : automatic)
         options.complete[id] = core::CompleteAssumption::Automatic;
     options.exactTime = args.has("--exact-time");
+    options.closedLoop = closedLoop;
     if (const std::optional<std::string> limit = args.value("--time-limit")) {
         const std::optional<std::chrono::milliseconds> parsed = parseTimeLimit(*limit);
         if (!parsed) {
@@ -313,6 +324,8 @@ int commandVerify(const Arguments& args, Streams streams)
     streams.out << result.findings.size() << " finding(s)" << (result.exhaustive ? "" : " (not exhaustive)");
     if (!automatic.empty())
         streams.out << ", Complete automatic: " << joined(automatic);
+    if (result.closedLoop)
+        streams.out << ", closed loop";
     streams.out << lineEnd;
     if (writeFailed)
         return UnreadableInput; // the output is incomplete: that comes first

@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -66,6 +67,17 @@ public:
 
     // Cycles a travel or delay of `ms` takes: ceil(ms / cycle), at least 1.
     static std::int64_t scansFor(std::int64_t ms, int cycleTimeMs);
+
+    // The state that decides every later cycle and sensor (positions, parts
+    // on conveyors, delays under way, parts left), appended to `key` in a few
+    // bytes (machinestatekey.cpp): equal keys, equal futures. The parts
+    // delivered are left out, no sensor reads them: a verifier keying its
+    // states on this stays finite with an unlimited part source.
+    void appendKey(std::string& key) const;
+    // The state of a key appendKey wrote for this machine, sensor slots
+    // rewritten from it (parts delivered: 0). The bytes read; 0 when the key
+    // is not one of this machine's (nothing changed then).
+    std::size_t restoreKey(std::string_view key);
 
 private:
     static constexpr int kMaxRoles = 4;

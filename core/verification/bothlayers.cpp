@@ -55,6 +55,7 @@ public:
         , m_deadline(deadline)
         , m_program(buildGemmaProgram(model))
         , m_properties(propertiesToCheck(model, options))
+        , m_closedLoop(runsClosedLoop(model, options))
     {
     }
 
@@ -82,6 +83,10 @@ private:
     std::chrono::steady_clock::time_point m_deadline; // the whole run's: both explorations share it
     GemmaProgram m_program;
     std::vector<std::string> m_properties;
+    // With the machine, the exploration decides every finding that claims a
+    // run (GV101, GV102, GV105-GV107, and GV103, GV104 when it decides them)
+    // with or without nested GRAFCETs: the GEMMA layer had every input free.
+    bool m_closedLoop = false;
     std::unique_ptr<explore::ProgramExplorer> m_explorer;
     std::unique_ptr<explore::ProgramExplorer> m_exact; // the refinement with exact time, when it ran
     std::set<std::string> m_exactKeys;
@@ -96,7 +101,8 @@ explore::Options BothLayers::explorationOptions(bool exactTime) const
     options.complete = m_options.complete;
     options.properties = m_properties;
     options.exactTime = exactTime;
-    options.decidePriorities = m_program.hasNestedGrafcets();
+    options.decidePriorities = m_program.hasNestedGrafcets() || m_closedLoop;
+    options.machine = m_closedLoop ? &m_model.machine() : nullptr;
     options.maxStates = m_options.maxProgramStates;
     options.cancelled = m_options.cancelled;
     options.deadline = m_deadline;
@@ -129,7 +135,7 @@ void BothLayers::run()
         m_added.push_back(undecided);
     }
     refine();
-    if (e.exhaustive && m_program.hasNestedGrafcets())
+    if (e.exhaustive && (m_program.hasNestedGrafcets() || m_closedLoop))
         replaceGemmaFindings();
     addNestedFacts();
     addEvents();
@@ -153,7 +159,8 @@ void BothLayers::run()
 // has no real run.
 void BothLayers::refine()
 {
-    if (m_options.exactTime || !hasLongTimers(m_program, m_model.settings().cycleTimeMs))
+    // In closed loop the machine's travels are abstracted as the TONs are.
+    if (m_options.exactTime || (!m_closedLoop && !hasLongTimers(m_program, m_model.settings().cycleTimeMs)))
         return;
     const std::vector<Event>& events = m_explorer->result().events;
     const bool anyPath
@@ -498,7 +505,7 @@ void BothLayers::add(VerificationFinding f, const Event* event)
                 }
             }
             if (witness == event && m_exact->result().exhaustive && !m_exactKeys.count(key)) {
-                // Counted in scans, no run shows it: the timer abstraction alone made it.
+                // Counted in scans, no run shows it: the time abstraction (of the TONs, of the machine) alone made it.
                 return;
             }
         }
@@ -521,6 +528,12 @@ void BothLayers::add(VerificationFinding f, const Event* event)
 // real one. Without it the property is undecided, never violated nor holding.
 bool BothLayers::confirmPropertyViolation(VerificationFinding& f)
 {
+    if (m_closedLoop) {
+        // The simulator's search runs open loop: its runs could set what the machine drives.
+        m_undecided[f.property] = "the violation the exploration with the machine found rests on its abstractions "
+                                  "and does not replay in the simulator with the machine";
+        return false;
+    }
     ConcreteSearchOptions options;
     options.complete = m_options.complete;
     options.maxStates = m_options.maxConcreteStates;
@@ -556,7 +569,7 @@ void BothLayers::addEvents()
 {
     const explore::Exploration& e = m_explorer->result();
     for (const Event& event : e.events) {
-        if (!m_program.hasNestedGrafcets()
+        if (!m_program.hasNestedGrafcets() && !m_closedLoop
             && (event.kind == EventKind::Stuck || event.kind == EventKind::NoReturn
                 || event.kind == EventKind::NoEmergencyStop))
             continue; // the GEMMA-layer analysis decides these without nested GRAFCETs
@@ -628,7 +641,7 @@ void BothLayers::addProperties()
 
 bool needsBothLayers(const Model& model, const VerificationOptions& options)
 {
-    return !model.grafcets().empty() || !propertiesToCheck(model, options).empty();
+    return !model.grafcets().empty() || !propertiesToCheck(model, options).empty() || runsClosedLoop(model, options);
 }
 
 std::vector<std::string> propertiesToCheck(const Model& model, const VerificationOptions& options)

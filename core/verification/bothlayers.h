@@ -17,7 +17,7 @@ namespace core {
 class Model;
 
 // Whether the model needs the exploration: it has a nested GRAFCET or
-// properties to check.
+// properties to check, or the run is closed loop.
 bool needsBothLayers(const Model& model, const VerificationOptions& options);
 
 // The properties a run checks: the model's, then the options'.

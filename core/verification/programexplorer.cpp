@@ -4,9 +4,14 @@
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
 #include "core/condition/symboltable.h"
+#include "core/machine/closedloopscenario.h"
+#include "core/machine/machineloop.h"
+#include "core/machine/machinestate.h"
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
+#include "core/verification/abstractmachine.h"
+#include "core/verification/closedloopreplay.h"
 #include "core/verification/comparisonshape.h"
 #include "core/verification/property.h"
 #include "core/verification/propertyevaluation.h"
@@ -64,6 +69,7 @@ std::string canonicalComparison(const cond::Expression& expression, int index, b
 // What a variable is to the explorer.
 enum class SlotClass {
     FreeBool,    // an input: any value at every scan
+    MachineBool, // closed loop: an input a machine's sensor drives, read from the machine's state
     StateBool,   // written by the program (stored or continuous): kept in the state
     ConstBool,   // neither: its default for ever
     FreeNumber,  // a numeric input, or a numeric variable the actions write (abstracted)
@@ -79,6 +85,10 @@ struct Slot {
     std::vector<cond::Value> representatives; // FreeNumber
     int stateBit = -1;                        // StateBool: index among the state's BOOLs
     int edge = -1;                            // read under an edge: index of its <V>_PREV
+    int machineSignal = -1;                   // MachineBool: its slot in the machine's signal table
+    // What the simulator holds before the first scan: the initial value, or
+    // in closed loop an operator input's rest value (MachineLoop::reset).
+    cond::Value replayInitial;
 };
 
 // How the explorer reads one node of an expression.
@@ -206,7 +216,8 @@ struct Layout {
 struct Decision {
     // NumberTest: a comparison of a free numeric variable with constants,
     // decided on the representatives still possible (Impl::numberPossible).
-    enum class Kind { Bool, Number, NumberTest, Opaque, Timer, Complete } kind = Kind::Bool;
+    // Machine: closed loop under the time abstraction, whether a travel or delay ends.
+    enum class Kind { Bool, Number, NumberTest, Opaque, Timer, Complete, Machine } kind = Kind::Bool;
     int slot = -1; // Bool, Number: the variable; Timer: the timer; Complete: the step index
     int value = 0; // Bool, Opaque, Timer, Complete: 0/1; Number: representative index
 };
@@ -330,6 +341,8 @@ struct ProgramExplorer::Impl {
 
     // --- compiling -------------------------------------------------------------------
     void compileSlots(const Model& model);
+    void compileMachine();
+    void advanceMachine();
     void compileSteps();
     void compileGrafcet(CompiledStep& step);
     void compileProperties(const Model& model);
@@ -412,6 +425,14 @@ struct ProgramExplorer::Impl {
     int d1Step = -1;
     Layout layout;
     int cycleMs = 20;
+    // Closed loop: the machine, restored from each state's tail (after
+    // layout.size) before its scan: counted in scans with exactTime, else
+    // abstracted as the TONs are (abstractMachine); its actuators (signal
+    // slot, variable slot).
+    std::optional<machine::MachineState> machineState;
+    std::optional<AbstractMachine> abstractMachine;
+    std::vector<std::pair<std::size_t, int>> actuators;
+    std::string machineStart; // the key of the machine's start state
     std::vector<ParsedProperty> parsedProperties;
     std::vector<const ExpressionInfo*> propertyInfos; // nullptr: skipped
 
@@ -492,6 +513,7 @@ ProgramExplorer::Impl::Impl(const Model& m, Options o)
 {
     cycleMs = m.settings().cycleTimeMs;
     compileSlots(m);
+    compileMachine();
     compileSteps();
     compileProperties(m);
     for (const auto& [slot, list] : comparisons) {
@@ -561,6 +583,7 @@ void ProgramExplorer::Impl::compileSlots(const Model& m)
         if (!value)
             value = cond::parseValue(variable.type, "");
         slot.initial = value.value_or(cond::Value{false});
+        slot.replayInitial = slot.initial;
         const bool isWritten = written.count(upper(variable.name)) > 0;
         if (variable.type == IecType::Bool) {
             slot.cls = variable.kind == VariableKind::Input ? SlotClass::FreeBool
@@ -593,6 +616,45 @@ void ProgramExplorer::Impl::compileSlots(const Model& m)
             abstractedNumbers = true;
         }
     }
+}
+
+// Closed loop: the variables wired as MachineLoop wires them (a BOOL output
+// to an actuator role, a BOOL input to a sensor or operator role); the
+// inputs a sensor writes are no longer free.
+void ProgramExplorer::Impl::compileMachine()
+{
+    if (!options.machine || options.machine->empty())
+        return;
+    const auto wire = [&](std::string_view name, machine::SignalDirection direction) {
+        const int s = slotOf(name);
+        if (s < 0)
+            return -1;
+        const Slot& slot = slots[static_cast<std::size_t>(s)];
+        const VariableKind wanted
+            = direction == machine::SignalDirection::Actuator ? VariableKind::Output : VariableKind::Input;
+        return slot.type == IecType::Bool && slot.kind == wanted ? s : -1;
+    };
+    machineState.emplace(*options.machine, cycleMs, wire);
+    if (!options.exactTime) {
+        abstractMachine.emplace(*options.machine, *machineState, cycleMs, wire);
+        result.abstractions.push_back("machine travels and delays longer than one cycle may or may not have ended");
+    }
+    const std::vector<machine::SignalSlot>& table = machineState->signalSlots();
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        Slot& slot = slots[static_cast<std::size_t>(table[i].variable)];
+        switch (table[i].direction) {
+        case machine::SignalDirection::Sensor:
+            slot.cls = SlotClass::MachineBool;
+            slot.machineSignal = static_cast<int>(i);
+            break;
+        case machine::SignalDirection::Operator: slot.replayInitial = machineState->signal(i); break;
+        case machine::SignalDirection::Actuator: actuators.emplace_back(i, table[i].variable); break;
+        }
+    }
+    if (abstractMachine)
+        abstractMachine->appendKey(machineStart);
+    else
+        machineState->appendKey(machineStart);
 }
 
 void ProgramExplorer::Impl::compileSteps()
@@ -1002,6 +1064,7 @@ void setStepIndex(State& state, int index)
 State ProgramExplorer::Impl::initialState() const
 {
     State state(static_cast<std::size_t>(layout.size), '\0');
+    state += machineStart;
     setStepIndex(state, initialStep);
     state[2] = 1; // Entry
     for (const Slot& slot : slots) {
@@ -1029,6 +1092,10 @@ bool ProgramExplorer::Impl::readBool(int slot)
     switch (s.cls) {
     case SlotClass::StateBool: return work[static_cast<std::size_t>(layout.bools + s.stateBit)] != 0;
     case SlotClass::ConstBool: return cond::isTrue(s.initial);
+    case SlotClass::MachineBool: {
+        const auto signal = static_cast<std::size_t>(s.machineSignal);
+        return abstractMachine ? abstractMachine->signal(signal) : machineState->signal(signal);
+    }
     case SlotClass::FreeBool: {
         int& cached = boolCache[static_cast<std::size_t>(slot)];
         if (cached < 0)
@@ -1524,6 +1591,10 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
 {
     ScanOutcome outcome;
     work = from;
+    if (abstractMachine)
+        abstractMachine->restoreKey(std::string_view(from).substr(static_cast<std::size_t>(layout.size)));
+    else if (machineState)
+        machineState->restoreKey(std::string_view(from).substr(static_cast<std::size_t>(layout.size)));
     std::fill(boolCache.begin(), boolCache.end(), -1);
     std::fill(numberCache.begin(), numberCache.end(), -1);
     std::fill(numberPossible.begin(), numberPossible.end(), 0);
@@ -1654,8 +1725,33 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
     }
     activeGrafcet = nullptr;
     propertyPhase = false;
+    advanceMachine();
     to = work;
     return outcome;
+}
+
+// Closed loop, after the scan: one machine cycle from the outputs as the
+// scan left them; its state replaces the state's tail.
+void ProgramExplorer::Impl::advanceMachine()
+{
+    if (!machineState)
+        return;
+    work.resize(static_cast<std::size_t>(layout.size));
+    if (abstractMachine) {
+        for (const auto& [signal, slot] : actuators)
+            abstractMachine->setSignal(signal, readBool(slot));
+        abstractMachine->cycle([&](int alternatives) {
+            const int value = chooser.choose(alternatives);
+            chooser.decisions.push_back({Decision::Kind::Machine, -1, value});
+            return value;
+        });
+        abstractMachine->appendKey(work);
+        return;
+    }
+    for (const auto& [signal, slot] : actuators)
+        machineState->setSignal(signal, readBool(slot));
+    machineState->cycle();
+    machineState->appendKey(work);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -2268,9 +2364,11 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     path = impl.stretchForTimers(path, event);
     std::ostringstream text;
     text << "# " << title << "\n";
+    if (impl.machineState)
+        text << "# closed loop: replay it with the model's machine\n";
     std::map<int, std::string> current; // slot -> value text the simulator holds
     for (std::size_t i = 0; i < impl.slots.size(); ++i)
-        current[static_cast<int>(i)] = valueText(impl.slots[i].initial);
+        current[static_cast<int>(i)] = valueText(impl.slots[i].replayInitial);
     std::int64_t scan = 0;
     State last;
     std::string firedAtEnd; // the GEMMA transition the last scan must fire (GV103, GV104)
@@ -2354,7 +2452,14 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     Simulator simulator(impl.model);
     if (!validateScenario(out.scenario, simulator).empty())
         return out;
-    const ScenarioRunResult run = runScenario(out.scenario, simulator, scan);
+    std::optional<machine::MachineLoop> loop;
+    if (impl.machineState) {
+        loop.emplace(simulator, *impl.options.machine);
+        if (!machine::validateClosedLoopScenario(out.scenario, *loop).empty())
+            return out;
+    }
+    const ScenarioRunResult run
+        = loop ? replayClosedLoop(out.scenario, *loop, scan) : runScenario(out.scenario, simulator, scan);
     out.confirmed = run.passed();
     if (out.confirmed && event.kind == EventKind::PropertyViolated && event.property >= 0) {
         // The property itself, read on the simulator after the last scan.

@@ -25,6 +25,13 @@
 // Every abstraction only adds behaviour: a "never" claim is never wrong.
 // Inactive nested GRAFCETs are not kept: the Initialization call of their
 // step's entry scan starts them afresh.
+//
+// In closed loop (Options::machine, docs/verification.md, "Closed loop
+// (--machine)") the machine's state is part of the state: the inputs its
+// sensors drive are read from it, not chosen, and after each scan it moves
+// one cycle from the outputs, as core::machine::MachineLoop does. With
+// exactTime its travels and delays are counted in scans like the TONs;
+// without, they are abstracted like the TONs (abstractmachine.h).
 
 #include "core/verification/tonscans.h"
 #include "core/verification/verification.h"
@@ -43,6 +50,10 @@
 namespace core {
 
 class Model;
+
+namespace machine {
+struct Machine;
+}
 
 namespace explore {
 
@@ -67,6 +78,9 @@ struct Options {
     // the states are explored; the graph properties (Stuck, NoReturn, ...)
     // are only found by a whole exploration. Empty: explore everything.
     std::set<std::string> searchFor;
+    // Closed loop with this machine (it must outlive the explorer); nullptr
+    // or an empty machine: every input is free.
+    const machine::Machine* machine = nullptr;
     std::size_t maxStates = 1'000'000;
     // Scans run (each way the inputs of a state go): a budget of work that,
     // unlike the deadline, ends at the same point on every machine.

@@ -1,5 +1,7 @@
 #include "core/verification/promelaprogram.h"
 
+#include "core/verification/promelamachine.h"
+
 #include "core/templates/gemma/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
@@ -87,6 +89,7 @@ BinaryOp mirroredOp(BinaryOp op)
 // What a declared variable is to the program.
 enum class VariableRole {
     Input,    // BOOL input: chosen when read
+    Sensor,   // closed loop: a BOOL input the machine drives, read from its state
     Stored,   // BOOL written by the program: part of the state
     Constant, // BOOL nothing writes: its default
     Number,   // numeric input or numeric variable an action writes: one representative when read
@@ -100,7 +103,12 @@ struct VariableInfo {
     std::vector<cond::Value> representatives;
     std::vector<sat::Atom> comparisons; // with constants, for the representatives
     bool edge = false;                  // read under an edge: p_<name>
-    bool readsAsBool() const { return role == VariableRole::Input || role == VariableRole::Stored || role == VariableRole::Constant; }
+    std::string sensor;                 // Sensor: the expression of the machine's state it reads
+    bool readsAsBool() const
+    {
+        return role == VariableRole::Input || role == VariableRole::Sensor || role == VariableRole::Stored
+            || role == VariableRole::Constant;
+    }
 };
 
 // What an expression is evaluated in.
@@ -124,6 +132,7 @@ public:
 private:
     // --- planning ---
     void classifyVariables();
+    void wireMachine();
     void collectComparisons(const cond::Expression& expression);
     void collectAll();
     void computeRepresentatives();
@@ -179,6 +188,7 @@ private:
     std::vector<std::string> m_d1Outputs;   // BOOL outputs the program writes, declared spelling
     int m_d1 = -1;
     int m_cycleMs = 20;
+    PromelaMachine m_machine; // closed loop; empty otherwise
     int m_maxDepth = 1;
     std::size_t m_maxTransitions = 1, m_maxSteps = 1, m_maxOutputs = 1;
     int m_maxEvolutions = 1; // gEvolutions counts up to it: a byte holds only 255
@@ -256,6 +266,31 @@ void ProgramPromela::classifyVariables()
     for (const std::string& name : m_program.edgeVariables) {
         if (VariableInfo* info = variable(name))
             info->edge = true;
+    }
+}
+
+// Closed loop: the inputs the machine's sensors drive read its state, and
+// the machine runs one cycle after each scan (core/verification/promelamachine.h).
+void ProgramPromela::wireMachine()
+{
+    const auto wired = [&](std::string_view name, machine::SignalDirection direction) {
+        const VariableInfo* info = variable(name);
+        const VariableKind wanted
+            = direction == machine::SignalDirection::Actuator ? VariableKind::Output : VariableKind::Input;
+        return info && info->declared->type == IecType::Bool && info->declared->kind == wanted;
+    };
+    const auto outputValue = [&](std::string_view name) -> std::string {
+        const VariableInfo* info = variable(name);
+        if (info->role == VariableRole::Stored)
+            return "v_" + info->declared->name;
+        return cond::isTrue(info->initial) ? "1" : "0";
+    };
+    m_machine = buildPromelaMachine(*m_options.machine, m_cycleMs, m_options.exactTime, wired, outputValue);
+    for (const auto& [upper, expression] : m_machine.sensors) {
+        if (VariableInfo* info = variable(upper)) {
+            info->role = VariableRole::Sensor;
+            info->sensor = expression;
+        }
     }
 }
 
@@ -364,6 +399,7 @@ std::string ProgramPromela::readBool(const VariableInfo& info)
     case VariableRole::Input:
         m_out.line("rd_" + info.declared->name + "();");
         return "i_" + info.declared->name;
+    case VariableRole::Sensor: return info.sensor;
     case VariableRole::Stored: return "v_" + info.declared->name;
     case VariableRole::Constant: return cond::isTrue(info.initial) ? "1" : "0";
     default: return "0"; // a numeric variable in a BOOL context: not in a usable text
@@ -622,6 +658,8 @@ PromelaModel ProgramPromela::run()
 {
     m_cycleMs = m_model.settings().cycleTimeMs;
     classifyVariables();
+    if (m_options.machine && !m_options.machine->empty())
+        wireMachine();
     collectAll();
     computeRepresentatives();
     for (std::size_t i = 0; i < m_program.steps.size(); ++i) {
@@ -712,6 +750,10 @@ void ProgramPromela::writeDeclarations()
                        + "; /* " + info.declared->name + "_PREV */");
     }
     m_out.line("");
+    if (!m_machine.declarations.empty())
+        m_out.line("/* The machine (closed loop). */");
+    for (const std::string& declaration : m_machine.declarations)
+        m_out.line(declaration);
     m_out.line("/* Within one scan, all 0 between scans. */");
     for (const VariableInfo& info : m_variables) {
         const std::string& name = info.declared->name;
@@ -783,6 +825,10 @@ void ProgramPromela::writeProcess()
     m_out.line("scanned:");
     m_out.in();
     writeEndOfScan();
+    if (!m_machine.cycle.empty())
+        m_out.line("/* the machine's cycle, from the outputs the scan left */");
+    for (const std::string& statement : m_machine.cycle)
+        m_out.line(statement);
     writeReset();
     m_out.out();
     m_out.line("}");

@@ -40,6 +40,10 @@ namespace core {
 
 class Model;
 
+namespace machine {
+struct Machine;
+}
+
 struct ProgramPromelaOptions {
     // Complete of the macro/enclosing steps without nested GRAFCET (Free when not listed).
     std::map<std::string, CompleteAssumption> complete;
@@ -51,6 +55,11 @@ struct ProgramPromelaOptions {
     // With exactTime: a TON is counted up to this many runs, then may or may
     // not have elapsed (explore::Options::maxCountedTimerRuns, which it must equal).
     std::int64_t maxCountedTimerRuns = tonscans::kMaxCountedRuns;
+    // Closed loop (docs/verification.md, "Closed loop (--machine)"): the
+    // inputs this machine's sensors drive read its state, and it runs one
+    // cycle after each scan, counted in scans with exactTime, else
+    // abstracted as explore::AbstractMachine is. nullptr or empty: open loop.
+    const machine::Machine* machine = nullptr;
 };
 
 PromelaModel buildProgramPromela(const Model& model, const ProgramPromelaOptions& options = {});

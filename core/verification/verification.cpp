@@ -1124,6 +1124,21 @@ VerificationResult Verifier::run()
     return result;
 }
 
+// Closed loop: the GEMMA layer explored every input free. What it proved
+// of every reachable configuration (GV101-GV103) still holds with the
+// machine, which only narrows the inputs; what claims that some run exists
+// (GV104-GV107) may not with the machine, and the runs of the rest set
+// sensors the machine drives: both are left to the exploration with it.
+void keepClosedLoopFindings(VerificationResult& result)
+{
+    const std::set<std::string> existential{verification::kOverlap, verification::kNoReturn, verification::kStuck,
+                                            verification::kNoEmergencyStop};
+    std::erase_if(result.findings, [&](const VerificationFinding& f) { return existential.count(f.code) > 0; });
+    for (VerificationFinding& f : result.findings)
+        f.counterexample.reset();
+    result.closedLoop = true;
+}
+
 } // namespace
 
 bool VerificationResult::violated() const
@@ -1144,6 +1159,11 @@ bool VerificationResult::undecided() const
     });
 }
 
+bool runsClosedLoop(const Model& model, const VerificationOptions& options)
+{
+    return options.closedLoop && !model.machine().empty() && model.templateKind() == TemplateKind::Gemma;
+}
+
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options)
 {
     return verificationEnginesOf(model).verifyModel(model, options);
@@ -1156,6 +1176,8 @@ VerificationResult verifyGemmaModel(const Model& model, const VerificationOption
                                                          : std::chrono::steady_clock::time_point::max();
     Verifier verifier(model, options);
     VerificationResult result = verifier.run();
+    if (runsClosedLoop(model, options) && !result.cancelled)
+        keepClosedLoopFindings(result);
     if (!result.cancelled && needsBothLayers(model, options))
         verifyBothLayers(model, options, result, deadline);
     return result;

@@ -95,6 +95,11 @@ struct VerificationOptions {
     // stops once it has found them all. True: it explores everything anyway
     // (the same findings, more time; the tests compare the two).
     bool wholeExactTimeExploration = false;
+    // Closed loop (docs/verification.md, "Closed loop (--machine)"): the
+    // program is explored with the model's machine, the inputs its sensors
+    // drive computed from the machine's state, operator inputs free, time
+    // counted in scans. Ignored for a model without machine (and for PackML).
+    bool closedLoop = false;
 };
 
 // A run of the simulator from reset that shows a finding: scenario text the
@@ -176,6 +181,7 @@ struct VerificationResult {
     std::vector<std::string> abstractions; // what the exploration abstracted (English), empty when exact
     std::size_t programStates = 0;         // explored states of both layers (0: not explored)
     bool bothLayers = false;               // the exploration of both layers ran
+    bool closedLoop = false;               // it ran with the model's machine (VerificationOptions::closedLoop)
 
     // A finding of severity error or warning other than GV100 and GV123: a
     // property does not hold.
@@ -191,11 +197,16 @@ struct VerificationResult {
 VerificationResult verifyModel(const Model& model, const VerificationOptions& options = {});
 
 // verifyModel for a GEMMA model: a hidden initial step makes every visible
-// step unreachable (GV101), as on the PLC.
+// step unreachable (GV101), as on the PLC. In closed loop the GEMMA layer's
+// findings that claim a run (GV104-GV107) are dropped, being decided for
+// arbitrary sensors: the exploration with the machine decides them.
 VerificationResult verifyGemmaModel(const Model& model, const VerificationOptions& options = {});
 
 // "F1", "F1->A2", or "F1->D3, F1->A2" for several: the elements joined by ", ".
 std::string verificationElementLabel(const VerificationFinding& finding);
+
+// Whether a run with these options is closed loop: asked, and the model has a machine.
+bool runsClosedLoop(const Model& model, const VerificationOptions& options);
 
 // Codes, for the editor and tests.
 namespace verification {

@@ -3,6 +3,8 @@
 
 #include "samplemodels.h"
 
+#include "core/machine/machine.h"
+
 #include <stdexcept>
 #include <utility>
 
@@ -45,6 +47,20 @@ core::Model soundMachine()
     addMachineStep(model, 2, false, {{ActionTiming::Continuous, "N Lamp"}, {ActionTiming::OnActivation, "S Complete"}});
     addMachineTransition(model, 1, {1}, {2}, "A");
     addMachineTransition(model, 2, {2}, {1}, "NOT A");
+    return model;
+}
+
+core::Model cylinderCell()
+{
+    core::Model model = nestedMachine();
+    addMachineStep(model, 1, true);
+    addMachineStep(model, 2, false, {{ActionTiming::Continuous, "N Lamp"}});
+    addMachineTransition(model, 1, {1}, {2}, "A");
+    addMachineTransition(model, 2, {2}, {1}, "B");
+    core::machine::Component cylinder = core::machine::makeComponent(core::machine::ComponentKind::SingleActingCylinder, "Pusher");
+    cylinder.wires = {"Lamp", "A", "B"};
+    cylinder.parameters = {60, 40};
+    requireBuilt(model.setMachine(core::machine::Machine{{cylinder}}));
     return model;
 }
 

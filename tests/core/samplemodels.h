@@ -93,6 +93,11 @@ core::Model overlapMachine();
 // negated F1 -> A2 (Flag AND B) and F1 -> A3 (Flag2 AND B) can never hold
 // together, though they can on the GEMMA layer (no GV104 on both layers).
 core::Model exclusiveByMemoryMachine();
+// Closed loop (docs/verification.md, "Closed loop (--machine)"): F1's
+// GRAFCET 1 --A--> 2 (N Lamp) --B--> 1, and a machine whose single-acting
+// cylinder Pusher is extended by Lamp, A its retracted switch and B its
+// extended one, 3 cycles out (60 ms at 20 ms) and 2 back.
+core::Model cylinderCell();
 
 // Models seeded with each defect the verification of both layers finds
 // (a nested step never active, an unsafe step, Unstable, branches that start

@@ -12,6 +12,7 @@
 
 #include "core/templates/gemma/gemmaprogram.h"
 #include "core/formats/modelfiles.h"
+#include "core/machine/machine.h"
 #include "core/model/model.h"
 #include "core/verification/programexplorer.h"
 #include "core/verification/promelaprogram.h"
@@ -162,7 +163,8 @@ std::string listed(const Facts& facts)
 // exact-time switch: the same facts. Returns them.
 Facts requireAgreement(const explore::Exploration& e, const Model& model, const std::vector<std::string>& properties,
                        bool exactTime, const std::string& name,
-                       std::int64_t maxCountedTimerRuns = tonscans::kMaxCountedRuns)
+                       std::int64_t maxCountedTimerRuns = tonscans::kMaxCountedRuns,
+                       const machine::Machine* closedLoop = nullptr)
 {
     REQUIRE(e.exhaustive);
     REQUIRE(e.prioritiesDecided);
@@ -170,6 +172,7 @@ Facts requireAgreement(const explore::Exploration& e, const Model& model, const 
     promelaOptions.properties = properties;
     promelaOptions.exactTime = exactTime;
     promelaOptions.maxCountedTimerRuns = maxCountedTimerRuns;
+    promelaOptions.machine = closedLoop;
     const SpinRun spin = spinFacts(model, promelaOptions, name);
     const Facts built = explorationFacts(e);
     Facts onlySpin, onlyBuilt;
@@ -185,14 +188,16 @@ Facts requireAgreement(const explore::Exploration& e, const Model& model, const 
 }
 
 Facts requireAgreement(const Model& model, const std::vector<std::string>& properties, bool exactTime,
-                       const std::string& name, std::int64_t maxCountedTimerRuns = tonscans::kMaxCountedRuns)
+                       const std::string& name, std::int64_t maxCountedTimerRuns = tonscans::kMaxCountedRuns,
+                       const machine::Machine* closedLoop = nullptr)
 {
     explore::Options options;
     options.properties = properties;
     options.exactTime = exactTime;
     options.maxCountedTimerRuns = maxCountedTimerRuns;
+    options.machine = closedLoop;
     explore::ProgramExplorer explorer(model, options);
-    return requireAgreement(explorer.run(), model, properties, exactTime, name, maxCountedTimerRuns);
+    return requireAgreement(explorer.run(), model, properties, exactTime, name, maxCountedTimerRuns, closedLoop);
 }
 
 // verifyModel's facts of both layers are SPIN's (without long timers:
@@ -336,6 +341,32 @@ TEST_CASE("SPIN agrees with the exploration of both layers on the shipped exampl
     for (const UserProperty& property : faulty.model->properties())
         faultyProperties.push_back(property.text);
     requireAgreement(*faulty.model, faultyProperties, false, "drilling-cell-faulty");
+}
+
+// Closed loop (docs/verification.md, "Closed loop (--machine)"): the
+// machine written as Promela of its own (core/verification/promelamachine.h),
+// abstracted and counted in scans; the drilling cell abstracted (counted, its
+// states are millions).
+TEST_CASE("SPIN agrees with the closed-loop exploration", "[spin][closed-loop-verify]")
+{
+    REQUIRE(spin::available());
+    const Model cell = samples::cylinderCell();
+    const std::vector<std::string> properties{"never A AND B", "never F1.X2 AND B", "never F1.X2 AND A"};
+    for (const bool exactTime : {false, true}) {
+        const Facts facts = requireAgreement(cell, properties, exactTime, "cylinder-cell", tonscans::kMaxCountedRuns,
+                                             &cell.machine());
+        CHECK_FALSE(has(facts, "violated 0"));
+        CHECK_FALSE(has(facts, "violated 1"));
+        CHECK(has(facts, "violated 2"));
+    }
+    const LoadedModel loaded = loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(loaded.ok());
+    const std::vector<std::string> drilling{"never Clamped AND Unclamped", "never Marker AND NOT DrillHigh"};
+    const Facts facts = requireAgreement(*loaded.model, drilling, false, "drilling-cell-closed-loop",
+                                         tonscans::kMaxCountedRuns, &loaded.model->machine());
+    CHECK_FALSE(has(facts, "violated 0"));
+    CHECK(has(facts, "violated 1"));
+    CHECK_FALSE(has(facts, "active F2 2")); // the head is up whenever F2 starts
 }
 
 TEST_CASE("SPIN agrees with the exploration of both layers on random models", "[spin][bothlayers]")
