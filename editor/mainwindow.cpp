@@ -52,6 +52,8 @@
 #include "editor/window/dockcontext.h"
 #include "editor/window/frontzoom.h"
 #include "editor/window/grafcettabs.h"
+#include "editor/machine/machinetab.h"
+#include "editor/docks/machinedock.h"
 #include "editor/window/modelsettingsdialog.h"
 #include "editor/window/newmodeldialog.h"
 #include "editor/window/statusindicators.h"
@@ -162,6 +164,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     m_session = new SimulationSession(m_document, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
+    m_machineTab = new MachineTab(m_centralTabs, m_document, m_session, this);
     m_packmlSession = new PackmlSimulationSession(m_document, this);
     m_packmlChartMarks = new PackmlSimulationMarks(m_packmlSession, m_packmlScene, this);
     m_verification = new VerificationRunner(m_document, m_session, this);
@@ -217,6 +220,7 @@ MainWindow::~MainWindow()
     m_centralTabs->disconnect(m_grafcetTabs);
     delete m_frontZoom;               // which follows the tab in front
     delete m_chartMarks;
+    delete m_machineTab; // its view, which shows the document and the session
     delete m_packmlChartMarks;
     delete m_problemCounter;
     deleteDocks();
@@ -230,7 +234,8 @@ QList<QDockWidget*> MainWindow::docks() const
         return m_dockFrames;
     return {m_stepDock,           m_transitionDock,     m_packmlStateDock, m_packmlCommandsDock,
             m_packmlModesDock,    m_grafcetStepDock,    m_grafcetTransitionDock,
-            m_simulationDock,     m_packmlSimulationDock, m_variablesDock,  m_problemsDock, m_stPreviewDock};
+            m_simulationDock,     m_packmlSimulationDock, m_variablesDock,  m_problemsDock, m_stPreviewDock,
+            m_machineDock};
 }
 
 QDockWidget* MainWindow::dockNamed(const QString& objectName) const
@@ -256,6 +261,7 @@ void MainWindow::createDocks()
     connect(m_stepDock->startGuide(), &StartGuide::userGuideRequested, this, &MainWindow::showUserGuide);
     connect(m_stepDock, &StepDock::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
+    m_machineDock = new MachineDock(m_document, this);
     onCentralTabChanged();
     m_simulationDock = new SimulationDock(m_session, m_document, this);
     m_packmlSimulationDock = new PackmlSimulationDock(m_packmlSession, m_document, this);
@@ -301,6 +307,7 @@ constexpr DockPlace kDockPlaces[] = {
     {"variablesDock", &VariablesDock::title, DockGroup::Lower},
     {"problemsDock", &ProblemsDock::title, DockGroup::Lower},
     {"stPreviewDock", &StPreviewDock::title, DockGroup::Lower},
+    {"machineDock", &MachineDock::title, DockGroup::Lower},
 };
 
 DockGroup defaultGroup(const QDockWidget* dock)
@@ -423,6 +430,7 @@ void MainWindow::deleteDocks()
     m_variablesDock = nullptr;
     m_problemsDock = nullptr;
     m_stPreviewDock = nullptr;
+    m_machineDock = nullptr;
     m_simulationDock = nullptr;
     m_packmlSimulationDock = nullptr;
     m_dockFrames.clear();
@@ -1380,7 +1388,7 @@ void MainWindow::giveSimulationTheColumn(bool simulating)
             && !tabifiedDockWidgets(simulation).contains(dock);
     };
     QDockWidget* lowerFront = nullptr;
-    const QList<QDockWidget*> lowerDocks{m_variablesDock, m_problemsDock, m_stPreviewDock};
+    const QList<QDockWidget*> lowerDocks{m_variablesDock, m_problemsDock, m_stPreviewDock, m_machineDock};
     for (QDockWidget* dock : lowerDocks) {
         if (dock->isVisible() && belowSimulation(dock) && dock->x() == simulation->x())
             lowerFront = dock;
