@@ -234,8 +234,7 @@ QList<QDockWidget*> MainWindow::docks() const
         return m_dockFrames;
     return {m_stepDock,           m_transitionDock,     m_packmlStateDock, m_packmlCommandsDock,
             m_packmlModesDock,    m_grafcetStepDock,    m_grafcetTransitionDock,
-            m_simulationDock,     m_packmlSimulationDock, m_variablesDock,  m_problemsDock, m_stPreviewDock,
-            m_machineDock};
+            m_simulationDock,     m_packmlSimulationDock, m_variablesDock,  m_problemsDock, m_stPreviewDock};
 }
 
 QDockWidget* MainWindow::dockNamed(const QString& objectName) const
@@ -261,13 +260,17 @@ void MainWindow::createDocks()
     connect(m_stepDock->startGuide(), &StartGuide::userGuideRequested, this, &MainWindow::showUserGuide);
     connect(m_stepDock, &StepDock::openGrafcetRequested, this, &MainWindow::openNestedGrafcet);
     m_stPreviewDock = new StPreviewDock(m_document, m_selection, this);
-    m_machineDock = new MachineDock(m_document, this);
     onCentralTabChanged();
     m_simulationDock = new SimulationDock(m_session, m_document, this);
     m_packmlSimulationDock = new PackmlSimulationDock(m_packmlSession, m_document, this);
     arrangeDocks(docks());
     for (QDockWidget* dock : docks())
         m_dockContext->watch(dock);
+    // The Machine panel opens from View > Machine, beside Variables: closed
+    // by default, so the default layout stays the one the column is sized for.
+    m_machineDock = new MachineDock(m_document, this);
+    m_machineDock->hide();
+    tabifyDockWidget(m_variablesDock, m_machineDock);
     followTabInFront();
     // Esc in a property dock goes back to the chart or GRAFCET in front (Enter or F2 there came in).
     for (PropertyDock* dock : std::initializer_list<PropertyDock*>{m_stepDock, m_transitionDock, m_grafcetStepDock,
@@ -307,7 +310,6 @@ constexpr DockPlace kDockPlaces[] = {
     {"variablesDock", &VariablesDock::title, DockGroup::Lower},
     {"problemsDock", &ProblemsDock::title, DockGroup::Lower},
     {"stPreviewDock", &StPreviewDock::title, DockGroup::Lower},
-    {"machineDock", &MachineDock::title, DockGroup::Lower},
 };
 
 DockGroup defaultGroup(const QDockWidget* dock)
@@ -430,6 +432,10 @@ void MainWindow::deleteDocks()
     m_variablesDock = nullptr;
     m_problemsDock = nullptr;
     m_stPreviewDock = nullptr;
+    if (m_machineDock) {
+        removeDockWidget(m_machineDock);
+        delete m_machineDock;
+    }
     m_machineDock = nullptr;
     m_simulationDock = nullptr;
     m_packmlSimulationDock = nullptr;
@@ -466,6 +472,8 @@ QList<QAction*> MainWindow::toggleViewActions() const
     QList<QAction*> actions;
     for (QDockWidget* dock : docks())
         actions << dock->toggleViewAction();
+    if (m_machineDock && m_dockFrames.isEmpty())
+        actions << m_machineDock->toggleViewAction();
     return actions;
 }
 
@@ -1388,7 +1396,7 @@ void MainWindow::giveSimulationTheColumn(bool simulating)
             && !tabifiedDockWidgets(simulation).contains(dock);
     };
     QDockWidget* lowerFront = nullptr;
-    const QList<QDockWidget*> lowerDocks{m_variablesDock, m_problemsDock, m_stPreviewDock, m_machineDock};
+    const QList<QDockWidget*> lowerDocks{m_variablesDock, m_problemsDock, m_stPreviewDock};
     for (QDockWidget* dock : lowerDocks) {
         if (dock->isVisible() && belowSimulation(dock) && dock->x() == simulation->x())
             lowerFront = dock;

@@ -16,6 +16,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -64,6 +65,7 @@ MachineDock::MachineDock(Document* document, QWidget* parent)
     auto* layout = new QVBoxLayout(content);
     m_list = new QListWidget(content);
     m_list->setObjectName(QStringLiteral("machineComponents"));
+    m_list->setMinimumHeight(fontMetrics().height() * 4);
     layout->addWidget(m_list, 1);
     auto* buttons = new QHBoxLayout;
     m_kind = new QComboBox(content);
@@ -83,7 +85,13 @@ MachineDock::MachineDock(Document* document, QWidget* parent)
     m_formLayout = new QFormLayout(m_form);
     m_formLayout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_form, 2);
-    setWidget(content);
+    // Scrolled: the panel shares the lower group's height and must not make the window taller.
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+    scroll->setMinimumHeight(fontMetrics().height() * 3); // not the form's: it scrolls
+    setWidget(scroll);
 
     connect(m_add, &QPushButton::clicked, this, &MachineDock::addComponent);
     connect(m_remove, &QPushButton::clicked, this, &MachineDock::removeComponent);

@@ -17,6 +17,7 @@
 #include <QComboBox>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTemporaryDir>
@@ -217,6 +218,12 @@ void TestMachineDock::firstComponentBringsTheMachineTab()
     QVERIFY(!window->machineTab()->view());
     auto* dock = window->findChild<MachineDock*>(QStringLiteral("machineDock"));
     QVERIFY(dock);
+    // Closed at first, opened from View > Machine.
+    QVERIFY(dock->isHidden());
+    auto* viewMenu = window->findChild<QMenu*>(QStringLiteral("viewMenu"));
+    QVERIFY(viewMenu && viewMenu->actions().contains(dock->toggleViewAction()));
+    dock->toggleViewAction()->trigger();
+    QVERIFY(dock->isVisible());
     dock->kindCombo()->setCurrentIndex(dock->kindCombo()->findText(QStringLiteral("Lamp")));
     dock->addComponent();
     QVERIFY(window->machineTab()->view());
