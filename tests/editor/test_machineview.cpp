@@ -22,6 +22,7 @@
 #include "core/formats/modelfiles.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QPainter>
@@ -49,6 +50,7 @@ private slots:
     void restShowsTheMachineAtRest();
     void cellsNeverOverlapAndNameTheirVariables();
     void litSensorsAreDrawnLit();
+    void cellsFollowTheDarkPalette();
     void followsTheSimulation();
     void followsTheHistory();
     void followsAReplay();
@@ -220,6 +222,32 @@ void TestMachineView::litSensorsAreDrawnLit()
     };
     QCOMPARE(lampAt(2), MachineComponentItem::litColour());            // retracted: Unclamped TRUE
     QVERIFY(lampAt(3) != MachineComponentItem::litColour());           // extended: Clamped FALSE
+}
+
+// The cells take the palette's base and text colours: readable in a dark theme too.
+void TestMachineView::cellsFollowTheDarkPalette()
+{
+    loadDrillingCell();
+    const QPalette light = QApplication::palette();
+    QPalette dark = light;
+    dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
+    dark.setColor(QPalette::Text, QColor(0xe8, 0xe8, 0xe8));
+    dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
+    QApplication::setPalette(dark);
+    const QRectF cell = scene()->componentItem(QStringLiteral("Clamp"))->boundingRect();
+    const QImage image = render();
+    QApplication::setPalette(light);
+    const QPointF inside = QPointF(cell.right() - 8, cell.top() + 8) - scene()->sceneRect().topLeft();
+    QCOMPARE(image.pixelColor(inside.toPoint()), QColor(0x1e, 0x1e, 0x1e));
+    // The name's text in the palette's light text colour somewhere in the header.
+    bool lightText = false;
+    for (int x = 0; x < 40 && !lightText; ++x) {
+        for (int y = 0; y < 16 && !lightText; ++y) {
+            const QPointF at = QPointF(cell.left() + 6 + x, cell.top() + 6 + y) - scene()->sceneRect().topLeft();
+            lightText = image.pixelColor(at.toPoint()).lightness() > 180;
+        }
+    }
+    QVERIFY(lightText);
 }
 
 void TestMachineView::followsTheSimulation()
