@@ -848,6 +848,8 @@ void MainWindow::resetLayout()
         dock->show();
     }
     arrangeDocks(docks());
+    if (m_machineDock) // back beside Variables, open or closed as it was
+        tabifyDockWidget(m_variablesDock, m_machineDock);
     m_mainToolBar->show();
     addToolBar(Qt::TopToolBarArea, m_mainToolBar);
     if (!isMaximized() && !isFullScreen())

@@ -14,7 +14,9 @@
 
 #include "core/formats/modelfiles.h"
 
+#include <QAction>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
@@ -223,6 +225,10 @@ void TestMachineDock::firstComponentBringsTheMachineTab()
     auto* viewMenu = window->findChild<QMenu*>(QStringLiteral("viewMenu"));
     QVERIFY(viewMenu && viewMenu->actions().contains(dock->toggleViewAction()));
     dock->toggleViewAction()->trigger();
+    QVERIFY(dock->isVisible());
+    // Tabbed with Variables, after a Reset Layout too.
+    window->findChild<QAction*>(QStringLiteral("resetLayoutAction"))->trigger();
+    QVERIFY(window->tabifiedDockWidgets(dock).contains(window->findChild<QDockWidget*>(QStringLiteral("variablesDock"))));
     QVERIFY(dock->isVisible());
     dock->kindCombo()->setCurrentIndex(dock->kindCombo()->findText(QStringLiteral("Lamp")));
     dock->addComponent();
