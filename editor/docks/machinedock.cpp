@@ -158,7 +158,8 @@ void MachineDock::refreshList()
         for (const core::machine::Component& component : machine.components)
             m_list->addItem(QStringLiteral("%1 (%2)").arg(QString::fromStdString(component.name),
                                                           machinetext::kindName(component.kind)));
-        m_list->setCurrentRow(std::min(current, m_list->count() - 1));
+        // The first component's form rather than an empty panel.
+        m_list->setCurrentRow(current < 0 ? 0 : std::min(current, m_list->count() - 1));
     }
     m_empty->setVisible(machine.empty());
     rebuildForm();

@@ -91,6 +91,8 @@ void TestMachineDock::chooseInCombo(QComboBox* combo, const QString& text)
 void TestMachineDock::addAndRemoveAreUndoable()
 {
     QCOMPARE(m_dock->componentList()->count(), 9);
+    QCOMPARE(m_dock->currentComponent(), 0); // the first one's form shows at once
+    QCOMPARE(m_dock->nameEdit()->text(), QStringLiteral("Clamp"));
     m_dock->kindCombo()->setCurrentIndex(m_dock->kindCombo()->findText(QStringLiteral("Conveyor")));
     QTest::mouseClick(m_dock->addButton(), Qt::LeftButton);
     QCOMPARE(machine().components.size(), std::size_t{10});
