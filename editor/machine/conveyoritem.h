@@ -9,6 +9,8 @@
 namespace editor {
 
 class ConveyorItem : public MachineComponentItem {
+    Q_DECLARE_TR_FUNCTIONS(ConveyorItem)
+
 public:
     using MachineComponentItem::MachineComponentItem;
 

@@ -11,6 +11,8 @@
 namespace editor {
 
 class OperatorItem : public MachineComponentItem {
+    Q_DECLARE_TR_FUNCTIONS(OperatorItem)
+
 public:
     OperatorItem(MachineScene& scene, std::size_t component, const QRectF& cell);
 

@@ -8,6 +8,8 @@
 namespace editor {
 
 class PartSourceItem : public MachineComponentItem {
+    Q_DECLARE_TR_FUNCTIONS(PartSourceItem)
+
 public:
     using MachineComponentItem::MachineComponentItem;
 
