@@ -337,7 +337,7 @@ void Document::emitChange(const core::ModelChange& change)
         emit modeChanged(id.toInt());
         break;
     case core::ModelChange::Kind::Machine:
-        // No view shows the machine yet; the checks rerun on every change as for the others.
+        emit machineChanged();
         break;
     }
 }

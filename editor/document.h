@@ -95,6 +95,7 @@ signals:
     void commandChanged(const QString& command); // its condition or comment ("Reset")
     void modesChanged(); // a unit mode added or removed
     void modeChanged(int mode); // its name, comment, request, listings or GRAFCET choices
+    void machineChanged(); // the virtual machine's description (core/machine/machine.h)
     void modelReset();        // everything may have changed
     // After modelReset: a new model (New, Open, an example, a recovery), not an edit of this one.
     void modelReplaced();

@@ -52,6 +52,8 @@
 #include "editor/window/dockcontext.h"
 #include "editor/window/frontzoom.h"
 #include "editor/window/grafcettabs.h"
+#include "editor/machine/machinetab.h"
+#include "editor/docks/machinedock.h"
 #include "editor/window/modelsettingsdialog.h"
 #include "editor/window/newmodeldialog.h"
 #include "editor/window/statusindicators.h"
@@ -162,6 +164,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     m_session = new SimulationSession(m_document, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
+    m_machineTab = new MachineTab(m_centralTabs, m_document, m_session, this);
     m_packmlSession = new PackmlSimulationSession(m_document, this);
     m_packmlChartMarks = new PackmlSimulationMarks(m_packmlSession, m_packmlScene, this);
     m_verification = new VerificationRunner(m_document, m_session, this);
@@ -217,6 +220,7 @@ MainWindow::~MainWindow()
     m_centralTabs->disconnect(m_grafcetTabs);
     delete m_frontZoom;               // which follows the tab in front
     delete m_chartMarks;
+    delete m_machineTab; // its view, which shows the document and the session
     delete m_packmlChartMarks;
     delete m_problemCounter;
     deleteDocks();
@@ -262,6 +266,11 @@ void MainWindow::createDocks()
     arrangeDocks(docks());
     for (QDockWidget* dock : docks())
         m_dockContext->watch(dock);
+    // The Machine panel opens from View > Machine, beside Variables: closed
+    // by default, so the default layout stays the one the column is sized for.
+    m_machineDock = new MachineDock(m_document, this);
+    m_machineDock->hide();
+    tabifyDockWidget(m_variablesDock, m_machineDock);
     followTabInFront();
     // Esc in a property dock goes back to the chart or GRAFCET in front (Enter or F2 there came in).
     for (PropertyDock* dock : std::initializer_list<PropertyDock*>{m_stepDock, m_transitionDock, m_grafcetStepDock,
@@ -423,6 +432,11 @@ void MainWindow::deleteDocks()
     m_variablesDock = nullptr;
     m_problemsDock = nullptr;
     m_stPreviewDock = nullptr;
+    if (m_machineDock) {
+        removeDockWidget(m_machineDock);
+        delete m_machineDock;
+    }
+    m_machineDock = nullptr;
     m_simulationDock = nullptr;
     m_packmlSimulationDock = nullptr;
     m_dockFrames.clear();
@@ -458,6 +472,8 @@ QList<QAction*> MainWindow::toggleViewActions() const
     QList<QAction*> actions;
     for (QDockWidget* dock : docks())
         actions << dock->toggleViewAction();
+    if (m_machineDock && m_dockFrames.isEmpty())
+        actions << m_machineDock->toggleViewAction();
     return actions;
 }
 
@@ -832,6 +848,8 @@ void MainWindow::resetLayout()
         dock->show();
     }
     arrangeDocks(docks());
+    if (m_machineDock) // back beside Variables, open or closed as it was
+        tabifyDockWidget(m_variablesDock, m_machineDock);
     m_mainToolBar->show();
     addToolBar(Qt::TopToolBarArea, m_mainToolBar);
     if (!isMaximized() && !isFullScreen())

@@ -26,6 +26,8 @@ class ChartView;
 class DockContext;
 class GrafcetStepDock;
 class GrafcetTabs;
+class MachineDock;
+class MachineTab;
 class GrafcetTransitionDock;
 class GrafcetView;
 class Document;
@@ -84,6 +86,8 @@ public:
     // The tab of `stepId`'s nested GRAFCET; nullptr when it is not open.
     GrafcetView* grafcetView(const QString& stepId) const;
     ExportActions* exportActions() const { return m_exportActions; }
+    // The Machine tab (nullptr view while the model has no machine).
+    MachineTab* machineTab() const { return m_machineTab; }
     SimulationSession* simulationSession() const { return m_session; }
     VerificationRunner* verificationRunner() const { return m_verification; }
     // False while the docks are the empty frames of DockContents::AfterFirstFrame.
@@ -223,6 +227,7 @@ private:
     VariablesDock* m_variablesDock = nullptr;
     ProblemsDock* m_problemsDock = nullptr;
     StPreviewDock* m_stPreviewDock = nullptr;
+    MachineDock* m_machineDock = nullptr;
     RecentFiles* m_recentFiles = nullptr;
     ExportActions* m_exportActions = nullptr;
     ProblemCounter* m_problemCounter = nullptr;
@@ -230,6 +235,7 @@ private:
     FrontZoom* m_frontZoom = nullptr;
     SimulationSession* m_session = nullptr;
     SimulationChartMarks* m_chartMarks = nullptr;
+    MachineTab* m_machineTab = nullptr;
     SimulationDock* m_simulationDock = nullptr;
     PackmlSimulationSession* m_packmlSession = nullptr;
     PackmlSimulationMarks* m_packmlChartMarks = nullptr;

@@ -59,6 +59,12 @@ void MachineLoop::run(std::int64_t scans)
     }
 }
 
+void MachineLoop::restoreState(const MachineState& state)
+{
+    m_state = state;
+    m_sensorChanges.clear();
+}
+
 bool MachineLoop::drivesVariable(std::string_view name) const
 {
     const int index = m_simulator.variableIndex(name);

@@ -64,6 +64,10 @@ public:
     Simulator& simulator() { return m_simulator; }
     const Simulator& simulator() const { return m_simulator; }
     const MachineState& state() const { return m_state; }
+    // Puts the machine back as it was in `state`, a copy of state() taken
+    // from this loop (the editor's history: the simulator is restored beside
+    // it, so the inputs already hold the sensors that state wrote).
+    void restoreState(const MachineState& state);
 
 private:
     void writeInputs(bool operatorsToo);

@@ -55,6 +55,9 @@ enum CommandId : int {
     SetModeDisabledId,
     SetModeChangeStatesId,
     SetGrafcetChoiceId,
+    AddMachineComponentId,
+    RemoveMachineComponentId,
+    EditMachineComponentId, // merges steps of the same time or count of the same component
 };
 
 } // namespace editor

@@ -555,13 +555,25 @@ void SimulationDock::buildInputRows()
     const auto isInput = [simulator](int i) {
         return simulator->variableKind(static_cast<std::size_t>(i)) == core::VariableKind::Input;
     };
+    const auto isUsers = [this, &isInput](int i) { return isInput(i) && !m_session->isMachineDriven(i); };
     for (int i = 0; i < count; ++i) {
-        if (!isInput(i))
+        if (!isUsers(i))
             continue;
         if (simulator->variableType(static_cast<std::size_t>(i)) == core::IecType::Bool)
             addBoolRow(i, row++);
         else
             addNumberRow(i, row++);
+    }
+    // In closed loop the machine writes its sensors: shown like outputs, never set.
+    bool sensorsTitled = false;
+    for (int i = 0; i < count; ++i) {
+        if (!isInput(i) || isUsers(i))
+            continue;
+        if (!sensorsTitled) {
+            m_inputsLayout->addWidget(sectionLabel(tr("Sensors (set by the machine)"), m_inputsWidget), row++, 0, 1, 2);
+            sensorsTitled = true;
+        }
+        addValueRow(i, row++);
     }
     // What the program writes is shown, not set (a scenario may not set it either).
     bool outputsTitled = false;
@@ -645,7 +657,10 @@ void SimulationDock::addValueRow(int index, int row)
     auto* label = new QLabel(output.name, m_inputsWidget);
     if (const core::Variable* variable = m_document->model().variable(output.name.toStdString()))
         label->setToolTip(QString::fromStdString(variable->comment));
-    const QString toolTip = tr("Written by the program: %1 is not an input").arg(output.name);
+    const QString owner = m_session->machineOwner(index);
+    const QString toolTip = owner.isEmpty()
+                                ? tr("Written by the program: %1 is not an input").arg(output.name)
+                                : tr("Written by the machine: %1 is a sensor of %2").arg(output.name, owner);
     output.shown = new QLabel(m_inputsWidget);
     output.shown->setObjectName(QStringLiteral("shown_") + output.name);
     output.shown->setToolTip(toolTip);
@@ -1220,6 +1235,8 @@ void SimulationDock::refreshReplayLabel()
         break;
     }
     }
+    if (m_session->replayState() != SimulationSession::ReplayState::None && m_session->replayIsOpenLoop())
+        text += QLatin1Char(' ') + tr("It sets the machine's sensors itself: played in open loop, the machine stands still.");
     if (m_replayLabel->text() != text)
         m_replayLabel->setText(text);
 }

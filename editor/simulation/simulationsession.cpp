@@ -5,6 +5,7 @@
 #include "editor/simulation/simulationtext.h"
 
 #include "core/formats/fileio.h"
+#include "core/machine/closedloopscenario.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -33,11 +34,13 @@ SimulationSession::SimulationSession(Document* document, QObject* parent)
     connect(m_document, &Document::variableChanged, this, &SimulationSession::onModelChanged);
     connect(m_document, &Document::variablesChanged, this, &SimulationSession::onModelChanged);
     connect(m_document, &Document::settingsChanged, this, &SimulationSession::onModelChanged);
+    connect(m_document, &Document::machineChanged, this, &SimulationSession::onModelChanged);
 }
 
 SimulationSession::~SimulationSession()
 {
-    m_runner.reset(); // refers to the scenario and the simulator
+    m_runner.reset(); // refers to the scenario, the simulator and the loop
+    m_loop.reset();   // refers to the simulator
 }
 
 void SimulationSession::setActive(bool active)
@@ -46,6 +49,8 @@ void SimulationSession::setActive(bool active)
         return;
     if (active) {
         m_simulator = std::make_unique<core::Simulator>(m_document->model());
+        if (!m_document->model().machine().empty())
+            m_loop = std::make_unique<core::machine::MachineLoop>(*m_simulator, m_document->model().machine());
         m_tokenTransitions.clear();
         for (const std::string& name : m_simulator->tokenNames()) {
             std::string transition;
@@ -63,6 +68,7 @@ void SimulationSession::setActive(bool active)
         pause();
         stopReplay();
         m_runner.reset();
+        m_loop.reset();
         m_simulator.reset();
         m_trace.clear();
         m_lastFired.clear();
@@ -121,7 +127,7 @@ void SimulationSession::reset()
         return;
     pause();
     stopReplay();
-    m_simulator->reset();
+    resetSimulation();
     clearSession();
     emit wasReset();
     emit inputsChanged();
@@ -191,7 +197,7 @@ void SimulationSession::runScans(std::int64_t scans, qint64 budgetNs)
             finishReplay();
             break;
         }
-        core::ScanRecord record = m_runner ? m_runner->step() : m_simulator->step();
+        core::ScanRecord record = m_runner ? m_runner->step() : runOneScan();
         if (m_runner) {
             const std::vector<core::ScenarioFailure>& failures = m_runner->lastFailures();
             m_replayFailures.insert(m_replayFailures.end(), failures.begin(), failures.end());
@@ -218,6 +224,7 @@ void SimulationSession::afterScan(core::ScanRecord&& record)
     core::RecordedScan changes;
     changes.scan = record.scan;
     changes.inputs = record.changedInputs;
+    dropMachineInputs(changes.inputs);
     recordCompleteSettings(changes);
     if (!changes.inputs.empty() || !changes.completes.empty())
         m_changes.push_back(std::move(changes));
@@ -239,7 +246,10 @@ void SimulationSession::afterScan(core::ScanRecord&& record)
 // scan leaves it, so continuing from it plays exactly as continuing then.
 void SimulationSession::keepSnapshot()
 {
-    m_history.push_back({*m_simulator, m_lastFired});
+    std::optional<core::machine::MachineState> machine;
+    if (m_loop)
+        machine = m_loop->state();
+    m_history.push_back({*m_simulator, m_lastFired, std::move(machine)});
     // The oldest entry is the scan the first step back of the kept ones lands on.
     if (m_history.size() > static_cast<std::size_t>(kHistoryCapacity) + 1)
         m_history.pop_front();
@@ -318,6 +328,8 @@ void SimulationSession::continueFromViewedScan(Continuation how)
     m_viewed.reset();
     // Assigned, not replaced: the replay's runner refers to this simulator.
     *m_simulator = m_history.back().simulator;
+    if (m_loop && m_history.back().machine)
+        m_loop->restoreState(*m_history.back().machine);
     m_lastFired = m_history.back().lastFired;
     const std::int64_t scan = m_simulator->scanCount();
     while (!m_trace.empty() && m_trace.back().scan > scan)
@@ -330,7 +342,7 @@ void SimulationSession::continueFromViewedScan(Continuation how)
     } else if (m_scenario) {
         std::erase_if(m_replayFailures, [scan](const core::ScenarioFailure& f) { return f.scan > scan; });
         if (scan < m_scenario->lastScan()) {
-            m_runner = std::make_unique<core::ScenarioRunner>(*m_scenario, *m_simulator);
+            m_runner = makeRunner();
             m_replayState = ReplayState::Running;
         }
         emit replayChanged();
@@ -379,6 +391,13 @@ bool SimulationSession::setVariable(int index, const core::cond::Value& value, Q
 {
     if (!isActive())
         return false;
+    if (isMachineDriven(index)) {
+        if (error)
+            *error = tr("%1 is a sensor of the machine's %2: the machine sets it")
+                         .arg(QString::fromStdString(m_simulator->variableNames()[static_cast<std::size_t>(index)]),
+                              machineOwner(index));
+        return false;
+    }
     continueFromViewedScan(Continuation::Edit);
     const core::Status status = m_simulator->setVariableAt(static_cast<std::size_t>(index), value);
     if (!status) {
@@ -392,7 +411,7 @@ bool SimulationSession::setVariable(int index, const core::cond::Value& value, Q
 
 void SimulationSession::press(int index)
 {
-    if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size())
+    if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size() || isMachineDriven(index))
         return;
     continueFromViewedScan(Continuation::Edit);
     m_pendingReleases.erase(std::remove(m_pendingReleases.begin(), m_pendingReleases.end(), index),
@@ -403,7 +422,7 @@ void SimulationSession::press(int index)
 
 void SimulationSession::release(int index)
 {
-    if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size())
+    if (!isActive() || index < 0 || static_cast<std::size_t>(index) >= m_pressedAt.size() || isMachineDriven(index))
         return;
     continueFromViewedScan(Continuation::Edit);
     std::int64_t& pressedAt = m_pressedAt[static_cast<std::size_t>(index)];
@@ -506,6 +525,11 @@ bool SimulationSession::startReplayText(std::string_view text, const QString& fi
     std::vector<core::ScenarioError> errors = parsed.errors;
     if (parsed.ok())
         errors = core::validateScenario(parsed.scenario, *m_simulator);
+    // A scenario that plays the machine's sensors itself (an open-loop
+    // scenario, a verification counterexample) replays in open loop: the
+    // machine stands still, as `ggstudio-cli simulate --open-loop` plays it.
+    const bool openLoop =
+        parsed.ok() && errors.empty() && m_loop && !core::machine::validateClosedLoopScenario(parsed.scenario, *m_loop).empty();
     if (!errors.empty()) {
         if (error)
             *error = scenarioErrorListText(errors);
@@ -514,15 +538,16 @@ bool SimulationSession::startReplayText(std::string_view text, const QString& fi
 
     pause();
     stopReplay();
+    m_replayOpenLoop = openLoop;
     // A scenario starts from the program's start state with every Complete automatic.
-    m_simulator->reset();
+    resetSimulation();
     for (const std::string& step : m_simulator->nestedSteps()) {
         m_simulator->setCompleteMode(step, core::CompleteMode::Automatic);
         m_simulator->setComplete(step, false);
     }
     clearSession();
     m_scenario = std::make_unique<core::Scenario>(std::move(parsed.scenario));
-    m_runner = std::make_unique<core::ScenarioRunner>(*m_scenario, *m_simulator);
+    m_runner = makeRunner();
     m_replayFile = fileName;
     m_replayExpectations = static_cast<int>(std::count_if(m_scenario->actions.begin(), m_scenario->actions.end(),
                                                           [](const core::ScenarioAction& a) {
@@ -557,9 +582,69 @@ void SimulationSession::stopReplay()
     m_replayFailures.clear();
     m_replayFile.clear();
     m_replayExpectations = 0;
+    m_replayOpenLoop = false;
     m_replayState = ReplayState::None;
     if (changed)
         emit replayChanged();
+}
+
+const core::machine::MachineState* SimulationSession::machineState() const
+{
+    if (!m_loop)
+        return nullptr;
+    if (m_viewed)
+        return m_history[*m_viewed].machine ? &*m_history[*m_viewed].machine : nullptr;
+    return &m_loop->state();
+}
+
+bool SimulationSession::isMachineDriven(int index) const
+{
+    if (!m_loop || index < 0 || static_cast<std::size_t>(index) >= m_simulator->variableNames().size())
+        return false;
+    return m_loop->drivesVariable(m_simulator->variableNames()[static_cast<std::size_t>(index)]);
+}
+
+QString SimulationSession::machineOwner(int index) const
+{
+    if (!isMachineDriven(index))
+        return {};
+    const core::machine::Component* owner =
+        m_loop->sensorOwner(m_simulator->variableNames()[static_cast<std::size_t>(index)]);
+    return owner ? QString::fromStdString(owner->name) : QString();
+}
+
+bool SimulationSession::isClosedLoop() const
+{
+    return m_loop && !m_replayOpenLoop;
+}
+
+// An open-loop replay starts from the machine at rest too, but with the
+// inputs at their defaults: the scenario sets the sensors.
+void SimulationSession::resetSimulation()
+{
+    if (m_loop)
+        m_loop->reset();
+    if (!isClosedLoop())
+        m_simulator->reset();
+}
+
+core::ScanRecord SimulationSession::runOneScan()
+{
+    return isClosedLoop() ? m_loop->step() : m_simulator->step();
+}
+
+std::unique_ptr<core::ScenarioRunner> SimulationSession::makeRunner()
+{
+    if (isClosedLoop())
+        return std::make_unique<core::ScenarioRunner>(*m_scenario, *m_loop);
+    return std::make_unique<core::ScenarioRunner>(*m_scenario, *m_simulator);
+}
+
+void SimulationSession::dropMachineInputs(std::vector<core::InputChange>& changes) const
+{
+    if (!m_loop)
+        return;
+    std::erase_if(changes, [this](const core::InputChange& change) { return m_loop->drivesVariable(change.variable); });
 }
 
 } // namespace editor

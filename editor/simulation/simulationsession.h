@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/machine/machineloop.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
 
@@ -48,6 +49,13 @@ class Document;
 // later history, trace and recording are dropped, so a saved scenario stays
 // what was played. A replay played on from a past scan replays from there;
 // an input changed there ends it.
+//
+// A model with a virtual machine runs in closed loop (docs/simulation.md,
+// "The virtual machine"): through core::machine::MachineLoop, each scan is
+// followed by one machine cycle whose sensors the next scan reads. The
+// inputs the machine writes are not the user's (setVariable refuses them);
+// the history keeps the machine's state beside each simulator copy, and a
+// reset or a replay resets both.
 class SimulationSession : public QObject {
     Q_OBJECT
 
@@ -79,6 +87,20 @@ public:
     // The running simulator, whatever scan the view shows (nullptr while inactive).
     const core::Simulator* liveSimulator() const { return m_simulator.get(); }
 
+    // Closed loop: whether the session runs the model's machine, and the
+    // machine as it stands at the scan the view shows (nullptr while
+    // inactive or without a machine).
+    bool hasMachine() const { return m_loop != nullptr; }
+    // Whether scans run the machine: with a machine, except while replaying
+    // a scenario that sets the machine's sensors itself (replayIsOpenLoop()).
+    bool isClosedLoop() const;
+    const core::machine::MachineState* machineState() const;
+    // Whether the machine writes this input (Simulator::variableNames()
+    // index) at every cycle: a sensor, not the user's to set.
+    bool isMachineDriven(int index) const;
+    // The component whose sensor the input is; empty when none.
+    QString machineOwner(int index) const;
+
     bool isRunning() const;
     void run();
     void pause();
@@ -108,7 +130,8 @@ public:
     void setSpeed(int scansPerSecond); // clamped to kMinSpeed..kMaxSpeed
 
     // Inputs, by Simulator::variableNames() index. False with the reason
-    // when the simulator refuses the value (wrong kind, out of range).
+    // when the simulator refuses the value (wrong kind, out of range) or
+    // the machine drives the input.
     bool setVariable(int index, const core::cond::Value& value, QString* error = nullptr);
     // A push button: TRUE from press() on. release() sets FALSE, but never
     // before a scan has read the TRUE: a press shorter than a scan is not lost.
@@ -139,6 +162,9 @@ public:
     // `fileName` names it in messages and in the Simulation dock.
     bool startReplayText(std::string_view text, const QString& fileName, QString* error);
     ReplayState replayState() const { return m_replayState; }
+    // The replay sets the machine's sensors itself (an open-loop scenario,
+    // a verification counterexample): it plays with the machine standing still.
+    bool replayIsOpenLoop() const { return m_replayOpenLoop; }
     bool isReplaying() const { return m_replayState == ReplayState::Running; }
     QString replayFileName() const { return m_replayFile; }
     std::int64_t replayLength() const;
@@ -180,10 +206,18 @@ private:
     void recordCompleteSettings(core::RecordedScan& changes);
     void finishReplay();
     void stopReplay();
+    // The start state of the simulator, and of the machine in closed loop.
+    void resetSimulation();
+    core::ScanRecord runOneScan();
+    // A runner for m_scenario, through the loop in closed loop.
+    std::unique_ptr<core::ScenarioRunner> makeRunner();
+    // Drops the inputs the machine wrote: a recording holds the operator's actions.
+    void dropMachineInputs(std::vector<core::InputChange>& changes) const;
     std::optional<bool> completeSetting(const std::string& stepId) const;
 
     Document* m_document;
     std::unique_ptr<core::Simulator> m_simulator;
+    std::unique_ptr<core::machine::MachineLoop> m_loop; // closed loop; refers to m_simulator
     QTimer* m_timer;
     QElapsedTimer m_clock;
     double m_owedScans = 0;
@@ -205,6 +239,7 @@ private:
     struct Snapshot {
         core::Simulator simulator;
         QString lastFired; // since reset, up to this scan
+        std::optional<core::machine::MachineState> machine; // closed loop only
     };
     std::deque<Snapshot> m_history;
     std::optional<std::size_t> m_viewed; // index into m_history of a past scan shown; empty: the latest
@@ -213,6 +248,7 @@ private:
     ReplayState m_replayState = ReplayState::None;
     QString m_replayFile;
     int m_replayExpectations = 0;
+    bool m_replayOpenLoop = false;
     std::unique_ptr<core::Scenario> m_scenario;
     std::unique_ptr<core::ScenarioRunner> m_runner;
     std::vector<core::ScenarioFailure> m_replayFailures;

@@ -108,6 +108,8 @@ void GrafcetTabs::close(int index)
     if (index <= 0) // the chart
         return;
     QWidget* closing = m_tabs->widget(index);
+    if (!qobject_cast<GrafcetView*>(closing)) // the Machine tab comes and goes with the machine
+        return;
     m_tabs->removeTab(index);
     delete closing;
     remember();
@@ -117,6 +119,8 @@ void GrafcetTabs::closeAll()
 {
     for (int i = m_tabs->count() - 1; i > 0; --i) {
         QWidget* closing = m_tabs->widget(i);
+        if (!qobject_cast<GrafcetView*>(closing))
+            continue;
         m_tabs->removeTab(i);
         delete closing;
     }

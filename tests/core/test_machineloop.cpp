@@ -162,4 +162,32 @@ TEST_CASE("The simulator alone ignores the machine", "[machine][machine-loop]")
     CHECK(simulator.activeStepId() == "A1");
 }
 
+TEST_CASE("A loop restored to a past scan plays on as it did then", "[machine][machine-loop]")
+{
+    const auto model = drillingCell();
+    Simulator simulator(*model);
+    MachineLoop loop(simulator, model->machine());
+    simulator.setVariable("StartButton", cond::Value{true});
+    loop.run(2);
+    simulator.setVariable("StartButton", cond::Value{false});
+    loop.run(1130); // the clamp is moving
+    const Simulator simulatorThen = simulator;
+    const MachineState machineThen = loop.state();
+    const double clampThen = loop.state().position(0);
+    REQUIRE(clampThen > 0.0);
+    REQUIRE(clampThen < 1.0);
+    loop.run(100);
+    const std::string stepLater = simulator.activeStepId();
+    const double drillLater = loop.state().position(1);
+    REQUIRE(loop.state().position(0) == 1.0);
+
+    simulator = simulatorThen;
+    loop.restoreState(machineThen);
+    CHECK(loop.state().position(0) == clampThen);
+    loop.run(100);
+    CHECK(simulator.activeStepId() == stepLater);
+    CHECK(loop.state().position(1) == drillLater);
+    CHECK(loop.state().position(0) == 1.0);
+}
+
 } // namespace test_machineloop

@@ -2,7 +2,7 @@
 //                     [--export-chart FILE.svg|png|pdf] [--dialog ACTION]
 //                     [--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE]
 //                     [--replay-scans N] [--simulation-tab INDEX] [--verify] [--grafcet STEP]...
-//                     [--problems-tab INDEX]
+//                     [--problems-tab INDEX] [--machine]
 //
 // Opens the real main window at WIDTH x HEIGHT (optionally on a model file,
 // with a step or transition selected, a dock brought to the front) and
@@ -23,6 +23,7 @@
 // last one in front); with --simulate it shows the simulation's marks.
 // --verify runs Simulation > Verify and waits for its findings.
 // --problems-tab shows that tab of the Problems dock (0 checks, 1 verification, 2 properties).
+// --machine brings the Machine tab (the model's virtual machine) to the front.
 
 #include "editor/app/languages.h"
 #include "editor/chart/gemma/chartscene.h"
@@ -31,6 +32,8 @@
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 #include "editor/document.h"
+#include "editor/machine/machinetab.h"
+#include "editor/machine/machineview.h"
 #include "editor/simulation/packml/packmlsimulationsession.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/style/windowbuttonstyle.h"
@@ -55,7 +58,7 @@ int usage()
     std::fputs("usage: ggstudio_screenshot OUT.png WIDTH HEIGHT [MODEL] [--select ID] [--raise DOCK]... "
                "[--show-hidden] [--language CODE] [--export-chart FILE] [--dialog ACTION] "
                "[--simulate] [--input NAME=VALUE]... [--scans N] [--back N] [--replay FILE] [--replay-scans N] "
-               "[--simulation-tab INDEX] [--verify] [--grafcet STEP]...\n",
+               "[--simulation-tab INDEX] [--verify] [--grafcet STEP]... [--problems-tab INDEX] [--machine]\n",
                stderr);
     return 2;
 }
@@ -164,6 +167,7 @@ int main(int argc, char* argv[])
     int replayScans = 0;
     int simulationTab = 0;
     int problemsTab = -1;
+    bool machine = false;
     QStringList grafcets; // the GEMMA steps whose nested GRAFCETs' tabs are opened
     const QStringList args = app.arguments().mid(1);
     for (qsizetype i = 0; i < args.size(); ++i) {
@@ -199,6 +203,8 @@ int main(int argc, char* argv[])
             problemsTab = args[++i].toInt();
         else if (args[i] == QLatin1String("--grafcet") && i + 1 < args.size())
             grafcets << args[++i];
+        else if (args[i] == QLatin1String("--machine"))
+            machine = true;
         else if (args[i].startsWith(QLatin1String("--")))
             return usage();
         else
@@ -297,6 +303,13 @@ int main(int argc, char* argv[])
     }
     if (auto* tabs = window.findChild<QTabWidget*>(QStringLiteral("problemsTabs")); tabs && problemsTab >= 0)
         tabs->setCurrentIndex(problemsTab);
+    if (machine) {
+        if (!window.machineTab()->view()) {
+            std::fputs("ggstudio_screenshot: --machine: the model has no machine\n", stderr);
+            return 2;
+        }
+        window.centralTabs()->setCurrentWidget(window.machineTab()->view());
+    }
     QTest::qWait(50);
     window.chartView()->zoomToFit();
     QApplication::processEvents();

@@ -375,7 +375,8 @@ void TestMainWindow::docksAreAroundTheChart()
     QCOMPARE(dock("variablesDock")->geometry().left(), dock("stepDock")->geometry().left());
     // Tabbed, not squeezed side by side.
     QVERIFY(m_window->tabifiedDockWidgets(dock("stepDock")).contains(dock("transitionDock")));
-    QCOMPARE(m_window->tabifiedDockWidgets(dock("variablesDock")).size(), 2);
+    QCOMPARE(m_window->tabifiedDockWidgets(dock("variablesDock")).size(), 3); // and the Machine panel, closed
+    QVERIFY(dock("machineDock")->isHidden());
     // The chart keeps most of the window.
     const QSize chart = m_window->chartView()->size();
     QVERIFY2(chart.width() > m_window->width() / 2, qPrintable(QString::number(chart.width())));
@@ -889,6 +890,8 @@ void TestMainWindow::nestedGrafcetOpensInATab()
     m_window->show();
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
     m_window->findChild<QAction*>(QStringLiteral("example_0"))->trigger(); // the drilling cell
+    // Without its machine: the Machine tab (test_machineview.cpp) would come first.
+    QVERIFY(m_window->document()->modelForCommands().setMachine({}).ok);
     const core::Grafcet* f1 = m_window->document()->model().grafcet("F1");
     QVERIFY(f1);
     QTabWidget* tabs = m_window->centralTabs();
@@ -974,6 +977,8 @@ void TestMainWindow::nestedGrafcetOpensInATab()
 void TestMainWindow::grafcetTabsComeBackWithTheirFile()
 {
     m_window->findChild<QAction*>(QStringLiteral("example_0"))->trigger(); // the drilling cell
+    // Without its machine: the Machine tab (test_machineview.cpp) would come first.
+    QVERIFY(m_window->document()->modelForCommands().setMachine({}).ok);
     const QString cell = m_files.filePath(QStringLiteral("tabs-cell.json"));
     QVERIFY(m_window->saveFile(cell));
     QTabWidget* tabs = m_window->centralTabs();
@@ -1446,7 +1451,7 @@ void TestMainWindow::deferredDocksFillInAfterTheFirstFrame()
     QCOMPARE(tabsShownIn(&window),
              (QStringList{"Problems", "Simulation", "Step", "Structured Text", "Transition", "Variables"}));
     // The real docks, one of each, where the frames were, working.
-    QCOMPARE(window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly).size(), 12);
+    QCOMPARE(window.findChildren<QDockWidget*>(QString(), Qt::FindDirectChildrenOnly).size(), 13);
     auto* stepDock = window.findChild<StepDock*>(QStringLiteral("stepDock"));
     QVERIFY(stepDock);
     QCOMPARE(window.dockWidgetArea(stepDock), Qt::RightDockWidgetArea);
@@ -1532,7 +1537,7 @@ void TestMainWindow::deferredDocksSaveTheirLayoutWhenClosedEarly()
     MainWindow again(*m_translators);
     auto* problems = again.findChild<QDockWidget*>(QStringLiteral("problemsDock"));
     QCOMPARE(again.dockWidgetArea(problems), Qt::RightDockWidgetArea);
-    QCOMPARE(again.tabifiedDockWidgets(problems).size(), 2);
+    QCOMPARE(again.tabifiedDockWidgets(problems).size(), 3); // Variables, Structured Text, the closed Machine panel
     QCOMPARE(again.tabifiedDockWidgets(again.findChild<QDockWidget*>(QStringLiteral("stepDock"))).size(), 8);
     QSettings().clear(); // the other tests start from the default layout
 }
@@ -1637,7 +1642,7 @@ void TestMainWindow::languageChangeRetranslatesMenus()
     QCOMPARE(m_window->dockWidgetArea(problems), Qt::LeftDockWidgetArea);
     auto* viewMenu = m_window->findChild<QMenu*>(QStringLiteral("viewMenu"));
     QVERIFY(viewMenu->actions().contains(problems->toggleViewAction()));
-    QCOMPARE(m_window->findChildren<QDockWidget*>().size(), 12); // with the Simulation, nested GRAFCET and PackML docks
+    QCOMPARE(m_window->findChildren<QDockWidget*>().size(), 13); // with the Simulation, nested GRAFCET, PackML and Machine docks
 
     QCoreApplication::removeTranslator(&translator);
     QCoreApplication::processEvents();

@@ -212,6 +212,9 @@ void TestSimulation::startOnDrillingCell()
 {
     const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
     QVERIFY(loaded.model);
+    // In open loop, the sensors set by hand: the machine taken out
+    // (test_machinesimulation.cpp plays the example closed loop).
+    QVERIFY(loaded.model->setMachine({}).ok);
     m_window->document()->replaceModel(*loaded.model, QString(), core::ModelFormat::Native);
     m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
     QVERIFY(m_session->isActive());
