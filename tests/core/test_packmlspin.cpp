@@ -258,18 +258,24 @@ TEST_CASE("PackML SPIN agreement on programs and models seeded with each defect"
     }
 }
 
-// The random models of the PackML agreement test, most with their GRAFCETs
-// removed (the others keep one): with all of them, every input they read is
+// Random models of the PackML agreement test, most with their GRAFCETs
+// removed (odd seeds keep one): with all of them, every input they read is
 // enumerated in every scan and no exploration ends in seconds. The Capper
 // tests above run the GRAFCETs; these run random modes, disabled states,
-// requests, options and command conditions. Models the explorer does not
-// exhaust in a fraction of a second are passed over.
+// requests, options and command conditions. The seeds are fixed, not picked
+// by a deadline as they were: which models met a 200 ms deadline depended on
+// the machine's load, so the set compared (and whether one kept a GRAFCET)
+// did too. These explore within a few thousand states and pan searches them
+// in seconds; others (seed 2: mode requests on an INT selector) take pan
+// minutes.
 TEST_CASE("PackML SPIN agreement on random PackML models", "[spin][packml]")
 {
     REQUIRE(spin::available());
-    const std::uint32_t models = sttest::kSanitized ? 2 : 6;
-    std::uint32_t compared = 0, withGrafcet = 0;
-    for (std::uint32_t seed = 1; compared < models && seed <= 60; ++seed) {
+    const std::vector<std::uint32_t> seeds = sttest::kSanitized ? std::vector<std::uint32_t>{14, 21}
+                                                                : std::vector<std::uint32_t>{14, 16, 21, 24, 36, 38};
+    std::uint32_t withGrafcet = 0;
+    for (const std::uint32_t seed : seeds) {
+        INFO("seed " << seed);
         Model model = samples::randomPackmlModel(seed);
         std::vector<std::string> keys;
         for (const auto& [key, grafcet] : model.grafcets())
@@ -278,21 +284,15 @@ TEST_CASE("PackML SPIN agreement on random PackML models", "[spin][packml]")
             REQUIRE(model.removeGrafcet(keys[i]).ok);
         ExplorerLimits limits = exactTime();
         limits.maxStates = 3'000;
-        limits.deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
         const PackmlProgram program = buildPackmlProgram(model);
         PackmlExplorer explorer(model, program, limits);
         explorer.run();
-        if (!explorer.exhaustive())
-            continue;
-        INFO("seed " << seed);
+        REQUIRE(explorer.exhaustive());
         REQUIRE(buildPackmlPromela(model).unsupported.empty());
         requireAgreement(model, program, &explorer);
-        ++compared;
         withGrafcet += model.grafcets().empty() ? 0 : 1;
     }
-    CHECK(compared == models);
-    if (!sttest::kSanitized)
-        CHECK(withGrafcet > 0);
+    CHECK(withGrafcet > 0);
 }
 
 TEST_CASE("A PackML program the Promela export cannot write exactly is refused with the reason", "[spin][packml]")
