@@ -10,6 +10,14 @@
     </message>
 </context>
 <context>
+    <name>AddMachineComponentCommand</name>
+    <message>
+        <source>Add %1 %2</source>
+        <extracomment>%1: a kind of machine component (&quot;Conveyor&quot;); %2: its name</extracomment>
+        <translation>%1 %2 hinzufügen</translation>
+    </message>
+</context>
+<context>
     <name>AddModeCommand</name>
     <message>
         <source>Add mode %1 %2</source>
@@ -320,6 +328,13 @@
     <message>
         <source>&apos;%1&apos; is out of range for LREAL (-1.8E308..1.8E308)</source>
         <translation>&apos;%1&apos; liegt außerhalb des Wertebereichs von LREAL (-1.8E308..1.8E308)</translation>
+    </message>
+</context>
+<context>
+    <name>ConveyorItem</name>
+    <message>
+        <source>Parts out: %1</source>
+        <translation>Ausgegebene Teile: %1</translation>
     </message>
 </context>
 <context>
@@ -709,6 +724,13 @@
     </message>
 </context>
 <context>
+    <name>EditMachineComponentCommand</name>
+    <message>
+        <source>Edit %1</source>
+        <translation>%1 bearbeiten</translation>
+    </message>
+</context>
+<context>
     <name>ElementLabels</name>
     <message>
         <source>F (family)</source>
@@ -817,6 +839,18 @@
     </message>
 </context>
 <context>
+    <name>MachineComponentItem</name>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>(not wired)</source>
+        <translation>(nicht verdrahtet)</translation>
+    </message>
+</context>
+<context>
     <name>MachineDiagnosticText</name>
     <message>
         <source>an input</source>
@@ -866,6 +900,121 @@
     <message>
         <source>%1 feeds &apos;%2&apos;, which is no conveyor of the machine.</source>
         <translation>%1 beschickt &apos;%2&apos;, das kein Förderband der Maschine ist.</translation>
+    </message>
+</context>
+<context>
+    <name>MachineText</name>
+    <message>
+        <source>Double-acting cylinder</source>
+        <translation>Doppeltwirkender Zylinder</translation>
+    </message>
+    <message>
+        <source>Single-acting cylinder</source>
+        <translation>Einfachwirkender Zylinder</translation>
+    </message>
+    <message>
+        <source>Conveyor</source>
+        <translation>Förderband</translation>
+    </message>
+    <message>
+        <source>Lamp</source>
+        <translation>Leuchte</translation>
+    </message>
+    <message>
+        <source>Push button</source>
+        <translation>Taster</translation>
+    </message>
+    <message>
+        <source>Selector</source>
+        <translation>Wahlschalter</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Not-Halt</translation>
+    </message>
+    <message>
+        <source>Delayed sensor</source>
+        <translation>Verzögerter Sensor</translation>
+    </message>
+    <message>
+        <source>Part source</source>
+        <translation>Teilequelle</translation>
+    </message>
+    <message>
+        <source>extend</source>
+        <translation>ausfahren</translation>
+    </message>
+    <message>
+        <source>retract</source>
+        <translation>einfahren</translation>
+    </message>
+    <message>
+        <source>retracted</source>
+        <translation>eingefahren</translation>
+    </message>
+    <message>
+        <source>extended</source>
+        <translation>ausgefahren</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>Lauf</translation>
+    </message>
+    <message>
+        <source>part present</source>
+        <translation>Teil vorhanden</translation>
+    </message>
+    <message>
+        <source>lamp</source>
+        <translation>Leuchte</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>Eingang</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>Ausgang</translation>
+    </message>
+    <message>
+        <source>sensor</source>
+        <translation>Sensor</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>leer</translation>
+    </message>
+    <message>
+        <source>Extend time (ms)</source>
+        <translation>Ausfahrzeit (ms)</translation>
+    </message>
+    <message>
+        <source>Retract time (ms)</source>
+        <translation>Einfahrzeit (ms)</translation>
+    </message>
+    <message>
+        <source>Travel time (ms)</source>
+        <translation>Laufzeit (ms)</translation>
+    </message>
+    <message>
+        <source>On delay (ms)</source>
+        <translation>Einschaltverzögerung (ms)</translation>
+    </message>
+    <message>
+        <source>Off delay (ms)</source>
+        <translation>Ausschaltverzögerung (ms)</translation>
+    </message>
+    <message>
+        <source>Parts</source>
+        <translation>Teile</translation>
+    </message>
+    <message>
+        <source>Normally closed</source>
+        <translation>Öffner</translation>
+    </message>
+    <message>
+        <source>Normally open</source>
+        <translation>Schließer</translation>
     </message>
 </context>
 <context>
@@ -989,6 +1138,25 @@
     <message>
         <source>The receptivity of T%2 of %1 is empty: write TRUE for a transition that is always ready.</source>
         <translation>Die Weiterschaltbedingung von T%2 von %1 ist leer: schreiben Sie TRUE für eine Transition, die immer bereit ist.</translation>
+    </message>
+</context>
+<context>
+    <name>OperatorItem</name>
+    <message>
+        <source>switched on</source>
+        <translation>eingeschaltet</translation>
+    </message>
+    <message>
+        <source>switched off</source>
+        <translation>ausgeschaltet</translation>
+    </message>
+    <message>
+        <source>pressed</source>
+        <translation>gedrückt</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>losgelassen</translation>
     </message>
 </context>
 <context>
@@ -1499,6 +1667,25 @@
     </message>
 </context>
 <context>
+    <name>PartSourceItem</name>
+    <message>
+        <source>Unlimited parts</source>
+        <translation>Unbegrenzte Teile</translation>
+    </message>
+    <message>
+        <source>Parts left: %1</source>
+        <translation>Verbleibende Teile: %1</translation>
+    </message>
+    <message>
+        <source>feeds no conveyor</source>
+        <translation>speist kein Förderband</translation>
+    </message>
+    <message>
+        <source>feeds %1</source>
+        <translation>speist %1</translation>
+    </message>
+</context>
+<context>
     <name>PasteVariablesCommand</name>
     <message>
         <source>Paste variable %1</source>
@@ -1615,6 +1802,13 @@
         <source>Remove action %1 of %2 step %3</source>
         <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
         <translation>Aktion %1 von Schritt %3 von %2 entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>RemoveMachineComponentCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>%1 entfernen</translation>
     </message>
 </context>
 <context>
@@ -2316,6 +2510,42 @@
         <source>%1 is a sensor of the machine&apos;s %2: the machine sets it; set it by hand in open loop only</source>
         <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Clamp&quot;)</extracomment>
         <translation>%1 ist ein Sensor der Maschinenkomponente %2: die Maschine setzt ihn; setzen Sie ihn nur im offenen Regelkreis von Hand</translation>
+    </message>
+    <message>
+        <source>expected a sensor or component name after &apos;fault&apos;, found %1</source>
+        <extracomment>&apos;fault&apos; is scenario syntax</extracomment>
+        <translation>Sensor- oder Komponentenname nach &apos;fault&apos; erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>expected stuck, flicker, jam or clear after the name, found %1</source>
+        <extracomment>stuck, flicker, jam and clear are scenario syntax</extracomment>
+        <translation>stuck, flicker, jam oder clear nach dem Namen erwartet, gefunden: %1</translation>
+    </message>
+    <message>
+        <source>a fault needs the virtual machine: run the scenario in closed loop, on a model with a machine</source>
+        <translation>ein Fehler braucht die virtuelle Maschine: spielen Sie das Szenario im geschlossenen Regelkreis ab, an einem Modell mit Maschine</translation>
+    </message>
+    <message>
+        <source>%1 is an operator input of the machine&apos;s %2: the user drives it with set; a fault applies to the machine&apos;s sensors</source>
+        <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Start&quot;); &apos;set&apos; is scenario syntax</extracomment>
+        <translation>%1 ist ein Bedienereingang von %2 der Maschine: der Benutzer steuert ihn mit set; ein Fehler betrifft die Sensoren der Maschine</translation>
+    </message>
+    <message>
+        <source>%1 is no sensor of the machine: a fault applies to the inputs a component writes</source>
+        <translation>%1 ist kein Sensor der Maschine: ein Fehler betrifft die Eingänge, die eine Komponente schreibt</translation>
+    </message>
+    <message>
+        <source>no component &apos;%1&apos; in the machine</source>
+        <translation>keine Komponente &apos;%1&apos; in der Maschine</translation>
+    </message>
+    <message>
+        <source>%1 is a %2: only cylinders and conveyors jam</source>
+        <extracomment>%1: a component of the virtual machine; %2: its kind as the file spells it (&quot;lamp&quot;, &quot;push-button&quot;)</extracomment>
+        <translation>%1 ist vom Typ %2: nur Zylinder und Förderbänder blockieren</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is neither a sensor nor a component of the machine</source>
+        <translation>&apos;%1&apos; ist weder ein Sensor noch eine Komponente der Maschine</translation>
     </message>
 </context>
 <context>
@@ -3743,6 +3973,80 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>Link T%1 to step %2 in %3</source>
         <translation>T%1 mit Schritt %2 in %3 verbinden</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MachineDock</name>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a component of the kind chosen beside</source>
+        <translation>Eine Komponente der daneben gewählten Art hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the selected component and its wiring</source>
+        <translation>Die gewählte Komponente und ihre Verdrahtung entfernen</translation>
+    </message>
+    <message>
+        <source>The model has no machine yet. Add its components to simulate in closed loop: the machine then sets the sensors.</source>
+        <translation>Das Modell hat noch keine Maschine. Fügen Sie ihre Komponenten hinzu, um im geschlossenen Regelkreis zu simulieren: die Maschine setzt dann die Sensoren.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>(not wired)</source>
+        <translation>(nicht verdrahtet)</translation>
+    </message>
+    <message>
+        <source>A BOOL output of the program, which drives the component</source>
+        <translation>Ein BOOL-Ausgang des Programms, der die Komponente ansteuert</translation>
+    </message>
+    <message>
+        <source>A BOOL input of the program, which the component sets</source>
+        <translation>Ein BOOL-Eingang des Programms, den die Komponente setzt</translation>
+    </message>
+    <message>
+        <source>Unlimited</source>
+        <translation>Unbegrenzt</translation>
+    </message>
+    <message>
+        <source>Contact</source>
+        <translation>Kontakt</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keiner)</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>Speist</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MachineTab</name>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>The virtual machine: its components, moving as the simulation runs</source>
+        <translation>Die virtuelle Maschine: ihre Komponenten, die sich während der Simulation bewegen</translation>
     </message>
 </context>
 <context>
@@ -5342,12 +5646,28 @@ Die Betriebsarten 1 bis 3 sind Production, Maintenance und Manual.</translation>
             <numerusform>%n weitere Übergänge: ein vorgelagerter Schritt ist nicht aktiv</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Sensors (set by the machine)</source>
+        <translation>Sensoren (von der Maschine gesetzt)</translation>
+    </message>
+    <message>
+        <source>Written by the machine: %1 is a sensor of %2</source>
+        <translation>Von der Maschine geschrieben: %1 ist ein Sensor von %2</translation>
+    </message>
+    <message>
+        <source>It sets the machine&apos;s sensors itself: played in open loop, the machine stands still.</source>
+        <translation>Es setzt die Sensoren der Maschine selbst: im offenen Regelkreis abgespielt, die Maschine steht still.</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
     <message>
         <source>(%1 more)</source>
         <translation>(%1 weitere)</translation>
+    </message>
+    <message>
+        <source>%1 is a sensor of the machine&apos;s %2: the machine sets it</source>
+        <translation>%1 ist ein Sensor von %2 der Maschine: die Maschine setzt ihn</translation>
     </message>
 </context>
 <context>

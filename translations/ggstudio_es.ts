@@ -10,6 +10,14 @@
     </message>
 </context>
 <context>
+    <name>AddMachineComponentCommand</name>
+    <message>
+        <source>Add %1 %2</source>
+        <extracomment>%1: a kind of machine component (&quot;Conveyor&quot;); %2: its name</extracomment>
+        <translation>Añadir %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>AddModeCommand</name>
     <message>
         <source>Add mode %1 %2</source>
@@ -320,6 +328,13 @@
     <message>
         <source>&apos;%1&apos; is out of range for LREAL (-1.8E308..1.8E308)</source>
         <translation>&apos;%1&apos; está fuera del rango de LREAL (-1.8E308..1.8E308)</translation>
+    </message>
+</context>
+<context>
+    <name>ConveyorItem</name>
+    <message>
+        <source>Parts out: %1</source>
+        <translation>Piezas salidas: %1</translation>
     </message>
 </context>
 <context>
@@ -709,6 +724,13 @@
     </message>
 </context>
 <context>
+    <name>EditMachineComponentCommand</name>
+    <message>
+        <source>Edit %1</source>
+        <translation>Editar %1</translation>
+    </message>
+</context>
+<context>
     <name>ElementLabels</name>
     <message>
         <source>F (family)</source>
@@ -817,6 +839,18 @@
     </message>
 </context>
 <context>
+    <name>MachineComponentItem</name>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>(not wired)</source>
+        <translation>(sin cablear)</translation>
+    </message>
+</context>
+<context>
     <name>MachineDiagnosticText</name>
     <message>
         <source>an input</source>
@@ -866,6 +900,121 @@
     <message>
         <source>%1 feeds &apos;%2&apos;, which is no conveyor of the machine.</source>
         <translation>%1 alimenta &apos;%2&apos;, que no es un transportador de la máquina.</translation>
+    </message>
+</context>
+<context>
+    <name>MachineText</name>
+    <message>
+        <source>Double-acting cylinder</source>
+        <translation>Cilindro de doble efecto</translation>
+    </message>
+    <message>
+        <source>Single-acting cylinder</source>
+        <translation>Cilindro de simple efecto</translation>
+    </message>
+    <message>
+        <source>Conveyor</source>
+        <translation>Cinta transportadora</translation>
+    </message>
+    <message>
+        <source>Lamp</source>
+        <translation>Piloto</translation>
+    </message>
+    <message>
+        <source>Push button</source>
+        <translation>Pulsador</translation>
+    </message>
+    <message>
+        <source>Selector</source>
+        <translation>Selector</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Parada de emergencia</translation>
+    </message>
+    <message>
+        <source>Delayed sensor</source>
+        <translation>Sensor temporizado</translation>
+    </message>
+    <message>
+        <source>Part source</source>
+        <translation>Fuente de piezas</translation>
+    </message>
+    <message>
+        <source>extend</source>
+        <translation>extender</translation>
+    </message>
+    <message>
+        <source>retract</source>
+        <translation>retraer</translation>
+    </message>
+    <message>
+        <source>retracted</source>
+        <translation>retraído</translation>
+    </message>
+    <message>
+        <source>extended</source>
+        <translation>extendido</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>marcha</translation>
+    </message>
+    <message>
+        <source>part present</source>
+        <translation>pieza presente</translation>
+    </message>
+    <message>
+        <source>lamp</source>
+        <translation>piloto</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>entrada</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>salida</translation>
+    </message>
+    <message>
+        <source>sensor</source>
+        <translation>sensor</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>vacío</translation>
+    </message>
+    <message>
+        <source>Extend time (ms)</source>
+        <translation>Tiempo de extensión (ms)</translation>
+    </message>
+    <message>
+        <source>Retract time (ms)</source>
+        <translation>Tiempo de retracción (ms)</translation>
+    </message>
+    <message>
+        <source>Travel time (ms)</source>
+        <translation>Tiempo de recorrido (ms)</translation>
+    </message>
+    <message>
+        <source>On delay (ms)</source>
+        <translation>Retardo a la conexión (ms)</translation>
+    </message>
+    <message>
+        <source>Off delay (ms)</source>
+        <translation>Retardo a la desconexión (ms)</translation>
+    </message>
+    <message>
+        <source>Parts</source>
+        <translation>Piezas</translation>
+    </message>
+    <message>
+        <source>Normally closed</source>
+        <translation>Normalmente cerrado</translation>
+    </message>
+    <message>
+        <source>Normally open</source>
+        <translation>Normalmente abierto</translation>
     </message>
 </context>
 <context>
@@ -989,6 +1138,25 @@
     <message>
         <source>The receptivity of T%2 of %1 is empty: write TRUE for a transition that is always ready.</source>
         <translation>La receptividad de T%2 de %1 está vacía: escriba TRUE para una transición siempre lista.</translation>
+    </message>
+</context>
+<context>
+    <name>OperatorItem</name>
+    <message>
+        <source>switched on</source>
+        <translation>activado</translation>
+    </message>
+    <message>
+        <source>switched off</source>
+        <translation>desactivado</translation>
+    </message>
+    <message>
+        <source>pressed</source>
+        <translation>pulsado</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>soltado</translation>
     </message>
 </context>
 <context>
@@ -1499,6 +1667,25 @@
     </message>
 </context>
 <context>
+    <name>PartSourceItem</name>
+    <message>
+        <source>Unlimited parts</source>
+        <translation>Piezas ilimitadas</translation>
+    </message>
+    <message>
+        <source>Parts left: %1</source>
+        <translation>Piezas restantes: %1</translation>
+    </message>
+    <message>
+        <source>feeds no conveyor</source>
+        <translation>no alimenta ninguna cinta</translation>
+    </message>
+    <message>
+        <source>feeds %1</source>
+        <translation>alimenta %1</translation>
+    </message>
+</context>
+<context>
     <name>PasteVariablesCommand</name>
     <message>
         <source>Paste variable %1</source>
@@ -1615,6 +1802,13 @@
         <source>Remove action %1 of %2 step %3</source>
         <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
         <translation>Quitar la acción %1 de la etapa %3 de %2</translation>
+    </message>
+</context>
+<context>
+    <name>RemoveMachineComponentCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>Quitar %1</translation>
     </message>
 </context>
 <context>
@@ -2316,6 +2510,42 @@
         <source>%1 is a sensor of the machine&apos;s %2: the machine sets it; set it by hand in open loop only</source>
         <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Clamp&quot;)</extracomment>
         <translation>%1 es un sensor del componente %2 de la máquina: la máquina lo fija; fíjelo a mano solo en lazo abierto</translation>
+    </message>
+    <message>
+        <source>expected a sensor or component name after &apos;fault&apos;, found %1</source>
+        <extracomment>&apos;fault&apos; is scenario syntax</extracomment>
+        <translation>se esperaba un nombre de sensor o de componente después de &apos;fault&apos;, se encontró %1</translation>
+    </message>
+    <message>
+        <source>expected stuck, flicker, jam or clear after the name, found %1</source>
+        <extracomment>stuck, flicker, jam and clear are scenario syntax</extracomment>
+        <translation>se esperaba stuck, flicker, jam o clear después del nombre, se encontró %1</translation>
+    </message>
+    <message>
+        <source>a fault needs the virtual machine: run the scenario in closed loop, on a model with a machine</source>
+        <translation>un fallo necesita la máquina virtual: ejecute el escenario en lazo cerrado, en un modelo con máquina</translation>
+    </message>
+    <message>
+        <source>%1 is an operator input of the machine&apos;s %2: the user drives it with set; a fault applies to the machine&apos;s sensors</source>
+        <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Start&quot;); &apos;set&apos; is scenario syntax</extracomment>
+        <translation>%1 es una entrada de operador de %2 de la máquina: el usuario la maneja con set; un fallo se aplica a los sensores de la máquina</translation>
+    </message>
+    <message>
+        <source>%1 is no sensor of the machine: a fault applies to the inputs a component writes</source>
+        <translation>%1 no es un sensor de la máquina: un fallo se aplica a las entradas que escribe un componente</translation>
+    </message>
+    <message>
+        <source>no component &apos;%1&apos; in the machine</source>
+        <translation>no hay ningún componente &apos;%1&apos; en la máquina</translation>
+    </message>
+    <message>
+        <source>%1 is a %2: only cylinders and conveyors jam</source>
+        <extracomment>%1: a component of the virtual machine; %2: its kind as the file spells it (&quot;lamp&quot;, &quot;push-button&quot;)</extracomment>
+        <translation>%1 es de tipo %2: solo los cilindros y los transportadores se atascan</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is neither a sensor nor a component of the machine</source>
+        <translation>&apos;%1&apos; no es ni un sensor ni un componente de la máquina</translation>
     </message>
 </context>
 <context>
@@ -3743,6 +3973,80 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>Link T%1 to step %2 in %3</source>
         <translation>Enlazar T%1 con la etapa %2 en %3</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MachineDock</name>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
+    </message>
+    <message>
+        <source>Add a component of the kind chosen beside</source>
+        <translation>Añadir un componente del tipo elegido al lado</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Quitar</translation>
+    </message>
+    <message>
+        <source>Remove the selected component and its wiring</source>
+        <translation>Quitar el componente seleccionado y su cableado</translation>
+    </message>
+    <message>
+        <source>The model has no machine yet. Add its components to simulate in closed loop: the machine then sets the sensors.</source>
+        <translation>El modelo aún no tiene máquina. Añada sus componentes para simular en lazo cerrado: la máquina fija entonces los sensores.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>(not wired)</source>
+        <translation>(sin cablear)</translation>
+    </message>
+    <message>
+        <source>A BOOL output of the program, which drives the component</source>
+        <translation>Una salida BOOL del programa, que acciona el componente</translation>
+    </message>
+    <message>
+        <source>A BOOL input of the program, which the component sets</source>
+        <translation>Una entrada BOOL del programa, que el componente fija</translation>
+    </message>
+    <message>
+        <source>Unlimited</source>
+        <translation>Ilimitado</translation>
+    </message>
+    <message>
+        <source>Contact</source>
+        <translation>Contacto</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(ninguno)</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>Alimenta</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MachineTab</name>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>The virtual machine: its components, moving as the simulation runs</source>
+        <translation>La máquina virtual: sus componentes, que se mueven durante la simulación</translation>
     </message>
 </context>
 <context>
@@ -5342,12 +5646,28 @@ Los modos 1 a 3 son Production, Maintenance y Manual.</translation>
             <numerusform>%n transiciones más: una etapa anterior no está activa</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Sensors (set by the machine)</source>
+        <translation>Sensores (fijados por la máquina)</translation>
+    </message>
+    <message>
+        <source>Written by the machine: %1 is a sensor of %2</source>
+        <translation>Escrito por la máquina: %1 es un sensor de %2</translation>
+    </message>
+    <message>
+        <source>It sets the machine&apos;s sensors itself: played in open loop, the machine stands still.</source>
+        <translation>Fija él mismo los sensores de la máquina: se reproduce en lazo abierto, la máquina queda parada.</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
     <message>
         <source>(%1 more)</source>
         <translation>(%1 más)</translation>
+    </message>
+    <message>
+        <source>%1 is a sensor of the machine&apos;s %2: the machine sets it</source>
+        <translation>%1 es un sensor de %2 de la máquina: la máquina lo fija</translation>
     </message>
 </context>
 <context>

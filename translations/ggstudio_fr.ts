@@ -10,6 +10,14 @@
     </message>
 </context>
 <context>
+    <name>AddMachineComponentCommand</name>
+    <message>
+        <source>Add %1 %2</source>
+        <extracomment>%1: a kind of machine component (&quot;Conveyor&quot;); %2: its name</extracomment>
+        <translation>Ajouter %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>AddModeCommand</name>
     <message>
         <source>Add mode %1 %2</source>
@@ -320,6 +328,13 @@
     <message>
         <source>&apos;%1&apos; is out of range for LREAL (-1.8E308..1.8E308)</source>
         <translation>&apos;%1&apos; est hors limites pour LREAL (-1.8E308..1.8E308)</translation>
+    </message>
+</context>
+<context>
+    <name>ConveyorItem</name>
+    <message>
+        <source>Parts out: %1</source>
+        <translation>Pièces sorties : %1</translation>
     </message>
 </context>
 <context>
@@ -709,6 +724,13 @@
     </message>
 </context>
 <context>
+    <name>EditMachineComponentCommand</name>
+    <message>
+        <source>Edit %1</source>
+        <translation>Modifier %1</translation>
+    </message>
+</context>
+<context>
     <name>ElementLabels</name>
     <message>
         <source>F (family)</source>
@@ -817,6 +839,18 @@
     </message>
 </context>
 <context>
+    <name>MachineComponentItem</name>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it</extracomment>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>(not wired)</source>
+        <translation>(non câblé)</translation>
+    </message>
+</context>
+<context>
     <name>MachineDiagnosticText</name>
     <message>
         <source>an input</source>
@@ -866,6 +900,121 @@
     <message>
         <source>%1 feeds &apos;%2&apos;, which is no conveyor of the machine.</source>
         <translation>%1 alimente « %2 », qui n&apos;est pas un convoyeur de la machine.</translation>
+    </message>
+</context>
+<context>
+    <name>MachineText</name>
+    <message>
+        <source>Double-acting cylinder</source>
+        <translation>Vérin double effet</translation>
+    </message>
+    <message>
+        <source>Single-acting cylinder</source>
+        <translation>Vérin simple effet</translation>
+    </message>
+    <message>
+        <source>Conveyor</source>
+        <translation>Convoyeur</translation>
+    </message>
+    <message>
+        <source>Lamp</source>
+        <translation>Voyant</translation>
+    </message>
+    <message>
+        <source>Push button</source>
+        <translation>Bouton-poussoir</translation>
+    </message>
+    <message>
+        <source>Selector</source>
+        <translation>Sélecteur</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Arrêt d&apos;urgence</translation>
+    </message>
+    <message>
+        <source>Delayed sensor</source>
+        <translation>Capteur temporisé</translation>
+    </message>
+    <message>
+        <source>Part source</source>
+        <translation>Source de pièces</translation>
+    </message>
+    <message>
+        <source>extend</source>
+        <translation>sortir</translation>
+    </message>
+    <message>
+        <source>retract</source>
+        <translation>rentrer</translation>
+    </message>
+    <message>
+        <source>retracted</source>
+        <translation>rentré</translation>
+    </message>
+    <message>
+        <source>extended</source>
+        <translation>sorti</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>marche</translation>
+    </message>
+    <message>
+        <source>part present</source>
+        <translation>pièce présente</translation>
+    </message>
+    <message>
+        <source>lamp</source>
+        <translation>voyant</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>entrée</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>sortie</translation>
+    </message>
+    <message>
+        <source>sensor</source>
+        <translation>capteur</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>vide</translation>
+    </message>
+    <message>
+        <source>Extend time (ms)</source>
+        <translation>Temps de sortie (ms)</translation>
+    </message>
+    <message>
+        <source>Retract time (ms)</source>
+        <translation>Temps de rentrée (ms)</translation>
+    </message>
+    <message>
+        <source>Travel time (ms)</source>
+        <translation>Temps de trajet (ms)</translation>
+    </message>
+    <message>
+        <source>On delay (ms)</source>
+        <translation>Retard à l&apos;enclenchement (ms)</translation>
+    </message>
+    <message>
+        <source>Off delay (ms)</source>
+        <translation>Retard au déclenchement (ms)</translation>
+    </message>
+    <message>
+        <source>Parts</source>
+        <translation>Pièces</translation>
+    </message>
+    <message>
+        <source>Normally closed</source>
+        <translation>Normalement fermé</translation>
+    </message>
+    <message>
+        <source>Normally open</source>
+        <translation>Normalement ouvert</translation>
     </message>
 </context>
 <context>
@@ -989,6 +1138,25 @@
     <message>
         <source>The receptivity of T%2 of %1 is empty: write TRUE for a transition that is always ready.</source>
         <translation>La réceptivité de T%2 de %1 est vide : écrivez TRUE pour une transition toujours prête.</translation>
+    </message>
+</context>
+<context>
+    <name>OperatorItem</name>
+    <message>
+        <source>switched on</source>
+        <translation>enclenché</translation>
+    </message>
+    <message>
+        <source>switched off</source>
+        <translation>déclenché</translation>
+    </message>
+    <message>
+        <source>pressed</source>
+        <translation>enfoncé</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>relâché</translation>
     </message>
 </context>
 <context>
@@ -1499,6 +1667,25 @@
     </message>
 </context>
 <context>
+    <name>PartSourceItem</name>
+    <message>
+        <source>Unlimited parts</source>
+        <translation>Pièces illimitées</translation>
+    </message>
+    <message>
+        <source>Parts left: %1</source>
+        <translation>Pièces restantes : %1</translation>
+    </message>
+    <message>
+        <source>feeds no conveyor</source>
+        <translation>n&apos;alimente aucun convoyeur</translation>
+    </message>
+    <message>
+        <source>feeds %1</source>
+        <translation>alimente %1</translation>
+    </message>
+</context>
+<context>
     <name>PasteVariablesCommand</name>
     <message>
         <source>Paste variable %1</source>
@@ -1615,6 +1802,13 @@
         <source>Remove action %1 of %2 step %3</source>
         <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
         <translation>Supprimer l’action %1 de l’étape %3 de %2</translation>
+    </message>
+</context>
+<context>
+    <name>RemoveMachineComponentCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>Supprimer %1</translation>
     </message>
 </context>
 <context>
@@ -2316,6 +2510,42 @@
         <source>%1 is a sensor of the machine&apos;s %2: the machine sets it; set it by hand in open loop only</source>
         <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Clamp&quot;)</extracomment>
         <translation>%1 est un capteur du composant %2 de la machine : la machine le positionne ; ne le forcez à la main qu&apos;en boucle ouverte</translation>
+    </message>
+    <message>
+        <source>expected a sensor or component name after &apos;fault&apos;, found %1</source>
+        <extracomment>&apos;fault&apos; is scenario syntax</extracomment>
+        <translation>nom de capteur ou de composant attendu après &apos;fault&apos;, trouvé %1</translation>
+    </message>
+    <message>
+        <source>expected stuck, flicker, jam or clear after the name, found %1</source>
+        <extracomment>stuck, flicker, jam and clear are scenario syntax</extracomment>
+        <translation>stuck, flicker, jam ou clear attendu après le nom, trouvé %1</translation>
+    </message>
+    <message>
+        <source>a fault needs the virtual machine: run the scenario in closed loop, on a model with a machine</source>
+        <translation>une défaillance a besoin de la machine virtuelle : jouez le scénario en boucle fermée, sur un modèle qui a une machine</translation>
+    </message>
+    <message>
+        <source>%1 is an operator input of the machine&apos;s %2: the user drives it with set; a fault applies to the machine&apos;s sensors</source>
+        <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Start&quot;); &apos;set&apos; is scenario syntax</extracomment>
+        <translation>%1 est une entrée opérateur de %2 de la machine : l&apos;utilisateur la pilote avec set ; une défaillance s&apos;applique aux capteurs de la machine</translation>
+    </message>
+    <message>
+        <source>%1 is no sensor of the machine: a fault applies to the inputs a component writes</source>
+        <translation>%1 n&apos;est pas un capteur de la machine : une défaillance s&apos;applique aux entrées qu&apos;un composant écrit</translation>
+    </message>
+    <message>
+        <source>no component &apos;%1&apos; in the machine</source>
+        <translation>aucun composant &apos;%1&apos; dans la machine</translation>
+    </message>
+    <message>
+        <source>%1 is a %2: only cylinders and conveyors jam</source>
+        <extracomment>%1: a component of the virtual machine; %2: its kind as the file spells it (&quot;lamp&quot;, &quot;push-button&quot;)</extracomment>
+        <translation>%1 est de type %2 : seuls les vérins et les convoyeurs se bloquent</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is neither a sensor nor a component of the machine</source>
+        <translation>&apos;%1&apos; n&apos;est ni un capteur ni un composant de la machine</translation>
     </message>
 </context>
 <context>
@@ -3743,6 +3973,80 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>Link T%1 to step %2 in %3</source>
         <translation>Lier T%1 à l’étape %2 dans %3</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MachineDock</name>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Add a component of the kind chosen beside</source>
+        <translation>Ajouter un composant du type choisi à côté</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>Remove the selected component and its wiring</source>
+        <translation>Supprimer le composant sélectionné et son câblage</translation>
+    </message>
+    <message>
+        <source>The model has no machine yet. Add its components to simulate in closed loop: the machine then sets the sensors.</source>
+        <translation>Le modèle n&apos;a pas encore de machine. Ajoutez ses composants pour simuler en boucle fermée : la machine positionne alors les capteurs.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>(not wired)</source>
+        <translation>(non câblé)</translation>
+    </message>
+    <message>
+        <source>A BOOL output of the program, which drives the component</source>
+        <translation>Une sortie BOOL du programme, qui commande le composant</translation>
+    </message>
+    <message>
+        <source>A BOOL input of the program, which the component sets</source>
+        <translation>Une entrée BOOL du programme, que le composant positionne</translation>
+    </message>
+    <message>
+        <source>Unlimited</source>
+        <translation>Illimité</translation>
+    </message>
+    <message>
+        <source>Contact</source>
+        <translation>Contact</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(aucun)</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>Alimente</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MachineTab</name>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>The virtual machine: its components, moving as the simulation runs</source>
+        <translation>La machine virtuelle : ses composants, qui bougent pendant la simulation</translation>
     </message>
 </context>
 <context>
@@ -5342,12 +5646,28 @@ Les modes 1 à 3 sont Production, Maintenance et Manual.</translation>
             <numerusform>%n autres transitions : une étape amont n&apos;est pas active</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Sensors (set by the machine)</source>
+        <translation>Capteurs (positionnés par la machine)</translation>
+    </message>
+    <message>
+        <source>Written by the machine: %1 is a sensor of %2</source>
+        <translation>Écrit par la machine : %1 est un capteur de %2</translation>
+    </message>
+    <message>
+        <source>It sets the machine&apos;s sensors itself: played in open loop, the machine stands still.</source>
+        <translation>Il positionne lui-même les capteurs de la machine : joué en boucle ouverte, la machine reste immobile.</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
     <message>
         <source>(%1 more)</source>
         <translation>(%1 de plus)</translation>
+    </message>
+    <message>
+        <source>%1 is a sensor of the machine&apos;s %2: the machine sets it</source>
+        <translation>%1 est un capteur de %2 de la machine : c&apos;est la machine qui le positionne</translation>
     </message>
 </context>
 <context>

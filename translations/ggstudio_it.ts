@@ -10,6 +10,14 @@
     </message>
 </context>
 <context>
+    <name>AddMachineComponentCommand</name>
+    <message>
+        <source>Add %1 %2</source>
+        <extracomment>%1: a kind of machine component (&quot;Conveyor&quot;); %2: its name</extracomment>
+        <translation>Aggiungi %1 %2</translation>
+    </message>
+</context>
+<context>
     <name>AddModeCommand</name>
     <message>
         <source>Add mode %1 %2</source>
@@ -320,6 +328,13 @@
     <message>
         <source>&apos;%1&apos; is out of range for LREAL (-1.8E308..1.8E308)</source>
         <translation>&apos;%1&apos; è fuori dall&apos;intervallo di LREAL (-1.8E308..1.8E308)</translation>
+    </message>
+</context>
+<context>
+    <name>ConveyorItem</name>
+    <message>
+        <source>Parts out: %1</source>
+        <translation>Pezzi usciti: %1</translation>
     </message>
 </context>
 <context>
@@ -709,6 +724,13 @@
     </message>
 </context>
 <context>
+    <name>EditMachineComponentCommand</name>
+    <message>
+        <source>Edit %1</source>
+        <translation>Modifica %1</translation>
+    </message>
+</context>
+<context>
     <name>ElementLabels</name>
     <message>
         <source>F (family)</source>
@@ -817,6 +839,18 @@
     </message>
 </context>
 <context>
+    <name>MachineComponentItem</name>
+    <message>
+        <source>%1: %2</source>
+        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it</extracomment>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>(not wired)</source>
+        <translation>(non cablato)</translation>
+    </message>
+</context>
+<context>
     <name>MachineDiagnosticText</name>
     <message>
         <source>an input</source>
@@ -866,6 +900,121 @@
     <message>
         <source>%1 feeds &apos;%2&apos;, which is no conveyor of the machine.</source>
         <translation>%1 alimenta &apos;%2&apos;, che non è un nastro trasportatore della macchina.</translation>
+    </message>
+</context>
+<context>
+    <name>MachineText</name>
+    <message>
+        <source>Double-acting cylinder</source>
+        <translation>Cilindro a doppio effetto</translation>
+    </message>
+    <message>
+        <source>Single-acting cylinder</source>
+        <translation>Cilindro a semplice effetto</translation>
+    </message>
+    <message>
+        <source>Conveyor</source>
+        <translation>Nastro trasportatore</translation>
+    </message>
+    <message>
+        <source>Lamp</source>
+        <translation>Spia</translation>
+    </message>
+    <message>
+        <source>Push button</source>
+        <translation>Pulsante</translation>
+    </message>
+    <message>
+        <source>Selector</source>
+        <translation>Selettore</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>Arresto di emergenza</translation>
+    </message>
+    <message>
+        <source>Delayed sensor</source>
+        <translation>Sensore ritardato</translation>
+    </message>
+    <message>
+        <source>Part source</source>
+        <translation>Sorgente di pezzi</translation>
+    </message>
+    <message>
+        <source>extend</source>
+        <translation>estendere</translation>
+    </message>
+    <message>
+        <source>retract</source>
+        <translation>ritrarre</translation>
+    </message>
+    <message>
+        <source>retracted</source>
+        <translation>ritratto</translation>
+    </message>
+    <message>
+        <source>extended</source>
+        <translation>esteso</translation>
+    </message>
+    <message>
+        <source>run</source>
+        <translation>marcia</translation>
+    </message>
+    <message>
+        <source>part present</source>
+        <translation>pezzo presente</translation>
+    </message>
+    <message>
+        <source>lamp</source>
+        <translation>spia</translation>
+    </message>
+    <message>
+        <source>input</source>
+        <translation>ingresso</translation>
+    </message>
+    <message>
+        <source>output</source>
+        <translation>uscita</translation>
+    </message>
+    <message>
+        <source>sensor</source>
+        <translation>sensore</translation>
+    </message>
+    <message>
+        <source>empty</source>
+        <translation>vuoto</translation>
+    </message>
+    <message>
+        <source>Extend time (ms)</source>
+        <translation>Tempo di estensione (ms)</translation>
+    </message>
+    <message>
+        <source>Retract time (ms)</source>
+        <translation>Tempo di ritrazione (ms)</translation>
+    </message>
+    <message>
+        <source>Travel time (ms)</source>
+        <translation>Tempo di percorrenza (ms)</translation>
+    </message>
+    <message>
+        <source>On delay (ms)</source>
+        <translation>Ritardo all&apos;attivazione (ms)</translation>
+    </message>
+    <message>
+        <source>Off delay (ms)</source>
+        <translation>Ritardo alla disattivazione (ms)</translation>
+    </message>
+    <message>
+        <source>Parts</source>
+        <translation>Pezzi</translation>
+    </message>
+    <message>
+        <source>Normally closed</source>
+        <translation>Normalmente chiuso</translation>
+    </message>
+    <message>
+        <source>Normally open</source>
+        <translation>Normalmente aperto</translation>
     </message>
 </context>
 <context>
@@ -989,6 +1138,25 @@
     <message>
         <source>The receptivity of T%2 of %1 is empty: write TRUE for a transition that is always ready.</source>
         <translation>La recettività di T%2 di %1 è vuota: scrivete TRUE per una transizione sempre pronta.</translation>
+    </message>
+</context>
+<context>
+    <name>OperatorItem</name>
+    <message>
+        <source>switched on</source>
+        <translation>attivato</translation>
+    </message>
+    <message>
+        <source>switched off</source>
+        <translation>disattivato</translation>
+    </message>
+    <message>
+        <source>pressed</source>
+        <translation>premuto</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>rilasciato</translation>
     </message>
 </context>
 <context>
@@ -1499,6 +1667,25 @@
     </message>
 </context>
 <context>
+    <name>PartSourceItem</name>
+    <message>
+        <source>Unlimited parts</source>
+        <translation>Pezzi illimitati</translation>
+    </message>
+    <message>
+        <source>Parts left: %1</source>
+        <translation>Pezzi rimasti: %1</translation>
+    </message>
+    <message>
+        <source>feeds no conveyor</source>
+        <translation>non alimenta alcun nastro</translation>
+    </message>
+    <message>
+        <source>feeds %1</source>
+        <translation>alimenta %1</translation>
+    </message>
+</context>
+<context>
     <name>PasteVariablesCommand</name>
     <message>
         <source>Paste variable %1</source>
@@ -1615,6 +1802,13 @@
         <source>Remove action %1 of %2 step %3</source>
         <extracomment>%1 is the action&apos;s place in the list (from 1), %2 the GEMMA step, %3 the nested step number</extracomment>
         <translation>Rimuovi l’azione %1 della tappa %3 di %2</translation>
+    </message>
+</context>
+<context>
+    <name>RemoveMachineComponentCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>Rimuovi %1</translation>
     </message>
 </context>
 <context>
@@ -2316,6 +2510,42 @@
         <source>%1 is a sensor of the machine&apos;s %2: the machine sets it; set it by hand in open loop only</source>
         <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Clamp&quot;)</extracomment>
         <translation>%1 è un sensore del componente %2 della macchina: la macchina lo imposta; impostarlo a mano solo in anello aperto</translation>
+    </message>
+    <message>
+        <source>expected a sensor or component name after &apos;fault&apos;, found %1</source>
+        <extracomment>&apos;fault&apos; is scenario syntax</extracomment>
+        <translation>atteso un nome di sensore o di componente dopo &apos;fault&apos;, trovato %1</translation>
+    </message>
+    <message>
+        <source>expected stuck, flicker, jam or clear after the name, found %1</source>
+        <extracomment>stuck, flicker, jam and clear are scenario syntax</extracomment>
+        <translation>atteso stuck, flicker, jam o clear dopo il nome, trovato %1</translation>
+    </message>
+    <message>
+        <source>a fault needs the virtual machine: run the scenario in closed loop, on a model with a machine</source>
+        <translation>un guasto richiede la macchina virtuale: esegui lo scenario ad anello chiuso, su un modello con una macchina</translation>
+    </message>
+    <message>
+        <source>%1 is an operator input of the machine&apos;s %2: the user drives it with set; a fault applies to the machine&apos;s sensors</source>
+        <extracomment>%1: a variable; %2: the name of a component of the virtual machine (&quot;Start&quot;); &apos;set&apos; is scenario syntax</extracomment>
+        <translation>%1 è un ingresso operatore di %2 della macchina: l&apos;utente lo comanda con set; un guasto si applica ai sensori della macchina</translation>
+    </message>
+    <message>
+        <source>%1 is no sensor of the machine: a fault applies to the inputs a component writes</source>
+        <translation>%1 non è un sensore della macchina: un guasto si applica agli ingressi scritti da un componente</translation>
+    </message>
+    <message>
+        <source>no component &apos;%1&apos; in the machine</source>
+        <translation>nessun componente &apos;%1&apos; nella macchina</translation>
+    </message>
+    <message>
+        <source>%1 is a %2: only cylinders and conveyors jam</source>
+        <extracomment>%1: a component of the virtual machine; %2: its kind as the file spells it (&quot;lamp&quot;, &quot;push-button&quot;)</extracomment>
+        <translation>%1 è di tipo %2: solo i cilindri e i nastri trasportatori si bloccano</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is neither a sensor nor a component of the machine</source>
+        <translation>&apos;%1&apos; non è né un sensore né un componente della macchina</translation>
     </message>
 </context>
 <context>
@@ -3743,6 +3973,80 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>Link T%1 to step %2 in %3</source>
         <translation>Collega T%1 alla tappa %2 in %3</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MachineDock</name>
+    <message>
+        <source>Machine</source>
+        <translation>Macchina</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Aggiungi</translation>
+    </message>
+    <message>
+        <source>Add a component of the kind chosen beside</source>
+        <translation>Aggiungi un componente del tipo scelto accanto</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <source>Remove the selected component and its wiring</source>
+        <translation>Rimuovi il componente selezionato e il suo cablaggio</translation>
+    </message>
+    <message>
+        <source>The model has no machine yet. Add its components to simulate in closed loop: the machine then sets the sensors.</source>
+        <translation>Il modello non ha ancora una macchina. Aggiungi i suoi componenti per simulare ad anello chiuso: la macchina imposta allora i sensori.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>(not wired)</source>
+        <translation>(non cablato)</translation>
+    </message>
+    <message>
+        <source>A BOOL output of the program, which drives the component</source>
+        <translation>Un&apos;uscita BOOL del programma, che comanda il componente</translation>
+    </message>
+    <message>
+        <source>A BOOL input of the program, which the component sets</source>
+        <translation>Un ingresso BOOL del programma, che il componente imposta</translation>
+    </message>
+    <message>
+        <source>Unlimited</source>
+        <translation>Illimitato</translation>
+    </message>
+    <message>
+        <source>Contact</source>
+        <translation>Contatto</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(nessuno)</translation>
+    </message>
+    <message>
+        <source>Feeds</source>
+        <translation>Alimenta</translation>
+    </message>
+</context>
+<context>
+    <name>editor::MachineTab</name>
+    <message>
+        <source>Machine</source>
+        <translation>Macchina</translation>
+    </message>
+    <message>
+        <source>The virtual machine: its components, moving as the simulation runs</source>
+        <translation>La macchina virtuale: i suoi componenti, che si muovono durante la simulazione</translation>
     </message>
 </context>
 <context>
@@ -5342,12 +5646,28 @@ I modi da 1 a 3 sono Production, Maintenance e Manual.</translation>
             <numerusform>%n altre transizioni: una fase a monte non è attiva</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Sensors (set by the machine)</source>
+        <translation>Sensori (impostati dalla macchina)</translation>
+    </message>
+    <message>
+        <source>Written by the machine: %1 is a sensor of %2</source>
+        <translation>Scritto dalla macchina: %1 è un sensore di %2</translation>
+    </message>
+    <message>
+        <source>It sets the machine&apos;s sensors itself: played in open loop, the machine stands still.</source>
+        <translation>Imposta da sé i sensori della macchina: riprodotto ad anello aperto, la macchina resta ferma.</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
     <message>
         <source>(%1 more)</source>
         <translation>(altri %1)</translation>
+    </message>
+    <message>
+        <source>%1 is a sensor of the machine&apos;s %2: the machine sets it</source>
+        <translation>%1 è un sensore di %2 della macchina: lo imposta la macchina</translation>
     </message>
 </context>
 <context>
