@@ -12,7 +12,6 @@ namespace editor {
 
 namespace {
 
-constexpr double kSteps = 200;
 constexpr double kPart = 14;
 
 } // namespace
@@ -21,7 +20,7 @@ void ConveyorItem::appendLook(std::vector<std::int64_t>& look) const
 {
     const core::machine::MachineState& state = machineScene().state();
     look.push_back(state.hasPart(component()) ? 1 : 0);
-    look.push_back(std::llround(state.position(component()) * kSteps));
+    look.push_back(std::llround(state.position(component()) * kLookPositionSteps));
     look.push_back(state.partsDelivered(component()));
 }
 

@@ -11,12 +11,6 @@
 
 namespace editor {
 
-namespace {
-
-constexpr double kSteps = 200; // positions told apart: finer than a pixel of the rod's travel
-
-} // namespace
-
 double CylinderItem::position() const
 {
     return machineScene().state().position(component());
@@ -29,7 +23,7 @@ double CylinderItem::rodTipX() const
 
 void CylinderItem::appendLook(std::vector<std::int64_t>& look) const
 {
-    look.push_back(std::llround(position() * kSteps));
+    look.push_back(std::llround(position() * kLookPositionSteps));
 }
 
 CylinderItem::Geometry CylinderItem::geometry(const QRectF& body) const

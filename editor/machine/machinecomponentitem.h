@@ -25,6 +25,10 @@ namespace editor {
 
 class MachineScene;
 
+// How finely a moving part's position (0..1) counts in a look: finer than a
+// pixel of a rod's or a belt's travel, so a visible move always repaints.
+inline constexpr double kLookPositionSteps = 200;
+
 class MachineComponentItem : public QGraphicsItem {
     Q_DECLARE_TR_FUNCTIONS(MachineComponentItem)
 
