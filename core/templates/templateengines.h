@@ -1,7 +1,7 @@
 #pragma once
 
 // What each template gives the engines every model goes through. The shared
-// entry points (checkModel, buildPlcProject) read the model's template here
+// entry points (checkModel, checkProperty, buildPlcProject) read the model's template here
 // instead of branching on it: a template is its data (gemmatemplate.h,
 // packmltemplate.h) plus these engines, each in its own folder. Its verifier
 // is in a table of its own (templateverification.h), in the verification
@@ -11,7 +11,9 @@
 
 #include "core/checks/diagnostic.h"
 #include "core/codegen/plcproject.h"
+#include "core/verification/property.h"
 
+#include <string_view>
 #include <vector>
 
 namespace core {
@@ -20,6 +22,7 @@ class Model;
 
 struct TemplateEngines {
     std::vector<Diagnostic> (*checkModel)(const Model& model);
+    std::vector<PropertyProblem> (*checkProperty)(const Model& model, std::string_view text);
     PlcProject (*buildPlcProject)(const Model& model, Dialect dialect);
 };
 

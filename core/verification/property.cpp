@@ -4,7 +4,7 @@
 #include "core/condition/conditionparser.h"
 #include "core/condition/symboltable.h"
 #include "core/model/model.h"
-#include "core/templates/templateverification.h"
+#include "core/templates/templateengines.h"
 
 #include <cctype>
 
@@ -104,7 +104,7 @@ std::string propertyStepId(const Model& model, std::string_view written)
 
 std::vector<PropertyProblem> checkProperty(const Model& model, std::string_view text)
 {
-    return verificationEnginesOf(model).checkProperty(model, text);
+    return enginesOf(model).checkProperty(model, text);
 }
 
 std::vector<PropertyProblem> checkGemmaProperty(const Model& model, std::string_view text)

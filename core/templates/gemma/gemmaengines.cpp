@@ -9,6 +9,7 @@ const TemplateEngines& gemmaEngines()
 {
     static const TemplateEngines engines{
         checkGemmaModel,
+        checkGemmaProperty,
         buildGemmaPlcProject,
     };
     return engines;

@@ -4,7 +4,7 @@
 
 namespace core {
 
-// GEMMA's checks and code generator.
+// GEMMA's checks, property checks and code generator.
 const TemplateEngines& gemmaEngines();
 
 } // namespace core

@@ -5,7 +5,6 @@ namespace core {
 const VerificationEngines& gemmaVerificationEngines()
 {
     static const VerificationEngines engines{
-        checkGemmaProperty,
         verifyGemmaModel,
     };
     return engines;

@@ -4,7 +4,7 @@
 
 namespace core {
 
-// GEMMA's property checks and verifier.
+// GEMMA's verifier.
 const VerificationEngines& gemmaVerificationEngines();
 
 } // namespace core

@@ -2,6 +2,7 @@
 
 #include "core/templates/packml/packmlchecks.h"
 #include "core/templates/packml/packmlcodegen.h"
+#include "core/templates/packml/packmlproperty.h"
 
 namespace core::packml {
 
@@ -9,6 +10,7 @@ const TemplateEngines& engines()
 {
     static const TemplateEngines engines{
         checkPackMLModel,
+        checkPackmlProperty,
         buildPackmlPlcProject,
     };
     return engines;

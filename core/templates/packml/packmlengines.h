@@ -4,7 +4,7 @@
 
 namespace core::packml {
 
-// PackML's checks and code generator.
+// PackML's checks, property checks and code generator.
 const TemplateEngines& engines();
 
 } // namespace core::packml

@@ -1,6 +1,5 @@
 #include "core/templates/packml/packmlverification.h"
 
-#include "core/templates/packml/packmlproperty.h"
 #include "core/templates/packml/packmlverifier.h"
 
 namespace core::packml {
@@ -8,7 +7,6 @@ namespace core::packml {
 const VerificationEngines& verificationEngines()
 {
     static const VerificationEngines engines{
-        checkPackmlProperty,
         verifyPackmlModel,
     };
     return engines;

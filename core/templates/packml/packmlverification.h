@@ -4,7 +4,7 @@
 
 namespace core::packml {
 
-// PackML's property checks and verifier.
+// PackML's verifier.
 const VerificationEngines& verificationEngines();
 
 } // namespace core::packml
