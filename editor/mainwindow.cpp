@@ -576,6 +576,20 @@ void MainWindow::createActions()
     m_exactTimeAction->setObjectName(QStringLiteral("verifyExactTimeAction"));
     m_exactTimeAction->setCheckable(true);
     connect(m_exactTimeAction, &QAction::toggled, this, [this](bool exact) { m_verification->setExactTime(exact); });
+    // Closed loop: offered while the model has a machine (a GEMMA model's only).
+    m_withMachineAction = new QAction(this);
+    m_withMachineAction->setObjectName(QStringLiteral("verifyWithMachineAction"));
+    m_withMachineAction->setCheckable(true);
+    connect(m_withMachineAction, &QAction::toggled, this,
+            [this](bool withMachine) { m_verification->setWithMachine(withMachine); });
+    auto offerMachine = [this] {
+        const core::Model& model = m_document->model();
+        m_withMachineAction->setEnabled(!model.machine().empty() && model.templateKind() == core::TemplateKind::Gemma);
+    };
+    connect(m_document, &Document::machineChanged, this, offerMachine);
+    connect(m_document, &Document::modelReplaced, this, offerMachine);
+    connect(m_document, &Document::modelReset, this, offerMachine);
+    offerMachine();
 
     m_userGuideAction = action("userGuideAction", &MainWindow::showUserGuide, QKeySequence::HelpContents);
     m_aboutAction = action("aboutAction", &MainWindow::about);
@@ -682,6 +696,7 @@ void MainWindow::createMenus()
     m_simulationMenu->addSeparator();
     m_simulationMenu->addAction(m_verifyAction);
     m_simulationMenu->addAction(m_exactTimeAction);
+    m_simulationMenu->addAction(m_withMachineAction);
 
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName("helpMenu");
@@ -1044,6 +1059,9 @@ void MainWindow::retranslate()
     m_exactTimeAction->setText(tr("Verify with &Exact Time"));
     m_exactTimeAction->setStatusTip(tr("Count time in scans when verifying: every timer elapses exactly when the "
                                        "PLC's would, instead of \"may or may not have elapsed\" (more states)"));
+    m_withMachineAction->setText(tr("Verify with the &Machine"));
+    m_withMachineAction->setStatusTip(tr("Explore the program with the model's machine: the sensors it drives follow "
+                                         "the cylinders and conveyors instead of taking any value"));
 
     m_userGuideAction->setText(tr("&User Guide"));
     m_userGuideAction->setStatusTip(tr("How to build a model, simulate, verify and export, offline; F1 opens it "
@@ -1451,7 +1469,8 @@ void MainWindow::showVerificationStatus()
     if (!m_verification->failure().isEmpty())
         message = tr("Verification failed: %1").arg(m_verification->failure());
     else if (m_verification->wasCancelled() || m_verification->isStale() || !m_verification->hasResult())
-        message = tr("Verification cancelled: the model, the Complete settings or Exact Time changed");
+        message = tr("Verification cancelled: the model, the Complete settings, the machine's use or Exact Time "
+                     "changed");
     else if (m_verification->result().violated())
         message = tr("Verification finished: some properties do not hold (see Problems)");
     else if (m_verification->result().undecided())

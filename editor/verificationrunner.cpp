@@ -35,6 +35,7 @@ struct VerificationRunner::Job {
     QStringList automatic;
     std::map<std::string, core::CompleteAssumption> complete;
     bool exactTime = false;
+    bool withMachine = false;
     std::chrono::milliseconds timeLimit{0};
     std::atomic<bool> cancelled{false};
     core::VerificationResult result;
@@ -59,6 +60,7 @@ VerificationRunner::VerificationRunner(Document* document, SimulationSession* se
     connect(m_document, &Document::commandChanged, this, &VerificationRunner::onModelChanged);
     connect(m_document, &Document::modesChanged, this, &VerificationRunner::onModelChanged);
     connect(m_document, &Document::modeChanged, this, &VerificationRunner::onModelChanged);
+    connect(m_document, &Document::machineChanged, this, &VerificationRunner::onModelChanged);
     if (m_session) {
         // Complete modes change with the user's choice, a reset or a replay,
         // each followed by inputsChanged(); they exist while the mode is active.
@@ -101,6 +103,7 @@ void VerificationRunner::start()
         m_current->cancelled = true;
     auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic);
     job->exactTime = m_exactTime;
+    job->withMachine = m_withMachine;
     job->timeLimit = m_timeLimit;
     m_current = job;
     m_wasCancelled = false;
@@ -206,6 +209,22 @@ void VerificationRunner::setExactTime(bool exact)
     emit assumptionsChanged();
 }
 
+void VerificationRunner::setWithMachine(bool withMachine)
+{
+    if (withMachine == m_withMachine)
+        return;
+    m_withMachine = withMachine;
+    if (isRunning() && m_current->withMachine != m_withMachine)
+        cancel();
+    emit assumptionsChanged();
+}
+
+bool VerificationRunner::nextRunClosedLoop() const
+{
+    const core::Model& model = m_document->model();
+    return m_withMachine && !model.machine().empty() && model.templateKind() == core::TemplateKind::Gemma;
+}
+
 // Called for every input the user plays: only a change of the assumptions
 // counts, and only the user's choice makes the last result outdated or
 // abandons a run (which then finishes as current with the new settings).
@@ -264,6 +283,7 @@ void VerificationRunner::runJob(const std::shared_ptr<Job>& job)
     core::VerificationOptions options;
     options.complete = job->complete;
     options.exactTime = job->exactTime;
+    options.closedLoop = job->withMachine;
     options.timeLimit = job->timeLimit;
     options.cancelled = [job] { return job->cancelled.load(std::memory_order_relaxed); };
     try {

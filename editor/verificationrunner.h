@@ -81,6 +81,16 @@ public:
     // The same for the last result.
     bool resultExactTime() const { return m_resultExactTime; }
 
+    // Whether the next runs explore the program with the model's machine
+    // (closed loop, VerificationOptions::closedLoop) when it has one. A change
+    // abandons a run under way and emits assumptionsChanged().
+    void setWithMachine(bool withMachine);
+    bool withMachine() const { return m_withMachine; }
+    // Whether the next run would use a machine: asked for, and the model has one.
+    bool nextRunClosedLoop() const;
+    // Whether the last result was explored with the machine.
+    bool resultClosedLoop() const { return hasResult() && m_result->closedLoop; }
+
     // How long the next runs may take before they stop, undecided where they
     // had to (GV100). Not an assumption: a change leaves a run under way and
     // the last result as they are.
@@ -95,9 +105,13 @@ public:
     // way of counting time, than the next run would use. Its counterexamples
     // still fit the model (each is a run of it, replayed in the simulator), so
     // unlike isStale() this does not stop a replay.
-    bool assumptionsDiffer() const { return completeAssumptionsDiffer() || timeCountingDiffers(); }
+    bool assumptionsDiffer() const
+    {
+        return completeAssumptionsDiffer() || timeCountingDiffers() || machineUseDiffers();
+    }
     bool completeAssumptionsDiffer() const;
     bool timeCountingDiffers() const { return hasResult() && m_resultExactTime != m_exactTime; }
+    bool machineUseDiffers() const { return hasResult() && resultClosedLoop() != nextRunClosedLoop(); }
 
 signals:
     void started();
@@ -108,7 +122,7 @@ signals:
     void staleChanged(bool stale);
     // The result was dropped with the model it described (New, Open...).
     void resultCleared();
-    // assumedAutomatic() or exactTime() changed (and with it maybe assumptionsDiffer()).
+    // assumedAutomatic(), exactTime() or withMachine() changed (and with it maybe assumptionsDiffer()).
     void assumptionsChanged();
 
 private:
@@ -143,6 +157,7 @@ private:
     // what it assumed, moved along by the changes the user did not choose.
     QStringList m_currentWithAutomatic;
     bool m_exactTime = false;
+    bool m_withMachine = false;
     std::chrono::milliseconds m_timeLimit = core::VerificationOptions().timeLimit;
     QStringList m_resultAutomatic;
     bool m_resultExactTime = false;

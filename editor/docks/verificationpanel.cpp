@@ -421,6 +421,10 @@ void VerificationPanel::refreshStatus()
         text = m_runner->exactTime()
             ? tr("Exact time switched on since verification: verify again to update the findings.")
             : tr("Exact time switched off since verification: verify again to update the findings.");
+    } else if (m_runner->machineUseDiffers()) {
+        text = m_runner->nextRunClosedLoop()
+            ? tr("The machine is used since verification: verify again to update the findings.")
+            : tr("The machine is no longer used since verification: verify again to update the findings.");
     } else {
         const core::VerificationResult& result = m_runner->result();
         const QString configurations = QString::number(static_cast<qulonglong>(result.configurations));
@@ -464,11 +468,14 @@ void VerificationPanel::refreshAssumptions()
     const QStringList automatic =
         m_runner->hasResult() ? m_runner->resultAssumedAutomatic() : m_runner->assumedAutomatic();
     const bool exactTime = m_runner->hasResult() ? m_runner->resultExactTime() : m_runner->exactTime();
+    const bool closedLoop = m_runner->hasResult() ? m_runner->resultClosedLoop() : m_runner->nextRunClosedLoop();
     QString text = automatic.isEmpty()
         ? tr("All Complete outputs free")
         : tr("Assumed Complete automatic: %1").arg(automatic.join(QStringLiteral(", ")));
     if (exactTime)
         text += QStringLiteral(" \u00b7 ") + tr("Exact time");
+    if (closedLoop)
+        text += QStringLiteral(" \u00b7 ") + tr("With the machine");
     m_assumptionsLabel->setText(text);
     QString toolTip = text + QLatin1Char('\n')
         + tr("Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at "
@@ -477,6 +484,10 @@ void VerificationPanel::refreshAssumptions()
     if (exactTime)
         toolTip += QLatin1Char('\n') + tr("Exact time: every timer elapses exactly when the PLC's would, counted in "
                                            "scans (Simulation > Verify with Exact Time).");
+    if (closedLoop)
+        toolTip += QLatin1Char('\n') + tr("With the machine: the sensors the model's machine drives follow it, "
+                                            "scan by scan, instead of taking any value (Simulation > Verify with "
+                                            "the Machine).");
     // The core's lines are English, like the command line's "abstracted:" lines.
     const std::vector<std::string>& abstractions = m_runner->result().abstractions;
     if (m_runner->hasResult() && !abstractions.empty()) {

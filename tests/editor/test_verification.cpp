@@ -12,6 +12,7 @@
 #include "editor/app/languages.h"
 #include "editor/app/settings.h"
 #include "editor/commands/propertycommands.h"
+#include "editor/commands/removemachinecomponentcommand.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/docks/problemsdock.h"
 #include "editor/docks/propertiespanel.h"
@@ -104,6 +105,7 @@ class TestVerification : public QObject {
 
 private slots:
     void exactTimeFromTheMenu();
+    void withMachineFromTheMenu();
     void timeLimitFromThePanel();
     void initTestCase();
     void init();
@@ -942,6 +944,48 @@ void TestVerification::exactTimeFromTheMenu()
     exact->setChecked(true);
     QVERIFY(!m_runner->assumptionsDiffer());
     exact->setChecked(false);
+}
+
+// Simulation > Verify with the Machine explores the program with the model's
+// machine: two limit switches of one cylinder are TRUE together for arbitrary
+// sensors, never with the machine. Offered only while the model has a machine.
+void TestVerification::withMachineFromTheMenu()
+{
+    auto* withMachine = m_window->findChild<QAction*>(QStringLiteral("verifyWithMachineAction"));
+    QVERIFY(withMachine && withMachine->isCheckable());
+    loadFaultyExample(); // no machine
+    QVERIFY(!withMachine->isEnabled());
+
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    QVERIFY(loaded.model && !loaded.model->machine().empty());
+    m_window->document()->replaceModel(*loaded.model, QString(), core::ModelFormat::Native);
+    QVERIFY(withMachine->isEnabled());
+    QVERIFY(m_window->document()->modelForCommands().addProperty({"never Clamped AND Unclamped", ""}).ok);
+    const std::size_t property = m_window->document()->model().properties().size() - 1;
+    verifyAndWait();
+    QVERIFY(!m_runner->resultClosedLoop());
+    QVERIFY(!m_runner->result().propertyHolds.at(property)); // any sensors: both switches at once
+
+    VerificationPanel* panel = m_dock->verificationPanel();
+    QSignalSpy assumptionsChanged(m_runner, &VerificationRunner::assumptionsChanged);
+    withMachine->setChecked(true);
+    QCOMPARE(assumptionsChanged.size(), 1);
+    QVERIFY(m_runner->machineUseDiffers());
+    QVERIFY(!m_runner->isStale());
+    QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("The machine is used since verification")));
+    verifyAndWait();
+    QVERIFY(m_runner->resultClosedLoop());
+    QVERIFY(!m_runner->assumptionsDiffer());
+    QVERIFY(m_runner->result().propertyHolds.at(property));
+    QVERIFY(panel->assumptionsLabel()->text().endsWith(QStringLiteral("With the machine")));
+
+    // Editing the machine makes the findings stale, as any edit of the model.
+    Document* document = m_window->document();
+    document->undoStack()->push(new RemoveMachineComponentCommand(*document, document->model().machine().components.size() - 1));
+    QVERIFY(m_runner->isStale());
+    document->undoStack()->undo();
+    withMachine->setChecked(false);
+    QVERIFY(m_runner->machineUseDiffers());
 }
 
 void TestVerification::propertyFindingsShowTheirText()
