@@ -3,12 +3,19 @@
 #include "editor/chart/gemma/chartscene.h"
 #include "editor/document.h"
 #include "editor/export/chartexport.h"
+#include "editor/machine/machinescene.h"
+#include "editor/machine/machinetext.h"
+#include "editor/simulation/simulationsession.h"
 #include "editor/stdstring.h"
 #include "editor/text/elementlabels.h"
 #include "editor/text/gemmastatenames.h"
 
 #include "core/codegen/plcproject.h"
 #include "core/model/model.h"
+
+#include <QPainter>
+
+#include <algorithm>
 
 namespace editor::specification {
 
@@ -24,11 +31,20 @@ GemmaSpecificationPages::GemmaSpecificationPages(Document& document, const QDate
     , m_titleSection(tr("Specification"))
     , m_chartSection(tr("GEMMA chart"))
     , m_tablesSection(tr("States, transitions and variables"))
+    , m_machineSection(tr("Machine"))
     , m_grafcetSection(tr("Nested GRAFCETs"))
     , m_codeSection(tr("Generated code"))
 {
     m_chartScene = &keepScene(std::make_unique<ChartScene>(&document, &m_selection));
-    setSectionNames({m_titleSection, m_chartSection, m_tablesSection, m_grafcetSection, m_codeSection});
+    if (!m_model.machine().empty()) {
+        // The machine at rest: a session that never runs, owned by the scene
+        // so that it outlives the scene's items.
+        auto* rest = new SimulationSession(&document);
+        m_machineScene = &keepScene(std::make_unique<MachineScene>(&document, rest));
+        rest->setParent(m_machineScene);
+    }
+    setSectionNames({m_titleSection, m_chartSection, m_tablesSection, m_machineSection, m_grafcetSection,
+                     m_codeSection});
     for (const core::Step& step : m_model.steps()) {
         if (m_model.effectiveGrafcet(step.id))
             m_grafcetSteps << fromStd(step.id);
@@ -38,6 +54,8 @@ GemmaSpecificationPages::GemmaSpecificationPages(Document& document, const QDate
     m_statesEntry = addContentsEntry(tr("States"));
     m_transitionsEntry = addContentsEntry(tr("Transitions"));
     m_variablesEntry = addContentsEntry(tr("Variables"));
+    if (m_machineScene)
+        m_machineEntry = addContentsEntry(tr("Machine"));
     if (!m_grafcetSteps.isEmpty()) {
         m_grafcetsEntry = addContentsEntry(tr("Nested GRAFCETs"));
         for (const QString& id : std::as_const(m_grafcetSteps))
@@ -50,6 +68,8 @@ std::vector<SpecificationPages::Section> GemmaSpecificationPages::sections()
 {
     std::vector<Section> sections{[this] { planTitlePage(); }, [this] { planChart(); }, [this] { planStates(); },
                                   [this] { planTransitions(); }, [this] { planVariables(m_variablesEntry); }};
+    if (m_machineScene)
+        sections.push_back([this] { planMachine(); });
     for (qsizetype i = 0; i < m_grafcetSteps.size(); ++i)
         sections.push_back([this, i] { planGrafcet(i); });
     sections.push_back([this] { planCode(); });
@@ -139,6 +159,59 @@ void GemmaSpecificationPages::planTransitions()
                  "its transitions by priority, 1 first; a negated transition fires when its condition "
                  "is FALSE."),
               transitions, tr("No transition takes part."));
+}
+
+// The machine the simulation and `verify --machine` run the program
+// against: its components and their wiring, then its schematic at rest.
+void GemmaSpecificationPages::planMachine()
+{
+    namespace machine = core::machine;
+    m_flow->newPage(QPageLayout::Portrait, m_machineSection);
+    Table components(m_style, {{tr("Component"), 86}, {tr("Kind"), 96}, {tr("Wiring"), 0}, {tr("Settings"), 130}},
+                     m_width);
+    for (const machine::Component& component : m_model.machine().components) {
+        const machine::ComponentKindSpec& spec = machine::kindSpec(component.kind);
+        QStringList wiring;
+        for (std::size_t i = 0; i < spec.roles.size() && i < component.wires.size(); ++i) {
+            if (!component.wires[i].empty())
+                wiring << tr("%1: %2").arg(machinetext::roleName(spec.roles[i].key), fromStd(component.wires[i]));
+        }
+        QStringList settings;
+        for (std::size_t i = 0; i < spec.parameters.size() && i < component.parameters.size(); ++i) {
+            const std::int64_t value = component.parameters[i];
+            const QString shown = value == machine::kUnlimitedParts ? tr("unlimited") : QString::number(value);
+            settings << tr("%1: %2").arg(machinetext::parameterName(spec.parameters[i].key), shown);
+        }
+        if (spec.hasContact)
+            settings << machinetext::contactName(component.contact);
+        if (spec.feedsConveyor && !component.conveyor.empty())
+            settings << tr("Feeds %1").arg(fromStd(component.conveyor));
+        components.addRow({fromStd(component.name), machinetext::kindName(component.kind),
+                           orDash(wiring.join(QLatin1Char('\n'))), orDash(settings.join(QLatin1Char('\n')))});
+    }
+    planTable(m_machineEntry, tr("Machine"),
+              tr("The virtual machine the simulation runs the program against, in closed loop: after each "
+                 "scan the components move one cycle time from the outputs wired to them and set the "
+                 "sensors the next scan reads; operator inputs stay the user's. Times are in "
+                 "milliseconds, counted in whole cycles."),
+              components, QString());
+    planMachineDrawing();
+}
+
+// The Machine tab's schematic at rest, as wide as the page, at most half its height.
+void GemmaSpecificationPages::planMachineDrawing()
+{
+    Flow& flow = *m_flow;
+    const QRectF source = m_machineScene->itemsBoundingRect();
+    if (source.isEmpty())
+        return;
+    const double scale = std::min(m_width / source.width(), flow.body().height() / 2 / source.height());
+    const QSizeF size = source.size() * scale;
+    addHeading(flow, m_style, TextStyle::Subheading, tr("The machine at rest"), size.height());
+    MachineScene* scene = m_machineScene;
+    flow.place(size.height(), [scene, source, size](QPainter& painter, const QPointF& at) {
+        scene->render(&painter, QRectF(at, size), source);
+    });
 }
 
 void GemmaSpecificationPages::planGrafcet(qsizetype index)

@@ -4,12 +4,14 @@
 
 namespace editor {
 class ChartScene;
+class MachineScene;
 }
 
 namespace editor::specification {
 
 // The GEMMA model's specification: the title page, the GEMMA chart, the
-// states, transitions and variables, each nested GRAFCET, the code outline.
+// states, transitions and variables, the machine (when the model has one),
+// each nested GRAFCET, the code outline.
 class GemmaSpecificationPages : public SpecificationPages {
     Q_DECLARE_TR_FUNCTIONS(SpecificationExport)
 
@@ -27,6 +29,8 @@ private:
     void planChart();
     void planStates();
     void planTransitions();
+    void planMachine();
+    void planMachineDrawing();
     void planGrafcet(qsizetype index);
     void planCode();
     QString describePou(const core::PlcPou& pou, const QString& program) const;
@@ -35,6 +39,7 @@ private:
     QString m_titleSection;
     QString m_chartSection;
     QString m_tablesSection;
+    QString m_machineSection;
     QString m_grafcetSection;
     QString m_codeSection;
     QStringList m_grafcetSteps; // the GRAFCETs that generate code, in state order
@@ -43,9 +48,11 @@ private:
     std::size_t m_statesEntry = 0;
     std::size_t m_transitionsEntry = 0;
     std::size_t m_variablesEntry = 0;
+    std::size_t m_machineEntry = 0;
     std::size_t m_grafcetsEntry = 0; // then one per GRAFCET
     std::size_t m_codeEntry = 0;
     ChartScene* m_chartScene = nullptr;
+    MachineScene* m_machineScene = nullptr; // when the model has a machine
 };
 
 } // namespace editor::specification

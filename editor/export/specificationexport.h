@@ -21,6 +21,8 @@ class Document;
 //   nested GRAFCET steps, comment), the effective transitions (priority,
 //   condition, tokens) and the variables (name, kind, type, default,
 //   comment) as tables;
+// - the machine, when the model has one: its components with their kind,
+//   wiring and settings, then the Machine tab's schematic at rest;
 // - each nested GRAFCET that generates code, from a new page headed
 //   "F1 Normal production", drawn as GrafcetExport draws it (over several
 //   pages, broken between steps and transitions, when too tall), then its

@@ -17,6 +17,7 @@
 #include "editor/export/exportoptionsdialog.h"
 #include "editor/export/specificationexport.h"
 #include "editor/grafcet/grafcettransitionitem.h"
+#include "editor/machine/machinetext.h"
 #include "editor/mainwindow.h"
 #include "editor/text/gemmastatenames.h"
 
@@ -49,6 +50,7 @@ private slots:
     void initTestCase();
 
     void eachGrafcetStartsAPageOfItsOwn();
+    void machineHasASectionOfItsOwn();
     void everyTextOfTheExampleIsThereInFull();
     void wordsNeitherOverlapNorLeaveTheirPage();
     void longGrafcetSpansSeveralPages();
@@ -157,6 +159,56 @@ void TestSpecificationExport::eachGrafcetStartsAPageOfItsOwn()
                                            .arg(titlePages[i] + 1),
                                        QRegularExpression::MultilineOption);
         QVERIFY2(entry.match(pages[0]).hasMatch(), qPrintable(pages[0]));
+    }
+}
+
+// The drilling cell's machine: a page headed "Machine" in the contents, every
+// component with its kind and wiring, then its schematic; a model without a
+// machine has no such section.
+void TestSpecificationExport::machineHasASectionOfItsOwn()
+{
+    const QString path = exportExample(QStringLiteral("drilling-machine.pdf"));
+    QVERIFY(!path.isEmpty());
+    if (!havePoppler())
+        QSKIP("pdfinfo or pdftotext is not installed (poppler-utils)");
+    const core::LoadedModel example = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    const core::machine::Machine& machine = example.model->machine();
+    QVERIFY(!machine.empty());
+
+    const QStringList pages = pageTexts(path, QStringLiteral("-layout"));
+    int machinePage = -1;
+    for (int i = 1; i < pages.size() && machinePage < 0; ++i) {
+        const QStringList lines = trimmedLines(pages[i]);
+        if (lines.size() >= 2 && lines[1] == QStringLiteral("Machine"))
+            machinePage = i;
+    }
+    QVERIFY2(machinePage > 0, "a page starts with the Machine heading");
+    const QRegularExpression entry(QStringLiteral("^\\s*Machine\\s+%1\\s*$").arg(machinePage + 1),
+                                   QRegularExpression::MultilineOption);
+    QVERIFY2(entry.match(pages[0]).hasMatch(), qPrintable(pages[0]));
+    // The section's pages: their running header names it.
+    QString section;
+    for (int i = machinePage; i < pages.size() && trimmedLines(pages[i]).value(0).endsWith(QStringLiteral("Machine"));
+         ++i)
+        section += pages[i];
+    const QString text = section.simplified();
+    for (const core::machine::Component& component : machine.components) {
+        QVERIFY2(text.contains(QString::fromStdString(component.name)), component.name.c_str());
+        QVERIFY2(text.contains(machinetext::kindName(component.kind)), component.name.c_str());
+        for (const std::string& wire : component.wires) {
+            if (!wire.empty())
+                QVERIFY2(text.contains(QString::fromStdString(wire)), wire.c_str());
+        }
+    }
+    QVERIFY(text.contains(QStringLiteral("The machine at rest")));
+
+    const core::LoadedModel faulty = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-faulty.ggstudio.json");
+    QVERIFY(faulty.ok() && faulty.model->machine().empty());
+    const QString without = exportModel(*faulty.model, QStringLiteral("faulty-no-machine.pdf"));
+    QVERIFY(!without.isEmpty());
+    for (const QString& page : pageTexts(without, QStringLiteral("-layout"))) {
+        const QStringList lines = trimmedLines(page);
+        QVERIFY(lines.size() < 2 || lines[1] != QStringLiteral("Machine"));
     }
 }
 
