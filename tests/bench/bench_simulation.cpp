@@ -1,6 +1,8 @@
 #include "benchrepeats.h"
 #include "modelfactory.h"
 
+#include "core/formats/modelfiles.h"
+#include "core/machine/machineloop.h"
 #include "core/simulation/simulator.h"
 
 #include <catch2/catch.hpp>
@@ -99,4 +101,37 @@ TEST_CASE("Simulation of the realistic model (target >= 1,000,000 scans/s)", "[b
     reportScansPerSecond("step() with records", simulator, script, stepScans);
     BENCHMARK("100,000 scans, changing inputs, run()") { return runScans(simulator, script); };
     BENCHMARK("100,000 scans, changing inputs, step() with records") { return stepScans(simulator, script); };
+}
+
+// Issue 35: the drilling cell in closed loop with its machine (core/machine/
+// machineloop.h). The operator presses Start once; the machine then moves
+// the clamp and the drill head, feeds and carries the parts, and the program
+// runs its cycle on the sensors the machine sets, part after part until the
+// magazine is empty.
+TEST_CASE("Closed-loop simulation of the drilling cell (target >= 1,000,000 scans/s)",
+          "[benchmark][simulation][machine]")
+{
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    REQUIRE(loaded.ok());
+    REQUIRE_FALSE(loaded.model->machine().empty());
+    core::Simulator simulator(*loaded.model);
+    core::machine::MachineLoop loop(simulator, loaded.model->machine());
+    auto runFromStart = [&] {
+        loop.reset();
+        REQUIRE(simulator.setVariable("StartButton", true).ok);
+        loop.run(2);
+        REQUIRE(simulator.setVariable("StartButton", false).ok);
+        loop.run(kScansPerRun - 2);
+        return simulator.variableValue(static_cast<std::size_t>(simulator.variableIndex("PartCount")));
+    };
+
+    const int runs = benchRepeats(10);
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < runs; ++i)
+        runFromStart();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const core::cond::Value parts = runFromStart();
+    std::cout << "closed-loop simulation, drilling cell: " << static_cast<std::int64_t>(runs * kScansPerRun / seconds)
+              << " scans per second (" << core::cond::formatValue(parts) << " parts in " << kScansPerRun << " scans)\n";
+    BENCHMARK("100,000 scans of the drilling cell with its machine") { return runFromStart(); };
 }
