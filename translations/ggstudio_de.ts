@@ -3006,6 +3006,42 @@
         <source>it does nothing, Execute waits for a command.</source>
         <translation>er tut nichts, Execute wartet auf einen Befehl.</translation>
     </message>
+    <message>
+        <source>Machine</source>
+        <translation>Maschine</translation>
+    </message>
+    <message>
+        <source>Component</source>
+        <translation>Komponente</translation>
+    </message>
+    <message>
+        <source>Wiring</source>
+        <translation>Verdrahtung</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation>unbegrenzt</translation>
+    </message>
+    <message>
+        <source>Feeds %1</source>
+        <translation>Speist %1</translation>
+    </message>
+    <message>
+        <source>The virtual machine the simulation runs the program against, in closed loop: after each scan the components move one cycle time from the outputs wired to them and set the sensors the next scan reads; operator inputs stay the user&apos;s. Times are in milliseconds, counted in whole cycles.</source>
+        <translation>Die virtuelle Maschine, gegen die die Simulation das Programm im geschlossenen Regelkreis ausführt: Nach jedem Zyklus bewegen sich die Komponenten um eine Zykluszeit gemäß den mit ihnen verdrahteten Ausgängen und setzen die Sensoren, die der nächste Zyklus liest; Bedienereingänge bleiben beim Benutzer. Zeiten in Millisekunden, in ganzen Zyklen gezählt.</translation>
+    </message>
+    <message>
+        <source>The machine at rest</source>
+        <translation>Die Maschine in Ruhe</translation>
+    </message>
 </context>
 <context>
     <name>StateNames</name>
@@ -4412,10 +4448,6 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <translation>Beim Verifizieren die Zeit in Zyklen zählen: jeder Timer läuft genau dann ab, wenn der der SPS ablaufen würde, statt &quot;kann abgelaufen sein oder nicht&quot; (mehr Zustände)</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
-        <translation>Verifikation abgebrochen: Das Modell, die Complete-Einstellungen oder die exakte Zeit wurden geändert</translation>
-    </message>
-    <message>
         <source>%1 was opened, but not everything in the file was taken over.</source>
         <translation>%1 wurde geöffnet, aber nicht alles in der Datei wurde übernommen.</translation>
     </message>
@@ -4430,6 +4462,18 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
     <message>
         <source>Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model of this edition? You can undo this.</source>
         <translation>Alle Befehle, Betriebsarten, GRAFCETs, Variablen und Einstellungen auf ein neues PackML-Modell dieser Ausgabe zurücksetzen? Sie können das rückgängig machen.</translation>
+    </message>
+    <message>
+        <source>Verify with the &amp;Machine</source>
+        <translation>Mit der &amp;Maschine verifizieren</translation>
+    </message>
+    <message>
+        <source>Explore the program with the model&apos;s machine: the sensors it drives follow the cylinders and conveyors instead of taking any value</source>
+        <translation>Das Programm mit der Maschine des Modells erkunden: Die Sensoren, die sie setzt, folgen den Zylindern und Förderbändern, statt jeden Wert anzunehmen</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model, the Complete settings, the machine&apos;s use or Exact Time changed</source>
+        <translation>Verifikation abgebrochen: Das Modell, die Complete-Einstellungen, die Verwendung der Maschine oder die exakte Zeit haben sich geändert</translation>
     </message>
 </context>
 <context>
@@ -6551,6 +6595,22 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>How long a verification may run. Past it, what is not decided yet is reported as undecided (GV100) with how far the exploration got: give more time and verify again.</source>
         <translation>Wie lange eine Verifikation laufen darf. Danach wird, was noch nicht entschieden ist, als unentschieden (GV100) gemeldet, mit dem Stand der Exploration: geben Sie mehr Zeit und verifizieren Sie erneut.</translation>
+    </message>
+    <message>
+        <source>The machine is used since verification: verify again to update the findings.</source>
+        <translation>Die Maschine wird seit der Verifikation verwendet: erneut verifizieren, um die Befunde zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>The machine is no longer used since verification: verify again to update the findings.</source>
+        <translation>Die Maschine wird seit der Verifikation nicht mehr verwendet: erneut verifizieren, um die Befunde zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>With the machine</source>
+        <translation>Mit der Maschine</translation>
+    </message>
+    <message>
+        <source>With the machine: the sensors the model&apos;s machine drives follow it, scan by scan, instead of taking any value (Simulation &gt; Verify with the Machine).</source>
+        <translation>Mit der Maschine: Die Sensoren, die die Maschine des Modells setzt, folgen ihr Zyklus für Zyklus, statt jeden Wert anzunehmen (Simulation &gt; Mit der Maschine verifizieren).</translation>
     </message>
 </context>
 <context>

@@ -3006,6 +3006,42 @@
         <source>it does nothing, Execute waits for a command.</source>
         <translation>no hace nada, Execute espera un comando.</translation>
     </message>
+    <message>
+        <source>Machine</source>
+        <translation>Máquina</translation>
+    </message>
+    <message>
+        <source>Component</source>
+        <translation>Componente</translation>
+    </message>
+    <message>
+        <source>Wiring</source>
+        <translation>Cableado</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Ajustes</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation>ilimitado</translation>
+    </message>
+    <message>
+        <source>Feeds %1</source>
+        <translation>Alimenta %1</translation>
+    </message>
+    <message>
+        <source>The virtual machine the simulation runs the program against, in closed loop: after each scan the components move one cycle time from the outputs wired to them and set the sensors the next scan reads; operator inputs stay the user&apos;s. Times are in milliseconds, counted in whole cycles.</source>
+        <translation>La máquina virtual contra la que la simulación ejecuta el programa, en lazo cerrado: tras cada ciclo los componentes se mueven un tiempo de ciclo según las salidas cableadas a ellos y fijan los sensores que lee el ciclo siguiente; las entradas del operador siguen siendo del usuario. Los tiempos están en milisegundos, contados en ciclos enteros.</translation>
+    </message>
+    <message>
+        <source>The machine at rest</source>
+        <translation>La máquina en reposo</translation>
+    </message>
 </context>
 <context>
     <name>StateNames</name>
@@ -4412,10 +4448,6 @@ Ctrl+Espacio completa un nombre.</translation>
         <translation>Contar el tiempo en ciclos al verificar: cada temporizador vence exactamente cuando vencería el del autómata, en lugar de &quot;puede haber vencido o no&quot; (más estados)</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
-        <translation>Verificación cancelada: el modelo, los ajustes de Complete o el tiempo exacto han cambiado</translation>
-    </message>
-    <message>
         <source>%1 was opened, but not everything in the file was taken over.</source>
         <translation>%1 se ha abierto, pero no todo el contenido del archivo se ha incorporado.</translation>
     </message>
@@ -4430,6 +4462,18 @@ Ctrl+Espacio completa un nombre.</translation>
     <message>
         <source>Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model of this edition? You can undo this.</source>
         <translation>¿Devolver cada comando, modo de unidad, GRAFCET, variable y ajuste a un nuevo modelo PackML de esta edición? Puede deshacerlo.</translation>
+    </message>
+    <message>
+        <source>Verify with the &amp;Machine</source>
+        <translation>Verificar con la &amp;máquina</translation>
+    </message>
+    <message>
+        <source>Explore the program with the model&apos;s machine: the sensors it drives follow the cylinders and conveyors instead of taking any value</source>
+        <translation>Explorar el programa con la máquina del modelo: los sensores que mueve siguen a los cilindros y transportadores en lugar de tomar cualquier valor</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model, the Complete settings, the machine&apos;s use or Exact Time changed</source>
+        <translation>Verificación cancelada: cambiaron el modelo, los ajustes de Complete, el uso de la máquina o el tiempo exacto</translation>
     </message>
 </context>
 <context>
@@ -6551,6 +6595,22 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>How long a verification may run. Past it, what is not decided yet is reported as undecided (GV100) with how far the exploration got: give more time and verify again.</source>
         <translation>Cuánto puede durar una verificación. Pasado ese tiempo, lo que aún no está decidido se indica como sin decidir (GV100), con hasta dónde llegó la exploración: dé más tiempo y vuelva a verificar.</translation>
+    </message>
+    <message>
+        <source>The machine is used since verification: verify again to update the findings.</source>
+        <translation>La máquina se usa desde la verificación: verifique de nuevo para actualizar los hallazgos.</translation>
+    </message>
+    <message>
+        <source>The machine is no longer used since verification: verify again to update the findings.</source>
+        <translation>La máquina ya no se usa desde la verificación: verifique de nuevo para actualizar los hallazgos.</translation>
+    </message>
+    <message>
+        <source>With the machine</source>
+        <translation>Con la máquina</translation>
+    </message>
+    <message>
+        <source>With the machine: the sensors the model&apos;s machine drives follow it, scan by scan, instead of taking any value (Simulation &gt; Verify with the Machine).</source>
+        <translation>Con la máquina: los sensores que mueve la máquina del modelo la siguen, ciclo a ciclo, en lugar de tomar cualquier valor (Simulación &gt; Verificar con la máquina).</translation>
     </message>
 </context>
 <context>

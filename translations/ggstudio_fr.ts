@@ -3006,6 +3006,42 @@
         <source>it does nothing, Execute waits for a command.</source>
         <translation>il ne fait rien, Execute attend une commande.</translation>
     </message>
+    <message>
+        <source>Machine</source>
+        <translation>Machine</translation>
+    </message>
+    <message>
+        <source>Component</source>
+        <translation>Composant</translation>
+    </message>
+    <message>
+        <source>Wiring</source>
+        <translation>Câblage</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Réglages</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1 : %2</translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation>illimité</translation>
+    </message>
+    <message>
+        <source>Feeds %1</source>
+        <translation>Alimente %1</translation>
+    </message>
+    <message>
+        <source>The virtual machine the simulation runs the program against, in closed loop: after each scan the components move one cycle time from the outputs wired to them and set the sensors the next scan reads; operator inputs stay the user&apos;s. Times are in milliseconds, counted in whole cycles.</source>
+        <translation>La machine virtuelle contre laquelle la simulation exécute le programme, en boucle fermée : après chaque cycle, les composants se déplacent d&apos;un temps de cycle selon les sorties qui leur sont câblées et fixent les capteurs que lit le cycle suivant ; les entrées opérateur restent à l&apos;utilisateur. Les temps sont en millisecondes, comptés en cycles entiers.</translation>
+    </message>
+    <message>
+        <source>The machine at rest</source>
+        <translation>La machine au repos</translation>
+    </message>
 </context>
 <context>
     <name>StateNames</name>
@@ -4412,10 +4448,6 @@ Ctrl+Espace complète un nom.</translation>
         <translation>Compter le temps en cycles pendant la vérification&#xa0;: chaque temporisation s&apos;écoule exactement quand celle de l&apos;automate s&apos;écoulerait, au lieu de «&#xa0;écoulée ou non&#xa0;» (plus d&apos;états)</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
-        <translation>Vérification annulée&#xa0;: le modèle, les réglages de Complete ou le temps exact ont changé</translation>
-    </message>
-    <message>
         <source>%1 was opened, but not everything in the file was taken over.</source>
         <translation>%1 a été ouvert, mais tout le contenu du fichier n&apos;a pas été repris.</translation>
     </message>
@@ -4430,6 +4462,18 @@ Ctrl+Espace complète un nom.</translation>
     <message>
         <source>Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model of this edition? You can undo this.</source>
         <translation>Remettre chaque commande, mode d&apos;unité, GRAFCET, variable et réglage à ceux d&apos;un nouveau modèle PackML de cette édition ? Vous pouvez l&apos;annuler.</translation>
+    </message>
+    <message>
+        <source>Verify with the &amp;Machine</source>
+        <translation>Vérifier avec la &amp;machine</translation>
+    </message>
+    <message>
+        <source>Explore the program with the model&apos;s machine: the sensors it drives follow the cylinders and conveyors instead of taking any value</source>
+        <translation>Explorer le programme avec la machine du modèle : les capteurs qu&apos;elle pilote suivent les vérins et les convoyeurs au lieu de prendre n&apos;importe quelle valeur</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model, the Complete settings, the machine&apos;s use or Exact Time changed</source>
+        <translation>Vérification annulée : le modèle, les réglages de Complete, l&apos;usage de la machine ou le temps exact ont changé</translation>
     </message>
 </context>
 <context>
@@ -6551,6 +6595,22 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>How long a verification may run. Past it, what is not decided yet is reported as undecided (GV100) with how far the exploration got: give more time and verify again.</source>
         <translation>Durée maximale d&apos;une vérification. Au-delà, ce qui n&apos;est pas encore décidé est signalé comme indécis (GV100), avec l&apos;avancement de l&apos;exploration : donnez plus de temps et vérifiez à nouveau.</translation>
+    </message>
+    <message>
+        <source>The machine is used since verification: verify again to update the findings.</source>
+        <translation>La machine est utilisée depuis la vérification : vérifiez à nouveau pour mettre à jour les constats.</translation>
+    </message>
+    <message>
+        <source>The machine is no longer used since verification: verify again to update the findings.</source>
+        <translation>La machine n&apos;est plus utilisée depuis la vérification : vérifiez à nouveau pour mettre à jour les constats.</translation>
+    </message>
+    <message>
+        <source>With the machine</source>
+        <translation>Avec la machine</translation>
+    </message>
+    <message>
+        <source>With the machine: the sensors the model&apos;s machine drives follow it, scan by scan, instead of taking any value (Simulation &gt; Verify with the Machine).</source>
+        <translation>Avec la machine : les capteurs que pilote la machine du modèle la suivent, cycle après cycle, au lieu de prendre n&apos;importe quelle valeur (Simulation &gt; Vérifier avec la machine).</translation>
     </message>
 </context>
 <context>

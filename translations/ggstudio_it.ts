@@ -3006,6 +3006,42 @@
         <source>it does nothing, Execute waits for a command.</source>
         <translation>non fa nulla, Execute attende un comando.</translation>
     </message>
+    <message>
+        <source>Machine</source>
+        <translation>Macchina</translation>
+    </message>
+    <message>
+        <source>Component</source>
+        <translation>Componente</translation>
+    </message>
+    <message>
+        <source>Wiring</source>
+        <translation>Cablaggio</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Impostazioni</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation>illimitato</translation>
+    </message>
+    <message>
+        <source>Feeds %1</source>
+        <translation>Alimenta %1</translation>
+    </message>
+    <message>
+        <source>The virtual machine the simulation runs the program against, in closed loop: after each scan the components move one cycle time from the outputs wired to them and set the sensors the next scan reads; operator inputs stay the user&apos;s. Times are in milliseconds, counted in whole cycles.</source>
+        <translation>La macchina virtuale contro cui la simulazione esegue il programma, in anello chiuso: dopo ogni ciclo i componenti si muovono di un tempo di ciclo secondo le uscite cablate a essi e impostano i sensori che il ciclo successivo legge; gli ingressi dell&apos;operatore restano dell&apos;utente. I tempi sono in millisecondi, contati in cicli interi.</translation>
+    </message>
+    <message>
+        <source>The machine at rest</source>
+        <translation>La macchina a riposo</translation>
+    </message>
 </context>
 <context>
     <name>StateNames</name>
@@ -4412,10 +4448,6 @@ Ctrl+Spazio completa un nome.</translation>
         <translation>Contare il tempo in cicli durante la verifica: ogni temporizzatore scade esattamente quando scadrebbe quello del PLC, invece di &quot;può essere scaduto o no&quot; (più stati)</translation>
     </message>
     <message>
-        <source>Verification cancelled: the model, the Complete settings or Exact Time changed</source>
-        <translation>Verifica annullata: il modello, le impostazioni di Complete o il tempo esatto sono cambiati</translation>
-    </message>
-    <message>
         <source>%1 was opened, but not everything in the file was taken over.</source>
         <translation>%1 è stato aperto, ma non tutto il contenuto del file è stato ripreso.</translation>
     </message>
@@ -4430,6 +4462,18 @@ Ctrl+Spazio completa un nome.</translation>
     <message>
         <source>Put every command, unit mode, GRAFCET, variable and setting back to a new PackML model of this edition? You can undo this.</source>
         <translation>Riportare ogni comando, modo di unità, GRAFCET, variabile e impostazione a un nuovo modello PackML di questa edizione? È possibile annullare.</translation>
+    </message>
+    <message>
+        <source>Verify with the &amp;Machine</source>
+        <translation>Verifica con la &amp;macchina</translation>
+    </message>
+    <message>
+        <source>Explore the program with the model&apos;s machine: the sensors it drives follow the cylinders and conveyors instead of taking any value</source>
+        <translation>Esplora il programma con la macchina del modello: i sensori che pilota seguono i cilindri e i nastri invece di prendere qualsiasi valore</translation>
+    </message>
+    <message>
+        <source>Verification cancelled: the model, the Complete settings, the machine&apos;s use or Exact Time changed</source>
+        <translation>Verifica annullata: sono cambiati il modello, le impostazioni di Complete, l&apos;uso della macchina o il tempo esatto</translation>
     </message>
 </context>
 <context>
@@ -6551,6 +6595,22 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>How long a verification may run. Past it, what is not decided yet is reported as undecided (GV100) with how far the exploration got: give more time and verify again.</source>
         <translation>Quanto può durare una verifica. Oltre questo tempo, ciò che non è ancora deciso viene segnalato come indeciso (GV100), con il punto raggiunto dall&apos;esplorazione: concedete più tempo e verificate di nuovo.</translation>
+    </message>
+    <message>
+        <source>The machine is used since verification: verify again to update the findings.</source>
+        <translation>La macchina è usata dalla verifica: verifica di nuovo per aggiornare i risultati.</translation>
+    </message>
+    <message>
+        <source>The machine is no longer used since verification: verify again to update the findings.</source>
+        <translation>La macchina non è più usata dalla verifica: verifica di nuovo per aggiornare i risultati.</translation>
+    </message>
+    <message>
+        <source>With the machine</source>
+        <translation>Con la macchina</translation>
+    </message>
+    <message>
+        <source>With the machine: the sensors the model&apos;s machine drives follow it, scan by scan, instead of taking any value (Simulation &gt; Verify with the Machine).</source>
+        <translation>Con la macchina: i sensori che la macchina del modello pilota la seguono, ciclo dopo ciclo, invece di prendere qualsiasi valore (Simulazione &gt; Verifica con la macchina).</translation>
     </message>
 </context>
 <context>
