@@ -13,6 +13,7 @@
 #include "core/codegen/plcproject.h"
 #include "core/model/model.h"
 
+#include <QImage>
 #include <QPainter>
 
 #include <algorithm>
@@ -198,7 +199,9 @@ void GemmaSpecificationPages::planMachine()
     planMachineDrawing();
 }
 
-// The Machine tab's schematic at rest, as wide as the page, at most half its height.
+// The Machine tab's schematic at rest, as wide as the page, at most half its
+// height. Drawn as a picture: the tab elides a label to its cell, while the
+// PDF's text is never cut short (the table above names everything in full).
 void GemmaSpecificationPages::planMachineDrawing()
 {
     Flow& flow = *m_flow;
@@ -207,10 +210,17 @@ void GemmaSpecificationPages::planMachineDrawing()
         return;
     const double scale = std::min(m_width / source.width(), flow.body().height() / 2 / source.height());
     const QSizeF size = source.size() * scale;
+    constexpr double kPixelsPerPoint = 3; // 216 dpi
+    QImage picture((size * (kPixelsPerPoint / m_style.pt(1))).toSize(), QImage::Format_ARGB32_Premultiplied);
+    picture.fill(Qt::white);
+    {
+        QPainter painter(&picture);
+        painter.setRenderHint(QPainter::Antialiasing);
+        m_machineScene->render(&painter, QRectF(QPointF(), picture.size()), source);
+    }
     addHeading(flow, m_style, TextStyle::Subheading, tr("The machine at rest"), size.height());
-    MachineScene* scene = m_machineScene;
-    flow.place(size.height(), [scene, source, size](QPainter& painter, const QPointF& at) {
-        scene->render(&painter, QRectF(at, size), source);
+    flow.place(size.height(), [picture, size](QPainter& painter, const QPointF& at) {
+        painter.drawImage(QRectF(at, size), picture);
     });
 }
 
