@@ -583,8 +583,9 @@ void MainWindow::createActions()
     connect(m_withMachineAction, &QAction::toggled, this,
             [this](bool withMachine) { m_verification->setWithMachine(withMachine); });
     auto offerMachine = [this] {
-        const core::Model& model = m_document->model();
-        m_withMachineAction->setEnabled(!model.machine().empty() && model.templateKind() == core::TemplateKind::Gemma);
+        core::VerificationOptions withMachine;
+        withMachine.closedLoop = true;
+        m_withMachineAction->setEnabled(core::runsClosedLoop(m_document->model(), withMachine));
     };
     connect(m_document, &Document::machineChanged, this, offerMachine);
     connect(m_document, &Document::modelReplaced, this, offerMachine);

@@ -221,8 +221,9 @@ void VerificationRunner::setWithMachine(bool withMachine)
 
 bool VerificationRunner::nextRunClosedLoop() const
 {
-    const core::Model& model = m_document->model();
-    return m_withMachine && !model.machine().empty() && model.templateKind() == core::TemplateKind::Gemma;
+    core::VerificationOptions options;
+    options.closedLoop = m_withMachine;
+    return core::runsClosedLoop(m_document->model(), options);
 }
 
 // Called for every input the user plays: only a change of the assumptions
