@@ -18,7 +18,9 @@ ScenarioError errorAt(const Scenario& scenario, const ScenarioAction& action, Sc
     return error;
 }
 
-ScenarioError::Kind errorKind(FaultRefusal::Kind kind)
+} // namespace
+
+ScenarioError::Kind scenarioErrorKind(FaultRefusal::Kind kind)
 {
     using Kind = ScenarioError::Kind;
     switch (kind) {
@@ -32,8 +34,6 @@ ScenarioError::Kind errorKind(FaultRefusal::Kind kind)
     return Kind::FaultUnknownTarget;
 }
 
-} // namespace
-
 std::vector<ScenarioError> validateClosedLoopScenario(const Scenario& scenario, const MachineLoop& loop)
 {
     std::vector<ScenarioError> errors;
@@ -41,7 +41,7 @@ std::vector<ScenarioError> validateClosedLoopScenario(const Scenario& scenario, 
     for (const ScenarioAction& action : scenario.actions) {
         if (const std::optional<Fault> fault = scenarioFault(action)) {
             if (const std::optional<FaultRefusal> refusal = loop.checkFault(*fault))
-                errors.push_back(errorAt(scenario, action, errorKind(refusal->kind), refusal->subject, refusal->detail));
+                errors.push_back(errorAt(scenario, action, scenarioErrorKind(refusal->kind), refusal->subject, refusal->detail));
             continue;
         }
         if (action.kind != ScenarioAction::Kind::SetVariable)

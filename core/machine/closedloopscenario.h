@@ -16,6 +16,10 @@
 
 namespace core::machine {
 
+// The scenario error a fault refusal is on a `fault` line (the editor words
+// a refused fault as the scenario's message would).
+ScenarioError::Kind scenarioErrorKind(FaultRefusal::Kind kind);
+
 std::vector<ScenarioError> validateClosedLoopScenario(const Scenario& scenario, const MachineLoop& loop);
 
 } // namespace core::machine

@@ -59,9 +59,10 @@ void MachineLoop::run(std::int64_t scans)
     }
 }
 
-void MachineLoop::restoreState(const MachineState& state)
+void MachineLoop::restore(const Snapshot& snapshot)
 {
-    m_state = state;
+    m_state = snapshot.machine;
+    m_sensorFaults = snapshot.sensorFaults;
     m_sensorChanges.clear();
 }
 
@@ -230,6 +231,13 @@ SensorFault MachineLoop::sensorFault(std::string_view variable) const
 {
     const int slot = sensorSlot(variable);
     return slot < 0 ? SensorFault::None : m_sensorFaults[static_cast<std::size_t>(slot)];
+}
+
+SensorFault MachineLoop::sensorFault(const Snapshot& snapshot, std::string_view variable) const
+{
+    const int slot = sensorSlot(variable);
+    const bool known = slot >= 0 && static_cast<std::size_t>(slot) < snapshot.sensorFaults.size();
+    return known ? snapshot.sensorFaults[static_cast<std::size_t>(slot)] : SensorFault::None;
 }
 
 } // namespace core::machine

@@ -64,10 +64,21 @@ public:
     Simulator& simulator() { return m_simulator; }
     const Simulator& simulator() const { return m_simulator; }
     const MachineState& state() const { return m_state; }
-    // Puts the machine back as it was in `state`, a copy of state() taken
-    // from this loop (the editor's history: the simulator is restored beside
-    // it, so the inputs already hold the sensors that state wrote).
-    void restoreState(const MachineState& state);
+
+    // What the loop carries from one scan to the next besides the
+    // simulator: the machine (jams included) and the sensor faults in
+    // effect. The editor's history keeps one per scan.
+    struct Snapshot {
+        MachineState machine;
+        std::vector<SensorFault> sensorFaults; // by signal slot
+    };
+    Snapshot snapshot() const { return {m_state, m_sensorFaults}; }
+    // Puts the loop back as it was when `snapshot` was taken from it (the
+    // simulator is restored beside it, so the inputs already hold the
+    // readings of then).
+    void restore(const Snapshot& snapshot);
+    // The fault a sensor was under when `snapshot` was taken; None when sound or no sensor.
+    SensorFault sensorFault(const Snapshot& snapshot, std::string_view variable) const;
 
 private:
     void writeInputs(bool operatorsToo);

@@ -1,12 +1,17 @@
 #include "editor/machine/machinecomponentitem.h"
 
+#include "editor/chart/chartstyle.h"
 #include "editor/machine/machinelayout.h"
 #include "editor/machine/machinescene.h"
 #include "editor/machine/machinetext.h"
+#include "editor/simulation/faultmenu.h"
+#include "editor/simulation/simulationsession.h"
 
 #include "core/machine/machine.h"
 
 #include <QFontMetricsF>
+#include <QGraphicsSceneContextMenuEvent>
+#include <QMenu>
 #include <QPainter>
 #include <QPalette>
 
@@ -54,8 +59,11 @@ std::vector<std::int64_t> MachineComponentItem::look() const
 {
     std::vector<std::int64_t> now;
     const std::size_t roles = core::machine::kindSpec(componentDescription().kind).roles.size();
-    for (std::size_t role = 0; role < roles; ++role)
+    for (std::size_t role = 0; role < roles; ++role) {
         now.push_back(signal(role) ? 1 : 0);
+        now.push_back(static_cast<std::int64_t>(m_scene.sensorFault(m_component, role)));
+    }
+    now.push_back(m_scene.jammed(m_component) ? 1 : 0);
     appendLook(now);
     return now;
 }
@@ -94,6 +102,38 @@ void MachineComponentItem::paintLamp(QPainter& painter, const QPointF& centre, d
     painter.drawEllipse(centre, radius, radius);
 }
 
+void MachineComponentItem::strikeLamp(QPainter& painter, const QPointF& centre, double radius)
+{
+    painter.setPen(QPen(chartstyle::problemColor(), 2));
+    const QPointF corner(radius + 2, radius + 2);
+    painter.drawLine(centre - QPointF(corner.x(), -corner.y()), centre + QPointF(corner.x(), -corner.y()));
+}
+
+void MachineComponentItem::contextMenuEvent(QGraphicsSceneContextMenuEvent* event)
+{
+    SimulationSession* session = m_scene.session();
+    if (!m_scene.showsSimulation() || !session || !session->hasMachine()) {
+        event->ignore();
+        return;
+    }
+    const core::machine::Component& description = componentDescription();
+    const core::machine::ComponentKindSpec& spec = core::machine::kindSpec(description.kind);
+    QWidget* parent = event->widget();
+    QMenu menu(parent);
+    for (std::size_t role = 0; role < spec.roles.size() && role < description.wires.size(); ++role) {
+        if (spec.roles[role].direction == core::machine::SignalDirection::Sensor && !description.wires[role].empty())
+            addSensorFaultActions(menu, *session, QString::fromStdString(description.wires[role]), parent);
+    }
+    if (core::machine::canJam(description.kind))
+        addJamActions(menu, *session, QString::fromStdString(description.name), m_scene.jammed(m_component), parent);
+    if (menu.isEmpty()) {
+        event->ignore();
+        return;
+    }
+    menu.exec(event->screenPos());
+    event->accept();
+}
+
 void MachineComponentItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
     m_look = look();
@@ -117,10 +157,13 @@ void MachineComponentItem::paint(QPainter* painter, const QStyleOptionGraphicsIt
     QFont plain = bold;
     plain.setBold(false);
     painter->setFont(plain);
-    painter->setPen(palette.color(QPalette::PlaceholderText));
+    const bool isJammed = m_scene.jammed(m_component);
+    painter->setPen(isJammed ? chartstyle::problemColor() : palette.color(QPalette::PlaceholderText));
+    //: %1: the kind of a machine component ("Double-acting cylinder"), which a fault has stopped
+    const QString kind = isJammed ? tr("%1, jammed").arg(machinetext::kindName(description.kind))
+                                  : machinetext::kindName(description.kind);
     painter->drawText(header.adjusted(0, header.height() / 2, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
-                      QFontMetricsF(plain).elidedText(machinetext::kindName(description.kind), Qt::ElideRight,
-                                                      header.width()));
+                      QFontMetricsF(plain).elidedText(kind, Qt::ElideRight, header.width()));
 
     painter->save();
     paintBody(*painter, bodyRect(), ink);
@@ -138,12 +181,21 @@ void MachineComponentItem::paintRoles(QPainter& painter, const QColor& ink) cons
     for (int role = 0; role < lines.size(); ++role) {
         const QRectF line(body.left(), top, body.width(), machinelayout::kRoleLineHeight);
         const double radius = 4.5;
-        paintLamp(painter, QPointF(line.left() + radius + 1, line.center().y()), radius,
-                  signal(static_cast<std::size_t>(role)));
+        const QPointF lamp(line.left() + radius + 1, line.center().y());
+        paintLamp(painter, lamp, radius, signal(static_cast<std::size_t>(role)));
         const QRectF text = line.adjusted(2 * radius + 6, 0, 0, 0);
-        painter.setPen(ink);
+        const QString fault = sensorFaultShortText(m_scene.sensorFault(m_component, static_cast<std::size_t>(role)));
+        QString shown = lines[role];
+        if (!fault.isEmpty()) {
+            strikeLamp(painter, lamp, radius);
+            // The variable and its fault: the role is in the tooltip, the line is narrow.
+            const std::string& wire = componentDescription().wires[static_cast<std::size_t>(role)];
+            //: %1: a sensor variable ("Clamped"); %2: its fault ("stuck FALSE")
+            shown = tr("%1: %2").arg(QString::fromStdString(wire), fault);
+        }
+        painter.setPen(fault.isEmpty() ? ink : chartstyle::problemColor());
         painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter,
-                         metrics.elidedText(lines[role], Qt::ElideRight, text.width()));
+                         metrics.elidedText(shown, Qt::ElideRight, text.width()));
         top += machinelayout::kRoleLineHeight;
     }
 }

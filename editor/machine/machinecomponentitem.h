@@ -54,6 +54,11 @@ public:
     static QColor unlitColour();
 
 protected:
+    // Right-click: the faults of the component's sensors, and a jam for a
+    // cylinder or a conveyor (docs/simulation.md, "Faults").
+    void contextMenuEvent(QGraphicsSceneContextMenuEvent* event) override;
+
+protected:
     const core::machine::Component& componentDescription() const;
     MachineScene& machineScene() const { return m_scene; }
     bool signal(std::size_t role) const;
@@ -64,6 +69,8 @@ protected:
     virtual void appendLook(std::vector<std::int64_t>& look) const;
 
     static void paintLamp(QPainter& painter, const QPointF& centre, double radius, bool lit);
+    // A faulted sensor's lamp: struck through in the problem colour.
+    static void strikeLamp(QPainter& painter, const QPointF& centre, double radius);
 
 private:
     void paintRoles(QPainter& painter, const QColor& ink) const;

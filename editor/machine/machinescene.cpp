@@ -140,6 +140,18 @@ bool MachineScene::signal(std::size_t component, std::size_t role) const
     return index >= 0 && core::cond::isTrue(m_session->simulator()->variableValue(static_cast<std::size_t>(index)));
 }
 
+core::machine::SensorFault MachineScene::sensorFault(std::size_t component, std::size_t role) const
+{
+    if (!showsSimulation())
+        return core::machine::SensorFault::None;
+    return m_session->sensorFault(liveIndex(component, role));
+}
+
+bool MachineScene::jammed(std::size_t component) const
+{
+    return showsSimulation() && state().jammed(component);
+}
+
 MachineComponentItem* MachineScene::componentItem(const QString& name) const
 {
     for (std::size_t c = 0; c < m_machine.components.size(); ++c) {

@@ -9,6 +9,7 @@
 // changed to repaint; the items are rebuilt only when the description
 // changes (docs/simulation.md, "The virtual machine").
 
+#include "core/machine/fault.h"
 #include "core/machine/machine.h"
 #include "core/machine/machinestate.h"
 
@@ -38,6 +39,11 @@ public:
     bool showsSimulation() const;
     // The value shown for a component's role; FALSE when unwired.
     bool signal(std::size_t component, std::size_t role) const;
+    // The fault of a component's sensor role at the scan shown; None at rest.
+    core::machine::SensorFault sensorFault(std::size_t component, std::size_t role) const;
+    // Whether the component is jammed at the scan shown.
+    bool jammed(std::size_t component) const;
+    SimulationSession* session() const { return m_session; }
 
     std::size_t componentCount() const { return m_items.size(); }
     MachineComponentItem* componentItem(std::size_t component) const { return m_items[component]; }

@@ -2,6 +2,7 @@
 
 #include "editor/chart/chartstyle.h"
 #include "editor/document.h"
+#include "editor/simulation/faultmenu.h"
 #include "editor/simulation/lampindicator.h"
 #include "editor/simulation/simulationsession.h"
 #include "editor/simulation/simulationtext.h"
@@ -25,6 +26,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QMenu>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
@@ -679,10 +681,46 @@ void SimulationDock::addValueRow(int index, int row)
         layout->addWidget(output.lamp);
     }
     layout->addWidget(output.shown);
+    output.label = label;
+    // A machine's sensor takes faults from its context menu (docs/simulation.md, "Faults").
+    if (!owner.isEmpty()) {
+        output.fault = new QLabel(cell);
+        output.fault->setObjectName(QStringLiteral("fault_") + output.name);
+        output.fault->setStyleSheet(QStringLiteral("QLabel { color: %1; }").arg(chartstyle::problemColor().name()));
+        output.fault->hide();
+        layout->addWidget(output.fault);
+        const QString tip = toolTip + QLatin1Char('\n') + tr("Right-click to inject a fault");
+        for (QWidget* widget : {static_cast<QWidget*>(label), cell}) {
+            widget->setToolTip(tip);
+            widget->setContextMenuPolicy(Qt::CustomContextMenu);
+            connect(widget, &QWidget::customContextMenuRequested, this,
+                    [this, name = output.name, widget](const QPoint& at) { showSensorFaultMenu(name, widget, at); });
+        }
+    }
     layout->addStretch();
     m_inputsLayout->addWidget(label, row, 0);
     m_inputsLayout->addWidget(cell, row, 1);
     m_inputRows << output;
+}
+
+void SimulationDock::showSensorFaultMenu(const QString& sensor, QWidget* over, const QPoint& at)
+{
+    QMenu menu(this);
+    addSensorFaultActions(menu, *m_session, sensor, this);
+    menu.exec(over->mapToGlobal(at));
+}
+
+// A faulted sensor's name is struck through, its fault written beside its value.
+void SimulationDock::syncSensorFault(const InputRow& row)
+{
+    const QString fault = sensorFaultText(m_session->sensorFault(row.variable));
+    if (row.fault->text() == fault)
+        return;
+    row.fault->setText(fault);
+    row.fault->setVisible(!fault.isEmpty());
+    QFont font = row.label->font();
+    font.setStrikeOut(!fault.isEmpty());
+    row.label->setFont(font);
 }
 
 void SimulationDock::addNumberRow(int index, int row)
@@ -976,6 +1014,8 @@ void SimulationDock::syncOutputs()
         const QString text = isBool ? boolText(boolOf(value)) : QString::fromStdString(core::cond::formatValue(value));
         if (row.lamp)
             row.lamp->setOn(boolOf(value));
+        if (row.fault)
+            syncSensorFault(row);
         if (row.shown->text() == text)
             continue; // a style sheet costs a restyle: only when the value changes
         row.shown->setText(text);

@@ -96,6 +96,8 @@ private:
         QWidget* editor = nullptr;
         QLabel* shown = nullptr; // an output or internal variable: its value, read only
         LampIndicator* lamp = nullptr; // beside `shown` for a BOOL
+        QLabel* label = nullptr;       // the variable's name
+        QLabel* fault = nullptr;       // a machine sensor: its fault, hidden while sound
     };
     struct CompleteRow {
         QString stepId;
@@ -117,6 +119,8 @@ private:
     void addNumberRow(int index, int row);
     // An output or internal variable: the program writes it, the user watches it.
     void addValueRow(int index, int row);
+    void showSensorFaultMenu(const QString& sensor, QWidget* over, const QPoint& at);
+    void syncSensorFault(const InputRow& row);
     void addCompleteRow(const QString& stepId, int row);
 
     void onActiveChanged(bool active);

@@ -139,6 +139,7 @@ void SimulationSession::clearSession()
     m_trace.clear();
     m_lastFired.clear();
     m_pendingReleases.clear();
+    m_pendingFaults.clear();
     m_pressedAt.assign(m_simulator->variableNames().size(), -1);
     m_changes.clear();
     m_recorded.clear();
@@ -226,7 +227,9 @@ void SimulationSession::afterScan(core::ScanRecord&& record)
     changes.inputs = record.changedInputs;
     dropMachineInputs(changes.inputs);
     recordCompleteSettings(changes);
-    if (!changes.inputs.empty() || !changes.completes.empty())
+    changes.faults = std::move(m_pendingFaults);
+    m_pendingFaults.clear();
+    if (!changes.inputs.empty() || !changes.completes.empty() || !changes.faults.empty())
         m_changes.push_back(std::move(changes));
 
     if (!record.fired.empty())
@@ -246,9 +249,9 @@ void SimulationSession::afterScan(core::ScanRecord&& record)
 // scan leaves it, so continuing from it plays exactly as continuing then.
 void SimulationSession::keepSnapshot()
 {
-    std::optional<core::machine::MachineState> machine;
+    std::optional<core::machine::MachineLoop::Snapshot> machine;
     if (m_loop)
-        machine = m_loop->state();
+        machine = m_loop->snapshot();
     m_history.push_back({*m_simulator, m_lastFired, std::move(machine)});
     // The oldest entry is the scan the first step back of the kept ones lands on.
     if (m_history.size() > static_cast<std::size_t>(kHistoryCapacity) + 1)
@@ -329,13 +332,14 @@ void SimulationSession::continueFromViewedScan(Continuation how)
     // Assigned, not replaced: the replay's runner refers to this simulator.
     *m_simulator = m_history.back().simulator;
     if (m_loop && m_history.back().machine)
-        m_loop->restoreState(*m_history.back().machine);
+        m_loop->restore(*m_history.back().machine);
     m_lastFired = m_history.back().lastFired;
     const std::int64_t scan = m_simulator->scanCount();
     while (!m_trace.empty() && m_trace.back().scan > scan)
         m_trace.pop_back();
     dropRecordingAfter(scan);
     m_pendingReleases.clear();
+    m_pendingFaults.clear();
     std::fill(m_pressedAt.begin(), m_pressedAt.end(), -1);
     if (m_scenario && how == Continuation::Edit) {
         stopReplay();
@@ -524,12 +528,22 @@ bool SimulationSession::startReplayText(std::string_view text, const QString& fi
     core::ScenarioParseResult parsed = core::parseScenario(text, fileName.toStdString());
     std::vector<core::ScenarioError> errors = parsed.errors;
     if (parsed.ok())
-        errors = core::validateScenario(parsed.scenario, *m_simulator);
+        errors = core::validateScenario(parsed.scenario, *m_simulator,
+                                        m_loop ? core::FaultLines::CheckedByMachine : core::FaultLines::Refused);
     // A scenario that plays the machine's sensors itself (an open-loop
     // scenario, a verification counterexample) replays in open loop: the
-    // machine stands still, as `ggstudio-cli simulate --open-loop` plays it.
-    const bool openLoop =
-        parsed.ok() && errors.empty() && m_loop && !core::machine::validateClosedLoopScenario(parsed.scenario, *m_loop).empty();
+    // machine stands still, as `ggstudio-cli simulate --open-loop` plays it;
+    // its fault lines, which need the machine, are refused then.
+    bool openLoop = false;
+    if (parsed.ok() && errors.empty() && m_loop) {
+        const std::vector<core::ScenarioError> closedLoop =
+            core::machine::validateClosedLoopScenario(parsed.scenario, *m_loop);
+        const bool onlySetsSensors = std::all_of(closedLoop.begin(), closedLoop.end(), [](const core::ScenarioError& e) {
+            return e.kind == core::ScenarioError::Kind::MachineSensor;
+        });
+        openLoop = !closedLoop.empty() && onlySetsSensors;
+        errors = openLoop ? core::validateScenario(parsed.scenario, *m_simulator) : closedLoop;
+    }
     if (!errors.empty()) {
         if (error)
             *error = scenarioErrorListText(errors);
@@ -593,7 +607,7 @@ const core::machine::MachineState* SimulationSession::machineState() const
     if (!m_loop)
         return nullptr;
     if (m_viewed)
-        return m_history[*m_viewed].machine ? &*m_history[*m_viewed].machine : nullptr;
+        return m_history[*m_viewed].machine ? &m_history[*m_viewed].machine->machine : nullptr;
     return &m_loop->state();
 }
 

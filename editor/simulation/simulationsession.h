@@ -54,8 +54,8 @@ class Document;
 // "The virtual machine"): through core::machine::MachineLoop, each scan is
 // followed by one machine cycle whose sensors the next scan reads. The
 // inputs the machine writes are not the user's (setVariable refuses them);
-// the history keeps the machine's state beside each simulator copy, and a
-// reset or a replay resets both.
+// the history keeps the machine's state and faults beside each simulator
+// copy, and a reset or a replay resets both.
 class SimulationSession : public QObject {
     Q_OBJECT
 
@@ -100,6 +100,18 @@ public:
     bool isMachineDriven(int index) const;
     // The component whose sensor the input is; empty when none.
     QString machineOwner(int index) const;
+
+    // Faults of the machine (docs/simulation.md, "Faults"), injected by the
+    // user in closed loop before the next scan, as a scenario's `fault` line
+    // is: a sensor's new reading shows at once, a jam holds from the next
+    // machine cycle. Each goes into the recording, so a saved scenario
+    // replays it. False with the reason when the fault does not apply to
+    // the machine, or while a replay plays the inputs. Played from a past
+    // scan, the later history is dropped first, like an input changed there.
+    bool canInjectFault() const;
+    bool injectFault(const core::machine::Fault& fault, QString* error = nullptr);
+    // The fault of the input (Simulator::variableNames() index) at the scan shown.
+    core::machine::SensorFault sensorFault(int index) const;
 
     bool isRunning() const;
     void run();
@@ -228,6 +240,7 @@ private:
     std::vector<std::string> m_tokenTransitions;
     std::vector<int> m_pendingReleases;
     std::vector<std::int64_t> m_pressedAt; // scan count at press(), by variable index; -1 when not pressed
+    std::vector<core::machine::Fault> m_pendingFaults; // injected since the last scan, for the recording
 
     // Recording since reset.
     std::vector<core::RecordedScan> m_changes;
@@ -239,7 +252,7 @@ private:
     struct Snapshot {
         core::Simulator simulator;
         QString lastFired; // since reset, up to this scan
-        std::optional<core::machine::MachineState> machine; // closed loop only
+        std::optional<core::machine::MachineLoop::Snapshot> machine; // closed loop only
     };
     std::deque<Snapshot> m_history;
     std::optional<std::size_t> m_viewed; // index into m_history of a past scan shown; empty: the latest

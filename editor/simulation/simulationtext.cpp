@@ -6,6 +6,7 @@
 #include "editor/text/valueproblemtext.h"
 
 #include "core/checks/diagnostic.h"
+#include "core/machine/closedloopscenario.h"
 #include "core/simulation/scenario.h"
 
 #include <QCoreApplication>
@@ -326,6 +327,15 @@ QString scenarioErrorText(const core::ScenarioError& error)
     // The location is written as compilers write it, in every language.
     return QStringLiteral("%1:%2:%3: %4")
         .arg(file, QString::number(error.line), QString::number(error.column), scenarioErrorMessage(error));
+}
+
+QString faultRefusalText(const core::machine::FaultRefusal& refusal)
+{
+    core::ScenarioError error;
+    error.kind = core::machine::scenarioErrorKind(refusal.kind);
+    error.subject = refusal.subject;
+    error.detail = refusal.detail;
+    return scenarioErrorMessage(error);
 }
 
 QString scenarioErrorListText(const std::vector<core::ScenarioError>& errors)

@@ -28,6 +28,9 @@ QString scenarioFailureText(const core::ScenarioFailure& failure);
 // location as ScenarioError::toString() writes it, then the message.
 QString scenarioErrorText(const core::ScenarioError& error);
 
+// Why a fault does not apply to the machine, as a scenario's `fault` line would be told.
+QString faultRefusalText(const core::machine::FaultRefusal& refusal);
+
 // The first ten of a scenario file's problems, one a line, then "(3 more)".
 QString scenarioErrorListText(const std::vector<core::ScenarioError>& errors);
 

@@ -172,7 +172,7 @@ TEST_CASE("A loop restored to a past scan plays on as it did then", "[machine][m
     simulator.setVariable("StartButton", cond::Value{false});
     loop.run(1130); // the clamp is moving
     const Simulator simulatorThen = simulator;
-    const MachineState machineThen = loop.state();
+    const MachineLoop::Snapshot machineThen = loop.snapshot();
     const double clampThen = loop.state().position(0);
     REQUIRE(clampThen > 0.0);
     REQUIRE(clampThen < 1.0);
@@ -182,12 +182,40 @@ TEST_CASE("A loop restored to a past scan plays on as it did then", "[machine][m
     REQUIRE(loop.state().position(0) == 1.0);
 
     simulator = simulatorThen;
-    loop.restoreState(machineThen);
+    loop.restore(machineThen);
     CHECK(loop.state().position(0) == clampThen);
     loop.run(100);
     CHECK(simulator.activeStepId() == stepLater);
     CHECK(loop.state().position(1) == drillLater);
     CHECK(loop.state().position(0) == 1.0);
+}
+
+TEST_CASE("A loop restored to a past scan takes back the faults of then", "[machine][machine-loop][fault]")
+{
+    const auto model = drillingCell();
+    Simulator simulator(*model);
+    MachineLoop loop(simulator, model->machine());
+    loop.run(3);
+    const Simulator simulatorThen = simulator;
+    const MachineLoop::Snapshot sound = loop.snapshot();
+    REQUIRE(loop.applyFault({FaultKind::StuckTrue, "Clamped"}));
+    REQUIRE(loop.applyFault({FaultKind::Jam, "Clamp"}));
+    loop.run(2);
+    const MachineLoop::Snapshot faulted = loop.snapshot();
+    CHECK(loop.sensorFault(faulted, "clamped") == SensorFault::StuckTrue);
+    CHECK(loop.sensorFault(sound, "Clamped") == SensorFault::None);
+    CHECK(simulator.variable("Clamped") == cond::Value{true});
+
+    simulator = simulatorThen;
+    loop.restore(sound);
+    CHECK(loop.sensorFault("Clamped") == SensorFault::None);
+    CHECK_FALSE(loop.state().jammed(0));
+    loop.run(2);
+    CHECK(simulator.variable("Clamped") == cond::Value{false});
+
+    loop.restore(faulted);
+    CHECK(loop.sensorFault("Clamped") == SensorFault::StuckTrue);
+    CHECK(loop.state().jammed(0));
 }
 
 } // namespace test_machineloop

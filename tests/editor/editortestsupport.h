@@ -8,12 +8,14 @@
 #include "editor/window/newmodeldialog.h"
 
 #include <QAbstractButton>
+#include <QAction>
 #include <QApplication>
 #include <QCoreApplication>
 #include <QTimer>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
 #include <QLatin1String>
+#include <QMenu>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QString>
@@ -97,6 +99,30 @@ inline void answerNewModel(const char* choice)
         }
     };
     QTimer::singleShot(0, Poll{choice});
+}
+
+// Triggers, in the next popup menu to open, the enabled action whose text
+// without its mnemonic is `text` and that follows the section titled
+// `section` (any section when empty), then closes the menu; `found` says
+// whether it was there. Call it just before what opens the menu.
+inline void triggerInNextMenu(const QString& section, const QString& text, bool* found)
+{
+    *found = false;
+    QTimer::singleShot(0, [section, text, found] {
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        if (!menu)
+            return;
+        bool inSection = section.isEmpty();
+        for (QAction* action : menu->actions()) {
+            if (action->isSeparator() && !action->text().isEmpty())
+                inSection = section.isEmpty() || action->text() == section;
+            else if (inSection && !*found && action->isEnabled() && action->text().remove(QLatin1Char('&')) == text) {
+                *found = true;
+                action->trigger();
+            }
+        }
+        menu->close();
+    });
 }
 
 } // namespace editortest

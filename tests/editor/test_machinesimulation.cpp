@@ -69,6 +69,12 @@ private slots:
     void openLoopScenarioReplaysWithTheMachineStill();
     void modelWithoutMachineStaysOpenLoop();
     void changingTheMachineEndsTheSimulation();
+    void sensorFaultFromTheDockMenu();
+    void injectedFaultsAreRecordedAndReplayed();
+    void historyRestoresTheFaultsOfThen();
+    void jamStopsTheComponentUntilCleared();
+    void noFaultWhileReplaying();
+    void shippedFaultScenarioReplays();
 
 private:
     void startOnDrillingCell();
@@ -329,6 +335,147 @@ void TestMachineSimulation::changingTheMachineEndsTheSimulation()
     // As an undo command would, outside the simulation's read-only lock.
     QVERIFY(m_window->document()->modelForCommands().setMachine(machine).ok);
     QVERIFY(!m_session->isActive());
+}
+
+// Right-click a sensor in the Simulation dock: stuck at FALSE, shown struck
+// through, and the program reads FALSE whatever the machine does.
+void TestMachineSimulation::sensorFaultFromTheDockMenu()
+{
+    startOnDrillingCell();
+    auto* label = m_dock->findChild<QLabel*>(QStringLiteral("fault_Unclamped"));
+    QVERIFY(label);
+    QVERIFY(label->isHidden());
+    QVERIFY(boolValue(*m_session->simulator(), "Unclamped"));
+    QWidget* cell = label->parentWidget();
+    QCOMPARE(cell->contextMenuPolicy(), Qt::CustomContextMenu);
+    bool found = false;
+    editortest::triggerInNextMenu({}, QStringLiteral("Stuck at FALSE"), &found);
+    emit cell->customContextMenuRequested(QPoint(2, 2));
+    QVERIFY(found);
+    QCOMPARE(m_session->sensorFault(index("Unclamped")), core::machine::SensorFault::StuckFalse);
+    // The reading shows before the next scan, as a scenario's fault line does.
+    QVERIFY(!boolValue(*m_session->simulator(), "Unclamped"));
+    QVERIFY(!label->isHidden());
+    QCOMPARE(label->text(), QStringLiteral("stuck at FALSE"));
+    m_session->advance(5);
+    QVERIFY(!boolValue(*m_session->simulator(), "Unclamped"));
+
+    editortest::triggerInNextMenu({}, QStringLiteral("Clear Fault"), &found);
+    emit cell->customContextMenuRequested(QPoint(2, 2));
+    QVERIFY(found);
+    QVERIFY(boolValue(*m_session->simulator(), "Unclamped"));
+    QVERIFY(label->isHidden());
+    // An operator input has no fault menu: the user drives it.
+    QVERIFY(!m_dock->findChild<QLabel*>(QStringLiteral("fault_StartButton")));
+}
+
+// A fault injected by hand is a line of the recording, and the recording
+// replays it: the watchdog-less drilling cell waits forever for Clamped.
+void TestMachineSimulation::injectedFaultsAreRecordedAndReplayed()
+{
+    startOnDrillingCell();
+    pressStart();
+    m_session->advance(50);
+    QVERIFY(m_session->injectFault({core::machine::FaultKind::StuckFalse, "Clamped"}));
+    m_session->advance(1200);
+    const std::string stepThen = m_session->simulator()->activeStepId();
+    QVERIFY(!boolValue(*m_session->simulator(), "Clamped"));
+    QVERIFY(boolValue(*m_session->simulator(), "ClampOut")); // still waiting for the clamp
+    const QString text = QString::fromStdString(m_session->recordingText());
+    QVERIFY2(text.contains(QStringLiteral("at 53: fault Clamped stuck FALSE")), qPrintable(text));
+
+    QString error;
+    QVERIFY2(m_session->startReplayText(text.toStdString(), QStringLiteral("recorded.scenario"), &error),
+             qPrintable(error));
+    QVERIFY(!m_session->replayIsOpenLoop());
+    m_session->advance(m_session->replayLength());
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QVERIFY(m_session->replayFailures().empty());
+    QCOMPARE(m_session->simulator()->activeStepId(), stepThen);
+    QCOMPARE(m_session->sensorFault(index("Clamped")), core::machine::SensorFault::StuckFalse);
+}
+
+// Stepping back before a fault shows the sensor sound again; playing on
+// from there plays without it.
+void TestMachineSimulation::historyRestoresTheFaultsOfThen()
+{
+    startOnDrillingCell();
+    m_session->advance(5);
+    QVERIFY(m_session->injectFault({core::machine::FaultKind::StuckTrue, "DrillLow"}));
+    m_session->advance(5);
+    QVERIFY(boolValue(*m_session->simulator(), "DrillLow"));
+    m_session->showScan(3);
+    QCOMPARE(m_session->sensorFault(index("DrillLow")), core::machine::SensorFault::None);
+    QVERIFY(!boolValue(*m_session->simulator(), "DrillLow"));
+    QVERIFY(m_dock->findChild<QLabel*>(QStringLiteral("fault_DrillLow"))->isHidden());
+    m_session->showScan(8);
+    QCOMPARE(m_session->sensorFault(index("DrillLow")), core::machine::SensorFault::StuckTrue);
+    QVERIFY(!m_dock->findChild<QLabel*>(QStringLiteral("fault_DrillLow"))->isHidden());
+
+    m_session->showScan(3);
+    m_session->advance(2);
+    QVERIFY(!m_session->isViewingHistory());
+    QCOMPARE(m_session->latestScan(), std::int64_t{5});
+    QCOMPARE(m_session->sensorFault(index("DrillLow")), core::machine::SensorFault::None);
+    QVERIFY(!boolValue(*m_session->simulator(), "DrillLow"));
+    const QString text = QString::fromStdString(m_session->recordingText());
+    QVERIFY2(!text.contains(QStringLiteral("fault")), qPrintable(text));
+}
+
+// A jammed clamp stays open while the program drives it; cleared, it closes.
+void TestMachineSimulation::jamStopsTheComponentUntilCleared()
+{
+    startOnDrillingCell();
+    QVERIFY(m_session->injectFault({core::machine::FaultKind::Jam, "Clamp"}));
+    pressStart();
+    m_session->advance(1124 - 2 + 40); // the part arrived and ClampOut has been on for 40 scans
+    QVERIFY(boolValue(*m_session->simulator(), "ClampOut"));
+    QCOMPARE(m_session->machineState()->position(kClamp), 0.0);
+    QVERIFY(m_session->machineState()->jammed(kClamp));
+    QVERIFY(m_session->injectFault({core::machine::FaultKind::Clear, "Clamp"}));
+    m_session->advance(40);
+    QVERIFY(boolValue(*m_session->simulator(), "Clamped"));
+    // A lamp cannot jam: told why, nothing changed.
+    QString error;
+    QVERIFY(!m_session->injectFault({core::machine::FaultKind::Jam, "Ready"}, &error));
+    QVERIFY2(error.contains(QStringLiteral("only cylinders and conveyors jam")), qPrintable(error));
+}
+
+void TestMachineSimulation::noFaultWhileReplaying()
+{
+    startOnDrillingCell();
+    QString error;
+    QVERIFY2(m_session->startReplay(QStringLiteral(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-start.scenario"), &error),
+             qPrintable(error));
+    QVERIFY(!m_session->canInjectFault());
+    QVERIFY(!m_session->injectFault({core::machine::FaultKind::StuckTrue, "Clamped"}, &error));
+    QVERIFY2(error.contains(QStringLiteral("replay")), qPrintable(error));
+    QCOMPARE(m_session->sensorFault(index("Clamped")), core::machine::SensorFault::None);
+}
+
+// The watchdog example's scenario, with its fault line, replays in the
+// editor as on the command line: every expectation met.
+void TestMachineSimulation::shippedFaultScenarioReplays()
+{
+    QString error;
+    QVERIFY2(m_window->document()->load(
+                 QStringLiteral(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-watchdog.ggstudio.json"), &error),
+             qPrintable(error));
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(m_session->isActive());
+    QVERIFY2(m_session->startReplay(QStringLiteral(GGSTUDIO_EXAMPLES_DIR "/drilling-cell-clamp-fault.scenario"), &error),
+             qPrintable(error));
+    QVERIFY(!m_session->replayIsOpenLoop());
+    QVERIFY(m_session->replayExpectationCount() > 5);
+    m_session->advance(m_session->replayLength());
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QVERIFY(m_session->replayFailures().empty());
+
+    // The same fault line in an open-loop scenario (one that sets a sensor) is refused, located.
+    const std::string openLoop = "at 1: set Clamped = TRUE\nat 2: fault Unclamped stuck FALSE\n";
+    QVERIFY(!m_session->startReplayText(openLoop, QStringLiteral("open.scenario"), &error));
+    QVERIFY2(error.contains(QStringLiteral("open.scenario:2:")) && error.contains(QStringLiteral("virtual machine")),
+             qPrintable(error));
 }
 
 QTEST_MAIN(TestMachineSimulation)

@@ -23,6 +23,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QContextMenuEvent>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QPainter>
@@ -56,6 +57,7 @@ private slots:
     void followsAReplay();
     void operatorInputsAreClickable();
     void frameWhileSimulatingIsCheap();
+    void faultsFromTheSchematic();
 
 private:
     void loadDrillingCell();
@@ -363,6 +365,61 @@ void TestMachineView::frameWhileSimulatingIsCheap()
     qInfo("Machine tab frame at 1,000 scans/s: median %.2f ms, worst %.2f ms", static_cast<double>(median) / 1e6,
           static_cast<double>(frames.back()) / 1e6);
     QVERIFY2(median < 16'000'000, qPrintable(QString::number(static_cast<double>(median) / 1e6)));
+}
+
+// Right-click a cylinder: its sensors' faults and a jam. A faulted sensor's
+// lamp is struck through in red; the items repaint for a fault alone.
+void TestMachineView::faultsFromTheSchematic()
+{
+    loadDrillingCell();
+    m_window->centralTabs()->setCurrentWidget(view());
+    startSimulation();
+    MachineComponentItem* clamp = scene()->componentItem(QStringLiteral("Clamp"));
+    const QPoint at = view()->mapFromScene(clamp->boundingRect().center());
+    const auto rightClick = [&] {
+        QContextMenuEvent event(QContextMenuEvent::Mouse, at, view()->viewport()->mapToGlobal(at));
+        QApplication::sendEvent(view()->viewport(), &event);
+    };
+    bool found = false;
+    editortest::triggerInNextMenu(QStringLiteral("Fault of Clamped"), QStringLiteral("Stuck at TRUE"), &found);
+    rightClick();
+    QVERIFY(found);
+    QCOMPARE(m_session->sensorFault(index("Clamped")), core::machine::SensorFault::StuckTrue);
+    QCOMPARE(m_session->sensorFault(index("Unclamped")), core::machine::SensorFault::None);
+    QVERIFY(value("Clamped"));
+
+    // The fourth role line (extended: Clamped): lit, and struck through in red.
+    const QRectF cell = clamp->boundingRect();
+    const QPointF lamp(cell.left() + 6 + 5.5, cell.bottom() - 6 - 4 * 17 + 3 * 17 + 8.5);
+    const QPoint pixel = (lamp - scene()->sceneRect().topLeft()).toPoint();
+    const QImage drawn = render();
+    int reddest = 255; // the lowest green of a strongly red pixel on the stroke's diagonal
+    for (int step = -4; step <= 4; ++step) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            const QColor c = drawn.pixelColor(pixel + QPoint(step + dx, -step));
+            if (c.red() > 150)
+                reddest = std::min(reddest, c.green());
+        }
+    }
+    QVERIFY2(reddest < 110, qPrintable(QString::number(reddest)));
+
+    editortest::triggerInNextMenu({}, QStringLiteral("Jam"), &found);
+    rightClick();
+    QVERIFY(found);
+    QVERIFY(m_session->machineState()->jammed(0));
+    QVERIFY(scene()->jammed(0));
+    editortest::triggerInNextMenu({}, QStringLiteral("Clear Jam"), &found);
+    rightClick();
+    QVERIFY(found);
+    QVERIFY(!m_session->machineState()->jammed(0));
+
+    // Outside the simulation the schematic offers no fault.
+    m_window->findChild<QAction*>(QStringLiteral("simulateAction"))->trigger();
+    QVERIFY(!m_session->isActive());
+    editortest::triggerInNextMenu({}, QStringLiteral("Jam"), &found);
+    rightClick();
+    QTest::qWait(20);
+    QVERIFY(!found);
 }
 
 QTEST_MAIN(TestMachineView)
