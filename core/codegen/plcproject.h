@@ -51,4 +51,17 @@ struct PlcProject {
     int taskPriority = 1;
 };
 
+// Where every template's project starts: the model's name and cycle time,
+// the dialect, and CODESYS's global variable list.
+inline PlcProject startPlcProject(const Model& model, Dialect dialect)
+{
+    PlcProject project;
+    project.projectName = model.settings().name;
+    project.dialect = dialect;
+    project.cycleTimeMs = model.settings().cycleTimeMs;
+    if (dialect == Dialect::Codesys)
+        project.globalListName = std::string(kCodesysGlobalList);
+    return project;
+}
+
 } // namespace core

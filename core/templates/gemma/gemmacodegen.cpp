@@ -472,13 +472,8 @@ std::vector<PlcVariable> buildGlobals(const Model& model, const GemmaProgram& pr
 PlcProject buildGemmaPlcProject(const Model& model, Dialect dialect)
 {
     const GemmaProgram program = buildGemmaProgram(model);
-    PlcProject project;
-    project.projectName = model.settings().name;
-    project.dialect = dialect;
-    project.cycleTimeMs = model.settings().cycleTimeMs;
+    PlcProject project = startPlcProject(model, dialect);
     project.globals = buildGlobals(model, program);
-    if (dialect == Dialect::Codesys)
-        project.globalListName = std::string(kCodesysGlobalList);
     project.pous.push_back(buildGemmaPou(model, program, dialect).pou);
     for (const GemmaStep& step : program.steps) {
         const Step* modelStep = model.step(step.id);

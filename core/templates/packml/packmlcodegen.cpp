@@ -126,13 +126,8 @@ PlcProject buildPackmlPlcProject(const Model& model, Dialect dialect)
 {
     const PackmlProgram program = buildPackmlProgram(model);
     const std::vector<std::string> declared = declaredGlobalNames(program);
-    PlcProject project;
-    project.projectName = model.settings().name;
-    project.dialect = dialect;
-    project.cycleTimeMs = model.settings().cycleTimeMs;
+    PlcProject project = startPlcProject(model, dialect);
     project.globals = globalsOf(program, declared);
-    if (dialect == Dialect::Codesys)
-        project.globalListName = std::string(kCodesysGlobalList);
     for (State state : program.skeletons)
         project.pous.push_back(skeletonFunctionBlock(state));
     for (const ProgramGrafcet* grafcet : grafcetsInOrder(program))
