@@ -1,0 +1,147 @@
+// ggstudio-cli simulate --modbus-server against a QModbusTcpClient, on
+// 127.0.0.1: the twin presses Start, reads the Spindle the program drives;
+// --scans bounds the run. A port already taken and a bad HOST:PORT exit 2.
+
+#include <QModbusReply>
+#include <QModbusTcpClient>
+#include <QProcess>
+#include <QTcpServer>
+#include <QTest>
+
+namespace test_modbuscli {
+
+int freePort()
+{
+    QTcpServer probe;
+    if (!probe.listen(QHostAddress::LocalHost, 0))
+        return 0;
+    const int port = probe.serverPort();
+    probe.close();
+    return port;
+}
+
+const QString kModel = QStringLiteral(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+
+} // namespace test_modbuscli
+
+using namespace test_modbuscli;
+
+class TestModbusCli : public QObject {
+    Q_OBJECT
+
+private slots:
+    void twinDrivesTheCliServer();
+    void portInUseExits2();
+    void badHostPortExits2();
+    void printsTheMapAsCsv();
+
+private:
+    QModbusReply* wait(QModbusReply* reply);
+};
+
+QModbusReply* TestModbusCli::wait(QModbusReply* reply)
+{
+    if (!reply)
+        return nullptr;
+    reply->setParent(this);
+    for (int i = 0; i < 300 && !reply->isFinished(); ++i)
+        QTest::qWait(10);
+    return reply->isFinished() ? reply : nullptr;
+}
+
+void TestModbusCli::twinDrivesTheCliServer()
+{
+    const int port = freePort();
+    QVERIFY(port > 0);
+    QProcess cli;
+    // 10 ms cycles: 1,000 scans are 10 s, time enough to connect under the sanitizers.
+    cli.start(QStringLiteral(GGSTUDIO_CLI),
+              {QStringLiteral("simulate"), kModel, QStringLiteral("--modbus-server"),
+               QStringLiteral("127.0.0.1:%1").arg(port), QStringLiteral("--scans"), QStringLiteral("1000")});
+    QVERIFY(cli.waitForStarted(5000));
+    QModbusTcpClient client;
+    client.setConnectionParameter(QModbusDevice::NetworkAddressParameter, QStringLiteral("127.0.0.1"));
+    client.setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
+    client.setTimeout(2000);
+    client.setNumberOfRetries(0);
+    // The CLI listens once it has started: retry the connection for up to 5 s.
+    for (int attempt = 0; attempt < 50 && client.state() != QModbusDevice::ConnectedState; ++attempt) {
+        if (client.state() == QModbusDevice::UnconnectedState)
+            client.connectDevice();
+        QTest::qWait(100);
+    }
+    QCOMPARE(client.state(), QModbusDevice::ConnectedState);
+    QModbusDataUnit coils(QModbusDataUnit::Coils, 7, 2); // Unclamped, DrillHigh: the rest position
+    coils.setValue(0, 1);
+    coils.setValue(1, 1);
+    QModbusReply* rest = wait(client.sendWriteRequest(coils, 1));
+    QVERIFY(rest);
+    QCOMPARE(rest->error(), QModbusDevice::NoError);
+    QModbusDataUnit start(QModbusDataUnit::Coils, 1, 1); // StartButton
+    start.setValue(0, 1);
+    QModbusReply* pressed = wait(client.sendWriteRequest(start, 1));
+    QVERIFY(pressed);
+    QCOMPARE(pressed->error(), QModbusDevice::NoError);
+    bool spindle = false;
+    for (int i = 0; i < 100 && !spindle; ++i) {
+        QModbusReply* read = wait(client.sendReadRequest(QModbusDataUnit(QModbusDataUnit::DiscreteInputs, 4, 1), 1));
+        QVERIFY(read);
+        spindle = read->error() == QModbusDevice::NoError && read->result().value(0) == 1;
+        if (!spindle)
+            QTest::qWait(10);
+    }
+    QVERIFY(spindle);
+    client.disconnectDevice();
+    QVERIFY(cli.waitForFinished(30000));
+    const QString out = QString::fromUtf8(cli.readAllStandardOutput());
+    QVERIFY2(cli.exitStatus() == QProcess::NormalExit && cli.exitCode() == 0,
+             qPrintable(out + QString::fromUtf8(cli.readAllStandardError())));
+    QVERIFY2(out.contains(QStringLiteral("  coil 1                  StartButton (BOOL input)")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("listening on 127.0.0.1:%1, cycle time 10 ms, 1000 scans").arg(port)), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral(": modbus set StartButton = TRUE")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral(": F2 fired A1->F2")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("modbus: 1 client(s) connected")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("stopped after 1000 scans, F2")), qPrintable(out));
+}
+
+void TestModbusCli::portInUseExits2()
+{
+    QTcpServer taken;
+    QVERIFY(taken.listen(QHostAddress::LocalHost, 0));
+    QProcess cli;
+    cli.start(QStringLiteral(GGSTUDIO_CLI),
+              {QStringLiteral("simulate"), kModel, QStringLiteral("--modbus-server"),
+               QStringLiteral("127.0.0.1:%1").arg(taken.serverPort()), QStringLiteral("--scans"), QStringLiteral("5")});
+    QVERIFY(cli.waitForFinished(30000));
+    QCOMPARE(cli.exitCode(), 2);
+    const QString err = QString::fromUtf8(cli.readAllStandardError());
+    QVERIFY2(err.startsWith(QStringLiteral("ggstudio-cli: cannot listen on 127.0.0.1:%1: ").arg(taken.serverPort())),
+             qPrintable(err));
+}
+
+void TestModbusCli::badHostPortExits2()
+{
+    QProcess cli;
+    cli.start(QStringLiteral(GGSTUDIO_CLI),
+              {QStringLiteral("simulate"), kModel, QStringLiteral("--modbus-client"), QStringLiteral("127.0.0.1")});
+    QVERIFY(cli.waitForFinished(30000));
+    QCOMPARE(cli.exitCode(), 2);
+    QCOMPARE(QString::fromUtf8(cli.readAllStandardError()),
+             QStringLiteral("ggstudio-cli: --modbus-client: '127.0.0.1': expected HOST:PORT (127.0.0.1:1502)\n"));
+}
+
+void TestModbusCli::printsTheMapAsCsv()
+{
+    QProcess cli;
+    cli.start(QStringLiteral(GGSTUDIO_CLI),
+              {QStringLiteral("simulate"), kModel, QStringLiteral("--modbus-client"), QStringLiteral("127.0.0.1:502"),
+               QStringLiteral("--print-modbus-map")});
+    QVERIFY(cli.waitForFinished(30000));
+    QCOMPARE(cli.exitCode(), 0);
+    const QString out = QString::fromUtf8(cli.readAllStandardOutput());
+    QVERIFY2(out.startsWith(QStringLiteral("variable,table,address\nEmergencyOk,discrete-input,0\n")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("\nBatchSize,input-register,0\nClampOut,coil,0\n")), qPrintable(out));
+}
+
+QTEST_GUILESS_MAIN(TestModbusCli)
+#include "test_modbuscli.moc"
