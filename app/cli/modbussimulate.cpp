@@ -28,10 +28,10 @@ extern "C" void onStopSignal(int)
 }
 
 // The mapping as a table: "  coil 0   EmergencyOk  BOOL input".
-void printMap(const core::link::ModbusMap& map, std::ostream& out)
+void printMap(const core::modbusio::ModbusMap& map, std::ostream& out)
 {
-    for (const core::link::ModbusEntry& entry : map.entries) {
-        std::string where = std::string(core::link::modbusTableName(entry.table)) + " " + std::to_string(entry.address);
+    for (const core::modbusio::ModbusEntry& entry : map.entries) {
+        std::string where = std::string(core::modbusio::modbusTableName(entry.table)) + " " + std::to_string(entry.address);
         if (entry.width > 1)
             where += ".." + std::to_string(entry.address + entry.width - 1);
         where.resize(std::max<std::size_t>(where.size(), 24), ' ');
@@ -58,23 +58,23 @@ int simulateModbus(const Arguments& args, const std::string& path, const core::M
         streams.err << "ggstudio-cli: --modbus-map and --unit-id need --modbus-server or --modbus-client" << lineEnd;
         return UsageError;
     }
-    const core::link::ModbusRole role = client ? core::link::ModbusRole::Client : core::link::ModbusRole::Server;
-    core::link::ModbusMap map = core::link::defaultModbusMap(model.variables(), role);
+    const core::modbusio::ModbusRole role = client ? core::modbusio::ModbusRole::Client : core::modbusio::ModbusRole::Server;
+    core::modbusio::ModbusMap map = core::modbusio::defaultModbusMap(model.variables(), role);
     if (auto mapPath = args.value("--modbus-map")) {
         std::string text;
         if (core::Status status = core::readFileLimited(*mapPath, 4u * 1024u * 1024u, text); !status) {
             streams.err << *mapPath << ": " << status.message << lineEnd;
             return UnreadableInput;
         }
-        const core::link::ModbusMapParse parsed = core::link::parseModbusMap(text, model.variables(), role);
-        for (const core::link::ModbusMapError& error : parsed.errors)
+        const core::modbusio::ModbusMapParse parsed = core::modbusio::parseModbusMap(text, model.variables(), role);
+        for (const core::modbusio::ModbusMapError& error : parsed.errors)
             streams.err << error.toString(*mapPath) << lineEnd;
         if (!parsed.ok())
             return UnreadableInput;
         map = parsed.map;
     }
     if (args.has("--print-modbus-map")) {
-        writeVerbatim(streams.out, core::link::writeModbusMap(map));
+        writeVerbatim(streams.out, core::modbusio::writeModbusMap(map));
         return Success;
     }
     int unitId = 1;

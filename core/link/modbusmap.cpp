@@ -7,7 +7,7 @@
 #include <cstring>
 #include <limits>
 
-namespace core::link {
+namespace core::modbusio {
 
 namespace modbusmap {
 
@@ -380,4 +380,4 @@ std::optional<cond::Value> decodeModbusValue(IecType type, const std::uint16_t* 
     return cond::Value(integer);
 }
 
-} // namespace core::link
+} // namespace core::modbusio

@@ -28,7 +28,7 @@
 #include <string_view>
 #include <vector>
 
-namespace core::link {
+namespace core::modbusio {
 
 enum class ModbusTable { Coil, DiscreteInput, HoldingRegister, InputRegister };
 // "coil", "discrete-input", "holding-register", "input-register"
@@ -103,4 +103,4 @@ std::vector<std::uint16_t> encodeModbusValue(IecType type, const cond::Value& va
 // hold one (a NaN for REAL, an unsigned beyond the 64-bit range).
 std::optional<cond::Value> decodeModbusValue(IecType type, const std::uint16_t* registers, std::string& problem);
 
-} // namespace core::link
+} // namespace core::modbusio

@@ -8,7 +8,7 @@
 
 namespace modbus {
 
-using core::link::ModbusTable;
+using core::modbusio::ModbusTable;
 
 QModbusDataUnit::RegisterType registerType(ModbusTable table)
 {
@@ -44,15 +44,15 @@ int tableIndex(QModbusDataUnit::RegisterType type)
 
 } // namespace mappedmodbusserver
 
-MappedModbusServer::MappedModbusServer(const core::link::ModbusMap& map, QObject* parent)
+MappedModbusServer::MappedModbusServer(const core::modbusio::ModbusMap& map, QObject* parent)
     : QModbusTcpServer(parent), m_map(map)
 {
     QModbusDataUnitMap units;
     for (int t = 0; t < 4; ++t) {
         const auto table = static_cast<ModbusTable>(t);
         int end = 0;
-        int first = core::link::kMaxModbusAddress + 1;
-        for (const core::link::ModbusEntry& entry : m_map.entries) {
+        int first = core::modbusio::kMaxModbusAddress + 1;
+        for (const core::modbusio::ModbusEntry& entry : m_map.entries) {
             if (entry.table == table) {
                 end = std::max(end, entry.address + entry.width);
                 first = std::min(first, entry.address);
@@ -60,7 +60,7 @@ MappedModbusServer::MappedModbusServer(const core::link::ModbusMap& map, QObject
         }
         m_owners[t].assign(static_cast<std::size_t>(end), -1);
         for (std::size_t i = 0; i < m_map.entries.size(); ++i) {
-            const core::link::ModbusEntry& entry = m_map.entries[i];
+            const core::modbusio::ModbusEntry& entry = m_map.entries[i];
             if (entry.table != table)
                 continue;
             for (int a = entry.address; a < entry.address + entry.width; ++a)
@@ -104,7 +104,7 @@ bool MappedModbusServer::writeData(const QModbusDataUnit& unit)
         return false;
     const int t = mappedmodbusserver::tableIndex(unit.registerType());
     const auto table = static_cast<ModbusTable>(t);
-    if (core::link::isBitTable(table)) // a coil is TRUE when non-zero (FC 5 sends 0xFF00)
+    if (core::modbusio::isBitTable(table)) // a coil is TRUE when non-zero (FC 5 sends 0xFF00)
         return QModbusTcpServer::writeData(unit);
     // Each variable the write touches must still hold a value of its type.
     int lastEntry = -1;
@@ -114,7 +114,7 @@ bool MappedModbusServer::writeData(const QModbusDataUnit& unit)
         if (index == lastEntry)
             continue;
         lastEntry = index;
-        const core::link::ModbusEntry& entry = m_map.entries[static_cast<std::size_t>(index)];
+        const core::modbusio::ModbusEntry& entry = m_map.entries[static_cast<std::size_t>(index)];
         std::vector<std::uint16_t> registers(static_cast<std::size_t>(entry.width));
         for (int w = 0; w < entry.width; ++w) {
             const int at = entry.address + w;
@@ -126,9 +126,9 @@ bool MappedModbusServer::writeData(const QModbusDataUnit& unit)
             registers[static_cast<std::size_t>(w)] = value;
         }
         std::string problem;
-        if (!core::link::decodeModbusValue(entry.type, registers.data(), problem)) {
+        if (!core::modbusio::decodeModbusValue(entry.type, registers.data(), problem)) {
             m_refusal = QStringLiteral("%1 %2 (%3): %4")
-                            .arg(QString::fromStdString(std::string(core::link::modbusTableName(table))))
+                            .arg(QString::fromStdString(std::string(core::modbusio::modbusTableName(table))))
                             .arg(entry.address)
                             .arg(QString::fromStdString(entry.variable), QString::fromStdString(problem));
             return false;

@@ -16,7 +16,7 @@
 
 namespace modbus {
 
-QModbusDataUnit::RegisterType registerType(core::link::ModbusTable table);
+QModbusDataUnit::RegisterType registerType(core::modbusio::ModbusTable table);
 
 // A PDU as its bytes: function code (with 0x80 on an exception), then data.
 // QModbusPdu's inline functionCode() loads a byte of 0x80 and above, which
@@ -28,10 +28,10 @@ class MappedModbusServer : public QModbusTcpServer {
     Q_OBJECT
 
 public:
-    MappedModbusServer(const core::link::ModbusMap& map, QObject* parent = nullptr);
+    MappedModbusServer(const core::modbusio::ModbusMap& map, QObject* parent = nullptr);
 
     // The map entry (index in map.entries) at a table's address; -1 when unmapped.
-    int entryAt(core::link::ModbusTable table, int address) const;
+    int entryAt(core::modbusio::ModbusTable table, int address) const;
 
 signals:
     // A client's write refused: what and where.
@@ -45,7 +45,7 @@ protected:
 private:
     bool allMapped(const QModbusDataUnit& unit) const;
 
-    core::link::ModbusMap m_map;
+    core::modbusio::ModbusMap m_map;
     std::vector<int> m_owners[4]; // by table: entry index per address, -1 unmapped
     QString m_refusal;            // why the last writeData refused, until processRequest reads it
 };

@@ -16,8 +16,8 @@
 
 namespace modbus {
 
-using core::link::ModbusEntry;
-using core::link::ModbusTable;
+using core::modbusio::ModbusEntry;
+using core::modbusio::ModbusTable;
 
 namespace modbuslink {
 
@@ -38,7 +38,7 @@ private:
 
 QString tableText(ModbusTable table)
 {
-    return QString::fromStdString(std::string(core::link::modbusTableName(table)));
+    return QString::fromStdString(std::string(core::modbusio::modbusTableName(table)));
 }
 
 } // namespace modbuslink
@@ -123,7 +123,7 @@ bool ModbusLink::start(QString* error)
     m_received.assign(entries.size(), {});
     // The image starts from the simulator's values: defaults are not overwritten by zeros.
     for (std::size_t i = 0; i < entries.size(); ++i) {
-        m_applied[i] = core::link::encodeModbusValue(entries[i].type, m_hooks.value(entries[i].variable));
+        m_applied[i] = core::modbusio::encodeModbusValue(entries[i].type, m_hooks.value(entries[i].variable));
         m_received[i] = m_applied[i];
     }
     if (isServer()) {
@@ -282,13 +282,13 @@ void ModbusLink::applyServerInputs()
         for (int w = 0; w < entry.width; ++w)
             m_server->data(registerType(entry.table), static_cast<quint16>(entry.address + w),
                            &registers[static_cast<std::size_t>(w)]);
-        if (core::link::isBitTable(entry.table))
+        if (core::modbusio::isBitTable(entry.table))
             registers[0] = registers[0] != 0 ? 1 : 0;
         if (registers == m_applied[i])
             continue;
         m_applied[i] = registers;
         std::string problem;
-        const std::optional<core::cond::Value> value = core::link::decodeModbusValue(entry.type, registers.data(), problem);
+        const std::optional<core::cond::Value> value = core::modbusio::decodeModbusValue(entry.type, registers.data(), problem);
         QString refusal;
         if (!value) {
             refusal = QString::fromStdString(problem);
@@ -311,7 +311,7 @@ void ModbusLink::publishServerOutputs()
         const ModbusEntry& entry = entries[i];
         if (entry.kind != core::VariableKind::Output)
             continue;
-        std::vector<std::uint16_t> registers = core::link::encodeModbusValue(entry.type, m_hooks.value(entry.variable));
+        std::vector<std::uint16_t> registers = core::modbusio::encodeModbusValue(entry.type, m_hooks.value(entry.variable));
         if (registers == m_applied[i])
             continue;
         for (int w = 0; w < entry.width; ++w)
@@ -331,7 +331,7 @@ void ModbusLink::applyClientInputs()
         m_applied[i] = m_received[i];
         std::string problem;
         const std::optional<core::cond::Value> value =
-            core::link::decodeModbusValue(entry.type, m_received[i].data(), problem);
+            core::modbusio::decodeModbusValue(entry.type, m_received[i].data(), problem);
         QString refusal;
         if (!value) {
             refusal = QString::fromStdString(problem);
@@ -373,7 +373,7 @@ std::vector<Run> runsOf(const std::vector<ModbusEntry>& entries, core::VariableK
     std::vector<Run> runs;
     for (std::size_t i : order) {
         const ModbusEntry& entry = entries[i];
-        const int limit = core::link::isBitTable(entry.table) ? 1968 : 123; // FC 15 and 16's largest
+        const int limit = core::modbusio::isBitTable(entry.table) ? 1968 : 123; // FC 15 and 16's largest
         if (!runs.empty() && runs.back().table == entry.table && runs.back().start + runs.back().count == entry.address
             && runs.back().count + entry.width <= limit) {
             runs.back().count += entry.width;
@@ -395,7 +395,7 @@ void ModbusLink::sendClientWrites()
     for (const modbuslink::Run& run : modbuslink::runsOf(entries, core::VariableKind::Output)) {
         QModbusDataUnit unit(registerType(run.table), run.start, static_cast<quint16>(run.count));
         for (std::size_t i : run.entries) {
-            const std::vector<std::uint16_t> registers = core::link::encodeModbusValue(entries[i].type, m_hooks.value(entries[i].variable));
+            const std::vector<std::uint16_t> registers = core::modbusio::encodeModbusValue(entries[i].type, m_hooks.value(entries[i].variable));
             for (int w = 0; w < entries[i].width; ++w)
                 unit.setValue(entries[i].address + w - run.start, registers[static_cast<std::size_t>(w)]);
         }
@@ -455,7 +455,7 @@ void ModbusLink::sendClientReads()
                     const qsizetype at = entry.address + w - unit.startAddress();
                     if (at >= 0 && at < unit.valueCount())
                         m_received[i][static_cast<std::size_t>(w)] =
-                            core::link::isBitTable(entry.table) ? (unit.value(at) != 0 ? 1 : 0) : unit.value(at);
+                            core::modbusio::isBitTable(entry.table) ? (unit.value(at) != 0 ? 1 : 0) : unit.value(at);
                 }
             }
         });

@@ -55,7 +55,7 @@ struct ModbusScanHooks {
 ModbusScanHooks simulatorHooks(core::Simulator& simulator);
 
 struct ModbusLinkOptions {
-    core::link::ModbusMap map;          // its role says server or client
+    core::modbusio::ModbusMap map;          // its role says server or client
     QString host = QStringLiteral("127.0.0.1");
     int port = 1502;
     int unitId = 1;
@@ -86,7 +86,7 @@ public:
 
     State state() const { return m_state; }
     const ModbusLinkOptions& options() const { return m_options; }
-    bool isServer() const { return m_options.map.role == core::link::ModbusRole::Server; }
+    bool isServer() const { return m_options.map.role == core::modbusio::ModbusRole::Server; }
     int clientCount() const { return m_clients; }  // server mode
     std::int64_t scansRun() const { return m_scans; }
     qint64 elapsedMs() const;                      // since start()

@@ -8,7 +8,7 @@
 namespace test_modbusmap {
 
 using namespace core;
-using namespace core::link;
+using namespace core::modbusio;
 
 std::vector<Variable> sampleVariables()
 {

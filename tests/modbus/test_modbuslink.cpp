@@ -20,7 +20,7 @@
 
 #include <memory>
 
-using core::link::ModbusRole;
+using core::modbusio::ModbusRole;
 using modbus::ModbusLink;
 
 namespace test_modbuslink {
@@ -84,7 +84,7 @@ private slots:
 
 private:
     // Starts the simulator's server on a free port; false when it cannot.
-    bool startServer(const core::link::ModbusMap* map = nullptr);
+    bool startServer(const core::modbusio::ModbusMap* map = nullptr);
     bool connectClient();
     // Sends and waits (bounded) for the reply; nullptr when none came.
     QModbusReply* wait(QModbusReply* reply);
@@ -113,11 +113,11 @@ void TestModbusLink::cleanup()
     m_model.reset();
 }
 
-bool TestModbusLink::startServer(const core::link::ModbusMap* map)
+bool TestModbusLink::startServer(const core::modbusio::ModbusMap* map)
 {
     m_port = freePort();
     modbus::ModbusLinkOptions options;
-    options.map = map ? *map : core::link::defaultModbusMap(m_model->variables(), ModbusRole::Server);
+    options.map = map ? *map : core::modbusio::defaultModbusMap(m_model->variables(), ModbusRole::Server);
     options.port = m_port;
     options.cycleTimeMs = m_simulator->cycleTimeMs();
     m_link = std::make_unique<ModbusLink>(options, modbus::simulatorHooks(*m_simulator));
@@ -173,7 +173,7 @@ void TestModbusLink::coilDrivesDiscreteInputAfterAScan()
 {
     QVERIFY(startServer());
     QVERIFY(connectClient());
-    const core::link::ModbusMap map = core::link::defaultModbusMap(m_model->variables(), ModbusRole::Server);
+    const core::modbusio::ModbusMap map = core::modbusio::defaultModbusMap(m_model->variables(), ModbusRole::Server);
     const int start = map.find("StartButton")->address;
     const int spindle = map.find("Spindle")->address;
     // Spindle is off before the start.
@@ -216,7 +216,7 @@ void TestModbusLink::registerRoundTrip()
 {
     QVERIFY(startServer());
     QVERIFY(connectClient());
-    const int batch = core::link::defaultModbusMap(m_model->variables(), ModbusRole::Server).find("BatchSize")->address;
+    const int batch = core::modbusio::defaultModbusMap(m_model->variables(), ModbusRole::Server).find("BatchSize")->address;
     QModbusReply* initial = wait(m_client->sendReadRequest(QModbusDataUnit(QModbusDataUnit::HoldingRegisters, batch, 1), 1));
     QVERIFY(initial);
     QCOMPARE(initial->result().value(0), quint16(10)); // the default
@@ -241,7 +241,7 @@ void TestModbusLink::valueOutOfRangeIsRefused()
     m_simulator = std::make_unique<core::Simulator>(*m_model);
     QVERIFY(startServer());
     QVERIFY(connectClient());
-    const core::link::ModbusMap map = core::link::defaultModbusMap(m_model->variables(), ModbusRole::Server);
+    const core::modbusio::ModbusMap map = core::modbusio::defaultModbusMap(m_model->variables(), ModbusRole::Server);
     const int level = map.find("Level")->address;
     QSignalSpy errors(m_link.get(), &ModbusLink::linkError);
     QModbusDataUnit unit(QModbusDataUnit::HoldingRegisters, level, 1);
@@ -282,7 +282,7 @@ void TestModbusLink::unmappedAddressGetsException02()
     // A map with a gap: coil 1 is not mapped between 0 and 2.
     m_client->disconnectDevice();
     m_link.reset();
-    const core::link::ModbusMapParse parsed = core::link::parseModbusMap(
+    const core::modbusio::ModbusMapParse parsed = core::modbusio::parseModbusMap(
         "StartButton,coil,0\nStopButton,coil,2\nSpindle,discrete-input,0\n", m_model->variables(), ModbusRole::Server);
     QVERIFY(parsed.ok());
     QVERIFY(startServer(&parsed.map));
@@ -406,7 +406,7 @@ void TestModbusLink::floodLeavesServerAndClockWorking()
 void TestModbusLink::clientModeDrivesATwin()
 {
     // The twin: a server with the client-mode tables of the drilling cell.
-    const core::link::ModbusMap map = core::link::defaultModbusMap(m_model->variables(), ModbusRole::Client);
+    const core::modbusio::ModbusMap map = core::modbusio::defaultModbusMap(m_model->variables(), ModbusRole::Client);
     QModbusTcpServer twin;
     QModbusDataUnitMap tables;
     tables.insert(QModbusDataUnit::DiscreteInputs, QModbusDataUnit(QModbusDataUnit::DiscreteInputs, 0, 10));
