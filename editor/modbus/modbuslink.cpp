@@ -81,7 +81,7 @@ ModbusLink::ModbusLink(ModbusLinkOptions options, ModbusScanHooks hooks, QObject
     : QObject(parent), m_options(std::move(options)), m_hooks(std::move(hooks)), m_timer(new QTimer(this))
 {
     m_timer->setTimerType(Qt::PreciseTimer);
-    m_timer->setInterval(std::max(1, m_options.cycleTimeMs / 2));
+    m_timer->setSingleShot(true); // armed for each scan's due time (onTick)
     connect(m_timer, &QTimer::timeout, this, &ModbusLink::onTick);
 }
 
@@ -196,7 +196,7 @@ bool ModbusLink::start(QString* error)
     m_lastError.clear();
     m_pendingRequests = 0;
     m_clock.start();
-    m_timer->start();
+    m_timer->start(m_options.cycleTimeMs);
     return true;
 }
 
@@ -247,6 +247,12 @@ void ModbusLink::onTick()
     for (std::int64_t i = 0; i < owed && m_clock.isValid(); ++i) {
         runCycle();
         ++m_scheduled;
+    }
+    // The next scan at its due time, not a timer period late: the latency a
+    // twin sees is then the model's, plus the network's.
+    if (m_clock.isValid()) {
+        const qint64 next = (m_scheduled + 1) * m_options.cycleTimeMs - m_clock.elapsed();
+        m_timer->start(static_cast<int>(std::clamp<qint64>(next, 0, m_options.cycleTimeMs)));
     }
 }
 

@@ -11,7 +11,8 @@
 // 3. publishes the outputs (server mode: into its discrete inputs and input
 //    registers; client mode: written to the twin's coils and holding
 //    registers, then the next reads are sent).
-// A late tick catches up at most kMaxCatchUpScans scans; the rest of the late
+// A single-shot precise timer is armed for each scan's due time (multiples
+// of the cycle time since start()). A late tick catches up at most kMaxCatchUpScans scans; the rest of the late
 // time is dropped (simulated time then runs slower than real time): the clock
 // never spins.
 
