@@ -1060,7 +1060,7 @@ void MainWindow::retranslate()
     m_runAction->setStatusTip(tr("Run scans at the speed set in the Simulation dock, or pause them"));
     m_scanAction->setText(tr("Single S&can"));
     m_resetSimulationAction->setText(tr("R&eset Simulation"));
-    m_connectAction->setText(tr("Co&nnect..."));
+    m_connectAction->setText(tr("Co&nnect…"));
     m_connectAction->setStatusTip(tr("Link the simulation to a digital twin, a soft PLC or an HMI over Modbus TCP; "
                                      "it then runs in real time"));
     m_disconnectAction->setText(tr("&Disconnect"));

@@ -117,7 +117,7 @@ public slots:
     // none and is a simple step (a macro-step or an enclosing step without
     // one opens on an empty drawing that offers to create it).
     bool openNestedGrafcet(const QString& stepId);
-    // Simulation > Connect...: the dialog (not modal to the event loop), then
+    // Simulation > Connect…: the dialog (not modal to the event loop), then
     // the link; a link that cannot start says why.
     void connectModbus();
 

@@ -65,8 +65,8 @@ ModbusConnectDialog::ModbusConnectDialog(std::vector<core::Variable> variables, 
     form->addRow(tr("Port:"), m_port);
     form->addRow(tr("Unit id:"), m_unit);
 
-    auto* load = new QPushButton(tr("Load CSV..."), this);
-    auto* save = new QPushButton(tr("Save As CSV..."), this);
+    auto* load = new QPushButton(tr("Load CSV…"), this);
+    auto* save = new QPushButton(tr("Save As CSV…"), this);
     auto* reset = new QPushButton(tr("Default Map"), this);
     load->setObjectName(QStringLiteral("loadMapButton"));
     save->setObjectName(QStringLiteral("saveMapButton"));

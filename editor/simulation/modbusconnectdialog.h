@@ -1,6 +1,6 @@
 #pragma once
 
-// Simulation > Connect...: server or client, host, port and unit id, and the
+// Simulation > Connect…: server or client, host, port and unit id, and the
 // Modbus map (docs/modbus.md): the default one, or one loaded from a CSV file,
 // shown as a table and saved as CSV. Connect hands the options to the caller.
 

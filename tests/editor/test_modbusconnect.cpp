@@ -136,7 +136,7 @@ void TestModbusConnect::connectListenTwinAndDisconnect()
     auto* connectAction = m_window->findChild<QAction*>(QStringLiteral("modbusConnectAction"));
     auto* disconnectAction = m_window->findChild<QAction*>(QStringLiteral("modbusDisconnectAction"));
     QVERIFY(connectAction && disconnectAction);
-    QCOMPARE(connectAction->text(), QStringLiteral("Co&nnect..."));
+    QCOMPARE(connectAction->text(), QStringLiteral("Co&nnect…"));
     QVERIFY(!disconnectAction->isEnabled());
 
     connectAction->trigger();
