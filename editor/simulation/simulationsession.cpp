@@ -606,7 +606,8 @@ void SimulationSession::setLinked(bool linked)
         stopReplay();
     }
     m_linked = linked;
-    emit inputsChanged();
+    if (isActive()) // leaving the simulation ends a link after the simulator is gone
+        emit inputsChanged();
 }
 
 bool SimulationSession::isMachineDriven(int index) const

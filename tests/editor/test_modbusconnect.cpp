@@ -192,6 +192,22 @@ void TestModbusConnect::connectListenTwinAndDisconnect()
     const std::int64_t stopped = session->latestScan();
     QTest::qWait(100);
     QCOMPARE(session->latestScan(), stopped);
+
+    // Leaving the simulation ends a link too.
+    modbus::ModbusLinkOptions options;
+    options.map = core::modbusio::defaultModbusMap(m_window->document()->model().variables(),
+                                                   core::modbusio::ModbusRole::Server);
+    options.port = freePort();
+    QString error;
+    QVERIFY2(connection->connectLink(options, &error), qPrintable(error));
+    QVERIFY(disconnectAction->isEnabled());
+    auto* simulate = m_window->findChild<QAction*>(QStringLiteral("simulateAction"));
+    QVERIFY(simulate && simulate->isChecked());
+    simulate->trigger();
+    QVERIFY(!session->isActive());
+    QVERIFY(!connection->isConnected());
+    QVERIFY(!session->isLinked());
+    QVERIFY(!disconnectAction->isEnabled());
 }
 
 void TestModbusConnect::portInUseIsSaidAndNothingChanges()
