@@ -4,6 +4,7 @@
 
 #include <QModbusReply>
 #include <QModbusTcpClient>
+#include <QModbusTcpServer>
 #include <QProcess>
 #include <QTcpServer>
 #include <QTest>
@@ -34,6 +35,8 @@ private slots:
     void portInUseExits2();
     void badHostPortExits2();
     void printsTheMapAsCsv();
+    void clientModeDrivesATwinServer();
+    void clientWithoutTwinReportsAndRuns();
 
 private:
     QModbusReply* wait(QModbusReply* reply);
@@ -141,6 +144,59 @@ void TestModbusCli::printsTheMapAsCsv()
     const QString out = QString::fromUtf8(cli.readAllStandardOutput());
     QVERIFY2(out.startsWith(QStringLiteral("variable,table,address\nEmergencyOk,discrete-input,0\n")), qPrintable(out));
     QVERIFY2(out.contains(QStringLiteral("\nBatchSize,input-register,0\nClampOut,coil,0\n")), qPrintable(out));
+}
+
+void TestModbusCli::clientModeDrivesATwinServer()
+{
+    // The twin: discrete inputs 0..9 (the BOOL inputs), input register 0
+    // (BatchSize), coils 0..8 (the outputs), as --print-modbus-map says.
+    QModbusTcpServer twin;
+    QModbusDataUnitMap tables;
+    tables.insert(QModbusDataUnit::DiscreteInputs, QModbusDataUnit(QModbusDataUnit::DiscreteInputs, 0, 10));
+    tables.insert(QModbusDataUnit::InputRegisters, QModbusDataUnit(QModbusDataUnit::InputRegisters, 0, 1));
+    tables.insert(QModbusDataUnit::Coils, QModbusDataUnit(QModbusDataUnit::Coils, 0, 9));
+    QVERIFY(twin.setMap(tables));
+    const int port = freePort();
+    twin.setConnectionParameter(QModbusDevice::NetworkAddressParameter, QStringLiteral("127.0.0.1"));
+    twin.setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
+    twin.setServerAddress(1);
+    QVERIFY(twin.connectDevice());
+    for (const quint16 input : {quint16(0), quint16(1), quint16(7), quint16(8)}) // EmergencyOk, StartButton, Unclamped, DrillHigh
+        twin.setData(QModbusDataUnit::DiscreteInputs, input, 1);
+    QProcess cli;
+    cli.start(QStringLiteral(GGSTUDIO_CLI),
+              {QStringLiteral("simulate"), kModel, QStringLiteral("--modbus-client"),
+               QStringLiteral("127.0.0.1:%1").arg(port), QStringLiteral("--scans"), QStringLiteral("300")});
+    QVERIFY(cli.waitForStarted(5000));
+    quint16 spindle = 0;
+    for (int i = 0; i < 1000 && spindle == 0; ++i) {
+        QTest::qWait(10);
+        twin.data(QModbusDataUnit::Coils, 4, &spindle);
+    }
+    QCOMPARE(spindle, quint16(1));
+    for (int i = 0; i < 3000 && cli.state() != QProcess::NotRunning; ++i)
+        QTest::qWait(10); // the twin answers on this thread: never block it
+    QCOMPARE(cli.state(), QProcess::NotRunning);
+    const QString out = QString::fromUtf8(cli.readAllStandardOutput());
+    QVERIFY2(cli.exitCode() == 0, qPrintable(out + QString::fromUtf8(cli.readAllStandardError())));
+    QVERIFY2(out.contains(QStringLiteral("Modbus map (client mode, unit 1):")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("modbus: connected to 127.0.0.1:%1").arg(port)), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral(": F2 fired A1->F2")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("stopped after 300 scans, F2")), qPrintable(out));
+}
+
+void TestModbusCli::clientWithoutTwinReportsAndRuns()
+{
+    const int port = freePort(); // nobody listens there
+    QProcess cli;
+    cli.start(QStringLiteral(GGSTUDIO_CLI),
+              {QStringLiteral("simulate"), kModel, QStringLiteral("--modbus-client"),
+               QStringLiteral("127.0.0.1:%1").arg(port), QStringLiteral("--scans"), QStringLiteral("150")});
+    QVERIFY(cli.waitForFinished(30000));
+    const QString err = QString::fromUtf8(cli.readAllStandardError());
+    QCOMPARE(cli.exitCode(), 0);
+    QVERIFY2(err.contains(QStringLiteral("modbus: 127.0.0.1:%1: ").arg(port)), qPrintable(err));
+    QVERIFY(QString::fromUtf8(cli.readAllStandardOutput()).contains(QStringLiteral("stopped after 150 scans, A1")));
 }
 
 QTEST_GUILESS_MAIN(TestModbusCli)
