@@ -566,6 +566,9 @@ void MainWindow::createActions()
     m_disconnectAction = action("modbusDisconnectAction", [this] { m_modbus->disconnectLink(); });
     m_disconnectAction->setEnabled(false);
     connect(m_modbus, &ModbusConnection::connectedChanged, m_disconnectAction, &QAction::setEnabled);
+    // While linked the link's clock runs the scans: Run waits.
+    connect(m_modbus, &ModbusConnection::connectedChanged, this,
+            [this](bool connected) { m_runAction->setEnabled(!connected && m_session->isActive()); });
     connect(m_modbus, &ModbusConnection::statusChanged, this, [this] {
         if (m_simulationDock)
             m_simulationDock->setLinkStatus(m_modbus->statusText());

@@ -153,6 +153,9 @@ void TestModbusConnect::connectListenTwinAndDisconnect()
     QVERIFY(session->isActive());
     QVERIFY(session->isLinked());
     QVERIFY(disconnectAction->isEnabled());
+    auto* run = m_window->findChild<QAction*>(QStringLiteral("runSimulationAction"));
+    QVERIFY(run);
+    QVERIFY(!run->isEnabled()); // the link's clock runs the scans
     auto* dock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));
     QVERIFY(dock);
     QTRY_VERIFY_WITH_TIMEOUT(dock->linkLabel()->isVisible(), 2000);
@@ -188,6 +191,7 @@ void TestModbusConnect::connectListenTwinAndDisconnect()
     QVERIFY(!session->isLinked());
     QVERIFY(!disconnectAction->isEnabled());
     QVERIFY(!dock->linkLabel()->isVisible());
+    QVERIFY(run->isEnabled());
     QVERIFY(session->isMachineDriven(session->liveSimulator()->variableIndex("Unclamped")));
     const std::int64_t stopped = session->latestScan();
     QTest::qWait(100);
