@@ -146,15 +146,16 @@ int simulateModbus(const Arguments& args, const std::string& path, const core::M
         streams.err << "ggstudio-cli: " << error.toStdString() << lineEnd;
         return UnreadableInput;
     }
+    // The handlers before the line that says how to stop.
+    stopRequested = 0;
+    auto previousInt = std::signal(SIGINT, onStopSignal);
+    auto previousTerm = std::signal(SIGTERM, onStopSignal);
     streams.out << (server ? "listening on " : "connecting to ") << options.host.toStdString() << ":" << options.port
                 << ", cycle time " << options.cycleTimeMs << " ms"
                 << (scans > 0 ? ", " + std::to_string(scans) + " scans" : std::string(", until SIGINT or SIGTERM"))
                 << lineEnd;
     streams.out.flush();
 
-    stopRequested = 0;
-    auto previousInt = std::signal(SIGINT, onStopSignal);
-    auto previousTerm = std::signal(SIGTERM, onStopSignal);
     QTimer watch;
     QObject::connect(&watch, &QTimer::timeout, [] {
         if (stopRequested)

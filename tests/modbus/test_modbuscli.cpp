@@ -37,6 +37,7 @@ private slots:
     void printsTheMapAsCsv();
     void clientModeDrivesATwinServer();
     void clientWithoutTwinReportsAndRuns();
+    void sigtermClosesCleanly();
 
 private:
     QModbusReply* wait(QModbusReply* reply);
@@ -197,6 +198,27 @@ void TestModbusCli::clientWithoutTwinReportsAndRuns()
     QCOMPARE(cli.exitCode(), 0);
     QVERIFY2(err.contains(QStringLiteral("modbus: 127.0.0.1:%1: ").arg(port)), qPrintable(err));
     QVERIFY(QString::fromUtf8(cli.readAllStandardOutput()).contains(QStringLiteral("stopped after 150 scans, A1")));
+}
+
+void TestModbusCli::sigtermClosesCleanly()
+{
+    const int port = freePort();
+    QProcess cli;
+    cli.start(QStringLiteral(GGSTUDIO_CLI), {QStringLiteral("simulate"), kModel, QStringLiteral("--modbus-server"),
+                                             QStringLiteral("127.0.0.1:%1").arg(port)});
+    QVERIFY(cli.waitForStarted(5000));
+    QByteArray out;
+    for (int i = 0; i < 100 && !out.contains("until SIGINT or SIGTERM"); ++i) {
+        cli.waitForReadyRead(100);
+        out += cli.readAllStandardOutput();
+    }
+    QVERIFY2(out.contains("listening on 127.0.0.1:"), out.constData());
+    cli.terminate(); // SIGTERM
+    QVERIFY(cli.waitForFinished(10000));
+    out += cli.readAllStandardOutput();
+    QCOMPARE(cli.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(cli.exitCode(), 0);
+    QVERIFY2(out.contains("stopped after "), out.constData());
 }
 
 QTEST_GUILESS_MAIN(TestModbusCli)
