@@ -19,6 +19,8 @@
 #include <QLineEdit>
 #include <QModbusReply>
 #include <QModbusTcpClient>
+#include <QModbusTcpServer>
+#include <QSignalSpy>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTcpServer>
@@ -56,6 +58,7 @@ private slots:
     void dialogShowsTheMapAndLoadsCsv();
     void connectListenTwinAndDisconnect();
     void portInUseIsSaidAndNothingChanges();
+    void clientModeShowsItsTwin();
 
 private:
     QTemporaryDir m_settingsDir;
@@ -227,6 +230,45 @@ void TestModbusConnect::portInUseIsSaidAndNothingChanges()
     QVERIFY2(error.startsWith(QStringLiteral("cannot listen on 127.0.0.1:%1").arg(taken.serverPort())), qPrintable(error));
     QVERIFY(!connection->isConnected());
     QVERIFY(!m_window->simulationSession()->isLinked());
+}
+
+void TestModbusConnect::clientModeShowsItsTwin()
+{
+    QModbusTcpServer twin;
+    QModbusDataUnitMap tables;
+    tables.insert(QModbusDataUnit::DiscreteInputs, QModbusDataUnit(QModbusDataUnit::DiscreteInputs, 0, 10));
+    tables.insert(QModbusDataUnit::InputRegisters, QModbusDataUnit(QModbusDataUnit::InputRegisters, 0, 1));
+    tables.insert(QModbusDataUnit::Coils, QModbusDataUnit(QModbusDataUnit::Coils, 0, 9));
+    QVERIFY(twin.setMap(tables));
+    const int port = freePort();
+    twin.setConnectionParameter(QModbusDevice::NetworkAddressParameter, QStringLiteral("127.0.0.1"));
+    twin.setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
+    twin.setServerAddress(1);
+    QVERIFY(twin.connectDevice());
+    twin.setData(QModbusDataUnit::InputRegisters, 0, 42); // BatchSize
+
+    ModbusConnectDialog dialog(m_window->document()->model().variables());
+    dialog.roleCombo()->setCurrentIndex(1);
+    QCOMPARE(dialog.portSpin()->value(), 502);
+    dialog.portSpin()->setValue(port);
+    ModbusConnection* connection = m_window->modbusConnection();
+    QString error;
+    QVERIFY2(connection->connectLink(dialog.options(), &error), qPrintable(error));
+    auto* dock = m_window->findChild<SimulationDock*>(QStringLiteral("simulationDock"));
+    QVERIFY(dock);
+    QTRY_COMPARE_WITH_TIMEOUT(dock->linkLabel()->text().section(QLatin1Char('\n'), 0, 0),
+                              QStringLiteral("Modbus client of 127.0.0.1:%1: connected").arg(port), 3000);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->simulationSession()->liveSimulator()->variable("BatchSize"),
+                              core::cond::Value(std::int64_t{42}), 3000);
+    // The twin's discrete inputs are all off: EmergencyOk (TRUE by default) and the
+    // sensors the machine had set at rest went off too.
+    QTRY_COMPARE_WITH_TIMEOUT(dock->linkLabel()->text().section(QLatin1Char('\n'), 1, 1),
+                              QStringLiteral("Set by the twin: EmergencyOk = FALSE, Unclamped = FALSE, DrillHigh = FALSE, BatchSize = 42"), 3000);
+    QSignalSpy left(&twin, &QModbusTcpServer::modbusClientDisconnected);
+    connection->disconnectLink();
+    QVERIFY(!connection->isConnected());
+    // The twin sees the link leave before it goes (Qt frees the connection then).
+    QTRY_COMPARE_WITH_TIMEOUT(left.count(), 1, 3000);
 }
 
 QTEST_MAIN(TestModbusConnect)
