@@ -167,7 +167,7 @@ void TestModbusCli::clientModeDrivesATwinServer()
     QProcess cli;
     cli.start(QStringLiteral(GGSTUDIO_CLI),
               {QStringLiteral("simulate"), kModel, QStringLiteral("--modbus-client"),
-               QStringLiteral("127.0.0.1:%1").arg(port), QStringLiteral("--scans"), QStringLiteral("300")});
+               QStringLiteral("127.0.0.1:%1").arg(port), QStringLiteral("--scans"), QStringLiteral("600")}); // 6 s: time to connect under the sanitizers
     QVERIFY(cli.waitForStarted(5000));
     quint16 spindle = 0;
     for (int i = 0; i < 1000 && spindle == 0; ++i) {
@@ -183,7 +183,7 @@ void TestModbusCli::clientModeDrivesATwinServer()
     QVERIFY2(out.contains(QStringLiteral("Modbus map (client mode, unit 1):")), qPrintable(out));
     QVERIFY2(out.contains(QStringLiteral("modbus: connected to 127.0.0.1:%1").arg(port)), qPrintable(out));
     QVERIFY2(out.contains(QStringLiteral(": F2 fired A1->F2")), qPrintable(out));
-    QVERIFY2(out.contains(QStringLiteral("stopped after 300 scans, F2")), qPrintable(out));
+    QVERIFY2(out.contains(QStringLiteral("stopped after 600 scans, F2")), qPrintable(out));
 }
 
 void TestModbusCli::clientWithoutTwinReportsAndRuns()
