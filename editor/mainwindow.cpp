@@ -44,6 +44,8 @@
 #include "editor/simulation/packml/packmlsimulationdock.h"
 #include "editor/simulation/packml/packmlsimulationmarks.h"
 #include "editor/simulation/packml/packmlsimulationsession.h"
+#include "editor/simulation/modbusconnectdialog.h"
+#include "editor/simulation/modbusconnection.h"
 #include "editor/simulation/simulationchartmarks.h"
 #include "editor/simulation/simulationdock.h"
 #include "editor/simulation/simulationsession.h"
@@ -163,6 +165,7 @@ MainWindow::MainWindow(Translators& translators, DockContents contents, QWidget*
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
     setDockOptions(AnimatedDocks | AllowTabbedDocks | AllowNestedDocks);
     m_session = new SimulationSession(m_document, this);
+    m_modbus = new ModbusConnection(m_session, this);
     m_chartMarks = new SimulationChartMarks(m_session, m_scene, this);
     m_machineTab = new MachineTab(m_centralTabs, m_document, m_session, this);
     m_packmlSession = new PackmlSimulationSession(m_document, this);
@@ -559,6 +562,17 @@ void MainWindow::createActions()
                           SimulationDock::singleScanShortcut());
     m_resetSimulationAction =
         action("resetSimulationAction", [this] { isPackml() ? m_packmlSession->reset() : m_session->reset(); });
+    m_connectAction = action("modbusConnectAction", &MainWindow::connectModbus);
+    m_disconnectAction = action("modbusDisconnectAction", [this] { m_modbus->disconnectLink(); });
+    m_disconnectAction->setEnabled(false);
+    connect(m_modbus, &ModbusConnection::connectedChanged, m_disconnectAction, &QAction::setEnabled);
+    // While linked the link's clock runs the scans: Run waits.
+    connect(m_modbus, &ModbusConnection::connectedChanged, this,
+            [this](bool connected) { m_runAction->setEnabled(!connected && m_session->isActive()); });
+    connect(m_modbus, &ModbusConnection::statusChanged, this, [this] {
+        if (m_simulationDock)
+            m_simulationDock->setLinkStatus(m_modbus->statusText());
+    });
     m_stepBackAction = action("stepBackAction", [this] { isPackml() ? m_packmlSession->stepBack() : m_session->stepBack(); },
                               SimulationDock::stepBackShortcut());
     m_stepForwardAction = action("stepForwardAction",
@@ -694,6 +708,8 @@ void MainWindow::createMenus()
     m_simulationMenu->addSeparator();
     m_simulationMenu->addActions({m_runAction, m_scanAction, m_stepBackAction, m_stepForwardAction,
                                   m_resetSimulationAction});
+    m_simulationMenu->addSeparator();
+    m_simulationMenu->addActions({m_connectAction, m_disconnectAction});
     m_simulationMenu->addSeparator();
     m_simulationMenu->addAction(m_verifyAction);
     m_simulationMenu->addAction(m_exactTimeAction);
@@ -1047,6 +1063,11 @@ void MainWindow::retranslate()
     m_runAction->setStatusTip(tr("Run scans at the speed set in the Simulation dock, or pause them"));
     m_scanAction->setText(tr("Single S&can"));
     m_resetSimulationAction->setText(tr("R&eset Simulation"));
+    m_connectAction->setText(tr("Co&nnect…"));
+    m_connectAction->setStatusTip(tr("Link the simulation to a digital twin, a soft PLC or an HMI over Modbus TCP; "
+                                     "it then runs in real time"));
+    m_disconnectAction->setText(tr("&Disconnect"));
+    m_disconnectAction->setStatusTip(tr("End the Modbus TCP link"));
     m_stepBackAction->setText(tr("Step &Back"));
     m_stepBackAction->setStatusTip(tr("Show the previous scan of the run; a scan or Run from there continues "
                                       "from it and drops the later scans"));
@@ -1368,6 +1389,27 @@ void MainWindow::about()
            "GEMMA template, write the conditions of their transitions, and generate the IEC 61131-3 "
            "program that runs them (Structured Text, PLCopen XML).</p>")
             .arg(QStringLiteral(GGSTUDIO_VERSION)));
+}
+
+void MainWindow::connectModbus()
+{
+    if (isPackml()) {
+        showEditFailure(tr("The Modbus link is for GEMMA models; PackML models are not linked yet"));
+        return;
+    }
+    auto* dialog = new ModbusConnectDialog(m_document->model().variables(), this);
+    dialog->setObjectName(QStringLiteral("modbusConnectDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        QString error;
+        if (m_modbus->connectLink(dialog->options(), &error))
+            return;
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Connect"),
+                                    tr("The Modbus link could not start: %1").arg(error), QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
+    dialog->open();
 }
 
 void MainWindow::showEditFailure(const QString& message)

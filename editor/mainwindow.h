@@ -46,6 +46,7 @@ class ProblemsDock;
 class RecentFiles;
 class Selection;
 class Settings;
+class ModbusConnection;
 class SimulationChartMarks;
 class SimulationDock;
 class SimulationSession;
@@ -89,6 +90,8 @@ public:
     // The Machine tab (nullptr view while the model has no machine).
     MachineTab* machineTab() const { return m_machineTab; }
     SimulationSession* simulationSession() const { return m_session; }
+    // Simulation > Connect's link to a digital twin over Modbus TCP.
+    ModbusConnection* modbusConnection() const { return m_modbus; }
     VerificationRunner* verificationRunner() const { return m_verification; }
     // False while the docks are the empty frames of DockContents::AfterFirstFrame.
     bool docksReady() const { return m_dockFrames.isEmpty(); }
@@ -114,6 +117,9 @@ public slots:
     // none and is a simple step (a macro-step or an enclosing step without
     // one opens on an empty drawing that offers to create it).
     bool openNestedGrafcet(const QString& stepId);
+    // Simulation > Connect…: the dialog (not modal to the event loop), then
+    // the link; a link that cannot start says why.
+    void connectModbus();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -281,6 +287,9 @@ private:
     QAction* m_runAction = nullptr;
     QAction* m_scanAction = nullptr;
     QAction* m_resetSimulationAction = nullptr;
+    QAction* m_connectAction = nullptr;
+    QAction* m_disconnectAction = nullptr;
+    ModbusConnection* m_modbus = nullptr;
     QAction* m_stepBackAction = nullptr;
     QAction* m_stepForwardAction = nullptr;
     QAction* m_verifyAction = nullptr;

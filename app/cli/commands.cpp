@@ -20,6 +20,9 @@
 #include "cycletime.h"
 #include "faultoption.h"
 #include "loadreport.h"
+#ifdef GGSTUDIO_HAVE_MODBUS
+#include "modbussimulate.h"
+#endif
 #include "packmlsimulate.h"
 #include "terminal.h"
 #include "testcommand.h"
@@ -612,6 +615,20 @@ int commandSimulate(const Arguments& args, Streams streams)
     std::unique_ptr<core::Model> model = loadOrReport(files[0], streams.err, core::TemplateSupport::GemmaAndPackML);
     if (!model)
         return UnreadableInput;
+    if (args.has("--modbus-server") || args.has("--modbus-client") || args.has("--print-modbus-map")
+        || args.has("--modbus-map") || args.has("--unit-id")) {
+        if (model->templateKind() == core::TemplateKind::PackML)
+            return usageError(streams.err, "the Modbus link is for GEMMA models; PackML models are not linked yet");
+        if (files.size() == 2)
+            return usageError(streams.err, "a scenario cannot be played while linked over Modbus: the twin plays the inputs");
+        if (!faults.empty() || args.has("--explain") || args.has("--trace"))
+            return usageError(streams.err, "--fault, --trace and --explain are not available with the Modbus link");
+#ifdef GGSTUDIO_HAVE_MODBUS
+        return simulateModbus(args, files[0], *model, scans, streams);
+#else
+        return usageError(streams.err, "this ggstudio-cli was built without Qt SerialBus: the Modbus link is not available");
+#endif
+    }
     if (model->templateKind() == core::TemplateKind::PackML) {
         if (args.has("--explain"))
             return usageError(streams.err, "--explain is not available for PackML models yet");
@@ -691,7 +708,8 @@ const std::map<std::string, Command>& commands()
         {"convert", {commandConvert, {"--to"}, {}}},
         {"export", {commandExport, {"--output", "--dialect", "--format", "--cycle-time"}, {"--force"}}},
         {"st", {commandSt, {"--dialect", "--step"}, {}}},
-        {"simulate", {commandSimulate, {"--scans", "--fault"}, {"--trace", "--explain", "--open-loop"}}},
+        {"simulate", {commandSimulate, {"--scans", "--fault", "--modbus-server", "--modbus-client", "--modbus-map", "--unit-id"},
+                      {"--trace", "--explain", "--open-loop", "--print-modbus-map"}}},
         {"test", {commandTest, {"--junit", "--models"}, {}}},
         {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property", "--time-limit"},
                     {"--exact-time", "--machine"}}},

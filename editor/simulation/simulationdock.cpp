@@ -349,6 +349,12 @@ QWidget* SimulationDock::createOffPage()
     return page;
 }
 
+void SimulationDock::setLinkStatus(const QString& text)
+{
+    m_linkLabel->setText(text);
+    m_linkLabel->setVisible(!text.isEmpty());
+}
+
 QWidget* SimulationDock::createOnPage()
 {
     auto* page = new QWidget(this);
@@ -356,6 +362,13 @@ QWidget* SimulationDock::createOnPage()
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
     layout->addWidget(createControls());
+    m_linkLabel = new QLabel(page);
+    m_linkLabel->setObjectName(QStringLiteral("modbusLinkLabel"));
+    m_linkLabel->setWordWrap(true);
+    m_linkLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_linkLabel->setContentsMargins(6, 4, 6, 4);
+    m_linkLabel->hide();
+    layout->addWidget(m_linkLabel);
 
     auto* splitter = new QSplitter(Qt::Vertical, page);
     splitter->setChildrenCollapsible(false);

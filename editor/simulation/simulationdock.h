@@ -64,6 +64,9 @@ public:
     QListWidget* failureList() const { return m_failureList; }
     QLabel* replayLabel() const { return m_replayLabel; }
     QLabel* statusLabel() const { return m_statusLabel; }
+    // The Modbus link's status (Simulation > Connect); hidden when empty.
+    QLabel* linkLabel() const { return m_linkLabel; }
+    void setLinkStatus(const QString& text);
     // "Unstable: ..." while a nested GRAFCET's last call found no stable
     // situation (until stable); hidden otherwise.
     QLabel* unstableLabel() const { return m_unstableLabel; }
@@ -169,6 +172,7 @@ private:
     QPushButton* m_recordButton = nullptr;
     QPushButton* m_replayButton = nullptr;
     QLabel* m_replayLabel = nullptr;
+    QLabel* m_linkLabel = nullptr;
     QListWidget* m_failureList = nullptr;
     QWidget* m_scenarioTab = nullptr;
 

@@ -98,7 +98,7 @@ const core::Simulator* SimulationSession::simulator() const
 
 void SimulationSession::run()
 {
-    if (!isActive() || isRunning())
+    if (!isActive() || isRunning() || m_linked) // linked: the link's clock runs the scans
         return;
     continueFromViewedScan();
     // The first scan comes with the first tick rather than a whole period later.
@@ -611,9 +611,22 @@ const core::machine::MachineState* SimulationSession::machineState() const
     return &m_loop->state();
 }
 
+void SimulationSession::setLinked(bool linked)
+{
+    if (linked == m_linked)
+        return;
+    if (linked) {
+        pause();
+        stopReplay();
+    }
+    m_linked = linked;
+    if (isActive()) // leaving the simulation ends a link after the simulator is gone
+        emit inputsChanged();
+}
+
 bool SimulationSession::isMachineDriven(int index) const
 {
-    if (!m_loop || index < 0 || static_cast<std::size_t>(index) >= m_simulator->variableNames().size())
+    if (!m_loop || m_linked || index < 0 || static_cast<std::size_t>(index) >= m_simulator->variableNames().size())
         return false;
     return m_loop->drivesVariable(m_simulator->variableNames()[static_cast<std::size_t>(index)]);
 }
@@ -629,7 +642,7 @@ QString SimulationSession::machineOwner(int index) const
 
 bool SimulationSession::isClosedLoop() const
 {
-    return m_loop && !m_replayOpenLoop;
+    return m_loop && !m_replayOpenLoop && !m_linked;
 }
 
 // An open-loop replay starts from the machine at rest too, but with the

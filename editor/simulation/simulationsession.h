@@ -113,6 +113,12 @@ public:
     // The fault of the input (Simulator::variableNames() index) at the scan shown.
     core::machine::SensorFault sensorFault(int index) const;
 
+    // Linked to a digital twin over Modbus (editor/simulation/modbusconnection.h):
+    // the twin drives the inputs, so the machine stands aside (no closed loop,
+    // no input refused as the machine's); a run or replay is stopped.
+    bool isLinked() const { return m_linked; }
+    void setLinked(bool linked);
+
     bool isRunning() const;
     void run();
     void pause();
@@ -262,6 +268,7 @@ private:
     QString m_replayFile;
     int m_replayExpectations = 0;
     bool m_replayOpenLoop = false;
+    bool m_linked = false;
     std::unique_ptr<core::Scenario> m_scenario;
     std::unique_ptr<core::ScenarioRunner> m_runner;
     std::vector<core::ScenarioFailure> m_replayFailures;

@@ -36,7 +36,8 @@ bool SimulationSession::injectFault(const core::machine::Fault& fault, QString* 
 
 core::machine::SensorFault SimulationSession::sensorFault(int index) const
 {
-    if (!m_loop || index < 0 || static_cast<std::size_t>(index) >= m_simulator->variableNames().size())
+    // Linked to a twin, the machine stands aside: its faults do not show.
+    if (!m_loop || m_linked || index < 0 || static_cast<std::size_t>(index) >= m_simulator->variableNames().size())
         return core::machine::SensorFault::None;
     const std::string& name = m_simulator->variableNames()[static_cast<std::size_t>(index)];
     if (m_viewed) {
