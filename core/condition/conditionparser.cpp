@@ -177,7 +177,26 @@ bool isStepActivityName(std::string_view name)
         && std::all_of(name.begin() + 1, name.end(), [](char c) { return isDigit(c); });
 }
 
-// What the Property context adds: `->`, `in`, `S.Xn`.
+// `/faulted` then the word's end at `at` (spaces allowed around the slash).
+bool followedByFaulted(std::string_view text, std::size_t at)
+{
+    const auto skipSpaces = [&] {
+        while (at < text.size() && (text[at] == ' ' || text[at] == '\t'))
+            ++at;
+    };
+    skipSpaces();
+    if (at >= text.size() || text[at] != '/')
+        return false;
+    ++at;
+    skipSpaces();
+    constexpr std::string_view kWord = "faulted";
+    if (!equalsIgnoreCase(text.substr(at, kWord.size()), kWord))
+        return false;
+    at += kWord.size();
+    return at >= text.size() || !(isIdentifierStart(text[at]) || isDigit(text[at]) || isNonAscii(text[at]));
+}
+
+// What the Property context adds: `->`, `in`, `S.Xn`, `2s/faulted`.
 Token scanPropertyToken(std::string_view text, std::size_t begin)
 {
     if (text.substr(begin).starts_with("->"))
@@ -186,7 +205,7 @@ Token scanPropertyToken(std::string_view text, std::size_t begin)
     if (token.kind == TokenKind::Identifier && equalsIgnoreCase(token.text, "in"))
         token.kind = TokenKind::In;
     else if (token.kind == TokenKind::Invalid && token.text.find('#') == std::string_view::npos
-             && parseDurationMs(token.text))
+             && parseDurationMs(token.text) && followedByFaulted(text, begin + token.text.size()))
         token.kind = TokenKind::Duration; // `2s/faulted` (verification with single faults)
     else if (token.kind == TokenKind::Invalid) {
         // S.Xn with any n, 0 included: a GRAFCET without step n is the
