@@ -212,14 +212,14 @@ struct Layout {
     int tokens = 3;
     int x = 0, outputs = 0, complete = 0, timers = 0, bools = 0, prev = 0, size = 0;
     int timerBytes = 2; // per TON: enough for the largest value stored (little-endian)
-    // Single faults: at `fault`, the fault in effect (2 bytes: 0 none, else
+    // Single faults: at `fault`, the fault in effect (4 bytes: 0 none, else
     // 1 + its index in faultChoices), a flickering sensor's reading for the
     // next scan (1 byte), the scans it has been in effect (4 bytes,
     // saturated where no property reads more); -1 without faults.
     int fault = -1;
 };
 
-constexpr int kFaultBytes = 7;
+constexpr int kExplorerFaultBytes = 9;
 
 // One answer the chooser gave, in the order the scan asked.
 struct Decision {
@@ -735,13 +735,13 @@ void ProgramExplorer::Impl::beginFaults()
     faultSignal = -1;
     if (layout.fault < 0 || faultChoices.empty())
         return;
-    std::uint32_t fault = faultField(0, 2);
+    std::uint32_t fault = faultField(0, 4);
     const bool begins = fault == 0;
     if (begins) {
         const int value = chooser.choose(static_cast<int>(faultChoices.size()) + 1);
         chooser.decisions.push_back({Decision::Kind::Fault, -1, value});
         fault = static_cast<std::uint32_t>(value);
-        setFaultField(0, 2, fault);
+        setFaultField(0, 4, fault);
     }
     for (const FaultChoice& choice : faultChoices) {
         if (choice.component < 0)
@@ -761,11 +761,11 @@ void ProgramExplorer::Impl::beginFaults()
         // The opposite of what the scan would have read (MachineLoop::writeReading).
         const auto signal = static_cast<std::size_t>(choice.signal);
         const bool reading = abstractMachine ? abstractMachine->signal(signal) : machineState->signal(signal);
-        work[static_cast<std::size_t>(layout.fault + 2)] = reading ? 0 : 1;
+        work[static_cast<std::size_t>(layout.fault + 4)] = reading ? 0 : 1;
     }
     if (faultScanLimit > 0)
-        setFaultField(3, 4, static_cast<std::uint32_t>(
-                                std::min<std::int64_t>(faultField(3, 4) + 1, faultScanLimit)));
+        setFaultField(5, 4, static_cast<std::uint32_t>(
+                                std::min<std::int64_t>(faultField(5, 4) + 1, faultScanLimit)));
 }
 
 // What the program reads of the sensor under the fault in effect.
@@ -774,7 +774,7 @@ bool ProgramExplorer::Impl::faultedSensor(bool machineValue) const
     switch (faultKind) {
     case machine::FaultKind::StuckTrue: return true;
     case machine::FaultKind::StuckFalse: return false;
-    case machine::FaultKind::Flicker: return work[static_cast<std::size_t>(layout.fault + 2)] != 0;
+    case machine::FaultKind::Flicker: return work[static_cast<std::size_t>(layout.fault + 4)] != 0;
     default: return machineValue;
     }
 }
@@ -856,7 +856,7 @@ void ProgramExplorer::Impl::compileSteps()
     layout.size = layout.prev + static_cast<int>(edgeSlots.size());
     if (singleFaults) {
         layout.fault = layout.size;
-        layout.size += kFaultBytes;
+        layout.size += kExplorerFaultBytes;
     }
     timerCache.assign(static_cast<std::size_t>(maxTimers), -1);
     failSeen.assign(transitionIds.size(), 0);
@@ -1353,8 +1353,8 @@ bool ProgramExplorer::Impl::evalNode(const ExpressionInfo& info, int index)
         return i >= 0 && work[u(layout.x + i)] != 0 && timerElapsed(n.index);
     }
     case NodeRole::Complete: return work[u(layout.complete)] != 0;
-    case NodeRole::Faulted: return layout.fault >= 0 && faultField(0, 2) != 0;
-    case NodeRole::FaultTime: return layout.fault >= 0 && faultField(0, 2) != 0 && faultField(3, 4) >= u(n.index);
+    case NodeRole::Faulted: return layout.fault >= 0 && faultField(0, 4) != 0;
+    case NodeRole::FaultTime: return layout.fault >= 0 && faultField(0, 4) != 0 && faultField(5, 4) >= u(n.index);
     case NodeRole::Edge: {
         if (!firstEvolution || n.slot < 0)
             return false;
@@ -1869,7 +1869,7 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
     activeGrafcet = nullptr;
     propertyPhase = false;
     if (faultSignal >= 0 && faultKind == machine::FaultKind::Flicker)
-        work[u(layout.fault + 2)] ^= 1; // the next scan reads the opposite
+        work[u(layout.fault + 4)] ^= 1; // the next scan reads the opposite
     advanceMachine();
     to = work;
     return outcome;
@@ -2034,7 +2034,7 @@ void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
     if (layout.fault >= 0) {
         const auto at = static_cast<std::size_t>(layout.fault);
         for (const State* state : statesByIndex)
-            result.faultedStates += ((*state)[at] | (*state)[at + 1]) != 0 ? 1 : 0;
+            result.faultedStates += ((*state)[at] | (*state)[at + 1] | (*state)[at + 2] | (*state)[at + 3]) != 0 ? 1 : 0;
     }
     for (const std::vector<Edge>& out : edges)
         result.scans += out.size();
