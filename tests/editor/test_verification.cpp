@@ -32,10 +32,12 @@
 #include "editor/text/diagnostictext.h"
 #include "editor/text/displaytext.h"
 #include "editor/text/elementlabels.h"
+#include "editor/text/propertyproblemtext.h"
 #include "editor/verificationrunner.h"
 #include "editor/window/statusindicators.h"
 
 #include "core/formats/modelfiles.h"
+#include "core/verification/property.h"
 
 #include <QToolButton>
 #include <QAction>
@@ -1026,6 +1028,14 @@ void TestVerification::singleFaultsFromTheMenu()
     QVERIFY(m_runner->result().faultChoices > 0);
     QCOMPARE(m_runner->result().propertyVerdicts.at(property).outcome, core::PropertyOutcome::Violated);
     QVERIFY(panel->assumptionsLabel()->text().endsWith(QStringLiteral("Single faults")));
+
+    // `faulted` outside such a run: the Properties panel's wording of GP007.
+    const std::vector<core::PropertyProblem> problems
+        = core::checkProperty(m_window->document()->model(), "never faulted AND in F1");
+    QCOMPARE(problems.size(), std::size_t(1));
+    QCOMPARE(editor::propertyProblemText(problems.front()),
+             QStringLiteral("'faulted' is only defined when verifying with single faults (Simulation > Verify with "
+                            "Single Faults, with the machine)"));
 
     // Without the machine, single faults are not offered and change nothing.
     withMachine->setChecked(false);
