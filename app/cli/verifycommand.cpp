@@ -151,8 +151,10 @@ std::string promelaText(const core::Model& model, const core::VerificationOption
     program.complete = options.complete;
     program.properties = core::propertiesToCheck(model, options);
     program.exactTime = options.exactTime;
-    if (core::runsClosedLoop(model, options))
+    if (core::runsClosedLoop(model, options)) {
         program.machine = &model.machine();
+        program.singleFaults = options.faults == core::VerificationOptions::Faults::Single;
+    }
     return core::buildProgramPromela(model, program).text;
 }
 
@@ -240,12 +242,6 @@ int commandVerify(const Arguments& args, Streams streams)
     }
     if (faults && !closedLoop) {
         streams.err << "ggstudio-cli: --faults single needs --machine: faults are injected into the model's machine"
-                    << lineEnd << "Try 'ggstudio-cli --help'." << lineEnd;
-        return UsageError;
-    }
-    if (faults && args.value("--promela")) {
-        streams.err << "ggstudio-cli: --promela does not write faults: verify with --faults single, or write the "
-                       "machine without them"
                     << lineEnd << "Try 'ggstudio-cli --help'." << lineEnd;
         return UsageError;
     }
