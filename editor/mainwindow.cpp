@@ -596,11 +596,20 @@ void MainWindow::createActions()
     m_withMachineAction->setCheckable(true);
     connect(m_withMachineAction, &QAction::toggled, this,
             [this](bool withMachine) { m_verification->setWithMachine(withMachine); });
+    // Single faults: offered only while verifying with the machine.
+    m_singleFaultsAction = new QAction(this);
+    m_singleFaultsAction->setObjectName(QStringLiteral("verifySingleFaultsAction"));
+    m_singleFaultsAction->setCheckable(true);
+    m_singleFaultsAction->setEnabled(false);
+    connect(m_singleFaultsAction, &QAction::toggled, this,
+            [this](bool singleFaults) { m_verification->setSingleFaults(singleFaults); });
     auto offerMachine = [this] {
         core::VerificationOptions withMachine;
         withMachine.closedLoop = true;
         m_withMachineAction->setEnabled(core::runsClosedLoop(m_document->model(), withMachine));
+        m_singleFaultsAction->setEnabled(m_withMachineAction->isEnabled() && m_withMachineAction->isChecked());
     };
+    connect(m_withMachineAction, &QAction::toggled, this, offerMachine);
     connect(m_document, &Document::machineChanged, this, offerMachine);
     connect(m_document, &Document::modelReplaced, this, offerMachine);
     connect(m_document, &Document::modelReset, this, offerMachine);
@@ -714,6 +723,7 @@ void MainWindow::createMenus()
     m_simulationMenu->addAction(m_verifyAction);
     m_simulationMenu->addAction(m_exactTimeAction);
     m_simulationMenu->addAction(m_withMachineAction);
+    m_simulationMenu->addAction(m_singleFaultsAction);
 
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->setObjectName("helpMenu");
@@ -1084,6 +1094,9 @@ void MainWindow::retranslate()
     m_withMachineAction->setText(tr("Verify with the &Machine"));
     m_withMachineAction->setStatusTip(tr("Explore the program with the model's machine: the sensors it drives follow "
                                          "the cylinders and conveyors instead of taking any value"));
+    m_singleFaultsAction->setText(tr("Verify with Single &Faults"));
+    m_singleFaultsAction->setStatusTip(tr("With the machine, also explore any one fault from any scan on: a sensor "
+                                          "stuck or flickering, a cylinder or conveyor jammed"));
 
     m_userGuideAction->setText(tr("&User Guide"));
     m_userGuideAction->setStatusTip(tr("How to build a model, simulate, verify and export, offline; F1 opens it "

@@ -295,6 +295,7 @@ private:
     QAction* m_verifyAction = nullptr;
     QAction* m_exactTimeAction = nullptr;
     QAction* m_withMachineAction = nullptr;
+    QAction* m_singleFaultsAction = nullptr;
     QAction* m_userGuideAction = nullptr;
     UserGuide* m_userGuide = nullptr; // made on first use
     QAction* m_aboutAction = nullptr;

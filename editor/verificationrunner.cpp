@@ -36,6 +36,7 @@ struct VerificationRunner::Job {
     std::map<std::string, core::CompleteAssumption> complete;
     bool exactTime = false;
     bool withMachine = false;
+    bool singleFaults = false;
     std::chrono::milliseconds timeLimit{0};
     std::atomic<bool> cancelled{false};
     core::VerificationResult result;
@@ -104,6 +105,7 @@ void VerificationRunner::start()
     auto job = std::make_shared<Job>(m_document->model(), m_assumedAutomatic);
     job->exactTime = m_exactTime;
     job->withMachine = m_withMachine;
+    job->singleFaults = m_singleFaults;
     job->timeLimit = m_timeLimit;
     m_current = job;
     m_wasCancelled = false;
@@ -219,6 +221,16 @@ void VerificationRunner::setWithMachine(bool withMachine)
     emit assumptionsChanged();
 }
 
+void VerificationRunner::setSingleFaults(bool singleFaults)
+{
+    if (singleFaults == m_singleFaults)
+        return;
+    m_singleFaults = singleFaults;
+    if (isRunning() && m_current->singleFaults != m_singleFaults)
+        cancel();
+    emit assumptionsChanged();
+}
+
 bool VerificationRunner::nextRunClosedLoop() const
 {
     core::VerificationOptions options;
@@ -285,6 +297,8 @@ void VerificationRunner::runJob(const std::shared_ptr<Job>& job)
     options.complete = job->complete;
     options.exactTime = job->exactTime;
     options.closedLoop = job->withMachine;
+    if (job->singleFaults)
+        options.faults = core::VerificationOptions::Faults::Single;
     options.timeLimit = job->timeLimit;
     options.cancelled = [job] { return job->cancelled.load(std::memory_order_relaxed); };
     try {

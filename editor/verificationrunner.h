@@ -91,6 +91,17 @@ public:
     // Whether the last result was explored with the machine.
     bool resultClosedLoop() const { return hasResult() && m_result->closedLoop; }
 
+    // Whether the next closed-loop runs also explore any single fault of the
+    // machine (VerificationOptions::Faults::Single; docs/verification.md,
+    // "Single faults (--faults single)"). Without the machine it has no
+    // effect. A change abandons a run under way and emits assumptionsChanged().
+    void setSingleFaults(bool singleFaults);
+    bool singleFaults() const { return m_singleFaults; }
+    // Whether the next run would explore single faults: asked for, in closed loop.
+    bool nextRunSingleFaults() const { return m_singleFaults && nextRunClosedLoop(); }
+    // Whether the last result was explored with single faults.
+    bool resultSingleFaults() const { return hasResult() && m_result->singleFaults; }
+
     // How long the next runs may take before they stop, undecided where they
     // had to (GV100). Not an assumption: a change leaves a run under way and
     // the last result as they are.
@@ -107,11 +118,12 @@ public:
     // unlike isStale() this does not stop a replay.
     bool assumptionsDiffer() const
     {
-        return completeAssumptionsDiffer() || timeCountingDiffers() || machineUseDiffers();
+        return completeAssumptionsDiffer() || timeCountingDiffers() || machineUseDiffers() || faultUseDiffers();
     }
     bool completeAssumptionsDiffer() const;
     bool timeCountingDiffers() const { return hasResult() && m_resultExactTime != m_exactTime; }
     bool machineUseDiffers() const { return hasResult() && resultClosedLoop() != nextRunClosedLoop(); }
+    bool faultUseDiffers() const { return hasResult() && resultSingleFaults() != nextRunSingleFaults(); }
 
 signals:
     void started();
@@ -158,6 +170,7 @@ private:
     QStringList m_currentWithAutomatic;
     bool m_exactTime = false;
     bool m_withMachine = false;
+    bool m_singleFaults = false;
     std::chrono::milliseconds m_timeLimit = core::VerificationOptions().timeLimit;
     QStringList m_resultAutomatic;
     bool m_resultExactTime = false;

@@ -85,7 +85,7 @@ const char* const kUsage =
     "      Exit 0 when every scenario passes, 1 when one fails, 2 when a file cannot be read.\n"
     "  verify MODEL [--counterexamples DIR] [--promela OUT.pml]\n"
     "         [--complete-automatic STEP[,STEP...]|all] [--property \"never P\"]... [--exact-time]\n"
-    "         [--time-limit 4s] [--machine]\n"
+    "         [--time-limit 4s] [--machine [--faults single]]\n"
     "      Prove properties of both layers (docs/verification.md): print FILE: ELEMENTS:\n"
     "      severity: CODE: message lines; with DIR, write each counterexample as a scenario\n"
     "      file there; with --promela, also write the model for SPIN. The model's own\n"
@@ -98,6 +98,9 @@ const char* const kUsage =
     "      --machine explores the program with the model's machine (closed loop): the inputs\n"
     "      its sensors drive follow the machine, operator inputs stay free, time is counted in\n"
     "      scans; counterexamples replay with the machine (simulate); --promela writes it too.\n"
+    "      --faults single adds, at any scan, any one sensor stuck TRUE, stuck FALSE or\n"
+    "      flickering, or one cylinder or conveyor jammed; properties may read faulted and\n"
+    "      T/faulted (a fault in effect, for at least T); counterexamples carry the fault.\n"
     "      Each property ends as holds, violated or undecided. Exit 1 when a finding is an\n"
     "      error or a warning (a property violated), else 3 when something is undecided (a\n"
     "      property, or a claim whose run does not replay); 2 when a file cannot be written.\n"
@@ -711,7 +714,8 @@ const std::map<std::string, Command>& commands()
         {"simulate", {commandSimulate, {"--scans", "--fault", "--modbus-server", "--modbus-client", "--modbus-map", "--unit-id"},
                       {"--trace", "--explain", "--open-loop", "--print-modbus-map"}}},
         {"test", {commandTest, {"--junit", "--models"}, {}}},
-        {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property", "--time-limit"},
+        {"verify", {commandVerify, {"--counterexamples", "--promela", "--complete-automatic", "--property", "--time-limit",
+                     "--faults"},
                     {"--exact-time", "--machine"}}},
     };
     return table;

@@ -151,8 +151,10 @@ std::string promelaText(const core::Model& model, const core::VerificationOption
     program.complete = options.complete;
     program.properties = core::propertiesToCheck(model, options);
     program.exactTime = options.exactTime;
-    if (core::runsClosedLoop(model, options))
+    if (core::runsClosedLoop(model, options)) {
         program.machine = &model.machine();
+        program.singleFaults = options.faults == core::VerificationOptions::Faults::Single;
+    }
     return core::buildProgramPromela(model, program).text;
 }
 
@@ -232,6 +234,17 @@ int commandVerify(const Arguments& args, Streams streams)
         }
     }
     const bool closedLoop = args.has("--machine");
+    const std::optional<std::string> faults = args.value("--faults");
+    if (faults && *faults != "single") {
+        streams.err << "ggstudio-cli: --faults '" << *faults << "': the only kind is single (--faults single)"
+                    << lineEnd << "Try 'ggstudio-cli --help'." << lineEnd;
+        return UsageError;
+    }
+    if (faults && !closedLoop) {
+        streams.err << "ggstudio-cli: --faults single needs --machine: faults are injected into the model's machine"
+                    << lineEnd << "Try 'ggstudio-cli --help'." << lineEnd;
+        return UsageError;
+    }
     if (closedLoop && loaded.model->machine().empty()) {
         streams.err << "ggstudio-cli: --machine: " << path
                     << " has no machine to verify with (docs/simulation.md, \"The virtual machine\")" << lineEnd;
@@ -249,6 +262,8 @@ int commandVerify(const Arguments& args, Streams streams)
         options.complete[id] = core::CompleteAssumption::Automatic;
     options.exactTime = args.has("--exact-time");
     options.closedLoop = closedLoop;
+    if (faults)
+        options.faults = core::VerificationOptions::Faults::Single;
     if (const std::optional<std::string> limit = args.value("--time-limit")) {
         const std::optional<std::chrono::milliseconds> parsed = parseTimeLimit(*limit);
         if (!parsed) {
@@ -260,7 +275,8 @@ int commandVerify(const Arguments& args, Streams streams)
         options.timeLimit = *parsed;
     }
     for (const std::string& property : args.values("--property")) {
-        const std::vector<core::PropertyProblem> problems = core::checkProperty(*loaded.model, property);
+        const std::vector<core::PropertyProblem> problems
+            = core::checkProperty(*loaded.model, property, core::PropertyAtoms{faults.has_value()});
         if (!problems.empty()) {
             streams.err << "ggstudio-cli: --property '" << property << "': column " << problems.front().span.begin + 1
                         << ": " << problems.front().message << lineEnd;
@@ -326,6 +342,9 @@ int commandVerify(const Arguments& args, Streams streams)
         streams.out << ", Complete automatic: " << joined(automatic);
     if (result.closedLoop)
         streams.out << ", closed loop";
+    if (result.singleFaults)
+        streams.out << ", single faults: " << result.faultChoices << " fault choices at every scan, "
+                    << result.faultedStates << " faulted states";
     streams.out << lineEnd;
     if (writeFailed)
         return UnreadableInput; // the output is incomplete: that comes first

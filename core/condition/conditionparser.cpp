@@ -177,7 +177,26 @@ bool isStepActivityName(std::string_view name)
         && std::all_of(name.begin() + 1, name.end(), [](char c) { return isDigit(c); });
 }
 
-// What the Property context adds: `->`, `in`, `S.Xn`.
+// `/faulted` then the word's end at `at` (spaces allowed around the slash).
+bool followedByFaulted(std::string_view text, std::size_t at)
+{
+    const auto skipSpaces = [&] {
+        while (at < text.size() && (text[at] == ' ' || text[at] == '\t'))
+            ++at;
+    };
+    skipSpaces();
+    if (at >= text.size() || text[at] != '/')
+        return false;
+    ++at;
+    skipSpaces();
+    constexpr std::string_view kWord = "faulted";
+    if (!equalsIgnoreCase(text.substr(at, kWord.size()), kWord))
+        return false;
+    at += kWord.size();
+    return at >= text.size() || !(isIdentifierStart(text[at]) || isDigit(text[at]) || isNonAscii(text[at]));
+}
+
+// What the Property context adds: `->`, `in`, `S.Xn`, `2s/faulted`.
 Token scanPropertyToken(std::string_view text, std::size_t begin)
 {
     if (text.substr(begin).starts_with("->"))
@@ -185,6 +204,9 @@ Token scanPropertyToken(std::string_view text, std::size_t begin)
     Token token = scanToken(text, begin);
     if (token.kind == TokenKind::Identifier && equalsIgnoreCase(token.text, "in"))
         token.kind = TokenKind::In;
+    else if (token.kind == TokenKind::Invalid && token.text.find('#') == std::string_view::npos
+             && parseDurationMs(token.text) && followedByFaulted(text, begin + token.text.size()))
+        token.kind = TokenKind::Duration; // `2s/faulted` (verification with single faults)
     else if (token.kind == TokenKind::Invalid) {
         // S.Xn with any n, 0 included: a GRAFCET without step n is the
         // property checker's to name (GP005), not "a qualified name".
@@ -379,6 +401,7 @@ public:
         : m_text(text)
         , m_tokens(std::move(tokens))
         , m_nested(context == Context::Nested)
+        , m_property(context == Context::Property)
         , m_lowestPrecedence(context == Context::Property ? precedence(BinaryOp::Implies) : 1)
     {
     }
@@ -548,8 +571,11 @@ private:
             return fail(ErrorKind::DurationWithoutStep, duration);
         advance();
         const Token& step = peek();
+        // In a property, `2s/faulted`: a fault has been in effect that long (number 0).
+        const bool faulted = m_property && step.kind == TokenKind::Identifier
+            && equalsIgnoreCase(step.text, "faulted");
         const int number = step.kind == TokenKind::Identifier ? stepActivityNumber(step.text) : 0;
-        if (number <= 0)
+        if (number <= 0 && !faulted)
             return fail(ErrorKind::DurationStepExpected, step);
         const std::int64_t milliseconds = *parseDurationMs(duration.text);
         if (milliseconds <= 0)
@@ -685,6 +711,7 @@ private:
     std::string_view m_text;
     std::vector<Token> m_tokens;
     bool m_nested = false;
+    bool m_property = false;
     int m_lowestPrecedence = 1;
     std::size_t m_position = 0;
     int m_parenNesting = 0;

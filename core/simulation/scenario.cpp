@@ -932,8 +932,9 @@ ScanRecord ScenarioRunner::step()
                 check(*action, record);
         }
     }
-    if (m_loop)
+    if (m_loop && !m_skipCycle)
         m_loop->afterScan();
+    m_skipCycle = false;
     m_failures.insert(m_failures.end(), m_lastFailures.begin(), m_lastFailures.end());
     return record;
 }

@@ -158,6 +158,10 @@ public:
 
     // Applies the sets of the next scan, runs it, checks its expectations.
     ScanRecord step();
+    // In closed loop: the next step() runs no machine cycle after its scan,
+    // so the simulator keeps the sensors that scan read (a replay's last
+    // scan, core/verification/closedloopreplay.h).
+    void skipNextMachineCycle() { m_skipCycle = true; }
     // Failures of the last step() only.
     const std::vector<ScenarioFailure>& lastFailures() const { return m_lastFailures; }
     // Every failure so far.
@@ -171,6 +175,7 @@ private:
     const Scenario& m_scenario;
     Simulator& m_simulator;
     machine::MachineLoop* m_loop = nullptr;
+    bool m_skipCycle = false;
     std::map<std::int64_t, std::vector<const ScenarioAction*>> m_byScan;
     std::vector<ScenarioFailure> m_failures;
     std::vector<ScenarioFailure> m_lastFailures;

@@ -74,6 +74,7 @@ void AbstractMachine::reset()
         p.pending = false;
         p.on = false;
         p.partsLeft = p.initialParts;
+        p.jammed = false;
     }
     for (Part& p : m_parts) {
         if (p.kind == ComponentKind::PartSource)
@@ -122,6 +123,8 @@ void AbstractMachine::move(Part& p, const std::function<int(int)>& choose)
         else
             p.phase = kBetween;
     };
+    if (p.jammed)
+        return; // as MachineState::move: it does not move, whatever its outputs
     switch (p.kind) {
     case ComponentKind::DoubleActingCylinder: {
         const bool extend = read(p, role::kExtend);

@@ -37,6 +37,11 @@ public:
     // or delay under way ends at this cycle, 0 where it goes on.
     void cycle(const std::function<int(int)>& choose);
 
+    // A jammed cylinder or conveyor does not move (fault.h): a cylinder
+    // between its ends stays between, a part stays where it is. Not part of
+    // the key: the caller keeps the fault and sets it before each cycle.
+    void setJammed(std::size_t component, bool jammed) { m_parts.at(component).jammed = jammed; }
+
     bool signal(std::size_t slot) const { return m_signals[slot] != 0; }
     void setSignal(std::size_t slot, bool value) { m_signals[slot] = value ? 1 : 0; }
 
@@ -57,6 +62,7 @@ private:
         int conveyor = -1;
         Phase phase = kAtStart;
         bool pending = false, on = false;
+        bool jammed = false;
         std::int64_t partsLeft = machine::kUnlimitedParts;
     };
 

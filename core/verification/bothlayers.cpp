@@ -103,6 +103,7 @@ explore::Options BothLayers::explorationOptions(bool exactTime) const
     options.exactTime = exactTime;
     options.decidePriorities = m_program.hasNestedGrafcets() || m_closedLoop;
     options.machine = m_closedLoop ? &m_model.machine() : nullptr;
+    options.singleFaults = m_closedLoop && m_options.faults == VerificationOptions::Faults::Single;
     options.maxStates = m_options.maxProgramStates;
     options.cancelled = m_options.cancelled;
     options.deadline = m_deadline;
@@ -115,6 +116,9 @@ void BothLayers::run()
     const explore::Exploration& e = m_explorer->run();
     m_result.bothLayers = true;
     m_result.programStates = e.states;
+    m_result.singleFaults = m_closedLoop && m_options.faults == VerificationOptions::Faults::Single;
+    m_result.faultChoices = e.faultChoices;
+    m_result.faultedStates = e.faultedStates;
     m_result.abstractions = e.abstractions;
     m_result.properties = m_properties;
     if (e.cancelled) {
@@ -600,7 +604,8 @@ void BothLayers::addProperties()
         const std::string& text = m_properties[p];
         const int index = static_cast<int>(p);
         if (!e.propertyChecked[p]) {
-            const std::vector<PropertyProblem> problems = checkProperty(m_model, text);
+            const std::vector<PropertyProblem> problems
+                = checkProperty(m_model, text, PropertyAtoms{m_result.singleFaults});
             const std::string why = problems.empty() ? std::string("it is empty") : problems.front().message;
             m_result.propertyVerdicts[p] = PropertyVerdict{PropertyOutcome::Undecided, "it cannot be checked: " + why};
             VerificationFinding f;

@@ -13,13 +13,14 @@ ScenarioRunResult replayClosedLoop(const Scenario& scenario, machine::MachineLoo
         simulator.setComplete(step, false);
     }
     loop.reset();
-    // A runner of the simulator alone: the machine's cycles are run here.
-    ScenarioRunner runner(scenario, simulator);
+    // In closed loop: the runner applies the fault lines and runs the
+    // machine's cycles, but none after the last scan.
+    ScenarioRunner runner(scenario, loop);
     ScenarioRunResult result;
     for (std::int64_t i = 0; i < scans && !simulator.fault(); ++i) {
+        if (i + 1 == scans)
+            runner.skipNextMachineCycle();
         result.records.push_back(runner.step());
-        if (i + 1 < scans)
-            loop.afterScan();
     }
     result.failures = runner.failures();
     result.fault = simulator.fault();

@@ -4,7 +4,9 @@
 // (--machine)"): the scenario is run as runScenario runs it with a
 // machine::MachineLoop, except that no machine cycle follows the last scan,
 // so that the simulator still holds the sensors that scan read and a
-// property evaluated on it sees what the verifier's last scan saw.
+// property evaluated on it sees what the verifier's last scan saw. Its
+// `fault` lines (a counterexample of --faults single) are applied as
+// runScenario applies them.
 
 #include "core/simulation/scenario.h"
 

@@ -102,6 +102,8 @@ enum class NodeRole {
     Step,        // Xn
     Duration,    // t/Xn
     Complete,    // Complete inside a nested GRAFCET
+    Faulted,     // a property's `faulted`: a fault is in effect (single faults)
+    FaultTime,   // a property's `T/faulted`: in effect for index scans at least
     Edge,        // RE / FE
     InStep,      // in S
     NestedStep,  // S.Xn
@@ -210,14 +212,23 @@ struct Layout {
     int tokens = 3;
     int x = 0, outputs = 0, complete = 0, timers = 0, bools = 0, prev = 0, size = 0;
     int timerBytes = 2; // per TON: enough for the largest value stored (little-endian)
+    // Single faults: at `fault`, the fault in effect (4 bytes: 0 none, else
+    // 1 + its index in faultChoices), a flickering sensor's reading for the
+    // next scan (1 byte), the scans it has been in effect (4 bytes,
+    // saturated where no property reads more); -1 without faults.
+    int fault = -1;
 };
+
+constexpr int kExplorerFaultBytes = 9;
 
 // One answer the chooser gave, in the order the scan asked.
 struct Decision {
     // NumberTest: a comparison of a free numeric variable with constants,
     // decided on the representatives still possible (Impl::numberPossible).
     // Machine: closed loop under the time abstraction, whether a travel or delay ends.
-    enum class Kind { Bool, Number, NumberTest, Opaque, Timer, Complete, Machine } kind = Kind::Bool;
+    // Fault: single faults, before the scan with no fault in effect: 0 none
+    // begins, else 1 + the fault's index in Impl::faultChoices.
+    enum class Kind { Bool, Number, NumberTest, Opaque, Timer, Complete, Machine, Fault } kind = Kind::Bool;
     int slot = -1; // Bool, Number: the variable; Timer: the timer; Complete: the step index
     int value = 0; // Bool, Opaque, Timer, Complete: 0/1; Number: representative index
 };
@@ -342,7 +353,12 @@ struct ProgramExplorer::Impl {
     // --- compiling -------------------------------------------------------------------
     void compileSlots(const Model& model);
     void compileMachine();
+    void compileFaults();
     void advanceMachine();
+    void beginFaults();
+    bool faultedSensor(bool machineValue) const;
+    std::uint32_t faultField(int offset, int bytes) const;
+    void setFaultField(int offset, int bytes, std::uint32_t value);
     void compileSteps();
     void compileGrafcet(CompiledStep& step);
     void compileProperties(const Model& model);
@@ -433,6 +449,19 @@ struct ProgramExplorer::Impl {
     std::optional<AbstractMachine> abstractMachine;
     std::vector<std::pair<std::size_t, int>> actuators;
     std::string machineStart; // the key of the machine's start state
+    // Single faults (Options::singleFaults): what a scan may begin, and in
+    // the scan being run, the sensor (signal slot) under a fault and how.
+    struct FaultChoice {
+        machine::Fault fault;
+        int signal = -1;    // stuck, flicker: the sensor's signal slot
+        int component = -1; // jam: the component's index
+    };
+    std::vector<FaultChoice> faultChoices;
+    bool singleFaults = false;
+    std::int64_t faultScanLimit = 0; // the most scans a `T/faulted` needs (0: none read)
+    bool compilingProperty = false;
+    int faultSignal = -1;
+    machine::FaultKind faultKind = machine::FaultKind::Clear;
     std::vector<ParsedProperty> parsedProperties;
     std::vector<const ExpressionInfo*> propertyInfos; // nullptr: skipped
 
@@ -515,6 +544,7 @@ ProgramExplorer::Impl::Impl(const Model& m, Options o)
     compileSlots(m);
     compileMachine();
     compileSteps();
+    compileFaults();
     compileProperties(m);
     for (const auto& [slot, list] : comparisons) {
         std::vector<sat::Atom> atoms;
@@ -635,6 +665,7 @@ void ProgramExplorer::Impl::compileMachine()
         return slot.type == IecType::Bool && slot.kind == wanted ? s : -1;
     };
     machineState.emplace(*options.machine, cycleMs, wire);
+    singleFaults = options.singleFaults;
     if (!options.exactTime) {
         abstractMachine.emplace(*options.machine, *machineState, cycleMs, wire);
         result.abstractions.push_back("machine travels and delays longer than one cycle may or may not have ended");
@@ -655,6 +686,97 @@ void ProgramExplorer::Impl::compileMachine()
         abstractMachine->appendKey(machineStart);
     else
         machineState->appendKey(machineStart);
+}
+
+// Single faults: every sensor the machine drives stuck TRUE, stuck FALSE or
+// flickering (signal table order), then every cylinder and conveyor jammed
+// (component order), as MachineLoop::applyFault applies them.
+void ProgramExplorer::Impl::compileFaults()
+{
+    if (!singleFaults)
+        return;
+    const std::vector<machine::SignalSlot>& table = machineState->signalSlots();
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        if (table[i].direction != machine::SignalDirection::Sensor)
+            continue;
+        const std::string& name = slots[static_cast<std::size_t>(table[i].variable)].name;
+        for (machine::FaultKind kind :
+             {machine::FaultKind::StuckTrue, machine::FaultKind::StuckFalse, machine::FaultKind::Flicker})
+            faultChoices.push_back(FaultChoice{machine::Fault{kind, name}, static_cast<int>(i), -1});
+    }
+    const std::vector<machine::Component>& components = options.machine->components;
+    for (std::size_t c = 0; c < components.size(); ++c) {
+        if (machine::canJam(components[c].kind))
+            faultChoices.push_back(
+                FaultChoice{machine::Fault{machine::FaultKind::Jam, components[c].name}, -1, static_cast<int>(c)});
+    }
+    result.faultChoices = faultChoices.size();
+}
+
+std::uint32_t ProgramExplorer::Impl::faultField(int offset, int bytes) const
+{
+    std::uint32_t value = 0;
+    for (int b = bytes - 1; b >= 0; --b)
+        value = (value << 8) | static_cast<unsigned char>(work[static_cast<std::size_t>(layout.fault + offset + b)]);
+    return value;
+}
+
+void ProgramExplorer::Impl::setFaultField(int offset, int bytes, std::uint32_t value)
+{
+    for (int b = 0; b < bytes; ++b, value >>= 8)
+        work[static_cast<std::size_t>(layout.fault + offset + b)] = static_cast<char>(value & 0xFF);
+}
+
+// Before the scan, the machine restored: with no fault in effect, a choice
+// of the fault that begins here (or none); then the fault in effect for
+// this scan's readings and the machine's next cycle.
+void ProgramExplorer::Impl::beginFaults()
+{
+    faultSignal = -1;
+    if (layout.fault < 0 || faultChoices.empty())
+        return;
+    std::uint32_t fault = faultField(0, 4);
+    const bool begins = fault == 0;
+    if (begins) {
+        const int value = chooser.choose(static_cast<int>(faultChoices.size()) + 1);
+        chooser.decisions.push_back({Decision::Kind::Fault, -1, value});
+        fault = static_cast<std::uint32_t>(value);
+        setFaultField(0, 4, fault);
+    }
+    for (const FaultChoice& choice : faultChoices) {
+        if (choice.component < 0)
+            continue;
+        const bool jammed = fault > 0 && &faultChoices[fault - 1] == &choice;
+        if (abstractMachine)
+            abstractMachine->setJammed(static_cast<std::size_t>(choice.component), jammed);
+        else
+            machineState->setJammed(static_cast<std::size_t>(choice.component), jammed);
+    }
+    if (fault == 0)
+        return;
+    const FaultChoice& choice = faultChoices[fault - 1];
+    faultSignal = choice.signal;
+    faultKind = choice.fault.kind;
+    if (begins && faultKind == machine::FaultKind::Flicker) {
+        // The opposite of what the scan would have read (MachineLoop::writeReading).
+        const auto signal = static_cast<std::size_t>(choice.signal);
+        const bool reading = abstractMachine ? abstractMachine->signal(signal) : machineState->signal(signal);
+        work[static_cast<std::size_t>(layout.fault + 4)] = reading ? 0 : 1;
+    }
+    if (faultScanLimit > 0)
+        setFaultField(5, 4, static_cast<std::uint32_t>(
+                                std::min<std::int64_t>(faultField(5, 4) + 1, faultScanLimit)));
+}
+
+// What the program reads of the sensor under the fault in effect.
+bool ProgramExplorer::Impl::faultedSensor(bool machineValue) const
+{
+    switch (faultKind) {
+    case machine::FaultKind::StuckTrue: return true;
+    case machine::FaultKind::StuckFalse: return false;
+    case machine::FaultKind::Flicker: return work[static_cast<std::size_t>(layout.fault + 4)] != 0;
+    default: return machineValue;
+    }
 }
 
 void ProgramExplorer::Impl::compileSteps()
@@ -732,6 +854,10 @@ void ProgramExplorer::Impl::compileSteps()
     layout.bools = layout.timers + layout.timerBytes * maxTimers;
     layout.prev = layout.bools + static_cast<int>(stateBoolSlots.size());
     layout.size = layout.prev + static_cast<int>(edgeSlots.size());
+    if (singleFaults) {
+        layout.fault = layout.size;
+        layout.size += kExplorerFaultBytes;
+    }
     timerCache.assign(static_cast<std::size_t>(maxTimers), -1);
     failSeen.assign(transitionIds.size(), 0);
     firedGlobal.assign(transitionIds.size(), 0);
@@ -855,13 +981,16 @@ void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
 void ProgramExplorer::Impl::compileProperties(const Model& m)
 {
     parsedProperties.reserve(options.properties.size()); // the infos point into it
+    compilingProperty = true;
     for (const std::string& text : options.properties) {
         parsedProperties.push_back(parseProperty(text));
-        const bool usable = parsedProperties.back().ok() && checkProperty(m, text).empty();
+        const bool usable
+            = parsedProperties.back().ok() && checkProperty(m, text, PropertyAtoms{singleFaults}).empty();
         result.propertyChecked.push_back(usable);
         propertyInfos.push_back(usable ? info(parsedProperties.back().expression, nullptr, nullptr, nullptr, nullptr)
                                        : nullptr);
     }
+    compilingProperty = false;
 }
 
 void ProgramExplorer::Impl::collectComparisons(const cond::Expression& expression)
@@ -934,6 +1063,10 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
             n.literalTrue = upper(node.text) == "TRUE";
             break;
         case cond::NodeKind::Variable: {
+            if (compilingProperty && isFaultedAtom(model, node)) {
+                n.role = NodeRole::Faulted;
+                break;
+            }
             n.slot = slotOf(node.text);
             n.role = NodeRole::BoolRead;
             ownOutputOf(n, node.text);
@@ -944,6 +1077,12 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
             n.index = node.number;
             break;
         case cond::NodeKind::StepDuration: {
+            if (compilingProperty && isFaultedAtom(model, node)) {
+                n.role = NodeRole::FaultTime;
+                n.index = static_cast<int>(std::min<std::int64_t>(faultedScansFor(node.durationMs, cycleMs), INT32_MAX));
+                faultScanLimit = std::max<std::int64_t>(faultScanLimit, n.index);
+                break;
+            }
             n.role = NodeRole::Duration;
             n.index = -1;
             if (timerOfNode) {
@@ -1094,7 +1233,8 @@ bool ProgramExplorer::Impl::readBool(int slot)
     case SlotClass::ConstBool: return cond::isTrue(s.initial);
     case SlotClass::MachineBool: {
         const auto signal = static_cast<std::size_t>(s.machineSignal);
-        return abstractMachine ? abstractMachine->signal(signal) : machineState->signal(signal);
+        const bool value = abstractMachine ? abstractMachine->signal(signal) : machineState->signal(signal);
+        return s.machineSignal == faultSignal ? faultedSensor(value) : value;
     }
     case SlotClass::FreeBool: {
         int& cached = boolCache[static_cast<std::size_t>(slot)];
@@ -1213,6 +1353,8 @@ bool ProgramExplorer::Impl::evalNode(const ExpressionInfo& info, int index)
         return i >= 0 && work[u(layout.x + i)] != 0 && timerElapsed(n.index);
     }
     case NodeRole::Complete: return work[u(layout.complete)] != 0;
+    case NodeRole::Faulted: return layout.fault >= 0 && faultField(0, 4) != 0;
+    case NodeRole::FaultTime: return layout.fault >= 0 && faultField(0, 4) != 0 && faultField(5, 4) >= u(n.index);
     case NodeRole::Edge: {
         if (!firstEvolution || n.slot < 0)
             return false;
@@ -1599,6 +1741,7 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
     std::fill(numberCache.begin(), numberCache.end(), -1);
     std::fill(numberPossible.begin(), numberPossible.end(), 0);
     std::fill(timerCache.begin(), timerCache.end(), -1);
+    beginFaults();
     if (logTimers) {
         timerLog.in.assign(timerCache.size(), -1);
         timerLog.reset.assign(timerCache.size(), 0);
@@ -1725,6 +1868,8 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
     }
     activeGrafcet = nullptr;
     propertyPhase = false;
+    if (faultSignal >= 0 && faultKind == machine::FaultKind::Flicker)
+        work[u(layout.fault + 4)] ^= 1; // the next scan reads the opposite
     advanceMachine();
     to = work;
     return outcome;
@@ -1886,6 +2031,11 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
 void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
 {
     result.states = statesByIndex.size();
+    if (layout.fault >= 0) {
+        const auto at = static_cast<std::size_t>(layout.fault);
+        for (const State* state : statesByIndex)
+            result.faultedStates += ((*state)[at] | (*state)[at + 1] | (*state)[at + 2] | (*state)[at + 3]) != 0 ? 1 : 0;
+    }
     for (const std::vector<Edge>& out : edges)
         result.scans += out.size();
     for (std::size_t s = 0; s < steps.size(); ++s) {
@@ -2372,6 +2522,7 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     std::int64_t scan = 0;
     State last;
     std::string firedAtEnd; // the GEMMA transition the last scan must fire (GV103, GV104)
+    std::int64_t faultScan = 0; // single faults: the scan the fault begins before
     for (std::size_t k = 0; k < path.size(); ++k) {
         const auto& [from, answers] = path[k];
         ++scan;
@@ -2410,6 +2561,10 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
                     current[d.slot] = value;
                     sets.push_back(slot.name + " = " + value);
                 }
+            } else if (d.kind == Decision::Kind::Fault && d.value > 0) {
+                const machine::Fault& fault = impl.faultChoices[static_cast<std::size_t>(d.value - 1)].fault;
+                text << "at " << scan << ": fault " << machine::toText(fault) << "\n";
+                faultScan = scan;
             } else if (d.kind == Decision::Kind::Complete) {
                 text << "at " << scan << ": set complete " << impl.steps[static_cast<std::size_t>(d.slot)].source->id
                      << " = " << (d.value ? "TRUE" : "FALSE") << "\n";
@@ -2450,7 +2605,9 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     if (!parsed.ok() || scan == 0)
         return out;
     Simulator simulator(impl.model);
-    if (!validateScenario(out.scenario, simulator).empty())
+    if (!validateScenario(out.scenario, simulator,
+                          impl.machineState ? FaultLines::CheckedByMachine : FaultLines::Refused)
+             .empty())
         return out;
     std::optional<machine::MachineLoop> loop;
     if (impl.machineState) {
@@ -2464,7 +2621,7 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     if (out.confirmed && event.kind == EventKind::PropertyViolated && event.property >= 0) {
         // The property itself, read on the simulator after the last scan.
         const ParsedProperty& property = impl.parsedProperties[static_cast<std::size_t>(event.property)];
-        out.confirmed = propertyViolatedOn(impl.model, property, simulator);
+        out.confirmed = propertyViolatedOn(impl.model, property, simulator, faultScan);
     }
     return out;
 }

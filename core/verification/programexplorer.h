@@ -81,6 +81,11 @@ struct Options {
     // Closed loop with this machine (it must outlive the explorer); nullptr
     // or an empty machine: every input is free.
     const machine::Machine* machine = nullptr;
+    // With the machine: before any scan while no fault is in effect, one
+    // sensor may become stuck TRUE, stuck FALSE or flicker, or one cylinder
+    // or conveyor jam, for the rest of the run (docs/verification.md,
+    // "Single faults (--faults single)"). The state keeps which.
+    bool singleFaults = false;
     std::size_t maxStates = 1'000'000;
     // Scans run (each way the inputs of a state go): a budget of work that,
     // unlike the deadline, ends at the same point on every machine.
@@ -153,6 +158,8 @@ struct Exploration {
     bool prioritiesDecided = true; // false: the budget ran out while deciding the two above
     std::vector<std::string> abstractions;        // English, one line each
     std::vector<bool> propertyChecked;            // per Options::properties: it passed checkProperty
+    std::size_t faultChoices = 0;                 // single faults: the faults a scan may begin
+    std::size_t faultedStates = 0;                // single faults: explored states with a fault in effect
 };
 
 // Runs the exploration once, then writes counterexamples of its witnesses.

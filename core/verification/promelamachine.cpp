@@ -19,8 +19,10 @@ class MachineWriter {
 public:
     MachineWriter(const machine::Machine& machine, int cycleTimeMs, bool exactTime,
                   const std::function<bool(std::string_view, SignalDirection)>& wired,
-                  const std::function<std::string(std::string_view)>& outputValue)
+                  const std::function<std::string(std::string_view)>& outputValue,
+                  const std::function<std::string(std::size_t)>& jammed)
         : m_machine(machine), m_cycleMs(cycleTimeMs), m_exact(exactTime), m_wired(wired), m_outputValue(outputValue)
+        , m_jammed(jammed)
     {
     }
 
@@ -46,6 +48,13 @@ private:
     bool m_exact;
     const std::function<bool(std::string_view, SignalDirection)>& m_wired;
     const std::function<std::string(std::string_view)>& m_outputValue;
+    const std::function<std::string(std::size_t)>& m_jammed;
+    // "!(jammed) && " before each condition that moves component k, or "".
+    std::string moves(std::size_t k) const
+    {
+        const std::string jammed = m_jammed ? m_jammed(k) : std::string();
+        return jammed.empty() ? std::string() : "!(" + jammed + ") && ";
+    }
     std::set<std::string> m_operators; // upper names an operator role took first
     PromelaMachine m_out;
     std::vector<std::string> m_feeds;
@@ -106,8 +115,9 @@ void MachineWriter::cylinder(std::size_t k, const machine::Component& c)
         extendMove = towards(m, 2, out == 1);
         retractMove = towards(m, 0, back == 1);
     }
-    m_out.cycle.push_back("if :: " + extend + " && !" + retract + " -> " + extendMove + " :: " + retract + " && !"
-                          + extend + " -> " + retractMove + " :: else -> skip fi; /* " + c.name + " */");
+    m_out.cycle.push_back("if :: " + moves(k) + extend + " && !" + retract + " -> " + extendMove + " :: " + moves(k)
+                          + retract + " && !" + extend + " -> " + retractMove + " :: else -> skip fi; /* " + c.name
+                          + " */");
 }
 
 void MachineWriter::conveyor(std::size_t k, const machine::Component& c)
@@ -119,7 +129,7 @@ void MachineWriter::conveyor(std::size_t k, const machine::Component& c)
         m_out.declarations.push_back("bit " + m + "_part = " + (m_startPart[k] ? "1" : "0") + "; int " + m + "; /* "
                                      + c.name + ": a part, its cycles from the entry */");
         sensor(c, role::kPartPresent, m + "_part && " + m + " == " + std::to_string(travel));
-        m_out.cycle.push_back("if :: " + m + "_part && " + run + " -> " + m + "++; if :: " + m + " > "
+        m_out.cycle.push_back("if :: " + moves(k) + m + "_part && " + run + " -> " + m + "++; if :: " + m + " > "
                               + std::to_string(travel) + " -> " + m + "_part = 0; " + m
                               + " = 0 :: else -> skip fi :: else -> skip fi; /* " + c.name + " */");
         return;
@@ -128,8 +138,8 @@ void MachineWriter::conveyor(std::size_t k, const machine::Component& c)
                                  + ": 0 no part, 1 travelling, 2 at the sensor */");
     sensor(c, role::kPartPresent, m + " == 2");
     const std::string arrive = travel == 1 ? m + " = 2" : "if :: " + m + " = 2 :: skip fi";
-    m_out.cycle.push_back("if :: " + m + " == 2 && " + run + " -> " + m + " = 0 :: " + m + " == 1 && " + run + " -> "
-                          + arrive + " :: else -> skip fi; /* " + c.name + " */");
+    m_out.cycle.push_back("if :: " + moves(k) + m + " == 2 && " + run + " -> " + m + " = 0 :: " + moves(k) + m
+                          + " == 1 && " + run + " -> " + arrive + " :: else -> skip fi; /* " + c.name + " */");
 }
 
 void MachineWriter::delayed(std::size_t k, const machine::Component& c)
@@ -231,9 +241,10 @@ PromelaMachine MachineWriter::run()
 
 PromelaMachine buildPromelaMachine(const machine::Machine& machine, int cycleTimeMs, bool exactTime,
                                    const std::function<bool(std::string_view, SignalDirection)>& wired,
-                                   const std::function<std::string(std::string_view)>& outputValue)
+                                   const std::function<std::string(std::string_view)>& outputValue,
+                                   const std::function<std::string(std::size_t)>& jammed)
 {
-    return MachineWriter(machine, cycleTimeMs, exactTime, wired, outputValue).run();
+    return MachineWriter(machine, cycleTimeMs, exactTime, wired, outputValue, jammed).run();
 }
 
 } // namespace core

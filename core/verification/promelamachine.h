@@ -29,8 +29,12 @@ struct PromelaMachine {
 // core::machine::MachineLoop wires: a BOOL output to an actuator role, a BOOL
 // input to a sensor or operator role); `outputValue(name)`: the Promela
 // expression of an actuator's output as the scan left it.
+// `jammed(k)`: with single faults, the Promela condition under which
+// component k (a cylinder or conveyor) is jammed and does not move; empty
+// (or no function): it always moves.
 PromelaMachine buildPromelaMachine(const machine::Machine& machine, int cycleTimeMs, bool exactTime,
                                    const std::function<bool(std::string_view, machine::SignalDirection)>& wired,
-                                   const std::function<std::string(std::string_view)>& outputValue);
+                                   const std::function<std::string(std::string_view)>& outputValue,
+                                   const std::function<std::string(std::size_t)>& jammed = {});
 
 } // namespace core

@@ -2,6 +2,8 @@
 
 #include "core/verification/promelamachine.h"
 
+#include "core/machine/fault.h"
+
 #include "core/templates/gemma/gemmaprogram.h"
 #include "core/condition/conditionanalysis.h"
 #include "core/condition/conditionevaluator.h"
@@ -189,6 +191,15 @@ private:
     int m_d1 = -1;
     int m_cycleMs = 20;
     PromelaMachine m_machine; // closed loop; empty otherwise
+    // Single faults: flt 1..jams are the jams (component indices), then
+    // three per sensor (stuck TRUE, stuck FALSE, flicker), its upper name
+    // and the machine's expression of it.
+    bool m_faults = false;
+    std::vector<std::size_t> m_jams;
+    std::vector<std::pair<std::string, std::string>> m_faultSensors;
+    std::int64_t m_faultScanLimit = 0;
+    int faultCode(std::size_t sensor, int kind) const { return static_cast<int>(m_jams.size() + 3 * sensor) + kind + 1; }
+    void writeFaultChoice();
     int m_maxDepth = 1;
     std::size_t m_maxTransitions = 1, m_maxSteps = 1, m_maxOutputs = 1;
     int m_maxEvolutions = 1; // gEvolutions counts up to it: a byte holds only 255
@@ -285,13 +296,34 @@ void ProgramPromela::wireMachine()
             return "v_" + info->declared->name;
         return cond::isTrue(info->initial) ? "1" : "0";
     };
-    m_machine = buildPromelaMachine(*m_options.machine, m_cycleMs, m_options.exactTime, wired, outputValue);
+    m_faults = m_options.singleFaults;
+    if (m_faults) {
+        for (std::size_t k = 0; k < m_options.machine->components.size(); ++k) {
+            if (machine::canJam(m_options.machine->components[k].kind))
+                m_jams.push_back(k);
+        }
+    }
+    const auto jammed = [&](std::size_t k) -> std::string {
+        const auto at = std::find(m_jams.begin(), m_jams.end(), k);
+        return at == m_jams.end() ? std::string() : "flt == " + std::to_string(at - m_jams.begin() + 1);
+    };
+    m_machine = buildPromelaMachine(*m_options.machine, m_cycleMs, m_options.exactTime, wired, outputValue, jammed);
     for (const auto& [upper, expression] : m_machine.sensors) {
         if (VariableInfo* info = variable(upper)) {
             info->role = VariableRole::Sensor;
             info->sensor = expression;
+            if (m_faults) {
+                const std::size_t s = m_faultSensors.size();
+                m_faultSensors.emplace_back(upper, expression);
+                info->sensor = "(flt == " + std::to_string(faultCode(s, 0)) + " -> 1 : (flt == "
+                    + std::to_string(faultCode(s, 1)) + " -> 0 : (flt == " + std::to_string(faultCode(s, 2))
+                    + " -> flk : " + expression + ")))";
+            }
         }
     }
+    if (m_faults)
+        m_machine.declarations.push_back("int flt = 0; bit flk = 0; int fc = 0; /* single faults: which (0 none), a "
+                                         "flickering sensor's reading, scans since it began */");
 }
 
 void ProgramPromela::collectComparisons(const cond::Expression& expression)
@@ -366,10 +398,16 @@ void ProgramPromela::collectAll()
     }
     for (const std::string& text : m_options.properties) {
         m_properties.push_back(parseProperty(text));
-        const bool usable = m_properties.back().ok() && checkProperty(m_model, text).empty();
+        const bool usable
+            = m_properties.back().ok() && checkProperty(m_model, text, PropertyAtoms{m_faults}).empty();
         m_propertyUsable.push_back(usable);
-        if (usable)
+        if (usable) {
             collectComparisons(m_properties.back().expression);
+            for (const cond::Node& node : m_properties.back().expression.nodes) {
+                if (node.kind == NodeKind::StepDuration && isFaultedAtom(m_model, node))
+                    m_faultScanLimit = std::max(m_faultScanLimit, faultedScansFor(node.durationMs, m_cycleMs));
+            }
+        }
     }
 }
 
@@ -499,6 +537,10 @@ void ProgramPromela::eval(const Context& context, const cond::Expression& expres
     switch (node.kind) {
     case NodeKind::BoolLiteral: m_out.line(result + " = " + (equalsIgnoreCase(node.text, "TRUE") ? "1;" : "0;")); return;
     case NodeKind::Variable: {
+        if (context.property && m_faults && isFaultedAtom(m_model, node)) {
+            m_out.line(result + " = (flt != 0); /* faulted */");
+            return;
+        }
         if (std::string own = ownOutput(node.text); !own.empty()) {
             m_out.line(result + " = " + own + "; /* the FB's own output */");
             return;
@@ -511,6 +553,11 @@ void ProgramPromela::eval(const Context& context, const cond::Expression& expres
         m_out.line(result + " = " + (grafcet && grafcet->step(node.number) ? xName(*context.step, node.number) : "0") + ";");
         return;
     case NodeKind::StepDuration: {
+        if (context.property && m_faults && isFaultedAtom(m_model, node)) {
+            m_out.line(result + " = (flt != 0 && fc >= " + std::to_string(faultedScansFor(node.durationMs, m_cycleMs))
+                       + "); /* " + commentSafe(node.text) + " */");
+            return;
+        }
         const auto timer = context.timerOfNode ? context.timerOfNode->find(index) : std::map<int, int>::const_iterator{};
         if (!grafcet || !context.timerOfNode || timer == context.timerOfNode->end() || !grafcet->step(node.number)) {
             m_out.line(result + " = 0;");
@@ -816,6 +863,8 @@ void ProgramPromela::writeProcess()
     m_out.line(":: atomic {");
     m_out.in();
     m_out.line("gFrom = gState;");
+    if (m_faults)
+        writeFaultChoice();
     m_out.line("if");
     for (const GemmaStep& step : m_program.steps)
         writeStep(step);
@@ -825,6 +874,12 @@ void ProgramPromela::writeProcess()
     m_out.line("scanned:");
     m_out.in();
     writeEndOfScan();
+    if (m_faults && !m_faultSensors.empty()) {
+        std::string flickers;
+        for (std::size_t s = 0; s < m_faultSensors.size(); ++s)
+            flickers += (s ? " || flt == " : "flt == ") + std::to_string(faultCode(s, 2));
+        m_out.line("if :: " + flickers + " -> flk = !flk :: else -> skip fi; /* a flicker toggles */");
+    }
     if (!m_machine.cycle.empty())
         m_out.line("/* the machine's cycle, from the outputs the scan left */");
     for (const std::string& statement : m_machine.cycle)
@@ -835,6 +890,34 @@ void ProgramPromela::writeProcess()
     m_out.line("od");
     m_out.out();
     m_out.line("}");
+}
+
+// Single faults, before the scan: with none in effect, none or any one
+// begins (a flicker reads the opposite of the machine's value first); then
+// the scans since it began, as far as a property's `T/faulted` needs.
+void ProgramPromela::writeFaultChoice()
+{
+    m_out.line("if");
+    m_out.line(":: flt == 0 ->");
+    m_out.in();
+    m_out.line("if");
+    m_out.line(":: skip");
+    for (std::size_t j = 0; j < m_jams.size(); ++j)
+        m_out.line(":: flt = " + std::to_string(j + 1) + " /* " + commentSafe(m_options.machine->components[m_jams[j]].name)
+                   + " jam */");
+    for (std::size_t s = 0; s < m_faultSensors.size(); ++s) {
+        const std::string& upper = m_faultSensors[s].first;
+        m_out.line(":: flt = " + std::to_string(faultCode(s, 0)) + " /* " + commentSafe(upper) + " stuck TRUE */");
+        m_out.line(":: flt = " + std::to_string(faultCode(s, 1)) + " /* " + commentSafe(upper) + " stuck FALSE */");
+        m_out.line(":: flt = " + std::to_string(faultCode(s, 2)) + "; flk = !" + m_faultSensors[s].second + " /* "
+                   + commentSafe(upper) + " flicker */");
+    }
+    m_out.line("fi");
+    m_out.out();
+    m_out.line(":: else -> skip");
+    m_out.line("fi;");
+    if (m_faultScanLimit > 0)
+        m_out.line("if :: flt != 0 && fc < " + std::to_string(m_faultScanLimit) + " -> fc++ :: else -> skip fi;");
 }
 
 void ProgramPromela::writeStep(const GemmaStep& step)

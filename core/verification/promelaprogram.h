@@ -60,6 +60,12 @@ struct ProgramPromelaOptions {
     // cycle after each scan, counted in scans with exactTime, else
     // abstracted as explore::AbstractMachine is. nullptr or empty: open loop.
     const machine::Machine* machine = nullptr;
+    // With the machine: any one sensor stuck TRUE, stuck FALSE or flickering,
+    // or one cylinder or conveyor jammed, may begin before any scan and stays
+    // (explore::Options::singleFaults; docs/verification.md, "Single faults").
+    // `flt` is the fault in effect (0 none), `flk` a flickering sensor's
+    // reading, `fc` the scans since it began (for `T/faulted`).
+    bool singleFaults = false;
 };
 
 PromelaModel buildProgramPromela(const Model& model, const ProgramPromelaOptions& options = {});

@@ -6,6 +6,7 @@
 #include "core/model/model.h"
 #include "core/templates/templateengines.h"
 
+#include <algorithm>
 #include <cctype>
 
 namespace core {
@@ -107,7 +108,38 @@ std::vector<PropertyProblem> checkProperty(const Model& model, std::string_view 
     return enginesOf(model).checkProperty(model, text);
 }
 
+std::vector<PropertyProblem> checkProperty(const Model& model, std::string_view text, const PropertyAtoms& atoms)
+{
+    if (model.templateKind() == TemplateKind::Gemma)
+        return checkGemmaProperty(model, text, atoms);
+    return checkProperty(model, text);
+}
+
+bool isFaultedAtom(const Model& model, const cond::Node& node)
+{
+    if (node.kind == cond::NodeKind::StepDuration)
+        return node.number == 0;
+    if (node.kind != cond::NodeKind::Variable || node.text.size() != 7)
+        return false;
+    for (std::size_t i = 0; i < 7; ++i) {
+        if (std::tolower(static_cast<unsigned char>(node.text[i])) != "faulted"[i])
+            return false;
+    }
+    return !SymbolTable(model.variables()).find(node.text);
+}
+
+std::int64_t faultedScansFor(std::int64_t durationMs, int cycleTimeMs)
+{
+    const std::int64_t cycle = std::max(cycleTimeMs, 1);
+    return std::max<std::int64_t>(1, durationMs / cycle + (durationMs % cycle != 0 ? 1 : 0));
+}
+
 std::vector<PropertyProblem> checkGemmaProperty(const Model& model, std::string_view text)
+{
+    return checkGemmaProperty(model, text, PropertyAtoms{});
+}
+
+std::vector<PropertyProblem> checkGemmaProperty(const Model& model, std::string_view text, const PropertyAtoms& atoms)
 {
     const ParsedProperty parsed = parseProperty(text);
     if (!parsed.ok()) {
@@ -116,11 +148,25 @@ std::vector<PropertyProblem> checkGemmaProperty(const Model& model, std::string_
         return {syntax};
     }
     std::vector<PropertyProblem> problems;
+    std::vector<Span> faultedAtoms; // where the property reads the atoms
     for (const cond::Node& node : parsed.expression.nodes) {
         if (node.kind == cond::NodeKind::InStep || node.kind == cond::NodeKind::NestedStepActivity)
             checkStatePredicate(model, node, problems);
+        if (isFaultedAtom(model, node)) {
+            faultedAtoms.push_back(node.span);
+            if (!atoms.faulted)
+                problems.push_back(problem(node.span, property::kFaultedWithoutFaults,
+                                           "'" + node.text
+                                               + "' is only defined when verifying with single faults "
+                                                 "(--faults single, with the machine)",
+                                           {node.text}));
+        }
     }
-    const SymbolTable symbols(model.variables());
+    // `faulted` reads as a BOOL of the run, not a variable of the model.
+    std::vector<Variable> variables = model.variables();
+    if (!faultedAtoms.empty())
+        variables.push_back(Variable{"faulted", IecType::Bool, {}, {}, VariableKind::Input});
+    const SymbolTable symbols(variables);
     for (const cond::TypeIssue& issue : cond::typeCheck(parsed.expression, symbols)) {
         const bool unknown = issue.code == "GG203";
         PropertyProblem found = problem(issue.span, unknown ? property::kUnknownVariable : property::kType,

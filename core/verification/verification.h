@@ -100,6 +100,13 @@ struct VerificationOptions {
     // drive computed from the machine's state, operator inputs free, time
     // counted in scans. Ignored for a model without machine (and for PackML).
     bool closedLoop = false;
+    // Faults explored with the machine (docs/verification.md, "Single
+    // faults (--faults single)"): Single branches, before any scan while no
+    // fault has happened, into one sensor stuck TRUE, stuck FALSE or
+    // flickering, or one cylinder or conveyor jammed, for the rest of the
+    // run. Only in closed loop; ignored otherwise.
+    enum class Faults { None, Single };
+    Faults faults = Faults::None;
 };
 
 // A run of the simulator from reset that shows a finding: scenario text the
@@ -182,6 +189,9 @@ struct VerificationResult {
     std::size_t programStates = 0;         // explored states of both layers (0: not explored)
     bool bothLayers = false;               // the exploration of both layers ran
     bool closedLoop = false;               // it ran with the model's machine (VerificationOptions::closedLoop)
+    bool singleFaults = false;             // it ran with VerificationOptions::Faults::Single
+    std::size_t faultChoices = 0;          // single faults: the faults a scan may begin (sensors x 3 kinds + jams)
+    std::size_t faultedStates = 0;         // single faults: explored states in which a fault is in effect
 
     // A finding of severity error or warning other than GV100 and GV123: a
     // property does not hold.

@@ -425,6 +425,10 @@ void VerificationPanel::refreshStatus()
         text = m_runner->nextRunClosedLoop()
             ? tr("The machine is used since verification: verify again to update the findings.")
             : tr("The machine is no longer used since verification: verify again to update the findings.");
+    } else if (m_runner->faultUseDiffers()) {
+        text = m_runner->nextRunSingleFaults()
+            ? tr("Single faults switched on since verification: verify again to update the findings.")
+            : tr("Single faults switched off since verification: verify again to update the findings.");
     } else {
         const core::VerificationResult& result = m_runner->result();
         const QString configurations = QString::number(static_cast<qulonglong>(result.configurations));
@@ -469,6 +473,8 @@ void VerificationPanel::refreshAssumptions()
         m_runner->hasResult() ? m_runner->resultAssumedAutomatic() : m_runner->assumedAutomatic();
     const bool exactTime = m_runner->hasResult() ? m_runner->resultExactTime() : m_runner->exactTime();
     const bool closedLoop = m_runner->hasResult() ? m_runner->resultClosedLoop() : m_runner->nextRunClosedLoop();
+    const bool singleFaults
+        = m_runner->hasResult() ? m_runner->resultSingleFaults() : m_runner->nextRunSingleFaults();
     QString text = automatic.isEmpty()
         ? tr("All Complete outputs free")
         : tr("Assumed Complete automatic: %1").arg(automatic.join(QStringLiteral(", ")));
@@ -476,6 +482,8 @@ void VerificationPanel::refreshAssumptions()
         text += QStringLiteral(" \u00b7 ") + tr("Exact time");
     if (closedLoop)
         text += QStringLiteral(" \u00b7 ") + tr("With the machine");
+    if (singleFaults)
+        text += QStringLiteral(" \u00b7 ") + tr("Single faults");
     m_assumptionsLabel->setText(text);
     QString toolTip = text + QLatin1Char('\n')
         + tr("Free: the nested behaviour may complete at any scan, or never. Automatic: Complete is TRUE at "
@@ -488,6 +496,10 @@ void VerificationPanel::refreshAssumptions()
         toolTip += QLatin1Char('\n') + tr("With the machine: the sensors the model's machine drives follow it, "
                                             "scan by scan, instead of taking any value (Simulation > Verify with "
                                             "the Machine).");
+    if (singleFaults)
+        toolTip += QLatin1Char('\n') + tr("Single faults: any one sensor stuck or flickering, or one cylinder or "
+                                            "conveyor jammed, from any scan on (Simulation > Verify with Single "
+                                            "Faults).");
     // The core's lines are English, like the command line's "abstracted:" lines.
     const std::vector<std::string>& abstractions = m_runner->result().abstractions;
     if (m_runner->hasResult() && !abstractions.empty()) {

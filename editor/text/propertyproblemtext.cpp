@@ -35,6 +35,10 @@ public:
             return tr("the step %1 has no nested GRAFCET").arg(argument(0));
         if (problem.code == code::kUnknownNestedStep)
             return tr("the GRAFCET of %1 has no step %2").arg(argument(0), argument(1));
+        if (problem.code == code::kFaultedWithoutFaults)
+            return tr("'%1' is only defined when verifying with single faults (Simulation > Verify with Single "
+                      "Faults, with the machine)")
+                .arg(argument(0));
         return QString::fromStdString(problem.message);
     }
 };

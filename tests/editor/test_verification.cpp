@@ -32,10 +32,12 @@
 #include "editor/text/diagnostictext.h"
 #include "editor/text/displaytext.h"
 #include "editor/text/elementlabels.h"
+#include "editor/text/propertyproblemtext.h"
 #include "editor/verificationrunner.h"
 #include "editor/window/statusindicators.h"
 
 #include "core/formats/modelfiles.h"
+#include "core/verification/property.h"
 
 #include <QToolButton>
 #include <QAction>
@@ -106,6 +108,7 @@ class TestVerification : public QObject {
 private slots:
     void exactTimeFromTheMenu();
     void withMachineFromTheMenu();
+    void singleFaultsFromTheMenu();
     void timeLimitFromThePanel();
     void initTestCase();
     void init();
@@ -986,6 +989,59 @@ void TestVerification::withMachineFromTheMenu()
     document->undoStack()->undo();
     withMachine->setChecked(false);
     QVERIFY(m_runner->machineUseDiffers());
+}
+
+// Simulation > Verify with Single Faults, offered only while verifying with
+// the machine: the clamp's two switches, never TRUE together with the
+// machine, are under a single fault (Clamped stuck TRUE).
+void TestVerification::singleFaultsFromTheMenu()
+{
+    auto* withMachine = m_window->findChild<QAction*>(QStringLiteral("verifyWithMachineAction"));
+    auto* singleFaults = m_window->findChild<QAction*>(QStringLiteral("verifySingleFaultsAction"));
+    QVERIFY(withMachine && singleFaults && singleFaults->isCheckable());
+    loadFaultyExample(); // no machine
+    QVERIFY(!singleFaults->isEnabled());
+
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    QVERIFY(loaded.model && !loaded.model->machine().empty());
+    m_window->document()->replaceModel(*loaded.model, QString(), core::ModelFormat::Native);
+    QVERIFY(withMachine->isEnabled());
+    QVERIFY(!singleFaults->isEnabled()); // not verifying with the machine yet
+    withMachine->setChecked(true);
+    QVERIFY(singleFaults->isEnabled());
+    QVERIFY(m_window->document()->modelForCommands().addProperty({"never Clamped AND Unclamped", ""}).ok);
+    const std::size_t property = m_window->document()->model().properties().size() - 1;
+    verifyAndWait();
+    QVERIFY(m_runner->resultClosedLoop());
+    QVERIFY(!m_runner->resultSingleFaults());
+    QVERIFY(m_runner->result().propertyHolds.at(property));
+
+    VerificationPanel* panel = m_dock->verificationPanel();
+    QSignalSpy assumptionsChanged(m_runner, &VerificationRunner::assumptionsChanged);
+    singleFaults->setChecked(true);
+    QCOMPARE(assumptionsChanged.size(), 1);
+    QVERIFY(m_runner->faultUseDiffers());
+    QVERIFY(panel->statusLabel()->text().contains(QStringLiteral("Single faults switched on")));
+    verifyAndWait();
+    QVERIFY(m_runner->resultSingleFaults());
+    QVERIFY(!m_runner->assumptionsDiffer());
+    QVERIFY(m_runner->result().faultChoices > 0);
+    QCOMPARE(m_runner->result().propertyVerdicts.at(property).outcome, core::PropertyOutcome::Violated);
+    QVERIFY(panel->assumptionsLabel()->text().endsWith(QStringLiteral("Single faults")));
+
+    // `faulted` outside such a run: the Properties panel's wording of GP007.
+    const std::vector<core::PropertyProblem> problems
+        = core::checkProperty(m_window->document()->model(), "never faulted AND in F1");
+    QCOMPARE(problems.size(), std::size_t(1));
+    QCOMPARE(editor::propertyProblemText(problems.front()),
+             QStringLiteral("'faulted' is only defined when verifying with single faults (Simulation > Verify with "
+                            "Single Faults, with the machine)"));
+
+    // Without the machine, single faults are not offered and change nothing.
+    withMachine->setChecked(false);
+    QVERIFY(!singleFaults->isEnabled());
+    QVERIFY(!m_runner->nextRunSingleFaults());
+    singleFaults->setChecked(false);
 }
 
 void TestVerification::propertyFindingsShowTheirText()
