@@ -798,6 +798,70 @@
     </message>
 </context>
 <context>
+    <name>FaultMenu</name>
+    <message>
+        <source>Fault not injected</source>
+        <translation>Fehler nicht eingespeist</translation>
+    </message>
+    <message>
+        <source>stuck at TRUE</source>
+        <extracomment>a fault of a sensor of the virtual machine, shown beside its value</extracomment>
+        <translation>klemmt auf TRUE</translation>
+    </message>
+    <message>
+        <source>stuck at FALSE</source>
+        <translation>klemmt auf FALSE</translation>
+    </message>
+    <message>
+        <source>flickering</source>
+        <translation>flackernd</translation>
+    </message>
+    <message>
+        <source>stuck TRUE</source>
+        <extracomment>a sensor&apos;s fault where space is short (the Machine tab); TRUE and FALSE stay as they are</extracomment>
+        <translation>klemmt TRUE</translation>
+    </message>
+    <message>
+        <source>stuck FALSE</source>
+        <translation>klemmt FALSE</translation>
+    </message>
+    <message>
+        <source>flicker</source>
+        <translation>flackert</translation>
+    </message>
+    <message>
+        <source>Fault of %1</source>
+        <extracomment>%1: a sensor variable of the virtual machine
+----------
+%1: a cylinder or conveyor of the virtual machine</extracomment>
+        <translation>Fehler von %1</translation>
+    </message>
+    <message>
+        <source>Stuck at &amp;TRUE</source>
+        <translation>Klemmt auf &amp;TRUE</translation>
+    </message>
+    <message>
+        <source>Stuck at &amp;FALSE</source>
+        <translation>Klemmt auf &amp;FALSE</translation>
+    </message>
+    <message>
+        <source>F&amp;licker</source>
+        <translation>F&amp;lackern</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Fault</source>
+        <translation>Fehler &amp;beheben</translation>
+    </message>
+    <message>
+        <source>Clear &amp;Jam</source>
+        <translation>&amp;Blockade lösen</translation>
+    </message>
+    <message>
+        <source>&amp;Jam</source>
+        <translation>&amp;Blockieren</translation>
+    </message>
+</context>
+<context>
     <name>GrafcetClipboard</name>
     <message>
         <source>The clipboard holds no GRAFCET steps</source>
@@ -842,12 +906,19 @@
     <name>MachineComponentItem</name>
     <message>
         <source>%1: %2</source>
-        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it</extracomment>
+        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it
+----------
+%1: a sensor variable (&quot;Clamped&quot;); %2: its fault (&quot;stuck FALSE&quot;)</extracomment>
         <translation>%1: %2</translation>
     </message>
     <message>
         <source>(not wired)</source>
         <translation>(nicht verdrahtet)</translation>
+    </message>
+    <message>
+        <source>%1, jammed</source>
+        <extracomment>%1: the kind of a machine component (&quot;Double-acting cylinder&quot;), which a fault has stopped</extracomment>
+        <translation>%1, blockiert</translation>
     </message>
 </context>
 <context>
@@ -1735,6 +1806,10 @@
     <message>
         <source>the GRAFCET of %1 has no step %2</source>
         <translation>der GRAFCET von %1 hat keinen Schritt %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is only defined when verifying with single faults (Simulation &gt; Verify with Single Faults, with the machine)</source>
+        <translation>&apos;%1&apos; ist nur beim Verifizieren mit einzelnen Fehlern definiert (Simulation &gt; Mit einzelnen Fehlern verifizieren, mit der Maschine)</translation>
     </message>
 </context>
 <context>
@@ -4475,6 +4550,180 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <source>Verification cancelled: the model, the Complete settings, the machine&apos;s use or Exact Time changed</source>
         <translation>Verifikation abgebrochen: Das Modell, die Complete-Einstellungen, die Verwendung der Maschine oder die exakte Zeit haben sich geändert</translation>
     </message>
+    <message>
+        <source>Co&amp;nnect…</source>
+        <translation>&amp;Verbinden…</translation>
+    </message>
+    <message>
+        <source>Link the simulation to a digital twin, a soft PLC or an HMI over Modbus TCP; it then runs in real time</source>
+        <translation>Die Simulation über Modbus TCP mit einem digitalen Zwilling, einer Soft-SPS oder einem HMI verbinden; sie läuft dann in Echtzeit</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Trennen</translation>
+    </message>
+    <message>
+        <source>End the Modbus TCP link</source>
+        <translation>Die Modbus-TCP-Verbindung beenden</translation>
+    </message>
+    <message>
+        <source>Verify with Single &amp;Faults</source>
+        <translation>Mit einzelnen &amp;Fehlern verifizieren</translation>
+    </message>
+    <message>
+        <source>With the machine, also explore any one fault from any scan on: a sensor stuck or flickering, a cylinder or conveyor jammed</source>
+        <translation>Mit der Maschine zusätzlich jeden einzelnen Fehler ab jedem Zyklus untersuchen: ein Sensor, der hängt oder flackert, ein blockierter Zylinder oder Förderer</translation>
+    </message>
+    <message>
+        <source>The Modbus link is for GEMMA models; PackML models are not linked yet</source>
+        <translation>Die Modbus-Verbindung ist für GEMMA-Modelle; PackML-Modelle werden noch nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>The Modbus link could not start: %1</source>
+        <translation>Die Modbus-Verbindung konnte nicht starten: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModbusConnectDialog</name>
+    <message>
+        <source>Coil</source>
+        <translation>Spule</translation>
+    </message>
+    <message>
+        <source>Discrete input</source>
+        <translation>Diskreter Eingang</translation>
+    </message>
+    <message>
+        <source>Holding register</source>
+        <translation>Halteregister</translation>
+    </message>
+    <message>
+        <source>Input register</source>
+        <translation>Eingangsregister</translation>
+    </message>
+    <message>
+        <source>Connect over Modbus TCP</source>
+        <translation>Über Modbus TCP verbinden</translation>
+    </message>
+    <message>
+        <source>Server: the twin connects to the simulator</source>
+        <translation>Server: der Zwilling verbindet sich mit dem Simulator</translation>
+    </message>
+    <message>
+        <source>Client: the simulator connects to the twin</source>
+        <translation>Client: der Simulator verbindet sich mit dem Zwilling</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabelle</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modus:</translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation>Host:</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <source>Unit id:</source>
+        <translation>Unit-ID:</translation>
+    </message>
+    <message>
+        <source>Load CSV…</source>
+        <translation>CSV laden…</translation>
+    </message>
+    <message>
+        <source>Save As CSV…</source>
+        <translation>Als CSV speichern…</translation>
+    </message>
+    <message>
+        <source>Default Map</source>
+        <translation>Standardzuordnung</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Map (each table numbered from 0 in declaration order unless loaded):</source>
+        <translation>Zuordnung (jede Tabelle ab 0 in Deklarationsreihenfolge nummeriert, sofern nicht geladen):</translation>
+    </message>
+    <message>
+        <source>Load Modbus Map</source>
+        <translation>Modbus-Zuordnung laden</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save Modbus Map</source>
+        <translation>Modbus-Zuordnung speichern</translation>
+    </message>
+    <message>
+        <source>Line %1, column %2: %3</source>
+        <translation>Zeile %1, Spalte %2: %3</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used:</source>
+        <translation>%1 kann nicht verwendet werden:</translation>
+    </message>
+    <message>
+        <source>%1 could not be saved: %2</source>
+        <translation>%1 konnte nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModbusConnection</name>
+    <message>
+        <source>The simulation could not start.</source>
+        <translation>Die Simulation konnte nicht starten.</translation>
+    </message>
+    <message>
+        <source>Modbus server on %1, unit %2, clients connected: %3</source>
+        <translation>Modbus-Server auf %1, Unit %2, verbundene Clients: %3</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: connected</source>
+        <translation>Modbus-Client von %1: verbunden</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: connecting</source>
+        <translation>Modbus-Client von %1: verbindet</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: not connected, trying again</source>
+        <translation>Modbus-Client von %1: nicht verbunden, neuer Versuch</translation>
+    </message>
+    <message>
+        <source>Set by the twin: %1</source>
+        <translation>Vom Zwilling gesetzt: %1</translation>
+    </message>
+    <message>
+        <source>Errors: %1, the last: %2</source>
+        <translation>Fehler: %1, der letzte: %2</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -5702,6 +5951,10 @@ Die Betriebsarten 1 bis 3 sind Production, Maintenance und Manual.</translation>
         <source>It sets the machine&apos;s sensors itself: played in open loop, the machine stands still.</source>
         <translation>Es setzt die Sensoren der Maschine selbst: im offenen Regelkreis abgespielt, die Maschine steht still.</translation>
     </message>
+    <message>
+        <source>Right-click to inject a fault</source>
+        <translation>Rechtsklick, um einen Fehler einzuspeisen</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -5712,6 +5965,14 @@ Die Betriebsarten 1 bis 3 sind Production, Maintenance und Manual.</translation>
     <message>
         <source>%1 is a sensor of the machine&apos;s %2: the machine sets it</source>
         <translation>%1 ist ein Sensor von %2 der Maschine: die Maschine setzt ihn</translation>
+    </message>
+    <message>
+        <source>The replay plays the machine&apos;s faults: stop it first</source>
+        <translation>Die Wiedergabe spielt die Fehler der Maschine: zuerst anhalten</translation>
+    </message>
+    <message>
+        <source>A fault needs the virtual machine running in closed loop</source>
+        <translation>Ein Fehler braucht die virtuelle Maschine im geschlossenen Regelkreis</translation>
     </message>
 </context>
 <context>
@@ -6611,6 +6872,22 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
     <message>
         <source>With the machine: the sensors the model&apos;s machine drives follow it, scan by scan, instead of taking any value (Simulation &gt; Verify with the Machine).</source>
         <translation>Mit der Maschine: Die Sensoren, die die Maschine des Modells setzt, folgen ihr Zyklus für Zyklus, statt jeden Wert anzunehmen (Simulation &gt; Mit der Maschine verifizieren).</translation>
+    </message>
+    <message>
+        <source>Single faults switched on since verification: verify again to update the findings.</source>
+        <translation>Einzelne Fehler seit der Verifikation eingeschaltet: erneut verifizieren, um die Befunde zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>Single faults switched off since verification: verify again to update the findings.</source>
+        <translation>Einzelne Fehler seit der Verifikation ausgeschaltet: erneut verifizieren, um die Befunde zu aktualisieren.</translation>
+    </message>
+    <message>
+        <source>Single faults</source>
+        <translation>Einzelne Fehler</translation>
+    </message>
+    <message>
+        <source>Single faults: any one sensor stuck or flickering, or one cylinder or conveyor jammed, from any scan on (Simulation &gt; Verify with Single Faults).</source>
+        <translation>Einzelne Fehler: ein beliebiger Sensor, der hängt oder flackert, oder ein blockierter Zylinder oder Förderer, ab jedem Zyklus (Simulation &gt; Mit einzelnen Fehlern verifizieren).</translation>
     </message>
 </context>
 <context>

@@ -798,6 +798,70 @@
     </message>
 </context>
 <context>
+    <name>FaultMenu</name>
+    <message>
+        <source>Fault not injected</source>
+        <translation>Fallo no inyectado</translation>
+    </message>
+    <message>
+        <source>stuck at TRUE</source>
+        <extracomment>a fault of a sensor of the virtual machine, shown beside its value</extracomment>
+        <translation>bloqueado en TRUE</translation>
+    </message>
+    <message>
+        <source>stuck at FALSE</source>
+        <translation>bloqueado en FALSE</translation>
+    </message>
+    <message>
+        <source>flickering</source>
+        <translation>intermitente</translation>
+    </message>
+    <message>
+        <source>stuck TRUE</source>
+        <extracomment>a sensor&apos;s fault where space is short (the Machine tab); TRUE and FALSE stay as they are</extracomment>
+        <translation>bloqueado TRUE</translation>
+    </message>
+    <message>
+        <source>stuck FALSE</source>
+        <translation>bloqueado FALSE</translation>
+    </message>
+    <message>
+        <source>flicker</source>
+        <translation>intermitente</translation>
+    </message>
+    <message>
+        <source>Fault of %1</source>
+        <extracomment>%1: a sensor variable of the virtual machine
+----------
+%1: a cylinder or conveyor of the virtual machine</extracomment>
+        <translation>Fallo de %1</translation>
+    </message>
+    <message>
+        <source>Stuck at &amp;TRUE</source>
+        <translation>Bloqueado en &amp;TRUE</translation>
+    </message>
+    <message>
+        <source>Stuck at &amp;FALSE</source>
+        <translation>Bloqueado en &amp;FALSE</translation>
+    </message>
+    <message>
+        <source>F&amp;licker</source>
+        <translation>&amp;Intermitente</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Fault</source>
+        <translation>&amp;Borrar el fallo</translation>
+    </message>
+    <message>
+        <source>Clear &amp;Jam</source>
+        <translation>&amp;Desatascar</translation>
+    </message>
+    <message>
+        <source>&amp;Jam</source>
+        <translation>&amp;Atascar</translation>
+    </message>
+</context>
+<context>
     <name>GrafcetClipboard</name>
     <message>
         <source>The clipboard holds no GRAFCET steps</source>
@@ -842,12 +906,19 @@
     <name>MachineComponentItem</name>
     <message>
         <source>%1: %2</source>
-        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it</extracomment>
+        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it
+----------
+%1: a sensor variable (&quot;Clamped&quot;); %2: its fault (&quot;stuck FALSE&quot;)</extracomment>
         <translation>%1: %2</translation>
     </message>
     <message>
         <source>(not wired)</source>
         <translation>(sin cablear)</translation>
+    </message>
+    <message>
+        <source>%1, jammed</source>
+        <extracomment>%1: the kind of a machine component (&quot;Double-acting cylinder&quot;), which a fault has stopped</extracomment>
+        <translation>%1, atascado</translation>
     </message>
 </context>
 <context>
@@ -1735,6 +1806,10 @@
     <message>
         <source>the GRAFCET of %1 has no step %2</source>
         <translation>el GRAFCET de %1 no tiene etapa %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is only defined when verifying with single faults (Simulation &gt; Verify with Single Faults, with the machine)</source>
+        <translation>&apos;%1&apos; solo está definido al verificar con fallos únicos (Simulación &gt; Verificar con fallos únicos, con la máquina)</translation>
     </message>
 </context>
 <context>
@@ -4475,6 +4550,180 @@ Ctrl+Espacio completa un nombre.</translation>
         <source>Verification cancelled: the model, the Complete settings, the machine&apos;s use or Exact Time changed</source>
         <translation>Verificación cancelada: cambiaron el modelo, los ajustes de Complete, el uso de la máquina o el tiempo exacto</translation>
     </message>
+    <message>
+        <source>Co&amp;nnect…</source>
+        <translation>Co&amp;nectar…</translation>
+    </message>
+    <message>
+        <source>Link the simulation to a digital twin, a soft PLC or an HMI over Modbus TCP; it then runs in real time</source>
+        <translation>Enlazar la simulación con un gemelo digital, un PLC por software o una HMI por Modbus TCP; entonces se ejecuta en tiempo real</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Desconectar</translation>
+    </message>
+    <message>
+        <source>End the Modbus TCP link</source>
+        <translation>Terminar el enlace Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Verify with Single &amp;Faults</source>
+        <translation>Verificar con &amp;fallos únicos</translation>
+    </message>
+    <message>
+        <source>With the machine, also explore any one fault from any scan on: a sensor stuck or flickering, a cylinder or conveyor jammed</source>
+        <translation>Con la máquina, explorar también un fallo cualquiera a partir de cualquier ciclo: un sensor bloqueado o intermitente, un cilindro o una cinta atascados</translation>
+    </message>
+    <message>
+        <source>The Modbus link is for GEMMA models; PackML models are not linked yet</source>
+        <translation>El enlace Modbus es para modelos GEMMA; los modelos PackML aún no se enlazan</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Conectar</translation>
+    </message>
+    <message>
+        <source>The Modbus link could not start: %1</source>
+        <translation>El enlace Modbus no pudo iniciarse: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModbusConnectDialog</name>
+    <message>
+        <source>Coil</source>
+        <translation>Bobina</translation>
+    </message>
+    <message>
+        <source>Discrete input</source>
+        <translation>Entrada discreta</translation>
+    </message>
+    <message>
+        <source>Holding register</source>
+        <translation>Registro de retención</translation>
+    </message>
+    <message>
+        <source>Input register</source>
+        <translation>Registro de entrada</translation>
+    </message>
+    <message>
+        <source>Connect over Modbus TCP</source>
+        <translation>Conectar por Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Server: the twin connects to the simulator</source>
+        <translation>Servidor: el gemelo se conecta al simulador</translation>
+    </message>
+    <message>
+        <source>Client: the simulator connects to the twin</source>
+        <translation>Cliente: el simulador se conecta al gemelo</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabla</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Dirección</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modo:</translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation>Host:</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Puerto:</translation>
+    </message>
+    <message>
+        <source>Unit id:</source>
+        <translation>Id. de unidad:</translation>
+    </message>
+    <message>
+        <source>Load CSV…</source>
+        <translation>Cargar CSV…</translation>
+    </message>
+    <message>
+        <source>Save As CSV…</source>
+        <translation>Guardar como CSV…</translation>
+    </message>
+    <message>
+        <source>Default Map</source>
+        <translation>Mapa predeterminado</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Conectar</translation>
+    </message>
+    <message>
+        <source>Map (each table numbered from 0 in declaration order unless loaded):</source>
+        <translation>Mapa (cada tabla numerada desde 0 en el orden de declaración, salvo si se carga):</translation>
+    </message>
+    <message>
+        <source>Load Modbus Map</source>
+        <translation>Cargar mapa Modbus</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save Modbus Map</source>
+        <translation>Guardar mapa Modbus</translation>
+    </message>
+    <message>
+        <source>Line %1, column %2: %3</source>
+        <translation>Línea %1, columna %2: %3</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used:</source>
+        <translation>%1 no se puede usar:</translation>
+    </message>
+    <message>
+        <source>%1 could not be saved: %2</source>
+        <translation>%1 no se pudo guardar: %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModbusConnection</name>
+    <message>
+        <source>The simulation could not start.</source>
+        <translation>La simulación no pudo iniciarse.</translation>
+    </message>
+    <message>
+        <source>Modbus server on %1, unit %2, clients connected: %3</source>
+        <translation>Servidor Modbus en %1, unidad %2, clientes conectados: %3</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: connected</source>
+        <translation>Cliente Modbus de %1: conectado</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: connecting</source>
+        <translation>Cliente Modbus de %1: conectando</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: not connected, trying again</source>
+        <translation>Cliente Modbus de %1: no conectado, reintentando</translation>
+    </message>
+    <message>
+        <source>Set by the twin: %1</source>
+        <translation>Puesto por el gemelo: %1</translation>
+    </message>
+    <message>
+        <source>Errors: %1, the last: %2</source>
+        <translation>Errores: %1, el último: %2</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -5702,6 +5951,10 @@ Los modos 1 a 3 son Production, Maintenance y Manual.</translation>
         <source>It sets the machine&apos;s sensors itself: played in open loop, the machine stands still.</source>
         <translation>Fija él mismo los sensores de la máquina: se reproduce en lazo abierto, la máquina queda parada.</translation>
     </message>
+    <message>
+        <source>Right-click to inject a fault</source>
+        <translation>Clic derecho para inyectar un fallo</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -5712,6 +5965,14 @@ Los modos 1 a 3 son Production, Maintenance y Manual.</translation>
     <message>
         <source>%1 is a sensor of the machine&apos;s %2: the machine sets it</source>
         <translation>%1 es un sensor de %2 de la máquina: la máquina lo fija</translation>
+    </message>
+    <message>
+        <source>The replay plays the machine&apos;s faults: stop it first</source>
+        <translation>La reproducción aplica los fallos de la máquina: deténgala primero</translation>
+    </message>
+    <message>
+        <source>A fault needs the virtual machine running in closed loop</source>
+        <translation>Un fallo necesita la máquina virtual en lazo cerrado</translation>
     </message>
 </context>
 <context>
@@ -6611,6 +6872,22 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
     <message>
         <source>With the machine: the sensors the model&apos;s machine drives follow it, scan by scan, instead of taking any value (Simulation &gt; Verify with the Machine).</source>
         <translation>Con la máquina: los sensores que mueve la máquina del modelo la siguen, ciclo a ciclo, en lugar de tomar cualquier valor (Simulación &gt; Verificar con la máquina).</translation>
+    </message>
+    <message>
+        <source>Single faults switched on since verification: verify again to update the findings.</source>
+        <translation>Fallos únicos activados desde la verificación: verifique de nuevo para actualizar los hallazgos.</translation>
+    </message>
+    <message>
+        <source>Single faults switched off since verification: verify again to update the findings.</source>
+        <translation>Fallos únicos desactivados desde la verificación: verifique de nuevo para actualizar los hallazgos.</translation>
+    </message>
+    <message>
+        <source>Single faults</source>
+        <translation>Fallos únicos</translation>
+    </message>
+    <message>
+        <source>Single faults: any one sensor stuck or flickering, or one cylinder or conveyor jammed, from any scan on (Simulation &gt; Verify with Single Faults).</source>
+        <translation>Fallos únicos: un sensor cualquiera bloqueado o intermitente, o un cilindro o una cinta atascados, a partir de cualquier ciclo (Simulación &gt; Verificar con fallos únicos).</translation>
     </message>
 </context>
 <context>

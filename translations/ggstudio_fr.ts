@@ -798,6 +798,70 @@
     </message>
 </context>
 <context>
+    <name>FaultMenu</name>
+    <message>
+        <source>Fault not injected</source>
+        <translation>Défaillance non injectée</translation>
+    </message>
+    <message>
+        <source>stuck at TRUE</source>
+        <extracomment>a fault of a sensor of the virtual machine, shown beside its value</extracomment>
+        <translation>bloqué à TRUE</translation>
+    </message>
+    <message>
+        <source>stuck at FALSE</source>
+        <translation>bloqué à FALSE</translation>
+    </message>
+    <message>
+        <source>flickering</source>
+        <translation>instable</translation>
+    </message>
+    <message>
+        <source>stuck TRUE</source>
+        <extracomment>a sensor&apos;s fault where space is short (the Machine tab); TRUE and FALSE stay as they are</extracomment>
+        <translation>bloqué TRUE</translation>
+    </message>
+    <message>
+        <source>stuck FALSE</source>
+        <translation>bloqué FALSE</translation>
+    </message>
+    <message>
+        <source>flicker</source>
+        <translation>instable</translation>
+    </message>
+    <message>
+        <source>Fault of %1</source>
+        <extracomment>%1: a sensor variable of the virtual machine
+----------
+%1: a cylinder or conveyor of the virtual machine</extracomment>
+        <translation>Défaillance de %1</translation>
+    </message>
+    <message>
+        <source>Stuck at &amp;TRUE</source>
+        <translation>Bloqué à &amp;TRUE</translation>
+    </message>
+    <message>
+        <source>Stuck at &amp;FALSE</source>
+        <translation>Bloqué à &amp;FALSE</translation>
+    </message>
+    <message>
+        <source>F&amp;licker</source>
+        <translation>&amp;Instable</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Fault</source>
+        <translation>&amp;Effacer la défaillance</translation>
+    </message>
+    <message>
+        <source>Clear &amp;Jam</source>
+        <translation>&amp;Débloquer</translation>
+    </message>
+    <message>
+        <source>&amp;Jam</source>
+        <translation>&amp;Bloquer</translation>
+    </message>
+</context>
+<context>
     <name>GrafcetClipboard</name>
     <message>
         <source>The clipboard holds no GRAFCET steps</source>
@@ -842,12 +906,19 @@
     <name>MachineComponentItem</name>
     <message>
         <source>%1: %2</source>
-        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it</extracomment>
+        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it
+----------
+%1: a sensor variable (&quot;Clamped&quot;); %2: its fault (&quot;stuck FALSE&quot;)</extracomment>
         <translation>%1 : %2</translation>
     </message>
     <message>
         <source>(not wired)</source>
         <translation>(non câblé)</translation>
+    </message>
+    <message>
+        <source>%1, jammed</source>
+        <extracomment>%1: the kind of a machine component (&quot;Double-acting cylinder&quot;), which a fault has stopped</extracomment>
+        <translation>%1, bloqué</translation>
     </message>
 </context>
 <context>
@@ -1735,6 +1806,10 @@
     <message>
         <source>the GRAFCET of %1 has no step %2</source>
         <translation>le GRAFCET de %1 n&apos;a pas d&apos;étape %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is only defined when verifying with single faults (Simulation &gt; Verify with Single Faults, with the machine)</source>
+        <translation>&apos;%1&apos; n&apos;est défini que lors d&apos;une vérification avec des défauts uniques (Simulation &gt; Vérifier avec des défauts uniques, avec la machine)</translation>
     </message>
 </context>
 <context>
@@ -4475,6 +4550,180 @@ Ctrl+Espace complète un nom.</translation>
         <source>Verification cancelled: the model, the Complete settings, the machine&apos;s use or Exact Time changed</source>
         <translation>Vérification annulée : le modèle, les réglages de Complete, l&apos;usage de la machine ou le temps exact ont changé</translation>
     </message>
+    <message>
+        <source>Co&amp;nnect…</source>
+        <translation>Co&amp;nnecter…</translation>
+    </message>
+    <message>
+        <source>Link the simulation to a digital twin, a soft PLC or an HMI over Modbus TCP; it then runs in real time</source>
+        <translation>Relier la simulation à un jumeau numérique, un automate logiciel ou une IHM par Modbus TCP ; elle tourne alors en temps réel</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Déconnecter</translation>
+    </message>
+    <message>
+        <source>End the Modbus TCP link</source>
+        <translation>Mettre fin à la liaison Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Verify with Single &amp;Faults</source>
+        <translation>Vérifier avec des &amp;défauts uniques</translation>
+    </message>
+    <message>
+        <source>With the machine, also explore any one fault from any scan on: a sensor stuck or flickering, a cylinder or conveyor jammed</source>
+        <translation>Avec la machine, explorer aussi un défaut quelconque à partir de n&apos;importe quel cycle : un capteur bloqué ou instable, un vérin ou un convoyeur coincé</translation>
+    </message>
+    <message>
+        <source>The Modbus link is for GEMMA models; PackML models are not linked yet</source>
+        <translation>La liaison Modbus est pour les modèles GEMMA ; les modèles PackML ne sont pas encore reliés</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Connecter</translation>
+    </message>
+    <message>
+        <source>The Modbus link could not start: %1</source>
+        <translation>La liaison Modbus n&apos;a pas pu démarrer : %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModbusConnectDialog</name>
+    <message>
+        <source>Coil</source>
+        <translation>Bobine</translation>
+    </message>
+    <message>
+        <source>Discrete input</source>
+        <translation>Entrée discrète</translation>
+    </message>
+    <message>
+        <source>Holding register</source>
+        <translation>Registre de maintien</translation>
+    </message>
+    <message>
+        <source>Input register</source>
+        <translation>Registre d&apos;entrée</translation>
+    </message>
+    <message>
+        <source>Connect over Modbus TCP</source>
+        <translation>Connecter par Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Server: the twin connects to the simulator</source>
+        <translation>Serveur : le jumeau se connecte au simulateur</translation>
+    </message>
+    <message>
+        <source>Client: the simulator connects to the twin</source>
+        <translation>Client : le simulateur se connecte au jumeau</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variable</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Type</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Table</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Adresse</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Mode :</translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation>Hôte :</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Port :</translation>
+    </message>
+    <message>
+        <source>Unit id:</source>
+        <translation>Identifiant d&apos;unité :</translation>
+    </message>
+    <message>
+        <source>Load CSV…</source>
+        <translation>Charger un CSV…</translation>
+    </message>
+    <message>
+        <source>Save As CSV…</source>
+        <translation>Enregistrer en CSV…</translation>
+    </message>
+    <message>
+        <source>Default Map</source>
+        <translation>Table par défaut</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Connecter</translation>
+    </message>
+    <message>
+        <source>Map (each table numbered from 0 in declaration order unless loaded):</source>
+        <translation>Table d&apos;adresses (chaque table numérotée à partir de 0 dans l&apos;ordre de déclaration, sauf si elle est chargée) :</translation>
+    </message>
+    <message>
+        <source>Load Modbus Map</source>
+        <translation>Charger une table Modbus</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Fichiers CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save Modbus Map</source>
+        <translation>Enregistrer la table Modbus</translation>
+    </message>
+    <message>
+        <source>Line %1, column %2: %3</source>
+        <translation>Ligne %1, colonne %2 : %3</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used:</source>
+        <translation>%1 ne peut pas être utilisé :</translation>
+    </message>
+    <message>
+        <source>%1 could not be saved: %2</source>
+        <translation>%1 n&apos;a pas pu être enregistré : %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModbusConnection</name>
+    <message>
+        <source>The simulation could not start.</source>
+        <translation>La simulation n&apos;a pas pu démarrer.</translation>
+    </message>
+    <message>
+        <source>Modbus server on %1, unit %2, clients connected: %3</source>
+        <translation>Serveur Modbus sur %1, unité %2, clients connectés : %3</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: connected</source>
+        <translation>Client Modbus de %1 : connecté</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: connecting</source>
+        <translation>Client Modbus de %1 : connexion en cours</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: not connected, trying again</source>
+        <translation>Client Modbus de %1 : non connecté, nouvel essai</translation>
+    </message>
+    <message>
+        <source>Set by the twin: %1</source>
+        <translation>Mis par le jumeau : %1</translation>
+    </message>
+    <message>
+        <source>Errors: %1, the last: %2</source>
+        <translation>Erreurs : %1, la dernière : %2</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -5702,6 +5951,10 @@ Les modes 1 à 3 sont Production, Maintenance et Manual.</translation>
         <source>It sets the machine&apos;s sensors itself: played in open loop, the machine stands still.</source>
         <translation>Il positionne lui-même les capteurs de la machine : joué en boucle ouverte, la machine reste immobile.</translation>
     </message>
+    <message>
+        <source>Right-click to inject a fault</source>
+        <translation>Clic droit pour injecter une défaillance</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -5712,6 +5965,14 @@ Les modes 1 à 3 sont Production, Maintenance et Manual.</translation>
     <message>
         <source>%1 is a sensor of the machine&apos;s %2: the machine sets it</source>
         <translation>%1 est un capteur de %2 de la machine : c&apos;est la machine qui le positionne</translation>
+    </message>
+    <message>
+        <source>The replay plays the machine&apos;s faults: stop it first</source>
+        <translation>La relecture joue les défaillances de la machine : arrêtez-la d&apos;abord</translation>
+    </message>
+    <message>
+        <source>A fault needs the virtual machine running in closed loop</source>
+        <translation>Une défaillance a besoin de la machine virtuelle en boucle fermée</translation>
     </message>
 </context>
 <context>
@@ -6611,6 +6872,22 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
     <message>
         <source>With the machine: the sensors the model&apos;s machine drives follow it, scan by scan, instead of taking any value (Simulation &gt; Verify with the Machine).</source>
         <translation>Avec la machine : les capteurs que pilote la machine du modèle la suivent, cycle après cycle, au lieu de prendre n&apos;importe quelle valeur (Simulation &gt; Vérifier avec la machine).</translation>
+    </message>
+    <message>
+        <source>Single faults switched on since verification: verify again to update the findings.</source>
+        <translation>Défauts uniques activés depuis la vérification : vérifiez à nouveau pour mettre à jour les constats.</translation>
+    </message>
+    <message>
+        <source>Single faults switched off since verification: verify again to update the findings.</source>
+        <translation>Défauts uniques désactivés depuis la vérification : vérifiez à nouveau pour mettre à jour les constats.</translation>
+    </message>
+    <message>
+        <source>Single faults</source>
+        <translation>Défauts uniques</translation>
+    </message>
+    <message>
+        <source>Single faults: any one sensor stuck or flickering, or one cylinder or conveyor jammed, from any scan on (Simulation &gt; Verify with Single Faults).</source>
+        <translation>Défauts uniques : un capteur quelconque bloqué ou instable, ou un vérin ou un convoyeur coincé, à partir de n&apos;importe quel cycle (Simulation &gt; Vérifier avec des défauts uniques).</translation>
     </message>
 </context>
 <context>

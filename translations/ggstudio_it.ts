@@ -798,6 +798,70 @@
     </message>
 </context>
 <context>
+    <name>FaultMenu</name>
+    <message>
+        <source>Fault not injected</source>
+        <translation>Guasto non iniettato</translation>
+    </message>
+    <message>
+        <source>stuck at TRUE</source>
+        <extracomment>a fault of a sensor of the virtual machine, shown beside its value</extracomment>
+        <translation>bloccato a TRUE</translation>
+    </message>
+    <message>
+        <source>stuck at FALSE</source>
+        <translation>bloccato a FALSE</translation>
+    </message>
+    <message>
+        <source>flickering</source>
+        <translation>intermittente</translation>
+    </message>
+    <message>
+        <source>stuck TRUE</source>
+        <extracomment>a sensor&apos;s fault where space is short (the Machine tab); TRUE and FALSE stay as they are</extracomment>
+        <translation>bloccato TRUE</translation>
+    </message>
+    <message>
+        <source>stuck FALSE</source>
+        <translation>bloccato FALSE</translation>
+    </message>
+    <message>
+        <source>flicker</source>
+        <translation>intermittente</translation>
+    </message>
+    <message>
+        <source>Fault of %1</source>
+        <extracomment>%1: a sensor variable of the virtual machine
+----------
+%1: a cylinder or conveyor of the virtual machine</extracomment>
+        <translation>Guasto di %1</translation>
+    </message>
+    <message>
+        <source>Stuck at &amp;TRUE</source>
+        <translation>Bloccato a &amp;TRUE</translation>
+    </message>
+    <message>
+        <source>Stuck at &amp;FALSE</source>
+        <translation>Bloccato a &amp;FALSE</translation>
+    </message>
+    <message>
+        <source>F&amp;licker</source>
+        <translation>&amp;Intermittente</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Fault</source>
+        <translation>&amp;Rimuovi il guasto</translation>
+    </message>
+    <message>
+        <source>Clear &amp;Jam</source>
+        <translation>&amp;Sblocca</translation>
+    </message>
+    <message>
+        <source>&amp;Jam</source>
+        <translation>&amp;Blocca</translation>
+    </message>
+</context>
+<context>
     <name>GrafcetClipboard</name>
     <message>
         <source>The clipboard holds no GRAFCET steps</source>
@@ -842,12 +906,19 @@
     <name>MachineComponentItem</name>
     <message>
         <source>%1: %2</source>
-        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it</extracomment>
+        <extracomment>%1: a role of a machine component (&quot;extended&quot;); %2: the variable wired to it
+----------
+%1: a sensor variable (&quot;Clamped&quot;); %2: its fault (&quot;stuck FALSE&quot;)</extracomment>
         <translation>%1: %2</translation>
     </message>
     <message>
         <source>(not wired)</source>
         <translation>(non cablato)</translation>
+    </message>
+    <message>
+        <source>%1, jammed</source>
+        <extracomment>%1: the kind of a machine component (&quot;Double-acting cylinder&quot;), which a fault has stopped</extracomment>
+        <translation>%1, bloccato</translation>
     </message>
 </context>
 <context>
@@ -1735,6 +1806,10 @@
     <message>
         <source>the GRAFCET of %1 has no step %2</source>
         <translation>il GRAFCET di %1 non ha la tappa %2</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is only defined when verifying with single faults (Simulation &gt; Verify with Single Faults, with the machine)</source>
+        <translation>&apos;%1&apos; è definito solo verificando con guasti singoli (Simulazione &gt; Verifica con guasti singoli, con la macchina)</translation>
     </message>
 </context>
 <context>
@@ -4475,6 +4550,180 @@ Ctrl+Spazio completa un nome.</translation>
         <source>Verification cancelled: the model, the Complete settings, the machine&apos;s use or Exact Time changed</source>
         <translation>Verifica annullata: sono cambiati il modello, le impostazioni di Complete, l&apos;uso della macchina o il tempo esatto</translation>
     </message>
+    <message>
+        <source>Co&amp;nnect…</source>
+        <translation>Co&amp;nnetti…</translation>
+    </message>
+    <message>
+        <source>Link the simulation to a digital twin, a soft PLC or an HMI over Modbus TCP; it then runs in real time</source>
+        <translation>Collegare la simulazione a un gemello digitale, a un PLC software o a un HMI tramite Modbus TCP; allora gira in tempo reale</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnetti</translation>
+    </message>
+    <message>
+        <source>End the Modbus TCP link</source>
+        <translation>Terminare il collegamento Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Verify with Single &amp;Faults</source>
+        <translation>Verifica con &amp;guasti singoli</translation>
+    </message>
+    <message>
+        <source>With the machine, also explore any one fault from any scan on: a sensor stuck or flickering, a cylinder or conveyor jammed</source>
+        <translation>Con la macchina, esplorare anche un guasto qualsiasi a partire da qualunque ciclo: un sensore bloccato o intermittente, un cilindro o un nastro inceppato</translation>
+    </message>
+    <message>
+        <source>The Modbus link is for GEMMA models; PackML models are not linked yet</source>
+        <translation>Il collegamento Modbus è per i modelli GEMMA; i modelli PackML non sono ancora collegati</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Connetti</translation>
+    </message>
+    <message>
+        <source>The Modbus link could not start: %1</source>
+        <translation>Il collegamento Modbus non è potuto partire: %1</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModbusConnectDialog</name>
+    <message>
+        <source>Coil</source>
+        <translation>Bobina</translation>
+    </message>
+    <message>
+        <source>Discrete input</source>
+        <translation>Ingresso discreto</translation>
+    </message>
+    <message>
+        <source>Holding register</source>
+        <translation>Registro di mantenimento</translation>
+    </message>
+    <message>
+        <source>Input register</source>
+        <translation>Registro di ingresso</translation>
+    </message>
+    <message>
+        <source>Connect over Modbus TCP</source>
+        <translation>Connetti tramite Modbus TCP</translation>
+    </message>
+    <message>
+        <source>Server: the twin connects to the simulator</source>
+        <translation>Server: il gemello si connette al simulatore</translation>
+    </message>
+    <message>
+        <source>Client: the simulator connects to the twin</source>
+        <translation>Client: il simulatore si connette al gemello</translation>
+    </message>
+    <message>
+        <source>Variable</source>
+        <translation>Variabile</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Table</source>
+        <translation>Tabella</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Indirizzo</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>Modalità:</translation>
+    </message>
+    <message>
+        <source>Host:</source>
+        <translation>Host:</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Porta:</translation>
+    </message>
+    <message>
+        <source>Unit id:</source>
+        <translation>Id unità:</translation>
+    </message>
+    <message>
+        <source>Load CSV…</source>
+        <translation>Carica CSV…</translation>
+    </message>
+    <message>
+        <source>Save As CSV…</source>
+        <translation>Salva come CSV…</translation>
+    </message>
+    <message>
+        <source>Default Map</source>
+        <translation>Mappa predefinita</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Connetti</translation>
+    </message>
+    <message>
+        <source>Map (each table numbered from 0 in declaration order unless loaded):</source>
+        <translation>Mappa (ogni tabella numerata da 0 nell&apos;ordine di dichiarazione, salvo se caricata):</translation>
+    </message>
+    <message>
+        <source>Load Modbus Map</source>
+        <translation>Carica mappa Modbus</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>File CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Save Modbus Map</source>
+        <translation>Salva mappa Modbus</translation>
+    </message>
+    <message>
+        <source>Line %1, column %2: %3</source>
+        <translation>Riga %1, colonna %2: %3</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used:</source>
+        <translation>%1 non può essere usato:</translation>
+    </message>
+    <message>
+        <source>%1 could not be saved: %2</source>
+        <translation>%1 non è stato possibile salvarlo: %2</translation>
+    </message>
+</context>
+<context>
+    <name>editor::ModbusConnection</name>
+    <message>
+        <source>The simulation could not start.</source>
+        <translation>La simulazione non è potuta partire.</translation>
+    </message>
+    <message>
+        <source>Modbus server on %1, unit %2, clients connected: %3</source>
+        <translation>Server Modbus su %1, unità %2, client connessi: %3</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: connected</source>
+        <translation>Client Modbus di %1: connesso</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: connecting</source>
+        <translation>Client Modbus di %1: connessione in corso</translation>
+    </message>
+    <message>
+        <source>Modbus client of %1: not connected, trying again</source>
+        <translation>Client Modbus di %1: non connesso, nuovo tentativo</translation>
+    </message>
+    <message>
+        <source>Set by the twin: %1</source>
+        <translation>Impostato dal gemello: %1</translation>
+    </message>
+    <message>
+        <source>Errors: %1, the last: %2</source>
+        <translation>Errori: %1, l&apos;ultimo: %2</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModelCommand</name>
@@ -5702,6 +5951,10 @@ I modi da 1 a 3 sono Production, Maintenance e Manual.</translation>
         <source>It sets the machine&apos;s sensors itself: played in open loop, the machine stands still.</source>
         <translation>Imposta da sé i sensori della macchina: riprodotto ad anello aperto, la macchina resta ferma.</translation>
     </message>
+    <message>
+        <source>Right-click to inject a fault</source>
+        <translation>Clic destro per iniettare un guasto</translation>
+    </message>
 </context>
 <context>
     <name>editor::SimulationSession</name>
@@ -5712,6 +5965,14 @@ I modi da 1 a 3 sono Production, Maintenance e Manual.</translation>
     <message>
         <source>%1 is a sensor of the machine&apos;s %2: the machine sets it</source>
         <translation>%1 è un sensore di %2 della macchina: lo imposta la macchina</translation>
+    </message>
+    <message>
+        <source>The replay plays the machine&apos;s faults: stop it first</source>
+        <translation>La riproduzione applica i guasti della macchina: fermarla prima</translation>
+    </message>
+    <message>
+        <source>A fault needs the virtual machine running in closed loop</source>
+        <translation>Un guasto richiede la macchina virtuale in anello chiuso</translation>
     </message>
 </context>
 <context>
@@ -6611,6 +6872,22 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
     <message>
         <source>With the machine: the sensors the model&apos;s machine drives follow it, scan by scan, instead of taking any value (Simulation &gt; Verify with the Machine).</source>
         <translation>Con la macchina: i sensori che la macchina del modello pilota la seguono, ciclo dopo ciclo, invece di prendere qualsiasi valore (Simulazione &gt; Verifica con la macchina).</translation>
+    </message>
+    <message>
+        <source>Single faults switched on since verification: verify again to update the findings.</source>
+        <translation>Guasti singoli attivati dopo la verifica: verificare di nuovo per aggiornare i risultati.</translation>
+    </message>
+    <message>
+        <source>Single faults switched off since verification: verify again to update the findings.</source>
+        <translation>Guasti singoli disattivati dopo la verifica: verificare di nuovo per aggiornare i risultati.</translation>
+    </message>
+    <message>
+        <source>Single faults</source>
+        <translation>Guasti singoli</translation>
+    </message>
+    <message>
+        <source>Single faults: any one sensor stuck or flickering, or one cylinder or conveyor jammed, from any scan on (Simulation &gt; Verify with Single Faults).</source>
+        <translation>Guasti singoli: un sensore qualsiasi bloccato o intermittente, o un cilindro o un nastro inceppato, a partire da qualunque ciclo (Simulazione &gt; Verifica con guasti singoli).</translation>
     </message>
 </context>
 <context>
