@@ -6912,4 +6912,23 @@ eine negierte Transition aus einem einschließenden Schritt wartet auf Complete.
         <translation>Die zu öffnende Modelldatei (GG-Studio-JSON, GG-Generator-JSON oder GG-Studio-PLCopen-XML).</translation>
     </message>
 </context>
+<context>
+    <name>modbus::ModbusLink</name>
+    <message>
+        <source>cannot listen on %1:%2: %3</source>
+        <translation>kann nicht auf %1:%2 lauschen: %3</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1:%2: %3</source>
+        <translation>keine Verbindung zu %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>write of %1 %2..%3 to %4:%5</source>
+        <translation>Schreiben von %1 %2..%3 nach %4:%5</translation>
+    </message>
+    <message>
+        <source>read of %1 %2..%3 from %4:%5</source>
+        <translation>Lesen von %1 %2..%3 von %4:%5</translation>
+    </message>
+</context>
 </TS>

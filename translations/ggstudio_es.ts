@@ -6912,4 +6912,23 @@ una transición negada que sale de una etapa encapsulante espera a Complete.</tr
         <translation>El archivo de modelo que se abrirá (JSON de GG Studio, JSON de GG-Generator o PLCopen XML de GG Studio).</translation>
     </message>
 </context>
+<context>
+    <name>modbus::ModbusLink</name>
+    <message>
+        <source>cannot listen on %1:%2: %3</source>
+        <translation>no se puede escuchar en %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1:%2: %3</source>
+        <translation>no se puede conectar a %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>write of %1 %2..%3 to %4:%5</source>
+        <translation>escritura de %1 %2..%3 en %4:%5</translation>
+    </message>
+    <message>
+        <source>read of %1 %2..%3 from %4:%5</source>
+        <translation>lectura de %1 %2..%3 desde %4:%5</translation>
+    </message>
+</context>
 </TS>

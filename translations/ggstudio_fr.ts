@@ -6912,4 +6912,23 @@ une transition niée issue d&apos;une étape encapsulante attend Complete.</tran
         <translation>Le fichier de modèle à ouvrir (JSON GG Studio, JSON GG-Generator ou PLCopen XML GG Studio).</translation>
     </message>
 </context>
+<context>
+    <name>modbus::ModbusLink</name>
+    <message>
+        <source>cannot listen on %1:%2: %3</source>
+        <translation>impossible d&apos;écouter sur %1:%2 : %3</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1:%2: %3</source>
+        <translation>impossible de se connecter à %1:%2 : %3</translation>
+    </message>
+    <message>
+        <source>write of %1 %2..%3 to %4:%5</source>
+        <translation>écriture de %1 %2..%3 vers %4:%5</translation>
+    </message>
+    <message>
+        <source>read of %1 %2..%3 from %4:%5</source>
+        <translation>lecture de %1 %2..%3 depuis %4:%5</translation>
+    </message>
+</context>
 </TS>

@@ -6912,4 +6912,23 @@ una transizione negata uscente da una tappa incapsulante attende Complete.</tran
         <translation>Il file del modello da aprire (JSON GG Studio, JSON GG-Generator o PLCopen XML GG Studio).</translation>
     </message>
 </context>
+<context>
+    <name>modbus::ModbusLink</name>
+    <message>
+        <source>cannot listen on %1:%2: %3</source>
+        <translation>impossibile ascoltare su %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1:%2: %3</source>
+        <translation>impossibile connettersi a %1:%2: %3</translation>
+    </message>
+    <message>
+        <source>write of %1 %2..%3 to %4:%5</source>
+        <translation>scrittura di %1 %2..%3 su %4:%5</translation>
+    </message>
+    <message>
+        <source>read of %1 %2..%3 from %4:%5</source>
+        <translation>lettura di %1 %2..%3 da %4:%5</translation>
+    </message>
+</context>
 </TS>

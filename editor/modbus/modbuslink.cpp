@@ -147,7 +147,7 @@ bool ModbusLink::start(QString* error)
                                   m_applied[i][static_cast<std::size_t>(w)]);
         }
         if (!m_server->connectDevice() || m_server->state() != QModbusDevice::ConnectedState) {
-            const QString reason = QStringLiteral("cannot listen on %1:%2: %3")
+            const QString reason = tr("cannot listen on %1:%2: %3")
                                        .arg(m_options.host)
                                        .arg(m_options.port)
                                        .arg(m_server->errorString());
@@ -178,7 +178,7 @@ bool ModbusLink::start(QString* error)
         });
         setState(State::Connecting);
         if (!m_client->connectDevice()) {
-            const QString reason = QStringLiteral("cannot connect to %1:%2: %3")
+            const QString reason = tr("cannot connect to %1:%2: %3")
                                        .arg(m_options.host)
                                        .arg(m_options.port)
                                        .arg(m_client->errorString());
@@ -406,7 +406,7 @@ void ModbusLink::sendClientWrites()
                 unit.setValue(entries[i].address + w - run.start, registers[static_cast<std::size_t>(w)]);
         }
         QModbusReply* reply = m_client->sendWriteRequest(unit, m_options.unitId);
-        const QString what = QStringLiteral("write of %1 %2..%3 to %4:%5")
+        const QString what = tr("write of %1 %2..%3 to %4:%5")
                                  .arg(modbuslink::tableText(run.table))
                                  .arg(run.start)
                                  .arg(run.start + run.count - 1)
@@ -434,7 +434,7 @@ void ModbusLink::sendClientReads()
     for (const modbuslink::Run& run : modbuslink::runsOf(entries, core::VariableKind::Input)) {
         QModbusReply* reply = m_client->sendReadRequest(
             QModbusDataUnit(registerType(run.table), run.start, static_cast<quint16>(run.count)), m_options.unitId);
-        const QString what = QStringLiteral("read of %1 %2..%3 from %4:%5")
+        const QString what = tr("read of %1 %2..%3 from %4:%5")
                                  .arg(modbuslink::tableText(run.table))
                                  .arg(run.start)
                                  .arg(run.start + run.count - 1)
