@@ -412,18 +412,29 @@ void ModbusLink::sendClientWrites()
                                  .arg(run.start + run.count - 1)
                                  .arg(m_options.host)
                                  .arg(m_options.port);
-        if (!reply) {
-            report(what + QStringLiteral(": ") + m_client->errorString());
-            continue;
-        }
-        ++m_pendingRequests;
-        connect(reply, &QModbusReply::finished, this, [this, reply, what] {
-            reply->deleteLater();
-            m_pendingRequests = std::max(0, m_pendingRequests - 1);
-            if (reply->error() != QModbusDevice::NoError && m_client)
-                report(what + QStringLiteral(": ") + reply->errorString());
-        });
+        track(reply, what, {});
     }
+}
+
+// Counts the request until it finishes; a failure is reported (the scan
+// keeps its last inputs), a success handed to `onSuccess`.
+void ModbusLink::track(QModbusReply* reply, const QString& what, std::function<void(const QModbusReply&)> onSuccess)
+{
+    if (!reply) {
+        report(what + QStringLiteral(": ") + m_client->errorString());
+        return;
+    }
+    ++m_pendingRequests;
+    connect(reply, &QModbusReply::finished, this, [this, reply, what, onSuccess = std::move(onSuccess)] {
+        reply->deleteLater();
+        m_pendingRequests = std::max(0, m_pendingRequests - 1);
+        if (!m_client)
+            return;
+        if (reply->error() != QModbusDevice::NoError)
+            report(what + QStringLiteral(": ") + reply->errorString());
+        else if (onSuccess)
+            onSuccess(*reply);
+    });
 }
 
 void ModbusLink::sendClientReads()
@@ -440,21 +451,8 @@ void ModbusLink::sendClientReads()
                                  .arg(run.start + run.count - 1)
                                  .arg(m_options.host)
                                  .arg(m_options.port);
-        if (!reply) {
-            report(what + QStringLiteral(": ") + m_client->errorString());
-            continue;
-        }
-        ++m_pendingRequests;
-        connect(reply, &QModbusReply::finished, this, [this, reply, what, run] {
-            reply->deleteLater();
-            m_pendingRequests = std::max(0, m_pendingRequests - 1);
-            if (!m_client)
-                return;
-            if (reply->error() != QModbusDevice::NoError) {
-                report(what + QStringLiteral(": ") + reply->errorString()); // the scan keeps its last inputs
-                return;
-            }
-            const QModbusDataUnit unit = reply->result();
+        track(reply, what, [this, run](const QModbusReply& answered) {
+            const QModbusDataUnit unit = answered.result();
             for (std::size_t i : run.entries) {
                 const ModbusEntry& entry = m_options.map.entries[i];
                 for (int w = 0; w < entry.width; ++w) {

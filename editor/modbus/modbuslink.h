@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+class QModbusReply;
 class QModbusTcpClient;
 class QTcpSocket;
 class QTimer;
@@ -115,6 +116,7 @@ private:
     void applyClientInputs();
     void sendClientWrites();
     void sendClientReads();
+    void track(QModbusReply* reply, const QString& what, std::function<void(const QModbusReply&)> onSuccess);
     void report(const QString& message);
     void setState(State state);
 

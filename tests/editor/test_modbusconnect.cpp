@@ -3,6 +3,7 @@
 // QModbusTcpClient twin pressing Start, Disconnect. 127.0.0.1 only, waits bounded.
 
 #include "editortestsupport.h"
+#include "tests/modbus/modbustestsupport.h"
 
 #include "editor/app/languages.h"
 #include "editor/document.h"
@@ -34,15 +35,7 @@ using namespace editor;
 
 namespace test_modbusconnect {
 
-int freePort()
-{
-    QTcpServer probe;
-    if (!probe.listen(QHostAddress::LocalHost, 0))
-        return 0;
-    const int port = probe.serverPort();
-    probe.close();
-    return port;
-}
+using modbustest::freePort;
 
 } // namespace test_modbusconnect
 
@@ -235,16 +228,8 @@ void TestModbusConnect::portInUseIsSaidAndNothingChanges()
 void TestModbusConnect::clientModeShowsItsTwin()
 {
     QModbusTcpServer twin;
-    QModbusDataUnitMap tables;
-    tables.insert(QModbusDataUnit::DiscreteInputs, QModbusDataUnit(QModbusDataUnit::DiscreteInputs, 0, 10));
-    tables.insert(QModbusDataUnit::InputRegisters, QModbusDataUnit(QModbusDataUnit::InputRegisters, 0, 1));
-    tables.insert(QModbusDataUnit::Coils, QModbusDataUnit(QModbusDataUnit::Coils, 0, 9));
-    QVERIFY(twin.setMap(tables));
     const int port = freePort();
-    twin.setConnectionParameter(QModbusDevice::NetworkAddressParameter, QStringLiteral("127.0.0.1"));
-    twin.setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
-    twin.setServerAddress(1);
-    QVERIFY(twin.connectDevice());
+    QVERIFY(modbustest::startDrillingCellTwin(twin, port));
     twin.setData(QModbusDataUnit::InputRegisters, 0, 42); // BatchSize
 
     ModbusConnectDialog dialog(m_window->document()->model().variables());

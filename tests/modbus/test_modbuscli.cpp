@@ -2,6 +2,8 @@
 // 127.0.0.1: the twin presses Start, reads the Spindle the program drives;
 // --scans bounds the run. A port already taken and a bad HOST:PORT exit 2.
 
+#include "modbustestsupport.h"
+
 #include <QModbusReply>
 #include <QModbusTcpClient>
 #include <QModbusTcpServer>
@@ -11,15 +13,7 @@
 
 namespace test_modbuscli {
 
-int freePort()
-{
-    QTcpServer probe;
-    if (!probe.listen(QHostAddress::LocalHost, 0))
-        return 0;
-    const int port = probe.serverPort();
-    probe.close();
-    return port;
-}
+using modbustest::freePort;
 
 const QString kModel = QStringLiteral(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
 
@@ -45,12 +39,7 @@ private:
 
 QModbusReply* TestModbusCli::wait(QModbusReply* reply)
 {
-    if (!reply)
-        return nullptr;
-    reply->setParent(this);
-    for (int i = 0; i < 300 && !reply->isFinished(); ++i)
-        QTest::qWait(10);
-    return reply->isFinished() ? reply : nullptr;
+    return modbustest::waitFor(reply, this);
 }
 
 void TestModbusCli::twinDrivesTheCliServer()
@@ -152,16 +141,8 @@ void TestModbusCli::clientModeDrivesATwinServer()
     // The twin: discrete inputs 0..9 (the BOOL inputs), input register 0
     // (BatchSize), coils 0..8 (the outputs), as --print-modbus-map says.
     QModbusTcpServer twin;
-    QModbusDataUnitMap tables;
-    tables.insert(QModbusDataUnit::DiscreteInputs, QModbusDataUnit(QModbusDataUnit::DiscreteInputs, 0, 10));
-    tables.insert(QModbusDataUnit::InputRegisters, QModbusDataUnit(QModbusDataUnit::InputRegisters, 0, 1));
-    tables.insert(QModbusDataUnit::Coils, QModbusDataUnit(QModbusDataUnit::Coils, 0, 9));
-    QVERIFY(twin.setMap(tables));
     const int port = freePort();
-    twin.setConnectionParameter(QModbusDevice::NetworkAddressParameter, QStringLiteral("127.0.0.1"));
-    twin.setConnectionParameter(QModbusDevice::NetworkPortParameter, port);
-    twin.setServerAddress(1);
-    QVERIFY(twin.connectDevice());
+    QVERIFY(modbustest::startDrillingCellTwin(twin, port));
     for (const quint16 input : {quint16(0), quint16(1), quint16(7), quint16(8)}) // EmergencyOk, StartButton, Unclamped, DrillHigh
         twin.setData(QModbusDataUnit::DiscreteInputs, input, 1);
     QProcess cli;

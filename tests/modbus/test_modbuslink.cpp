@@ -3,6 +3,8 @@
 // sockets send bad frames and floods, a QModbusTcpServer plays the twin of
 // client mode. Every wait is bounded.
 
+#include "modbustestsupport.h"
+
 #include "core/formats/modelfiles.h"
 #include "core/link/modbusmap.h"
 #include "core/simulation/simulator.h"
@@ -25,15 +27,7 @@ using modbus::ModbusLink;
 
 namespace test_modbuslink {
 
-int freePort()
-{
-    QTcpServer probe;
-    if (!probe.listen(QHostAddress::LocalHost, 0))
-        return 0;
-    const int port = probe.serverPort();
-    probe.close();
-    return port;
-}
+using modbustest::freePort;
 
 std::unique_ptr<core::Model> drillingCell()
 {
@@ -144,12 +138,7 @@ bool TestModbusLink::connectClient()
 
 QModbusReply* TestModbusLink::wait(QModbusReply* reply)
 {
-    if (!reply)
-        return nullptr;
-    reply->setParent(this);
-    for (int i = 0; i < 300 && !reply->isFinished(); ++i)
-        QTest::qWait(10);
-    return reply->isFinished() ? reply : nullptr;
+    return modbustest::waitFor(reply, this);
 }
 
 void TestModbusLink::hostPortParses()
@@ -408,16 +397,8 @@ void TestModbusLink::clientModeDrivesATwin()
     // The twin: a server with the client-mode tables of the drilling cell.
     const core::modbusio::ModbusMap map = core::modbusio::defaultModbusMap(m_model->variables(), ModbusRole::Client);
     QModbusTcpServer twin;
-    QModbusDataUnitMap tables;
-    tables.insert(QModbusDataUnit::DiscreteInputs, QModbusDataUnit(QModbusDataUnit::DiscreteInputs, 0, 10));
-    tables.insert(QModbusDataUnit::InputRegisters, QModbusDataUnit(QModbusDataUnit::InputRegisters, 0, 1));
-    tables.insert(QModbusDataUnit::Coils, QModbusDataUnit(QModbusDataUnit::Coils, 0, 9));
-    QVERIFY(twin.setMap(tables));
     m_port = freePort();
-    twin.setConnectionParameter(QModbusDevice::NetworkAddressParameter, QStringLiteral("127.0.0.1"));
-    twin.setConnectionParameter(QModbusDevice::NetworkPortParameter, m_port);
-    twin.setServerAddress(1);
-    QVERIFY(twin.connectDevice());
+    QVERIFY(modbustest::startDrillingCellTwin(twin, m_port));
     twin.setData(QModbusDataUnit::DiscreteInputs, static_cast<quint16>(map.find("EmergencyOk")->address), 1);
     twin.setData(QModbusDataUnit::InputRegisters, static_cast<quint16>(map.find("BatchSize")->address), 7);
 
