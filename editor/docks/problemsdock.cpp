@@ -2,6 +2,7 @@
 
 #include "editor/docks/declarationfix.h"
 #include "editor/docks/propertiespanel.h"
+#include "editor/docks/propertiestablemodel.h"
 #include "editor/docks/verificationpanel.h"
 #include "editor/docks/wrappingitemdelegate.h"
 #include "editor/document.h"
@@ -205,6 +206,13 @@ ProblemsDock::ProblemsDock(Document* document, Selection* selection, Verificatio
         m_tabs->addTab(m_verificationPanel, QString());
         m_propertiesPanel = new PropertiesPanel(m_document);
         m_tabs->addTab(m_propertiesPanel, QString());
+        // With single faults on, `faulted` is a word of the properties (docs/verification.md).
+        const auto offerFaultAtoms = [this] {
+            m_propertiesPanel->tableModel()->setFaultAtoms(m_verification->nextRunSingleFaults());
+        };
+        connect(m_verification, &VerificationRunner::assumptionsChanged, m_propertiesPanel, offerFaultAtoms);
+        connect(m_document, &Document::machineChanged, m_propertiesPanel, offerFaultAtoms);
+        connect(m_document, &Document::modelReset, m_propertiesPanel, offerFaultAtoms);
         connect(m_document, &Document::propertiesChanged, this, &ProblemsDock::updateTabTexts);
         connect(m_document, &Document::modelReset, this, &ProblemsDock::updateTabTexts);
         connect(m_verification, &VerificationRunner::finished, this, &ProblemsDock::updateTabTexts);

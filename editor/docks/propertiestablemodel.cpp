@@ -88,7 +88,7 @@ void PropertiesTableModel::reload()
     beginResetModel();
     m_problems.clear();
     for (const core::UserProperty& property : m_document->model().properties())
-        m_problems.push_back(core::checkProperty(m_document->model(), property.text));
+        m_problems.push_back(problemsOf(property.text));
     endResetModel();
 }
 
@@ -100,11 +100,27 @@ void PropertiesTableModel::recheck()
         return;
     }
     for (std::size_t row = 0; row < properties.size(); ++row) {
-        std::vector<core::PropertyProblem> now = core::checkProperty(m_document->model(), properties[row].text);
-        m_problems[row] = std::move(now);
+        m_problems[row] = problemsOf(properties[row].text);
     }
     if (!properties.empty())
         emit dataChanged(index(0, 0), index(static_cast<int>(properties.size()) - 1, ColumnCount - 1));
+}
+
+void PropertiesTableModel::setFaultAtoms(bool faulted)
+{
+    if (faulted == m_atoms.faulted)
+        return;
+    m_atoms.faulted = faulted;
+    recheck();
+}
+
+// Only a GEMMA model with a machine verifies with faults: the template's own
+// check otherwise.
+std::vector<core::PropertyProblem> PropertiesTableModel::problemsOf(const std::string& text) const
+{
+    if (m_atoms.faulted)
+        return core::checkProperty(m_document->model(), text, m_atoms);
+    return core::checkProperty(m_document->model(), text);
 }
 
 } // namespace editor

@@ -36,10 +36,16 @@ public:
     // Re-reads the list (rows added, removed, moved) or only the problems.
     void reload();
     void recheck();
+    // Whether the next verification runs with single faults, where
+    // `faulted` and `T/faulted` are words of a property (else GP007).
+    void setFaultAtoms(bool faulted);
 
 private:
+    std::vector<core::PropertyProblem> problemsOf(const std::string& text) const;
+
     Document* m_document;
     std::vector<std::vector<core::PropertyProblem>> m_problems;
+    core::PropertyAtoms m_atoms; // setFaultAtoms
 };
 
 } // namespace editor

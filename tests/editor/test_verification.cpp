@@ -109,6 +109,7 @@ private slots:
     void exactTimeFromTheMenu();
     void withMachineFromTheMenu();
     void singleFaultsFromTheMenu();
+    void faultedIsAWordOfPropertiesWithSingleFaults();
     void timeLimitFromThePanel();
     void initTestCase();
     void init();
@@ -1041,6 +1042,31 @@ void TestVerification::singleFaultsFromTheMenu()
     withMachine->setChecked(false);
     QVERIFY(!singleFaults->isEnabled());
     QVERIFY(!m_runner->nextRunSingleFaults());
+    singleFaults->setChecked(false);
+}
+
+// The Properties panel checks a property as the next run will: `faulted`
+// is GP007 there unless that run has single faults.
+void TestVerification::faultedIsAWordOfPropertiesWithSingleFaults()
+{
+    auto* withMachine = m_window->findChild<QAction*>(QStringLiteral("verifyWithMachineAction"));
+    auto* singleFaults = m_window->findChild<QAction*>(QStringLiteral("verifySingleFaultsAction"));
+    const core::LoadedModel loaded = core::loadModelFile(GGSTUDIO_EXAMPLES_DIR "/drilling-cell.ggstudio.json");
+    QVERIFY(loaded.model);
+    m_window->document()->replaceModel(*loaded.model, QString(), core::ModelFormat::Native);
+    QVERIFY(m_window->document()->modelForCommands().addProperty({"never 2s/faulted AND in F1", ""}).ok);
+    PropertiesTableModel* table = m_dock->propertiesPanel()->tableModel();
+    table->reload();
+    const int row = table->loadedRows() - 1;
+    QCOMPARE(table->problems(row).size(), std::size_t(1));
+    QCOMPARE(table->problems(row).front().code, std::string("GP007"));
+
+    withMachine->setChecked(true);
+    QCOMPARE(table->problems(row).size(), std::size_t(1)); // with the machine, still no faults
+    singleFaults->setChecked(true);
+    QVERIFY(table->problems(row).empty());
+    withMachine->setChecked(false); // the next run has no faults again
+    QCOMPARE(table->problems(row).size(), std::size_t(1));
     singleFaults->setChecked(false);
 }
 
