@@ -80,6 +80,8 @@ private:
     void startOnDrillingCell();
     int index(const char* variable) const;
     void pressStart();
+    // Replays a recording from scan 0 in closed loop: every expectation met.
+    void replayRecording(const QString& text);
 
     QTemporaryDir m_settingsDir;
     std::unique_ptr<Translators> m_translators;
@@ -132,6 +134,17 @@ void TestMachineSimulation::pressStart()
     QVERIFY(m_session->setVariable(index("StartButton"), true));
     m_session->advance(2);
     QVERIFY(m_session->setVariable(index("StartButton"), false));
+}
+
+void TestMachineSimulation::replayRecording(const QString& text)
+{
+    QString error;
+    QVERIFY2(m_session->startReplayText(text.toStdString(), QStringLiteral("recorded.scenario"), &error),
+             qPrintable(error));
+    QVERIFY(!m_session->replayIsOpenLoop());
+    m_session->advance(m_session->replayLength());
+    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
+    QVERIFY(m_session->replayFailures().empty());
 }
 
 void TestMachineSimulation::machineSensorsAreShownNotSet()
@@ -283,13 +296,7 @@ void TestMachineSimulation::recordingHoldsTheOperatorOnly()
     for (const char* sensor : {"DrillHigh", "Unclamped", "PartPresent", "Clamped", "InfeedEmpty"})
         QVERIFY2(!text.contains(QStringLiteral("set ") + QLatin1String(sensor)), qPrintable(text));
     // The recording replays in closed loop, every expectation met.
-    QString error;
-    QVERIFY2(m_session->startReplayText(text.toStdString(), QStringLiteral("recorded.scenario"), &error),
-             qPrintable(error));
-    QVERIFY(!m_session->replayIsOpenLoop());
-    m_session->advance(m_session->replayLength());
-    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
-    QVERIFY(m_session->replayFailures().empty());
+    replayRecording(text);
 }
 
 void TestMachineSimulation::openLoopScenarioReplaysWithTheMachineStill()
@@ -384,13 +391,7 @@ void TestMachineSimulation::injectedFaultsAreRecordedAndReplayed()
     const QString text = QString::fromStdString(m_session->recordingText());
     QVERIFY2(text.contains(QStringLiteral("at 53: fault Clamped stuck FALSE")), qPrintable(text));
 
-    QString error;
-    QVERIFY2(m_session->startReplayText(text.toStdString(), QStringLiteral("recorded.scenario"), &error),
-             qPrintable(error));
-    QVERIFY(!m_session->replayIsOpenLoop());
-    m_session->advance(m_session->replayLength());
-    QCOMPARE(m_session->replayState(), SimulationSession::ReplayState::Finished);
-    QVERIFY(m_session->replayFailures().empty());
+    replayRecording(text);
     QCOMPARE(m_session->simulator()->activeStepId(), stepThen);
     QCOMPARE(m_session->sensorFault(index("Clamped")), core::machine::SensorFault::StuckFalse);
 }
