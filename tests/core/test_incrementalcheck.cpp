@@ -71,6 +71,19 @@ std::string variableOfType(std::mt19937& random, const Model& model, bool numeri
     return names.empty() ? std::string(numeric ? "Count" : "In1") : drawOne(random, names);
 }
 
+// Mostly a BOOL variable whose edge memory's name is declared (GG420 when
+// it is read under an edge).
+std::string edgedVariable(std::mt19937& random, const Model& model)
+{
+    std::vector<std::string> names;
+    for (const Variable& v : model.variables()) {
+        if (v.type == IecType::Bool && model.variable(v.name + "_PREV") != nullptr)
+            names.push_back(v.name);
+    }
+    return names.empty() || drawBetween(random, 0, 3) == 0 ? variableOfType(random, model, false)
+                                                           : drawOne(random, names);
+}
+
 // A receptivity: valid ones (edges, durations, step activities, numeric
 // comparisons, divisors that read variables, constants), syntax errors,
 // undeclared names, type errors, and other variables' names alone.
@@ -83,8 +96,8 @@ std::string randomReceptivity(std::mt19937& random, const Model& model)
     switch (drawBetween(random, 0, 19)) {
     case 0: return b;
     case 1: return "NOT " + b + " AND " + c;
-    case 2: return "RE " + b;
-    case 3: return "FE " + c + " OR X" + x;
+    case 2: return "RE " + edgedVariable(random, model);
+    case 3: return "FE " + edgedVariable(random, model) + " OR X" + x;
     case 4: return b + " AND 200ms/X" + x;
     case 5: return n + " > " + x;
     case 6: return "100 / " + n + " > 2";
@@ -175,6 +188,10 @@ void applyRandomEdit(std::mt19937& random, Model& model)
 int checkRandomEdits(Model& model, std::uint32_t seed, int edits)
 {
     std::mt19937 random(seed);
+    // Variables named like the edge memories of BOOL variables, so that a
+    // receptivity reading one of those under an edge adds or removes GG420.
+    for (int i = 0; i < 4; ++i)
+        (void)model.addVariable({variableOfType(random, model, false) + "_PREV", IecType::Bool, "", ""});
     ChangeRecorder recorder(model);
     IncrementalCheck incremental;
     REQUIRE(incremental.checkAll(model) == checkModel(model));
