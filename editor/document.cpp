@@ -2,7 +2,6 @@
 
 #include "editor/commands/modelcommand.h"
 
-#include "core/checks/checks.h"
 #include "core/model/iectypes.h"
 
 #include <QFile>
@@ -101,7 +100,7 @@ Document::Document(const core::Model& model, QObject* parent)
 {
     m_observer = m_model->addObserver([this](const core::ModelChange& change) { onModelChanged(change); });
     connect(m_undoStack, &QUndoStack::cleanChanged, this, [this](bool clean) { emit modifiedChanged(!clean); });
-    m_diagnostics = core::checkModel(*m_model);
+    m_diagnostics = m_checks.checkAll(*m_model);
 }
 
 Document::~Document()
@@ -268,6 +267,7 @@ void Document::onModelChanged(const core::ModelChange& change)
     // The model notifies in the middle of an operation, when its invariants
     // may not hold yet (no initial step for a moment): a command's changes
     // wait for the end of the command.
+    m_uncheckedChanges.push_back(change);
     if (m_editDepth > 0) {
         m_pendingChanges.push_back(change);
         return;
@@ -344,7 +344,10 @@ void Document::emitChange(const core::ModelChange& change)
 
 bool Document::recheck()
 {
-    std::vector<core::Diagnostic> diagnostics = core::checkModel(*m_model);
+    // A receptivity edit recomputes what it can affect; anything else
+    // checks the whole model (core/checks/incrementalcheck.h).
+    std::vector<core::Diagnostic> diagnostics = m_checks.update(*m_model, m_uncheckedChanges);
+    m_uncheckedChanges.clear();
     if (diagnostics == m_diagnostics)
         return false;
     m_diagnostics = std::move(diagnostics);

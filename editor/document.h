@@ -3,6 +3,7 @@
 #include "editor/elementref.h"
 
 #include "core/checks/diagnostic.h"
+#include "core/checks/incrementalcheck.h"
 #include "core/model/model.h"
 #include "core/formats/modelfiles.h"
 
@@ -119,6 +120,8 @@ private:
     std::unique_ptr<core::Model> m_model;
     QUndoStack* m_undoStack;
     std::vector<core::Diagnostic> m_diagnostics;
+    core::IncrementalCheck m_checks; // what m_diagnostics came from
+    std::vector<core::ModelChange> m_uncheckedChanges; // since the last check, in order
     QString m_filePath;
     core::ModelFormat m_fileFormat = core::ModelFormat::Native;
     int m_observer = 0;

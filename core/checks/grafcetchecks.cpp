@@ -91,24 +91,36 @@ public:
 
     std::vector<Diagnostic> run()
     {
-        for (const Step& step : m_model.steps()) {
-            const Grafcet* grafcet = m_model.grafcet(step.id);
-            if (!grafcet)
-                continue;
-            if (!m_model.effectiveGrafcet(step.id)) {
-                checkKept(step, *grafcet);
-                continue;
-            }
-            const ParsedGrafcet parsed(step, *grafcet);
-            checkGrafcet(parsed);
-            checkSteps(parsed);
-            checkSelections(parsed);
-            checkDivisors(parsed);
-            for (Diagnostic& d : checkGrafcetSequences(m_model, step, *grafcet, parsed.receptivities, parsed.adjacency))
-                m_result.push_back(std::move(d));
-        }
+        for (const Step& step : m_model.steps())
+            checkStep(step);
         return std::move(m_result);
     }
+
+    std::vector<Diagnostic> runStep(const Step& step)
+    {
+        checkStep(step);
+        return std::move(m_result);
+    }
+
+private:
+    void checkStep(const Step& step)
+    {
+        const Grafcet* grafcet = m_model.grafcet(step.id);
+        if (!grafcet)
+            return;
+        if (!m_model.effectiveGrafcet(step.id)) {
+            checkKept(step, *grafcet);
+            return;
+        }
+        const ParsedGrafcet parsed(step, *grafcet);
+        checkGrafcet(parsed);
+        checkSteps(parsed);
+        checkSelections(parsed);
+        checkDivisors(parsed);
+        for (Diagnostic& d : checkGrafcetSequences(m_model, step, *grafcet, parsed.receptivities, parsed.adjacency))
+            m_result.push_back(std::move(d));
+    }
+
 
 private:
     void checkKept(const Step& step, const Grafcet& grafcet)
@@ -374,10 +386,10 @@ private:
 
 // The problems of single receptivities and actions, as the code generator
 // found them (it uses FALSE for such a receptivity and skips such an action).
-std::vector<Diagnostic> elementDiagnostics(const GemmaProgram& program)
+std::vector<Diagnostic> nestedProblemDiagnostics(const std::vector<ProgramProblem>& problems)
 {
     std::vector<Diagnostic> result;
-    for (ProgramProblem problem : program.problems) {
+    for (ProgramProblem problem : problems) {
         if (problem.nestedStep == 0 && problem.nestedTransition == 0)
             continue;
         Diagnostic d;
@@ -398,7 +410,9 @@ std::vector<Diagnostic> elementDiagnostics(const GemmaProgram& program)
 }
 
 // Spec §4.5: the names the code of nested GRAFCETs declares.
-std::optional<std::string> reservedNestedName(const Variable& variable, const GemmaProgram& program)
+namespace {
+
+std::optional<std::string> reservedNestedName(const Variable& variable, const std::vector<std::string>& edgeVariables)
 {
     const std::string& name = variable.name;
     if (cond::stepActivityNumber(name) > 0)
@@ -407,20 +421,23 @@ std::optional<std::string> reservedNestedName(const Variable& variable, const Ge
         return "Unstable is an output of the function blocks";
     if (name.size() > 3 && equalsIgnoreCase(std::string_view(name).substr(0, 3), "GG_"))
         return "names starting with GG_ are the generated code's";
-    for (const std::string& edged : program.edgeVariables) {
+    for (const std::string& edged : edgeVariables) {
         if (equalsIgnoreCase(name, edgeMemoryName(edged)))
             return "it is the edge memory of " + edged;
     }
     return std::nullopt;
 }
 
-std::vector<Diagnostic> reservedNameDiagnostics(const Model& model, const GemmaProgram& program)
+} // namespace
+
+std::vector<Diagnostic> reservedNameDiagnostics(const Model& model, bool hasNestedGrafcets,
+                                                const std::vector<std::string>& edgeVariables)
 {
     std::vector<Diagnostic> result;
-    if (!program.hasNestedGrafcets())
+    if (!hasNestedGrafcets)
         return result;
     for (const Variable& variable : model.variables()) {
-        const std::optional<std::string> why = reservedNestedName(variable, program);
+        const std::optional<std::string> why = reservedNestedName(variable, edgeVariables);
         if (!why)
             continue;
         Diagnostic d;
@@ -442,14 +459,19 @@ std::vector<Diagnostic> checkGrafcets(const Model& model)
         return result;
     // One build of the intermediate form for both: the code generator's view.
     const GemmaProgram program = buildGemmaProgram(model);
-    for (Diagnostic& d : elementDiagnostics(program))
+    for (Diagnostic& d : nestedProblemDiagnostics(program.problems))
         result.push_back(std::move(d));
-    for (Diagnostic& d : reservedNameDiagnostics(model, program))
+    for (Diagnostic& d : reservedNameDiagnostics(model, program.hasNestedGrafcets(), program.edgeVariables))
         result.push_back(std::move(d));
     return result;
 }
 
-void forEachNestedIdentifier(const Model& model, const std::function<void(std::string_view)>& use)
+std::vector<Diagnostic> checkStepGrafcet(const Model& model, const Step& step)
+{
+    return GrafcetChecker(model).runStep(step);
+}
+
+void forEachGrafcetIdentifier(const Grafcet& grafcet, const std::function<void(std::string_view)>& use)
 {
     const auto useTokens = [&](std::string_view text) {
         for (const cond::Token& token : cond::tokenize(text, cond::kNestedOptions)) {
@@ -457,15 +479,19 @@ void forEachNestedIdentifier(const Model& model, const std::function<void(std::s
                 use(token.text);
         }
     };
+    for (const GrafcetTransition& t : grafcet.transitions())
+        useTokens(t.receptivity);
+    for (const GrafcetStep& s : grafcet.steps()) {
+        for (const GrafcetAction& action : s.actions)
+            useTokens(action.text);
+    }
+}
+
+void forEachNestedIdentifier(const Model& model, const std::function<void(std::string_view)>& use)
+{
     for (const auto& [stepId, grafcet] : model.grafcets()) {
-        if (!model.effectiveGrafcet(stepId))
-            continue;
-        for (const GrafcetTransition& t : grafcet.transitions())
-            useTokens(t.receptivity);
-        for (const GrafcetStep& s : grafcet.steps()) {
-            for (const GrafcetAction& action : s.actions)
-                useTokens(action.text);
-        }
+        if (model.effectiveGrafcet(stepId))
+            forEachGrafcetIdentifier(grafcet, use);
     }
 }
 

@@ -10,16 +10,35 @@
 #include "core/checks/diagnostic.h"
 
 #include <functional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace core {
 
+class Grafcet;
 class Model;
+struct ProgramProblem;
+struct Step;
 
 // In a stable order: GEMMA steps in state order, then per GRAFCET the
 // GRAFCET itself, its steps by number, its transitions by number.
 std::vector<Diagnostic> checkGrafcets(const Model& model);
+
+// The parts of checkGrafcets, for core/checks/incrementalcheck.h, which
+// recomputes them one GRAFCET at a time:
+// - what the first section says about the GRAFCET of `step` (nothing when it
+//   has none; GG422 when it is kept but not used);
+// - the nested problems among the code generator's (core/codegen/nestedprogram.h),
+//   as diagnostics, in their order;
+// - GG420, the variables named like what the nested GRAFCETs' code declares.
+std::vector<Diagnostic> checkStepGrafcet(const Model& model, const Step& step);
+std::vector<Diagnostic> nestedProblemDiagnostics(const std::vector<ProgramProblem>& problems);
+std::vector<Diagnostic> reservedNameDiagnostics(const Model& model, bool hasNestedGrafcets,
+                                                const std::vector<std::string>& edgeVariables);
+
+// Calls `use` with every identifier the GRAFCET's texts mention.
+void forEachGrafcetIdentifier(const Grafcet& grafcet, const std::function<void(std::string_view)>& use);
 
 // Calls `use` with every identifier the effective nested GRAFCETs' texts
 // mention (receptivities and actions, parsed or not), so that a variable used

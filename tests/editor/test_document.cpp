@@ -4,10 +4,12 @@
 #include "editor/commands/renamevariablecommand.h"
 #include "editor/commands/setconditioncommand.h"
 #include "editor/commands/setinitialstepcommand.h"
+#include "editor/commands/setreceptivitycommand.h"
 #include "editor/commands/setstephiddencommand.h"
 #include "editor/document.h"
 #include "editor/selection.h"
 
+#include "core/checks/checks.h"
 #include "core/formats/gggeneratorformat.h"
 #include "core/formats/modelfiles.h"
 #include "core/templates/packml/packmlmodel.h"
@@ -28,6 +30,25 @@ bool hasCode(const std::vector<core::Diagnostic>& diagnostics, const std::string
 {
     return std::any_of(diagnostics.begin(), diagnostics.end(),
                        [&](const core::Diagnostic& d) { return d.code == code; });
+}
+
+// The template whose F1 (a macro-step) has 1 --Go--> 2 (N Lamp, S Complete)
+// --NOT Go--> 1, over Go (input) and Lamp (output).
+core::Model nestedModel()
+{
+    core::Model model;
+    model.addVariable({"Go", core::IecType::Bool, "", ""});
+    core::Variable lamp{"Lamp", core::IecType::Bool, "", ""};
+    lamp.kind = core::VariableKind::Output;
+    model.addVariable(lamp);
+    model.setStepType("F1", core::StepType::Macro);
+    model.setGrafcet("F1", core::Grafcet());
+    model.addGrafcetStep("F1", {1, true, "", {}});
+    model.addGrafcetStep("F1", {2, false, "", {{core::ActionTiming::Continuous, "N Lamp"},
+                                               {core::ActionTiming::OnActivation, "S Complete"}}});
+    model.addGrafcetTransition("F1", {1, {1}, {2}, "Go"});
+    model.addGrafcetTransition("F1", {2, {2}, {1}, "NOT Go"});
+    return model;
 }
 
 void writeText(const QString& path, const QByteArray& text)
@@ -57,6 +78,7 @@ private slots:
     void diagnosticsFollowChanges();
     void signalsComeWhenTheEditIsComplete();
     void editsAroundCommandsAreCheckedLater();
+    void receptivityEditsGiveTheWholeCheck();
     void modifiedFollowsUndoAndClean();
     void saveAndLoadRoundTrip();
     void failedLoadKeepsModelAndHistory();
@@ -173,6 +195,52 @@ void TestDocument::renameToAnInvalidNameIsRefused()
     QVERIFY(!status);
     QCOMPARE(status.code, std::string("invalid-name"));
     QVERIFY(document.model().sameContent(before));
+}
+
+// A receptivity edit is re-checked incrementally (core/checks/incrementalcheck.h):
+// typed, undone, redone, made around the commands or after another kind of
+// edit, the diagnostics are those of the whole check.
+void TestDocument::receptivityEditsGiveTheWholeCheck()
+{
+    Document document(nestedModel());
+    const auto current = [&] { return document.diagnostics() == core::checkModel(document.model()); };
+    QVERIFY(current());
+    QVERIFY(!hasCode(document.diagnostics(), "GG305")); // Go is read by F1's receptivities
+    QSignalSpy diagnosticsChanged(&document, &Document::diagnosticsChanged);
+
+    // Typing "Ghost" over "Go": GG403 on T1, and Go is still read by T2.
+    for (const char* typed : {"G", "Gh", "Gho", "Ghost"})
+        QVERIFY(document.push(new SetReceptivityCommand(document, "F1", 1, QString::fromLatin1(typed))));
+    QVERIFY(current());
+    QVERIFY(hasCode(document.diagnostics(), "GG403"));
+    QVERIFY(diagnosticsChanged.count() >= 1);
+
+    // T2 no longer reads Go either: Go becomes unused.
+    QVERIFY(document.push(new SetReceptivityCommand(document, "F1", 2, "TRUE")));
+    QVERIFY(current());
+    QVERIFY(hasCode(document.diagnostics(), "GG305"));
+    document.undoStack()->undo();
+    QVERIFY(current());
+    QVERIFY(!hasCode(document.diagnostics(), "GG305"));
+    document.undoStack()->redo();
+    QVERIFY(current());
+
+    // Declaring Ghost (a whole check), then reading it under an edge.
+    core::Variable ghost;
+    ghost.name = "Ghost";
+    QVERIFY(document.push(new AddVariableCommand(document, ghost)));
+    QVERIFY(current());
+    QVERIFY(!hasCode(document.diagnostics(), "GG403"));
+    QVERIFY(document.push(new SetReceptivityCommand(document, "F1", 2, "RE Ghost AND")));
+    QVERIFY(current());
+    QVERIFY(hasCode(document.diagnostics(), "GG401"));
+
+    // Around the commands: checked once control is back in the event loop.
+    const int before = diagnosticsChanged.count();
+    QVERIFY(document.modelForCommands().setReceptivity("F1", 2, "NOT Go"));
+    QTRY_VERIFY(diagnosticsChanged.count() > before);
+    QVERIFY(current());
+    QVERIFY(!hasCode(document.diagnostics(), "GG401"));
 }
 
 void TestDocument::editsAroundCommandsAreCheckedLater()

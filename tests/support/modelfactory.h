@@ -23,6 +23,12 @@ core::Model realisticModel();
 // every condition 30 operands long.
 core::Model stressModel();
 
+// Six nested GRAFCETs (F1, F2, F3, F5, A7, F4) of 40 steps: a sequence of
+// blocks, each a three-way parallel section of three steps per branch, with
+// a timer on every branch, and a loop back to the initial step; 20 BOOL
+// inputs In<n>, 20 outputs Out<n>, an internal INT Count.
+core::Model nestedStressModel();
+
 // For the verifier: every step and transition of the template visible, 40
 // BOOL variables spread over the conditions (each condition reads three of
 // them, `(A AND NOT B) OR C`), and a token on every variable of every

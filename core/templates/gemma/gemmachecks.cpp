@@ -174,7 +174,8 @@ public:
             m_effective.push_back(model.isEffective(transition));
     }
 
-    std::vector<Diagnostic> run()
+    // The steps, then the transitions; the variables their conditions read.
+    GemmaElementChecks runElements()
     {
         parseConditions();
         const StepGraph graph = buildStepGraph(m_model, m_effective);
@@ -184,12 +185,14 @@ public:
         const std::vector<Transition>& transitions = m_model.transitions();
         for (std::size_t i = 0; i < transitions.size(); ++i)
             checkTransition(transitions[i], m_effective[i], m_conditions[i]);
-        for (Diagnostic& diagnostic : checkGrafcets(m_model))
-            m_result.push_back(std::move(diagnostic));
-        forEachNestedIdentifier(m_model, [this](std::string_view name) { markUsed(name); });
+        return {std::move(m_result), std::move(m_variableUsed)};
+    }
+
+    std::vector<Diagnostic> runVariables(const std::vector<bool>& used)
+    {
         const std::vector<Variable>& variables = m_model.variables();
         for (std::size_t i = 0; i < variables.size(); ++i)
-            checkVariable(variables[i], m_variableUsed[i]);
+            checkVariable(variables[i], used[i]);
         return std::move(m_result);
     }
 
@@ -593,9 +596,37 @@ private:
 
 } // namespace
 
+GemmaElementChecks checkGemmaElements(const Model& model)
+{
+    return Checker(model).runElements();
+}
+
+std::vector<Diagnostic> checkGemmaVariables(const Model& model, const std::vector<bool>& used)
+{
+    return Checker(model).runVariables(used);
+}
+
+void markNestedUses(const Model& model, const Grafcet& grafcet, std::vector<bool>& used)
+{
+    const SymbolTable symbols(model.variables());
+    forEachGrafcetIdentifier(grafcet, [&](std::string_view name) {
+        if (const Variable* variable = symbols.find(name))
+            used[static_cast<std::size_t>(variable - model.variables().data())] = true;
+    });
+}
+
 std::vector<Diagnostic> checkGemmaModel(const Model& model)
 {
-    std::vector<Diagnostic> diagnostics = Checker(model).run();
+    GemmaElementChecks elements = checkGemmaElements(model);
+    std::vector<Diagnostic> diagnostics = std::move(elements.diagnostics);
+    for (Diagnostic& diagnostic : checkGrafcets(model))
+        diagnostics.push_back(std::move(diagnostic));
+    for (const auto& [stepId, grafcet] : model.grafcets()) {
+        if (model.effectiveGrafcet(stepId))
+            markNestedUses(model, grafcet, elements.variableUsed);
+    }
+    for (Diagnostic& diagnostic : checkGemmaVariables(model, elements.variableUsed))
+        diagnostics.push_back(std::move(diagnostic));
     for (Diagnostic& diagnostic : machine::checkMachine(model))
         diagnostics.push_back(std::move(diagnostic));
     return diagnostics;

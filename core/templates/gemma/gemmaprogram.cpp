@@ -327,6 +327,13 @@ private:
     const Model& m_model;
 };
 
+NestedGrafcet buildStepNestedGrafcet(const BuildContext& context, const UnusableNames& names, const Step& step,
+                                     const Grafcet& grafcet, std::vector<ProgramProblem>& problems)
+{
+    const NestedScope scope{step.id, step.id, context.model.variables(), context.symbols, names};
+    return buildNestedGrafcet(context.model, scope, grafcet, problems);
+}
+
 // GG415 and the edge memories, once every nested GRAFCET is built.
 void finishNestedGrafcets(const Model& model, GemmaProgram& program)
 {
@@ -393,6 +400,16 @@ std::string tokenVariableName(const std::string& variable, const std::string& so
     return variable + "_" + sourceStepId + "_" + std::to_string(priority) + "_MEM";
 }
 
+std::optional<NestedGrafcet> buildGemmaNestedGrafcet(const Model& model, const Step& step,
+                                                     std::vector<ProgramProblem>& problems)
+{
+    const Grafcet* grafcet = model.effectiveGrafcet(step.id);
+    if (step.hidden || grafcet == nullptr)
+        return std::nullopt;
+    const BuildContext context{model, SymbolTable(model.variables())};
+    return buildStepNestedGrafcet(context, GemmaUnusableNames(model), step, *grafcet, problems);
+}
+
 GemmaProgram buildGemmaProgram(const Model& model)
 {
     BuildContext context{model, SymbolTable(model.variables())};
@@ -420,10 +437,8 @@ GemmaProgram buildGemmaProgram(const Model& model)
         }
         if (step.family == Family::F)
             familyProblemsReported = true;
-        if (const Grafcet* grafcet = model.effectiveGrafcet(step.id)) {
-            const NestedScope scope{step.id, step.id, model.variables(), context.symbols, names};
-            program.steps.back().nested = buildNestedGrafcet(model, scope, *grafcet, program.problems);
-        }
+        if (const Grafcet* grafcet = model.effectiveGrafcet(step.id))
+            program.steps.back().nested = buildStepNestedGrafcet(context, names, step, *grafcet, program.problems);
     }
     program.evolution = model.settings().evolution;
     finishNestedGrafcets(model, program);

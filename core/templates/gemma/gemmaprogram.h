@@ -98,6 +98,13 @@ struct GemmaProgram {
 
 GemmaProgram buildGemmaProgram(const Model& model);
 
+// What buildGemmaProgram builds for the nested GRAFCET of one GEMMA step,
+// appending the same problems: nullopt (and nothing appended) when the step
+// is hidden or its GRAFCET not effective. Without GG415 and the edge
+// memories, which hold across GRAFCETs (core/codegen/nestedgrafcetset.h).
+std::optional<NestedGrafcet> buildGemmaNestedGrafcet(const Model& model, const Step& step,
+                                                     std::vector<ProgramProblem>& problems);
+
 // The checks' code for a variable name the generated code cannot declare as
 // it is: "GG301" (not an IEC identifier), "GG302" (a keyword), "GG303" (a
 // fixed name the generator uses), "GG306" (the instance or function block of
