@@ -3,6 +3,7 @@
 #include "core/formats/fileio.h"
 #include "core/model/model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_set>
 #include <utility>
@@ -52,7 +53,9 @@ std::string syntaxMessage(const std::string& what)
 }
 
 // Builds the DOM like nlohmann's own SAX DOM parser, but refuses duplicate
-// keys (nlohmann silently keeps the last one).
+// keys (nlohmann silently keeps the last one). Nothing is spent on the error
+// paths until there is an error: the JSON path of a duplicate key is made
+// from the open containers then (issue #36).
 class StrictDomBuilder : public json::json_sax_t {
 public:
     StrictDomBuilder(std::string_view text, json& root, JsonReadError& error)
@@ -76,8 +79,8 @@ public:
     bool key(string_t& key) override
     {
         Frame& frame = m_stack.back();
-        if (!frame.keys.insert(key).second) {
-            m_error = {childPath(frame.path, key), "duplicate key \"" + key + "\" (each key may appear once per object)"};
+        if (isDuplicate(frame, key)) {
+            m_error = {childPath(openPath(), key), "duplicate key \"" + key + "\" (each key may appear once per object)"};
             return false;
         }
         frame.pendingKey = std::move(key);
@@ -94,46 +97,80 @@ public:
     }
 
 private:
+    // Objects up to this many members are searched for a duplicate key one
+    // member at a time; a larger one gets a hash set of its keys, so that a
+    // hostile object of a million keys still loads in linear time.
+    static constexpr std::size_t kLinearKeySearch = 16;
+
     struct Frame {
         json* value;
-        std::string path;
         std::string pendingKey;
-        std::unordered_set<std::string> keys; // ordered_json finds keys by linear search
+        std::unique_ptr<std::unordered_set<std::string>> keys; // from kLinearKeySearch members on
     };
 
+    static json::object_t::Container& members(json& object)
+    {
+        return static_cast<json::object_t::Container&>(object.get_ref<json::object_t&>());
+    }
+
+    static bool isDuplicate(Frame& frame, const std::string& key)
+    {
+        auto& list = members(*frame.value);
+        if (!frame.keys) {
+            if (list.size() < kLinearKeySearch) {
+                return std::any_of(list.begin(), list.end(), [&](const auto& member) { return member.first == key; });
+            }
+            frame.keys = std::make_unique<std::unordered_set<std::string>>();
+            for (const auto& member : list)
+                frame.keys->insert(member.first);
+        }
+        return !frame.keys->insert(key).second;
+    }
+
+    // The JSON path of the innermost open container: each one is the last
+    // element or member of the one around it.
+    std::string openPath() const
+    {
+        std::string path;
+        for (std::size_t i = 1; i < m_stack.size(); ++i) {
+            json& parent = *m_stack[i - 1].value;
+            if (parent.is_array())
+                path = childPath(path, parent.size() - 1);
+            else
+                path = childPath(path, members(parent).back().first);
+        }
+        return path;
+    }
+
     // Inserts into the current container; returns where the value went.
-    json* insert(json&& value, std::string& path)
+    json* insert(json&& value)
     {
         if (m_stack.empty()) {
             m_root = std::move(value);
-            path.clear();
             return &m_root;
         }
         Frame& frame = m_stack.back();
         if (frame.value->is_array()) {
-            path = childPath(frame.path, frame.value->size());
-            frame.value->push_back(std::move(value));
-            return &frame.value->back();
+            auto& elements = frame.value->get_ref<json::array_t&>();
+            elements.push_back(std::move(value));
+            return &elements.back();
         }
-        path = childPath(frame.path, frame.pendingKey);
         // The key is known to be new: append without ordered_map's linear search.
-        auto& members = static_cast<json::object_t::Container&>(frame.value->get_ref<json::object_t&>());
-        members.emplace_back(std::move(frame.pendingKey), std::move(value));
-        return &members.back().second;
+        auto& list = members(*frame.value);
+        list.emplace_back(std::move(frame.pendingKey), std::move(value));
+        return &list.back().second;
     }
 
     bool add(json&& value)
     {
-        std::string path;
-        insert(std::move(value), path);
+        insert(std::move(value));
         return true;
     }
 
     bool open(json&& container)
     {
-        std::string path;
-        json* inserted = insert(std::move(container), path);
-        m_stack.push_back({inserted, std::move(path), {}, {}});
+        json* inserted = insert(std::move(container));
+        m_stack.push_back({inserted, {}, nullptr});
         return true;
     }
 
