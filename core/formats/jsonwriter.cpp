@@ -7,7 +7,7 @@ namespace {
 // What nlohmann writes unchanged between the quotes: printable ASCII but the
 // quote and the backslash. Anything else (controls, non-ASCII, invalid UTF-8)
 // takes nlohmann's escaping.
-bool isPlainAscii(std::string_view text)
+bool isPlainJsonText(std::string_view text)
 {
     for (const char c : text) {
         const auto byte = static_cast<unsigned char>(c);
@@ -37,7 +37,7 @@ void JsonWriter::beforeValue()
 
 void JsonWriter::quoted(std::string_view text)
 {
-    if (isPlainAscii(text)) {
+    if (isPlainJsonText(text)) {
         m_text += '"';
         m_text += text;
         m_text += '"';
