@@ -3,6 +3,7 @@
 #include "core/formats/fileio.h"
 #include "core/model/model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <unordered_set>
 #include <utility>
@@ -52,7 +53,12 @@ std::string syntaxMessage(const std::string& what)
 }
 
 // Builds the DOM like nlohmann's own SAX DOM parser, but refuses duplicate
-// keys (nlohmann silently keeps the last one).
+// keys (nlohmann silently keeps the last one). What it spares (issue #36):
+// the JSON path of a duplicate key is made from the open containers only
+// when there is one; and an object's members gather in a buffer of movable
+// pairs, moved once into the object when it closes, because ordered_json's
+// own member vector holds const keys and so copies every member, whole
+// subtrees included, each time it grows.
 class StrictDomBuilder : public json::json_sax_t {
 public:
     StrictDomBuilder(std::string_view text, json& root, JsonReadError& error)
@@ -70,14 +76,24 @@ public:
 
     bool start_object(std::size_t) override { return open(json::object()); }
     bool start_array(std::size_t) override { return open(json::array()); }
-    bool end_object() override { return close(); }
+
+    bool end_object() override
+    {
+        Frame& frame = m_stack[m_depth - 1];
+        auto& target = static_cast<json::object_t::Container&>(frame.value->get_ref<json::object_t&>());
+        target.reserve(frame.members.size());
+        for (auto& [name, value] : frame.members)
+            target.emplace_back(std::move(name), std::move(value));
+        return close();
+    }
+
     bool end_array() override { return close(); }
 
     bool key(string_t& key) override
     {
-        Frame& frame = m_stack.back();
-        if (!frame.keys.insert(key).second) {
-            m_error = {childPath(frame.path, key), "duplicate key \"" + key + "\" (each key may appear once per object)"};
+        Frame& frame = m_stack[m_depth - 1];
+        if (isDuplicate(frame, key)) {
+            m_error = {childPath(openPath(), key), "duplicate key \"" + key + "\" (each key may appear once per object)"};
             return false;
         }
         frame.pendingKey = std::move(key);
@@ -94,52 +110,88 @@ public:
     }
 
 private:
+    // Objects up to this many members are searched for a duplicate key one
+    // member at a time; a larger one gets a hash set of its keys, so that a
+    // hostile object of a million keys still loads in linear time.
+    static constexpr std::size_t kLinearKeySearch = 16;
+
+    // One open container. Frames are kept when closed, so that the next
+    // container at that depth reuses their buffers.
     struct Frame {
-        json* value;
-        std::string path;
+        json* value = nullptr;
+        std::vector<std::pair<std::string, json>> members; // an object's, until it closes
         std::string pendingKey;
-        std::unordered_set<std::string> keys; // ordered_json finds keys by linear search
+        std::unique_ptr<std::unordered_set<std::string>> keys; // from kLinearKeySearch members on
     };
 
-    // Inserts into the current container; returns where the value went.
-    json* insert(json&& value, std::string& path)
+    static bool isDuplicate(Frame& frame, const std::string& key)
     {
-        if (m_stack.empty()) {
+        if (!frame.keys) {
+            if (frame.members.size() < kLinearKeySearch) {
+                return std::any_of(frame.members.begin(), frame.members.end(),
+                                   [&](const auto& member) { return member.first == key; });
+            }
+            frame.keys = std::make_unique<std::unordered_set<std::string>>();
+            for (const auto& member : frame.members)
+                frame.keys->insert(member.first);
+        }
+        return !frame.keys->insert(key).second;
+    }
+
+    // The JSON path of the innermost open container: each one is the last
+    // element or member of the one around it.
+    std::string openPath() const
+    {
+        std::string path;
+        for (std::size_t i = 1; i < m_depth; ++i) {
+            const Frame& parent = m_stack[i - 1];
+            if (parent.value->is_array())
+                path = childPath(path, parent.value->size() - 1);
+            else
+                path = childPath(path, parent.members.back().first);
+        }
+        return path;
+    }
+
+    // Inserts into the current container; returns where the value went (it
+    // stays there while it is the last one, that is while it is open).
+    json* insert(json&& value)
+    {
+        if (m_depth == 0) {
             m_root = std::move(value);
-            path.clear();
             return &m_root;
         }
-        Frame& frame = m_stack.back();
+        Frame& frame = m_stack[m_depth - 1];
         if (frame.value->is_array()) {
-            path = childPath(frame.path, frame.value->size());
-            frame.value->push_back(std::move(value));
-            return &frame.value->back();
+            auto& elements = frame.value->get_ref<json::array_t&>();
+            elements.push_back(std::move(value));
+            return &elements.back();
         }
-        path = childPath(frame.path, frame.pendingKey);
-        // The key is known to be new: append without ordered_map's linear search.
-        auto& members = static_cast<json::object_t::Container&>(frame.value->get_ref<json::object_t&>());
-        members.emplace_back(std::move(frame.pendingKey), std::move(value));
-        return &members.back().second;
+        frame.members.emplace_back(std::move(frame.pendingKey), std::move(value));
+        return &frame.members.back().second;
     }
 
     bool add(json&& value)
     {
-        std::string path;
-        insert(std::move(value), path);
+        insert(std::move(value));
         return true;
     }
 
     bool open(json&& container)
     {
-        std::string path;
-        json* inserted = insert(std::move(container), path);
-        m_stack.push_back({inserted, std::move(path), {}, {}});
+        json* inserted = insert(std::move(container));
+        if (m_depth == m_stack.size())
+            m_stack.emplace_back();
+        Frame& frame = m_stack[m_depth++];
+        frame.value = inserted;
+        frame.members.clear();
+        frame.keys.reset();
         return true;
     }
 
     bool close()
     {
-        m_stack.pop_back();
+        --m_depth;
         return true;
     }
 
@@ -147,6 +199,7 @@ private:
     json& m_root;
     JsonReadError& m_error;
     std::vector<Frame> m_stack;
+    std::size_t m_depth = 0; // open containers: the first m_depth frames
 };
 
 std::string cut(std::string text, std::size_t maxLength)

@@ -25,37 +25,6 @@ const VariableEntrySpelling kVariableSpelling{
 
 // ---- Writing ---------------------------------------------------------------
 
-ordered_json stepJson(const Step& step)
-{
-    ordered_json object;
-    object["type"] = stepTypeName(step.type);
-    object["initial"] = step.initial;
-    object["hidden"] = step.hidden;
-    object["comment"] = step.comment;
-    return object;
-}
-
-ordered_json transitionJson(const Transition& transition)
-{
-    ordered_json object;
-    object["condition"] = transition.condition;
-    object["order"] = transition.order;
-    object["negated"] = transition.negated;
-    object["hidden"] = transition.hidden;
-    object["tokens"] = transition.tokens;
-    return object;
-}
-
-// Whether the model needs format 2.0 (nativeformat.h).
-bool needsNestedFormat(const Model& model)
-{
-    const auto& variables = model.variables();
-    return !model.grafcets().empty() || !model.properties().empty() || !model.machine().empty()
-        || model.settings().evolution != EvolutionRule::OneEvolutionPerScan
-        || std::any_of(variables.begin(), variables.end(),
-                       [](const Variable& v) { return v.kind != VariableKind::Input; });
-}
-
 std::string_view timingName(ActionTiming timing)
 {
     switch (timing) {
@@ -566,6 +535,11 @@ std::string nativeVersionText(int major)
     return versionText(major);
 }
 
+std::string_view nativeTimingName(ActionTiming timing)
+{
+    return timingName(timing);
+}
+
 void checkNativeKeys(const json& object, const std::string& path, const char* what,
                      std::initializer_list<std::string_view> known, NativeVersion version)
 {
@@ -616,54 +590,6 @@ ordered_json nativeGrafcetJson(const Grafcet& grafcet)
 Grafcet readNativeGrafcet(const ordered_json& value, const std::string& path)
 {
     return readGrafcet(value, path, KeyRule(FormatVersion{kNativeFormatMajor, kNativeFormatMinor}));
-}
-
-std::string saveNativeJson(const Model& model)
-{
-    if (model.packml())
-        return packml::saveJson(model);
-    const bool nested = needsNestedFormat(model);
-    ordered_json root;
-    root["format"] = kNativeFormatName;
-    root["version"] = versionText(nested ? 2 : 1);
-    root["name"] = model.settings().name;
-    ordered_json settings;
-    settings["cycleTimeMs"] = model.settings().cycleTimeMs;
-    settings["dialect"] = dialectName(model.settings().dialect);
-    if (nested)
-        settings["evolution"] = evolutionRuleName(model.settings().evolution);
-    root["settings"] = std::move(settings);
-
-    ordered_json steps = ordered_json::object();
-    for (const Step& step : model.steps())
-        steps[step.id] = stepJson(step);
-    root["steps"] = std::move(steps);
-
-    ordered_json transitions = ordered_json::object();
-    for (const Transition& transition : model.transitions())
-        transitions[transition.id] = transitionJson(transition);
-    root["transitions"] = std::move(transitions);
-
-    ordered_json variables = ordered_json::array();
-    for (const Variable& variable : model.variables())
-        variables.push_back(variableJson(variable, nested));
-    root["variables"] = std::move(variables);
-
-    if (nested) {
-        ordered_json grafcets = ordered_json::object();
-        for (const Step& step : model.steps()) {
-            if (const Grafcet* grafcet = model.grafcet(step.id))
-                grafcets[step.id] = grafcetJson(*grafcet);
-        }
-        root["grafcets"] = std::move(grafcets);
-    }
-    if (!model.properties().empty())
-        root["properties"] = nativePropertiesJson(model);
-    if (!model.machine().empty())
-        root["machine"] = nativeMachineJson(model.machine());
-
-    // Text from elsewhere may hold invalid UTF-8: replace it rather than throw.
-    return root.dump(2, ' ', false, ordered_json::error_handler_t::replace) + "\n";
 }
 
 std::variant<std::unique_ptr<Model>, LoadError> loadNativeJson(std::string_view text, const std::string& displayName)

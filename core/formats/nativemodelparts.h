@@ -26,6 +26,9 @@ struct NativeVersion {
 // "3.0" for major 3.
 std::string nativeVersionText(int major);
 
+// How the file names an action's timing: "continuous", "activation", "deactivation".
+std::string_view nativeTimingName(ActionTiming timing);
+
 // Fails at the first key of `object` that is not in `known` (unless the
 // file's minor version is newer than this build's), naming it and the known keys.
 void checkNativeKeys(const nlohmann::ordered_json& object, const std::string& path, const char* what,
