@@ -166,6 +166,9 @@ struct CompiledGrafcet {
     std::vector<bool> initial;
     std::vector<std::vector<CompiledAction>> onActivation, onDeactivation;
     std::vector<std::vector<const ExpressionInfo*>> continuous; // by step index, by continuous action: condition (nullptr: none)
+    // By output (source->outputs): its drivers whose action is usable, in
+    // order: (step index, condition; nullptr: none).
+    std::vector<std::vector<std::pair<int, const ExpressionInfo*>>> outputDrivers;
     std::vector<CompiledNestedTransition> transitions;
     // By step index: the usable transitions it is upstream of, the only ones
     // an evolution reads while it is active; plus those without upstream step.
@@ -298,6 +301,7 @@ struct EvolutionScratch {
     static constexpr char kDeactivated = 1, kActivated = 2;
     std::vector<int> active, candidates, fired, deactivated, activated, left, entered, next;
     std::vector<char> stepMark;      // by step index, all 0 between evolutions
+    std::vector<int> firstFiringFrom; // by step index, all -1 between evolutions
 
     void mark(std::vector<int>& list, int step, char flag)
     {
@@ -318,13 +322,22 @@ struct EvolutionScratch {
 
 // Which elements were seen, by index, with the list of their numbers that
 // Exploration reports: adding is constant time, however many there are.
+// `numbers` is the list in Exploration, looked up (and created) by its
+// step's id once, the first time it is needed, not at every scan.
 struct FlagSet {
     std::vector<char> seen;
-    void add(int index, int number, std::vector<int>& numbers)
+    std::vector<int>* numbers = nullptr;
+    std::vector<int>& list(std::map<std::string, std::vector<int>>& lists, const std::string& key)
+    {
+        if (!numbers)
+            numbers = &lists[key];
+        return *numbers;
+    }
+    void add(int index, int number, std::vector<int>& list)
     {
         char& flag = seen[static_cast<std::size_t>(index)];
         if (!flag)
-            numbers.push_back(number);
+            list.push_back(number);
         flag = 1;
     }
 };
@@ -397,6 +410,9 @@ struct ProgramExplorer::Impl {
     // --- exploring ----------------------------------------------------------------------
     void explore();
     bool exploreState(std::size_t next, const State& from);
+    static constexpr std::uint32_t kNoState = UINT32_MAX;
+    std::uint32_t knownSuccessor(std::size_t from) const;
+    void noteScan(std::size_t next, const State& from, std::uint32_t to, ScanOutcome& outcome);
     void finishExploration(const std::vector<bool>& reached);
     void addEvent(Event event, std::size_t state, bool gemmaFired);
     void analyseGraph();
@@ -468,6 +484,9 @@ struct ProgramExplorer::Impl {
     // The scan being run.
     Chooser chooser;
     State work;
+    State successor; // the state a scan ends in, its buffer kept from scan to scan
+    std::optional<Simulator> replaySimulator; // the counterexamples' runs: copies of it, never run itself
+    std::vector<char> outputValues; // computeOutputs's, kept from scan to scan
     std::vector<int> boolCache;   // by slot: -1 undecided
     std::vector<int> numberCache; // by slot
     std::vector<std::uint64_t> numberPossible; // by slot: representatives still possible this scan (0: all)
@@ -482,7 +501,10 @@ struct ProgramExplorer::Impl {
     const CompiledGrafcet* activeGrafcet = nullptr;
     const CompiledStep* activeStep = nullptr;
     bool firstEvolution = false;
-    std::map<int, std::pair<int, bool>> writes; // slot -> (step index, value) within the scan
+    // By slot, the stored write of the scan: (step index, value), step -1
+    // when none; writtenSlots lists the slots to clear for the next scan.
+    std::vector<std::pair<int, bool>> writes;
+    std::vector<int> writtenSlots;
     bool propertyPhase = false;
     int newStep = -1;
     // What the TONs did in the scan being replayed (logTimers), for
@@ -515,6 +537,8 @@ struct ProgramExplorer::Impl {
     std::set<std::string> eventKeys;
     std::map<std::string, std::pair<std::size_t, bool>> eventAt; // key -> (index in events, its scan fired a GEMMA transition)
     std::vector<char> firedGlobal; // by global transition: fires in some reachable scan
+    std::vector<char> completeSeenByStep; // by step index: Exploration::completeSeen set for it
+    std::vector<int> stepsWithTokens;     // nested steps with tokens: cleared at the end of a scan unless active
     struct FirstFire {
         bool seen = false;
         int step = -1;
@@ -579,6 +603,7 @@ ProgramExplorer::Impl::Impl(const Model& m, Options o)
     }
     boolCache.assign(slots.size(), -1);
     numberCache.assign(slots.size(), -1);
+    writes.assign(slots.size(), {-1, false});
     numberPossible.assign(slots.size(), 0);
 }
 
@@ -861,6 +886,11 @@ void ProgramExplorer::Impl::compileSteps()
     timerCache.assign(static_cast<std::size_t>(maxTimers), -1);
     failSeen.assign(transitionIds.size(), 0);
     firedGlobal.assign(transitionIds.size(), 0);
+    completeSeenByStep.assign(steps.size(), 0);
+    for (std::size_t s = 0; s < steps.size(); ++s) {
+        if (steps[s].nested && steps[s].tokenCount > 0)
+            stepsWithTokens.push_back(static_cast<int>(s));
+    }
     firstFire.assign(transitionIds.size(), FirstFire{});
 }
 
@@ -938,6 +968,16 @@ void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
         }
         compiled.continuous.push_back(std::move(conditions));
     }
+    for (const auto& output : nested.outputs) {
+        std::vector<std::pair<int, const ExpressionInfo*>> drivers;
+        for (const auto& driver : output.drivers) {
+            const int i = compiled.stepIndex(driver.step);
+            const auto u = [](int k) { return static_cast<std::size_t>(k); };
+            if (i >= 0 && nested.steps[u(i)].continuous[u(driver.action)].usable)
+                drivers.emplace_back(i, compiled.continuous[u(i)][u(driver.action)]);
+        }
+        compiled.outputDrivers.push_back(std::move(drivers));
+    }
     for (const NestedTransition& t : nested.transitions) {
         CompiledNestedTransition c;
         c.source = &t;
@@ -963,6 +1003,7 @@ void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
     nestedActiveSeen.push_back(FlagSet{std::vector<char>(compiled.numbers.size(), 0)});
     nestedFiredSeen.push_back(FlagSet{std::vector<char>(compiled.transitions.size(), 0)});
     evolution.stepMark.resize(std::max(evolution.stepMark.size(), compiled.numbers.size()), 0);
+    evolution.firstFiringFrom.resize(std::max(evolution.firstFiringFrom.size(), compiled.numbers.size()), -1);
     const int stepIndex = static_cast<int>(&step - steps.data());
     for (std::size_t o = 0; o < nested.outputs.size(); ++o) {
         if (nested.outputs[o].isComplete)
@@ -1476,10 +1517,11 @@ bool ProgramExplorer::Impl::timerElapsed(int timer)
 void ProgramExplorer::Impl::noteActive(const CompiledStep& step)
 {
     const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
-    std::vector<int>& seen = result.activeNestedSteps[step.source->id];
+    FlagSet& activeSeen = nestedActiveSeen[static_cast<std::size_t>(step.grafcet)];
+    std::vector<int>& seen = activeSeen.list(result.activeNestedSteps, step.source->id);
     for (std::size_t i = 0; i < g.numbers.size(); ++i) {
         if (work[static_cast<std::size_t>(layout.x) + i])
-            nestedActiveSeen[static_cast<std::size_t>(step.grafcet)].add(static_cast<int>(i), g.numbers[i], seen);
+            activeSeen.add(static_cast<int>(i), g.numbers[i], seen);
     }
 }
 
@@ -1487,9 +1529,10 @@ void ProgramExplorer::Impl::noteActive(const CompiledStep& step)
 void ProgramExplorer::Impl::noteEntered(const CompiledStep& step, const std::vector<int>& entered)
 {
     const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
-    std::vector<int>& seen = result.activeNestedSteps[step.source->id];
+    FlagSet& activeSeen = nestedActiveSeen[static_cast<std::size_t>(step.grafcet)];
+    std::vector<int>& seen = activeSeen.list(result.activeNestedSteps, step.source->id);
     for (int i : entered)
-        nestedActiveSeen[static_cast<std::size_t>(step.grafcet)].add(i, g.numbers[static_cast<std::size_t>(i)], seen);
+        activeSeen.add(i, g.numbers[static_cast<std::size_t>(i)], seen);
 }
 
 // The time limit and the cancel callback, looked at every kPollEvery units of
@@ -1541,19 +1584,21 @@ void ProgramExplorer::Impl::runStored(const CompiledStep& step, int stepIndex, c
             continue;
         }
         const Slot& slot = slots[static_cast<std::size_t>(action.slot)];
-        auto previous = writes.find(action.slot);
-        if (previous != writes.end() && previous->second.first != stepIndex && previous->second.second != value) {
+        std::pair<int, bool>& previous = writes[static_cast<std::size_t>(action.slot)];
+        if (previous.first >= 0 && previous.first != stepIndex && previous.second != value) {
             const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
             Event race;
             race.kind = EventKind::Race;
             race.stepId = step.source->id;
-            const int a = g.numbers[static_cast<std::size_t>(previous->second.first)];
+            const int a = g.numbers[static_cast<std::size_t>(previous.first)];
             const int b = g.numbers[static_cast<std::size_t>(stepIndex)];
             race.numbers = {std::min(a, b), std::max(a, b)};
             race.variable = slot.name;
             outcome.events.push_back(race);
         }
-        writes[action.slot] = {stepIndex, value};
+        if (previous.first < 0)
+            writtenSlots.push_back(action.slot);
+        previous = {stepIndex, value};
         work[static_cast<std::size_t>(layout.bools + slot.stateBit)] = value ? 1 : 0;
     }
 }
@@ -1561,18 +1606,13 @@ void ProgramExplorer::Impl::runStored(const CompiledStep& step, int stepIndex, c
 void ProgramExplorer::Impl::computeOutputs(const CompiledGrafcet& g)
 {
     const NestedGrafcet& nested = *g.source;
-    std::vector<char> values(nested.outputs.size(), 0);
+    std::vector<char>& values = outputValues;
+    values.assign(nested.outputs.size(), 0);
     bool complete = work[static_cast<std::size_t>(layout.complete)] != 0;
     for (std::size_t o = 0; o < nested.outputs.size(); ++o) {
         bool value = false;
-        for (const ContinuousOutput::Driver& driver : nested.outputs[o].drivers) {
-            const int i = g.stepIndex(driver.step);
-            if (i < 0 || !work[static_cast<std::size_t>(layout.x + i)])
-                continue;
-            const ExpressionInfo* condition
-                = g.continuous[static_cast<std::size_t>(i)][static_cast<std::size_t>(driver.action)];
-            const NestedAction& action = nested.steps[static_cast<std::size_t>(i)].continuous[static_cast<std::size_t>(driver.action)];
-            if (!action.usable)
+        for (const auto& [i, condition] : g.outputDrivers[o]) {
+            if (!work[static_cast<std::size_t>(layout.x + i)])
                 continue;
             if (!condition || eval(*condition, -1)) {
                 value = true;
@@ -1633,20 +1673,22 @@ bool ProgramExplorer::Impl::evolve(const CompiledStep& step, bool first, ScanOut
     if (e.fired.empty())
         return false;
     FlagSet& firedSeen = nestedFiredSeen[u(step.grafcet)];
-    std::map<int, int> firstFiringFrom; // upstream step index -> transition
+    // e.firstFiringFrom: by upstream step index, the first fired transition leaving it (-1 none).
     e.deactivated.clear();
     e.activated.clear();
     for (int t : e.fired) {
         const int number = g.transitions[u(t)].source->number;
-        firedSeen.add(t, number, result.firedNestedTransitions[step.source->id]);
+        firedSeen.add(t, number, firedSeen.list(result.firedNestedTransitions, step.source->id));
         for (int i : g.transitions[u(t)].upstream) {
-            auto [it, inserted] = firstFiringFrom.emplace(i, t);
-            if (!inserted) {
+            int& firstFrom = e.firstFiringFrom[u(i)];
+            if (firstFrom >= 0) {
                 Event together;
                 together.kind = EventKind::SimultaneousBranches;
                 together.stepId = step.source->id;
-                together.numbers = {g.numbers[u(i)], g.transitions[u(it->second)].source->number, number};
+                together.numbers = {g.numbers[u(i)], g.transitions[u(firstFrom)].source->number, number};
                 outcome.events.push_back(together);
+            } else {
+                firstFrom = t;
             }
             e.mark(e.deactivated, i, EvolutionScratch::kDeactivated);
         }
@@ -1674,8 +1716,10 @@ bool ProgramExplorer::Impl::evolve(const CompiledStep& step, bool first, ScanOut
             outcome.events.push_back(unsafe);
         }
     }
-    for (int i : e.deactivated)
+    for (int i : e.deactivated) {
         e.stepMark[u(i)] = 0;
+        e.firstFiringFrom[u(i)] = -1;
+    }
     for (int i : e.activated)
         e.stepMark[u(i)] = 0;
     for (int i : e.left)
@@ -1748,7 +1792,9 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
         timerLog.initialized = false;
     }
     opaqueCache.clear();
-    writes.clear();
+    for (int slot : writtenSlots)
+        writes[static_cast<std::size_t>(slot)] = {-1, false};
+    writtenSlots.clear();
     propertyPhase = false;
     activeGrafcet = nullptr;
     const auto u = [](int i) { return static_cast<std::size_t>(i); };
@@ -1860,8 +1906,9 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
         for (int t = 0; t < step.tokenCount; ++t)
             work[u(layout.tokens + step.firstToken + t)] = 0;
     }
-    for (const CompiledStep& step : steps) {
-        if (!step.nested || &step == (newStep >= 0 ? &steps[u(newStep)] : nullptr))
+    for (int s : stepsWithTokens) {
+        const CompiledStep& step = steps[u(s)];
+        if (s == newStep)
             continue;
         for (int t = 0; t < step.tokenCount; ++t)
             work[u(layout.tokens + step.firstToken + t)] = 0;
@@ -1994,38 +2041,73 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
             if ((++leaves & 1023) == 0 && outOfBudget())
                 break;
             chooser.restart(nullptr);
-            State to;
-            ScanOutcome outcome = scan(from, to);
-            auto [it, isNew] = index.emplace(std::move(to), static_cast<std::uint32_t>(statesByIndex.size()));
+            ScanOutcome outcome = scan(from, successor);
+            // Most scans of a state end in a successor an earlier scan of it
+            // reached: compared with the last few first, without hashing it.
+            const std::uint32_t to = knownSuccessor(next);
+            if (to != kNoState) {
+                noteScan(next, from, to, outcome);
+                continue;
+            }
+            // Looked up before emplacing: emplace would build (allocate) a
+            // node and a copy of the key for every successor already known.
+            auto it = index.find(successor);
+            const bool isNew = it == index.end();
             if (isNew) {
+                it = index.emplace(successor, static_cast<std::uint32_t>(statesByIndex.size())).first;
                 statesByIndex.push_back(&it->first);
                 parent.push_back(static_cast<std::uint32_t>(next));
                 depth.push_back(depth[next] + 1);
                 edges.emplace_back();
                 result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
             }
-            const int active = stepIndexOf(from);
-            if (outcome.firedTransition >= 0) {
-                const auto g = static_cast<std::size_t>(outcome.firedTransition);
-                firedGlobal[g] = 1;
-                if (!firstFire[g].seen)
-                    firstFire[g] = FirstFire{true, active, Witness{next, chooser.answers()}};
-            }
-            if (active >= 0 && outcome.completeTrue && steps[static_cast<std::size_t>(active)].grafcet >= 0)
-                result.completeSeen[steps[static_cast<std::size_t>(active)].source->id] = true;
-            Edge edge{it->second, outcome.firedTransition, outcome.completeTrue, outcome.entersD1};
-            std::vector<Edge>& out = edges[next];
-            if (std::none_of(out.begin(), out.end(), [&](const Edge& e) {
-                    return e.to == edge.to && e.fired == edge.fired && e.completeTrue == edge.completeTrue;
-                }))
-                out.push_back(edge);
-            for (Event& event : outcome.events)
-                addEvent(std::move(event), next, outcome.firedTransition >= 0);
+            noteScan(next, from, it->second, outcome);
         } while (chooser.advance());
     } catch (const Interrupted&) {
         return false;
     }
     return !(result.cancelled || ((leaves & 1023) == 0 && leaves > 0 && outOfBudget()));
+}
+
+// The index of the state the last scan ended in (`successor`) when one of
+// the last edges out of `from` leads to it, else kNoState.
+std::uint32_t ProgramExplorer::Impl::knownSuccessor(std::size_t from) const
+{
+    constexpr std::size_t kCompared = 8;
+    const std::vector<Edge>& out = edges[from];
+    const std::size_t first = out.size() > kCompared ? out.size() - kCompared : 0;
+    for (std::size_t e = out.size(); e-- > first;) {
+        if (*statesByIndex[out[e].to] == successor)
+            return out[e].to;
+    }
+    return kNoState;
+}
+
+// What one scan from state `next` to state `to` showed: the transition it
+// fired, Complete, its edge and its events.
+void ProgramExplorer::Impl::noteScan(std::size_t next, const State& from, std::uint32_t to, ScanOutcome& outcome)
+{
+    const int active = stepIndexOf(from);
+    if (outcome.firedTransition >= 0) {
+        const auto g = static_cast<std::size_t>(outcome.firedTransition);
+        firedGlobal[g] = 1;
+        if (!firstFire[g].seen)
+            firstFire[g] = FirstFire{true, active, Witness{next, chooser.answers()}};
+    }
+    if (active >= 0 && outcome.completeTrue && steps[static_cast<std::size_t>(active)].grafcet >= 0) {
+        char& seen = completeSeenByStep[static_cast<std::size_t>(active)];
+        if (!seen)
+            result.completeSeen[steps[static_cast<std::size_t>(active)].source->id] = true;
+        seen = 1;
+    }
+    Edge edge{to, outcome.firedTransition, outcome.completeTrue, outcome.entersD1};
+    std::vector<Edge>& out = edges[next];
+    if (std::none_of(out.begin(), out.end(), [&](const Edge& e) {
+            return e.to == edge.to && e.fired == edge.fired && e.completeTrue == edge.completeTrue;
+        }))
+        out.push_back(edge);
+    for (Event& event : outcome.events)
+        addEvent(std::move(event), next, outcome.firedTransition >= 0);
 }
 
 void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
@@ -2159,8 +2241,7 @@ void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
             break;
         }
         chooser.restart(nullptr);
-        State ignored;
-        scan(*statesByIndex[state], ignored);
+        scan(*statesByIndex[state], successor);
         const auto first = std::find(probeTrue.begin(), probeTrue.end(), 1);
         if (first == probeTrue.end())
             continue;
@@ -2331,9 +2412,8 @@ std::vector<int> ProgramExplorer::Impl::answersTo(std::size_t from, std::size_t 
     self->chooser.reset();
     do {
         self->chooser.restart(nullptr);
-        State next;
-        self->scan(*statesByIndex[from], next);
-        auto it = index.find(next);
+        self->scan(*statesByIndex[from], self->successor);
+        auto it = index.find(successor);
         if (it != index.end() && it->second == to)
             return chooser.answers();
     } while (self->chooser.advance());
@@ -2604,7 +2684,12 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     out.scans = scan;
     if (!parsed.ok() || scan == 0)
         return out;
-    Simulator simulator(impl.model);
+    // A copy of one simulator built once: it shares the compiled program
+    // (building it for every run was a third of the replay), and every run
+    // starts with reset().
+    if (!impl.replaySimulator)
+        impl.replaySimulator.emplace(impl.model);
+    Simulator simulator(*impl.replaySimulator);
     if (!validateScenario(out.scenario, simulator,
                           impl.machineState ? FaultLines::CheckedByMachine : FaultLines::Refused)
              .empty())
