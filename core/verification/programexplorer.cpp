@@ -16,6 +16,7 @@
 #include "core/verification/property.h"
 #include "core/verification/propertyevaluation.h"
 #include "core/verification/satisfiability.h"
+#include "core/verification/statestore.h"
 #include "core/verification/tonscans.h"
 
 #include <algorithm>
@@ -24,7 +25,6 @@
 #include <optional>
 #include <set>
 #include <sstream>
-#include <unordered_map>
 
 namespace core::explore {
 
@@ -500,18 +500,16 @@ struct ProgramExplorer::Impl {
     std::vector<char> probeTrue; // by position in the probed step: its gated condition in the last scan
     std::vector<char> failSeen; // by global transition: its gated condition was FALSE in some scan
 
-    // The explored graph.
-    std::unordered_map<State, std::uint32_t> index;
-    std::vector<const State*> statesByIndex;
-    std::vector<std::uint32_t> parent;
-    std::vector<std::uint32_t> depth;
-    struct Edge {
-        std::uint32_t to = 0;
-        int fired = -1;
-        bool completeTrue = false;
-        bool entersD1 = false;
-    };
-    std::vector<std::vector<Edge>> edges;
+    // The explored graph (statestore.h): each state once, encoded, with by
+    // index its parent, depth, step (stepIndexOf + 1) and edges.
+    StateStore store;
+    ChunkedArray<std::uint32_t> parent;
+    ChunkedArray<std::uint32_t> depth;
+    ChunkedArray<std::uint16_t> stepRaw;
+    using Edge = StateEdge;
+    EdgeStore edges;
+    int stepOfState(std::size_t state) const { return static_cast<int>(stepRaw[state]) - 1; }
+    std::uint32_t addState(const State& state, std::size_t from);
     std::set<std::string> eventKeys;
     std::map<std::string, std::pair<std::size_t, bool>> eventAt; // key -> (index in events, its scan fired a GEMMA transition)
     std::vector<char> firedGlobal; // by global transition: fires in some reachable scan
@@ -1908,7 +1906,7 @@ bool ProgramExplorer::Impl::outOfBudget()
         result.cancelled = true;
         return true;
     }
-    return statesByIndex.size() >= options.maxStates || scansRun >= options.maxScansRun
+    return store.size() >= options.maxStates || scansRun >= options.maxScansRun
         || std::chrono::steady_clock::now() > options.deadline;
 }
 
@@ -1949,22 +1947,18 @@ void ProgramExplorer::Impl::addEvent(Event event, std::size_t state, bool gemmaF
 void ProgramExplorer::Impl::explore()
 {
     started = std::chrono::steady_clock::now();
-    const State start = initialState();
-    auto inserted = index.emplace(start, 0);
-    statesByIndex.push_back(&inserted.first->first);
-    parent.push_back(0);
-    depth.push_back(0);
-    edges.emplace_back();
+    (void)addState(initialState(), 0);
     std::vector<bool> reached(steps.size(), false);
     compileSearchedOverlaps();
     polling = true;
-    for (std::size_t next = 0; next < statesByIndex.size(); ++next) {
+    State from;
+    for (std::size_t next = 0; next < store.size(); ++next) {
         if ((next & 63) == 0 && outOfBudget()) {
             result.exhaustive = false;
             break;
         }
-        const State from = *statesByIndex[next];
-        if (const int s = stepIndexOf(from); s >= 0)
+        store.decodeInto(next, from);
+        if (const int s = stepOfState(next); s >= 0)
             reached[static_cast<std::size_t>(s)] = true;
         if (!exploreState(next, from)) {
             result.exhaustive = false;
@@ -1982,6 +1976,21 @@ void ProgramExplorer::Impl::explore()
     polling = false;
 }
 
+// Adds `state`, found from state `from`, if it is new; its index.
+std::uint32_t ProgramExplorer::Impl::addState(const State& state, std::size_t from)
+{
+    const auto [at, isNew] = store.insert(state);
+    if (isNew) {
+        const bool first = at == 0;
+        parent.push_back(first ? 0 : static_cast<std::uint32_t>(from));
+        depth.push_back(first ? 0 : depth[from] + 1);
+        stepRaw.push_back(static_cast<std::uint16_t>(stepIndexOf(state) + 1));
+        edges.addState();
+        result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
+    }
+    return at;
+}
+
 // Every scan of one state; false when the budget ran out (or the run was
 // cancelled) before they were all run.
 bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
@@ -1996,15 +2005,8 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
             chooser.restart(nullptr);
             State to;
             ScanOutcome outcome = scan(from, to);
-            auto [it, isNew] = index.emplace(std::move(to), static_cast<std::uint32_t>(statesByIndex.size()));
-            if (isNew) {
-                statesByIndex.push_back(&it->first);
-                parent.push_back(static_cast<std::uint32_t>(next));
-                depth.push_back(depth[next] + 1);
-                edges.emplace_back();
-                result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
-            }
-            const int active = stepIndexOf(from);
+            const std::uint32_t reached = addState(to, next);
+            const int active = stepOfState(next);
             if (outcome.firedTransition >= 0) {
                 const auto g = static_cast<std::size_t>(outcome.firedTransition);
                 firedGlobal[g] = 1;
@@ -2013,12 +2015,16 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
             }
             if (active >= 0 && outcome.completeTrue && steps[static_cast<std::size_t>(active)].grafcet >= 0)
                 result.completeSeen[steps[static_cast<std::size_t>(active)].source->id] = true;
-            Edge edge{it->second, outcome.firedTransition, outcome.completeTrue, outcome.entersD1};
-            std::vector<Edge>& out = edges[next];
+            Edge edge;
+            edge.to = reached;
+            edge.fired = outcome.firedTransition;
+            edge.completeTrue = outcome.completeTrue ? 1 : 0;
+            edge.entersD1 = outcome.entersD1 ? 1 : 0;
+            const std::span<const Edge> out = edges.of(next);
             if (std::none_of(out.begin(), out.end(), [&](const Edge& e) {
                     return e.to == edge.to && e.fired == edge.fired && e.completeTrue == edge.completeTrue;
                 }))
-                out.push_back(edge);
+                edges.add(next, edge);
             for (Event& event : outcome.events)
                 addEvent(std::move(event), next, outcome.firedTransition >= 0);
         } while (chooser.advance());
@@ -2030,14 +2036,16 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
 
 void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
 {
-    result.states = statesByIndex.size();
+    result.states = store.size();
     if (layout.fault >= 0) {
         const auto at = static_cast<std::size_t>(layout.fault);
-        for (const State* state : statesByIndex)
-            result.faultedStates += ((*state)[at] | (*state)[at + 1] | (*state)[at + 2] | (*state)[at + 3]) != 0 ? 1 : 0;
+        State state;
+        for (std::size_t s = 0; s < store.size(); ++s) {
+            store.decodeInto(s, state);
+            result.faultedStates += (state[at] | state[at + 1] | state[at + 2] | state[at + 3]) != 0 ? 1 : 0;
+        }
     }
-    for (const std::vector<Edge>& out : edges)
-        result.scans += out.size();
+    result.scans = edges.edges();
     for (std::size_t s = 0; s < steps.size(); ++s) {
         if (reached[s])
             result.reachableSteps.push_back(steps[s].source->id);
@@ -2070,8 +2078,8 @@ void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
 void ProgramExplorer::Impl::probePriorities()
 {
     const auto u = [](auto i) { return static_cast<std::size_t>(i); };
-    for (std::size_t s = 0; s < statesByIndex.size() && result.prioritiesDecided; ++s) {
-        const int active = stepIndexOf(*statesByIndex[s]);
+    for (std::size_t s = 0; s < store.size() && result.prioritiesDecided; ++s) {
+        const int active = stepOfState(s);
         if (active >= 0 && worthProbing(active, overlapFound))
             probeState(s, overlapFound);
     }
@@ -2135,7 +2143,7 @@ void ProgramExplorer::Impl::probeState(std::size_t state,
         result.prioritiesDecided = false;
         return;
     }
-    probe = Probe{stepIndexOf(*statesByIndex[state]), true};
+    probe = Probe{stepOfState(state), true};
     chooser.reset();
     std::size_t leaves = 0;
     try {
@@ -2152,6 +2160,7 @@ void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
     const auto u = [](auto i) { return static_cast<std::size_t>(i); };
     const int active = probe.step;
     const std::vector<CompiledTransition>& transitions = steps[u(active)].transitions;
+    const State from = store.at(state);
     do {
         ++scansRun;
         if ((++leaves & 1023) == 0 && outOfBudget()) {
@@ -2160,7 +2169,7 @@ void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
         }
         chooser.restart(nullptr);
         State ignored;
-        scan(*statesByIndex[state], ignored);
+        scan(from, ignored);
         const auto first = std::find(probeTrue.begin(), probeTrue.end(), 1);
         if (first == probeTrue.end())
             continue;
@@ -2221,7 +2230,7 @@ void ProgramExplorer::Impl::compileSearchedOverlaps()
 // before probePriorities would run).
 void ProgramExplorer::Impl::probeSearchedOverlaps(std::size_t state)
 {
-    const int active = stepIndexOf(*statesByIndex[state]);
+    const int active = stepOfState(state);
     if (active < 0)
         return;
     const std::vector<std::string>& keys = searchedOverlaps[static_cast<std::size_t>(active)];
@@ -2234,19 +2243,31 @@ void ProgramExplorer::Impl::probeSearchedOverlaps(std::size_t state)
 // The graph properties: from which states of a step something can still happen.
 void ProgramExplorer::Impl::analyseGraph()
 {
-    const std::size_t n = statesByIndex.size();
-    std::vector<std::vector<std::uint32_t>> reverse(n);
+    const std::size_t n = store.size();
+    // The predecessors of each state, in one array (compressed rows): those
+    // of s at reverse[reverseStart[s]] up to reverse[reverseStart[s + 1]].
+    std::vector<std::uint32_t> reverseStart(n + 1, 0);
     for (std::size_t s = 0; s < n; ++s) {
-        for (const Edge& e : edges[s])
-            reverse[e.to].push_back(static_cast<std::uint32_t>(s));
+        for (const Edge& e : edges.of(s))
+            ++reverseStart[e.to + 1];
     }
-    auto stepOf = [&](std::size_t s) { return stepIndexOf(*statesByIndex[s]); };
+    for (std::size_t s = 0; s < n; ++s)
+        reverseStart[s + 1] += reverseStart[s];
+    std::vector<std::uint32_t> reverse(edges.edges());
+    {
+        std::vector<std::uint32_t> filled(reverseStart.begin(), reverseStart.end() - 1);
+        for (std::size_t s = 0; s < n; ++s) {
+            for (const Edge& e : edges.of(s))
+                reverse[filled[e.to]++] = static_cast<std::uint32_t>(s);
+        }
+    }
+    auto stepOf = [&](std::size_t s) { return stepOfState(s); };
     // Backward closure from the states with a marked edge, along edges that satisfy `keep`.
     auto canReach = [&](auto marked, auto keep) {
         std::vector<char> good(n, 0);
         std::deque<std::uint32_t> queue;
         for (std::size_t s = 0; s < n; ++s) {
-            for (const Edge& e : edges[s]) {
+            for (const Edge& e : edges.of(s)) {
                 if (marked(s, e)) {
                     good[s] = 1;
                     queue.push_back(static_cast<std::uint32_t>(s));
@@ -2257,11 +2278,13 @@ void ProgramExplorer::Impl::analyseGraph()
         while (!queue.empty()) {
             const std::uint32_t s = queue.front();
             queue.pop_front();
-            for (std::uint32_t p : reverse[s]) {
+            for (std::uint32_t r = reverseStart[s]; r < reverseStart[s + 1]; ++r) {
+                const std::uint32_t p = reverse[r];
                 if (good[p])
                     continue;
-                const bool along = std::any_of(edges[p].begin(), edges[p].end(),
-                                               [&](const Edge& e) { return e.to == s && keep(p, e); });
+                const std::span<const Edge> out = edges.of(p);
+                const bool along
+                    = std::any_of(out.begin(), out.end(), [&](const Edge& e) { return e.to == s && keep(p, e); });
                 if (along) {
                     good[p] = 1;
                     queue.push_back(p);
@@ -2316,7 +2339,8 @@ void ProgramExplorer::Impl::analyseGraph()
             const int step = stepOf(s);
             if (step < 0 || steps[static_cast<std::size_t>(step)].source->id[0] != 'F')
                 continue;
-            if (std::none_of(edges[s].begin(), edges[s].end(), [](const Edge& e) { return e.entersD1; }))
+            const std::span<const Edge> out = edges.of(s);
+            if (std::none_of(out.begin(), out.end(), [](const Edge& e) { return e.entersD1 != 0; }))
                 report(EventKind::NoEmergencyStop, s);
         }
     }
@@ -2329,12 +2353,12 @@ std::vector<int> ProgramExplorer::Impl::answersTo(std::size_t from, std::size_t 
 {
     auto* self = const_cast<Impl*>(this);
     self->chooser.reset();
+    const State start = store.at(from);
     do {
         self->chooser.restart(nullptr);
         State next;
-        self->scan(*statesByIndex[from], next);
-        auto it = index.find(next);
-        if (it != index.end() && it->second == to)
+        self->scan(start, next);
+        if (store.find(next) == static_cast<std::int64_t>(to))
             return chooser.answers();
     } while (self->chooser.advance());
     return {};
@@ -2346,10 +2370,10 @@ void ProgramExplorer::Impl::replayScan(std::size_t from, const std::vector<int>&
 {
     chooser.restart(&answers);
     if (witnessScan && event.kind == EventKind::Overlap)
-        probe = Probe{stepIndexOf(*statesByIndex[from]), false};
+        probe = Probe{stepOfState(from), false};
     logTimers = true;
     State ignored;
-    scan(*statesByIndex[from], ignored);
+    scan(store.at(from), ignored);
     logTimers = false;
     probe = Probe{};
 }
@@ -2373,7 +2397,7 @@ std::vector<std::int64_t> ProgramExplorer::Impl::countRuns(const std::vector<std
 // back to the state itself is preferred. The state it ends in, its answers.
 std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::stutter(std::size_t state)
 {
-    const State& from = *statesByIndex[state];
+    const State from = store.at(state);
     const auto timersOnly = [&](const State& next) {
         return std::equal(from.begin(), from.begin() + layout.timers, next.begin())
             && std::equal(from.begin() + layout.bools, from.end(), next.begin() + layout.bools);
@@ -2389,13 +2413,13 @@ std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::s
         });
         if (elapses || next.size() != from.size() || !timersOnly(next))
             continue;
-        const auto known = index.find(next);
-        if (known == index.end())
+        const std::int64_t known = store.find(next);
+        if (known < 0)
             continue;
-        if (known->second == state)
+        if (static_cast<std::size_t>(known) == state)
             return std::make_pair(state, chooser.answers());
         if (!found)
-            found = std::make_pair(std::size_t{known->second}, chooser.answers());
+            found = std::make_pair(static_cast<std::size_t>(known), chooser.answers());
     } while (chooser.advance());
     return found;
 }
@@ -2403,7 +2427,7 @@ std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::s
 // The TON runs still missing before the replayed scan's TONs may elapse as it chose.
 std::int64_t ProgramExplorer::Impl::missingRuns(std::size_t from, const std::vector<std::int64_t>& counts) const
 {
-    const int step = stepIndexOf(*statesByIndex[from]);
+    const int step = stepOfState(from);
     const int grafcet = step >= 0 ? steps[static_cast<std::size_t>(step)].grafcet : -1;
     if (grafcet < 0 || timerLog.initialized)
         return 0;
@@ -2529,9 +2553,9 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
         impl.chooser.restart(&answers);
         const bool witnessScan = !event.stateOnly && k + 1 == path.size();
         if (witnessScan && event.kind == EventKind::Overlap)
-            impl.probe = Probe{stepIndexOf(*impl.statesByIndex[from]), false}; // reads the inputs as the probe did
+            impl.probe = Probe{impl.stepOfState(from), false}; // reads the inputs as the probe did
         State next;
-        const ScanOutcome outcome = impl.scan(*impl.statesByIndex[from], next);
+        const ScanOutcome outcome = impl.scan(impl.store.at(from), next);
         impl.probe = Probe{};
         last = next;
         if (witnessScan && (event.kind == EventKind::Overlap || event.kind == EventKind::AlwaysTrue)
@@ -2579,7 +2603,7 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     }
     impl.chooser.restart(nullptr);
     impl.chooser.reset();
-    const State& end = event.stateOnly ? *impl.statesByIndex[event.witness.state] : last;
+    const State end = event.stateOnly ? impl.store.at(event.witness.state) : last;
     const int step = stepIndexOf(end);
     if (!firedAtEnd.empty())
         text << "at " << scan << ": expect fired " << firedAtEnd << "\n";
