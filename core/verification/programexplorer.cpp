@@ -16,6 +16,7 @@
 #include "core/verification/property.h"
 #include "core/verification/propertyevaluation.h"
 #include "core/verification/satisfiability.h"
+#include "core/verification/statestore.h"
 #include "core/verification/tonscans.h"
 
 #include <algorithm>
@@ -24,7 +25,6 @@
 #include <optional>
 #include <set>
 #include <sstream>
-#include <unordered_map>
 
 namespace core::explore {
 
@@ -410,9 +410,7 @@ struct ProgramExplorer::Impl {
     // --- exploring ----------------------------------------------------------------------
     void explore();
     bool exploreState(std::size_t next, const State& from);
-    static constexpr std::uint32_t kNoState = UINT32_MAX;
-    std::uint32_t knownSuccessor(std::size_t from) const;
-    void noteScan(std::size_t next, const State& from, std::uint32_t to, ScanOutcome& outcome);
+    void noteScan(std::size_t next, std::uint32_t to, ScanOutcome& outcome);
     void finishExploration(const std::vector<bool>& reached);
     void addEvent(Event event, std::size_t state, bool gemmaFired);
     void analyseGraph();
@@ -522,18 +520,16 @@ struct ProgramExplorer::Impl {
     std::vector<char> probeTrue; // by position in the probed step: its gated condition in the last scan
     std::vector<char> failSeen; // by global transition: its gated condition was FALSE in some scan
 
-    // The explored graph.
-    std::unordered_map<State, std::uint32_t> index;
-    std::vector<const State*> statesByIndex;
-    std::vector<std::uint32_t> parent;
-    std::vector<std::uint32_t> depth;
-    struct Edge {
-        std::uint32_t to = 0;
-        int fired = -1;
-        bool completeTrue = false;
-        bool entersD1 = false;
-    };
-    std::vector<std::vector<Edge>> edges;
+    // The explored graph (statestore.h): each state once, encoded, with by
+    // index its parent, depth, step (stepIndexOf + 1) and edges.
+    StateStore store;
+    ChunkedArray<std::uint32_t> parent;
+    ChunkedArray<std::uint32_t> depth;
+    ChunkedArray<std::uint16_t> stepRaw;
+    using Edge = StateEdge;
+    EdgeStore edges;
+    int stepOfState(std::size_t state) const { return static_cast<int>(stepRaw[state]) - 1; }
+    std::uint32_t addState(const State& state, std::size_t from);
     std::set<std::string> eventKeys;
     std::map<std::string, std::pair<std::size_t, bool>> eventAt; // key -> (index in events, its scan fired a GEMMA transition)
     std::vector<char> firedGlobal; // by global transition: fires in some reachable scan
@@ -1955,7 +1951,7 @@ bool ProgramExplorer::Impl::outOfBudget()
         result.cancelled = true;
         return true;
     }
-    return statesByIndex.size() >= options.maxStates || scansRun >= options.maxScansRun
+    return store.size() >= options.maxStates || scansRun >= options.maxScansRun
         || std::chrono::steady_clock::now() > options.deadline;
 }
 
@@ -1996,22 +1992,18 @@ void ProgramExplorer::Impl::addEvent(Event event, std::size_t state, bool gemmaF
 void ProgramExplorer::Impl::explore()
 {
     started = std::chrono::steady_clock::now();
-    const State start = initialState();
-    auto inserted = index.emplace(start, 0);
-    statesByIndex.push_back(&inserted.first->first);
-    parent.push_back(0);
-    depth.push_back(0);
-    edges.emplace_back();
+    (void)addState(initialState(), 0);
     std::vector<bool> reached(steps.size(), false);
     compileSearchedOverlaps();
     polling = true;
-    for (std::size_t next = 0; next < statesByIndex.size(); ++next) {
+    State from;
+    for (std::size_t next = 0; next < store.size(); ++next) {
         if ((next & 63) == 0 && outOfBudget()) {
             result.exhaustive = false;
             break;
         }
-        const State from = *statesByIndex[next];
-        if (const int s = stepIndexOf(from); s >= 0)
+        store.decodeInto(next, from);
+        if (const int s = stepOfState(next); s >= 0)
             reached[static_cast<std::size_t>(s)] = true;
         if (!exploreState(next, from)) {
             result.exhaustive = false;
@@ -2029,6 +2021,21 @@ void ProgramExplorer::Impl::explore()
     polling = false;
 }
 
+// Adds `state`, found from state `from`, if it is new; its index.
+std::uint32_t ProgramExplorer::Impl::addState(const State& state, std::size_t from)
+{
+    const auto [at, isNew] = store.insert(state);
+    if (isNew) {
+        const bool first = at == 0;
+        parent.push_back(first ? 0 : static_cast<std::uint32_t>(from));
+        depth.push_back(first ? 0 : depth[from] + 1);
+        stepRaw.push_back(static_cast<std::uint16_t>(stepIndexOf(state) + 1));
+        edges.addState();
+        result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
+    }
+    return at;
+}
+
 // Every scan of one state; false when the budget ran out (or the run was
 // cancelled) before they were all run.
 bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
@@ -2042,26 +2049,7 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
                 break;
             chooser.restart(nullptr);
             ScanOutcome outcome = scan(from, successor);
-            // Most scans of a state end in a successor an earlier scan of it
-            // reached: compared with the last few first, without hashing it.
-            const std::uint32_t to = knownSuccessor(next);
-            if (to != kNoState) {
-                noteScan(next, from, to, outcome);
-                continue;
-            }
-            // Looked up before emplacing: emplace would build (allocate) a
-            // node and a copy of the key for every successor already known.
-            auto it = index.find(successor);
-            const bool isNew = it == index.end();
-            if (isNew) {
-                it = index.emplace(successor, static_cast<std::uint32_t>(statesByIndex.size())).first;
-                statesByIndex.push_back(&it->first);
-                parent.push_back(static_cast<std::uint32_t>(next));
-                depth.push_back(depth[next] + 1);
-                edges.emplace_back();
-                result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
-            }
-            noteScan(next, from, it->second, outcome);
+            noteScan(next, addState(successor, next), outcome);
         } while (chooser.advance());
     } catch (const Interrupted&) {
         return false;
@@ -2069,25 +2057,11 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
     return !(result.cancelled || ((leaves & 1023) == 0 && leaves > 0 && outOfBudget()));
 }
 
-// The index of the state the last scan ended in (`successor`) when one of
-// the last edges out of `from` leads to it, else kNoState.
-std::uint32_t ProgramExplorer::Impl::knownSuccessor(std::size_t from) const
-{
-    constexpr std::size_t kCompared = 8;
-    const std::vector<Edge>& out = edges[from];
-    const std::size_t first = out.size() > kCompared ? out.size() - kCompared : 0;
-    for (std::size_t e = out.size(); e-- > first;) {
-        if (*statesByIndex[out[e].to] == successor)
-            return out[e].to;
-    }
-    return kNoState;
-}
-
 // What one scan from state `next` to state `to` showed: the transition it
 // fired, Complete, its edge and its events.
-void ProgramExplorer::Impl::noteScan(std::size_t next, const State& from, std::uint32_t to, ScanOutcome& outcome)
+void ProgramExplorer::Impl::noteScan(std::size_t next, std::uint32_t to, ScanOutcome& outcome)
 {
-    const int active = stepIndexOf(from);
+    const int active = stepOfState(next);
     if (outcome.firedTransition >= 0) {
         const auto g = static_cast<std::size_t>(outcome.firedTransition);
         firedGlobal[g] = 1;
@@ -2100,26 +2074,32 @@ void ProgramExplorer::Impl::noteScan(std::size_t next, const State& from, std::u
             result.completeSeen[steps[static_cast<std::size_t>(active)].source->id] = true;
         seen = 1;
     }
-    Edge edge{to, outcome.firedTransition, outcome.completeTrue, outcome.entersD1};
-    std::vector<Edge>& out = edges[next];
+    Edge edge;
+    edge.to = to;
+    edge.fired = outcome.firedTransition;
+    edge.completeTrue = outcome.completeTrue ? 1 : 0;
+    edge.entersD1 = outcome.entersD1 ? 1 : 0;
+    const std::span<const Edge> out = edges.of(next);
     if (std::none_of(out.begin(), out.end(), [&](const Edge& e) {
             return e.to == edge.to && e.fired == edge.fired && e.completeTrue == edge.completeTrue;
         }))
-        out.push_back(edge);
+        edges.add(next, edge);
     for (Event& event : outcome.events)
         addEvent(std::move(event), next, outcome.firedTransition >= 0);
 }
 
 void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
 {
-    result.states = statesByIndex.size();
+    result.states = store.size();
     if (layout.fault >= 0) {
         const auto at = static_cast<std::size_t>(layout.fault);
-        for (const State* state : statesByIndex)
-            result.faultedStates += ((*state)[at] | (*state)[at + 1] | (*state)[at + 2] | (*state)[at + 3]) != 0 ? 1 : 0;
+        State state;
+        for (std::size_t s = 0; s < store.size(); ++s) {
+            store.decodeInto(s, state);
+            result.faultedStates += (state[at] | state[at + 1] | state[at + 2] | state[at + 3]) != 0 ? 1 : 0;
+        }
     }
-    for (const std::vector<Edge>& out : edges)
-        result.scans += out.size();
+    result.scans = edges.edges();
     for (std::size_t s = 0; s < steps.size(); ++s) {
         if (reached[s])
             result.reachableSteps.push_back(steps[s].source->id);
@@ -2152,8 +2132,8 @@ void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
 void ProgramExplorer::Impl::probePriorities()
 {
     const auto u = [](auto i) { return static_cast<std::size_t>(i); };
-    for (std::size_t s = 0; s < statesByIndex.size() && result.prioritiesDecided; ++s) {
-        const int active = stepIndexOf(*statesByIndex[s]);
+    for (std::size_t s = 0; s < store.size() && result.prioritiesDecided; ++s) {
+        const int active = stepOfState(s);
         if (active >= 0 && worthProbing(active, overlapFound))
             probeState(s, overlapFound);
     }
@@ -2217,7 +2197,7 @@ void ProgramExplorer::Impl::probeState(std::size_t state,
         result.prioritiesDecided = false;
         return;
     }
-    probe = Probe{stepIndexOf(*statesByIndex[state]), true};
+    probe = Probe{stepOfState(state), true};
     chooser.reset();
     std::size_t leaves = 0;
     try {
@@ -2234,6 +2214,7 @@ void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
     const auto u = [](auto i) { return static_cast<std::size_t>(i); };
     const int active = probe.step;
     const std::vector<CompiledTransition>& transitions = steps[u(active)].transitions;
+    const State from = store.at(state);
     do {
         ++scansRun;
         if ((++leaves & 1023) == 0 && outOfBudget()) {
@@ -2241,7 +2222,7 @@ void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
             break;
         }
         chooser.restart(nullptr);
-        scan(*statesByIndex[state], successor);
+        scan(from, successor);
         const auto first = std::find(probeTrue.begin(), probeTrue.end(), 1);
         if (first == probeTrue.end())
             continue;
@@ -2302,7 +2283,7 @@ void ProgramExplorer::Impl::compileSearchedOverlaps()
 // before probePriorities would run).
 void ProgramExplorer::Impl::probeSearchedOverlaps(std::size_t state)
 {
-    const int active = stepIndexOf(*statesByIndex[state]);
+    const int active = stepOfState(state);
     if (active < 0)
         return;
     const std::vector<std::string>& keys = searchedOverlaps[static_cast<std::size_t>(active)];
@@ -2315,19 +2296,31 @@ void ProgramExplorer::Impl::probeSearchedOverlaps(std::size_t state)
 // The graph properties: from which states of a step something can still happen.
 void ProgramExplorer::Impl::analyseGraph()
 {
-    const std::size_t n = statesByIndex.size();
-    std::vector<std::vector<std::uint32_t>> reverse(n);
+    const std::size_t n = store.size();
+    // The predecessors of each state, in one array (compressed rows): those
+    // of s at reverse[reverseStart[s]] up to reverse[reverseStart[s + 1]].
+    std::vector<std::uint32_t> reverseStart(n + 1, 0);
     for (std::size_t s = 0; s < n; ++s) {
-        for (const Edge& e : edges[s])
-            reverse[e.to].push_back(static_cast<std::uint32_t>(s));
+        for (const Edge& e : edges.of(s))
+            ++reverseStart[e.to + 1];
     }
-    auto stepOf = [&](std::size_t s) { return stepIndexOf(*statesByIndex[s]); };
+    for (std::size_t s = 0; s < n; ++s)
+        reverseStart[s + 1] += reverseStart[s];
+    std::vector<std::uint32_t> reverse(edges.edges());
+    {
+        std::vector<std::uint32_t> filled(reverseStart.begin(), reverseStart.end() - 1);
+        for (std::size_t s = 0; s < n; ++s) {
+            for (const Edge& e : edges.of(s))
+                reverse[filled[e.to]++] = static_cast<std::uint32_t>(s);
+        }
+    }
+    auto stepOf = [&](std::size_t s) { return stepOfState(s); };
     // Backward closure from the states with a marked edge, along edges that satisfy `keep`.
     auto canReach = [&](auto marked, auto keep) {
         std::vector<char> good(n, 0);
         std::deque<std::uint32_t> queue;
         for (std::size_t s = 0; s < n; ++s) {
-            for (const Edge& e : edges[s]) {
+            for (const Edge& e : edges.of(s)) {
                 if (marked(s, e)) {
                     good[s] = 1;
                     queue.push_back(static_cast<std::uint32_t>(s));
@@ -2338,11 +2331,13 @@ void ProgramExplorer::Impl::analyseGraph()
         while (!queue.empty()) {
             const std::uint32_t s = queue.front();
             queue.pop_front();
-            for (std::uint32_t p : reverse[s]) {
+            for (std::uint32_t r = reverseStart[s]; r < reverseStart[s + 1]; ++r) {
+                const std::uint32_t p = reverse[r];
                 if (good[p])
                     continue;
-                const bool along = std::any_of(edges[p].begin(), edges[p].end(),
-                                               [&](const Edge& e) { return e.to == s && keep(p, e); });
+                const std::span<const Edge> out = edges.of(p);
+                const bool along
+                    = std::any_of(out.begin(), out.end(), [&](const Edge& e) { return e.to == s && keep(p, e); });
                 if (along) {
                     good[p] = 1;
                     queue.push_back(p);
@@ -2397,7 +2392,8 @@ void ProgramExplorer::Impl::analyseGraph()
             const int step = stepOf(s);
             if (step < 0 || steps[static_cast<std::size_t>(step)].source->id[0] != 'F')
                 continue;
-            if (std::none_of(edges[s].begin(), edges[s].end(), [](const Edge& e) { return e.entersD1; }))
+            const std::span<const Edge> out = edges.of(s);
+            if (std::none_of(out.begin(), out.end(), [](const Edge& e) { return e.entersD1 != 0; }))
                 report(EventKind::NoEmergencyStop, s);
         }
     }
@@ -2410,11 +2406,11 @@ std::vector<int> ProgramExplorer::Impl::answersTo(std::size_t from, std::size_t 
 {
     auto* self = const_cast<Impl*>(this);
     self->chooser.reset();
+    const State start = store.at(from);
     do {
         self->chooser.restart(nullptr);
-        self->scan(*statesByIndex[from], self->successor);
-        auto it = index.find(successor);
-        if (it != index.end() && it->second == to)
+        self->scan(start, self->successor);
+        if (store.find(successor) == static_cast<std::int64_t>(to))
             return chooser.answers();
     } while (self->chooser.advance());
     return {};
@@ -2426,10 +2422,10 @@ void ProgramExplorer::Impl::replayScan(std::size_t from, const std::vector<int>&
 {
     chooser.restart(&answers);
     if (witnessScan && event.kind == EventKind::Overlap)
-        probe = Probe{stepIndexOf(*statesByIndex[from]), false};
+        probe = Probe{stepOfState(from), false};
     logTimers = true;
     State ignored;
-    scan(*statesByIndex[from], ignored);
+    scan(store.at(from), ignored);
     logTimers = false;
     probe = Probe{};
 }
@@ -2453,7 +2449,7 @@ std::vector<std::int64_t> ProgramExplorer::Impl::countRuns(const std::vector<std
 // back to the state itself is preferred. The state it ends in, its answers.
 std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::stutter(std::size_t state)
 {
-    const State& from = *statesByIndex[state];
+    const State from = store.at(state);
     const auto timersOnly = [&](const State& next) {
         return std::equal(from.begin(), from.begin() + layout.timers, next.begin())
             && std::equal(from.begin() + layout.bools, from.end(), next.begin() + layout.bools);
@@ -2469,13 +2465,13 @@ std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::s
         });
         if (elapses || next.size() != from.size() || !timersOnly(next))
             continue;
-        const auto known = index.find(next);
-        if (known == index.end())
+        const std::int64_t known = store.find(next);
+        if (known < 0)
             continue;
-        if (known->second == state)
+        if (static_cast<std::size_t>(known) == state)
             return std::make_pair(state, chooser.answers());
         if (!found)
-            found = std::make_pair(std::size_t{known->second}, chooser.answers());
+            found = std::make_pair(static_cast<std::size_t>(known), chooser.answers());
     } while (chooser.advance());
     return found;
 }
@@ -2483,7 +2479,7 @@ std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::s
 // The TON runs still missing before the replayed scan's TONs may elapse as it chose.
 std::int64_t ProgramExplorer::Impl::missingRuns(std::size_t from, const std::vector<std::int64_t>& counts) const
 {
-    const int step = stepIndexOf(*statesByIndex[from]);
+    const int step = stepOfState(from);
     const int grafcet = step >= 0 ? steps[static_cast<std::size_t>(step)].grafcet : -1;
     if (grafcet < 0 || timerLog.initialized)
         return 0;
@@ -2609,9 +2605,9 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
         impl.chooser.restart(&answers);
         const bool witnessScan = !event.stateOnly && k + 1 == path.size();
         if (witnessScan && event.kind == EventKind::Overlap)
-            impl.probe = Probe{stepIndexOf(*impl.statesByIndex[from]), false}; // reads the inputs as the probe did
+            impl.probe = Probe{impl.stepOfState(from), false}; // reads the inputs as the probe did
         State next;
-        const ScanOutcome outcome = impl.scan(*impl.statesByIndex[from], next);
+        const ScanOutcome outcome = impl.scan(impl.store.at(from), next);
         impl.probe = Probe{};
         last = next;
         if (witnessScan && (event.kind == EventKind::Overlap || event.kind == EventKind::AlwaysTrue)
@@ -2659,7 +2655,7 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     }
     impl.chooser.restart(nullptr);
     impl.chooser.reset();
-    const State& end = event.stateOnly ? *impl.statesByIndex[event.witness.state] : last;
+    const State end = event.stateOnly ? impl.store.at(event.witness.state) : last;
     const int step = stepIndexOf(end);
     if (!firedAtEnd.empty())
         text << "at " << scan << ": expect fired " << firedAtEnd << "\n";
