@@ -20,6 +20,7 @@
 #include "core/verification/tonscans.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <deque>
 #include <optional>
@@ -411,6 +412,14 @@ struct ProgramExplorer::Impl {
     void explore();
     bool exploreState(std::size_t next, const State& from);
     void noteScan(std::size_t next, std::uint32_t to, ScanOutcome& outcome);
+    std::uint32_t reachedState(std::size_t from);
+    // The last successors of the state being explored, as they are (not
+    // encoded), with their indices: most scans of a state end in one an
+    // earlier scan of it reached, found here without encoding nor hashing
+    // it. A ring of kRecent, its strings' buffers reused.
+    static constexpr std::size_t kRecent = 8;
+    std::array<std::pair<State, std::uint32_t>, kRecent> recent;
+    std::size_t recentCount = 0;
     void finishExploration(const std::vector<bool>& reached);
     void addEvent(Event event, std::size_t state, bool gemmaFired);
     void analyseGraph();
@@ -2041,6 +2050,7 @@ std::uint32_t ProgramExplorer::Impl::addState(const State& state, std::size_t fr
 bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
 {
     chooser.reset();
+    recentCount = 0;
     std::size_t leaves = 0;
     try {
         do {
@@ -2049,7 +2059,7 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
                 break;
             chooser.restart(nullptr);
             ScanOutcome outcome = scan(from, successor);
-            noteScan(next, addState(successor, next), outcome);
+            noteScan(next, reachedState(next), outcome);
         } while (chooser.advance());
     } catch (const Interrupted&) {
         return false;
@@ -2059,6 +2069,21 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
 
 // What one scan from state `next` to state `to` showed: the transition it
 // fired, Complete, its edge and its events.
+// The index of `successor`, the state the last scan from state `from` ended
+// in, added to the store when new.
+std::uint32_t ProgramExplorer::Impl::reachedState(std::size_t from)
+{
+    for (std::size_t k = 0; k < std::min(recentCount, kRecent); ++k) {
+        if (recent[k].first == successor)
+            return recent[k].second;
+    }
+    const std::uint32_t at = addState(successor, from);
+    auto& slot = recent[recentCount++ % kRecent];
+    slot.first.assign(successor);
+    slot.second = at;
+    return at;
+}
+
 void ProgramExplorer::Impl::noteScan(std::size_t next, std::uint32_t to, ScanOutcome& outcome)
 {
     const int active = stepOfState(next);
