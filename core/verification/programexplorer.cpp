@@ -16,15 +16,16 @@
 #include "core/verification/property.h"
 #include "core/verification/propertyevaluation.h"
 #include "core/verification/satisfiability.h"
+#include "core/verification/statestore.h"
 #include "core/verification/tonscans.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <deque>
 #include <optional>
 #include <set>
 #include <sstream>
-#include <unordered_map>
 
 namespace core::explore {
 
@@ -166,6 +167,9 @@ struct CompiledGrafcet {
     std::vector<bool> initial;
     std::vector<std::vector<CompiledAction>> onActivation, onDeactivation;
     std::vector<std::vector<const ExpressionInfo*>> continuous; // by step index, by continuous action: condition (nullptr: none)
+    // By output (source->outputs): its drivers whose action is usable, in
+    // order: (step index, condition; nullptr: none).
+    std::vector<std::vector<std::pair<int, const ExpressionInfo*>>> outputDrivers;
     std::vector<CompiledNestedTransition> transitions;
     // By step index: the usable transitions it is upstream of, the only ones
     // an evolution reads while it is active; plus those without upstream step.
@@ -298,6 +302,7 @@ struct EvolutionScratch {
     static constexpr char kDeactivated = 1, kActivated = 2;
     std::vector<int> active, candidates, fired, deactivated, activated, left, entered, next;
     std::vector<char> stepMark;      // by step index, all 0 between evolutions
+    std::vector<int> firstFiringFrom; // by step index, all -1 between evolutions
 
     void mark(std::vector<int>& list, int step, char flag)
     {
@@ -318,13 +323,22 @@ struct EvolutionScratch {
 
 // Which elements were seen, by index, with the list of their numbers that
 // Exploration reports: adding is constant time, however many there are.
+// `numbers` is the list in Exploration, looked up (and created) by its
+// step's id once, the first time it is needed, not at every scan.
 struct FlagSet {
     std::vector<char> seen;
-    void add(int index, int number, std::vector<int>& numbers)
+    std::vector<int>* numbers = nullptr;
+    std::vector<int>& list(std::map<std::string, std::vector<int>>& lists, const std::string& key)
+    {
+        if (!numbers)
+            numbers = &lists[key];
+        return *numbers;
+    }
+    void add(int index, int number, std::vector<int>& list)
     {
         char& flag = seen[static_cast<std::size_t>(index)];
         if (!flag)
-            numbers.push_back(number);
+            list.push_back(number);
         flag = 1;
     }
 };
@@ -397,6 +411,15 @@ struct ProgramExplorer::Impl {
     // --- exploring ----------------------------------------------------------------------
     void explore();
     bool exploreState(std::size_t next, const State& from);
+    void noteScan(std::size_t next, std::uint32_t to, ScanOutcome& outcome);
+    std::uint32_t reachedState(std::size_t from);
+    // The last successors of the state being explored, as they are (not
+    // encoded), with their indices: most scans of a state end in one an
+    // earlier scan of it reached, found here without encoding nor hashing
+    // it. A ring of kRecent, its strings' buffers reused.
+    static constexpr std::size_t kRecent = 8;
+    std::array<std::pair<State, std::uint32_t>, kRecent> recent;
+    std::size_t recentCount = 0;
     void finishExploration(const std::vector<bool>& reached);
     void addEvent(Event event, std::size_t state, bool gemmaFired);
     void analyseGraph();
@@ -468,6 +491,9 @@ struct ProgramExplorer::Impl {
     // The scan being run.
     Chooser chooser;
     State work;
+    State successor; // the state a scan ends in, its buffer kept from scan to scan
+    std::optional<Simulator> replaySimulator; // the counterexamples' runs: copies of it, never run itself
+    std::vector<char> outputValues; // computeOutputs's, kept from scan to scan
     std::vector<int> boolCache;   // by slot: -1 undecided
     std::vector<int> numberCache; // by slot
     std::vector<std::uint64_t> numberPossible; // by slot: representatives still possible this scan (0: all)
@@ -482,7 +508,10 @@ struct ProgramExplorer::Impl {
     const CompiledGrafcet* activeGrafcet = nullptr;
     const CompiledStep* activeStep = nullptr;
     bool firstEvolution = false;
-    std::map<int, std::pair<int, bool>> writes; // slot -> (step index, value) within the scan
+    // By slot, the stored write of the scan: (step index, value), step -1
+    // when none; writtenSlots lists the slots to clear for the next scan.
+    std::vector<std::pair<int, bool>> writes;
+    std::vector<int> writtenSlots;
     bool propertyPhase = false;
     int newStep = -1;
     // What the TONs did in the scan being replayed (logTimers), for
@@ -500,21 +529,21 @@ struct ProgramExplorer::Impl {
     std::vector<char> probeTrue; // by position in the probed step: its gated condition in the last scan
     std::vector<char> failSeen; // by global transition: its gated condition was FALSE in some scan
 
-    // The explored graph.
-    std::unordered_map<State, std::uint32_t> index;
-    std::vector<const State*> statesByIndex;
-    std::vector<std::uint32_t> parent;
-    std::vector<std::uint32_t> depth;
-    struct Edge {
-        std::uint32_t to = 0;
-        int fired = -1;
-        bool completeTrue = false;
-        bool entersD1 = false;
-    };
-    std::vector<std::vector<Edge>> edges;
+    // The explored graph (statestore.h): each state once, encoded, with by
+    // index its parent, depth, step (stepIndexOf + 1) and edges.
+    StateStore store;
+    ChunkedArray<std::uint32_t> parent;
+    ChunkedArray<std::uint32_t> depth;
+    ChunkedArray<std::uint16_t> stepRaw;
+    using Edge = StateEdge;
+    EdgeStore edges;
+    int stepOfState(std::size_t state) const { return static_cast<int>(stepRaw[state]) - 1; }
+    std::uint32_t addState(const State& state, std::size_t from);
     std::set<std::string> eventKeys;
     std::map<std::string, std::pair<std::size_t, bool>> eventAt; // key -> (index in events, its scan fired a GEMMA transition)
     std::vector<char> firedGlobal; // by global transition: fires in some reachable scan
+    std::vector<char> completeSeenByStep; // by step index: Exploration::completeSeen set for it
+    std::vector<int> stepsWithTokens;     // nested steps with tokens: cleared at the end of a scan unless active
     struct FirstFire {
         bool seen = false;
         int step = -1;
@@ -579,6 +608,7 @@ ProgramExplorer::Impl::Impl(const Model& m, Options o)
     }
     boolCache.assign(slots.size(), -1);
     numberCache.assign(slots.size(), -1);
+    writes.assign(slots.size(), {-1, false});
     numberPossible.assign(slots.size(), 0);
 }
 
@@ -861,6 +891,11 @@ void ProgramExplorer::Impl::compileSteps()
     timerCache.assign(static_cast<std::size_t>(maxTimers), -1);
     failSeen.assign(transitionIds.size(), 0);
     firedGlobal.assign(transitionIds.size(), 0);
+    completeSeenByStep.assign(steps.size(), 0);
+    for (std::size_t s = 0; s < steps.size(); ++s) {
+        if (steps[s].nested && steps[s].tokenCount > 0)
+            stepsWithTokens.push_back(static_cast<int>(s));
+    }
     firstFire.assign(transitionIds.size(), FirstFire{});
 }
 
@@ -938,6 +973,16 @@ void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
         }
         compiled.continuous.push_back(std::move(conditions));
     }
+    for (const auto& output : nested.outputs) {
+        std::vector<std::pair<int, const ExpressionInfo*>> drivers;
+        for (const auto& driver : output.drivers) {
+            const int i = compiled.stepIndex(driver.step);
+            const auto u = [](int k) { return static_cast<std::size_t>(k); };
+            if (i >= 0 && nested.steps[u(i)].continuous[u(driver.action)].usable)
+                drivers.emplace_back(i, compiled.continuous[u(i)][u(driver.action)]);
+        }
+        compiled.outputDrivers.push_back(std::move(drivers));
+    }
     for (const NestedTransition& t : nested.transitions) {
         CompiledNestedTransition c;
         c.source = &t;
@@ -963,6 +1008,7 @@ void ProgramExplorer::Impl::compileGrafcet(CompiledStep& step)
     nestedActiveSeen.push_back(FlagSet{std::vector<char>(compiled.numbers.size(), 0)});
     nestedFiredSeen.push_back(FlagSet{std::vector<char>(compiled.transitions.size(), 0)});
     evolution.stepMark.resize(std::max(evolution.stepMark.size(), compiled.numbers.size()), 0);
+    evolution.firstFiringFrom.resize(std::max(evolution.firstFiringFrom.size(), compiled.numbers.size()), -1);
     const int stepIndex = static_cast<int>(&step - steps.data());
     for (std::size_t o = 0; o < nested.outputs.size(); ++o) {
         if (nested.outputs[o].isComplete)
@@ -1476,10 +1522,11 @@ bool ProgramExplorer::Impl::timerElapsed(int timer)
 void ProgramExplorer::Impl::noteActive(const CompiledStep& step)
 {
     const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
-    std::vector<int>& seen = result.activeNestedSteps[step.source->id];
+    FlagSet& activeSeen = nestedActiveSeen[static_cast<std::size_t>(step.grafcet)];
+    std::vector<int>& seen = activeSeen.list(result.activeNestedSteps, step.source->id);
     for (std::size_t i = 0; i < g.numbers.size(); ++i) {
         if (work[static_cast<std::size_t>(layout.x) + i])
-            nestedActiveSeen[static_cast<std::size_t>(step.grafcet)].add(static_cast<int>(i), g.numbers[i], seen);
+            activeSeen.add(static_cast<int>(i), g.numbers[i], seen);
     }
 }
 
@@ -1487,9 +1534,10 @@ void ProgramExplorer::Impl::noteActive(const CompiledStep& step)
 void ProgramExplorer::Impl::noteEntered(const CompiledStep& step, const std::vector<int>& entered)
 {
     const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
-    std::vector<int>& seen = result.activeNestedSteps[step.source->id];
+    FlagSet& activeSeen = nestedActiveSeen[static_cast<std::size_t>(step.grafcet)];
+    std::vector<int>& seen = activeSeen.list(result.activeNestedSteps, step.source->id);
     for (int i : entered)
-        nestedActiveSeen[static_cast<std::size_t>(step.grafcet)].add(i, g.numbers[static_cast<std::size_t>(i)], seen);
+        activeSeen.add(i, g.numbers[static_cast<std::size_t>(i)], seen);
 }
 
 // The time limit and the cancel callback, looked at every kPollEvery units of
@@ -1541,19 +1589,21 @@ void ProgramExplorer::Impl::runStored(const CompiledStep& step, int stepIndex, c
             continue;
         }
         const Slot& slot = slots[static_cast<std::size_t>(action.slot)];
-        auto previous = writes.find(action.slot);
-        if (previous != writes.end() && previous->second.first != stepIndex && previous->second.second != value) {
+        std::pair<int, bool>& previous = writes[static_cast<std::size_t>(action.slot)];
+        if (previous.first >= 0 && previous.first != stepIndex && previous.second != value) {
             const CompiledGrafcet& g = grafcets[static_cast<std::size_t>(step.grafcet)];
             Event race;
             race.kind = EventKind::Race;
             race.stepId = step.source->id;
-            const int a = g.numbers[static_cast<std::size_t>(previous->second.first)];
+            const int a = g.numbers[static_cast<std::size_t>(previous.first)];
             const int b = g.numbers[static_cast<std::size_t>(stepIndex)];
             race.numbers = {std::min(a, b), std::max(a, b)};
             race.variable = slot.name;
             outcome.events.push_back(race);
         }
-        writes[action.slot] = {stepIndex, value};
+        if (previous.first < 0)
+            writtenSlots.push_back(action.slot);
+        previous = {stepIndex, value};
         work[static_cast<std::size_t>(layout.bools + slot.stateBit)] = value ? 1 : 0;
     }
 }
@@ -1561,18 +1611,13 @@ void ProgramExplorer::Impl::runStored(const CompiledStep& step, int stepIndex, c
 void ProgramExplorer::Impl::computeOutputs(const CompiledGrafcet& g)
 {
     const NestedGrafcet& nested = *g.source;
-    std::vector<char> values(nested.outputs.size(), 0);
+    std::vector<char>& values = outputValues;
+    values.assign(nested.outputs.size(), 0);
     bool complete = work[static_cast<std::size_t>(layout.complete)] != 0;
     for (std::size_t o = 0; o < nested.outputs.size(); ++o) {
         bool value = false;
-        for (const ContinuousOutput::Driver& driver : nested.outputs[o].drivers) {
-            const int i = g.stepIndex(driver.step);
-            if (i < 0 || !work[static_cast<std::size_t>(layout.x + i)])
-                continue;
-            const ExpressionInfo* condition
-                = g.continuous[static_cast<std::size_t>(i)][static_cast<std::size_t>(driver.action)];
-            const NestedAction& action = nested.steps[static_cast<std::size_t>(i)].continuous[static_cast<std::size_t>(driver.action)];
-            if (!action.usable)
+        for (const auto& [i, condition] : g.outputDrivers[o]) {
+            if (!work[static_cast<std::size_t>(layout.x + i)])
                 continue;
             if (!condition || eval(*condition, -1)) {
                 value = true;
@@ -1633,20 +1678,22 @@ bool ProgramExplorer::Impl::evolve(const CompiledStep& step, bool first, ScanOut
     if (e.fired.empty())
         return false;
     FlagSet& firedSeen = nestedFiredSeen[u(step.grafcet)];
-    std::map<int, int> firstFiringFrom; // upstream step index -> transition
+    // e.firstFiringFrom: by upstream step index, the first fired transition leaving it (-1 none).
     e.deactivated.clear();
     e.activated.clear();
     for (int t : e.fired) {
         const int number = g.transitions[u(t)].source->number;
-        firedSeen.add(t, number, result.firedNestedTransitions[step.source->id]);
+        firedSeen.add(t, number, firedSeen.list(result.firedNestedTransitions, step.source->id));
         for (int i : g.transitions[u(t)].upstream) {
-            auto [it, inserted] = firstFiringFrom.emplace(i, t);
-            if (!inserted) {
+            int& firstFrom = e.firstFiringFrom[u(i)];
+            if (firstFrom >= 0) {
                 Event together;
                 together.kind = EventKind::SimultaneousBranches;
                 together.stepId = step.source->id;
-                together.numbers = {g.numbers[u(i)], g.transitions[u(it->second)].source->number, number};
+                together.numbers = {g.numbers[u(i)], g.transitions[u(firstFrom)].source->number, number};
                 outcome.events.push_back(together);
+            } else {
+                firstFrom = t;
             }
             e.mark(e.deactivated, i, EvolutionScratch::kDeactivated);
         }
@@ -1674,8 +1721,10 @@ bool ProgramExplorer::Impl::evolve(const CompiledStep& step, bool first, ScanOut
             outcome.events.push_back(unsafe);
         }
     }
-    for (int i : e.deactivated)
+    for (int i : e.deactivated) {
         e.stepMark[u(i)] = 0;
+        e.firstFiringFrom[u(i)] = -1;
+    }
     for (int i : e.activated)
         e.stepMark[u(i)] = 0;
     for (int i : e.left)
@@ -1748,7 +1797,9 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
         timerLog.initialized = false;
     }
     opaqueCache.clear();
-    writes.clear();
+    for (int slot : writtenSlots)
+        writes[static_cast<std::size_t>(slot)] = {-1, false};
+    writtenSlots.clear();
     propertyPhase = false;
     activeGrafcet = nullptr;
     const auto u = [](int i) { return static_cast<std::size_t>(i); };
@@ -1860,8 +1911,9 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
         for (int t = 0; t < step.tokenCount; ++t)
             work[u(layout.tokens + step.firstToken + t)] = 0;
     }
-    for (const CompiledStep& step : steps) {
-        if (!step.nested || &step == (newStep >= 0 ? &steps[u(newStep)] : nullptr))
+    for (int s : stepsWithTokens) {
+        const CompiledStep& step = steps[u(s)];
+        if (s == newStep)
             continue;
         for (int t = 0; t < step.tokenCount; ++t)
             work[u(layout.tokens + step.firstToken + t)] = 0;
@@ -1908,7 +1960,7 @@ bool ProgramExplorer::Impl::outOfBudget()
         result.cancelled = true;
         return true;
     }
-    return statesByIndex.size() >= options.maxStates || scansRun >= options.maxScansRun
+    return store.size() >= options.maxStates || scansRun >= options.maxScansRun
         || std::chrono::steady_clock::now() > options.deadline;
 }
 
@@ -1949,22 +2001,18 @@ void ProgramExplorer::Impl::addEvent(Event event, std::size_t state, bool gemmaF
 void ProgramExplorer::Impl::explore()
 {
     started = std::chrono::steady_clock::now();
-    const State start = initialState();
-    auto inserted = index.emplace(start, 0);
-    statesByIndex.push_back(&inserted.first->first);
-    parent.push_back(0);
-    depth.push_back(0);
-    edges.emplace_back();
+    (void)addState(initialState(), 0);
     std::vector<bool> reached(steps.size(), false);
     compileSearchedOverlaps();
     polling = true;
-    for (std::size_t next = 0; next < statesByIndex.size(); ++next) {
+    State from;
+    for (std::size_t next = 0; next < store.size(); ++next) {
         if ((next & 63) == 0 && outOfBudget()) {
             result.exhaustive = false;
             break;
         }
-        const State from = *statesByIndex[next];
-        if (const int s = stepIndexOf(from); s >= 0)
+        store.decodeInto(next, from);
+        if (const int s = stepOfState(next); s >= 0)
             reached[static_cast<std::size_t>(s)] = true;
         if (!exploreState(next, from)) {
             result.exhaustive = false;
@@ -1982,11 +2030,27 @@ void ProgramExplorer::Impl::explore()
     polling = false;
 }
 
+// Adds `state`, found from state `from`, if it is new; its index.
+std::uint32_t ProgramExplorer::Impl::addState(const State& state, std::size_t from)
+{
+    const auto [at, isNew] = store.insert(state);
+    if (isNew) {
+        const bool first = at == 0;
+        parent.push_back(first ? 0 : static_cast<std::uint32_t>(from));
+        depth.push_back(first ? 0 : depth[from] + 1);
+        stepRaw.push_back(static_cast<std::uint16_t>(stepIndexOf(state) + 1));
+        edges.addState();
+        result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
+    }
+    return at;
+}
+
 // Every scan of one state; false when the budget ran out (or the run was
 // cancelled) before they were all run.
 bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
 {
     chooser.reset();
+    recentCount = 0;
     std::size_t leaves = 0;
     try {
         do {
@@ -1994,33 +2058,8 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
             if ((++leaves & 1023) == 0 && outOfBudget())
                 break;
             chooser.restart(nullptr);
-            State to;
-            ScanOutcome outcome = scan(from, to);
-            auto [it, isNew] = index.emplace(std::move(to), static_cast<std::uint32_t>(statesByIndex.size()));
-            if (isNew) {
-                statesByIndex.push_back(&it->first);
-                parent.push_back(static_cast<std::uint32_t>(next));
-                depth.push_back(depth[next] + 1);
-                edges.emplace_back();
-                result.maxDepth = std::max<std::size_t>(result.maxDepth, depth.back());
-            }
-            const int active = stepIndexOf(from);
-            if (outcome.firedTransition >= 0) {
-                const auto g = static_cast<std::size_t>(outcome.firedTransition);
-                firedGlobal[g] = 1;
-                if (!firstFire[g].seen)
-                    firstFire[g] = FirstFire{true, active, Witness{next, chooser.answers()}};
-            }
-            if (active >= 0 && outcome.completeTrue && steps[static_cast<std::size_t>(active)].grafcet >= 0)
-                result.completeSeen[steps[static_cast<std::size_t>(active)].source->id] = true;
-            Edge edge{it->second, outcome.firedTransition, outcome.completeTrue, outcome.entersD1};
-            std::vector<Edge>& out = edges[next];
-            if (std::none_of(out.begin(), out.end(), [&](const Edge& e) {
-                    return e.to == edge.to && e.fired == edge.fired && e.completeTrue == edge.completeTrue;
-                }))
-                out.push_back(edge);
-            for (Event& event : outcome.events)
-                addEvent(std::move(event), next, outcome.firedTransition >= 0);
+            ScanOutcome outcome = scan(from, successor);
+            noteScan(next, reachedState(next), outcome);
         } while (chooser.advance());
     } catch (const Interrupted&) {
         return false;
@@ -2028,16 +2067,64 @@ bool ProgramExplorer::Impl::exploreState(std::size_t next, const State& from)
     return !(result.cancelled || ((leaves & 1023) == 0 && leaves > 0 && outOfBudget()));
 }
 
+// What one scan from state `next` to state `to` showed: the transition it
+// fired, Complete, its edge and its events.
+// The index of `successor`, the state the last scan from state `from` ended
+// in, added to the store when new.
+std::uint32_t ProgramExplorer::Impl::reachedState(std::size_t from)
+{
+    for (std::size_t k = 0; k < std::min(recentCount, kRecent); ++k) {
+        if (recent[k].first == successor)
+            return recent[k].second;
+    }
+    const std::uint32_t at = addState(successor, from);
+    auto& slot = recent[recentCount++ % kRecent];
+    slot.first.assign(successor);
+    slot.second = at;
+    return at;
+}
+
+void ProgramExplorer::Impl::noteScan(std::size_t next, std::uint32_t to, ScanOutcome& outcome)
+{
+    const int active = stepOfState(next);
+    if (outcome.firedTransition >= 0) {
+        const auto g = static_cast<std::size_t>(outcome.firedTransition);
+        firedGlobal[g] = 1;
+        if (!firstFire[g].seen)
+            firstFire[g] = FirstFire{true, active, Witness{next, chooser.answers()}};
+    }
+    if (active >= 0 && outcome.completeTrue && steps[static_cast<std::size_t>(active)].grafcet >= 0) {
+        char& seen = completeSeenByStep[static_cast<std::size_t>(active)];
+        if (!seen)
+            result.completeSeen[steps[static_cast<std::size_t>(active)].source->id] = true;
+        seen = 1;
+    }
+    Edge edge;
+    edge.to = to;
+    edge.fired = outcome.firedTransition;
+    edge.completeTrue = outcome.completeTrue ? 1 : 0;
+    edge.entersD1 = outcome.entersD1 ? 1 : 0;
+    const std::span<const Edge> out = edges.of(next);
+    if (std::none_of(out.begin(), out.end(), [&](const Edge& e) {
+            return e.to == edge.to && e.fired == edge.fired && e.completeTrue == edge.completeTrue;
+        }))
+        edges.add(next, edge);
+    for (Event& event : outcome.events)
+        addEvent(std::move(event), next, outcome.firedTransition >= 0);
+}
+
 void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
 {
-    result.states = statesByIndex.size();
+    result.states = store.size();
     if (layout.fault >= 0) {
         const auto at = static_cast<std::size_t>(layout.fault);
-        for (const State* state : statesByIndex)
-            result.faultedStates += ((*state)[at] | (*state)[at + 1] | (*state)[at + 2] | (*state)[at + 3]) != 0 ? 1 : 0;
+        State state;
+        for (std::size_t s = 0; s < store.size(); ++s) {
+            store.decodeInto(s, state);
+            result.faultedStates += (state[at] | state[at + 1] | state[at + 2] | state[at + 3]) != 0 ? 1 : 0;
+        }
     }
-    for (const std::vector<Edge>& out : edges)
-        result.scans += out.size();
+    result.scans = edges.edges();
     for (std::size_t s = 0; s < steps.size(); ++s) {
         if (reached[s])
             result.reachableSteps.push_back(steps[s].source->id);
@@ -2070,8 +2157,8 @@ void ProgramExplorer::Impl::finishExploration(const std::vector<bool>& reached)
 void ProgramExplorer::Impl::probePriorities()
 {
     const auto u = [](auto i) { return static_cast<std::size_t>(i); };
-    for (std::size_t s = 0; s < statesByIndex.size() && result.prioritiesDecided; ++s) {
-        const int active = stepIndexOf(*statesByIndex[s]);
+    for (std::size_t s = 0; s < store.size() && result.prioritiesDecided; ++s) {
+        const int active = stepOfState(s);
         if (active >= 0 && worthProbing(active, overlapFound))
             probeState(s, overlapFound);
     }
@@ -2135,7 +2222,7 @@ void ProgramExplorer::Impl::probeState(std::size_t state,
         result.prioritiesDecided = false;
         return;
     }
-    probe = Probe{stepIndexOf(*statesByIndex[state]), true};
+    probe = Probe{stepOfState(state), true};
     chooser.reset();
     std::size_t leaves = 0;
     try {
@@ -2152,6 +2239,7 @@ void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
     const auto u = [](auto i) { return static_cast<std::size_t>(i); };
     const int active = probe.step;
     const std::vector<CompiledTransition>& transitions = steps[u(active)].transitions;
+    const State from = store.at(state);
     do {
         ++scansRun;
         if ((++leaves & 1023) == 0 && outOfBudget()) {
@@ -2159,8 +2247,7 @@ void ProgramExplorer::Impl::probeScans(std::size_t state, std::size_t& leaves,
             break;
         }
         chooser.restart(nullptr);
-        State ignored;
-        scan(*statesByIndex[state], ignored);
+        scan(from, successor);
         const auto first = std::find(probeTrue.begin(), probeTrue.end(), 1);
         if (first == probeTrue.end())
             continue;
@@ -2221,7 +2308,7 @@ void ProgramExplorer::Impl::compileSearchedOverlaps()
 // before probePriorities would run).
 void ProgramExplorer::Impl::probeSearchedOverlaps(std::size_t state)
 {
-    const int active = stepIndexOf(*statesByIndex[state]);
+    const int active = stepOfState(state);
     if (active < 0)
         return;
     const std::vector<std::string>& keys = searchedOverlaps[static_cast<std::size_t>(active)];
@@ -2234,19 +2321,31 @@ void ProgramExplorer::Impl::probeSearchedOverlaps(std::size_t state)
 // The graph properties: from which states of a step something can still happen.
 void ProgramExplorer::Impl::analyseGraph()
 {
-    const std::size_t n = statesByIndex.size();
-    std::vector<std::vector<std::uint32_t>> reverse(n);
+    const std::size_t n = store.size();
+    // The predecessors of each state, in one array (compressed rows): those
+    // of s at reverse[reverseStart[s]] up to reverse[reverseStart[s + 1]].
+    std::vector<std::uint32_t> reverseStart(n + 1, 0);
     for (std::size_t s = 0; s < n; ++s) {
-        for (const Edge& e : edges[s])
-            reverse[e.to].push_back(static_cast<std::uint32_t>(s));
+        for (const Edge& e : edges.of(s))
+            ++reverseStart[e.to + 1];
     }
-    auto stepOf = [&](std::size_t s) { return stepIndexOf(*statesByIndex[s]); };
+    for (std::size_t s = 0; s < n; ++s)
+        reverseStart[s + 1] += reverseStart[s];
+    std::vector<std::uint32_t> reverse(edges.edges());
+    {
+        std::vector<std::uint32_t> filled(reverseStart.begin(), reverseStart.end() - 1);
+        for (std::size_t s = 0; s < n; ++s) {
+            for (const Edge& e : edges.of(s))
+                reverse[filled[e.to]++] = static_cast<std::uint32_t>(s);
+        }
+    }
+    auto stepOf = [&](std::size_t s) { return stepOfState(s); };
     // Backward closure from the states with a marked edge, along edges that satisfy `keep`.
     auto canReach = [&](auto marked, auto keep) {
         std::vector<char> good(n, 0);
         std::deque<std::uint32_t> queue;
         for (std::size_t s = 0; s < n; ++s) {
-            for (const Edge& e : edges[s]) {
+            for (const Edge& e : edges.of(s)) {
                 if (marked(s, e)) {
                     good[s] = 1;
                     queue.push_back(static_cast<std::uint32_t>(s));
@@ -2257,11 +2356,13 @@ void ProgramExplorer::Impl::analyseGraph()
         while (!queue.empty()) {
             const std::uint32_t s = queue.front();
             queue.pop_front();
-            for (std::uint32_t p : reverse[s]) {
+            for (std::uint32_t r = reverseStart[s]; r < reverseStart[s + 1]; ++r) {
+                const std::uint32_t p = reverse[r];
                 if (good[p])
                     continue;
-                const bool along = std::any_of(edges[p].begin(), edges[p].end(),
-                                               [&](const Edge& e) { return e.to == s && keep(p, e); });
+                const std::span<const Edge> out = edges.of(p);
+                const bool along
+                    = std::any_of(out.begin(), out.end(), [&](const Edge& e) { return e.to == s && keep(p, e); });
                 if (along) {
                     good[p] = 1;
                     queue.push_back(p);
@@ -2316,7 +2417,8 @@ void ProgramExplorer::Impl::analyseGraph()
             const int step = stepOf(s);
             if (step < 0 || steps[static_cast<std::size_t>(step)].source->id[0] != 'F')
                 continue;
-            if (std::none_of(edges[s].begin(), edges[s].end(), [](const Edge& e) { return e.entersD1; }))
+            const std::span<const Edge> out = edges.of(s);
+            if (std::none_of(out.begin(), out.end(), [](const Edge& e) { return e.entersD1 != 0; }))
                 report(EventKind::NoEmergencyStop, s);
         }
     }
@@ -2329,12 +2431,11 @@ std::vector<int> ProgramExplorer::Impl::answersTo(std::size_t from, std::size_t 
 {
     auto* self = const_cast<Impl*>(this);
     self->chooser.reset();
+    const State start = store.at(from);
     do {
         self->chooser.restart(nullptr);
-        State next;
-        self->scan(*statesByIndex[from], next);
-        auto it = index.find(next);
-        if (it != index.end() && it->second == to)
+        self->scan(start, self->successor);
+        if (store.find(successor) == static_cast<std::int64_t>(to))
             return chooser.answers();
     } while (self->chooser.advance());
     return {};
@@ -2346,10 +2447,10 @@ void ProgramExplorer::Impl::replayScan(std::size_t from, const std::vector<int>&
 {
     chooser.restart(&answers);
     if (witnessScan && event.kind == EventKind::Overlap)
-        probe = Probe{stepIndexOf(*statesByIndex[from]), false};
+        probe = Probe{stepOfState(from), false};
     logTimers = true;
     State ignored;
-    scan(*statesByIndex[from], ignored);
+    scan(store.at(from), ignored);
     logTimers = false;
     probe = Probe{};
 }
@@ -2373,7 +2474,7 @@ std::vector<std::int64_t> ProgramExplorer::Impl::countRuns(const std::vector<std
 // back to the state itself is preferred. The state it ends in, its answers.
 std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::stutter(std::size_t state)
 {
-    const State& from = *statesByIndex[state];
+    const State from = store.at(state);
     const auto timersOnly = [&](const State& next) {
         return std::equal(from.begin(), from.begin() + layout.timers, next.begin())
             && std::equal(from.begin() + layout.bools, from.end(), next.begin() + layout.bools);
@@ -2389,13 +2490,13 @@ std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::s
         });
         if (elapses || next.size() != from.size() || !timersOnly(next))
             continue;
-        const auto known = index.find(next);
-        if (known == index.end())
+        const std::int64_t known = store.find(next);
+        if (known < 0)
             continue;
-        if (known->second == state)
+        if (static_cast<std::size_t>(known) == state)
             return std::make_pair(state, chooser.answers());
         if (!found)
-            found = std::make_pair(std::size_t{known->second}, chooser.answers());
+            found = std::make_pair(static_cast<std::size_t>(known), chooser.answers());
     } while (chooser.advance());
     return found;
 }
@@ -2403,7 +2504,7 @@ std::optional<std::pair<std::size_t, std::vector<int>>> ProgramExplorer::Impl::s
 // The TON runs still missing before the replayed scan's TONs may elapse as it chose.
 std::int64_t ProgramExplorer::Impl::missingRuns(std::size_t from, const std::vector<std::int64_t>& counts) const
 {
-    const int step = stepIndexOf(*statesByIndex[from]);
+    const int step = stepOfState(from);
     const int grafcet = step >= 0 ? steps[static_cast<std::size_t>(step)].grafcet : -1;
     if (grafcet < 0 || timerLog.initialized)
         return 0;
@@ -2529,9 +2630,9 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
         impl.chooser.restart(&answers);
         const bool witnessScan = !event.stateOnly && k + 1 == path.size();
         if (witnessScan && event.kind == EventKind::Overlap)
-            impl.probe = Probe{stepIndexOf(*impl.statesByIndex[from]), false}; // reads the inputs as the probe did
+            impl.probe = Probe{impl.stepOfState(from), false}; // reads the inputs as the probe did
         State next;
-        const ScanOutcome outcome = impl.scan(*impl.statesByIndex[from], next);
+        const ScanOutcome outcome = impl.scan(impl.store.at(from), next);
         impl.probe = Probe{};
         last = next;
         if (witnessScan && (event.kind == EventKind::Overlap || event.kind == EventKind::AlwaysTrue)
@@ -2579,7 +2680,7 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     }
     impl.chooser.restart(nullptr);
     impl.chooser.reset();
-    const State& end = event.stateOnly ? *impl.statesByIndex[event.witness.state] : last;
+    const State end = event.stateOnly ? impl.store.at(event.witness.state) : last;
     const int step = stepIndexOf(end);
     if (!firedAtEnd.empty())
         text << "at " << scan << ": expect fired " << firedAtEnd << "\n";
@@ -2604,7 +2705,12 @@ Counterexample ProgramExplorer::counterexample(const Event& event, const std::st
     out.scans = scan;
     if (!parsed.ok() || scan == 0)
         return out;
-    Simulator simulator(impl.model);
+    // A copy of one simulator built once: it shares the compiled program
+    // (building it for every run was a third of the replay), and every run
+    // starts with reset().
+    if (!impl.replaySimulator)
+        impl.replaySimulator.emplace(impl.model);
+    Simulator simulator(*impl.replaySimulator);
     if (!validateScenario(out.scenario, simulator,
                           impl.machineState ? FaultLines::CheckedByMachine : FaultLines::Refused)
              .empty())

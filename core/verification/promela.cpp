@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -1076,6 +1077,21 @@ long long numberAfter(std::string_view text, std::string_view label)
     return digits ? value : -1;
 }
 
+// The number that starts the line `label` ends ("  128.730\ttotal actual
+// memory usage"), -1 when there is none.
+double numberBeforeOnLine(std::string_view text, std::string_view label)
+{
+    const auto at = text.find(label);
+    if (at == std::string_view::npos)
+        return -1;
+    const auto newline = text.rfind('\n', at);
+    const std::size_t begin = newline == std::string_view::npos ? 0 : newline + 1;
+    const std::string line(text.substr(begin, at - begin));
+    char* end = nullptr;
+    const double value = std::strtod(line.c_str(), &end);
+    return end != line.c_str() && value >= 0 ? value : -1;
+}
+
 // pan's "pan:1: assertion violated ..." line names GG_UNTIL's variable.
 bool untilAssertion(std::string_view panOutput)
 {
@@ -1155,6 +1171,8 @@ SpinReport readSpinReport(std::string_view panOutput)
         report.statesStored = numberAfter(panOutput.substr(begin, stored - begin + 1), "");
     }
     report.depthReached = numberAfter(panOutput, "depth reached");
+    report.totalMemoryMb = numberBeforeOnLine(panOutput, "total actual memory usage");
+    report.stateMemoryMb = numberBeforeOnLine(panOutput, "actual memory usage for states");
     const long long errors = numberAfter(panOutput, "errors:");
     if (panOutput.find("max search depth too small") != std::string_view::npos)
         report.problem = "pan's search depth limit (-m) cut the search short";

@@ -136,6 +136,11 @@ struct SpinReport {
     std::vector<int> unreachedLines; // lines of statements of the scan process never executed
     long long statesStored = -1;
     long long depthReached = -1; // pan's deepest search stack (statements, not scans)
+    // pan's "Stats on memory usage (in Megabytes)": "total actual memory
+    // usage" (its hash table and search stack included) and "actual memory
+    // usage for states"; -1 when not printed.
+    double totalMemoryMb = -1;
+    double stateMemoryMb = -1;
     // pan stopped at GG_UNTIL's assertion: the State it names was entered
     // (then not complete: the search was cut short on purpose).
     bool untilReached = false;

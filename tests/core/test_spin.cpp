@@ -535,10 +535,18 @@ TEST_CASE("readSpinReport reads pan's verdicts and refuses incomplete searches",
                                  "\tmodel.pml:20, state 22, \"mark = 1\"\n"
                                  "\tmodel.pml:33, state 42, \"-end-\"\n"
                                  "\t(2 of 42 states)\n"
+                                 "Stats on memory usage (in Megabytes):\n"
+                                 "    0.000\tequivalent memory usage for states (stored*(State-vector + overhead))\n"
+                                 "    0.287\tactual memory usage for states\n"
+                                 "  128.000\tmemory used for hash table (-w24)\n"
+                                 "  128.730\ttotal actual memory usage\n"
                                  "\npan: elapsed time 0 seconds\n";
     const SpinReport report = readSpinReport(complete);
     CHECK(report.complete);
     CHECK(report.statesStored == 2);
+    CHECK(report.totalMemoryMb == 128.73);
+    CHECK(report.stateMemoryMb == 0.287);
+    CHECK(readSpinReport("errors: 0\n").totalMemoryMb == -1);
     CHECK(report.unreachedLines == std::vector<int>{20, 33});
     CHECK(!report.reached(PromelaMarker{PromelaMarkerKind::Reach, "A1", "", "", 20, {}, "", -1}));
     CHECK(report.reached(PromelaMarker{PromelaMarkerKind::Reach, "A1", "", "", 21, {}, "", -1}));

@@ -90,6 +90,22 @@ core::Model bothLayersStressModel(int branchLength = 3);
 // step 4 can be activated while active (unsafe).
 core::Model caseStudyModel();
 
+// Issue 36's growing series for the verifier against SPIN: one GEMMA layer
+// whatever the size (A1 -> F2 -> F1 and from F1 to F5 -> F4 -> A6, F3, F6,
+// D3 -> A2, A3 -> A4, the emergency stop F -> D1 -> A5 -> A7 -> A4 and D1
+// -> D2 -> A5; six BOOL inputs), and `nestedGrafcets` (1 to 16) nested
+// GRAFCETs, one per step: first the template's eight steps that are not
+// simple (F1, F2, F5, F4, F3, F6, D3, A7: F4, F6 and D3 are enclosing steps,
+// which the GEMMA layer may leave in mid-cycle), then A2, A6, A5, A4, A3,
+// D2, D1, A1 made macro-steps. Each is a three-way parallel section between
+// a fork and a join (as bothLayersStressModel's) with its own inputs and
+// output; the `storedBools` stored BOOLs Mem<j> go to GRAFCET j mod
+// nestedGrafcets, each set on activation of one branch step and reset by
+// the join, so they are part of the explored state (and those an enclosing
+// step leaves set multiply the states). Branches are max(2, ceil(per
+// GRAFCET / 3)) steps long.
+core::Model verificationSeriesModel(int nestedGrafcets, int storedBools);
+
 // The GEMMA conditions of the GG-Generator paper's filling and capping
 // machine, one per transition it uses: caseStudyModel and the core tests'
 // samples::caseStudyModel write the same 34.

@@ -1,0 +1,126 @@
+// Issue 36: the verifier against SPIN on a growing series
+// (factory::verificationSeriesModel: 2, 4, 8, 16 nested GRAFCETs with
+// three-way parallel sections and 10 stored BOOLs, then 16 with 20 and 40)
+// and on the both-layers stress model ("stress"), side by side in one run: for each model GG
+// Studio's program states, time (best of three core::verifyModel, no time
+// limit, exhaustive required) and peak heap (live bytes counted by
+// allocationcounter.cpp during one more run, above what was live before it),
+// and SPIN's pan on the same model exported (core::buildProgramPromela,
+// compiled once as core::kSpinCompile says): states stored, time (best of
+// three pan.run(), the process start included) and the memory pan reports.
+// A line per model, then the same as CSV (`series-csv,...`), which
+// docs/plots/series.py turns into docs/plots/series.svg. Nothing asserts a
+// time. The smoke pass runs the two smallest sizes once.
+
+#include "core/verification/promelaprogram.h"
+#include "core/verification/verification.h"
+
+#include "allocationcounter.h"
+#include "benchrepeats.h"
+#include "catchsession.h"
+#include "modelfactory.h"
+#include "spinrunner.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct SeriesModel {
+    std::string label;
+    int grafcets = 0; // 0: the both-layers stress model
+    int bools = 0;
+};
+
+double bestMilliseconds(const std::function<void()>& work)
+{
+    double fastest = 1e300;
+    for (int i = 0; i < benchRepeats(3); ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        work();
+        fastest = std::min(fastest,
+                           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    return fastest;
+}
+
+std::string fixed(double value, int decimals)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
+} // namespace
+
+TEST_CASE("Verification series against SPIN", "[bench][verification][series]")
+{
+    // Nested GRAFCETs x stored BOOLs: the nested layer grows, then the stored BOOLs.
+    std::vector<SeriesModel> models{{"2x10", 2, 10}, {"4x10", 4, 10}};
+    if (!benchSmokeRun()) {
+        models.insert(models.end(), {{"8x10", 8, 10},
+                                     {"16x10", 16, 10},
+                                     {"16x20", 16, 20},
+                                     {"16x40", 16, 40},
+                                     {"stress", 0, 20}});
+    }
+    const bool withSpin = spin::available();
+    if (!withSpin)
+        std::cout << "verification series: spin or gcc not found, GG Studio only\n";
+    core::VerificationOptions unlimited;
+    unlimited.timeLimit = std::chrono::milliseconds(0);
+    std::vector<std::string> csv{"series-csv,label,grafcets,bools,gg_states,gg_ms,gg_peak_bytes,pan_states,pan_ms,"
+                                 "pan_total_mb,pan_state_mb"};
+    for (const SeriesModel& size : models) {
+        INFO(size.label);
+        const core::Model model
+            = size.grafcets > 0 ? factory::verificationSeriesModel(size.grafcets, size.bools) : factory::bothLayersStressModel();
+
+        const std::size_t before = allocations::live();
+        allocations::resetPeak();
+        const core::VerificationResult counted = core::verifyModel(model, unlimited);
+        const double peakBytes = static_cast<double>(allocations::peak() - before);
+        REQUIRE(counted.exhaustive);
+        REQUIRE(counted.programStates > 0);
+        const double ours = bestMilliseconds([&] { (void)core::verifyModel(model, unlimited); });
+        const double bytesPerState = peakBytes / static_cast<double>(counted.programStates);
+
+        std::string line = size.label + ": GG Studio " + std::to_string(counted.programStates) + " states, "
+            + fixed(ours, 1) + " ms, peak heap " + fixed(peakBytes / 1e6, 2) + " MB ("
+            + fixed(bytesPerState, 0) + " bytes per state)";
+        std::string row = "series-csv," + size.label + "," + std::to_string(size.grafcets) + ","
+            + std::to_string(size.bools) + "," + std::to_string(counted.programStates) + "," + fixed(ours, 2) + ","
+            + fixed(peakBytes, 0);
+        if (withSpin) {
+            const core::PromelaModel promela = core::buildProgramPromela(model);
+            const spin::CompiledPan pan(promela.text, "bench-series", benchPanCompileFlags());
+            const core::SpinReport report = core::readSpinReport(pan.run());
+            INFO(report.problem);
+            REQUIRE(report.complete);
+            const double theirs = bestMilliseconds([&] { (void)pan.run(); });
+            line += "; SPIN's pan " + std::to_string(report.statesStored) + " states, " + fixed(theirs, 1)
+                + " ms, memory " + fixed(report.totalMemoryMb, 1) + " MB in all (" + fixed(report.stateMemoryMb, 2)
+                + " MB for states); GG Studio / SPIN time = " + fixed(ours / theirs, 3);
+            row += "," + std::to_string(report.statesStored) + "," + fixed(theirs, 2) + ","
+                + fixed(report.totalMemoryMb, 3) + "," + fixed(report.stateMemoryMb, 3);
+        } else {
+            row += ",,,,";
+        }
+        std::cout << line << "\n" << std::flush;
+        csv.push_back(row);
+    }
+    for (const std::string& row : csv)
+        std::cout << row << "\n";
+}
+
+int main(int argc, char* argv[])
+{
+    return runCatchSession(argc, argv);
+}
