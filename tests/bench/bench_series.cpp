@@ -120,6 +120,27 @@ TEST_CASE("Verification series against SPIN", "[bench][verification][series]")
         std::cout << row << "\n";
 }
 
+// Issue 36's other figure: issue 32's unstable GRAFCET of 10,000 steps
+// (factory::unstableGrafcetModel), where a state holds the situation of
+// 10,000 steps. Minutes, not seconds: hidden, run with
+// ./build/tests/bench/series_benchmarks "[series10k]".
+TEST_CASE("Verification of a 10,000-step GRAFCET: memory per state", "[.][bench][series10k]")
+{
+    const core::Model model = factory::unstableGrafcetModel(10'000);
+    core::VerificationOptions unlimited;
+    unlimited.timeLimit = std::chrono::milliseconds(0);
+    const std::size_t before = allocations::live();
+    allocations::resetPeak();
+    const auto start = std::chrono::steady_clock::now();
+    const core::VerificationResult result = core::verifyModel(model, unlimited);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double peakBytes = static_cast<double>(allocations::peak() - before);
+    REQUIRE(result.exhaustive);
+    std::cout << "10,000-step GRAFCET: " << result.programStates << " states, " << fixed(ms, 0) << " ms, peak heap "
+              << fixed(peakBytes / 1e6, 1) << " MB ("
+              << fixed(peakBytes / static_cast<double>(result.programStates), 0) << " bytes per state)\n";
+}
+
 int main(int argc, char* argv[])
 {
     return runCatchSession(argc, argv);

@@ -54,7 +54,7 @@ CompiledPan::CompiledPan(const std::string& promelaText, const std::string& name
         out << promelaText;
     }
     const std::string command = "cd '" + m_folder.string() + "' && timeout 120 " + core::kSpinGenerate
-        + " model.pml > spin.log 2>&1 && timeout 300 gcc " + compileFlags + " -o pan pan.c > cc.log 2>&1";
+        + " model.pml > spin.log 2>&1 && timeout 900 gcc " + compileFlags + " -o pan pan.c > cc.log 2>&1";
     if (std::system(command.c_str()) != 0) {
         const std::string message = "spin: " + readText(m_folder / "spin.log") + "\ncc: " + readText(m_folder / "cc.log");
         std::error_code ignored;
