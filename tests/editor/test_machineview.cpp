@@ -24,7 +24,6 @@
 #include <QAction>
 #include <QApplication>
 #include <QContextMenuEvent>
-#include <QElapsedTimer>
 #include <QImage>
 #include <QPainter>
 #include <QTabBar>
@@ -56,7 +55,7 @@ private slots:
     void followsTheHistory();
     void followsAReplay();
     void operatorInputsAreClickable();
-    void frameWhileSimulatingIsCheap();
+    void framesFollowTheSimulation();
     void faultsFromTheSchematic();
 
 private:
@@ -341,9 +340,11 @@ void TestMachineView::operatorInputsAreClickable()
     QVERIFY(value("EmergencyOk"));
 }
 
-// The benchmark: one UI frame of the Machine tab while simulating
-// at 1,000 scans/s (16 scans a frame) under 16 ms, the scans included.
-void TestMachineView::frameWhileSimulatingIsCheap()
+// Frames of the Machine tab while simulating at 1,000 scans/s (16 scans a
+// frame): each runs its scans and repaints the schematic, which follows the
+// moving machine. How long a frame takes is a figure for the benchmarks
+// (editor_benchmarks "Machine tab frame at 1,000 scans/s"), not for a test.
+void TestMachineView::framesFollowTheSimulation()
 {
     loadDrillingCell();
     m_window->centralTabs()->setCurrentWidget(view());
@@ -352,19 +353,20 @@ void TestMachineView::frameWhileSimulatingIsCheap()
     m_session->advance(2);
     QVERIFY(m_session->setVariable(index("StartButton"), false));
     m_session->advance(1100); // from here the infeed, the clamp and the drill move
-    std::vector<qint64> frames;
-    QElapsedTimer clock;
+    const std::int64_t firstScan = m_session->latestScan();
+    const QImage before = view()->viewport()->grab().toImage();
+    int changedFrames = 0;
+    QImage previous = before;
     for (int frame = 0; frame < 60; ++frame) {
-        clock.start();
         m_session->advance(16);
         view()->viewport()->repaint();
-        frames.push_back(clock.nsecsElapsed());
+        const QImage shown = view()->viewport()->grab().toImage();
+        changedFrames += shown != previous ? 1 : 0;
+        previous = shown;
     }
-    std::sort(frames.begin(), frames.end());
-    const qint64 median = frames[frames.size() / 2];
-    qInfo("Machine tab frame at 1,000 scans/s: median %.2f ms, worst %.2f ms", static_cast<double>(median) / 1e6,
-          static_cast<double>(frames.back()) / 1e6);
-    QVERIFY2(median < 16'000'000, qPrintable(QString::number(static_cast<double>(median) / 1e6)));
+    QCOMPARE(m_session->latestScan(), firstScan + 60 * 16);
+    QVERIFY(previous != before);
+    QVERIFY2(changedFrames > 0, "the schematic never changed while the machine moved");
 }
 
 // Right-click a cylinder: its sensors' faults and a jam. A faulted sensor's
