@@ -68,7 +68,7 @@ private:
     void addNestedFacts();
     void addEvents();
     void addProperties();
-    bool confirmPropertyViolation(VerificationFinding& f);
+    bool confirmPropertyViolation(VerificationFinding& f, bool exactSearchCut);
     void addUndecided(std::size_t property, const std::string& reason);
     void add(VerificationFinding finding, const Event* event);
     VerificationFinding finding(const Event& event) const;
@@ -105,6 +105,7 @@ explore::Options BothLayers::explorationOptions(bool exactTime) const
     options.machine = m_closedLoop ? &m_model.machine() : nullptr;
     options.singleFaults = m_closedLoop && m_options.faults == VerificationOptions::Faults::Single;
     options.maxStates = m_options.maxProgramStates;
+    options.hideWriteOnlyVariables = m_options.hideWriteOnlyVariables;
     options.cancelled = m_options.cancelled;
     options.deadline = m_deadline;
     return options;
@@ -490,6 +491,7 @@ void BothLayers::add(VerificationFinding f, const Event* event)
         const explore::ProgramExplorer* explorer = m_explorer.get();
         const Event* witness = event;
         Event exactEvent;
+        bool exactSearchCut = false;
         Counterexample counterexample = explorer->counterexample(*event, f.code + " " + f.message);
         if (event->kind == EventKind::AlwaysTrue) {
             // A "never FALSE" claim: the run that fires it only illustrates it.
@@ -512,14 +514,20 @@ void BothLayers::add(VerificationFinding f, const Event* event)
                 // Counted in scans, no run shows it: the time abstraction (of the TONs, of the machine) alone made it.
                 return;
             }
+            // Counted in scans, the search stopped at the run's limit before it met a run that shows it.
+            exactSearchCut = witness == event && !m_exact->result().exhaustive;
         }
-        (void)witness;
         f.counterexample = std::move(counterexample);
-        if (f.code == code::kPropertyViolated && !f.counterexample->confirmed && !confirmPropertyViolation(f))
+        if (f.code == code::kPropertyViolated && !f.counterexample->confirmed
+            && !confirmPropertyViolation(f, exactSearchCut))
             return;
         if (!f.counterexample->confirmed) {
             f.severity = Severity::Info;
-            f.message += " (not confirmed: the run found under the abstractions does not replay in the simulator)";
+            f.message += exactSearchCut ? " (not confirmed: the run found under the abstractions does not replay in "
+                                          "the simulator, and the search for one with time counted in scans stopped "
+                                          "at the time or size limit)"
+                                        : " (not confirmed: the run found under the abstractions does not replay in "
+                                          "the simulator)";
         }
     }
     if (f.code == code::kPropertyViolated && f.severity != Severity::Info)
@@ -530,12 +538,17 @@ void BothLayers::add(VerificationFinding f, const Event* event)
 // The exploration's run of a violation does not replay (numeric memories
 // take any value there, ...): the simulator's own runs are searched for a
 // real one. Without it the property is undecided, never violated nor holding.
-bool BothLayers::confirmPropertyViolation(VerificationFinding& f)
+bool BothLayers::confirmPropertyViolation(VerificationFinding& f, bool exactSearchCut)
 {
+    // Not "does not replay" when the search was cut: given more time it may find the run.
+    const std::string cut = exactSearchCut ? ", and the search for one with time counted in scans stopped at the "
+                                             "time or size limit"
+                                           : std::string();
     if (m_closedLoop) {
         // The simulator's search runs open loop: its runs could set what the machine drives.
         m_undecided[f.property] = "the violation the exploration with the machine found rests on its abstractions "
-                                  "and does not replay in the simulator with the machine";
+                                  "and does not replay in the simulator with the machine"
+            + cut;
         return false;
     }
     ConcreteSearchOptions options;
@@ -551,8 +564,8 @@ bool BothLayers::confirmPropertyViolation(VerificationFinding& f)
         return true;
     }
     m_undecided[f.property] = "the violation the exploration found rests on its abstractions and does not replay "
-                              "in the simulator; "
-        + search.reason;
+                              "in the simulator"
+        + cut + "; " + search.reason;
     return false;
 }
 

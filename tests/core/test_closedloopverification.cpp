@@ -329,6 +329,25 @@ TEST_CASE("Drilling cell: a closed-loop violation replays with the machine", "[c
     CHECK(replaysToViolation(*model, result, property));
 }
 
+TEST_CASE("Cut short, the search counted in scans leaves a closed-loop violation undecided, and says so",
+          "[closed-loop-verify]")
+{
+    // The first exploration (machine travels abstracted, 1080 states) ends;
+    // the search with time counted in scans for a run that replays needs more
+    // states than the limit leaves it. The violation is then undecided, and
+    // the reason must not claim that no run replays.
+    const auto model = drillingCell();
+    const std::string property = "never Marker AND NOT DrillHigh";
+    VerificationOptions options = withProperty(property, true);
+    options.maxProgramStates = 1100;
+    const VerificationResult result = verifyModel(*model, options);
+    REQUIRE(result.programStates < options.maxProgramStates);
+    CHECK(result.exhaustive);
+    REQUIRE(outcomeOf(result) == PropertyOutcome::Undecided);
+    CHECK_THAT(result.propertyVerdicts.front().reason,
+               Catch::Contains("the search for one with time counted in scans stopped at the time or size limit"));
+}
+
 TEST_CASE("Cut short, a closed-loop run claims no run of arbitrary sensors", "[closed-loop-verify]")
 {
     // The GEMMA layer's findings that claim a run (GV104-GV107) were decided
