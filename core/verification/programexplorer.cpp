@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cassert>
 #include <deque>
 #include <optional>
 #include <set>
@@ -87,6 +88,7 @@ struct Slot {
     int stateBit = -1;                        // StateBool: index among the state's BOOLs
     int edge = -1;                            // read under an edge: index of its <V>_PREV
     int machineSignal = -1;                   // MachineBool: its slot in the machine's signal table
+    bool writeOnly = false;                   // StateBool nothing reads (Options::hideWriteOnlyVariables)
     // What the simulator holds before the first scan: the initial value, or
     // in closed loop an operator input's rest value (MachineLoop::reset).
     cond::Value replayInitial;
@@ -376,11 +378,17 @@ struct ProgramExplorer::Impl {
     void compileSteps();
     void compileGrafcet(CompiledStep& step);
     void compileProperties(const Model& model);
+    void compileWriteOnlyBools();
     const ExpressionInfo* info(const cond::Expression& expression, const std::map<int, std::string>* substitutions,
                                const CompiledStep* step, const CompiledGrafcet* grafcet,
                                const std::map<int, int>* timerOfNode);
     void collectComparisons(const cond::Expression& expression);
     int slotOf(std::string_view name) const;
+    void noteRead(int slot)
+    {
+        if (slot >= 0)
+            slotRead[static_cast<std::size_t>(slot)] = 1;
+    }
 
     // --- one scan ----------------------------------------------------------------------
     State initialState() const;
@@ -451,6 +459,10 @@ struct ProgramExplorer::Impl {
     std::map<std::string, int> slotByName;
     std::vector<int> edgeSlots;
     std::vector<int> stateBoolSlots;
+    std::vector<char> slotRead; // by slot: some expression or token reads it
+    // State BOOLs nothing reads (Options::hideWriteOnlyVariables): their
+    // byte in the state and the value it is reset to after every scan.
+    std::vector<std::pair<int, char>> writeOnlyBools;
     std::map<int, std::vector<std::pair<cond::BinaryOp, cond::Value>>> comparisons; // numeric slot -> constants
     std::vector<std::unique_ptr<ExpressionInfo>> infos;
     std::vector<CompiledStep> steps;
@@ -575,6 +587,7 @@ ProgramExplorer::Impl::Impl(const Model& m, Options o)
     compileSteps();
     compileFaults();
     compileProperties(m);
+    compileWriteOnlyBools();
     for (const auto& [slot, list] : comparisons) {
         std::vector<sat::Atom> atoms;
         for (const auto& [op, constant] : list) {
@@ -661,8 +674,10 @@ void ProgramExplorer::Impl::compileSlots(const Model& m)
         slotByName.emplace(upper(variable.name), static_cast<int>(slots.size()));
         slots.push_back(std::move(slot));
     }
+    slotRead.assign(slots.size(), 0);
     for (const std::string& name : program.edgeVariables) {
         const int s = slotOf(name);
+        noteRead(s);
         if (s < 0)
             continue;
         slots[static_cast<std::size_t>(s)].edge = static_cast<int>(edgeSlots.size());
@@ -675,6 +690,22 @@ void ProgramExplorer::Impl::compileSlots(const Model& m)
                 result.abstractions.push_back("numeric variables written by actions take any value of their type");
             abstractedNumbers = true;
         }
+    }
+}
+
+// After every expression is compiled: which state BOOLs nothing reads.
+// Outputs always count as read: the machine, the D1 rule (GV119) and the
+// user look at them.
+void ProgramExplorer::Impl::compileWriteOnlyBools()
+{
+    if (!options.hideWriteOnlyVariables)
+        return;
+    for (int s : stateBoolSlots) {
+        Slot& slot = slots[static_cast<std::size_t>(s)];
+        if (slot.kind == VariableKind::Output || slotRead[static_cast<std::size_t>(s)] || slot.edge >= 0)
+            continue;
+        slot.writeOnly = true;
+        writeOnlyBools.emplace_back(layout.bools + slot.stateBit, cond::isTrue(slot.initial) ? 1 : 0);
     }
 }
 
@@ -830,6 +861,7 @@ void ProgramExplorer::Impl::compileSteps()
         for (const GemmaToken& token : g.tokens) {
             tokenByName.emplace(token.name, static_cast<int>(tokens.size()));
             tokens.push_back({slotOf(token.variable), token.polarity == TokenPolarity::NormallyClosed});
+            noteRead(tokens.back().slot);
         }
         steps.push_back(std::move(step));
     }
@@ -1115,6 +1147,7 @@ const ExpressionInfo* ProgramExplorer::Impl::info(const cond::Expression& expres
             }
             n.slot = slotOf(node.text);
             n.role = NodeRole::BoolRead;
+            noteRead(n.slot);
             ownOutputOf(n, node.text);
             break;
         }
@@ -1275,7 +1308,9 @@ bool ProgramExplorer::Impl::readBool(int slot)
         return false;
     const Slot& s = slots[static_cast<std::size_t>(slot)];
     switch (s.cls) {
-    case SlotClass::StateBool: return work[static_cast<std::size_t>(layout.bools + s.stateBit)] != 0;
+    case SlotClass::StateBool:
+        assert(!s.writeOnly && "a variable hidden as write-only is read"); // compileWriteOnlyBools missed a reader
+        return work[static_cast<std::size_t>(layout.bools + s.stateBit)] != 0;
     case SlotClass::ConstBool: return cond::isTrue(s.initial);
     case SlotClass::MachineBool: {
         const auto signal = static_cast<std::size_t>(s.machineSignal);
@@ -1902,6 +1937,8 @@ ScanOutcome ProgramExplorer::Impl::scan(const State& from, State& to)
     for (std::size_t e = 0; e < edgeSlots.size(); ++e)
         work[u(layout.prev) + e] = readBool(edgeSlots[e]) ? 1 : 0;
     // Normal form: what is never read again is cleared.
+    for (const auto& [at, initial] : writeOnlyBools)
+        work[u(at)] = initial;
     const bool leftStep = newStep != active;
     if (leftStep || newStep < 0 || steps[u(newStep)].grafcet < 0) {
         std::fill(work.begin() + layout.x, work.begin() + layout.bools, '\0');

@@ -86,6 +86,14 @@ struct Options {
     // or conveyor jam, for the rest of the run (docs/verification.md,
     // "Single faults (--faults single)"). The state keeps which.
     bool singleFaults = false;
+    // A stored internal BOOL that nothing reads (no condition, receptivity,
+    // action, property, edge or token names it; not an output) is written as
+    // the program writes it, races included, but its value is not kept apart
+    // in the states: no run's future depends on it. SPIN hides such
+    // write-only variables from its state vector too (spin -o2 keeps them).
+    // False keeps them apart (more states, the same findings; the tests
+    // compare the two).
+    bool hideWriteOnlyVariables = true;
     std::size_t maxStates = 1'000'000;
     // Scans run (each way the inputs of a state go): a budget of work that,
     // unlike the deadline, ends at the same point on every machine.

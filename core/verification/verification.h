@@ -95,6 +95,11 @@ struct VerificationOptions {
     // stops once it has found them all. True: it explores everything anyway
     // (the same findings, more time; the tests compare the two).
     bool wholeExactTimeExploration = false;
+    // Stored internal BOOLs nothing reads are not kept apart in the
+    // exploration's states (explore::Options::hideWriteOnlyVariables, as
+    // SPIN hides write-only variables). False: kept apart (more states, the
+    // same findings; the tests compare the two).
+    bool hideWriteOnlyVariables = true;
     // Closed loop (docs/verification.md, "Closed loop (--machine)"): the
     // program is explored with the model's machine, the inputs its sensors
     // drive computed from the machine's state, operator inputs free, time

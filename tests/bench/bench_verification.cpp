@@ -68,7 +68,9 @@ TEST_CASE("Verification of both layers", "[bench][verification]")
     unlimited.timeLimit = std::chrono::milliseconds(0);
     const core::VerificationResult stressResult = core::verifyModel(stress, unlimited);
     REQUIRE(stressResult.exhaustive);
-    REQUIRE(stressResult.programStates > 5000);
+    // 443 states, as pan stores them: its 20 stored memories are write-only
+    // (docs/performance.md, "Why the stress benchmark reported 9,692 states...").
+    REQUIRE(stressResult.programStates >= 400);
 
     BENCHMARK("verify both layers: shipped example with 3 properties")
     {

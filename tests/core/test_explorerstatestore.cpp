@@ -149,6 +149,7 @@ TEST_CASE("Explorer state store: the explorer finds the states and scans it foun
     for (const Case& c : {Case{2, 10, 479, 2682}, Case{4, 10, 2151, 12303}}) {
         INFO(c.grafcets << " GRAFCETs, " << c.bools << " BOOLs");
         Options options;
+        options.hideWriteOnlyVariables = false; // as the former storage was measured: every stored BOOL kept
         ProgramExplorer explorer(factory::verificationSeriesModel(c.grafcets, c.bools), options);
         const Exploration& e = explorer.run();
         REQUIRE(e.exhaustive);

@@ -47,22 +47,6 @@ const explore::Event* eventOf(const explore::Exploration& e, explore::EventKind 
     return nullptr;
 }
 
-// What tells two results apart for the engineer: each finding, its severity,
-// its elements and message, and whether its run replays.
-std::vector<std::string> findingLines(const VerificationResult& result)
-{
-    std::vector<std::string> lines;
-    for (const VerificationFinding& f : result.findings) {
-        std::string line = f.code + " " + std::to_string(static_cast<int>(f.severity)) + " " + f.message;
-        for (const std::string& element : f.elements)
-            line += " | " + element;
-        if (f.counterexample)
-            line += f.counterexample->confirmed ? " [confirmed]" : " [not confirmed]";
-        lines.push_back(line);
-    }
-    return lines;
-}
-
 // Random models with random valid GRAFCETs (durations among their
 // receptivities), the first `count` that have one.
 std::vector<Model> randomTimedModels(int count, std::uint32_t seed)
@@ -173,7 +157,7 @@ TEST_CASE("Verification: the searched refinement finds the runs a stretch cannot
     const VerificationResult reference = verifyModel(model, whole);
     CHECK(result.exhaustive == reference.exhaustive);
     CHECK(result.programStates == reference.programStates);
-    CHECK(findingLines(result) == findingLines(reference));
+    CHECK(verificationtest::findingLines(result) == verificationtest::findingLines(reference));
     const auto races = verificationtest::findingsWith(result, verification::kStoredRace);
     REQUIRE(races.size() == 2);
     for (const VerificationFinding* race : races) {
