@@ -28,6 +28,8 @@ def read_rows(path):
     for row in csv.DictReader(lines):
         if row["grafcets"] == "0":
             continue  # the stress model: not a point of the series
+        if row.get("memories", "hidden") != "hidden":
+            continue  # the rows with write-only memories kept: the table's, not the plot's
         rows.append(row)
     return rows
 

@@ -10,7 +10,8 @@
 // three pan.run(), the process start included) and the memory pan reports.
 // A line per model, then the same as CSV (`series-csv,...`), which
 // docs/plots/series.py turns into docs/plots/series.svg. Nothing asserts a
-// time. The smoke pass runs the smallest size once.
+// time. The smoke pass runs the smallest size once; GGSTUDIO_SERIES_SIZES
+// (labels, comma-separated) chooses the sizes.
 
 #include "core/verification/promelaprogram.h"
 #include "core/verification/verification.h"
@@ -26,6 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -58,6 +60,55 @@ std::string fixed(double value, int decimals)
     return text;
 }
 
+// Hidden: as both tools run by default (write-only variables out of the
+// state). Kept: the explorer with hideWriteOnlyVariables off, pan generated
+// with spin -o2 (write-only variables kept) and run with a deeper stack.
+enum class Memories { Hidden, Kept };
+
+// One line printed for the model in that mode; its CSV row returned.
+std::string measure(const SeriesModel& size, const core::Model& model, Memories memories, bool withSpin)
+{
+    const bool kept = memories == Memories::Kept;
+    core::VerificationOptions unlimited;
+    unlimited.timeLimit = std::chrono::milliseconds(0);
+    unlimited.hideWriteOnlyVariables = !kept;
+    const std::size_t before = allocations::live();
+    allocations::resetPeak();
+    const core::VerificationResult counted = core::verifyModel(model, unlimited);
+    const double peakBytes = static_cast<double>(allocations::peak() - before);
+    REQUIRE(counted.exhaustive);
+    REQUIRE(counted.programStates > 0);
+    const double ours = bestMilliseconds([&] { (void)core::verifyModel(model, unlimited); });
+    const double bytesPerState = peakBytes / static_cast<double>(counted.programStates);
+
+    const std::string mode = kept ? "kept" : "hidden";
+    std::string line = size.label + " (write-only memories " + mode + "): GG Studio "
+        + std::to_string(counted.programStates) + " states, " + fixed(ours, 1) + " ms, peak heap "
+        + fixed(peakBytes / 1e6, 2) + " MB (" + fixed(bytesPerState, 0) + " bytes per state)";
+    std::string row = "series-csv," + size.label + "," + mode + "," + std::to_string(size.grafcets) + ","
+        + std::to_string(size.bools) + "," + std::to_string(counted.programStates) + "," + fixed(ours, 2) + ","
+        + fixed(peakBytes, 0);
+    if (withSpin) {
+        const core::PromelaModel promela = core::buildProgramPromela(model);
+        const spin::CompiledPan pan(promela.text, "bench-series", benchPanCompileFlags(),
+                                    kept ? "spin -o2 -o3 -a" : core::kSpinGenerate);
+        const std::string arguments = kept ? "-m2000000 -w22" : "-m200000 -w20";
+        const core::SpinReport report = core::readSpinReport(pan.run({}, arguments));
+        INFO(report.problem);
+        REQUIRE(report.complete);
+        const double theirs = bestMilliseconds([&] { (void)pan.run({}, arguments); });
+        line += "; SPIN's pan " + std::to_string(report.statesStored) + " states, " + fixed(theirs, 1)
+            + " ms, memory " + fixed(report.totalMemoryMb, 1) + " MB in all (" + fixed(report.stateMemoryMb, 2)
+            + " MB for states); GG Studio / SPIN time = " + fixed(ours / theirs, 3);
+        row += "," + std::to_string(report.statesStored) + "," + fixed(theirs, 2) + ","
+            + fixed(report.totalMemoryMb, 3) + "," + fixed(report.stateMemoryMb, 3);
+    } else {
+        row += ",,,,";
+    }
+    std::cout << line << "\n" << std::flush;
+    return row;
+}
+
 } // namespace
 
 TEST_CASE("Verification series against SPIN", "[bench][verification][series]")
@@ -73,50 +124,26 @@ TEST_CASE("Verification series against SPIN", "[bench][verification][series]")
                                      {"16x40", 16, 40},
                                      {"stress", 0, 20}});
     }
+    // GGSTUDIO_SERIES_SIZES=2x10,4x10,stress runs only those (pan.c of the 16x
+    // sizes takes gcc -O2 a quarter of an hour and more).
+    if (const char* only = std::getenv("GGSTUDIO_SERIES_SIZES")) {
+        const std::string wanted = std::string(",") + only + ",";
+        std::erase_if(models, [&](const SeriesModel& m) { return wanted.find("," + m.label + ",") == std::string::npos; });
+    }
     const bool withSpin = spin::available();
     if (!withSpin)
         std::cout << "verification series: spin or gcc not found, GG Studio only\n";
-    core::VerificationOptions unlimited;
-    unlimited.timeLimit = std::chrono::milliseconds(0);
-    std::vector<std::string> csv{"series-csv,label,grafcets,bools,gg_states,gg_ms,gg_peak_bytes,pan_states,pan_ms,"
-                                 "pan_total_mb,pan_state_mb"};
+    std::vector<std::string> csv{"series-csv,label,memories,grafcets,bools,gg_states,gg_ms,gg_peak_bytes,pan_states,"
+                                 "pan_ms,pan_total_mb,pan_state_mb"};
     for (const SeriesModel& size : models) {
         INFO(size.label);
         const core::Model model
             = size.grafcets > 0 ? factory::verificationSeriesModel(size.grafcets, size.bools) : factory::bothLayersStressModel();
-
-        const std::size_t before = allocations::live();
-        allocations::resetPeak();
-        const core::VerificationResult counted = core::verifyModel(model, unlimited);
-        const double peakBytes = static_cast<double>(allocations::peak() - before);
-        REQUIRE(counted.exhaustive);
-        REQUIRE(counted.programStates > 0);
-        const double ours = bestMilliseconds([&] { (void)core::verifyModel(model, unlimited); });
-        const double bytesPerState = peakBytes / static_cast<double>(counted.programStates);
-
-        std::string line = size.label + ": GG Studio " + std::to_string(counted.programStates) + " states, "
-            + fixed(ours, 1) + " ms, peak heap " + fixed(peakBytes / 1e6, 2) + " MB ("
-            + fixed(bytesPerState, 0) + " bytes per state)";
-        std::string row = "series-csv," + size.label + "," + std::to_string(size.grafcets) + ","
-            + std::to_string(size.bools) + "," + std::to_string(counted.programStates) + "," + fixed(ours, 2) + ","
-            + fixed(peakBytes, 0);
-        if (withSpin) {
-            const core::PromelaModel promela = core::buildProgramPromela(model);
-            const spin::CompiledPan pan(promela.text, "bench-series", benchPanCompileFlags());
-            const core::SpinReport report = core::readSpinReport(pan.run());
-            INFO(report.problem);
-            REQUIRE(report.complete);
-            const double theirs = bestMilliseconds([&] { (void)pan.run(); });
-            line += "; SPIN's pan " + std::to_string(report.statesStored) + " states, " + fixed(theirs, 1)
-                + " ms, memory " + fixed(report.totalMemoryMb, 1) + " MB in all (" + fixed(report.stateMemoryMb, 2)
-                + " MB for states); GG Studio / SPIN time = " + fixed(ours / theirs, 3);
-            row += "," + std::to_string(report.statesStored) + "," + fixed(theirs, 2) + ","
-                + fixed(report.totalMemoryMb, 3) + "," + fixed(report.stateMemoryMb, 3);
-        } else {
-            row += ",,,,";
-        }
-        std::cout << line << "\n" << std::flush;
-        csv.push_back(row);
+        csv.push_back(measure(size, model, Memories::Hidden, withSpin));
+        // Both keeping the memories nothing reads (more states, the same
+        // findings): up to 8x10, as pan.c of 16 GRAFCETs takes too long to compile.
+        if (!benchSmokeRun() && size.grafcets <= 8)
+            csv.push_back(measure(size, model, Memories::Kept, withSpin));
     }
     for (const std::string& row : csv)
         std::cout << row << "\n";

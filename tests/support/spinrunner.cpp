@@ -41,7 +41,8 @@ bool available()
     return succeeds("spin -V") && succeeds("gcc --version");
 }
 
-CompiledPan::CompiledPan(const std::string& promelaText, const std::string& name, const std::string& compileFlags)
+CompiledPan::CompiledPan(const std::string& promelaText, const std::string& name, const std::string& compileFlags,
+                         const std::string& generate)
 {
     if (!available())
         throw std::runtime_error("spin or gcc is missing (Debian packages spin and gcc)");
@@ -53,7 +54,7 @@ CompiledPan::CompiledPan(const std::string& promelaText, const std::string& name
         std::ofstream out(m_folder / "model.pml", std::ios::binary);
         out << promelaText;
     }
-    const std::string command = "cd '" + m_folder.string() + "' && timeout 120 " + core::kSpinGenerate
+    const std::string command = "cd '" + m_folder.string() + "' && timeout 120 " + generate
         + " model.pml > spin.log 2>&1 && timeout 900 gcc " + compileFlags + " -o pan pan.c > cc.log 2>&1";
     if (std::system(command.c_str()) != 0) {
         const std::string message = "spin: " + readText(m_folder / "spin.log") + "\ncc: " + readText(m_folder / "cc.log");

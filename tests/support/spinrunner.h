@@ -7,6 +7,8 @@
 // and `gcc` (CI installs both); a step that fails throws std::runtime_error
 // with what spin, the compiler or the shell printed.
 
+#include "core/verification/promela.h"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,8 +23,11 @@ public:
     // `compileFlags`: the tests compile pan.c with -O0 (their state spaces
     // take milliseconds, optimising pan.c takes seconds); the benchmarks
     // with core::kSpinCompile's -O2.
+    // `generate`: spin's command (core::kSpinGenerate; "spin -o2 -o3 -a" keeps
+    // the write-only variables in pan's state).
     CompiledPan(const std::string& promelaText, const std::string& name,
-                const std::string& compileFlags = "-O0 -DSAFETY -DMEMLIM=512");
+                const std::string& compileFlags = "-O0 -DSAFETY -DMEMLIM=512",
+                const std::string& generate = core::kSpinGenerate);
     CompiledPan(const CompiledPan&) = delete;
     CompiledPan& operator=(const CompiledPan&) = delete;
     ~CompiledPan();
