@@ -4,7 +4,8 @@
 Reads the `series-csv,...` lines that tests/bench/series_benchmarks prints
 (the benchmark's whole output may be given: other lines are skipped) and
 writes two panels side by side, time and peak memory against the series'
-size, GG Studio and SPIN's pan, both on logarithmic axes. Python 3, standard
+size, GG Studio and SPIN's pan, both on logarithmic axes; solid as both run by
+default (write-only memories hidden), dashed with both keeping them. Python 3, standard
 library only.
 
     ./build/tests/bench/series_benchmarks > series.txt
@@ -15,10 +16,12 @@ import csv
 import math
 import sys
 
-WIDTH, HEIGHT = 900, 380
+WIDTH, HEIGHT = 900, 400
 PANEL_W, PANEL_H = 360, 260
 MARGIN_LEFT, MARGIN_TOP = 70, 50
-COLORS = {"GG Studio": "#1f77b4", "SPIN (pan)": "#d62728"}
+COLORS = {"GG Studio": "#1f77b4", "SPIN (pan)": "#d62728",
+          "GG Studio, memories kept": "#1f77b4", "SPIN (pan), memories kept": "#d62728"}
+DASHED = {"GG Studio, memories kept", "SPIN (pan), memories kept"}
 
 
 def read_rows(path):
@@ -28,8 +31,6 @@ def read_rows(path):
     for row in csv.DictReader(lines):
         if row["grafcets"] == "0":
             continue  # the stress model: not a point of the series
-        if row.get("memories", "hidden") != "hidden":
-            continue  # the rows with write-only memories kept: the table's, not the plot's
         rows.append(row)
     return rows
 
@@ -78,7 +79,8 @@ def panel(out, x0, y0, title, unit, labels, series):
         if not coords:
             continue
         path = " ".join(f"{x:.1f},{y:.1f}" for x, y in coords)
-        out.append(f'<polyline points="{path}" fill="none" stroke="{COLORS[name]}" stroke-width="2"/>')
+        dash = ' stroke-dasharray="6,4"' if name in DASHED else ""
+        out.append(f'<polyline points="{path}" fill="none" stroke="{COLORS[name]}" stroke-width="2"{dash}/>')
         for x, y in coords:
             out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="3.5" fill="{COLORS[name]}"/>')
 
@@ -89,26 +91,37 @@ def main():
     rows = read_rows(sys.argv[1])
     if not rows:
         sys.exit(f"{sys.argv[1]}: no series-csv lines")
-    labels = [f'{r["grafcets"]}×{r["bools"]}' for r in rows]
+    hidden = [r for r in rows if r.get("memories", "hidden") == "hidden"]
+    kept = {r["label"]: r for r in rows if r.get("memories") == "kept"}
+    labels = [f'{r["grafcets"]}×{r["bools"]}' for r in hidden]
 
     def number(row, key):
-        return float(row[key]) if row.get(key) else None
+        return float(row[key]) if row and row.get(key) else None
+
+    def kept_of(key, scale=1.0):
+        return [number(kept.get(r["label"]), key) / scale if number(kept.get(r["label"]), key) else None
+                for r in hidden]
 
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" '
            f'font-family="sans-serif" font-size="12">',
            f'<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>']
     panel(out, MARGIN_LEFT, MARGIN_TOP, "Time (best of three)", "ms", labels,
-          {"GG Studio": [number(r, "gg_ms") for r in rows], "SPIN (pan)": [number(r, "pan_ms") for r in rows]})
+          {"GG Studio": [number(r, "gg_ms") for r in hidden], "SPIN (pan)": [number(r, "pan_ms") for r in hidden],
+           "GG Studio, memories kept": kept_of("gg_ms"), "SPIN (pan), memories kept": kept_of("pan_ms")})
     panel(out, MARGIN_LEFT + PANEL_W + 100, MARGIN_TOP, "Peak memory", "MB", labels,
-          {"GG Studio": [number(r, "gg_peak_bytes") / 1e6 for r in rows],
-           "SPIN (pan)": [number(r, "pan_total_mb") for r in rows]})
+          {"GG Studio": [number(r, "gg_peak_bytes") / 1e6 for r in hidden],
+           "SPIN (pan)": [number(r, "pan_total_mb") for r in hidden],
+           "GG Studio, memories kept": kept_of("gg_peak_bytes", 1e6),
+           "SPIN (pan), memories kept": kept_of("pan_total_mb")})
     legend_y = HEIGHT - 22
     for i, name in enumerate(COLORS):
-        x = MARGIN_LEFT + i * 160
-        out.append(f'<line x1="{x}" y1="{legend_y}" x2="{x + 24}" y2="{legend_y}" stroke="{COLORS[name]}" stroke-width="2"/>')
-        out.append(f'<text x="{x + 30}" y="{legend_y + 4}">{name}</text>')
-    out.append(f'<text x="{MARGIN_LEFT + 340}" y="{legend_y + 4}" font-size="11">size: nested GRAFCETs × stored BOOLs'
-               f' (factory::verificationSeriesModel)</text>')
+        x = MARGIN_LEFT + (i % 2) * 230
+        y = legend_y - 18 * (1 - i // 2)
+        dash = ' stroke-dasharray="6,4"' if name in DASHED else ""
+        out.append(f'<line x1="{x}" y1="{y}" x2="{x + 24}" y2="{y}" stroke="{COLORS[name]}" stroke-width="2"{dash}/>')
+        out.append(f'<text x="{x + 30}" y="{y + 4}">{name}</text>')
+    out.append(f'<text x="{MARGIN_LEFT + 480}" y="{legend_y - 14}" font-size="11">size: nested GRAFCETs × stored BOOLs</text>')
+    out.append(f'<text x="{MARGIN_LEFT + 480}" y="{legend_y + 4}" font-size="11">(factory::verificationSeriesModel)</text>')
     out.append("</svg>")
     with open(sys.argv[2], "w", encoding="utf-8") as svg:
         svg.write("\n".join(out) + "\n")
