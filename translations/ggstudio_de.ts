@@ -722,6 +722,10 @@
         <source>Variable &apos;%1&apos; is used by no condition, receptivity or action that generates code.</source>
         <translation>Die Variable &apos;%1&apos; wird von keiner Bedingung, Weiterschaltbedingung oder Aktion verwendet, die Code erzeugt.</translation>
     </message>
+    <message>
+        <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator, and the search for one with time counted in scans stopped at the time or size limit (a longer time limit may find it).</source>
+        <translation>Nicht bestätigt: der unter den Abstraktionen der Verifikation gefundene Ablauf lässt sich im Simulator nicht nachspielen, und die Suche nach einem Ablauf mit in Zyklen gezählter Zeit hat an der Zeit- oder Größengrenze angehalten (eine längere Zeitgrenze kann ihn finden).</translation>
+    </message>
 </context>
 <context>
     <name>EditMachineComponentCommand</name>

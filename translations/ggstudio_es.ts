@@ -722,6 +722,10 @@
         <source>Variable &apos;%1&apos; is used by no condition, receptivity or action that generates code.</source>
         <translation>La variable &apos;%1&apos; no la usa ninguna condición, receptividad o acción que genere código.</translation>
     </message>
+    <message>
+        <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator, and the search for one with time counted in scans stopped at the time or size limit (a longer time limit may find it).</source>
+        <translation>No confirmado: la ejecución hallada con las abstracciones de la verificación no se reproduce en el simulador, y la búsqueda de una con el tiempo contado en ciclos se detuvo en el límite de tiempo o de tamaño (un límite de tiempo mayor puede encontrarla).</translation>
+    </message>
 </context>
 <context>
     <name>EditMachineComponentCommand</name>

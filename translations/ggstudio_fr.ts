@@ -722,6 +722,10 @@
         <source>Variable &apos;%1&apos; is used by no condition, receptivity or action that generates code.</source>
         <translation>La variable &apos;%1&apos; n&apos;est utilisée par aucune condition, réceptivité ou action qui génère du code.</translation>
     </message>
+    <message>
+        <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator, and the search for one with time counted in scans stopped at the time or size limit (a longer time limit may find it).</source>
+        <translation>Non confirmé&#xa0;: l&apos;exécution trouvée sous les abstractions de la vérification ne se rejoue pas dans le simulateur, et la recherche d&apos;une exécution avec le temps compté en cycles s&apos;est arrêtée à la limite de temps ou de taille (une limite de temps plus longue peut la trouver).</translation>
+    </message>
 </context>
 <context>
     <name>EditMachineComponentCommand</name>

@@ -722,6 +722,10 @@
         <source>Variable &apos;%1&apos; is used by no condition, receptivity or action that generates code.</source>
         <translation>La variabile &apos;%1&apos; non è usata da alcuna condizione, recettività o azione che genera codice.</translation>
     </message>
+    <message>
+        <source>Not confirmed: the run found under the abstractions of the verification does not replay in the simulator, and the search for one with time counted in scans stopped at the time or size limit (a longer time limit may find it).</source>
+        <translation>Non confermato: l&apos;esecuzione trovata con le astrazioni della verifica non si riproduce nel simulatore, e la ricerca di una con il tempo contato in cicli si è fermata al limite di tempo o di dimensione (un limite di tempo più lungo può trovarla).</translation>
+    </message>
 </context>
 <context>
     <name>EditMachineComponentCommand</name>

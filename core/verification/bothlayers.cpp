@@ -16,6 +16,10 @@ namespace core {
 
 namespace {
 
+// Said of a run that does not replay when its search counted in scans was cut.
+constexpr const char* kReplaySearchCut
+    = ", and the search for one with time counted in scans stopped at the time or size limit";
+
 namespace code = verification;
 using explore::Event;
 using explore::EventKind;
@@ -523,11 +527,10 @@ void BothLayers::add(VerificationFinding f, const Event* event)
             return;
         if (!f.counterexample->confirmed) {
             f.severity = Severity::Info;
-            f.message += exactSearchCut ? " (not confirmed: the run found under the abstractions does not replay in "
-                                          "the simulator, and the search for one with time counted in scans stopped "
-                                          "at the time or size limit)"
-                                        : " (not confirmed: the run found under the abstractions does not replay in "
-                                          "the simulator)";
+            f.replaySearchCut = exactSearchCut;
+            f.message += std::string(" (not confirmed: the run found under the abstractions does not replay in the "
+                                     "simulator")
+                + (exactSearchCut ? kReplaySearchCut : "") + ")";
         }
     }
     if (f.code == code::kPropertyViolated && f.severity != Severity::Info)
@@ -541,9 +544,7 @@ void BothLayers::add(VerificationFinding f, const Event* event)
 bool BothLayers::confirmPropertyViolation(VerificationFinding& f, bool exactSearchCut)
 {
     // Not "does not replay" when the search was cut: given more time it may find the run.
-    const std::string cut = exactSearchCut ? ", and the search for one with time counted in scans stopped at the "
-                                             "time or size limit"
-                                           : std::string();
+    const std::string cut = exactSearchCut ? kReplaySearchCut : "";
     if (m_closedLoop) {
         // The simulator's search runs open loop: its runs could set what the machine drives.
         m_undecided[f.property] = "the violation the exploration with the machine found rests on its abstractions "

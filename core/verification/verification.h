@@ -152,6 +152,9 @@ struct VerificationFinding {
     // VerificationOptions::properties); -1 otherwise.
     int property = -1;
     FindingOrigin origin = FindingOrigin::GemmaLayer;
+    // Its run does not replay, and the search for one with time counted in
+    // scans stopped at the run's time or size limit: more time may find it.
+    bool replaySearchCut = false;
     // PackML models: where the finding points, as the checks' diagnostics
     // do (Target Mode, ModeState or Command); unset for GEMMA models.
     std::optional<Diagnostic> location;

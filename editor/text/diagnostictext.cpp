@@ -529,8 +529,12 @@ QString unconfirmedReason(const core::VerificationFinding& f)
     using core::FindingOrigin;
     const bool notReplayed = f.counterexample && !f.counterexample->confirmed;
     if (f.origin == FindingOrigin::BothLayers && f.severity == core::Severity::Info && notReplayed)
-        return DiagnosticText::tr("Not confirmed: the run found under the abstractions of the verification does "
-                                  "not replay in the simulator.");
+        return f.replaySearchCut
+            ? DiagnosticText::tr("Not confirmed: the run found under the abstractions of the verification does not "
+                                 "replay in the simulator, and the search for one with time counted in scans stopped "
+                                 "at the time or size limit (a longer time limit may find it).")
+            : DiagnosticText::tr("Not confirmed: the run found under the abstractions of the verification does "
+                                 "not replay in the simulator.");
     if (f.origin == FindingOrigin::GemmaLayerKept && notReplayed)
         return DiagnosticText::tr("Not confirmed: decided on the GEMMA layer with every Complete free, and the run "
                                   "does not replay with the nested GRAFCETs.");

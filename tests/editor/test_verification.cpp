@@ -680,6 +680,13 @@ void TestVerification::everyCodeHasATemplate()
     unconfirmed.arguments = unconfirmed.elements = {"F1"};
     unconfirmed.counterexample = core::Counterexample{};
     QVERIFY(verificationText(unconfirmed).contains(QStringLiteral("Not confirmed")));
+    // Of both layers: whether the search for a run that replays was cut or found none to the end.
+    unconfirmed.origin = core::FindingOrigin::BothLayers;
+    const QString cutShort = QStringLiteral("stopped at the time or size limit");
+    QVERIFY(verificationText(unconfirmed).contains(QStringLiteral("does not replay in the simulator.")));
+    QVERIFY(!verificationText(unconfirmed).contains(cutShort));
+    unconfirmed.replaySearchCut = true;
+    QVERIFY(verificationText(unconfirmed).contains(cutShort));
     // A code the editor does not know keeps the core's English message.
     core::VerificationFinding unknown;
     unknown.code = "GV999";
