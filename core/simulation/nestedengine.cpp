@@ -1,7 +1,5 @@
 #include "core/simulation/nestedengine.h"
 
-#include "core/simulation/decidingoperands.h"
-
 #include "core/condition/conditionanalysis.h"
 #include "core/model/model.h"
 
@@ -12,38 +10,65 @@
 
 namespace core {
 
+namespace {
+
+std::size_t continuousActionCount(const NestedGrafcet& grafcet)
+{
+    std::size_t count = 0;
+    for (const NestedStep& step : grafcet.steps)
+        count += step.continuous.size();
+    return count;
+}
+
+// `numbers` ascending: the index of `number`, -1 when absent.
+int stepIndexIn(const std::vector<int>& numbers, int number)
+{
+    const auto found = std::lower_bound(numbers.begin(), numbers.end(), number);
+    return found != numbers.end() && *found == number ? static_cast<int>(found - numbers.begin()) : -1;
+}
+
+} // namespace
+
 NestedEngine::NestedEngine(const NestedGrafcet& grafcet, const std::function<int(std::string_view)>& slotOf,
                            const std::function<IecType(int)>& typeOf)
     : m_grafcet(&grafcet)
-    , m_slotOf(slotOf)
-    , m_targetTypes(typeOf)
-    , m_untilStable(grafcet.rule == EvolutionRule::UntilStable)
+    , m_shape(makeShape(grafcet, slotOf, typeOf))
 {
+    m_emitting.assign(continuousActionCount(grafcet), 0);
+    reset();
+}
+
+std::shared_ptr<const NestedEngine::Shape> NestedEngine::makeShape(const NestedGrafcet& grafcet,
+                                                                   const std::function<int(std::string_view)>& slotOf,
+                                                                   const std::function<IecType(int)>& typeOf)
+{
+    auto shape = std::make_shared<Shape>();
+    shape->slotOf = slotOf;
+    shape->targetTypes = typeOf;
+    shape->untilStable = grafcet.rule == EvolutionRule::UntilStable;
     std::size_t continuous = 0;
     for (const NestedStep& step : grafcet.steps) {
-        m_stepNumbers.push_back(step.number);
-        m_continuousStart.push_back(continuous);
+        shape->stepNumbers.push_back(step.number);
+        shape->continuousStart.push_back(continuous);
         continuous += step.continuous.size();
     }
-    m_emitting.assign(continuous, 0);
     for (const ContinuousOutput& output : grafcet.outputs) {
         if (output.isComplete) {
-            m_outputOf.push_back(-1);
+            shape->outputOf.push_back(-1);
             continue;
         }
-        m_outputOf.push_back(static_cast<int>(m_outputNames.size()));
-        m_outputNames.push_back(output.variable);
-        m_outputSlots.push_back(slotOf(output.variable));
+        shape->outputOf.push_back(static_cast<int>(shape->outputNames.size()));
+        shape->outputNames.push_back(output.variable);
+        shape->outputSlots.push_back(slotOf(output.variable));
     }
-    auto topology = std::make_shared<Topology>();
-    topology->following.resize(grafcet.steps.size());
+    shape->following.resize(grafcet.steps.size());
     for (std::size_t t = 0; t < grafcet.transitions.size(); ++t) {
         const NestedTransition& transition = grafcet.transitions[t];
         std::vector<std::size_t> upstream, downstream;
         bool known = true;
         const auto indices = [&](const std::vector<int>& numbers, std::vector<std::size_t>& into) {
             for (int number : numbers) {
-                const int index = stepIndex(number);
+                const int index = stepIndexIn(shape->stepNumbers, number);
                 known = known && index >= 0;
                 if (index >= 0)
                     into.push_back(static_cast<std::size_t>(index));
@@ -56,21 +81,20 @@ NestedEngine::NestedEngine(const NestedGrafcet& grafcet, const std::function<int
         const bool usable = transition.usable && known;
         if (usable) {
             for (std::size_t step : upstream)
-                topology->following[step].push_back(t);
+                shape->following[step].push_back(t);
         }
-        topology->upstream.push_back(std::move(upstream));
-        topology->downstream.push_back(std::move(downstream));
-        topology->usable.push_back(usable ? 1 : 0);
+        shape->upstream.push_back(std::move(upstream));
+        shape->downstream.push_back(std::move(downstream));
+        shape->usable.push_back(usable ? 1 : 0);
     }
-    m_topology = std::move(topology);
-    reset();
+    return shape;
 }
 
 void NestedEngine::reset()
 {
-    m_x.assign(m_stepNumbers.size(), 0);
+    m_x.assign(m_shape->stepNumbers.size(), 0);
     m_timers.assign(m_grafcet->timers.size(), Timer{});
-    m_outputs.assign(m_outputNames.size(), 0);
+    m_outputs.assign(m_shape->outputNames.size(), 0);
     std::fill(m_emitting.begin(), m_emitting.end(), 0);
     m_complete = false;
     m_unstable = false;
@@ -80,13 +104,13 @@ void NestedEngine::reset()
 
 int NestedEngine::slot(std::string_view name) const
 {
-    return m_slotOf(name);
+    return m_shape->slotOf(name);
 }
 
 int NestedEngine::ownOutput(std::string_view name) const
 {
-    for (std::size_t i = 0; i < m_outputNames.size(); ++i) {
-        if (equalsIgnoreCase(m_outputNames[i], name))
+    for (std::size_t i = 0; i < m_shape->outputNames.size(); ++i) {
+        if (equalsIgnoreCase(m_shape->outputNames[i], name))
             return static_cast<int>(i);
     }
     return -1;
@@ -94,8 +118,7 @@ int NestedEngine::ownOutput(std::string_view name) const
 
 int NestedEngine::stepIndex(int number) const
 {
-    const auto found = std::lower_bound(m_stepNumbers.begin(), m_stepNumbers.end(), number);
-    return found != m_stepNumbers.end() && *found == number ? static_cast<int>(found - m_stepNumbers.begin()) : -1;
+    return stepIndexIn(m_shape->stepNumbers, number);
 }
 
 bool NestedEngine::active(int stepNumber) const
@@ -112,7 +135,7 @@ bool NestedEngine::emitting(int stepNumber, int actionIndex) const
     const std::vector<NestedAction>& continuous = m_grafcet->steps[static_cast<std::size_t>(index)].continuous;
     for (std::size_t i = 0; i < continuous.size(); ++i) {
         if (continuous[i].index == actionIndex)
-            return m_emitting[m_continuousStart[static_cast<std::size_t>(index)] + i] != 0;
+            return m_emitting[m_shape->continuousStart[static_cast<std::size_t>(index)] + i] != 0;
     }
     return false;
 }
@@ -122,7 +145,7 @@ std::vector<int> NestedEngine::activeSteps() const
     std::vector<int> numbers;
     for (std::size_t i = 0; i < m_x.size(); ++i) {
         if (m_x[i])
-            numbers.push_back(m_stepNumbers[i]);
+            numbers.push_back(m_shape->stepNumbers[i]);
     }
     return numbers;
 }
@@ -317,13 +340,13 @@ void NestedEngine::runStored(const std::vector<NestedAction>& actions, NestedGlo
         }
         const int s = slot(action.target);
         if (s >= 0)
-            globals.write(s, storedValue(value, m_targetTypes(s)));
+            globals.write(s, storedValue(value, m_shape->targetTypes(s)));
     }
 }
 
 bool NestedEngine::enabled(std::size_t transition) const
 {
-    const std::vector<std::size_t>& upstream = m_topology->upstream[transition];
+    const std::vector<std::size_t>& upstream = m_shape->upstream[transition];
     return std::all_of(upstream.begin(), upstream.end(), [&](std::size_t step) { return m_x[step] != 0; });
 }
 
@@ -331,8 +354,8 @@ bool NestedEngine::enabled(std::size_t transition) const
 void NestedEngine::findEnabled()
 {
     m_enabled.clear();
-    for (std::size_t t = 0; t < m_topology->usable.size(); ++t) {
-        if (m_topology->usable[t] && enabled(t))
+    for (std::size_t t = 0; t < m_shape->usable.size(); ++t) {
+        if (m_shape->usable[t] && enabled(t))
             m_enabled.push_back(t);
     }
 }
@@ -344,7 +367,7 @@ void NestedEngine::updateEnabled(const std::vector<std::size_t>& entered)
 {
     std::vector<std::size_t> candidates = std::move(m_enabled);
     for (std::size_t step : entered)
-        candidates.insert(candidates.end(), m_topology->following[step].begin(), m_topology->following[step].end());
+        candidates.insert(candidates.end(), m_shape->following[step].begin(), m_shape->following[step].end());
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     std::erase_if(candidates, [this](std::size_t t) { return !enabled(t); });
@@ -368,9 +391,9 @@ bool NestedEngine::evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals
     std::vector<std::pair<std::size_t, char>> touched; // step, what the firing does to it
     for (std::size_t t : firing) {
         m_fired.push_back(transitions[t].number);
-        for (std::size_t step : m_topology->upstream[t])
+        for (std::size_t step : m_shape->upstream[t])
             touched.emplace_back(step, kDeactivated);
-        for (std::size_t step : m_topology->downstream[t])
+        for (std::size_t step : m_shape->downstream[t])
             touched.emplace_back(step, kActivated);
     }
     // Steps in number order, as the actions run (steps are kept by number).
@@ -417,13 +440,13 @@ void NestedEngine::computeOutputs(const NestedGlobals& globals)
                 const cond::Expression& condition = m_grafcet->steps[index].continuous[action].parsed.action.condition;
                 on = condition.empty() || cond::isTrue(evaluate(condition, nullptr, globals, false));
             }
-            m_emitting[m_continuousStart[index] + action] = on;
+            m_emitting[m_shape->continuousStart[index] + action] = on;
             value = value || on;
         }
-        if (m_outputOf[o] < 0)
+        if (m_shape->outputOf[o] < 0)
             complete = value;
         else
-            values[static_cast<std::size_t>(m_outputOf[o])] = value;
+            values[static_cast<std::size_t>(m_shape->outputOf[o])] = value;
     }
     m_outputs = std::move(values);
     m_complete = complete;
@@ -452,8 +475,8 @@ void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& 
         do {
             fired = evolve(evolutions == 0, nowMs, globals);
             ++evolutions;
-        } while (m_untilStable && fired && evolutions < m_grafcet->maxEvolutions);
-        if (m_untilStable) {
+        } while (m_shape->untilStable && fired && evolutions < m_grafcet->maxEvolutions);
+        if (m_shape->untilStable) {
             m_unstable = fired;
             // Each evolution added its own in number order; a transition may fire in several.
             std::sort(m_fired.begin(), m_fired.end());
@@ -461,216 +484,6 @@ void NestedEngine::call(bool initialization, std::int64_t nowMs, NestedGlobals& 
         }
     }
     computeOutputs(globals);
-}
-
-// --- Explaining the next call ---------------------------------------------------
-
-std::string_view nestedTransitionStatusName(NestedTransitionStatus status)
-{
-    switch (status) {
-    case NestedTransitionStatus::Fires: return "fires";
-    case NestedTransitionStatus::UpstreamInactive: return "upstream step not active";
-    case NestedTransitionStatus::ReceptivityFalse: return "receptivity false";
-    case NestedTransitionStatus::Unusable: return "unusable receptivity";
-    case NestedTransitionStatus::NotCalled: return "not called";
-    }
-    return "";
-}
-
-std::string NestedEngine::declaredName(const std::string& written) const
-{
-    for (const std::string& name : m_grafcet->readVariables) {
-        if (equalsIgnoreCase(name, written))
-            return name;
-    }
-    for (const std::string& name : m_outputNames) {
-        if (equalsIgnoreCase(name, written))
-            return name;
-    }
-    return written;
-}
-
-// Why the subtree at `node` has the value it has, as Simulator::explain()
-// words a GEMMA condition: logical operators descend to the operands that
-// decide (visitDecidingOperands), an edge or a time-dependent receptivity
-// says what it compared, everything else gives its text, its value and the
-// variables it reads.
-void NestedEngine::explainNode(const cond::Expression& expression, int node, const std::map<int, int>& timers,
-                               const NestedGlobals& globals, std::vector<ExplanationReason>& reasons) const
-{
-    const auto isTrueAt = [&](int at) {
-        cond::Expression sub = expression;
-        sub.root = at;
-        return cond::isTrue(evaluate(sub, &timers, globals, true));
-    };
-    visitDecidingOperands(expression, node, isTrueAt,
-                          [&](int leaf) { explainLeaf(expression, leaf, timers, globals, reasons); });
-}
-
-void NestedEngine::explainLeaf(const cond::Expression& expression, int node, const std::map<int, int>& timers,
-                               const NestedGlobals& globals, std::vector<ExplanationReason>& reasons) const
-{
-    const cond::Node& n = expression.at(node);
-    auto valueAt = [&](int at) {
-        cond::Expression sub = expression;
-        sub.root = at;
-        return evaluate(sub, &timers, globals, true);
-    };
-    ExplanationReason reason;
-    switch (n.kind) {
-    case cond::NodeKind::Variable:
-    case cond::NodeKind::StepActivity:
-    case cond::NodeKind::Complete: {
-        ConditionReading reading;
-        reading.name = n.kind == cond::NodeKind::Variable  ? declaredName(n.text)
-            : n.kind == cond::NodeKind::StepActivity ? stepActivityName(n.number)
-                                                     : std::string("Complete");
-        reading.value = cond::formatValue(atom(expression, node, &timers, globals, true));
-        reason.kind = ExplanationReason::Kind::Reading;
-        reason.readings.push_back(std::move(reading));
-        reasons.push_back(std::move(reason));
-        return;
-    }
-    case cond::NodeKind::BoolLiteral:
-        reason.kind = ExplanationReason::Kind::Literal;
-        reason.value = toUpperAscii(n.text);
-        reasons.push_back(std::move(reason));
-        return;
-    case cond::NodeKind::StepDuration: {
-        const bool value = cond::isTrue(atom(expression, node, &timers, globals, true));
-        if (!value && !active(n.number)) { // the step is not active: its X reads FALSE
-            reason.kind = ExplanationReason::Kind::Reading;
-            reason.readings.push_back({stepActivityName(n.number), "FALSE", {}});
-        } else if (!value && timers.count(node)) {
-            const auto timer = static_cast<std::size_t>(timers.at(node));
-            reason.kind = ExplanationReason::Kind::TimerNotElapsed;
-            reason.subject = n.text; // as written: "5s/X2"
-            reason.steps = {n.number};
-            reason.elapsedMs = m_timers[timer].elapsed;
-            reason.durationMs = m_grafcet->timers[timer].durationMs;
-        } else {
-            reason.kind = ExplanationReason::Kind::Expression;
-            reason.subject = n.text;
-            reason.value = cond::formatValue(value);
-        }
-        reasons.push_back(std::move(reason));
-        return;
-    }
-    case cond::NodeKind::Unary: {
-        if (n.unaryOp == cond::UnaryOp::RisingEdge || n.unaryOp == cond::UnaryOp::FallingEdge) {
-            const cond::Node& operand = expression.at(n.operand);
-            const int s = slot(operand.text);
-            const bool value = cond::isTrue(atom(expression, node, &timers, globals, true));
-            const std::string name = declaredName(operand.text);
-            // What the edge compares, as atom() reads it: an own continuous output is the VAR_OUTPUT.
-            const int own = ownOutput(operand.text);
-            const std::string now = own >= 0 ? cond::formatValue(cond::Value{m_outputs[std::size_t(own)] != 0})
-                                  : s >= 0   ? cond::formatValue(globals.read(s))
-                                             : std::string("FALSE");
-            if (!value) {
-                reason.kind = n.unaryOp == cond::UnaryOp::RisingEdge ? ExplanationReason::Kind::NoRisingEdge
-                                                                     : ExplanationReason::Kind::NoFallingEdge;
-                reason.subject = name;
-                reason.value = now;
-                reason.previous = cond::formatValue(s >= 0 && globals.previous(s));
-            } else {
-                reason.kind = ExplanationReason::Kind::Expression;
-                reason.subject = std::string(n.unaryOp == cond::UnaryOp::RisingEdge ? "RE " : "FE ") + name;
-                reason.value = "TRUE";
-                reason.readings.push_back({name, now, {}});
-            }
-            reasons.push_back(std::move(reason));
-            return;
-        }
-        break;
-    }
-    default: break;
-    }
-    // A comparison (or anything else): "Depth >= 12 is FALSE (Depth = 3)".
-    cond::Expression sub = expression;
-    sub.root = node;
-    cond::PrintOptions options;
-    options.variableName = [this](const cond::Node& variable) { return declaredName(variable.text); };
-    reason.kind = ExplanationReason::Kind::Expression;
-    reason.subject = cond::print(sub, options);
-    reason.value = cond::formatValue(valueAt(node));
-    for (int v : cond::variableNodes(sub)) {
-        ConditionReading operand{declaredName(sub.at(v).text),
-                                 cond::formatValue(atom(sub, v, &timers, globals, true)), {}};
-        if (std::find(reason.readings.begin(), reason.readings.end(), operand) == reason.readings.end())
-            reason.readings.push_back(std::move(operand));
-    }
-    reasons.push_back(std::move(reason));
-}
-
-namespace {
-
-// The transition's identity in an explanation; status and reasons to come.
-NestedTransitionExplanation explanationOf(const NestedTransition& transition)
-{
-    NestedTransitionExplanation explanation;
-    explanation.number = transition.number;
-    explanation.upstream = transition.upstream;
-    explanation.downstream = transition.downstream;
-    explanation.receptivity = transition.text;
-    return explanation;
-}
-
-} // namespace
-
-std::vector<NestedTransitionExplanation> NestedEngine::explainNotCalled(const std::string& stepId) const
-{
-    ExplanationReason notCalled;
-    notCalled.kind = ExplanationReason::Kind::NotCalled;
-    notCalled.subject = stepId;
-    std::vector<NestedTransitionExplanation> result;
-    for (const NestedTransition& transition : m_grafcet->transitions) {
-        NestedTransitionExplanation explanation = explanationOf(transition);
-        explanation.status = NestedTransitionStatus::NotCalled;
-        explanation.reasons.push_back(notCalled);
-        result.push_back(std::move(explanation));
-    }
-    return result;
-}
-
-std::vector<NestedTransitionExplanation> NestedEngine::explainNextCall(bool initialization, std::int64_t nowMs,
-                                                                       NestedGlobals& globals,
-                                                                       std::vector<int>* situation) const
-{
-    // The call as call() runs it, up to the first evolution's evaluation.
-    NestedEngine next(*this);
-    if (initialization)
-        next.call(true, nowMs, globals);
-    for (std::size_t t = 0; t < next.m_timers.size(); ++t)
-        next.runTon(t, next.active(m_grafcet->timers[t].step), nowMs);
-    if (situation)
-        *situation = next.activeSteps();
-
-    std::vector<NestedTransitionExplanation> result;
-    for (const NestedTransition& transition : m_grafcet->transitions) {
-        NestedTransitionExplanation explanation = explanationOf(transition);
-        ExplanationReason inactive;
-        inactive.kind = ExplanationReason::Kind::StepsInactive;
-        for (int step : transition.upstream) {
-            if (!next.active(step))
-                inactive.steps.push_back(step);
-        }
-        if (!transition.usable) {
-            explanation.status = NestedTransitionStatus::Unusable;
-        } else if (!inactive.steps.empty()) {
-            explanation.status = NestedTransitionStatus::UpstreamInactive;
-            explanation.reasons.push_back(std::move(inactive));
-        } else if (cond::isTrue(next.evaluate(transition.receptivity.expression, &transition.timerOfNode, globals, true))) {
-            explanation.status = NestedTransitionStatus::Fires;
-        } else {
-            explanation.status = NestedTransitionStatus::ReceptivityFalse;
-            if (!transition.receptivity.expression.empty())
-                next.explainNode(transition.receptivity.expression, transition.receptivity.expression.root,
-                                 transition.timerOfNode, globals, explanation.reasons);
-        }
-        result.push_back(std::move(explanation));
-    }
-    return result;
 }
 
 } // namespace core

@@ -105,8 +105,8 @@ public:
     bool active(int stepNumber) const;
     std::vector<int> activeSteps() const; // in number order
     // The continuous outputs (Complete excluded), in NestedGrafcet::outputs order.
-    const std::vector<std::string>& outputNames() const { return m_outputNames; }
-    const std::vector<int>& outputSlots() const { return m_outputSlots; }
+    const std::vector<std::string>& outputNames() const { return m_shape->outputNames; }
+    const std::vector<int>& outputSlots() const { return m_shape->outputSlots; }
     bool output(std::size_t index) const { return m_outputs[index] != 0; }
     // Whether the continuous action `actionIndex` (its index in the step's
     // list of actions, NestedAction::index) of step `stepNumber` emitted its
@@ -166,7 +166,7 @@ private:
     void explainLeaf(const cond::Expression& expression, int node, const std::map<int, int>& timers,
                      const NestedGlobals& globals, std::vector<ExplanationReason>& reasons) const;
     std::string declaredName(const std::string& written) const;
-    int ownOutput(std::string_view name) const; // index into m_outputNames, -1 when not one
+    int ownOutput(std::string_view name) const; // index into Shape::outputNames, -1 when not one
     void runTon(std::size_t timer, bool in, std::int64_t nowMs);
     bool timerDone(std::size_t timer) const;
     bool evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals& globals);
@@ -177,38 +177,45 @@ private:
     void computeOutputs(const NestedGlobals& globals);
     int slot(std::string_view name) const;
 
-    const NestedGrafcet* m_grafcet;
-    std::function<int(std::string_view)> m_slotOf;
-    std::function<IecType(int)> m_targetTypes;
-    bool m_untilStable = false;
-    std::vector<int> m_stepNumbers;       // by index
-    std::vector<char> m_x;                // by step index
-    // Mutable: under a TimerOracle, reading a Q decides it (timerDone()).
-    mutable std::vector<Timer> m_timers;
-    TimerOracle* m_timerOracle = nullptr;
-    std::vector<std::string> m_outputNames;
-    std::vector<int> m_outputSlots;
-    std::vector<int> m_outputOf;          // NestedGrafcet::outputs index -> m_outputs index, -1 for Complete
-    std::vector<char> m_outputs;
-    bool m_complete = false;
-    bool m_unstable = false;
-    mutable std::optional<SimulationFault> m_divisionFault; // see divisionFault()
-    std::vector<int> m_fired;             // transition numbers, see firedTransitions()
-    // By continuous action: m_emitting[m_continuousStart[step index] + i] for
-    // NestedStep::continuous[i].
-    std::vector<std::size_t> m_continuousStart;
-    std::vector<char> m_emitting;
-    // The transitions by index, so that an evolution looks only at the
-    // transitions it can fire (a search for stability makes up to
-    // transitions + 1 evolutions per call). Shared by copies: a simulator's
-    // history keeps one per scan.
-    struct Topology {
+    // What a call never changes: built once by the constructor and shared by
+    // copies, so that copying an engine copies only its state (a simulator's
+    // history keeps one per scan; the search of the simulator's runs copies
+    // one per successor).
+    struct Shape {
+        std::function<int(std::string_view)> slotOf;
+        std::function<IecType(int)> targetTypes;
+        bool untilStable = false;
+        std::vector<int> stepNumbers;         // by index
+        std::vector<std::string> outputNames;
+        std::vector<int> outputSlots;
+        std::vector<int> outputOf;            // NestedGrafcet::outputs index -> m_outputs index, -1 for Complete
+        // By continuous action: m_emitting[continuousStart[step index] + i]
+        // for NestedStep::continuous[i].
+        std::vector<std::size_t> continuousStart;
+        // The transitions by index, so that an evolution looks only at the
+        // transitions it can fire (a search for stability makes up to
+        // transitions + 1 evolutions per call).
         std::vector<std::vector<std::size_t>> upstream;   // by transition: step indices
         std::vector<std::vector<std::size_t>> downstream; // by transition: step indices
         std::vector<std::vector<std::size_t>> following;  // by step: the usable transitions it is upstream of
         std::vector<char> usable; // by transition: usable, and every step it names exists
     };
-    std::shared_ptr<const Topology> m_topology;
+    static std::shared_ptr<const Shape> makeShape(const NestedGrafcet& grafcet,
+                                                  const std::function<int(std::string_view)>& slotOf,
+                                                  const std::function<IecType(int)>& typeOf);
+
+    const NestedGrafcet* m_grafcet;
+    std::shared_ptr<const Shape> m_shape;
+    std::vector<char> m_x;                // by step index
+    // Mutable: under a TimerOracle, reading a Q decides it (timerDone()).
+    mutable std::vector<Timer> m_timers;
+    TimerOracle* m_timerOracle = nullptr;
+    std::vector<char> m_outputs;
+    bool m_complete = false;
+    bool m_unstable = false;
+    mutable std::optional<SimulationFault> m_divisionFault; // see divisionFault()
+    std::vector<int> m_fired;             // transition numbers, see firedTransitions()
+    std::vector<char> m_emitting;         // by continuous action, see Shape::continuousStart
     // During an evolving call: the usable transitions whose upstream steps
     // are all active, ascending (firing order does not matter: all fire
     // together; the lists keep the number order of the old full pass).

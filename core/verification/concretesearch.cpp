@@ -12,6 +12,7 @@
 
 #include <cctype>
 #include <cstdint>
+#include <cstring>
 #include <deque>
 #include <set>
 #include <sstream>
@@ -105,8 +106,32 @@ std::string upperName(std::string text)
     return text;
 }
 
+// Appends `value` so that keys compare as the values do: a kind byte, then
+// a BOOL's byte, an integer in LEB128 after zigzag (one or two bytes for the
+// counters and set points of a machine) or a REAL's eight bytes.
+void appendValue(std::string& key, const cond::Value& value)
+{
+    key += static_cast<char>('0' + value.index());
+    if (const bool* flag = std::get_if<bool>(&value)) {
+        key += *flag ? '1' : '0';
+    } else if (const std::int64_t* integer = std::get_if<std::int64_t>(&value)) {
+        std::uint64_t rest = (static_cast<std::uint64_t>(*integer) << 1) ^ static_cast<std::uint64_t>(*integer >> 63);
+        do {
+            const auto low = static_cast<unsigned char>(rest & 0x7f);
+            rest >>= 7;
+            key += static_cast<char>(rest != 0 ? low | 0x80 : low);
+        } while (rest != 0);
+    } else {
+        char bytes[sizeof(double)];
+        std::memcpy(bytes, &std::get<double>(value), sizeof bytes);
+        key.append(bytes, sizeof bytes);
+    }
+}
+
 // What decides the simulator's future: everything but the scan count and the
-// inputs in `overwritten`, which every scan that reads them sets first.
+// inputs in `overwritten`, which every scan that reads them sets first. A
+// byte string for the set of states seen, built in one buffer: the search
+// makes one per successor.
 std::string stateKey(const Simulator& simulator, const std::vector<bool>& overwritten)
 {
     std::string key = std::to_string(simulator.activeStepNumber()) + (simulator.entry() ? "E" : "-");
@@ -132,8 +157,11 @@ std::string stateKey(const Simulator& simulator, const std::vector<bool>& overwr
         for (int fired : simulator.firedNestedTransitions(step))
             key += 'f' + std::to_string(fired);
     }
-    for (std::size_t i = 0; i < simulator.variableNames().size(); ++i)
-        key += overwritten[i] ? std::string("|") : '|' + valueText(simulator.variableValue(i));
+    key += '|';
+    for (std::size_t i = 0; i < overwritten.size(); ++i) {
+        if (!overwritten[i])
+            appendValue(key, simulator.variableValue(i));
+    }
     return key;
 }
 
@@ -172,6 +200,7 @@ public:
             if (m_start.variableKind(i) != VariableKind::Input)
                 continue;
             m_inputs.push_back(i);
+            m_inputUpperNames.push_back(upperName(m_start.variableNames()[i]));
             m_values.push_back(inputValues(m_start, i, constants));
             m_overwritten[i] = edges.count(upperName(m_start.variableNames()[i])) == 0;
         }
@@ -192,6 +221,7 @@ private:
     Simulator m_start;
     std::set<std::string> m_freeSteps;
     std::vector<std::size_t> m_inputs;             // variable indices of the inputs
+    std::vector<std::string> m_inputUpperNames;    // per input, as scanReads names it
     std::vector<std::vector<cond::Value>> m_values; // per input, the values tried
     std::vector<bool> m_overwritten;                // per variable: an input not read under an edge
     std::vector<SearchNode> m_nodes;
@@ -203,7 +233,7 @@ std::vector<std::size_t> ConcreteSearch::readInputs(const Simulator& state) cons
     const std::set<std::string> reads = scanReads(state, m_property.expression);
     std::vector<std::size_t> out;
     for (std::size_t i = 0; i < m_inputs.size(); ++i) {
-        if (reads.count(upperName(state.variableNames()[m_inputs[i]])))
+        if (reads.count(m_inputUpperNames[i]))
             out.push_back(i);
     }
     return out;
