@@ -380,6 +380,7 @@ bool NestedEngine::evolve(bool firstEvolution, std::int64_t nowMs, NestedGlobals
 {
     const auto& transitions = m_grafcet->transitions;
     std::vector<std::size_t> firing;
+    m_receptivityEvaluations += m_enabled.size();
     for (std::size_t t : m_enabled) {
         const NestedTransition& transition = transitions[t];
         if (cond::isTrue(evaluate(transition.receptivity.expression, &transition.timerOfNode, globals, firstEvolution)))

@@ -118,6 +118,9 @@ public:
     // *until stable* every one that fired in any of its evolutions. Empty
     // after reset() and after an Initialization call (nothing evolves).
     const std::vector<int>& firedTransitions() const { return m_fired; }
+    // Receptivities evaluated by the calls since the engine was built (reset()
+    // keeps the count): the work its evolutions did, which tests bound.
+    std::uint64_t receptivityEvaluations() const { return m_receptivityEvaluations; }
     std::vector<NestedTimerState> timers() const;
     const NestedGrafcet& grafcet() const { return *m_grafcet; }
 
@@ -215,6 +218,7 @@ private:
     bool m_unstable = false;
     mutable std::optional<SimulationFault> m_divisionFault; // see divisionFault()
     std::vector<int> m_fired;             // transition numbers, see firedTransitions()
+    std::uint64_t m_receptivityEvaluations = 0;
     std::vector<char> m_emitting;         // by continuous action, see Shape::continuousStart
     // During an evolving call: the usable transitions whose upstream steps
     // are all active, ascending (firing order does not matter: all fire

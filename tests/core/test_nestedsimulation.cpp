@@ -2,13 +2,13 @@
 
 #include "core/formats/modelfiles.h"
 #include "core/model/model.h"
+#include "core/simulation/nestedengine.h"
 #include "core/simulation/scenario.h"
 #include "core/simulation/simulator.h"
 #include "modelfactory.h"
 #include "samplemodels.h"
 
 #include <catch2/catch.hpp>
-#include <chrono>
 
 #include <map>
 #include <optional>
@@ -182,17 +182,18 @@ TEST_CASE("Until stable: a scan of a 10,000-step unstable GRAFCET evaluates only
           "[simulation][nested-simulation][performance]")
 {
     Simulator simulator(factory::unstableGrafcetModel(10000));
-    const auto start = std::chrono::steady_clock::now();
     simulator.step();
     simulator.step();
-    const auto elapsed = std::chrono::steady_clock::now() - start;
     // 10,001 evolutions per scan, one step each: the token goes round once and one step on.
     CHECK(simulator.activeNestedSteps("F1") == std::vector<int>{3});
     CHECK(simulator.unstable("F1"));
     CHECK(simulator.firedNestedTransitions("F1").size() == 10000);
-    // Milliseconds now; a bound for a loaded machine under the sanitizers
-    // that the old cost (seconds per scan) cannot meet.
-    CHECK(std::chrono::duration_cast<std::chrono::milliseconds>(elapsed).count() < 4000);
+    // One enabled transition per evolution: 2 x 10,001 receptivities in the
+    // two scans, where evaluating every transition at every evolution took
+    // 200 million. Counted, not timed (the time is a benchmark's figure).
+    const NestedEngine* engine = simulator.grafcetEngine("F1");
+    REQUIRE(engine);
+    CHECK(engine->receptivityEvaluations() == 2 * 10'001);
 }
 
 TEST_CASE("Scenarios set inputs only and expect nested steps and Unstable", "[simulation][nested-simulation][scenario]")
