@@ -353,6 +353,12 @@ TEST_CASE("Both layers: GV103 and GV104 stay the GEMMA layer's when the budget r
 
 TEST_CASE("Both layers: the exploration contains every run of the simulator on random models", "[bothlayers]")
 {
+    // The seeds of 1-30 whose model the exploration decides within its
+    // budget. The others ran to the budget and were skipped; every model is
+    // still drawn, so that the random sequence and the listed models stay the
+    // same, and a listed model no longer decided fails the test instead of
+    // dropping out of it.
+    const std::set<std::uint32_t> decided = {4, 6, 8, 16, 23, 24, 25, 28, 29};
     std::mt19937 random(20261203);
     int explored = 0;
     for (std::uint32_t seed = 1; seed <= 30; ++seed) {
@@ -361,17 +367,18 @@ TEST_CASE("Both layers: the exploration contains every run of the simulator on r
             continue;
         if (seed % 2 == 0)
             model.setEvolutionRule(EvolutionRule::UntilStable);
+        if (decided.count(seed) == 0)
+            continue;
         explore::Options options;
         options.maxScansRun = 100'000; // the small ones: a budget of work, the same on every machine
         explore::ProgramExplorer explorer(model, options);
         const explore::Exploration& e = explorer.run();
-        if (!e.exhaustive)
-            continue;
+        INFO("seed " << seed);
+        REQUIRE(e.exhaustive);
         ++explored;
         Simulator simulator(model);
         for (const std::string& id : simulator.nestedSteps())
             simulator.setCompleteMode(id, CompleteMode::Manual);
-        INFO("seed " << seed);
         for (int scan = 0; scan < 300; ++scan) {
             for (std::size_t v = 0; v < simulator.variableNames().size(); ++v) {
                 if (simulator.variableKind(v) != VariableKind::Input)
@@ -402,7 +409,7 @@ TEST_CASE("Both layers: the exploration contains every run of the simulator on r
                 CHECK(std::binary_search(fired.begin(), fired.end(), transition));
         }
     }
-    CHECK(explored >= 8);
+    CHECK(explored == static_cast<int>(decided.size()));
 }
 
 TEST_CASE("Both layers: the shipped example", "[bothlayers]")

@@ -398,9 +398,15 @@ TEST_CASE("SPIN agrees with the closed-loop exploration under single faults", "[
 TEST_CASE("SPIN agrees with the exploration of both layers on random models", "[spin][bothlayers]")
 {
     REQUIRE(spin::available());
+    // The seeds of 1-40 whose model the exploration decides within its
+    // budget. The others ran to the budget and were skipped, a tenth of the
+    // test's time under the sanitizers; every model is still drawn, so that
+    // the random sequence and the listed models stay the same, and a listed
+    // model no longer decided fails the test instead of dropping out of it.
+    const std::set<std::uint32_t> decided = {4, 5, 8, 10, 21, 25, 29, 33, 36};
     std::mt19937 random(20261204);
     int compared = 0;
-    for (std::uint32_t seed = 1; seed <= 40 && compared < 10; ++seed) {
+    for (std::uint32_t seed = 1; seed <= 40; ++seed) {
         Model model = samples::randomModel(seed);
         if (samples::addValidRandomNestedGrafcets(model, random) == 0)
             continue;
@@ -415,17 +421,19 @@ TEST_CASE("SPIN agrees with the exploration of both layers on random models", "[
                                      + " AND NestedOut0");
         }
         properties.push_back("always in " + program.steps[random() % program.steps.size()].id + " -> NOT NestedMem0");
+        if (decided.count(seed) == 0)
+            continue;
+        INFO("seed " << seed);
         explore::Options options;
         options.properties = properties;
         options.maxScansRun = 50'000; // the small ones: the same on every machine
         explore::ProgramExplorer explorer(model, options);
         const explore::Exploration& exploration = explorer.run();
-        if (!exploration.exhaustive)
-            continue;
+        REQUIRE(exploration.exhaustive);
         ++compared;
         requireAgreement(exploration, model, properties, false, "random-" + std::to_string(seed));
     }
-    CHECK(compared >= 8);
+    CHECK(compared == static_cast<int>(decided.size()));
 }
 
 TEST_CASE("SPIN agrees with the exploration of both layers on the benchmark's stress model", "[spin][bothlayers]")

@@ -14,6 +14,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <random>
 #include <set>
 #include <string>
@@ -87,15 +88,23 @@ TEST_CASE("Verification: a run behind a TON replays under the timer abstraction,
 TEST_CASE("Verification: the search counted in scans finds every event the whole exploration finds",
           "[verification]")
 {
+    // The six of the first twenty random timed models that the whole
+    // exploration decides within its budget. The fourteen others ran to the
+    // budget and were skipped, two thirds of the test's time under the
+    // sanitizers; a listed model no longer decided fails the test instead of
+    // dropping out of it.
+    constexpr std::array<std::size_t, 6> kDecided = {3, 4, 6, 7, 9, 19};
+    const std::vector<Model> models = randomTimedModels(20, 20261207);
     int searched = 0;
-    for (const Model& model : randomTimedModels(20, 20261207)) {
+    for (const std::size_t index : kDecided) {
+        INFO("random timed model " << index);
+        const Model& model = models.at(index);
         explore::Options whole;
         whole.exactTime = true;
         whole.maxScansRun = 200'000; // the same budget on every machine
         explore::ProgramExplorer all(model, whole);
         const explore::Exploration& everything = all.run();
-        if (!everything.exhaustive)
-            continue;
+        REQUIRE(everything.exhaustive);
         // What a search can find: the events of scans, not the graph's properties.
         std::set<std::string> wanted;
         for (const explore::Event& event : everything.events) {

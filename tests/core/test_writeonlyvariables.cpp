@@ -144,9 +144,16 @@ TEST_CASE("Random models: hiding what nothing reads changes no event, only the s
     // mostly read them; three models in four also get a BOOL nothing reads
     // (addWriteOnlyTrail), every other one a property that reads NestedMem0,
     // so that both sides are drawn.
+    // The twelve seeds of 1-84 whose model the exploration keeping every
+    // variable decides within its budget. The 72 others ran to the budget
+    // and were skipped, most of the test's time under the sanitizers; every
+    // model is still drawn, so that the random sequence and the listed models
+    // stay the same, and a listed model no longer decided fails the test
+    // instead of dropping out of it.
+    const std::set<std::uint32_t> decided = {10, 17, 25, 29, 31, 34, 40, 44, 50, 71, 83, 84};
     std::mt19937 random(20261207);
     int compared = 0, reduced = 0;
-    for (std::uint32_t seed = 1; compared < 12 && seed < 400; ++seed) {
+    for (std::uint32_t seed = 1; seed <= 84; ++seed) {
         Model model = samples::randomModel(seed);
         if (samples::addValidRandomNestedGrafcets(model, random) == 0)
             continue;
@@ -154,6 +161,9 @@ TEST_CASE("Random models: hiding what nothing reads changes no event, only the s
             model.setEvolutionRule(EvolutionRule::UntilStable);
         if (seed % 4 != 1)
             addWriteOnlyTrail(model, random);
+        if (decided.count(seed) == 0)
+            continue;
+        INFO("seed " << seed);
         explore::Options options;
         options.maxScansRun = 30'000; // the same budget on every machine
         if (seed % 2 == 0)
@@ -161,12 +171,10 @@ TEST_CASE("Random models: hiding what nothing reads changes no event, only the s
         options.hideWriteOnlyVariables = false;
         explore::ProgramExplorer keep(model, options);
         const explore::Exploration& kept = keep.run();
-        if (!kept.exhaustive)
-            continue;
+        REQUIRE(kept.exhaustive);
         options.hideWriteOnlyVariables = true;
         explore::ProgramExplorer hide(model, options);
         const explore::Exploration& hidden = hide.run();
-        INFO("seed " << seed);
         ++compared;
         REQUIRE(hidden.exhaustive);
         const bool priorities = hidden.prioritiesDecided && kept.prioritiesDecided;
