@@ -5,18 +5,11 @@
 
 #include "core/machine/machinestate.h"
 
+#include "core/formats/varint.h"
+
 namespace core::machine {
 
 namespace {
-
-void appendVarint(std::string& out, std::uint64_t value)
-{
-    while (value >= 0x80) {
-        out.push_back(static_cast<char>((value & 0x7F) | 0x80));
-        value >>= 7;
-    }
-    out.push_back(static_cast<char>(value));
-}
 
 // Reads one varint at `at`, advancing it; false at a truncated or overlong one.
 bool readVarint(std::string_view in, std::size_t& at, std::uint64_t& value)

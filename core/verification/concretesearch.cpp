@@ -2,6 +2,7 @@
 
 #include "core/condition/conditionevaluator.h"
 #include "core/condition/conditionparser.h"
+#include "core/formats/varint.h"
 #include "core/model/iectypes.h"
 #include "core/model/model.h"
 #include "core/simulation/scenario.h"
@@ -115,12 +116,7 @@ void appendValue(std::string& key, const cond::Value& value)
     if (const bool* flag = std::get_if<bool>(&value)) {
         key += *flag ? '1' : '0';
     } else if (const std::int64_t* integer = std::get_if<std::int64_t>(&value)) {
-        std::uint64_t rest = (static_cast<std::uint64_t>(*integer) << 1) ^ static_cast<std::uint64_t>(*integer >> 63);
-        do {
-            const auto low = static_cast<unsigned char>(rest & 0x7f);
-            rest >>= 7;
-            key += static_cast<char>(rest != 0 ? low | 0x80 : low);
-        } while (rest != 0);
+        appendVarint(key, zigzag(*integer));
     } else {
         char bytes[sizeof(double)];
         std::memcpy(bytes, &std::get<double>(value), sizeof bytes);
