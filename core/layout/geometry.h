@@ -31,6 +31,8 @@ struct Rect {
     bool contains(const Rect& other) const;
     // Grown by margin on every side (shrunk when margin is negative).
     Rect adjusted(double margin) const;
+
+    friend bool operator==(const Rect&, const Rect&) = default;
 };
 
 } // namespace core

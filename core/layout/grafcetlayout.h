@@ -35,6 +35,8 @@ struct GrafcetActionLayout {
     Rect textCell;
     std::string condition;  // of a conditional action (after IF); empty otherwise
     Rect conditionRect;     // under the text cell; empty (zero size) when there is no condition
+
+    friend bool operator==(const GrafcetActionLayout&, const GrafcetActionLayout&) = default;
 };
 
 struct GrafcetStepLayout {
@@ -46,6 +48,8 @@ struct GrafcetStepLayout {
     // left to right, touching, vertically centred on the step.
     std::vector<Point> actionLink;
     std::vector<GrafcetActionLayout> actions;
+
+    friend bool operator==(const GrafcetStepLayout&, const GrafcetStepLayout&) = default;
 };
 
 struct GrafcetTransitionLayout {
@@ -57,6 +61,8 @@ struct GrafcetTransitionLayout {
     // column of its own, reached from reference labels naming its upstream
     // steps (fromReference links).
     bool detached = false;
+
+    friend bool operator==(const GrafcetTransitionLayout&, const GrafcetTransitionLayout&) = default;
 };
 
 // One link between a step and a transition, as an orthogonal polyline.
@@ -82,6 +88,8 @@ struct GrafcetLinkLayout {
     Rect labelRect;          // Jump: where the target's number is written
     bool fromReference = false;
     Rect referenceRect;      // fromReference: where the upstream step's number is written
+
+    friend bool operator==(const GrafcetLinkLayout&, const GrafcetLinkLayout&) = default;
 };
 
 // A horizontal line of a divergence or convergence. Selection lines are
@@ -100,6 +108,8 @@ struct GrafcetBranchLineLayout {
     int step = 0;
     int transition = 0;
     std::vector<int> branches;
+
+    friend bool operator==(const GrafcetBranchLineLayout&, const GrafcetBranchLineLayout&) = default;
 };
 
 struct GrafcetLayout {

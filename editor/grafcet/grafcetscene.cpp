@@ -57,12 +57,53 @@ double GrafcetScene::textWidth(std::string_view text)
 
 void GrafcetScene::rebuild()
 {
+    const core::Grafcet* grafcet = m_document->model().grafcet(m_stepId.toStdString());
+    core::GrafcetLayout layout = grafcet ? core::layoutGrafcet(*grafcet, &GrafcetScene::textWidth) : core::GrafcetLayout{};
     m_rebuilding = true;
+    if (!grafcet || !relabel(*grafcet, layout))
+        makeItems(grafcet, std::move(layout));
+    m_rebuilding = false;
+    emit rebuilt();
+}
+
+// Typing in a receptivity changes only its label, and at most the drawing's
+// width: the items stay (with their selection), the others are not drawn
+// again, and the view keeps its scroll range, which a whole new set of
+// items would cost at every keystroke.
+bool GrafcetScene::relabel(const core::Grafcet& grafcet, core::GrafcetLayout& layout)
+{
+    if (!m_wiring || layout.steps != m_layout.steps || layout.links != m_layout.links || layout.lines != m_layout.lines
+        || layout.transitions.size() != m_layout.transitions.size())
+        return false;
+    for (std::size_t i = 0; i < layout.transitions.size(); ++i) {
+        const core::GrafcetTransitionLayout& now = layout.transitions[i];
+        const core::GrafcetTransitionLayout& before = m_layout.transitions[i];
+        if (now.number != before.number || now.barCenter != before.barCenter || now.detached != before.detached
+            || !m_transitions.contains(now.number))
+            return false;
+    }
+    for (const core::GrafcetTransitionLayout& transition : layout.transitions) {
+        const core::GrafcetTransition* model = grafcet.transition(transition.number);
+        m_transitions.value(transition.number)->setReceptivity(transition, model ? model->receptivity : std::string());
+    }
+    const bool resized = layout.boundingRect != m_layout.boundingRect;
+    m_layout = std::move(layout);
+    if (resized) {
+        // The wiring item's bounds are the drawing's.
+        delete m_wiring;
+        m_wiring = new GrafcetWiringItem(m_layout);
+        addItem(m_wiring);
+        setSceneRect(drawingRect());
+    }
+    return true;
+}
+
+void GrafcetScene::makeItems(const core::Grafcet* grafcet, core::GrafcetLayout layout)
+{
     clear();
     m_steps.clear();
     m_transitions.clear();
-    const core::Grafcet* grafcet = m_document->model().grafcet(m_stepId.toStdString());
-    m_layout = grafcet ? core::layoutGrafcet(*grafcet, &GrafcetScene::textWidth) : core::GrafcetLayout{};
+    m_layout = std::move(layout);
     m_wiring = new GrafcetWiringItem(m_layout);
     addItem(m_wiring);
     for (const core::GrafcetStepLayout& step : m_layout.steps) {
@@ -80,8 +121,6 @@ void GrafcetScene::rebuild()
     }
     setSceneRect(drawingRect());
     applyProblemMarks();
-    m_rebuilding = false;
-    emit rebuilt();
 }
 
 void GrafcetScene::setProblemMarksShown(bool shown)

@@ -55,8 +55,10 @@ public:
     QString toolTipAt(QPointF scenePos) const;
 
 signals:
-    // The items were made again from the model (after a change of the
-    // GRAFCET): every item pointer taken before is gone.
+    // The drawing follows a change of the GRAFCET: the items were made
+    // again from the model (every item pointer taken before is gone), or,
+    // when only receptivities changed, relabelled in place (the wiring item
+    // made again if the drawing's size changed).
     void rebuilt();
 
 protected:
@@ -64,6 +66,8 @@ protected:
 
 private:
     void rebuild();
+    bool relabel(const core::Grafcet& grafcet, core::GrafcetLayout& layout);
+    void makeItems(const core::Grafcet* grafcet, core::GrafcetLayout layout);
     void applyProblemMarks();
     QString problemToolTip(const ElementRef& element) const;
 

@@ -17,11 +17,28 @@ GrafcetTransitionItem::GrafcetTransitionItem(const core::GrafcetTransitionLayout
 {
     setFlag(ItemIsSelectable); // the docks and the GRAFCET tab's editing follow the selected transition
     setZValue(chartstyle::kTransitionZ);
+    m_bounds = boundsOf(layout);
+}
+
+QRectF GrafcetTransitionItem::boundsOf(const core::GrafcetTransitionLayout& layout)
+{
     const QPointF bar = toQPointF(layout.barCenter);
     const double half = core::kGrafcetBarLength / 2;
-    m_bounds = QRectF(bar.x() - half, bar.y() - chartstyle::kBarWidth, 2 * half, 2 * chartstyle::kBarWidth)
-                   .united(toQRectF(layout.labelRect))
-                   .adjusted(-2, -2, 2, 2);
+    return QRectF(bar.x() - half, bar.y() - chartstyle::kBarWidth, 2 * half, 2 * chartstyle::kBarWidth)
+        .united(toQRectF(layout.labelRect))
+        .adjusted(-2, -2, 2, 2);
+}
+
+void GrafcetTransitionItem::setReceptivity(const core::GrafcetTransitionLayout& layout, const std::string& receptivity)
+{
+    const QString label = drawnReceptivity(QString::fromStdString(receptivity));
+    if (layout == m_layout && label == m_label)
+        return;
+    prepareGeometryChange();
+    m_layout = layout;
+    m_label = label;
+    m_bounds = boundsOf(layout);
+    update();
 }
 
 QString GrafcetTransitionItem::drawnReceptivity(const QString& receptivity)

@@ -17,6 +17,9 @@ public:
                           QGraphicsItem* parent = nullptr);
 
     int type() const override { return Type; }
+    // Its receptivity edited: the new text and the layout made for it (the
+    // label's width); the bar must stay where it is (GrafcetScene).
+    void setReceptivity(const core::GrafcetTransitionLayout& layout, const std::string& receptivity);
     int number() const { return m_layout.number; }
     // The receptivity as drawn: "↑PartPresent AND NOT X3".
     const QString& labelText() const { return m_label; }
@@ -38,6 +41,8 @@ public:
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
+    static QRectF boundsOf(const core::GrafcetTransitionLayout& layout);
+
     core::GrafcetTransitionLayout m_layout;
     QString m_label;
     QRectF m_bounds;
