@@ -290,15 +290,29 @@ void TransitionDock::refreshCondition(const core::Transition& transition)
     m_conditionEdit->setProblems(problems);
 }
 
+namespace {
+
+// QSpinBox's setters lay the form out again even when nothing changes: at
+// every keystroke in the condition, the dock's whole form was.
+void showPriority(QSpinBox* spin, int minimum, int maximum, const QString& suffix, const QString& special)
+{
+    if (spin->specialValueText() != special)
+        spin->setSpecialValueText(special);
+    if (spin->minimum() != minimum || spin->maximum() != maximum)
+        spin->setRange(minimum, maximum);
+    if (spin->suffix() != suffix)
+        spin->setSuffix(suffix);
+}
+
+} // namespace
+
 void TransitionDock::refreshPriority(const core::Transition& transition)
 {
     const core::Model& model = document()->model();
     const QSignalBlocker blocker(m_prioritySpin);
     const int priority = model.priority(transition.id);
     if (transition.isFamilyTransition() || priority == 0) {
-        m_prioritySpin->setRange(0, 0);
-        m_prioritySpin->setSuffix(QString());
-        m_prioritySpin->setSpecialValueText(transition.isFamilyTransition() ? tr("First") : tr("None"));
+        showPriority(m_prioritySpin, 0, 0, QString(), transition.isFamilyTransition() ? tr("First") : tr("None"));
         m_prioritySpin->setEnabled(false);
         m_prioritySpin->setToolTip(transition.isFamilyTransition()
                 ? tr("The family transition is evaluated before the own transitions of every visible F state.")
@@ -306,11 +320,9 @@ void TransitionDock::refreshPriority(const core::Transition& transition)
         return;
     }
     const int count = static_cast<int>(model.effectiveOutgoing(transition.source).size());
-    m_prioritySpin->setSpecialValueText(QString());
-    m_prioritySpin->setRange(1, count);
-    m_prioritySpin->setValue(priority);
     //: after the priority in its spin box: "2 of 5"
-    m_prioritySpin->setSuffix(tr(" of %1").arg(count));
+    showPriority(m_prioritySpin, 1, count, tr(" of %1").arg(count), QString());
+    m_prioritySpin->setValue(priority);
     m_prioritySpin->setEnabled(count > 1);
     m_prioritySpin->setToolTip(tr("1 is evaluated first among the effective transitions out of %1; the others "
                                   "move to make room.")
