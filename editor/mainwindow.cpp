@@ -507,8 +507,9 @@ void MainWindow::createActions()
             [this](bool can) { m_undoAction->setEnabled(can && !isSimulating()); });
     connect(stack, &QUndoStack::canRedoChanged, this,
             [this](bool can) { m_redoAction->setEnabled(can && !isSimulating()); });
-    connect(stack, &QUndoStack::undoTextChanged, this, &MainWindow::retranslate);
-    connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::retranslate);
+    // Every keystroke in a text field changes them: only the two actions follow.
+    connect(stack, &QUndoStack::undoTextChanged, this, &MainWindow::retitleUndoRedo);
+    connect(stack, &QUndoStack::redoTextChanged, this, &MainWindow::retitleUndoRedo);
     m_modelSettingsAction = action("modelSettingsAction", &MainWindow::editModelSettings);
     m_resetLayoutAction = action("resetLayoutAction", &MainWindow::resetLayout);
     // Nothing of the fixed template is deleted: Delete hides. Only while the
@@ -1046,9 +1047,7 @@ void MainWindow::retranslate()
     m_resetAction->setStatusTip(tr("Put every state, transition, variable and setting back to the template"));
     m_quitAction->setText(tr("&Quit"));
 
-    QUndoStack* stack = m_document->undoStack();
-    m_undoAction->setText(stack->undoText().isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(stack->undoText()));
-    m_redoAction->setText(stack->redoText().isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(stack->redoText()));
+    retitleUndoRedo();
     m_modelSettingsAction->setText(tr("&Model Settings…"));
     m_modelSettingsAction->setStatusTip(tr("Model name, PLC cycle time and code dialect"));
 
@@ -1110,6 +1109,23 @@ void MainWindow::retranslate()
     m_recentFiles->retranslate();
     m_exportActions->retranslate();
     updateTitle();
+}
+
+void MainWindow::retitleUndoRedo()
+{
+    QUndoStack* stack = m_document->undoStack();
+    m_undoAction->setText(stack->undoText().isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(stack->undoText()));
+    m_redoAction->setText(stack->redoText().isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(stack->redoText()));
+    // The toolbar's buttons keep one short label, the command in their
+    // tooltip: with the command in the label they changed width at every
+    // keystroke in a text field, and the toolbar was laid out and painted
+    // again with them.
+    //: the Undo button of the toolbar (the Edit menu names the command)
+    m_undoAction->setIconText(tr("Undo"));
+    //: the Redo button of the toolbar (the Edit menu names the command)
+    m_redoAction->setIconText(tr("Redo"));
+    m_undoAction->setToolTip(stack->undoText().isEmpty() ? tr("Undo") : tr("Undo %1").arg(stack->undoText()));
+    m_redoAction->setToolTip(stack->redoText().isEmpty() ? tr("Redo") : tr("Redo %1").arg(stack->redoText()));
 }
 
 void MainWindow::updateTitle()

@@ -156,6 +156,7 @@ private:
     // View > Reset Layout: every panel back in its place of the first start.
     void resetLayout();
     void retranslate();
+    void retitleUndoRedo();
 
     void newModel();
     void open();

@@ -1060,9 +1060,15 @@ void TestMainWindow::undoActionNamesTheCommand()
     QVERIFY(document.push(command));
     QVERIFY(undo->isEnabled());
     QCOMPARE(undo->text(), QStringLiteral("&Undo %1").arg(text));
+    // The toolbar's button keeps its width: the command is in its tooltip.
+    QCOMPARE(undo->iconText(), QStringLiteral("Undo"));
+    QCOMPARE(undo->toolTip(), QStringLiteral("Undo %1").arg(text));
     undo->trigger();
     QVERIFY(!document.model().step("A2")->hidden);
     QCOMPARE(redo->text(), QStringLiteral("&Redo %1").arg(text));
+    QCOMPARE(redo->iconText(), QStringLiteral("Redo"));
+    QCOMPARE(redo->toolTip(), QStringLiteral("Redo %1").arg(text));
+    QCOMPARE(undo->toolTip(), QStringLiteral("Undo"));
     redo->trigger();
     QVERIFY(document.model().step("A2")->hidden);
 }
