@@ -4590,6 +4590,24 @@ Strg+Leertaste vervollständigt einen Namen.</translation>
         <source>The Modbus link could not start: %1</source>
         <translation>Die Modbus-Verbindung konnte nicht starten: %1</translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <extracomment>the Undo button of the toolbar (the Edit menu names the command)</extracomment>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <extracomment>the Redo button of the toolbar (the Edit menu names the command)</extracomment>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Undo %1</source>
+        <translation>Rückgängig: %1</translation>
+    </message>
+    <message>
+        <source>Redo %1</source>
+        <translation>Wiederholen: %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModbusConnectDialog</name>

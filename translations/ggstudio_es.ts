@@ -4590,6 +4590,24 @@ Ctrl+Espacio completa un nombre.</translation>
         <source>The Modbus link could not start: %1</source>
         <translation>El enlace Modbus no pudo iniciarse: %1</translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <extracomment>the Undo button of the toolbar (the Edit menu names the command)</extracomment>
+        <translation>Deshacer</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <extracomment>the Redo button of the toolbar (the Edit menu names the command)</extracomment>
+        <translation>Rehacer</translation>
+    </message>
+    <message>
+        <source>Undo %1</source>
+        <translation>Deshacer %1</translation>
+    </message>
+    <message>
+        <source>Redo %1</source>
+        <translation>Rehacer %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModbusConnectDialog</name>

@@ -4590,6 +4590,24 @@ Ctrl+Espace complète un nom.</translation>
         <source>The Modbus link could not start: %1</source>
         <translation>La liaison Modbus n&apos;a pas pu démarrer : %1</translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <extracomment>the Undo button of the toolbar (the Edit menu names the command)</extracomment>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <extracomment>the Redo button of the toolbar (the Edit menu names the command)</extracomment>
+        <translation>Rétablir</translation>
+    </message>
+    <message>
+        <source>Undo %1</source>
+        <translation>Annuler %1</translation>
+    </message>
+    <message>
+        <source>Redo %1</source>
+        <translation>Rétablir %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModbusConnectDialog</name>

@@ -4590,6 +4590,24 @@ Ctrl+Spazio completa un nome.</translation>
         <source>The Modbus link could not start: %1</source>
         <translation>Il collegamento Modbus non è potuto partire: %1</translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <extracomment>the Undo button of the toolbar (the Edit menu names the command)</extracomment>
+        <translation>Annulla</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <extracomment>the Redo button of the toolbar (the Edit menu names the command)</extracomment>
+        <translation>Ripeti</translation>
+    </message>
+    <message>
+        <source>Undo %1</source>
+        <translation>Annulla %1</translation>
+    </message>
+    <message>
+        <source>Redo %1</source>
+        <translation>Ripeti %1</translation>
+    </message>
 </context>
 <context>
     <name>editor::ModbusConnectDialog</name>
