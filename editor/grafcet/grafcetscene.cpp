@@ -66,13 +66,15 @@ void GrafcetScene::rebuild()
     emit rebuilt();
 }
 
-// Typing in a receptivity changes only its label, and at most the drawing's
-// width: the items stay (with their selection), the others are not drawn
-// again, and the view keeps its scroll range, which a whole new set of
-// items would cost at every keystroke.
+// Typing in a receptivity most often changes only its label: the items stay
+// (with their selection), the others are not drawn again and the view keeps
+// its scroll range, which a whole new set of items would cost at every
+// keystroke. A label that moves anything else or resizes the drawing (the
+// widest one, whose links route around it) makes the items again.
 bool GrafcetScene::relabel(const core::Grafcet& grafcet, core::GrafcetLayout& layout)
 {
-    if (!m_wiring || layout.steps != m_layout.steps || layout.links != m_layout.links || layout.lines != m_layout.lines
+    if (!m_wiring || layout.boundingRect != m_layout.boundingRect || layout.steps != m_layout.steps
+        || layout.links != m_layout.links || layout.lines != m_layout.lines
         || layout.transitions.size() != m_layout.transitions.size())
         return false;
     for (std::size_t i = 0; i < layout.transitions.size(); ++i) {
@@ -86,15 +88,7 @@ bool GrafcetScene::relabel(const core::Grafcet& grafcet, core::GrafcetLayout& la
         const core::GrafcetTransition* model = grafcet.transition(transition.number);
         m_transitions.value(transition.number)->setReceptivity(transition, model ? model->receptivity : std::string());
     }
-    const bool resized = layout.boundingRect != m_layout.boundingRect;
     m_layout = std::move(layout);
-    if (resized) {
-        // The wiring item's bounds are the drawing's.
-        delete m_wiring;
-        m_wiring = new GrafcetWiringItem(m_layout);
-        addItem(m_wiring);
-        setSceneRect(drawingRect());
-    }
     return true;
 }
 

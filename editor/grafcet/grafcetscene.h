@@ -57,8 +57,7 @@ public:
 signals:
     // The drawing follows a change of the GRAFCET: the items were made
     // again from the model (every item pointer taken before is gone), or,
-    // when only receptivities changed, relabelled in place (the wiring item
-    // made again if the drawing's size changed).
+    // when only receptivities' labels changed, relabelled in place.
     void rebuilt();
 
 protected:

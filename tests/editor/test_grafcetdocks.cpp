@@ -24,9 +24,11 @@
 #include "editor/grafcet/grafcetstepitem.h"
 #include "editor/grafcet/grafcettransitionitem.h"
 #include "editor/grafcet/grafcetview.h"
+#include "editor/grafcet/grafcetwiringitem.h"
 #include "editor/mainwindow.h"
 #include "editor/selection.h"
 
+#include "core/layout/grafcetlayout.h"
 #include "core/model/model.h"
 
 #include <QCheckBox>
@@ -84,6 +86,7 @@ private slots:
     void clickingAnItemSelectsItForTheDocks();
     void selectingElsewhereSelectsTheItemAndScrolls();
     void typedReceptivityIsOneUndoStep();
+    void typingRelabelsTheDrawingInPlace();
     void receptivityProblemsAreUnderlined();
     void receptivityCompletesStepsAndVariables();
     void stepDockEditsInitialAndComment();
@@ -287,6 +290,69 @@ void TestGrafcetDocks::typedReceptivityIsOneUndoStep()
     undoStack()->redo();
     QCOMPARE(f1Scene()->transitionItem(3)->labelText(), QStringLiteral("↑DrillLow"));
     QCOMPARE(edit->text(), QStringLiteral("RE DrillLow"));
+}
+
+// Typing in a receptivity most often changes only its label: the items stay
+// (the selection with them), the layout is the one a new drawing would
+// have. A label that moves the rest, or a change of structure (an initial
+// step, drawn double), makes the items again.
+void TestGrafcetDocks::typingRelabelsTheDrawingInPlace()
+{
+    QVERIFY(openF1());
+    GrafcetScene* scene = f1Scene();
+    m_window->selection()->select(ElementRef::grafcetTransition(kF1, 3));
+    GrafcetStepItem* step = scene->stepItem(2);
+    GrafcetTransitionItem* transition = scene->transitionItem(3);
+    GrafcetWiringItem* wiring = scene->wiringItem();
+    QVERIFY(step && transition && wiring && transition->isSelected());
+    // Marked, so that an item made again at the same address is not taken for it.
+    step->setData(0, QStringLiteral("kept"));
+    transition->setData(0, QStringLiteral("kept"));
+    wiring->setData(0, QStringLiteral("kept"));
+    const auto kept = [](const QGraphicsItem* item) { return item && item->data(0).toString() == QLatin1String("kept"); };
+    const QRectF drawing = scene->drawingRect();
+    int rebuilt = 0;
+    connect(scene, &GrafcetScene::rebuilt, this, [&rebuilt] { ++rebuilt; });
+
+    ConditionEdit* edit = child<GrafcetTransitionDock>("grafcetTransitionDock")->receptivityEdit();
+    edit->selectRange(8, 8);
+    QTest::keyClicks(edit, " OR X4");
+    QVERIFY(rebuilt >= 6); // its listeners (selection, simulation marks) still follow
+    QVERIFY(kept(scene->stepItem(2)));
+    QVERIFY(kept(scene->transitionItem(3)));
+    QVERIFY(kept(scene->wiringItem())); // the drawing kept its width
+    QVERIFY(transition->isSelected());
+    QCOMPARE(transition->labelText(), QStringLiteral("DrillLow OR X4"));
+    const core::GrafcetLayout fresh = core::layoutGrafcet(f1(), &GrafcetScene::textWidth);
+    QVERIFY(fresh.transitions == scene->layout().transitions);
+    QVERIFY(*fresh.transition(3) == transition->layout());
+    QCOMPARE(scene->drawingRect(), drawing);
+
+    // A label that moves the rest (the links routed around the widest)
+    // makes the drawing again: the layout a new drawing has.
+    QTest::keyClicks(edit, " OR DrillHigh AND ClampOut AND NOT Unclamped AND PartPresent AND SpindleOn");
+    QVERIFY(!kept(scene->transitionItem(3)));
+    QVERIFY(scene->drawingRect().width() > drawing.width());
+    QCOMPARE(scene->sceneRect(), scene->drawingRect());
+    const core::GrafcetLayout wider = core::layoutGrafcet(f1(), &GrafcetScene::textWidth);
+    QVERIFY(wider.boundingRect == scene->layout().boundingRect);
+    QVERIFY(wider.links == scene->layout().links);
+    QVERIFY(*wider.transition(3) == scene->transitionItem(3)->layout());
+    QVERIFY(scene->transitionItem(3)->isSelected());
+
+    // Undone: the first label and width again.
+    undoStack()->undo();
+    QCOMPARE(scene->transitionItem(3)->labelText(), QStringLiteral("DrillLow"));
+    QCOMPARE(scene->drawingRect(), drawing);
+    step = scene->stepItem(2);
+    step->setData(0, QStringLiteral("kept"));
+
+    // Another structure: the items are made again.
+    m_window->selection()->select(ElementRef::grafcetStep(kF1, 2));
+    child<QCheckBox>("nestedInitialCheck")->click();
+    QVERIFY(f1().step(2)->initial);
+    QVERIFY(!kept(scene->stepItem(2)));
+    QVERIFY(scene->stepItem(2)->layout().initial);
 }
 
 // The nested checks' problems are underlined where they are, with their messages.
