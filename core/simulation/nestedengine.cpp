@@ -12,14 +12,6 @@ namespace core {
 
 namespace {
 
-std::size_t continuousActionCount(const NestedGrafcet& grafcet)
-{
-    std::size_t count = 0;
-    for (const NestedStep& step : grafcet.steps)
-        count += step.continuous.size();
-    return count;
-}
-
 // `numbers` ascending: the index of `number`, -1 when absent.
 int stepIndexIn(const std::vector<int>& numbers, int number)
 {
@@ -34,7 +26,7 @@ NestedEngine::NestedEngine(const NestedGrafcet& grafcet, const std::function<int
     : m_grafcet(&grafcet)
     , m_shape(makeShape(grafcet, slotOf, typeOf))
 {
-    m_emitting.assign(continuousActionCount(grafcet), 0);
+    m_emitting.assign(m_shape->continuousActions, 0);
     reset();
 }
 
@@ -52,6 +44,7 @@ std::shared_ptr<const NestedEngine::Shape> NestedEngine::makeShape(const NestedG
         shape->continuousStart.push_back(continuous);
         continuous += step.continuous.size();
     }
+    shape->continuousActions = continuous;
     for (const ContinuousOutput& output : grafcet.outputs) {
         if (output.isComplete) {
             shape->outputOf.push_back(-1);

@@ -195,6 +195,7 @@ private:
         // By continuous action: m_emitting[continuousStart[step index] + i]
         // for NestedStep::continuous[i].
         std::vector<std::size_t> continuousStart;
+        std::size_t continuousActions = 0;    // in all the steps: m_emitting's size
         // The transitions by index, so that an evolution looks only at the
         // transitions it can fire (a search for stability makes up to
         // transitions + 1 evolutions per call).
