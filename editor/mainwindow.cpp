@@ -1047,6 +1047,10 @@ void MainWindow::retranslate()
     m_resetAction->setStatusTip(tr("Put every state, transition, variable and setting back to the template"));
     m_quitAction->setText(tr("&Quit"));
 
+    //: the Undo button of the toolbar (the Edit menu names the command)
+    m_undoAction->setIconText(tr("Undo"));
+    //: the Redo button of the toolbar (the Edit menu names the command)
+    m_redoAction->setIconText(tr("Redo"));
     retitleUndoRedo();
     m_modelSettingsAction->setText(tr("&Model Settings…"));
     m_modelSettingsAction->setStatusTip(tr("Model name, PLC cycle time and code dialect"));
@@ -1111,21 +1115,17 @@ void MainWindow::retranslate()
     updateTitle();
 }
 
+// The toolbar's buttons keep one short label (retranslate), the command in
+// their tooltip: with the command in the label they changed width at every
+// keystroke in a text field, and the toolbar was laid out and painted again.
 void MainWindow::retitleUndoRedo()
 {
-    QUndoStack* stack = m_document->undoStack();
-    m_undoAction->setText(stack->undoText().isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(stack->undoText()));
-    m_redoAction->setText(stack->redoText().isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(stack->redoText()));
-    // The toolbar's buttons keep one short label, the command in their
-    // tooltip: with the command in the label they changed width at every
-    // keystroke in a text field, and the toolbar was laid out and painted
-    // again with them.
-    //: the Undo button of the toolbar (the Edit menu names the command)
-    m_undoAction->setIconText(tr("Undo"));
-    //: the Redo button of the toolbar (the Edit menu names the command)
-    m_redoAction->setIconText(tr("Redo"));
-    m_undoAction->setToolTip(stack->undoText().isEmpty() ? tr("Undo") : tr("Undo %1").arg(stack->undoText()));
-    m_redoAction->setToolTip(stack->redoText().isEmpty() ? tr("Redo") : tr("Redo %1").arg(stack->redoText()));
+    const QString undo = m_document->undoStack()->undoText();
+    const QString redo = m_document->undoStack()->redoText();
+    m_undoAction->setText(undo.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(undo));
+    m_redoAction->setText(redo.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(redo));
+    m_undoAction->setToolTip(undo.isEmpty() ? tr("Undo") : tr("Undo %1").arg(undo));
+    m_redoAction->setToolTip(redo.isEmpty() ? tr("Redo") : tr("Redo %1").arg(redo));
 }
 
 void MainWindow::updateTitle()
